@@ -1,0 +1,63 @@
+#pragma once
+// Shared plumbing of laserwb-cli: option parsing, messages, progress on stderr.
+#include <chrono>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace lwb::cli {
+
+/// Exit codes: 0 success, 1 bad input or failed run (nothing written), 2 usage error.
+enum Exit { kOk = 0, kFailed = 1, kUsage = 2 };
+
+/// A small option parser: "--name value", "--name=value", flags, repeatable options, and
+/// positional arguments; unknown options are errors.
+class Args {
+public:
+    Args(std::string command, std::string usage) : m_command(std::move(command)), m_usage(std::move(usage)) {}
+    void option(const std::string& name, bool takesValue, bool repeatable = false);
+    /// Parses argv[first..]; false with error() on an unknown option or a missing value.
+    bool parse(int argc, char** argv, int first);
+    const std::string& error() const { return m_error; }
+    const std::string& usage() const { return m_usage; }
+
+    bool has(const std::string& name) const { return m_values.count(name) > 0; }
+    std::string value(const std::string& name, const std::string& fallback = "") const;
+    std::vector<std::string> values(const std::string& name) const;
+    const std::vector<std::string>& positional() const { return m_positional; }
+
+    /// Typed getters; false with *err ("--name: ...") when present but malformed or out of range.
+    bool getInt(const std::string& name, long long lo, long long hi, long long* out, std::string* err) const;
+    bool getDouble(const std::string& name, double lo, double hi, double* out, std::string* err) const;
+
+private:
+    std::string m_command, m_usage, m_error;
+    std::map<std::string, std::pair<bool, bool>> m_spec;  // name → (takesValue, repeatable)
+    std::multimap<std::string, std::string> m_values;
+    std::vector<std::string> m_positional;
+};
+
+/// Prints "laserwb-cli COMMAND: message" on stderr and returns code.
+int fail(const std::string& command, const std::string& message, int code = kFailed);
+
+/// Throttled progress on stderr: a rewritten line on a terminal, a line per 10 % otherwise.
+class Progress {
+public:
+    Progress(std::string what, size_t total, bool quiet);
+    void update(size_t done);
+    void finish();
+
+private:
+    std::string m_what;
+    size_t m_total;
+    bool m_quiet, m_tty;
+    int m_lastDecile = -1;
+    std::chrono::steady_clock::time_point m_start, m_last;
+};
+
+/// "X,Y" → two finite numbers.
+bool parsePoint(const std::string& s, double* x, double* y);
+/// "WxH" → two positive integers.
+bool parseSize(const std::string& s, int* w, int* h);
+
+}  // namespace lwb::cli

@@ -1,0 +1,448 @@
+// laserwb-cli footprint | simulate footprint | trend | eval footprint | bench footprint
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <thread>
+#include <opencv2/imgcodecs.hpp>
+#include <cstdio>
+#include <iostream>
+#include <sys/stat.h>
+
+#include "cli_common.hpp"
+#include "cli_commands.hpp"
+#include "core/common/atomic_file.hpp"
+#include "core/common/text.hpp"
+#include "core/footprint/batch.hpp"
+#include "core/footprint/trend.hpp"
+#include "core/sim/footprint_eval.hpp"
+#include "core/sim/rng.hpp"
+
+namespace lwb::cli {
+
+using namespace core::footprint;
+namespace sim = core::sim;
+
+namespace {
+const char* kFootprintUsage =
+    "usage: laserwb-cli footprint [options] INPUT... -o OUT.csv\n"
+    "Finds the laser spot centre in footprint-camera frames or ROIs and judges each shot.\n"
+    "INPUT: image files (16-bit PNG/TIFF/PGM, or raw little-endian 16-bit with --raw-size) or folders\n"
+    "(every image inside, sorted by name).\n"
+    "  --method gauss|tefm|gcm   centre method (default gauss: Wu f.lnf QR + tilt + Guo + LM)\n"
+    "  --preset wu2021|yao2021   verdict criteria (default wu2021)\n"
+    "  --config FILE.json        parameters (see --print-config); options given here override it\n"
+    "  --roi N                   ROI side in px (default 32)\n"
+    "  --center X,Y              nominal spot centre in full-image px; repeat for the two beams of an\n"
+    "                            LSI frame (one row per ROI). Without it, the brightest spot-like blob.\n"
+    "  --raw-size WxH            size of .raw/.bin frames\n"
+    "  --threads N               worker threads (default: all cores)\n"
+    "  --keep-going              write unreadable files as rejected rows instead of stopping\n"
+    "  --print-config            print the effective parameters as JSON and exit\n"
+    "  -o, --output OUT.csv      report: file,x,y,verdict,reasons,method,noise_class,sigma_x,...\n"
+    "  -q, --quiet               no progress line\n";
+
+bool loadParams(const Args& a, FootprintParams* p, std::string* err) {
+    if (a.has("--config")) {
+        const core::JsonParseResult j = core::readJsonFile(a.value("--config"));
+        if (!j.ok) {
+            *err = j.error;
+            return false;
+        }
+        if (!footprintParamsFromJson(j.value, p, err)) {
+            *err = a.value("--config") + ": " + *err;
+            return false;
+        }
+    }
+    if (a.has("--preset") && !applyPreset(a.value("--preset"), p)) {
+        *err = "--preset must be wu2021 or yao2021, not \"" + a.value("--preset") + "\"";
+        return false;
+    }
+    if (a.has("--method") && !parseMethod(a.value("--method"), &p->method)) {
+        *err = "--method must be gauss, tefm or gcm, not \"" + a.value("--method") + "\"";
+        return false;
+    }
+    long long roi = p->roi.size;
+    if (!a.getInt("--roi", 4, 1024, &roi, err)) return false;
+    if (a.has("--roi")) p->roi.sizeExplicit = true;
+    p->roi.size = static_cast<int>(roi);
+    if (const std::string e = validate(*p); !e.empty()) {
+        *err = e;
+        return false;
+    }
+    return true;
+}
+}  // namespace
+
+int cmdFootprint(int argc, char** argv) {
+    Args a("footprint", kFootprintUsage);
+    for (const char* o : {"--method", "--preset", "--config", "--roi", "--raw-size", "--threads", "-o", "--output"})
+        a.option(o, true);
+    a.option("--center", true, true);
+    for (const char* o : {"--keep-going", "--print-config", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
+    if (!a.parse(argc, argv, 2)) return fail("footprint", a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << kFootprintUsage;
+        return kOk;
+    }
+    BatchParams bp;
+    std::string err;
+    if (!loadParams(a, &bp.footprint, &err)) return fail("footprint", err);
+    if (a.has("--print-config")) {
+        std::cout << footprintParamsToJson(bp.footprint).dump();
+        return kOk;
+    }
+    for (const auto& c : a.values("--center")) {
+        double x = 0, y = 0;
+        if (!parsePoint(c, &x, &y)) return fail("footprint", "--center must be X,Y (numbers), not \"" + c + "\"", kUsage);
+        bp.centres.emplace_back(x, y);
+    }
+    if (a.has("--raw-size") && !parseSize(a.value("--raw-size"), &bp.read.rawWidth, &bp.read.rawHeight))
+        return fail("footprint", "--raw-size must be WxH, e.g. 550x550", kUsage);
+    long long threads = 0;
+    if (!a.getInt("--threads", 0, 256, &threads, &err)) return fail("footprint", err, kUsage);
+    bp.threads = static_cast<int>(threads);
+    const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
+    if (out.empty()) return fail("footprint", "no output file: give -o OUT.csv", kUsage);
+    if (a.positional().empty()) return fail("footprint", "no input files or folders", kUsage);
+    std::vector<std::string> files;
+    if (!expandInputs(a.positional(), &files, &err)) return fail("footprint", err);
+    if (files.empty()) return fail("footprint", "the inputs hold no image files (png, tif, tiff, pgm, raw, bin)");
+    Progress progress("footprint", files.size(), a.has("-q") || a.has("--quiet"));
+    size_t done = 0;
+    core::Feedback fb;
+    const bool keepGoing = a.has("--keep-going");
+    std::string firstError;
+    const BatchResult res = runFootprintBatch(files, bp, &fb, [&](size_t, const BatchItem& item) {
+        progress.update(++done);
+        if (!keepGoing && firstError.empty()) {
+            if (!item.readError.empty()) firstError = item.readError;
+            for (const auto& r : item.rois)
+                if (!r.result.ok && firstError.empty()) firstError = item.file + ": " + r.result.error;
+            if (!firstError.empty()) fb.cancel();
+        }
+    });
+    progress.finish();
+    if (!firstError.empty()) return fail("footprint", firstError + " (nothing written; --keep-going reports it as a rejected row)");
+    if (!writeFootprintCsv(out, res.items, bp.footprint.method, &err)) return fail("footprint", err);
+    size_t good = 0, doubtful = 0, rejected = 0;
+    for (const auto& it : res.items) {
+        if (!it.readError.empty()) ++rejected;
+        for (const auto& r : it.rois) {
+            const Verdict v = r.result.ok ? r.result.verdict : Verdict::Rejected;
+            (v == Verdict::Good ? good : v == Verdict::Doubtful ? doubtful : rejected)++;
+        }
+    }
+    if (!(a.has("-q") || a.has("--quiet")))
+        std::cerr << "footprint: " << files.size() << " files -> " << out << ": " << good << " good, " << doubtful
+                  << " doubtful, " << rejected << " rejected"
+                  << (res.readErrors ? " (" + std::to_string(res.readErrors) + " unreadable)" : "") << "\n";
+    return kOk;
+}
+
+namespace {
+const char* kSimUsage =
+    "usage: laserwb-cli simulate footprint --count N --seed S [options] OUTDIR\n"
+    "Writes simulated footprint shots with exact truth (OUTDIR/truth.csv).\n"
+    "  --count N            number of shots (default 100)\n"
+    "  --seed S             random seed (default 1); the same seed gives the same files\n"
+    "  --scene NAME         weak|moderate|strong|night|flat|mixed (default mixed: the first four in turn)\n"
+    "  --case NAME          normal|no_spot|saturated|double_spot|edge|elongated|mixed (default normal;\n"
+    "                       mixed: two normal shots, then one of each doubtful case in turn)\n"
+    "  --size N             ROI side (default 32)\n"
+    "  --full-frame         550x550 frames with the spot near --center (default 122,262: LFI beam 1)\n"
+    "  --center X,Y         spot position in full frames\n"
+    "  --format png|tif|pgm|raw   image format (default png)\n";
+}
+
+int cmdSimulateFootprint(int argc, char** argv) {
+    Args a("simulate footprint", kSimUsage);
+    for (const char* o : {"--count", "--seed", "--scene", "--case", "--size", "--center", "--format"}) a.option(o, true);
+    for (const char* o : {"--full-frame", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail("simulate footprint", a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << kSimUsage;
+        return kOk;
+    }
+    std::string err;
+    long long count = 100, seed = 1, size = 32;
+    if (!a.getInt("--count", 1, 10000000, &count, &err) || !a.getInt("--seed", 0, (1LL << 62), &seed, &err) ||
+        !a.getInt("--size", 8, 4096, &size, &err))
+        return fail("simulate footprint", err, kUsage);
+    if (a.positional().size() != 1) return fail("simulate footprint", "give exactly one output folder", kUsage);
+    const std::string dir = a.positional()[0];
+    const std::string fmt = a.value("--format", "png");
+    if (fmt != "png" && fmt != "tif" && fmt != "pgm" && fmt != "raw")
+        return fail("simulate footprint", "--format must be png, tif, pgm or raw", kUsage);
+    std::vector<sim::Scene> scenes;
+    const std::string sceneArg = a.value("--scene", "mixed");
+    if (sceneArg == "mixed") {
+        scenes = {sim::Scene::Weak, sim::Scene::Moderate, sim::Scene::Strong, sim::Scene::Night};
+    } else {
+        sim::Scene s;
+        if (!sim::parseScene(sceneArg, &s)) return fail("simulate footprint", "unknown --scene " + sceneArg, kUsage);
+        scenes = {s};
+    }
+    std::vector<sim::SpotCase> cases;
+    const std::string caseArg = a.value("--case", "normal");
+    if (caseArg == "mixed") {
+        cases = {sim::SpotCase::Normal, sim::SpotCase::Normal, sim::SpotCase::NoSpot, sim::SpotCase::Normal,
+                 sim::SpotCase::Normal, sim::SpotCase::Saturated, sim::SpotCase::Normal, sim::SpotCase::Normal,
+                 sim::SpotCase::DoubleSpot, sim::SpotCase::Normal, sim::SpotCase::Normal, sim::SpotCase::Edge,
+                 sim::SpotCase::Normal, sim::SpotCase::Normal, sim::SpotCase::Elongated};
+    } else {
+        sim::SpotCase c;
+        if (!sim::parseSpotCase(caseArg, &c)) return fail("simulate footprint", "unknown --case " + caseArg, kUsage);
+        cases = {c};
+    }
+    sim::FootprintSimParams sp;
+    sp.width = sp.height = static_cast<int>(size);
+    if (a.has("--full-frame")) {
+        sp.width = sp.height = 550;
+        sp.hasCenter = true;
+        sp.centerX = 122;
+        sp.centerY = 262;
+    }
+    if (a.has("--center")) {
+        if (!a.has("--full-frame")) return fail("simulate footprint", "--center goes with --full-frame", kUsage);
+        if (!parsePoint(a.value("--center"), &sp.centerX, &sp.centerY))
+            return fail("simulate footprint", "--center must be X,Y", kUsage);
+    }
+    ::mkdir(dir.c_str(), 0755);
+    struct stat st {};
+    if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+        return fail("simulate footprint", dir + ": cannot create the folder");
+    std::string truth =
+        "file,scene,case,x,y,sigma_major,sigma_minor,tilt_deg,amplitude_dn,ground_mean_dn,texture_rms_dn,expect_good,x2,y2\n";
+    Progress progress("simulate", static_cast<size_t>(count), a.has("-q") || a.has("--quiet"));
+    auto f = [](double v, int d) { return std::isfinite(v) ? core::formatFixed(v, d) : std::string(); };
+    for (long long i = 0; i < count; ++i) {
+        sp.scene = scenes[i % scenes.size()];
+        sp.spotCase = cases[(i / scenes.size()) % cases.size()];
+        const sim::FootprintSimShot shot = sim::simulateFootprint(sp, sim::Rng::mix(static_cast<uint64_t>(seed), i));
+        char name[64];
+        std::snprintf(name, sizeof name, "shot_%06lld.%s", i, fmt.c_str());
+        if (!writeFrame16(dir + "/" + name, shot.image, &err)) return fail("simulate footprint", err);
+        const auto& t = shot.truth;
+        truth += std::string(name) + "," + sim::sceneName(t.scene) + "," + sim::spotCaseName(t.spotCase) + "," +
+                 f(t.x, 5) + "," + f(t.y, 5) + "," + f(t.sigmaMajor, 4) + "," + f(t.sigmaMinor, 4) + "," +
+                 f(t.tiltRad * 180 / M_PI, 3) + "," + f(t.amplitude, 1) + "," + f(t.groundMean, 1) + "," +
+                 f(t.textureRms, 1) + "," + (t.expectGood ? "1" : "0") + "," + f(t.x2, 5) + "," + f(t.y2, 5) + "\n";
+        progress.update(static_cast<size_t>(i + 1));
+    }
+    progress.finish();
+    if (!core::writeFileAtomic(dir + "/truth.csv", truth, &err)) return fail("simulate footprint", err);
+    return kOk;
+}
+
+namespace {
+const char* kTrendUsage =
+    "usage: laserwb-cli trend IN.csv -o OUT.csv [--arcsec-per-px A] [--reject-sigma K] [--min-shots N]\n"
+    "Monthly mean spot centroid per camera and beam (paper 001 long-term monitoring).\n"
+    "IN.csv: header time,beam,x,y[,camera]; time as ISO date/date-time, YYYY-MM, or Unix seconds.\n"
+    "OUT.csv: camera,beam,month,n,rejected,x_mean,y_mean,x_std,y_std,dx_px,dy_px,planar_change_px,\n"
+    "         pointing_change_arcsec,beam_distance_px,distance_change_px (changes from the first month).\n"
+    "  --arcsec-per-px A    pointing change per pixel (default 0.31, paper 001's LFC)\n"
+    "  --reject-sigma K     k-sigma rejection of shots within a month (default 3; 0 = off)\n"
+    "  --min-shots N        leave out months with fewer shots (default 1)\n";
+}
+
+int cmdTrend(int argc, char** argv) {
+    Args a("trend", kTrendUsage);
+    for (const char* o : {"-o", "--output", "--arcsec-per-px", "--reject-sigma", "--min-shots"}) a.option(o, true);
+    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    if (!a.parse(argc, argv, 2)) return fail("trend", a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << kTrendUsage;
+        return kOk;
+    }
+    TrendParams tp;
+    std::string err;
+    long long minShots = tp.minShots;
+    if (!a.getDouble("--arcsec-per-px", 1e-9, 1e6, &tp.arcsecPerPx, &err) ||
+        !a.getDouble("--reject-sigma", 0, 100, &tp.rejectSigma, &err) || !a.getInt("--min-shots", 1, 1000000000, &minShots, &err))
+        return fail("trend", err, kUsage);
+    tp.minShots = static_cast<int>(minShots);
+    const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
+    if (out.empty()) return fail("trend", "no output file: give -o OUT.csv", kUsage);
+    if (a.positional().size() != 1) return fail("trend", "give exactly one input CSV", kUsage);
+    std::vector<CentroidRecord> recs;
+    if (!readCentroidCsv(a.positional()[0], &recs, &err)) return fail("trend", err);
+    const TrendResult tr = computeTrend(recs, tp);
+    if (!tr.ok) return fail("trend", tr.error);
+    for (const auto& w : tr.warnings) std::cerr << "laserwb-cli trend: warning: " << w << "\n";
+    if (!writeTrendCsv(out, tr.rows, &err)) return fail("trend", err);
+    if (!(a.has("-q") || a.has("--quiet"))) {
+        // Summary: first → last month change per camera/beam.
+        for (size_t i = 0; i < tr.rows.size(); ++i) {
+            const bool last = i + 1 == tr.rows.size() || tr.rows[i + 1].camera != tr.rows[i].camera ||
+                              tr.rows[i + 1].beam != tr.rows[i].beam;
+            if (!last) continue;
+            const auto& r = tr.rows[i];
+            std::cerr << "trend: " << (r.camera.empty() ? "" : r.camera + " ") << "beam " << r.beam << " to " << r.month
+                      << ": planar change " << core::formatFixed(r.planarPx, 2) << " px = "
+                      << core::formatFixed(r.pointingArcsec, 3) << " arcsec\n";
+        }
+    }
+    return kOk;
+}
+
+namespace {
+const char* kEvalUsage =
+    "usage: laserwb-cli eval footprint [--count N] [--seed S] [--case NAME] [--variants a,b,...] [--threads N]\n"
+    "Paper 000's accuracy experiment on the simulator: N shots per scene (weak, moderate, strong,\n"
+    "night, flat), each processed by every method variant; prints a Markdown table of radial errors\n"
+    "against the exact truth, verdict counts and the Cramer-Rao bound.\n"
+    "Variants: gcm, tefm, gauss-paper, gauss-xy, gauss-guo, gauss (default: all).\n"
+    "  --config FILE.json   add a variant \"config\": the defaults overridden by the file\n"
+    "  --scenes a,b         scenes to run (weak,moderate,strong,night,flat)\n";
+}
+
+int cmdEvalFootprint(int argc, char** argv) {
+    Args a("eval footprint", kEvalUsage);
+    for (const char* o : {"--count", "--seed", "--case", "--variants", "--threads", "--scenes", "--config"})
+        a.option(o, true);
+    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail("eval footprint", a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << kEvalUsage;
+        return kOk;
+    }
+    sim::EvalParams ep;
+    std::string err;
+    long long count = ep.countPerScene, seed = static_cast<long long>(ep.seed), threads = 0;
+    if (!a.getInt("--count", 1, 10000000, &count, &err) || !a.getInt("--seed", 0, 1LL << 62, &seed, &err) ||
+        !a.getInt("--threads", 0, 256, &threads, &err))
+        return fail("eval footprint", err, kUsage);
+    ep.countPerScene = static_cast<int>(count);
+    ep.seed = static_cast<uint64_t>(seed);
+    ep.threads = static_cast<int>(threads);
+    if (a.has("--case") && !sim::parseSpotCase(a.value("--case"), &ep.spotCase))
+        return fail("eval footprint", "unknown --case " + a.value("--case"), kUsage);
+    if (a.has("--scenes")) {
+        ep.scenes.clear();
+        std::string list = a.value("--scenes");
+        for (char& c : list)
+            if (c == ',') c = ' ';
+        for (auto s : core::splitBlanks(list)) {
+            sim::Scene sc;
+            if (!sim::parseScene(std::string(s), &sc)) return fail("eval footprint", "unknown scene " + std::string(s), kUsage);
+            ep.scenes.push_back(sc);
+        }
+    }
+    std::vector<sim::MethodVariant> variants;
+    if (a.has("--variants")) {
+        std::string list = a.value("--variants");
+        for (char& c : list)
+            if (c == ',') c = ' ';
+        for (auto v : core::splitBlanks(list)) {
+            sim::MethodVariant mv;
+            if (!sim::findVariant(std::string(v), &mv)) return fail("eval footprint", "unknown variant " + std::string(v), kUsage);
+            variants.push_back(mv);
+        }
+    } else {
+        variants = sim::standardVariants();
+    }
+    if (a.has("--config")) {
+        // A variant "config" with the default parameters overridden by the file.
+        sim::MethodVariant mv{"config", {}};
+        const core::JsonParseResult j = core::readJsonFile(a.value("--config"));
+        if (!j.ok) return fail("eval footprint", j.error);
+        if (!footprintParamsFromJson(j.value, &mv.params, &err)) return fail("eval footprint", a.value("--config") + ": " + err);
+        variants.push_back(mv);
+    }
+    const bool quiet = a.has("-q") || a.has("--quiet");
+    Progress progress("eval", static_cast<size_t>(count) * ep.scenes.size(), quiet);
+    core::Feedback fb([&](double f) { progress.update(static_cast<size_t>(f * count * ep.scenes.size())); });
+    const auto stats = sim::evaluateFootprint(ep, variants, &fb);
+    progress.finish();
+    std::cout << sim::evalTableMarkdown(stats);
+    return kOk;
+}
+
+namespace {
+const char* kBenchUsage =
+    "usage: laserwb-cli bench footprint [--count N] [--seconds S] [--seed S]\n"
+    "ROIs per second on one core for each method variant, on N simulated 32x32 ROIs (mixed day and\n"
+    "night scenes, decoded in memory), plus the default pipeline with 16-bit PNG decoding and the\n"
+    "multi-threaded batch throughput. Prints a Markdown table.\n";
+}
+
+int cmdBenchFootprint(int argc, char** argv) {
+    Args a("bench footprint", kBenchUsage);
+    for (const char* o : {"--count", "--seconds", "--seed"}) a.option(o, true);
+    for (const char* o : {"--help", "-h"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail("bench footprint", a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << kBenchUsage;
+        return kOk;
+    }
+    std::string err;
+    long long count = 2000, seed = 7;
+    double seconds = 2.0;
+    if (!a.getInt("--count", 10, 1000000, &count, &err) || !a.getDouble("--seconds", 0.05, 600, &seconds, &err) ||
+        !a.getInt("--seed", 0, 1LL << 62, &seed, &err))
+        return fail("bench footprint", err, kUsage);
+    std::vector<cv::Mat> rois;
+    std::vector<std::vector<uchar>> pngs;
+    const sim::Scene scenes[] = {sim::Scene::Weak, sim::Scene::Moderate, sim::Scene::Strong, sim::Scene::Night};
+    for (long long i = 0; i < count; ++i) {
+        sim::FootprintSimParams sp;
+        sp.scene = scenes[i % 4];
+        const auto shot = sim::simulateFootprint(sp, sim::Rng::mix(static_cast<uint64_t>(seed), i));
+        cv::Mat f;
+        shot.image.convertTo(f, CV_32F);
+        rois.push_back(f);
+        std::vector<uchar> buf;
+        cv::imencode(".png", shot.image, buf);
+        pngs.push_back(std::move(buf));
+    }
+    using clock = std::chrono::steady_clock;
+    auto run = [&](const std::function<void(size_t)>& one) {
+        size_t n = 0;
+        const auto t0 = clock::now();
+        double el = 0;
+        do {
+            one(n % rois.size());
+            ++n;
+            if (n % 64 == 0) el = std::chrono::duration<double>(clock::now() - t0).count();
+        } while (el < seconds);
+        el = std::chrono::duration<double>(clock::now() - t0).count();
+        return std::make_pair(n / el, 1e6 * el / n);
+    };
+    std::cout << "| pipeline | ROIs/s (1 core) | µs per ROI |\n|---|---|---|\n";
+    size_t sink = 0;
+    for (const auto& v : sim::standardVariants()) {
+        const auto [rate, us] = run([&](size_t i) { sink += processRoi(rois[i], v.params).verdict == Verdict::Good; });
+        std::cout << "| " << v.name << (v.name == "gauss" ? " (default)" : "") << " | " << core::formatFixed(rate, 0)
+                  << " | " << core::formatFixed(us, 1) << " |\n";
+    }
+    const FootprintParams def;
+    const auto [rate, us] = run([&](size_t i) {
+        cv::Mat img = cv::imdecode(pngs[i], cv::IMREAD_UNCHANGED), f;
+        img.convertTo(f, CV_32F);
+        sink += processRoi(f, def).verdict == Verdict::Good;
+    });
+    std::cout << "| gauss + 16-bit PNG decode | " << core::formatFixed(rate, 0) << " | " << core::formatFixed(us, 1) << " |\n";
+    // All cores: the same default pipeline over the ROIs on every hardware thread.
+    const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+    std::atomic<size_t> total{0};
+    const auto t0 = clock::now();
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < hw; ++t)
+        pool.emplace_back([&, t]() {
+            size_t n = 0, s = 0;
+            while (std::chrono::duration<double>(clock::now() - t0).count() < seconds)
+                for (int k = 0; k < 32; ++k, ++n) s += processRoi(rois[(n * hw + t) % rois.size()], def).ok;
+            total += n;
+            (void)s;
+        });
+    for (auto& t : pool) t.join();
+    const double el = std::chrono::duration<double>(clock::now() - t0).count();
+    std::cout << "| gauss, " << hw << " threads | " << core::formatFixed(total / el, 0) << " (all cores) | "
+              << core::formatFixed(1e6 * el * hw / total, 1) << " per thread |\n";
+    std::cerr << "(" << count << " distinct ROIs, " << core::formatFixed(seconds, 1) << " s per row; checksum " << sink
+              << ")\n";
+    return kOk;
+}
+
+}  // namespace lwb::cli

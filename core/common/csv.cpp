@@ -1,0 +1,124 @@
+#include "core/common/csv.hpp"
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/text.hpp"
+
+namespace lwb::core {
+
+int CsvTable::column(std::string_view name) const {
+    const std::string want = toLower(trim(name));
+    for (size_t i = 0; i < header.size(); ++i)
+        if (toLower(trim(header[i])) == want) return static_cast<int>(i);
+    return -1;
+}
+
+namespace {
+// Splits one logical record starting at text[pos]; advances pos past its line end.
+// Returns false with *err on an unterminated quote.
+bool nextRecord(std::string_view text, size_t& pos, long& line, std::vector<std::string>& fields,
+                std::string* err) {
+    fields.clear();
+    std::string cur;
+    bool inQuotes = false, fieldStarted = false;
+    const long startLine = line;
+    while (pos < text.size()) {
+        const char c = text[pos++];
+        if (inQuotes) {
+            if (c == '"') {
+                if (pos < text.size() && text[pos] == '"') {
+                    cur.push_back('"');
+                    ++pos;
+                } else {
+                    inQuotes = false;
+                }
+            } else {
+                if (c == '\n') ++line;
+                cur.push_back(c);
+            }
+            continue;
+        }
+        if (c == '"' && !fieldStarted) {
+            inQuotes = true;
+            fieldStarted = true;
+        } else if (c == ',') {
+            fields.push_back(std::move(cur));
+            cur.clear();
+            fieldStarted = false;
+        } else if (c == '\n') {
+            ++line;
+            break;
+        } else if (c == '\r') {
+            // dropped: CRLF line ends
+        } else {
+            cur.push_back(c);
+            fieldStarted = true;
+        }
+    }
+    if (inQuotes) {
+        *err = "line " + std::to_string(startLine) + ": quoted field is not closed";
+        return false;
+    }
+    fields.push_back(std::move(cur));
+    return true;
+}
+}  // namespace
+
+CsvReadResult parseCsv(std::string_view text, const std::string& source) {
+    CsvReadResult r;
+    if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
+        static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF)
+        text.remove_prefix(3);  // UTF-8 byte order mark
+    size_t pos = 0;
+    long line = 1;
+    std::vector<std::string> fields;
+    bool haveHeader = false;
+    while (pos < text.size()) {
+        const long recLine = line;
+        std::string err;
+        if (!nextRecord(text, pos, line, fields, &err)) {
+            r.error = source + ":" + err;
+            return r;
+        }
+        if (fields.size() == 1 && trim(fields[0]).empty()) continue;  // blank line
+        if (!fields.empty() && !fields[0].empty() && trim(fields[0]).substr(0, 1) == "#") continue;
+        if (!haveHeader) {
+            for (auto& f : fields) f = std::string(trim(f));
+            r.table.header = fields;
+            haveHeader = true;
+            continue;
+        }
+        if (fields.size() != r.table.header.size()) {
+            r.error = source + ":" + std::to_string(recLine) + ": " + std::to_string(fields.size()) +
+                      " fields, but the header has " + std::to_string(r.table.header.size());
+            return r;
+        }
+        r.table.rows.push_back(fields);
+        r.table.lines.push_back(recLine);
+    }
+    if (!haveHeader) {
+        r.error = source + ": empty file (no header line)";
+        return r;
+    }
+    r.ok = true;
+    return r;
+}
+
+CsvReadResult readCsv(const std::string& path) {
+    CsvReadResult r;
+    std::string text;
+    if (!readFileText(path, &text, &r.error)) return r;
+    return parseCsv(text, path);
+}
+
+std::string csvEscape(std::string_view field) {
+    if (field.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(field);
+    std::string out = "\"";
+    for (char c : field) {
+        if (c == '"') out.push_back('"');
+        out.push_back(c);
+    }
+    out.push_back('"');
+    return out;
+}
+
+}  // namespace lwb::core

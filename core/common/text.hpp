@@ -1,0 +1,26 @@
+#pragma once
+// Small text helpers shared by the readers: strict number parsing, splitting, trimming.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lwb::core {
+
+/// Parses the whole of `s` (surrounding blanks allowed) as a double. False on empty text,
+/// trailing garbage, or overflow. NaN / inf texts parse only when allowNonFinite.
+bool parseDouble(std::string_view s, double* out, bool allowNonFinite = false);
+/// Parses the whole of `s` as a base-10 integer. False on garbage or overflow.
+bool parseLong(std::string_view s, long long* out);
+
+std::string_view trim(std::string_view s);
+/// Splits on runs of blanks (space, tab): the CRD/CPF/SINEX free format.
+std::vector<std::string_view> splitBlanks(std::string_view s);
+std::string toLower(std::string_view s);
+/// "%.*g" formatting that round-trips a double (17 significant digits when needed).
+std::string formatDouble(double v, int significant = 10);
+/// Shortest "%g" text that reads back to exactly v.
+std::string formatShortest(double v);
+/// Fixed-point formatting with `decimals` digits after the point.
+std::string formatFixed(double v, int decimals);
+
+}  // namespace lwb::core

@@ -1,0 +1,99 @@
+#include "core/footprint/background.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace lwb::core::footprint {
+
+const char* noiseClassName(NoiseClass c) {
+    switch (c) {
+        case NoiseClass::Night: return "night";
+        case NoiseClass::Weak: return "weak";
+        case NoiseClass::Moderate: return "moderate";
+        case NoiseClass::Strong: return "strong";
+    }
+    return "?";
+}
+
+std::string validate(const BackgroundParams& p) {
+    if (!std::isfinite(p.nightBelow) || !std::isfinite(p.weakBelow) || !std::isfinite(p.strongAbove))
+        return "noise class thresholds must be finite numbers";
+    if (!(p.nightBelow <= p.weakBelow && p.weakBelow <= p.strongAbove))
+        return "noise class thresholds must satisfy night_below <= weak_below <= strong_above";
+    if (!(p.clipSigma > 0.5 && p.clipSigma < 100)) return "background clip sigma must be in (0.5, 100)";
+    if (p.iterations < 0 || p.iterations > 50) return "background clip iterations must be in 0..50";
+    return {};
+}
+
+namespace {
+// Histogram of the ROI (at most 4096 bins, 1 DN wide for 14-bit data) from which the clipped
+// median and MAD are read in O(bins) per clipping pass: no sorting, no per-pass copies.
+struct Histogram {
+    float lo = 0, width = 1;
+    std::vector<int> counts;
+    float value(double bin) const { return static_cast<float>(lo + bin * width); }
+};
+
+Histogram buildHistogram(const cv::Mat& roi) {
+    Histogram h;
+    double mn = 0, mx = 0;
+    cv::minMaxLoc(roi, &mn, &mx);
+    h.lo = static_cast<float>(mn);
+    const double span = mx - mn;
+    const int bins = static_cast<int>(std::min(4096.0, std::floor(span) + 1));
+    h.width = bins > 1 ? static_cast<float>(span / (bins - 1)) : 1.0f;
+    h.counts.assign(static_cast<size_t>(std::max(bins, 1)), 0);
+    const float inv = 1.0f / h.width;
+    for (int y = 0; y < roi.rows; ++y) {
+        const float* row = roi.ptr<float>(y);
+        for (int x = 0; x < roi.cols; ++x) ++h.counts[static_cast<size_t>((row[x] - h.lo) * inv + 0.5f)];
+    }
+    return h;
+}
+}  // namespace
+
+BackgroundResult estimateBackground(const cv::Mat& roi, const BackgroundParams& params) {
+    BackgroundResult r;
+    if (roi.empty() || roi.type() != CV_32FC1) {
+        r.error = "background: ROI must be a non-empty CV_32FC1 image";
+        return r;
+    }
+    const Histogram h = buildHistogram(roi);
+    const int nb = static_cast<int>(h.counts.size());
+    // cum[b] = pixels in bins 0..b-1, so any clipped median / MAD is a binary search.
+    std::vector<long> cum(static_cast<size_t>(nb) + 1, 0);
+    for (int b = 0; b < nb; ++b) cum[b + 1] = cum[b] + h.counts[b];
+    auto countIn = [&](int lo, int hi) { return cum[std::max(hi, -1) + 1] - cum[std::max(lo, 0)]; };  // bins lo..hi
+    int top = nb - 1;  // last bin kept by the clip
+    int medianBin = 0, madBins = 0;
+    for (int it = 0; it <= params.iterations; ++it) {
+        const long m = cum[top + 1];
+        if (m < 8) break;
+        // Median: first bin where the cumulative count passes half.
+        medianBin = static_cast<int>(std::upper_bound(cum.begin() + 1, cum.begin() + top + 2, m / 2) - cum.begin()) - 1;
+        // MAD: smallest radius (in bins) around the median holding half of the kept pixels.
+        int lo = 0, hi = std::max(medianBin, top - medianBin);
+        while (lo < hi) {
+            const int mid = (lo + hi) / 2;
+            if (2 * countIn(medianBin - mid, std::min(medianBin + mid, top)) >= m) hi = mid;
+            else lo = mid + 1;
+        }
+        madBins = lo;
+        const double sigma = std::max(1.4826 * madBins * h.width, 0.5);
+        const int next = std::min(top, static_cast<int>((h.value(medianBin) + params.clipSigma * sigma - h.lo) / h.width));
+        if (next >= top) break;
+        top = next;
+    }
+    r.level = h.value(medianBin);
+    r.noise = std::max(1.4826 * madBins * h.width, 0.5);  // never zero: quantisation alone gives ~0.3 DN
+    if (r.level < params.nightBelow) r.noiseClass = NoiseClass::Night;
+    else if (r.level < params.weakBelow) r.noiseClass = NoiseClass::Weak;
+    else if (r.level <= params.strongAbove) r.noiseClass = NoiseClass::Moderate;
+    else r.noiseClass = NoiseClass::Strong;
+    r.ok = true;
+    return r;
+}
+
+}  // namespace lwb::core::footprint

@@ -1,0 +1,390 @@
+#include "core/footprint/gauss_fit.hpp"
+
+#include "core/footprint/gauss_kernel.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace lwb::core::footprint {
+
+std::string validate(const GaussParams& p) {
+    if (p.guoIterations < 0 || p.guoIterations > 50) return "Guo iterations must be within 0..50";
+    if (p.lmMaxIterations < 1 || p.lmMaxIterations > 500) return "LM iterations must be within 1..500";
+    if (!(p.lmTolerancePx > 0 && p.lmTolerancePx < 1)) return "LM tolerance must be in (0, 1) px";
+    if (!(p.lmWindowSigmas >= 1 && p.lmWindowSigmas <= 20) || !(p.lmWindowSigmasTextured >= 1 && p.lmWindowSigmasTextured <= 20))
+        return "LM windows must be 1..20 sigma";
+    if (!(p.texturedRatio >= 1 && p.texturedRatio <= 1000)) return "textured-ground ratio must be within 1..1000";
+    if (p.lmMinHalfWidth < 2 || p.lmMinHalfWidth > 200) return "LM minimum half-width must be within 2..200 px";
+    if (!(p.robustScale > 0.1 && p.robustScale < 100)) return "robust scale must be in (0.1, 100) sigma";
+    return {};
+}
+
+namespace {
+
+struct DomainPixel {
+    double u, v;   // position relative to the reference pixel
+    double f;      // I − background (> 0)
+    double lnfn;   // ln(f / S)
+};
+
+// A Gaussian in local coordinates, from the log-quadratic coefficients.
+struct Quad {
+    double lnScale = 0;  // ln(amplitude / S)
+    double x0 = 0, y0 = 0, a = 0, b = 0, c = 0;
+};
+
+bool positiveDefinite(double a, double b, double c) { return a > 0 && c > 0 && a * c - b * b > 0; }
+
+// Weighted log-quadratic least squares: rows w_i·[1 u v u² (uv) v²] = w_i·ln fn_i. With
+// w_i = fn_i this is exactly paper 000's A = B·C (eq. 3–7), solved by QR as the paper does
+// (qr = true). The Guo passes solve the same system through its 6×6 normal equations
+// (qr = false), which is several times cheaper and well conditioned in peak-centred
+// coordinates. Returns false when the quadratic form is not a peak.
+bool logFit(const std::vector<DomainPixel>& px, const std::vector<double>& w, bool xy, bool qr, Quad* q) {
+    const int n = static_cast<int>(px.size());
+    const int k = xy ? 6 : 5;
+    if (n < k + 1) return false;
+    Eigen::VectorXd C;
+    if (qr) {
+        Eigen::MatrixXd B(n, k);
+        Eigen::VectorXd A(n);
+        for (int i = 0; i < n; ++i) {
+            const double u = px[i].u, v = px[i].v, wi = w[i];
+            B(i, 0) = wi;
+            B(i, 1) = wi * u;
+            B(i, 2) = wi * v;
+            B(i, 3) = wi * u * u;
+            if (xy) {
+                B(i, 4) = wi * u * v;
+                B(i, 5) = wi * v * v;
+            } else {
+                B(i, 4) = wi * v * v;
+            }
+            A(i) = wi * px[i].lnfn;
+        }
+        C = B.householderQr().solve(A);
+    } else {
+        Eigen::Matrix<double, 6, 6> N = Eigen::Matrix<double, 6, 6>::Zero();
+        Eigen::Matrix<double, 6, 1> r = Eigen::Matrix<double, 6, 1>::Zero();
+        for (int i = 0; i < n; ++i) {
+            const double u = px[i].u, v = px[i].v, w2 = w[i] * w[i];
+            const double row[6] = {1, u, v, u * u, xy ? u * v : v * v, v * v};
+            for (int a = 0; a < k; ++a) {
+                r(a) += w2 * row[a] * px[i].lnfn;
+                for (int b = a; b < k; ++b) N(a, b) += w2 * row[a] * row[b];
+            }
+        }
+        C = N.topLeftCorner(k, k).selfadjointView<Eigen::Upper>().ldlt().solve(r.head(k));
+    }
+    if (!C.allFinite()) return false;
+    const double c3 = C(3), c4 = xy ? C(4) : 0.0, c5 = xy ? C(5) : C(4);
+    // ln f = c0 + c1 u + c2 v + c3 u² + c4 uv + c5 v²  ⇒  precision M = [[−2c3, −c4], [−c4, −2c5]]
+    const double a = -2 * c3, b = -c4, c = -2 * c5;
+    if (!positiveDefinite(a, b, c)) return false;
+    const double det = a * c - b * b;
+    q->a = a;
+    q->b = b;
+    q->c = c;
+    q->x0 = (c * C(1) - b * C(2)) / det;  // M p0 = [c1, c2]
+    q->y0 = (a * C(2) - b * C(1)) / det;
+    q->lnScale = C(0) + 0.5 * (a * q->x0 * q->x0 + 2 * b * q->x0 * q->y0 + c * q->y0 * q->y0);
+    return std::isfinite(q->x0) && std::isfinite(q->y0) && std::isfinite(q->lnScale);
+}
+
+// Paper 000 eq. 8 residual at a given model: E_i = fn_i·ln(f_i / g_i), fn = f / Σf. At the
+// log-fit's own solution this equals ‖A − B·C‖²/N of eq. 8 exactly.
+double paperMse(const std::vector<DomainPixel>& px, const std::vector<double>& model) {
+    double s = 0;
+    for (const auto& p : px) s += p.f;
+    double e2 = 0;
+    for (size_t i = 0; i < px.size(); ++i) {
+        const double e = (px[i].f / s) * std::log(px[i].f / std::max(model[i], 1e-300));
+        e2 += e * e;
+    }
+    return px.empty() ? NAN : e2 / px.size();
+}
+
+struct WinPixel {
+    double dx, dy;  // relative to the window centre
+    double value;
+    double weight;
+};
+
+constexpr int kP = 9;  // amplitude, x0, y0, a, b, c, bg0, bgX, bgY
+using Vec9 = Eigen::Matrix<double, kP, 1>;
+using Mat9 = Eigen::Matrix<double, kP, kP>;
+
+struct Cost {
+    double value = 0;  // what LM minimises: Σ w r², or the Cauchy cost Σ c² ln(1 + w r²/c²)
+    double chi2 = 0;   // Σ w_eff r² with the effective (IRLS) weights, for the covariance scale
+};
+
+// Evaluates the cost of the model at p over the window and, when jtj is given, the Gauss–Newton
+// normal equations JᵀWJ and JᵀWr. cauchyC2 > 0 turns on the Cauchy loss: each pixel's weight is
+// then multiplied by 1/(1 + w r²/c²) (iteratively re-weighted least squares), so ground features
+// a Gaussian + plane cannot describe (roads, buildings, field edges) stop pulling the fit.
+// The plane is referenced to the current centre (x0, y0). The weighted Jacobian rows go into a
+// matrix and JᵀWJ is 45 column dot products: contiguous and vectorised.
+Cost accumulate(const std::vector<WinPixel>& win, const Vec9& p, double cauchyC2, Mat9* jtj, Vec9* jtr) {
+    const double A = p(0), x0 = p(1), y0 = p(2), a = p(3), b = p(4), c = p(5);
+    const int n = static_cast<int>(win.size());
+    thread_local std::vector<double> tq, te, tz;
+    thread_local Eigen::Matrix<double, Eigen::Dynamic, kP> tJ;
+    thread_local Eigen::VectorXd tR;
+    auto& q = tq;
+    auto& e = te;
+    auto& z = tz;
+    auto& J = tJ;
+    auto& R = tR;
+    q.resize(static_cast<size_t>(n));
+    e.resize(static_cast<size_t>(n));
+    z.resize(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const double dx = win[i].dx - x0, dy = win[i].dy - y0;
+        q[i] = a * dx * dx + 2 * b * dx * dy + c * dy * dy;
+    }
+    kernel::halfNegExp(q.data(), e.data(), n);
+    if (jtj) {
+        J.resize(n, kP);
+        R.resize(n);
+    }
+    Cost cost;
+    for (int i = 0; i < n; ++i) {
+        const WinPixel& w = win[static_cast<size_t>(i)];
+        const double dx = w.dx - x0, dy = w.dy - y0;
+        const double g = A * e[i];
+        const double r = w.value - (g + p(6) + p(7) * dx + p(8) * dy);
+        const double z2 = w.weight * r * r;
+        z[i] = z2;
+        double weight = w.weight;
+        if (cauchyC2 > 0)
+            weight /= 1.0 + z2 / cauchyC2;
+        else
+            cost.value += z2;
+        cost.chi2 += weight * r * r;
+        if (!jtj) continue;
+        const double sw = std::sqrt(weight);
+        J(i, 0) = sw * e[i];
+        J(i, 1) = sw * (g * (a * dx + b * dy) - p(7));
+        J(i, 2) = sw * (g * (b * dx + c * dy) - p(8));
+        J(i, 3) = sw * (-0.5 * g * dx * dx);
+        J(i, 4) = sw * (-g * dx * dy);
+        J(i, 5) = sw * (-0.5 * g * dy * dy);
+        J(i, 6) = sw;
+        J(i, 7) = sw * dx;
+        J(i, 8) = sw * dy;
+        R(i) = sw * r;
+    }
+    if (jtj) {
+        for (int u = 0; u < kP; ++u) {
+            for (int v = u; v < kP; ++v) (*jtj)(u, v) = (*jtj)(v, u) = J.col(u).dot(J.col(v));
+            (*jtr)(u) = J.col(u).dot(R);
+        }
+    }
+    return cost;
+}
+
+// Levenberg–Marquardt from p on the (plain or Cauchy) cost; returns the iterations used.
+// jtj/jtr/cost hold the state at p on entry and on return.
+int levenbergMarquardt(const std::vector<WinPixel>& win, Vec9& p, double cauchyC2, int maxIterations,
+                       double tolerance, Mat9& jtj, Vec9& jtr, Cost& cost) {
+    double lambda = 1e-3;
+    int it = 0;
+    for (; it < maxIterations; ++it) {
+        bool stepTaken = false, converged = false;
+        while (lambda < 1e10) {
+            Mat9 aug = jtj;
+            aug.diagonal() *= (1.0 + lambda);
+            const Vec9 delta = aug.ldlt().solve(jtr);
+            const Vec9 trial = p + delta;
+            if (!delta.allFinite() || trial(0) <= 0 || !positiveDefinite(trial(3), trial(4), trial(5))) {
+                lambda *= 10;
+                continue;
+            }
+            Mat9 jtjTrial;
+            Vec9 jtrTrial;
+            const Cost costTrial = accumulate(win, trial, cauchyC2, &jtjTrial, &jtrTrial);
+            if (costTrial.value <= cost.value) {
+                converged = std::max(std::fabs(delta(1)), std::fabs(delta(2))) < tolerance;
+                p = trial;
+                cost = costTrial;
+                jtj = jtjTrial;
+                jtr = jtrTrial;
+                lambda = std::max(lambda * 0.1, 1e-9);
+                stepTaken = true;
+                break;
+            }
+            lambda *= 10;
+        }
+        if (!stepTaken || converged) break;  // at the minimum within precision
+    }
+    return it + 1;
+}
+
+void fillFit(const GaussModel& m, double noise, SpotFit* f) {
+    const double det = m.a * m.c - m.b * m.b;
+    const double sxx = m.c / det, syy = m.a / det, sxy = -m.b / det;  // covariance = M⁻¹
+    f->x = m.x0;
+    f->y = m.y0;
+    setShapeFromCovariance(sxx, sxy, syy, 4.0, f);
+    f->amplitude = m.amplitude;
+    f->background = m.bg0;
+    f->snr = m.amplitude / std::max(noise, 1e-9);
+}
+
+}  // namespace
+
+GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double background, double noise,
+                     const GaussParams& params, const CameraParams& camera) {
+    GaussResult r;
+    if (!domain.found) {
+        r.fit.error = domain.why.empty() ? "no spot domain" : domain.why;
+        return r;
+    }
+    const int w = roi.cols, h = roi.rows;
+    const float* img = roi.ptr<float>();
+    const double refX = domain.peakX, refY = domain.peakY;
+    std::vector<DomainPixel> px;
+    px.reserve(domain.pixels.size());
+    double S = 0;
+    for (int p : domain.pixels) {
+        const double f = img[p] - background;
+        if (f <= 0) continue;
+        px.push_back({p % w - refX, p / w - refY, f, 0});
+        S += f;
+    }
+    if (px.size() < 7) {
+        r.fit.error = "Gaussian fit: only " + std::to_string(px.size()) + " domain pixels above the background";
+        return r;
+    }
+    for (auto& p : px) p.lnfn = std::log(p.f / S);
+    // Stage 1 (Wu): weights f (unit-sum normalised), QR.
+    std::vector<double> wts(px.size());
+    for (size_t i = 0; i < px.size(); ++i) wts[i] = px[i].f / S;
+    Quad q;
+    if (!logFit(px, wts, params.xyTerm, true, &q)) {
+        r.fit.error = "Gaussian fit failed: the domain's log-intensity is not peaked (no closed spot)";
+        return r;
+    }
+    r.stage = "wu";
+    int iterations = 1;
+    // Stage 2 (Guo): weights from the model.
+    std::vector<double> quad(px.size());
+    for (int it = 0; it < params.guoIterations; ++it) {
+        for (size_t i = 0; i < px.size(); ++i) {
+            const double dx = px[i].u - q.x0, dy = px[i].v - q.y0;
+            quad[i] = q.a * dx * dx + 2 * q.b * dx * dy + q.c * dy * dy;
+        }
+        kernel::halfNegExp(quad.data(), wts.data(), static_cast<int>(px.size()));
+        const double scale = std::exp(q.lnScale);
+        for (double& wt : wts) wt *= scale;
+        Quad next;
+        if (!logFit(px, wts, params.xyTerm, false, &next)) {
+            r.note = "Guo iteration " + std::to_string(it + 1) + " lost the peak; kept the previous pass";
+            break;
+        }
+        q = next;
+        r.stage = "guo";
+        ++iterations;
+    }
+    GaussModel m;
+    m.amplitude = S * std::exp(q.lnScale);
+    m.x0 = q.x0 + refX;
+    m.y0 = q.y0 + refY;
+    m.a = q.a;
+    m.b = q.b;
+    m.c = q.c;
+    m.bg0 = background;
+    if (!(m.x0 > -0.5 && m.y0 > -0.5 && m.x0 < w - 0.5 && m.y0 < h - 0.5)) {
+        r.fit.error = "Gaussian fit failed: centre (" + std::to_string(m.x0) + ", " + std::to_string(m.y0) +
+                      ") outside the ROI";
+        return r;
+    }
+    const double det0 = m.a * m.c - m.b * m.b;
+    const double sigmaMajor = std::sqrt(0.5 * (m.a + m.c + std::sqrt((m.a - m.c) * (m.a - m.c) + 4 * m.b * m.b)) / det0);
+    // Is the ground textured (background σ well above the photon + read σ)?
+    const double g = camera.gainEPerDn, rn = camera.readNoiseE / camera.gainEPerDn;
+    const double photonVar = std::max(background, 0.0) / g + rn * rn;
+    const bool textured = noise * noise > params.texturedRatio * params.texturedRatio * photonVar;
+    const double texVar = std::max(0.0, noise * noise - photonVar);
+    // Window for LM (and for the covariance of every stage).
+    const double windowSigmas = textured ? params.lmWindowSigmasTextured : params.lmWindowSigmas;
+    const int hw = std::max(params.lmMinHalfWidth, static_cast<int>(std::ceil(windowSigmas * sigmaMajor)));
+    const int cx = static_cast<int>(std::lround(m.x0)), cy = static_cast<int>(std::lround(m.y0));
+    const int xa = std::max(0, cx - hw), xb = std::min(w - 1, cx + hw);
+    const int ya = std::max(0, cy - hw), yb = std::min(h - 1, cy + hw);
+    std::vector<WinPixel> win;
+    win.reserve(size_t(xb - xa + 1) * (yb - ya + 1));
+    for (int y = ya; y <= yb; ++y)
+        for (int x = xa; x <= xb; ++x) win.push_back({double(x - cx), double(y - cy), img[y * w + x], 1.0});
+    if (params.noiseWeights) {
+        // 1/variance of each pixel under the start model: photon + read + ground texture.
+        std::vector<double> qw(win.size()), ew(win.size());
+        const double ox = m.x0 - cx, oy = m.y0 - cy;
+        for (size_t i = 0; i < win.size(); ++i) {
+            const double ddx = win[i].dx - ox, ddy = win[i].dy - oy;
+            qw[i] = m.a * ddx * ddx + 2 * m.b * ddx * ddy + m.c * ddy * ddy;
+        }
+        kernel::halfNegExp(qw.data(), ew.data(), static_cast<int>(win.size()));
+        for (size_t i = 0; i < win.size(); ++i) {
+            const double model = background + m.amplitude * ew[i];
+            win[i].weight = 1.0 / (std::max(model, 0.0) / g + rn * rn + texVar);
+        }
+    }
+    Vec9 p;
+    p << m.amplitude, m.x0 - cx, m.y0 - cy, m.a, m.b, m.c, background, 0, 0;
+    Mat9 jtj;
+    Vec9 jtr;
+    // Textured ground: Cauchy loss (robustScale in residual σ); photon-limited: least squares.
+    const double cauchyC2 = textured && params.robustLoss ? params.robustScale * params.robustScale : 0.0;
+    Cost cost = accumulate(win, p, cauchyC2, &jtj, &jtr);
+    if (params.lmRefine) {
+        iterations += levenbergMarquardt(win, p, cauchyC2, params.lmMaxIterations, params.lmTolerancePx, jtj, jtr, cost);
+        const double moved = std::hypot(p(1) + cx - m.x0, p(2) + cy - m.y0);
+        const double pcx = p(1) + cx, pcy = p(2) + cy;
+        if (moved > std::max(2.0, sigmaMajor) || pcx < xa - 0.5 || pcx > xb + 0.5 || pcy < ya - 0.5 || pcy > yb + 0.5) {
+            r.note = "LM moved the centre by " + std::to_string(moved).substr(0, 5) + " px; kept the log-fit result";
+            p << m.amplitude, m.x0 - cx, m.y0 - cy, m.a, m.b, m.c, background, 0, 0;
+            cost = accumulate(win, p, cauchyC2, &jtj, &jtr);
+        } else {
+            r.stage = "lm";
+            m.amplitude = p(0);
+            m.x0 = pcx;
+            m.y0 = pcy;
+            m.a = p(3);
+            m.b = p(4);
+            m.c = p(5);
+            m.bg0 = p(6);
+            m.bgX = p(7);
+            m.bgY = p(8);
+        }
+    }
+    // Covariance of the parameters at the result, scaled by the reduced χ².
+    const int dof = static_cast<int>(win.size()) - kP;
+    const Mat9 cov = jtj.ldlt().solve(Mat9::Identity()) * (dof > 0 ? cost.chi2 / dof : 1.0);
+    fillFit(m, noise, &r.fit);
+    r.fit.uncertaintyPx = std::sqrt(std::max(0.0, cov(1, 1) + cov(2, 2)));
+    // Paper 000's MSE at the reported model, over the domain pixels above the fitted background.
+    std::vector<DomainPixel> dpx;
+    std::vector<double> model;
+    dpx.reserve(domain.pixels.size());
+    model.reserve(domain.pixels.size());
+    for (int pi : domain.pixels) {
+        const double x = pi % w, y = pi / w, dx = x - m.x0, dy = y - m.y0;
+        const double f = img[pi] - (m.bg0 + m.bgX * dx + m.bgY * dy);
+        if (f <= 0) continue;
+        dpx.push_back({x, y, f, 0});
+        model.push_back(m.amplitude * std::exp(-0.5 * (m.a * dx * dx + 2 * m.b * dx * dy + m.c * dy * dy)));
+    }
+    r.fit.mse = paperMse(dpx, model);
+    r.fit.areaPx = static_cast<double>(domain.pixels.size());
+    r.fit.iterations = iterations;
+    r.model = m;
+    r.fit.ok = std::isfinite(r.fit.x) && std::isfinite(r.fit.y);
+    if (!r.fit.ok) r.fit.error = "Gaussian fit produced a non-finite centre";
+    return r;
+}
+
+}  // namespace lwb::core::footprint

@@ -1,0 +1,58 @@
+#pragma once
+// Gaussian spot fit, paper 000 ("Wu") and its extensions, each stage selectable:
+//   1. Wu: f·ln f linear least squares by QR on the thresholded domain (eq. 2–8). With
+//      xyTerm=false it is the paper's 5-column system (no tilt); with xyTerm=true the f·xy
+//      column is added so the fitted ellipse can tilt.
+//   2. Guo: the same system re-weighted with the model instead of the noisy data, iterated.
+//   3. LM: Levenberg–Marquardt refinement of a rotated Gaussian + background plane on a window
+//      around the spot, with residuals weighted by their expected variance, then re-weighted
+//      robustly (Cauchy) so that ground features do not pull the centre.
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "core/footprint/segment.hpp"
+#include "core/footprint/spot.hpp"
+
+namespace lwb::core::footprint {
+
+struct GaussParams {
+    bool xyTerm = true;          ///< add the f·xy column (tilt); false = the paper's system
+    int guoIterations = 3;       ///< model-weighted passes after the first solve (0 = paper)
+    bool lmRefine = true;        ///< Levenberg–Marquardt refinement (false = paper / Guo only)
+    int lmMaxIterations = 20;    ///< LM iteration cap
+    double lmTolerancePx = 1e-3; ///< LM stops when a step moves the centre less than this (px)
+    bool noiseWeights = true;    ///< LM weights 1/(photon + read + ground-texture variance)
+    /// The ground counts as textured when the background σ exceeds the camera's photon + read σ
+    /// at that level by this factor. Textured ground gets a tighter window and robust passes
+    /// (ground structure under a wide window pulls the centre); photon-limited ground gets a
+    /// wide window and plain LM (every pixel carries information).
+    double texturedRatio = 1.5;
+    double lmWindowSigmas = 3.0;          ///< LM window half-width (major-axis σ), photon-limited
+    double lmWindowSigmasTextured = 1.75; ///< the same on textured ground
+    int lmMinHalfWidth = 3;      ///< LM window half-width lower bound (px)
+    bool robustLoss = true;      ///< textured ground: Cauchy loss instead of least squares
+    double robustScale = 1.5;    ///< Cauchy scale in residual σ
+};
+
+/// A rotated Gaussian: amplitude·exp(−½[a·dx² + 2b·dx·dy + c·dy²]), dx = x − x0, dy = y − y0.
+struct GaussModel {
+    double amplitude = 0, x0 = 0, y0 = 0;
+    double a = 0, b = 0, c = 0;  ///< inverse covariance (1/px²)
+    double bg0 = 0, bgX = 0, bgY = 0;  ///< background plane bg0 + bgX·(x − x0) + bgY·(y − y0)
+};
+
+struct GaussResult {
+    SpotFit fit;
+    GaussModel model;
+    std::string stage;   ///< stage that produced the result: "wu", "guo" or "lm"
+    std::string note;    ///< e.g. why LM was not kept
+};
+
+/// Fits the spot of a CV_32FC1 ROI on the given domain. background/noise from
+/// estimateBackground; camera for the noise weights.
+GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double background, double noise,
+                     const GaussParams& params = {}, const CameraParams& camera = {});
+
+std::string validate(const GaussParams& p);
+
+}  // namespace lwb::core::footprint

@@ -1,0 +1,75 @@
+#pragma once
+// The footprint pipeline for one ROI (background → domain → method → verdict → CRLB) and for
+// a frame with one or more nominal centres, with every parameter in one struct.
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "core/common/json.hpp"
+#include "core/footprint/background.hpp"
+#include "core/footprint/gauss_fit.hpp"
+#include "core/footprint/gcm.hpp"
+#include "core/footprint/roi.hpp"
+#include "core/footprint/segment.hpp"
+#include "core/footprint/tefm.hpp"
+#include "core/footprint/verdict.hpp"
+
+namespace lwb::core::footprint {
+
+enum class Method { Gcm, Tefm, Gauss };
+const char* methodName(Method m);
+bool parseMethod(const std::string& s, Method* m);
+
+struct FootprintParams {
+    Method method = Method::Gauss;   ///< default: the full Gaussian (Wu + xy + Guo + LM)
+    std::string preset = "wu2021";   ///< name of the verdict criteria (informational once loaded)
+    RoiParams roi;
+    BackgroundParams background;
+    SegmentParams segment;
+    GcmParams gcm;
+    TefmParams tefm;
+    GaussParams gauss;
+    VerdictParams verdict;
+    CameraParams camera;
+};
+
+/// Empty when every parameter is valid, else what is wrong.
+std::string validate(const FootprintParams& p);
+/// Loads the named verdict preset into p (and records the name). False when unknown.
+bool applyPreset(const std::string& name, FootprintParams* p);
+
+/// Reads a JSON config over p (missing keys keep their values). False with *error naming the
+/// key or the position when anything is malformed, non-finite or out of range.
+bool footprintParamsFromJson(const Json& j, FootprintParams* p, std::string* error);
+Json footprintParamsToJson(const FootprintParams& p);
+
+struct FootprintResult {
+    bool ok = false;            ///< false: the inputs or params were unusable (see error)
+    std::string error;
+    Method method = Method::Gauss;
+    BackgroundResult background;
+    SpotDomain domain;
+    SpotFit fit;                ///< ROI coordinates
+    GaussModel gaussModel;      ///< when method == Gauss and the fit succeeded
+    std::string gaussStage;     ///< "wu", "guo" or "lm"
+    TefmResult tefm;            ///< when method == Tefm (ellipse + constrained image)
+    Verdict verdict = Verdict::Rejected;
+    std::vector<std::string> reasons;
+    double crlbPx = NAN;        ///< Cramér–Rao bound on the radial error (closed form, fitted spot)
+};
+
+/// Runs the whole pipeline on a CV_32FC1 ROI. Never throws.
+FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params);
+
+struct FrameRoiResult {
+    FootprintResult result;     ///< fit in ROI coordinates
+    int originX = 0, originY = 0;  ///< add to ROI coordinates for full-image ones
+    std::vector<std::string> warnings;
+};
+
+/// Cuts one ROI per centre (or one searched / whole ROI when centres is empty) and processes
+/// each. On a ROI error the result has ok=false and the error.
+std::vector<FrameRoiResult> processFrame(const cv::Mat& image, const FootprintParams& params,
+                                         const std::vector<cv::Point2d>& centres);
+
+}  // namespace lwb::core::footprint

@@ -1,0 +1,192 @@
+#include "core/footprint/segment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace lwb::core::footprint {
+
+std::string validate(const SegmentParams& p) {
+    if (!(p.thresholdFactor > 0 && p.thresholdFactor < 1)) return "threshold factor must be in (0, 1)";
+    if (p.peakSmooth < 1 || p.peakSmooth > 9 || p.peakSmooth % 2 == 0) return "peak smoothing must be 1, 3, 5, 7 or 9 px";
+    if (!(p.minPeakSnr >= 0 && p.minPeakSnr < 1e6)) return "minimum peak SNR must be in [0, 1e6)";
+    if (p.minPixels < 1 || p.minPixels > 100000) return "minimum spot pixels must be within 1..100000";
+    if (!(p.secondSpotMinSeparation >= 1 && p.secondSpotMinSeparation < 1000))
+        return "second-spot separation must be in [1, 1000) px";
+    return {};
+}
+
+namespace {
+// Flood fill of the pixels where in[] is nonzero, from the seeds on the stack, into out[]
+// (set to 1). Stack entries are packed (y << 16 | x) so no division is needed.
+// eight: 8-connectivity (the spot domain) or 4 (its complement, when looking for holes).
+void flood(const unsigned char* in, int w, int h, bool eight, std::vector<int>& stack, unsigned char* out,
+           std::vector<int>* pixels) {
+    while (!stack.empty()) {
+        const int packed = stack.back();
+        stack.pop_back();
+        const int x = packed & 0xFFFF, y = packed >> 16;
+        if (pixels) pixels->push_back(y * w + x);
+        const int xa = x > 0 ? x - 1 : 0, xb = x < w - 1 ? x + 1 : x, ya = y > 0 ? y - 1 : 0, yb = y < h - 1 ? y + 1 : y;
+        for (int ny = ya; ny <= yb; ++ny)
+            for (int nx = xa; nx <= xb; ++nx) {
+                if (!eight && nx != x && ny != y) continue;
+                const int q = ny * w + nx;
+                if (in[q] && !out[q]) {
+                    out[q] = 1;
+                    stack.push_back(ny << 16 | nx);
+                }
+            }
+    }
+}
+
+// Box mean over (2r+1)² with replicated borders.
+void boxSmooth(const float* src, int w, int h, int r, float* dst) {
+    std::vector<float> rows(size_t(w) * h);
+    for (int y = 0; y < h; ++y) {
+        const float* s = src + size_t(y) * w;
+        float* o = rows.data() + size_t(y) * w;
+        for (int x = 0; x < w; ++x) {
+            float acc = 0;
+            if (x >= r && x < w - r)
+                for (int k = -r; k <= r; ++k) acc += s[x + k];
+            else
+                for (int k = -r; k <= r; ++k) acc += s[std::clamp(x + k, 0, w - 1)];
+            o[x] = acc;
+        }
+    }
+    const float norm = 1.0f / float((2 * r + 1) * (2 * r + 1));
+    for (int y = 0; y < h; ++y) {
+        float* o = dst + size_t(y) * w;
+        for (int x = 0; x < w; ++x) o[x] = 0;
+        for (int k = -r; k <= r; ++k) {
+            const float* s = rows.data() + size_t(std::clamp(y + k, 0, h - 1)) * w;
+            for (int x = 0; x < w; ++x) o[x] += s[x];
+        }
+        for (int x = 0; x < w; ++x) o[x] *= norm;
+    }
+}
+}  // namespace
+
+SpotDomain segmentSpot(const cv::Mat& roi, double background, double noise, double saturationDn,
+                       const SegmentParams& params) {
+    SpotDomain d;
+    const int w = roi.cols, h = roi.rows;
+    d.width = w;
+    d.height = h;
+    // Box-smoothed copy (replicated borders) to take the peak from.
+    cv::Mat smooth(h, w, CV_32F);
+    if (params.peakSmooth > 1)
+        boxSmooth(roi.ptr<float>(), w, h, params.peakSmooth / 2, smooth.ptr<float>());
+    else
+        roi.copyTo(smooth);
+    const float* smp = smooth.ptr<float>();
+    const int maxIndex = static_cast<int>(std::max_element(smp, smp + w * h) - smp);
+    const double maxV = smp[maxIndex];
+    const cv::Point maxP(maxIndex % w, maxIndex / w);
+    d.peakX = maxP.x;
+    d.peakY = maxP.y;
+    d.peak = maxV;
+    const double amp = maxV - background;
+    d.peakSnr = amp / std::max(noise, 1e-9);
+    if (amp <= 0 || d.peakSnr < params.minPeakSnr) {
+        d.why = "no spot: peak only " + std::to_string(d.peakSnr).substr(0, 5) + " sigma above the background";
+        return d;
+    }
+    d.threshold = background + params.thresholdFactor * amp;
+    const float* img = roi.ptr<float>();
+    std::vector<unsigned char> above(size_t(w) * h);
+    for (int i = 0; i < w * h; ++i) above[i] = img[i] > d.threshold;
+    // The peak of the smoothed image may sit on a raw pixel just under threshold: include it.
+    above[d.peakY * w + d.peakX] = 1;
+    d.mask.assign(size_t(w) * h, 0);
+    std::vector<int> stack;
+    stack.reserve(size_t(w) * h);
+    stack.push_back(d.peakY << 16 | d.peakX);
+    d.mask[d.peakY * w + d.peakX] = 1;
+    d.pixels.reserve(size_t(w) * h / 4);
+    flood(above.data(), w, h, true, stack, d.mask.data(), &d.pixels);
+    if (params.fillHoles) {
+        // Holes: non-domain pixels that no 4-connected path of non-domain pixels joins to the
+        // outside. Only the domain's bounding box (plus a 1 px margin) can hold any.
+        int bx0 = w, by0 = h, bx1 = -1, by1 = -1;
+        for (int p : d.pixels) {
+            bx0 = std::min(bx0, p % w);
+            bx1 = std::max(bx1, p % w);
+            by0 = std::min(by0, p / w);
+            by1 = std::max(by1, p / w);
+        }
+        bx0 = std::max(0, bx0 - 1);
+        by0 = std::max(0, by0 - 1);
+        bx1 = std::min(w - 1, bx1 + 1);
+        by1 = std::min(h - 1, by1 + 1);
+        const int bw = bx1 - bx0 + 1, bh = by1 - by0 + 1;
+        std::vector<unsigned char> notDomain(size_t(bw) * bh), outside(size_t(bw) * bh, 0);
+        for (int y = 0; y < bh; ++y)
+            for (int x = 0; x < bw; ++x) notDomain[size_t(y) * bw + x] = !d.mask[size_t(y + by0) * w + x + bx0];
+        auto seed = [&](int x, int y) {
+            const int q = y * bw + x;
+            if (notDomain[q] && !outside[q]) {
+                outside[q] = 1;
+                stack.push_back(y << 16 | x);
+            }
+        };
+        for (int x = 0; x < bw; ++x) {
+            seed(x, 0);
+            seed(x, bh - 1);
+        }
+        for (int y = 0; y < bh; ++y) {
+            seed(0, y);
+            seed(bw - 1, y);
+        }
+        flood(notDomain.data(), bw, bh, false, stack, outside.data(), nullptr);
+        for (int y = 0; y < bh; ++y)
+            for (int x = 0; x < bw; ++x)
+                if (notDomain[size_t(y) * bw + x] && !outside[size_t(y) * bw + x]) {
+                    const int i = (y + by0) * w + x + bx0;
+                    d.mask[i] = 1;
+                    d.pixels.push_back(i);
+                }
+    }
+    if (static_cast<int>(d.pixels.size()) < params.minPixels) {
+        d.why = "no spot: domain of only " + std::to_string(d.pixels.size()) + " px above the threshold";
+        return d;
+    }
+    for (int p : d.pixels) {
+        const int x = p % w, y = p / w;
+        if (x == 0 || y == 0 || x == w - 1 || y == h - 1) d.touchesBorder = true;
+        if (img[p] >= saturationDn) ++d.saturatedPixels;
+    }
+    // Second spot: a local maximum of the smoothed image, away from the main peak, with a
+    // dip between the two (a shoulder on the same spot has none).
+    const float* sm = smooth.ptr<float>();
+    const double minSep2 = params.secondSpotMinSeparation * params.secondSpotMinSeparation;
+    float floorValue = static_cast<float>(background + 0.15 * amp);  // candidates must reach this
+    for (int y = 1; y < h - 1; ++y)
+        for (int x = 1; x < w - 1; ++x) {
+            const float v = sm[y * w + x];
+            if (v <= floorValue) continue;
+            const double ddx = x - d.peakX, ddy = y - d.peakY;
+            if (ddx * ddx + ddy * ddy < minSep2) continue;
+            const float* c = sm + y * w + x;
+            if (c[-w - 1] > v || c[-w] > v || c[-w + 1] > v || c[-1] > v || c[1] > v || c[w - 1] > v || c[w] > v ||
+                c[w + 1] > v)
+                continue;  // not a local maximum
+            const int steps = static_cast<int>(std::ceil(std::sqrt(ddx * ddx + ddy * ddy)));
+            double lowest = v;
+            for (int k = 1; k < steps; ++k) {
+                const int px = static_cast<int>(std::lround(d.peakX + ddx * k / steps));
+                const int py = static_cast<int>(std::lround(d.peakY + ddy * k / steps));
+                lowest = std::min<double>(lowest, sm[py * w + px]);
+            }
+            if (lowest - background > 0.8 * (v - background)) continue;  // no real dip
+            d.secondPeakFraction = (v - background) / amp;
+            d.secondPeakX = x;
+            d.secondPeakY = y;
+            floorValue = v;
+        }
+    d.found = true;
+    return d;
+}
+
+}  // namespace lwb::core::footprint

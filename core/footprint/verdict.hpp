@@ -1,0 +1,54 @@
+#pragma once
+// Quality verdict of a fitted spot: good / doubtful / rejected with the failed criteria.
+// Presets: wu2021 (paper 000 step 7) and yao2021 (paper 001 step 6).
+#include <string>
+#include <vector>
+
+#include "core/footprint/segment.hpp"
+#include "core/footprint/spot.hpp"
+
+namespace lwb::core::footprint {
+
+enum class Verdict { Good, Doubtful, Rejected };
+const char* verdictName(Verdict v);
+bool parseVerdict(const std::string& s, Verdict* v);
+
+/// An inclusive range lo ≤ value ≤ hi that can be switched off.
+struct Range {
+    bool enabled = false;
+    double lo = 0, hi = 0;
+    bool contains(double v) const { return v >= lo && v <= hi; }
+};
+
+struct VerdictParams {
+    Range axisRatio{true, 1.0, 1.5};      ///< C = sigmaX / sigmaY (paper 000: (1, 1.5))
+    Range majorAxisPx{true, 10, 18};      ///< L_A, full major axis at 1/e² (px) (paper 000: (10, 18))
+    Range tiltDeg{true, -30, 30};         ///< θ of the x-near axis (deg) (paper 000: (−30°, 30°))
+    Range eccentricity{false, 0.2, 0.8};  ///< paper 001: 0.2–0.8
+    bool mseEnabled = true;
+    double mseMax = 1e-5;                 ///< paper 000 eq. 8 residual, f normalised to unit sum
+    bool checkEdge = true;                ///< the spot's 1/e² ellipse must lie inside the ROI
+    bool checkSaturation = true;
+    int saturationMaxPixels = 0;          ///< more saturated domain pixels than this: doubtful
+    bool checkSecondSpot = true;
+    double secondSpotFraction = 0.35;     ///< a separate peak this strong (of the main amplitude): doubtful
+};
+
+/// Known preset names, in display order.
+std::vector<std::string> verdictPresetNames();
+/// The named preset's criteria; false when the name is unknown.
+bool verdictPreset(const std::string& name, VerdictParams* out);
+
+struct Judgement {
+    Verdict verdict = Verdict::Rejected;
+    std::vector<std::string> reasons;  ///< every failed criterion, e.g. "axis_ratio 1.62 not in [1, 1.5]"
+};
+
+/// Judges a fit. `domain` supplies the no-spot, saturation and second-spot checks; roiWidth /
+/// roiHeight the edge check. A criterion whose value the method does not give (NaN) is skipped.
+Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int roiHeight,
+                const VerdictParams& params);
+
+std::string validate(const VerdictParams& p);
+
+}  // namespace lwb::core::footprint

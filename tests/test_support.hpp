@@ -1,0 +1,58 @@
+#pragma once
+// Helpers shared by the tests: temporary folders, the shared data folder, running the CLI.
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QString>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <string>
+
+namespace lwbtest {
+
+/// ../shared/data/<rel> beside the checkout (configured at build time).
+inline QString sharedPath(const QString& rel) { return QString(LWB_SHARED_DIR) + "/data/" + rel; }
+
+/// True when the shared data folder is present; tests QSKIP otherwise.
+inline bool haveShared(const QString& rel) { return QFile::exists(sharedPath(rel)); }
+
+struct CliRun {
+    int exitCode = -1;
+    QString out, err;
+};
+
+/// Runs laserwb-cli with args; waits up to timeoutMs.
+inline CliRun runCli(const QStringList& args, int timeoutMs = 120000) {
+    QProcess p;
+    p.start(QString(LWB_CLI), args);
+    CliRun r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = "timeout";
+        return r;
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+inline std::string str(const QString& s) { return s.toStdString(); }
+
+inline QByteArray readAll(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    return f.readAll();
+}
+
+inline bool writeText(const QString& path, const QByteArray& text) {
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) return false;
+    return f.write(text) == text.size();
+}
+
+/// Files in a folder other than the expected ones (a half-written temporary, say).
+inline QStringList filesIn(const QString& dir) { return QDir(dir).entryList(QDir::Files | QDir::Hidden); }
+
+}  // namespace lwbtest
