@@ -47,15 +47,12 @@ bool findVariant(const std::string& name, MethodVariant* out) {
 }
 
 namespace {
-bool classMatches(Scene s, NoiseClass c) {
-    switch (s) {
-        case Scene::Weak: return c == NoiseClass::Weak;
-        case Scene::Moderate: return c == NoiseClass::Moderate;
-        case Scene::Strong: return c == NoiseClass::Strong;
-        case Scene::Night: return c == NoiseClass::Night;
-        case Scene::Flat: return true;
-    }
-    return false;
+// The class the ground's true median falls in, with the pipeline's thresholds.
+NoiseClass trueClass(double groundMedian, const BackgroundParams& b) {
+    if (groundMedian < b.nightBelow) return NoiseClass::Night;
+    if (groundMedian < b.weakBelow) return NoiseClass::Weak;
+    if (groundMedian <= b.strongAbove) return NoiseClass::Moderate;
+    return NoiseClass::Strong;
 }
 
 struct ShotOutcome {
@@ -107,7 +104,7 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
                     const FootprintResult r = processRoi(roi, variants[v].params);
                     ShotOutcome& o = outcomes[size_t(i) * nv + v];
                     o.verdict = r.ok ? r.verdict : Verdict::Rejected;
-                    o.classOk = r.ok && classMatches(scene, r.background.noiseClass);
+                    o.classOk = r.ok && trueClass(t.groundMedian, variants[v].params.background) == r.background.noiseClass;
                     o.fitted = r.ok && r.fit.ok && r.verdict != Verdict::Rejected;
                     if (o.fitted && t.hasSpot) o.err = std::hypot(r.fit.x - t.x, r.fit.y - t.y);
                     o.reportedCrlb = r.crlbPx;

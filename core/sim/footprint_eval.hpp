@@ -38,7 +38,7 @@ struct EvalStats {
     int n = 0;            ///< shots
     int fitted = 0;       ///< shots with a centre (not rejected)
     int good = 0, doubtful = 0, rejected = 0;
-    int classCorrect = 0; ///< noise class matching the scene (day scenes and night)
+    int classCorrect = 0; ///< noise class equal to the class of the noise-free ground's median
     double meanErr = 0;   ///< mean radial error (px) over fitted shots
     double varErr = 0;    ///< variance of the radial error (px²)
     double rmsErr = 0;    ///< RMS radial error (px)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "core/common/text.hpp"
 #include "core/sim/rng.hpp"
@@ -195,6 +196,11 @@ FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
                 img.at<float>(y, x) += static_cast<float>(cloudAmp * std::exp(-0.5 * r2 / (cloudSigma * cloudSigma)));
             }
         groundAtSpot += cloudAmp * 0.7;
+    }
+    {
+        std::vector<float> g(img.begin<float>(), img.end<float>());
+        std::nth_element(g.begin(), g.begin() + g.size() / 2, g.end());
+        t.groundMedian = g[g.size() / 2];
     }
     if (night)
         t.amplitude = rng.uniform(p.nightAmplitudeMin, p.nightAmplitudeMax);

@@ -51,7 +51,9 @@ struct FootprintSimTruth {
     double x = 0, y = 0;           ///< exact spot centre (px, image coordinates)
     double sigmaMajor = 0, sigmaMinor = 0, tiltRad = 0;  ///< of the continuous Gaussian
     double amplitude = 0;          ///< DN above the ground at the centre (continuous peak)
-    double groundMean = 0;         ///< DN
+    double groundMean = 0;         ///< DN, the texture's mean level (before features and clouds)
+    double groundMedian = 0;       ///< DN, median of the noise-free ground under the spot's ROI: where
+                                   ///< its histogram concentrates, which is what the noise class means
     double textureRms = 0;         ///< DN
     double x2 = NAN, y2 = NAN;     ///< second spot centre (DoubleSpot)
     Scene scene = Scene::Weak;

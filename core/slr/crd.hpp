@@ -1,0 +1,272 @@
+#pragma once
+// CRD (ILRS Consolidated laser Ranging Data format, v1.01 and v2.01; Ricklefs & Moore) reader
+// and writer for full-rate (.frd .fr2), normal-point (.npt .np2) and sampled (.qlk) files.
+//
+// What it accepts: upper- or lower-case record ids, free format (fields separated by blanks),
+// several passes per file (H4 ... H8 blocks; H1/H2/H3 may repeat or be inherited by the next
+// H4), "na" fields (v2: not available -> NaN or -1), 00 comments and 9x user records (kept,
+// not interpreted), v1 files that omit trailing fields (e.g. MLRS "version 0" files).
+// Every line is kept verbatim in its pass, so writing a file back reproduces it record for
+// record (line ends become the file's own: LF, or CRLF when the first line ended so).
+//
+// Parsed: H1 H2 H3 H4 (H5 kept), C0, 10 (full rate), 11 (normal point), 12, 20 (met),
+// 30 (pointing), 40/41 (calibration). Others (21, 42, 50, 60, C1..C7, 9x) are kept verbatim.
+//
+// Errors vs warnings: a record that cannot be read inside an otherwise sound pass is skipped
+// with a warning "FILE:LINE: ..." (the line is still kept for writing). A file that has no
+// H1/H4 before its data, a pass without any 10/11 record, binary data or an empty file stop
+// the read with an error naming file and line.
+#include <cmath>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/common/feedback.hpp"
+
+namespace lwb::core::slr {
+
+/// Value of an absent integer field ("na" in v2, or missing trailing field).
+constexpr int kCrdAbsent = -1;
+
+/// One line of the file, verbatim.
+struct CrdRecord {
+    std::string text;  ///< the line without its line end
+    std::string id;    ///< lower-case record id: "h1".."h9", "c0".."c7", "10", "11", "00", "93", ...; "" for a blank line
+    long line = 0;     ///< 1-based line in the source (0 for records added by a helper)
+};
+
+/// H1 format header.
+struct CrdFormatHeader {
+    int version = 1;           ///< CRD format version (0 and 1 are both read as v1)
+    int year = 0, month = 0, day = 0, hour = 0;  ///< production date (UTC)
+    std::string text;          ///< the record itself
+    long line = 0;
+};
+
+/// H2 station header.
+struct CrdStation {
+    std::string name;          ///< station name (e.g. "MATM")
+    int cdpPadId = kCrdAbsent; ///< 4-digit CDP pad id (the SLRF/SINEX site code), e.g. 7941
+    int cdpSystem = kCrdAbsent;     ///< CDP system number
+    int cdpOccupancy = kCrdAbsent;  ///< CDP occupancy sequence number
+    int timeScale = kCrdAbsent;     ///< station epoch time scale (3 UTC(USNO), 4 UTC(GPS), 7 UTC(BIH/BIPM))
+    std::string network;       ///< v2: station network ("ILRS", "EUROLAS", "NASA", ...)
+    std::string text;
+    long line = 0;
+};
+
+/// H3 target header.
+struct CrdTarget {
+    std::string name;          ///< target name (e.g. "blits")
+    std::string ilrsId;        ///< ILRS (COSPAR-based) id as written, e.g. "0904907"
+    long sic = kCrdAbsent;     ///< Goddard satellite id code
+    long norad = kCrdAbsent;   ///< NORAD catalogue number
+    int timeScale = kCrdAbsent;     ///< spacecraft epoch time scale (transponders)
+    int targetType = kCrdAbsent;    ///< 0 none/passive (v1), 1 passive retro-reflector, 2 synchronous transponder, ...
+    int targetClass = kCrdAbsent;   ///< v2 target class
+    int targetLocation = kCrdAbsent;///< v2 location/dynamics
+    std::string text;
+    long line = 0;
+};
+
+/// H4 session (pass) header.
+struct CrdSession {
+    int dataType = 0;          ///< 0 full rate, 1 normal point, 2 sampled engineering
+    int startYear = 0, startMonth = 0, startDay = 0, startHour = 0, startMinute = 0, startSecond = 0;  ///< UTC
+    int endYear = 0, endMonth = 0, endDay = 0, endHour = 0, endMinute = 0, endSecond = 0;              ///< UTC
+    int releaseFlag = kCrdAbsent;        ///< data release (0 first release, ...)
+    int refractionApplied = kCrdAbsent;  ///< 1: tropospheric refraction already applied to the ranges
+    int comApplied = kCrdAbsent;         ///< 1: centre-of-mass correction applied
+    int receiveAmpApplied = kCrdAbsent;  ///< 1: receive amplitude correction applied
+    int stationDelayApplied = kCrdAbsent;///< 1: station system delay (calibration) applied
+    int spacecraftDelayApplied = kCrdAbsent;  ///< 1: spacecraft system delay applied
+    int rangeType = kCrdAbsent;          ///< 0 no ranges, 1 one-way, 2 two-way, 3 received only, 4 mixed
+    int qualityAlert = kCrdAbsent;       ///< 0 good, 1 suspect, 2 poor
+    std::string text;
+    long line = 0;
+};
+
+/// C0 system configuration.
+struct CrdSystemConfig {
+    int detailType = 0;
+    double wavelengthNm = NAN;           ///< transmit wavelength (nm)
+    std::string systemId;                ///< the id type-10/11 records refer to
+    std::vector<std::string> componentIds;
+    size_t record = 0;                   ///< index into CrdPass::records
+    long line = 0;
+};
+
+/// Type 10: one full-rate range.
+struct CrdRange {
+    double secOfDay = 0;     ///< s of day (UTC) of the epoch named by epochEvent
+    double tofS = 0;         ///< two-way time of flight (s), corrected for system delay per H4
+    std::string configId;    ///< system configuration id (C0)
+    int epochEvent = 2;      ///< 0 ground receive, 1 spacecraft bounce, 2 ground transmit (two-way); 3..6 one-way
+    int filterFlag = 0;      ///< 0 unknown, 1 noise, 2 data
+    int detectorChannel = kCrdAbsent;
+    int stopNumber = kCrdAbsent;
+    double receiveAmplitude = NAN;   ///< receive amplitude (mV or linear count), NaN when absent
+    double transmitAmplitude = NAN;  ///< v2 transmit amplitude, NaN when absent
+    size_t record = 0;       ///< index into CrdPass::records
+    long line = 0;           ///< source line
+};
+
+/// Type 11: one normal point (also what a helper writes).
+struct CrdNormalPoint {
+    double secOfDay = 0;      ///< s of day (UTC)
+    double tofS = 0;          ///< two-way time of flight (s)
+    std::string configId = "std";  ///< system configuration id
+    int epochEvent = 2;       ///< as in CrdRange
+    double windowS = NAN;     ///< normal point window length (s)
+    int numRanges = 0;        ///< number of raw ranges after editing
+    double binRmsPs = NAN;    ///< bin RMS of the accepted raw time-of-flight residuals from the trend (ps, two-way)
+    double skew = NAN;        ///< bin skew
+    double kurtosis = NAN;    ///< bin kurtosis
+    double peakMinusMeanPs = NAN;  ///< bin peak minus mean (ps)
+    double returnRatePct = NAN;    ///< return rate (%)
+    int detectorChannel = 0;  ///< 0 for all channels / not applicable
+    double snr = NAN;         ///< v2 signal to noise ratio
+    size_t record = 0;        ///< index into CrdPass::records (set by the reader)
+    long line = 0;
+};
+
+/// Type 12: range supplement.
+struct CrdRangeSupplement {
+    double secOfDay = 0;
+    std::string configId;
+    double refractionPs = NAN;     ///< tropospheric refraction correction (ps, one-way)
+    double comCorrectionM = NAN;   ///< target centre-of-mass correction (m, one-way)
+    double ndValue = NAN;          ///< neutral density filter value
+    double timeBiasS = NAN;        ///< time bias applied (s)
+    double rangeRate = NAN;        ///< v2 range rate (m/s)
+    size_t record = 0;
+    long line = 0;
+};
+
+/// Type 20: meteorological record.
+struct CrdMeteo {
+    double secOfDay = 0;
+    double pressureMbar = NAN;     ///< surface pressure (mbar = hPa)
+    double temperatureK = NAN;     ///< surface temperature (K)
+    double humidityPct = NAN;      ///< relative humidity (%)
+    int origin = kCrdAbsent;       ///< 0 measured at the epoch, 1 interpolated
+    size_t record = 0;
+    long line = 0;
+};
+
+/// Type 30: pointing angles.
+struct CrdPointing {
+    double secOfDay = 0;
+    double azimuthDeg = NAN;
+    double elevationDeg = NAN;
+    int directionFlag = kCrdAbsent;  ///< 0 transmit and receive, 1 transmit, 2 receive
+    int angleOrigin = kCrdAbsent;    ///< 0 unknown, 1 computed, 2 commanded, 3 measured
+    int refractionCorrected = kCrdAbsent;
+    double azimuthRate = NAN, elevationRate = NAN;  ///< v2 (deg/s)
+    size_t record = 0;
+    long line = 0;
+};
+
+/// Types 40 (calibration) and 41 (calibration detail, v2).
+struct CrdCalibration {
+    bool detail = false;             ///< true for a type-41 record
+    double secOfDay = 0;
+    int dataType = kCrdAbsent;       ///< 0 station combined, 1 transmit, 2 receive
+    std::string configId;
+    long pointsRecorded = kCrdAbsent, pointsUsed = kCrdAbsent;
+    double targetDistanceM = NAN;    ///< one-way target distance (m)
+    double systemDelayPs = NAN;      ///< calibration system delay (ps)
+    double delayShiftPs = NAN;       ///< delay shift (ps)
+    double rmsPs = NAN;
+    double skew = NAN, kurtosis = NAN;
+    double peakMinusMeanPs = NAN;
+    int calType = kCrdAbsent, shiftType = kCrdAbsent, detectorChannel = kCrdAbsent;
+    int span = kCrdAbsent;           ///< v2 calibration span
+    double returnRatePct = NAN;      ///< v2
+    size_t record = 0;
+    long line = 0;
+};
+
+/// One pass: an H4 ... H8 block with the lines that precede it.
+struct CrdPass {
+    CrdFormatHeader format;          ///< from this block's H1 or the last one before it
+    CrdStation station;
+    CrdTarget target;
+    CrdSession session;
+    std::string predictionHeader;    ///< H5 text (v2), empty when absent
+    bool inheritsHeaders = false;    ///< true when H1/H2/H3 came from an earlier block of the file
+    bool endedWithH8 = false;        ///< false when the block was closed by a new H1/H4 or the end of file
+
+    /// Every line of the block in order: comments and H1..H3 before the H4, the H4, configs,
+    /// data, 9x user records, the H8. Writing these back reproduces the block.
+    std::vector<CrdRecord> records;
+
+    std::vector<CrdSystemConfig> configs;
+    std::vector<CrdRange> ranges;               ///< type 10, in file order
+    std::vector<CrdNormalPoint> normalPoints;   ///< type 11
+    std::vector<CrdRangeSupplement> supplements;///< type 12
+    std::vector<CrdMeteo> meteo;                ///< type 20
+    std::vector<CrdPointing> pointing;          ///< type 30
+    std::vector<CrdCalibration> calibrations;   ///< types 40 and 41
+
+    /// MJD of the H4 start date (0h UTC): epochs are measured from it.
+    long startMjd() const;
+    /// Seconds since 0h UTC of the H4 start day for a record's seconds-of-day: adds 86 400 s
+    /// when the pass crossed midnight (secOfDay more than 12 h before the H4 start time).
+    double passSeconds(double secOfDay) const;
+    /// C0 record for a system configuration id, or nullptr (ids compare case-insensitively).
+    const CrdSystemConfig* config(const std::string& systemId) const;
+};
+
+struct CrdFile {
+    std::string path;                ///< as given to the reader ("" for text)
+    std::vector<CrdPass> passes;
+    std::vector<CrdRecord> trailer;  ///< lines after the last pass (H9, comments)
+    bool crlf = false;               ///< the source used CRLF line ends
+};
+
+struct CrdReadParams {
+    size_t maxWarnings = 500;        ///< further warnings are counted in one closing line (>= 1)
+};
+
+struct CrdReadResult {
+    bool ok = false;
+    std::string error;               ///< "FILE:LINE: what is wrong"
+    std::vector<std::string> warnings;
+    CrdFile file;
+};
+
+std::string validate(const CrdReadParams& p);
+
+/// Parses CRD text; `source` names it in messages. Never throws.
+CrdReadResult parseCrd(std::string_view text, const std::string& source, const CrdReadParams& params = {},
+                       const Feedback* feedback = nullptr);
+/// Reads and parses a CRD file.
+CrdReadResult readCrd(const std::string& path, const CrdReadParams& params = {}, const Feedback* feedback = nullptr);
+
+/// The file as text: every record of every pass, then the trailer.
+std::string formatCrd(const CrdFile& file);
+/// Writes formatCrd(file) atomically. False with *error on failure.
+bool writeCrd(const std::string& path, const CrdFile& file, std::string* error);
+
+/// Sets the filter flag (0 unknown, 1 noise, 2 data) of every type-10 record of the pass, in
+/// order; flags.size() must equal pass->ranges.size(). Only the flag field of each line changes.
+bool setFilterFlags(CrdPass* pass, const std::vector<int>& flags, std::string* error);
+
+/// A type-11 line for a normal point (CRD v2.01 field order; v1 when version < 2: no SNR, and
+/// -1 for absent values since v1 has no "na").
+std::string formatNormalPointRecord(const CrdNormalPoint& np, int version = 2);
+
+enum class NormalPointMode { Replace, Append };
+
+/// Replaces the pass's type-11 records with `nps` (at the place of the first old one, else
+/// before the H8) or appends them after the last type-11 record. Re-parses the pass.
+bool setNormalPoints(CrdPass* pass, const std::vector<CrdNormalPoint>& nps, NormalPointMode mode, std::string* error);
+
+/// A normal-point pass made from a full-rate one: same headers (H4 data type set to 1),
+/// configurations, met and calibration records, comments; no 10/12/30/42/9x records; the
+/// given normal points before the H8. Inherited H1..H3 are written into the new pass.
+bool makeNormalPointPass(const CrdPass& fullRate, const std::vector<CrdNormalPoint>& nps, CrdPass* out,
+                         std::string* error);
+
+}  // namespace lwb::core::slr
