@@ -13,6 +13,8 @@ std::string validate(const GaussParams& p) {
     if (p.guoIterations < 0 || p.guoIterations > 50) return "Guo iterations must be within 0..50";
     if (p.lmMaxIterations < 1 || p.lmMaxIterations > 500) return "LM iterations must be within 1..500";
     if (!(p.lmTolerancePx > 0 && p.lmTolerancePx < 1)) return "LM tolerance must be in (0, 1) px";
+    if (!(p.lmMaxMovePx > 0 && p.lmMaxMovePx <= 100)) return "LM maximum move must be in (0, 100] px";
+    if (!(p.lmMaxShapeChange > 1 && p.lmMaxShapeChange <= 100)) return "LM maximum shape change must be in (1, 100]";
     if (!(p.lmWindowSigmas >= 1 && p.lmWindowSigmas <= 20) || !(p.lmWindowSigmasTextured >= 1 && p.lmWindowSigmasTextured <= 20))
         return "LM windows must be 1..20 sigma";
     if (!(p.texturedRatio >= 1 && p.texturedRatio <= 1000)) return "textured-ground ratio must be within 1..1000";
@@ -344,8 +346,17 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
         iterations += levenbergMarquardt(win, p, cauchyC2, params.lmMaxIterations, params.lmTolerancePx, jtj, jtr, cost);
         const double moved = std::hypot(p(1) + cx - m.x0, p(2) + cy - m.y0);
         const double pcx = p(1) + cx, pcy = p(2) + cy;
-        if (moved > std::max(2.0, sigmaMajor) || pcx < xa - 0.5 || pcx > xb + 0.5 || pcy < ya - 0.5 || pcy > yb + 0.5) {
-            r.note = "LM moved the centre by " + std::to_string(moved).substr(0, 5) + " px; kept the log-fit result";
+        // LM refines; it must not run off. A large move, or a shape far from the log fit's (a
+        // Gaussian stretched along a road), means it followed the ground: keep the log fit.
+        const double detLm = p(3) * p(5) - p(4) * p(4);
+        const double sigmaMajorLm =
+            std::sqrt(0.5 * (p(3) + p(5) + std::sqrt((p(3) - p(5)) * (p(3) - p(5)) + 4 * p(4) * p(4))) / detLm);
+        const double areaRatio = std::sqrt(det0 / detLm);  // σ1σ2 of LM over that of the log fit
+        if (moved > params.lmMaxMovePx || sigmaMajorLm > params.lmMaxShapeChange * sigmaMajor ||
+            areaRatio > params.lmMaxShapeChange || areaRatio < 1 / params.lmMaxShapeChange || pcx < xa - 0.5 ||
+            pcx > xb + 0.5 || pcy < ya - 0.5 || pcy > yb + 0.5) {
+            r.note = "LM moved the centre by " + std::to_string(moved).substr(0, 5) +
+                     " px or changed the shape too much; kept the log-fit result";
             p << m.amplitude, m.x0 - cx, m.y0 - cy, m.a, m.b, m.c, background, 0, 0;
             cost = accumulate(win, p, cauchyC2, &jtj, &jtr);
         } else {

@@ -113,6 +113,7 @@ bool footprintParamsFromJson(const Json& j, FootprintParams* out, std::string* e
     if (sec && !(jsonNumber(*sec, "threshold_factor", &p.segment.thresholdFactor, error) &&
                  jsonInt(*sec, "peak_smooth", &p.segment.peakSmooth, error) &&
                  jsonBool(*sec, "fill_holes", &p.segment.fillHoles, error) &&
+                 jsonInt(*sec, "opening_radius", &p.segment.openingRadius, error) &&
                  jsonNumber(*sec, "min_peak_snr", &p.segment.minPeakSnr, error) &&
                  jsonInt(*sec, "min_pixels", &p.segment.minPixels, error)))
         return fail("segment");
@@ -135,6 +136,8 @@ bool footprintParamsFromJson(const Json& j, FootprintParams* out, std::string* e
                  jsonBool(*sec, "lm", &p.gauss.lmRefine, error) &&
                  jsonInt(*sec, "lm_max_iterations", &p.gauss.lmMaxIterations, error) &&
                  jsonNumber(*sec, "lm_tolerance_px", &p.gauss.lmTolerancePx, error) &&
+                 jsonNumber(*sec, "lm_max_move_px", &p.gauss.lmMaxMovePx, error) &&
+                 jsonNumber(*sec, "lm_max_shape_change", &p.gauss.lmMaxShapeChange, error) &&
                  jsonNumber(*sec, "lm_window_sigmas", &p.gauss.lmWindowSigmas, error) &&
                  jsonNumber(*sec, "lm_window_sigmas_textured", &p.gauss.lmWindowSigmasTextured, error) &&
                  jsonNumber(*sec, "textured_ratio", &p.gauss.texturedRatio, error) &&
@@ -193,6 +196,7 @@ Json footprintParamsToJson(const FootprintParams& p) {
     seg.set("threshold_factor", p.segment.thresholdFactor);
     seg.set("peak_smooth", p.segment.peakSmooth);
     seg.set("fill_holes", p.segment.fillHoles);
+    seg.set("opening_radius", p.segment.openingRadius);
     seg.set("min_peak_snr", p.segment.minPeakSnr);
     seg.set("min_pixels", p.segment.minPixels);
     j.set("segment", seg);
@@ -211,6 +215,8 @@ Json footprintParamsToJson(const FootprintParams& p) {
     g.set("lm", p.gauss.lmRefine);
     g.set("lm_max_iterations", p.gauss.lmMaxIterations);
     g.set("lm_tolerance_px", p.gauss.lmTolerancePx);
+    g.set("lm_max_move_px", p.gauss.lmMaxMovePx);
+    g.set("lm_max_shape_change", p.gauss.lmMaxShapeChange);
     g.set("lm_window_sigmas", p.gauss.lmWindowSigmas);
     g.set("lm_window_sigmas_textured", p.gauss.lmWindowSigmasTextured);
     g.set("textured_ratio", p.gauss.texturedRatio);

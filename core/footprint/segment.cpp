@@ -11,6 +11,7 @@ std::string validate(const SegmentParams& p) {
     if (p.peakSmooth < 1 || p.peakSmooth > 9 || p.peakSmooth % 2 == 0) return "peak smoothing must be 1, 3, 5, 7 or 9 px";
     if (!(p.minPeakSnr >= 0 && p.minPeakSnr < 1e6)) return "minimum peak SNR must be in [0, 1e6)";
     if (p.minPixels < 1 || p.minPixels > 100000) return "minimum spot pixels must be within 1..100000";
+    if (p.openingRadius < 0 || p.openingRadius > 10) return "domain opening radius must be within 0..10 px";
     if (!(p.secondSpotMinSeparation >= 1 && p.secondSpotMinSeparation < 1000))
         return "second-spot separation must be in [1, 1000) px";
     return {};
@@ -38,6 +39,52 @@ void flood(const unsigned char* in, int w, int h, bool eight, std::vector<int>& 
                 }
             }
     }
+}
+
+// Square min (erode) or max (dilate) filter of radius r on a 0/1 mask; outside counts as 0.
+std::vector<unsigned char> morph(const std::vector<unsigned char>& m, int w, int h, int r, bool erode) {
+    std::vector<unsigned char> rows(m.size()), out(m.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            unsigned char v = erode ? 1 : 0;
+            for (int k = -r; k <= r; ++k) {
+                const int xx = x + k;
+                const unsigned char s = (xx < 0 || xx >= w) ? 0 : m[size_t(y) * w + xx];
+                v = erode ? (v & s) : (v | s);
+            }
+            rows[size_t(y) * w + x] = v;
+        }
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            unsigned char v = erode ? 1 : 0;
+            for (int k = -r; k <= r; ++k) {
+                const int yy = y + k;
+                const unsigned char s = (yy < 0 || yy >= h) ? 0 : rows[size_t(yy) * w + x];
+                v = erode ? (v & s) : (v | s);
+            }
+            out[size_t(y) * w + x] = v;
+        }
+    return out;
+}
+
+// Cuts thin bright ground features (roads, field edges) that touch the spot out of the
+// threshold mask: a morphological opening (erode, then dilate back) keeps only parts at least
+// 2r+1 px wide; the pixels of the original mask within r of what survives are kept. If the
+// peak itself does not survive (a spot thinner than the opening), the mask is left alone.
+void openAroundPeak(std::vector<unsigned char>& above, int w, int h, int r, int px, int py) {
+    const std::vector<unsigned char> eroded = morph(above, w, h, r, true);
+    if (!eroded[size_t(py) * w + px]) {
+        bool any = false;  // the peak may sit on a 1-px crest of the eroded core: look around it
+        for (int dy = -r; dy <= r && !any; ++dy)
+            for (int dx = -r; dx <= r && !any; ++dx) {
+                const int x = px + dx, y = py + dy;
+                any = x >= 0 && y >= 0 && x < w && y < h && eroded[size_t(y) * w + x];
+            }
+        if (!any) return;
+    }
+    const std::vector<unsigned char> kept = morph(morph(eroded, w, h, r, false), w, h, 1, false);
+    for (size_t i = 0; i < above.size(); ++i) above[i] = above[i] && kept[i];
+    above[size_t(py) * w + px] = 1;
 }
 
 // Box mean over (2r+1)² with replicated borders.
@@ -99,6 +146,7 @@ SpotDomain segmentSpot(const cv::Mat& roi, double background, double noise, doub
     for (int i = 0; i < w * h; ++i) above[i] = img[i] > d.threshold;
     // The peak of the smoothed image may sit on a raw pixel just under threshold: include it.
     above[d.peakY * w + d.peakX] = 1;
+    if (params.openingRadius > 0) openAroundPeak(above, w, h, params.openingRadius, d.peakX, d.peakY);
     d.mask.assign(size_t(w) * h, 0);
     std::vector<int> stack;
     stack.reserve(size_t(w) * h);

@@ -1,6 +1,8 @@
 #pragma once
 // Threshold segmentation of the spot's closed connected domain (paper 000 steps 4–5) and the
-// image-level checks the verdict needs (second spot, saturation).
+// image-level checks the verdict needs (second spot, saturation). Thin bright features that
+// touch the spot (roads, field edges) are cut off the domain by a morphological opening, the
+// way paper 001's erosion step removes ground texture.
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -11,6 +13,7 @@ struct SegmentParams {
     double thresholdFactor = 0.1353352832;  ///< threshold = bg + factor·(peak − bg); 1/e² (paper 001 eq. 3)
     int peakSmooth = 3;        ///< box size (odd, px) smoothing the ROI before the peak is taken; 1 = raw
     bool fillHoles = true;     ///< close the domain: dark pixels enclosed by it belong to it
+    int openingRadius = 2;     ///< cut features narrower than 2r+1 px (roads) off the domain; 0 = off
     double minPeakSnr = 6.0;   ///< (peak − bg)/noise below this: no spot
     int minPixels = 6;         ///< a domain smaller than this: no spot
     double secondSpotMinSeparation = 4.0;  ///< px between two peaks to call them two spots
