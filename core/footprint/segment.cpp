@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace lwb::core::footprint {
@@ -42,8 +43,36 @@ void flood(const unsigned char* in, int w, int h, bool eight, std::vector<int>& 
 }
 
 // Square min (erode) or max (dilate) filter of radius r on a 0/1 mask; outside counts as 0.
+// ROIs up to 64 px wide hold each row in one 64-bit word, so a filter pass is a few shifts.
 std::vector<unsigned char> morph(const std::vector<unsigned char>& m, int w, int h, int r, bool erode) {
-    std::vector<unsigned char> rows(m.size()), out(m.size());
+    std::vector<unsigned char> out(m.size());
+    if (w <= 64) {
+        const uint64_t full = w == 64 ? ~uint64_t(0) : (uint64_t(1) << w) - 1;
+        std::vector<uint64_t> rows(static_cast<size_t>(h)), horiz(static_cast<size_t>(h));
+        for (int y = 0; y < h; ++y) {
+            uint64_t bits = 0;
+            for (int x = 0; x < w; ++x) bits |= uint64_t(m[size_t(y) * w + x] != 0) << x;
+            rows[y] = bits;
+        }
+        for (int y = 0; y < h; ++y) {
+            uint64_t v = rows[y];
+            for (int k = 1; k <= r; ++k) {
+                const uint64_t left = (rows[y] >> k), right = (rows[y] << k) & full;
+                v = erode ? (v & left & right) : (v | left | right);
+            }
+            horiz[y] = v;
+        }
+        for (int y = 0; y < h; ++y) {
+            uint64_t v = horiz[y];
+            for (int k = 1; k <= r; ++k) {
+                const uint64_t up = y - k >= 0 ? horiz[y - k] : 0, down = y + k < h ? horiz[y + k] : 0;
+                v = erode ? (v & up & down) : (v | up | down);
+            }
+            for (int x = 0; x < w; ++x) out[size_t(y) * w + x] = (v >> x) & 1;
+        }
+        return out;
+    }
+    std::vector<unsigned char> rows(m.size());
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             unsigned char v = erode ? 1 : 0;
