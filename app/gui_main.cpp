@@ -1,0 +1,58 @@
+// laserwb: the workbench. With no arguments it opens the built-in demo.
+//   laserwb [SESSION]
+//   laserwb --screenshot OUT.png [--workspace footprint|slr] [--size WxH] [SESSION]
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QTimer>
+
+#include "ui/main_window.hpp"
+
+int main(int argc, char** argv) {
+    // --screenshot renders without a display.
+    for (int i = 1; i < argc; ++i)
+        if (QByteArray(argv[i]) == "--screenshot" && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    QApplication::setApplicationName("laserwb");
+    QApplication::setOrganizationName("LaserWorkbench");
+    QApplication::setApplicationVersion("0.1.0");
+    QCommandLineParser cli;
+    cli.setApplicationDescription("Laser Workbench: footprint spot review, SLR pass screening, calibration.");
+    cli.addHelpOption();
+    cli.addVersionOption();
+    cli.addPositionalArgument("session", "A session file (.lwb.json) to open; none opens the built-in demo.");
+    QCommandLineOption shot("screenshot", "Render the window to OUT.png and exit.", "OUT.png");
+    QCommandLineOption ws("workspace", "Workspace (and tab) to show: footprint, footprint:trend, slr.", "name",
+                          "footprint");
+    QCommandLineOption size("size", "Window size for --screenshot, WxH.", "WxH", "1480x900");
+    cli.addOptions({shot, ws, size});
+    cli.process(app);
+
+    lwb::ui::MainWindow w;
+    const QStringList args = cli.positionalArguments();
+    if (args.isEmpty()) {
+        w.openDemo();
+    } else {
+        QString err;
+        if (!w.openSession(args.first(), cli.isSet(shot), &err) && cli.isSet(shot)) {
+            fprintf(stderr, "laserwb: %s\n", qPrintable(err));
+            return 1;
+        }
+    }
+    w.showWorkspace(cli.value(ws));
+    if (cli.isSet(shot)) {
+        const QStringList wh = cli.value(size).split('x');
+        if (wh.size() == 2) w.resize(wh[0].toInt(), wh[1].toInt());
+        w.show();
+        w.waitIdle(60000);
+        const QString out = cli.value(shot);
+        if (!w.grab().save(out)) {
+            fprintf(stderr, "laserwb: cannot write %s\n", qPrintable(out));
+            return 1;
+        }
+        return 0;
+    }
+    w.show();
+    return app.exec();
+}

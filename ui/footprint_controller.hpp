@@ -1,0 +1,141 @@
+#pragma once
+// The footprint workspace's controller: owns the shot list, the parameters and every job that
+// runs the core (loading, live rerun of the current shot, background re-judging of the list).
+// Widgets never call the core; they talk to this object. Jobs run on the global thread pool,
+// are tagged with a generation number, and results of a stale generation are dropped.
+#include <QObject>
+#include <QPointF>
+#include <QStringList>
+#include <QTimer>
+#include <atomic>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "core/common/feedback.hpp"
+#include "core/footprint/pipeline.hpp"
+#include "core/footprint/trend.hpp"
+
+namespace lwb::ui {
+
+using core::footprint::Verdict;
+
+/// One shot (one ROI of one frame) in the review list.
+struct Shot {
+    QString file;              ///< path, or "demo:NAME" for built-in demo shots
+    QString time;              ///< ISO date/time (for the trend), may be empty
+    QString beam;              ///< beam label, may be empty
+    QString camera;            ///< camera label (LFI, LSI...), may be empty
+    bool hasCenter = false;    ///< nominal centre given (full-image px)
+    QPointF center;
+    // Loaded data
+    cv::Mat roi;               ///< CV_32FC1 ROI (cached: re-judging needs no file I/O)
+    QPoint origin;             ///< full-image position of the ROI's pixel (0, 0)
+    bool fullFrame = false;    ///< the input was a full frame (the ROI was cut from it)
+    QString loadError;         ///< why the frame could not be read
+    // Result under the current parameters
+    bool processed = false;
+    Verdict verdict = Verdict::Rejected;
+    QStringList reasons;
+    QString noiseClass;
+    core::footprint::SpotFit fit;  ///< ROI coordinates
+    // The analyst's decision
+    bool overridden = false;
+    Verdict overrideVerdict = Verdict::Good;
+    QString note;
+
+    Verdict effectiveVerdict() const { return overridden ? overrideVerdict : verdict; }
+    double fullX() const { return fit.ok ? fit.x + origin.x() : qQNaN(); }
+    double fullY() const { return fit.ok ? fit.y + origin.y() : qQNaN(); }
+};
+
+/// Everything the ROI view draws for the current shot: each method's result.
+struct ShotDetail {
+    int index = -1;
+    cv::Mat roi;
+    QPoint origin;
+    core::footprint::FootprintResult selected;  ///< the chosen method
+    core::footprint::FootprintResult gauss, tefm, gcm;
+    double latencyMs = 0;                       ///< parameter change → result (for the benchmark)
+};
+
+class FootprintController : public QObject {
+    Q_OBJECT
+public:
+    explicit FootprintController(QObject* parent = nullptr);
+    ~FootprintController() override;
+
+    const std::vector<Shot>& shots() const { return m_shots; }
+    const Shot* shot(int i) const { return i >= 0 && i < int(m_shots.size()) ? &m_shots[i] : nullptr; }
+    int count() const { return int(m_shots.size()); }
+    const core::footprint::FootprintParams& params() const { return m_params; }
+    int current() const { return m_current; }
+    bool busy() const { return m_loading || m_rejudgeRunning; }
+
+    /// Files and folders (every image inside), or a CSV list (file,time,beam[,camera][,center_x,center_y]).
+    /// Loading runs in the background; rows appear as results arrive. Replaces the list unless append.
+    void open(const QStringList& paths, bool append = false);
+    /// In-memory shots (the built-in demo).
+    void setShots(std::vector<Shot> shots);
+    void cancelLoading();
+    void clear();
+
+    /// New parameters: the current shot is re-run at once (debounced), the whole list re-judged
+    /// in the background.
+    void setParams(const core::footprint::FootprintParams& p);
+    void setCurrent(int index);
+
+    void setOverride(int index, Verdict v, const QString& note);
+    void clearOverride(int index);
+    void setNote(int index, const QString& note);
+
+    struct Counts {
+        int good = 0, doubtful = 0, rejected = 0, pending = 0, overridden = 0;
+    };
+    Counts counts() const;
+
+    /// Accepted shots (effective verdict good) as CSV (the footprint report columns + time,
+    /// beam, camera, override, note). Atomic. False with *error.
+    bool exportAccepted(const QString& path, QString* error) const;
+    /// Monthly trend of the accepted shots that have a time and a beam.
+    core::footprint::TrendResult trend(const core::footprint::TrendParams& tp) const;
+
+    /// Inputs as given to open() (for the session).
+    const QStringList& inputs() const { return m_inputs; }
+    /// Waits (processing events) until loading and re-judging are done, or timeoutMs passes.
+    bool waitIdle(int timeoutMs);
+
+signals:
+    void shotsAboutToReset();             ///< the list is about to be replaced
+    void shotsReset();                    ///< the list was replaced
+    void shotsAboutToAppend(int first, int last);
+    void shotsAppended(int first, int last);
+    void shotsChanged(int first, int last);  ///< results or overrides changed in that range
+    void countsChanged();
+    void currentDetailReady(const lwb::ui::ShotDetail& detail);
+    void loadProgress(int done, int total);
+    void loadFinished(int loaded, int failed, bool cancelled);
+    void rejudgeFinished();
+    void error(const QString& message);
+
+private:
+    void runCurrent();
+    void startRejudge();
+    static void applyResult(Shot& s, const core::footprint::FootprintResult& r);
+    static void process(Shot& s, const core::footprint::FootprintParams& p);
+
+    std::vector<Shot> m_shots;
+    QStringList m_inputs;
+    core::footprint::FootprintParams m_params;
+    int m_current = -1;
+    QTimer m_debounce;
+    quint64 m_generation = 0;        // bumps on every parameter change
+    quint64 m_listGeneration = 0;    // bumps when the list is replaced
+    std::shared_ptr<core::Feedback> m_loadFeedback, m_rejudgeFeedback;
+    bool m_loading = false, m_rejudgeRunning = false;
+    qint64 m_paramChangedAt = 0;     // ms timestamp of the last parameter change (latency)
+};
+
+}  // namespace lwb::ui
+
+Q_DECLARE_METATYPE(lwb::ui::ShotDetail)

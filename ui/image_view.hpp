@@ -1,0 +1,58 @@
+#pragma once
+// A zoomable, pannable image view with overlays drawn in image coordinates (x = column,
+// y = row, pixel centres at integers) and a pixel readout under the cursor.
+#include <QImage>
+#include <QPointF>
+#include <QWidget>
+#include <functional>
+#include <opencv2/core.hpp>
+
+namespace lwb::ui {
+
+class ImageView : public QWidget {
+    Q_OBJECT
+public:
+    explicit ImageView(QWidget* parent = nullptr);
+
+    /// The data (CV_32FC1, for the readout) and its rendering. origin: full-image coordinates of
+    /// the data's pixel (0,0), shown in the readout.
+    void setImage(const cv::Mat& data, const QImage& rendered, QPointF origin = {});
+    void clear();
+    /// Painter callback for overlays; the painter is already transformed to image coordinates
+    /// (one unit = one pixel; pixel (x, y) covers x−0.5..x+0.5). pxScale: screen px per image px.
+    using OverlayFn = std::function<void(class QPainter&, double pxScale)>;
+    void setOverlay(OverlayFn fn);
+    void setBadge(const QString& text, const QColor& color);
+    void fitToWindow();
+    double zoom() const { return m_zoom; }
+
+signals:
+    /// Cursor moved over pixel (x, y) of the data (full-image coordinates) holding value.
+    void pixelHovered(double x, double y, double value);
+
+protected:
+    void paintEvent(QPaintEvent*) override;
+    void wheelEvent(class QWheelEvent*) override;
+    void mousePressEvent(class QMouseEvent*) override;
+    void mouseMoveEvent(class QMouseEvent*) override;
+    void mouseReleaseEvent(class QMouseEvent*) override;
+    void mouseDoubleClickEvent(class QMouseEvent*) override;
+    void resizeEvent(class QResizeEvent*) override;
+    QSize sizeHint() const override { return {360, 360}; }
+
+private:
+    QPointF toImage(QPointF widget) const;
+    cv::Mat m_data;
+    QImage m_image;
+    QPointF m_origin;
+    OverlayFn m_overlay;
+    QString m_badge;
+    QColor m_badgeColor;
+    double m_zoom = 1;
+    QPointF m_offset;  // widget position of image point (−0.5, −0.5)
+    bool m_fit = true;
+    bool m_dragging = false;
+    QPointF m_dragStart, m_offsetStart;
+};
+
+}  // namespace lwb::ui

@@ -1,0 +1,271 @@
+#include "ui/main_window.hpp"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSaveFile>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTabWidget>
+
+#include "ui/demo.hpp"
+#include "ui/footprint_params_panel.hpp"
+#include "ui/footprint_workspace.hpp"
+
+namespace lwb::ui {
+
+namespace {
+constexpr int kSessionVersion = 1;
+constexpr int kMaxRecent = 8;
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setWindowIcon(QIcon(":/icons/laserwb.svg"));
+    m_tabs = new QTabWidget(this);
+    m_tabs->setDocumentMode(true);
+    m_footprint = new FootprintWorkspace(m_tabs);
+    m_tabs->addTab(m_footprint, tr("Footprint review"));
+    setCentralWidget(m_tabs);
+    buildMenus();
+    connect(m_footprint, &FootprintWorkspace::modified, this, [this] { setModified(true); });
+    connect(m_footprint, &FootprintWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 5000); });
+    connect(m_footprint->controller(), &FootprintController::error, this,
+            [this](const QString& msg) { showError(tr("Cannot open the footprint inputs"), msg); });
+    QSettings st;
+    if (!restoreGeometry(st.value("window/geometry").toByteArray())) resize(1480, 900);
+    statusBar()->showMessage(tr("Ready"));
+    setModified(false);
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&Open frames, folder or shot list…"), QKeySequence::Open, this, &MainWindow::openInputs);
+    file->addAction(tr("Open &demo"), this, &MainWindow::openDemo);
+    file->addSeparator();
+    file->addAction(tr("Open &session…"), QKeySequence(tr("Ctrl+Shift+O")), this, &MainWindow::openSessionDialog);
+    m_recentMenu = file->addMenu(tr("&Recent sessions"));
+    file->addAction(tr("&Save session"), QKeySequence::Save, this, &MainWindow::save);
+    file->addAction(tr("Save session &as…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    file->addSeparator();
+    file->addAction(tr("&Export accepted shots…"), QKeySequence(tr("Ctrl+E")), this, &MainWindow::exportAccepted);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About"), this, [this] {
+        QMessageBox::about(this, tr("About Laser Workbench"),
+                           tr("<b>Laser Workbench</b> 0.1<br>Footprint spot centres, SLR signal extraction, "
+                              "altimeter and radiometric calibration.<br>Every GUI action has a batch "
+                              "equivalent in <tt>laserwb-cli</tt>."));
+    });
+    rebuildRecentMenu();
+}
+
+void MainWindow::showError(const QString& what, const QString& detail) {
+    statusBar()->showMessage(what, 8000);
+    if (qApp->platformName() == "offscreen") {
+        qWarning("%s: %s", qPrintable(what), qPrintable(detail));
+        return;
+    }
+    QMessageBox::warning(this, what, detail);
+}
+
+void MainWindow::setModified(bool m) {
+    m_modified = m;
+    const QString name = m_sessionPath.isEmpty() ? tr("untitled") : QFileInfo(m_sessionPath).fileName();
+    setWindowTitle(tr("%1%2 — Laser Workbench").arg(name, m ? "*" : ""));
+}
+
+void MainWindow::openDemo() {
+    m_footprint->controller()->setShots(demoFootprintShots());
+    m_footprint->controller()->setParams(m_footprint->paramsPanel()->params());
+    statusBar()->showMessage(tr("Built-in demo: %1 simulated footprint shots").arg(m_footprint->controller()->count()), 8000);
+    m_sessionPath.clear();
+    setModified(false);
+}
+
+void MainWindow::openInputs() {
+    QSettings st;
+    const QString dir = st.value("paths/lastInput").toString();
+    QFileDialog dlg(this, tr("Open footprint frames, a folder, or a shot list (CSV)"), dir);
+    dlg.setFileMode(QFileDialog::ExistingFiles);
+    dlg.setNameFilters({tr("Frames and shot lists (*.png *.tif *.tiff *.pgm *.raw *.bin *.csv)"), tr("All files (*)")});
+    if (!dlg.exec()) return;
+    QStringList files = dlg.selectedFiles();
+    if (files.isEmpty()) return;
+    st.setValue("paths/lastInput", QFileInfo(files.first()).absolutePath());
+    m_footprint->controller()->open(files);
+    setModified(true);
+}
+
+QJsonObject MainWindow::sessionState() const {
+    QJsonObject o;
+    o["format"] = "laserwb-session";
+    o["version"] = kSessionVersion;
+    o["workspace"] = m_tabs->currentIndex() == 0 ? "footprint" : "other";
+    o["footprint"] = m_footprint->saveState();
+    return o;
+}
+
+bool MainWindow::saveSession(const QString& path, QString* error) {
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) {
+        *error = tr("%1: %2").arg(path, f.errorString());
+        return false;
+    }
+    f.write(QJsonDocument(sessionState()).toJson(QJsonDocument::Indented));
+    if (!f.commit()) {
+        *error = tr("%1: %2").arg(path, f.errorString());
+        return false;
+    }
+    m_sessionPath = path;
+    addRecent(path);
+    setModified(false);
+    return true;
+}
+
+bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut) {
+    auto fail = [&](const QString& why) {
+        if (errorOut) *errorOut = why;
+        if (!quiet) showError(tr("Cannot open the session"), why);
+        return false;
+    };
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return fail(tr("%1: %2").arg(path, f.errorString()));
+    QJsonParseError pe;
+    const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &pe);
+    if (pe.error != QJsonParseError::NoError) {
+        // Turn the byte offset into a line number for the message.
+        f.seek(0);
+        const QByteArray head = f.read(pe.offset);
+        return fail(tr("%1:%2: %3").arg(path).arg(head.count('\n') + 1).arg(pe.errorString()));
+    }
+    const QJsonObject o = doc.object();
+    if (o["format"].toString() != "laserwb-session")
+        return fail(tr("%1: not a Laser Workbench session (no \"format\": \"laserwb-session\")").arg(path));
+    if (o["version"].toInt() > kSessionVersion)
+        return fail(tr("%1: session version %2 is newer than this program reads (%3)").arg(path).arg(o["version"].toInt()).arg(kSessionVersion));
+    // Validate everything before touching the current state.
+    QString err;
+    const QJsonObject before = m_footprint->saveState();
+    if (!m_footprint->restoreState(o["footprint"].toObject(), &err)) {
+        QString ignored;
+        m_footprint->restoreState(before, &ignored);
+        return fail(tr("%1: %2").arg(path, err));
+    }
+    m_sessionPath = path;
+    addRecent(path);
+    setModified(false);
+    if (o["workspace"].toString() == "footprint") m_tabs->setCurrentIndex(0);
+    statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+    return true;
+}
+
+void MainWindow::openSessionDialog() {
+    if (!maybeSave()) return;
+    QSettings st;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open session"), st.value("paths/lastSession").toString(),
+                                                      tr("Laser Workbench sessions (*.lwb.json *.json)"));
+    if (path.isEmpty()) return;
+    st.setValue("paths/lastSession", QFileInfo(path).absolutePath());
+    openSession(path);
+}
+
+bool MainWindow::save() {
+    if (m_sessionPath.isEmpty()) return saveAs();
+    QString err;
+    if (!saveSession(m_sessionPath, &err)) {
+        showError(tr("Cannot save the session"), err);
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(m_sessionPath), 5000);
+    return true;
+}
+
+bool MainWindow::saveAs() {
+    QSettings st;
+    QString path = QFileDialog::getSaveFileName(this, tr("Save session"), st.value("paths/lastSession").toString(),
+                                                tr("Laser Workbench sessions (*.lwb.json)"));
+    if (path.isEmpty()) return false;
+    if (!path.endsWith(".json")) path += ".lwb.json";
+    st.setValue("paths/lastSession", QFileInfo(path).absolutePath());
+    m_sessionPath = path;
+    return save();
+}
+
+bool MainWindow::maybeSave() {
+    if (!m_modified) return true;
+    const auto answer = QMessageBox::question(this, tr("Unsaved changes"),
+                                              tr("The session has unsaved changes (verdicts, notes, parameters). Save them?"),
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::exportAccepted() {
+    QSettings st;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export accepted shots"), st.value("paths/lastExport").toString(),
+                                                      tr("CSV (*.csv)"));
+    if (path.isEmpty()) return;
+    st.setValue("paths/lastExport", QFileInfo(path).absolutePath());
+    QString err;
+    if (!m_footprint->controller()->exportAccepted(path, &err))
+        showError(tr("Cannot export"), err);
+    else
+        statusBar()->showMessage(tr("Exported %1 accepted shots to %2").arg(m_footprint->controller()->counts().good).arg(path), 6000);
+}
+
+void MainWindow::addRecent(const QString& path) {
+    QSettings st;
+    QStringList recent = st.value("recentSessions").toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent) recent.removeLast();
+    st.setValue("recentSessions", recent);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    if (!m_recentMenu) return;
+    m_recentMenu->clear();
+    const QStringList recent = QSettings().value("recentSessions").toStringList();
+    for (const QString& p : recent)
+        m_recentMenu->addAction(QFileInfo(p).fileName(), this, [this, p] {
+            if (maybeSave()) openSession(p);
+        })->setToolTip(p);
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::showWorkspace(const QString& name) {
+    // "footprint" or "footprint:trend" (a workspace, then optionally its tab).
+    const QStringList parts = name.split(':');
+    if (parts[0] == "footprint") {
+        m_tabs->setCurrentWidget(m_footprint);
+        if (parts.size() > 1) m_footprint->showTab(parts[1]);
+    }
+}
+
+bool MainWindow::waitIdle(int timeoutMs) {
+    QElapsedTimer t;
+    t.start();
+    const bool ok = m_footprint->controller()->waitIdle(timeoutMs);
+    // Let queued results (current shot, plots) reach the widgets.
+    while (t.elapsed() < timeoutMs && t.elapsed() < 300) QApplication::processEvents(QEventLoop::AllEvents, 20);
+    return ok;
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    if (!maybeSave()) {
+        e->ignore();
+        return;
+    }
+    QSettings().setValue("window/geometry", saveGeometry());
+    e->accept();
+}
+
+}  // namespace lwb::ui

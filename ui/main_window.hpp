@@ -1,0 +1,57 @@
+#pragma once
+// The workbench window: one tab per workspace, sessions (JSON, atomic saves, recent files,
+// unsaved-changes prompt), settings, status bar, error dialogs.
+#include <QJsonObject>
+#include <QMainWindow>
+
+class QTabWidget;
+class QMenu;
+
+namespace lwb::ui {
+
+class FootprintWorkspace;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+
+    FootprintWorkspace* footprint() const { return m_footprint; }
+    QTabWidget* tabs() const { return m_tabs; }
+
+    /// Loads the built-in demo in every workspace.
+    void openDemo();
+    /// Opens a session file; on error shows a dialog (unless quiet) and keeps the current state.
+    bool openSession(const QString& path, bool quiet = false, QString* error = nullptr);
+    /// Saves the session atomically. False with *error.
+    bool saveSession(const QString& path, QString* error);
+    QJsonObject sessionState() const;
+    bool isModified() const { return m_modified; }
+    void showWorkspace(const QString& name);
+    /// Waits until every workspace's background work is done (for screenshots and tests).
+    bool waitIdle(int timeoutMs);
+
+protected:
+    void closeEvent(class QCloseEvent* e) override;
+
+private:
+    void buildMenus();
+    void openInputs();
+    void openSessionDialog();
+    bool save();
+    bool saveAs();
+    bool maybeSave();
+    void exportAccepted();
+    void setModified(bool m);
+    void addRecent(const QString& path);
+    void rebuildRecentMenu();
+    void showError(const QString& what, const QString& detail);
+
+    QTabWidget* m_tabs;
+    FootprintWorkspace* m_footprint;
+    QMenu* m_recentMenu = nullptr;
+    QString m_sessionPath;
+    bool m_modified = false;
+};
+
+}  // namespace lwb::ui

@@ -1,0 +1,97 @@
+#include "ui/shot_table_model.hpp"
+
+#include <QColor>
+#include <QFileInfo>
+#include <cmath>
+
+namespace lwb::ui {
+
+QString verdictLabel(Verdict v) { return QString::fromLatin1(core::footprint::verdictName(v)); }
+
+QColor verdictColor(Verdict v) {
+    switch (v) {
+        case Verdict::Good: return QColor(46, 139, 87);
+        case Verdict::Doubtful: return QColor(214, 137, 16);
+        case Verdict::Rejected: return QColor(192, 57, 43);
+    }
+    return Qt::gray;
+}
+
+ShotTableModel::ShotTableModel(FootprintController* c, QObject* parent) : QAbstractTableModel(parent), m_c(c) {
+    connect(c, &FootprintController::shotsAboutToReset, this, [this]() { beginResetModel(); });
+    connect(c, &FootprintController::shotsReset, this, [this]() { endResetModel(); });
+    connect(c, &FootprintController::shotsAboutToAppend, this,
+            [this](int first, int last) { beginInsertRows({}, first, last); });
+    connect(c, &FootprintController::shotsAppended, this, [this](int, int) { endInsertRows(); });
+    connect(c, &FootprintController::shotsChanged, this, [this](int first, int last) {
+        emit dataChanged(index(first, 0), index(last, ColumnCount - 1));
+    });
+}
+
+int ShotTableModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : m_c->count(); }
+int ShotTableModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+
+QVariant ShotTableModel::headerData(int section, Qt::Orientation o, int role) const {
+    if (o != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    static const char* names[] = {"File", "Time", "Beam", "X (px)", "Y (px)", "Verdict", "Failed criteria", "Noise", "Note"};
+    return section >= 0 && section < ColumnCount ? tr(names[section]) : QVariant();
+}
+
+QVariant ShotTableModel::data(const QModelIndex& index, int role) const {
+    const Shot* s = m_c->shot(index.row());
+    if (!s) return {};
+    const bool failed = !s->loadError.isEmpty();
+    const Verdict v = failed ? Verdict::Rejected : s->effectiveVerdict();
+    if (role == VerdictRole) return int(v);
+    if (role == Qt::ToolTipRole) {
+        if (failed) return s->loadError;
+        if (index.column() == Reasons || index.column() == VerdictCol) return s->reasons.join("\n");
+        return s->file;
+    }
+    if (role == Qt::ForegroundRole && index.column() == VerdictCol) return verdictColor(v);
+    if (role == Qt::TextAlignmentRole && (index.column() == X || index.column() == Y))
+        return int(Qt::AlignRight | Qt::AlignVCenter);
+    if (role != Qt::DisplayRole && role != SortRole) return {};
+    const bool sort = role == SortRole;
+    switch (index.column()) {
+        case File: return sort ? s->file : QFileInfo(s->file).fileName();
+        case Time: return s->time;
+        case Beam: return s->beam;
+        case X: {
+            const double x = s->fullX();
+            return std::isfinite(x) && v != Verdict::Rejected ? (sort ? QVariant(x) : QString::number(x, 'f', 3)) : QVariant();
+        }
+        case Y: {
+            const double y = s->fullY();
+            return std::isfinite(y) && v != Verdict::Rejected ? (sort ? QVariant(y) : QString::number(y, 'f', 3)) : QVariant();
+        }
+        case VerdictCol:
+            if (!failed && !s->processed) return tr("…");
+            return s->overridden ? verdictLabel(v) + tr(" (manual)") : verdictLabel(v);
+        case Reasons: return failed ? s->loadError : s->reasons.join("; ");
+        case NoiseClass: return s->noiseClass;
+        case Note: return s->note;
+    }
+    return {};
+}
+
+void ShotFilterProxy::setVerdictFilter(Filter f) {
+    m_filter = f;
+    invalidateFilter();
+}
+
+bool ShotFilterProxy::filterAcceptsRow(int row, const QModelIndex& parent) const {
+    if (m_filter == All) return true;
+    const QModelIndex i = sourceModel()->index(row, 0, parent);
+    const Verdict v = Verdict(sourceModel()->data(i, ShotTableModel::VerdictRole).toInt());
+    switch (m_filter) {
+        case GoodOnly: return v == Verdict::Good;
+        case DoubtfulOnly: return v == Verdict::Doubtful;
+        case RejectedOnly: return v == Verdict::Rejected;
+        case OverriddenOnly:
+            return sourceModel()->data(sourceModel()->index(row, ShotTableModel::VerdictCol, parent)).toString().contains("manual");
+        default: return true;
+    }
+}
+
+}  // namespace lwb::ui
