@@ -1,0 +1,188 @@
+// The footprint workspace under the offscreen platform: loading, live reruns, verdict counts,
+// overrides, export, sessions, and a corrupt session that must leave the state alone.
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QStandardPaths>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QtTest>
+
+#include "core/common/csv.hpp"
+#include "test_support.hpp"
+#include "ui/footprint_params_panel.hpp"
+#include "ui/footprint_workspace.hpp"
+#include "ui/image_view.hpp"
+#include "ui/main_window.hpp"
+#include "ui/param_slider.hpp"
+#include "ui/shot_table_model.hpp"
+
+using namespace lwb::ui;
+
+class TestFootprintWorkspace : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        const auto r = lwbtest::runCli({"simulate", "footprint", "--count", "40", "--seed", "5", "--case", "mixed", "-q",
+                                        m_dir.path() + "/shots"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    }
+
+    void loadingAFolderFillsTheTable() {
+        MainWindow w;
+        FootprintController* c = w.footprint()->controller();
+        QSignalSpy finished(c, &FootprintController::loadFinished);
+        c->open({m_dir.path() + "/shots"});
+        QVERIFY(finished.wait(30000));
+        QCOMPARE(c->count(), 40);
+        QCOMPARE(w.footprint()->table()->model()->rowCount(), 40);
+        const auto n = c->counts();
+        QCOMPARE(n.good + n.doubtful + n.rejected, 40);
+        QVERIFY(n.good >= 20);      // 28 normal shots among 40 (2 of every 3)
+        QVERIFY(n.doubtful + n.rejected >= 8);
+        QCOMPARE(finished.first().at(1).toInt(), 0);  // nothing unreadable
+    }
+
+    void sliderChangesTheCurrentShotAndTheCounts() {
+        MainWindow w;
+        FootprintController* c = w.footprint()->controller();
+        QSignalSpy finished(c, &FootprintController::loadFinished);
+        c->open({m_dir.path() + "/shots"});
+        QVERIFY(finished.wait(30000));
+        QVERIFY(c->waitIdle(30000));
+        w.footprint()->selectRow(0);
+        QSignalSpy detail(c, &FootprintController::currentDetailReady);
+        QVERIFY(detail.wait(5000));
+        const double axisBefore = detail.last().at(0).value<ShotDetail>().selected.fit.majorAxisPx;
+        const int goodBefore = c->counts().good;
+        // Threshold factor moves the spot domain: the fit's domain area changes at once.
+        const size_t areaBefore = detail.last().at(0).value<ShotDetail>().selected.domain.pixels.size();
+        w.footprint()->paramsPanel()->thresholdSlider()->field()->setValue(0.4);
+        QVERIFY(detail.wait(5000));
+        const ShotDetail after = detail.last().at(0).value<ShotDetail>();
+        QVERIFY(after.selected.domain.pixels.size() < areaBefore);
+        // Axis ratio max down to 1.05: most good spots now fail the ratio criterion.
+        w.footprint()->paramsPanel()->axisRatioMaxSlider()->field()->setValue(1.05);
+        QVERIFY(c->waitIdle(30000));
+        QVERIFY2(c->counts().good < goodBefore, qPrintable(QString("%1 -> %2").arg(goodBefore).arg(c->counts().good)));
+        Q_UNUSED(axisBefore);
+    }
+
+    void overridesExportAndSessionRoundTrip() {
+        const QString session = m_dir.path() + "/s.lwb.json";
+        const QString exported = m_dir.path() + "/accepted.csv";
+        QString err;
+        int expectGood = 0;
+        {
+            MainWindow w;
+            FootprintController* c = w.footprint()->controller();
+            QSignalSpy finished(c, &FootprintController::loadFinished);
+            c->open({m_dir.path() + "/shots"});
+            QVERIFY(finished.wait(30000));
+            QVERIFY(c->waitIdle(30000));
+            auto p = c->params();
+            p.verdict.tiltDeg = {true, -25, 25};
+            w.footprint()->paramsPanel()->setParams(p);
+            c->setParams(p);
+            QVERIFY(c->waitIdle(30000));
+            // Reject the first good shot, accept the first doubtful one, note on a third.
+            int firstGood = -1, firstDoubtful = -1;
+            for (int i = 0; i < c->count(); ++i) {
+                if (firstGood < 0 && c->shot(i)->verdict == Verdict::Good) firstGood = i;
+                if (firstDoubtful < 0 && c->shot(i)->verdict == Verdict::Doubtful) firstDoubtful = i;
+            }
+            QVERIFY(firstGood >= 0 && firstDoubtful >= 0);
+            c->setOverride(firstGood, Verdict::Rejected, "cloud edge");
+            c->setOverride(firstDoubtful, Verdict::Good, "checked by eye");
+            c->setNote(39, "last one");
+            expectGood = c->counts().good;
+            QVERIFY(c->exportAccepted(exported, &err));
+            QVERIFY2(w.saveSession(session, &err), qPrintable(err));
+            QVERIFY(!w.isModified());
+        }
+        // Export: exactly the accepted shots, the manual one flagged.
+        const auto csv = lwb::core::readCsv(exported.toStdString());
+        QVERIFY(csv.ok);
+        QCOMPARE(int(csv.table.rows.size()), expectGood);
+        int manual = 0;
+        for (const auto& row : csv.table.rows) {
+            QCOMPARE(row[csv.table.column("verdict")], std::string("good"));
+            QVERIFY(!row[csv.table.column("x")].empty());
+            manual += row[csv.table.column("override")] == "manual";
+        }
+        QCOMPARE(manual, 1);
+        // Reopen: parameters and overrides restored.
+        MainWindow w2;
+        QVERIFY2(w2.openSession(session, true, &err), qPrintable(err));
+        FootprintController* c2 = w2.footprint()->controller();
+        QVERIFY(c2->waitIdle(30000));
+        QCOMPARE(c2->count(), 40);
+        QCOMPARE(c2->params().verdict.tiltDeg.lo, -25.0);
+        QCOMPARE(c2->counts().overridden, 2);
+        QCOMPARE(c2->counts().good, expectGood);
+        QCOMPARE(c2->shot(39)->note, QString("last one"));
+    }
+
+    void corruptSessionKeepsThePreviousState() {
+        MainWindow w;
+        w.openDemo();
+        FootprintController* c = w.footprint()->controller();
+        QVERIFY(c->waitIdle(30000));
+        const int before = c->count();
+        const double thr = c->params().segment.thresholdFactor;
+        QVERIFY(before > 100);
+        const QString bad = m_dir.path() + "/bad.lwb.json";
+        QVERIFY(lwbtest::writeText(bad, "{\"format\": \"laserwb-session\", \"version\": 1,\n \"footprint\": {\"params\": {\"segment\": {\"threshold_factor\": 7}}}\n}\n"));
+        QString err;
+        QVERIFY(!w.openSession(bad, true, &err));
+        QVERIFY2(err.contains("threshold"), qPrintable(err));
+        QCOMPARE(c->count(), before);
+        QCOMPARE(c->params().segment.thresholdFactor, thr);
+        QVERIFY(lwbtest::writeText(bad, "{\"format\": \"laserwb-session\",\n \"version\": 1,\n oops}"));
+        QVERIFY(!w.openSession(bad, true, &err));
+        QVERIFY2(err.contains("bad.lwb.json:3:"), qPrintable(err));
+        QCOMPARE(c->count(), before);
+        QVERIFY(!w.openSession(m_dir.path() + "/missing.json", true, &err));
+        QCOMPARE(c->count(), before);
+    }
+
+    void unreadableInputIsReportedNotFatal() {
+        MainWindow w;
+        FootprintController* c = w.footprint()->controller();
+        QDir().mkpath(m_dir.path() + "/junk");
+        QVERIFY(lwbtest::writeText(m_dir.path() + "/junk/broken.png", "not a png"));
+        QSignalSpy finished(c, &FootprintController::loadFinished);
+        c->open({m_dir.path() + "/junk/broken.png", m_dir.path() + "/shots/shot_000000.png"});
+        QVERIFY(finished.wait(30000));
+        QCOMPARE(c->count(), 2);
+        QCOMPARE(finished.first().at(1).toInt(), 1);
+        QVERIFY(c->shot(0)->loadError.contains("not a readable image"));
+        QCOMPARE(c->counts().rejected, 1);
+    }
+
+    void keyboardAcceptsAndRejects() {
+        MainWindow w;
+        w.openDemo();
+        FootprintController* c = w.footprint()->controller();
+        QVERIFY(c->waitIdle(30000));
+        QTableView* t = w.footprint()->table();
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        w.footprint()->selectRow(3);
+        t->setFocus();
+        QTest::keyClick(t, Qt::Key_R);
+        QCOMPARE(c->shot(3)->effectiveVerdict(), Verdict::Rejected);
+        QVERIFY(c->shot(3)->overridden);
+        QTest::keyClick(t, Qt::Key_Up);  // R moved to the next row; go back up to row 3, then down
+        QTest::keyClick(t, Qt::Key_Down);
+        QTest::keyClick(t, Qt::Key_A);
+        QCOMPARE(c->shot(4)->effectiveVerdict(), Verdict::Good);
+        QVERIFY(w.isModified());
+    }
+};
+
+QTEST_MAIN(TestFootprintWorkspace)
+#include "test_footprint_workspace.moc"
