@@ -7,4 +7,18 @@ int cmdSimulateFootprint(int argc, char** argv);
 int cmdTrend(int argc, char** argv);
 int cmdEvalFootprint(int argc, char** argv);
 int cmdBenchFootprint(int argc, char** argv);
+// Altimeter calibration (paper 002) and radiometry (paper 003): app/cli_calib.cpp, app/cli_radiometry.cpp
+int cmdCalibDetector(int argc, char** argv);
+int cmdCalibWaveform(int argc, char** argv);
+int cmdCalibPointing(int argc, char** argv);
+int cmdCalibStats(int argc, char** argv);
+int cmdSimulateCalib(int argc, char** argv);
+int cmdRadiometryMosaic(int argc, char** argv);
+int cmdRadiometryGcp(int argc, char** argv);
+int cmdRadiometryFit(int argc, char** argv);
+int cmdRadiometryApply(int argc, char** argv);
+int cmdRadiometryCheck(int argc, char** argv);
+// SLR signal extraction (paper 004): app/cli_slr_sim.cpp
+int cmdSimulateSlr(int argc, char** argv);
+int cmdBenchSlr(int argc, char** argv);
 }  // namespace lwb::cli

@@ -18,6 +18,24 @@ const char* kMainUsage =
     "  eval footprint       accuracy experiment on the simulator (Markdown table)\n"
     "  bench footprint      ROIs per second per method\n"
     "\n"
+    "SLR signal extraction (paper 004):\n"
+    "  simulate slr         a simulated pass (O-C CSV) with exact truth per point\n"
+    "  bench slr            parse + screen + post-fit times and peak memory, 10^4..10^6 points\n"
+    "\n"
+    "Altimeter calibration (paper 002):\n"
+    "  calib detector       footprint centre from a ground detector array (Gaussian surface + ellipse)\n"
+    "  calib waveform       feature height from a double-peak waveform; matching surveyed feature\n"
+    "  calib pointing       pointing corrections and range biases from control points\n"
+    "  calib stats          labelled validation statistics of elevation differences\n"
+    "  simulate calib       simulated calibration inputs with exact truth\n"
+    "\n"
+    "Radiometry, zero stadia standard image (paper 003):\n"
+    "  radiometry mosaic    stitch the overlapping frames of a row\n"
+    "  radiometry gcp       geometric correction by ground control points\n"
+    "  radiometry fit       DN -> reflectance line from marked regions, with uncertainty\n"
+    "  radiometry apply     reflectance image (32-bit float TIFF) and relative-error check\n"
+    "  radiometry check     relative errors of simulated vs measured reflectance\n"
+    "\n"
     "Other:\n"
     "  demo                 a short end-to-end run on simulated data\n"
     "  version              print the version\n"
@@ -40,6 +58,26 @@ int main(int argc, char** argv) {
     if (cmd == "simulate" && sub == "footprint") return cmdSimulateFootprint(argc, argv);
     if (cmd == "eval" && sub == "footprint") return cmdEvalFootprint(argc, argv);
     if (cmd == "bench" && sub == "footprint") return cmdBenchFootprint(argc, argv);
+    if (cmd == "simulate" && sub == "slr") return cmdSimulateSlr(argc, argv);
+    if (cmd == "bench" && sub == "slr") return cmdBenchSlr(argc, argv);
+    if (cmd == "calib" && sub == "detector") return cmdCalibDetector(argc, argv);
+    if (cmd == "calib" && sub == "waveform") return cmdCalibWaveform(argc, argv);
+    if (cmd == "calib" && sub == "pointing") return cmdCalibPointing(argc, argv);
+    if (cmd == "calib" && sub == "stats") return cmdCalibStats(argc, argv);
+    if (cmd == "simulate" && sub == "calib") return cmdSimulateCalib(argc, argv);
+    if (cmd == "radiometry" && sub == "mosaic") return cmdRadiometryMosaic(argc, argv);
+    if (cmd == "radiometry" && sub == "gcp") return cmdRadiometryGcp(argc, argv);
+    if (cmd == "radiometry" && sub == "fit") return cmdRadiometryFit(argc, argv);
+    if (cmd == "radiometry" && sub == "apply") return cmdRadiometryApply(argc, argv);
+    if (cmd == "radiometry" && sub == "check") return cmdRadiometryCheck(argc, argv);
+    if (cmd == "calib" || cmd == "radiometry") {
+        const char* subs = cmd == "calib" ? "detector, waveform, pointing, stats" : "mosaic, gcp, fit, apply, check";
+        if (sub == "--help" || sub == "-h") {
+            std::cout << "usage: laserwb-cli " << cmd << " (" << subs << ") [options]; each has --help\n";
+            return kOk;
+        }
+        return fail(cmd, (sub.empty() ? "which one? (" : "unknown kind \"" + sub + "\" (") + subs + ")", kUsage);
+    }
     if (cmd == "demo") return demo(argc, argv);
     if (cmd == "version" || cmd == "--version") {
         std::cout << "laserwb-cli 0.1.0\n";

@@ -3,6 +3,7 @@
 // triggered record its energy; a 2D Gaussian surface fitted to the energies by
 // Levenberg–Marquardt gives the footprint centre, with its 1σ uncertainty ellipse. Saturated
 // and untriggered detectors are set aside, each with its reason.
+#include <cmath>
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
@@ -45,7 +46,10 @@ struct DetectorFitParams {
     double saturationLevel = 0;    ///< energy at or above this counts as saturated (0 = no level; ≥ 0)
     double relativeNoise = 0.05;   ///< energy noise σ as a fraction of the model energy (0..1)
     double noiseFloor = 0;         ///< energy noise σ floor (energy unit, ≥ 0); both 0 = unweighted
-    bool scaleByChi2 = true;       ///< scale the covariance by the reduced χ² (when dof > 0)
+    /// Scale the covariance by the reduced χ² (when dof > 0). Off by default: with the noise model
+    /// above the unscaled covariance is honest, while a χ² from the few degrees of freedom of a
+    /// footprint (often 3–10) is itself too uncertain. Always on when the fit is unweighted.
+    bool scaleByChi2 = false;
     int recommendedDetectors = 9;  ///< warn below this many usable detectors (paper 002: ≥ 9)
     int maxIterations = 200;       ///< LM accepted steps (1..10000)
 };
@@ -107,6 +111,9 @@ struct DetectorFitResult {
 /// Fits the Gaussian surface to the usable detectors (paper 002 §3.2.3). Errors: fewer usable
 /// detectors than parameters, non-finite positions, collinear detectors, a fit that diverges.
 DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFitParams& params = {});
+
+/// Writes the array in the format readDetectorCsv reads (lat/lon when geographic), atomically.
+bool writeDetectorCsv(const std::string& path, const DetectorArray& array, std::string* error);
 
 /// Writes one row per detector (id, e, n, energy, status, reason, model, residual), atomically.
 bool writeDetectorReportCsv(const std::string& path, const DetectorArray& array, const DetectorFitResult& r,

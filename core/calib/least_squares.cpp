@@ -44,7 +44,7 @@ LmOutcome levenbergMarquardt(const LmProblem& problem, const Eigen::VectorXd& st
             const double ct = rt.squaredNorm();
             if (ct <= cost) {
                 const double jd = (J * delta).norm();
-                converged = (cost - ct) <= options.costTolerance * cost || jd < options.stepTolerance * (std::sqrt(cost) + 1e-300);
+                converged = (cost - ct) <= std::max(options.costTolerance * cost, options.costToleranceAbs) || jd < options.stepTolerance * (std::sqrt(cost) + 1e-300);
                 p = trial;
                 r = rt;
                 J = Jt;

@@ -20,6 +20,7 @@ struct LmProblem {
 struct LmOptions {
     int maxIterations = 100;      ///< accepted steps at most (1..10000)
     double costTolerance = 1e-12; ///< converged when a step lowers Σr² by less than this fraction
+    double costToleranceAbs = 0;  ///< … or by less than this much (Δχ² ≪ 1 is statistically nothing)
     double stepTolerance = 1e-10; ///< converged when ‖J·δ‖ < this · (‖r‖ + 1e-300)
     double lambda0 = 1e-3;        ///< starting damping (0 = start as Gauss–Newton)
 };

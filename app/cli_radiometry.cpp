@@ -1,0 +1,307 @@
+// laserwb-cli radiometry mosaic | gcp | fit | apply | check (paper 003).
+#include <cmath>
+#include <iostream>
+
+#include "cli_commands.hpp"
+#include "cli_common.hpp"
+#include "core/common/atomic_file.hpp"
+#include "core/common/text.hpp"
+#include "core/radiometry/gcp.hpp"
+#include "core/radiometry/mosaic.hpp"
+#include "core/radiometry/reflectance.hpp"
+
+namespace lwb::cli {
+
+using namespace core::radiometry;
+
+namespace {
+
+std::string fx(double v, int d) { return std::isfinite(v) ? core::formatFixed(v, d) : std::string(); }
+std::string outPath(const Args& a) { return a.has("-o") ? a.value("-o") : a.value("--output"); }
+bool quiet(const Args& a) { return a.has("-q") || a.has("--quiet"); }
+bool wantsHelp(const Args& a) { return a.has("--help") || a.has("-h"); }
+void warn(const std::string& cmd, const std::vector<std::string>& ws) {
+    for (const auto& w : ws) std::cerr << "laserwb-cli " << cmd << ": warning: " << w << "\n";
+}
+
+const char* kMosaicUsage =
+    "usage: laserwb-cli radiometry mosaic FRAME... -o ROW.tif [options]\n"
+    "Stitches the frames of one row, given in scan order (paper 003 3.1): keypoints matched between\n"
+    "neighbours, RANSAC transform, chained to the first frame, blended.\n"
+    "FRAME: single-channel PNG/TIFF/PGM of one depth (colour is converted to grey).\n"
+    "  --features akaze|orb     keypoints (default akaze: sub-pixel; orb: faster, ~0.5 px)\n"
+    "  --model translation|similarity|affine|homography   (default similarity)\n"
+    "  --blend feather|average|first   (default feather)\n"
+    "  --ransac-px T            RANSAC inlier distance (default 2)\n"
+    "  --min-inliers N          fewer consistent matches for a pair is an error (default 12)\n"
+    "  -o, --output ROW.tif     the row image (same depth as the frames; .tif or .png)\n"
+    "  --coverage MASK.png      255 where a frame contributed\n"
+    "  --pairs PAIRS.csv        per pair: keypoints, matches, inliers, RMS, shift, rotation, scale\n";
+
+const char* kGcpUsage =
+    "usage: laserwb-cli radiometry gcp IMAGE --gcps GCPS.csv -o MAP.tif [options]\n"
+    "Geometric correction by ground control points (paper 003 3.1, image to map): fits image -> map,\n"
+    "reports every GCP's residual and resamples the image onto a north-up map grid.\n"
+    "GCPS.csv: id, x, y (image px), map_x, map_y (map m, Y up).\n"
+    "  --model affine|homography   (default affine)\n"
+    "  --pixel-size M          map pixel size in metres (default: the image's own scale)\n"
+    "  --residuals RES.csv     per GCP: map and pixel residuals\n"
+    "  --valid MASK.png        255 where the map pixel came from inside the image\n";
+
+const char* kFitUsage =
+    "usage: laserwb-cli radiometry fit REGIONS.csv [--image DN.tif] -o FIT.csv [options]\n"
+    "Synchronous radiometric calibration (paper 003 eq. 5-6): V_REF = K * V_DN + B by least squares\n"
+    "over marked regions, with the standard errors of K and B and the uncertainty\n"
+    "sqrt(V_M^2 + V_err^2).\n"
+    "REGIONS.csv: name, reflectance (%), and dn or a rectangle x, y, w, h on --image.\n"
+    "  --image DN.tif          measure each region's mean DN on this image\n"
+    "  --dn-min D, --dn-max D  camera linear range (default 100, 60000); regions outside are warned\n"
+    "  --exclude-out-of-range  leave regions outside the range out of the fit\n"
+    "  --vm PCT                spectrometer uncertainty V_M (default 0.17 %)\n"
+    "  -o, --output FIT.csv    k, b, k_sd, b_sd, cov_kb, n, residual_sd, r2, mean_dn, vm_pct,\n"
+    "                          paper_uncertainty_pct, uncertainty_at_mean_pct\n"
+    "  --regions OUT.csv       per region: dn, reflectance, predicted, residual, used, note\n";
+
+const char* kApplyUsage =
+    "usage: laserwb-cli radiometry apply DN_IMAGE (--fit FIT.csv | --k K --b B) -o REFLECTANCE.tif [options]\n"
+    "Converts a DN image to reflectance (%) with V_REF = K * V_DN + B; writes a 32-bit float TIFF.\n"
+    "  --dn-min D, --dn-max D  camera linear range (default 100, 60000): pixels outside are counted\n"
+    "  --nan-out-of-range      and set to NaN\n"
+    "  --uncertainty UNC.tif   per-pixel uncertainty sqrt(V_M^2 + prediction variance) (needs --fit)\n"
+    "  --check CHECK.csv       check regions (name, reflectance, x, y, w, h) -> relative errors\n"
+    "  --table TABLE.csv       the relative-error table (with --check)\n"
+    "  --limit PCT             relative-error limit (default 5 %)\n";
+
+const char* kCheckUsage =
+    "usage: laserwb-cli radiometry check CHECK.csv [--image REFLECTANCE.tif] [-o TABLE.csv] [--limit PCT]\n"
+    "Relative error of simulated (image) against measured reflectance per check region (paper 003\n"
+    "tables 5-7): |simulated - measured| / measured * 100.\n"
+    "CHECK.csv: name, measured (or reflectance), and simulated or a rectangle x, y, w, h on --image.\n"
+    "Exit code 1 also when a region exceeds the limit (default 5 %); the table is still written.\n";
+
+}  // namespace
+
+int cmdRadiometryMosaic(int argc, char** argv) {
+    const std::string cmd = "radiometry mosaic";
+    Args a(cmd, kMosaicUsage);
+    for (const char* o : {"--features", "--model", "--blend", "--ransac-px", "--min-inliers", "-o", "--output", "--coverage",
+                          "--pairs"})
+        a.option(o, true);
+    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
+    if (wantsHelp(a)) {
+        std::cout << kMosaicUsage;
+        return kOk;
+    }
+    MosaicParams p;
+    std::string err;
+    if (a.has("--features") && !parseFeatureType(a.value("--features"), &p.features))
+        return fail(cmd, "--features must be akaze or orb", kUsage);
+    if (a.has("--model") && !parseMotionModel(a.value("--model"), &p.model))
+        return fail(cmd, "--model must be translation, similarity, affine or homography", kUsage);
+    if (a.has("--blend") && !parseBlendMode(a.value("--blend"), &p.blend))
+        return fail(cmd, "--blend must be feather, average or first", kUsage);
+    long long minInl = p.minInliers;
+    if (!a.getDouble("--ransac-px", 1e-3, 1000, &p.ransacThresholdPx, &err) || !a.getInt("--min-inliers", 4, 100000, &minInl, &err))
+        return fail(cmd, err, kUsage);
+    p.minInliers = static_cast<int>(minInl);
+    const std::string out = outPath(a);
+    if (out.empty()) return fail(cmd, "no output file: give -o ROW.tif", kUsage);
+    if (a.positional().size() < 2) return fail(cmd, "give at least two frames, in scan order", kUsage);
+    std::vector<cv::Mat> frames;
+    for (const auto& f : a.positional()) {
+        cv::Mat m;
+        if (!readImageAnyDepth(f, &m, &err)) return fail(cmd, err);
+        frames.push_back(m);
+    }
+    Progress progress("mosaic", 100, quiet(a));
+    core::Feedback fb([&](double f) { progress.update(static_cast<size_t>(100 * f)); });
+    const MosaicResult r = mosaicRow(frames, p, &fb);
+    progress.finish();
+    if (!r.ok) return fail(cmd, r.error);
+    warn(cmd, r.warnings);
+    if (!writeImage(out, r.image, &err)) return fail(cmd, err);
+    if (a.has("--coverage") && !writeImage(a.value("--coverage"), r.coverage, &err)) return fail(cmd, err);
+    if (a.has("--pairs") && !writePairCsv(a.value("--pairs"), r, &err)) return fail(cmd, err);
+    if (!quiet(a)) {
+        std::cerr << "radiometry mosaic: " << frames.size() << " frames -> " << r.image.cols << "x" << r.image.rows << " "
+                  << out << "\n";
+        for (const auto& pr : r.pairs)
+            std::cerr << "  frames " << pr.from + 1 << "-" << pr.to + 1 << ": " << pr.inliers << "/" << pr.matches
+                      << " inliers, RMS " << fx(pr.rmsPx, 3) << " px, shift " << fx(pr.shiftX, 2) << ", " << fx(pr.shiftY, 2)
+                      << " px\n";
+    }
+    return kOk;
+}
+
+int cmdRadiometryGcp(int argc, char** argv) {
+    const std::string cmd = "radiometry gcp";
+    Args a(cmd, kGcpUsage);
+    for (const char* o : {"--gcps", "--model", "--pixel-size", "--residuals", "--valid", "-o", "--output"}) a.option(o, true);
+    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
+    if (wantsHelp(a)) {
+        std::cout << kGcpUsage;
+        return kOk;
+    }
+    GcpFitParams p;
+    std::string err;
+    if (a.has("--model") && !parseGeoModel(a.value("--model"), &p.model))
+        return fail(cmd, "--model must be affine or homography", kUsage);
+    double pixel = 0;
+    if (!a.getDouble("--pixel-size", 1e-9, 1e9, &pixel, &err)) return fail(cmd, err, kUsage);
+    if (a.positional().size() != 1) return fail(cmd, "give exactly one image", kUsage);
+    if (!a.has("--gcps")) return fail(cmd, "no control points: give --gcps GCPS.csv", kUsage);
+    const std::string out = outPath(a);
+    if (out.empty()) return fail(cmd, "no output file: give -o MAP.tif", kUsage);
+    std::vector<Gcp> gcps;
+    if (!readGcpCsv(a.value("--gcps"), &gcps, &err)) return fail(cmd, err);
+    cv::Mat img;
+    if (!readImageAnyDepth(a.positional()[0], &img, &err)) return fail(cmd, err);
+    const GcpFitResult fit = fitGcpTransform(gcps, p);
+    if (!fit.ok) return fail(cmd, a.value("--gcps") + ": " + fit.error);
+    warn(cmd, fit.warnings);
+    const MapGrid grid = gridCovering(fit, img.size(), pixel > 0 ? pixel : fit.metresPerPixel);
+    const WarpResult w = warpToMap(img, fit, grid);
+    if (!w.ok) return fail(cmd, w.error);
+    if (!writeImage(out, w.image, &err)) return fail(cmd, err);
+    if (a.has("--valid") && !writeImage(a.value("--valid"), w.valid, &err)) return fail(cmd, err);
+    if (a.has("--residuals") && !writeGcpResidualCsv(a.value("--residuals"), gcps, fit, &err)) return fail(cmd, err);
+    if (!quiet(a))
+        std::cerr << "radiometry gcp: " << gcps.size() << " GCPs, " << geoModelName(fit.model) << "; RMS "
+                  << fx(fit.rmsMap, 4) << " m = " << fx(fit.rmsPx, 3) << " px; map grid " << grid.width << "x" << grid.height
+                  << " at " << core::formatDouble(grid.pixelSize, 4) << " m, top-left centre (" << fx(grid.originX, 4)
+                  << ", " << fx(grid.originY, 4) << ")\n";
+    return kOk;
+}
+
+int cmdRadiometryFit(int argc, char** argv) {
+    const std::string cmd = "radiometry fit";
+    Args a(cmd, kFitUsage);
+    for (const char* o : {"--image", "--dn-min", "--dn-max", "--vm", "-o", "--output", "--regions"}) a.option(o, true);
+    for (const char* o : {"--exclude-out-of-range", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
+    if (wantsHelp(a)) {
+        std::cout << kFitUsage;
+        return kOk;
+    }
+    ReflectanceFitParams p;
+    std::string err;
+    if (!a.getDouble("--dn-min", -1e300, 1e300, &p.dnMin, &err) || !a.getDouble("--dn-max", -1e300, 1e300, &p.dnMax, &err) ||
+        !a.getDouble("--vm", 0, 100, &p.spectrometerPct, &err))
+        return fail(cmd, err, kUsage);
+    p.excludeOutOfRange = a.has("--exclude-out-of-range");
+    if (const std::string e = validate(p); !e.empty()) return fail(cmd, e, kUsage);
+    if (a.positional().size() != 1) return fail(cmd, "give exactly one region CSV", kUsage);
+    const std::string out = outPath(a);
+    if (out.empty()) return fail(cmd, "no output file: give -o FIT.csv", kUsage);
+    std::vector<Region> regions;
+    if (!readRegionCsv(a.positional()[0], &regions, &err)) return fail(cmd, err);
+    if (a.has("--image")) {
+        cv::Mat img;
+        if (!readImageAnyDepth(a.value("--image"), &img, &err)) return fail(cmd, err);
+        if (!measureRegionDn(img, p, &regions, &err)) return fail(cmd, a.positional()[0] + ": " + err);
+    }
+    const ReflectanceFitResult r = fitReflectance(regions, p);
+    if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
+    warn(cmd, r.warnings);
+    if (!writeFitCsv(out, r.fit, &err)) return fail(cmd, err);
+    if (a.has("--regions") && !writeRegionFitCsv(a.value("--regions"), regions, r, &err)) return fail(cmd, err);
+    if (!quiet(a)) {
+        const auto& f = r.fit;
+        std::cerr << "radiometry fit: " << f.n << " regions; K = " << core::formatDouble(f.k, 6) << " +- "
+                  << core::formatDouble(f.kSd, 3) << " %/DN, B = " << core::formatDouble(f.b, 6) << " +- "
+                  << core::formatDouble(f.bSd, 3) << " %; R^2 " << fx(f.r2, 5) << "; uncertainty (eq. 6) "
+                  << fx(f.paperUncertaintyPct, 4) << " %, at the mean DN " << fx(f.uncertaintyAtMeanPct, 4) << " %\n";
+    }
+    return kOk;
+}
+
+int cmdRadiometryApply(int argc, char** argv) {
+    const std::string cmd = "radiometry apply";
+    Args a(cmd, kApplyUsage);
+    for (const char* o : {"--fit", "--k", "--b", "--dn-min", "--dn-max", "--uncertainty", "--check", "--table", "--limit", "-o",
+                          "--output"})
+        a.option(o, true);
+    for (const char* o : {"--nan-out-of-range", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
+    if (wantsHelp(a)) {
+        std::cout << kApplyUsage;
+        return kOk;
+    }
+    ApplyParams p;
+    std::string err;
+    double limit = 5;
+    ReflectanceFit fit;
+    if (!a.getDouble("--dn-min", -1e300, 1e300, &p.dnMin, &err) || !a.getDouble("--dn-max", -1e300, 1e300, &p.dnMax, &err) ||
+        !a.getDouble("--limit", 1e-9, 1e6, &limit, &err) || !a.getDouble("--k", -1e300, 1e300, &fit.k, &err) ||
+        !a.getDouble("--b", -1e300, 1e300, &fit.b, &err))
+        return fail(cmd, err, kUsage);
+    if (a.has("--fit") == (a.has("--k") || a.has("--b")) || a.has("--k") != a.has("--b"))
+        return fail(cmd, "give --fit FIT.csv, or --k K and --b B", kUsage);
+    if (a.has("--uncertainty") && !a.has("--fit")) return fail(cmd, "--uncertainty needs --fit (the errors of K and B)", kUsage);
+    if (a.has("--table") && !a.has("--check")) return fail(cmd, "--table needs --check", kUsage);
+    p.outOfRangeToNan = a.has("--nan-out-of-range");
+    p.uncertaintyImage = a.has("--uncertainty");
+    if (a.positional().size() != 1) return fail(cmd, "give exactly one DN image", kUsage);
+    const std::string out = outPath(a);
+    if (out.empty()) return fail(cmd, "no output file: give -o REFLECTANCE.tif", kUsage);
+    if (a.has("--fit") && !readFitCsv(a.value("--fit"), &fit, &err)) return fail(cmd, err);
+    cv::Mat img;
+    if (!readImageAnyDepth(a.positional()[0], &img, &err)) return fail(cmd, err);
+    const ApplyResult r = applyReflectance(img, fit, p);
+    if (!r.ok) return fail(cmd, r.error);
+    warn(cmd, r.warnings);
+    RelativeErrorResult check;
+    if (a.has("--check")) {
+        std::vector<Region> regions;
+        if (!readRegionCsv(a.value("--check"), &regions, &err)) return fail(cmd, err);
+        check = relativeErrors(regions, &r.reflectance, limit);
+        if (!check.ok) return fail(cmd, a.value("--check") + ": " + check.error);
+    }
+    if (!writeFloatTiff(out, r.reflectance, &err)) return fail(cmd, err);
+    if (a.has("--uncertainty") && !writeFloatTiff(a.value("--uncertainty"), r.uncertainty, &err)) return fail(cmd, err);
+    if (a.has("--table") && !writeRelativeErrorCsv(a.value("--table"), check, &err)) return fail(cmd, err);
+    if (!quiet(a)) std::cerr << "radiometry apply: " << img.cols << "x" << img.rows << " -> " << out << "\n";
+    if (a.has("--check")) {
+        for (const auto& row : check.rows)
+            std::cout << row.name << ": measured " << fx(row.measured, 4) << " %, image " << fx(row.simulated, 4)
+                      << " %, relative error " << fx(row.relativeErrorPct, 3) << " %\n";
+        std::cout << "max relative error " << fx(check.maxPct, 3) << " % (limit " << core::formatDouble(limit, 4) << " %)\n";
+        warn(cmd, check.warnings);
+        if (!check.allWithinLimit) return kFailed;
+    }
+    return kOk;
+}
+
+int cmdRadiometryCheck(int argc, char** argv) {
+    const std::string cmd = "radiometry check";
+    Args a(cmd, kCheckUsage);
+    for (const char* o : {"--image", "--limit", "-o", "--output"}) a.option(o, true);
+    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
+    if (wantsHelp(a)) {
+        std::cout << kCheckUsage;
+        return kOk;
+    }
+    std::string err;
+    double limit = 5;
+    if (!a.getDouble("--limit", 1e-9, 1e6, &limit, &err)) return fail(cmd, err, kUsage);
+    if (a.positional().size() != 1) return fail(cmd, "give exactly one check-region CSV", kUsage);
+    std::vector<Region> regions;
+    if (!readRegionCsv(a.positional()[0], &regions, &err)) return fail(cmd, err);
+    cv::Mat img;
+    if (a.has("--image") && !readImageAnyDepth(a.value("--image"), &img, &err)) return fail(cmd, err);
+    const RelativeErrorResult r = relativeErrors(regions, a.has("--image") ? &img : nullptr, limit);
+    if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
+    if (!outPath(a).empty() && !writeRelativeErrorCsv(outPath(a), r, &err)) return fail(cmd, err);
+    for (const auto& row : r.rows)
+        std::cout << row.name << ": measured " << fx(row.measured, 5) << " %, simulated " << fx(row.simulated, 5)
+                  << " %, relative error " << fx(row.relativeErrorPct, 6) << " %\n";
+    std::cout << "max " << fx(r.maxPct, 4) << " %, mean " << fx(r.meanPct, 4) << " % (limit " << core::formatDouble(limit, 4)
+              << " %)\n";
+    warn(cmd, r.warnings);
+    return r.allWithinLimit ? kOk : kFailed;
+}
+
+}  // namespace lwb::cli

@@ -1,0 +1,338 @@
+#include "core/calib/waveform.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/calib/geodesy.hpp"
+#include "core/calib/least_squares.hpp"
+#include "core/common/csv.hpp"
+#include "core/common/text.hpp"
+
+namespace lwb::core::calib {
+
+namespace {
+int firstColumn(const CsvTable& t, std::initializer_list<const char*> names) {
+    for (const char* n : names)
+        if (const int c = t.column(n); c >= 0) return c;
+    return -1;
+}
+}  // namespace
+
+bool readWaveformCsv(const std::string& path, double dt, Waveform* out, std::string* error) {
+    if (!(dt > 0 && std::isfinite(dt))) {
+        *error = "sample interval must be > 0 ns";
+        return false;
+    }
+    const CsvReadResult csv = readCsv(path);
+    if (!csv.ok) {
+        *error = csv.error;
+        return false;
+    }
+    const CsvTable& t = csv.table;
+    const int ct = firstColumn(t, {"time_ns", "t_ns", "time"}), cs = firstColumn(t, {"sample", "index"});
+    const int ca = firstColumn(t, {"amplitude", "value", "counts", "dn"});
+    if (ca < 0) {
+        *error = path + ":1: header needs an amplitude column (and optionally time_ns or sample)";
+        return false;
+    }
+    Waveform w;
+    for (size_t i = 0; i < t.rows.size(); ++i) {
+        const auto& row = t.rows[i];
+        const std::string where = path + ":" + std::to_string(t.lines[i]) + ": ";
+        double a = 0, tt = 0;
+        if (!parseDouble(row[ca], &a)) {
+            *error = where + "amplitude must be a finite number, not \"" + row[ca] + "\"";
+            return false;
+        }
+        if (ct >= 0) {
+            if (!parseDouble(row[ct], &tt)) {
+                *error = where + "time must be a finite number, not \"" + row[ct] + "\"";
+                return false;
+            }
+        } else if (cs >= 0) {
+            long long k = 0;
+            if (!parseLong(row[cs], &k)) {
+                *error = where + "sample must be a whole number, not \"" + row[cs] + "\"";
+                return false;
+            }
+            tt = k * dt;
+        } else {
+            tt = static_cast<double>(i) * dt;
+        }
+        if (!w.timeNs.empty() && !(tt > w.timeNs.back())) {
+            *error = where + "times must increase";
+            return false;
+        }
+        w.timeNs.push_back(tt);
+        w.amplitude.push_back(a);
+    }
+    if (w.timeNs.size() < 10) {
+        *error = path + ": only " + std::to_string(w.timeNs.size()) + " samples (a two-peak fit needs at least 10)";
+        return false;
+    }
+    *out = std::move(w);
+    return true;
+}
+
+std::string validate(const WaveformParams& p) {
+    if (!(p.sampleIntervalNs > 0 && p.sampleIntervalNs < 1e6)) return "sample interval must be > 0 ns";
+    if (!(p.smoothSigmaNs >= 0 && p.smoothSigmaNs < 1e6)) return "smoothing must be >= 0 ns";
+    if (!(p.minSeparationNs > 0 && p.minSeparationNs < 1e6)) return "minimum peak separation must be > 0 ns";
+    if (!(p.minSecondPeak > 0 && p.minSecondPeak <= 1)) return "second-peak fraction must be in (0, 1]";
+    if (!(p.incidenceDeg >= 0 && p.incidenceDeg <= 60)) return "incidence must be within 0..60 degrees";
+    if (p.maxIterations < 1 || p.maxIterations > 10000) return "LM iterations must be within 1..10000";
+    return {};
+}
+
+double heightFromDelay(double deltaTNs, double incidenceRad) {
+    return deltaTNs * 1e-9 * kSpeedOfLight / 2 / std::cos(incidenceRad);
+}
+
+WaveformResult decomposeWaveform(const Waveform& w, const WaveformParams& params) {
+    WaveformResult res;
+    if (const std::string e = validate(params); !e.empty()) {
+        res.error = e;
+        return res;
+    }
+    const size_t n = w.amplitude.size();
+    if (w.timeNs.size() != n) {
+        res.error = "waveform times and amplitudes differ in length";
+        return res;
+    }
+    if (n < 10) {
+        res.error = "only " + std::to_string(n) + " samples (a two-peak fit needs at least 10)";
+        return res;
+    }
+    for (size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(w.amplitude[i]) || !std::isfinite(w.timeNs[i])) {
+            res.error = "sample " + std::to_string(i) + " is not finite";
+            return res;
+        }
+        if (i && !(w.timeNs[i] > w.timeNs[i - 1])) {
+            res.error = "sample times must increase (sample " + std::to_string(i) + ")";
+            return res;
+        }
+    }
+    const double dt = (w.timeNs.back() - w.timeNs.front()) / (n - 1);
+    // Peak search on a smoothed copy.
+    std::vector<double> sm(n);
+    const double sg = params.smoothSigmaNs / dt;
+    if (sg < 0.3) {
+        sm = w.amplitude;
+    } else {
+        const int half = static_cast<int>(std::ceil(3 * sg));
+        for (size_t i = 0; i < n; ++i) {
+            double s = 0, ws = 0;
+            for (int k = -half; k <= half; ++k) {
+                const long j = static_cast<long>(i) + k;
+                if (j < 0 || j >= static_cast<long>(n)) continue;
+                const double g = std::exp(-0.5 * k * k / (sg * sg));
+                s += g * w.amplitude[j];
+                ws += g;
+            }
+            sm[i] = s / ws;
+        }
+    }
+    std::vector<double> sorted = w.amplitude;
+    std::nth_element(sorted.begin(), sorted.begin() + n / 4, sorted.end());
+    const double base0 = sorted[n / 4];  // lower quartile: the baseline under sparse returns
+    std::vector<size_t> peaks;
+    for (size_t i = 1; i + 1 < n; ++i)
+        if (sm[i] > sm[i - 1] && sm[i] >= sm[i + 1] && sm[i] > base0) peaks.push_back(i);
+    if (peaks.empty()) {
+        res.error = "the waveform has no peak above its baseline";
+        return res;
+    }
+    size_t p1 = peaks[0];
+    for (size_t p : peaks)
+        if (sm[p] > sm[p1]) p1 = p;
+    const double h1 = sm[p1] - base0;
+    long p2 = -1;
+    for (size_t p : peaks) {
+        if (std::fabs(w.timeNs[p] - w.timeNs[p1]) < params.minSeparationNs) continue;
+        if (sm[p] - base0 < params.minSecondPeak * h1) continue;
+        // A true second return dips between the peaks.
+        const size_t lo = std::min(p, p1), hi = std::max(p, p1);
+        double dip = INFINITY;
+        for (size_t k = lo; k <= hi; ++k) dip = std::min(dip, sm[k]);
+        if (dip > base0 + 0.9 * (std::min(sm[p], sm[p1]) - base0)) continue;
+        if (p2 < 0 || sm[p] > sm[static_cast<size_t>(p2)]) p2 = static_cast<long>(p);
+    }
+    if (p2 < 0) {
+        res.error = "not a double-peak waveform: no second return at least " + formatDouble(params.minSeparationNs, 4) +
+                    " ns from the main peak reaching " + formatDouble(100 * params.minSecondPeak, 3) + " % of it";
+        return res;
+    }
+    auto halfWidth = [&](size_t p) {
+        const double half = base0 + 0.5 * (sm[p] - base0);
+        size_t l = p, r = p;
+        while (l > 0 && sm[l] > half) --l;
+        while (r + 1 < n && sm[r] > half) ++r;
+        const double fwhm = w.timeNs[r] - w.timeNs[l];
+        return std::max(fwhm / 2.3548, dt);
+    };
+    size_t a = std::min(p1, static_cast<size_t>(p2)), b = std::max(p1, static_cast<size_t>(p2));
+    const double sep = w.timeNs[b] - w.timeNs[a];
+    Eigen::VectorXd p0(7);
+    p0 << base0, sm[a] - base0, w.timeNs[a], std::min(halfWidth(a), sep / 2), sm[b] - base0, w.timeNs[b],
+        std::min(halfWidth(b), sep / 2);
+    LmProblem prob;
+    prob.parameters = 7;
+    prob.evaluate = [&](const Eigen::VectorXd& p, Eigen::VectorXd* r, Eigen::MatrixXd* J) {
+        if (!(p(3) > 0) || !(p(6) > 0)) return false;
+        r->resize(static_cast<int>(n));
+        if (J) J->resize(static_cast<int>(n), 7);
+        for (size_t i = 0; i < n; ++i) {
+            const int k = static_cast<int>(i);
+            const double t = w.timeNs[i];
+            const double u1 = (t - p(2)) / p(3), u2 = (t - p(5)) / p(6);
+            const double g1 = std::exp(-0.5 * u1 * u1), g2 = std::exp(-0.5 * u2 * u2);
+            (*r)(k) = p(0) + p(1) * g1 + p(4) * g2 - w.amplitude[i];
+            if (!J) continue;
+            (*J)(k, 0) = 1;
+            (*J)(k, 1) = g1;
+            (*J)(k, 2) = p(1) * g1 * u1 / p(3);
+            (*J)(k, 3) = p(1) * g1 * u1 * u1 / p(3);
+            (*J)(k, 4) = g2;
+            (*J)(k, 5) = p(4) * g2 * u2 / p(6);
+            (*J)(k, 6) = p(4) * g2 * u2 * u2 / p(6);
+        }
+        return true;
+    };
+    LmOptions opt;
+    opt.maxIterations = params.maxIterations;
+    const LmOutcome o = levenbergMarquardt(prob, p0, opt);
+    if (!o.ok) {
+        res.error = "waveform decomposition failed: " + o.error;
+        return res;
+    }
+    if (!o.converged) res.warnings.push_back("the decomposition stopped at the iteration limit before converging");
+    Eigen::VectorXd p = o.params;
+    Eigen::MatrixXd cov;
+    double rcond = 0;
+    if (!covarianceFromJacobian(o.jacobian, 1e-13, &cov, &rcond)) {
+        res.error = "the two returns are not separable in this waveform (singular fit)";
+        return res;
+    }
+    const int dof = static_cast<int>(n) - 7;
+    cov *= o.cost / std::max(dof, 1);
+    int i1 = 1, i2 = 4;
+    if (p(5) < p(2)) std::swap(i1, i2);
+    auto comp = [&](int i) {
+        GaussComponent c;
+        c.amplitude = p(i);
+        c.centreNs = p(i + 1);
+        c.sigmaNs = p(i + 2);
+        c.amplitudeSd = std::sqrt(cov(i, i));
+        c.centreSdNs = std::sqrt(cov(i + 1, i + 1));
+        c.sigmaSdNs = std::sqrt(cov(i + 2, i + 2));
+        return c;
+    };
+    res.first = comp(i1);
+    res.second = comp(i2);
+    res.baseline = p(0);
+    if (res.first.amplitude <= 0 || res.second.amplitude <= 0) {
+        res.error = "the decomposition produced a negative return: not a double-peak waveform";
+        return res;
+    }
+    res.deltaTNs = res.second.centreNs - res.first.centreNs;
+    res.deltaTSdNs = std::sqrt(std::max(0.0, cov(i1 + 1, i1 + 1) + cov(i2 + 1, i2 + 1) - 2 * cov(i1 + 1, i2 + 1)));
+    const double th = params.incidenceDeg * kDeg;
+    res.heightM = heightFromDelay(res.deltaTNs, th);
+    res.heightSdM = heightFromDelay(res.deltaTSdNs, th);
+    res.iterations = static_cast<int>(o.history.size()) - 1;
+    res.rmsResidual = std::sqrt(o.cost / n);
+    res.model.resize(n);
+    for (size_t i = 0; i < n; ++i) res.model[i] = o.residuals(static_cast<int>(i)) + w.amplitude[i];
+    if (res.deltaTNs < 2 * std::max(res.first.sigmaNs, res.second.sigmaNs))
+        res.warnings.push_back("the two returns overlap (separation < 2 sigma): the height is less reliable");
+    if (res.first.centreNs < w.timeNs.front() || res.second.centreNs > w.timeNs.back())
+        res.warnings.push_back("a fitted return lies outside the sampled window");
+    res.ok = std::isfinite(res.heightM);
+    if (!res.ok) res.error = "the decomposition produced a non-finite height";
+    return res;
+}
+
+bool readFeatureCsv(const std::string& path, std::vector<FeatureCandidate>* out, std::string* error) {
+    const CsvReadResult csv = readCsv(path);
+    if (!csv.ok) {
+        *error = csv.error;
+        return false;
+    }
+    const CsvTable& t = csv.table;
+    const int cid = firstColumn(t, {"id", "feature", "name"}), ch = firstColumn(t, {"h", "height", "height_m"});
+    int ce = firstColumn(t, {"e", "east", "x", "lat", "latitude"}), cn = firstColumn(t, {"n", "north", "y", "lon", "longitude"});
+    if (ch < 0) {
+        *error = path + ":1: header needs a height column (h)";
+        return false;
+    }
+    std::vector<FeatureCandidate> v;
+    for (size_t i = 0; i < t.rows.size(); ++i) {
+        const auto& row = t.rows[i];
+        const std::string where = path + ":" + std::to_string(t.lines[i]) + ": ";
+        FeatureCandidate c;
+        c.line = t.lines[i];
+        c.id = cid >= 0 ? std::string(trim(row[cid])) : std::to_string(i + 1);
+        if (!parseDouble(row[ch], &c.heightM)) {
+            *error = where + "height must be a finite number, not \"" + row[ch] + "\"";
+            return false;
+        }
+        if (ce >= 0 && !trim(row[ce]).empty() && !parseDouble(row[ce], &c.e)) {
+            *error = where + "position must be a finite number, not \"" + row[ce] + "\"";
+            return false;
+        }
+        if (cn >= 0 && !trim(row[cn]).empty() && !parseDouble(row[cn], &c.n)) {
+            *error = where + "position must be a finite number, not \"" + row[cn] + "\"";
+            return false;
+        }
+        v.push_back(std::move(c));
+    }
+    if (v.empty()) {
+        *error = path + ": no candidate rows";
+        return false;
+    }
+    *out = std::move(v);
+    return true;
+}
+
+std::string validate(const FeatureMatchParams& p) {
+    if (!(p.thresholdM > 0 && std::isfinite(p.thresholdM))) return "the height threshold thred_h must be > 0 m";
+    return {};
+}
+
+FeatureMatchResult matchFeature(const std::vector<FeatureCandidate>& candidates, double hWaveform,
+                                const FeatureMatchParams& params) {
+    FeatureMatchResult res;
+    if (const std::string e = validate(params); !e.empty()) {
+        res.error = e;
+        return res;
+    }
+    if (!std::isfinite(hWaveform)) {
+        res.error = "the waveform height is not a finite number";
+        return res;
+    }
+    if (candidates.empty()) {
+        res.error = "no candidate features";
+        return res;
+    }
+    for (size_t i = 0; i < candidates.size(); ++i) {
+        if (!std::isfinite(candidates[i].heightM)) {
+            res.error = "candidate " + candidates[i].id + " has no finite height";
+            return res;
+        }
+        const double d = std::fabs(candidates[i].heightM - hWaveform);
+        res.ranking.push_back({i, d, d <= params.thresholdM + 1e-9});
+    }
+    std::stable_sort(res.ranking.begin(), res.ranking.end(),
+                     [](const FeatureDelta& a, const FeatureDelta& b) { return a.deltaHM < b.deltaHM; });
+    res.best = res.ranking[0].index;
+    res.bestDeltaHM = res.ranking[0].deltaHM;
+    res.found = res.ranking[0].belowThreshold;
+    if (res.found && res.ranking.size() > 1 && res.ranking[1].belowThreshold)
+        res.warnings.push_back("ambiguous: candidates " + candidates[res.ranking[0].index].id + " and " +
+                               candidates[res.ranking[1].index].id + " are both within thred_h of the waveform height");
+    res.ok = true;
+    return res;
+}
+
+}  // namespace lwb::core::calib

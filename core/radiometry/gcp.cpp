@@ -1,0 +1,363 @@
+#include "core/radiometry/gcp.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/csv.hpp"
+#include "core/common/text.hpp"
+
+namespace lwb::core::radiometry {
+
+namespace {
+int firstColumn(const CsvTable& t, std::initializer_list<const char*> names) {
+    for (const char* n : names)
+        if (const int c = t.column(n); c >= 0) return c;
+    return -1;
+}
+cv::Point2d apply(const cv::Matx33d& h, double x, double y) {
+    const double w = h(2, 0) * x + h(2, 1) * y + h(2, 2);
+    return {(h(0, 0) * x + h(0, 1) * y + h(0, 2)) / w, (h(1, 0) * x + h(1, 1) * y + h(1, 2)) / w};
+}
+std::string gcpName(const Gcp& g, size_t i) {
+    std::string s = "GCP " + (g.id.empty() ? std::to_string(i + 1) : g.id);
+    if (g.line > 0) s += " (line " + std::to_string(g.line) + ")";
+    return s;
+}
+// Ratio of the spread across the best-fitting line to the spread along it.
+double lineRatio(const std::vector<Eigen::Vector2d>& p) {
+    Eigen::Vector2d m = Eigen::Vector2d::Zero();
+    for (const auto& v : p) m += v;
+    m /= static_cast<double>(p.size());
+    Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
+    for (const auto& v : p) s += (v - m) * (v - m).transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(s);
+    const double l1 = std::max(es.eigenvalues()(1), 0.0), l0 = std::max(es.eigenvalues()(0), 0.0);
+    return l1 > 0 ? std::sqrt(l0 / l1) : 0.0;
+}
+}  // namespace
+
+const char* geoModelName(GeoModel m) { return m == GeoModel::Homography ? "homography" : "affine"; }
+
+bool parseGeoModel(const std::string& s, GeoModel* m) {
+    const std::string t = toLower(s);
+    if (t == "affine") *m = GeoModel::Affine;
+    else if (t == "homography" || t == "projective") *m = GeoModel::Homography;
+    else return false;
+    return true;
+}
+
+bool readGcpCsv(const std::string& path, std::vector<Gcp>* out, std::string* error) {
+    const CsvReadResult csv = readCsv(path);
+    if (!csv.ok) {
+        *error = csv.error;
+        return false;
+    }
+    const CsvTable& t = csv.table;
+    const int cid = firstColumn(t, {"id", "name", "marker"});
+    const int cx = firstColumn(t, {"x", "col", "px"}), cy = firstColumn(t, {"y", "row", "py"});
+    const int mx = firstColumn(t, {"map_x", "mapx", "e", "east"}), my = firstColumn(t, {"map_y", "mapy", "n", "north"});
+    if (cx < 0 || cy < 0 || mx < 0 || my < 0) {
+        *error = path + ":1: header needs x, y (image px) and map_x, map_y (map m)";
+        return false;
+    }
+    std::vector<Gcp> v;
+    for (size_t i = 0; i < t.rows.size(); ++i) {
+        const auto& row = t.rows[i];
+        Gcp g;
+        g.line = t.lines[i];
+        g.id = cid >= 0 ? std::string(trim(row[cid])) : std::to_string(i + 1);
+        if (!parseDouble(row[cx], &g.x) || !parseDouble(row[cy], &g.y) || !parseDouble(row[mx], &g.mapX) ||
+            !parseDouble(row[my], &g.mapY)) {
+            *error = path + ":" + std::to_string(t.lines[i]) + ": x, y, map_x, map_y must be finite numbers";
+            return false;
+        }
+        v.push_back(std::move(g));
+    }
+    if (v.empty()) {
+        *error = path + ": no GCP rows";
+        return false;
+    }
+    *out = std::move(v);
+    return true;
+}
+
+std::string validate(const GcpFitParams& p) {
+    if (!(p.collinearTolerance >= 0 && p.collinearTolerance <= 0.5)) return "collinearity tolerance must be within 0..0.5";
+    if (!(p.outlierFactor >= 1 && p.outlierFactor < 1e6)) return "outlier factor must be >= 1";
+    return {};
+}
+
+GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& params) {
+    GcpFitResult res;
+    res.model = params.model;
+    if (const std::string e = validate(params); !e.empty()) {
+        res.error = e;
+        return res;
+    }
+    const int n = static_cast<int>(gcps.size());
+    const bool homog = params.model == GeoModel::Homography;
+    const int np = homog ? 8 : 6;
+    const int need = homog ? 4 : 3;
+    if (n < need) {
+        res.error = "only " + std::to_string(n) + " GCP" + (n == 1 ? "" : "s") + ": the " + geoModelName(params.model) +
+                    " model needs at least " + std::to_string(need);
+        return res;
+    }
+    std::vector<Eigen::Vector2d> img, map;
+    for (int i = 0; i < n; ++i) {
+        const Gcp& g = gcps[i];
+        if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.mapX) || !std::isfinite(g.mapY)) {
+            res.error = gcpName(g, i) + ": non-finite coordinates";
+            return res;
+        }
+        for (int j = 0; j < i; ++j) {
+            if (gcps[j].x == g.x && gcps[j].y == g.y) {
+                res.error = gcpName(g, i) + " repeats the image position of " + gcpName(gcps[j], j);
+                return res;
+            }
+            if (gcps[j].mapX == g.mapX && gcps[j].mapY == g.mapY) {
+                res.error = gcpName(g, i) + " repeats the map position of " + gcpName(gcps[j], j);
+                return res;
+            }
+        }
+        img.emplace_back(g.x, g.y);
+        map.emplace_back(g.mapX, g.mapY);
+    }
+    const double ri = lineRatio(img), rm = lineRatio(map);
+    if (ri <= params.collinearTolerance || rm <= params.collinearTolerance) {
+        res.error = "the " + std::to_string(n) + " GCPs are collinear (" + (ri <= params.collinearTolerance ? "image" : "map") +
+                    " spread across their line is " + formatDouble(100 * std::min(ri, rm), 3) +
+                    " % of the spread along it): the transform is undetermined across the line";
+        return res;
+    }
+    if (homog) {
+        // No three of any four on a line when only four are given; the general case is caught by
+        // the rank of the normalised DLT system.
+        if (n == 4) {
+            for (int a = 0; a < 4; ++a) {
+                std::vector<Eigen::Vector2d> tri, trm;
+                for (int k = 0; k < 4; ++k)
+                    if (k != a) {
+                        tri.push_back(img[k]);
+                        trm.push_back(map[k]);
+                    }
+                if (lineRatio(tri) <= params.collinearTolerance || lineRatio(trm) <= params.collinearTolerance) {
+                    res.error = "three of the four GCPs lie on one line: the homography is degenerate";
+                    return res;
+                }
+            }
+        }
+        auto normaliser = [](const std::vector<Eigen::Vector2d>& p) {
+            Eigen::Vector2d m = Eigen::Vector2d::Zero();
+            for (const auto& v : p) m += v;
+            m /= static_cast<double>(p.size());
+            double d = 0;
+            for (const auto& v : p) d += (v - m).norm();
+            const double s = std::sqrt(2.0) / std::max(d / p.size(), 1e-300);
+            Eigen::Matrix3d t;
+            t << s, 0, -s * m.x(), 0, s, -s * m.y(), 0, 0, 1;
+            return t;
+        };
+        const Eigen::Matrix3d ti = normaliser(img), tm = normaliser(map);
+        Eigen::MatrixXd A(2 * n, 9);
+        for (int i = 0; i < n; ++i) {
+            const Eigen::Vector3d p = ti * Eigen::Vector3d(img[i].x(), img[i].y(), 1);
+            const Eigen::Vector3d q = tm * Eigen::Vector3d(map[i].x(), map[i].y(), 1);
+            A.row(2 * i) << p.x(), p.y(), 1, 0, 0, 0, -q.x() * p.x(), -q.x() * p.y(), -q.x();
+            A.row(2 * i + 1) << 0, 0, 0, p.x(), p.y(), 1, -q.y() * p.x(), -q.y() * p.y(), -q.y();
+        }
+        Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
+        const Eigen::VectorXd s = svd.singularValues();
+        if (s.size() < 9 || !(s(7) > 1e-8 * s(0))) {
+            res.error = "the GCPs do not determine a homography (degenerate configuration)";
+            return res;
+        }
+    }
+    cv::Matx33d h = cv::Matx33d::eye();
+    try {
+        std::vector<cv::Point2d> src, dst;
+        for (int i = 0; i < n; ++i) {
+            src.emplace_back(img[i].x(), img[i].y());
+            dst.emplace_back(map[i].x(), map[i].y());
+        }
+        if (homog) {
+            const cv::Mat H = cv::findHomography(src, dst, 0);
+            if (H.empty()) {
+                res.error = "the homography fit failed (degenerate GCPs)";
+                return res;
+            }
+            h = cv::Matx33d(H);
+        } else {
+            // Least squares in centred coordinates: [X Y] = [x−mx, y−my, 1]·P.
+            Eigen::Vector2d m = Eigen::Vector2d::Zero();
+            for (const auto& v : img) m += v;
+            m /= n;
+            Eigen::MatrixXd M(n, 3), Y(n, 2);
+            for (int i = 0; i < n; ++i) {
+                M.row(i) << img[i].x() - m.x(), img[i].y() - m.y(), 1;
+                Y.row(i) << map[i].x(), map[i].y();
+            }
+            const Eigen::MatrixXd P = M.colPivHouseholderQr().solve(Y);
+            h = cv::Matx33d(P(0, 0), P(1, 0), P(2, 0) - P(0, 0) * m.x() - P(1, 0) * m.y(),  //
+                            P(0, 1), P(1, 1), P(2, 1) - P(0, 1) * m.x() - P(1, 1) * m.y(),  //
+                            0, 0, 1);
+        }
+    } catch (const cv::Exception& e) {
+        res.error = std::string("the transform fit failed: ") + e.what();
+        return res;
+    }
+    bool invertible = false;
+    const cv::Matx33d inv = h.inv(cv::DECOMP_LU, &invertible);
+    if (!invertible || std::fabs(cv::determinant(h)) < 1e-300) {
+        res.error = "the fitted transform is singular";
+        return res;
+    }
+    res.imageToMap = h * (1.0 / h(2, 2));
+    res.mapToImage = inv * (1.0 / inv(2, 2));
+    double sm = 0, sp = 0;
+    for (int i = 0; i < n; ++i) {
+        GcpResidual r;
+        r.id = gcps[i].id.empty() ? std::to_string(i + 1) : gcps[i].id;
+        const cv::Point2d pm = apply(res.imageToMap, img[i].x(), img[i].y());
+        const cv::Point2d pi = apply(res.mapToImage, map[i].x(), map[i].y());
+        r.dMapX = pm.x - map[i].x();
+        r.dMapY = pm.y - map[i].y();
+        r.dx = pi.x - img[i].x();
+        r.dy = pi.y - img[i].y();
+        r.mapNorm = std::hypot(r.dMapX, r.dMapY);
+        r.pxNorm = std::hypot(r.dx, r.dy);
+        sm += r.mapNorm * r.mapNorm;
+        sp += r.pxNorm * r.pxNorm;
+        res.residuals.push_back(r);
+    }
+    res.rmsMap = std::sqrt(sm / n);
+    res.rmsPx = std::sqrt(sp / n);
+    res.dof = 2 * n - np;
+    if (res.dof == 0)
+        res.warnings.push_back("as many equations as parameters: the GCP residuals are zero and do not measure accuracy");
+    for (size_t i = 0; i < res.residuals.size(); ++i)
+        if (res.dof > 0 && res.residuals[i].pxNorm > params.outlierFactor * res.rmsPx && res.residuals[i].pxNorm > 1e-6)
+            res.warnings.push_back(gcpName(gcps[i], i) + ": residual " + formatFixed(res.residuals[i].pxNorm, 3) +
+                                   " px exceeds " + formatDouble(params.outlierFactor, 3) + " x RMS (misplaced marker?)");
+    {
+        Eigen::Vector2d m = Eigen::Vector2d::Zero();
+        for (const auto& v : img) m += v;
+        m /= n;
+        const double e = 1e-3;
+        const cv::Point2d a = apply(res.imageToMap, m.x(), m.y()), bx = apply(res.imageToMap, m.x() + e, m.y()),
+                          by = apply(res.imageToMap, m.x(), m.y() + e);
+        const double det = ((bx.x - a.x) * (by.y - a.y) - (by.x - a.x) * (bx.y - a.y)) / (e * e);
+        res.metresPerPixel = std::sqrt(std::fabs(det));
+    }
+    res.ok = true;
+    return res;
+}
+
+MapGrid gridCovering(const GcpFitResult& fit, cv::Size size, double pixelSize) {
+    MapGrid g;
+    g.pixelSize = pixelSize;
+    double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
+    const int steps = 32;
+    for (int k = 0; k <= steps; ++k) {
+        const double fx = -0.5 + (size.width) * double(k) / steps, fy = -0.5 + (size.height) * double(k) / steps;
+        const cv::Point2d pts[4] = {apply(fit.imageToMap, fx, -0.5), apply(fit.imageToMap, fx, size.height - 0.5),
+                                    apply(fit.imageToMap, -0.5, fy), apply(fit.imageToMap, size.width - 0.5, fy)};
+        for (const auto& p : pts) {
+            minX = std::min(minX, p.x);
+            maxX = std::max(maxX, p.x);
+            minY = std::min(minY, p.y);
+            maxY = std::max(maxY, p.y);
+        }
+    }
+    if (!(pixelSize > 0) || !std::isfinite(minX) || !std::isfinite(maxY)) return g;
+    g.originX = minX + pixelSize / 2;
+    g.originY = maxY - pixelSize / 2;
+    g.width = static_cast<int>(std::min(1e9, std::ceil((maxX - minX) / pixelSize - 1e-6)));
+    g.height = static_cast<int>(std::min(1e9, std::ceil((maxY - minY) / pixelSize - 1e-6)));
+    return g;
+}
+
+WarpResult warpToMap(const cv::Mat& image, const GcpFitResult& fit, const MapGrid& grid) {
+    WarpResult res;
+    if (image.empty() || image.channels() != 1) {
+        res.error = "the image must be a non-empty single-channel image";
+        return res;
+    }
+    if (!(grid.pixelSize > 0) || grid.width < 1 || grid.height < 1) {
+        res.error = "the map grid needs a pixel size > 0 and a size of at least 1x1";
+        return res;
+    }
+    if (grid.width > 40000 || grid.height > 40000 || double(grid.width) * grid.height > 4e8) {
+        res.error = "the map grid " + std::to_string(grid.width) + "x" + std::to_string(grid.height) +
+                    " is too large (choose a coarser pixel size)";
+        return res;
+    }
+    const cv::Matx33d g(grid.pixelSize, 0, grid.originX, 0, -grid.pixelSize, grid.originY, 0, 0, 1);
+    const cv::Matx33d m = fit.mapToImage * g;  // map-grid pixel → image pixel
+    try {
+        cv::warpPerspective(image, res.image, cv::Mat(m), cv::Size(grid.width, grid.height),
+                            cv::INTER_LINEAR | cv::WARP_INVERSE_MAP, cv::BORDER_CONSTANT, cv::Scalar(0));
+        cv::Mat ones(image.size(), CV_32F, cv::Scalar(1)), w;
+        cv::warpPerspective(ones, w, cv::Mat(m), cv::Size(grid.width, grid.height), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
+                            cv::BORDER_CONSTANT, cv::Scalar(0));
+        res.valid = w > 0.999f;
+    } catch (const cv::Exception& e) {
+        res.error = std::string("resampling failed: ") + e.what();
+        return res;
+    }
+    res.ok = true;
+    return res;
+}
+
+WarpResult mergeOnGrid(const std::vector<cv::Mat>& images, const std::vector<cv::Mat>& valid) {
+    WarpResult res;
+    if (images.empty() || images.size() != valid.size()) {
+        res.error = "merge needs one validity mask per image";
+        return res;
+    }
+    const cv::Size size = images[0].size();
+    const int depth = images[0].depth();
+    try {
+        cv::Mat sum(size, CV_64F, cv::Scalar(0)), cnt(size, CV_64F, cv::Scalar(0));
+        for (size_t i = 0; i < images.size(); ++i) {
+            if (images[i].size() != size || valid[i].size() != size || images[i].channels() != 1 ||
+                images[i].depth() != depth || valid[i].type() != CV_8UC1) {
+                res.error = "map image " + std::to_string(i + 1) + " differs in size, depth or mask from the first";
+                return res;
+            }
+            cv::Mat f;
+            images[i].convertTo(f, CV_64F);
+            cv::add(sum, f, sum, valid[i]);
+            cv::add(cnt, cv::Scalar(1), cnt, valid[i]);
+        }
+        cv::Mat avg;
+        cv::divide(sum, cv::max(cnt, 1.0), avg);
+        avg.convertTo(res.image, depth);
+        res.valid = cnt > 0;
+    } catch (const cv::Exception& e) {
+        res.error = std::string("merge failed: ") + e.what();
+        return res;
+    }
+    res.ok = true;
+    return res;
+}
+
+bool writeGcpResidualCsv(const std::string& path, const std::vector<Gcp>& gcps, const GcpFitResult& fit,
+                         std::string* error) {
+    std::string s = "id,x,y,map_x,map_y,d_map_x,d_map_y,d_map,d_px_x,d_px_y,d_px\n";
+    for (size_t i = 0; i < gcps.size() && i < fit.residuals.size(); ++i) {
+        const Gcp& g = gcps[i];
+        const GcpResidual& r = fit.residuals[i];
+        s += csvEscape(g.id) + "," + formatDouble(g.x, 10) + "," + formatDouble(g.y, 10) + "," + formatDouble(g.mapX, 10) +
+             "," + formatDouble(g.mapY, 10) + "," + formatFixed(r.dMapX, 5) + "," + formatFixed(r.dMapY, 5) + "," +
+             formatFixed(r.mapNorm, 5) + "," + formatFixed(r.dx, 4) + "," + formatFixed(r.dy, 4) + "," +
+             formatFixed(r.pxNorm, 4) + "\n";
+    }
+    return writeFileAtomic(path, s, error);
+}
+
+}  // namespace lwb::core::radiometry

@@ -1,0 +1,214 @@
+#include "core/sim/slr_sim.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/common/text.hpp"
+#include "core/sim/rng.hpp"
+
+namespace lwb::core::sim {
+
+namespace {
+constexpr double kC = 299792458.0;  // m/s
+
+double rangeM(const SlrSimParams& p, double tcaSod, double t) {
+    const double d = p.tcaDistanceKm * 1e3, v = p.velocityKmS * 1e3, x = v * (t - tcaSod);
+    return std::sqrt(d * d + x * x);
+}
+double rangeRateMs(const SlrSimParams& p, double tcaSod, double t) {
+    const double v = p.velocityKmS * 1e3;
+    return v * v * (t - tcaSod) / rangeM(p, tcaSod, t);
+}
+}  // namespace
+
+const char* slrKindName(SlrKind k) {
+    switch (k) {
+        case SlrKind::Khz: return "khz";
+        case SlrKind::Conventional: return "conventional";
+        case SlrKind::Diffuse: return "diffuse";
+    }
+    return "?";
+}
+
+bool parseSlrKind(const std::string& s, SlrKind* out) {
+    for (SlrKind k : {SlrKind::Khz, SlrKind::Conventional, SlrKind::Diffuse})
+        if (toLower(s) == slrKindName(k)) {
+            *out = k;
+            return true;
+        }
+    return false;
+}
+
+SlrSimParams slrSimPreset(SlrKind kind) {
+    SlrSimParams p;
+    p.kind = kind;
+    switch (kind) {
+        case SlrKind::Khz:  // single-photon kHz ranging to a LEO satellite (Jason class)
+            break;          // the struct defaults
+        case SlrKind::Conventional:  // 10 Hz multi-photon ranging to LAGEOS
+            p.fireRateHz = 10;
+            p.returnProbability = 0.6;
+            p.noiseRateNightHz = 0.3;
+            p.noiseRateDayHz = 2;
+            p.gateS = 1e-6;
+            p.jitterS = 80e-12;
+            p.tailS = 0;
+            p.durationS = 2400;
+            p.altitudeKm = 5900;
+            p.tcaDistanceKm = 6500;
+            p.velocityKmS = 4.5;
+            p.rangeBiasMaxS = 20e-9;
+            p.timeBiasMaxS = 2e-3;
+            break;
+        case SlrKind::Diffuse:  // diffuse-reflection ranging to space debris (ns laser)
+            p.fireRateHz = 20;
+            p.returnProbability = 0.15;
+            p.noiseRateNightHz = 3;
+            p.noiseRateDayHz = 20;
+            p.gateS = 10e-6;
+            p.jitterS = 2e-9;
+            p.tailS = 0;
+            p.durationS = 300;
+            p.altitudeKm = 800;
+            p.tcaDistanceKm = 1000;
+            p.velocityKmS = 7.4;
+            p.rangeBiasMaxS = 500e-9;
+            p.timeBiasMaxS = 10e-3;
+            break;
+    }
+    return p;
+}
+
+std::string validate(const SlrSimParams& p) {
+    auto fin = [](double v) { return std::isfinite(v); };
+    if (p.points < 0 || p.points > 50000000) return "points must be 0 (use the duration) or 1..50000000";
+    if (!(fin(p.durationS) && p.durationS > 0 && p.durationS <= 172800)) return "duration must be in (0, 172800] s";
+    if (!fin(p.signalFraction) || p.signalFraction < 0 || p.signalFraction > 1) return "signal fraction must be 0 (from the noise rate) or in (0, 1]";
+    if (!fin(p.startSod) || p.startSod < 0 || p.startSod > 1e7) return "start epoch must be 0..1e7 s";
+    if (!fin(p.fireRateHz) || p.fireRateHz <= 0 || p.fireRateHz > 1e5) return "fire rate must be in (0, 1e5] Hz";
+    if (!fin(p.returnProbability) || p.returnProbability <= 0 || p.returnProbability > 1) return "return probability must be in (0, 1]";
+    if (!fin(p.noiseRateNightHz) || !fin(p.noiseRateDayHz) || p.noiseRateNightHz < 0 || p.noiseRateDayHz < 0)
+        return "noise rates must be finite and >= 0";
+    if (!fin(p.gateS) || p.gateS <= 0 || p.gateS > 1) return "gate must be in (0, 1] s";
+    if (!fin(p.jitterS) || p.jitterS < 0 || !fin(p.tailS) || p.tailS < 0) return "jitter and tail must be >= 0";
+    if (!fin(p.tcaDistanceKm) || p.tcaDistanceKm <= 0 || !fin(p.velocityKmS) || p.velocityKmS <= 0)
+        return "closest-approach distance and velocity must be > 0";
+    if (!fin(p.rangeBiasMaxS) || p.rangeBiasMaxS < 0 || !fin(p.timeBiasMaxS) || p.timeBiasMaxS < 0)
+        return "bias limits must be >= 0";
+    if (!fin(p.altitudeKm) || p.altitudeKm < 0) return "altitude must be >= 0";
+    return {};
+}
+
+double slrTrackOc(const SlrSimParams& p, double rangeBiasS, double timeBiasS, double tcaSod, double t) {
+    return rangeBiasS + 2.0 / kC * rangeRateMs(p, tcaSod, t) * timeBiasS;
+}
+
+SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
+    SlrSimPass out;
+    if (const std::string e = validate(p); !e.empty()) {
+        out.error = e;
+        return out;
+    }
+    Rng rng(seed);
+    const double noiseRate = p.daylight ? p.noiseRateDayHz : p.noiseRateNightHz;
+    const double sigRate = p.fireRateHz * p.returnProbability;
+    // Counts and duration.
+    long long shots = 0, ns = 0, nn = 0;
+    std::vector<long long> sigShots;
+    if (p.points > 0) {
+        const double f = p.signalFraction > 0 ? p.signalFraction : sigRate / (sigRate + noiseRate);
+        ns = std::clamp<long long>(std::llround(f * static_cast<double>(p.points)), 1, p.points);
+        nn = p.points - ns;
+        // The kind's pass length is kept; the return probability follows (the pass is
+        // lengthened only when even a return on every shot would not give ns signal points).
+        shots = std::max<long long>(ns, std::llround(p.durationS * p.fireRateHz));
+        if (shots > 1000000000LL) {
+            out.error = "too many shots (" + std::to_string(shots) + "): shorten the pass";
+            return out;
+        }
+        // Exactly ns distinct signal shots among `shots` (selection sampling, ascending).
+        sigShots.reserve(static_cast<size_t>(ns));
+        long long need = ns;
+        for (long long k = 0; k < shots && need > 0; ++k)
+            if (rng.uniform() * static_cast<double>(shots - k) < static_cast<double>(need)) {
+                sigShots.push_back(k);
+                --need;
+            }
+    } else {
+        shots = std::max<long long>(1, std::llround(p.durationS * p.fireRateHz));
+        if (shots > 1000000000LL) {
+            out.error = "too many shots (" + std::to_string(shots) + "): shorten the pass";
+            return out;
+        }
+        for (long long k = 0; k < shots; ++k)
+            if (rng.uniform() < p.returnProbability) sigShots.push_back(k);
+        ns = static_cast<long long>(sigShots.size());
+        if (p.signalFraction > 0)
+            nn = std::llround(static_cast<double>(ns) * (1 - p.signalFraction) / p.signalFraction);
+        else
+            nn = static_cast<long long>(rng.poisson(noiseRate * static_cast<double>(shots) / p.fireRateHz));
+        if (ns + nn > 50000000LL) {
+            out.error = "the pass would hold " + std::to_string(ns + nn) + " points (more than 5e7)";
+            return out;
+        }
+    }
+    const double duration = static_cast<double>(shots) / p.fireRateHz;
+    // Track truth: biases, closest approach near the middle of the pass.
+    out.rangeBiasS = rng.uniform(-p.rangeBiasMaxS, p.rangeBiasMaxS);
+    out.timeBiasS = rng.uniform(-p.timeBiasMaxS, p.timeBiasMaxS);
+    out.tcaSod = p.startSod + duration * rng.uniform(0.35, 0.65);
+    // Gate: the track (with 6σ of jitter) kept inside the middle 80 % of the gate.
+    double tLo = 1e300, tHi = -1e300;
+    for (int i = 0; i <= 400; ++i) {
+        const double v = slrTrackOc(p, out.rangeBiasS, out.timeBiasS, out.tcaSod, p.startSod + duration * i / 400.0);
+        tLo = std::min(tLo, v);
+        tHi = std::max(tHi, v);
+    }
+    const double mid = 0.5 * (tLo + tHi);
+    const double room = std::max(0.0, 0.4 * p.gateS - 0.5 * (tHi - tLo) - 6 * p.jitterS - 10 * p.tailS);
+    out.gateS = p.gateS;
+    out.gateLoS = mid - 0.5 * p.gateS + rng.uniform(-room, room);
+    // Points.
+    struct Pt {
+        double t, oc;
+        uint8_t sig;
+    };
+    std::vector<Pt> pts;
+    pts.reserve(static_cast<size_t>(ns + nn));
+    for (long long k : sigShots) {
+        const double t = p.startSod + static_cast<double>(k) / p.fireRateHz;
+        double oc = slrTrackOc(p, out.rangeBiasS, out.timeBiasS, out.tcaSod, t) + p.jitterS * rng.normal();
+        if (p.tailS > 0) oc += -p.tailS * std::log(1.0 - rng.uniform());
+        pts.push_back({t, oc, 1});
+    }
+    for (long long j = 0; j < nn; ++j) {
+        const long long k = std::min<long long>(shots - 1, static_cast<long long>(rng.uniform() * static_cast<double>(shots)));
+        const double t = p.startSod + static_cast<double>(k) / p.fireRateHz;
+        pts.push_back({t, out.gateLoS + p.gateS * rng.uniform(), 0});
+    }
+    std::sort(pts.begin(), pts.end(), [](const Pt& a, const Pt& b) {
+        return a.t < b.t || (a.t == b.t && (a.oc < b.oc || (a.oc == b.oc && a.sig > b.sig)));
+    });
+    const size_t n = pts.size();
+    out.epochS.resize(n);
+    out.ocS.resize(n);
+    out.isSignal.resize(n);
+    out.trackOcS.resize(n);
+    out.tofS.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        out.epochS[i] = pts[i].t;
+        out.ocS[i] = pts[i].oc;
+        out.isSignal[i] = pts[i].sig;
+        out.trackOcS[i] = slrTrackOc(p, out.rangeBiasS, out.timeBiasS, out.tcaSod, pts[i].t);
+        out.tofS[i] = 2.0 * rangeM(p, out.tcaSod, pts[i].t) / kC + pts[i].oc;
+    }
+    out.durationS = duration;
+    out.shots = shots;
+    out.signalCount = ns;
+    out.noiseCount = nn;
+    out.signalFraction = n ? static_cast<double>(ns) / static_cast<double>(n) : 0;
+    out.ok = true;
+    return out;
+}
+
+}  // namespace lwb::core::sim

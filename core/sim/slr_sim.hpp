@@ -1,0 +1,71 @@
+#pragma once
+// SLR pass simulator with exact truth, for tests, benchmarks and the demo. A straight-line
+// flyby (closest slant distance d at t_TCA, relative speed v) gives ρ(t) and the range rate
+// ρ'(t) = v²(t − t_TCA)/ρ(t); the O-C track follows paper 004 eq. 1 in two-way time of flight:
+//   O-C(t) = b + (2/c)·ρ'(t)·τ      (b range bias in s of TOF, τ time bias in s)
+// plus Gaussian jitter (and an optional exponential tail: a target signature); noise is
+// uniform over the range gate, tied to random shots. Deterministic for a seed.
+//
+// Kinds (presets): kHz single-photon ranging to a LEO satellite (2 kHz, 2 % return probability,
+// 25 ps jitter, 200 ns gate, 40 noise/s at night, 600 by day); conventional 10 Hz ranging to
+// LAGEOS (60 % returns, 80 ps, 1 µs gate, 0.3 / 2 noise/s); diffuse (debris) ranging (20 Hz,
+// 15 %, 2 ns, 10 µs gate, 3 / 20 noise/s). signalFraction overrides the noise rate so that
+// signal / all = fraction (down to 3 % and below).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lwb::core::sim {
+
+enum class SlrKind { Khz, Conventional, Diffuse };
+const char* slrKindName(SlrKind k);                   ///< "khz", "conventional", "diffuse"
+bool parseSlrKind(const std::string& s, SlrKind* out);
+
+struct SlrSimParams {
+    SlrKind kind = SlrKind::Khz;
+    bool daylight = false;          ///< day noise rate instead of night
+    long long points = 0;           ///< > 0: exactly this many points in durationS (the return probability
+                                    ///< follows; the pass grows only past one return per shot); ≤ 5e7
+    double durationS = 600;         ///< pass length (s); (0, 172800]
+    double signalFraction = 0;      ///< 0: from the noise rate; else signal / all points, (0, 1]
+    double startSod = 36007.25;     ///< epoch of the first shot, seconds of day (bins align to 0h)
+    double fireRateHz = 2000;       ///< laser fire rate, (0, 1e5]
+    double returnProbability = 0.02;  ///< chance a shot gives a signal detection, (0, 1]
+    double noiseRateNightHz = 40;   ///< noise detections per second in the gate (night), ≥ 0
+    double noiseRateDayHz = 600;    ///< same, by day
+    double gateS = 200e-9;          ///< range gate width (two-way s), > 0
+    double jitterS = 25e-12;        ///< Gaussian RMS of the signal about the track (s), ≥ 0
+    double tailS = 10e-12;          ///< mean of an added exponential tail (target signature, s), ≥ 0
+    double altitudeKm = 1336;       ///< satellite altitude (for the normal-point bin length)
+    double tcaDistanceKm = 1700;    ///< slant distance at closest approach, > 0
+    double velocityKmS = 7.2;       ///< relative speed at closest approach, > 0
+    double rangeBiasMaxS = 5e-9;    ///< |b| ≤ this (two-way s), drawn uniformly
+    double timeBiasMaxS = 0.3e-3;   ///< |τ| ≤ this (s), drawn uniformly
+};
+
+/// The preset physics for a kind (day/night only picks which noise rate is used later).
+SlrSimParams slrSimPreset(SlrKind kind);
+/// Empty when the params are usable, else what is wrong.
+std::string validate(const SlrSimParams& p);
+
+struct SlrSimPass {
+    bool ok = false;
+    std::string error;
+    std::vector<double> epochS;      ///< fire epochs (s of day), ascending
+    std::vector<double> ocS;         ///< observed minus computed two-way TOF (s)
+    std::vector<uint8_t> isSignal;   ///< truth: 1 signal, 0 noise
+    std::vector<double> trackOcS;    ///< exact model O-C at each epoch (no jitter, no tail)
+    std::vector<double> tofS;        ///< observed two-way TOF = 2ρ(t)/c + O-C (s)
+    double rangeBiasS = 0, timeBiasS = 0, tcaSod = 0;  ///< truth of the track
+    double gateLoS = 0, gateS = 0;   ///< the gate [gateLo, gateLo + gate] (O-C, s)
+    double durationS = 0, signalFraction = 0;  ///< as generated
+    long long shots = 0, signalCount = 0, noiseCount = 0;
+};
+
+/// Simulates one pass. Deterministic for (params, seed).
+SlrSimPass simulateSlrPass(const SlrSimParams& params, uint64_t seed);
+
+/// The model O-C (s) of a pass at epoch t (for truth comparisons).
+double slrTrackOc(const SlrSimParams& p, double rangeBiasS, double timeBiasS, double tcaSod, double t);
+
+}  // namespace lwb::core::sim

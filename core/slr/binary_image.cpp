@@ -1,0 +1,245 @@
+#include "core/slr/binary_image.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/common/text.hpp"
+
+namespace lwb::core::slr {
+
+namespace {
+constexpr double kCoordLimit = 4611686018427387904.0;  // 2^62: shifted extents then fit in int64
+constexpr size_t kMaxPoints = 0xFFFFFFFEu;
+
+// Union-find over pixel indices: union by smaller index (deterministic roots), path halving.
+struct UnionFind {
+    std::vector<uint32_t> parent;
+    explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+    uint32_t find(uint32_t x) {
+        while (parent[x] != x) {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
+        }
+        return x;
+    }
+    void unite(uint32_t a, uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a == b) return;
+        if (a < b) parent[b] = a;
+        else parent[a] = b;
+    }
+};
+}  // namespace
+
+std::string validate(const MappingParams& p) {
+    if (!std::isfinite(p.magT) || !(p.magT > 0))
+        return "mag_T must be a finite number > 0 (pixels per second of epoch), not " + formatDouble(p.magT, 6);
+    if (!std::isfinite(p.magOc) || !(p.magOc > 0))
+        return "mag_OC must be a finite number > 0 (pixels per second of O-C), not " + formatDouble(p.magOc, 6);
+    if (p.magT > 1e15) return "mag_T " + formatDouble(p.magT, 6) + " is absurd (more than 1e15 pixels per second)";
+    if (p.magOc > 1e18) return "mag_OC " + formatDouble(p.magOc, 6) + " is absurd (more than 1e18 pixels per second)";
+    if (p.connectivity != 4 && p.connectivity != 8)
+        return "connectivity must be 4 or 8, not " + std::to_string(p.connectivity);
+    return {};
+}
+
+bool mapPoint(double t, double oc, double magT, double magOc, int64_t* row, int64_t* col) {
+    const double r = std::round(t * magT), c = std::round(oc * magOc);
+    if (!std::isfinite(r) || !std::isfinite(c) || std::fabs(r) > kCoordLimit || std::fabs(c) > kCoordLimit) return false;
+    *row = static_cast<int64_t>(r);
+    *col = static_cast<int64_t>(c);
+    return true;
+}
+
+BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params,
+                             const Feedback* fb) {
+    BinaryImage img;
+    img.params = params;
+    if (const std::string e = validate(params); !e.empty()) {
+        img.error = e;
+        return img;
+    }
+    if (t.size() != oc.size()) {
+        img.error = "epochs and O-C differ in length (" + std::to_string(t.size()) + " vs " + std::to_string(oc.size()) + ")";
+        return img;
+    }
+    const size_t n = t.size();
+    if (n > kMaxPoints) {
+        img.error = "too many points (" + std::to_string(n) + "); at most 4294967294";
+        return img;
+    }
+    if (n == 0) {
+        img.ok = true;
+        img.pixelPointStart.push_back(0);
+        return img;
+    }
+    // Pass 1: finiteness and the coordinate range, before any allocation proportional to n.
+    int64_t rMin = 0, rMax = 0, cMin = 0, cMax = 0;
+    for (size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(t[i]) || !std::isfinite(oc[i])) {
+            img.error = "point " + std::to_string(i) + " has a non-finite " + (std::isfinite(t[i]) ? "O-C" : "epoch");
+            return img;
+        }
+        int64_t r = 0, c = 0;
+        if (!mapPoint(t[i], oc[i], params.magT, params.magOc, &r, &c)) {
+            img.error = "magnification too large: point " + std::to_string(i) + " maps to a pixel coordinate beyond 2^62 (t*mag_T = " +
+                        formatDouble(t[i] * params.magT, 4) + ", O-C*mag_OC = " + formatDouble(oc[i] * params.magOc, 4) + ")";
+            return img;
+        }
+        if (i == 0 || r < rMin) rMin = r;
+        if (i == 0 || r > rMax) rMax = r;
+        if (i == 0 || c < cMin) cMin = c;
+        if (i == 0 || c > cMax) cMax = c;
+        if ((i & 0xFFFFF) == 0xFFFFF && cancelled(fb)) {
+            img.error = "cancelled";
+            return img;
+        }
+    }
+    img.rowOffset = rMin;
+    img.colOffset = cMin;
+    img.rows = rMax - rMin + 1;
+    img.cols = cMax - cMin + 1;
+
+    // Pass 2: sort the points by shifted (row, col). One 64-bit key when rows·cols fits, else
+    // a lexicographic pair compare (absurd magnifications: still O(n log n), never an image).
+    struct Item {
+        uint64_t key, key2;
+        uint32_t idx;
+    };
+    std::vector<Item> items(n);
+    const bool oneKey = static_cast<double>(img.rows) * static_cast<double>(img.cols) < 9.0e18;
+    for (size_t i = 0; i < n; ++i) {
+        int64_t r = 0, c = 0;
+        mapPoint(t[i], oc[i], params.magT, params.magOc, &r, &c);
+        const uint64_t sr = static_cast<uint64_t>(r - rMin), sc = static_cast<uint64_t>(c - cMin);
+        items[i] = oneKey ? Item{sr * static_cast<uint64_t>(img.cols) + sc, 0, static_cast<uint32_t>(i)}
+                          : Item{sr, sc, static_cast<uint32_t>(i)};
+    }
+    if (oneKey) {
+        // LSD radix sort on the 64-bit key, 11 bits a pass (stable: ties stay in index order).
+        const uint64_t maxKey = static_cast<uint64_t>(img.rows) * static_cast<uint64_t>(img.cols) - 1;
+        int bits = 0;
+        while (bits < 64 && (maxKey >> bits) != 0) ++bits;
+        std::vector<Item> tmp(n);
+        std::vector<size_t> count(2049);
+        for (int shift = 0; shift < bits; shift += 11) {
+            std::fill(count.begin(), count.end(), 0);
+            for (const Item& it : items) ++count[((it.key >> shift) & 2047) + 1];
+            for (size_t d = 1; d < count.size(); ++d) count[d] += count[d - 1];
+            for (const Item& it : items) tmp[count[(it.key >> shift) & 2047]++] = it;
+            items.swap(tmp);
+            if (cancelled(fb)) break;
+        }
+    } else {
+        std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
+            if (a.key != b.key) return a.key < b.key;
+            if (a.key2 != b.key2) return a.key2 < b.key2;
+            return a.idx < b.idx;
+        });
+    }
+    if (cancelled(fb)) {
+        img.error = "cancelled";
+        return img;
+    }
+    // Pixels and the index matrix (CSR).
+    img.pixelPoints.resize(n);
+    img.pointPixel.resize(n);
+    size_t pixels = 0;
+    for (size_t i = 0; i < n; ++i)
+        if (i == 0 || items[i].key != items[i - 1].key || items[i].key2 != items[i - 1].key2) ++pixels;
+    img.pixelRow.reserve(pixels);
+    img.pixelCol.reserve(pixels);
+    img.pixelPointStart.reserve(pixels + 1);
+    for (size_t i = 0; i < n; ++i) {
+        if (i == 0 || items[i].key != items[i - 1].key || items[i].key2 != items[i - 1].key2) {
+            img.pixelPointStart.push_back(static_cast<uint32_t>(i));
+            if (oneKey) {
+                img.pixelRow.push_back(static_cast<int64_t>(items[i].key / static_cast<uint64_t>(img.cols)));
+                img.pixelCol.push_back(static_cast<int64_t>(items[i].key % static_cast<uint64_t>(img.cols)));
+            } else {
+                img.pixelRow.push_back(static_cast<int64_t>(items[i].key));
+                img.pixelCol.push_back(static_cast<int64_t>(items[i].key2));
+            }
+        }
+        img.pixelPoints[i] = items[i].idx;
+        img.pointPixel[items[i].idx] = static_cast<uint32_t>(img.pixelRow.size() - 1);
+    }
+    img.pixelPointStart.push_back(static_cast<uint32_t>(n));
+    std::vector<Item>().swap(items);
+
+    // Labelling: pixels are sorted by (row, col), so the neighbours of a pixel in the row above
+    // form a contiguous run found with a moving pointer, and the left neighbour is the previous
+    // pixel. 4-connectivity links (r, c−1) and (r−1, c); 8 adds (r−1, c±1).
+    UnionFind uf(pixels);
+    const bool eight = params.connectivity == 8;
+    size_t rowStart = 0, prevStart = 0, prevEnd = 0;  // current row run start; previous row run [prevStart, prevEnd)
+    bool havePrev = false;
+    size_t j = 0;  // pointer into the previous row
+    for (size_t p = 0; p < pixels; ++p) {
+        const int64_t r = img.pixelRow[p], c = img.pixelCol[p];
+        if (p == 0 || r != img.pixelRow[p - 1]) {
+            // New row: the previous row run is the one just finished, if it is exactly r − 1.
+            if (p > 0) {
+                havePrev = img.pixelRow[p - 1] == r - 1;
+                prevStart = rowStart;
+                prevEnd = p;
+            }
+            rowStart = p;
+            j = prevStart;
+        }
+        if (p > rowStart && img.pixelCol[p - 1] == c - 1) uf.unite(static_cast<uint32_t>(p - 1), static_cast<uint32_t>(p));
+        if (havePrev) {
+            const int64_t lo = eight ? c - 1 : c, hi = eight ? c + 1 : c;
+            while (j < prevEnd && img.pixelCol[j] < lo) ++j;
+            for (size_t k = j; k < prevEnd && img.pixelCol[k] <= hi; ++k)
+                uf.unite(static_cast<uint32_t>(k), static_cast<uint32_t>(p));
+        }
+        if ((p & 0xFFFFF) == 0xFFFFF && cancelled(fb)) {
+            img.error = "cancelled";
+            return img;
+        }
+    }
+    // Compact labels in order of each region's first pixel; per-region statistics.
+    img.pixelRegion.assign(pixels, 0);
+    size_t roots = 0;
+    for (size_t p = 0; p < pixels; ++p) roots += uf.find(static_cast<uint32_t>(p)) == p;
+    img.regions.reserve(roots);
+    std::vector<uint32_t> labelOfRoot(pixels, UINT32_MAX);
+    std::vector<double> sumR, sumC;
+    sumR.reserve(roots);
+    sumC.reserve(roots);
+    for (size_t p = 0; p < pixels; ++p) {
+        const uint32_t root = uf.find(static_cast<uint32_t>(p));
+        uint32_t lab = labelOfRoot[root];
+        const int64_t r = img.pixelRow[p], c = img.pixelCol[p];
+        if (lab == UINT32_MAX) {
+            lab = labelOfRoot[root] = static_cast<uint32_t>(img.regions.size());
+            Region reg;
+            reg.rowMin = reg.rowMax = r;
+            reg.colMin = reg.colMax = c;
+            img.regions.push_back(reg);
+            sumR.push_back(0);
+            sumC.push_back(0);
+        }
+        img.pixelRegion[p] = lab;
+        Region& reg = img.regions[lab];
+        reg.area += 1;
+        reg.points += img.pixelPointStart[p + 1] - img.pixelPointStart[p];
+        sumR[lab] += static_cast<double>(r);
+        sumC[lab] += static_cast<double>(c);
+        reg.rowMin = std::min(reg.rowMin, r);
+        reg.rowMax = std::max(reg.rowMax, r);
+        reg.colMin = std::min(reg.colMin, c);
+        reg.colMax = std::max(reg.colMax, c);
+    }
+    for (size_t k = 0; k < img.regions.size(); ++k) {
+        img.regions[k].row = sumR[k] / static_cast<double>(img.regions[k].area);
+        img.regions[k].col = sumC[k] / static_cast<double>(img.regions[k].area);
+    }
+    img.ok = true;
+    return img;
+}
+
+}  // namespace lwb::core::slr

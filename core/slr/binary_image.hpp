@@ -1,0 +1,70 @@
+#pragma once
+// SLR O-C residuals as a sparse binary image (paper 004 §3.1–3.2, steps 1–2): each point
+// (t, O-C) maps to the pixel (round(t·mag_T), round(O-C·mag_OC)); the coordinates are shifted
+// to start at 0; every pixel keeps ALL the indices of the points that fall on it (the paper's
+// "index matrix"); occupied pixels are labelled into 4- or 8-connected regions.
+//
+// The image is never allocated: a 3000 s pass at mag_T 10 and a 1 µs gate at mag_OC 1e10 is a
+// 30 000 × 10 000 image, but only the occupied pixels (at most one per point) are stored,
+// sorted by (row, col), and labelled with a union-find over that sorted list, so time is
+// O(n log n) and memory O(n) in the number of points, whatever the magnification.
+//
+// Orientation follows the paper: row = time (t·mag_T), col = O-C (O-C·mag_OC). The paper's
+// example (478.64358053542 s, 7.986e-8 s) at mag_T 1, mag_OC 1e7 is pixel (479, 1) before the shift.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/common/feedback.hpp"
+
+namespace lwb::core::slr {
+
+struct MappingParams {
+    double magT = 10;      ///< pixels per second of epoch, (0, 1e15]; paper table 1: 10 conventional, 1 diffuse
+    double magOc = 1e10;   ///< pixels per second of O-C (two-way), (0, 1e18]; paper: 1e10 conventional, 1e7 diffuse
+    int connectivity = 8;  ///< 4 or 8 (paper §3.2.1: high echo rate → 4, low → 8)
+};
+
+/// Empty when the parameters are usable, else what is wrong (NaN, ≤ 0, absurd, connectivity not 4/8).
+std::string validate(const MappingParams& p);
+
+/// One connected region of occupied pixels (paper §3.2.1: area and centroid; plus box and points).
+struct Region {
+    int64_t area = 0;          ///< pixels
+    int64_t points = 0;        ///< points on those pixels (≥ area: several points may share a pixel)
+    double row = 0, col = 0;   ///< centroid of the region's pixels (unweighted, shifted pixel units)
+    int64_t rowMin = 0, rowMax = 0, colMin = 0, colMax = 0;  ///< bounding box (inclusive)
+};
+
+struct BinaryImage {
+    bool ok = false;
+    std::string error;
+    std::vector<std::string> warnings;
+    MappingParams params;      ///< the mapping and connectivity used
+    int64_t rowOffset = 0;     ///< unshifted row of shifted row 0 (= min round(t·mag_T))
+    int64_t colOffset = 0;     ///< unshifted col of shifted col 0 (= min round(O-C·mag_OC))
+    int64_t rows = 0, cols = 0;  ///< extent of the (never allocated) image after the shift
+    // Occupied pixels, sorted by (row, col); shifted coordinates.
+    std::vector<int64_t> pixelRow, pixelCol;
+    std::vector<uint32_t> pixelRegion;      ///< region label of each pixel (index into regions)
+    std::vector<uint32_t> pixelPointStart;  ///< CSR: points of pixel p are pixelPoints[start[p] .. start[p+1])
+    std::vector<uint32_t> pixelPoints;      ///< point indices grouped by pixel (the paper's index matrix)
+    std::vector<uint32_t> pointPixel;       ///< pixel of each input point
+    std::vector<Region> regions;            ///< labelled in order of their first pixel in (row, col) order
+
+    size_t pixelCount() const { return pixelRow.size(); }
+};
+
+/// Step 1 for one point: the unshifted pixel (row = round(t·mag_T), col = round(O-C·mag_OC)).
+/// False when a product is not finite or exceeds ±2^62 (the caller reports it).
+bool mapPoint(double t, double oc, double magT, double magOc, int64_t* row, int64_t* col);
+
+/// Steps 1–2: maps the points (epochs t and O-C in seconds, same length), shifts to 0, keeps
+/// the index matrix and labels the regions. Errors (ok = false): lengths differ, a non-finite
+/// value (names the point), invalid params, more than 2^32 − 2 points, or a magnification whose
+/// pixel coordinates overflow ±2^62 (it fails at once, before any allocation). Zero points give
+/// an empty, valid image. Polls fb (cancel → ok = false, error "cancelled").
+BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params,
+                             const Feedback* fb = nullptr);
+
+}  // namespace lwb::core::slr

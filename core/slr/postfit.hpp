@@ -1,0 +1,103 @@
+#pragma once
+// After screening (ILRS practice, the Herstmonceux normal-point recommendation): a polynomial
+// trend fitted to the accepted O-C, iterative k·σ rejection (2.5σ single-photon, 3σ
+// multi-photon), residual statistics, and normal points in bins aligned to 0h UTC whose length
+// follows the satellite's altitude, with a minimum number of points (6 by day, 3 by night).
+// A normal point: the epoch of the point nearest the bin's mean epoch, the trend there plus the
+// bin's mean residual (as O-C, and as a two-way TOF when the observed TOFs are given), bin RMS,
+// skew, kurtosis, peak − mean, number of points and return rate — the fields of a CRD type-11
+// record.
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/common/feedback.hpp"
+
+namespace lwb::core::slr {
+
+/// ILRS standard normal-point interval (s) for a satellite altitude (km): < 500 km 5 s;
+/// 500–800 km 15 s (the list leaves 500–550 open; it goes with the 15 s LEOs); 800–2000 km 30 s;
+/// 2000–5000 km 60 s; 5000–8000 km 120 s (LAGEOS); 8000–15000 km 180 s; > 15000 km 300 s (GNSS).
+/// NaN for a non-finite or negative altitude.
+double normalPointBinS(double altitudeKm);
+
+struct PostfitParams {
+    int degree = 10;              ///< trend polynomial degree (Legendre basis over the pass), 0..30
+    double rejectSigma = 3.0;     ///< k of the k·σ rejection: 2.5 single-photon, 3 multi-photon; 0 = off, else 1..10
+    int maxIterations = 30;       ///< fit–reject iterations, 1..1000
+    double binLengthS = 0;        ///< normal-point bin length (s), 0 = from altitudeKm; else 0.1..86400
+    double altitudeKm = 0;        ///< satellite altitude (km) when binLengthS = 0
+    double dayStartS = 0;         ///< epoch of 0h UTC of the pass's day (s, same scale as the epochs)
+    int minPointsPerBin = 0;      ///< 0 = ILRS minimum (6 by day, 3 by night); else 1..1e6
+    bool daylight = false;        ///< day pass (for the ILRS minimum)
+    double fireRateHz = 0;        ///< laser fire rate for the return rate; 0 = unknown (rate NaN)
+    bool normalPoints = true;     ///< form normal points (off: trend and statistics only)
+};
+
+/// Empty when valid, else what is wrong.
+std::string validate(const PostfitParams& p);
+
+/// Moments of a set of residuals (s). skew = m3/m2^1.5, kurtosis = m4/m2² − 3 (excess, 0 for a
+/// Gaussian), population moments about the mean; peak = maximum of a Gaussian kernel density
+/// (Silverman bandwidth). NaN where undefined (n = 0; skew and kurtosis need rms > 0).
+struct ResidualStats {
+    long long n = 0;
+    double mean = NAN;           ///< s
+    double rms = NAN;            ///< s, about the mean
+    double skew = NAN;
+    double kurtosis = NAN;       ///< excess
+    double peakMinusMean = NAN;  ///< s
+};
+ResidualStats residualStats(const std::vector<double>& residuals);
+
+/// One normal point, ready for a CRD type-11 record.
+struct NormalPoint {
+    double epochS = 0;          ///< epoch of the point nearest the bin's mean epoch (input time scale)
+    double secondsOfDay = 0;    ///< epochS − dayStartS (CRD field 2)
+    double tofS = NAN;          ///< two-way TOF (s): TOF_j − r_j + mean residual; NaN without TOFs (CRD field 3)
+    double ocS = 0;             ///< O-C of the normal point: trend(epoch) + mean residual (s)
+    double windowS = 0;         ///< bin length (s) (CRD field 6)
+    double binStartS = 0;       ///< start of the bin (input time scale)
+    int points = 0;             ///< ranges in the bin (CRD field 7)
+    double meanResidualS = 0;   ///< mean residual of the bin (s)
+    double rmsPs = NAN;         ///< bin RMS about the mean (ps) (CRD field 8)
+    double skew = NAN;          ///< (CRD field 9)
+    double kurtosis = NAN;      ///< excess (CRD field 10)
+    double peakMinusMeanPs = NAN;  ///< (CRD field 11)
+    double returnRatePct = NAN; ///< 100·points / (fire rate · bin length); NaN when unknown (CRD field 12)
+    uint32_t pointIndex = 0;    ///< input index of the epoch point
+};
+
+struct PostfitResult {
+    bool ok = false;
+    std::string error;
+    std::vector<std::string> warnings;
+    int degree = 0;                     ///< degree actually fitted
+    double tCenter = 0, tHalfSpan = 1;  ///< trend variable u = (t − tCenter) / tHalfSpan ∈ [−1, 1]
+    std::vector<double> coefficients;   ///< Legendre coefficients of the trend (s)
+    std::vector<uint8_t> kept;          ///< per input point: 1 when in the final fit
+    std::vector<double> residuals;      ///< per input point: O-C − trend (s), every point
+    ResidualStats stats;                ///< of the kept residuals
+    double sigmaS = NAN;                ///< RMS of the kept residuals at the last rejection (s)
+    int iterations = 0;
+    long long used = 0;                 ///< points offered (the screening's accepted points)
+    long long rejected = 0;             ///< of those, removed by the k·σ rejection
+    bool converged = true;
+    double binLengthS = 0;
+    int minPointsPerBin = 0;
+    std::vector<NormalPoint> normalPoints;
+    int binsTooSmall = 0;               ///< bins with points but fewer than the minimum
+};
+
+/// The whole post-screening step on epochs t and O-C (s). `use`: the screening's mask (1 =
+/// accepted), empty = every point. `tof`: observed two-way TOF per point (s), empty = none.
+/// Errors name the problem (lengths, non-finite values, fewer than 2 usable points, params);
+/// the degree is lowered with a warning when too few points or too short a span.
+PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& use,
+                      const std::vector<double>& tof, const PostfitParams& params, const Feedback* fb = nullptr);
+
+/// The fitted trend at epoch t (s of O-C).
+double evaluateTrend(const PostfitResult& r, double t);
+
+}  // namespace lwb::core::slr

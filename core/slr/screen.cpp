@@ -1,0 +1,471 @@
+#include "core/slr/screen.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/common/text.hpp"
+#include "core/sim/rng.hpp"
+#include "core/slr/kdtree2.hpp"
+#include "core/slr/screen_auto.hpp"
+
+namespace lwb::core::slr {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// Line angle of the segment (Δrow, Δcol) in degrees, folded to (−90, 90].
+double lineAngleDeg(double dRow, double dCol) {
+    double a = std::atan2(dCol, dRow) * (180.0 / M_PI);
+    if (a > 90) a -= 180;
+    if (a <= -90) a += 180;
+    return a;
+}
+}  // namespace
+
+const char* pointClassName(PointClass c) {
+    switch (c) {
+        case PointClass::Noise: return "noise";
+        case PointClass::Signal: return "signal";
+        case PointClass::Recovered: return "recovered";
+    }
+    return "?";
+}
+
+std::string validate(const ScreenParams& p) {
+    auto bad = [](double v) { return !std::isfinite(v); };
+    if (bad(p.magT) || p.magT < 0) return "mag_T must be 0 (automatic) or a finite number > 0, not " + formatDouble(p.magT, 6);
+    if (bad(p.magOc) || p.magOc < 0) return "mag_OC must be 0 (automatic) or a finite number > 0, not " + formatDouble(p.magOc, 6);
+    if (p.magT > 1e15) return "mag_T " + formatDouble(p.magT, 6) + " is absurd (more than 1e15 pixels per second)";
+    if (p.magOc > 1e18) return "mag_OC " + formatDouble(p.magOc, 6) + " is absurd (more than 1e18 pixels per second)";
+    if (p.areaLimit < 0 || p.areaLimit > 1000000) return "area limit must be 0 (automatic) or 1..1000000 px, not " + std::to_string(p.areaLimit);
+    if (p.connectivity != 0 && p.connectivity != 4 && p.connectivity != 8)
+        return "connectivity must be 4, 8 or 0 (automatic), not " + std::to_string(p.connectivity);
+    if (bad(p.cosineC) || p.cosineC < 0.5 || p.cosineC >= 1) return "cosine constant C must be in [0.5, 1) (paper: 0.9 < C < 1)";
+    if (p.slopeNeighbours < 2 || p.slopeNeighbours > 64) return "slope neighbours must be 2..64";
+    if (bad(p.slopeBinDeg) || p.slopeBinDeg < 0.25 || p.slopeBinDeg > 30) return "slope bin must be 0.25..30 degrees";
+    if (bad(p.slopePeakFraction) || p.slopePeakFraction <= 0 || p.slopePeakFraction >= 1) return "slope peak fraction must be in (0, 1)";
+    if (bad(p.slopeAgreeFraction) || p.slopeAgreeFraction <= 0 || p.slopeAgreeFraction > 1) return "slope agree fraction must be in (0, 1]";
+    if (p.slopeBlockRegions != 0 && (p.slopeBlockRegions < 10 || p.slopeBlockRegions > 100000000))
+        return "slope block must be 0 (one histogram) or at least 10 regions";
+    if (bad(p.maxSlopeRangeDeg) || p.maxSlopeRangeDeg < 2 || p.maxSlopeRangeDeg > 180) return "maximum slope range must be 2..180 degrees";
+    if (p.pieceRows < 0 || p.pieceRows > 1000000) return "piece rows must be 0..1000000";
+    if (bad(p.recoveryGapFactor) || p.recoveryGapFactor < 0 || p.recoveryGapFactor > 1e6) return "recovery gap factor must be 0..1e6";
+    if (bad(p.areaTolerance) || p.areaTolerance <= 0 || p.areaTolerance > 0.5) return "area tolerance must be in (0, 0.5]";
+    if (p.autoMaxPoints < 1000 || p.autoMaxPoints > 10000000) return "automatic-mode points must be 1000..10000000";
+    if (!p.automatic) {
+        if (p.magT == 0) return "mag_T not given and the automatic mode is off";
+        if (p.magOc == 0) return "mag_OC not given and the automatic mode is off";
+        if (p.areaLimit == 0) return "area limit not given (0) and the automatic mode is off";
+        if (p.connectivity == 0) return "connectivity not given and the automatic mode is off";
+    }
+    return {};
+}
+
+std::vector<uint32_t> splitByArea(const std::vector<Region>& regions, int64_t areaLimit) {
+    std::vector<uint32_t> out;
+    for (size_t i = 0; i < regions.size(); ++i)
+        if (regions[i].area >= areaLimit) out.push_back(static_cast<uint32_t>(i));
+    return out;
+}
+
+int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& mapping,
+                       double tolerance, size_t maxPoints) {
+    const size_t n = std::min(t.size(), oc.size());
+    if (n == 0) return 2;
+    // The points of a central time window (all of them when few): same density per pixel.
+    double tLo = -1e308, tHi = 1e308;
+    if (n > maxPoints) {
+        std::vector<double> ts(t.begin(), t.begin() + static_cast<long>(n));
+        const size_t a = (n - maxPoints) / 2, b = a + maxPoints - 1;
+        std::nth_element(ts.begin(), ts.begin() + static_cast<long>(a), ts.end());
+        tLo = ts[a];
+        std::nth_element(ts.begin(), ts.begin() + static_cast<long>(b), ts.end());
+        tHi = ts[b];
+    }
+    std::vector<double> nt, no;
+    double oLo = 1e308, oHi = -1e308;
+    for (size_t i = 0; i < n; ++i)
+        if (t[i] >= tLo && t[i] <= tHi) {
+            nt.push_back(t[i]);
+            oLo = std::min(oLo, oc[i]);
+            oHi = std::max(oHi, oc[i]);
+        }
+    // Null model: the same epochs with O-C uniform over the span (a fixed seed: deterministic).
+    sim::Rng rng(0x6e756c6cULL ^ static_cast<uint64_t>(nt.size()));
+    no.resize(nt.size());
+    for (double& v : no) v = oLo + (oHi - oLo) * rng.uniform();
+    const BinaryImage img = buildBinaryImage(nt, no, mapping, nullptr);
+    if (!img.ok || img.regions.empty()) return 2;
+    std::vector<size_t> atLeast(66, 0);  // atLeast[a] = regions with area ≥ a (a ≤ 65)
+    for (const auto& r : img.regions) ++atLeast[static_cast<size_t>(std::min<int64_t>(r.area, 65))];
+    for (size_t a = 64; a >= 1; --a) atLeast[a] += atLeast[a + 1];
+    const double allowed = std::max(1.0, tolerance * static_cast<double>(img.regions.size()));
+    for (size_t a = 2; a <= 64; ++a)
+        if (static_cast<double>(atLeast[a]) <= allowed) return static_cast<int>(a);
+    return 64;
+}
+
+LinearityResult findLinearRegions(const std::vector<Region>& regions, const std::vector<uint32_t>& candidates,
+                                  const std::vector<Anchor>& piecesIn, const ScreenParams& p, const Feedback* fb) {
+    LinearityResult res;
+    if (candidates.empty()) return res;
+    // The points of the slope analysis: the given pieces, or the candidates' centroids.
+    std::vector<Anchor> pieces;
+    if (piecesIn.empty()) {
+        for (uint32_t c : candidates)
+            pieces.push_back({regions[c].row, regions[c].col, static_cast<double>(regions[c].area), c});
+    } else {
+        pieces = piecesIn;
+    }
+    const size_t np = pieces.size();
+    if (np <= 2) {
+        res.onLine = candidates;
+        std::sort(res.onLine.begin(), res.onLine.end());
+        res.warnings.push_back(std::to_string(candidates.size()) +
+                               " candidate region(s) in " + std::to_string(np) + " piece(s) only: taken as the line without a slope test");
+        return res;
+    }
+    // Pieces in time order (row), ties by input order.
+    std::vector<uint32_t> order(np);
+    for (size_t i = 0; i < np; ++i) order[i] = static_cast<uint32_t>(i);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return pieces[a].row < pieces[b].row; });
+    std::vector<double> xs(np), ys(np);
+    for (size_t i = 0; i < np; ++i) {
+        xs[i] = pieces[order[i]].row;
+        ys[i] = pieces[order[i]].col;
+    }
+    const detail::KdTree2 tree(xs, ys);
+    const size_t k = std::min<size_t>(static_cast<size_t>(p.slopeNeighbours), np - 1);
+    std::vector<float> angle(np * k), weight(np * k);
+    std::vector<uint8_t> count(np);
+    std::vector<uint32_t> nIdx(k);
+    std::vector<double> nD2(k);
+    for (size_t i = 0; i < np; ++i) {
+        const size_t got = tree.nearest(xs[i], ys[i], k, static_cast<uint32_t>(i), nIdx.data(), nD2.data());
+        count[i] = static_cast<uint8_t>(got);
+        const double wi = pieces[order[i]].weight;
+        for (size_t j = 0; j < got; ++j) {
+            const uint32_t m = nIdx[j];
+            angle[i * k + j] = static_cast<float>(lineAngleDeg(xs[m] - xs[i], ys[m] - ys[i]));
+            weight[i * k + j] = static_cast<float>(std::min(wi, pieces[order[m]].weight) / std::max(1.0, std::sqrt(nD2[j])));
+        }
+        if ((i & 0xFFFF) == 0xFFFF && cancelled(fb)) return res;
+    }
+    // Time blocks, each with its own histogram of line angles.
+    const size_t nb = std::max<size_t>(2, static_cast<size_t>(std::lround(180.0 / p.slopeBinDeg)));
+    const double binDeg = 180.0 / static_cast<double>(nb);
+    const size_t maxWidth = std::clamp<size_t>(static_cast<size_t>(std::lround(p.maxSlopeRangeDeg / binDeg)), 1, nb);
+    auto binOf = [&](double a) {
+        long b = static_cast<long>(std::floor((a + 90.0) / binDeg));
+        b %= static_cast<long>(nb);
+        if (b < 0) b += static_cast<long>(nb);
+        return static_cast<size_t>(b);
+    };
+    const size_t blockSize = p.slopeBlockRegions > 0 ? static_cast<size_t>(p.slopeBlockRegions) : np;
+    const size_t blocks = std::max<size_t>(1, np / blockSize);
+    std::vector<double> hist(nb), smooth(nb);
+    std::vector<uint8_t> inRange(nb);
+    // Per candidate region: weight in range and in all (indexed by region id through a map).
+    std::vector<uint32_t> slot(regions.size(), UINT32_MAX);
+    for (size_t c = 0; c < candidates.size(); ++c) slot[candidates[c]] = static_cast<uint32_t>(c);
+    std::vector<double> wIn(candidates.size(), 0.0), wAll(candidates.size(), 0.0);
+    double widest = -1;
+    for (size_t b = 0; b < blocks; ++b) {
+        const size_t lo = b * np / blocks, hi = (b + 1) * np / blocks;
+        std::fill(hist.begin(), hist.end(), 0.0);
+        for (size_t i = lo; i < hi; ++i)
+            for (size_t j = 0; j < count[i]; ++j) hist[binOf(angle[i * k + j])] += weight[i * k + j];
+        for (size_t q = 0; q < nb; ++q)
+            smooth[q] = 0.25 * hist[(q + nb - 1) % nb] + 0.5 * hist[q] + 0.25 * hist[(q + 1) % nb];
+        size_t peak = 0;
+        for (size_t q = 1; q < nb; ++q)
+            if (smooth[q] > smooth[peak]) peak = q;
+        std::fill(inRange.begin(), inRange.end(), 0);
+        inRange[peak] = 1;
+        const double floorW = p.slopePeakFraction * smooth[peak];
+        size_t left = peak, right = peak, width = 1;
+        // Grow towards the heavier side first, one bin at a time, while the bins hold weight.
+        while (width < maxWidth) {
+            const size_t l = (left + nb - 1) % nb, r = (right + 1) % nb;
+            const bool okL = !inRange[l] && smooth[l] >= floorW, okR = !inRange[r] && smooth[r] >= floorW;
+            if (!okL && !okR) break;
+            if (okL && (!okR || smooth[l] >= smooth[r])) {
+                left = l;
+                inRange[l] = 1;
+            } else {
+                right = r;
+                inRange[r] = 1;
+            }
+            ++width;
+        }
+        // One bin of margin on each side.
+        for (size_t* e : {&left, &right}) {
+            const size_t q = e == &left ? (left + nb - 1) % nb : (right + 1) % nb;
+            if (width < nb && !inRange[q]) {
+                *e = q;
+                inRange[q] = 1;
+                ++width;
+            }
+        }
+        if (static_cast<double>(width) > widest) {
+            widest = static_cast<double>(width);
+            res.loDeg = -90.0 + static_cast<double>(left) * binDeg;
+            res.hiDeg = -90.0 + static_cast<double>(right + 1) * binDeg;
+            if (res.hiDeg > 90) res.hiDeg -= 180;
+        }
+        for (size_t i = lo; i < hi; ++i) {
+            const uint32_t s = slot[pieces[order[i]].region];
+            if (s == UINT32_MAX) continue;
+            for (size_t j = 0; j < count[i]; ++j) {
+                const double w = weight[i * k + j];
+                wAll[s] += w;
+                if (inRange[binOf(angle[i * k + j])]) wIn[s] += w;
+            }
+        }
+    }
+    for (size_t c = 0; c < candidates.size(); ++c) {
+        const bool on = wAll[c] > 0 && wIn[c] >= p.slopeAgreeFraction * wAll[c] * (1 - 1e-12);
+        (on ? res.onLine : res.offLine).push_back(candidates[c]);
+    }
+    std::sort(res.onLine.begin(), res.onLine.end());
+    std::sort(res.offLine.begin(), res.offLine.end());
+    return res;
+}
+
+std::vector<Anchor> regionPieces(const BinaryImage& img, const std::vector<uint8_t>& selected, int pieceRows) {
+    std::vector<Anchor> out;
+    if (pieceRows <= 0) {
+        for (size_t r = 0; r < img.regions.size(); ++r)
+            if (selected[r])
+                out.push_back({img.regions[r].row, img.regions[r].col, static_cast<double>(img.regions[r].area),
+                               static_cast<uint32_t>(r)});
+        return out;
+    }
+    // Pixels are in (row, col) order, so each region's pieces come in increasing order: one
+    // current piece per region is enough.
+    std::vector<int64_t> curPiece(img.regions.size(), -1);
+    std::vector<uint32_t> curAnchor(img.regions.size(), 0);
+    std::vector<double> sumR, sumC;
+    for (size_t p = 0; p < img.pixelCount(); ++p) {
+        const uint32_t reg = img.pixelRegion[p];
+        if (!selected[reg]) continue;
+        const int64_t piece = (img.pixelRow[p] - img.regions[reg].rowMin) / pieceRows;
+        if (piece != curPiece[reg]) {
+            curPiece[reg] = piece;
+            curAnchor[reg] = static_cast<uint32_t>(out.size());
+            out.push_back({0, 0, 0, reg});
+            sumR.push_back(0);
+            sumC.push_back(0);
+        }
+        const uint32_t a = curAnchor[reg];
+        sumR[a] += static_cast<double>(img.pixelRow[p]);
+        sumC[a] += static_cast<double>(img.pixelCol[p]);
+        out[a].weight += 1;
+    }
+    for (size_t a = 0; a < out.size(); ++a) {
+        out[a].row = sumR[a] / out[a].weight;
+        out[a].col = sumC[a] / out[a].weight;
+    }
+    return out;
+}
+
+bool collinearAccept(double pRow, double pCol, double xRow, double xCol, double qRow, double qCol, double C) {
+    const double ux = pRow - xRow, uy = pCol - xCol, vx = qRow - xRow, vy = qCol - xCol;
+    const double nu = std::hypot(ux, uy), nv = std::hypot(vx, vy);
+    const double eps = 1e-12;
+    if (nu < eps) return true;   // X on the nearest anchor
+    if (nv < eps) return false;  // cannot happen with P nearest, unless P = Q = X
+    const double cosX = (ux * vx + uy * vy) / (nu * nv);
+    if (cosX < -C) return true;  // X between P and Q, on their line (paper case a)
+    if (cosX <= C) return false;
+    // Same side (paper case b): P, the nearer, must lie between X and Q, and X be at most one
+    // step |PQ| beyond P.
+    const double wx = xRow - pRow, wy = xCol - pCol, zx = qRow - pRow, zy = qCol - pCol;
+    const double nw = std::hypot(wx, wy), nz = std::hypot(zx, zy);
+    if (nz < eps || nw > nz) return false;
+    const double cosP = (wx * zx + wy * zy) / (nw * nz);
+    return cosP < -C;
+}
+
+RecoveryResult recoverPending(const std::vector<Region>& regions, const std::vector<uint32_t>& pending,
+                              const std::vector<Anchor>& anchors, double cosineC, double gapFactor, const Feedback* fb) {
+    RecoveryResult res;
+    if (anchors.size() < 2 || pending.empty()) return res;
+    std::vector<double> xs(anchors.size()), ys(anchors.size());
+    for (size_t i = 0; i < anchors.size(); ++i) {
+        xs[i] = anchors[i].row;
+        ys[i] = anchors[i].col;
+    }
+    const detail::KdTree2 tree(std::move(xs), std::move(ys));
+    uint32_t idx[2];
+    double d2[2];
+    double maxPair2 = 1e308;
+    if (gapFactor > 0) {
+        std::vector<double> nn;
+        nn.reserve(anchors.size());
+        for (size_t i = 0; i < anchors.size(); ++i)
+            if (tree.nearest(anchors[i].row, anchors[i].col, 1, static_cast<uint32_t>(i), idx, d2) == 1) nn.push_back(d2[0]);
+        std::nth_element(nn.begin(), nn.begin() + static_cast<long>(nn.size() / 2), nn.end());
+        const double typical = std::sqrt(nn[nn.size() / 2]);
+        res.maxPairDistance = gapFactor * std::max(typical, 1.0);
+        maxPair2 = res.maxPairDistance * res.maxPairDistance;
+    }
+    for (size_t i = 0; i < pending.size(); ++i) {
+        const Region& r = regions[pending[i]];
+        // Acceptance needs |XP| ≤ |PQ| ≤ gap limit (or X between P and Q), so |XQ| ≤ 2·limit:
+        // the search radius prunes the far-away pending regions, which are most of them.
+        if (tree.nearest(r.row, r.col, 2, UINT32_MAX, idx, d2, 4 * maxPair2) < 2) continue;
+        const Anchor& P = anchors[idx[0]];
+        const Anchor& Q = anchors[idx[1]];
+        const double pq2 = (P.row - Q.row) * (P.row - Q.row) + (P.col - Q.col) * (P.col - Q.col);
+        if (pq2 > maxPair2) continue;
+        if (collinearAccept(P.row, P.col, r.row, r.col, Q.row, Q.col, cosineC)) res.recovered.push_back(pending[i]);
+        if ((i & 0xFFFF) == 0xFFFF && cancelled(fb)) break;
+    }
+    std::sort(res.recovered.begin(), res.recovered.end());
+    return res;
+}
+
+namespace {
+// Steps 1–6 at a fixed scale (areaLimit 0 = automaticAreaLimit).
+void runFixed(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& p, Feedback* fb,
+              ScreenResult& res) {
+    auto t0 = Clock::now();
+    MappingParams mp;
+    mp.magT = res.magT;
+    mp.magOc = res.magOc;
+    mp.connectivity = res.connectivity;
+    BinaryImage img = buildBinaryImage(t, oc, mp, fb);
+    if (!img.ok) {
+        res.error = img.error;
+        return;
+    }
+    for (const auto& w : img.warnings) res.warnings.push_back(w);
+    res.mapMs = msSince(t0);
+    if (fb) fb->setProgress(0.6);
+    // Step 3.
+    res.areaLimit = p.areaLimit > 0 ? p.areaLimit : automaticAreaLimit(t, oc, mp, p.areaTolerance, 200000);
+    const std::vector<uint32_t> cand = splitByArea(img.regions, res.areaLimit);
+    res.candidates = cand.size();
+    // Step 4.
+    t0 = Clock::now();
+    std::vector<uint8_t> isCand(img.regions.size(), 0);
+    for (uint32_t r : cand) isCand[r] = 1;
+    LinearityResult lin = findLinearRegions(img.regions, cand, regionPieces(img, isCand, p.pieceRows), p, fb);
+    if (cancelled(fb)) {
+        res.error = "cancelled";
+        return;
+    }
+    for (const auto& w : lin.warnings) res.warnings.push_back(w);
+    res.slopeLoDeg = lin.loDeg;
+    res.slopeHiDeg = lin.hiDeg;
+    res.linearityMs = msSince(t0);
+    if (fb) fb->setProgress(0.7);
+    // Step 5.
+    t0 = Clock::now();
+    std::vector<uint8_t> isSignal(img.regions.size(), 0);
+    for (uint32_t r : lin.onLine) isSignal[r] = 1;
+    std::vector<uint32_t> pending;
+    pending.reserve(img.regions.size() - lin.onLine.size());
+    for (size_t r = 0; r < img.regions.size(); ++r)
+        if (!isSignal[r]) pending.push_back(static_cast<uint32_t>(r));
+    const std::vector<Anchor> anchors = regionPieces(img, isSignal, p.pieceRows);
+    const RecoveryResult rec = recoverPending(img.regions, pending, anchors, p.cosineC, p.recoveryGapFactor, fb);
+    if (cancelled(fb)) {
+        res.error = "cancelled";
+        return;
+    }
+    res.recoveryMs = msSince(t0);
+    // Step 6: inverse mapping through the index matrix.
+    res.regionClass.assign(img.regions.size(), RegionClass::Noise);
+    for (uint32_t r : lin.onLine) res.regionClass[r] = RegionClass::Signal;
+    for (uint32_t r : rec.recovered) res.regionClass[r] = RegionClass::Recovered;
+    const size_t n = t.size();
+    res.pointClass.assign(n, PointClass::Noise);
+    res.pointRegion.assign(n, 0);
+    for (size_t px = 0; px < img.pixelCount(); ++px) {
+        const uint32_t reg = img.pixelRegion[px];
+        const PointClass c = static_cast<PointClass>(res.regionClass[reg]);
+        for (uint32_t k = img.pixelPointStart[px]; k < img.pixelPointStart[px + 1]; ++k) {
+            const uint32_t i = img.pixelPoints[k];
+            res.pointClass[i] = c;
+            res.pointRegion[i] = reg;
+        }
+    }
+    res.pixels = img.pixelCount();
+    res.linearRegions = lin.onLine.size();
+    res.recoveredRegions = rec.recovered.size();
+    res.pendingRegions = pending.size();
+    for (PointClass c : res.pointClass) {
+        if (c == PointClass::Signal) ++res.signalPoints;
+        else if (c == PointClass::Recovered) ++res.recoveredPoints;
+        else ++res.noisePoints;
+    }
+    res.regions = std::move(img.regions);
+    if (cand.empty())
+        res.warnings.push_back("no region reaches the area limit (" + std::to_string(res.areaLimit) + " px): no signal found");
+    else if (res.signalPoints + res.recoveredPoints == 0)
+        res.warnings.push_back("no signal found");
+    res.ok = true;
+}
+}  // namespace
+
+ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
+                          Feedback* fb) {
+    const auto t0 = Clock::now();
+    ScreenResult res;
+    if (const std::string e = validate(params); !e.empty()) {
+        res.error = e;
+        return res;
+    }
+    if (t.size() != oc.size()) {
+        res.error = "epochs and O-C differ in length (" + std::to_string(t.size()) + " vs " + std::to_string(oc.size()) + ")";
+        return res;
+    }
+    const size_t n = t.size();
+    if (n < 3) {
+        res.error = n == 0 ? "no points to screen" : "only " + std::to_string(n) + " point(s): at least 3 are needed to find a track";
+        return res;
+    }
+    for (size_t i = 0; i < n; ++i)
+        if (!std::isfinite(t[i]) || !std::isfinite(oc[i])) {
+            res.error = "point " + std::to_string(i) + " has a non-finite " + (std::isfinite(t[i]) ? "O-C" : "epoch");
+            return res;
+        }
+    res.magT = params.magT;
+    res.magOc = params.magOc;
+    res.connectivity = params.connectivity;
+    res.autoArea = params.areaLimit == 0;
+    if (params.magT == 0 || params.magOc == 0 || params.connectivity == 0) {
+        const auto ta = Clock::now();
+        AutoScaleResult a = chooseScale(t, oc, params, fb);
+        res.autoMs = msSince(ta);
+        for (const auto& w : a.warnings) res.warnings.push_back(w);
+        if (!a.ok) {
+            res.error = a.error;
+            return res;
+        }
+        res.autoMagT = params.magT == 0;
+        res.autoMagOc = params.magOc == 0;
+        res.autoConnectivity = params.connectivity == 0;
+        res.magT = a.magT;
+        res.magOc = a.magOc;
+        res.connectivity = a.connectivity;
+        res.trials = std::move(a.trials);
+    }
+    if (fb) fb->setProgress(0.4);
+    runFixed(t, oc, params, fb, res);
+    res.totalMs = msSince(t0);
+    if (res.ok && fb) fb->setProgress(1.0);
+    return res;
+}
+
+std::vector<uint8_t> acceptedMask(const ScreenResult& r) {
+    std::vector<uint8_t> m(r.pointClass.size());
+    for (size_t i = 0; i < m.size(); ++i) m[i] = r.pointClass[i] != PointClass::Noise;
+    return m;
+}
+
+}  // namespace lwb::core::slr

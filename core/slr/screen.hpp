@@ -1,0 +1,190 @@
+#pragma once
+// SLR signal extraction by binary-image analysis (paper 004, Li Xi et al. 2014), steps 3–6 on
+// top of binary_image.hpp (steps 1–2):
+//   3) area split: regions with area ≥ area limit are candidates, the others pending;
+//   4) linearity: slopes between candidate centroids (eq. 2) — long regions represented by
+//      pieces of a few rows, each piece to its k nearest pieces through a k-d tree, never all
+//      pairs — a slope-angle histogram per time block gives the dominant slope range, and the
+//      candidates whose slopes agree are signal; the others become pending;
+//   5) recovery: a pending region A_n is signal when, with its two nearest signal anchors
+//      A_{n−1}, A_{n+1} (k-d tree), C < |cos ∠A_{n−1} A_n A_{n+1}| ≤ 1 (eq. 3), with the
+//      collinearity guard described at collinearAccept() and a gap limit;
+//   6) inverse mapping: every point of a signal pixel is signal (the index matrix).
+// The automatic mode (screen_auto.hpp) chooses mag_T, mag_OC and connectivity; the area limit
+// comes from a null model (automaticAreaLimit).
+//
+// Departures from the literal paper, each because the literal step fails on simulated passes
+// (see the functions): pieces instead of one centroid per long region (a track that is one
+// region has no slopes to compare); signed slope angles; slope weights favouring short links;
+// the same-side case of eq. 3 also requires collinearity and at most one step beyond the end;
+// the anchor pair of eq. 3 must be close (gap limit). Setting pieceRows = 0,
+// slopeBlockRegions = 0 and recoveryGapFactor = 0 comes back to the paper's region centroids,
+// one histogram and no gap limit.
+//
+// Parameter ranges (paper §4.2, table 1): conventional ranging mag_T 10, mag_OC 1e10; diffuse
+// (debris) ranging mag_T 1, mag_OC 1e7. A large magnification is a fine scale (dense data,
+// high echo rate); the area limit scales inversely with the magnification; high echo rate →
+// 4-connectivity, low → 8. C between 0.9 and 1 (smaller lets noise in).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/common/feedback.hpp"
+#include "core/slr/binary_image.hpp"
+
+namespace lwb::core::slr {
+
+enum class PointClass : uint8_t { Noise = 0, Signal = 1, Recovered = 2 };
+enum class RegionClass : uint8_t { Noise = 0, Signal = 1, Recovered = 2 };
+const char* pointClassName(PointClass c);  ///< "noise", "signal", "recovered"
+
+struct ScreenParams {
+    /// Automatic mode: every parameter left at 0 below is chosen from the data — mag_T, mag_OC
+    /// and connectivity by the multi-scale search of screen_auto.hpp, the area limit by the null
+    /// model of automaticAreaLimit(). Off: all four must be given.
+    bool automatic = true;
+    double magT = 0;        ///< pixels per second of epoch; 0 = automatic. Sensible 1e-3..1e4 (paper: 1–10)
+    double magOc = 0;       ///< pixels per second of O-C; 0 = automatic. Sensible 1e6..1e12 (paper: 1e7–1e10)
+    int areaLimit = 0;      ///< px; regions with area ≥ limit are candidates (step 3); 0 = automatic; 1..1e6
+    int connectivity = 0;   ///< 4 or 8; 0 = automatic
+    double cosineC = 0.95;  ///< C of eq. 3; paper 0.9 < C < 1; accepted [0.5, 1)
+    int slopeNeighbours = 8;       ///< step 4: slopes from each candidate piece to its k nearest pieces; 2..64
+    double slopeBinDeg = 2.0;      ///< step 4: bin width of the line-angle histogram (degrees); 0.25..30
+    double slopePeakFraction = 0.25;  ///< step 4: the dominant range is the run of bins around the peak
+                                      ///< holding at least this fraction of the peak; (0, 1)
+    double slopeAgreeFraction = 1.0 / 3;  ///< step 4: a candidate is on the line when at least this
+                                          ///< (weighted) share of its slopes is in range (paper: 1/3); (0, 1]
+    double maxSlopeRangeDeg = 40;  ///< step 4: the dominant range is at most this wide (degrees), so a flat
+                                   ///< histogram (no line) keeps only candidates that happen to agree; 2..180
+    int slopeBlockRegions = 200;   ///< step 4: pieces per time block with its own histogram (curved
+                                   ///< tracks); 0 = one global histogram as in the paper; else ≥ 10
+    int pieceRows = 8;             ///< steps 4–5: regions are cut into pieces of this many rows whose
+                                   ///< centroids stand for them (a long track region is a line of pieces,
+                                   ///< not one centroid); 0 = whole regions as in the paper; 0..1e6
+    double recoveryGapFactor = 4;  ///< step 5: A_{n−1}, A_{n+1} at most this many typical anchor spacings
+                                   ///< (median nearest-anchor distance) apart; 0 = no limit (paper); 0..1e6
+    double areaTolerance = 2e-4;   ///< automatic area limit: share of pure-noise regions allowed to reach
+                                   ///< it (automaticAreaLimit); (0, 0.5]
+    int autoMaxPoints = 30000;     ///< automatic mode scores scales on at most this many points (three
+                                   ///< time windows of the pass); 1000..1e7
+};
+
+/// Empty when the parameters are valid, else what is wrong (names the parameter).
+std::string validate(const ScreenParams& p);
+
+/// One scale tried by the automatic mode, with its score (screen_auto.hpp explains the rule).
+struct ScaleTrial {
+    double magT = 0, magOc = 0;
+    int areaLimit = 0, connectivity = 8;
+    double score = 0;            ///< estimated true detections − 2 × false ones on the scoring windows
+    double precisionEst = 0, recallEst = 0;  ///< the estimates the score is built from
+    long long selected = 0;      ///< points the trial called signal (scoring windows only)
+};
+
+struct ScreenResult {
+    bool ok = false;
+    std::string error;
+    std::vector<std::string> warnings;
+    // The parameters actually used, and which of them the automatic mode chose.
+    double magT = 0, magOc = 0;
+    int areaLimit = 0, connectivity = 0;
+    bool autoMagT = false, autoMagOc = false, autoArea = false, autoConnectivity = false;
+    std::vector<ScaleTrial> trials;  ///< automatic mode: every scale tried, in order
+    // Per point (same order as the input).
+    std::vector<PointClass> pointClass;
+    std::vector<uint32_t> pointRegion;   ///< region id of each point (index into regions)
+    // Per region.
+    std::vector<Region> regions;
+    std::vector<RegionClass> regionClass;
+    // Counts.
+    size_t pixels = 0, candidates = 0, linearRegions = 0, pendingRegions = 0, recoveredRegions = 0;
+    size_t signalPoints = 0, recoveredPoints = 0, noisePoints = 0;
+    double slopeLoDeg = 0, slopeHiDeg = 0;  ///< dominant line-angle range (widest over the blocks), degrees
+    // Wall-clock timings (ms).
+    double autoMs = 0, mapMs = 0, linearityMs = 0, recoveryMs = 0, totalMs = 0;
+
+    /// True when the point is signal or recovered.
+    bool accepted(size_t i) const { return pointClass[i] != PointClass::Noise; }
+};
+
+/// Steps 1–6 on (t, O-C) in seconds (same length; any order). Automatic parameters per
+/// `params`. Errors: fewer than 3 points, non-finite values (names the point), invalid params,
+/// a scale that overflows the pixel coordinates; warnings for an empty or degenerate result.
+/// Deterministic; polls fb for cancel and reports progress.
+ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
+                          Feedback* fb = nullptr);
+
+/// A mask (1 = accepted: signal or recovered) for postfit.
+std::vector<uint8_t> acceptedMask(const ScreenResult& r);
+
+// ---- The steps, public for tests and for a step-by-step view. ----
+
+/// Step 3: indices of the regions with area ≥ areaLimit (candidates), in region order.
+std::vector<uint32_t> splitByArea(const std::vector<Region>& regions, int64_t areaLimit);
+
+/// The automatic area limit (step 3) from a null model: the same epochs with O-C drawn
+/// uniformly over the O-C span (fixed seed), mapped and labelled at the same scale; the limit is
+/// the smallest area a ≥ 2 that at most max(1, tolerance × #regions) null regions reach, i.e.
+/// pure noise of this density seldom makes a candidate. At most maxPoints points (a central
+/// time window: same density) are used. Returns 2..64.
+int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& mapping,
+                       double tolerance = 2e-4, size_t maxPoints = 200000);
+
+struct LinearityResult {
+    std::vector<uint32_t> onLine;    ///< candidates whose slopes agree with the dominant range
+    std::vector<uint32_t> offLine;   ///< candidates that do not (they become pending)
+    double loDeg = 0, hiDeg = 0;     ///< widest dominant line-angle range over the blocks (degrees, (−90, 90])
+    std::vector<std::string> warnings;
+};
+
+/// A point standing for (part of) a region in steps 4–5: the pixel centroid of a piece of
+/// pieceRows rows of the region (or of the whole region), with its pixel count.
+struct Anchor {
+    double row = 0, col = 0;
+    double weight = 0;     ///< pixels in the piece
+    uint32_t region = 0;
+};
+
+/// The pieces of the selected regions: each region's pixels cut into bands of pieceRows rows
+/// (counted from the region's first row), one anchor per band at its pixel centroid, in order
+/// of first pixel. pieceRows = 0: one anchor per region at its centroid (the paper).
+std::vector<Anchor> regionPieces(const BinaryImage& img, const std::vector<uint8_t>& selected, int pieceRows);
+
+/// Step 4 on the candidate regions, represented by their pieces (or, when `pieces` is empty,
+/// by their centroids as in the paper). The line angle of two pieces is atan(ΔY/ΔX) (X = row =
+/// time, Y = col = O-C), kept signed (the paper's |K| of eq. 2 would fold a rising and a falling
+/// track together) and taken modulo 180°. Each piece contributes the angles to its k nearest
+/// pieces, weighted by the smaller pixel count of the pair over their distance (short links
+/// along a track count most); per time block (slopeBlockRegions
+/// pieces) the weighted histogram is smoothed, its peak found and the range grown over the
+/// neighbouring bins holding ≥ slopePeakFraction of the peak (at most maxSlopeRangeDeg, plus one
+/// bin of margin). A candidate region is on the line when ≥ slopeAgreeFraction of the weight of
+/// its pieces' angles is in range. With ≤ 2 pieces in all, every candidate is on the line (a
+/// warning says so).
+LinearityResult findLinearRegions(const std::vector<Region>& regions, const std::vector<uint32_t>& candidates,
+                                  const std::vector<Anchor>& pieces, const ScreenParams& params,
+                                  const Feedback* fb = nullptr);
+
+/// Eq. 3 for one pending centroid X with its nearest signal anchor P and second nearest Q:
+/// accepted when |cos ∠P X Q| > C and the three are collinear. Between (cos < −C): the paper's
+/// case (a). Same side (cos > C): the paper's case (b) — there |cos ∠PXQ| alone is not enough,
+/// since any region far from a compact pair sees it under a small angle (|cos| → 1); so the
+/// nearer anchor P must also lie between X and Q (cos ∠XPQ < −C) and X be no farther beyond P
+/// than Q is (|XP| ≤ |PQ|: one step past the end of the track). X on P accepts.
+bool collinearAccept(double pRow, double pCol, double xRow, double xCol, double qRow, double qCol, double C);
+
+struct RecoveryResult {
+    std::vector<uint32_t> recovered;  ///< pending regions accepted, ascending
+    double maxPairDistance = 0;       ///< the gap limit used for |PQ| (pixels; 0 = none)
+};
+
+/// Step 5: tests every pending region against its two nearest signal anchors (k-d tree; one
+/// pass: recovered regions do not become anchors). With gapFactor > 0, anchor pairs P, Q
+/// farther apart than gapFactor × the median nearest-anchor distance are no line to recover on
+/// (else an isolated anchor and the track would accept a whole lens of noise between them).
+/// Fewer than 2 anchors: nothing is recovered.
+RecoveryResult recoverPending(const std::vector<Region>& regions, const std::vector<uint32_t>& pending,
+                              const std::vector<Anchor>& anchors, double cosineC, double gapFactor,
+                              const Feedback* fb = nullptr);
+
+}  // namespace lwb::core::slr

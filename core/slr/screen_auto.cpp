@@ -1,0 +1,298 @@
+#include "core/slr/screen_auto.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/common/text.hpp"
+
+namespace lwb::core::slr {
+
+namespace {
+
+double medianOf(std::vector<double>& v) {
+    if (v.empty()) return 0;
+    const size_t m = v.size() / 2;
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(m), v.end());
+    double hi = v[m];
+    if (v.size() % 2 == 0) {
+        const double lo = *std::max_element(v.begin(), v.begin() + static_cast<long>(m));
+        return 0.5 * (lo + hi);
+    }
+    return hi;
+}
+
+// Quantile q of a copy of (a sample of) the values.
+double quantileOf(const std::vector<double>& v, double q) {
+    const size_t step = std::max<size_t>(1, v.size() / 200000);
+    std::vector<double> s;
+    s.reserve(v.size() / step + 1);
+    for (size_t i = 0; i < v.size(); i += step) s.push_back(v[i]);
+    const size_t k = std::min(s.size() - 1, static_cast<size_t>(q * static_cast<double>(s.size() - 1) + 0.5));
+    std::nth_element(s.begin(), s.begin() + static_cast<long>(k), s.end());
+    return s[k];
+}
+
+}  // namespace
+
+ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t* selected, size_t n) {
+    ExtractionScore s;
+    std::vector<size_t> sel;
+    for (size_t i = 0; i < n; ++i)
+        if (selected[i]) sel.push_back(i);
+    const size_t ns = sel.size();
+    s.selected = static_cast<long long>(ns);
+    if (ns < 5) {
+        s.score = -static_cast<double>(ns);
+        return s;
+    }
+    // Trend: piecewise linear through (median t, median O-C) of K time groups of the selection.
+    const size_t K = ns < 10 ? 1 : std::clamp<size_t>(ns / 30, 2, 24);
+    std::vector<double> kt, ko, bufT, bufO;
+    for (size_t g = 0; g < K; ++g) {
+        const size_t a = g * ns / K, b = (g + 1) * ns / K;
+        bufT.clear();
+        bufO.clear();
+        for (size_t j = a; j < b; ++j) {
+            bufT.push_back(t[sel[j]]);
+            bufO.push_back(oc[sel[j]]);
+        }
+        kt.push_back(medianOf(bufT));
+        ko.push_back(medianOf(bufO));
+    }
+    auto trend = [&](double x) {
+        if (K == 1 || x <= kt.front()) return ko.front();
+        if (x >= kt.back()) return ko.back();
+        const size_t j = static_cast<size_t>(std::upper_bound(kt.begin(), kt.end(), x) - kt.begin());  // kt[j-1] <= x < kt[j]
+        const double dt = kt[j] - kt[j - 1];
+        if (dt <= 0) return ko[j];
+        return ko[j - 1] + (ko[j] - ko[j - 1]) * (x - kt[j - 1]) / dt;
+    };
+    std::vector<double> rs;
+    rs.reserve(ns);
+    for (size_t i : sel) rs.push_back(oc[i] - trend(t[i]));
+    std::vector<double> tmp(rs);
+    const double med = medianOf(tmp);
+    for (double& v : tmp) v = std::fabs(v - med);
+    const double sigma = 1.4826 * medianOf(tmp);
+    const double h = 3 * sigma;
+    double lo = oc[0], hi = oc[0];
+    for (size_t i = 1; i < n; ++i) {
+        lo = std::min(lo, oc[i]);
+        hi = std::max(hi, oc[i]);
+    }
+    const double span = hi - lo;
+    if (span <= 0) {  // every O-C equal: one flat line, all of it track
+        s.truePositives = static_cast<double>(ns);
+        s.bandSignal = static_cast<double>(n);
+        s.score = static_cast<double>(ns);
+        return s;
+    }
+    if (!(2 * h < 0.5 * span)) {  // not a track: the band fills the gate
+        s.score = -static_cast<double>(ns);
+        return s;
+    }
+    double nIn = 0, sIn = 0;
+    for (size_t i = 0; i < n; ++i) {
+        if (std::fabs(oc[i] - trend(t[i]) - med) <= h) {
+            nIn += 1;
+            if (selected[i]) sIn += 1;
+        }
+    }
+    const double nOut = static_cast<double>(n) - nIn;
+    const double expectedNoise = nOut * 2 * h / (span - 2 * h);
+    s.truePositives = nIn > 0 ? sIn * std::max(0.0, 1 - expectedNoise / nIn) : 0;
+    s.bandSignal = std::max(0.0, nIn - expectedNoise);
+    // tp − 2·fp: a false detection costs two true ones (noise left in hurts the post-fit more
+    // than a few signal points lost).
+    s.score = 3 * s.truePositives - 2 * static_cast<double>(ns);
+    return s;
+}
+
+AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
+                            const Feedback* fb) {
+    AutoScaleResult res;
+    const size_t n = t.size();
+    if (n < 3 || oc.size() != n) {
+        res.error = "the automatic mode needs at least 3 points";
+        return res;
+    }
+    // Time order.
+    std::vector<uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    if (!std::is_sorted(t.begin(), t.end()))
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
+    const double span = t[order.back()] - t[order.front()];
+    if (!(span > 0)) {
+        res.error = "all epochs are equal: no time span in which to find a track";
+        return res;
+    }
+    double gate = quantileOf(oc, 0.995) - quantileOf(oc, 0.005);
+    if (!(gate > 0)) {
+        const auto mm = std::minmax_element(oc.begin(), oc.end());
+        gate = *mm.second - *mm.first;
+    }
+    if (!(gate > 0)) {
+        res.warnings.push_back("all O-C values are equal: the scale is set for a 1 ps span");
+        gate = 1e-12;
+    }
+    res.spanOcS = gate;
+    res.ratePerS = static_cast<double>(n) / span;
+
+    // Scoring windows: everything, or three runs of consecutive (time-ordered) points.
+    const size_t maxPts = static_cast<size_t>(params.autoMaxPoints);
+    std::vector<std::pair<size_t, size_t>> win;  // [begin, end) in time order
+    if (n <= maxPts) {
+        win.push_back({0, n});
+    } else {
+        const size_t m = maxPts / 3;
+        for (double f : {1.0 / 6, 0.5, 5.0 / 6}) {
+            const size_t c = static_cast<size_t>(f * static_cast<double>(n));
+            const size_t b = std::min(n - m, c > m / 2 ? c - m / 2 : 0);
+            win.push_back({b, b + m});
+        }
+    }
+    std::vector<double> st, so;
+    std::vector<std::pair<size_t, size_t>> slices;
+    double winSpan = 0;
+    for (const auto& [b, e] : win) {
+        slices.push_back({st.size(), st.size() + (e - b)});
+        for (size_t i = b; i < e; ++i) {
+            st.push_back(t[order[i]]);
+            so.push_back(oc[order[i]]);
+        }
+        winSpan += t[order[e - 1]] - t[order[b]];
+    }
+    const double rate = winSpan > 0 ? static_cast<double>(st.size()) / winSpan : res.ratePerS;
+    const double meanWinSpan = winSpan / static_cast<double>(win.size());
+
+    const bool oAuto = params.magOc == 0, tAuto = params.magT == 0, cAuto = params.connectivity == 0;
+    const int conn0 = cAuto ? 8 : params.connectivity;
+    // A scale (k, c): O-C pixel Δo = G·2^-k (or manual), time pixel Δt = c/(r·a), a = Δo/G (or manual).
+    auto dO = [&](double k) { return oAuto ? gate * std::pow(2.0, -k) : 1.0 / params.magOc; };
+    auto dT = [&](double k, double c) { return tAuto ? c / (rate * dO(k) / gate) : 1.0 / params.magT; };
+
+    ScreenParams tp = params;
+    tp.automatic = true;
+    std::vector<uint8_t> mask(st.size());
+    struct Best {
+        double score = -1e300;
+        double k = 0, c = 0.1;
+        int conn = 8;
+        bool any = false;
+    } best;
+    // Runs one trial; false when the scale is unusable (too coarse in time for the windows).
+    auto trial = [&](double k, double c, int conn, double* scoreOut) {
+        const double dt = dT(k, c), doc = dO(k);
+        if (!(dt > 0) || !(doc > 0) || dt > meanWinSpan / 8) return false;
+        tp.magT = 1.0 / dt;
+        tp.magOc = 1.0 / doc;
+        tp.connectivity = conn;
+        if (tp.magT > 1e15 || tp.magOc > 1e18) return false;
+        // Each window is screened on its own (as a short pass), so that windows far apart in
+        // time and slope do not share slope histograms.
+        ExtractionScore total;
+        double bandSig = 0;
+        int area = 0;
+        for (const auto& [b, e] : slices) {
+            const std::vector<double> wt(st.begin() + static_cast<long>(b), st.begin() + static_cast<long>(e));
+            const std::vector<double> wo(so.begin() + static_cast<long>(b), so.begin() + static_cast<long>(e));
+            const ScreenResult r = screenSignal(wt, wo, tp, nullptr);
+            if (!r.ok) return false;
+            area = std::max(area, r.areaLimit);
+            for (size_t i = 0; i < wt.size(); ++i) mask[b + i] = r.pointClass[i] != PointClass::Noise;
+            const ExtractionScore s = scoreExtraction(st.data() + b, so.data() + b, mask.data() + b, e - b);
+            total.score += s.score;
+            total.truePositives += s.truePositives;
+            total.selected += s.selected;
+            bandSig += s.bandSignal;
+        }
+        ScaleTrial tr;
+        tr.magT = tp.magT;
+        tr.magOc = tp.magOc;
+        tr.areaLimit = area;
+        tr.connectivity = conn;
+        tr.score = total.score;
+        tr.selected = total.selected;
+        tr.precisionEst = total.selected > 0 ? total.truePositives / static_cast<double>(total.selected) : 0;
+        tr.recallEst = bandSig > 0 ? std::min(1.0, total.truePositives / bandSig) : 0;
+        res.trials.push_back(tr);
+        *scoreOut = total.score;
+        if (!best.any || total.score > best.score) {
+            best.any = true;
+            best.score = total.score;
+            best.k = k;
+            best.c = c;
+            best.conn = conn;
+        }
+        return true;
+    };
+
+    double sc = 0;
+    if (oAuto) {
+        // Coarse ladder over the O-C scale, from coarse to fine; stop when the time pixel gets
+        // too long for the windows or after 4 trials below the best.
+        int worse = 0;
+        for (int k = 2; k <= 24; ++k) {
+            if (cancelled(fb)) break;
+            if (!trial(k, 0.1, conn0, &sc)) {
+                if (tAuto && dT(k, 0.1) > meanWinSpan / 8) break;
+                continue;
+            }
+            worse = (best.k == k || best.score <= 0) ? 0 : worse + 1;
+            if (worse >= 4) break;
+        }
+    } else if (tAuto) {
+        int worse = 0;
+        for (int j = -7; j <= 3; ++j) {
+            if (cancelled(fb)) break;
+            const double c = std::pow(2.0, j);
+            if (!trial(0, c, conn0, &sc)) {
+                if (dT(0, c) > meanWinSpan / 8) break;
+                continue;
+            }
+            worse = (best.c == c || best.score <= 0) ? 0 : worse + 1;
+            if (worse >= 4) break;
+        }
+    } else {
+        trial(0, 0.1, conn0, &sc);
+    }
+    if (cancelled(fb)) {
+        res.error = "cancelled";
+        return res;
+    }
+    if (!best.any) {
+        res.error = "the automatic mode found no usable scale (the pass is too short or too sparse for a binary image)";
+        return res;
+    }
+    // Refinement around the best: half steps in the free dimensions.
+    {
+        const double k0 = best.k, c0 = best.c;
+        std::vector<std::pair<double, double>> cand;
+        const std::vector<double> ks = oAuto ? std::vector<double>{k0 - 0.5, k0, k0 + 0.5} : std::vector<double>{k0};
+        std::vector<double> cs = {c0};
+        if (tAuto) cs = oAuto ? std::vector<double>{c0 / 2, c0, c0 * 2} : std::vector<double>{c0 / std::sqrt(2.0), c0, c0 * std::sqrt(2.0)};
+        for (double k : ks)
+            for (double c : cs)
+                if (!(k == k0 && c == c0)) cand.push_back({k, c});
+        for (const auto& [k, c] : cand) {
+            if (cancelled(fb)) break;
+            trial(k, c, conn0, &sc);
+        }
+    }
+    if (cAuto && !cancelled(fb)) trial(best.k, best.c, conn0 == 8 ? 4 : 8, &sc);
+    if (cancelled(fb)) {
+        res.error = "cancelled";
+        return res;
+    }
+    if (best.score <= 0)
+        res.warnings.push_back("automatic mode: no scale shows a clear track (best score " + formatFixed(best.score, 1) +
+                               " of " + std::to_string(res.trials.size()) + " trials); the result is doubtful");
+    res.magT = 1.0 / dT(best.k, best.c);
+    res.magOc = 1.0 / dO(best.k);
+    res.connectivity = best.conn;
+    res.ok = true;
+    return res;
+}
+
+}  // namespace lwb::core::slr
