@@ -3,6 +3,9 @@
 BUILD  ?= build
 JOBS   ?= 2
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 600
+SHARED_SLR ?= ../shared/data/slr
 
 .PHONY: all deps configure build test run bench fuzz clean
 
@@ -24,6 +27,16 @@ test: build
 
 run: build
 	./$(BUILD)/bin/laserwb-cli demo
+
+# libFuzzer on the SLR readers (clang + ASan), FUZZ_SECONDS long; corpus and findings stay in $(FUZZ_BUILD).
+fuzz:
+	@LWB_FUZZ=1 ./.ci/install-deps
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DLWB_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build $(FUZZ_BUILD) -j$(JOBS) --target fuzz_slr_readers
+	./tests/fuzz/make_seeds.sh $(SHARED_SLR) $(FUZZ_BUILD)/corpus
+	mkdir -p $(FUZZ_BUILD)/artifacts
+	./$(FUZZ_BUILD)/bin/fuzz_slr_readers $(FUZZ_BUILD)/corpus -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
+	  -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/artifacts/
 
 bench: build
 	./$(BUILD)/bin/laserwb-cli bench footprint

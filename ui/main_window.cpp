@@ -17,6 +17,8 @@
 #include "ui/demo.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/footprint_workspace.hpp"
+#include "ui/slr_controller.hpp"
+#include "ui/slr_workspace.hpp"
 
 namespace lwb::ui {
 
@@ -31,10 +33,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_tabs->setDocumentMode(true);
     m_footprint = new FootprintWorkspace(m_tabs);
     m_tabs->addTab(m_footprint, tr("Footprint review"));
+    m_slr = new SlrWorkspace(m_tabs);
+    m_tabs->addTab(m_slr, tr("SLR pass screening"));
     setCentralWidget(m_tabs);
     buildMenus();
     connect(m_footprint, &FootprintWorkspace::modified, this, [this] { setModified(true); });
     connect(m_footprint, &FootprintWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 5000); });
+    connect(m_slr, &SlrWorkspace::modified, this, [this] { setModified(true); });
+    connect(m_slr, &SlrWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 8000); });
     connect(m_footprint->controller(), &FootprintController::error, this,
             [this](const QString& msg) { showError(tr("Cannot open the footprint inputs"), msg); });
     QSettings st;
@@ -84,7 +90,10 @@ void MainWindow::setModified(bool m) {
 void MainWindow::openDemo() {
     m_footprint->controller()->setShots(demoFootprintShots());
     m_footprint->controller()->setParams(m_footprint->paramsPanel()->params());
-    statusBar()->showMessage(tr("Built-in demo: %1 simulated footprint shots").arg(m_footprint->controller()->count()), 8000);
+    m_slr->openDemo();
+    statusBar()->showMessage(tr("Built-in demo: %1 simulated footprint shots and a simulated kHz pass")
+                                 .arg(m_footprint->controller()->count()),
+                             8000);
     m_sessionPath.clear();
     setModified(false);
 }
@@ -107,8 +116,9 @@ QJsonObject MainWindow::sessionState() const {
     QJsonObject o;
     o["format"] = "laserwb-session";
     o["version"] = kSessionVersion;
-    o["workspace"] = m_tabs->currentIndex() == 0 ? "footprint" : "other";
+    o["workspace"] = m_tabs->currentWidget() == m_slr ? "slr" : "footprint";
     o["footprint"] = m_footprint->saveState();
+    o["slr"] = m_slr->saveState();
     return o;
 }
 
@@ -153,15 +163,18 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
     // Validate everything before touching the current state.
     QString err;
     const QJsonObject before = m_footprint->saveState();
-    if (!m_footprint->restoreState(o["footprint"].toObject(), &err)) {
+    const QJsonObject slrBefore = m_slr->saveState();
+    if (!m_footprint->restoreState(o["footprint"].toObject(), &err) ||
+        (o.contains("slr") && !m_slr->restoreState(o["slr"].toObject(), &err))) {
         QString ignored;
         m_footprint->restoreState(before, &ignored);
+        m_slr->restoreState(slrBefore, &ignored);
         return fail(tr("%1: %2").arg(path, err));
     }
     m_sessionPath = path;
     addRecent(path);
     setModified(false);
-    if (o["workspace"].toString() == "footprint") m_tabs->setCurrentIndex(0);
+    showWorkspace(o["workspace"].toString());
     statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
     return true;
 }
@@ -247,13 +260,15 @@ void MainWindow::showWorkspace(const QString& name) {
     if (parts[0] == "footprint") {
         m_tabs->setCurrentWidget(m_footprint);
         if (parts.size() > 1) m_footprint->showTab(parts[1]);
+    } else if (parts[0] == "slr") {
+        m_tabs->setCurrentWidget(m_slr);
     }
 }
 
 bool MainWindow::waitIdle(int timeoutMs) {
     QElapsedTimer t;
     t.start();
-    const bool ok = m_footprint->controller()->waitIdle(timeoutMs);
+    const bool ok = m_footprint->controller()->waitIdle(timeoutMs) && m_slr->controller()->waitIdle(timeoutMs);
     // Let queued results (current shot, plots) reach the widgets.
     while (t.elapsed() < timeoutMs && t.elapsed() < 300) QApplication::processEvents(QEventLoop::AllEvents, 20);
     return ok;

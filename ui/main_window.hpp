@@ -10,6 +10,7 @@ class QMenu;
 namespace lwb::ui {
 
 class FootprintWorkspace;
+class SlrWorkspace;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -17,6 +18,7 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
 
     FootprintWorkspace* footprint() const { return m_footprint; }
+    SlrWorkspace* slr() const { return m_slr; }
     QTabWidget* tabs() const { return m_tabs; }
 
     /// Loads the built-in demo in every workspace.
@@ -49,6 +51,7 @@ private:
 
     QTabWidget* m_tabs;
     FootprintWorkspace* m_footprint;
+    SlrWorkspace* m_slr;
     QMenu* m_recentMenu = nullptr;
     QString m_sessionPath;
     bool m_modified = false;

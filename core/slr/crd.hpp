@@ -30,7 +30,7 @@ constexpr int kCrdAbsent = -1;
 
 /// One line of the file, verbatim.
 struct CrdRecord {
-    std::string text;  ///< the line without its line end
+    std::string text;  ///< the line without its line end (trailing CRs removed)
     std::string id;    ///< lower-case record id: "h1".."h9", "c0".."c7", "10", "11", "00", "93", ...; "" for a blank line
     long line = 0;     ///< 1-based line in the source (0 for records added by a helper)
 };

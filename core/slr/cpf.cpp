@@ -1,0 +1,348 @@
+#include "core/slr/cpf.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/text.hpp"
+#include "core/slr/slr_time.hpp"
+
+namespace lwb::core::slr {
+
+namespace {
+
+std::string where(const std::string& src, long line) { return src + ":" + std::to_string(line) + ": "; }
+
+std::string excerpt(std::string_view s, size_t maxLen = 40) {
+    std::string out;
+    for (size_t i = 0; i < s.size() && i < maxLen; ++i) {
+        const unsigned char c = static_cast<unsigned char>(s[i]);
+        if (c >= 32 && c < 127) {
+            out += static_cast<char>(c);
+        } else {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", c);
+            out += buf;
+        }
+    }
+    if (s.size() > maxLen) out += "...";
+    return out;
+}
+
+bool toInt(std::string_view s, long* out) {
+    long long v = 0;
+    if (parseLong(s, &v) && v > -2000000000LL && v < 2000000000LL) {
+        *out = static_cast<long>(v);
+        return true;
+    }
+    double d = 0;
+    if (parseDouble(s, &d) && d == std::floor(d) && std::fabs(d) < 2e9) {
+        *out = static_cast<long>(d);
+        return true;
+    }
+    return false;
+}
+
+std::string fmtSeconds(double s) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3f", s);
+    return buf;
+}
+
+}  // namespace
+
+CpfReadResult parseCpf(std::string_view text, const std::string& source) {
+    CpfReadResult res;
+    const std::string src = source.empty() ? "cpf" : source;
+    try {
+        res.file.path = source;
+        if (trim(text).empty()) {
+            res.error = src + ": empty file";
+            return res;
+        }
+        if (const void* nul = std::memchr(text.data(), '\0', text.size())) {
+            const size_t at = static_cast<size_t>(static_cast<const char*>(nul) - text.data());
+            res.error = where(src, 1 + static_cast<long>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'))) +
+                        "binary data (NUL byte): not a CPF text file";
+            return res;
+        }
+        CpfHeader& h = res.file.header;
+        bool haveH1 = false, ended = false;
+        size_t dropped = 0;
+        auto warn = [&](std::string w) {
+            if (res.warnings.size() < 500) res.warnings.push_back(std::move(w));
+            else ++dropped;
+        };
+        size_t pos = 0;
+        long lineNo = 0;
+        while (pos < text.size()) {
+            size_t end = text.find('\n', pos);
+            if (end == std::string_view::npos) end = text.size();
+            std::string_view line = text.substr(pos, end - pos);
+            pos = end + 1;
+            ++lineNo;
+            const std::vector<std::string_view> f = splitBlanks(line);
+            if (f.empty()) continue;
+            const std::string id = toLower(f[0]);
+            if (!haveH1) {
+                if (id == "00") continue;
+                if (id != "h1") {
+                    res.error = where(src, lineNo) + "not a CPF file: first record is \"" + excerpt(line) + "\" (expected H1)";
+                    return res;
+                }
+            }
+            if (ended) {
+                warn(where(src, lineNo) + "record after the 99 end-of-ephemeris record; ignored");
+                continue;
+            }
+            if (id == "h1") {
+                if (haveH1) {
+                    warn(where(src, lineNo) + "second H1; ignored");
+                    continue;
+                }
+                if (f.size() < 3 || toLower(f[1]) != "cpf") {
+                    res.error = where(src, lineNo) + "H1 must start with \"CPF <version>\"";
+                    return res;
+                }
+                long v = 0;
+                if (!toInt(f[2], &v) || v < 1 || v > 9) {
+                    res.error = where(src, lineNo) + "H1 format version is not 1 or 2: \"" + excerpt(f[2]) + "\"";
+                    return res;
+                }
+                h.version = static_cast<int>(v);
+                haveH1 = true;
+                if (f.size() > 3) h.source = std::string(f[3]);
+                long y = 0, m = 0, d = 0, hh = 0;
+                if (f.size() > 7 && toInt(f[4], &y) && toInt(f[5], &m) && toInt(f[6], &d) && toInt(f[7], &hh)) {
+                    h.year = static_cast<int>(y), h.month = static_cast<int>(m), h.day = static_cast<int>(d),
+                    h.hour = static_cast<int>(hh);
+                }
+                size_t k = 8;
+                if (f.size() > k) h.sequence = std::string(f[k++]);
+                if (h.version >= 2 && f.size() > k) h.sequence += " " + std::string(f[k++]);
+                if (f.size() > k) h.targetName = std::string(f[k++]);
+                for (; k < f.size(); ++k) h.notes += (h.notes.empty() ? "" : " ") + std::string(f[k]);
+            } else if (id == "h2") {
+                if (f.size() < 17) {
+                    warn(where(src, lineNo) + "H2 has " + std::to_string(f.size() - 1) + " fields (expected >= 16); ignored");
+                    continue;
+                }
+                h.ilrsId = std::string(f[1]);
+                long v[15];
+                bool good = true;
+                for (int i = 0; i < 15 && good; ++i) good = toInt(f[static_cast<size_t>(i + 2)], &v[i]);
+                if (!good || !validDate(static_cast<int>(v[2]), static_cast<int>(v[3]), static_cast<int>(v[4])) ||
+                    !validDate(static_cast<int>(v[8]), static_cast<int>(v[9]), static_cast<int>(v[10]))) {
+                    warn(where(src, lineNo) + "H2 ids, span or step unreadable; ignored");
+                    continue;
+                }
+                h.sic = v[0], h.norad = v[1];
+                h.startMjd = mjdFromDate(static_cast<int>(v[2]), static_cast<int>(v[3]), static_cast<int>(v[4]));
+                h.startSod = v[5] * 3600.0 + v[6] * 60.0 + v[7];
+                h.endMjd = mjdFromDate(static_cast<int>(v[8]), static_cast<int>(v[9]), static_cast<int>(v[10]));
+                h.endSod = v[11] * 3600.0 + v[12] * 60.0 + v[13];
+                h.stepS = static_cast<double>(v[14]);
+                long x = 0;
+                if (f.size() > 18 && toInt(f[18], &x)) h.targetType = static_cast<int>(x);
+                if (f.size() > 19 && toInt(f[19], &x)) h.referenceFrame = static_cast<int>(x);
+                if (f.size() > 21 && toInt(f[21], &x)) h.comApplied = static_cast<int>(x);
+            } else if (id == "h5") {
+                double off = 0;
+                if (f.size() > 1 && parseDouble(f[1], &off)) h.comOffsetM = off;
+                else warn(where(src, lineNo) + "H5 centre-of-mass offset unreadable; ignored");
+            } else if (id == "h9") {
+                continue;
+            } else if (id == "10") {
+                CpfPosition p;
+                p.line = lineNo;
+                long dir = 0, mjd = 0, leap = 0;
+                double sod = 0, xyz[3];
+                std::string why;
+                if (f.size() < 8) why = "has " + std::to_string(f.size() - 1) + " fields (expected 7)";
+                else if (!toInt(f[1], &dir) || dir < 0 || dir > 2) why = "direction flag is not 0, 1 or 2";
+                else if (!toInt(f[2], &mjd) || mjd < 15000 || mjd > 100000) why = "MJD is not a day number in 15000..100000";
+                else if (!parseDouble(f[3], &sod) || sod < 0 || sod >= 86401) why = "seconds of day not in 0..86400";
+                else if (!toInt(f[4], &leap)) why = "leap-second flag is not an integer";
+                else if (!parseDouble(f[5], &xyz[0]) || !parseDouble(f[6], &xyz[1]) || !parseDouble(f[7], &xyz[2]))
+                    why = "X, Y, Z must be finite numbers";
+                else if (std::fabs(xyz[0]) > 1e12 || std::fabs(xyz[1]) > 1e12 || std::fabs(xyz[2]) > 1e12)
+                    why = "position beyond 1e12 m";
+                if (!why.empty()) {
+                    warn(where(src, lineNo) + "type 10 record skipped: " + why);
+                    continue;
+                }
+                p.direction = static_cast<int>(dir);
+                p.mjd = mjd;
+                p.sod = sod;
+                p.leapSecond = static_cast<int>(leap);
+                p.position = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
+                if (p.leapSecond != 0)
+                    warn(where(src, lineNo) + "leap-second flag set: interpolation across the leap second is not corrected");
+                res.file.positions.push_back(p);
+            } else if (id == "20") {
+                double v[3];
+                long dir = 0;
+                if (f.size() < 5 || !toInt(f[1], &dir) || !parseDouble(f[2], &v[0]) || !parseDouble(f[3], &v[1]) ||
+                    !parseDouble(f[4], &v[2])) {
+                    warn(where(src, lineNo) + "type 20 velocity record unreadable; skipped");
+                    continue;
+                }
+                if (res.file.positions.empty() || res.file.positions.back().hasVelocity ||
+                    res.file.positions.back().direction != dir) {
+                    warn(where(src, lineNo) + "type 20 velocity record without a preceding type 10; skipped");
+                    continue;
+                }
+                res.file.positions.back().hasVelocity = true;
+                res.file.positions.back().velocity = Eigen::Vector3d(v[0], v[1], v[2]);
+            } else if (id == "99") {
+                ended = true;
+            } else if (id == "00") {
+                continue;
+            } else {
+                if (res.file.otherLines.size() < 100000) res.file.otherLines.emplace_back(line);
+            }
+        }
+        if (dropped) res.warnings.push_back("... and " + std::to_string(dropped) + " more warnings");
+        if (res.file.positions.empty()) {
+            res.error = src + ": no readable type 10 position record";
+            return res;
+        }
+        // Epochs must increase within each direction.
+        std::vector<CpfPosition> kept;
+        kept.reserve(res.file.positions.size());
+        double last[3] = {-1e300, -1e300, -1e300};
+        size_t bad = 0;
+        for (const auto& p : res.file.positions) {
+            const double t = static_cast<double>(p.mjd) * kSecondsPerDay + p.sod;
+            if (t <= last[p.direction]) {
+                if (bad++ < 20)
+                    res.warnings.push_back(where(src, p.line) + "epoch not after the previous record's; skipped");
+                continue;
+            }
+            last[p.direction] = t;
+            kept.push_back(p);
+        }
+        res.file.positions = std::move(kept);
+        res.ok = true;
+    } catch (const std::exception& e) {
+        res = CpfReadResult();
+        res.error = src + ": internal error: " + e.what();
+    }
+    return res;
+}
+
+CpfReadResult readCpf(const std::string& path) {
+    std::string text, err;
+    if (!readFileText(path, &text, &err)) {
+        CpfReadResult r;
+        r.error = err;
+        return r;
+    }
+    return parseCpf(text, path);
+}
+
+std::string validate(const CpfInterpParams& p) {
+    if (p.points < 2 || p.points > 20) return "Lagrange points must be in 2..20";
+    if (p.direction < 0 || p.direction > 2) return "direction flag must be 0, 1 or 2";
+    return {};
+}
+
+CpfInterpolator::CpfInterpolator(const CpfFile& cpf, const CpfInterpParams& params) {
+    if (const std::string e = validate(params); !e.empty()) {
+        m_error = e;
+        return;
+    }
+    m_points = params.points;
+    for (const auto& p : cpf.positions) {
+        if (p.direction != params.direction) continue;
+        if (m_t.empty()) m_refMjd = p.mjd;
+        m_t.push_back(static_cast<double>(p.mjd - m_refMjd) * kSecondsPerDay + p.sod);
+        m_pos.push_back(p.position);
+    }
+    if (m_t.size() < static_cast<size_t>(m_points)) {
+        m_error = (cpf.path.empty() ? std::string("cpf") : cpf.path) + ": " + std::to_string(m_t.size()) +
+                  " position records with direction flag " + std::to_string(params.direction) + ", " +
+                  std::to_string(m_points) + " needed for the interpolation";
+        m_t.clear();
+        m_pos.clear();
+        return;
+    }
+    std::vector<double> steps(m_t.size() - 1);
+    for (size_t i = 1; i < m_t.size(); ++i) steps[i - 1] = m_t[i] - m_t[i - 1];
+    std::nth_element(steps.begin(), steps.begin() + static_cast<long>(steps.size() / 2), steps.end());
+    m_medianStep = steps[steps.size() / 2];
+}
+
+CpfState CpfInterpolator::atSeconds(long refMjd, double seconds, bool withVelocity) const {
+    CpfState s;
+    if (!ok()) {
+        s.error = m_error;
+        return s;
+    }
+    if (!std::isfinite(seconds)) {
+        s.error = "epoch is not a finite number";
+        return s;
+    }
+    const double t = static_cast<double>(refMjd - m_refMjd) * kSecondsPerDay + seconds;
+    if (t < m_t.front()) {
+        s.error = "epoch is " + fmtSeconds(m_t.front() - t) + " s before the first prediction record";
+        return s;
+    }
+    if (t > m_t.back()) {
+        s.error = "epoch is " + fmtSeconds(t - m_t.back()) + " s after the last prediction record";
+        return s;
+    }
+    const size_t n = m_t.size(), np = static_cast<size_t>(m_points);
+    size_t k = static_cast<size_t>(std::upper_bound(m_t.begin(), m_t.end(), t) - m_t.begin());
+    k = k == 0 ? 0 : k - 1;  // m_t[k] <= t
+    if (k + 1 < n && m_t[k + 1] - m_t[k] > 2.5 * m_medianStep) {
+        s.error = "epoch falls in a " + fmtSeconds(m_t[k + 1] - m_t[k]) + " s gap of the prediction table (step " +
+                  fmtSeconds(m_medianStep) + " s)";
+        return s;
+    }
+    long start = static_cast<long>(k) - static_cast<long>(np / 2 - 1);
+    start = std::max(0L, std::min(start, static_cast<long>(n - np)));
+    const size_t s0 = static_cast<size_t>(start);
+    const double tc = m_t[s0 + np / 2];  // centre the time axis for conditioning
+    double x[20];
+    for (size_t j = 0; j < np; ++j) x[j] = m_t[s0 + j] - tc;
+    const double u = t - tc;
+    Eigen::Vector3d pos(0, 0, 0), vel(0, 0, 0);
+    for (size_t j = 0; j < np; ++j) {
+        double l = 1;
+        for (size_t m = 0; m < np; ++m)
+            if (m != j) l *= (u - x[m]) / (x[j] - x[m]);
+        pos += l * m_pos[s0 + j];
+        if (withVelocity) {
+            double dl = 0;
+            for (size_t i = 0; i < np; ++i) {
+                if (i == j) continue;
+                double prod = 1 / (x[j] - x[i]);
+                for (size_t m = 0; m < np; ++m)
+                    if (m != j && m != i) prod *= (u - x[m]) / (x[j] - x[m]);
+                dl += prod;
+            }
+            vel += dl * m_pos[s0 + j];
+        }
+    }
+    s.position = pos;
+    s.velocity = vel;
+    s.ok = true;
+    return s;
+}
+
+CpfState CpfInterpolator::at(long mjd, double sod, bool withVelocity) const { return atSeconds(mjd, sod, withVelocity); }
+
+CpfState interpolateCpf(const CpfFile& cpf, long mjd, double sod, const CpfInterpParams& params) {
+    try {
+        return CpfInterpolator(cpf, params).at(mjd, sod);
+    } catch (const std::exception& e) {
+        CpfState s;
+        s.error = std::string("internal error: ") + e.what();
+        return s;
+    }
+}
+
+}  // namespace lwb::core::slr

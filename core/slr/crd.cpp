@@ -1,0 +1,940 @@
+#include "core/slr/crd.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/text.hpp"
+#include "core/slr/slr_time.hpp"
+
+namespace lwb::core::slr {
+
+namespace {
+
+constexpr size_t kMaxTokens = 48;
+
+/// Blank-separated fields of one line, without allocating.
+struct Fields {
+    std::string_view f[kMaxTokens];
+    size_t n = 0;
+    explicit Fields(std::string_view s) {
+        size_t i = 0;
+        while (i < s.size() && n < kMaxTokens) {
+            while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
+            if (i >= s.size()) break;
+            size_t j = i;
+            while (j < s.size() && s[j] != ' ' && s[j] != '\t' && s[j] != '\r') ++j;
+            f[n++] = s.substr(i, j - i);
+            i = j;
+        }
+    }
+};
+
+bool isNa(std::string_view s) {
+    if (!s.empty() && (s[0] == '-' || s[0] == '+')) s.remove_prefix(1);
+    return s.size() == 2 && (s[0] == 'n' || s[0] == 'N') && (s[1] == 'a' || s[1] == 'A');
+}
+
+/// Printable excerpt of a field or line for messages.
+std::string excerpt(std::string_view s, size_t maxLen = 40) {
+    std::string out;
+    for (size_t i = 0; i < s.size() && i < maxLen; ++i) {
+        const unsigned char c = static_cast<unsigned char>(s[i]);
+        if (c >= 32 && c < 127) {
+            out += static_cast<char>(c);
+        } else {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", c);
+            out += buf;
+        }
+    }
+    if (s.size() > maxLen) out += "...";
+    return out;
+}
+
+enum class Need { Required, Optional };
+
+/// Field i (1 = first after the record id) as a finite double. Missing or "na" gives NaN,
+/// which is an error only when required. *why describes the problem.
+bool numberField(const Fields& fs, size_t i, const char* name, Need need, double* out, std::string* why) {
+    if (i >= fs.n || isNa(fs.f[i])) {
+        if (need == Need::Required) {
+            *why = "field " + std::to_string(i) + " (" + name + ") is " + (i >= fs.n ? "missing" : "\"na\"");
+            return false;
+        }
+        *out = NAN;
+        return true;
+    }
+    if (!parseDouble(fs.f[i], out)) {
+        *why = "field " + std::to_string(i) + " (" + name + ") is not a finite number: \"" + excerpt(fs.f[i]) + "\"";
+        return false;
+    }
+    return true;
+}
+
+/// Field i as an integer (a whole-valued decimal such as "2." is accepted). Missing or "na"
+/// gives kCrdAbsent, an error only when required.
+bool intField(const Fields& fs, size_t i, const char* name, Need need, long* out, std::string* why) {
+    if (i >= fs.n || isNa(fs.f[i])) {
+        if (need == Need::Required) {
+            *why = "field " + std::to_string(i) + " (" + name + ") is " + (i >= fs.n ? "missing" : "\"na\"");
+            return false;
+        }
+        *out = kCrdAbsent;
+        return true;
+    }
+    long long v = 0;
+    if (parseLong(fs.f[i], &v) && v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max()) {
+        *out = static_cast<long>(v);
+        return true;
+    }
+    double d = 0;
+    if (parseDouble(fs.f[i], &d) && d == std::floor(d) && std::fabs(d) < 2e9) {
+        *out = static_cast<long>(d);
+        return true;
+    }
+    *why = "field " + std::to_string(i) + " (" + name + ") is not an integer: \"" + excerpt(fs.f[i]) + "\"";
+    return false;
+}
+
+bool intField(const Fields& fs, size_t i, const char* name, Need need, int* out, std::string* why) {
+    long v = 0;
+    if (!intField(fs, i, name, need, &v, why)) return false;
+    *out = static_cast<int>(v);
+    return true;
+}
+
+bool stringField(const Fields& fs, size_t i, const char* name, std::string* out, std::string* why) {
+    if (i >= fs.n) {
+        *why = "field " + std::to_string(i) + " (" + name + ") is missing";
+        return false;
+    }
+    *out = std::string(fs.f[i]);
+    return true;
+}
+
+bool secondsOfDay(const Fields& fs, double* out, std::string* why) {
+    if (!numberField(fs, 1, "seconds of day", Need::Required, out, why)) return false;
+    if (*out < 0 || *out >= 86401.0) {
+        *why = "field 1 (seconds of day) is outside 0..86400: " + excerpt(fs.f[1]);
+        return false;
+    }
+    return true;
+}
+
+/// Record ids of CRD v1/v2: h1..h9, c0..c7, 00, the data records and 90..99 (user defined).
+bool idIsValid(std::string_view id) {
+    if (id.size() != 2) return false;
+    if (id[0] == 'h') return id[1] >= '1' && id[1] <= '9';
+    if (id[0] == 'c') return id[1] >= '0' && id[1] <= '7';
+    if (id[0] == '9') return std::isdigit(static_cast<unsigned char>(id[1])) != 0;
+    static const char* kData[] = {"00", "10", "11", "12", "20", "21", "30", "40", "41", "42", "50", "60"};
+    for (const char* k : kData)
+        if (id == k) return true;
+    return false;
+}
+
+/// Start and end of blank-separated token k of a line (npos when absent).
+bool tokenSpan(const std::string& s, size_t k, size_t* b, size_t* e) {
+    size_t i = 0, idx = 0;
+    while (i < s.size()) {
+        while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
+        if (i >= s.size()) break;
+        size_t j = i;
+        while (j < s.size() && s[j] != ' ' && s[j] != '\t' && s[j] != '\r') ++j;
+        if (idx == k) {
+            *b = i;
+            *e = j;
+            return true;
+        }
+        ++idx;
+        i = j;
+    }
+    return false;
+}
+
+bool replaceToken(std::string* s, size_t k, const std::string& value) {
+    size_t b = 0, e = 0;
+    if (!tokenSpan(*s, k, &b, &e)) return false;
+    s->replace(b, e - b, value);
+    return true;
+}
+
+/// Collects warnings with a cap.
+struct Sink {
+    std::vector<std::string>* out;
+    size_t max;
+    size_t dropped = 0;
+    void add(std::string w) {
+        if (out->size() < max) out->push_back(std::move(w));
+        else ++dropped;
+    }
+    void close() {
+        if (dropped) out->push_back("... and " + std::to_string(dropped) + " more warnings");
+        dropped = 0;
+    }
+};
+
+std::string where(const std::string& source, long line) {
+    return (source.empty() ? std::string("crd") : source) + ":" + std::to_string(line) + ": ";
+}
+
+// ---- header records ------------------------------------------------------------------------
+
+void parseH1(const CrdRecord& r, const std::string& src, CrdFormatHeader* h, Sink* sink) {
+    const Fields fs(r.text);
+    h->text = r.text;
+    h->line = r.line;
+    h->version = 1;
+    std::string why;
+    if (fs.n < 3 || toLower(fs.f[1]) != "crd") {
+        sink->add(where(src, r.line) + "H1 does not start with \"CRD <version>\"; read as CRD v1");
+        return;
+    }
+    int v = 1;
+    if (!intField(fs, 2, "format version", Need::Required, &v, &why) || v < 0 || v > 9) {
+        sink->add(where(src, r.line) + "H1 " + (why.empty() ? "format version out of range" : why) + "; read as CRD v1");
+        v = 1;
+    }
+    h->version = v < 1 ? 1 : v;
+    int y = 0, m = 0, d = 0, hh = 0;
+    if (fs.n >= 7 && intField(fs, 3, "year", Need::Optional, &y, &why) && intField(fs, 4, "month", Need::Optional, &m, &why) &&
+        intField(fs, 5, "day", Need::Optional, &d, &why) && intField(fs, 6, "hour", Need::Optional, &hh, &why)) {
+        h->year = y;
+        h->month = m;
+        h->day = d;
+        h->hour = hh;
+    }
+}
+
+void parseH2(const CrdRecord& r, const std::string& src, CrdStation* h, Sink* sink) {
+    const Fields fs(r.text);
+    *h = CrdStation();
+    h->text = r.text;
+    h->line = r.line;
+    if (fs.n < 3) {
+        sink->add(where(src, r.line) + "H2 needs the station name and CDP pad id");
+        if (fs.n >= 2) h->name = std::string(fs.f[1]);
+        return;
+    }
+    h->name = std::string(fs.f[1]);
+    std::string why;
+    int v = kCrdAbsent;
+    if (!intField(fs, 2, "CDP pad id", Need::Optional, &v, &why)) sink->add(where(src, r.line) + "H2 " + why);
+    else h->cdpPadId = v;
+    if (intField(fs, 3, "CDP system number", Need::Optional, &v, &why)) h->cdpSystem = v;
+    if (intField(fs, 4, "CDP occupancy", Need::Optional, &v, &why)) h->cdpOccupancy = v;
+    if (intField(fs, 5, "epoch time scale", Need::Optional, &v, &why)) h->timeScale = v;
+    if (fs.n > 6) h->network = std::string(fs.f[6]);
+}
+
+void parseH3(const CrdRecord& r, const std::string& src, CrdTarget* h, Sink* sink) {
+    const Fields fs(r.text);
+    *h = CrdTarget();
+    h->text = r.text;
+    h->line = r.line;
+    if (fs.n < 3) {
+        sink->add(where(src, r.line) + "H3 needs the target name and ILRS id");
+        if (fs.n >= 2) h->name = std::string(fs.f[1]);
+        return;
+    }
+    h->name = std::string(fs.f[1]);
+    h->ilrsId = std::string(fs.f[2]);
+    std::string why;
+    long l = 0;
+    int v = 0;
+    if (intField(fs, 3, "SIC", Need::Optional, &l, &why)) h->sic = l;
+    if (intField(fs, 4, "NORAD id", Need::Optional, &l, &why)) h->norad = l;
+    if (intField(fs, 5, "epoch time scale", Need::Optional, &v, &why)) h->timeScale = v;
+    if (intField(fs, 6, "target type", Need::Optional, &v, &why)) h->targetType = v;
+    if (intField(fs, 7, "target class", Need::Optional, &v, &why)) h->targetClass = v;
+    if (intField(fs, 8, "target location", Need::Optional, &v, &why)) h->targetLocation = v;
+}
+
+/// H4 is required for the pass epochs: a bad date is an error.
+bool parseH4(const CrdRecord& r, CrdSession* h, std::string* why) {
+    const Fields fs(r.text);
+    *h = CrdSession();
+    h->text = r.text;
+    h->line = r.line;
+    if (fs.n < 14) {
+        *why = "H4 needs the data type and the start and end date-times (13 fields), found " + std::to_string(fs.n - 1);
+        return false;
+    }
+    int v[13];
+    static const char* kNames[13] = {"data type", "start year", "start month", "start day", "start hour", "start minute",
+                                     "start second", "end year", "end month", "end day", "end hour", "end minute",
+                                     "end second"};
+    for (int i = 0; i < 13; ++i)
+        if (!intField(fs, static_cast<size_t>(i + 1), kNames[i], Need::Required, &v[i], why)) {
+            *why = "H4 " + *why;
+            return false;
+        }
+    h->dataType = v[0];
+    h->startYear = v[1], h->startMonth = v[2], h->startDay = v[3], h->startHour = v[4], h->startMinute = v[5],
+    h->startSecond = v[6];
+    h->endYear = v[7], h->endMonth = v[8], h->endDay = v[9], h->endHour = v[10], h->endMinute = v[11], h->endSecond = v[12];
+    if (h->dataType < 0 || h->dataType > 2) {
+        *why = "H4 data type must be 0 (full rate), 1 (normal point) or 2 (sampled engineering), found " +
+               std::to_string(h->dataType);
+        return false;
+    }
+    if (!validDate(h->startYear, h->startMonth, h->startDay) || h->startHour < 0 || h->startHour > 23 ||
+        h->startMinute < 0 || h->startMinute > 59 || h->startSecond < 0 || h->startSecond > 60) {
+        *why = "H4 start date-time is not a valid date and time";
+        return false;
+    }
+    if (!validDate(h->endYear, h->endMonth, h->endDay) || h->endHour < 0 || h->endHour > 23 || h->endMinute < 0 ||
+        h->endMinute > 59 || h->endSecond < 0 || h->endSecond > 60) {
+        *why = "H4 end date-time is not a valid date and time";
+        return false;
+    }
+    int* flags[8] = {&h->releaseFlag, &h->refractionApplied, &h->comApplied, &h->receiveAmpApplied,
+                     &h->stationDelayApplied, &h->spacecraftDelayApplied, &h->rangeType, &h->qualityAlert};
+    std::string ignore;
+    for (int i = 0; i < 8; ++i) {
+        int x = kCrdAbsent;
+        if (intField(fs, static_cast<size_t>(14 + i), "flag", Need::Optional, &x, &ignore)) *flags[i] = x;
+    }
+    return true;
+}
+
+// ---- data records --------------------------------------------------------------------------
+
+bool parseC0(const Fields& fs, CrdSystemConfig* c, std::string* why) {
+    if (!intField(fs, 1, "detail type", Need::Required, &c->detailType, why)) return false;
+    if (!numberField(fs, 2, "transmit wavelength", Need::Optional, &c->wavelengthNm, why)) return false;
+    if (!stringField(fs, 3, "system configuration id", &c->systemId, why)) return false;
+    for (size_t i = 4; i < fs.n; ++i) c->componentIds.emplace_back(fs.f[i]);
+    return true;
+}
+
+bool parse10(const Fields& fs, CrdRange* r, std::string* why) {
+    if (!secondsOfDay(fs, &r->secOfDay, why)) return false;
+    if (!numberField(fs, 2, "time of flight", Need::Required, &r->tofS, why)) return false;
+    if (r->tofS < 0 || r->tofS > 100) {
+        *why = "field 2 (time of flight) is outside 0..100 s: " + excerpt(fs.f[2]);
+        return false;
+    }
+    if (!stringField(fs, 3, "system configuration id", &r->configId, why)) return false;
+    if (!intField(fs, 4, "epoch event", Need::Required, &r->epochEvent, why)) return false;
+    if (r->epochEvent < 0 || r->epochEvent > 6) {
+        *why = "field 4 (epoch event) must be 0..6, found " + std::to_string(r->epochEvent);
+        return false;
+    }
+    if (!intField(fs, 5, "filter flag", Need::Required, &r->filterFlag, why)) return false;
+    if (r->filterFlag < 0 || r->filterFlag > 2) {
+        *why = "field 5 (filter flag) must be 0 (unknown), 1 (noise) or 2 (data), found " + std::to_string(r->filterFlag);
+        return false;
+    }
+    return intField(fs, 6, "detector channel", Need::Optional, &r->detectorChannel, why) &&
+           intField(fs, 7, "stop number", Need::Optional, &r->stopNumber, why) &&
+           numberField(fs, 8, "receive amplitude", Need::Optional, &r->receiveAmplitude, why) &&
+           numberField(fs, 9, "transmit amplitude", Need::Optional, &r->transmitAmplitude, why);
+}
+
+bool parse11(const Fields& fs, CrdNormalPoint* r, std::string* why) {
+    if (!secondsOfDay(fs, &r->secOfDay, why)) return false;
+    if (!numberField(fs, 2, "time of flight", Need::Required, &r->tofS, why)) return false;
+    if (r->tofS < 0 || r->tofS > 100) {
+        *why = "field 2 (time of flight) is outside 0..100 s: " + excerpt(fs.f[2]);
+        return false;
+    }
+    if (!stringField(fs, 3, "system configuration id", &r->configId, why)) return false;
+    if (!intField(fs, 4, "epoch event", Need::Required, &r->epochEvent, why)) return false;
+    if (r->epochEvent < 0 || r->epochEvent > 6) {
+        *why = "field 4 (epoch event) must be 0..6, found " + std::to_string(r->epochEvent);
+        return false;
+    }
+    r->numRanges = kCrdAbsent;
+    r->detectorChannel = kCrdAbsent;
+    return numberField(fs, 5, "window length", Need::Optional, &r->windowS, why) &&
+           intField(fs, 6, "number of raw ranges", Need::Optional, &r->numRanges, why) &&
+           numberField(fs, 7, "bin RMS", Need::Optional, &r->binRmsPs, why) &&
+           numberField(fs, 8, "bin skew", Need::Optional, &r->skew, why) &&
+           numberField(fs, 9, "bin kurtosis", Need::Optional, &r->kurtosis, why) &&
+           numberField(fs, 10, "bin peak-mean", Need::Optional, &r->peakMinusMeanPs, why) &&
+           numberField(fs, 11, "return rate", Need::Optional, &r->returnRatePct, why) &&
+           intField(fs, 12, "detector channel", Need::Optional, &r->detectorChannel, why) &&
+           numberField(fs, 13, "signal to noise", Need::Optional, &r->snr, why);
+}
+
+bool parse12(const Fields& fs, CrdRangeSupplement* r, std::string* why) {
+    return secondsOfDay(fs, &r->secOfDay, why) && stringField(fs, 2, "system configuration id", &r->configId, why) &&
+           numberField(fs, 3, "refraction correction", Need::Optional, &r->refractionPs, why) &&
+           numberField(fs, 4, "target CofM correction", Need::Optional, &r->comCorrectionM, why) &&
+           numberField(fs, 5, "ND value", Need::Optional, &r->ndValue, why) &&
+           numberField(fs, 6, "time bias", Need::Optional, &r->timeBiasS, why) &&
+           numberField(fs, 7, "range rate", Need::Optional, &r->rangeRate, why);
+}
+
+bool parse20(const Fields& fs, CrdMeteo* r, std::string* why) {
+    return secondsOfDay(fs, &r->secOfDay, why) && numberField(fs, 2, "pressure", Need::Required, &r->pressureMbar, why) &&
+           numberField(fs, 3, "temperature", Need::Required, &r->temperatureK, why) &&
+           numberField(fs, 4, "humidity", Need::Required, &r->humidityPct, why) &&
+           intField(fs, 5, "value origin", Need::Optional, &r->origin, why);
+}
+
+bool parse30(const Fields& fs, CrdPointing* r, std::string* why) {
+    return secondsOfDay(fs, &r->secOfDay, why) && numberField(fs, 2, "azimuth", Need::Required, &r->azimuthDeg, why) &&
+           numberField(fs, 3, "elevation", Need::Required, &r->elevationDeg, why) &&
+           intField(fs, 4, "direction flag", Need::Optional, &r->directionFlag, why) &&
+           intField(fs, 5, "angle origin", Need::Optional, &r->angleOrigin, why) &&
+           intField(fs, 6, "refraction corrected", Need::Optional, &r->refractionCorrected, why) &&
+           numberField(fs, 7, "azimuth rate", Need::Optional, &r->azimuthRate, why) &&
+           numberField(fs, 8, "elevation rate", Need::Optional, &r->elevationRate, why);
+}
+
+bool parse40(const Fields& fs, CrdCalibration* r, std::string* why) {
+    return secondsOfDay(fs, &r->secOfDay, why) && intField(fs, 2, "type of data", Need::Optional, &r->dataType, why) &&
+           stringField(fs, 3, "system configuration id", &r->configId, why) &&
+           intField(fs, 4, "points recorded", Need::Optional, &r->pointsRecorded, why) &&
+           intField(fs, 5, "points used", Need::Optional, &r->pointsUsed, why) &&
+           numberField(fs, 6, "target distance", Need::Optional, &r->targetDistanceM, why) &&
+           numberField(fs, 7, "system delay", Need::Optional, &r->systemDelayPs, why) &&
+           numberField(fs, 8, "delay shift", Need::Optional, &r->delayShiftPs, why) &&
+           numberField(fs, 9, "RMS", Need::Optional, &r->rmsPs, why) &&
+           numberField(fs, 10, "skew", Need::Optional, &r->skew, why) &&
+           numberField(fs, 11, "kurtosis", Need::Optional, &r->kurtosis, why) &&
+           numberField(fs, 12, "peak-mean", Need::Optional, &r->peakMinusMeanPs, why) &&
+           intField(fs, 13, "calibration type", Need::Optional, &r->calType, why) &&
+           intField(fs, 14, "shift type", Need::Optional, &r->shiftType, why) &&
+           intField(fs, 15, "detector channel", Need::Optional, &r->detectorChannel, why) &&
+           intField(fs, 16, "calibration span", Need::Optional, &r->span, why) &&
+           numberField(fs, 17, "return rate", Need::Optional, &r->returnRatePct, why);
+}
+
+/// Fills the parsed lists of a pass from its records. Header values present in the records
+/// override the inherited ones already in the pass. False (with *error) when the H4 is bad.
+bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::string* error) {
+    p->configs.clear();
+    p->ranges.clear();
+    p->normalPoints.clear();
+    p->supplements.clear();
+    p->meteo.clear();
+    p->pointing.clear();
+    p->calibrations.clear();
+    p->predictionHeader.clear();
+    bool sawH4 = false;
+    for (size_t i = 0; i < p->records.size(); ++i) {
+        const CrdRecord& r = p->records[i];
+        const std::string& id = r.id;
+        if (id.empty() || id == "00" || id[0] == '9') continue;
+        std::string why;
+        if (id == "h1") {
+            parseH1(r, src, &p->format, sink);
+        } else if (id == "h2") {
+            parseH2(r, src, &p->station, sink);
+        } else if (id == "h3") {
+            parseH3(r, src, &p->target, sink);
+        } else if (id == "h4") {
+            if (!parseH4(r, &p->session, &why)) {
+                *error = where(src, r.line) + why;
+                return false;
+            }
+            sawH4 = true;
+        } else if (id == "h5") {
+            p->predictionHeader = r.text;
+        } else if (id == "c0") {
+            CrdSystemConfig c;
+            if (!parseC0(Fields(r.text), &c, &why)) {
+                sink->add(where(src, r.line) + "C0 record skipped: " + why);
+                continue;
+            }
+            c.record = i;
+            c.line = r.line;
+            p->configs.push_back(std::move(c));
+        } else if (id == "10") {
+            CrdRange x;
+            if (!parse10(Fields(r.text), &x, &why)) {
+                sink->add(where(src, r.line) + "type 10 record skipped: " + why);
+                continue;
+            }
+            x.record = i;
+            x.line = r.line;
+            p->ranges.push_back(std::move(x));
+        } else if (id == "11") {
+            CrdNormalPoint x;
+            if (!parse11(Fields(r.text), &x, &why)) {
+                sink->add(where(src, r.line) + "type 11 record skipped: " + why);
+                continue;
+            }
+            x.record = i;
+            x.line = r.line;
+            p->normalPoints.push_back(std::move(x));
+        } else if (id == "12") {
+            CrdRangeSupplement x;
+            if (!parse12(Fields(r.text), &x, &why)) {
+                sink->add(where(src, r.line) + "type 12 record skipped: " + why);
+                continue;
+            }
+            x.record = i;
+            x.line = r.line;
+            p->supplements.push_back(std::move(x));
+        } else if (id == "20") {
+            CrdMeteo x;
+            if (!parse20(Fields(r.text), &x, &why)) {
+                sink->add(where(src, r.line) + "type 20 record skipped: " + why);
+                continue;
+            }
+            x.record = i;
+            x.line = r.line;
+            p->meteo.push_back(x);
+        } else if (id == "30") {
+            CrdPointing x;
+            if (!parse30(Fields(r.text), &x, &why)) {
+                sink->add(where(src, r.line) + "type 30 record skipped: " + why);
+                continue;
+            }
+            x.record = i;
+            x.line = r.line;
+            p->pointing.push_back(x);
+        } else if (id == "40" || id == "41") {
+            CrdCalibration x;
+            x.detail = id == "41";
+            if (!parse40(Fields(r.text), &x, &why)) {
+                sink->add(where(src, r.line) + "type " + id + " record skipped: " + why);
+                continue;
+            }
+            x.record = i;
+            x.line = r.line;
+            p->calibrations.push_back(std::move(x));
+        }
+    }
+    if (!sawH4) {
+        *error = where(src, p->records.empty() ? 0 : p->records.front().line) + "pass without an H4 session header";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+// ---- CrdPass ---------------------------------------------------------------------------------
+
+long CrdPass::startMjd() const { return mjdFromDate(session.startYear, session.startMonth, session.startDay); }
+
+double CrdPass::passSeconds(double secOfDay) const {
+    const double start = session.startHour * 3600.0 + session.startMinute * 60.0 + session.startSecond;
+    return secOfDay < start - 43200.0 ? secOfDay + kSecondsPerDay : secOfDay;
+}
+
+const CrdSystemConfig* CrdPass::config(const std::string& systemId) const {
+    const std::string want = toLower(systemId);
+    for (const auto& c : configs)
+        if (toLower(c.systemId) == want) return &c;
+    return nullptr;
+}
+
+// ---- reading ---------------------------------------------------------------------------------
+
+std::string validate(const CrdReadParams& p) {
+    if (p.maxWarnings < 1) return "maximum number of warnings must be >= 1";
+    return {};
+}
+
+CrdReadResult parseCrd(std::string_view text, const std::string& source, const CrdReadParams& params,
+                       const Feedback* feedback) {
+    CrdReadResult res;
+    try {
+        res.file.path = source;
+        const std::string src = source.empty() ? "crd" : source;
+        if (const std::string e = validate(params); !e.empty()) {
+            res.error = e;
+            return res;
+        }
+        if (trim(text).empty()) {
+            res.error = src + ": empty file";
+            return res;
+        }
+        if (const void* nul = std::memchr(text.data(), '\0', text.size())) {
+            const size_t at = static_cast<size_t>(static_cast<const char*>(nul) - text.data());
+            res.error = where(src, 1 + static_cast<long>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'))) +
+                        "binary data (NUL byte): not a CRD text file";
+            return res;
+        }
+        Sink sink{&res.warnings, params.maxWarnings};
+
+        // Stage 1: split the lines into passes.
+        CrdFormatHeader curH1;
+        CrdStation curH2;
+        CrdTarget curH3;
+        bool haveH1 = false, haveH2 = false, haveH3 = false;
+        bool own[3] = {false, false, false};  // H1/H2/H3 seen since the last pass
+        std::vector<CrdRecord> pending;  // lines since the last pass closed
+        CrdPass* open = nullptr;
+        size_t pos = 0;
+        long lineNo = 0;
+        bool firstLine = true;
+        std::vector<CrdPass>& passes = res.file.passes;
+
+        auto closePass = [&](const std::string& why, long atLine) {
+            if (!open) return;
+            if (!why.empty()) sink.add(where(src, atLine) + why);
+            open = nullptr;
+        };
+
+        while (pos < text.size()) {
+            if ((lineNo & 0x3fff) == 0 && feedback) {
+                if (feedback->isCancelled()) {
+                    res.error = src + ": cancelled";
+                    res.file.passes.clear();
+                    return res;
+                }
+                feedback->setProgress(0.5 * static_cast<double>(pos) / static_cast<double>(text.size()));
+            }
+            size_t end = text.find('\n', pos);
+            const bool hadNewline = end != std::string_view::npos;
+            if (!hadNewline) end = text.size();
+            std::string_view line = text.substr(pos, end - pos);
+            pos = hadNewline ? end + 1 : end;
+            ++lineNo;
+            // Every trailing CR goes (so a text never ends with one and LF/CRLF writing is unambiguous).
+            if (!line.empty() && line.back() == '\r' && firstLine) res.file.crlf = true;
+            while (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+            firstLine = false;
+
+            CrdRecord rec;
+            rec.text = std::string(line);
+            rec.line = lineNo;
+            const Fields fs(line);
+            rec.id = fs.n ? toLower(fs.f[0]) : std::string();
+            const std::string& id = rec.id;
+
+            if (id.empty() || id == "00") {  // blank or comment: belongs to whatever is open
+                (open ? open->records : pending).push_back(std::move(rec));
+                continue;
+            }
+            if (!idIsValid(id)) {
+                if (!open && !haveH1) {
+                    res.error = where(src, lineNo) + "not a CRD record: \"" + excerpt(line) + "\" (expected H1)";
+                    res.file.passes.clear();
+                    return res;
+                }
+                sink.add(where(src, lineNo) + "unknown record type \"" + excerpt(fs.f[0], 8) + "\"; kept, not interpreted");
+                (open ? open->records : pending).push_back(std::move(rec));
+                continue;
+            }
+            if (id == "h1" || id == "h2" || id == "h3") {
+                if (open) closePass("pass ended without H8 (new H" + id.substr(1) + ")", lineNo);
+                if (id == "h1") {
+                    parseH1(rec, src, &curH1, &sink);
+                    haveH1 = true;
+                } else if (id == "h2") {
+                    parseH2(rec, src, &curH2, &sink);
+                    haveH2 = true;
+                } else {
+                    parseH3(rec, src, &curH3, &sink);
+                    haveH3 = true;
+                }
+                own[id[1] - '1'] = true;
+                pending.push_back(std::move(rec));
+                continue;
+            }
+            if (id == "h4") {
+                if (open) closePass("pass ended without H8 (new H4)", lineNo);
+                if (!haveH1) {
+                    res.error = where(src, lineNo) + "H4 before any H1 format header";
+                    res.file.passes.clear();
+                    return res;
+                }
+                if (!haveH2 || !haveH3) {
+                    res.error = where(src, lineNo) + "H4 before the " + std::string(!haveH2 ? "H2 station" : "H3 target") +
+                                " header";
+                    res.file.passes.clear();
+                    return res;
+                }
+                passes.emplace_back();
+                open = &passes.back();
+                open->format = curH1;
+                open->station = curH2;
+                open->target = curH3;
+                open->inheritsHeaders = !(own[0] && own[1] && own[2]);
+                own[0] = own[1] = own[2] = false;
+                open->records = std::move(pending);
+                pending.clear();
+                open->records.push_back(std::move(rec));
+                continue;
+            }
+            if (id == "h8") {
+                if (!open) {
+                    sink.add(where(src, lineNo) + "H8 without an open pass; kept");
+                    pending.push_back(std::move(rec));
+                    continue;
+                }
+                open->records.push_back(std::move(rec));
+                open->endedWithH8 = true;
+                closePass("", lineNo);
+                continue;
+            }
+            if (id == "h9") {
+                if (open) closePass("pass ended without H8 (H9)", lineNo);
+                pending.push_back(std::move(rec));
+                continue;
+            }
+            if (id[0] == 'h') {  // h5 (prediction header), h6/h7 (not defined): part of the pass or the next one
+                (open ? open->records : pending).push_back(std::move(rec));
+                continue;
+            }
+            // Configuration, data and user records.
+            if (!open) {
+                if (id[0] == '9') {  // user records outside a pass: keep with what follows
+                    pending.push_back(std::move(rec));
+                    continue;
+                }
+                res.error = where(src, lineNo) + "record " + std::string(fs.f[0]) + " " +
+                            (haveH1 ? "outside a pass (no H4 session header before it)"
+                                    : "before the H1 format header (not a CRD file, or its header is missing)");
+                res.file.passes.clear();
+                return res;
+            }
+            open->records.push_back(std::move(rec));
+        }
+        if (open) closePass("file ends without H8 for the last pass", lineNo);
+        res.file.trailer = std::move(pending);
+        if (passes.empty()) {
+            res.error = src + ": no CRD pass (no H4 session header) in " + std::to_string(lineNo) + " lines";
+            return res;
+        }
+
+        // Stage 2: parse the records of each pass.
+        for (size_t k = 0; k < passes.size(); ++k) {
+            if (cancelled(feedback)) {
+                res.error = src + ": cancelled";
+                res.file.passes.clear();
+                return res;
+            }
+            CrdPass& p = passes[k];
+            std::string err;
+            if (!parsePassRecords(&p, src, &sink, &err)) {
+                res.error = err;
+                res.file.passes.clear();
+                return res;
+            }
+            if (p.ranges.empty() && p.normalPoints.empty()) {
+                res.error = where(src, p.session.line) + "pass " + std::to_string(k + 1) + " (" + p.station.name + ", " +
+                            p.target.name + ") has no readable range record (type 10 or 11)";
+                res.file.passes.clear();
+                return res;
+            }
+            if (feedback) feedback->setProgress(0.5 + 0.5 * static_cast<double>(k + 1) / static_cast<double>(passes.size()));
+        }
+        sink.close();
+        res.ok = true;
+    } catch (const std::exception& e) {
+        res = CrdReadResult();
+        res.error = (source.empty() ? std::string("crd") : source) + ": internal error: " + e.what();
+    }
+    return res;
+}
+
+CrdReadResult readCrd(const std::string& path, const CrdReadParams& params, const Feedback* feedback) {
+    std::string text, err;
+    if (!readFileText(path, &text, &err)) {
+        CrdReadResult r;
+        r.error = err;
+        return r;
+    }
+    return parseCrd(text, path, params, feedback);
+}
+
+// ---- writing ---------------------------------------------------------------------------------
+
+std::string formatCrd(const CrdFile& file) {
+    const char* eol = file.crlf ? "\r\n" : "\n";
+    size_t n = 0;
+    for (const auto& p : file.passes)
+        for (const auto& r : p.records) n += r.text.size() + 2;
+    for (const auto& r : file.trailer) n += r.text.size() + 2;
+    std::string out;
+    out.reserve(n);
+    for (const auto& p : file.passes)
+        for (const auto& r : p.records) {
+            out += r.text;
+            out += eol;
+        }
+    for (const auto& r : file.trailer) {
+        out += r.text;
+        out += eol;
+    }
+    return out;
+}
+
+bool writeCrd(const std::string& path, const CrdFile& file, std::string* error) {
+    try {
+        return writeFileAtomic(path, formatCrd(file), error);
+    } catch (const std::exception& e) {
+        if (error) *error = path + ": " + e.what();
+        return false;
+    }
+}
+
+bool setFilterFlags(CrdPass* pass, const std::vector<int>& flags, std::string* error) {
+    if (flags.size() != pass->ranges.size()) {
+        *error = "setFilterFlags: " + std::to_string(flags.size()) + " flags for " + std::to_string(pass->ranges.size()) +
+                 " type-10 records";
+        return false;
+    }
+    for (size_t i = 0; i < flags.size(); ++i)
+        if (flags[i] < 0 || flags[i] > 2) {
+            *error = "setFilterFlags: flag " + std::to_string(flags[i]) + " at index " + std::to_string(i) +
+                     " (must be 0 unknown, 1 noise or 2 data)";
+            return false;
+        }
+    for (size_t i = 0; i < flags.size(); ++i) {
+        CrdRange& r = pass->ranges[i];
+        if (r.record >= pass->records.size() || !replaceToken(&pass->records[r.record].text, 5, std::to_string(flags[i]))) {
+            *error = "setFilterFlags: type-10 record " + std::to_string(i) + " has no filter flag field";
+            return false;
+        }
+        r.filterFlag = flags[i];
+    }
+    return true;
+}
+
+std::string formatNormalPointRecord(const CrdNormalPoint& np, int version) {
+    const bool v2 = version >= 2;
+    auto num = [&](double v, int decimals) {
+        if (!std::isfinite(v)) return std::string(v2 ? "na" : "-1");
+        return formatFixed(v, decimals);
+    };
+    auto integer = [&](int v) { return v == kCrdAbsent && v2 ? std::string("na") : std::to_string(v); };
+    std::string s = "11 " + formatFixed(np.secOfDay, 12) + " " + formatFixed(np.tofS, 12) + " " +
+                    (np.configId.empty() ? std::string("std") : np.configId) + " " + std::to_string(np.epochEvent) + " " +
+                    (std::isfinite(np.windowS) ? formatShortest(np.windowS) : num(np.windowS, 1)) + " " +
+                    integer(np.numRanges) + " " + num(np.binRmsPs, 1) + " " + num(np.skew, 3) + " " +
+                    num(np.kurtosis, 3) + " " + num(np.peakMinusMeanPs, 1) + " " + num(np.returnRatePct, 2) + " " +
+                    integer(np.detectorChannel);
+    if (v2) s += " " + num(np.snr, 1);
+    return s;
+}
+
+namespace {
+bool checkNormalPoints(const std::vector<CrdNormalPoint>& nps, std::string* error) {
+    for (size_t i = 0; i < nps.size(); ++i) {
+        const CrdNormalPoint& n = nps[i];
+        std::string what;
+        if (!(n.secOfDay >= 0 && n.secOfDay < 86401)) what = "seconds of day outside 0..86400";
+        else if (!(n.tofS >= 0 && n.tofS <= 100)) what = "time of flight outside 0..100 s";
+        else if (n.epochEvent < 0 || n.epochEvent > 6) what = "epoch event outside 0..6";
+        else if (n.numRanges < 0 && n.numRanges != kCrdAbsent) what = "negative number of ranges";
+        else if (n.configId.find_first_of(" \t\r\n") != std::string::npos) what = "configuration id with blanks";
+        if (!what.empty()) {
+            *error = "normal point " + std::to_string(i) + ": " + what;
+            return false;
+        }
+    }
+    return true;
+}
+
+bool reparse(CrdPass* pass, std::string* error) {
+    std::vector<std::string> warnings;
+    Sink sink{&warnings, 50};
+    if (!parsePassRecords(pass, "", &sink, error)) return false;
+    return true;
+}
+}  // namespace
+
+bool setNormalPoints(CrdPass* pass, const std::vector<CrdNormalPoint>& nps, NormalPointMode mode, std::string* error) {
+    try {
+        if (!checkNormalPoints(nps, error)) return false;
+        CrdPass work = *pass;  // the pass changes only when everything succeeded
+        std::vector<CrdRecord>& recs = work.records;
+        size_t insertAt = std::string::npos;
+        if (mode == NormalPointMode::Replace) {
+            std::vector<CrdRecord> kept;
+            kept.reserve(recs.size());
+            for (auto& r : recs) {
+                if (r.id == "11") {
+                    if (insertAt == std::string::npos) insertAt = kept.size();
+                    continue;
+                }
+                kept.push_back(std::move(r));
+            }
+            recs = std::move(kept);
+        } else {
+            for (size_t i = 0; i < recs.size(); ++i)
+                if (recs[i].id == "11") insertAt = i + 1;
+        }
+        if (insertAt == std::string::npos) {
+            insertAt = recs.size();
+            for (size_t i = 0; i < recs.size(); ++i)
+                if (recs[i].id == "h8") {
+                    insertAt = i;
+                    break;
+                }
+        }
+        std::vector<CrdRecord> add;
+        for (const auto& n : nps) add.push_back(CrdRecord{formatNormalPointRecord(n, work.format.version), "11", 0});
+        recs.insert(recs.begin() + static_cast<long>(insertAt), add.begin(), add.end());
+        size_t expected = nps.size();
+        if (mode == NormalPointMode::Append) expected += pass->normalPoints.size();
+        if (!reparse(&work, error)) return false;
+        if (work.normalPoints.size() != expected) {
+            *error = "setNormalPoints: " + std::to_string(expected) + " normal points expected, " +
+                     std::to_string(work.normalPoints.size()) + " read back";
+            return false;
+        }
+        *pass = std::move(work);
+        return true;
+    } catch (const std::exception& e) {
+        *error = std::string("setNormalPoints: ") + e.what();
+        return false;
+    }
+}
+
+bool makeNormalPointPass(const CrdPass& fullRate, const std::vector<CrdNormalPoint>& nps, CrdPass* out,
+                         std::string* error) {
+    try {
+        if (!checkNormalPoints(nps, error)) return false;
+        CrdPass p;
+        p.format = fullRate.format;
+        p.station = fullRate.station;
+        p.target = fullRate.target;
+        p.session = fullRate.session;
+        if (fullRate.inheritsHeaders) {
+            bool has[3] = {false, false, false};
+            for (const auto& r : fullRate.records) {
+                if (r.id == "h1") has[0] = true;
+                if (r.id == "h2") has[1] = true;
+                if (r.id == "h3") has[2] = true;
+            }
+            if (!has[0] && !fullRate.format.text.empty()) p.records.push_back(CrdRecord{fullRate.format.text, "h1", 0});
+            if (!has[1] && !fullRate.station.text.empty()) p.records.push_back(CrdRecord{fullRate.station.text, "h2", 0});
+            if (!has[2] && !fullRate.target.text.empty()) p.records.push_back(CrdRecord{fullRate.target.text, "h3", 0});
+        }
+        size_t h8 = std::string::npos;
+        for (const auto& r : fullRate.records) {
+            const std::string& id = r.id;
+            if (id == "10" || id == "11" || id == "12" || id == "30" || id == "42" || (id.size() == 2 && id[0] == '9'))
+                continue;
+            CrdRecord c = r;
+            c.line = 0;
+            if (id == "h4") replaceToken(&c.text, 1, "1");
+            if (id == "h8") h8 = p.records.size();
+            p.records.push_back(std::move(c));
+        }
+        std::vector<CrdRecord> add;
+        for (const auto& n : nps) add.push_back(CrdRecord{formatNormalPointRecord(n, p.format.version), "11", 0});
+        const size_t at = h8 == std::string::npos ? p.records.size() : h8;
+        p.records.insert(p.records.begin() + static_cast<long>(at), add.begin(), add.end());
+        if (h8 == std::string::npos) p.records.push_back(CrdRecord{"H8", "h8", 0});
+        p.endedWithH8 = true;
+        if (!reparse(&p, error)) return false;
+        if (p.normalPoints.size() != nps.size()) {
+            *error = "makeNormalPointPass: normal points could not be read back";
+            return false;
+        }
+        *out = std::move(p);
+        return true;
+    } catch (const std::exception& e) {
+        *error = std::string("makeNormalPointPass: ") + e.what();
+        return false;
+    }
+}
+
+}  // namespace lwb::core::slr

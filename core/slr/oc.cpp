@@ -1,0 +1,504 @@
+#include "core/slr/oc.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+#include "core/common/text.hpp"
+#include "core/slr/refraction.hpp"
+#include "core/slr/slr_time.hpp"
+
+namespace lwb::core::slr {
+
+namespace {
+
+/// Station position in the inertial frame that coincides with ITRF at the bounce time, at a
+/// time `dt` seconds from the bounce (negative: before): the Earth-fixed point rotated by ω·dt.
+Eigen::Vector3d rotated(const Eigen::Vector3d& s, double dt) {
+    const double a = kEarthRotationRate * dt;
+    const double c = std::cos(a), sn = std::sin(a);
+    return Eigen::Vector3d(c * s.x() - sn * s.y(), sn * s.x() + c * s.y(), s.z());
+}
+
+/// Relativistic (Shapiro) one-way delay (m) of the Earth's field between two points.
+double shapiroM(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    const double r1 = a.norm(), r2 = b.norm(), rho = (a - b).norm();
+    const double den = r1 + r2 - rho;
+    if (den <= 0) return 0;
+    return 2.0 * kEarthGm / (kSpeedOfLight * kSpeedOfLight) * std::log((r1 + r2 + rho) / den);
+}
+
+/// Met values interpolated linearly in time (clamped at the ends).
+struct MetSeries {
+    std::vector<double> t, p, temp, h;
+    bool empty() const { return t.empty(); }
+    void at(double x, double* P, double* T, double* H) const {
+        if (x <= t.front()) {
+            *P = p.front(), *T = temp.front(), *H = h.front();
+            return;
+        }
+        if (x >= t.back()) {
+            *P = p.back(), *T = temp.back(), *H = h.back();
+            return;
+        }
+        const size_t k = static_cast<size_t>(std::upper_bound(t.begin(), t.end(), x) - t.begin());
+        const double u = (x - t[k - 1]) / (t[k] - t[k - 1]);
+        *P = p[k - 1] + u * (p[k] - p[k - 1]);
+        *T = temp[k - 1] + u * (temp[k] - temp[k - 1]);
+        *H = h[k - 1] + u * (h[k] - h[k - 1]);
+    }
+};
+
+MetSeries metSeries(const CrdPass& pass, std::vector<std::string>* warnings, const std::string& where) {
+    std::vector<std::pair<double, const CrdMeteo*>> v;
+    size_t bad = 0;
+    for (const auto& m : pass.meteo) {
+        if (!(m.pressureMbar >= 400 && m.pressureMbar <= 1100 && m.temperatureK >= 200 && m.temperatureK <= 340 &&
+              m.humidityPct >= 0 && m.humidityPct <= 100.5)) {
+            if (bad++ < 5)
+                warnings->push_back(where + ":" + std::to_string(m.line) +
+                                    ": implausible met record (pressure 400..1100 mbar, temperature 200..340 K, humidity "
+                                    "0..100 %); not used");
+            continue;
+        }
+        v.emplace_back(pass.passSeconds(m.secOfDay), &m);
+    }
+    std::stable_sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    MetSeries s;
+    for (const auto& [t, m] : v) {
+        if (!s.t.empty() && t <= s.t.back()) continue;  // duplicate epoch: first wins
+        s.t.push_back(t);
+        s.p.push_back(m->pressureMbar);
+        s.temp.push_back(m->temperatureK);
+        s.h.push_back(std::min(100.0, m->humidityPct));
+    }
+    return s;
+}
+
+std::string passName(const CrdPass& p) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s %04d-%02d-%02d %02d:%02d", p.station.name.c_str(), p.session.startYear,
+                  p.session.startMonth, p.session.startDay, p.session.startHour, p.session.startMinute);
+    return buf;
+}
+
+}  // namespace
+
+std::string validate(const OcParams& p) {
+    if (const std::string e = validate(p.interpolation); !e.empty()) return e;
+    if (!std::isnan(p.wavelengthNm) && !(p.wavelengthNm >= 300 && p.wavelengthNm <= 2000))
+        return "wavelength must be 300..2000 nm (or unset)";
+    if (!std::isnan(p.targetComOffsetM) && !(p.targetComOffsetM >= 0 && p.targetComOffsetM <= 10))
+        return "centre-of-mass offset must be 0..10 m (or unset)";
+    if (!(p.convergenceS >= 1e-15 && p.convergenceS <= 1e-9)) return "convergence must be 1e-15..1e-9 s";
+    if (p.maxIterations < 2 || p.maxIterations > 50) return "light-time iterations must be 2..50";
+    return {};
+}
+
+std::string validate(const TrendOcParams& p) {
+    if (p.degree < 1 || p.degree > 20) return "trend degree must be 1..20";
+    if (!(p.huberK >= 0.5 && p.huberK <= 10)) return "Huber constant must be 0.5..10";
+    if (p.maxIterations < 1 || p.maxIterations > 500) return "iterations must be 1..500";
+    if (p.minPoints < 3) return "minimum points must be >= 3";
+    return {};
+}
+
+OcResult computeOc(const CrdPass& pass, const CpfFile& cpf, const Eigen::Vector3d& stationEcef, const OcParams& params,
+                   const Feedback* feedback) {
+    OcResult res;
+    res.method = OcMethod::Prediction;
+    try {
+        if (const std::string e = validate(params); !e.empty()) {
+            res.error = e;
+            return res;
+        }
+        if (!stationEcef.allFinite() || stationEcef.norm() < 6.3e6 || stationEcef.norm() > 6.4e6) {
+            res.error = "station position is not on the Earth's surface (|r| must be 6300..6400 km)";
+            return res;
+        }
+        const std::string name = passName(pass);
+        const CpfInterpolator interp(cpf, params.interpolation);
+        if (!interp.ok()) {
+            res.error = interp.error();
+            return res;
+        }
+        res.startMjd = pass.startMjd();
+        res.stationEcef = stationEcef;
+        const Geodetic geo = geodeticFromEcef(stationEcef);
+
+        // Centre-of-mass offset.
+        res.comOffsetM = params.targetComOffsetM;
+        if (std::isnan(res.comOffsetM))
+            res.comOffsetM = cpf.header.comApplied == 0 && std::isfinite(cpf.header.comOffsetM) ? cpf.header.comOffsetM : 0.0;
+
+        // Refraction set-up.
+        bool refr = params.refraction == RefractionModel::MendesPavlis;
+        MetSeries met;
+        if (refr && pass.session.refractionApplied == 1) {
+            res.warnings.push_back(name + ": H4 says the ranges are already corrected for refraction; no correction added");
+            refr = false;
+        }
+        if (refr) {
+            met = metSeries(pass, &res.warnings, pass.station.name);
+            if (met.empty()) {
+                res.warnings.push_back(name + ": no usable met (type 20) record: no refraction correction");
+                refr = false;
+            }
+        }
+        res.refractionApplied = refr;
+
+        bool warnedWavelength = false;
+        size_t skippedEvent = 0, skippedSpan = 0;
+        std::string spanError;
+        const size_t n = pass.ranges.size();
+        const double c = kSpeedOfLight;
+        for (size_t i = 0; i < n; ++i) {
+            if ((i & 0xfff) == 0 && feedback) {
+                if (feedback->isCancelled()) {
+                    res = OcResult();
+                    res.error = "cancelled";
+                    return res;
+                }
+                feedback->setProgress(static_cast<double>(i) / static_cast<double>(n));
+            }
+            const CrdRange& r = pass.ranges[i];
+            if (r.epochEvent > 2) {
+                ++skippedEvent;
+                continue;
+            }
+            const double t = pass.passSeconds(r.secOfDay);
+            // Light times (s); the observed value only seeds the iteration.
+            double up = r.tofS / 2, down = r.tofS / 2, tb = 0;
+            Eigen::Vector3d sat;
+            bool good = true;
+            auto satAt = [&](double tt) {
+                const CpfState s = interp.atSeconds(res.startMjd, tt, false);
+                if (!s.ok) {
+                    if (spanError.empty()) spanError = s.error;
+                    good = false;
+                    return;
+                }
+                sat = s.position;
+            };
+            auto iterateUp = [&]() {  // satellite fixed at bounce; station at tb - up
+                for (int k = 0; k < params.maxIterations; ++k) {
+                    const double next = (sat - rotated(stationEcef, -up)).norm() / c;
+                    const bool done = std::fabs(next - up) < params.convergenceS;
+                    up = next;
+                    if (done) break;
+                }
+            };
+            auto iterateDown = [&]() {  // station at tb + down
+                for (int k = 0; k < params.maxIterations; ++k) {
+                    const double next = (sat - rotated(stationEcef, down)).norm() / c;
+                    const bool done = std::fabs(next - down) < params.convergenceS;
+                    down = next;
+                    if (done) break;
+                }
+            };
+            if (r.epochEvent == 2) {  // epoch = ground transmit: bounce = t + up
+                for (int k = 0; k < params.maxIterations && good; ++k) {
+                    tb = t + up;
+                    satAt(tb);
+                    if (!good) break;
+                    const double next = (sat - rotated(stationEcef, -up)).norm() / c;
+                    const bool done = std::fabs(next - up) < params.convergenceS;
+                    up = next;
+                    if (done) break;
+                }
+                if (good) {
+                    tb = t + up;
+                    satAt(tb);
+                    if (good) {
+                        iterateUp();
+                        iterateDown();
+                    }
+                }
+            } else if (r.epochEvent == 0) {  // epoch = ground receive: bounce = t - down
+                for (int k = 0; k < params.maxIterations && good; ++k) {
+                    tb = t - down;
+                    satAt(tb);
+                    if (!good) break;
+                    const double next = (sat - rotated(stationEcef, down)).norm() / c;
+                    const bool done = std::fabs(next - down) < params.convergenceS;
+                    down = next;
+                    if (done) break;
+                }
+                if (good) {
+                    tb = t - down;
+                    satAt(tb);
+                    if (good) {
+                        iterateDown();
+                        iterateUp();
+                    }
+                }
+            } else {  // epoch = bounce
+                tb = t;
+                satAt(tb);
+                if (good) {
+                    iterateUp();
+                    iterateDown();
+                }
+            }
+            if (!good) {
+                ++skippedSpan;
+                continue;
+            }
+            double computed = up + down;
+            // Centre-of-mass offset: the reflection happens that much nearer the station, both legs.
+            computed -= 2.0 * res.comOffsetM / c;
+            if (params.shapiro)
+                computed += (shapiroM(rotated(stationEcef, -up), sat) + shapiroM(sat, rotated(stationEcef, down))) / c;
+            double az = 0, el = 0;
+            azimuthElevation(stationEcef, geo, sat, &az, &el);
+            double refrS = 0;
+            if (refr) {
+                double lambda = params.wavelengthNm;
+                if (std::isnan(lambda)) {
+                    const CrdSystemConfig* cfg = pass.config(r.configId);
+                    if (!cfg && !pass.configs.empty()) cfg = &pass.configs.front();
+                    lambda = cfg ? cfg->wavelengthNm : NAN;
+                    if (!(lambda >= 300 && lambda <= 2000)) {
+                        if (!warnedWavelength)
+                            res.warnings.push_back(name + ": no usable wavelength in the C0 record for configuration \"" +
+                                                   r.configId + "\"; 532 nm assumed");
+                        warnedWavelength = true;
+                        lambda = 532.0;
+                    }
+                }
+                if (std::isnan(res.wavelengthNm)) res.wavelengthNm = lambda;
+                double P = 0, T = 0, H = 0;
+                met.at(t, &P, &T, &H);
+                // Both legs at the same elevation (the satellite moves < 0.01° during the flight).
+                refrS = 2.0 * mendesPavlisDelayM(geo, P, T, H, lambda / 1000.0, std::max(el, 1.0 * M_PI / 180)) / c;
+                computed += refrS;
+            }
+            res.epoch_s.push_back(t);
+            res.oc_s.push_back(r.tofS - computed);
+            res.tof_s.push_back(r.tofS);
+            res.elevation_rad.push_back(el);
+            res.azimuth_rad.push_back(az);
+            res.refraction_s.push_back(refrS);
+            res.range_index.push_back(i);
+            res.line.push_back(r.line);
+            res.filter_flag.push_back(r.filterFlag);
+        }
+        if (skippedEvent)
+            res.warnings.push_back(name + ": " + std::to_string(skippedEvent) +
+                                   " records with a one-way epoch event (3..6) skipped: only two-way ranging is computed");
+        if (skippedSpan)
+            res.warnings.push_back(name + ": " + std::to_string(skippedSpan) + " records outside the prediction skipped (" +
+                                   spanError + ")");
+        if (res.oc_s.empty()) {
+            res.error = name + ": no O-C computed" + (spanError.empty() ? std::string() : ": " + spanError);
+            return res;
+        }
+        for (size_t i = 0; i < res.elevation_rad.size(); ++i)
+            if (res.elevation_rad[i] < 0) {
+                res.warnings.push_back(name + ": the predicted target is below the horizon at some epochs: wrong station, "
+                                              "prediction or time?");
+                break;
+            }
+        if (feedback) feedback->setProgress(1.0);
+        res.ok = true;
+    } catch (const std::exception& e) {
+        res = OcResult();
+        res.error = std::string("internal error: ") + e.what();
+    }
+    return res;
+}
+
+OcResult computeOc(const CrdPass& pass, const CpfFile& cpf, const SinexFile& sinex, const OcParams& params,
+                   const Feedback* feedback) {
+    try {
+        if (pass.ranges.empty()) {
+            OcResult r;
+            r.error = passName(pass) + ": no full-rate (type 10) records";
+            return r;
+        }
+        const double sod = pass.passSeconds(pass.ranges.front().secOfDay);
+        const StationPositionResult st = stationPositionByPad(sinex, pass.station.cdpPadId, pass.startMjd(), sod);
+        if (!st.ok) {
+            OcResult r;
+            r.error = passName(pass) + ": " + st.error;
+            return r;
+        }
+        OcResult r = computeOc(pass, cpf, st.position, params, feedback);
+        r.stationCode = st.code;
+        r.warnings.insert(r.warnings.begin(), st.warnings.begin(), st.warnings.end());
+        return r;
+    } catch (const std::exception& e) {
+        OcResult r;
+        r.error = std::string("internal error: ") + e.what();
+        return r;
+    }
+}
+
+// ---- fallback: robust trend of the time of flight ---------------------------------------------
+
+namespace {
+
+/// Legendre design matrix on x in [-1, 1].
+Eigen::MatrixXd legendre(const std::vector<double>& x, int degree) {
+    Eigen::MatrixXd a(static_cast<Eigen::Index>(x.size()), degree + 1);
+    for (size_t i = 0; i < x.size(); ++i) {
+        const Eigen::Index r = static_cast<Eigen::Index>(i);
+        a(r, 0) = 1;
+        if (degree >= 1) a(r, 1) = x[i];
+        for (int k = 1; k < degree; ++k) a(r, k + 1) = ((2 * k + 1) * x[i] * a(r, k) - k * a(r, k - 1)) / (k + 1);
+    }
+    return a;
+}
+
+double medianOf(std::vector<double> v) {
+    if (v.empty()) return NAN;
+    const size_t m = v.size() / 2;
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(m), v.end());
+    double med = v[m];
+    if (v.size() % 2 == 0) med = 0.5 * (med + *std::max_element(v.begin(), v.begin() + static_cast<long>(m)));
+    return med;
+}
+
+}  // namespace
+
+OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const Feedback* feedback) {
+    OcResult res;
+    res.method = OcMethod::FittedTrend;
+    try {
+        if (const std::string e = validate(params); !e.empty()) {
+            res.error = e;
+            return res;
+        }
+        const std::string name = passName(pass);
+        res.startMjd = pass.startMjd();
+        std::vector<double> t, y;
+        std::vector<size_t> idx;
+        for (size_t i = 0; i < pass.ranges.size(); ++i) {
+            t.push_back(pass.passSeconds(pass.ranges[i].secOfDay));
+            y.push_back(pass.ranges[i].tofS);
+            idx.push_back(i);
+        }
+        if (static_cast<int>(t.size()) < params.minPoints) {
+            res.error = name + ": " + std::to_string(t.size()) + " full-rate records; at least " +
+                        std::to_string(params.minPoints) + " are needed for a trend";
+            return res;
+        }
+        const auto [tminIt, tmaxIt] = std::minmax_element(t.begin(), t.end());
+        const double t0 = *tminIt, t1 = *tmaxIt;
+        if (!(t1 - t0 > 0)) {
+            res.error = name + ": all records share one epoch; no trend can be fitted";
+            return res;
+        }
+        const int degree = std::max(1, std::min(params.degree, static_cast<int>(t.size() - 1) / 4));
+        if (degree < params.degree)
+            res.warnings.push_back(name + ": trend degree lowered to " + std::to_string(degree) + " for " +
+                                   std::to_string(t.size()) + " records");
+        std::vector<double> x(t.size());
+        for (size_t i = 0; i < t.size(); ++i) x[i] = 2 * (t[i] - t0) / (t1 - t0) - 1;
+        const Eigen::MatrixXd a = legendre(x, degree);
+        // The polynomial models the squared time of flight (ms^2): a pass's range is close to
+        // sqrt(d^2 + v^2 (t - t0)^2), so its square is nearly quadratic in time and a low degree
+        // reaches the ranging noise where a polynomial in the range itself needs degree > 12.
+        const Eigen::Index nn = static_cast<Eigen::Index>(t.size());
+        Eigen::VectorXd ysq(nn), tofMs(nn);
+        for (Eigen::Index i = 0; i < nn; ++i) {
+            tofMs(i) = y[static_cast<size_t>(i)] * 1e3;
+            ysq(i) = tofMs(i) * tofMs(i);
+        }
+        // Weights in tof^2 space: d(tof^2) = 2 tof d(tof), so 1/(2 tof)^2 makes the fit least squares in tof.
+        Eigen::VectorXd base(nn), w = Eigen::VectorXd::Ones(nn), resid = Eigen::VectorXd::Zero(nn);
+        for (Eigen::Index i = 0; i < nn; ++i) base(i) = tofMs(i) > 0 ? 1.0 / (4.0 * tofMs(i) * tofMs(i)) : 0.0;
+        double scale = NAN;
+        bool fitted = false;
+        for (int it = 0; it < params.maxIterations; ++it) {
+            if (cancelled(feedback)) {
+                res = OcResult();
+                res.error = "cancelled";
+                return res;
+            }
+            const Eigen::VectorXd sw = w.cwiseProduct(base).cwiseSqrt();
+            const Eigen::MatrixXd aw = sw.asDiagonal() * a;
+            const Eigen::VectorXd coef = aw.colPivHouseholderQr().solve(sw.cwiseProduct(ysq));
+            if (!coef.allFinite()) break;
+            const Eigen::VectorXd fit = a * coef;
+            Eigen::VectorXd r(nn);
+            bool good = true;
+            for (Eigen::Index i = 0; i < nn && good; ++i) {
+                good = fit(i) > 0;
+                r(i) = good ? tofMs(i) - std::sqrt(fit(i)) : 0;
+            }
+            if (!good) break;  // a non-positive squared trend: keep the previous fit
+            resid = r;
+            fitted = true;
+            std::vector<double> absr(static_cast<size_t>(nn));
+            for (Eigen::Index i = 0; i < nn; ++i) absr[static_cast<size_t>(i)] = std::fabs(resid(i));
+            const double s = 1.4826 * medianOf(absr);
+            if (!(s > 0)) {
+                scale = 0;
+                break;
+            }
+            Eigen::VectorXd wn(nn);
+            for (Eigen::Index i = 0; i < nn; ++i) {
+                const double u = std::fabs(resid(i)) / (params.huberK * s);
+                wn(i) = u <= 1 ? 1.0 : 1.0 / u;  // Huber weights: bounded influence, not mode-seeking
+            }
+            const bool converged = std::isfinite(scale) && std::fabs(s - scale) <= 1e-6 * scale;
+            scale = s;
+            w = wn;
+            if (converged) break;
+        }
+        if (!fitted) {
+            res.error = name + ": the trend fit failed (degenerate epochs or times of flight)";
+            return res;
+        }
+        res.trendDegree = degree;
+        res.trendScaleS = std::isfinite(scale) ? scale * 1e-3 : NAN;
+
+        // Elevation/azimuth from the pointing records (type 30), when there are some.
+        std::vector<std::pair<double, const CrdPointing*>> pts;
+        for (const auto& p : pass.pointing) pts.emplace_back(pass.passSeconds(p.secOfDay), &p);
+        std::stable_sort(pts.begin(), pts.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
+        auto angles = [&](double tt, double* az, double* el) {
+            *az = *el = NAN;
+            if (pts.empty()) return;
+            size_t k = static_cast<size_t>(std::upper_bound(pts.begin(), pts.end(), tt,
+                                                            [](double v, const auto& p) { return v < p.first; }) -
+                                           pts.begin());
+            const CrdPointing* a0 = pts[k == 0 ? 0 : k - 1].second;
+            const CrdPointing* a1 = pts[k >= pts.size() ? pts.size() - 1 : k].second;
+            const double ta = pts[k == 0 ? 0 : k - 1].first, tb = pts[k >= pts.size() ? pts.size() - 1 : k].first;
+            const double u = tb > ta ? (tt - ta) / (tb - ta) : 0;
+            *el = (a0->elevationDeg + u * (a1->elevationDeg - a0->elevationDeg)) * M_PI / 180;
+            double daz = a1->azimuthDeg - a0->azimuthDeg;
+            if (daz > 180) daz -= 360;
+            if (daz < -180) daz += 360;
+            *az = std::fmod(a0->azimuthDeg + u * daz + 360.0, 360.0) * M_PI / 180;
+        };
+        for (size_t i = 0; i < t.size(); ++i) {
+            const CrdRange& r = pass.ranges[idx[i]];
+            double az = NAN, el = NAN;
+            angles(t[i], &az, &el);
+            res.epoch_s.push_back(t[i]);
+            res.oc_s.push_back(resid(static_cast<Eigen::Index>(i)) * 1e-3);
+            res.tof_s.push_back(r.tofS);
+            res.elevation_rad.push_back(el);
+            res.azimuth_rad.push_back(az);
+            res.refraction_s.push_back(0);
+            res.range_index.push_back(idx[i]);
+            res.line.push_back(r.line);
+            res.filter_flag.push_back(r.filterFlag);
+        }
+        res.warnings.push_back(name + ": no prediction: O-C is relative to a robust degree-" + std::to_string(degree) +
+                               " polynomial trend of the time of flight (a range bias and smooth drifts are absorbed)");
+        if (feedback) feedback->setProgress(1.0);
+        res.ok = true;
+    } catch (const std::exception& e) {
+        res = OcResult();
+        res.error = std::string("internal error: ") + e.what();
+    }
+    return res;
+}
+
+}  // namespace lwb::core::slr

@@ -1,0 +1,343 @@
+#include "core/slr/oc_csv.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <sys/stat.h>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/text.hpp"
+
+namespace lwb::core::slr {
+
+namespace {
+
+inline bool isBlank(char c) { return c == ' ' || c == '\t'; }
+
+std::string_view trimBlanks(std::string_view s) {
+    size_t b = 0, e = s.size();
+    while (b < e && isBlank(s[b])) ++b;
+    while (e > b && isBlank(s[e - 1])) --e;
+    return s.substr(b, e - b);
+}
+
+std::string excerpt(std::string_view s, size_t maxLen = 32) {
+    std::string out;
+    for (size_t i = 0; i < s.size() && i < maxLen; ++i) {
+        const unsigned char c = static_cast<unsigned char>(s[i]);
+        if (c >= 32 && c < 127) {
+            out += static_cast<char>(c);
+        } else {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", c);
+            out += buf;
+        }
+    }
+    if (s.size() > maxLen) out += "...";
+    return out;
+}
+
+/// Splits one line into fields (handles "quoted, fields" with "" escapes). Returns false on an
+/// unterminated quote. Fields are views into the line (quotes stripped; escaped quotes stay doubled,
+/// which no number contains anyway).
+bool splitLine(std::string_view line, std::vector<std::string_view>* out) {
+    out->clear();
+    size_t i = 0;
+    const size_t n = line.size();
+    while (true) {
+        size_t b = i;
+        while (b < n && isBlank(line[b])) ++b;
+        if (b < n && line[b] == '"') {
+            size_t j = b + 1;
+            while (true) {
+                if (j >= n) return false;
+                if (line[j] == '"') {
+                    if (j + 1 < n && line[j + 1] == '"') {
+                        j += 2;
+                        continue;
+                    }
+                    break;
+                }
+                ++j;
+            }
+            out->push_back(line.substr(b + 1, j - b - 1));
+            size_t k = j + 1;
+            while (k < n && line[k] != ',') ++k;  // anything after the closing quote up to the comma is dropped
+            if (k >= n) return true;
+            i = k + 1;
+            continue;
+        }
+        const void* comma = i < n ? std::memchr(line.data() + i, ',', n - i) : nullptr;
+        if (!comma) {
+            out->push_back(line.substr(i));
+            return true;
+        }
+        const size_t c = static_cast<size_t>(static_cast<const char*>(comma) - line.data());
+        out->push_back(line.substr(i, c - i));
+        i = c + 1;
+    }
+}
+
+/// Strict decimal number: optional sign, digits, point, exponent; finite.
+bool parseNumber(std::string_view s, double* out) {
+    s = trimBlanks(s);
+    if (s.empty()) return false;
+    const char* b = s.data();
+    const char* e = s.data() + s.size();
+    if (*b == '+') {
+        ++b;
+        if (b == e || *b == '-' || *b == '+') return false;
+    }
+    // Reject inf/nan spellings up front (from_chars would accept them).
+    const char c = (*b == '-' && b + 1 < e) ? b[1] : *b;
+    if (!((c >= '0' && c <= '9') || c == '.')) return false;
+    double v = 0;
+    const auto r = std::from_chars(b, e, v, std::chars_format::general);
+    if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v)) return false;
+    *out = v;
+    return true;
+}
+
+std::string lower(std::string_view s) { return toLower(trimBlanks(s)); }
+
+void appendNumber(std::string* out, double v) {
+    if (!std::isfinite(v)) return;
+    char buf[40];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    out->append(buf, static_cast<size_t>(r.ptr - buf));
+}
+
+}  // namespace
+
+std::string validate(const OcCsvParams& p) {
+    for (const auto& n : p.extraColumns) {
+        const std::string l = lower(n);
+        if (l.empty()) return "extra column names must not be empty";
+        if (l == "epoch_s" || l == "oc_s") return "epoch_s and oc_s are always read; not an extra column";
+    }
+    return {};
+}
+
+OcCsvReadResult parseOcCsv(std::string_view text, const std::string& source, const OcCsvParams& params) {
+    OcCsvReadResult res;
+    const std::string src = source.empty() ? "csv" : source;
+    auto at = [&](long line) { return src + ":" + std::to_string(line) + ": "; };
+    try {
+        if (const std::string e = validate(params); !e.empty()) {
+            res.error = e;
+            return res;
+        }
+        if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&
+            static_cast<unsigned char>(text[2]) == 0xBF)
+            text.remove_prefix(3);
+        std::vector<std::string_view> fields;
+        fields.reserve(16);
+        size_t pos = 0;
+        long lineNo = 0;
+        bool haveHeader = false;
+        size_t nCols = 0;
+        int cEpoch = -1, cOc = -1;
+        std::vector<int> cExtra;
+        OcTable& t = res.table;
+        // Rough row estimate for one allocation.
+        const size_t guess = std::min<size_t>(text.size() / 16 + 16, 50000000);
+        while (pos < text.size()) {
+            const void* nl = std::memchr(text.data() + pos, '\n', text.size() - pos);
+            const size_t end = nl ? static_cast<size_t>(static_cast<const char*>(nl) - text.data()) : text.size();
+            std::string_view line = text.substr(pos, end - pos);
+            pos = end + 1;
+            ++lineNo;
+            if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+            const std::string_view tl = trimBlanks(line);
+            if (tl.empty() || tl[0] == '#') continue;
+            if (std::memchr(line.data(), '\0', line.size())) {
+                res.error = at(lineNo) + "binary data (NUL byte): not a CSV text file";
+                return res;
+            }
+            if (!splitLine(line, &fields)) {
+                res.error = at(lineNo) + "unterminated quoted field";
+                return res;
+            }
+            if (!haveHeader) {
+                haveHeader = true;
+                nCols = fields.size();
+                for (size_t i = 0; i < fields.size(); ++i) {
+                    const std::string name = lower(fields[i]);
+                    if (name == "epoch_s") {
+                        if (cEpoch >= 0) {
+                            res.error = at(lineNo) + "column epoch_s appears twice";
+                            return res;
+                        }
+                        cEpoch = static_cast<int>(i);
+                    } else if (name == "oc_s") {
+                        if (cOc >= 0) {
+                            res.error = at(lineNo) + "column oc_s appears twice";
+                            return res;
+                        }
+                        cOc = static_cast<int>(i);
+                    }
+                }
+                if (cEpoch < 0 || cOc < 0) {
+                    res.error = at(lineNo) + "header must name the columns epoch_s and oc_s (found \"" + excerpt(line, 60) +
+                                "\")";
+                    return res;
+                }
+                for (const auto& want : params.extraColumns) {
+                    int found = -1;
+                    for (size_t i = 0; i < fields.size(); ++i)
+                        if (lower(fields[i]) == toLower(want)) found = static_cast<int>(i);
+                    if (found < 0) {
+                        res.error = at(lineNo) + "header has no column \"" + want + "\"";
+                        return res;
+                    }
+                    cExtra.push_back(found);
+                    t.extraNames.push_back(want);
+                }
+                t.extra.resize(cExtra.size());
+                t.epoch_s.reserve(guess);
+                t.oc_s.reserve(guess);
+                t.line.reserve(guess);
+                continue;
+            }
+            if (fields.size() != nCols) {
+                res.error = at(lineNo) + std::to_string(fields.size()) + " fields, the header has " + std::to_string(nCols);
+                return res;
+            }
+            double e = 0, o = 0;
+            if (!parseNumber(fields[static_cast<size_t>(cEpoch)], &e)) {
+                res.error = at(lineNo) + "epoch_s is not a finite number: \"" + excerpt(fields[static_cast<size_t>(cEpoch)]) + "\"";
+                return res;
+            }
+            if (!parseNumber(fields[static_cast<size_t>(cOc)], &o)) {
+                res.error = at(lineNo) + "oc_s is not a finite number: \"" + excerpt(fields[static_cast<size_t>(cOc)]) + "\"";
+                return res;
+            }
+            for (size_t k = 0; k < cExtra.size(); ++k) {
+                double v = NAN;
+                const std::string_view fv = fields[static_cast<size_t>(cExtra[k])];
+                if (!trimBlanks(fv).empty() && !parseNumber(fv, &v)) {
+                    res.error = at(lineNo) + t.extraNames[k] + " is not a finite number: \"" +
+                                excerpt(fields[static_cast<size_t>(cExtra[k])]) + "\"";
+                    return res;
+                }
+                t.extra[k].push_back(v);
+            }
+            t.epoch_s.push_back(e);
+            t.oc_s.push_back(o);
+            t.line.push_back(lineNo);
+        }
+        if (!haveHeader) {
+            res.error = src + ": empty file (no header line)";
+            return res;
+        }
+        if (t.epoch_s.empty()) {
+            res.error = src + ": no data rows after the header";
+            return res;
+        }
+        for (size_t i = 1; i < t.epoch_s.size(); ++i)
+            if (t.epoch_s[i] < t.epoch_s[i - 1]) {
+                res.warnings.push_back(at(t.line[i]) + "epochs are not in increasing order");
+                break;
+            }
+        res.ok = true;
+    } catch (const std::exception& e) {
+        res = OcCsvReadResult();
+        res.error = src + ": " + e.what();
+    }
+    return res;
+}
+
+OcCsvReadResult readOcCsv(const std::string& path, const OcCsvParams& params) {
+    OcCsvReadResult r;
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) {
+        r.error = path + ": " + std::strerror(errno);
+        return r;
+    }
+    if (S_ISDIR(st.st_mode)) {
+        r.error = path + ": is a folder, not a file";
+        return r;
+    }
+    FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) {
+        r.error = path + ": cannot open: " + std::strerror(errno);
+        return r;
+    }
+    std::string text;
+    try {
+        text.resize(static_cast<size_t>(st.st_size));
+        const size_t got = text.empty() ? 0 : std::fread(&text[0], 1, text.size(), f);
+        text.resize(got);
+        // A file that grew while being read, or a pipe: read the rest.
+        char buf[65536];
+        size_t more = 0;
+        while ((more = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, more);
+    } catch (const std::exception& e) {
+        std::fclose(f);
+        r.error = path + ": " + e.what();
+        return r;
+    }
+    std::fclose(f);
+    return parseOcCsv(text, path, params);
+}
+
+std::string formatOcCsv(const OcTable& table) {
+    std::string out = "epoch_s,oc_s";
+    for (const auto& n : table.extraNames) out += "," + n;
+    out += "\n";
+    out.reserve(out.size() + table.epoch_s.size() * (48 + 20 * table.extra.size()));
+    for (size_t i = 0; i < table.epoch_s.size(); ++i) {
+        appendNumber(&out, table.epoch_s[i]);
+        out += ',';
+        appendNumber(&out, i < table.oc_s.size() ? table.oc_s[i] : NAN);
+        for (const auto& col : table.extra) {
+            out += ',';
+            appendNumber(&out, i < col.size() ? col[i] : NAN);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+bool writeOcCsv(const std::string& path, const OcTable& table, std::string* error) {
+    try {
+        if (table.oc_s.size() != table.epoch_s.size() || table.extra.size() != table.extraNames.size()) {
+            if (error) *error = path + ": inconsistent O-C table (column sizes differ)";
+            return false;
+        }
+        for (const auto& c : table.extra)
+            if (c.size() != table.epoch_s.size()) {
+                if (error) *error = path + ": inconsistent O-C table (column sizes differ)";
+                return false;
+            }
+        for (const auto& n : table.extraNames)
+            if (n.empty() || n.find_first_of(",\"\r\n") != std::string::npos) {
+                if (error) *error = path + ": column name \"" + n + "\" is empty or holds a comma, quote or line break";
+                return false;
+            }
+        return writeFileAtomic(path, formatOcCsv(table), error);
+    } catch (const std::exception& e) {
+        if (error) *error = path + ": " + e.what();
+        return false;
+    }
+}
+
+OcTable ocTableFrom(const OcResult& oc) {
+    OcTable t;
+    t.epoch_s = oc.epoch_s;
+    t.oc_s = oc.oc_s;
+    t.line.assign(oc.epoch_s.size(), 0);
+    t.extraNames = {"elevation_deg", "filter_flag", "line"};
+    t.extra.resize(3);
+    for (size_t i = 0; i < oc.epoch_s.size(); ++i) {
+        t.extra[0].push_back(i < oc.elevation_rad.size() ? oc.elevation_rad[i] * 180.0 / M_PI : NAN);
+        t.extra[1].push_back(i < oc.filter_flag.size() ? oc.filter_flag[i] : NAN);
+        t.extra[2].push_back(i < oc.line.size() ? static_cast<double>(oc.line[i]) : NAN);
+    }
+    return t;
+}
+
+}  // namespace lwb::core::slr

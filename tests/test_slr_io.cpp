@@ -1,0 +1,935 @@
+// SLR file readers and writers: CRD (v1/v2), CPF, SINEX. Real ILRS files from
+// ../shared/data/slr (QSKIP when absent); small hand-written bad files in a QTemporaryDir.
+#include <QtTest>
+
+#include <QDate>
+#include <QRegularExpression>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "core/slr/cpf.hpp"
+#include "core/slr/crd.hpp"
+#include "core/slr/sinex.hpp"
+#include "core/slr/slr_time.hpp"
+#include "test_support.hpp"
+
+using namespace lwb::core::slr;
+
+namespace {
+
+const QStringList kCrdFiles = {"7080_Beacon-C_crd_071220_1715_0.frd", "7080_Beacon-C_crd_071220_1715_0.npt",
+                               "7080_JASON1_crd_071220_2033_0.frd",   "7080_JASON1_crd_071220_2033_0.npt",
+                               "7080_STELLA_crd_071220_2128_0.frd",   "7080_STELLA_crd_071220_2128_0.npt",
+                               "beaconc_20070511.frd",                "beaconc_20070511.npt",
+                               "blits_201206.frd",                    "hy2c_202109.fr2",
+                               "crd201_all_samples.crd"};
+
+/// Independent count, by regular expression on the raw text, of lines whose first field is `id`.
+int countLines(const QByteArray& text, const QString& id) {
+    const QRegularExpression re("^\\s*" + QRegularExpression::escape(id) + "(\\s|$)",
+                                QRegularExpression::CaseInsensitiveOption | QRegularExpression::MultilineOption);
+    int n = 0;
+    auto it = re.globalMatch(QString::fromUtf8(text));
+    while (it.hasNext()) {
+        it.next();
+        ++n;
+    }
+    return n;
+}
+
+/// Independent count of type-10 lines with a given filter flag (6th field).
+int countFlag(const QByteArray& text, int flag) {
+    int n = 0;
+    for (const QByteArray& raw : text.split('\n')) {
+        const QStringList f = QString::fromUtf8(raw).simplified().split(' ', Qt::SkipEmptyParts);
+        if (f.size() >= 6 && f[0] == "10" && f[5].toInt() == flag) ++n;
+    }
+    return n;
+}
+
+size_t countRanges(const CrdFile& f, int flag = -1) {
+    size_t n = 0;
+    for (const auto& p : f.passes)
+        for (const auto& r : p.ranges) n += flag < 0 || r.filterFlag == flag;
+    return n;
+}
+
+size_t countNormalPoints(const CrdFile& f) {
+    size_t n = 0;
+    for (const auto& p : f.passes) n += p.normalPoints.size();
+    return n;
+}
+
+template <class T, class M>
+size_t countParsed(const CrdFile& f, M member) {
+    size_t n = 0;
+    for (const auto& p : f.passes) n += (p.*member).size();
+    return n;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v) s += x + "\n";
+    return s;
+}
+
+/// True when a, b are the same double or both NaN.
+bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+/// Writes a small CRD file and reads it.
+CrdReadResult readText(const QTemporaryDir& dir, const QString& name, const QByteArray& text, QString* path = nullptr) {
+    const QString p = dir.filePath(name);
+    if (path) *path = p;
+    if (!lwbtest::writeText(p, text)) return CrdReadResult();
+    return readCrd(lwbtest::str(p));
+}
+
+/// A sound small v2 pass: lines 1..10.
+const QByteArray kGoodCrd =
+    "H1 CRD 2 2021 9 1 21\n"                                  // 1
+    "H2 GLSL 1824 81 1 4 EUROLAS\n"                           // 2
+    "H3 hy2c 2006601 2209 46469 0 1 1\n"                      // 3
+    "H4 0 2021 9 1 20 46 0 2021 9 1 20 47 19 0 0 0 0 1 0 2 1\n"  // 4
+    "C0 0 532.000 sys1 las1\n"                                // 5
+    "10 74760.420166021300 0.013024392652 sys1 2 2 0 0 0 na\n"  // 6
+    "10 74776.082358022497 0.013108658267 sys1 2 2 0 0 0 na\n"  // 7
+    "10 74777.099340164496 0.013115307576 sys1 2 2 0 0 0 na\n"  // 8
+    "H8\n"                                                    // 9
+    "H9\n";                                                   // 10
+
+QByteArray replaceLine(const QByteArray& text, int line, const QByteArray& with) {
+    QList<QByteArray> lines = text.split('\n');
+    lines[line - 1] = with;
+    return lines.join('\n');
+}
+
+}  // namespace
+
+class TestSlrIo : public QObject {
+    Q_OBJECT
+private slots:
+    // ---- CRD: every shared file ---------------------------------------------------------------
+    void everyCrdFileParses_data() {
+        QTest::addColumn<QString>("file");
+        for (const QString& f : kCrdFiles) QTest::newRow(f.toUtf8().constData()) << f;
+    }
+    void everyCrdFileParses() {
+        QFETCH(QString, file);
+        if (!lwbtest::haveShared("slr/" + file)) QSKIP("shared SLR data absent (../shared/data/slr)");
+        const QString path = lwbtest::sharedPath("slr/" + file);
+        const QByteArray raw = lwbtest::readAll(path);
+        const CrdReadResult r = readCrd(lwbtest::str(path));
+        QVERIFY2(r.ok, r.error.c_str());
+        // Counts against independent regex counts of the raw text.
+        QCOMPARE(static_cast<int>(r.file.passes.size()), countLines(raw, "h4"));
+        QCOMPARE(static_cast<int>(countRanges(r.file)), countLines(raw, "10"));
+        QCOMPARE(static_cast<int>(countNormalPoints(r.file)), countLines(raw, "11"));
+        QCOMPARE(static_cast<int>(countParsed<CrdRangeSupplement>(r.file, &CrdPass::supplements)), countLines(raw, "12"));
+        QCOMPARE(static_cast<int>(countParsed<CrdMeteo>(r.file, &CrdPass::meteo)), countLines(raw, "20"));
+        QCOMPARE(static_cast<int>(countParsed<CrdPointing>(r.file, &CrdPass::pointing)), countLines(raw, "30"));
+        QCOMPARE(static_cast<int>(countParsed<CrdCalibration>(r.file, &CrdPass::calibrations)),
+                 countLines(raw, "40") + countLines(raw, "41"));
+        QCOMPARE(static_cast<int>(countParsed<CrdSystemConfig>(r.file, &CrdPass::configs)), countLines(raw, "c0"));
+        // Every line is kept: records of all passes + trailer == lines of the file.
+        size_t lines = r.file.trailer.size();
+        for (const auto& p : r.file.passes) lines += p.records.size();
+        QCOMPARE(static_cast<int>(lines), static_cast<int>(raw.count('\n') + (raw.endsWith('\n') ? 0 : 1)));
+        // Filter flags against an independent count.
+        QCOMPARE(static_cast<int>(countRanges(r.file, 1)), countFlag(raw, 1));
+        QCOMPARE(static_cast<int>(countRanges(r.file, 2)), countFlag(raw, 2));
+        // Real station files need no warnings; the spec's sample file has one block without H8.
+        if (file != "crd201_all_samples.crd") QVERIFY2(r.warnings.empty(), joined(r.warnings).c_str());
+        for (const auto& p : r.file.passes) {
+            QVERIFY(!p.station.name.empty());
+            QVERIFY(p.station.cdpPadId > 0);
+            QVERIFY(!p.target.name.empty());
+            QVERIFY(validDate(p.session.startYear, p.session.startMonth, p.session.startDay));
+            QVERIFY(!p.ranges.empty() || !p.normalPoints.empty());
+            for (const auto& x : p.ranges) {
+                QVERIFY(x.record < p.records.size());
+                QCOMPARE(p.records[x.record].id, std::string("10"));
+                QCOMPARE(p.records[x.record].line, x.line);
+            }
+        }
+    }
+
+    /// The figures the data README states, and the station's own labels.
+    void readmeCounts_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("passes");
+        QTest::addColumn<int>("points");
+        QTest::addColumn<int>("signal");  // filter flag 2, -1: not checked
+        QTest::addColumn<int>("noise");   // filter flag 1
+        QTest::newRow("JASON1") << "7080_JASON1_crd_071220_2033_0.frd" << 1 << 259 << 59 << 200;
+        QTest::newRow("STELLA") << "7080_STELLA_crd_071220_2128_0.frd" << 1 << 236 << 150 << 86;
+        QTest::newRow("Beacon-C") << "7080_Beacon-C_crd_071220_1715_0.frd" << 1 << 96 << 50 << 46;
+        QTest::newRow("beaconc 3 passes") << "beaconc_20070511.frd" << 3 << 386 << 237 << 149;
+        QTest::newRow("blits") << "blits_201206.frd" << 54 << 33601 << -1 << 0;
+        QTest::newRow("hy2c") << "hy2c_202109.fr2" << 6 << 143 << -1 << -1;
+    }
+    void readmeCounts() {
+        QFETCH(QString, file);
+        QFETCH(int, passes);
+        QFETCH(int, points);
+        QFETCH(int, signal);
+        QFETCH(int, noise);
+        if (!lwbtest::haveShared("slr/" + file)) QSKIP("shared SLR data absent");
+        const CrdReadResult r = readCrd(lwbtest::str(lwbtest::sharedPath("slr/" + file)));
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(static_cast<int>(r.file.passes.size()), passes);
+        QCOMPARE(static_cast<int>(countRanges(r.file)), points);
+        if (signal >= 0) QCOMPARE(static_cast<int>(countRanges(r.file, 2)), signal);
+        if (noise >= 0) QCOMPARE(static_cast<int>(countRanges(r.file, 1)), noise);
+    }
+
+    /// Fields of known records, read off the files themselves.
+    void fieldValues() {
+        if (!lwbtest::haveShared("slr/hy2c_202109.fr2")) QSKIP("shared SLR data absent");
+        const CrdReadResult r = readCrd(lwbtest::str(lwbtest::sharedPath("slr/hy2c_202109.fr2")));
+        QVERIFY2(r.ok, r.error.c_str());
+        const CrdPass& p = r.file.passes.front();
+        // "H1 CRD 02 2021  9  1 21"
+        QCOMPARE(p.format.version, 2);
+        // "H2       GLSL 1824 81  1  4 EUROLAS"
+        QCOMPARE(p.station.name, std::string("GLSL"));
+        QCOMPARE(p.station.cdpPadId, 1824);
+        QCOMPARE(p.station.cdpSystem, 81);
+        QCOMPARE(p.station.cdpOccupancy, 1);
+        QCOMPARE(p.station.timeScale, 4);
+        QCOMPARE(p.station.network, std::string("EUROLAS"));
+        // "H3       hy2c 2006601 2209 46469 0 1 1"
+        QCOMPARE(p.target.name, std::string("hy2c"));
+        QCOMPARE(p.target.ilrsId, std::string("2006601"));
+        QCOMPARE(p.target.sic, 2209L);
+        QCOMPARE(p.target.norad, 46469L);
+        QCOMPARE(p.target.targetType, 1);
+        QCOMPARE(p.target.targetClass, 1);
+        // "H4 0 2021  9  1 20 46  0 2021  9  1 20 47 19  0 0 0 0 1 0 2 1"
+        QCOMPARE(p.session.dataType, 0);
+        QCOMPARE(p.session.startHour, 20);
+        QCOMPARE(p.session.startMinute, 46);
+        QCOMPARE(p.session.endSecond, 19);
+        QCOMPARE(p.session.stationDelayApplied, 1);
+        QCOMPARE(p.session.rangeType, 2);
+        QCOMPARE(p.session.qualityAlert, 1);
+        QCOMPARE(p.startMjd(), 59458L);  // 2021-09-01 (MJD of 2000-01-01 is 51544; +7914 days)
+        // "C0 0    532.000 sys1 las1 det1 tim1 none"
+        QCOMPARE(p.configs.size(), size_t(1));
+        QCOMPARE(p.configs[0].wavelengthNm, 532.0);
+        QVERIFY(p.config("SYS1") != nullptr);  // ids compare case-insensitively
+        // "10 74760.420166021300     0.013024392652 sys1 2 2 0 0     0 na"
+        const CrdRange& x = p.ranges.front();
+        QCOMPARE(x.secOfDay, 74760.4201660213);
+        QCOMPARE(x.tofS, 0.013024392652);
+        QCOMPARE(x.configId, std::string("sys1"));
+        QCOMPARE(x.epochEvent, 2);
+        QCOMPARE(x.filterFlag, 2);
+        QCOMPARE(x.receiveAmplitude, 0.0);
+        QVERIFY(std::isnan(x.transmitAmplitude));  // "na"
+        // "20 74760.420166021300  990.10 288.40   92 1"
+        QCOMPARE(p.meteo.front().pressureMbar, 990.10);
+        QCOMPARE(p.meteo.front().temperatureK, 288.40);
+        QCOMPARE(p.meteo.front().humidityPct, 92.0);
+        QCOMPARE(p.meteo.front().origin, 1);
+        // "40 72713.000000000000 0 sys1      766      264   8.943   217074.0 ..."
+        QCOMPARE(p.calibrations.front().systemDelayPs, 217074.0);
+        QCOMPARE(p.calibrations.front().pointsRecorded, 766L);
+        QVERIFY(!p.calibrations.front().detail);
+        QVERIFY(p.calibrations[1].detail);  // the 41 records
+    }
+
+    /// crd201_all_samples.crd: the specification's samples hold every record type.
+    void everyRecordTypePresent() {
+        if (!lwbtest::haveShared("slr/crd201_all_samples.crd")) QSKIP("shared SLR data absent");
+        const CrdReadResult r = readCrd(lwbtest::str(lwbtest::sharedPath("slr/crd201_all_samples.crd")));
+        QVERIFY2(r.ok, r.error.c_str());
+        std::set<std::string> ids;
+        for (const auto& p : r.file.passes)
+            for (const auto& rec : p.records) ids.insert(rec.id);
+        for (const auto& rec : r.file.trailer) ids.insert(rec.id);
+        for (const char* id : {"h1", "h2", "h3", "h4", "h5", "h8", "h9", "c0", "c1", "c2", "c3", "c4", "c5", "c6", "c7",
+                               "10", "11", "12", "20", "21", "30", "40", "41", "42", "50", "91", "92", "93", "00"})
+            QVERIFY2(ids.count(id), id);
+        // Upper- and lower-case ids, v1 and v2 blocks.
+        std::set<int> versions;
+        for (const auto& p : r.file.passes) versions.insert(p.format.version);
+        QVERIFY(versions.count(1) && versions.count(2));
+        bool upper = false, lower = false;
+        for (const auto& p : r.file.passes) {
+            upper |= p.session.text.rfind("H4", 0) == 0;
+            lower |= p.session.text.rfind("h4", 0) == 0;
+        }
+        QVERIFY(upper && lower);
+        // Parsed samples: the first full-rate record "10 55432.0414338 0.047960587856 std1 2 0 0 0 na na".
+        const CrdRange& x = r.file.passes.front().ranges.front();
+        QCOMPARE(x.secOfDay, 55432.0414338);
+        QCOMPARE(x.tofS, 0.047960587856);
+        QCOMPARE(x.filterFlag, 0);
+        QVERIFY(std::isnan(x.receiveAmplitude));
+        // A v2 normal point with SNR: "11  2726.697640514675 0.013737698432 std 2 15 1 72.7 1.494 -0.536 -32.4 0.67 0 20.7"
+        bool found = false;
+        for (const auto& p : r.file.passes)
+            for (const auto& n : p.normalPoints)
+                if (n.secOfDay == 2726.697640514675) {
+                    found = true;
+                    QCOMPARE(n.windowS, 15.0);
+                    QCOMPARE(n.numRanges, 1);
+                    QCOMPARE(n.binRmsPs, 72.7);
+                    QCOMPARE(n.skew, 1.494);
+                    QCOMPARE(n.kurtosis, -0.536);
+                    QCOMPARE(n.peakMinusMeanPs, -32.4);
+                    QCOMPARE(n.returnRatePct, 0.67);
+                    QCOMPARE(n.detectorChannel, 0);
+                    QCOMPARE(n.snr, 20.7);
+                }
+        QVERIFY(found);
+        // The free-format sample: "File 1" has no h8 before "File 2"'s h1: a warning naming the line.
+        QCOMPARE(r.warnings.size(), size_t(1));
+        QVERIFY2(r.warnings[0].find("crd201_all_samples.crd:202:") != std::string::npos, r.warnings[0].c_str());
+        // Pointing (30) of the full-rate block: "30 2717.996 326.8923 32.9177 0 1 1 na na"
+        bool p30 = false;
+        for (const auto& p : r.file.passes)
+            for (const auto& a : p.pointing)
+                if (a.secOfDay == 2717.996) {
+                    p30 = true;
+                    QCOMPARE(a.azimuthDeg, 326.8923);
+                    QCOMPARE(a.elevationDeg, 32.9177);
+                    QVERIFY(std::isnan(a.azimuthRate));
+                }
+        QVERIFY(p30);
+    }
+
+    /// Several passes per file with repeated H1..H3, and the day roll-over rule.
+    void passesAndEpochs() {
+        if (!lwbtest::haveShared("slr/beaconc_20070511.frd")) QSKIP("shared SLR data absent");
+        const CrdReadResult r = readCrd(lwbtest::str(lwbtest::sharedPath("slr/beaconc_20070511.frd")));
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.file.passes.size(), size_t(3));
+        // One h1/h2/h3 at the top; the second and third h4 blocks inherit them.
+        QVERIFY(!r.file.passes[0].inheritsHeaders);
+        QVERIFY(r.file.passes[1].inheritsHeaders);
+        QVERIFY(r.file.passes[2].inheritsHeaders);
+        QCOMPARE(r.file.passes[2].station.cdpPadId, 7080);
+        QCOMPARE(r.file.passes[2].target.name, std::string("Beacon-C"));
+        for (const auto& p : r.file.passes) {
+            QVERIFY(p.endedWithH8);
+            // Every epoch lies within the H4 start..end window (1 s margin).
+            const double start = p.session.startHour * 3600 + p.session.startMinute * 60 + p.session.startSecond;
+            const double end = p.session.endHour * 3600 + p.session.endMinute * 60 + p.session.endSecond;
+            for (const auto& x : p.ranges) {
+                QVERIFY(p.passSeconds(x.secOfDay) >= start - 1);
+                QVERIFY(p.passSeconds(x.secOfDay) <= end + 1);
+            }
+        }
+        // Roll-over: a pass that starts at 23:50 and has a record at 00:01:40.
+        CrdPass p;
+        p.session.startYear = 2020, p.session.startMonth = 1, p.session.startDay = 1;
+        p.session.startHour = 23, p.session.startMinute = 50;
+        QCOMPARE(p.passSeconds(100.0), 86500.0);
+        QCOMPARE(p.passSeconds(85810.0), 85810.0);
+        QCOMPARE(p.passSeconds(85700.0), 85700.0);  // a record 10 min before the H4 start stays on that day
+    }
+
+    // ---- CRD: write back -------------------------------------------------------------------------
+    void roundTrip_data() { everyCrdFileParses_data(); }
+    void roundTrip() {
+        QFETCH(QString, file);
+        if (!lwbtest::haveShared("slr/" + file)) QSKIP("shared SLR data absent");
+        const QString path = lwbtest::sharedPath("slr/" + file);
+        const CrdReadResult a = readCrd(lwbtest::str(path));
+        QVERIFY2(a.ok, a.error.c_str());
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const std::string out = lwbtest::str(dir.filePath("copy.crd"));
+        std::string err;
+        QVERIFY2(writeCrd(out, a.file, &err), err.c_str());
+        QCOMPARE(lwbtest::filesIn(dir.path()), QStringList{"copy.crd"});  // no temporary left behind
+        // Byte-identical copy (CRLF files stay CRLF); a missing line end after the last line is added.
+        QByteArray original = lwbtest::readAll(path);
+        if (!original.endsWith('\n')) original += a.file.crlf ? "\r\n" : "\n";
+        QCOMPARE(lwbtest::readAll(QString::fromStdString(out)), original);
+        const CrdReadResult b = readCrd(out);
+        QVERIFY2(b.ok, b.error.c_str());
+        QCOMPARE(b.file.passes.size(), a.file.passes.size());
+        for (size_t k = 0; k < a.file.passes.size(); ++k) {
+            const CrdPass &pa = a.file.passes[k], &pb = b.file.passes[k];
+            QCOMPARE(pb.records.size(), pa.records.size());
+            for (size_t i = 0; i < pa.records.size(); ++i) {
+                QCOMPARE(pb.records[i].text, pa.records[i].text);
+                QCOMPARE(pb.records[i].line, pa.records[i].line);
+            }
+            QCOMPARE(pb.ranges.size(), pa.ranges.size());
+            for (size_t i = 0; i < pa.ranges.size(); ++i) {
+                QCOMPARE(pb.ranges[i].secOfDay, pa.ranges[i].secOfDay);
+                QCOMPARE(pb.ranges[i].tofS, pa.ranges[i].tofS);
+                QCOMPARE(pb.ranges[i].filterFlag, pa.ranges[i].filterFlag);
+                QVERIFY(same(pb.ranges[i].receiveAmplitude, pa.ranges[i].receiveAmplitude));
+            }
+            QCOMPARE(pb.normalPoints.size(), pa.normalPoints.size());
+            QCOMPARE(pb.meteo.size(), pa.meteo.size());
+        }
+        QCOMPARE(b.file.trailer.size(), a.file.trailer.size());
+    }
+
+    /// Writing an LF file without a final line end adds one; nothing else changes.
+    void roundTripNoFinalNewline() {
+        QTemporaryDir dir;
+        QByteArray text = kGoodCrd;
+        text.chop(1);
+        const CrdReadResult a = readText(dir, "nofinal.fr2", text);
+        QVERIFY2(a.ok, a.error.c_str());
+        QCOMPARE(QByteArray::fromStdString(formatCrd(a.file)), kGoodCrd);
+    }
+
+    void setFilterFlagsChangesOnlyTheFlag() {
+        if (!lwbtest::haveShared("slr/7080_JASON1_crd_071220_2033_0.frd")) QSKIP("shared SLR data absent");
+        CrdReadResult a = readCrd(lwbtest::str(lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd")));
+        QVERIFY2(a.ok, a.error.c_str());
+        CrdPass& p = a.file.passes.front();
+        const CrdPass before = p;
+        std::vector<int> flags;
+        for (const auto& r : p.ranges) flags.push_back(r.filterFlag == 2 ? 1 : 2);  // swap the classes
+        std::string err;
+        QVERIFY(!setFilterFlags(&p, std::vector<int>(flags.size() - 1, 2), &err));  // wrong size
+        QVERIFY(!err.empty());
+        QVERIFY(!setFilterFlags(&p, std::vector<int>(flags.size(), 3), &err));      // not a class
+        QVERIFY2(setFilterFlags(&p, flags, &err), err.c_str());
+        QTemporaryDir dir;
+        const std::string out = lwbtest::str(dir.filePath("flags.frd"));
+        QVERIFY2(writeCrd(out, a.file, &err), err.c_str());
+        const CrdReadResult b = readCrd(out);
+        QVERIFY2(b.ok, b.error.c_str());
+        QCOMPARE(countRanges(b.file, 2), size_t(200));
+        QCOMPARE(countRanges(b.file, 1), size_t(59));
+        const CrdPass& q = b.file.passes.front();
+        QCOMPARE(q.records.size(), before.records.size());
+        for (size_t i = 0; i < q.records.size(); ++i) {
+            if (q.records[i].id != "10") {
+                QCOMPARE(q.records[i].text, before.records[i].text);
+                continue;
+            }
+            // Same fields except the 6th; same spacing.
+            QStringList fa = QString::fromStdString(before.records[i].text).split(' ');
+            QStringList fb = QString::fromStdString(q.records[i].text).split(' ');
+            QCOMPARE(fb.size(), fa.size());
+            int diffs = 0;
+            for (int k = 0; k < fa.size(); ++k) diffs += fa[k] != fb[k];
+            QCOMPARE(diffs, 1);
+        }
+        for (size_t i = 0; i < q.ranges.size(); ++i) {
+            QCOMPARE(q.ranges[i].filterFlag, flags[i]);
+            QCOMPARE(q.ranges[i].tofS, before.ranges[i].tofS);
+        }
+    }
+
+    void normalPointsWrittenAndReadBack() {
+        if (!lwbtest::haveShared("slr/7080_JASON1_crd_071220_2033_0.npt")) QSKIP("shared SLR data absent");
+        const CrdReadResult np = readCrd(lwbtest::str(lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.npt")));
+        const CrdReadResult fr = readCrd(lwbtest::str(lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd")));
+        QVERIFY2(np.ok && fr.ok, (np.error + fr.error).c_str());
+        const std::vector<CrdNormalPoint> station = np.file.passes.front().normalPoints;  // the station's own NPs
+        QCOMPARE(station.size(), size_t(11));
+        std::vector<CrdNormalPoint> mine = station;
+        mine[0].snr = 12.5;
+        mine[1].binRmsPs = NAN;  // absent value
+        for (int version : {2, 1}) {
+            CrdPass src = fr.file.passes.front();
+            src.format.version = version;
+            CrdPass out;
+            std::string err;
+            QVERIFY2(makeNormalPointPass(src, mine, &out, &err), err.c_str());
+            CrdFile f;
+            f.passes.push_back(out);
+            QTemporaryDir dir;
+            const std::string path = lwbtest::str(dir.filePath("made.npt"));
+            QVERIFY2(writeCrd(path, f, &err), err.c_str());
+            const CrdReadResult back = readCrd(path);
+            QVERIFY2(back.ok, back.error.c_str());
+            const CrdPass& b = back.file.passes.front();
+            QCOMPARE(b.session.dataType, 1);  // H4 data type set to normal point
+            QVERIFY(b.ranges.empty());
+            QVERIFY(b.pointing.empty());
+            QCOMPARE(b.meteo.size(), src.meteo.size());  // met and calibration records kept
+            QCOMPARE(b.calibrations.size(), src.calibrations.size());
+            QCOMPARE(b.normalPoints.size(), mine.size());
+            for (size_t i = 0; i < mine.size(); ++i) {
+                const CrdNormalPoint &a = mine[i], &c = b.normalPoints[i];
+                // Written with 12 decimals: 1 ps in time of flight, 1 ps in epoch (plus the double's own step).
+                QVERIFY(std::fabs(c.secOfDay - a.secOfDay) < 1e-9);
+                QVERIFY(std::fabs(c.tofS - a.tofS) < 1e-12);
+                QCOMPARE(c.configId, a.configId);
+                QCOMPARE(c.epochEvent, a.epochEvent);
+                QCOMPARE(c.windowS, a.windowS);
+                QCOMPARE(c.numRanges, a.numRanges);
+                if (i == 1) {
+                    if (version >= 2) QVERIFY(std::isnan(c.binRmsPs));  // "na"
+                    else QCOMPARE(c.binRmsPs, -1.0);                    // v1 has no "na": -1
+                } else {
+                    QVERIFY(std::fabs(c.binRmsPs - a.binRmsPs) < 0.05 + 1e-9);  // 1 decimal
+                }
+                QVERIFY(std::fabs(c.skew - a.skew) < 5e-4 + 1e-9);  // 3 decimals
+                QVERIFY(std::fabs(c.returnRatePct - a.returnRatePct) < 5e-3 + 1e-9);
+                if (i == 0 && version >= 2) QCOMPARE(c.snr, 12.5);
+                if (version < 2) QVERIFY(std::isnan(c.snr));  // v1 has no SNR field
+            }
+        }
+        // Replace and append in place on the station's NP pass.
+        CrdPass p = np.file.passes.front();
+        const size_t records = p.records.size();
+        std::string err;
+        std::vector<CrdNormalPoint> three(station.begin(), station.begin() + 3);
+        QVERIFY2(setNormalPoints(&p, three, NormalPointMode::Replace, &err), err.c_str());
+        QCOMPARE(p.normalPoints.size(), size_t(3));
+        QCOMPARE(p.records.size(), records - 8);
+        QVERIFY2(setNormalPoints(&p, three, NormalPointMode::Append, &err), err.c_str());
+        QCOMPARE(p.normalPoints.size(), size_t(6));
+        QCOMPARE(p.records.back().id, std::string("h8"));  // still closed by its H8
+        std::vector<CrdNormalPoint> bad = three;
+        bad[2].tofS = NAN;
+        QVERIFY(!setNormalPoints(&p, bad, NormalPointMode::Replace, &err));
+        QVERIFY2(err.find("normal point 2") != std::string::npos, err.c_str());
+        QCOMPARE(p.normalPoints.size(), size_t(6));  // unchanged by the refused call
+    }
+
+    // ---- CRD: bad input --------------------------------------------------------------------------
+    void goodSmallFile() {
+        QTemporaryDir dir;
+        const CrdReadResult r = readText(dir, "good.fr2", kGoodCrd);
+        QVERIFY2(r.ok, r.error.c_str());
+        QVERIFY(r.warnings.empty());
+        QCOMPARE(r.file.passes.front().ranges.size(), size_t(3));
+    }
+
+    /// A bad record inside a sound pass: skipped with a warning that names file and line.
+    void badRecordWarns_data() {
+        QTest::addColumn<QByteArray>("line6");
+        QTest::addColumn<QString>("what");
+        QTest::newRow("truncated line") << QByteArray("10 74760.42") << "missing";
+        QTest::newRow("text in a number") << QByteArray("10 74760.420166021300 0.0130x4392652 sys1 2 2 0 0 0 na")
+                                          << "not a finite number";
+        QTest::newRow("NaN tof") << QByteArray("10 74760.420166021300 NaN sys1 2 2 0 0 0 na") << "not a finite number";
+        QTest::newRow("nan epoch") << QByteArray("10 nan 0.013024392652 sys1 2 2 0 0 0 na") << "not a finite number";
+        QTest::newRow("inf amplitude") << QByteArray("10 74760.420166021300 0.013024392652 sys1 2 2 0 0 inf na")
+                                       << "not a finite number";
+        QTest::newRow("na tof") << QByteArray("10 74760.420166021300 na sys1 2 2 0 0 0 na") << "\"na\"";
+        QTest::newRow("bad flag") << QByteArray("10 74760.420166021300 0.013024392652 sys1 2 7 0 0 0 na")
+                                  << "filter flag";
+        QTest::newRow("negative tof") << QByteArray("10 74760.420166021300 -0.013 sys1 2 2 0 0 0 na") << "outside";
+        QTest::newRow("day overflow") << QByteArray("10 99999.5 0.013024392652 sys1 2 2 0 0 0 na") << "outside";
+        QTest::newRow("unknown record") << QByteArray("77 garbage here") << "unknown record type";
+    }
+    void badRecordWarns() {
+        QFETCH(QByteArray, line6);
+        QFETCH(QString, what);
+        QTemporaryDir dir;
+        QString path;
+        const CrdReadResult r = readText(dir, "bad.fr2", replaceLine(kGoodCrd, 6, line6), &path);
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.file.passes.front().ranges.size(), size_t(2));  // the two sound records are kept
+        QCOMPARE(r.warnings.size(), size_t(1));
+        const QString w = QString::fromStdString(r.warnings[0]);
+        QVERIFY2(w.startsWith(path + ":6: "), r.warnings[0].c_str());
+        QVERIFY2(w.contains(what), r.warnings[0].c_str());
+        // The bad line is still written back: nothing is lost.
+        QCOMPARE(QByteArray::fromStdString(formatCrd(r.file)), replaceLine(kGoodCrd, 6, line6));
+    }
+
+    /// Files that cannot be read: a clear error that names file and line.
+    void badFileErrors_data() {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<QString>("where");  // ":LINE:" or "" for file-level errors
+        QTest::addColumn<QString>("what");
+        QTest::newRow("empty file") << QByteArray() << "" << "empty file";
+        QTest::newRow("blank lines only") << QByteArray("\n  \n\r\n") << "" << "empty file";
+        QTest::newRow("data before any H4")
+            << QByteArray("H1 CRD 2 2021 9 1 21\nH2 GLSL 1824 81 1 4 EUROLAS\nH3 hy2c 2006601 2209 46469 0 1 1\n"
+                          "10 74760.42 0.0130 sys1 2 2 0 0 0 na\nH8\n")
+            << ":4:" << "no H4";
+        QTest::newRow("data before the H1") << QByteArray("10 74760.42 0.0130 sys1 2 2 0 0 0 na\n") << ":1:" << "H1";
+        QTest::newRow("H4 before H1") << QByteArray("H4 0 2021 9 1 20 46 0 2021 9 1 20 47 19 0 0 0 0 1 0 2 1\n")
+                                      << ":1:" << "before any H1";
+        QTest::newRow("H4 without H2") << QByteArray("H1 CRD 2 2021 9 1 21\nH3 hy2c 2006601 2209 46469 0 1 1\n"
+                                                     "H4 0 2021 9 1 20 46 0 2021 9 1 20 47 19 0 0 0 0 1 0 2 1\n")
+                                       << ":3:" << "H2";
+        QTest::newRow("pass with zero data records")
+            << replaceLine(replaceLine(replaceLine(kGoodCrd, 6, "00 gone"), 7, "00 gone"), 8, "00 gone") << ":4:"
+            << "no readable range record";
+        QTest::newRow("pass whose only data are bad")
+            << replaceLine(replaceLine(replaceLine(kGoodCrd, 6, "10 x"), 7, "10 y"), 8, "10 z") << ":4:"
+            << "no readable range record";
+        QTest::newRow("bad H4 date") << replaceLine(kGoodCrd, 4, "H4 0 2021 13 1 20 46 0 2021 9 1 20 47 19 0 0 0 0 1 0 2 1")
+                                     << ":4:" << "not a valid date";
+        QTest::newRow("truncated H4") << replaceLine(kGoodCrd, 4, "H4 0 2021 9 1 20") << ":4:" << "H4 needs";
+        QTest::newRow("NaN in H4") << replaceLine(kGoodCrd, 4, "H4 0 2021 nan 1 20 46 0 2021 9 1 20 47 19 0 0 0 0 1 0 2 1")
+                                   << ":4:" << "not an integer";
+        QTest::newRow("binary garbage with NUL")
+            << QByteArray("\x7f" "ELF\x02\x01\x01\x00\x00\x00\n\xff\xfe\x00\x01", 16) << ":1:" << "binary data";
+        QTest::newRow("binary garbage without NUL") << QByteArray("\xff\xd8\xff\xe0 JFIF\n\x89PNG\r\n") << ":1:"
+                                                    << "not a CRD record";
+        QTest::newRow("a CSV file") << QByteArray("epoch_s,oc_s\n1,2\n") << ":1:" << "not a CRD record";
+    }
+    void badFileErrors() {
+        QFETCH(QByteArray, text);
+        QFETCH(QString, where);
+        QFETCH(QString, what);
+        QTemporaryDir dir;
+        QString path;
+        const CrdReadResult r = readText(dir, "bad.crd", text, &path);
+        QVERIFY(!r.ok);
+        QVERIFY(r.file.passes.empty());
+        const QString e = QString::fromStdString(r.error);
+        QVERIFY2(e.startsWith(path + (where.isEmpty() ? QString(":") : where)), r.error.c_str());
+        QVERIFY2(e.contains(what), r.error.c_str());
+    }
+
+    void missingFileAndFolder() {
+        const CrdReadResult a = readCrd("/nonexistent/x.frd");
+        QVERIFY(!a.ok);
+        QVERIFY(a.error.find("/nonexistent/x.frd") != std::string::npos);
+        QTemporaryDir dir;
+        const CrdReadResult b = readCrd(lwbtest::str(dir.path()));
+        QVERIFY(!b.ok);
+        QVERIFY2(b.error.find("folder") != std::string::npos, b.error.c_str());
+    }
+
+    /// Passes closed without H8, and H1..H3 inherited by a following H4.
+    void structureVariants() {
+        QTemporaryDir dir;
+        const QByteArray text = "00 leading comment\n"
+                                "h1 crd 1 2021 9 1 21\nh2 GLSL 1824 81 1 4\nh3 hy2c 2006601 2209 46469 0 1\n"
+                                "h4 0 2021 9 1 20 46 0 2021 9 1 20 47 19 0 0 0 0 1 0 2 0\n"
+                                "10 74760.4 0.0130 sys1 2 2 0 0\n"
+                                "h4 0 2021 9 1 21 46 0 2021 9 1 21 47 19 0 0 0 0 1 0 2 0\n"  // line 7: new H4, no H8
+                                "10 78360.4 0.0131 sys1 2 1\n"
+                                "93 user record kept\n"
+                                "h8\n";
+        const CrdReadResult r = readText(dir, "variants.frd", text);
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.file.passes.size(), size_t(2));
+        QVERIFY(!r.file.passes[0].endedWithH8);
+        QVERIFY(r.file.passes[1].endedWithH8);
+        QVERIFY(!r.file.passes[0].inheritsHeaders);
+        QVERIFY(r.file.passes[1].inheritsHeaders);
+        QCOMPARE(r.file.passes[1].station.cdpPadId, 1824);
+        QCOMPARE(r.file.passes[1].ranges.front().filterFlag, 1);
+        QCOMPARE(r.file.passes[1].ranges.front().detectorChannel, kCrdAbsent);  // v1 short record
+        QCOMPARE(r.warnings.size(), size_t(1));
+        QVERIFY2(r.warnings[0].find(":7:") != std::string::npos, r.warnings[0].c_str());
+        QCOMPARE(QByteArray::fromStdString(formatCrd(r.file)), text);
+        // A normal-point pass made from the second one carries the inherited headers.
+        CrdPass np;
+        std::string err;
+        CrdNormalPoint n;
+        n.secOfDay = 78360.4;
+        n.tofS = 0.0131;
+        n.windowS = 5;
+        n.numRanges = 1;
+        QVERIFY2(makeNormalPointPass(r.file.passes[1], {n}, &np, &err), err.c_str());
+        QCOMPARE(np.records.front().id, std::string("h1"));
+        QVERIFY(!np.inheritsHeaders);
+    }
+
+    void cancelStopsTheRead() {
+        lwb::core::Feedback fb;
+        fb.cancel();
+        const CrdReadResult r = parseCrd(kGoodCrd.toStdString(), "mem", {}, &fb);
+        QVERIFY(!r.ok);
+        QVERIFY2(r.error.find("cancelled") != std::string::npos, r.error.c_str());
+    }
+
+    /// Inputs the fuzzer produced: each once crashed, leaked or hung (see docs/fuzzing.md).
+    void fuzzRegressions_data() {
+        QTest::addColumn<QByteArray>("bytes");
+        // Fuzz run 1 (docs/fuzzing.md): an LF file with a line ending "\r\r\n" read back differently after writing
+        // (one CR stripped, the other written before an LF and stripped on the next read).
+        QTest::newRow("double CR before LF") << replaceLine(kGoodCrd, 6, QByteArray(
+            "10 74760.420166021300 0.013024392652 sys1 2 2 0 0 0 na\r\r"));
+    }
+    void fuzzRegressions() {
+        QFETCH(QByteArray, bytes);
+        const std::string_view s(bytes.constData(), static_cast<size_t>(bytes.size()));
+        const CrdReadResult c = parseCrd(s, "fuzz");
+        if (c.ok) {
+            // The fuzz target's invariant: written and read back, the same records and the same text.
+            const std::string written = formatCrd(c.file);
+            const CrdReadResult again = parseCrd(written, "fuzz");
+            QVERIFY(again.ok);
+            QCOMPARE(again.file.passes.size(), c.file.passes.size());
+            for (size_t k = 0; k < c.file.passes.size(); ++k) {
+                QCOMPARE(again.file.passes[k].records.size(), c.file.passes[k].records.size());
+                for (size_t i = 0; i < c.file.passes[k].records.size(); ++i)
+                    QCOMPARE(again.file.passes[k].records[i].text, c.file.passes[k].records[i].text);
+            }
+            QCOMPARE(formatCrd(again.file), written);
+        } else {
+            QVERIFY(!c.error.empty());
+        }
+        const CpfReadResult p = parseCpf(s, "fuzz");
+        QVERIFY(p.ok || !p.error.empty());
+        const SinexReadResult x = parseSinex(s, "fuzz");
+        QVERIFY(x.ok || !x.error.empty());
+    }
+
+    // ---- CPF ------------------------------------------------------------------------------------
+    void cpfReads() {
+        if (!lwbtest::haveShared("slr/blits_cpf_120626_6801.hts")) QSKIP("shared SLR data absent");
+        const QString path = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts");
+        const CpfReadResult r = readCpf(lwbtest::str(path));
+        QVERIFY2(r.ok, r.error.c_str());
+        QVERIFY(r.warnings.empty());
+        QCOMPARE(static_cast<int>(r.file.positions.size()), countLines(lwbtest::readAll(path), "10"));
+        // "H1 CPF  1  HTS 2012  6 26 12  6801 blits            NONE"
+        const CpfHeader& h = r.file.header;
+        QCOMPARE(h.version, 1);
+        QCOMPARE(h.source, std::string("HTS"));
+        QCOMPARE(h.targetName, std::string("blits"));
+        QCOMPARE(h.sequence, std::string("6801"));
+        // "H2  0904907 5558    35871 2012 06 26  0  0  0 2012 07 01  0  0  0   240 1 1  0 0 1"
+        QCOMPARE(h.ilrsId, std::string("0904907"));
+        QCOMPARE(h.norad, 35871L);
+        QCOMPARE(h.stepS, 240.0);
+        QCOMPARE(h.startMjd, mjdFromDate(2012, 6, 26));
+        QCOMPARE(h.endMjd, mjdFromDate(2012, 7, 1));
+        QCOMPARE(h.comApplied, 1);
+        // "10 0 56103  85200.00000  0    -490800.267    1737692.785   -6977919.039"
+        const CpfPosition& p0 = r.file.positions.front();
+        QCOMPARE(p0.mjd, 56103L);
+        QCOMPARE(p0.sod, 85200.0);
+        QCOMPARE(p0.position.x(), -490800.267);
+        QCOMPARE(p0.position.z(), -6977919.039);
+        QCOMPARE(mjdFromDate(2012, 6, 25), 56103L);  // the first record is 25 June 23:40
+    }
+
+    void cpfInterpolation() {
+        if (!lwbtest::haveShared("slr/blits_cpf_120626_6801.hts")) QSKIP("shared SLR data absent");
+        const CpfReadResult r = readCpf(lwbtest::str(lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts")));
+        QVERIFY2(r.ok, r.error.c_str());
+        const CpfFile& f = r.file;
+        const CpfInterpolator full(f);
+        QVERIFY2(full.ok(), full.error().c_str());
+        // At a node the interpolant is the node itself (round-off only: 1 µm).
+        for (size_t k : {size_t(0), size_t(5), size_t(900), f.positions.size() - 1}) {
+            const CpfState s = full.at(f.positions[k].mjd, f.positions[k].sod);
+            QVERIFY2(s.ok, s.error.c_str());
+            QVERIFY((s.position - f.positions[k].position).norm() < 1e-6);
+        }
+        // Physical sanity of the interpolated state: radius and speed of a circular 832 km orbit.
+        const CpfState mid = full.at(56105, 43210.5);
+        QVERIFY(mid.ok);
+        const double radius = mid.position.norm();
+        QVERIFY(radius > 6378137.0 + 780e3 && radius < 6378137.0 + 880e3);
+        // Body-fixed velocity: inertial sqrt(GM/r) ~ 7.43 km/s minus up to w r ~ 0.53 km/s.
+        QVERIFY(mid.velocity.norm() > 6.8e3 && mid.velocity.norm() < 8.0e3);
+        // The derivative matches a central difference of the interpolant (1 mm/s).
+        const CpfState a = full.at(56105, 43210.0, false), b = full.at(56105, 43211.0, false);
+        QVERIFY(((b.position - a.position) - mid.velocity).norm() < 1e-3);
+        // Outside the table: an error saying by how much.
+        const CpfState before = full.at(f.positions.front().mjd, f.positions.front().sod - 100.0);
+        QVERIFY(!before.ok);
+        QVERIFY2(before.error.find("100.000 s before") != std::string::npos, before.error.c_str());
+        const CpfState after = full.at(f.positions.back().mjd + 1, f.positions.back().sod);
+        QVERIFY(!after.ok);
+        QVERIFY2(after.error.find("86400.000 s after") != std::string::npos, after.error.c_str());
+        // A gap in the table is refused rather than bridged.
+        CpfFile gap = f;
+        gap.positions.erase(gap.positions.begin() + 500, gap.positions.begin() + 510);
+        const CpfState g = CpfInterpolator(gap).at(f.positions[505].mjd, f.positions[505].sod);
+        QVERIFY(!g.ok);
+        QVERIFY2(g.error.find("gap") != std::string::npos, g.error.c_str());
+        CpfInterpParams bad;
+        bad.points = 1;
+        QVERIFY(!validate(bad).empty());
+        QVERIFY(!CpfInterpolator(f, bad).ok());
+    }
+
+    /// Accuracy on an analytic orbit: circular, 830 km, inclined 74°, turned into body-fixed
+    /// coordinates with the Earth's rotation and written to the table at 1 mm like a CPF.
+    /// Truncation bound for 10 nodes at step h: R (w h)^10 x 872 / 10! = 1.6 mm at 240 s,
+    /// 2^-10 of that at 120 s; rounding to 1 mm adds about 1 mm.
+    void cpfInterpolationAccuracy() {
+        const double r0 = 7.21e6, n = std::sqrt(3.986004418e14 / (r0 * r0 * r0)), w = 7.292115e-5, inc = 1.3;
+        auto pos = [&](double t) {
+            const double a = n * t, th = -w * t;
+            const Eigen::Vector3d xi(r0 * std::cos(a), r0 * std::sin(a) * std::cos(inc), r0 * std::sin(a) * std::sin(inc));
+            return Eigen::Vector3d(std::cos(th) * xi.x() - std::sin(th) * xi.y(),
+                                   std::sin(th) * xi.x() + std::cos(th) * xi.y(), xi.z());
+        };
+        for (double step : {240.0, 120.0}) {
+            CpfFile f;
+            for (double t = 0; t <= 86400; t += step) {
+                CpfPosition p;
+                p.mjd = 56000;
+                p.sod = t;
+                p.position = pos(t);
+                for (int k = 0; k < 3; ++k) p.position[k] = std::round(p.position[k] * 1000) / 1000;
+                f.positions.push_back(p);
+            }
+            const CpfInterpolator ip(f);
+            QVERIFY(ip.ok());
+            double worst = 0;
+            for (double t = 3000; t < 83000; t += 7.3) {
+                const CpfState s = ip.at(56000, t, false);
+                QVERIFY(s.ok);
+                worst = std::max(worst, (s.position - pos(t)).norm());
+            }
+            qInfo("Lagrange 10 points, analytic LEO orbit, step %.0f s: worst error %.2f mm", step, worst * 1e3);
+            QVERIFY(worst < (step > 200 ? 3e-3 : 1.5e-3));
+        }
+    }
+
+    void cpfBadInput_data() {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<bool>("ok");
+        QTest::addColumn<QString>("what");
+        const QByteArray head = "H1 CPF 2 HTS 2012 6 26 12 6801 1 blits\nH9\n";
+        QByteArray many;
+        for (int i = 0; i < 12; ++i) many += "10 0 56104 " + QByteArray::number(i * 240) + ".0 0 7000000 0 0\n";
+        QTest::newRow("empty") << QByteArray() << false << "empty file";
+        QTest::newRow("not a CPF") << QByteArray("hello\n") << false << ":1:";
+        QTest::newRow("binary") << QByteArray("H1 CPF\x00\x01", 8) << false << "binary";
+        QTest::newRow("no positions") << head << false << "no readable type 10";
+        QTest::newRow("NaN coordinate") << head + "10 0 56104 0.0 0 nan 0 0\n" + many << true << ":3:";
+        QTest::newRow("text in MJD") << head + "10 0 5610x4 0.0 0 1 0 0\n" + many << true << ":3:";
+        QTest::newRow("out of order") << head + many + "10 0 56104 100.0 0 7000000 0 0\n" << true << "not after";
+        QTest::newRow("v2 sound") << head + many << true << "";
+    }
+    void cpfBadInput() {
+        QFETCH(QByteArray, text);
+        QFETCH(bool, ok);
+        QFETCH(QString, what);
+        const CpfReadResult r = parseCpf(std::string(text.constData(), static_cast<size_t>(text.size())), "p.cpf");
+        QCOMPARE(r.ok, ok);
+        if (!ok) {
+            QVERIFY2(QString::fromStdString(r.error).contains(what), r.error.c_str());
+        } else {
+            QCOMPARE(r.file.header.version, 2);
+            QCOMPARE(r.file.header.targetName, std::string("blits"));  // v2 H1 has the sub-daily sequence first
+            QCOMPARE(r.file.positions.size(), size_t(12));
+            if (!what.isEmpty()) {
+                QCOMPARE(r.warnings.size(), size_t(1));
+                QVERIFY2(QString::fromStdString(r.warnings[0]).contains(what), r.warnings[0].c_str());
+            }
+        }
+    }
+
+    // ---- SINEX ----------------------------------------------------------------------------------
+    void sinexReads() {
+        if (!lwbtest::haveShared("slr/SLRF2014_POS+VEL_2030.0_200428.snx")) QSKIP("shared SLR data absent");
+        const QString path = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
+        const QByteArray raw = lwbtest::readAll(path);
+        const SinexReadResult r = readSinex(lwbtest::str(path));
+        QVERIFY2(r.ok, r.error.c_str());
+        QVERIFY(r.warnings.empty());
+        // One solution per STAX line; SITE/ID lines counted independently.
+        int stax = 0;
+        for (auto it = QRegularExpression("\\n\\s*\\d+ STAX ").globalMatch(QString::fromUtf8(raw)); it.hasNext(); it.next()) ++stax;
+        QCOMPARE(static_cast<int>(r.file.solutions.size()), stax);
+        const QString text = QString::fromUtf8(raw);
+        const int from = text.indexOf("+SITE/ID"), to = text.indexOf("-SITE/ID");
+        int siteLines = 0;
+        for (const QString& l : text.mid(from, to - from).split('\n').mid(1))
+            if (!l.startsWith('*') && !l.trimmed().isEmpty()) ++siteLines;
+        QCOMPARE(static_cast<int>(r.file.sites.size()), siteLines);
+        for (const auto& s : r.file.solutions) QCOMPARE(s.haveMask, 0x3f);  // every SLRF site has X Y Z and velocities
+
+        // Matera MLRO (7941) on 2012-06-27 0h: STAX + VELX * dt with the file's own values
+        //   STAX 7941 ... 10:001:00000 m   0.464197861713781E+07 ; VELX ... m/y -.188102608696727E-01
+        const double dtYears = QDate(2010, 1, 1).daysTo(QDate(2012, 6, 27)) / 365.25;
+        const StationPositionResult m = stationPositionByPad(r.file, 7941, mjdFromDate(2012, 6, 27), 0.0);
+        QVERIFY2(m.ok, m.error.c_str());
+        QVERIFY(m.warnings.empty());
+        QCOMPARE(m.code, std::string("7941"));
+        QVERIFY(std::fabs(m.position.x() - (0.464197861713781e7 + -0.188102608696727e-1 * dtYears)) < 1e-6);
+        QVERIFY(std::fabs(m.position.y() - (0.139306772310455e7 + 0.190425787582322e-1 * dtYears)) < 1e-6);
+        QVERIFY(std::fabs(m.position.z() - (0.413324962267129e7 + 0.144917604701781e-1 * dtYears)) < 1e-6);
+        QVERIFY2(m.description.find("Matera") != std::string::npos, m.description.c_str());
+        const StationPositionResult byCode = stationPosition(r.file, "7941", mjdFromDate(2012, 6, 27), 0.0);
+        QVERIFY(byCode.position == m.position);
+        // The SLRF keys sites by the CDP pad id; its SITE/ID also carries the CDP-SOD.
+        bool sod = false;
+        for (const auto& s : r.file.sites)
+            if (s.code == "7941") sod = s.cdpSod == "79417701";
+        QVERIFY(sod);
+
+        // Changchun (7237) has three solutions: 96:070-08:073, 08:076-11:069, 11:079-open.
+        QCOMPARE(stationPositionByPad(r.file, 7237, mjdFromDate(2012, 6, 27), 0).soln, std::string("3"));
+        QCOMPARE(stationPositionByPad(r.file, 7237, mjdFromDate(2009, 1, 1), 0).soln, std::string("2"));
+        QCOMPARE(stationPositionByPad(r.file, 7237, mjdFromDate(2000, 1, 1), 0).soln, std::string("1"));
+        // Wettzell (8834) between its solutions 2 (to 09:045) and 3 (from 10:325): nearest, with a warning.
+        const StationPositionResult w = stationPositionByPad(r.file, 8834, mjdFromDate(2010, 9, 1), 0);
+        QVERIFY(w.ok);
+        QCOMPARE(w.soln, std::string("3"));
+        QCOMPARE(w.warnings.size(), size_t(1));
+        QVERIFY2(w.warnings[0].find("outside every solution") != std::string::npos, w.warnings[0].c_str());
+        const StationPositionResult none = stationPositionByPad(r.file, 1234, mjdFromDate(2012, 6, 27), 0);
+        QVERIFY(!none.ok);
+        QVERIFY2(none.error.find("1234") != std::string::npos, none.error.c_str());
+        QVERIFY(!stationPositionByPad(r.file, -1, 56000, 0).ok);
+    }
+
+    void sinexBadInput_data() {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<QString>("what");
+        QTest::newRow("empty") << QByteArray() << "empty file";
+        QTest::newRow("not SINEX") << QByteArray("H1 CRD 2\n") << ":1:";
+        QTest::newRow("no estimates") << QByteArray("%=SNX 2.02\n+SITE/ID\n 7941  A 12734S008 L Matera\n-SITE/ID\n%ENDSNX\n")
+                                      << "no station coordinates";
+        QTest::newRow("binary") << QByteArray("%=SNX\x00", 6) << "binary";
+    }
+    void sinexBadInput() {
+        QFETCH(QByteArray, text);
+        QFETCH(QString, what);
+        const SinexReadResult r = parseSinex(std::string(text.constData(), static_cast<size_t>(text.size())), "s.snx");
+        QVERIFY(!r.ok);
+        QVERIFY2(QString::fromStdString(r.error).contains(what), r.error.c_str());
+    }
+
+    void sinexRecordWarnings() {
+        const QByteArray text =
+            "%=SNX 2.02 XXX 12:001:00000 XXX 12:001:00000 12:001:00000 C 00006 2 X V\n"
+            "+SOLUTION/ESTIMATE\n"
+            "     1 STAX   7941  A    1 10:001:00000 m    2 0.464197861713781E+07 0.26019E-03\n"
+            "     2 STAY   7941  A    1 10:001:00000 m    2 nan 0.54338E-03\n"  // line 4
+            "     3 STAZ   7941  A    1 10:0x1:00000 m    2 0.413324962267129E+07 0.23469E-03\n"  // line 5
+            "-SOLUTION/ESTIMATE\n%ENDSNX\n";
+        const SinexReadResult r = parseSinex(text.toStdString(), "w.snx");
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.warnings.size(), size_t(2));
+        QVERIFY2(r.warnings[0].rfind("w.snx:4:", 0) == 0, r.warnings[0].c_str());
+        QVERIFY2(r.warnings[1].rfind("w.snx:5:", 0) == 0, r.warnings[1].c_str());
+        const StationPositionResult p = stationPosition(r.file, "7941", 56000, 0);
+        QVERIFY(!p.ok);  // STAY and STAZ were refused
+        QVERIFY2(p.error.find("STAX/STAY/STAZ") != std::string::npos, p.error.c_str());
+    }
+
+    // ---- time helpers -----------------------------------------------------------------------------
+    void dates() {
+        QCOMPARE(mjdFromDate(1858, 11, 17), 0L);
+        QCOMPARE(mjdFromDate(2000, 1, 1), 51544L);
+        // Against Qt's own calendar for a range of days.
+        const QDate epoch(1858, 11, 17);
+        for (QDate d(1899, 12, 25); d < QDate(2101, 1, 10); d = d.addDays(37)) {
+            QCOMPARE(mjdFromDate(d.year(), d.month(), d.day()), static_cast<long>(epoch.daysTo(d)));
+            int y = 0, m = 0, dd = 0;
+            dateFromMjd(static_cast<long>(epoch.daysTo(d)), &y, &m, &dd);
+            QCOMPARE(QDate(y, m, dd), d);
+        }
+        QVERIFY(validDate(2012, 2, 29));
+        QVERIFY(!validDate(2100, 2, 29));
+        QVERIFY(!validDate(2021, 4, 31));
+        long mjd = 0;
+        double sod = 0;
+        QVERIFY(parseSinexEpoch("10:001:00000", &mjd, &sod));
+        QCOMPARE(mjd, mjdFromDate(2010, 1, 1));
+        QVERIFY(parseSinexEpoch("98:194:53047", &mjd, &sod));
+        QCOMPARE(mjd, mjdFromDate(1998, 7, 13));  // day 194 of 1998
+        QCOMPARE(sod, 53047.0);
+        QVERIFY(!parseSinexEpoch("10:1:0", &mjd, &sod));
+        QVERIFY(!parseSinexEpoch("10:400:00000", &mjd, &sod));
+        QVERIFY(!parseSinexEpoch("1x:001:00000", &mjd, &sod));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSlrIo)
+#include "test_slr_io.moc"
