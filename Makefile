@@ -25,8 +25,15 @@ build: configure
 test: build
 	cd $(BUILD) && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j$(JOBS)
 
+# Opens the workbench on its built-in demo. Without a display (no DISPLAY / WAYLAND_DISPLAY) it
+# renders the demo window offscreen to $(BUILD)/demo.png instead and says so.
 run: build
-	./$(BUILD)/bin/laserwb-cli demo
+	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then \
+	  ./$(BUILD)/bin/laserwb; \
+	else \
+	  echo "make run: no display; rendering the demo offscreen to $(BUILD)/demo.png (set DISPLAY to open the window)"; \
+	  ./$(BUILD)/bin/laserwb --screenshot $(BUILD)/demo.png && echo "make run: wrote $(BUILD)/demo.png"; \
+	fi
 
 # libFuzzer on the SLR readers (clang + ASan), FUZZ_SECONDS long; corpus and findings stay in $(FUZZ_BUILD).
 fuzz:

@@ -120,8 +120,8 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     m_table->verticalHeader()->setDefaultSectionSize(20);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
-    m_table->setColumnWidth(ShotTableModel::File, 130);
-    m_table->setColumnWidth(ShotTableModel::Time, 80);
+    m_table->setColumnWidth(ShotTableModel::File, 150);
+    m_table->setColumnWidth(ShotTableModel::Time, 84);
     m_table->setColumnWidth(ShotTableModel::Beam, 40);
     m_table->setColumnWidth(ShotTableModel::X, 64);
     m_table->setColumnWidth(ShotTableModel::Y, 64);

@@ -46,6 +46,7 @@ QVariant ShotTableModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::ToolTipRole) {
         if (failed) return s->loadError;
         if (index.column() == Reasons || index.column() == VerdictCol) return s->reasons.join("\n");
+        if (index.column() == Time) return s->time;
         return s->file;
     }
     if (role == Qt::ForegroundRole && index.column() == VerdictCol) return verdictColor(v);
@@ -55,7 +56,7 @@ QVariant ShotTableModel::data(const QModelIndex& index, int role) const {
     const bool sort = role == SortRole;
     switch (index.column()) {
         case File: return sort ? s->file : QFileInfo(s->file).fileName();
-        case Time: return s->time;
+        case Time: return sort ? s->time : s->time.left(10);  // the date; the full time is in the tooltip
         case Beam: return s->beam;
         case X: {
             const double x = s->fullX();
