@@ -9,6 +9,8 @@
 #include <QJsonDocument>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QSaveFile>
 #include <QSettings>
 #include <QStatusBar>
@@ -43,6 +45,27 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_slr, &SlrWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 8000); });
     connect(m_footprint->controller(), &FootprintController::error, this,
             [this](const QString& msg) { showError(tr("Cannot open the footprint inputs"), msg); });
+    // Progress of long loads, with a cancel button, in the status bar.
+    m_progress = new QProgressBar(this);
+    m_progress->setMaximumWidth(260);
+    m_progress->setFormat(tr("%v / %m shots"));
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    statusBar()->addPermanentWidget(m_progress);
+    statusBar()->addPermanentWidget(m_cancel);
+    m_progress->hide();
+    m_cancel->hide();
+    FootprintController* fc = m_footprint->controller();
+    connect(fc, &FootprintController::loadProgress, this, [this](int done, int total) {
+        m_progress->setRange(0, total);
+        m_progress->setValue(done);
+        m_progress->setVisible(done < total);
+        m_cancel->setVisible(done < total);
+    });
+    connect(fc, &FootprintController::loadFinished, this, [this] {
+        m_progress->hide();
+        m_cancel->hide();
+    });
+    connect(m_cancel, &QPushButton::clicked, fc, &FootprintController::cancelLoading);
     QSettings st;
     if (!restoreGeometry(st.value("window/geometry").toByteArray())) resize(1480, 900);
     statusBar()->showMessage(tr("Ready"));

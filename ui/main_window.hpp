@@ -6,6 +6,8 @@
 
 class QTabWidget;
 class QMenu;
+class QProgressBar;
+class QPushButton;
 
 namespace lwb::ui {
 
@@ -53,6 +55,8 @@ private:
     FootprintWorkspace* m_footprint;
     SlrWorkspace* m_slr;
     QMenu* m_recentMenu = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QPushButton* m_cancel = nullptr;
     QString m_sessionPath;
     bool m_modified = false;
 };

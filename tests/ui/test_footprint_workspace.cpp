@@ -163,6 +163,20 @@ private slots:
         QCOMPARE(c->counts().rejected, 1);
     }
 
+    void loadingCanBeCancelled() {
+        const auto r = lwbtest::runCli({"simulate", "footprint", "--count", "1500", "--seed", "8", "-q", m_dir.path() + "/many"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        MainWindow w;
+        FootprintController* c = w.footprint()->controller();
+        QSignalSpy finished(c, &FootprintController::loadFinished);
+        c->open({m_dir.path() + "/many"});
+        c->cancelLoading();  // straight away: the workers stop at their next shot
+        QVERIFY(finished.wait(30000));
+        QVERIFY(finished.first().at(2).toBool());  // cancelled
+        QVERIFY2(c->count() < 1500, qPrintable(QString("%1 shots loaded").arg(c->count())));
+        QCOMPARE(c->counts().good + c->counts().doubtful + c->counts().rejected + c->counts().pending, c->count());
+    }
+
     void keyboardAcceptsAndRejects() {
         MainWindow w;
         w.openDemo();
