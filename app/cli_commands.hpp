@@ -18,7 +18,8 @@ int cmdRadiometryGcp(int argc, char** argv);
 int cmdRadiometryFit(int argc, char** argv);
 int cmdRadiometryApply(int argc, char** argv);
 int cmdRadiometryCheck(int argc, char** argv);
-// SLR signal extraction (paper 004): app/cli_slr_sim.cpp
+// SLR signal extraction (paper 004): app/cli_slr.cpp, app/cli_slr_sim.cpp
+int cmdSlr(int argc, char** argv);
 int cmdSimulateSlr(int argc, char** argv);
 int cmdBenchSlr(int argc, char** argv);
 }  // namespace lwb::cli

@@ -19,6 +19,8 @@ const char* kMainUsage =
     "  bench footprint      ROIs per second per method\n"
     "\n"
     "SLR signal extraction (paper 004):\n"
+    "  slr                  screen a pass (CRD or O-C CSV): signal/noise per point, post-fit, normal\n"
+    "                       points -> CSV, CRD with filter flags, CRD normal points\n"
     "  simulate slr         a simulated pass (O-C CSV) with exact truth per point\n"
     "  bench slr            parse + screen + post-fit times and peak memory, 10^4..10^6 points\n"
     "\n"
@@ -58,6 +60,7 @@ int main(int argc, char** argv) {
     if (cmd == "simulate" && sub == "footprint") return cmdSimulateFootprint(argc, argv);
     if (cmd == "eval" && sub == "footprint") return cmdEvalFootprint(argc, argv);
     if (cmd == "bench" && sub == "footprint") return cmdBenchFootprint(argc, argv);
+    if (cmd == "slr") return cmdSlr(argc, argv);
     if (cmd == "simulate" && sub == "slr") return cmdSimulateSlr(argc, argv);
     if (cmd == "bench" && sub == "slr") return cmdBenchSlr(argc, argv);
     if (cmd == "calib" && sub == "detector") return cmdCalibDetector(argc, argv);
@@ -83,8 +86,14 @@ int main(int argc, char** argv) {
         std::cout << "laserwb-cli 0.1.0\n";
         return kOk;
     }
-    if (cmd == "simulate" || cmd == "eval" || cmd == "bench")
-        return fail(cmd, sub.empty() ? "which one? (footprint)" : "unknown kind \"" + sub + "\"", kUsage);
+    if (cmd == "simulate" || cmd == "eval" || cmd == "bench") {
+        const char* kinds = cmd == "simulate" ? "footprint, slr, calib" : cmd == "bench" ? "footprint, slr" : "footprint";
+        if (sub == "--help" || sub == "-h") {
+            std::cout << "usage: laserwb-cli " << cmd << " (" << kinds << ") [options]; each has --help\n";
+            return kOk;
+        }
+        return fail(cmd, (sub.empty() ? "which one? (" : "unknown kind \"" + sub + "\" (") + kinds + ")", kUsage);
+    }
     std::cerr << "laserwb-cli: unknown command \"" << cmd << "\"\n\n" << kMainUsage;
     return kUsage;
 }

@@ -15,6 +15,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
 #include "core/sim/slr_sim.hpp"
+#include "core/slr/oc_csv.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/screen.hpp"
 
@@ -145,63 +146,22 @@ struct BenchRow {
     int ok = 0;
 };
 
-// A small strict CSV reader for epoch_s,oc_s,truth in file order, streamed in 1 MiB chunks.
+// The pass CSV through the shared O-C table reader (core/slr/oc_csv.hpp), with the truth column.
 bool readBenchCsv(const std::string& path, std::vector<double>* t, std::vector<double>* oc, std::vector<uint8_t>* truth,
                   std::string* error) {
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) {
-        *error = "cannot open " + path;
+    slr::OcCsvParams p;
+    p.extraColumns = {"truth"};
+    slr::OcCsvReadResult r = slr::readOcCsv(path, p);
+    if (!r.ok) {
+        *error = r.error;
         return false;
     }
-    std::string buf, carry;
-    buf.resize(1 << 20);
-    bool header = true;
-    long line = 0;
-    bool ok = true;
-    auto parseLine = [&](const char* b, const char* e) {
-        ++line;
-        if (header) {
-            header = false;
-            if (std::string(b, e).rfind("epoch_s,oc_s,truth", 0) != 0) {
-                *error = path + ":1: header must start with epoch_s,oc_s,truth";
-                return false;
-            }
-            return true;
-        }
-        if (b == e) return true;
-        double v1 = 0, v2 = 0;
-        const auto r1 = std::from_chars(b, e, v1);
-        const bool ok1 = r1.ec == std::errc() && r1.ptr != e && *r1.ptr == ',';
-        const auto r2 = ok1 ? std::from_chars(r1.ptr + 1, e, v2) : r1;
-        if (!ok1 || r2.ec != std::errc() || r2.ptr == e || *r2.ptr != ',' || r2.ptr + 1 == e) {
-            *error = path + ":" + std::to_string(line) + ": not epoch_s,oc_s,truth numbers";
-            return false;
-        }
-        t->push_back(v1);
-        oc->push_back(v2);
-        truth->push_back(r2.ptr[1] == '1');
-        return true;
-    };
-    while (ok) {
-        const size_t got = std::fread(buf.data(), 1, buf.size(), f);
-        if (got == 0) break;
-        size_t start = 0;
-        for (size_t i = 0; i < got && ok; ++i) {
-            if (buf[i] != '\n') continue;
-            if (!carry.empty()) {
-                carry.append(buf.data() + start, i - start);
-                ok = parseLine(carry.data(), carry.data() + carry.size());
-                carry.clear();
-            } else {
-                ok = parseLine(buf.data() + start, buf.data() + i);
-            }
-            start = i + 1;
-        }
-        carry.append(buf.data() + start, got - start);
-    }
-    if (ok && !carry.empty()) ok = parseLine(carry.data(), carry.data() + carry.size());
-    std::fclose(f);
-    return ok;
+    *t = std::move(r.table.epoch_s);
+    *oc = std::move(r.table.oc_s);
+    const std::vector<double>& tr = r.table.extra.front();
+    truth->resize(tr.size());
+    for (size_t i = 0; i < tr.size(); ++i) (*truth)[i] = tr[i] == 1;
+    return true;
 }
 
 double rssKb() {

@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
             return 1;
         }
     }
-    w.showWorkspace(cli.value(ws));
+    if (cli.isSet(ws) || args.isEmpty()) w.showWorkspace(cli.value(ws));  // a session names its own workspace
     if (cli.isSet(shot)) {
         const QStringList wh = cli.value(size).split('x');
         if (wh.size() == 2) w.resize(wh[0].toInt(), wh[1].toInt());

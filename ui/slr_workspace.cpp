@@ -408,7 +408,7 @@ void SlrWorkspace::linkRanges(QCustomPlot* from, QCustomPlot* to) {
     if (m_linking) return;
     m_linking = true;
     to->xAxis->setRange(from->xAxis->range());
-    to->yAxis->setRange(from->yAxis->range());
+    if (!m_imageFlattened) to->yAxis->setRange(from->yAxis->range());
     to->replot(QCustomPlot::rpQueuedReplot);
     m_linking = false;
 }
@@ -468,14 +468,34 @@ void SlrWorkspace::showRun(const SlrRun& run) {
             fy << y;
         }
     }
-    fill(scatter(m_ocPlot, tr("noise (%1)").arg(nx.size()), kNoise, QCPScatterStyle::ssDot, 2), nx, ny);
+    fill(scatter(m_ocPlot, tr("noise (%1)").arg(nx.size()), kNoise, QCPScatterStyle::ssDisc, 2.5), nx, ny);
     fill(scatter(m_ocPlot, tr("signal (%1)").arg(sx.size()), kSignal, QCPScatterStyle::ssDisc, 3), sx, sy);
     fill(scatter(m_ocPlot, tr("recovered (%1)").arg(rx.size()), kRecovered, QCPScatterStyle::ssDisc, 3.5), rx, ry);
     fill(scatter(m_ocPlot, tr("rejected by post-fit (%1)").arg(jx.size()), kRejected, QCPScatterStyle::ssCross, 5), jx, jy);
     if (!fx.isEmpty()) fill(scatter(m_ocPlot, tr("manual (%1)").arg(fx.size()), kForced, QCPScatterStyle::ssCircle, 7), fx, fy);
+    if (p.stationFlag.size() == n) {  // the station's own screening, for comparison
+        QVector<double> dx, dy;
+        for (size_t i = 0; i < n; ++i)
+            if (p.stationFlag[i] == 2) {
+                dx << p.t[i];
+                dy << p.oc[i] * 1e9;
+            }
+        QCPGraph* g = m_ocPlot->addGraph();
+        g->setName(tr("station flag: data (%1)").arg(dx.size()));
+        g->setLineStyle(QCPGraph::lsNone);
+        g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(QColor(90, 40, 140), 1), Qt::NoBrush, 7));
+        fill(g, dx, dy);
+    }
     if (run.post.ok) {
         QVector<double> tx, ty, px, py;
-        const double t0 = *std::min_element(p.t.begin(), p.t.end()), t1 = *std::max_element(p.t.begin(), p.t.end());
+        // The trend only where it was fitted (a polynomial outside its span means nothing).
+        double t0 = INFINITY, t1 = -INFINITY;
+        for (size_t i = 0; i < n; ++i)
+            if (run.post.kept[i]) {
+                t0 = std::min(t0, p.t[i]);
+                t1 = std::max(t1, p.t[i]);
+            }
+        if (!(t1 > t0)) t0 = t1 = p.t.front();
         for (int k = 0; k <= 200; ++k) {
             const double t = t0 + (t1 - t0) * k / 200.0;
             tx << t;
@@ -494,10 +514,18 @@ void SlrWorkspace::showRun(const SlrRun& run) {
     // Binary image: the occupied pixels as a colour map in (epoch, O-C) units, so its axes can
     // follow the O-C plot. Cells hold 0 empty, 1 noise, 2 recovered, 3 signal; an image larger
     // than 2000 × 2000 cells is shown max-pooled (a cell shows the strongest class it covers).
+    // After a refinement round the kept image is of the O-C less the accepted track's trend
+    // (ScreenResult::flattenS); it is drawn in that frame, with only the time axis linked.
+    const bool flattened = s.flattenS.size() == n;
+    m_imageFlattened = flattened;
+    std::vector<double> imgOc(p.oc);
+    if (flattened)
+        for (size_t i = 0; i < n; ++i) imgOc[i] -= s.flattenS[i];
+    m_imagePlot->yAxis->setLabel(flattened ? tr("O-C less the track's trend (ns, two-way)") : tr("O-C (ns, two-way)"));
     {
         long long r0 = LLONG_MAX, r1 = LLONG_MIN, c0 = LLONG_MAX, c1 = LLONG_MIN;
         for (size_t i = 0; i < n; ++i) {
-            const long long r = std::llround(p.t[i] * s.magT), c = std::llround(p.oc[i] * s.magOc);
+            const long long r = std::llround(p.t[i] * s.magT), c = std::llround(imgOc[i] * s.magOc);
             r0 = std::min(r0, r);
             r1 = std::max(r1, r);
             c0 = std::min(c0, c);
@@ -511,7 +539,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
                                      QCPRange(c0 / s.magOc * 1e9, (c0 + (rows - 1) * fc) / s.magOc * 1e9));
         m_imageMap->data()->fill(0);
         for (size_t i = 0; i < n; ++i) {
-            const int x = int((std::llround(p.t[i] * s.magT) - r0) / fr), y = int((std::llround(p.oc[i] * s.magOc) - c0) / fc);
+            const int x = int((std::llround(p.t[i] * s.magT) - r0) / fr), y = int((std::llround(imgOc[i] * s.magOc) - c0) / fc);
             const RegionClass rc = s.regionClass[s.pointRegion[i]];
             const double v = rc == RegionClass::Signal ? 3 : rc == RegionClass::Recovered ? 2 : 1;
             if (m_imageMap->data()->cell(x, y) < v) m_imageMap->data()->setCell(x, y, v);
@@ -525,7 +553,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
             if (rc == RegionClass::Noise) continue;
             const int k = rc == RegionClass::Signal ? 1 : 0;
             gx[k] << std::llround(p.t[i] * s.magT) / s.magT;
-            gy[k] << std::llround(p.oc[i] * s.magOc) / s.magOc * 1e9;
+            gy[k] << std::llround(imgOc[i] * s.magOc) / s.magOc * 1e9;
         }
         m_imagePlot->graph(1)->setData(gx[0], gy[0]);
         m_imagePlot->graph(1)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, kRecovered, kRecovered, 3));
@@ -533,7 +561,23 @@ void SlrWorkspace::showRun(const SlrRun& run) {
         m_imagePlot->graph(2)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, kSignal, kSignal, 3));
     }
     if (fresh) {
+        // Fit the view to the points (noise and signal graphs), not to the trend or markers.
         m_ocPlot->rescaleAxes();
+        bool first = true;
+        for (int g = 0; g < std::min(2, m_ocPlot->graphCount()); ++g) {
+            bool found = false;
+            const QCPRange kr = m_ocPlot->graph(g)->getKeyRange(found);
+            if (!found) continue;
+            const QCPRange vr = m_ocPlot->graph(g)->getValueRange(found);
+            if (first) {
+                m_ocPlot->xAxis->setRange(kr);
+                m_ocPlot->yAxis->setRange(vr);
+                first = false;
+            } else {
+                m_ocPlot->xAxis->setRange(QCPRange(std::min(kr.lower, m_ocPlot->xAxis->range().lower), std::max(kr.upper, m_ocPlot->xAxis->range().upper)));
+                m_ocPlot->yAxis->setRange(QCPRange(std::min(vr.lower, m_ocPlot->yAxis->range().lower), std::max(vr.upper, m_ocPlot->yAxis->range().upper)));
+            }
+        }
         m_ocPlot->xAxis->scaleRange(1.04);
         m_ocPlot->yAxis->scaleRange(1.08);
         m_ocPlot->setProperty("fresh", false);
@@ -542,6 +586,10 @@ void SlrWorkspace::showRun(const SlrRun& run) {
         m_ocPlot->yAxis->setRange(yr);
     }
     linkRanges(m_ocPlot, m_imagePlot);
+    if (flattened) {
+        m_imagePlot->yAxis->rescale();
+        m_imagePlot->yAxis->scaleRange(1.08);
+    }
     // Residual histogram of the kept points.
     m_histPlot->clearPlottables();
     QString statsHtml;
@@ -593,6 +641,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
                               ? (m_controller->scaleReused() ? tr(" (automatic, kept while C moves)") : tr(" (automatic)"))
                               : QString())
                      .arg(m_controller->screenParams().cosineC, 0, 'f', 3);
+    if (flattened) statsHtml += tr("<br>Refined: screened again on the O-C less the accepted track's trend (%1 round(s))").arg(s.refinedRounds);
     statsHtml += tr("<br>%1 regions, %2 candidates, %3 on the line, %4 recovered · %5 ms")
                      .arg(s.regions.size())
                      .arg(s.candidates)

@@ -63,6 +63,7 @@ private:
     QString m_path, m_cpfPath, m_snxPath;
     bool m_loading = false;
     bool m_linking = false;
+    bool m_imageFlattened = false;  ///< the binary image is of the flattened O-C (refinement)
 };
 
 }  // namespace lwb::ui

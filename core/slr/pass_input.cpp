@@ -1,6 +1,7 @@
 #include "core/slr/pass_input.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -170,7 +171,17 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
     }
     std::ostream& o = f.stream();
     o << "index,epoch_s,oc_s,class,region,residual_s,kept,station_flag\n";
-    char buf[160];
+    // std::to_chars instead of printf: a 10⁶-point pass is written in a fraction of the time.
+    std::string line;
+    char num[64];
+    auto put = [&](auto value, std::chars_format fmt, int precision) {
+        const auto res = std::to_chars(num, num + sizeof num, value, fmt, precision);
+        line.append(num, res.ptr);
+    };
+    auto putInt = [&](unsigned long long value) {
+        const auto res = std::to_chars(num, num + sizeof num, value);
+        line.append(num, res.ptr);
+    };
     for (size_t i = 0; i < n; ++i) {
         // A manual edit can accept a point the screening called noise (or the reverse).
         const PointClass c = accepted[i] ? (screen.pointClass[i] == PointClass::Noise ? PointClass::Signal
@@ -178,16 +189,27 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
                                          : PointClass::Noise;
         const double res = post && post->ok ? post->residuals[i] : NAN;
         const int kept = post && post->ok ? post->kept[i] : accepted[i];
-        std::snprintf(buf, sizeof buf, "%zu,%.9f,%.6e,%s,%u,", i, pass.t[i], pass.oc[i], pointClassName(c),
-                      screen.pointRegion.empty() ? 0u : unsigned(screen.pointRegion[i]));
-        o << buf;
-        if (std::isfinite(res)) {
-            std::snprintf(buf, sizeof buf, "%.6e", res);
-            o << buf;
-        }
-        o << ',' << kept << ',';
-        if (!pass.stationFlag.empty()) o << pass.stationFlag[i];
-        o << '\n';
+        // index: the type-10 record of the CRD pass (a record without an O-C, e.g. a one-way
+        // epoch event, has no row), else the row of the O-C table.
+        const size_t index = i < pass.rangeIndex.size() ? pass.rangeIndex[i] : i;
+        line.clear();
+        putInt(index);
+        line += ',';
+        put(pass.t[i], std::chars_format::fixed, 9);
+        line += ',';
+        put(pass.oc[i], std::chars_format::scientific, 6);
+        line += ',';
+        line += pointClassName(c);
+        line += ',';
+        putInt(screen.pointRegion.empty() ? 0u : unsigned(screen.pointRegion[i]));
+        line += ',';
+        if (std::isfinite(res)) put(res, std::chars_format::scientific, 6);
+        line += ',';
+        putInt(unsigned(kept));
+        line += ',';
+        if (!pass.stationFlag.empty()) putInt(unsigned(std::max(0, pass.stationFlag[i])));
+        line += '\n';
+        o.write(line.data(), std::streamsize(line.size()));
     }
     if (!f.commit()) {
         *error = f.error();

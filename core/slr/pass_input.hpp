@@ -63,8 +63,9 @@ bool isCrdPath(const std::string& path);
 PassInputResult loadPass(const std::string& path, int passIndex, const PassInputParams& params,
                          const Feedback* fb = nullptr);
 
-/// Per-point result as CSV: index,epoch_s,oc_s,class,region,residual_s,kept,station_flag.
-/// `post` may be null. Atomic.
+/// Per-point result as CSV: index,epoch_s,oc_s,class,region,residual_s,kept,station_flag, one
+/// row per point in pass order; index = the point's type-10 record in the CRD pass (0-based;
+/// pass.rangeIndex), or its row in an O-C table. `post` may be null. Atomic.
 bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
                     const std::vector<uint8_t>& accepted, const PostfitResult* post, std::string* error);
 /// The pass as CRD full rate with filter flags 2 (accepted) / 1 (noise), other passes unchanged.

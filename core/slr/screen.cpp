@@ -7,6 +7,7 @@
 #include "core/common/text.hpp"
 #include "core/sim/rng.hpp"
 #include "core/slr/kdtree2.hpp"
+#include "core/slr/postfit.hpp"
 #include "core/slr/screen_auto.hpp"
 
 namespace lwb::core::slr {
@@ -54,6 +55,9 @@ std::string validate(const ScreenParams& p) {
     if (bad(p.recoveryGapFactor) || p.recoveryGapFactor < 0 || p.recoveryGapFactor > 1e6) return "recovery gap factor must be 0..1e6";
     if (bad(p.areaTolerance) || p.areaTolerance <= 0 || p.areaTolerance > 0.5) return "area tolerance must be in (0, 0.5]";
     if (p.autoMaxPoints < 1000 || p.autoMaxPoints > 10000000) return "automatic-mode points must be 1000..10000000";
+    if (p.refineRounds < 0 || p.refineRounds > 3) return "refine rounds must be 0..3";
+    if (bad(p.sparseRateBelow) || p.sparseRateBelow < 0 || p.sparseRateBelow > 1e7)
+        return "sparse-pass rate must be in [0, 1e7] returns per second";
     if (!p.automatic) {
         if (p.magT == 0) return "mag_T not given and the automatic mode is off";
         if (p.magOc == 0) return "mag_OC not given and the automatic mode is off";
@@ -412,6 +416,88 @@ void runFixed(const std::vector<double>& t, const std::vector<double>& oc, const
 }
 }  // namespace
 
+namespace {
+// The extraction score (screen_auto.hpp) of a result over the whole pass, on the O-C it was
+// screened on (`order`: the points in time order).
+double wholePassScore(const std::vector<uint32_t>& order, const std::vector<double>& t, const std::vector<double>& oc,
+                      const ScreenResult& r) {
+    std::vector<double> st(order.size()), so(order.size());
+    std::vector<uint8_t> sel(order.size());
+    for (size_t k = 0; k < order.size(); ++k) {
+        st[k] = t[order[k]];
+        so[k] = oc[order[k]];
+        sel[k] = r.pointClass[order[k]] != PointClass::Noise;
+    }
+    return scoreExtraction(st.data(), so.data(), sel.data(), st.size()).score;
+}
+
+// ScreenParams::refineRounds: screen again on the O-C less the trend of the accepted track.
+void refine(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params, Feedback* fb,
+            ScreenResult& res) {
+    const size_t n = t.size();
+    std::vector<uint32_t> order(n);
+    for (uint32_t i = 0; i < n; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
+    double score = wholePassScore(order, t, oc, res);
+    std::vector<double> shift(n, 0.0), flat(n);
+    ScreenParams again = params;
+    again.refineRounds = 0;
+    for (int round = 0; round < params.refineRounds; ++round) {
+        if (cancelled(fb)) return;
+        const std::vector<uint8_t> mask = acceptedMask(res);
+        size_t used = 0;
+        for (uint8_t m : mask) used += m;
+        if (used < 10) return;  // too few points for a trend worth following
+        // The accepted points' trend in the current (flattened) O-C.
+        for (size_t i = 0; i < n; ++i) flat[i] = oc[i] - shift[i];
+        PostfitParams pp;
+        pp.degree = 8;
+        pp.rejectSigma = 3;
+        pp.normalPoints = false;
+        pp.binLengthS = 1;  // unused (no normal points); keeps validate() content
+        const PostfitResult f = postfit(t, flat, mask, {}, pp, fb);
+        if (!f.ok) return;
+        double lo = INFINITY, hi = -INFINITY;
+        for (size_t i = 0; i < n; ++i)
+            if (f.kept[i]) {
+                lo = std::min(lo, t[i]);
+                hi = std::max(hi, t[i]);
+            }
+        if (!(hi > lo)) return;
+        // A trend within one O-C pixel of a straight line changes nothing the image can see:
+        // a straight track (a pass against a good prediction) is not screened again.
+        {
+            const double yLo = evaluateTrend(f, lo), yHi = evaluateTrend(f, hi);
+            double dev = 0;
+            for (int k = 1; k < 64; ++k) {
+                const double x = lo + (hi - lo) * k / 64.0;
+                dev = std::max(dev, std::fabs(evaluateTrend(f, x) - (yLo + (yHi - yLo) * (x - lo) / (hi - lo))));
+            }
+            if (dev * res.magOc < 1) return;
+        }
+        std::vector<double> nextShift(shift);
+        for (size_t i = 0; i < n; ++i) {
+            nextShift[i] += evaluateTrend(f, std::clamp(t[i], lo, hi));
+            flat[i] = oc[i] - nextShift[i];
+        }
+        ScreenResult r2 = screenSignal(t, flat, again, fb);
+        if (!r2.ok) return;
+        const double score2 = wholePassScore(order, t, flat, r2);
+        if (!(score2 >= score)) return;
+        r2.autoMs += res.autoMs;
+        r2.mapMs += res.mapMs;
+        r2.linearityMs += res.linearityMs;
+        r2.recoveryMs += res.recoveryMs;
+        r2.autoArea = res.autoArea;
+        r2.refinedRounds = res.refinedRounds + 1;
+        shift = nextShift;
+        r2.flattenS = shift;
+        res = std::move(r2);
+        score = score2;
+    }
+}
+}  // namespace
+
 ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
                           Feedback* fb) {
     const auto t0 = Clock::now();
@@ -457,6 +543,9 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
     }
     if (fb) fb->setProgress(0.4);
     runFixed(t, oc, params, fb, res);
+    const double span = n > 1 ? *std::max_element(t.begin(), t.end()) - *std::min_element(t.begin(), t.end()) : 0;
+    const bool sparse = params.sparseRateBelow <= 0 || !(span > 0) || double(n) / span < params.sparseRateBelow;
+    if (res.ok && params.automatic && params.refineRounds > 0 && sparse) refine(t, oc, params, fb, res);
     res.totalMs = msSince(t0);
     if (res.ok && fb) fb->setProgress(1.0);
     return res;

@@ -67,6 +67,21 @@ struct ScreenParams {
                                    ///< it (automaticAreaLimit); (0, 0.5]
     int autoMaxPoints = 30000;     ///< automatic mode scores scales on at most this many points (three
                                    ///< time windows of the pass); 1000..1e7
+    /// Automatic mode (automatic = true): after the screening, a smooth trend (Legendre
+    /// polynomial, 3σ-clipped, held constant outside the accepted time span) is fitted to the
+    /// accepted points and subtracted, and the flattened O-C is screened again; the second
+    /// result is kept when its extraction score (scoreExtraction over the whole pass) is at least
+    /// the first one's; a trend within one O-C pixel of a straight line ends it (nothing
+    /// to flatten). Up to this many rounds; 0 = off (always off with automatic = false, the
+    /// paper's fixed procedure). Why: an O-C without a prediction (fitted TOF trend) leaves the
+    /// track curved and broken (arches of tens of ns, segments at different levels), which the
+    /// slope step and the area split handle badly; the track of the first round flattens it.
+    int refineRounds = 2;          ///< 0..3
+    /// Sparse passes — fewer returns per second than this over the pass (e.g. 10 Hz multi-photon
+    /// passes with a few returns a second) — get the extra scale ladders of low noise occupancy
+    /// and the refinement rounds; dense passes (kHz) do not need them and skip their cost.
+    /// 0 = always use them.
+    double sparseRateBelow = 50;
 };
 
 /// Empty when the parameters are valid, else what is wrong (names the parameter).
@@ -89,7 +104,10 @@ struct ScreenResult {
     double magT = 0, magOc = 0;
     int areaLimit = 0, connectivity = 0;
     bool autoMagT = false, autoMagOc = false, autoArea = false, autoConnectivity = false;
-    std::vector<ScaleTrial> trials;  ///< automatic mode: every scale tried, in order
+    std::vector<ScaleTrial> trials;  ///< automatic mode: every scale tried, in order (of the kept round)
+    int refinedRounds = 0;           ///< screening rounds on a flattened O-C that were kept (refineRounds)
+    std::vector<double> flattenS;    ///< when refinedRounds > 0: per point, the trend subtracted from the O-C
+                                     ///< before the kept round (its image is of oc − flattenS); else empty
     // Per point (same order as the input).
     std::vector<PointClass> pointClass;
     std::vector<uint32_t> pointRegion;   ///< region id of each point (index into regions)

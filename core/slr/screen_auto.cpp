@@ -46,27 +46,56 @@ ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t
         s.score = -static_cast<double>(ns);
         return s;
     }
-    // Trend: piecewise linear through (median t, median O-C) of K time groups of the selection.
-    const size_t K = ns < 10 ? 1 : std::clamp<size_t>(ns / 30, 2, 24);
-    std::vector<double> kt, ko, bufT, bufO;
+    // Trend: K time groups of the selection (at least 8 points each, at most 24 groups), each
+    // with a robust line (slope: median of the slopes between the points half a group apart;
+    // level: median at the group's median epoch); inside a group's time span its line, between
+    // two groups the straight join of their end values, constant beyond the ends. A line per
+    // group, not one (median t, median O-C) knot per group: a steep, curved track with a sharp
+    // jitter (a sparse pass against a fitted-trend O-C: 8 ns/s, 100 ps) sits on its local lines
+    // to within the jitter, while knots joined across tens of seconds miss it by nanoseconds and
+    // would push most of a clean track outside its own band.
+    const size_t K = ns < 16 ? 1 : std::clamp<size_t>(ns / 8, 2, 24);
+    struct Piece {
+        double t0, t1, tm, om, slope;
+        double at(double x) const { return om + slope * (x - tm); }
+    };
+    std::vector<Piece> pieces;
+    pieces.reserve(K);
+    std::vector<double> bufT, bufO;
     for (size_t g = 0; g < K; ++g) {
-        const size_t a = g * ns / K, b = (g + 1) * ns / K;
+        const size_t a = g * ns / K, b = (g + 1) * ns / K, m = b - a;
+        Piece pc;
+        pc.t0 = t[sel[a]];
+        pc.t1 = t[sel[b - 1]];
         bufT.clear();
+        for (size_t j = a; j < b; ++j) bufT.push_back(t[sel[j]]);
+        pc.tm = medianOf(bufT);
+        const size_t h = std::max<size_t>(1, m / 2);
         bufO.clear();
-        for (size_t j = a; j < b; ++j) {
-            bufT.push_back(t[sel[j]]);
-            bufO.push_back(oc[sel[j]]);
+        for (size_t j = a; j + h < b; ++j) {
+            const double dt = t[sel[j + h]] - t[sel[j]];
+            if (dt > 0) bufO.push_back((oc[sel[j + h]] - oc[sel[j]]) / dt);
         }
-        kt.push_back(medianOf(bufT));
-        ko.push_back(medianOf(bufO));
+        pc.slope = bufO.empty() ? 0 : medianOf(bufO);
+        bufO.clear();
+        for (size_t j = a; j < b; ++j) bufO.push_back(oc[sel[j]] - pc.slope * (t[sel[j]] - pc.tm));
+        pc.om = medianOf(bufO);
+        pieces.push_back(pc);
     }
     auto trend = [&](double x) {
-        if (K == 1 || x <= kt.front()) return ko.front();
-        if (x >= kt.back()) return ko.back();
-        const size_t j = static_cast<size_t>(std::upper_bound(kt.begin(), kt.end(), x) - kt.begin());  // kt[j-1] <= x < kt[j]
-        const double dt = kt[j] - kt[j - 1];
-        if (dt <= 0) return ko[j];
-        return ko[j - 1] + (ko[j] - ko[j - 1]) * (x - kt[j - 1]) / dt;
+        if (x <= pieces.front().t0) return pieces.front().at(pieces.front().t0);
+        if (x >= pieces.back().t1) return pieces.back().at(pieces.back().t1);
+        // The last piece starting at or before x.
+        size_t lo = 0, hi = pieces.size();
+        while (hi - lo > 1) {
+            const size_t mid = (lo + hi) / 2;
+            (pieces[mid].t0 <= x ? lo : hi) = mid;
+        }
+        const Piece& p = pieces[lo];
+        if (x <= p.t1 || lo + 1 == pieces.size()) return p.at(std::min(x, p.t1));
+        const Piece& q = pieces[lo + 1];
+        const double a = p.at(p.t1), b = q.at(q.t0), dt = q.t0 - p.t1;
+        return dt > 0 ? a + (b - a) * (x - p.t1) / dt : b;
     };
     std::vector<double> rs;
     rs.reserve(ns);
@@ -75,7 +104,7 @@ ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t
     const double med = medianOf(tmp);
     for (double& v : tmp) v = std::fabs(v - med);
     const double sigma = 1.4826 * medianOf(tmp);
-    const double h = 3 * sigma;
+    const double h = 5 * sigma;
     double lo = oc[0], hi = oc[0];
     for (size_t i = 1; i < n; ++i) {
         lo = std::min(lo, oc[i]);
@@ -230,17 +259,32 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
 
     double sc = 0;
     if (oAuto) {
-        // Coarse ladder over the O-C scale, from coarse to fine; stop when the time pixel gets
-        // too long for the windows or after 4 trials below the best.
-        int worse = 0;
-        for (int k = 2; k <= 24; ++k) {
-            if (cancelled(fb)) break;
-            if (!trial(k, 0.1, conn0, &sc)) {
-                if (tAuto && dT(k, 0.1) > meanWinSpan / 8) break;
-                continue;
+        // Coarse ladders over the O-C scale, from coarse to fine; each stops when the time pixel
+        // gets too long for the windows or after 4 trials below its best. With the time pixel
+        // automatic, one ladder per noise occupancy c = 0.1, 0.1/8, 0.1/64, 0.1/512: the first
+        // suits dense passes (kHz, many returns per second), the sparse ones suit passes of a few
+        // returns per second with a sharp track in a wide gate (e.g. MLRS 10 Hz multi-photon
+        // passes: 0.1 ns jitter in a 10 µs gate), whose track only forms regions with time pixels
+        // of a few seconds, i.e. far below 0.1 noise points per pixel.
+        const bool sparse = params.sparseRateBelow <= 0 || res.ratePerS < params.sparseRateBelow;
+        const std::vector<double> ladderC = tAuto && sparse ? std::vector<double>{0.1, 0.1 / 8, 0.1 / 64, 0.1 / 512}
+                                                            : std::vector<double>{0.1};
+        for (double c : ladderC) {
+            int worse = 0;
+            double ladderBest = -1e300;
+            for (int k = 2; k <= 24; ++k) {
+                if (cancelled(fb)) break;
+                if (!trial(k, c, conn0, &sc)) {
+                    if (tAuto && dT(k, c) > meanWinSpan / 8) break;
+                    continue;
+                }
+                if (sc > ladderBest) {
+                    ladderBest = sc;
+                    worse = 0;
+                } else if (ladderBest > 0 && ++worse >= 4) {
+                    break;
+                }
             }
-            worse = (best.k == k || best.score <= 0) ? 0 : worse + 1;
-            if (worse >= 4) break;
         }
     } else if (tAuto) {
         int worse = 0;

@@ -15,8 +15,8 @@
 // a (the ladder runs over c = 2^j); a manual mag_T fixes the time pixel.
 //
 // Score (no truth needed). From the trial's own output S in each window: a piecewise-linear
-// trend through the medians of S in time groups, the robust width σ_S = 1.4826·MAD of S's
-// residuals, and the band |residual| ≤ h = 3σ_S. Noise density is measured outside the band
+// trend of S (a robust line per time group of >= 8 points, joined; see scoreExtraction), the robust width σ_S = 1.4826·MAD of S's
+// residuals, and the band |residual| ≤ h = 5σ_S. Noise density is measured outside the band
 // (uniform over the O-C span), which predicts E noise points inside it. With N_in points in
 // the band of which S_in selected: estimated true detections tp = S_in·(1 − E/N_in),
 // false ones fp = |S| − tp, and the score is tp − 2·fp (a false detection costs two true
