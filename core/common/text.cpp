@@ -81,6 +81,24 @@ std::string formatShortest(double v) {
     return formatDouble(v, 17);
 }
 
+std::string printableExcerpt(std::string_view s, size_t maxLen) {
+    std::string out;
+    for (size_t i = 0; i < s.size() && i < maxLen; ++i) {
+        const unsigned char c = static_cast<unsigned char>(s[i]);
+        if (c >= 32 && c < 127) {
+            out += static_cast<char>(c);
+        } else {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", c);
+            out += buf;
+        }
+    }
+    if (s.size() > maxLen) out += "...";
+    return out;
+}
+
+std::string whereInFile(const std::string& source, long line) { return source + ":" + std::to_string(line) + ": "; }
+
 std::string formatFixed(double v, int decimals) {
     if (std::isnan(v)) return "nan";
     char buf[64];

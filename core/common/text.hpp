@@ -20,6 +20,11 @@ std::string toLower(std::string_view s);
 std::string formatDouble(double v, int significant = 10);
 /// Shortest "%g" text that reads back to exactly v.
 std::string formatShortest(double v);
+/// A field or line quoted in an error message: at most maxLen characters, control and
+/// non-ASCII bytes shown as \xNN, "..." when cut.
+std::string printableExcerpt(std::string_view s, size_t maxLen = 40);
+/// "SOURCE:LINE: " — the prefix of a message about a line of a file.
+std::string whereInFile(const std::string& source, long line);
 /// Fixed-point formatting with `decimals` digits after the point.
 std::string formatFixed(double v, int decimals);
 

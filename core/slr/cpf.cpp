@@ -13,23 +13,9 @@ namespace lwb::core::slr {
 
 namespace {
 
-std::string where(const std::string& src, long line) { return src + ":" + std::to_string(line) + ": "; }
+std::string where(const std::string& src, long line) { return whereInFile(src, line); }
 
-std::string excerpt(std::string_view s, size_t maxLen = 40) {
-    std::string out;
-    for (size_t i = 0; i < s.size() && i < maxLen; ++i) {
-        const unsigned char c = static_cast<unsigned char>(s[i]);
-        if (c >= 32 && c < 127) {
-            out += static_cast<char>(c);
-        } else {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\x%02x", c);
-            out += buf;
-        }
-    }
-    if (s.size() > maxLen) out += "...";
-    return out;
-}
+std::string excerpt(std::string_view s, size_t maxLen = 40) { return printableExcerpt(s, maxLen); }
 
 bool toInt(std::string_view s, long* out) {
     long long v = 0;

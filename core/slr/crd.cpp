@@ -39,22 +39,7 @@ bool isNa(std::string_view s) {
     return s.size() == 2 && (s[0] == 'n' || s[0] == 'N') && (s[1] == 'a' || s[1] == 'A');
 }
 
-/// Printable excerpt of a field or line for messages.
-std::string excerpt(std::string_view s, size_t maxLen = 40) {
-    std::string out;
-    for (size_t i = 0; i < s.size() && i < maxLen; ++i) {
-        const unsigned char c = static_cast<unsigned char>(s[i]);
-        if (c >= 32 && c < 127) {
-            out += static_cast<char>(c);
-        } else {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\x%02x", c);
-            out += buf;
-        }
-    }
-    if (s.size() > maxLen) out += "...";
-    return out;
-}
+std::string excerpt(std::string_view s, size_t maxLen = 40) { return printableExcerpt(s, maxLen); }
 
 enum class Need { Required, Optional };
 
@@ -408,6 +393,21 @@ bool parse40(const Fields& fs, CrdCalibration* r, std::string* why) {
            numberField(fs, 17, "return rate", Need::Optional, &r->returnRatePct, why);
 }
 
+/// Parses data record r (index i of the pass) into `list` with `parse`; a record that does not
+/// parse is skipped with a warning naming its line. `x` may carry preset fields.
+template <class Rec, class Parse>
+void addRecord(Parse parse, const CrdRecord& r, size_t i, const std::string& src, Sink* sink, const char* what,
+               std::vector<Rec>& list, Rec x = Rec{}) {
+    std::string why;
+    if (!parse(Fields(r.text), &x, &why)) {
+        sink->add(where(src, r.line) + what + " record skipped: " + why);
+        return;
+    }
+    x.record = i;
+    x.line = r.line;
+    list.push_back(std::move(x));
+}
+
 /// Fills the parsed lists of a pass from its records. Header values present in the records
 /// override the inherited ones already in the pass. False (with *error) when the H4 is bad.
 bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::string* error) {
@@ -440,69 +440,21 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
         } else if (id == "h5") {
             p->predictionHeader = r.text;
         } else if (id == "c0") {
-            CrdSystemConfig c;
-            if (!parseC0(Fields(r.text), &c, &why)) {
-                sink->add(where(src, r.line) + "C0 record skipped: " + why);
-                continue;
-            }
-            c.record = i;
-            c.line = r.line;
-            p->configs.push_back(std::move(c));
+            addRecord(parseC0, r, i, src, sink, "C0", p->configs);
         } else if (id == "10") {
-            CrdRange x;
-            if (!parse10(Fields(r.text), &x, &why)) {
-                sink->add(where(src, r.line) + "type 10 record skipped: " + why);
-                continue;
-            }
-            x.record = i;
-            x.line = r.line;
-            p->ranges.push_back(std::move(x));
+            addRecord(parse10, r, i, src, sink, "type 10", p->ranges);
         } else if (id == "11") {
-            CrdNormalPoint x;
-            if (!parse11(Fields(r.text), &x, &why)) {
-                sink->add(where(src, r.line) + "type 11 record skipped: " + why);
-                continue;
-            }
-            x.record = i;
-            x.line = r.line;
-            p->normalPoints.push_back(std::move(x));
+            addRecord(parse11, r, i, src, sink, "type 11", p->normalPoints);
         } else if (id == "12") {
-            CrdRangeSupplement x;
-            if (!parse12(Fields(r.text), &x, &why)) {
-                sink->add(where(src, r.line) + "type 12 record skipped: " + why);
-                continue;
-            }
-            x.record = i;
-            x.line = r.line;
-            p->supplements.push_back(std::move(x));
+            addRecord(parse12, r, i, src, sink, "type 12", p->supplements);
         } else if (id == "20") {
-            CrdMeteo x;
-            if (!parse20(Fields(r.text), &x, &why)) {
-                sink->add(where(src, r.line) + "type 20 record skipped: " + why);
-                continue;
-            }
-            x.record = i;
-            x.line = r.line;
-            p->meteo.push_back(x);
+            addRecord(parse20, r, i, src, sink, "type 20", p->meteo);
         } else if (id == "30") {
-            CrdPointing x;
-            if (!parse30(Fields(r.text), &x, &why)) {
-                sink->add(where(src, r.line) + "type 30 record skipped: " + why);
-                continue;
-            }
-            x.record = i;
-            x.line = r.line;
-            p->pointing.push_back(x);
+            addRecord(parse30, r, i, src, sink, "type 30", p->pointing);
         } else if (id == "40" || id == "41") {
             CrdCalibration x;
             x.detail = id == "41";
-            if (!parse40(Fields(r.text), &x, &why)) {
-                sink->add(where(src, r.line) + "type " + id + " record skipped: " + why);
-                continue;
-            }
-            x.record = i;
-            x.line = r.line;
-            p->calibrations.push_back(std::move(x));
+            addRecord(parse40, r, i, src, sink, id == "41" ? "type 41" : "type 40", p->calibrations, std::move(x));
         }
     }
     if (!sawH4) {

@@ -24,21 +24,7 @@ std::string_view trimBlanks(std::string_view s) {
     return s.substr(b, e - b);
 }
 
-std::string excerpt(std::string_view s, size_t maxLen = 32) {
-    std::string out;
-    for (size_t i = 0; i < s.size() && i < maxLen; ++i) {
-        const unsigned char c = static_cast<unsigned char>(s[i]);
-        if (c >= 32 && c < 127) {
-            out += static_cast<char>(c);
-        } else {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\x%02x", c);
-            out += buf;
-        }
-    }
-    if (s.size() > maxLen) out += "...";
-    return out;
-}
+std::string excerpt(std::string_view s, size_t maxLen = 32) { return printableExcerpt(s, maxLen); }
 
 /// Splits one line into fields (handles "quoted, fields" with "" escapes). Returns false on an
 /// unterminated quote. Fields are views into the line (quotes stripped; escaped quotes stay doubled,
