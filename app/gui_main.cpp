@@ -23,7 +23,10 @@ int main(int argc, char** argv) {
     cli.addVersionOption();
     cli.addPositionalArgument("session", "A session file (.lwb.json) to open; none opens the built-in demo.");
     QCommandLineOption shot("screenshot", "Render the window to OUT.png and exit.", "OUT.png");
-    QCommandLineOption ws("workspace", "Workspace (and tab) to show: footprint, footprint:trend, slr.", "name",
+    QCommandLineOption ws("workspace",
+                          "Workspace (and tab) to show: footprint, footprint:trend, slr, calibration, "
+                          "calibration:waveform, radiometry.",
+                          "name",
                           "footprint");
     QCommandLineOption size("size", "Window size for --screenshot, WxH.", "WxH", "1480x900");
     cli.addOptions({shot, ws, size});

@@ -21,6 +21,8 @@
 #include "ui/footprint_workspace.hpp"
 #include "ui/slr_controller.hpp"
 #include "ui/slr_workspace.hpp"
+#include "ui/calib_workspace.hpp"
+#include "ui/radiometry_workspace.hpp"
 
 namespace lwb::ui {
 
@@ -37,12 +39,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_tabs->addTab(m_footprint, tr("Footprint review"));
     m_slr = new SlrWorkspace(m_tabs);
     m_tabs->addTab(m_slr, tr("SLR pass screening"));
+    m_calib = new CalibWorkspace(m_tabs);
+    m_tabs->addTab(m_calib, tr("Altimeter calibration"));
+    m_radiometry = new RadiometryWorkspace(m_tabs);
+    m_tabs->addTab(m_radiometry, tr("Radiometry"));
     setCentralWidget(m_tabs);
     buildMenus();
     connect(m_footprint, &FootprintWorkspace::modified, this, [this] { setModified(true); });
     connect(m_footprint, &FootprintWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 5000); });
     connect(m_slr, &SlrWorkspace::modified, this, [this] { setModified(true); });
     connect(m_slr, &SlrWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 8000); });
+    connect(m_calib, &CalibWorkspace::modified, this, [this] { setModified(true); });
+    connect(m_calib, &CalibWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 8000); });
+    connect(m_radiometry, &RadiometryWorkspace::modified, this, [this] { setModified(true); });
+    connect(m_radiometry, &RadiometryWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 8000); });
     connect(m_footprint->controller(), &FootprintController::error, this,
             [this](const QString& msg) { showError(tr("Cannot open the footprint inputs"), msg); });
     // Progress of long loads, with a cancel button, in the status bar.
@@ -114,7 +124,10 @@ void MainWindow::openDemo() {
     m_footprint->controller()->setShots(demoFootprintShots());
     m_footprint->controller()->setParams(m_footprint->paramsPanel()->params());
     m_slr->openDemo();
-    statusBar()->showMessage(tr("Built-in demo: %1 simulated footprint shots and a simulated kHz pass")
+    m_calib->openDemo();
+    m_radiometry->openDemo();
+    statusBar()->showMessage(tr("Built-in demo: %1 simulated footprint shots, a simulated kHz pass, a simulated "
+                                "calibration and a synthetic radiometric scene")
                                  .arg(m_footprint->controller()->count()),
                              8000);
     m_sessionPath.clear();
@@ -139,9 +152,12 @@ QJsonObject MainWindow::sessionState() const {
     QJsonObject o;
     o["format"] = "laserwb-session";
     o["version"] = kSessionVersion;
-    o["workspace"] = m_tabs->currentWidget() == m_slr ? "slr" : "footprint";
+    QWidget* cur = m_tabs->currentWidget();
+    o["workspace"] = cur == m_slr ? "slr" : cur == m_calib ? "calibration" : cur == m_radiometry ? "radiometry" : "footprint";
     o["footprint"] = m_footprint->saveState();
     o["slr"] = m_slr->saveState();
+    o["calibration"] = m_calib->saveState();
+    o["radiometry"] = m_radiometry->saveState();
     return o;
 }
 
@@ -187,11 +203,17 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
     QString err;
     const QJsonObject before = m_footprint->saveState();
     const QJsonObject slrBefore = m_slr->saveState();
+    const QJsonObject calibBefore = m_calib->saveState();
+    const QJsonObject radBefore = m_radiometry->saveState();
     if (!m_footprint->restoreState(o["footprint"].toObject(), &err) ||
-        (o.contains("slr") && !m_slr->restoreState(o["slr"].toObject(), &err))) {
+        (o.contains("slr") && !m_slr->restoreState(o["slr"].toObject(), &err)) ||
+        (o.contains("calibration") && !m_calib->restoreState(o["calibration"].toObject(), &err)) ||
+        (o.contains("radiometry") && !m_radiometry->restoreState(o["radiometry"].toObject(), &err))) {
         QString ignored;
         m_footprint->restoreState(before, &ignored);
         m_slr->restoreState(slrBefore, &ignored);
+        m_calib->restoreState(calibBefore, &ignored);
+        m_radiometry->restoreState(radBefore, &ignored);
         return fail(tr("%1: %2").arg(path, err));
     }
     m_sessionPath = path;
@@ -285,16 +307,33 @@ void MainWindow::showWorkspace(const QString& name) {
         if (parts.size() > 1) m_footprint->showTab(parts[1]);
     } else if (parts[0] == "slr") {
         m_tabs->setCurrentWidget(m_slr);
+    } else if (parts[0] == "calibration") {
+        m_tabs->setCurrentWidget(m_calib);
+        if (parts.size() > 1) m_calib->showTab(parts[1]);
+    } else if (parts[0] == "radiometry") {
+        m_tabs->setCurrentWidget(m_radiometry);
     }
 }
 
 bool MainWindow::waitIdle(int timeoutMs) {
+    // Every workspace idle at once, twice in a row with events processed between (a finished
+    // job may start the next one, e.g. the radiometry mosaic and then its fit).
     QElapsedTimer t;
     t.start();
-    const bool ok = m_footprint->controller()->waitIdle(timeoutMs) && m_slr->controller()->waitIdle(timeoutMs);
-    // Let queued results (current shot, plots) reach the widgets.
-    while (t.elapsed() < timeoutMs && t.elapsed() < 300) QApplication::processEvents(QEventLoop::AllEvents, 20);
-    return ok;
+    auto allIdle = [&](int ms) {
+        return m_footprint->controller()->waitIdle(ms) && m_slr->controller()->waitIdle(ms) &&
+               m_calib->controller()->waitIdle(ms) && m_radiometry->controller()->waitIdle(ms);
+    };
+    int quietRounds = 0;
+    while (t.elapsed() < timeoutMs && quietRounds < 2) {
+        const int left = int(std::max<qint64>(1, timeoutMs - t.elapsed()));
+        if (!allIdle(left)) return false;
+        QElapsedTimer settle;
+        settle.start();
+        while (settle.elapsed() < 150) QApplication::processEvents(QEventLoop::AllEvents, 20);
+        quietRounds = allIdle(1) ? quietRounds + 1 : 0;
+    }
+    return quietRounds >= 2;
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {

@@ -13,6 +13,8 @@ namespace lwb::ui {
 
 class FootprintWorkspace;
 class SlrWorkspace;
+class CalibWorkspace;
+class RadiometryWorkspace;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -21,6 +23,8 @@ public:
 
     FootprintWorkspace* footprint() const { return m_footprint; }
     SlrWorkspace* slr() const { return m_slr; }
+    CalibWorkspace* calib() const { return m_calib; }
+    RadiometryWorkspace* radiometry() const { return m_radiometry; }
     QTabWidget* tabs() const { return m_tabs; }
 
     /// Loads the built-in demo in every workspace.
@@ -54,6 +58,8 @@ private:
     QTabWidget* m_tabs;
     FootprintWorkspace* m_footprint;
     SlrWorkspace* m_slr;
+    CalibWorkspace* m_calib;
+    RadiometryWorkspace* m_radiometry;
     QMenu* m_recentMenu = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;

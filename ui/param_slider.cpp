@@ -43,7 +43,7 @@ ParamSlider::ParamSlider(const QString& label, double lo, double hi, double valu
     m_field->setRange(lo, hi);
     m_field->setSingleStep(m_log ? value / 10 : (hi - lo) / 100);
     m_field->setKeyboardTracking(false);
-    m_field->setMinimumWidth(82);
+    m_field->setMinimumWidth(104);
     if (!unit.isEmpty()) m_field->setSuffix(" " + unit);
     lay->addWidget(m_label);
     lay->addWidget(m_slider, 1);

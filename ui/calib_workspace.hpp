@@ -1,0 +1,110 @@
+#pragma once
+// The altimeter calibration workspace (paper 002): the ground detector array's energies as a
+// colour map with the fitted footprint and its centre's uncertainty ellipse, the convergence of
+// the pointing & range calibration and of the detector fit, the labelled validation statistics
+// of the elevation differences, the calibrated parameters, and the waveform match (two-peak
+// decomposition, candidate features ranked by Δh).
+//
+// For MainWindow (the lead):
+//   m_calib = new CalibWorkspace(m_tabs);
+//   m_tabs->addTab(m_calib, tr("Altimeter calibration"));
+//   connect(m_calib, &CalibWorkspace::modified, this, [this] { setModified(true); });
+//   connect(m_calib, &CalibWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 8000); });
+//   openDemo():      m_calib->openDemo();
+//   sessionState():  o["calibration"] = m_calib->saveState();
+//   openSession():   before = m_calib->saveState(); then
+//                    (o.contains("calibration") && !m_calib->restoreState(o["calibration"].toObject(), &err))
+//                    → on failure restoreState(before, &ignored) like the other workspaces
+//   waitIdle():      m_calib->controller()->waitIdle(timeoutMs)
+//   showWorkspace(): "calibration" → m_tabs->setCurrentWidget(m_calib); "calibration:waveform"
+//                    also calls m_calib->showTab("waveform")
+// Errors of the open buttons and exports are shown in a dialog here (a warning on the
+// offscreen platform), with the file and line from the core's message.
+#include <QJsonObject>
+#include <QWidget>
+
+#include "ui/calib_controller.hpp"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QTabWidget;
+class QTableWidget;
+class QCustomPlot;
+class QCPColorMap;
+class QCPColorScale;
+class QCPCurve;
+class QCPGraph;
+
+namespace lwb::ui {
+
+class ParamSlider;
+
+class CalibWorkspace : public QWidget {
+    Q_OBJECT
+public:
+    explicit CalibWorkspace(QWidget* parent = nullptr);
+    CalibController* controller() const { return m_controller; }
+
+    /// Every input from the simulators: detector array, 4 calibration passes of both beams, 22
+    /// independent check passes, a double-peak waveform over six candidate features.
+    void openDemo();
+    QJsonObject saveState() const;
+    /// Validates everything first; on error (*error says what) the previous state stays.
+    bool restoreState(const QJsonObject& state, QString* error);
+    /// "detector" (array, pointing, statistics) or "waveform".
+    void showTab(const QString& name);
+
+    // For tests and screenshots.
+    QDoubleSpinBox* triggerField() const { return m_trigger; }
+    QDoubleSpinBox* thresholdField() const { return m_thredH; }
+    QComboBox* pointingModelBox() const { return m_pointingModel; }
+    QCustomPlot* energyPlot() const { return m_energyPlot; }
+    QCustomPlot* centrePlot() const { return m_centrePlot; }
+    QCustomPlot* pointingConvergencePlot() const { return m_convPlot; }
+    QCustomPlot* detectorConvergencePlot() const { return m_detConvPlot; }
+    QCustomPlot* waveformPlot() const { return m_wavePlot; }
+    QTableWidget* statsTable() const { return m_statsTable; }
+    QTableWidget* paramTable() const { return m_paramTable; }
+    QTableWidget* rankingTable() const { return m_rankTable; }
+    QLabel* detectorSummary() const { return m_detSummary; }
+
+signals:
+    void modified();
+    void status(const QString& message);
+
+private:
+    void buildPanel(QWidget* panel);
+    void showRun(const CalibRun& run);
+    void showDetector(const CalibRun& run);
+    void showPointing(const CalibRun& run);
+    void showStats(const CalibRun& run);
+    void showWaveform(const CalibRun& run);
+    void showInputs();
+    void paramsFromWidgets();
+    void widgetsFromParams();
+    void showError(const QString& title, const QString& message);
+    QString openFile(const QString& title, const QString& filter);
+    void exportWith(const QString& title, const QString& filter,
+                    bool (CalibController::*fn)(const QString&, QString*) const);
+
+    CalibController* m_controller;
+    QTabWidget* m_tabs;
+    QLabel *m_inputs, *m_detSummary, *m_statsSource, *m_waveSummary, *m_pointingSummary;
+    QCustomPlot *m_energyPlot, *m_centrePlot, *m_convPlot, *m_detConvPlot, *m_wavePlot;
+    QCPColorMap* m_energyMap;
+    QCPColorScale* m_energyScale;
+    QTableWidget *m_statsTable, *m_paramTable, *m_rankTable;
+    // Parameters.
+    QComboBox *m_surfaceModel, *m_pointingModel, *m_colorMap;
+    QCheckBox *m_fitBackground, *m_detScaleChi2, *m_solveRange, *m_fixRelative, *m_ptScaleChi2, *m_showTruth;
+    QDoubleSpinBox *m_background, *m_trigger, *m_saturation, *m_noiseFloor;
+    ParamSlider* m_relNoise;
+    QDoubleSpinBox *m_sigmaH, *m_sigmaV, *m_sigmaRange, *m_sigmaAtt, *m_sigmaOrbit;
+    QDoubleSpinBox *m_incidence, *m_thredH, *m_smooth, *m_minSep, *m_dt;
+    bool m_loading = false;
+    bool m_fresh = true;  // the next detector result rescales the views
+};
+
+}  // namespace lwb::ui

@@ -1,0 +1,102 @@
+#pragma once
+// The radiometry workspace (paper 003): the DN image or row mosaic with the picked regions,
+// region picking (drag a rectangle, type the spectrometer's reflectance in the table), the
+// V_REF = K·V_DN + B fit with K, B, their standard errors and the uncertainty, the reflectance
+// image with its colour bar, and the relative errors of the check regions.
+//
+// For MainWindow (the lead):
+//   m_radiometry = new RadiometryWorkspace(m_tabs);
+//   m_tabs->addTab(m_radiometry, tr("Radiometry"));
+//   connect(m_radiometry, &RadiometryWorkspace::modified, this, [this] { setModified(true); });
+//   connect(m_radiometry, &RadiometryWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 8000); });
+//   openDemo():      m_radiometry->openDemo();   (the demo mosaic is built in the background)
+//   sessionState():  o["radiometry"] = m_radiometry->saveState();
+//   openSession():   before = m_radiometry->saveState(); then
+//                    (o.contains("radiometry") && !m_radiometry->restoreState(o["radiometry"].toObject(), &err))
+//                    → on failure restoreState(before, &ignored) like the other workspaces
+//   waitIdle():      m_radiometry->controller()->waitIdle(timeoutMs)
+//   showWorkspace(): "radiometry" → m_tabs->setCurrentWidget(m_radiometry)
+// Errors of the open buttons, the mosaic and the exports are shown in a dialog here (a warning
+// on the offscreen platform), with the file and line from the core's message.
+#include <QJsonObject>
+#include <QWidget>
+
+#include "ui/radiometry_controller.hpp"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QRadioButton;
+class QTableWidget;
+class QCustomPlot;
+class QCPColorMap;
+class QCPColorScale;
+
+namespace lwb::ui {
+
+class RadiometryWorkspace : public QWidget {
+    Q_OBJECT
+public:
+    explicit RadiometryWorkspace(QWidget* parent = nullptr);
+    RadiometryController* controller() const { return m_controller; }
+
+    /// The simulated field (six frames mosaicked in the background, grey panels, check surfaces).
+    void openDemo();
+    QJsonObject saveState() const;
+    /// Validates everything first; on error (*error says what) the previous state stays.
+    bool restoreState(const QJsonObject& state, QString* error);
+
+    /// Adds a region drawn over `imageRect` (image pixels) as if the analyst had dragged it:
+    /// the new row is selected and its reflectance cell opened for typing. Returns its index.
+    int regionDrawn(const QRectF& imageRect, RegionRole role);
+
+    // For tests and screenshots.
+    QCustomPlot* dnPlot() const { return m_dnPlot; }
+    QCustomPlot* reflectancePlot() const { return m_reflPlot; }
+    QCustomPlot* fitPlot() const { return m_fitPlot; }
+    QTableWidget* regionTable() const { return m_regionTable; }
+    QTableWidget* errorTable() const { return m_errorTable; }
+    QLabel* fitSummary() const { return m_fitSummary; }
+    QDoubleSpinBox* vmField() const { return m_vm; }
+    QRadioButton* drawFitButton() const { return m_modeFit; }
+    QRadioButton* drawCheckButton() const { return m_modeCheck; }
+
+signals:
+    void modified();
+    void status(const QString& message);
+
+private:
+    void buildPanel(QWidget* panel);
+    void showImage();
+    void showRun(const RadiometryRun& run);
+    void showOverlays();
+    void refreshRegionTable();
+    void showFit(const RadiometryRun& run);
+    void showErrors(const RadiometryRun& run);
+    void showReflectance(const RadiometryRun& run);
+    void fitImage(QCustomPlot* plot);
+    void alignImagePlots();
+    void paramsFromWidgets();
+    void widgetsFromParams();
+    void showError(const QString& title, const QString& message);
+    void exportWith(const QString& title, const QString& filter,
+                    bool (RadiometryController::*fn)(const QString&, QString*) const);
+    int selectedRegion() const;
+
+    RadiometryController* m_controller;
+    QCustomPlot *m_dnPlot, *m_reflPlot, *m_fitPlot;
+    QCPColorMap *m_dnMap, *m_reflMap;
+    QCPColorScale *m_dnScale, *m_reflScale;
+    QTableWidget *m_regionTable, *m_errorTable;
+    QLabel *m_info, *m_readout, *m_fitSummary, *m_errorSummary, *m_mosaicInfo;
+    QRadioButton *m_modePan, *m_modeFit, *m_modeCheck;
+    QComboBox *m_dnColors, *m_reflColors, *m_features, *m_motion, *m_blend;
+    QCheckBox *m_exclude, *m_nanOut, *m_uncImage;
+    QDoubleSpinBox *m_dnMin, *m_dnMax, *m_vm, *m_limit, *m_ransac;
+    bool m_loading = false;
+    bool m_tableUpdating = false;
+    bool m_linking = false;
+};
+
+}  // namespace lwb::ui
