@@ -29,6 +29,7 @@
 
 #include "ui/color_maps.hpp"
 #include "ui/param_slider.hpp"
+#include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
 
@@ -417,27 +418,7 @@ CalibWorkspace::CalibWorkspace(QWidget* parent) : QWidget(parent) {
     // Right: parameters.
     auto* panel = new QWidget(this);
     buildPanel(panel);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(panel);
-    scroll->setWidgetResizable(true);
-    scroll->setMinimumWidth(320);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-
-    auto* centre = new QWidget(this);
-    auto* cl = new QVBoxLayout(centre);
-    cl->setContentsMargins(0, 0, 0, 0);
-    cl->addLayout(top);
-    cl->addWidget(m_inputs);
-    cl->addWidget(m_tabs, 1);
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(centre);
-    split->addWidget(scroll);
-    split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 0);
-    split->setSizes({1130, 330});
-    auto* lay = new QHBoxLayout(this);
-    lay->setContentsMargins(4, 4, 4, 4);
-    lay->addWidget(split);
+    layoutWorkspace(this, top, m_inputs, m_tabs, panel, 350, 1100);
 
     // Wiring.
     connect(m_controller, &CalibController::runReady, this, &CalibWorkspace::showRun);

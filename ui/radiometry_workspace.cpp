@@ -29,6 +29,7 @@
 #include <qcustomplot.h>
 
 #include "ui/color_maps.hpp"
+#include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
 
@@ -337,27 +338,7 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
     // Right: parameters.
     auto* panel = new QWidget(this);
     buildPanel(panel);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(panel);
-    scroll->setWidgetResizable(true);
-    scroll->setMinimumWidth(300);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-
-    auto* centre = new QWidget(this);
-    auto* cl = new QVBoxLayout(centre);
-    cl->setContentsMargins(0, 0, 0, 0);
-    cl->addLayout(top);
-    cl->addWidget(m_info);
-    cl->addWidget(vsplit, 1);
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(centre);
-    split->addWidget(scroll);
-    split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 0);
-    split->setSizes({1150, 310});
-    auto* lay = new QHBoxLayout(this);
-    lay->setContentsMargins(4, 4, 4, 4);
-    lay->addWidget(split);
+    layoutWorkspace(this, top, m_info, vsplit, panel, 300, 1150);
 
     // Wiring.
     connect(m_controller, &RadiometryController::imageChanged, this, &RadiometryWorkspace::showImage);

@@ -23,6 +23,7 @@
 
 #include "core/sim/slr_sim.hpp"
 #include "ui/param_slider.hpp"
+#include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
 
@@ -212,25 +213,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     for (QPushButton* b : {savePreset, exCsv, exCrd, exNp}) xl->addWidget(b);
     pl->addWidget(xg);
     pl->addStretch(1);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(panel);
-    scroll->setWidgetResizable(true);
-    scroll->setMinimumWidth(340);
-
-    auto* centre = new QWidget(this);
-    auto* cl = new QVBoxLayout(centre);
-    cl->setContentsMargins(0, 0, 0, 0);
-    cl->addLayout(top);
-    cl->addWidget(m_info);
-    cl->addWidget(vsplit, 1);
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(centre);
-    split->addWidget(scroll);
-    split->setStretchFactor(0, 1);
-    split->setSizes({1100, 350});
-    auto* lay = new QHBoxLayout(this);
-    lay->setContentsMargins(4, 4, 4, 4);
-    lay->addWidget(split);
+    layoutWorkspace(this, top, m_info, vsplit, panel, 340, 1100);
 
     // Wiring.
     connect(m_controller, &SlrController::runReady, this, &SlrWorkspace::showRun);
