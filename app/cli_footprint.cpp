@@ -112,8 +112,12 @@ int cmdFootprint(int argc, char** argv) {
     core::Feedback fb;
     const bool keepGoing = a.has("--keep-going");
     std::string firstError;
+    const bool quietRun = a.has("-q") || a.has("--quiet");
     const BatchResult res = runFootprintBatch(files, bp, &fb, [&](size_t, const BatchItem& item) {
         progress.update(++done);
+        if (!quietRun)
+            for (const auto& r : item.rois)
+                for (const auto& w : r.warnings) std::cerr << "laserwb-cli footprint: warning: " << item.file << ": " << w << "\n";
         if (!keepGoing && firstError.empty()) {
             if (!item.readError.empty()) firstError = item.readError;
             for (const auto& r : item.rois)

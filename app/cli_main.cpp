@@ -47,7 +47,22 @@ const char* kMainUsage =
 int demo(int argc, char** argv);
 }  // namespace
 
+namespace {
+int dispatch(int argc, char** argv);
+}
+
+// Last resort: an exception escaping a command (out of memory, say) is reported, not a crash.
 int main(int argc, char** argv) {
+    try {
+        return dispatch(argc, argv);
+    } catch (const std::exception& e) {
+        std::cerr << "laserwb-cli: internal error: " << e.what() << " (nothing more was written)\n";
+        return lwb::cli::kFailed;
+    }
+}
+
+namespace {
+int dispatch(int argc, char** argv) {
     using namespace lwb::cli;
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
         std::cout << kMainUsage;
@@ -97,10 +112,11 @@ int main(int argc, char** argv) {
     std::cerr << "laserwb-cli: unknown command \"" << cmd << "\"\n\n" << kMainUsage;
     return kUsage;
 }
+}  // namespace
 
 namespace {
 // Simulates a few shots into a temporary folder, runs the footprint command on them and
-// prints the report: what `make run` shows until the GUI exists.
+// prints the report (a quick check of an installation without a display).
 int demo(int, char**) {
     using namespace lwb::cli;
     std::string dir = "/tmp/laserwb-demo-XXXXXX";

@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <iostream>
 #include <set>
+#include <cerrno>
+#include <cstring>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli_commands.hpp"
@@ -86,6 +89,23 @@ struct Staged {
 
 // Output files are first written (each atomically) under a staging name beside the target and
 // renamed into place only when every one of them was written: a failed run leaves none.
+// An output path that can be created or replaced: not a folder, in a folder that exists and
+// that we may write to. False with *why.
+bool outputWritable(const std::string& path, std::string* why) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+        *why = "is a folder";
+        return false;
+    }
+    const size_t slash = path.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+    if (::access(dir.c_str(), W_OK) != 0) {
+        *why = "cannot write in " + dir + ": " + std::strerror(errno);
+        return false;
+    }
+    return true;
+}
+
 class Outputs {
 public:
     std::string stage(const std::string& finalPath) {
@@ -99,7 +119,7 @@ public:
     bool commit(std::string* error) {
         for (size_t i = 0; i < m_files.size(); ++i) {
             if (std::rename(m_files[i].stagePath.c_str(), m_files[i].finalPath.c_str()) != 0) {
-                *error = "cannot write " + m_files[i].finalPath;
+                *error = "cannot write " + m_files[i].finalPath + ": " + std::strerror(errno);
                 for (size_t j = i; j < m_files.size(); ++j) std::remove(m_files[j].stagePath.c_str());
                 m_files.clear();
                 return false;
@@ -152,6 +172,13 @@ int cmdSlr(int argc, char** argv) {
                                              : "two outputs name the same file " + *p,
                             kUsage);
         }
+    }
+    // Every output must be writable before anything is computed or written, so that a failure
+    // cannot leave one output renamed into place and another missing.
+    for (const std::string* p : {&out, &crdOut, &nptOut}) {
+        if (p->empty()) continue;
+        std::string why;
+        if (!outputWritable(*p, &why)) return fail(cmd, *p + ": " + why + " (nothing written)");
     }
     if (a.has("--cpf") != a.has("--stations"))
         return fail(cmd, "--cpf and --stations go together (O-C from the prediction needs both)", kUsage);
@@ -213,20 +240,14 @@ int cmdSlr(int argc, char** argv) {
     // A record of the pass to screen that the reader had to skip ("FILE:LINE: ..."): the point is
     // missing from the screening and the damaged line would be written back as it is. Refused.
     if (pass.hasCrd) {
-        const auto& recs = pass.crd.passes[static_cast<size_t>(pass.passIndex)].records;
-        long first = 0, last = 0;
-        for (const auto& rec : recs)
-            if (rec.line > 0) {
-                if (first == 0) first = rec.line;
-                last = rec.line;
-            }
-        for (const auto& w : loaded.warnings) {
-            if (w.rfind(input + ":", 0) != 0) continue;
-            long long line = 0;
-            if (!core::parseLong(w.substr(input.size() + 1, w.find(':', input.size() + 1) - input.size() - 1), &line))
-                continue;
-            if (line >= first && line <= last)
-                return fail(cmd, w + " (a damaged record in the pass to screen: repair or remove it; nothing written)");
+        // The reader lists the skipped lines of each pass whether or not its warning list is full.
+        const auto& skipped = pass.crd.passes[static_cast<size_t>(pass.passIndex)].skippedLines;
+        if (!skipped.empty()) {
+            std::string why = input + ":" + std::to_string(skipped.front()) + ": a damaged record";
+            for (const auto& w : loaded.warnings)
+                if (w.rfind(input + ":" + std::to_string(skipped.front()) + ":", 0) == 0) why = w;
+            return fail(cmd, why + " (" + std::to_string(skipped.size()) +
+                                 " damaged record(s) in the pass to screen: repair or remove them; nothing written)");
         }
     }
     if (!quiet)

@@ -133,6 +133,31 @@ private slots:
         QVERIFY2(std::hypot(cx - shot.truth.x, cy - shot.truth.y) < 4.0, "blob search missed the spot");
     }
 
+    void floatTiffFrames() {
+        // 32-bit float TIFF is accepted; a ROI whose values spread over less than one DN (a
+        // calibrated product, say) once overran the background histogram (review finding).
+        cv::Mat flat(32, 32, CV_32F);
+        cv::randu(flat, cv::Scalar(100.0), cv::Scalar(100.7));
+        QVERIFY(cv::imwrite(path("flat.tif").toStdString(), flat));
+        ImageReadResult r = readFrame(path("flat.tif").toStdString());
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.storedBits, 32);
+        const FootprintResult fr = processRoi(r.image, FootprintParams{});
+        QVERIFY(fr.ok);
+        QVERIFY(fr.background.level >= 100 && fr.background.level <= 100.7);
+        QCOMPARE(fr.verdict, Verdict::Rejected);  // no spot in flat noise
+        // A float frame with a spot: the same centre as the 16-bit one.
+        sim::FootprintSimTruth t;
+        cv::Mat spot16 = shotImage(21, 32, sim::Scene::Night, &t), spotF;
+        spot16.convertTo(spotF, CV_32F);
+        QVERIFY(cv::imwrite(path("spot.tif").toStdString(), spotF));
+        r = readFrame(path("spot.tif").toStdString());
+        QVERIFY2(r.ok, r.error.c_str());
+        const FootprintResult sr = processRoi(r.image, FootprintParams{});
+        QVERIFY(sr.fit.ok);
+        QVERIFY(std::hypot(sr.fit.x - t.x, sr.fit.y - t.y) < 0.3);
+    }
+
     void roiEdgeCases() {
         cv::Mat f;
         shotImage(8).convertTo(f, CV_32F);

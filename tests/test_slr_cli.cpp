@@ -19,6 +19,7 @@
 
 #include "core/common/csv.hpp"
 #include "core/slr/crd.hpp"
+#include "core/slr/pass_input.hpp"
 #include "test_support.hpp"
 
 using lwbtest::runCli;
@@ -427,6 +428,70 @@ private slots:
         QVERIFY2(r.err.contains("--help"), qPrintable(r.err));
         QVERIFY(!QFile::exists(p("usage-out.csv")) && !QFile::exists(p("usage-out.frd")));
         noStrayFiles();
+    }
+
+    // Review findings (second review, 2026-11-21): each case below once went wrong.
+    void unscreenedRecordsKeepTheirFlags() {
+        // Records without an O-C (here: dropped from the pass's index as if outside the
+        // prediction) keep the station's flag in --crd-out instead of turning into noise.
+        const QString in = slr("7080_STELLA_crd_071220_2128_0.frd");
+        if (!QFile::exists(in)) QSKIP("shared SLR data absent");
+        lwb::core::slr::PassInputResult loaded = lwb::core::slr::loadPass(in.toStdString(), -1, {});
+        QVERIFY2(loaded.ok, loaded.error.c_str());
+        lwb::core::slr::PassData pass = loaded.pass;
+        const auto& ranges = pass.crd.passes[size_t(pass.passIndex)].ranges;
+        // Keep only the second half of the points "screened"; mark all of them noise.
+        const size_t half = pass.rangeIndex.size() / 2;
+        pass.rangeIndex.erase(pass.rangeIndex.begin(), pass.rangeIndex.begin() + long(half));
+        std::vector<uint8_t> accepted(pass.rangeIndex.size(), 0);
+        std::string err;
+        QVERIFY2(lwb::core::slr::writeScreenedCrd(p("partial.frd").toStdString(), pass, accepted, &err), err.c_str());
+        const auto back = lwb::core::slr::readCrd(p("partial.frd").toStdString());
+        QVERIFY2(back.ok, back.error.c_str());
+        const auto& out = back.file.passes[size_t(pass.passIndex)].ranges;
+        QCOMPARE(out.size(), ranges.size());
+        std::vector<char> screened(ranges.size(), 0);
+        for (size_t k : pass.rangeIndex) screened[k] = 1;
+        int kept2 = 0;
+        for (size_t k = 0; k < ranges.size(); ++k) {
+            QCOMPARE(out[k].filterFlag, screened[k] ? 1 : ranges[k].filterFlag);
+            kept2 += !screened[k] && ranges[k].filterFlag == 2;
+        }
+        QVERIFY(kept2 > 10);  // the test means something: station data flags were kept
+    }
+
+    void damagedRecordRefusedPastTheWarningCap() {
+        // 600 unknown records fill the reader's warning list; a damaged type-10 line in the pass
+        // to screen must still be found and the run refused, nothing written.
+        const QString in = slr("7080_STELLA_crd_071220_2128_0.frd");
+        if (!QFile::exists(in)) QSKIP("shared SLR data absent");
+        QList<QByteArray> lines = lwbtest::readAll(in).split('\n');
+        int firstData = -1;
+        for (int i = 0; i < lines.size(); ++i)
+            if (lines[i].startsWith("10 ")) {
+                firstData = i;
+                break;
+            }
+        QVERIFY(firstData > 0);
+        QList<QByteArray> junk;
+        for (int i = 0; i < 600; ++i) junk << "77 an unknown record";
+        lines[firstData + 5] = "10 74100.5 abc std 2 2 0 0 0";
+        for (int i = junk.size() - 1; i >= 0; --i) lines.insert(firstData, junk[i]);
+        QVERIFY(lwbtest::writeText(p("damaged.frd"), lines.join('\n')));
+        const auto r = runCli({"slr", p("damaged.frd"), "-o", p("dmg.csv"), "--crd-out", p("dmg.frd")}, kTimeoutMs);
+        QVERIFY2(r.exitCode == 1, qPrintable(r.err));
+        QVERIFY2(r.err.contains("damaged record"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(p("dmg.csv")) && !QFile::exists(p("dmg.frd")));
+    }
+
+    void unwritableSecondOutputWritesNothing() {
+        const QString in = slr("7080_STELLA_crd_071220_2128_0.frd");
+        if (!QFile::exists(in)) QSKIP("shared SLR data absent");
+        QVERIFY(QDir().mkpath(p("adir")));
+        const auto r = runCli({"slr", in, "-o", p("first.csv"), "--crd-out", p("adir")}, kTimeoutMs);
+        QVERIFY2(r.exitCode == 1, qPrintable(r.err));
+        QVERIFY2(r.err.contains("is a folder"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(p("first.csv")));
     }
 
     void helpAndDispatch() {

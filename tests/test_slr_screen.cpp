@@ -435,19 +435,30 @@ private slots:
         QCOMPARE(huge.pixels, pass.epochS.size());
         QCOMPARE(huge.noisePoints, pass.epochS.size());
         QVERIFY(!huge.warnings.empty());
-        // Coordinates past 2^62 fail at once with a clear message.
+        // Coordinates past 2^61 fail at once with a clear message (the extent max − min + 1 of
+        // two coordinates must fit in int64).
         MappingParams mp;
         mp.magT = 1e15;
         mp.magOc = 1;
         const BinaryImage over = buildBinaryImage(pass.epochS, pass.ocS, mp);
         QVERIFY(!over.ok);
-        QVERIFY2(over.error.find("2^62") != std::string::npos, over.error.c_str());
+        QVERIFY2(over.error.find("2^61") != std::string::npos, over.error.c_str());
+        // Just inside ±2^62 on both sides of zero: the extent would overflow int64; refused, not
+        // folded onto other pixels (review finding).
+        MappingParams wide;
+        wide.magT = 1e15;
+        wide.magOc = 1e9;
+        const BinaryImage wrap = buildBinaryImage({-4611.686018427388, 4611.686018427388, 0.0}, {0.0, 0.0, 0.0}, wide);
+        QVERIFY(!wrap.ok);
         mp.magT = 1;
         mp.magOc = 1e30;
         QVERIFY(!buildBinaryImage(pass.epochS, pass.ocS, mp).ok);
         // Three points in automatic mode: an answer (or a clear error), not a crash.
         const ScreenResult three = screenSignal({1, 2, 3}, {1e-9, 1.1e-9, 1.2e-9}, autoP);
-        QVERIFY(three.ok || !three.error.empty());
+        if (three.ok)
+            QCOMPARE(three.pointClass.size(), size_t(3));  // every point classified
+        else
+            QVERIFY(!three.error.empty());
     }
 
     // ---------------------------------------------------------------- simulator

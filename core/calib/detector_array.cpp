@@ -159,12 +159,12 @@ double evalSurface(const GaussSurface& s, double e, double n) {
 
 UncertaintyEllipse ellipseFromCovariance(double varE, double varN, double covEN) {
     UncertaintyEllipse u;
-    u.sigmaE = std::sqrt(std::max(0.0, varE));
-    u.sigmaN = std::sqrt(std::max(0.0, varN));
+    u.sigmaE = sqrtVariance(varE);
+    u.sigmaN = sqrtVariance(varN);
     u.covEN = covEN;
     const double m = 0.5 * (varE + varN), d = std::sqrt(0.25 * (varE - varN) * (varE - varN) + covEN * covEN);
-    u.semiMajor = std::sqrt(std::max(0.0, m + d));
-    u.semiMinor = std::sqrt(std::max(0.0, m - d));
+    u.semiMajor = sqrtVariance(m + d);
+    u.semiMinor = sqrtVariance(m - d);
     u.orientationRad = 0.5 * std::atan2(2 * covEN, varE - varN);
     return u;
 }
@@ -320,14 +320,22 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
         const double r2 = p.de * p.de + p.dn * p.dn;
         if (f > 0.05 && f < 0.9 && r2 > 0) s2.push_back(r2 / (2 * std::log(1 / f)));
     }
-    double nn = INFINITY;  // smallest detector spacing as a fallback width
-    for (size_t i = 0; i < pts.size(); ++i)
-        for (size_t j = i + 1; j < pts.size(); ++j) {
-            const double d = std::hypot(pts[i].de - pts[j].de, pts[i].dn - pts[j].dn);
-            if (d > 0) nn = std::min(nn, d);
-        }
-    double sigma0 = std::isfinite(nn) ? nn : 1.0;
-    if (!s2.empty()) {
+    double sigma0 = 1.0;
+    if (s2.empty()) {
+        // Fallback width: the smallest detector spacing (sweep over points sorted by east, so a
+        // large array is not a quadratic scan).
+        std::vector<std::pair<double, double>> byE;
+        byE.reserve(pts.size());
+        for (const auto& p : pts) byE.emplace_back(p.de, p.dn);
+        std::sort(byE.begin(), byE.end());
+        double nn = INFINITY;
+        for (size_t i = 0; i < byE.size(); ++i)
+            for (size_t j = i + 1; j < byE.size() && byE[j].first - byE[i].first < nn; ++j) {
+                const double d = std::hypot(byE[j].first - byE[i].first, byE[j].second - byE[i].second);
+                if (d > 0) nn = std::min(nn, d);
+            }
+        if (std::isfinite(nn)) sigma0 = nn;
+    } else {
         std::nth_element(s2.begin(), s2.begin() + s2.size() / 2, s2.end());
         sigma0 = std::sqrt(s2[s2.size() / 2]);
     }
@@ -488,8 +496,8 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
             G.col(ia) = (widths(a + h, 0, a + h) - widths(a - h, 0, a - h)) / (2 * h);
         }
         const Eigen::Matrix2d cw = G * C * G.transpose();
-        res.sigmaMajorSd = std::sqrt(std::max(0.0, cw(0, 0)));
-        res.sigmaMinorSd = std::sqrt(std::max(0.0, cw(1, 1)));
+        res.sigmaMajorSd = sqrtVariance(cw(0, 0));
+        res.sigmaMinorSd = sqrtVariance(cw(1, 1));
     }
     // Per-detector model and residual; consistency of the set-aside detectors.
     double ss = 0;

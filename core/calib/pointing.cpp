@@ -179,6 +179,19 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
             res.error = pointName(c, i) + ": non-finite satellite position, attitude, range or ground point";
             return res;
         }
+        // Plausible geometry: a ground point near the Earth's surface (radius 6.3–6.4e6 m ± 10 km)
+        // and a satellite above it but below 100 000 km; anything else is a unit or typing error.
+        const double rg = c.groundEcef.norm(), rs = c.shot.satEcef.norm();
+        if (!(rg > 6.34e6 && rg < 6.40e6)) {
+            res.error = pointName(c, i) + ": ground point " + formatDouble(rg / 1000, 6) +
+                        " km from the Earth's centre (expected about 6371 km: ECEF metres?)";
+            return res;
+        }
+        if (!(rs > rg + 1e4 && rs < 1e8)) {
+            res.error = pointName(c, i) + ": satellite " + formatDouble(rs / 1000, 6) +
+                        " km from the Earth's centre (expected an orbit above the ground point)";
+            return res;
+        }
         if (std::fabs(c.shot.bodyToEcef.norm() - 1) > 1e-3) {
             res.error = pointName(c, i) + ": the attitude quaternion is not a unit quaternion (norm " +
                         formatDouble(c.shot.bodyToEcef.norm(), 6) + ")";
@@ -320,6 +333,11 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
     res.params.assign(p.data(), p.data() + np);
     res.chi2 = o.cost;
     res.dof = res.observations - np;
+    if (!std::isfinite(res.chi2) || !p.allFinite()) {
+        res.error = "the calibration did not converge to finite values (chi-square " + formatDouble(res.chi2, 4) +
+                    "): check the control points' geometry";
+        return res;
+    }
     Eigen::MatrixXd cov;
     Eigen::VectorXd weak;
     if (!covarianceFromJacobian(o.jacobian, params.minRcond, &cov, &res.rcond, &weak)) {
@@ -333,7 +351,7 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
             res.warnings.push_back("no redundancy (as many equations as unknowns): covariance from the stated noise only");
     }
     res.covariance = cov;
-    for (int j = 0; j < np; ++j) res.paramSd.push_back(std::sqrt(std::max(0.0, cov(j, j))));
+    for (int j = 0; j < np; ++j) res.paramSd.push_back(sqrtVariance(cov(j, j)));
     if (res.dof > 0 && res.chi2 / res.dof > 4)
         res.warnings.push_back("residuals exceed the stated noise (reduced chi-square " + formatDouble(res.chi2 / res.dof, 3) +
                                "): check the sigmas or look for an outlier");
@@ -409,11 +427,11 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
                 G.col(j) = d / (2 * steps(j));
             }
             const Eigen::MatrixXd cv = G * cov * G.transpose();
-            bc.dAlphaSdRad = std::sqrt(std::max(0.0, cv(0, 0)));
-            bc.dBetaSdRad = std::sqrt(std::max(0.0, cv(1, 1)));
-            bc.angleXSdRad = std::sqrt(std::max(0.0, cv(2, 2)));
-            bc.angleYSdRad = std::sqrt(std::max(0.0, cv(3, 3)));
-            bc.angleZSdRad = std::sqrt(std::max(0.0, cv(4, 4)));
+            bc.dAlphaSdRad = sqrtVariance(cv(0, 0));
+            bc.dBetaSdRad = sqrtVariance(cv(1, 1));
+            bc.angleXSdRad = sqrtVariance(cv(2, 2));
+            bc.angleYSdRad = sqrtVariance(cv(3, 3));
+            bc.angleZSdRad = sqrtVariance(cv(4, 4));
             if (bc.rangeSolved) bc.dRhoSdM = res.paramSd[m.idx[k].dRho];
             for (size_t i = 0; i < points.size(); ++i) {
                 if (prep[i].design != k) continue;

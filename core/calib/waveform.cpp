@@ -119,11 +119,18 @@ WaveformResult decomposeWaveform(const Waveform& w, const WaveformParams& params
     const double sg = params.smoothSigmaNs / dt;
     if (sg < 0.3) {
         sm = w.amplitude;
+    } else if (3 * sg >= static_cast<double>(n)) {
+        // Smoothing wider than the record: a flat line.
+        double mean = 0;
+        for (double a : w.amplitude) mean += a;
+        sm.assign(n, mean / static_cast<double>(n));
     } else {
-        const int half = static_cast<int>(std::ceil(3 * sg));
+        // At most the whole waveform each side: a smoothing wider than the record is a flat
+        // line anyway, and an uncapped width (tiny sample spacing) would be a hang.
+        const long half = static_cast<long>(std::min<double>(std::ceil(3 * sg), static_cast<double>(n)));
         for (size_t i = 0; i < n; ++i) {
             double s = 0, ws = 0;
-            for (int k = -half; k <= half; ++k) {
+            for (long k = -half; k <= half; ++k) {
                 const long j = static_cast<long>(i) + k;
                 if (j < 0 || j >= static_cast<long>(n)) continue;
                 const double g = std::exp(-0.5 * k * k / (sg * sg));
@@ -236,7 +243,7 @@ WaveformResult decomposeWaveform(const Waveform& w, const WaveformParams& params
         return res;
     }
     res.deltaTNs = res.second.centreNs - res.first.centreNs;
-    res.deltaTSdNs = std::sqrt(std::max(0.0, cov(i1 + 1, i1 + 1) + cov(i2 + 1, i2 + 1) - 2 * cov(i1 + 1, i2 + 1)));
+    res.deltaTSdNs = sqrtVariance(cov(i1 + 1, i1 + 1) + cov(i2 + 1, i2 + 1) - 2 * cov(i1 + 1, i2 + 1));
     const double th = params.incidenceDeg * kDeg;
     res.heightM = heightFromDelay(res.deltaTNs, th);
     res.heightSdM = heightFromDelay(res.deltaTSdNs, th);

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <unordered_set>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
@@ -24,6 +25,12 @@ Json& Json::set(const std::string& key, Json value) {
             return kv.second;
         }
     m_obj.emplace_back(key, std::move(value));
+    return m_obj.back().second;
+}
+
+Json& Json::appendMember(std::string key, Json value) {
+    if (m_type == Type::Null) m_type = Type::Object;
+    m_obj.emplace_back(std::move(key), std::move(value));
     return m_obj.back().second;
 }
 
@@ -255,6 +262,7 @@ private:
     }
     bool parseObject(Json& v, int depth) {
         v = Json::object();
+        std::unordered_set<std::string> seen;  // duplicate keys in O(1), not a scan per key
         ++m_i;
         skipWs();
         if (m_i < m_t.size() && m_t[m_i] == '}') { ++m_i; return true; }
@@ -263,14 +271,14 @@ private:
             if (m_i >= m_t.size() || m_t[m_i] != '"') return fail("expected a quoted key");
             std::string key;
             if (!parseString(key)) return false;
-            if (v.find(key)) return fail("key \"" + key + "\" appears twice");
+            if (!seen.insert(key).second) return fail("key \"" + key + "\" appears twice");
             skipWs();
             if (m_i >= m_t.size() || m_t[m_i] != ':') return fail("expected ':' after a key");
             ++m_i;
             skipWs();
             Json item;
             if (!parseValue(item, depth + 1)) return false;
-            v.set(key, std::move(item));
+            v.appendMember(std::move(key), std::move(item));
             skipWs();
             if (m_i >= m_t.size()) return fail("object is not closed");
             if (m_t[m_i] == ',') { ++m_i; continue; }

@@ -44,6 +44,8 @@ public:
     const Json* find(const std::string& key) const;
     /// Sets (or replaces) an object member; turns a Null into an Object.
     Json& set(const std::string& key, Json value);
+    /// Appends a member without looking for an existing one (the caller knows the key is new).
+    Json& appendMember(std::string key, Json value);
     /// Appends to an array; turns a Null into an Array.
     Json& push(Json value);
 

@@ -6,6 +6,10 @@
 
 namespace lwb::core {
 
+/// sqrt of a variance that rounding may have pushed slightly below zero; NaN stays NaN (an
+/// undefined uncertainty must not be reported as 0).
+inline double sqrtVariance(double v) { return v != v ? v : (v > 0 ? __builtin_sqrt(v) : 0.0); }
+
 /// Parses the whole of `s` (surrounding blanks allowed) as a double. False on empty text,
 /// trailing garbage, or overflow. NaN / inf texts parse only when allowNonFinite.
 bool parseDouble(std::string_view s, double* out, bool allowNonFinite = false);

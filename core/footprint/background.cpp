@@ -42,13 +42,17 @@ Histogram buildHistogram(const cv::Mat& roi) {
     cv::minMaxLoc(roi, &mn, &mx);
     h.lo = static_cast<float>(mn);
     const double span = mx - mn;
-    const int bins = static_cast<int>(std::min(4096.0, std::floor(span) + 1));
+    // 1 DN per bin for integer data, at most 4096 bins; float data with a spread under a DN
+    // still gets two bins or more (at least a bin per half of the spread).
+    const int bins = span > 0 ? static_cast<int>(std::clamp(std::floor(span) + 1, 2.0, 4096.0)) : 1;
     h.width = bins > 1 ? static_cast<float>(span / (bins - 1)) : 1.0f;
-    h.counts.assign(static_cast<size_t>(std::max(bins, 1)), 0);
+    h.counts.assign(static_cast<size_t>(bins), 0);
     const float inv = 1.0f / h.width;
+    const size_t last = static_cast<size_t>(bins - 1);
     for (int y = 0; y < roi.rows; ++y) {
         const float* row = roi.ptr<float>(y);
-        for (int x = 0; x < roi.cols; ++x) ++h.counts[static_cast<size_t>((row[x] - h.lo) * inv + 0.5f)];
+        for (int x = 0; x < roi.cols; ++x)
+            ++h.counts[std::min(last, static_cast<size_t>(std::max(0.0f, (row[x] - h.lo) * inv + 0.5f)))];
     }
     return h;
 }

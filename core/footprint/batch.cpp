@@ -1,6 +1,7 @@
 #include "core/footprint/batch.hpp"
 
 #include <atomic>
+#include <exception>
 #include <mutex>
 #include <thread>
 
@@ -24,11 +25,16 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
             if (i >= total) return;
             BatchItem& item = out.items[i];
             item.file = files[i];
-            const ImageReadResult img = readFrame(files[i], params.read);
-            if (!img.ok)
-                item.readError = img.error;
-            else
-                item.rois = processFrame(img.image, params.footprint, params.centres);
+            try {
+                const ImageReadResult img = readFrame(files[i], params.read);
+                if (!img.ok)
+                    item.readError = img.error;
+                else
+                    item.rois = processFrame(img.image, params.footprint, params.centres);
+            } catch (const std::exception& e) {  // e.g. out of memory on a huge frame: this item only
+                item.rois.clear();
+                item.readError = files[i] + ": " + e.what();
+            }
             const size_t d = ++done;
             std::lock_guard<std::mutex> lock(cbMutex);
             if (onItem) onItem(i, item);

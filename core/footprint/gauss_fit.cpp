@@ -1,5 +1,6 @@
 #include "core/footprint/gauss_fit.hpp"
 
+#include "core/common/text.hpp"
 #include "core/footprint/gauss_kernel.hpp"
 
 #include <Eigen/Dense>
@@ -376,7 +377,7 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     const int dof = static_cast<int>(win.size()) - kP;
     const Mat9 cov = jtj.ldlt().solve(Mat9::Identity()) * (dof > 0 ? cost.chi2 / dof : 1.0);
     fillFit(m, noise, &r.fit);
-    r.fit.uncertaintyPx = std::sqrt(std::max(0.0, cov(1, 1) + cov(2, 2)));
+    r.fit.uncertaintyPx = sqrtVariance(cov(1, 1) + cov(2, 2));
     // Paper 000's MSE at the reported model, over the domain pixels above the fitted background.
     std::vector<DomainPixel> dpx;
     std::vector<double> model;

@@ -9,7 +9,7 @@
 namespace lwb::core::slr {
 
 namespace {
-constexpr double kCoordLimit = 4611686018427387904.0;  // 2^62: shifted extents then fit in int64
+constexpr double kCoordLimit = 2305843009213693952.0;  // 2^61: max − min + 1 of two coordinates then fits in int64
 constexpr size_t kMaxPoints = 0xFFFFFFFEu;
 
 // Union-find over pixel indices: union by smaller index (deterministic roots), path halving.
@@ -84,7 +84,7 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
         }
         int64_t r = 0, c = 0;
         if (!mapPoint(t[i], oc[i], params.magT, params.magOc, &r, &c)) {
-            img.error = "magnification too large: point " + std::to_string(i) + " maps to a pixel coordinate beyond 2^62 (t*mag_T = " +
+            img.error = "magnification too large: point " + std::to_string(i) + " maps to a pixel coordinate beyond 2^61 (t*mag_T = " +
                         formatDouble(t[i] * params.magT, 4) + ", O-C*mag_OC = " + formatDouble(oc[i] * params.magOc, 4) + ")";
             return img;
         }

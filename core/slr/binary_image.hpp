@@ -56,13 +56,13 @@ struct BinaryImage {
 };
 
 /// Step 1 for one point: the unshifted pixel (row = round(t·mag_T), col = round(O-C·mag_OC)).
-/// False when a product is not finite or exceeds ±2^62 (the caller reports it).
+/// False when a product is not finite or exceeds ±2^61 (the caller reports it).
 bool mapPoint(double t, double oc, double magT, double magOc, int64_t* row, int64_t* col);
 
 /// Steps 1–2: maps the points (epochs t and O-C in seconds, same length), shifts to 0, keeps
 /// the index matrix and labels the regions. Errors (ok = false): lengths differ, a non-finite
 /// value (names the point), invalid params, more than 2^32 − 2 points, or a magnification whose
-/// pixel coordinates overflow ±2^62 (it fails at once, before any allocation). Zero points give
+/// pixel coordinates overflow ±2^61 (it fails at once, before any allocation). Zero points give
 /// an empty, valid image. Polls fb (cancel → ok = false, error "cancelled").
 BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params,
                              const Feedback* fb = nullptr);

@@ -397,10 +397,11 @@ bool parse40(const Fields& fs, CrdCalibration* r, std::string* why) {
 /// parse is skipped with a warning naming its line. `x` may carry preset fields.
 template <class Rec, class Parse>
 void addRecord(Parse parse, const CrdRecord& r, size_t i, const std::string& src, Sink* sink, const char* what,
-               std::vector<Rec>& list, Rec x = Rec{}) {
+               std::vector<Rec>& list, std::vector<long>& skipped, Rec x = Rec{}) {
     std::string why;
     if (!parse(Fields(r.text), &x, &why)) {
         sink->add(where(src, r.line) + what + " record skipped: " + why);
+        skipped.push_back(r.line);
         return;
     }
     x.record = i;
@@ -418,6 +419,7 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
     p->meteo.clear();
     p->pointing.clear();
     p->calibrations.clear();
+    p->skippedLines.clear();
     p->predictionHeader.clear();
     bool sawH4 = false;
     for (size_t i = 0; i < p->records.size(); ++i) {
@@ -440,21 +442,21 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
         } else if (id == "h5") {
             p->predictionHeader = r.text;
         } else if (id == "c0") {
-            addRecord(parseC0, r, i, src, sink, "C0", p->configs);
+            addRecord(parseC0, r, i, src, sink, "C0", p->configs, p->skippedLines);
         } else if (id == "10") {
-            addRecord(parse10, r, i, src, sink, "type 10", p->ranges);
+            addRecord(parse10, r, i, src, sink, "type 10", p->ranges, p->skippedLines);
         } else if (id == "11") {
-            addRecord(parse11, r, i, src, sink, "type 11", p->normalPoints);
+            addRecord(parse11, r, i, src, sink, "type 11", p->normalPoints, p->skippedLines);
         } else if (id == "12") {
-            addRecord(parse12, r, i, src, sink, "type 12", p->supplements);
+            addRecord(parse12, r, i, src, sink, "type 12", p->supplements, p->skippedLines);
         } else if (id == "20") {
-            addRecord(parse20, r, i, src, sink, "type 20", p->meteo);
+            addRecord(parse20, r, i, src, sink, "type 20", p->meteo, p->skippedLines);
         } else if (id == "30") {
-            addRecord(parse30, r, i, src, sink, "type 30", p->pointing);
+            addRecord(parse30, r, i, src, sink, "type 30", p->pointing, p->skippedLines);
         } else if (id == "40" || id == "41") {
             CrdCalibration x;
             x.detail = id == "41";
-            addRecord(parse40, r, i, src, sink, id == "41" ? "type 41" : "type 40", p->calibrations, std::move(x));
+            addRecord(parse40, r, i, src, sink, id == "41" ? "type 41" : "type 40", p->calibrations, p->skippedLines, std::move(x));
         }
     }
     if (!sawH4) {

@@ -208,6 +208,10 @@ struct CrdPass {
     std::vector<CrdMeteo> meteo;                ///< type 20
     std::vector<CrdPointing> pointing;          ///< type 30
     std::vector<CrdCalibration> calibrations;   ///< types 40 and 41
+    /// Source lines of data records (types 10, 11, 12, 20, 30, 40, 41, C0) that could not be
+    /// parsed and were left out of the lists above (each also has a warning, while the warning
+    /// list is not full).
+    std::vector<long> skippedLines;
 
     /// MJD of the H4 start date (0h UTC): epochs are measured from it.
     long startMjd() const;

@@ -68,7 +68,8 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
 /// pass.rangeIndex), or its row in an O-C table. `post` may be null. Atomic.
 bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
                     const std::vector<uint8_t>& accepted, const PostfitResult* post, std::string* error);
-/// The pass as CRD full rate with filter flags 2 (accepted) / 1 (noise), other passes unchanged.
+/// The pass as CRD full rate with filter flags 2 (accepted) / 1 (noise) on the screened records;
+/// records without an O-C keep their flag; other passes unchanged.
 bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::vector<uint8_t>& accepted,
                       std::string* error);
 /// The normal points as a CRD normal-point file (headers of the pass, data type 1).
