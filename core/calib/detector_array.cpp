@@ -13,12 +13,6 @@ namespace lwb::core::calib {
 
 namespace {
 
-int firstColumn(const CsvTable& t, std::initializer_list<const char*> names) {
-    for (const char* n : names)
-        if (const int c = t.column(n); c >= 0) return c;
-    return -1;
-}
-
 // "1", "0", "true", "false", "yes", "no" → 1 / 0; −1 when unreadable.
 int parseFlag(const std::string& s) {
     const std::string t = toLower(trim(s));
@@ -36,12 +30,12 @@ bool readDetectorCsv(const std::string& path, DetectorArray* out, std::string* e
         return false;
     }
     const CsvTable& t = csv.table;
-    const int cid = firstColumn(t, {"id", "detector", "name"});
-    int ce = firstColumn(t, {"e", "east", "x"}), cn = firstColumn(t, {"n", "north", "y"});
-    const int clat = firstColumn(t, {"lat", "latitude", "lat_deg"}), clon = firstColumn(t, {"lon", "longitude", "lon_deg"});
-    const int ch = firstColumn(t, {"h", "height", "height_m"});
-    const int cen = firstColumn(t, {"energy", "e_energy", "signal"});
-    const int ctr = firstColumn(t, {"triggered", "trigger"}), csat = firstColumn(t, {"saturated", "saturation"});
+    const int cid = t.firstColumn({"id", "detector", "name"});
+    int ce = t.firstColumn({"e", "east", "x"}), cn = t.firstColumn({"n", "north", "y"});
+    const int clat = t.firstColumn({"lat", "latitude", "lat_deg"}), clon = t.firstColumn({"lon", "longitude", "lon_deg"});
+    const int ch = t.firstColumn({"h", "height", "height_m"});
+    const int cen = t.firstColumn({"energy", "e_energy", "signal"});
+    const int ctr = t.firstColumn({"triggered", "trigger"}), csat = t.firstColumn({"saturated", "saturation"});
     const bool geographic = ce < 0 || cn < 0;
     if (geographic && (clat < 0 || clon < 0)) {
         *error = path + ":1: header needs the position columns e,n (metres) or lat,lon (degrees)";

@@ -454,14 +454,6 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
 // ---------------------------------------------------------------------------------------------
 // Files
 
-namespace {
-int firstColumn(const CsvTable& t, std::initializer_list<const char*> names) {
-    for (const char* n : names)
-        if (const int c = t.column(n); c >= 0) return c;
-    return -1;
-}
-}  // namespace
-
 bool readControlPointCsv(const std::string& path, std::vector<ControlPoint>* out, std::string* error) {
     const CsvReadResult csv = readCsv(path);
     if (!csv.ok) {
@@ -487,7 +479,7 @@ bool readControlPointCsv(const std::string& path, std::vector<ControlPoint>* out
         *error = path + ":1: header needs the ground point as gcp_x, gcp_y, gcp_z (ECEF m) or gcp_lat, gcp_lon, gcp_h";
         return false;
     }
-    const int cid = firstColumn(t, {"id", "name"}), csh = t.column("sigma_h"), csv2 = t.column("sigma_v"),
+    const int cid = t.firstColumn({"id", "name"}), csh = t.column("sigma_h"), csv2 = t.column("sigma_v"),
               cuh = t.column("use_height");
     std::vector<ControlPoint> v;
     for (size_t i = 0; i < t.rows.size(); ++i) {

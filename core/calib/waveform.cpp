@@ -10,14 +10,6 @@
 
 namespace lwb::core::calib {
 
-namespace {
-int firstColumn(const CsvTable& t, std::initializer_list<const char*> names) {
-    for (const char* n : names)
-        if (const int c = t.column(n); c >= 0) return c;
-    return -1;
-}
-}  // namespace
-
 bool readWaveformCsv(const std::string& path, double dt, Waveform* out, std::string* error) {
     if (!(dt > 0 && std::isfinite(dt))) {
         *error = "sample interval must be > 0 ns";
@@ -29,8 +21,8 @@ bool readWaveformCsv(const std::string& path, double dt, Waveform* out, std::str
         return false;
     }
     const CsvTable& t = csv.table;
-    const int ct = firstColumn(t, {"time_ns", "t_ns", "time"}), cs = firstColumn(t, {"sample", "index"});
-    const int ca = firstColumn(t, {"amplitude", "value", "counts", "dn"});
+    const int ct = t.firstColumn({"time_ns", "t_ns", "time"}), cs = t.firstColumn({"sample", "index"});
+    const int ca = t.firstColumn({"amplitude", "value", "counts", "dn"});
     if (ca < 0) {
         *error = path + ":1: header needs an amplitude column (and optionally time_ns or sample)";
         return false;
@@ -267,8 +259,8 @@ bool readFeatureCsv(const std::string& path, std::vector<FeatureCandidate>* out,
         return false;
     }
     const CsvTable& t = csv.table;
-    const int cid = firstColumn(t, {"id", "feature", "name"}), ch = firstColumn(t, {"h", "height", "height_m"});
-    int ce = firstColumn(t, {"e", "east", "x", "lat", "latitude"}), cn = firstColumn(t, {"n", "north", "y", "lon", "longitude"});
+    const int cid = t.firstColumn({"id", "feature", "name"}), ch = t.firstColumn({"h", "height", "height_m"});
+    int ce = t.firstColumn({"e", "east", "x", "lat", "latitude"}), cn = t.firstColumn({"n", "north", "y", "lon", "longitude"});
     if (ch < 0) {
         *error = path + ":1: header needs a height column (h)";
         return false;

@@ -12,6 +12,12 @@ int CsvTable::column(std::string_view name) const {
     return -1;
 }
 
+int CsvTable::firstColumn(std::initializer_list<const char*> names) const {
+    for (const char* n : names)
+        if (const int c = column(n); c >= 0) return c;
+    return -1;
+}
+
 namespace {
 // Splits one logical record starting at text[pos]; advances pos past its line end.
 // Returns false with *err on an unterminated quote.

@@ -1,6 +1,7 @@
 #pragma once
 // CSV reading (RFC 4180 quoting, CRLF, '#' comment lines) with line numbers kept for
 // error messages, and field escaping for writers.
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,8 @@ struct CsvTable {
     std::vector<long> lines;                     ///< 1-based source line of each row
     /// Column index of `name` (exact, case-insensitive), or -1.
     int column(std::string_view name) const;
+    /// Index of the first of `names` present (aliases for one quantity), or -1.
+    int firstColumn(std::initializer_list<const char*> names) const;
 };
 
 struct CsvReadResult {

@@ -1,5 +1,6 @@
 #include "core/common/text.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -98,6 +99,14 @@ std::string printableExcerpt(std::string_view s, size_t maxLen) {
 }
 
 std::string whereInFile(const std::string& source, long line) { return source + ":" + std::to_string(line) + ": "; }
+
+std::string textFileProblem(std::string_view text, const std::string& source, const char* kind) {
+    if (trim(text).empty()) return source + ": empty file";
+    const size_t nul = text.find('\0');
+    if (nul == std::string_view::npos) return {};
+    const long line = 1 + static_cast<long>(std::count(text.begin(), text.begin() + static_cast<long>(nul), '\n'));
+    return whereInFile(source, line) + "binary data (NUL byte): not a " + kind + " text file";
+}
 
 std::string formatFixed(double v, int decimals) {
     if (std::isnan(v)) return "nan";

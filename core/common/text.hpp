@@ -29,6 +29,9 @@ std::string formatShortest(double v);
 std::string printableExcerpt(std::string_view s, size_t maxLen = 40);
 /// "SOURCE:LINE: " — the prefix of a message about a line of a file.
 std::string whereInFile(const std::string& source, long line);
+/// Why `text` cannot be a text file of kind `kind` ("CRD", "CPF", ...): empty, or binary (a NUL
+/// byte, with its line). Empty string when neither.
+std::string textFileProblem(std::string_view text, const std::string& source, const char* kind);
 /// Fixed-point formatting with `decimals` digits after the point.
 std::string formatFixed(double v, int decimals);
 

@@ -13,11 +13,6 @@
 namespace lwb::core::radiometry {
 
 namespace {
-int firstColumn(const CsvTable& t, std::initializer_list<const char*> names) {
-    for (const char* n : names)
-        if (const int c = t.column(n); c >= 0) return c;
-    return -1;
-}
 cv::Point2d apply(const cv::Matx33d& h, double x, double y) {
     const double w = h(2, 0) * x + h(2, 1) * y + h(2, 2);
     return {(h(0, 0) * x + h(0, 1) * y + h(0, 2)) / w, (h(1, 0) * x + h(1, 1) * y + h(1, 2)) / w};
@@ -57,9 +52,9 @@ bool readGcpCsv(const std::string& path, std::vector<Gcp>* out, std::string* err
         return false;
     }
     const CsvTable& t = csv.table;
-    const int cid = firstColumn(t, {"id", "name", "marker"});
-    const int cx = firstColumn(t, {"x", "col", "px"}), cy = firstColumn(t, {"y", "row", "py"});
-    const int mx = firstColumn(t, {"map_x", "mapx", "e", "east"}), my = firstColumn(t, {"map_y", "mapy", "n", "north"});
+    const int cid = t.firstColumn({"id", "name", "marker"});
+    const int cx = t.firstColumn({"x", "col", "px"}), cy = t.firstColumn({"y", "row", "py"});
+    const int mx = t.firstColumn({"map_x", "mapx", "e", "east"}), my = t.firstColumn({"map_y", "mapy", "n", "north"});
     if (cx < 0 || cy < 0 || mx < 0 || my < 0) {
         *error = path + ":1: header needs x, y (image px) and map_x, map_y (map m)";
         return false;

@@ -11,11 +11,6 @@
 namespace lwb::core::radiometry {
 
 namespace {
-int firstColumn(const CsvTable& t, std::initializer_list<const char*> names) {
-    for (const char* n : names)
-        if (const int c = t.column(n); c >= 0) return c;
-    return -1;
-}
 std::string regionName(const Region& r, size_t i) {
     std::string s = "region " + (r.name.empty() ? std::to_string(i + 1) : r.name);
     if (r.line > 0) s += " (line " + std::to_string(r.line) + ")";
@@ -36,9 +31,9 @@ bool readRegionCsv(const std::string& path, std::vector<Region>* out, std::strin
         return false;
     }
     const CsvTable& t = csv.table;
-    const int cn = firstColumn(t, {"name", "id", "region"});
-    const int cr = firstColumn(t, {"reflectance", "measured", "reflectance_pct", "measured_pct"});
-    const int cd = firstColumn(t, {"dn", "mean_dn"}), cs = firstColumn(t, {"simulated", "simulated_pct"});
+    const int cn = t.firstColumn({"name", "id", "region"});
+    const int cr = t.firstColumn({"reflectance", "measured", "reflectance_pct", "measured_pct"});
+    const int cd = t.firstColumn({"dn", "mean_dn"}), cs = t.firstColumn({"simulated", "simulated_pct"});
     const int cx = t.column("x"), cy = t.column("y"), cw = t.column("w"), ch = t.column("h");
     const bool rect = cx >= 0 && cy >= 0 && cw >= 0 && ch >= 0;
     if (cr < 0) {

@@ -501,14 +501,8 @@ CrdReadResult parseCrd(std::string_view text, const std::string& source, const C
             res.error = e;
             return res;
         }
-        if (trim(text).empty()) {
-            res.error = src + ": empty file";
-            return res;
-        }
-        if (const void* nul = std::memchr(text.data(), '\0', text.size())) {
-            const size_t at = static_cast<size_t>(static_cast<const char*>(nul) - text.data());
-            res.error = where(src, 1 + static_cast<long>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'))) +
-                        "binary data (NUL byte): not a CRD text file";
+        if (std::string e = textFileProblem(text, src, "CRD"); !e.empty()) {
+            res.error = std::move(e);
             return res;
         }
         Sink sink{&res.warnings, params.maxWarnings};

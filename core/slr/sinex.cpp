@@ -35,14 +35,8 @@ SinexReadResult parseSinex(std::string_view text, const std::string& source) {
     const std::string src = source.empty() ? "sinex" : source;
     try {
         res.file.path = source;
-        if (trim(text).empty()) {
-            res.error = src + ": empty file";
-            return res;
-        }
-        if (const void* nul = std::memchr(text.data(), '\0', text.size())) {
-            const size_t at = static_cast<size_t>(static_cast<const char*>(nul) - text.data());
-            res.error = where(src, 1 + static_cast<long>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'))) +
-                        "binary data (NUL byte): not a SINEX text file";
+        if (std::string e = textFileProblem(text, src, "SINEX"); !e.empty()) {
+            res.error = std::move(e);
             return res;
         }
         size_t dropped = 0;
