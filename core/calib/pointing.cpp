@@ -179,8 +179,9 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
             res.error = pointName(c, i) + ": non-finite satellite position, attitude, range or ground point";
             return res;
         }
-        // Plausible geometry: a ground point near the Earth's surface (radius 6.3–6.4e6 m ± 10 km)
-        // and a satellite above it but below 100 000 km; anything else is a unit or typing error.
+        // Plausible geometry: a ground point near the Earth's surface (6340–6400 km from the centre:
+        // polar radius 6357 km, equatorial 6378 km, with room for relief) and a satellite at least
+        // 10 km above it but within 100 000 km; anything else is a unit or typing error.
         const double rg = c.groundEcef.norm(), rs = c.shot.satEcef.norm();
         if (!(rg > 6.34e6 && rg < 6.40e6)) {
             res.error = pointName(c, i) + ": ground point " + formatDouble(rg / 1000, 6) +
