@@ -67,20 +67,28 @@ private slots:
         QVERIFY(r.rmsResidual < 2 * p.noise);
     }
 
-    // The height σ is honest: the true height within 3σ in ≥ 95 % of seeded waveforms.
+    // The height σ is honest: the true height within 3σ in ≥ 95 % of seeded waveforms, and σ
+    // neither inflated nor shrunk: RMS error / RMS σ within 0.8–1.25 (200 trials estimate the
+    // ratio to about ±5 %).
     void heightUncertaintyIsHonest() {
         sim::WaveformSimParams p;
         p.heightM = 2.5;
         int inside = 0;
+        double sumErr2 = 0, sumSd2 = 0;
         const int trials = 200;
         for (int i = 0; i < trials; ++i) {
             const auto s = sim::simulateWaveform(p, sim::Rng::mix(99, i));
             const WaveformResult r = decomposeWaveform(s.waveform);
             QVERIFY2(r.ok, r.error.c_str());
-            if (std::fabs(r.heightM - p.heightM) <= 3 * r.heightSdM) ++inside;
+            const double err = r.heightM - p.heightM;
+            if (std::fabs(err) <= 3 * r.heightSdM) ++inside;
+            sumErr2 += err * err;
+            sumSd2 += r.heightSdM * r.heightSdM;
         }
-        qInfo("true height within 3 sigma in %d of %d waveforms", inside, trials);
+        const double ratio = std::sqrt(sumErr2 / sumSd2);
+        qInfo("true height within 3 sigma in %d of %d waveforms; RMS error / RMS sigma %.3f", inside, trials, ratio);
         QVERIFY2(inside >= 0.95 * trials, qPrintable(QString::number(inside)));
+        QVERIFY2(ratio > 0.8 && ratio < 1.25, qPrintable(QString::number(ratio)));
     }
 
     void singlePeakIsNotADoublePeakWaveform() {

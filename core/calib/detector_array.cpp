@@ -51,15 +51,15 @@ bool readDetectorCsv(const std::string& path, DetectorArray* out, std::string* e
     std::vector<double> lats, lons;
     for (size_t i = 0; i < t.rows.size(); ++i) {
         const auto& row = t.rows[i];
-        const std::string where = path + ":" + std::to_string(t.lines[i]) + ": ";
+        const std::string where = whereInFile(path, t.lines[i]);
         Detector d;
         d.line = t.lines[i];
         d.id = cid >= 0 ? std::string(trim(row[cid])) : std::to_string(i + 1);
         double x = 0, y = 0;
         const int cx = geographic ? clat : ce, cy = geographic ? clon : cn;
         if (!parseDouble(row[cx], &x) || !parseDouble(row[cy], &y)) {
-            *error = where + (geographic ? "lat and lon" : "e and n") + " must be finite numbers, not \"" + row[cx] +
-                     "\", \"" + row[cy] + "\"";
+            *error = where + (geographic ? "lat and lon" : "e and n") + " must be finite numbers, not \"" + printableExcerpt(row[cx]) +
+                     "\", \"" + printableExcerpt(row[cy]) + "\"";
             return false;
         }
         if (geographic && (std::fabs(x) > 90 || std::fabs(y) > 360)) {
@@ -67,20 +67,20 @@ bool readDetectorCsv(const std::string& path, DetectorArray* out, std::string* e
             return false;
         }
         if (ch >= 0 && !trim(row[ch]).empty() && !parseDouble(row[ch], &d.h)) {
-            *error = where + "height must be a finite number, not \"" + row[ch] + "\"";
+            *error = where + "height must be a finite number, not \"" + printableExcerpt(row[ch]) + "\"";
             return false;
         }
         if (ctr >= 0 && !trim(row[ctr]).empty()) {
             d.triggered = parseFlag(row[ctr]);
             if (d.triggered < 0) {
-                *error = where + "triggered must be 0 or 1, not \"" + row[ctr] + "\"";
+                *error = where + "triggered must be 0 or 1, not \"" + printableExcerpt(row[ctr]) + "\"";
                 return false;
             }
         }
         if (csat >= 0 && !trim(row[csat]).empty()) {
             d.saturated = parseFlag(row[csat]);
             if (d.saturated < 0) {
-                *error = where + "saturated must be 0 or 1, not \"" + row[csat] + "\"";
+                *error = where + "saturated must be 0 or 1, not \"" + printableExcerpt(row[csat]) + "\"";
                 return false;
             }
         }
@@ -90,7 +90,7 @@ bool readDetectorCsv(const std::string& path, DetectorArray* out, std::string* e
                 return false;
             }
         } else if (!parseDouble(row[cen], &d.energy)) {
-            *error = where + "energy must be a finite number, not \"" + row[cen] + "\"";
+            *error = where + "energy must be a finite number, not \"" + printableExcerpt(row[cen]) + "\"";
             return false;
         }
         if (geographic) {
@@ -179,11 +179,11 @@ struct Shape {
     double sigmaMajor, sigmaMinor, orientation;
 };
 
+// Widths of the surface exp(−½ dᵀ M d), M = [a b; b c]: the ellipse of its covariance M⁻¹.
 Shape shapeOf(double a, double b, double c) {
     const double det = a * c - b * b;
-    const double see = c / det, snn = a / det, sen = -b / det;  // covariance = M⁻¹
-    const double m = 0.5 * (see + snn), d = std::sqrt(0.25 * (see - snn) * (see - snn) + sen * sen);
-    return {std::sqrt(std::max(0.0, m + d)), std::sqrt(std::max(0.0, m - d)), 0.5 * std::atan2(2 * sen, see - snn)};
+    const UncertaintyEllipse u = ellipseFromCovariance(c / det, a / det, -b / det);
+    return {u.semiMajor, u.semiMinor, u.orientationRad};
 }
 
 struct Point {
@@ -343,13 +343,11 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
             sigma[k] = std::sqrt(floorAbs * floorAbs + m * m);
         }
     };
-    setWeights([&](size_t k) { return pts[k].energy; });
-    auto modelAt = [&](const Eigen::VectorXd& p, size_t k, double* g) {
+    auto modelAt = [&](const Eigen::VectorXd& p, size_t k) {
         double A, x0, y0, a, b, c, bg;
         unpack(L, p, params.background, &A, &x0, &y0, &a, &b, &c, &bg);
         const double dx = pts[k].de - x0, dy = pts[k].dn - y0;
-        *g = std::exp(-0.5 * (a * dx * dx + 2 * b * dx * dy + c * dy * dy));
-        return A * *g + bg;
+        return A * std::exp(-0.5 * (a * dx * dx + 2 * b * dx * dy + c * dy * dy)) + bg;
     };
     LmProblem prob;
     prob.parameters = np;
@@ -398,10 +396,7 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
         // Two re-weighting passes with the model instead of the noisy data.
         for (int pass = 0; o.ok && weighted && pass < 2; ++pass) {
             const Eigen::VectorXd pk = o.params;
-            setWeights([&](size_t k) {
-                double g;
-                return modelAt(pk, k, &g);
-            });
+            setWeights([&](size_t k) { return modelAt(pk, k); });
             LmOutcome o2 = levenbergMarquardt(prob, pk, opt);
             if (!o2.ok) break;
             o2.history.insert(o2.history.begin(), o.history.begin(), o.history.end() - 1);
@@ -416,10 +411,7 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     // Keep the weights of the winning fit for the covariance.
     if (weighted) {
         const Eigen::VectorXd pk = best.params;
-        setWeights([&](size_t k) {
-            double g;
-            return modelAt(pk, k, &g);
-        });
+        setWeights([&](size_t k) { return modelAt(pk, k); });
         Eigen::VectorXd r;
         Eigen::MatrixXd J;
         prob.evaluate(pk, &r, &J);

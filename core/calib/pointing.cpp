@@ -445,9 +445,6 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
         }
         res.beams.push_back(bc);
     }
-    res.relR = Model::at(p, m.rIdx);
-    res.relA = Model::at(p, m.aIdx);
-    res.relB = 0;
     res.ok = true;
     return res;
 }
@@ -485,20 +482,20 @@ bool readControlPointCsv(const std::string& path, std::vector<ControlPoint>* out
     std::vector<ControlPoint> v;
     for (size_t i = 0; i < t.rows.size(); ++i) {
         const auto& row = t.rows[i];
-        const std::string where = path + ":" + std::to_string(t.lines[i]) + ": ";
+        const std::string where = whereInFile(path, t.lines[i]);
         ControlPoint c;
         c.line = t.lines[i];
         c.id = cid >= 0 ? std::string(trim(row[cid])) : std::to_string(i + 1);
         long long beam = 0;
         if (!parseLong(row[col[0]], &beam) || beam < 0 || beam > 1000000) {
-            *error = where + "beam must be a whole number, not \"" + row[col[0]] + "\"";
+            *error = where + "beam must be a whole number, not \"" + printableExcerpt(row[col[0]]) + "\"";
             return false;
         }
         c.beam = static_cast<int>(beam);
         double v9[8];
         for (int k = 0; k < 8; ++k)
             if (!parseDouble(row[col[k + 1]], &v9[k])) {
-                *error = where + t.header[col[k + 1]] + " must be a finite number, not \"" + row[col[k + 1]] + "\"";
+                *error = where + t.header[col[k + 1]] + " must be a finite number, not \"" + printableExcerpt(row[col[k + 1]]) + "\"";
                 return false;
             }
         c.shot.satEcef = Eigen::Vector3d(v9[0], v9[1], v9[2]);
@@ -518,7 +515,7 @@ bool readControlPointCsv(const std::string& path, std::vector<ControlPoint>* out
         const int gc[3] = {ecef ? gx : glat, ecef ? gy : glon, ecef ? gz : gh};
         for (int k = 0; k < 3; ++k)
             if (!parseDouble(row[gc[k]], &g[k])) {
-                *error = where + t.header[gc[k]] + " must be a finite number, not \"" + row[gc[k]] + "\"";
+                *error = where + t.header[gc[k]] + " must be a finite number, not \"" + printableExcerpt(row[gc[k]]) + "\"";
                 return false;
             }
         if (ecef) {
@@ -533,7 +530,7 @@ bool readControlPointCsv(const std::string& path, std::vector<ControlPoint>* out
         auto optSigma = [&](int cc, double* s) {
             if (cc < 0 || trim(row[cc]).empty()) return true;
             if (!parseDouble(row[cc], s) || !(*s > 0)) {
-                *error = where + t.header[cc] + " must be a number > 0, not \"" + row[cc] + "\"";
+                *error = where + t.header[cc] + " must be a number > 0, not \"" + printableExcerpt(row[cc]) + "\"";
                 return false;
             }
             return true;
@@ -542,7 +539,7 @@ bool readControlPointCsv(const std::string& path, std::vector<ControlPoint>* out
         if (cuh >= 0 && !trim(row[cuh]).empty()) {
             const std::string u = toLower(trim(row[cuh]));
             if (u != "0" && u != "1") {
-                *error = where + "use_height must be 0 or 1, not \"" + row[cuh] + "\"";
+                *error = where + "use_height must be 0 or 1, not \"" + printableExcerpt(row[cuh]) + "\"";
                 return false;
             }
             c.useHeight = u == "1";

@@ -147,7 +147,6 @@ struct PointingCalibResult {
     std::vector<double> params;          ///< rad / m
     Eigen::MatrixXd covariance;          ///< of params (rad², m², rad·m)
     std::vector<double> paramSd;
-    double relR = 0, relA = 0, relB = 0; ///< dual-beam relative rotation (rad); relB is fixed at 0
     std::vector<BeamCalibration> beams;  ///< one per design, in design order
     std::vector<CalibIteration> iterations;  ///< start + every accepted step
     std::vector<ControlPointResidual> residuals;

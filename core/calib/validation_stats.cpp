@@ -67,9 +67,7 @@ bool readDifferencesCsv(const std::string& path, const std::string& groupColumn,
         return false;
     }
     const CsvTable& t = csv.table;
-    int cd = -1;
-    for (const char* n : {"d", "diff", "dh", "difference", "d_m"})
-        if ((cd = t.column(n)) >= 0) break;
+    const int cd = t.firstColumn({"d", "diff", "dh", "difference", "d_m"});
     const int cl = t.column("laser"), cc = t.column("control");
     if (cd < 0 && (cl < 0 || cc < 0)) {
         *error = path + ":1: header needs a difference column (d) or the columns laser and control";
@@ -86,11 +84,11 @@ bool readDifferencesCsv(const std::string& path, const std::string& groupColumn,
     std::vector<DifferenceGroup> groups;
     for (size_t i = 0; i < t.rows.size(); ++i) {
         const auto& row = t.rows[i];
-        const std::string where = path + ":" + std::to_string(t.lines[i]) + ": ";
+        const std::string where = whereInFile(path, t.lines[i]);
         double v = 0;
         if (cd >= 0) {
             if (!parseDouble(row[cd], &v)) {
-                *error = where + "difference must be a finite number, not \"" + row[cd] + "\"";
+                *error = where + "difference must be a finite number, not \"" + printableExcerpt(row[cd]) + "\"";
                 return false;
             }
         } else {

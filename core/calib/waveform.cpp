@@ -30,21 +30,21 @@ bool readWaveformCsv(const std::string& path, double dt, Waveform* out, std::str
     Waveform w;
     for (size_t i = 0; i < t.rows.size(); ++i) {
         const auto& row = t.rows[i];
-        const std::string where = path + ":" + std::to_string(t.lines[i]) + ": ";
+        const std::string where = whereInFile(path, t.lines[i]);
         double a = 0, tt = 0;
         if (!parseDouble(row[ca], &a)) {
-            *error = where + "amplitude must be a finite number, not \"" + row[ca] + "\"";
+            *error = where + "amplitude must be a finite number, not \"" + printableExcerpt(row[ca]) + "\"";
             return false;
         }
         if (ct >= 0) {
             if (!parseDouble(row[ct], &tt)) {
-                *error = where + "time must be a finite number, not \"" + row[ct] + "\"";
+                *error = where + "time must be a finite number, not \"" + printableExcerpt(row[ct]) + "\"";
                 return false;
             }
         } else if (cs >= 0) {
             long long k = 0;
             if (!parseLong(row[cs], &k)) {
-                *error = where + "sample must be a whole number, not \"" + row[cs] + "\"";
+                *error = where + "sample must be a whole number, not \"" + printableExcerpt(row[cs]) + "\"";
                 return false;
             }
             tt = k * dt;
@@ -268,20 +268,20 @@ bool readFeatureCsv(const std::string& path, std::vector<FeatureCandidate>* out,
     std::vector<FeatureCandidate> v;
     for (size_t i = 0; i < t.rows.size(); ++i) {
         const auto& row = t.rows[i];
-        const std::string where = path + ":" + std::to_string(t.lines[i]) + ": ";
+        const std::string where = whereInFile(path, t.lines[i]);
         FeatureCandidate c;
         c.line = t.lines[i];
         c.id = cid >= 0 ? std::string(trim(row[cid])) : std::to_string(i + 1);
         if (!parseDouble(row[ch], &c.heightM)) {
-            *error = where + "height must be a finite number, not \"" + row[ch] + "\"";
+            *error = where + "height must be a finite number, not \"" + printableExcerpt(row[ch]) + "\"";
             return false;
         }
         if (ce >= 0 && !trim(row[ce]).empty() && !parseDouble(row[ce], &c.e)) {
-            *error = where + "position must be a finite number, not \"" + row[ce] + "\"";
+            *error = where + "position must be a finite number, not \"" + printableExcerpt(row[ce]) + "\"";
             return false;
         }
         if (cn >= 0 && !trim(row[cn]).empty() && !parseDouble(row[cn], &c.n)) {
-            *error = where + "position must be a finite number, not \"" + row[cn] + "\"";
+            *error = where + "position must be a finite number, not \"" + printableExcerpt(row[cn]) + "\"";
             return false;
         }
         v.push_back(std::move(c));

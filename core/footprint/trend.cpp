@@ -53,7 +53,7 @@ bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, 
     }
     for (size_t i = 0; i < t.rows.size(); ++i) {
         const auto& row = t.rows[i];
-        const std::string where = path + ":" + std::to_string(t.lines[i]) + ": ";
+        const std::string where = whereInFile(path, t.lines[i]);
         CentroidRecord r;
         r.line = t.lines[i];
         if (!monthOf(row[ct], &r.month)) {

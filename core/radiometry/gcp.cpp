@@ -67,7 +67,7 @@ bool readGcpCsv(const std::string& path, std::vector<Gcp>* out, std::string* err
         g.id = cid >= 0 ? std::string(trim(row[cid])) : std::to_string(i + 1);
         if (!parseDouble(row[cx], &g.x) || !parseDouble(row[cy], &g.y) || !parseDouble(row[mx], &g.mapX) ||
             !parseDouble(row[my], &g.mapY)) {
-            *error = path + ":" + std::to_string(t.lines[i]) + ": x, y, map_x, map_y must be finite numbers";
+            *error = whereInFile(path, t.lines[i]) + "x, y, map_x, map_y must be finite numbers";
             return false;
         }
         v.push_back(std::move(g));

@@ -16,6 +16,35 @@ std::string regionName(const Region& r, size_t i) {
     if (r.line > 0) s += " (line " + std::to_string(r.line) + ")";
     return s;
 }
+
+// Finite pixels of one rectangle (already checked to lie inside the image): sum, sum of squares,
+// count, and how many fall outside [lo, hi]. Only the rectangle is converted to double.
+struct RectStats {
+    double sum = 0, sum2 = 0;
+    int n = 0, outside = 0;
+};
+bool rectStats(const cv::Mat& image, const cv::Rect& rect, double lo, double hi, RectStats* st, std::string* error) {
+    cv::Mat roi;
+    try {
+        image(rect).convertTo(roi, CV_64F);
+    } catch (const cv::Exception& e) {
+        *error = std::string("cannot read the image: ") + e.what();
+        return false;
+    }
+    for (int y = 0; y < roi.rows; ++y) {
+        const double* row = roi.ptr<double>(y);
+        for (int x = 0; x < roi.cols; ++x) {
+            const double v = row[x];
+            if (!std::isfinite(v)) continue;
+            st->sum += v;
+            st->sum2 += v * v;
+            ++st->n;
+            if (v < lo || v > hi) ++st->outside;
+        }
+    }
+    return true;
+}
+
 std::string extensionOf(const std::string& path) {
     const size_t dot = path.find_last_of('.');
     const size_t slash = path.find_last_of('/');
@@ -47,18 +76,18 @@ bool readRegionCsv(const std::string& path, std::vector<Region>* out, std::strin
     std::vector<Region> v;
     for (size_t i = 0; i < t.rows.size(); ++i) {
         const auto& row = t.rows[i];
-        const std::string where = path + ":" + std::to_string(t.lines[i]) + ": ";
+        const std::string where = whereInFile(path, t.lines[i]);
         Region r;
         r.line = t.lines[i];
         r.name = cn >= 0 ? std::string(trim(row[cn])) : std::to_string(i + 1);
         if (!parseDouble(row[cr], &r.reflectance)) {
-            *error = where + "reflectance must be a finite number, not \"" + row[cr] + "\"";
+            *error = where + "reflectance must be a finite number, not \"" + printableExcerpt(row[cr]) + "\"";
             return false;
         }
         auto opt = [&](int c, double* dst) {
             if (c < 0 || trim(row[c]).empty()) return true;
             if (!parseDouble(row[c], dst)) {
-                *error = where + t.header[c] + " must be a finite number, not \"" + row[c] + "\"";
+                *error = where + t.header[c] + " must be a finite number, not \"" + printableExcerpt(row[c]) + "\"";
                 return false;
             }
             return true;
@@ -95,13 +124,6 @@ bool measureRegionDn(const cv::Mat& image, const ReflectanceFitParams& params, s
         *error = "the region image must be a non-empty single-channel image";
         return false;
     }
-    cv::Mat f;
-    try {
-        image.convertTo(f, CV_64F);
-    } catch (const cv::Exception& e) {
-        *error = std::string("cannot read the region image: ") + e.what();
-        return false;
-    }
     const cv::Rect bounds(0, 0, image.cols, image.rows);
     for (size_t i = 0; i < regions->size(); ++i) {
         Region& r = (*regions)[i];
@@ -112,27 +134,16 @@ bool measureRegionDn(const cv::Mat& image, const ReflectanceFitParams& params, s
                      std::to_string(image.cols) + "x" + std::to_string(image.rows) + " image";
             return false;
         }
-        double s = 0, s2 = 0;
-        int n = 0, out = 0;
-        for (int y = r.rect.y; y < r.rect.y + r.rect.height; ++y) {
-            const double* row = f.ptr<double>(y);
-            for (int x = r.rect.x; x < r.rect.x + r.rect.width; ++x) {
-                const double v = row[x];
-                if (!std::isfinite(v)) continue;
-                s += v;
-                s2 += v * v;
-                ++n;
-                if (v < params.dnMin || v > params.dnMax) ++out;
-            }
-        }
-        if (n == 0) {
+        RectStats st;
+        if (!rectStats(image, r.rect, params.dnMin, params.dnMax, &st, error)) return false;
+        if (st.n == 0) {
             *error = regionName(r, i) + ": no finite pixels inside the rectangle";
             return false;
         }
-        r.dn = s / n;
-        r.dnStd = n > 1 ? std::sqrt(std::max(0.0, (s2 - s * s / n) / (n - 1))) : 0;
-        r.pixels = n;
-        r.pixelsOutOfRange = out;
+        r.dn = st.sum / st.n;
+        r.dnStd = st.n > 1 ? sqrtVariance((st.sum2 - st.sum * st.sum / st.n) / (st.n - 1)) : 0;
+        r.pixels = st.n;
+        r.pixelsOutOfRange = st.outside;
     }
     return true;
 }
@@ -321,26 +332,13 @@ RelativeErrorResult relativeErrors(const std::vector<Region>& regions, const cv:
                 res.error = regionName(r, i) + ": the rectangle leaves the image";
                 return res;
             }
-            cv::Mat roi;
-            try {
-                (*image)(r.rect).convertTo(roi, CV_64F);
-            } catch (const cv::Exception& e) {
-                res.error = std::string("cannot read the reflectance image: ") + e.what();
-                return res;
-            }
-            double s = 0;
-            int n = 0;
-            for (int y = 0; y < roi.rows; ++y)
-                for (int x = 0; x < roi.cols; ++x)
-                    if (const double v = roi.at<double>(y, x); std::isfinite(v)) {
-                        s += v;
-                        ++n;
-                    }
-            if (n == 0) {
+            RectStats st;
+            if (!rectStats(*image, r.rect, -INFINITY, INFINITY, &st, &res.error)) return res;
+            if (st.n == 0) {
                 res.error = regionName(r, i) + ": no finite reflectance inside the rectangle";
                 return res;
             }
-            row.simulated = s / n;
+            row.simulated = st.sum / st.n;
         } else {
             row.simulated = r.simulated;
         }
@@ -387,7 +385,7 @@ bool readFitCsv(const std::string& path, ReflectanceFit* fit, std::string* error
     }
     ReflectanceFit f;
     const auto& row = t.rows[0];
-    const std::string where = path + ":" + std::to_string(t.lines[0]) + ": ";
+    const std::string where = whereInFile(path, t.lines[0]);
     struct Field {
         const char* name;
         double* dst;
@@ -402,7 +400,7 @@ bool readFitCsv(const std::string& path, ReflectanceFit* fit, std::string* error
         const int c = t.column(fd.name);
         if (c < 0 || (!fd.required && trim(row[c]).empty())) continue;
         if (!parseDouble(row[c], fd.dst)) {
-            *error = where + fd.name + " must be a finite number, not \"" + row[c] + "\"";
+            *error = where + fd.name + " must be a finite number, not \"" + printableExcerpt(row[c]) + "\"";
             return false;
         }
     }

@@ -140,7 +140,6 @@ DetectorSimulation simulateDetectorArray(const DetectorSimParams& p, uint64_t se
     t.orientationRad = theta;
     DetectorArray& arr = s.array;
     arr.geographic = p.geographic;
-    const LocalFrame frame(p.originLatDeg * kDeg, p.originLonDeg * kDeg, p.heightM);
     if (p.geographic) {
         arr.originLatDeg = p.originLatDeg;
         arr.originLonDeg = p.originLonDeg;
