@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/common/output_set.hpp"
+
 namespace lwb::cli {
 
 /// Exit codes: 0 success, 1 bad input or failed run (nothing written), 2 usage error.
@@ -53,6 +55,31 @@ private:
     bool m_quiet, m_tty;
     int m_lastDecile = -1;
     std::chrono::steady_clock::time_point m_start, m_last;
+};
+
+/// Checks a run's outputs before any work is done (core::OutputSet::check). 0 when they may be
+/// written; else prints why and returns the exit code: usage (2) for outputs naming an input or
+/// each other, failed (1) for a file-system problem.
+int checkOutputs(const std::string& command, core::OutputSet& outs);
+/// Renames a run's staged outputs into place: kOk, or prints why and returns kFailed (then none
+/// of the outputs was replaced).
+int commitOutputs(const std::string& command, core::OutputSet& outs);
+
+/// An output folder for a run that writes several files into it: created when missing, and
+/// removed again (when still empty) unless keep() is called, so a failed run leaves nothing.
+class FolderForOutputs {
+public:
+    explicit FolderForOutputs(std::string dir);
+    ~FolderForOutputs();
+    FolderForOutputs(const FolderForOutputs&) = delete;
+    FolderForOutputs& operator=(const FolderForOutputs&) = delete;
+    bool ok() const { return m_ok; }
+    void keep() const { m_keep = true; }
+
+private:
+    std::string m_dir;
+    bool m_ok = false, m_created = false;
+    mutable bool m_keep = false;
 };
 
 /// "X,Y" → two finite numbers.

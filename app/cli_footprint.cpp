@@ -35,6 +35,7 @@ const char* kFootprintUsage =
     "  --center X,Y              nominal spot centre in full-image px; repeat for the two beams of an\n"
     "                            LSI frame (one row per ROI). Without it, the brightest spot-like blob.\n"
     "  --raw-size WxH            size of .raw/.bin frames\n"
+    "  --max-pixels N            largest frame read, from its header (default 268435456 = 16384^2)\n"
     "  --threads N               worker threads (default: all cores)\n"
     "  --keep-going              write unreadable files as rejected rows instead of stopping\n"
     "  --print-config            print the effective parameters as JSON and exit\n"
@@ -75,7 +76,8 @@ bool loadParams(const Args& a, FootprintParams* p, std::string* err) {
 
 int cmdFootprint(int argc, char** argv) {
     Args a("footprint", kFootprintUsage);
-    for (const char* o : {"--method", "--preset", "--config", "--roi", "--raw-size", "--threads", "-o", "--output"})
+    for (const char* o : {"--method", "--preset", "--config", "--roi", "--raw-size", "--threads", "-o", "--output",
+                          "--max-pixels"})
         a.option(o, true);
     a.option("--center", true, true);
     for (const char* o : {"--keep-going", "--print-config", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
@@ -99,7 +101,8 @@ int cmdFootprint(int argc, char** argv) {
     if (a.has("--raw-size") && !parseSize(a.value("--raw-size"), &bp.read.rawWidth, &bp.read.rawHeight))
         return fail("footprint", "--raw-size must be WxH, e.g. 550x550", kUsage);
     long long threads = 0;
-    if (!a.getInt("--threads", 0, 256, &threads, &err)) return fail("footprint", err, kUsage);
+    if (!a.getInt("--threads", 0, 256, &threads, &err) || !a.getInt("--max-pixels", 1, 1LL << 40, &bp.read.maxPixels, &err))
+        return fail("footprint", err, kUsage);
     bp.threads = static_cast<int>(threads);
     const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
     if (out.empty()) return fail("footprint", "no output file: give -o OUT.csv", kUsage);
@@ -107,6 +110,10 @@ int cmdFootprint(int argc, char** argv) {
     std::vector<std::string> files;
     if (!expandInputs(a.positional(), &files, &err)) return fail("footprint", err);
     if (files.empty()) return fail("footprint", "the inputs hold no image files (png, tif, tiff, pgm, raw, bin)");
+    core::OutputSet outs;
+    for (const auto& f : files) outs.addInput(f);
+    outs.addOutput(out);
+    if (int rc = checkOutputs("footprint", outs)) return rc;
     Progress progress("footprint", files.size(), a.has("-q") || a.has("--quiet"));
     size_t done = 0;
     core::Feedback fb;
@@ -127,7 +134,9 @@ int cmdFootprint(int argc, char** argv) {
     });
     progress.finish();
     if (!firstError.empty()) return fail("footprint", firstError + " (nothing written; --keep-going reports it as a rejected row)");
-    if (!writeFootprintCsv(out, res.items, bp.footprint.method, &err)) return fail("footprint", err);
+    if (!writeFootprintCsv(outs.stagingPath(out), res.items, bp.footprint.method, &err))
+        return fail("footprint", outs.unstaged(err));
+    if (int rc = commitOutputs("footprint", outs)) return rc;
     size_t good = 0, doubtful = 0, rejected = 0;
     for (const auto& it : res.items) {
         if (!it.readError.empty()) ++rejected;
@@ -211,10 +220,17 @@ int cmdSimulateFootprint(int argc, char** argv) {
         if (!parsePoint(a.value("--center"), &sp.centerX, &sp.centerY))
             return fail("simulate footprint", "--center must be X,Y", kUsage);
     }
-    ::mkdir(dir.c_str(), 0755);
-    struct stat st {};
-    if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
-        return fail("simulate footprint", dir + ": cannot create the folder");
+    const FolderForOutputs folder(dir);
+    if (!folder.ok()) return fail("simulate footprint", dir + ": cannot create the folder");
+    core::OutputSet outs;
+    auto shotName = [&](long long i) {
+        char name[64];
+        std::snprintf(name, sizeof name, "shot_%06lld.%s", i, fmt.c_str());
+        return std::string(name);
+    };
+    for (long long i = 0; i < count; ++i) outs.addOutput(dir + "/" + shotName(i));
+    outs.addOutput(dir + "/truth.csv");
+    if (int rc = checkOutputs("simulate footprint", outs)) return rc;
     std::string truth =
         "file,scene,case,x,y,sigma_major,sigma_minor,tilt_deg,amplitude_dn,ground_mean_dn,texture_rms_dn,expect_good,x2,y2\n";
     Progress progress("simulate", static_cast<size_t>(count), a.has("-q") || a.has("--quiet"));
@@ -223,18 +239,21 @@ int cmdSimulateFootprint(int argc, char** argv) {
         sp.scene = scenes[i % scenes.size()];
         sp.spotCase = cases[(i / scenes.size()) % cases.size()];
         const sim::FootprintSimShot shot = sim::simulateFootprint(sp, sim::Rng::mix(static_cast<uint64_t>(seed), i));
-        char name[64];
-        std::snprintf(name, sizeof name, "shot_%06lld.%s", i, fmt.c_str());
-        if (!writeFrame16(dir + "/" + name, shot.image, &err)) return fail("simulate footprint", err);
+        const std::string name = shotName(i);
+        if (!writeFrame16(outs.stagingPath(dir + "/" + name), shot.image, &err))
+            return fail("simulate footprint", outs.unstaged(err));
         const auto& t = shot.truth;
-        truth += std::string(name) + "," + sim::sceneName(t.scene) + "," + sim::spotCaseName(t.spotCase) + "," +
+        truth += name + "," + sim::sceneName(t.scene) + "," + sim::spotCaseName(t.spotCase) + "," +
                  f(t.x, 5) + "," + f(t.y, 5) + "," + f(t.sigmaMajor, 4) + "," + f(t.sigmaMinor, 4) + "," +
                  f(t.tiltRad * 180 / M_PI, 3) + "," + f(t.amplitude, 1) + "," + f(t.groundMean, 1) + "," +
                  f(t.textureRms, 1) + "," + (t.expectGood ? "1" : "0") + "," + f(t.x2, 5) + "," + f(t.y2, 5) + "\n";
         progress.update(static_cast<size_t>(i + 1));
     }
     progress.finish();
-    if (!core::writeFileAtomic(dir + "/truth.csv", truth, &err)) return fail("simulate footprint", err);
+    if (!core::writeFileAtomic(outs.stagingPath(dir + "/truth.csv"), truth, &err))
+        return fail("simulate footprint", outs.unstaged(err));
+    if (int rc = commitOutputs("simulate footprint", outs)) return rc;
+    folder.keep();
     return kOk;
 }
 
@@ -269,12 +288,17 @@ int cmdTrend(int argc, char** argv) {
     const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
     if (out.empty()) return fail("trend", "no output file: give -o OUT.csv", kUsage);
     if (a.positional().size() != 1) return fail("trend", "give exactly one input CSV", kUsage);
+    core::OutputSet outs;
+    outs.addInput(a.positional()[0]);
+    outs.addOutput(out);
+    if (int rc = checkOutputs("trend", outs)) return rc;
     std::vector<CentroidRecord> recs;
     if (!readCentroidCsv(a.positional()[0], &recs, &err)) return fail("trend", err);
     const TrendResult tr = computeTrend(recs, tp);
     if (!tr.ok) return fail("trend", tr.error);
     for (const auto& w : tr.warnings) std::cerr << "laserwb-cli trend: warning: " << w << "\n";
-    if (!writeTrendCsv(out, tr.rows, &err)) return fail("trend", err);
+    if (!writeTrendCsv(outs.stagingPath(out), tr.rows, &err)) return fail("trend", outs.unstaged(err));
+    if (int rc = commitOutputs("trend", outs)) return rc;
     if (!(a.has("-q") || a.has("--quiet"))) {
         // Summary: first → last month change per camera/beam.
         for (size_t i = 0; i < tr.rows.size(); ++i) {

@@ -2,6 +2,7 @@
 // post-fit with k-sigma rejection and ILRS normal points; per-point CSV, CRD full rate with
 // filter flags and CRD normal points. The loading and writing is core/slr/pass_input.hpp, the
 // layer the SLR workspace of the GUI uses too.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -83,59 +84,6 @@ std::string named(const std::string& path, const std::string& msg) {
     return path + ": " + msg;
 }
 
-struct Staged {
-    std::string finalPath, stagePath;
-};
-
-// Output files are first written (each atomically) under a staging name beside the target and
-// renamed into place only when every one of them was written: a failed run leaves none.
-// An output path that can be created or replaced: not a folder, in a folder that exists and
-// that we may write to. False with *why.
-bool outputWritable(const std::string& path, std::string* why) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-        *why = "is a folder";
-        return false;
-    }
-    const size_t slash = path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-    if (::access(dir.c_str(), W_OK) != 0) {
-        *why = "cannot write in " + dir + ": " + std::strerror(errno);
-        return false;
-    }
-    return true;
-}
-
-class Outputs {
-public:
-    std::string stage(const std::string& finalPath) {
-        const size_t slash = finalPath.find_last_of('/');
-        const std::string dir = slash == std::string::npos ? "" : finalPath.substr(0, slash + 1);
-        const std::string base = slash == std::string::npos ? finalPath : finalPath.substr(slash + 1);
-        const std::string st = dir + "." + base + ".lwb-stage-" + std::to_string(::getpid());
-        m_files.push_back({finalPath, st});
-        return st;
-    }
-    bool commit(std::string* error) {
-        for (size_t i = 0; i < m_files.size(); ++i) {
-            if (std::rename(m_files[i].stagePath.c_str(), m_files[i].finalPath.c_str()) != 0) {
-                *error = "cannot write " + m_files[i].finalPath + ": " + std::strerror(errno);
-                for (size_t j = i; j < m_files.size(); ++j) std::remove(m_files[j].stagePath.c_str());
-                m_files.clear();
-                return false;
-            }
-        }
-        m_files.clear();
-        return true;
-    }
-    ~Outputs() {
-        for (const auto& f : m_files) std::remove(f.stagePath.c_str());
-    }
-
-private:
-    std::vector<Staged> m_files;
-};
-
 std::string ps(double s) { return core::formatFixed(s * 1e12, 1) + " ps"; }
 
 }  // namespace
@@ -163,23 +111,15 @@ int cmdSlr(int argc, char** argv) {
     const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
     if (out.empty()) return fail(cmd, "no output file: give -o OUT.csv", kUsage);
     const std::string crdOut = a.value("--crd-out"), nptOut = a.value("--npt-out");
-    {
-        std::set<std::string> seen = {input};
-        for (const std::string* p : {&out, &crdOut, &nptOut}) {
-            if (p->empty() && p != &out) continue;
-            if (!seen.insert(*p).second)
-                return fail(cmd, *p == input ? "an output would overwrite the input " + input
-                                             : "two outputs name the same file " + *p,
-                            kUsage);
-        }
-    }
-    // Every output must be writable before anything is computed or written, so that a failure
-    // cannot leave one output renamed into place and another missing.
-    for (const std::string* p : {&out, &crdOut, &nptOut}) {
-        if (p->empty()) continue;
-        std::string why;
-        if (!outputWritable(*p, &why)) return fail(cmd, *p + ": " + why + " (nothing written)");
-    }
+    // Every output is checked before anything is computed or written: none may replace an
+    // input or another output (same device and inode, whatever the spelling), devices and
+    // folders are refused, and all are renamed into place together at the end.
+    core::OutputSet outs;
+    for (const char* in : {"--cpf", "--stations", "--preset"}) outs.addInput(a.value(in));
+    outs.addInput(input);
+    for (const std::string* p : {&out, &crdOut, &nptOut})
+        if (!p->empty()) outs.addOutput(*p);
+    if (int rc = checkOutputs(cmd, outs)) return rc;
     if (a.has("--cpf") != a.has("--stations"))
         return fail(cmd, "--cpf and --stations go together (O-C from the prediction needs both)", kUsage);
     if (a.has("--satellite") && !a.has("--preset"))
@@ -265,9 +205,13 @@ int cmdSlr(int argc, char** argv) {
             want.empty() ? slr::findPreset(presets, pass.satellite, pass.ilrsId) : slr::findPreset(presets, want, want);
         if (!p) {
             std::string have;
-            for (const auto& q : presets)
-                have += (have.empty() ? "" : ", ") + (q.name.empty() ? q.ilrsId : q.name) +
-                        (q.ilrsId.empty() || q.name.empty() ? "" : " (" + q.ilrsId + ")");
+            const size_t shown = std::min<size_t>(presets.size(), 20);  // a long file is not dumped whole
+            for (size_t k = 0; k < shown; ++k) {
+                const auto& q = presets[k];
+                have += (have.empty() ? "" : ", ") + core::printableExcerpt(q.name.empty() ? q.ilrsId : q.name) +
+                        (q.ilrsId.empty() || q.name.empty() ? "" : " (" + core::printableExcerpt(q.ilrsId) + ")");
+            }
+            if (presets.size() > shown) have += ", ... and " + std::to_string(presets.size() - shown) + " more";
             std::string who = !want.empty() ? "\"" + want + "\""
                               : pass.satellite.empty() && pass.ilrsId.empty()
                                   ? std::string("(none: an O-C table names no satellite; give --satellite NAME)")
@@ -319,14 +263,13 @@ int cmdSlr(int argc, char** argv) {
                              (postOk ? " (no bin holds the minimum number of kept points)" : " (no post-fit)"));
 
     // ---- outputs: all or nothing ----
-    Outputs outs;
-    if (!slr::writeScreenCsv(outs.stage(out), pass, s, accepted, postOk ? &post : nullptr, &err))
-        return fail(cmd, out + ": " + err);
-    if (!crdOut.empty() && !slr::writeScreenedCrd(outs.stage(crdOut), pass, accepted, &err))
-        return fail(cmd, crdOut + ": " + err);
-    if (!nptOut.empty() && !slr::writeNormalPointCrd(outs.stage(nptOut), pass, post.normalPoints, &err))
-        return fail(cmd, nptOut + ": " + err);
-    if (!outs.commit(&err)) return fail(cmd, err);
+    if (!slr::writeScreenCsv(outs.stagingPath(out), pass, s, accepted, postOk ? &post : nullptr, &err))
+        return fail(cmd, named(out, outs.unstaged(err)));
+    if (!crdOut.empty() && !slr::writeScreenedCrd(outs.stagingPath(crdOut), pass, accepted, &err))
+        return fail(cmd, named(crdOut, outs.unstaged(err)));
+    if (!nptOut.empty() && !slr::writeNormalPointCrd(outs.stagingPath(nptOut), pass, post.normalPoints, &err))
+        return fail(cmd, named(nptOut, outs.unstaged(err)));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
 
     // ---- summary ----
     if (quiet) return kOk;

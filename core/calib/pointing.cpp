@@ -603,6 +603,12 @@ bool readBeamsJson(const std::string& path, std::vector<BeamDesign>* out, std::s
             *error = where + "alpha_deg must be within 0..90";
             return false;
         }
+        for (size_t k = 0; k < v.size(); ++k)
+            if (v[k].id == d.id) {
+                *error = where + "id " + std::to_string(d.id) + " is already used by beams[" + std::to_string(k) +
+                         "]; each beam is designed once";
+                return false;
+            }
         d.alphaRad = alpha * kDeg;
         d.betaRad = beta * kDeg;
         auto vec = [&](const char* key, int n, double* dst) {

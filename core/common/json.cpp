@@ -349,4 +349,15 @@ bool jsonString(const Json& obj, const std::string& key, std::string* out, std::
     return true;
 }
 
+std::string firstUnknownKey(const Json& given, const Json& reference) {
+    if (!given.isObject() || !reference.isObject()) return {};
+    for (const auto& [key, value] : given.members()) {
+        const Json* ref = reference.find(key);
+        if (!ref) return key;
+        if (value.isObject() && ref->isObject())
+            if (std::string inner = firstUnknownKey(value, *ref); !inner.empty()) return key + "." + inner;
+    }
+    return {};
+}
+
 }  // namespace lwb::core

@@ -79,4 +79,9 @@ bool jsonInt(const Json& obj, const std::string& key, int* out, std::string* err
 bool jsonBool(const Json& obj, const std::string& key, bool* out, std::string* error);
 bool jsonString(const Json& obj, const std::string& key, std::string* out, std::string* error);
 
+/// The first member of `given` (an object, searched recursively through nested objects) whose
+/// key `reference` does not have, as a dotted path ("gauss.lm_max_iter"); "" when every key is
+/// known. Used to refuse misspelt keys in configs instead of ignoring them.
+std::string firstUnknownKey(const Json& given, const Json& reference);
+
 }  // namespace lwb::core

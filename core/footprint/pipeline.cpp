@@ -80,7 +80,10 @@ bool footprintParamsFromJson(const Json& j, FootprintParams* out, std::string* e
         return false;
     }
     FootprintParams p = *out;
-    std::string s;
+    if (const std::string k = firstUnknownKey(j, footprintParamsToJson(p)); !k.empty()) {
+        *error = "unknown key \"" + printableExcerpt(k) + "\" (--print-config lists every key)";
+        return false;
+    }
     if (const Json* m = j.find("method")) {
         if (!m->isString() || !parseMethod(m->asString(), &p.method)) {
             *error = "\"method\" must be \"gauss\", \"tefm\" or \"gcm\"";

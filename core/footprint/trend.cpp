@@ -38,6 +38,12 @@ bool monthOf(const std::string& time, std::string* month) {
     return true;
 }
 
+namespace {
+// Centroids are pixel coordinates of a camera frame (550 px for GF-7); beyond a million pixels
+// a value is a damaged field, and squaring it in the statistics would overflow.
+constexpr double kMaxCentroidPx = 1e6;
+}  // namespace
+
 bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, std::string* error) {
     const CsvReadResult csv = readCsv(path);
     if (!csv.ok) {
@@ -61,7 +67,13 @@ bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, 
             return false;
         }
         if (!parseDouble(row[cx], &r.x) || !parseDouble(row[cy], &r.y)) {
-            *error = where + "x and y must be finite numbers";
+            *error = where + "x and y must be finite numbers, not \"" + printableExcerpt(row[cx]) + "\", \"" +
+                     printableExcerpt(row[cy]) + "\"";
+            return false;
+        }
+        if (std::fabs(r.x) > kMaxCentroidPx || std::fabs(r.y) > kMaxCentroidPx) {
+            *error = where + "x = " + formatShortest(r.x) + ", y = " + formatShortest(r.y) +
+                     " is not a plausible spot centroid (|x|, |y| <= 1e6 px)";
             return false;
         }
         r.beam = std::string(trim(row[cb]));

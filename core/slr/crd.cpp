@@ -54,7 +54,7 @@ bool numberField(const Fields& fs, size_t i, const char* name, Need need, double
         *out = NAN;
         return true;
     }
-    if (!parseDouble(fs.f[i], out)) {
+    if (!parseFortranDouble(fs.f[i], out)) {
         *why = "field " + std::to_string(i) + " (" + name + ") is not a finite number: \"" + excerpt(fs.f[i]) + "\"";
         return false;
     }
@@ -78,7 +78,7 @@ bool intField(const Fields& fs, size_t i, const char* name, Need need, long* out
         return true;
     }
     double d = 0;
-    if (parseDouble(fs.f[i], &d) && d == std::floor(d) && std::fabs(d) < 2e9) {
+    if (parseFortranDouble(fs.f[i], &d) && d == std::floor(d) && std::fabs(d) < 2e9) {
         *out = static_cast<long>(d);
         return true;
     }

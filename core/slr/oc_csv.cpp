@@ -67,25 +67,8 @@ bool splitLine(std::string_view line, std::vector<std::string_view>* out) {
     }
 }
 
-/// Strict decimal number: optional sign, digits, point, exponent; finite.
-bool parseNumber(std::string_view s, double* out) {
-    s = trimBlanks(s);
-    if (s.empty()) return false;
-    const char* b = s.data();
-    const char* e = s.data() + s.size();
-    if (*b == '+') {
-        ++b;
-        if (b == e || *b == '-' || *b == '+') return false;
-    }
-    // Reject inf/nan spellings up front (from_chars would accept them).
-    const char c = (*b == '-' && b + 1 < e) ? b[1] : *b;
-    if (!((c >= '0' && c <= '9') || c == '.')) return false;
-    double v = 0;
-    const auto r = std::from_chars(b, e, v, std::chars_format::general);
-    if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v)) return false;
-    *out = v;
-    return true;
-}
+/// Strict decimal number (core::parseDouble): no hex, no inf/nan, nothing cut short; finite.
+bool parseNumber(std::string_view s, double* out) { return parseDouble(trimBlanks(s), out); }
 
 std::string lower(std::string_view s) { return toLower(trimBlanks(s)); }
 
@@ -238,35 +221,8 @@ OcCsvReadResult parseOcCsv(std::string_view text, const std::string& source, con
 
 OcCsvReadResult readOcCsv(const std::string& path, const OcCsvParams& params) {
     OcCsvReadResult r;
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) {
-        r.error = path + ": " + std::strerror(errno);
-        return r;
-    }
-    if (S_ISDIR(st.st_mode)) {
-        r.error = path + ": is a folder, not a file";
-        return r;
-    }
-    FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) {
-        r.error = path + ": cannot open: " + std::strerror(errno);
-        return r;
-    }
     std::string text;
-    try {
-        text.resize(static_cast<size_t>(st.st_size));
-        const size_t got = text.empty() ? 0 : std::fread(&text[0], 1, text.size(), f);
-        text.resize(got);
-        // A file that grew while being read, or a pipe: read the rest.
-        char buf[65536];
-        size_t more = 0;
-        while ((more = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, more);
-    } catch (const std::exception& e) {
-        std::fclose(f);
-        r.error = path + ": " + e.what();
-        return r;
-    }
-    std::fclose(f);
+    if (!readFileText(path, &text, &r.error)) return r;
     return parseOcCsv(text, path, params);
 }
 
