@@ -140,7 +140,7 @@ int cmdSlr(int argc, char** argv) {
     if (a.has("--reject") && reject > 0 && reject < 1)
         return fail(cmd, "--reject must be 0 (off) or 1..10 (2.5 single-photon, 3 multi-photon), not " + a.value("--reject"),
                     kUsage);
-    const bool csvInput = !slr::isCrdPath(input);
+    const bool csvInput = !slr::isCrdFile(input);
     if (csvInput && (!crdOut.empty() || !nptOut.empty()))
         return fail(cmd,
                     std::string(!crdOut.empty() ? "--crd-out" : "--npt-out") +

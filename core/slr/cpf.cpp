@@ -83,7 +83,10 @@ CpfReadResult parseCpf(std::string_view text, const std::string& source) {
                     continue;
                 }
                 if (f.size() < 3 || toLower(f[1]) != "cpf") {
-                    res.error = where(src, lineNo) + "H1 must start with \"CPF <version>\"";
+                    res.error = where(src, lineNo) + "H1 must start with \"CPF <version>\"" +
+                                (f.size() >= 2 && toLower(f[1]) == "crd"
+                                     ? std::string(": this H1 names CRD ranging data, not a CPF prediction")
+                                     : std::string());
                     return res;
                 }
                 long v = 0;
@@ -184,6 +187,10 @@ CpfReadResult parseCpf(std::string_view text, const std::string& source) {
                 if (res.file.otherLines.size() < 100000) res.file.otherLines.emplace_back(line);
             }
         }
+        // The format closes every file with a 99 record: without it the file was probably cut short.
+        if (!ended && haveH1)
+            warn(where(src, lineNo) + "the file ends without the 99 end-of-ephemeris record: truncated? (its last " +
+                 "prediction records may be missing)");
         if (dropped) res.warnings.push_back("... and " + std::to_string(dropped) + " more warnings");
         if (res.file.positions.empty()) {
             res.error = src + ": no readable type 10 position record";

@@ -1,12 +1,9 @@
 #include "core/slr/oc_csv.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
-#include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
@@ -74,9 +71,10 @@ std::string lower(std::string_view s) { return toLower(trimBlanks(s)); }
 
 void appendNumber(std::string* out, double v) {
     if (!std::isfinite(v)) return;
-    char buf[40];
+    char buf[40];  // the shortest round-trip text of a double has at most 24 characters
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    out->append(buf, static_cast<size_t>(r.ptr - buf));
+    if (r.ec == std::errc()) out->append(buf, static_cast<size_t>(r.ptr - buf));
+    else *out += formatDouble(v, 17);  // not reached; never the buffer's old bytes
 }
 
 }  // namespace
@@ -182,6 +180,16 @@ OcCsvReadResult parseOcCsv(std::string_view text, const std::string& source, con
             }
             if (!parseNumber(fields[static_cast<size_t>(cOc)], &o)) {
                 res.error = at(lineNo) + "oc_s is not a finite number: \"" + excerpt(fields[static_cast<size_t>(cOc)]) + "\"";
+                return res;
+            }
+            if (!(std::fabs(e) <= kMaxOcEpochS)) {
+                res.error = at(lineNo) + "epoch_s " + excerpt(fields[static_cast<size_t>(cEpoch)]) +
+                            " is not a plausible epoch in seconds (|epoch_s| <= 1e10 s)";
+                return res;
+            }
+            if (!(std::fabs(o) <= kMaxOcS)) {
+                res.error = at(lineNo) + "oc_s " + excerpt(fields[static_cast<size_t>(cOc)]) +
+                            " is not a plausible O-C in seconds of two-way time of flight (|oc_s| <= 3 s)";
                 return res;
             }
             for (size_t k = 0; k < cExtra.size(); ++k) {

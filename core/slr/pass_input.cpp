@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
@@ -37,24 +39,141 @@ PassSummary summarise(const CrdPass& p, int index) {
     s.station = p.station.name;
     const CrdSession& q = p.session;
     s.start = timeText(q.startYear, q.startMonth, q.startDay, q.startHour, q.startMinute, q.startSecond);
-    s.end = timeText(q.endYear, q.endMonth, q.endDay, q.endHour, q.endMinute, q.endSecond);
+    s.end = q.endYear == kCrdAbsent ? std::string("(end not given)")
+                                    : timeText(q.endYear, q.endMonth, q.endDay, q.endHour, q.endMinute, q.endSecond);
     s.ranges = p.ranges.size();
     s.normalPoints = p.normalPoints.size();
     s.dataType = q.dataType;
+    s.problem = p.problem;
     return s;
+}
+
+/// `error` followed by the first readers' warnings (the damaged lines that may explain it).
+std::string withWarnings(std::string error, const std::vector<std::string>& first,
+                         const std::vector<std::string>& second = {}) {
+    constexpr size_t kShown = 5;
+    const size_t n = first.size() + second.size();
+    if (n == 0) return error;
+    error += "\n  the reader's warnings" + (n > kShown ? " (first " + std::to_string(kShown) + " of " + std::to_string(n) + ")"
+                                                       : std::string()) + ":";
+    for (size_t i = 0; i < n && i < kShown; ++i) error += "\n  " + (i < first.size() ? first[i] : second[i - first.size()]);
+    return error;
+}
+
+/// An id of a CRD H3 or CPF H2 that is given: not empty, "na" or -1.
+bool idGiven(const std::string& id) {
+    const std::string l = toLower(trim(id));
+    return !l.empty() && l != "na" && l != "-1";
+}
+
+/// ILRS ids compared as numbers when both are ("0904907" is "904907"), else as text.
+bool sameIlrsId(const std::string& a, const std::string& b) {
+    long long x = 0, y = 0;
+    if (parseLong(a, &x) && parseLong(b, &y)) return x == y;
+    return toLower(trim(a)) == toLower(trim(b));
+}
+
+std::string idList(const std::string& name, const std::string& ilrs, long norad, long sic) {
+    std::string s = name.empty() ? std::string("?") : name;
+    s += ": ILRS id " + (idGiven(ilrs) ? ilrs : std::string("not given"));
+    s += ", NORAD " + (norad > 0 ? std::to_string(norad) : std::string("not given"));
+    s += ", SIC " + (sic > 0 ? std::to_string(sic) : std::string("not given"));
+    return s;
+}
+
+/// The prediction must be for the pass's satellite. Compares the ids both files give (ILRS id,
+/// NORAD number, SIC): an error when every one of them differs, a warning when some differ or
+/// none can be compared. O-C against another satellite's orbit is kilometres of nonsense.
+bool checkCpfTarget(const CpfFile& cpf, const CrdPass& pass, const std::string& crdPath, std::string* error,
+                    std::vector<std::string>* warnings) {
+    const CpfHeader& h = cpf.header;
+    const CrdTarget& t = pass.target;
+    const std::string cpfName = cpf.path.empty() ? std::string("cpf") : cpf.path;
+    int compared = 0;
+    std::vector<std::string> differ;
+    if (idGiven(h.ilrsId) && idGiven(t.ilrsId)) {
+        ++compared;
+        if (!sameIlrsId(h.ilrsId, t.ilrsId)) differ.push_back("ILRS id");
+    }
+    if (h.norad > 0 && t.norad > 0) {
+        ++compared;
+        if (h.norad != t.norad) differ.push_back("NORAD number");
+    }
+    if (h.sic > 0 && t.sic > 0) {
+        ++compared;
+        if (h.sic != t.sic) differ.push_back("SIC");
+    }
+    const std::string both = "the CPF H2 gives " + idList(h.targetName, h.ilrsId, h.norad, h.sic) + "; the pass's H3 (" + crdPath + ":" +
+                             std::to_string(t.line) + ") gives " + idList(t.name, t.ilrsId, t.norad, t.sic);
+    if (compared == 0) {
+        warnings->push_back(cpfName + ": cannot check that the prediction is for the pass's satellite (no id that both "
+                                      "files give): " + both);
+        return true;
+    }
+    if (differ.size() == size_t(compared)) {
+        *error = cpfName + ": the prediction is for another satellite: " + both +
+                 ". Give the CPF of the pass's satellite.";
+        return false;
+    }
+    if (!differ.empty()) {
+        std::string which;
+        for (const auto& d : differ) which += (which.empty() ? "" : " and ") + d;
+        warnings->push_back(cpfName + ": the " + which + " of the prediction and the pass differ (the other ids agree): " +
+                            both);
+    }
+    return true;
+}
+
+/// The first damaged record of the pass with its warning, or "" when none.
+std::string damagedRecords(const CrdPass& pass, const std::string& path, const std::vector<std::string>& warnings) {
+    if (pass.skippedLines.empty()) return {};
+    // The reader lists the skipped lines whether or not its warning list is full.
+    const std::string at = path + ":" + std::to_string(pass.skippedLines.front()) + ":";
+    std::string why = at + " a damaged record";
+    for (const auto& w : warnings)  // (the same line may also end the file: "file ends without H8")
+        if (w.rfind(at, 0) == 0 && w.find(" record skipped: ") != std::string::npos) {
+            why = w;
+            break;
+        }
+    return why + " (" + std::to_string(pass.skippedLines.size()) +
+           " damaged record(s) in the pass to screen: repair or remove them before writing results)";
 }
 }  // namespace
 
-bool isCrdPath(const std::string& path) {
+bool isCrdFile(const std::string& path) {
     const std::string e = extension(path);
-    return e == "frd" || e == "fr2" || e == "npt" || e == "np2" || e == "crd";
+    const bool crdName = e == "frd" || e == "fr2" || e == "npt" || e == "np2" || e == "crd";
+    // Only a regular file is looked into (a FIFO would block); the reader reports the others.
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return crdName;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return crdName;
+    std::string head(65536, '\0');
+    in.read(&head[0], std::streamsize(head.size()));
+    head.resize(size_t(in.gcount()));
+    if (head.size() >= 3 && head.compare(0, 3, "\xEF\xBB\xBF") == 0) head.erase(0, 3);
+    size_t pos = 0;
+    while (pos < head.size()) {
+        size_t end = head.find('\n', pos);
+        if (end == std::string::npos) end = head.size();
+        const std::string_view line = std::string_view(head).substr(pos, end - pos);
+        pos = end + 1;
+        const std::vector<std::string_view> f = splitBlanks(line);
+        std::string first = f.empty() ? std::string() : toLower(f[0]);
+        while (!first.empty() && first.back() == '\r') first.pop_back();
+        if (first.empty() || first == "00") continue;  // blank line or CRD comment
+        if (first == "h1") return true;
+        if (first[0] == '#' || line.find(',') != std::string_view::npos) return false;  // CSV comment or header
+        return crdName;
+    }
+    return crdName;
 }
 
 PassInputResult loadPass(const std::string& path, int passIndex, const PassInputParams& params, const Feedback* fb) {
     PassInputResult r;
     PassData& d = r.pass;
     d.source = path;
-    if (!isCrdPath(path)) {
+    if (!isCrdFile(path)) {
         const OcCsvReadResult csv = readOcCsv(path);
         if (!csv.ok) {
             r.error = csv.error;
@@ -76,7 +195,7 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
     }
     CrdReadResult crd = readCrd(path, {}, fb);
     if (!crd.ok) {
-        r.error = crd.error;
+        r.error = withWarnings(crd.error, crd.warnings);
         return r;
     }
     r.warnings = crd.warnings;
@@ -85,7 +204,20 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
         for (size_t i = 0; i < crd.file.passes.size() && passIndex < 0; ++i)
             if (!crd.file.passes[i].ranges.empty()) passIndex = int(i);
         if (passIndex < 0) {
-            r.error = path + ": no full-rate pass (no type-10 records) to screen";
+            // Say what the file does hold: normal-point passes, blocks that could not be read.
+            size_t np = 0;
+            std::string bad;
+            for (size_t i = 0; i < crd.file.passes.size(); ++i) {
+                const CrdPass& q = crd.file.passes[i];
+                if (!q.problem.empty()) bad += "\n  pass " + std::to_string(i + 1) + " cannot be used: " + q.problem;
+                else np += !q.normalPoints.empty();
+            }
+            r.error = path + ": no full-rate pass (no readable type-10 records) to screen" +
+                      (np ? "; the file holds " + std::to_string(np) + " normal-point pass" + (np > 1 ? "es" : "") +
+                                " (type 11), which cannot be screened"
+                          : std::string()) +
+                      bad;
+            r.error = withWarnings(r.error, r.warnings);
             return r;
         }
     }
@@ -95,9 +227,15 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
         return r;
     }
     const CrdPass& pass = crd.file.passes[size_t(passIndex)];
+    if (!pass.problem.empty()) {
+        r.error = withWarnings(path + ": pass " + std::to_string(passIndex + 1) + " cannot be used: " + pass.problem,
+                               r.warnings);
+        return r;
+    }
     if (pass.ranges.size() < 3) {
-        r.error = path + ": pass " + std::to_string(passIndex + 1) + " holds " + std::to_string(pass.ranges.size()) +
-                  " full-rate records; screening needs at least 3";
+        r.error = withWarnings(path + ": pass " + std::to_string(passIndex + 1) + " holds " +
+                                   std::to_string(pass.ranges.size()) + " full-rate records; screening needs at least 3",
+                               r.warnings);
         return r;
     }
     d.passIndex = passIndex;
@@ -105,17 +243,21 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
     d.ilrsId = pass.target.ilrsId;
     d.station = pass.station.name;
     d.cdpPad = pass.station.cdpPadId;
+    d.damaged = damagedRecords(pass, path, r.warnings);
     OcResult oc;
     const bool predicted = !params.cpfPath.empty() && !params.sinexPath.empty();
     if (!params.cpfPath.empty() != !params.sinexPath.empty())
         r.warnings.push_back("O-C from a prediction needs both the CPF and the SINEX file; using the fitted TOF trend");
     double altitudeKm = 0;
+    std::vector<std::string> cpfWarnings;
     if (predicted) {
         const CpfReadResult cpf = readCpf(params.cpfPath);
         if (!cpf.ok) {
-            r.error = cpf.error;
+            r.error = withWarnings(cpf.error, cpf.warnings);
             return r;
         }
+        cpfWarnings = cpf.warnings;
+        if (!checkCpfTarget(cpf.file, pass, path, &r.error, &cpfWarnings)) return r;
         const SinexReadResult snx = readSinex(params.sinexPath);
         if (!snx.ok) {
             r.error = snx.error;
@@ -126,13 +268,15 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
         double rmin = INFINITY;
         for (const auto& p : cpf.file.positions) rmin = std::min(rmin, p.position.norm());
         if (std::isfinite(rmin)) altitudeKm = rmin / 1000.0 - kEarthRadiusKm;
-        for (const auto& w : cpf.warnings) r.warnings.push_back(w);
+        for (const auto& w : cpfWarnings) r.warnings.push_back(w);
     } else {
         oc = computeTrendOc(pass, params.trend, fb);
         d.ocOrigin = "fitted TOF trend (no prediction)";
     }
     if (!oc.ok) {
-        r.error = oc.error;
+        // The prediction's warnings first: a damaged or missing position record explains most
+        // interpolation failures.
+        r.error = withWarnings(oc.error, cpfWarnings, crd.warnings);
         return r;
     }
     for (const auto& w : oc.warnings) r.warnings.push_back(w);
@@ -158,6 +302,10 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
 
 bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
                     const std::vector<uint8_t>& accepted, const PostfitResult* post, std::string* error) {
+    if (!pass.damaged.empty()) {
+        *error = pass.damaged;
+        return false;
+    }
     const size_t n = pass.t.size();
     if (screen.pointClass.size() != n || accepted.size() != n) {
         *error = "screening result does not match the pass (" + std::to_string(screen.pointClass.size()) + " vs " +
@@ -172,15 +320,20 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
     std::ostream& o = f.stream();
     o << "index,epoch_s,oc_s,class,region,residual_s,kept,station_flag\n";
     // std::to_chars instead of printf: a 10⁶-point pass is written in a fraction of the time.
+    // A value that does not fit the buffer (an epoch of 1e300 in fixed notation) is refused, never
+    // written as whatever the buffer held.
     std::string line;
     char num[64];
-    auto put = [&](auto value, std::chars_format fmt, int precision) {
+    bool fits = true;
+    auto put = [&](double value, std::chars_format fmt, int precision) {
         const auto res = std::to_chars(num, num + sizeof num, value, fmt, precision);
-        line.append(num, res.ptr);
+        if (res.ec != std::errc()) fits = false;
+        else line.append(num, res.ptr);
     };
     auto putInt = [&](unsigned long long value) {
         const auto res = std::to_chars(num, num + sizeof num, value);
-        line.append(num, res.ptr);
+        if (res.ec != std::errc()) fits = false;
+        else line.append(num, res.ptr);
     };
     for (size_t i = 0; i < n; ++i) {
         // A manual edit can accept a point the screening called noise (or the reverse).
@@ -209,6 +362,11 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
         line += ',';
         if (!pass.stationFlag.empty()) putInt(unsigned(std::max(0, pass.stationFlag[i])));
         line += '\n';
+        if (!fits) {
+            *error = "point " + std::to_string(i) + " (epoch_s " + formatDouble(pass.t[i], 6) + ", oc_s " +
+                     formatDouble(pass.oc[i], 6) + "): a value too large to write";
+            return false;  // the AtomicFile removes its temporary
+        }
         o.write(line.data(), std::streamsize(line.size()));
     }
     if (!f.commit()) {
@@ -222,6 +380,10 @@ bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::
                       std::string* error) {
     if (!pass.hasCrd) {
         *error = "the pass did not come from a CRD file; there is nothing to write flags into";
+        return false;
+    }
+    if (!pass.damaged.empty()) {
+        *error = pass.damaged;
         return false;
     }
     CrdFile out = pass.crd;
@@ -240,6 +402,10 @@ bool writeNormalPointCrd(const std::string& path, const PassData& pass, const st
                          std::string* error) {
     if (!pass.hasCrd) {
         *error = "normal points as CRD need the pass's CRD headers (open the CRD file, not an O-C table)";
+        return false;
+    }
+    if (!pass.damaged.empty()) {
+        *error = pass.damaged;
         return false;
     }
     const CrdPass& full = pass.crd.passes[size_t(pass.passIndex)];

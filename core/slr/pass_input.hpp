@@ -30,6 +30,7 @@ struct PassSummary {
     size_t ranges = 0;             ///< type-10 records
     size_t normalPoints = 0;       ///< type-11 records
     int dataType = 0;              ///< 0 full rate, 1 normal points
+    std::string problem;           ///< why the block cannot be used as a pass (CrdPass::problem), else empty
 };
 
 struct PassData {
@@ -46,6 +47,10 @@ struct PassData {
     double altitudeKm = 0;         ///< satellite altitude estimate for the normal-point bin (0 = unknown)
     bool hasCrd = false;
     CrdFile crd;                   ///< the file as read (for writing back)
+    /// Non-empty when the reader skipped records of this pass as damaged: "FILE:LINE: why (N
+    /// damaged record(s) ...)". The pass can be looked at, but its points are incomplete and the
+    /// damaged lines would be written back as they are: every writer below refuses it.
+    std::string damaged;
 };
 
 struct PassInputResult {
@@ -56,16 +61,24 @@ struct PassInputResult {
     PassData pass;                    ///< the loaded pass
 };
 
-/// True for the CRD endings (frd fr2 npt np2 crd, any case).
-bool isCrdPath(const std::string& path);
+/// True when the file is to be read as CRD, by its content first: a first record (after blank
+/// lines and 00 comments) H1 ("H1 CRD ..." in any case) is CRD whatever the file is called
+/// (.v2C, no ending, ...); a first line with a comma or starting with '#' is a CSV. Otherwise,
+/// and for a file that cannot be looked into (missing, not a regular file, unreadable), the
+/// name decides: the CRD endings frd fr2 npt np2 crd, any case. False means an O-C CSV.
+bool isCrdFile(const std::string& path);
 
-/// Loads pass `passIndex` (0-based; -1 = the first full-rate pass) of a CRD file, or an O-C CSV.
+/// Loads pass `passIndex` (0-based; -1 = the first full-rate pass) of a CRD file, or an O-C CSV
+/// (told apart by isCrdFile). With a CPF, the CPF must be for the pass's satellite (the ids of
+/// the CPF H2 and the CRD H3 that both give must agree). An error names what is wrong and ends
+/// with the first of the readers' warnings (the damaged lines that may explain it).
 PassInputResult loadPass(const std::string& path, int passIndex, const PassInputParams& params,
                          const Feedback* fb = nullptr);
 
 /// Per-point result as CSV: index,epoch_s,oc_s,class,region,residual_s,kept,station_flag, one
 /// row per point in pass order; index = the point's type-10 record in the CRD pass (0-based;
-/// pass.rangeIndex), or its row in an O-C table. `post` may be null. Atomic.
+/// pass.rangeIndex), or its row in an O-C table. `post` may be null. Atomic. Refuses a pass
+/// with damaged records (PassData::damaged).
 bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
                     const std::vector<uint8_t>& accepted, const PostfitResult* post, std::string* error);
 /// The pass as CRD full rate with filter flags 2 (accepted) / 1 (noise) on the screened records;
