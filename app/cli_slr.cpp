@@ -30,8 +30,8 @@ const char* kSlrUsage =
     "usage: laserwb-cli slr INPUT [options] -o OUT.csv [--crd-out FILE] [--npt-out FILE]\n"
     "Screens one SLR pass: signal extraction by binary image (paper 004; automatic scale by default),\n"
     "then a trend fit with k-sigma rejection and ILRS normal points. A summary goes to stderr.\n"
-    "INPUT: a CRD file (.frd .fr2 .npt .np2 .crd; v1 or v2) or an O-C CSV (header with epoch_s,oc_s;\n"
-    "       epoch in s, O-C in s of two-way time of flight).\n"
+    "INPUT: a CRD file (v1 or v2; recognised by its H1 record, whatever the name) or an O-C CSV\n"
+    "       (header with epoch_s,oc_s; epoch in s, O-C in s of two-way time of flight).\n"
     "  --cpf FILE --stations SINEX   O-C of a CRD pass from this CPF prediction and these station\n"
     "                        coordinates (both needed); without them, O-C against a robust trend of the\n"
     "                        pass's own time of flight (a range bias and a smooth drift are absorbed)\n"
@@ -179,17 +179,7 @@ int cmdSlr(int argc, char** argv) {
     const slr::PassData& pass = loaded.pass;
     // A record of the pass to screen that the reader had to skip ("FILE:LINE: ..."): the point is
     // missing from the screening and the damaged line would be written back as it is. Refused.
-    if (pass.hasCrd) {
-        // The reader lists the skipped lines of each pass whether or not its warning list is full.
-        const auto& skipped = pass.crd.passes[static_cast<size_t>(pass.passIndex)].skippedLines;
-        if (!skipped.empty()) {
-            std::string why = input + ":" + std::to_string(skipped.front()) + ": a damaged record";
-            for (const auto& w : loaded.warnings)
-                if (w.rfind(input + ":" + std::to_string(skipped.front()) + ":", 0) == 0) why = w;
-            return fail(cmd, why + " (" + std::to_string(skipped.size()) +
-                                 " damaged record(s) in the pass to screen: repair or remove them; nothing written)");
-        }
-    }
+    if (!pass.damaged.empty()) return fail(cmd, pass.damaged + "; nothing written");
     if (!quiet)
         for (const auto& w : loaded.warnings) std::cerr << "laserwb-cli slr: warning: " << w << "\n";
 

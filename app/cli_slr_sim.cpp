@@ -28,9 +28,9 @@ namespace {
 
 // Shortest round-trip text of a double.
 void putDouble(std::string& out, double v) {
-    char buf[32];
+    char buf[32];  // the shortest round-trip form of any double takes at most 24 characters
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    out.append(buf, r.ptr);
+    if (r.ec == std::errc()) out.append(buf, r.ptr);
 }
 
 // Writes a simulated pass as CSV, atomically. Columns: epoch_s,oc_s,truth[,track_oc_s,tof_s].

@@ -59,6 +59,11 @@ std::string faultInjectedName(const char* phase) {
     return s.rfind(p, 0) == 0 ? s.substr(p.size()) : std::string();
 }
 
+bool sameFile(const std::string& a, const std::string& b) {
+    struct stat sa {}, sb {};
+    return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
 OutputSet::~OutputSet() { abandon(); }
 
 void OutputSet::addInput(const std::string& path) {

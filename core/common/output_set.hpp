@@ -51,6 +51,10 @@ private:
     bool m_checked = false, m_naming = false;
 };
 
+/// True when both paths exist and name the same file (same device and inode: "./x", "x", a
+/// symbolic or hard link).
+bool sameFile(const std::string& a, const std::string& b);
+
 /// Fault injection for tests: when the environment variable LWB_FAULT_OUTPUT is
 /// "write:NAME" or "rename:NAME", writing (AtomicFile) or renaming (OutputSet::commit) a file
 /// whose name ends with NAME fails as a full disk would. Returns the phase's NAME or "".

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/output_set.hpp"
 #include "core/common/text.hpp"
 #include "core/slr/cpf.hpp"
 #include "core/slr/oc_csv.hpp"
@@ -300,12 +301,24 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
     return r;
 }
 
-bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
-                    const std::vector<uint8_t>& accepted, const PostfitResult* post, std::string* error) {
+namespace {
+// A pass is written only whole (no damaged records) and never over the file it was read from.
+bool writablePassOutput(const std::string& path, const PassData& pass, std::string* error) {
     if (!pass.damaged.empty()) {
         *error = pass.damaged;
         return false;
     }
+    if (!pass.source.empty() && sameFile(path, pass.source)) {
+        *error = path + ": is the file this pass was read from; choose another name (the input is kept as it is)";
+        return false;
+    }
+    return true;
+}
+}  // namespace
+
+bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
+                    const std::vector<uint8_t>& accepted, const PostfitResult* post, std::string* error) {
+    if (!writablePassOutput(path, pass, error)) return false;
     const size_t n = pass.t.size();
     if (screen.pointClass.size() != n || accepted.size() != n) {
         *error = "screening result does not match the pass (" + std::to_string(screen.pointClass.size()) + " vs " +
@@ -382,10 +395,7 @@ bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::
         *error = "the pass did not come from a CRD file; there is nothing to write flags into";
         return false;
     }
-    if (!pass.damaged.empty()) {
-        *error = pass.damaged;
-        return false;
-    }
+    if (!writablePassOutput(path, pass, error)) return false;
     CrdFile out = pass.crd;
     CrdPass& p = out.passes[size_t(pass.passIndex)];
     // Records that were not screened (no O-C: outside the prediction, one-way events) keep the
@@ -404,10 +414,7 @@ bool writeNormalPointCrd(const std::string& path, const PassData& pass, const st
         *error = "normal points as CRD need the pass's CRD headers (open the CRD file, not an O-C table)";
         return false;
     }
-    if (!pass.damaged.empty()) {
-        *error = pass.damaged;
-        return false;
-    }
+    if (!writablePassOutput(path, pass, error)) return false;
     const CrdPass& full = pass.crd.passes[size_t(pass.passIndex)];
     std::vector<CrdNormalPoint> recs;
     for (const NormalPoint& np : nps) {
