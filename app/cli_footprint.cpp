@@ -28,69 +28,68 @@ const char* kFootprintUsage =
     "Finds the laser spot centre in footprint-camera frames or ROIs and judges each shot.\n"
     "INPUT: image files (16-bit PNG/TIFF/PGM, or raw little-endian 16-bit with --raw-size) or folders\n"
     "(every image inside, sorted by name).\n"
-    "  --method gauss|tefm|gcm   centre method (default gauss: Wu f.lnf QR + tilt + Guo + LM)\n"
+    "Parameters (every one: --print-config; ranges and docs: --help-params):\n"
+    "  --config FILE.json        parameters; the options below override it\n"
+    "  --set KEY=VALUE           one parameter (repeatable), e.g. --set segment.threshold_factor=0.2\n"
+    "  --print-config            print the effective parameters as JSON and exit\n"
+    "  --help-params             every parameter with its unit, range, default and meaning\n"
+    "  --method gauss|tefm|gcm   centre method (default gauss: Wu f.lnf QR + tilt + Guo + LM) = --set method=...\n"
     "  --preset wu2021|yao2021   verdict criteria (default wu2021)\n"
-    "  --config FILE.json        parameters (see --print-config); options given here override it\n"
-    "  --roi N                   ROI side in px (default 32)\n"
+    "  --roi N                   ROI side in px (default 32) = --set roi.size=N\n"
     "  --center X,Y              nominal spot centre in full-image px; repeat for the two beams of an\n"
     "                            LSI frame (one row per ROI). Without it, the brightest spot-like blob.\n"
     "  --raw-size WxH            size of .raw/.bin frames\n"
     "  --max-pixels N            largest frame read, from its header (default 268435456 = 16384^2)\n"
     "  --threads N               worker threads (default: all cores)\n"
     "  --keep-going              write unreadable files as rejected rows instead of stopping\n"
-    "  --print-config            print the effective parameters as JSON and exit\n"
     "  -o, --output OUT.csv      report: file,x,y,verdict,reasons,method,noise_class,sigma_x,...\n"
     "  -q, --quiet               no progress line\n";
 
-bool loadParams(const Args& a, FootprintParams* p, std::string* err) {
-    if (a.has("--config")) {
-        const core::JsonParseResult j = core::readJsonFile(a.value("--config"));
-        if (!j.ok) {
-            *err = j.error;
-            return false;
-        }
-        if (!footprintParamsFromJson(j.value, p, err)) {
-            *err = a.value("--config") + ": " + *err;
-            return false;
-        }
+// The footprint parameters: config file (a "preset" in it applied first), --preset, the
+// aliases and --set, all through the footprint schema.
+struct FootprintOptions : ParamOptions<FootprintParams> {
+    FootprintOptions() : ParamOptions(footprintSchema(), {{"--method", "method"}, {"--roi", "roi.size"}}) {
+        fromJson = [](const core::JsonParseResult& j, FootprintParams* p, std::string* err) {
+            return footprintParamsFromJson(j.value, p, err, &j);
+        };
     }
-    if (a.has("--preset") && !applyPreset(a.value("--preset"), p)) {
-        *err = "--preset must be wu2021 or yao2021, not \"" + a.value("--preset") + "\"";
-        return false;
+    int load(const std::string& cmd, const Args& a, FootprintParams* p) const {
+        if (int rc = apply(cmd, a, p, [&](FootprintParams* q) {
+                if (a.has("--preset") && !applyPreset(a.value("--preset"), q))
+                    return fail(cmd, "--preset must be wu2021 or yao2021, not \"" + a.value("--preset") + "\"", kUsage);
+                return int(kOk);
+            }))
+            return rc;
+        // An explicit ROI size: an image smaller than it is an error instead of a smaller ROI.
+        if (a.has("--roi")) p->roi.sizeExplicit = true;
+        for (const auto& kv : a.values("--set"))
+            if (kv.rfind("roi.size=", 0) == 0) p->roi.sizeExplicit = true;
+        return kOk;
     }
-    if (a.has("--method") && !parseMethod(a.value("--method"), &p->method)) {
-        *err = "--method must be gauss, tefm or gcm, not \"" + a.value("--method") + "\"";
-        return false;
-    }
-    long long roi = p->roi.size;
-    if (!a.getInt("--roi", 4, 1024, &roi, err)) return false;
-    if (a.has("--roi")) p->roi.sizeExplicit = true;
-    p->roi.size = static_cast<int>(roi);
-    if (const std::string e = validate(*p); !e.empty()) {
-        *err = e;
-        return false;
-    }
-    return true;
-}
+};
 }  // namespace
 
 int cmdFootprint(int argc, char** argv) {
     Args a("footprint", kFootprintUsage);
-    for (const char* o : {"--method", "--preset", "--config", "--roi", "--raw-size", "--threads", "-o", "--output",
-                          "--max-pixels"})
-        a.option(o, true);
+    const FootprintOptions params;
+    params.declare(a);
+    for (const char* o : {"--preset", "--raw-size", "--threads", "-o", "--output", "--max-pixels"}) a.option(o, true);
     a.option("--center", true, true);
-    for (const char* o : {"--keep-going", "--print-config", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
+    for (const char* o : {"--keep-going", "--help-params", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail("footprint", a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
         std::cout << kFootprintUsage;
         return kOk;
     }
+    if (a.has("--help-params")) {
+        std::cout << "footprint parameters (key = default unit  valid range):\n" << footprintSchema().describe(FootprintParams{});
+        return kOk;
+    }
     BatchParams bp;
     std::string err;
-    if (!loadParams(a, &bp.footprint, &err)) return fail("footprint", err);
-    if (a.has("--print-config")) {
-        std::cout << footprintParamsToJson(bp.footprint).dump();
+    if (int rc = params.load("footprint", a, &bp.footprint)) return rc;
+    if (params.printRequested(a)) {
+        std::cout << params.json(bp.footprint);
         return kOk;
     }
     for (const auto& c : a.values("--center")) {
@@ -264,27 +263,30 @@ const char* kTrendUsage =
     "IN.csv: header time,beam,x,y[,camera]; time as ISO date/date-time, YYYY-MM, or Unix seconds.\n"
     "OUT.csv: camera,beam,month,n,rejected,x_mean,y_mean,x_std,y_std,dx_px,dy_px,planar_change_px,\n"
     "         pointing_change_arcsec,beam_distance_px,distance_change_px (changes from the first month).\n"
-    "  --arcsec-per-px A    pointing change per pixel (default 0.31, paper 001's LFC)\n"
-    "  --reject-sigma K     k-sigma rejection of shots within a month (default 3; 0 = off)\n"
-    "  --min-shots N        leave out months with fewer shots (default 1)\n";
+    "  --arcsec-per-px A    pointing change per pixel (default 0.31, paper 001's LFC) = --set arcsec_per_px=A\n"
+    "  --reject-sigma K     k-sigma rejection of shots within a month (default 3; 0 = off) = --set reject_sigma=K\n"
+    "  --min-shots N        leave out months with fewer shots (default 1) = --set min_shots=N\n";
 }
 
 int cmdTrend(int argc, char** argv) {
     Args a("trend", kTrendUsage);
-    for (const char* o : {"-o", "--output", "--arcsec-per-px", "--reject-sigma", "--min-shots"}) a.option(o, true);
+    const ParamOptions<TrendParams> params(
+        trendSchema(), {{"--arcsec-per-px", "arcsec_per_px"}, {"--reject-sigma", "reject_sigma"}, {"--min-shots", "min_shots"}});
+    params.declare(a);
+    for (const char* o : {"-o", "--output"}) a.option(o, true);
     for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail("trend", a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
-        std::cout << kTrendUsage;
+        std::cout << kTrendUsage << ParamOptions<TrendParams>::help() << "Parameters:\n" << trendSchema().describe({});
         return kOk;
     }
     TrendParams tp;
     std::string err;
-    long long minShots = tp.minShots;
-    if (!a.getDouble("--arcsec-per-px", 1e-9, 1e6, &tp.arcsecPerPx, &err) ||
-        !a.getDouble("--reject-sigma", 0, 100, &tp.rejectSigma, &err) || !a.getInt("--min-shots", 1, 1000000000, &minShots, &err))
-        return fail("trend", err, kUsage);
-    tp.minShots = static_cast<int>(minShots);
+    if (int rc = params.apply("trend", a, &tp)) return rc;
+    if (params.printRequested(a)) {
+        std::cout << params.json(tp);
+        return kOk;
+    }
     const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
     if (out.empty()) return fail("trend", "no output file: give -o OUT.csv", kUsage);
     if (a.positional().size() != 1) return fail("trend", "give exactly one input CSV", kUsage);
@@ -375,7 +377,7 @@ int cmdEvalFootprint(int argc, char** argv) {
         sim::MethodVariant mv{"config", {}};
         const core::JsonParseResult j = core::readJsonFile(a.value("--config"));
         if (!j.ok) return fail("eval footprint", j.error);
-        if (!footprintParamsFromJson(j.value, &mv.params, &err)) return fail("eval footprint", a.value("--config") + ": " + err);
+        if (!footprintParamsFromJson(j.value, &mv.params, &err, &j)) return fail("eval footprint", err);
         variants.push_back(mv);
     }
     const bool quiet = a.has("-q") || a.has("--quiet");

@@ -18,6 +18,7 @@
 #include "core/slr/pass_input.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/presets.hpp"
+#include "core/slr/slr_params.hpp"
 #include "core/slr/screen.hpp"
 
 namespace lwb::cli {
@@ -37,7 +38,11 @@ const char* kSlrUsage =
     "                        pass's own time of flight (a range bias and a smooth drift are absorbed)\n"
     "  --pass K              pass number in the CRD file, 1-based (1 = the first pass of the file);\n"
     "                        default: the first pass with full-rate (type 10) records\n"
-    "Screening (automatic by default; each option below replaces only its own parameter):\n"
+    "Parameters (automatic screening by default; each option replaces only its own parameter; every\n"
+    "parameter with its range and meaning: --help-params):\n"
+    "  --config FILE.json    parameters (as --print-config writes them)\n"
+    "  --set KEY=VALUE       one parameter (repeatable), e.g. --set screen.cosine_c=0.97\n"
+    "  --print-config        print the effective parameters as JSON and exit\n"
     "  --mag-t X             pixels per second of epoch (paper table 1: 10 conventional, 1 diffuse)\n"
     "  --mag-oc Y            pixels per second of O-C (paper: 1e10 conventional, 1e7 diffuse)\n"
     "  --area-min N          area limit in pixels: regions at least this large are candidates\n"
@@ -84,6 +89,13 @@ std::string named(const std::string& path, const std::string& msg) {
     return path + ": " + msg;
 }
 
+// The command's defaults: the core's, with the multi-photon rejection of 3 sigma.
+slr::SlrParams cliDefaults() {
+    slr::SlrParams p;
+    p.postfit.rejectSigma = 3;
+    return p;
+}
+
 std::string ps(double s) { return core::formatFixed(s * 1e12, 1) + " ps"; }
 
 }  // namespace
@@ -91,14 +103,32 @@ std::string ps(double s) { return core::formatFixed(s * 1e12, 1) + " ps"; }
 int cmdSlr(int argc, char** argv) {
     const std::string cmd = "slr";
     Args a(cmd, kSlrUsage);
-    for (const char* o : {"--cpf", "--stations", "--satellite", "--mag-t", "--mag-oc", "--area-min", "--connectivity",
-                          "--cos-c", "--preset", "--pass", "--reject", "--np-bin", "-o", "--output", "--crd-out",
-                          "--npt-out"})
+    // Every screening and post-fit parameter: slr_params.hpp's schema; the named options are
+    // aliases of --set with the schema's ranges.
+    const ParamOptions<slr::SlrParams> params(slr::slrSchema(), {{"--mag-t", "screen.mag_t"},
+                                                                 {"--mag-oc", "screen.mag_oc"},
+                                                                 {"--area-min", "screen.area_limit"},
+                                                                 {"--connectivity", "screen.connectivity"},
+                                                                 {"--cos-c", "screen.cosine_c"},
+                                                                 {"--reject", "postfit.reject_sigma"},
+                                                                 {"--np-bin", "postfit.bin_length_s"}});
+    params.declare(a);
+    for (const char* o : {"--cpf", "--stations", "--satellite", "--preset", "--pass", "-o", "--output", "--crd-out", "--npt-out"})
         a.option(o, true);
-    for (const char* o : {"--quiet", "-q", "--help", "-h"}) a.option(o, false);
+    for (const char* o : {"--quiet", "-q", "--help", "-h", "--help-params"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail(cmd, a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
         std::cout << kSlrUsage;
+        return kOk;
+    }
+    if (a.has("--help-params")) {
+        std::cout << "slr parameters (key = default unit  valid range):\n" << slr::slrSchema().describe(cliDefaults());
+        return kOk;
+    }
+    if (params.printRequested(a)) {  // the defaults with --config and the options applied (no preset: it needs the pass)
+        slr::SlrParams p = cliDefaults();
+        if (int rc = params.apply(cmd, a, &p)) return rc;
+        std::cout << params.json(p);
         return kOk;
     }
     const bool quiet = a.has("--quiet") || a.has("-q");
@@ -125,21 +155,12 @@ int cmdSlr(int argc, char** argv) {
     if (a.has("--satellite") && !a.has("--preset"))
         return fail(cmd, "--satellite selects a preset entry; give --preset FILE with it", kUsage);
     std::string err;
-    long long passK = 0, area = 0, conn = 0;
-    double magT = 0, magOc = 0, cosC = 0, reject = 3, npBin = 0;
-    if (!a.getInt("--pass", 1, 1000000, &passK, &err) || !a.getDouble("--mag-t", 1e-9, 1e15, &magT, &err) ||
-        !a.getDouble("--mag-oc", 1e-9, 1e18, &magOc, &err) || !a.getInt("--area-min", 1, 1000000, &area, &err) ||
-        !a.getDouble("--cos-c", 0.5, 0.999999999, &cosC, &err) || !a.getDouble("--reject", 0, 10, &reject, &err) ||
-        !a.getDouble("--np-bin", 0.1, 86400, &npBin, &err))
-        return fail(cmd, err, kUsage);
-    if (a.has("--connectivity")) {
-        const std::string c = a.value("--connectivity");
-        if (c != "4" && c != "8") return fail(cmd, "--connectivity must be 4 or 8, not \"" + c + "\"", kUsage);
-        conn = c == "4" ? 4 : 8;
+    long long passK = 0;
+    if (!a.getInt("--pass", 1, 1000000, &passK, &err)) return fail(cmd, err, kUsage);
+    {  // Bad options and config are usage errors before anything is read.
+        slr::SlrParams probe = cliDefaults();
+        if (int rc = params.apply(cmd, a, &probe)) return rc;
     }
-    if (a.has("--reject") && reject > 0 && reject < 1)
-        return fail(cmd, "--reject must be 0 (off) or 1..10 (2.5 single-photon, 3 multi-photon), not " + a.value("--reject"),
-                    kUsage);
     const bool csvInput = !slr::isCrdFile(input);
     if (csvInput && (!crdOut.empty() || !nptOut.empty()))
         return fail(cmd,
@@ -183,11 +204,9 @@ int cmdSlr(int argc, char** argv) {
     if (!quiet)
         for (const auto& w : loaded.warnings) std::cerr << "laserwb-cli slr: warning: " << w << "\n";
 
-    // ---- parameters: defaults (automatic), preset, explicit options ----
-    slr::ScreenParams sp;
-    slr::PostfitParams pp;
-    pp.rejectSigma = 3;
-    pp.altitudeKm = pass.altitudeKm;
+    // ---- parameters: defaults (automatic), preset, config file, options ----
+    slr::SlrParams run = cliDefaults();
+    run.postfit.altitudeKm = pass.altitudeKm;
     std::string presetName;
     if (a.has("--preset")) {
         const std::string want = a.value("--satellite");
@@ -210,18 +229,13 @@ int cmdSlr(int argc, char** argv) {
                                  (have.empty() ? "no entries" : have));
         }
         presetName = p->name.empty() ? p->ilrsId : p->name;
-        sp = p->screen;
-        const double alt = pp.altitudeKm;
-        pp = p->postfit;
-        if (!(pp.altitudeKm > 0)) pp.altitudeKm = alt;
+        const double alt = run.postfit.altitudeKm;
+        run = {p->screen, p->postfit};
+        if (!(run.postfit.altitudeKm > 0)) run.postfit.altitudeKm = alt;
     }
-    if (a.has("--mag-t")) sp.magT = magT;
-    if (a.has("--mag-oc")) sp.magOc = magOc;
-    if (a.has("--area-min")) sp.areaLimit = static_cast<int>(area);
-    if (a.has("--connectivity")) sp.connectivity = static_cast<int>(conn);
-    if (a.has("--cos-c")) sp.cosineC = cosC;
-    if (a.has("--reject")) pp.rejectSigma = reject;
-    if (a.has("--np-bin")) pp.binLengthS = npBin;
+    if (int rc = params.apply(cmd, a, &run)) return rc;
+    const slr::ScreenParams& sp = run.screen;
+    slr::PostfitParams& pp = run.postfit;
     if (const std::string e = slr::validate(sp); !e.empty())
         return fail(cmd, (presetName.empty() ? std::string() : "preset " + presetName + ": ") + e, kUsage);
     std::string npNote;

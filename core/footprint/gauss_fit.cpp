@@ -10,20 +10,6 @@
 
 namespace lwb::core::footprint {
 
-std::string validate(const GaussParams& p) {
-    if (p.guoIterations < 0 || p.guoIterations > 50) return "Guo iterations must be within 0..50";
-    if (p.lmMaxIterations < 1 || p.lmMaxIterations > 500) return "LM iterations must be within 1..500";
-    if (!(p.lmTolerancePx > 0 && p.lmTolerancePx < 1)) return "LM tolerance must be in (0, 1) px";
-    if (!(p.lmMaxMovePx > 0 && p.lmMaxMovePx <= 100)) return "LM maximum move must be in (0, 100] px";
-    if (!(p.lmMaxShapeChange > 1 && p.lmMaxShapeChange <= 100)) return "LM maximum shape change must be in (1, 100]";
-    if (!(p.lmWindowSigmas >= 1 && p.lmWindowSigmas <= 20) || !(p.lmWindowSigmasTextured >= 1 && p.lmWindowSigmasTextured <= 20))
-        return "LM windows must be 1..20 sigma";
-    if (!(p.texturedRatio >= 1 && p.texturedRatio <= 1000)) return "textured-ground ratio must be within 1..1000";
-    if (p.lmMinHalfWidth < 2 || p.lmMinHalfWidth > 200) return "LM minimum half-width must be within 2..200 px";
-    if (!(p.robustScale > 0.1 && p.robustScale < 100)) return "robust scale must be in (0.1, 100) sigma";
-    return {};
-}
-
 namespace {
 
 struct DomainPixel {

@@ -55,6 +55,5 @@ struct GaussResult {
 GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double background, double noise,
                      const GaussParams& params = {}, const CameraParams& camera = {});
 
-std::string validate(const GaussParams& p);
 
 }  // namespace lwb::core::footprint

@@ -7,17 +7,6 @@
 
 namespace lwb::core::footprint {
 
-std::string validate(const SegmentParams& p) {
-    if (!(p.thresholdFactor > 0 && p.thresholdFactor < 1)) return "threshold factor must be in (0, 1)";
-    if (p.peakSmooth < 1 || p.peakSmooth > 9 || p.peakSmooth % 2 == 0) return "peak smoothing must be 1, 3, 5, 7 or 9 px";
-    if (!(p.minPeakSnr >= 0 && p.minPeakSnr < 1e6)) return "minimum peak SNR must be in [0, 1e6)";
-    if (p.minPixels < 1 || p.minPixels > 100000) return "minimum spot pixels must be within 1..100000";
-    if (p.openingRadius < 0 || p.openingRadius > 10) return "domain opening radius must be within 0..10 px";
-    if (!(p.secondSpotMinSeparation >= 1 && p.secondSpotMinSeparation < 1000))
-        return "second-spot separation must be in [1, 1000) px";
-    return {};
-}
-
 namespace {
 // Flood fill of the pixels where in[] is nonzero, from the seeds on the stack, into out[]
 // (set to 1). Stack entries are packed (y << 16 | x) so no division is needed.

@@ -39,6 +39,5 @@ struct SpotDomain {
 SpotDomain segmentSpot(const cv::Mat& roi, double background, double noise, double saturationDn,
                        const SegmentParams& params);
 
-std::string validate(const SegmentParams& p);
 
 }  // namespace lwb::core::footprint

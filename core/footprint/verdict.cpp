@@ -44,16 +44,6 @@ bool verdictPreset(const std::string& name, VerdictParams* out) {
     return true;
 }
 
-std::string validate(const VerdictParams& p) {
-    for (const Range* r : {&p.axisRatio, &p.majorAxisPx, &p.tiltDeg, &p.eccentricity})
-        if (r->enabled && !(std::isfinite(r->lo) && std::isfinite(r->hi) && r->lo <= r->hi))
-            return "verdict ranges must be finite with low <= high";
-    if (p.mseEnabled && !(std::isfinite(p.mseMax) && p.mseMax > 0)) return "MSE limit must be a positive number";
-    if (p.saturationMaxPixels < 0) return "saturated pixel allowance must be >= 0";
-    if (!(p.secondSpotFraction > 0 && p.secondSpotFraction <= 10)) return "second-spot fraction must be in (0, 10]";
-    return {};
-}
-
 namespace {
 std::string rangeText(const Range& r) {
     return "[" + formatDouble(r.lo, 4) + ", " + formatDouble(r.hi, 4) + "]";

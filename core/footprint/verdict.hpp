@@ -49,6 +49,5 @@ struct Judgement {
 Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int roiHeight,
                 const VerdictParams& params);
 
-std::string validate(const VerdictParams& p);
 
 }  // namespace lwb::core::footprint

@@ -1,5 +1,7 @@
 #include "core/slr/postfit.hpp"
 
+#include "core/slr/slr_params.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <numeric>
@@ -94,17 +96,11 @@ double normalPointBinS(double km) {
 }
 
 std::string validate(const PostfitParams& p) {
-    if (p.degree < 0 || p.degree > 30) return "trend degree must be 0..30";
-    if (!std::isfinite(p.rejectSigma) || (p.rejectSigma != 0 && (p.rejectSigma < 1 || p.rejectSigma > 10)))
-        return "rejection sigma must be 0 (off) or 1..10 (ILRS: 2.5 single-photon, 3 multi-photon)";
-    if (p.maxIterations < 1 || p.maxIterations > 1000) return "iterations must be 1..1000";
-    if (!std::isfinite(p.binLengthS) || (p.binLengthS != 0 && (p.binLengthS < 0.1 || p.binLengthS > 86400)))
-        return "normal-point bin length must be 0 (from the altitude) or 0.1..86400 s";
-    if (p.normalPoints && p.binLengthS == 0 && !(std::isfinite(p.altitudeKm) && p.altitudeKm > 0))
+    if (std::string e = slrSchema().validate({ScreenParams{}, p}, "postfit."); !e.empty()) return e;
+    // Run-time conditions, not parameter ranges: the altitude may come with the pass.
+    if (p.normalPoints && p.binLengthS == 0 && !(p.altitudeKm > 0))
         return "give the normal-point bin length or the satellite altitude (km)";
     if (!std::isfinite(p.dayStartS)) return "day start must be finite";
-    if (p.minPointsPerBin < 0 || p.minPointsPerBin > 1000000) return "minimum points per bin must be 0 (ILRS) or 1..1000000";
-    if (!std::isfinite(p.fireRateHz) || p.fireRateHz < 0) return "fire rate must be >= 0 (0 = unknown)";
     return {};
 }
 

@@ -1,5 +1,7 @@
 #include "core/slr/screen.hpp"
 
+#include "core/slr/slr_params.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -34,38 +36,7 @@ const char* pointClassName(PointClass c) {
     return "?";
 }
 
-std::string validate(const ScreenParams& p) {
-    auto bad = [](double v) { return !std::isfinite(v); };
-    if (bad(p.magT) || p.magT < 0) return "mag_T must be 0 (automatic) or a finite number > 0, not " + formatDouble(p.magT, 6);
-    if (bad(p.magOc) || p.magOc < 0) return "mag_OC must be 0 (automatic) or a finite number > 0, not " + formatDouble(p.magOc, 6);
-    if (p.magT > 1e15) return "mag_T " + formatDouble(p.magT, 6) + " is absurd (more than 1e15 pixels per second)";
-    if (p.magOc > 1e18) return "mag_OC " + formatDouble(p.magOc, 6) + " is absurd (more than 1e18 pixels per second)";
-    if (p.areaLimit < 0 || p.areaLimit > 1000000) return "area limit must be 0 (automatic) or 1..1000000 px, not " + std::to_string(p.areaLimit);
-    if (p.connectivity != 0 && p.connectivity != 4 && p.connectivity != 8)
-        return "connectivity must be 4, 8 or 0 (automatic), not " + std::to_string(p.connectivity);
-    if (bad(p.cosineC) || p.cosineC < 0.5 || p.cosineC >= 1) return "cosine constant C must be in [0.5, 1) (paper: 0.9 < C < 1)";
-    if (p.slopeNeighbours < 2 || p.slopeNeighbours > 64) return "slope neighbours must be 2..64";
-    if (bad(p.slopeBinDeg) || p.slopeBinDeg < 0.25 || p.slopeBinDeg > 30) return "slope bin must be 0.25..30 degrees";
-    if (bad(p.slopePeakFraction) || p.slopePeakFraction <= 0 || p.slopePeakFraction >= 1) return "slope peak fraction must be in (0, 1)";
-    if (bad(p.slopeAgreeFraction) || p.slopeAgreeFraction <= 0 || p.slopeAgreeFraction > 1) return "slope agree fraction must be in (0, 1]";
-    if (p.slopeBlockRegions != 0 && (p.slopeBlockRegions < 10 || p.slopeBlockRegions > 100000000))
-        return "slope block must be 0 (one histogram) or at least 10 regions";
-    if (bad(p.maxSlopeRangeDeg) || p.maxSlopeRangeDeg < 2 || p.maxSlopeRangeDeg > 180) return "maximum slope range must be 2..180 degrees";
-    if (p.pieceRows < 0 || p.pieceRows > 1000000) return "piece rows must be 0..1000000";
-    if (bad(p.recoveryGapFactor) || p.recoveryGapFactor < 0 || p.recoveryGapFactor > 1e6) return "recovery gap factor must be 0..1e6";
-    if (bad(p.areaTolerance) || p.areaTolerance <= 0 || p.areaTolerance > 0.5) return "area tolerance must be in (0, 0.5]";
-    if (p.autoMaxPoints < 1000 || p.autoMaxPoints > 10000000) return "automatic-mode points must be 1000..10000000";
-    if (p.refineRounds < 0 || p.refineRounds > 3) return "refine rounds must be 0..3";
-    if (bad(p.sparseRateBelow) || p.sparseRateBelow < 0 || p.sparseRateBelow > 1e7)
-        return "sparse-pass rate must be in [0, 1e7] returns per second";
-    if (!p.automatic) {
-        if (p.magT == 0) return "mag_T not given and the automatic mode is off";
-        if (p.magOc == 0) return "mag_OC not given and the automatic mode is off";
-        if (p.areaLimit == 0) return "area limit not given (0) and the automatic mode is off";
-        if (p.connectivity == 0) return "connectivity not given and the automatic mode is off";
-    }
-    return {};
-}
+std::string validate(const ScreenParams& p) { return slrSchema().validate({p, PostfitParams{}}, "screen."); }
 
 std::vector<uint32_t> splitByArea(const std::vector<Region>& regions, int64_t areaLimit) {
     std::vector<uint32_t> out;
