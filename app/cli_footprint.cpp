@@ -155,12 +155,27 @@ const char* kSimUsage =
     "  --size N             ROI side (default 32)\n"
     "  --full-frame         550x550 frames with the spot near --center (default 122,262: LFI beam 1)\n"
     "  --center X,Y         spot position in full frames\n"
-    "  --format png|tif|pgm|raw   image format (default png)\n";
+    "  --format png|tif|pgm|raw   image format (default png)\n"
+    "  --ground photo|synthetic   ground: real aerial photographs (default; Debian's opencv-doc) or the\n"
+    "                       older synthetic texture with roads, field edges and buildings\n";
+
+// --ground photo|synthetic into *g; false with *err when the value is unknown or photos are missing.
+bool groundOption(const Args& a, sim::GroundSource* g, std::string* err) {
+    if (a.has("--ground") && !sim::parseGroundSource(a.value("--ground"), g)) {
+        *err = "--ground must be photo or synthetic, not \"" + a.value("--ground") + "\"";
+        return false;
+    }
+    sim::FootprintSimParams sp;
+    sp.ground = *g;
+    *err = sim::groundProblem(sp);
+    return err->empty();
+}
 }
 
 int cmdSimulateFootprint(int argc, char** argv) {
     Args a("simulate footprint", kSimUsage);
-    for (const char* o : {"--count", "--seed", "--scene", "--case", "--size", "--center", "--format"}) a.option(o, true);
+    for (const char* o : {"--count", "--seed", "--scene", "--case", "--size", "--center", "--format", "--ground"})
+        a.option(o, true);
     for (const char* o : {"--full-frame", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail("simulate footprint", a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
@@ -199,6 +214,7 @@ int cmdSimulateFootprint(int argc, char** argv) {
         cases = {c};
     }
     sim::FootprintSimParams sp;
+    if (!groundOption(a, &sp.ground, &err)) return fail("simulate footprint", err);
     sp.width = sp.height = static_cast<int>(size);
     if (a.has("--full-frame")) {
         sp.width = sp.height = 550;
@@ -216,7 +232,8 @@ int cmdSimulateFootprint(int argc, char** argv) {
     if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
         return fail("simulate footprint", dir + ": cannot create the folder");
     std::string truth =
-        "file,scene,case,x,y,sigma_major,sigma_minor,tilt_deg,amplitude_dn,ground_mean_dn,texture_rms_dn,expect_good,x2,y2\n";
+        "file,scene,case,x,y,sigma_major,sigma_minor,tilt_deg,amplitude_dn,ground_mean_dn,texture_rms_dn,expect_good,x2,y2,"
+        "ground\n";
     Progress progress("simulate", static_cast<size_t>(count), a.has("-q") || a.has("--quiet"));
     auto f = [](double v, int d) { return std::isfinite(v) ? core::formatFixed(v, d) : std::string(); };
     for (long long i = 0; i < count; ++i) {
@@ -230,7 +247,8 @@ int cmdSimulateFootprint(int argc, char** argv) {
         truth += std::string(name) + "," + sim::sceneName(t.scene) + "," + sim::spotCaseName(t.spotCase) + "," +
                  f(t.x, 5) + "," + f(t.y, 5) + "," + f(t.sigmaMajor, 4) + "," + f(t.sigmaMinor, 4) + "," +
                  f(t.tiltRad * 180 / M_PI, 3) + "," + f(t.amplitude, 1) + "," + f(t.groundMean, 1) + "," +
-                 f(t.textureRms, 1) + "," + (t.expectGood ? "1" : "0") + "," + f(t.x2, 5) + "," + f(t.y2, 5) + "\n";
+                 f(t.textureRms, 1) + "," + (t.expectGood ? "1" : "0") + "," + f(t.x2, 5) + "," + f(t.y2, 5) + "," +
+                 (t.groundPhoto ? t.groundNote : "synthetic") + "\n";
         progress.update(static_cast<size_t>(i + 1));
     }
     progress.finish();
@@ -298,12 +316,13 @@ const char* kEvalUsage =
     "against the exact truth, verdict counts and the Cramer-Rao bound.\n"
     "Variants: gcm, tefm, gauss-paper, gauss-xy, gauss-guo, gauss (default: all).\n"
     "  --config FILE.json   add a variant \"config\": the defaults overridden by the file\n"
-    "  --scenes a,b         scenes to run (weak,moderate,strong,night,flat)\n";
+    "  --scenes a,b         scenes to run (weak,moderate,strong,night,flat)\n"
+    "  --ground photo|synthetic   simulator ground (default photo: real aerial photographs)\n";
 }
 
 int cmdEvalFootprint(int argc, char** argv) {
     Args a("eval footprint", kEvalUsage);
-    for (const char* o : {"--count", "--seed", "--case", "--variants", "--threads", "--scenes", "--config"})
+    for (const char* o : {"--count", "--seed", "--case", "--variants", "--threads", "--scenes", "--config", "--ground"})
         a.option(o, true);
     for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail("eval footprint", a.error(), kUsage);
@@ -320,6 +339,7 @@ int cmdEvalFootprint(int argc, char** argv) {
     ep.countPerScene = static_cast<int>(count);
     ep.seed = static_cast<uint64_t>(seed);
     ep.threads = static_cast<int>(threads);
+    if (!groundOption(a, &ep.sim.ground, &err)) return fail("eval footprint", err);
     if (a.has("--case") && !sim::parseSpotCase(a.value("--case"), &ep.spotCase))
         return fail("eval footprint", "unknown --case " + a.value("--case"), kUsage);
     if (a.has("--scenes")) {
@@ -357,8 +377,9 @@ int cmdEvalFootprint(int argc, char** argv) {
     const bool quiet = a.has("-q") || a.has("--quiet");
     Progress progress("eval", static_cast<size_t>(count) * ep.scenes.size(), quiet);
     core::Feedback fb([&](double f) { progress.update(static_cast<size_t>(f * count * ep.scenes.size())); });
-    const auto stats = sim::evaluateFootprint(ep, variants, &fb);
+    const auto stats = sim::evaluateFootprint(ep, variants, &fb, &err);
     progress.finish();
+    if (stats.empty()) return fail("eval footprint", err.empty() ? "nothing evaluated" : err);
     std::cout << sim::evalTableMarkdown(stats);
     return kOk;
 }
