@@ -32,6 +32,11 @@ struct GaussParams {
     double lmWindowSigmas = 3.0;          ///< LM window half-width (major-axis σ), photon-limited
     double lmWindowSigmasTextured = 1.75; ///< the same on textured ground
     int lmMinHalfWidth = 3;      ///< LM window half-width lower bound (px)
+    /// Textured ground: LM on the differences of neighbouring pixels instead of the pixels. Real
+    /// ground's red spectrum makes its pixel errors correlated; a difference whitens it (close to
+    /// generalised least squares for that correlation).
+    bool differenceFit = true;
+    double lmWindowSigmasDifference = 3.0; ///< LM window for the difference fit (major-axis σ)
     bool robustLoss = true;      ///< textured ground: Cauchy loss instead of least squares
     double robustScale = 1.5;    ///< Cauchy scale in residual σ
 };

@@ -140,6 +140,8 @@ bool footprintParamsFromJson(const Json& j, FootprintParams* out, std::string* e
                  jsonNumber(*sec, "lm_max_shape_change", &p.gauss.lmMaxShapeChange, error) &&
                  jsonNumber(*sec, "lm_window_sigmas", &p.gauss.lmWindowSigmas, error) &&
                  jsonNumber(*sec, "lm_window_sigmas_textured", &p.gauss.lmWindowSigmasTextured, error) &&
+                 jsonBool(*sec, "difference_fit", &p.gauss.differenceFit, error) &&
+                 jsonNumber(*sec, "lm_window_sigmas_difference", &p.gauss.lmWindowSigmasDifference, error) &&
                  jsonNumber(*sec, "textured_ratio", &p.gauss.texturedRatio, error) &&
                  jsonInt(*sec, "lm_min_half_width", &p.gauss.lmMinHalfWidth, error) &&
                  jsonBool(*sec, "noise_weights", &p.gauss.noiseWeights, error) &&
@@ -219,6 +221,8 @@ Json footprintParamsToJson(const FootprintParams& p) {
     g.set("lm_max_shape_change", p.gauss.lmMaxShapeChange);
     g.set("lm_window_sigmas", p.gauss.lmWindowSigmas);
     g.set("lm_window_sigmas_textured", p.gauss.lmWindowSigmasTextured);
+    g.set("difference_fit", p.gauss.differenceFit);
+    g.set("lm_window_sigmas_difference", p.gauss.lmWindowSigmasDifference);
     g.set("textured_ratio", p.gauss.texturedRatio);
     g.set("lm_min_half_width", p.gauss.lmMinHalfWidth);
     g.set("noise_weights", p.gauss.noiseWeights);
