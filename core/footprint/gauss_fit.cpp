@@ -97,6 +97,42 @@ bool logFit(const std::vector<DomainPixel>& px, const std::vector<double>& w, bo
     return std::isfinite(q->x0) && std::isfinite(q->y0) && std::isfinite(q->lnScale);
 }
 
+// A start from the intensity-weighted moments of the domain pixels above half the brightest:
+// centroid, and a spread from the second moments (for a Gaussian cut at half its peak they are
+// 0.61 of the full covariance), its σ clamped to 1–8 px.
+bool momentStart(const std::vector<DomainPixel>& px, double S, Quad* q) {
+    double fmax = 0;
+    for (const auto& p : px) fmax = std::max(fmax, p.f);
+    double sw = 0, su = 0, sv = 0;
+    for (const auto& p : px)
+        if (p.f >= 0.5 * fmax) {
+            sw += p.f;
+            su += p.f * p.u;
+            sv += p.f * p.v;
+        }
+    if (!(sw > 0)) return false;
+    const double mu = su / sw, mv = sv / sw;
+    double suu = 0, suv = 0, svv = 0;
+    for (const auto& p : px)
+        if (p.f >= 0.5 * fmax) {
+            const double du = p.u - mu, dv = p.v - mv;
+            suu += p.f * du * du;
+            suv += p.f * du * dv;
+            svv += p.f * dv * dv;
+        }
+    const double k = 1 / 0.61;
+    double sxx = std::clamp(k * suu / sw, 1.0, 64.0), syy = std::clamp(k * svv / sw, 1.0, 64.0);
+    double sxy = std::clamp(k * suv / sw, -0.9 * std::sqrt(sxx * syy), 0.9 * std::sqrt(sxx * syy));
+    const double det = sxx * syy - sxy * sxy;
+    q->x0 = mu;
+    q->y0 = mv;
+    q->a = syy / det;
+    q->b = -sxy / det;
+    q->c = sxx / det;
+    q->lnScale = std::log(fmax / S);
+    return std::isfinite(q->x0) && std::isfinite(q->y0) && std::isfinite(q->lnScale);
+}
+
 // Paper 000 eq. 8 residual at a given model: E_i = fn_i·ln(f_i / g_i), fn = f / Σf. At the
 // log-fit's own solution this equals ‖A − B·C‖²/N of eq. 8 exactly.
 double paperMse(const std::vector<DomainPixel>& px, const std::vector<double>& model) {
@@ -413,14 +449,21 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     for (size_t i = 0; i < px.size(); ++i) wts[i] = px[i].f / S;
     Quad q;
     if (!logFit(px, wts, params.xyTerm, true, &q)) {
-        r.fit.error = "Gaussian fit failed: the domain's log-intensity is not peaked (no closed spot)";
-        return r;
+        // Ground brighter than the threshold around the spot can make the domain's log-intensity
+        // a saddle. The spot is still there: start LM from the moments of the domain's bright
+        // core (pixels above half the brightest), and say so (the verdict marks it doubtful).
+        if (!params.lmRefine || !momentStart(px, S, &q)) {
+            r.fit.error = "Gaussian fit failed: the domain's log-intensity is not peaked (no closed spot)";
+            return r;
+        }
+        r.fallbackStart = true;
+        r.note = "log fit not peaked: LM started from the moments of the spot's bright core";
     }
-    r.stage = "wu";
+    r.stage = r.fallbackStart ? "moments" : "wu";
     int iterations = 1;
     // Stage 2 (Guo): weights from the model.
     std::vector<double> quad(px.size());
-    for (int it = 0; it < params.guoIterations; ++it) {
+    for (int it = 0; it < (r.fallbackStart ? 0 : params.guoIterations); ++it) {
         for (size_t i = 0; i < px.size(); ++i) {
             const double dx = px[i].u - q.x0, dy = px[i].v - q.y0;
             quad[i] = q.a * dx * dx + 2 * q.b * dx * dy + q.c * dy * dy;

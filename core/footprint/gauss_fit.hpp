@@ -51,8 +51,9 @@ struct GaussModel {
 struct GaussResult {
     SpotFit fit;
     GaussModel model;
-    std::string stage;   ///< stage that produced the result: "wu", "guo" or "lm"
+    std::string stage;   ///< stage that produced the result: "wu", "guo", "moments" or "lm"
     std::string note;    ///< e.g. why LM was not kept
+    bool fallbackStart = false;  ///< the log fit was not peaked; LM started from moments (doubtful)
 };
 
 /// Fits the spot of a CV_32FC1 ROI on the given domain. background/noise from

@@ -115,6 +115,7 @@ bool footprintParamsFromJson(const Json& j, FootprintParams* out, std::string* e
                  jsonBool(*sec, "fill_holes", &p.segment.fillHoles, error) &&
                  jsonInt(*sec, "opening_radius", &p.segment.openingRadius, error) &&
                  jsonNumber(*sec, "min_peak_snr", &p.segment.minPeakSnr, error) &&
+                 jsonNumber(*sec, "local_snr_floor", &p.segment.localSnrFloor, error) &&
                  jsonInt(*sec, "min_pixels", &p.segment.minPixels, error)))
         return fail("segment");
     if (!section(j, "gcm", &sec, error)) return false;
@@ -200,6 +201,7 @@ Json footprintParamsToJson(const FootprintParams& p) {
     seg.set("fill_holes", p.segment.fillHoles);
     seg.set("opening_radius", p.segment.openingRadius);
     seg.set("min_peak_snr", p.segment.minPeakSnr);
+    seg.set("local_snr_floor", p.segment.localSnrFloor);
     seg.set("min_pixels", p.segment.minPixels);
     j.set("segment", seg);
     Json gcm = Json::object();
@@ -276,6 +278,7 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
     const double bg = r.background.level, noise = r.background.noise;
     r.domain = segmentSpot(roi, bg, noise, params.camera.saturationDn, params.segment);
     r.ok = true;
+    std::string fallbackNote;  // the Gaussian fit had to start from moments: doubtful
     if (r.domain.found) {
         switch (params.method) {
             case Method::Gcm: r.fit = fitGcm(roi, bg, noise, params.gcm); break;
@@ -288,6 +291,7 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
                 r.fit = g.fit;
                 r.gaussModel = g.model;
                 r.gaussStage = g.stage;
+                fallbackNote = g.fallbackStart ? g.note : std::string();
                 break;
             }
         }
@@ -304,6 +308,8 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
     const Judgement j = judge(r.fit, r.domain, roi.cols, roi.rows, params.verdict);
     r.verdict = j.verdict;
     r.reasons = j.reasons;
+    if (!fallbackNote.empty() && r.verdict == Verdict::Good) r.verdict = Verdict::Doubtful;
+    if (!fallbackNote.empty() && r.verdict == Verdict::Doubtful) r.reasons.push_back(fallbackNote);
     return r;
 }
 

@@ -93,6 +93,9 @@ Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int 
     }
     if (p.checkSaturation && domain.saturatedPixels > p.saturationMaxPixels)
         j.reasons.push_back("saturated: " + std::to_string(domain.saturatedPixels) + " px at full scale");
+    if (domain.faint)
+        j.reasons.push_back("faint: peak " + formatDouble(domain.peakSnr, 3) + " sigma above the ROI's ground, " +
+                            formatDouble(domain.localPeakSnr, 3) + " above the ring around it");
     if (p.checkSecondSpot && domain.secondPeakFraction >= p.secondSpotFraction)
         j.reasons.push_back("second spot at (" + std::to_string(domain.secondPeakX) + ", " +
                             std::to_string(domain.secondPeakY) + "), " +
