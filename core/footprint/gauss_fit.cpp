@@ -252,81 +252,95 @@ Cost accumulate(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, 
 // differences (ρ = 0.5, 0.8) and second differences on every class. The constant background
 // drops out (its row of JᵀWJ is pinned); the plane's slopes remain.
 Cost accumulateDifferences(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, Vec9* jtr) {
+    // Structure-of-arrays: every Jacobian column, residual and weight is a contiguous array, and
+    // a horizontal (vertical) difference is the array minus itself shifted by 1 (cols), so each
+    // loop below is a plain vectorisable pass. bg0 (index 6) drops out of the differences.
+    constexpr int kCols = 6;  // amplitude, x0, y0, a, b, c
     const std::vector<WinPixel>& win = fw.px;
-    const double A = p(0), x0 = p(1), y0 = p(2), a = p(3), b = p(4), c = p(5);
-    const int n = static_cast<int>(win.size()), cols = fw.cols, rows = fw.rows;
-    const int nd = rows * (cols - 1) + (rows - 1) * cols;
-    thread_local std::vector<double> tq, te, tz, tr;
-    thread_local Eigen::Matrix<double, Eigen::Dynamic, kP, Eigen::RowMajor> tJp;
-    thread_local Eigen::Matrix<double, Eigen::Dynamic, kP> tJ;
-    thread_local Eigen::VectorXd tR;
-    auto &q = tq, &e = te, &z = tz, &res = tr;
-    auto& Jp = tJp;
-    auto& J = tJ;
-    auto& R = tR;
-    q.resize(size_t(n));
-    e.resize(size_t(n));
-    res.resize(size_t(n));
-    z.resize(size_t(nd));
+    const double A = p(0), x0 = p(1), y0 = p(2), a = p(3), b = p(4), c = p(5), bx = p(7), by = p(8);
+    const int n = static_cast<int>(win.size()), cols = fw.cols;
+    thread_local std::vector<double> buf;
+    buf.resize(size_t(n) * (kCols + 5));
+    double* q = buf.data();
+    double* e = q + n;
+    double* res = e + n;
+    double* W = res + n;    // weight of the difference ending at each pixel (horizontal, then vertical)
+    double* DR = W + n;     // that difference of the residuals
+    double* P = DR + n;     // kCols Jacobian columns of the pixels
     for (int i = 0; i < n; ++i) {
-        const double dx = win[i].dx - x0, dy = win[i].dy - y0;
+        const double dx = win[size_t(i)].dx - x0, dy = win[size_t(i)].dy - y0;
         q[i] = a * dx * dx + 2 * b * dx * dy + c * dy * dy;
     }
-    kernel::halfNegExp(q.data(), e.data(), n);
-    if (jtj) {
-        Jp.resize(n, kP);
-        J.resize(nd, kP);
-        R.resize(nd);
-    }
+    kernel::halfNegExp(q, e, n);
     for (int i = 0; i < n; ++i) {
-        const WinPixel& w = win[size_t(i)];
-        const double dx = w.dx - x0, dy = w.dy - y0;
+        const double dx = win[size_t(i)].dx - x0, dy = win[size_t(i)].dy - y0;
         const double g = A * e[i];
-        res[i] = w.value - (g + p(6) + p(7) * dx + p(8) * dy);
+        res[i] = win[size_t(i)].value - (g + p(6) + bx * dx + by * dy);
         if (!jtj) continue;
-        double* row = Jp.row(i).data();
-        row[0] = e[i];
-        row[1] = g * (a * dx + b * dy) - p(7);
-        row[2] = g * (b * dx + c * dy) - p(8);
-        row[3] = -0.5 * g * dx * dx;
-        row[4] = -g * dx * dy;
-        row[5] = -0.5 * g * dy * dy;
-        row[6] = 1;
-        row[7] = dx;
-        row[8] = dy;
+        P[i] = e[i];
+        P[n + i] = g * (a * dx + b * dy) - bx;
+        P[2 * n + i] = g * (b * dx + c * dy) - by;
+        P[3 * n + i] = -0.5 * g * dx * dx;
+        P[4 * n + i] = -g * dx * dy;
+        P[5 * n + i] = -0.5 * g * dy * dy;
     }
     Cost cost;
-    int k = 0;
-    // win.weight: the spot's own photon variance at each pixel; the ground's (texture, photon and
-    // read noise) variance of a difference comes from the window.
-    auto difference = [&](int i, int j, double groundVar) {
-        const double rd = res[j] - res[i];
-        const double wd = 1.0 / (groundVar + win[size_t(i)].weight + win[size_t(j)].weight);
-        const double z2 = wd * rd * rd;
-        z[k] = z2;
-        double weight = wd;
-        if (cauchyC2 > 0)
-            weight /= 1.0 + z2 / cauchyC2;
-        else
-            cost.value += z2;
-        cost.chi2 += weight * rd * rd;
-        if (jtj) {
-            const double sw = std::sqrt(weight);
-            J.row(k) = sw * (Jp.row(j) - Jp.row(i));
-            R(k) = sw * rd;
-        }
-        ++k;
-    };
-    for (int y = 0; y < rows; ++y)
-        for (int x = 1; x < cols; ++x) difference(y * cols + x - 1, y * cols + x, fw.diffVarX);
-    for (int y = 1; y < rows; ++y)
-        for (int x = 0; x < cols; ++x) difference((y - 1) * cols + x, y * cols + x, fw.diffVarY);
-    if (cauchyC2 > 0) cost.value = kernel::cauchyCostSum(z.data(), nd, cauchyC2);
+    double zsum = 0;
     if (jtj) {
-        for (int u = 0; u < kP; ++u) {
-            for (int v = u; v < kP; ++v) (*jtj)(u, v) = (*jtj)(v, u) = J.col(u).dot(J.col(v));
-            (*jtr)(u) = J.col(u).dot(R);
+        jtj->setZero();
+        jtr->setZero();
+    }
+    for (int pass = 0; pass < 2; ++pass) {
+        const int step = pass == 0 ? 1 : cols;
+        const double groundVar = pass == 0 ? fw.diffVarX : fw.diffVarY;
+        const int m = n - step;  // differences (j = i + step) ending at pixels step..n-1
+        for (int i = 0; i < m; ++i) {
+            const int j = i + step;
+            const double rd = res[j] - res[i];
+            // win.weight: the spot's own photon variance at each pixel.
+            double wd = 1.0 / (groundVar + win[size_t(i)].weight + win[size_t(j)].weight);
+            if (step == 1 && j % cols == 0) wd = 0;  // across a row end: not neighbours
+            const double z2 = wd * rd * rd;
+            double weight = wd;
+            if (cauchyC2 > 0) {
+                weight /= 1.0 + z2 / cauchyC2;
+                q[i] = z2;  // q is free again: the Cauchy terms
+            } else {
+                cost.value += z2;
+            }
+            cost.chi2 += weight * rd * rd;
+            W[i] = weight;
+            DR[i] = rd;
         }
+        if (cauchyC2 > 0) zsum += kernel::cauchyCostSum(q, m, cauchyC2);
+        if (!jtj) continue;
+        // JᵀWJ and JᵀWr of the differences: the six spot columns in a vectorised kernel; the
+        // plane's slope columns differ by exactly 1 (along their own axis) or 0 between neighbours.
+        constexpr int kSpot = 6;
+        double gram[kSpot * kSpot], rhs[kSpot], wd[kSpot];
+        kernel::differenceGram(P, n, kSpot, step, W, DR, gram, rhs, wd);
+        double sw = 0, swr = 0;
+        for (int i = 0; i < m; ++i) {
+            sw += W[i];
+            swr += W[i] * DR[i];
+        }
+        const int slope = pass == 0 ? 7 : 8;  // bgX differs horizontally, bgY vertically
+        for (int u = 0; u < kSpot; ++u) {
+            (*jtr)(u) += rhs[u];
+            for (int v = 0; v <= u; ++v) {
+                (*jtj)(u, v) += gram[u * kSpot + v];
+                if (v != u) (*jtj)(v, u) += gram[u * kSpot + v];
+            }
+            (*jtj)(u, slope) += wd[u];
+            (*jtj)(slope, u) += wd[u];
+        }
+        (*jtj)(slope, slope) += sw;
+        (*jtr)(slope) += swr;
+    }
+    if (cauchyC2 > 0) cost.value = zsum;
+    if (jtj) {
+        (*jtj)(6, 6) = 1;  // bg0 does not enter the differences: pinned
+        (*jtr)(6) = 0;
     }
     return cost;
 }
@@ -448,7 +462,10 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     std::vector<double> wts(px.size());
     for (size_t i = 0; i < px.size(); ++i) wts[i] = px[i].f / S;
     Quad q;
-    if (!logFit(px, wts, params.xyTerm, true, &q)) {
+    // Paper 000 solves by QR; when Guo passes refine the result anyway, the 6×6 normal
+    // equations give the same start for a fraction of the cost.
+    const bool qr = params.guoIterations == 0;
+    if (!logFit(px, wts, params.xyTerm, qr, &q)) {
         // Ground brighter than the threshold around the spot can make the domain's log-intensity
         // a saddle. The spot is still there: start LM from the moments of the domain's bright
         // core (pixels above half the brightest), and say so (the verdict marks it doubtful).

@@ -36,7 +36,7 @@ struct GaussParams {
     /// ground's red spectrum makes its pixel errors correlated; a difference whitens it (close to
     /// generalised least squares for that correlation).
     bool differenceFit = true;
-    double lmWindowSigmasDifference = 3.0; ///< LM window for the difference fit (major-axis σ)
+    double lmWindowSigmasDifference = 2.5; ///< LM window for the difference fit (major-axis σ)
     bool robustLoss = true;      ///< textured ground: Cauchy loss instead of least squares
     double robustScale = 1.5;    ///< Cauchy scale in residual σ
 };
