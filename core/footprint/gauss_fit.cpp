@@ -22,6 +22,10 @@ std::string validate(const GaussParams& p) {
     if (!(p.texturedRatio >= 1 && p.texturedRatio <= 1000)) return "textured-ground ratio must be within 1..1000";
     if (p.lmMinHalfWidth < 2 || p.lmMinHalfWidth > 200) return "LM minimum half-width must be within 2..200 px";
     if (!(p.robustScale > 0.1 && p.robustScale < 100)) return "robust scale must be in (0.1, 100) sigma";
+    if (!(p.uncertaintyTextureScale >= 0 && p.uncertaintyTextureScale <= 100) ||
+        !(p.uncertaintyTextureScalePixelFit >= 0 && p.uncertaintyTextureScalePixelFit <= 100) ||
+        !(p.uncertaintyDeadband >= 0 && p.uncertaintyDeadband <= 10))
+        return "uncertainty texture scales must be within 0..100 and the deadband within 0..10";
     return {};
 }
 
@@ -519,9 +523,9 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     const double texVar = std::max(0.0, noise * noise - photonVar);
     // Window for LM (and for the covariance of every stage).
     // Textured ground: fit neighbour differences (see accumulateDifferences).
-    DifferenceVariances dv;
-    if (textured && params.differenceFit) dv = groundDifferenceVariances(roi, m);
-    const bool diff = dv.ok;
+    // The ground's difference variances also size the texture term of the uncertainty.
+    const DifferenceVariances dv = groundDifferenceVariances(roi, m);
+    const bool diff = textured && params.differenceFit && dv.ok;
     const double windowSigmas = textured ? (diff ? params.lmWindowSigmasDifference : params.lmWindowSigmasTextured)
                                          : params.lmWindowSigmas;
     const int hw = std::max(params.lmMinHalfWidth, static_cast<int>(std::ceil(windowSigmas * sigmaMajor)));
@@ -599,7 +603,14 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     const int dof = nres - (diff ? kP - 1 : kP);
     const Mat9 cov = jtj.ldlt().solve(Mat9::Identity()) * (dof > 0 ? cost.chi2 / dof : 1.0);
     fillFit(m, noise, &r.fit);
-    r.fit.uncertaintyPx = sqrtVariance(cov(1, 1) + cov(2, 2));
+    // The covariance treats the residuals as independent; ground texture is not, and moves the
+    // centre by about (texture difference σ)·σ_spot/A. That term, calibrated on the photo
+    // simulator (tuning seed 11; the tests check the coverage on seed 1), is added in quadrature:
+    // texture beyond (1 + deadband) of the photon + read part of a difference counts.
+    const double texDiffVar = std::max(0.0, 0.5 * (dv.x + dv.y) - 2 * photonVar * (1 + params.uncertaintyDeadband));
+    const double texShift = std::sqrt(texDiffVar) * sigmaMajor / std::max(m.amplitude, 1e-9);
+    const double texScale = diff ? params.uncertaintyTextureScale : params.uncertaintyTextureScalePixelFit;
+    r.fit.uncertaintyPx = sqrtVariance(cov(1, 1) + cov(2, 2) + (dv.ok ? texScale * texScale * texShift * texShift : 0.0));
     // Paper 000's MSE at the reported model, over the domain pixels above the fitted background.
     std::vector<DomainPixel> dpx;
     std::vector<double> model;

@@ -37,6 +37,12 @@ struct GaussParams {
     /// generalised least squares for that correlation).
     bool differenceFit = true;
     double lmWindowSigmasDifference = 2.5; ///< LM window for the difference fit (major-axis σ)
+    /// uncertainty_px adds, in quadrature, scale·(ground texture σ of a neighbour difference)·σ/A
+    /// to the LM covariance (which assumes independent pixels): the shift texture gives the
+    /// centre. Scales calibrated for ≈ 63 % coverage (Rayleigh) on the photo simulator.
+    double uncertaintyTextureScale = 2.0;          ///< after the difference fit
+    double uncertaintyTextureScalePixelFit = 4.0;  ///< after the pixel fit (faint texture)
+    double uncertaintyDeadband = 0.1;              ///< texture counts beyond (1 + this)·photon part
     bool robustLoss = true;      ///< textured ground: Cauchy loss instead of least squares
     double robustScale = 1.5;    ///< Cauchy scale in residual σ
 };
