@@ -176,6 +176,9 @@ struct FitWindow {
     int cols = 0, rows = 0;
     bool diff = false;         // fit neighbour differences (see accumulateDifferences)
     double diffVarX = 0, diffVarY = 0;  // ground variance of a neighbour difference along x, y (DN²)
+    /// Inverse variance of each horizontal (w0[0]) and vertical (w0[1]) difference ending i+step:
+    /// ground + the spot's photon noise at both pixels; 0 across a row end.
+    std::vector<double> w0[2];
 };
 
 Cost accumulateDifferences(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, Vec9* jtr);
@@ -296,27 +299,10 @@ Cost accumulateDifferences(const FitWindow& fw, const Vec9& p, double cauchyC2, 
     }
     for (int pass = 0; pass < 2; ++pass) {
         const int step = pass == 0 ? 1 : cols;
-        const double groundVar = pass == 0 ? fw.diffVarX : fw.diffVarY;
         const int m = n - step;  // differences (j = i + step) ending at pixels step..n-1
-        for (int i = 0; i < m; ++i) {
-            const int j = i + step;
-            const double rd = res[j] - res[i];
-            // win.weight: the spot's own photon variance at each pixel.
-            double wd = 1.0 / (groundVar + win[size_t(i)].weight + win[size_t(j)].weight);
-            if (step == 1 && j % cols == 0) wd = 0;  // across a row end: not neighbours
-            const double z2 = wd * rd * rd;
-            double weight = wd;
-            if (cauchyC2 > 0) {
-                weight /= 1.0 + z2 / cauchyC2;
-                q[i] = z2;  // q is free again: the Cauchy terms
-            } else {
-                cost.value += z2;
-            }
-            cost.chi2 += weight * rd * rd;
-            W[i] = weight;
-            DR[i] = rd;
-        }
-        if (cauchyC2 > 0) zsum += kernel::cauchyCostSum(q, m, cauchyC2);
+        double chi2 = 0;
+        zsum += kernel::differenceWeights(res, m, step, fw.w0[pass].data(), cauchyC2, W, DR, &chi2);
+        cost.chi2 += chi2;
         if (!jtj) continue;
         // JᵀWJ and JᵀWr of the differences: the six spot columns in a vectorised kernel; the
         // plane's slope columns differ by exactly 1 (along their own axis) or 0 between neighbours.
@@ -341,7 +327,7 @@ Cost accumulateDifferences(const FitWindow& fw, const Vec9& p, double cauchyC2, 
         (*jtj)(slope, slope) += sw;
         (*jtr)(slope) += swr;
     }
-    if (cauchyC2 > 0) cost.value = zsum;
+    cost.value = zsum;
     if (jtj) {
         (*jtj)(6, 6) = 1;  // bg0 does not enter the differences: pinned
         (*jtr)(6) = 0;
@@ -559,6 +545,17 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
                 const double model = background + m.amplitude * ew[i];
                 win[i].weight = 1.0 / (std::max(model, 0.0) / g + rn * rn + texVar);
             }
+        }
+    }
+    if (diff) {
+        const int n = static_cast<int>(win.size());
+        for (int pass = 0; pass < 2; ++pass) {
+            const int step = pass == 0 ? 1 : fw.cols;
+            const double groundVar = pass == 0 ? fw.diffVarX : fw.diffVarY;
+            fw.w0[pass].assign(size_t(std::max(0, n - step)), 0.0);
+            for (int i = 0; i + step < n; ++i)
+                if (step != 1 || (i + 1) % fw.cols != 0)
+                    fw.w0[pass][size_t(i)] = 1.0 / (groundVar + win[size_t(i)].weight + win[size_t(i + step)].weight);
         }
     }
     Vec9 p;

@@ -9,6 +9,38 @@ void halfNegExp(const double* q, double* out, int n) {
     for (int i = 0; i < n; ++i) out[i] = std::exp(-0.5 * q[i]);
 }
 
+__attribute__((target_clones("avx2", "default")))
+double differenceWeights(const double* res, int m, int step, const double* w0, double c2, double* w, double* dr,
+                         double* chi2) {
+    double cost = 0, x2 = 0;
+    if (c2 > 0) {
+        const double inv = 1.0 / c2;
+        float lsum = 0;
+#pragma omp simd reduction(+ : x2, lsum)
+        for (int i = 0; i < m; ++i) {
+            const double d = res[i + step] - res[i];
+            const double z = w0[i] * d * d;
+            const double wi = w0[i] / (1.0 + z * inv);
+            w[i] = wi;
+            dr[i] = d;
+            x2 += wi * d * d;
+            lsum += std::log(1.0f + static_cast<float>(z * inv));
+        }
+        cost = c2 * lsum;
+    } else {
+#pragma omp simd reduction(+ : x2)
+        for (int i = 0; i < m; ++i) {
+            const double d = res[i + step] - res[i];
+            w[i] = w0[i];
+            dr[i] = d;
+            x2 += w0[i] * d * d;
+        }
+        cost = x2;
+    }
+    *chi2 = x2;
+    return cost;
+}
+
 // Built for AVX2 as well as the baseline; the loader picks the one the processor runs.
 __attribute__((target_clones("avx2", "default")))
 void differenceGram(const double* P, int n, int k, int step, const double* w, const double* r, double* gram,

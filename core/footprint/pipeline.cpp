@@ -155,6 +155,7 @@ bool footprintParamsFromJson(const Json& j, FootprintParams* out, std::string* e
         if (!(readRange(*sec, "axis_ratio", &v.axisRatio, error) && readRange(*sec, "major_axis_px", &v.majorAxisPx, error) &&
               readRange(*sec, "tilt_deg", &v.tiltDeg, error) && readRange(*sec, "eccentricity", &v.eccentricity, error) &&
               jsonBool(*sec, "check_edge", &v.checkEdge, error) &&
+              jsonNumber(*sec, "edge_extent", &v.edgeExtent, error) &&
               jsonBool(*sec, "check_saturation", &v.checkSaturation, error) &&
               jsonInt(*sec, "saturation_max_pixels", &v.saturationMaxPixels, error) &&
               jsonBool(*sec, "check_second_spot", &v.checkSecondSpot, error) &&
@@ -238,6 +239,7 @@ Json footprintParamsToJson(const FootprintParams& p) {
     v.set("eccentricity", rangeJson(p.verdict.eccentricity));
     v.set("mse_max", p.verdict.mseEnabled ? Json(p.verdict.mseMax) : Json());
     v.set("check_edge", p.verdict.checkEdge);
+    v.set("edge_extent", p.verdict.edgeExtent);
     v.set("check_saturation", p.verdict.checkSaturation);
     v.set("saturation_max_pixels", p.verdict.saturationMaxPixels);
     v.set("check_second_spot", p.verdict.checkSecondSpot);

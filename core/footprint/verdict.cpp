@@ -50,6 +50,7 @@ std::string validate(const VerdictParams& p) {
             return "verdict ranges must be finite with low <= high";
     if (p.mseEnabled && !(std::isfinite(p.mseMax) && p.mseMax > 0)) return "MSE limit must be a positive number";
     if (p.saturationMaxPixels < 0) return "saturated pixel allowance must be >= 0";
+    if (!(p.edgeExtent >= 0.5 && p.edgeExtent <= 5)) return "edge extent must be within 0.5..5";
     if (!(p.secondSpotFraction > 0 && p.secondSpotFraction <= 10)) return "second-spot fraction must be in (0, 10]";
     return {};
 }
@@ -84,7 +85,7 @@ Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int 
     if (p.checkEdge) {
         // Half extents of the ellipse of full axes major/minor at the fit's orientation.
         const double big = std::max(fit.sigmaX, fit.sigmaY);
-        const double scale = big > 0 ? 0.5 * fit.majorAxisPx / big : 0;
+        const double scale = big > 0 ? 0.5 * fit.majorAxisPx / big * p.edgeExtent : 0;
         const double ax = fit.sigmaX * scale, ay = fit.sigmaY * scale;
         const double c = std::cos(fit.tiltRad), s = std::sin(fit.tiltRad);
         const double hx = std::hypot(ax * c, ay * s), hy = std::hypot(ax * s, ay * c);
