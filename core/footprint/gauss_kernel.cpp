@@ -4,6 +4,7 @@
 
 namespace lwb::core::footprint::kernel {
 
+__attribute__((target_clones("avx2", "default")))
 void halfNegExp(const double* q, double* out, int n) {
 #pragma omp simd
     for (int i = 0; i < n; ++i) out[i] = std::exp(-0.5 * q[i]);
@@ -82,6 +83,7 @@ void differenceGram(const double* P, int n, int k, int step, const double* w, co
         }
 }
 
+__attribute__((target_clones("avx2", "default")))
 double cauchyCostSum(const double* z2, int n, double c2) {
     const double inv = 1.0 / c2;
     double sum = 0;
