@@ -7,6 +7,7 @@
 
 #include "core/sim/footprint_eval.hpp"
 #include "core/sim/terrain_photo.hpp"
+#include "footprint_cases.hpp"
 #include "test_support.hpp"
 
 using namespace lwb::core;
@@ -53,14 +54,7 @@ private slots:
         QCOMPARE(night.textureMax, 40.0);
     }
 
-    void meanRadialError_data() {
-        QTest::addColumn<int>("scene");
-        QTest::addColumn<double>("target");
-        QTest::newRow("weak <= 0.10 px") << int(Scene::Weak) << 0.10;
-        QTest::newRow("moderate <= 0.14 px") << int(Scene::Moderate) << 0.14;
-        QTest::newRow("strong <= 0.20 px") << int(Scene::Strong) << 0.20;
-        QTest::newRow("night <= 0.05 px") << int(Scene::Night) << 0.05;
-    }
+    void meanRadialError_data() { lwbtest::addClassTargetRows(); }
     void meanRadialError() {
         QFETCH(int, scene);
         QFETCH(double, target);
@@ -100,31 +94,13 @@ private slots:
         }
     }
 
-    void doubtfulCasesAreNotMarkedGood_data() {
-        QTest::addColumn<int>("spotCase");
-        QTest::newRow("no spot") << int(SpotCase::NoSpot);
-        QTest::newRow("saturated under cloud") << int(SpotCase::Saturated);
-        QTest::newRow("double spot") << int(SpotCase::DoubleSpot);
-        QTest::newRow("edge") << int(SpotCase::Edge);
-        QTest::newRow("elongated") << int(SpotCase::Elongated);
-    }
+    void doubtfulCasesAreNotMarkedGood_data() { lwbtest::addDoubtfulCaseRows(); }
     void doubtfulCasesAreNotMarkedGood() {
         QFETCH(int, spotCase);
-        MethodVariant def;
-        QVERIFY(findVariant("gauss", &def));
-        EvalParams ep;
-        ep.countPerScene = 150;
-        ep.seed = 2;
-        ep.spotCase = SpotCase(spotCase);
-        ep.scenes = {Scene::Weak, Scene::Moderate, Scene::Strong, Scene::Night};
-        int good = 0, n = 0;
-        for (const auto& s : evaluateFootprint(ep, {def})) {
-            good += s.good;
-            n += s.n;
-        }
-        QCOMPARE(n, 600);
-        qInfo("%s: %d of %d marked good", spotCaseName(SpotCase(spotCase)), good, n);
-        QVERIFY2(good <= 0.01 * n, qPrintable(QString("%1 of %2 doubtful shots marked good").arg(good).arg(n)));
+        const lwbtest::CaseCounts k = lwbtest::doubtfulCaseCounts(SpotCase(spotCase), 150, GroundSource::Photo);
+        QCOMPARE(k.n, 600);
+        qInfo("%s: %d of %d marked good", spotCaseName(SpotCase(spotCase)), k.good, k.n);
+        QVERIFY2(k.good <= 0.01 * k.n, qPrintable(QString("%1 of %2 doubtful shots marked good").arg(k.good).arg(k.n)));
     }
 };
 

@@ -575,8 +575,11 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
         const double sigmaMajorLm =
             std::sqrt(0.5 * (p(3) + p(5) + std::sqrt((p(3) - p(5)) * (p(3) - p(5)) + 4 * p(4) * p(4))) / detLm);
         const double areaRatio = std::sqrt(det0 / detLm);  // σ1σ2 of LM over that of the log fit
-        if (moved > params.lmMaxMovePx || sigmaMajorLm > params.lmMaxShapeChange * sigmaMajor ||
-            areaRatio > params.lmMaxShapeChange || areaRatio < 1 / params.lmMaxShapeChange || pcx < xa - 0.5 ||
+        // (A moment start's shape is rough: there only the spot-likeness check below applies.)
+        const bool shapeRunOff = !r.fallbackStart && (sigmaMajorLm > params.lmMaxShapeChange * sigmaMajor ||
+                                                      areaRatio > params.lmMaxShapeChange ||
+                                                      areaRatio < 1 / params.lmMaxShapeChange);
+        if (moved > params.lmMaxMovePx || shapeRunOff || pcx < xa - 0.5 ||
             pcx > xb + 0.5 || pcy < ya - 0.5 || pcy > yb + 0.5) {
             r.note = "LM moved the centre by " + std::to_string(moved).substr(0, 5) +
                      " px or changed the shape too much; kept the log-fit result";
@@ -600,6 +603,17 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     const int dof = nres - (diff ? kP - 1 : kP);
     const Mat9 cov = jtj.ldlt().solve(Mat9::Identity()) * (dof > 0 ? cost.chi2 / dof : 1.0);
     fillFit(m, noise, &r.fit);
+    if (r.fallbackStart) {
+        // A moment start is only a spot when LM made a spot of it: kept, spot-sized (σ 1.5–6 px,
+        // axes within 1:2.5) and standing minPeakSnr-like above the ground (6 background σ).
+        const double big = std::max(r.fit.sigmaX, r.fit.sigmaY), small = std::min(r.fit.sigmaX, r.fit.sigmaY);
+        if (r.stage != "lm" || !(big >= 1.2 && big <= 6 && small * 2.5 >= big) || !(r.fit.snr >= 4.8)) {
+            r.fit = SpotFit{};
+            r.fit.error = "Gaussian fit failed: the domain's log-intensity is not peaked, and LM from its moments "
+                          "found no spot-like Gaussian";
+            return r;
+        }
+    }
     // The covariance treats the residuals as independent; ground texture is not, and moves the
     // centre by about (texture difference σ)·σ_spot/A. That term, calibrated on the photo
     // simulator (tuning seed 11; the tests check the coverage on seed 1), is added in quadrature:
