@@ -203,6 +203,7 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
 
     ScreenParams tp = params;
     tp.automatic = true;
+    tp.followTrack = false;  // the trials score the image's own result
     std::vector<uint8_t> mask(st.size());
     struct Best {
         double score = -1e300;
