@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <cstdio>
+#include <cstdlib>
 
 namespace lwb::core::slr {
 
@@ -48,7 +50,7 @@ bool fitLocal(const std::vector<double>& T, const std::vector<double>& O, const 
     double scale = 0;
     for (size_t k = 0; k < n; ++k) scale = std::max(scale, std::fabs(T[idx[k]] - t0));
     if (!(scale > 0)) scale = 1;
-    int d = std::min<int>(maxDegree, n >= 10 ? 2 : n >= 3 ? 1 : 0);
+    int d = std::min<int>(maxDegree, n >= 6 ? 2 : n >= 3 ? 1 : 0);
     for (; d >= 0; --d) {
         const int m = d + 1;
         double A[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, y[3] = {0, 0, 0};
@@ -195,9 +197,23 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
     }
     if (runs.empty()) return res;
     std::sort(runs.begin(), runs.end(), [](const Run& x, const Run& y) { return x.sigma < y.sigma || (x.sigma == y.sigma && x.first < y.first); });
-    // The track width: the median of the best quarter of the runs' worst residuals, as a robust σ
-    // (the worst of 8 Gaussian residuals is about 1.4 σ… 2 σ; 1.5 taken).
-    const double sigmaTrack = std::max(1e-15, runs[std::min(runs.size() - 1, runs.size() / 8)].sigma / 1.5);
+    // The track width σ: leave-one-out residuals of the accepted points about a quadratic through
+    // their 4 + 4 accepted neighbours in time, robust σ over the pass (1.4826·MAD), less the
+    // prediction's own spread (a factor ≈ 1.2 for 8 neighbours).
+    double sigmaTrack = 0;
+    {
+        std::vector<double> r;
+        std::vector<uint32_t> nb;
+        for (size_t a = 4; a + 4 < acc.size(); ++a) {
+            nb.clear();
+            for (size_t q = a - 4; q <= a + 4; ++q)
+                if (q != a) nb.push_back(acc[q]);
+            if (fitLocal(T, O, nb.data(), nb.size(), T[acc[a]], 2, &lf)) r.push_back(O[acc[a]] - lf.at(T[acc[a]]));
+        }
+        sigmaTrack = robustSigma(r) / 1.2;
+        if (!(sigmaTrack > 0)) sigmaTrack = runs.front().sigma / 1.5;
+        sigmaTrack = std::max(sigmaTrack, 1e-15);
+    }
     res.sigmaS = sigmaTrack;
 
     std::vector<uint8_t> inTrack(n, 0);
@@ -224,7 +240,7 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
                 const size_t m = std::min(fitN, walk.size());
                 fitIdx.assign(walk.end() - static_cast<long>(m), walk.end());
                 if (!fitLocal(T, O, fitIdx.data(), m, tf, 2, &lf)) break;
-                const double sigma = std::max(lf.sigma, 0.5 * sigmaTrack);
+                const double sigma = sigmaTrack;
                 // Window: a few typical spacings of the followed points, doubling up to maxGap.
                 if (L == 0) {
                     const double sp = std::fabs(T[walk.back()] - T[walk[walk.size() - m]]) / static_cast<double>(std::max<size_t>(1, m - 1));
@@ -249,20 +265,34 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
                     }
                     if (std::fabs(O[q] - lf.at(T[q])) <= band(T[q])) cand.push_back(static_cast<uint32_t>(q));
                 }
-                // Candidates consistent among themselves: a fit through them and the last followed
-                // points near the frontier, the worst dropped while beyond k·σ.
+                // Expected noise in the search band over the window (trapezoid over 16 steps).
+                const double tEnd = tf + dir * L;
+                double area = 0;
+                for (int s = 0; s < 16; ++s) {
+                    const double a = tf + dir * L * s / 16.0, b = tf + dir * L * (s + 1) / 16.0;
+                    area += 0.5 * (band(a) + band(b)) * 2 * (L / 16.0);
+                }
+                const double rho = densityOver(tf, tEnd);
+                const double eWide = area * rho;
+                // A band that noise fills (or too many candidates to sort out) is no prediction: the
+                // track is lost here.
+                if (cand.size() > 64 || eWide > 5) break;
+                // Candidates consistent among themselves: each within k·σ·sqrt(1 + v) of a fit through
+                // the other candidates and the last followed points (leave one out, so that a noise
+                // point cannot pull the fit onto itself); the worst dropped while one is beyond.
                 keep = cand;
                 while (!keep.empty()) {
-                    fitIdx.assign(keep.begin(), keep.end());
                     const size_t near = std::min<size_t>(walk.size(), 6);
-                    fitIdx.insert(fitIdx.end(), walk.end() - static_cast<long>(near), walk.end());
-                    std::sort(fitIdx.begin(), fitIdx.end());
-                    LocalFit cf;
-                    if (!fitLocal(T, O, fitIdx.data(), fitIdx.size(), tf, 2, &cf)) break;
                     size_t worst = 0;
                     double wr = -1;
                     for (size_t c = 0; c < keep.size(); ++c) {
-                        const double r = std::fabs(O[keep[c]] - cf.at(T[keep[c]]));
+                        fitIdx.assign(walk.end() - static_cast<long>(near), walk.end());
+                        for (size_t e = 0; e < keep.size(); ++e)
+                            if (e != c) fitIdx.push_back(keep[e]);
+                        std::sort(fitIdx.begin(), fitIdx.end());
+                        LocalFit cf;
+                        if (!fitLocal(T, O, fitIdx.data(), fitIdx.size(), tf, 2, &cf)) continue;
+                        const double r = std::fabs(O[keep[c]] - cf.at(T[keep[c]])) / std::sqrt(1 + cf.varFactor(T[keep[c]]));
                         if (r > wr) {
                             wr = r;
                             worst = c;
@@ -273,17 +303,19 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
                 }
                 bool took = false;
                 if (!keep.empty()) {
-                    // Expected noise in the band over the window (trapezoid over 16 steps).
-                    const double tEnd = tf + dir * L;
-                    double area = 0;
-                    for (int s = 0; s < 16; ++s) {
-                        const double a = tf + dir * L * s / 16.0, b = tf + dir * L * (s + 1) / 16.0;
-                        area += 0.5 * (band(a) + band(b)) * 2 * (L / 16.0);
-                    }
-                    const double E = area * densityOver(tf, tEnd);
-                    if (poissonTail(static_cast<long long>(keep.size()), E) < p.alpha) {
+                    // The density contrast: m consistent points where the narrow band (k·σ about the
+                    // track over the window) expects eLine noise points, with the number of such
+                    // bands the search band holds as the look-elsewhere factor.
+                    const double eLine = std::max(1e-300, rho * 2 * k * sigma * L);
+                    const double trials = std::max(1.0, eWide / eLine);
+                    if (poissonTail(static_cast<long long>(keep.size()), eLine) * trials < p.alpha) {
                         std::sort(keep.begin(), keep.end());
                         if (dir < 0) std::reverse(keep.begin(), keep.end());
+                        static const bool dbg = std::getenv("LWB_FOLLOW_DEBUG") != nullptr;
+                        if (dbg)
+                            for (uint32_t q : keep)
+                                std::fprintf(stderr, "follow dir %d t %.3f r %.3g band %.3g sig %.3g E %.3g m %zu L %.3g A %d\n", dir, T[q],
+                                             O[q] - lf.at(T[q]), band(T[q]), sigmaTrack, eWide, keep.size(), L, int(A[q]));
                         for (uint32_t q : keep) {
                             inTrack[q] = 1;
                             walk.push_back(q);
@@ -319,7 +351,7 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
             const size_t a = pos >= 10 ? pos - 10 : 0, b = std::min(tr.size(), pos + 10);
             if (b - a < 3) continue;
             if (!fitLocal(T, O, tr.data() + a, b - a, T[q], 2, &lf)) continue;
-            if (std::fabs(O[q] - lf.at(T[q])) > p.dropSigma * std::max(lf.sigma, 0.5 * sigmaTrack)) {
+            if (std::fabs(O[q] - lf.at(T[q])) > p.dropSigma * std::max(lf.sigma, sigmaTrack)) {
                 A[q] = 0;
                 ++res.dropped;
             }

@@ -31,11 +31,11 @@ namespace lwb::core::slr {
 
 struct FollowParams {
     double bandSigma = 4;      ///< k: half-width of the band about the local fit, in robust σ; 2..10
-    double alpha = 1e-3;       ///< false-alarm probability allowed per step (Poisson tail); (0, 0.1]
+    double alpha = 1e-4;       ///< false-alarm probability allowed per step (Poisson tail); (0, 0.1]
     double maxGapS = 0;        ///< longest stretch without returns that is bridged (s); 0 = automatic:
                                ///< a quarter of the pass, at least 30 s, at most 300 s
     int anchorPoints = 8;      ///< consecutive accepted points of an anchor; 4..100
-    int fitPoints = 40;        ///< followed points in the local fit; 8..1000
+    int fitPoints = 16;        ///< followed points in the local fit; 8..1000
     double dropSigma = 10;     ///< accepted points this far from a followed stretch become noise; 0 = keep all
 };
 
