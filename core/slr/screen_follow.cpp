@@ -229,23 +229,34 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
         ++res.pieces;
         for (size_t q = run.first; q < run.first + anchorN; ++q) inTrack[acc[q]] = 1;
         double lo = T[acc[run.first]], hi = T[acc[run.first + anchorN - 1]];
-        for (int dir : {+1, -1}) {
-            walk.clear();
-            for (size_t q = 0; q < anchorN; ++q) walk.push_back(acc[dir > 0 ? run.first + q : run.first + anchorN - 1 - q]);
+        // Walks to do: (seed points in walk order, direction). A piece found beyond a gap becomes
+        // a seed of its own (followed back towards the gap, and onwards on its own fit).
+        std::vector<std::pair<std::vector<uint32_t>, int>> tasks;
+        for (int dir : {-1, +1}) {
+            std::vector<uint32_t> seed;
+            for (size_t q = 0; q < anchorN; ++q) seed.push_back(acc[dir > 0 ? run.first + q : run.first + anchorN - 1 - q]);
+            tasks.push_back({seed, dir});
+        }
+        while (!tasks.empty()) {
+            walk = std::move(tasks.back().first);
+            const int dir = tasks.back().second;
+            tasks.pop_back();
             double L = 0;
+            size_t sinceJump = 0;  // walk position of the first point beyond the last gap crossed
             for (;;) {
                 const uint32_t front = walk.back();
                 const double tf = T[front];
-                // Local fit through the last fitN followed points.
-                const size_t m = std::min(fitN, walk.size());
+                // Local fit through the last fitN followed points (only those beyond the last gap
+                // crossed, once there are 6 of them: the track may change level or slope there).
+                size_t m = std::min(fitN, walk.size());
+                if (walk.size() - sinceJump >= 6) m = std::min(m, walk.size() - sinceJump);
                 fitIdx.assign(walk.end() - static_cast<long>(m), walk.end());
                 if (!fitLocal(T, O, fitIdx.data(), m, tf, 2, &lf)) break;
                 const double sigma = sigmaTrack;
                 // Window: a few typical spacings of the followed points, doubling up to maxGap.
-                if (L == 0) {
-                    const double sp = std::fabs(T[walk.back()] - T[walk[walk.size() - m]]) / static_cast<double>(std::max<size_t>(1, m - 1));
-                    L = std::max(3 * sp, 1e-6);
-                }
+                const double spacing = std::max(1e-7, std::fabs(T[walk.back()] - T[walk[walk.size() - m]]) /
+                                                          static_cast<double>(std::max<size_t>(1, m - 1)));
+                if (L == 0) L = 3 * spacing;
                 auto band = [&](double tc) {
                     const double dt = std::fabs(tc - tf);
                     return std::min(gate / 8, k * sigma * std::sqrt(1 + lf.varFactor(tc)) + lf.curvature(dt));
@@ -281,8 +292,11 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
                 // the other candidates and the last followed points (leave one out, so that a noise
                 // point cannot pull the fit onto itself); the worst dropped while one is beyond.
                 keep = cand;
+                // Beyond a gap the candidates are judged among themselves (a fit across the gap
+                // would have to bend to both sides), when there are enough of them.
+                const bool jump = !cand.empty() && dir * (T[cand.front()] - tf) > 4 * spacing;
                 while (!keep.empty()) {
-                    const size_t near = std::min<size_t>(walk.size(), 6);
+                    const size_t near = jump && keep.size() >= 5 ? 0 : std::min<size_t>(walk.size(), 6);
                     size_t worst = 0;
                     double wr = -1;
                     for (size_t c = 0; c < keep.size(); ++c) {
@@ -322,6 +336,11 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
                             res.added += !A[q];
                             lo = std::min(lo, T[q]);
                             hi = std::max(hi, T[q]);
+                        }
+                        if (jump && keep.size() >= 3) {
+                            // A piece beyond a gap: followed on its own fit, and back towards the gap.
+                            sinceJump = walk.size() - keep.size();
+                            tasks.push_back({std::vector<uint32_t>(keep.rbegin(), keep.rend()), -dir});
                         }
                         took = true;
                         L = 0;
