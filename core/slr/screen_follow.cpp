@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <cstdio>
-#include <cstdlib>
 
 namespace lwb::core::slr {
 
@@ -325,11 +323,6 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
                     if (poissonTail(static_cast<long long>(keep.size()), eLine) * trials < p.alpha) {
                         std::sort(keep.begin(), keep.end());
                         if (dir < 0) std::reverse(keep.begin(), keep.end());
-                        static const bool dbg = std::getenv("LWB_FOLLOW_DEBUG") != nullptr;
-                        if (dbg)
-                            for (uint32_t q : keep)
-                                std::fprintf(stderr, "follow dir %d t %.3f r %.3g band %.3g sig %.3g E %.3g m %zu L %.3g A %d\n", dir, T[q],
-                                             O[q] - lf.at(T[q]), band(T[q]), sigmaTrack, eWide, keep.size(), L, int(A[q]));
                         for (uint32_t q : keep) {
                             inTrack[q] = 1;
                             walk.push_back(q);

@@ -30,7 +30,7 @@
 namespace lwb::core::slr {
 
 struct FollowParams {
-    double bandSigma = 4;      ///< k: half-width of the band about the local fit, in robust σ; 2..10
+    double bandSigma = 3.5;      ///< k: half-width of the band about the local fit, in robust σ; 2..10
     double alpha = 1e-4;       ///< false-alarm probability allowed per step (Poisson tail); (0, 0.1]
     double maxGapS = 0;        ///< longest stretch without returns that is bridged (s); 0 = automatic:
                                ///< a quarter of the pass, at least 30 s, at most 300 s
