@@ -108,6 +108,24 @@ bool fitLocal(const std::vector<double>& T, const std::vector<double>& O, const 
 
 }  // namespace
 
+std::vector<double> localTrackResiduals(const std::vector<double>& t, const std::vector<double>& oc,
+                                        const std::vector<uint32_t>& idx, int side) {
+    const size_t n = idx.size(), h = static_cast<size_t>(std::max(1, side));
+    std::vector<double> r(n, NAN);
+    std::vector<uint32_t> nb;
+    LocalFit lf;
+    for (size_t a = 0; a < n; ++a) {
+        // `side` on each side, shifted inwards at the ends of the list.
+        size_t lo = a >= h ? a - h : 0, hi = std::min(n - 1, lo + 2 * h);
+        if (hi - lo < 2 * h) lo = hi >= 2 * h ? hi - 2 * h : 0;
+        nb.clear();
+        for (size_t q = lo; q <= hi; ++q)
+            if (q != a) nb.push_back(idx[q]);
+        if (nb.size() >= 3 && fitLocal(t, oc, nb.data(), nb.size(), t[idx[a]], 2, &lf)) r[a] = oc[idx[a]] - lf.at(t[idx[a]]);
+    }
+    return r;
+}
+
 double poissonTail(long long m, double mean) {
     if (m <= 0) return 1;
     if (!(mean > 0)) return 0;
@@ -200,14 +218,8 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
     // prediction's own spread (a factor ≈ 1.2 for 8 neighbours).
     double sigmaTrack = 0;
     {
-        std::vector<double> r;
-        std::vector<uint32_t> nb;
-        for (size_t a = 4; a + 4 < acc.size(); ++a) {
-            nb.clear();
-            for (size_t q = a - 4; q <= a + 4; ++q)
-                if (q != a) nb.push_back(acc[q]);
-            if (fitLocal(T, O, nb.data(), nb.size(), T[acc[a]], 2, &lf)) r.push_back(O[acc[a]] - lf.at(T[acc[a]]));
-        }
+        std::vector<double> r = localTrackResiduals(T, O, acc, 4);
+        r.erase(std::remove_if(r.begin(), r.end(), [](double v) { return !std::isfinite(v); }), r.end());
         sigmaTrack = robustSigma(r) / 1.2;
         if (!(sigmaTrack > 0)) sigmaTrack = runs.front().sigma / 1.5;
         sigmaTrack = std::max(sigmaTrack, 1e-15);

@@ -55,6 +55,13 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
                          const std::vector<uint8_t>& accepted, const FollowParams& params,
                          const Feedback* fb = nullptr);
 
+/// Leave-one-out residuals about the local track: for each point of `idx` (indices into t/oc,
+/// in time order), O-C minus a quadratic through its `side` neighbours on each side in that list
+/// (fewer at the ends). NaN where fewer than 3 neighbours exist. Used for the track width here
+/// and for the gross-outlier test before the post-fit.
+std::vector<double> localTrackResiduals(const std::vector<double>& t, const std::vector<double>& oc,
+                                        const std::vector<uint32_t>& idx, int side = 4);
+
 /// P(N ≥ m) for N ~ Poisson(mean): the chance that noise alone puts m or more points in a band.
 double poissonTail(long long m, double mean);
 
