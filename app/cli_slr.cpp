@@ -14,6 +14,7 @@
 #include "cli_commands.hpp"
 #include "cli_common.hpp"
 #include "core/common/text.hpp"
+#include "core/slr/np_context.hpp"
 #include "core/slr/pass_input.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/presets.hpp"
@@ -32,8 +33,11 @@ const char* kSlrUsage =
     "INPUT: a CRD file (.frd .fr2 .npt .np2 .crd; v1 or v2) or an O-C CSV (header with epoch_s,oc_s;\n"
     "       epoch in s, O-C in s of two-way time of flight).\n"
     "  --cpf FILE --stations SINEX   O-C of a CRD pass from this CPF prediction and these station\n"
-    "                        coordinates (both needed); without them, O-C against a robust trend of the\n"
-    "                        pass's own time of flight (a range bias and a smooth drift are absorbed)\n"
+    "                        coordinates (--cpf needs --stations); without --cpf, O-C against a robust\n"
+    "                        trend of the pass's own time of flight (a range bias and a smooth drift\n"
+    "                        are absorbed). --stations alone: the station's position for day or night\n"
+    "                        (the Sun's elevation per normal-point bin: at least 6 points by day, 3 by\n"
+    "                        night); without it a CRD pass gets the day minimum of 6\n"
     "  --pass K              pass number in the CRD file, 1-based (1 = the first pass of the file);\n"
     "                        default: the first pass with full-rate (type 10) records\n"
     "Screening (automatic by default; each option below replaces only its own parameter):\n"
@@ -180,8 +184,8 @@ int cmdSlr(int argc, char** argv) {
         std::string why;
         if (!outputWritable(*p, &why)) return fail(cmd, *p + ": " + why + " (nothing written)");
     }
-    if (a.has("--cpf") != a.has("--stations"))
-        return fail(cmd, "--cpf and --stations go together (O-C from the prediction needs both)", kUsage);
+    if (a.has("--cpf") && !a.has("--stations"))
+        return fail(cmd, "--cpf needs --stations (O-C from the prediction needs the station coordinates)", kUsage);
     if (a.has("--satellite") && !a.has("--preset"))
         return fail(cmd, "--satellite selects a preset entry; give --preset FILE with it", kUsage);
     std::string err;
@@ -223,7 +227,7 @@ int cmdSlr(int argc, char** argv) {
     // ---- the pass ----
     slr::PassInputParams in;
     in.cpfPath = a.value("--cpf");
-    in.sinexPath = a.value("--stations");
+    if (a.has("--cpf")) in.sinexPath = a.value("--stations");
     const int passIndex = a.has("--pass") ? static_cast<int>(passK - 1) : -1;
     const slr::PassInputResult loaded = slr::loadPass(input, passIndex, in);
     if (!loaded.ok) {
@@ -288,6 +292,19 @@ int cmdSlr(int argc, char** argv) {
     if (a.has("--cos-c")) sp.cosineC = cosC;
     if (a.has("--reject")) pp.rejectSigma = reject;
     if (a.has("--np-bin")) pp.binLengthS = npBin;
+    // Normal-point context of a CRD pass: fire rate (C1), day or night (station from SINEX).
+    std::vector<std::string> npNotes;
+    if (pass.hasCrd) {
+        slr::SinexReadResult snx;
+        if (a.has("--stations")) {
+            snx = slr::readSinex(a.value("--stations"));
+            if (!snx.ok) return fail(cmd, named(a.value("--stations"), snx.error));
+        }
+        npNotes = slr::fillNormalPointContext(pass.crd.passes[size_t(pass.passIndex)], pass.cdpPad,
+                                              snx.ok ? &snx.file : nullptr, &pp);
+        // Day or night unknown: the day minimum (6), unless a preset says which.
+        if (!std::isfinite(pp.stationLatDeg) && presetName.empty()) pp.daylight = true;
+    }
     if (const std::string e = slr::validate(sp); !e.empty())
         return fail(cmd, (presetName.empty() ? std::string() : "preset " + presetName + ": ") + e, kUsage);
     std::string npNote;
@@ -353,9 +370,14 @@ int cmdSlr(int argc, char** argv) {
         if (pp.normalPoints)
             std::cerr << "  normal points: " << post.normalPoints.size() << " (bins of "
                       << core::formatDouble(post.binLengthS, 4) << " s, at least " << post.minPointsPerBin << " points"
+                      << (post.dayBins + post.nightBins ? " (" + std::to_string(post.dayBins) + " day, " +
+                                                              std::to_string(post.nightBins) + " night bins)"
+                                                        : std::string(pp.daylight ? " (day)" : " (night)"))
                       << (post.binsTooSmall ? ", " + std::to_string(post.binsTooSmall) + " bins too small" : "") << ")\n";
         else
             std::cerr << "  " << npNote << "\n";
+        if (pp.normalPoints)
+            for (const auto& note : npNotes) std::cerr << "  " << note << "\n";
     }
     // Against the station's own filter flags, when the file carries them.
     long long f1 = 0, f2 = 0;
