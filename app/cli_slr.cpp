@@ -185,7 +185,7 @@ int cmdSlr(int argc, char** argv) {
         if (!outputWritable(*p, &why)) return fail(cmd, *p + ": " + why + " (nothing written)");
     }
     if (a.has("--cpf") && !a.has("--stations"))
-        return fail(cmd, "--cpf needs --stations (O-C from the prediction needs the station coordinates)", kUsage);
+        return fail(cmd, "--cpf and --stations go together (O-C from the prediction needs both)", kUsage);
     if (a.has("--satellite") && !a.has("--preset"))
         return fail(cmd, "--satellite selects a preset entry; give --preset FILE with it", kUsage);
     std::string err;
