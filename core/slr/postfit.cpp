@@ -243,28 +243,55 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
         k = e;
     }
     // Gross outliers against the local track (leave-one-out quadratic through 4 + 4 neighbours
-    // of the same segment), with one robust σ for the pass.
-    if (p.grossSigma > 0 && ord.size() >= 9) {
-        std::vector<double> r(ord.size(), NAN);
-        for (const Seg& g : segs) {
-            if (g.b - g.a < 5) continue;
-            const std::vector<uint32_t> part(ord.begin() + static_cast<long>(g.a), ord.begin() + static_cast<long>(g.b));
-            const std::vector<double> rp = localTrackResiduals(t, oc, part, 4);
-            std::copy(rp.begin(), rp.end(), r.begin() + static_cast<long>(g.a));
-        }
-        std::vector<double> a;
-        for (double v : r)
-            if (std::isfinite(v)) a.push_back(std::fabs(v));
-        if (a.size() >= 5) {
-            std::nth_element(a.begin(), a.begin() + static_cast<long>(a.size() / 2), a.end());
-            const double sig = 1.4826 * a[a.size() / 2];
-            for (size_t k = 0; k < ord.size(); ++k)
-                if (sig > 0 && std::isfinite(r[k]) && std::fabs(r[k]) > p.grossSigma * sig) {
-                    res.kept[ord[k]] = 0;
-                    ++res.grossRejected;
+    // of the same segment), with one robust σ for the pass. Only the worst point of a
+    // neighbourhood goes per round (an outlier also pulls its neighbours' fits), until none is
+    // left beyond grossSigma·σ. Part of the rejection: off with rejectSigma = 0.
+    if (p.grossSigma > 0 && p.rejectSigma > 0 && ord.size() >= 9) {
+        double sig = -1;
+        for (int round = 0; round < 20; ++round) {
+            std::vector<uint32_t> live;
+            std::vector<size_t> segOf;
+            for (size_t gi = 0; gi < segs.size(); ++gi)
+                for (size_t q = segs[gi].a; q < segs[gi].b; ++q)
+                    if (res.kept[ord[q]]) {
+                        live.push_back(ord[q]);
+                        segOf.push_back(gi);
+                    }
+            std::vector<double> r(live.size(), NAN);
+            for (size_t a0 = 0; a0 < live.size();) {
+                size_t b0 = a0;
+                while (b0 < live.size() && segOf[b0] == segOf[a0]) ++b0;
+                if (b0 - a0 >= 5) {
+                    const std::vector<uint32_t> part(live.begin() + static_cast<long>(a0), live.begin() + static_cast<long>(b0));
+                    const std::vector<double> rp = localTrackResiduals(t, oc, part, 4);
+                    std::copy(rp.begin(), rp.end(), r.begin() + static_cast<long>(a0));
                 }
+                a0 = b0;
+            }
+            if (sig < 0) {  // σ from the first round (all points): robust to the outliers themselves
+                std::vector<double> av;
+                for (double v : r)
+                    if (std::isfinite(v)) av.push_back(std::fabs(v));
+                if (av.size() < 5) break;
+                std::nth_element(av.begin(), av.begin() + static_cast<long>(av.size() / 2), av.end());
+                sig = 1.4826 * av[av.size() / 2];
+                if (!(sig > 0)) break;
+            }
+            bool any = false;
+            for (size_t q = 0; q < live.size(); ++q) {
+                if (!std::isfinite(r[q]) || std::fabs(r[q]) <= p.grossSigma * sig) continue;
+                bool worst = true;
+                for (size_t e = q >= 4 ? q - 4 : 0; e < std::min(live.size(), q + 5) && worst; ++e)
+                    if (e != q && segOf[e] == segOf[q] && std::isfinite(r[e]) && std::fabs(r[e]) > std::fabs(r[q])) worst = false;
+                if (!worst) continue;
+                res.kept[live[q]] = 0;
+                ++res.grossRejected;
+                any = true;
+            }
+            if (!any) break;
         }
     }
+    // Segment-level degree limits and the k·σ iteration follow.
     if (res.used > 0 && t[ord.front()] == t[ord.back()] && p.degree > 0)
         res.warnings.push_back("all accepted epochs are equal: the trend is a constant");
     res.residuals.assign(n, NAN);
