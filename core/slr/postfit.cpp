@@ -402,7 +402,7 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
                     }
                 }
                 const double span = g.trend.tEnd - g.trend.tStart, L = std::isfinite(res.binLengthS) ? res.binLengthS : 0;
-                for (int K = 2; L > 0 && K * L <= span && nk >= 2 * (K + 3) && K <= 512; K *= 2) {
+                for (int K = 2; L > 0 && K * L <= span && nk >= 2 * (K + 3) && K <= 64; K *= 2) {
                     double rss = 0;
                     splineFit(K, &rss);
                     if (!(rss < 1e307)) continue;

@@ -9,7 +9,7 @@
 // σ), so a point metres off the track never enters the fit; the pass is split into segments at
 // gaps longer than splitGapS (a polynomial across a gap bends to both sides); in each segment
 // the model is chosen by the Bayesian information criterion n·ln(RSS/n) + k·ln n (k
-// coefficients) among Legendre polynomials of degree 0..degree and cubic splines of 2, 4, 8, …
+// coefficients) among Legendre polynomials of degree 0..degree and cubic splines of 2, 4, …, 64
 // equal intervals no shorter than a bin (a trend without a prediction — the O-C against a fitted
 // TOF trend — bends at the ends of a pass more than a polynomial can follow); fixed degree, as
 // before, with autoDegree = false. Day or night per bin from the Sun's

@@ -453,6 +453,9 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
         for (size_t i = 0; i < n; ++i) flat[i] = oc[i] - shift[i];
         PostfitParams pp;
         pp.degree = 8;
+        pp.autoDegree = false;  // the refinement's trend as before: one degree-8 polynomial,
+        pp.splitGapS = -1;      // no segments and no gross-outlier pass (the 3σ clip does)
+        pp.grossSigma = 0;
         pp.rejectSigma = 3;
         pp.normalPoints = false;
         pp.binLengthS = 1;  // unused (no normal points); keeps validate() content
