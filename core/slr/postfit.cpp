@@ -244,11 +244,11 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
     }
     // Gross outliers against the local track (leave-one-out quadratic through 4 + 4 neighbours
     // of the same segment), with one robust σ for the pass. Only the worst point of a
-    // neighbourhood goes per round (an outlier also pulls its neighbours' fits), until none is
-    // left beyond grossSigma·σ. Part of the rejection: off with rejectSigma = 0.
+    // neighbourhood goes per round (an outlier also pulls its neighbours' fits), three rounds at
+    // most (the k·σ rejection takes what is left). Part of the rejection: off with rejectSigma = 0.
     if (p.grossSigma > 0 && p.rejectSigma > 0 && ord.size() >= 9) {
         double sig = -1;
-        for (int round = 0; round < 20; ++round) {
+        for (int round = 0; round < 3; ++round) {
             std::vector<uint32_t> live;
             std::vector<size_t> segOf;
             for (size_t gi = 0; gi < segs.size(); ++gi)
@@ -412,7 +412,7 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
                         code = -K;
                     }
                 }
-                if (it >= 10) frozen[gi] = code;  // settle the model: the rejection then converges
+                if (it >= 3) frozen[gi] = code;  // settle the model: the rejection then converges
             }
             Eigen::VectorXd c;
             if (code >= 0) {

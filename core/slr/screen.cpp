@@ -550,7 +550,9 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
     const double span = n > 1 ? *std::max_element(t.begin(), t.end()) - *std::min_element(t.begin(), t.end()) : 0;
     const bool sparse = params.sparseRateBelow <= 0 || !(span > 0) || double(n) / span < params.sparseRateBelow;
     if (res.ok && params.automatic && params.refineRounds > 0 && sparse) refine(t, oc, params, fb, res);
-    if (res.ok && params.automatic && params.followTrack && !cancelled(fb)) {
+    // Track following for sparse passes (like the refinement): a dense pass's track forms
+    // regions at any usable scale, and following 10⁵ returns costs a third of a 10⁶-point run.
+    if (res.ok && params.automatic && params.followTrack && sparse && !cancelled(fb)) {
         const auto tf = Clock::now();
         // On the O-C as given: smooth, whereas a refinement's flattened O-C has kinks at the
         // ends of the trend it subtracted (held constant beyond the accepted span).

@@ -82,10 +82,10 @@ struct ScreenParams {
     /// and the refinement rounds; dense passes (kHz) do not need them and skip their cost.
     /// 0 = always use them.
     double sparseRateBelow = 50;
-    /// Automatic mode: follow the track from the accepted pieces through the pass afterwards
-    /// (screen_follow.hpp): the sparse ends of the arc, stretches between pieces and pieces
-    /// beyond gaps, with the density contrast along the track as the test. Off with
-    /// automatic = false (the paper's fixed procedure).
+    /// Automatic mode, sparse passes (sparseRateBelow): follow the track from the accepted
+    /// pieces through the pass afterwards (screen_follow.hpp): the sparse ends of the arc,
+    /// stretches between pieces and pieces beyond gaps, with the density contrast along the
+    /// track as the test. Off with automatic = false (the paper's fixed procedure).
     bool followTrack = true;
 };
 
