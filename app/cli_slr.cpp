@@ -15,6 +15,7 @@
 #include "cli_commands.hpp"
 #include "cli_common.hpp"
 #include "core/common/text.hpp"
+#include "core/slr/np_context.hpp"
 #include "core/slr/pass_input.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/presets.hpp"
@@ -34,8 +35,11 @@ const char* kSlrUsage =
     "INPUT: a CRD file (v1 or v2; recognised by its H1 record, whatever the name) or an O-C CSV\n"
     "       (header with epoch_s,oc_s; epoch in s, O-C in s of two-way time of flight).\n"
     "  --cpf FILE --stations SINEX   O-C of a CRD pass from this CPF prediction and these station\n"
-    "                        coordinates (both needed); without them, O-C against a robust trend of the\n"
-    "                        pass's own time of flight (a range bias and a smooth drift are absorbed)\n"
+    "                        coordinates (--cpf needs --stations); without --cpf, O-C against a robust\n"
+    "                        trend of the pass's own time of flight (a range bias and a smooth drift\n"
+    "                        are absorbed). --stations alone: the station's position for day or night\n"
+    "                        (the Sun's elevation per normal-point bin: at least 6 points by day, 3 by\n"
+    "                        night); without it a CRD pass gets the day minimum of 6\n"
     "  --pass K              pass number in the CRD file, 1-based (1 = the first pass of the file);\n"
     "                        default: the first pass with full-rate (type 10) records\n"
     "Parameters (automatic screening by default; each option replaces only its own parameter; every\n"
@@ -150,7 +154,7 @@ int cmdSlr(int argc, char** argv) {
     for (const std::string* p : {&out, &crdOut, &nptOut})
         if (!p->empty()) outs.addOutput(*p);
     if (int rc = checkOutputs(cmd, outs)) return rc;
-    if (a.has("--cpf") != a.has("--stations"))
+    if (a.has("--cpf") && !a.has("--stations"))
         return fail(cmd, "--cpf and --stations go together (O-C from the prediction needs both)", kUsage);
     if (a.has("--satellite") && !a.has("--preset"))
         return fail(cmd, "--satellite selects a preset entry; give --preset FILE with it", kUsage);
@@ -184,7 +188,7 @@ int cmdSlr(int argc, char** argv) {
     // ---- the pass ----
     slr::PassInputParams in;
     in.cpfPath = a.value("--cpf");
-    in.sinexPath = a.value("--stations");
+    if (a.has("--cpf")) in.sinexPath = a.value("--stations");
     const int passIndex = a.has("--pass") ? static_cast<int>(passK - 1) : -1;
     const slr::PassInputResult loaded = slr::loadPass(input, passIndex, in);
     if (!loaded.ok) {
@@ -232,6 +236,20 @@ int cmdSlr(int argc, char** argv) {
         const double alt = run.postfit.altitudeKm;
         run = {p->screen, p->postfit};
         if (!(run.postfit.altitudeKm > 0)) run.postfit.altitudeKm = alt;
+    }
+    // Normal-point context of a CRD pass: fire rate (C1), day or night (station from SINEX).
+    std::vector<std::string> npNotes;
+    if (pass.hasCrd) {
+        slr::SinexReadResult snx;
+        if (a.has("--stations")) {
+            snx = slr::readSinex(a.value("--stations"));
+            if (!snx.ok) return fail(cmd, named(a.value("--stations"), snx.error));
+        }
+        npNotes = slr::fillNormalPointContext(pass.crd.passes[size_t(pass.passIndex)], pass.cdpPad,
+                                              snx.ok ? &snx.file : nullptr, &run.postfit);
+        // Day or night unknown: the day minimum (6), unless a preset or an option says which
+        // (the options are applied next and override this).
+        if (!std::isfinite(run.postfit.stationLatDeg) && presetName.empty()) run.postfit.daylight = true;
     }
     if (int rc = params.apply(cmd, a, &run)) return rc;
     const slr::ScreenParams& sp = run.screen;
@@ -300,9 +318,14 @@ int cmdSlr(int argc, char** argv) {
         if (pp.normalPoints)
             std::cerr << "  normal points: " << post.normalPoints.size() << " (bins of "
                       << core::formatDouble(post.binLengthS, 4) << " s, at least " << post.minPointsPerBin << " points"
+                      << (post.dayBins + post.nightBins ? " (" + std::to_string(post.dayBins) + " day, " +
+                                                              std::to_string(post.nightBins) + " night bins)"
+                                                        : std::string(pp.daylight ? " (day)" : " (night)"))
                       << (post.binsTooSmall ? ", " + std::to_string(post.binsTooSmall) + " bins too small" : "") << ")\n";
         else
             std::cerr << "  " << npNote << "\n";
+        if (pp.normalPoints)
+            for (const auto& note : npNotes) std::cerr << "  " << note << "\n";
     }
     // Against the station's own filter flags, when the file carries them.
     long long f1 = 0, f2 = 0;
