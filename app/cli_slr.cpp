@@ -155,6 +155,10 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
               << core::formatDouble(settings.params.screen.cosineC, 4);
     if (!s.trials.empty()) std::cerr << "; " << s.trials.size() << " scales tried";
     std::cerr << "\n";
+    if (s.floorless)
+        std::cerr << "  no noise floor (robust sigma " << ps(s.floorSigmaS) << ", "
+                  << core::formatFixed(100 * s.floorBeyond, 2) << " % beyond 5 sigma): a filtered pass; "
+                  << s.floorlessAdded << " points within 5 sigma of its track accepted beyond the image's\n";
     if (r.postOk) {
         std::cerr << "  post-fit: degree " << post.degree << ", " << core::formatDouble(pp.rejectSigma, 3)
                   << "-sigma rejection removed " << post.rejected << " of " << post.used << ", RMS "

@@ -414,6 +414,7 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
     std::vector<double> shift(n, 0.0), flat(n);
     ScreenParams again = params;
     again.refineRounds = 0;
+    again.acceptFloorless = false;  // judged once, on the whole result
     for (int round = 0; round < params.refineRounds; ++round) {
         if (cancelled(fb)) return;
         const std::vector<uint8_t> mask = acceptedMask(res);
@@ -472,6 +473,24 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
     }
 }
 }  // namespace
+
+// acceptFloorless: on a pass with no noise floor, every point within 5σ of the robust trend is
+// accepted (screen.hpp says why).
+static void acceptIfFloorless(const std::vector<double>& t, const std::vector<double>& oc, ScreenResult& res) {
+    const NoiseFloorCheck c = checkNoiseFloor(t, oc);
+    if (!c.checked) return;
+    res.floorless = c.floorless;
+    res.floorSigmaS = c.sigmaS;
+    res.floorBeyond = c.beyondFraction;
+    if (!c.floorless) return;
+    for (size_t i = 0; i < res.pointClass.size(); ++i) {
+        if (res.pointClass[i] != PointClass::Noise || !(std::fabs(c.residualS[i]) <= 5 * c.sigmaS)) continue;
+        res.pointClass[i] = PointClass::Recovered;
+        ++res.recoveredPoints;
+        --res.noisePoints;
+        ++res.floorlessAdded;
+    }
+}
 
 ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
                           Feedback* fb) {
@@ -547,6 +566,7 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
         }
         res.recoveryMs += msSince(tf);
     }
+    if (res.ok && params.automatic && params.acceptFloorless && !cancelled(fb)) acceptIfFloorless(t, oc, res);
     res.totalMs = msSince(t0);
     if (res.ok && fb) fb->setProgress(1.0);
     return res;

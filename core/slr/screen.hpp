@@ -87,6 +87,15 @@ struct ScreenParams {
     /// stretches between pieces and pieces beyond gaps, with the density contrast along the
     /// track as the test. Off with automatic = false (the paper's fixed procedure).
     bool followTrack = true;
+    /// Automatic mode: a pass with no noise floor — the O-C about its robust piecewise trend
+    /// has a robust σ of at most 1 ns, a peaked distribution ((q97.5 − q2.5)/(q75 − q25) ≥ 2.2;
+    /// uniform noise gives 1.9, a Gaussian 2.9) and at most 2 % of the points (or 2 points)
+    /// beyond 5σ — is
+    /// a pass already filtered (station full-rate files often are): every point within 5σ of
+    /// that trend is accepted (recovered) whatever the image made of it. Why: with no noise
+    /// outside the track, the image's score cannot tell the track from a piece of it, and the
+    /// screening kept 28 % of a clean 3577-point BLITS pass (checkNoiseFloor in screen_auto.hpp).
+    bool acceptFloorless = true;
 };
 
 /// Empty when the parameters are valid, else what is wrong (names the parameter).
@@ -113,6 +122,10 @@ struct ScreenResult {
     int refinedRounds = 0;           ///< screening rounds on a flattened O-C that were kept (refineRounds)
     long long followedAdded = 0;     ///< followTrack: points added as recovered
     long long followedDropped = 0;   ///< followTrack: accepted points returned to noise (off the followed track)
+    bool floorless = false;          ///< acceptFloorless: the pass has no noise floor (filtered pass)
+    double floorSigmaS = 0;          ///< acceptFloorless: robust σ of the O-C about its trend (s); 0 = not checked
+    double floorBeyond = 0;          ///< acceptFloorless: share of points beyond 5σ of the trend
+    long long floorlessAdded = 0;    ///< acceptFloorless: points within 5σ added as recovered
     std::vector<double> flattenS;    ///< when refinedRounds > 0: per point, the trend subtracted from the O-C
                                      ///< before the kept round (its image is of oc − flattenS); else empty
     // Per point (same order as the input).

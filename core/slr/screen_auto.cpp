@@ -35,36 +35,41 @@ double quantileOf(const std::vector<double>& v, double q) {
 
 }  // namespace
 
-ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t* selected, size_t n) {
-    ExtractionScore s;
-    std::vector<size_t> sel;
-    for (size_t i = 0; i < n; ++i)
-        if (selected[i]) sel.push_back(i);
-    const size_t ns = sel.size();
-    s.selected = static_cast<long long>(ns);
-    if (ns < 5) {
-        s.score = -static_cast<double>(ns);
-        return s;
+double PiecewiseTrend::at(double x) const {
+    if (pieces.empty()) return 0;
+    if (x <= pieces.front().t0) return pieces.front().at(pieces.front().t0);
+    if (x >= pieces.back().t1) return pieces.back().at(pieces.back().t1);
+    // The last piece starting at or before x.
+    size_t lo = 0, hi = pieces.size();
+    while (hi - lo > 1) {
+        const size_t mid = (lo + hi) / 2;
+        (pieces[mid].t0 <= x ? lo : hi) = mid;
     }
-    // Trend: K time groups of the selection (at least 8 points each, at most 24 groups), each
-    // with a robust line (slope: median of the slopes between the points half a group apart;
-    // level: median at the group's median epoch); inside a group's time span its line, between
-    // two groups the straight join of their end values, constant beyond the ends. A line per
-    // group, not one (median t, median O-C) knot per group: a steep, curved track with a sharp
-    // jitter (a sparse pass against a fitted-trend O-C: 8 ns/s, 100 ps) sits on its local lines
-    // to within the jitter, while knots joined across tens of seconds miss it by nanoseconds and
+    const Piece& p = pieces[lo];
+    if (x <= p.t1 || lo + 1 == pieces.size()) return p.at(std::min(x, p.t1));
+    const Piece& q = pieces[lo + 1];
+    const double a = p.at(p.t1), b = q.at(q.t0), dt = q.t0 - p.t1;
+    return dt > 0 ? a + (b - a) * (x - p.t1) / dt : b;
+}
+
+PiecewiseTrend robustPiecewiseTrend(const double* t, const double* oc, const std::vector<size_t>& sel) {
+    // K time groups of the selection (at least 8 points each, at most 24 groups), each with a
+    // robust line (slope: median of the slopes between the points half a group apart; level:
+    // median at the group's median epoch); inside a group's time span its line, between two
+    // groups the straight join of their end values, constant beyond the ends. A line per group,
+    // not one (median t, median O-C) knot per group: a steep, curved track with a sharp jitter
+    // (a sparse pass against a fitted-trend O-C: 8 ns/s, 100 ps) sits on its local lines to
+    // within the jitter, while knots joined across tens of seconds miss it by nanoseconds and
     // would push most of a clean track outside its own band.
+    PiecewiseTrend tr;
+    const size_t ns = sel.size();
+    if (ns == 0) return tr;
     const size_t K = ns < 16 ? 1 : std::clamp<size_t>(ns / 8, 2, 24);
-    struct Piece {
-        double t0, t1, tm, om, slope;
-        double at(double x) const { return om + slope * (x - tm); }
-    };
-    std::vector<Piece> pieces;
-    pieces.reserve(K);
+    tr.pieces.reserve(K);
     std::vector<double> bufT, bufO;
     for (size_t g = 0; g < K; ++g) {
         const size_t a = g * ns / K, b = (g + 1) * ns / K, m = b - a;
-        Piece pc;
+        PiecewiseTrend::Piece pc;
         pc.t0 = t[sel[a]];
         pc.t1 = t[sel[b - 1]];
         bufT.clear();
@@ -80,23 +85,61 @@ ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t
         bufO.clear();
         for (size_t j = a; j < b; ++j) bufO.push_back(oc[sel[j]] - pc.slope * (t[sel[j]] - pc.tm));
         pc.om = medianOf(bufO);
-        pieces.push_back(pc);
+        tr.pieces.push_back(pc);
     }
-    auto trend = [&](double x) {
-        if (x <= pieces.front().t0) return pieces.front().at(pieces.front().t0);
-        if (x >= pieces.back().t1) return pieces.back().at(pieces.back().t1);
-        // The last piece starting at or before x.
-        size_t lo = 0, hi = pieces.size();
-        while (hi - lo > 1) {
-            const size_t mid = (lo + hi) / 2;
-            (pieces[mid].t0 <= x ? lo : hi) = mid;
-        }
-        const Piece& p = pieces[lo];
-        if (x <= p.t1 || lo + 1 == pieces.size()) return p.at(std::min(x, p.t1));
-        const Piece& q = pieces[lo + 1];
-        const double a = p.at(p.t1), b = q.at(q.t0), dt = q.t0 - p.t1;
-        return dt > 0 ? a + (b - a) * (x - p.t1) / dt : b;
-    };
+    return tr;
+}
+
+NoiseFloorCheck checkNoiseFloor(const std::vector<double>& t, const std::vector<double>& oc, double maxSigmaS,
+                                double maxBeyond) {
+    NoiseFloorCheck c;
+    const size_t n = std::min(t.size(), oc.size());
+    if (n < 20) return c;
+    std::vector<size_t> order(n);
+    std::iota(order.begin(), order.end(), size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return t[a] < t[b]; });
+    const PiecewiseTrend tr = robustPiecewiseTrend(t.data(), oc.data(), order);
+    c.residualS.resize(n);
+    for (size_t i = 0; i < n; ++i) c.residualS[i] = oc[i] - tr.at(t[i]);
+    std::vector<double> tmp(c.residualS);
+    const double med = medianOf(tmp);
+    for (double& r : c.residualS) r -= med;
+    for (size_t i = 0; i < n; ++i) tmp[i] = std::fabs(c.residualS[i]);
+    c.sigmaS = 1.4826 * medianOf(tmp);
+    const double q025 = quantileOf(c.residualS, 0.025), q25 = quantileOf(c.residualS, 0.25),
+                 q75 = quantileOf(c.residualS, 0.75), q975 = quantileOf(c.residualS, 0.975);
+    c.peakedness = q75 > q25 ? (q975 - q025) / (q75 - q25) : 0;
+    size_t beyond = 0, central = 0;
+    for (double r : c.residualS) {
+        beyond += std::fabs(r) > 5 * c.sigmaS;
+        central += std::fabs(r) <= 0.25 * c.sigmaS;
+    }
+    c.centralFraction = static_cast<double>(central) / static_cast<double>(n);
+    c.beyondFraction = static_cast<double>(beyond) / static_cast<double>(n);
+    c.checked = true;
+    // A few points beyond the band are allowed on a short pass (two of 75 is 2.7 %): they are
+    // outliers of a filtered pass, and points beyond the band stay noise anyway.
+    // The central share tells a track over noise in a gate a few ns wide (a spike: 35 % within
+    // ±σ/4 at 30 % signal) from a filtered track (20 % for a Gaussian, 25–33 % for the
+    // station passes measured, with their tails).
+    c.floorless = c.sigmaS > 0 && c.sigmaS <= maxSigmaS && c.peakedness >= 2.2 && c.centralFraction <= 0.34 &&
+                  (c.beyondFraction <= maxBeyond || beyond <= 2);
+    return c;
+}
+
+ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t* selected, size_t n) {
+    ExtractionScore s;
+    std::vector<size_t> sel;
+    for (size_t i = 0; i < n; ++i)
+        if (selected[i]) sel.push_back(i);
+    const size_t ns = sel.size();
+    s.selected = static_cast<long long>(ns);
+    if (ns < 5) {
+        s.score = -static_cast<double>(ns);
+        return s;
+    }
+    const PiecewiseTrend trendModel = robustPiecewiseTrend(t, oc, sel);
+    auto trend = [&](double x) { return trendModel.at(x); };
     std::vector<double> rs;
     rs.reserve(ns);
     for (size_t i : sel) rs.push_back(oc[i] - trend(t[i]));
@@ -204,6 +247,7 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
     ScreenParams tp = params;
     tp.automatic = true;
     tp.followTrack = false;  // the trials score the image's own result
+    tp.acceptFloorless = false;
     // (the trials keep the refinement rounds: a sparse pass against a fitted-trend O-C is judged
     // on its flattened O-C, which decides the scale of passes such as JASON1 7080)
     std::vector<uint8_t> mask(st.size());

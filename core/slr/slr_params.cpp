@@ -54,6 +54,9 @@ const Schema<SlrParams>& slrSchema() {
                "passes with fewer returns per second get the sparse-pass ladders and refinement; 0 = always");
         s.boolean("screen.follow_track", LWB_FIELD(S, screen.followTrack),
                   "automatic mode, sparse passes: follow the track from the accepted pieces (ends, gaps, pieces beyond gaps)");
+        s.boolean("screen.accept_floorless", LWB_FIELD(S, screen.acceptFloorless),
+                  "automatic mode: a pass with no noise floor (filtered; robust sigma <= 1 ns, <= 2 % beyond 5 sigma) "
+                  "keeps every point within 5 sigma of its track");
         s.integer("postfit.degree", LWB_FIELD(S, postfit.degree), "", {0, 30}, {2, 15},
                   "trend polynomial degree (Legendre, per segment); the largest tried when auto_degree");
         s.boolean("postfit.auto_degree", LWB_FIELD(S, postfit.autoDegree),
