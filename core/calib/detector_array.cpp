@@ -550,7 +550,8 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
         nExact += ob.kind == Kind::Exact;
         nLeast += ob.kind == Kind::AtLeast;
     }
-    // 2. The surface: Auto takes the richest model that leaves at least 3 degrees of freedom.
+    // 2. The surface: Auto takes the elliptical one from 10 measurements (3 degrees of freedom left),
+    // else the circular one, without background below 7.
     const int informative = nExact + nLeast;
     Layout L;
     L.background = params.fitBackground;
@@ -564,11 +565,13 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     const int np = L.count();
     const double fixedBg = params.background;
     res.used = static_cast<int>(obs.size());
-    if (informative < np) {
+    // Auto leaves at least one degree of freedom (the noise is estimated from the residuals).
+    const int needed = params.model == SurfaceModel::Auto ? np + 1 : np;
+    if (informative < needed) {
         res.error = "only " + std::to_string(informative) + " detector" + (informative == 1 ? "" : "s") +
                     " with a measurement (" + std::to_string(untriggered) + " untriggered, " + std::to_string(saturated) +
                     " saturated, " + std::to_string(noEnergy) + " without energy, of " + std::to_string(nd) + ") for the " +
-                    std::to_string(np) + "-parameter Gaussian surface: at least " + std::to_string(np) + " are needed";
+                    std::to_string(np) + "-parameter Gaussian surface: at least " + std::to_string(needed) + " are needed";
         return res;
     }
     {  // geometry: the measured detectors must span two dimensions
