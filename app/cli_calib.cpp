@@ -183,14 +183,14 @@ int cmdCalibDetector(int argc, char** argv) {
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
         const auto& e = r.centreEllipse;
-        std::cerr << "calib detector: " << r.used << " of " << arr.detectors.size() << " detectors in the fit (" << r.censored
-                  << " as bounds, " << r.outliers << " outliers set aside), " << r.seeing << " see the footprint; "
+        std::cerr << "calib detector: " << r.used << " measurements and " << r.censored << " bounds of " << arr.detectors.size()
+                  << " detectors in the fit (" << r.outliers << " outliers set aside), " << r.seeing << " see the footprint; "
                   << surfaceModelName(r.modelUsed) << " surface; centre E " << fx(r.centreE, 3) << " m, N " << fx(r.centreN, 3)
                   << " m; 1-sigma ellipse " << fx(e.semiMajor, 3) << " x " << fx(e.semiMinor, 3) << " m at "
                   << fx(e.orientationRad / kDeg, 1) << " deg (95 %: x" << fx(r.centreEllipse95Scale, 3) << ")";
         if (arr.geographic) std::cerr << "; lat " << fx(r.centreLatDeg, 8) << ", lon " << fx(r.centreLonDeg, 8);
-        std::cerr << "\n  noise " << r.noise.description << "; chi2/dof " << fx(r.chi2Exact / std::max(r.dofExact, 1), 3)
-                  << " on " << r.dofExact << " dof\n";
+        std::cerr << "\n  noise " << r.noise.description << "; chi2/dof " << fx(r.chi2Exact / std::max(r.dof, 1), 3)
+                  << " on " << r.dof << " dof\n";
     }
     if (r.doubtful) {
         for (const auto& d : r.doubts) std::cerr << "laserwb-cli " << cmd << ": doubtful: " << d << "\n";

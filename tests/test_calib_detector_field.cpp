@@ -89,8 +89,8 @@ private slots:
     }
 
     // The noise model is estimated from the array and reported: on full reports (pure additive
-    // noise in the simulator) the floor comes within 10 % of the truth and no relative term is
-    // kept in at least 9 of 10 arrays.
+    // noise in the simulator) the floor comes within 3 standard errors of the truth (σ/√(2ν) for
+    // ν degrees of freedom) and no relative term is kept, each in at least 19 of 20 arrays.
     void noiseModelComesFromTheArray() {
         int arrays = 0, floorWithin = 0, noRelative = 0;
         for (int i = 0; arrays < 20; ++i) {
@@ -103,13 +103,13 @@ private slots:
             QCOMPARE(int(r.noise.source), int(NoiseSource::FromData));
             QVERIFY(r.noise.dof > 100);
             QVERIFY(r.noise.description.find("estimated") != std::string::npos);
-            if (std::fabs(r.noise.floor / sp.noiseFloor - 1) <= 0.10) ++floorWithin;
+            if (std::fabs(r.noise.floor / sp.noiseFloor - 1) <= 3 / std::sqrt(2.0 * r.noise.dof)) ++floorWithin;
             if (r.noise.relative == 0) ++noRelative;
             // With ~145 dof the 95 % scale is close to the χ²₂ value.
             QVERIFY(r.centreEllipse95Scale > 2.4477 && r.centreEllipse95Scale < 2.50);
         }
-        QVERIFY2(floorWithin >= 18, qPrintable(QString::number(floorWithin)));
-        QVERIFY2(noRelative >= 18, qPrintable(QString::number(noRelative)));
+        QVERIFY2(floorWithin >= 19, qPrintable(QString::number(floorWithin)));
+        QVERIFY2(noRelative >= 19, qPrintable(QString::number(noRelative)));
     }
 
     // The failure: the old default noise (5 % of the energy, no floor) given explicitly on
@@ -208,7 +208,7 @@ private slots:
     // than 9 see the footprint, whatever the number of background or untriggered ones.
     void tooFewIsNeverRaisedWithMoreThanNineSeeing() {
         int tested = 0;
-        for (int i = 0; i < 120; ++i) {
+        for (int i = 0; i < 300; ++i) {
             const sim::DetectorSimParams sp = sim::drawDetectorFieldCase(sim::Rng::mix(31, 2 * i));
             const auto s = sim::simulateDetectorArray(sp, sim::Rng::mix(31, 2 * i + 1));
             int seeing = 0;  // truth: the footprint above background by 3 noise σ
@@ -220,7 +220,8 @@ private slots:
             const DetectorFitResult r = fitDetectorArray(s.array, {});
             QVERIFY2(r.ok, r.error.c_str());
         }
-        QVERIFY(tested >= 40);
+        qInfo("%d arrays with more than 9 detectors seeing the footprint, none refused", tested);
+        QVERIFY(tested >= 30);
     }
 
     // Trigger-style files with only a handful of triggered detectors: the circular surface is
@@ -233,13 +234,17 @@ private slots:
         sp.saturationLevel = 0;
         sp.noiseFloor = 40;
         sp.triggerThreshold = 120;
-        sp.sigmaM = 3.4;
-        const auto s = sim::simulateDetectorArray(sp, 4);
-        QVERIFY(s.array.detectors.size() >= 7 && s.array.detectors.size() < 10);
+        sp.sigmaM = 3.6;
+        sim::DetectorSimulation s;
+        for (uint64_t seed = 1; seed < 100; ++seed) {  // the first array with 7–9 triggered detectors
+            s = sim::simulateDetectorArray(sp, seed);
+            if (s.array.detectors.size() >= 7 && s.array.detectors.size() <= 9) break;
+        }
+        QVERIFY(s.array.detectors.size() >= 7 && s.array.detectors.size() <= 9);
         const DetectorFitResult r = fitDetectorArray(s.array, {});
         QVERIFY2(r.ok, r.error.c_str());
         QCOMPARE(int(r.modelUsed), int(SurfaceModel::Circular));
-        const int nu = r.dofExact;
+        const int nu = r.dof;
         QVERIFY(nu >= 1);
         QCOMPARE(r.centreEllipse95Scale, std::sqrt(nu * (std::pow(0.05, -2.0 / nu) - 1)));
         QVERIFY(r.centreEllipse95Scale > 2.4477);

@@ -662,10 +662,14 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
         const double m = rel * std::max(level, 0.0);
         return std::sqrt(floor * floor + m * m);
     };
+    // A given relative noise without a floor: 0.1 % of it at the peak keeps zero and negative
+    // energies (background detectors) finite in the fit.
+    const double givenFloor =
+        params.noiseFloor > 0 ? params.noiseFloor : 1e-3 * params.relativeNoise * (vmax - refBg);
     // First pass: a common σ of 5 % of the peak (only the censored terms feel its size).
     for (Obs& ob : obs) ob.sigma = 0.05 * (vmax - refBg);
     if (givenWeighted)
-        for (Obs& ob : obs) ob.sigma = std::max(sigmaOf(params.noiseFloor, params.relativeNoise, ob.value), 1e-300);
+        for (Obs& ob : obs) ob.sigma = std::max(sigmaOf(givenFloor, params.relativeNoise, ob.value), 1e-300);
     sp.robustC = params.outlierSigma > 0 ? 3.0 : 0.0;
     LmOutcome best;
     std::string lastFailure;
@@ -740,7 +744,7 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     }
     // 4. Noise model and outliers, iterated with refits: residuals → (floor, relative) → weights.
     const int maxOutliers = params.outlierSigma > 0 ? std::max(1, informative / 5) : 0;
-    double floorN = params.noiseFloor, relN = params.relativeNoise;
+    double floorN = givenFloor, relN = params.relativeNoise;
     int noiseDof = 0;
     auto leverage = [&](const Eigen::MatrixXd& J) {
         Eigen::VectorXd h = Eigen::VectorXd::Zero(J.rows());
@@ -776,7 +780,7 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
             for (size_t k = 0; k < obs.size(); ++k)
                 if (z[k] / scale > params.outlierSigma) order.push_back(k);
             std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return z[i] > z[j]; });
-            if (pass > 0 && order.size() > 1) order.resize(1);
+            if (pass > 0 && order.size() > 1) order.erase(order.begin() + 1, order.end());
             std::vector<bool> drop(obs.size(), false);
             for (size_t k : order) {
                 if (res.outliers >= maxOutliers || informative - res.outliers - 1 < np + 2) break;
@@ -868,13 +872,14 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     res.chi2Exact = 0;
     res.censored = 0;
     for (size_t k = 0; k < obs.size(); ++k) {
-        const int n = static_cast<int>(obs[k].count);
-        res.used += n;
-        if (obs[k].kind == Kind::Exact) res.chi2Exact += best.residuals(static_cast<int>(k)) * best.residuals(static_cast<int>(k));
-        else res.censored += n;
+        if (obs[k].kind == Kind::Exact) {
+            ++res.used;
+            res.chi2Exact += best.residuals(static_cast<int>(k)) * best.residuals(static_cast<int>(k));
+        } else {
+            res.censored += static_cast<int>(obs[k].count);
+        }
     }
     res.dof = res.used - np;
-    res.dofExact = res.used - res.censored - np;
     // Noise model used.
     NoiseModelUsed& nm = res.noise;
     nm.source = params.noise;
@@ -885,7 +890,7 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
         nm.description = "given: floor " + formatDouble(floorN, 4) + ", relative " + formatDouble(relN, 4);
     else if (noiseDof >= 1)
         nm.description = std::string(given ? "unweighted, scale from the residuals" : "estimated from the residuals") + " of " +
-                         std::to_string(res.used - res.censored) + " measurements (" + std::to_string(noiseDof) +
+                         std::to_string(res.used) + " measurements (" + std::to_string(noiseDof) +
                          " dof): floor " + formatDouble(floorN, 4) + ", relative " + formatDouble(relN, 4);
     else
         nm.description = "no degrees of freedom to estimate the noise: floor taken as 5 % of the peak, " + formatDouble(floorN, 4);
@@ -913,8 +918,8 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     double scale = 1;
     const bool scaled = given && (!givenWeighted || params.scaleByChi2);
     if (scaled && givenWeighted) {
-        if (res.dofExact > 0) {
-            scale = res.chi2Exact / res.dofExact;
+        if (res.dof > 0) {
+            scale = res.chi2Exact / res.dof;
         } else {
             scale = NAN;
             res.warnings.push_back("as many parameters as measurements: the fit passes through every detector and its "
@@ -924,7 +929,7 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     res.covariance = cov * scale;
     // 95 % scale: χ²₂ with a known noise; with a noise scale estimated from ν dof, 2·F(2, ν).
     const bool estimatedScale = !givenWeighted || params.scaleByChi2;
-    const int nu = estimatedScale ? std::max(res.dofExact, 0) : 0;
+    const int nu = estimatedScale ? std::max(res.dof, 0) : 0;
     if (!estimatedScale)
         res.centreEllipse95Scale = std::sqrt(-2 * std::log(0.05));
     else if (nu >= 1)
@@ -1005,10 +1010,10 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     const P2 centre(s.e0, s.n0);
     res.centreOutsideSeeingM = distanceOutsideHull(seeingPts, centre);
     res.centreOutsideArrayM = distanceOutsideHull(arrayPts, centre);
-    if (given && givenWeighted && res.dofExact >= 1) {
-        res.chi2Probability = chi2UpperTail(res.chi2Exact, res.dofExact);
+    if (given && givenWeighted && res.dof >= 1) {
+        res.chi2Probability = chi2UpperTail(res.chi2Exact, res.dof);
         if (res.chi2Probability < 0.5 * params.chi2Probability || res.chi2Probability > 1 - 0.5 * params.chi2Probability)
-            doubt("chi2/dof " + formatDouble(res.chi2Exact / res.dofExact, 4) + " on " + std::to_string(res.dofExact) +
+            doubt("chi2/dof " + formatDouble(res.chi2Exact / res.dof, 4) + " on " + std::to_string(res.dof) +
                   " dof is far from 1 (P = " + formatDouble(res.chi2Probability, 3) +
                   "): the given noise model does not describe these detectors");
     }
@@ -1105,7 +1110,7 @@ bool writeDetectorCentreCsv(const std::string& path, const DetectorFitResult& r,
         "centre_e_m,centre_n_m,sigma_e_m,sigma_n_m,cov_en_m2,ellipse_major_m,ellipse_minor_m,ellipse_deg,ellipse95_scale,"
         "ellipse95_major_m,ellipse95_minor_m,lat_deg,lon_deg,h_m,amplitude,amplitude_sd,sigma_major_m,sigma_major_sd_m,"
         "sigma_minor_m,sigma_minor_sd_m,orientation_deg,background,model,used,censored,outliers,seeing,dof,chi2,chi2_exact,"
-        "dof_exact,rms_residual,iterations,noise_source,noise_floor,noise_relative,noise_dof,doubtful,doubts\n" +
+        "rms_residual,iterations,noise_source,noise_floor,noise_relative,noise_dof,doubtful,doubts\n" +
         fx(r.centreE, 4) + "," + fx(r.centreN, 4) + "," + fx(e.sigmaE, 4) + "," + fx(e.sigmaN, 4) + "," + gx(e.covEN) + "," +
         fx(e.semiMajor, 4) + "," + fx(e.semiMinor, 4) + "," + fx(e.orientationRad / kDeg, 3) + "," + fx(k, 4) + "," +
         fx(k * e.semiMajor, 4) + "," + fx(k * e.semiMinor, 4) + "," + fx(r.centreLatDeg, 9) + "," + fx(r.centreLonDeg, 9) + "," +
@@ -1114,7 +1119,7 @@ bool writeDetectorCentreCsv(const std::string& path, const DetectorFitResult& r,
         fx(s.orientationRad / kDeg, 3) + "," + gx(s.background) + "," + surfaceModelName(r.modelUsed) + "," +
         std::to_string(r.used) + "," + std::to_string(r.censored) + "," + std::to_string(r.outliers) + "," +
         std::to_string(r.seeing) + "," + std::to_string(r.dof) + "," + gx(r.chi2) + "," + gx(r.chi2Exact) + "," +
-        std::to_string(r.dofExact) + "," + gx(r.rmsResidual) + "," + std::to_string(r.iterations) + "," +
+        gx(r.rmsResidual) + "," + std::to_string(r.iterations) + "," +
         (r.noise.source == NoiseSource::Given ? "given" : "data") + "," + gx(r.noise.floor) + "," + gx(r.noise.relative) + "," +
         std::to_string(r.noise.dof) + "," + (r.doubtful ? "1" : "0") + "," + csvEscape(doubts) + "\n";
     return writeFileAtomic(path, csv, error);

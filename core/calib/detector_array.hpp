@@ -149,7 +149,7 @@ struct DetectorFitResult {
     double sigmaMajorSd = NAN, sigmaMinorSd = NAN, amplitudeSd = NAN;
     double centreLatDeg = NAN, centreLonDeg = NAN;  ///< when the array was geographic
     double centreH = NAN;          ///< height at the centre from a plane through the detector heights (m)
-    int used = 0;                  ///< detectors in the fit
+    int used = 0;                  ///< measurements in the fit (status Used; bounds are counted in `censored`)
     int dof = 0;                   ///< used − parameters
     double chi2 = NAN;             ///< Σ weighted residual² at the fit
     double rmsResidual = NAN;      ///< unweighted RMS of energy − model over the used detectors
@@ -166,7 +166,6 @@ struct DetectorFitResult {
     int seeing = 0;                ///< detectors that see the footprint: energy above background by > 3 noise σ
                                    ///< (and > 1 % of the amplitude), or saturated
     double chi2Exact = NAN;        ///< χ² of the measurements alone (censored terms left out)
-    int dofExact = 0;              ///< measurements − parameters
     double chi2Probability = NAN;  ///< Given noise: P(χ²_dof ≥ chi2Exact) (Wilson–Hilferty)
     double centreOutsideSeeingM = NAN;  ///< distance of the centre outside the hull of the seeing detectors (0 inside)
     double centreOutsideArrayM = NAN;   ///< … outside the hull of all detectors (0 inside)
