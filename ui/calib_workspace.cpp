@@ -748,7 +748,7 @@ void CalibWorkspace::showDetector(const CalibRun& run) {
         if (std::isfinite(d.energy)) emax = std::max(emax, d.energy);
     if (!(emax > 0)) emax = 1;
     const Grid g = gridOf(a);
-    QVector<double> ux, uy, sx, sy;
+    QVector<double> ux, uy, sx, sy, bx, by;
     std::vector<DetectorStatus> status(a.detectors.size(), DetectorStatus::Used);
     if (r.ok || r.detectors.size() == a.detectors.size())
         for (size_t i = 0; i < r.detectors.size(); ++i) status[i] = r.detectors[i].status;
@@ -769,7 +769,10 @@ void CalibWorkspace::showDetector(const CalibRun& run) {
             uy << d.n;
             continue;
         }
-        if (status[i] != DetectorStatus::Used) {
+        if (status[i] == DetectorStatus::AtLeast || status[i] == DetectorStatus::AtMost) {
+            bx << d.e;
+            by << d.n;
+        } else if (status[i] != DetectorStatus::Used) {
             sx << d.e;
             sy << d.n;
         }
@@ -794,8 +797,12 @@ void CalibWorkspace::showDetector(const CalibRun& run) {
         }
     scatter(p, tr("untriggered (no energy)"), QCPScatterStyle(QCPScatterStyle::ssDisc, kGrey, kGrey, 2.5))->setData(ux, uy);
     if (!sx.isEmpty())
-        scatter(p, tr("set aside (threshold / saturation)"), QCPScatterStyle(QCPScatterStyle::ssCross, QPen(kRed, 1.6), Qt::NoBrush, 8))
+        scatter(p, tr("set aside (outlier, or censoring off)"), QCPScatterStyle(QCPScatterStyle::ssCross, QPen(kRed, 1.6), Qt::NoBrush, 8))
             ->setData(sx, sy);
+    if (!bx.isEmpty())
+        scatter(p, tr("in the fit as a bound (threshold / saturation)"),
+                QCPScatterStyle(QCPScatterStyle::ssPlus, QPen(QColor(230, 140, 0), 1.6), Qt::NoBrush, 8))
+            ->setData(bx, by);
     if (r.ok) {
         const GaussSurface& s = r.surface;
         setEllipse(ellipseCurve(p, tr("fitted footprint 1σ"), QPen(QColor(0, 200, 255), 1.6)), s.e0, s.n0, s.sigmaMajor,
