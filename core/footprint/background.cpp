@@ -17,16 +17,6 @@ const char* noiseClassName(NoiseClass c) {
     return "?";
 }
 
-std::string validate(const BackgroundParams& p) {
-    if (!std::isfinite(p.nightBelow) || !std::isfinite(p.weakBelow) || !std::isfinite(p.strongAbove))
-        return "noise class thresholds must be finite numbers";
-    if (!(p.nightBelow <= p.weakBelow && p.weakBelow <= p.strongAbove))
-        return "noise class thresholds must satisfy night_below <= weak_below <= strong_above";
-    if (!(p.clipSigma > 0.5 && p.clipSigma < 100)) return "background clip sigma must be in (0.5, 100)";
-    if (p.iterations < 0 || p.iterations > 50) return "background clip iterations must be in 0..50";
-    return {};
-}
-
 namespace {
 // Histogram of the ROI (at most 4096 bins, 1 DN wide for 14-bit data) from which the clipped
 // median and MAD are read in O(bins) per clipping pass: no sorting, no per-pass copies.
