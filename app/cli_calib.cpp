@@ -22,6 +22,9 @@ namespace sim = core::sim;
 
 namespace {
 
+// calib detector: the outputs are written but the centre is doubtful (see kDetectorUsage).
+constexpr int kDoubtful = 3;
+
 std::string fx(double v, int d) { return std::isfinite(v) ? core::formatFixed(v, d) : std::string(); }
 std::string gx(double v) { return std::isfinite(v) ? core::formatDouble(v, 10) : std::string(); }
 std::string outPath(const Args& a) { return a.has("-o") ? a.value("-o") : a.value("--output"); }
@@ -35,19 +38,34 @@ void warn(const std::string& cmd, const std::vector<std::string>& ws) {
 const char* kDetectorUsage =
     "usage: laserwb-cli calib detector DETECTORS.csv [options] [-o CENTRE.csv] [--detectors REPORT.csv]\n"
     "Footprint centre from a ground detector array (paper 002 3.2.3): a 2D Gaussian surface fitted\n"
-    "to the detector energies by Levenberg-Marquardt, with its 1-sigma uncertainty ellipse.\n"
+    "to the detector energies by Levenberg-Marquardt, with its 1-sigma and 95 % uncertainty ellipses.\n"
     "DETECTORS.csv: header id, e, n (metres) or lat, lon (degrees; projected to the local tangent\n"
-    "plane at their mean), energy, and optionally h, triggered (0/1), saturated (0/1).\n"
-    "  --model elliptical|circular  surface (default elliptical: 7 parameters; circular: 5)\n"
+    "plane at their mean), energy, and optionally h, triggered (0/1), saturated (0/1). Full reports\n"
+    "(every detector, background and negative energies included) and trigger-style files (only\n"
+    "triggered detectors, or untriggered ones marked triggered=0) are both read as they are.\n"
+    "Noise: by default estimated from the array (floor, and a relative term when the residuals ask\n"
+    "for it); give --rel-noise and/or --noise-floor to use a known noise model instead.\n"
+    "Censoring: a saturated detector enters the fit as 'at least its level', a listed untriggered one\n"
+    "as 'at most the trigger level'; detectors inconsistent with the fit are set aside as outliers.\n"
+    "  --model auto|elliptical|circular  surface (default auto: elliptical, 7 parameters, when 10 or\n"
+    "                               more detectors carry a measurement; circular, 5, below)\n"
     "  --fixed-background B         hold the background at B instead of fitting it\n"
-    "  --trigger T                  energies <= T count as untriggered (default 0)\n"
-    "  --saturation S               energies >= S count as saturated (default: none)\n"
-    "  --rel-noise R                energy noise as a fraction of the energy (default 0.05)\n"
-    "  --noise-floor F              additive energy noise sigma (default 0)\n"
-    "  --scale-chi2                 scale the covariance by the reduced chi-square\n"
-    "  -o, --output CENTRE.csv      one row: centre, ellipse, lat/lon, height, surface, fit figures\n"
-    "  --detectors REPORT.csv       one row per detector: status, reason, model, residual\n"
-    "  -q, --quiet                  no summary on stderr\n";
+    "  --trigger T                  energies <= T count as untriggered (default: no threshold)\n"
+    "  --saturation S               energies >= S count as saturated (default: flags, or a clipped maximum)\n"
+    "  --rel-noise R                known noise: sigma as a fraction of the energy (default 0 when given)\n"
+    "  --noise-floor F              known noise: additive sigma (default 0 when given)\n"
+    "  --scale-chi2                 with a known noise: scale the covariance by the reduced chi-square\n"
+    "  --no-censoring               set saturated and untriggered detectors aside instead\n"
+    "  --outlier-sigma Z            set aside detectors more than Z robust sigma off (default 4; 0 = off)\n"
+    "  -o, --output CENTRE.csv      one row: centre, ellipses, lat/lon, height, surface, fit figures,\n"
+    "                               noise model, doubtful (0/1) and the reasons\n"
+    "  --detectors REPORT.csv       one row per detector: status, reason, model, residual, bound, sigma\n"
+    "  -q, --quiet                  no summary on stderr\n"
+    "Exit codes: 0 a trusted centre; 3 the outputs are written but the centre is doubtful (reasons on\n"
+    "stderr and in CENTRE.csv): chi2 improbable under a given noise model, the centre outside the\n"
+    "detectors that see the footprint or the array by more than the footprint's 1/e2 radius, a 95 %\n"
+    "ellipse larger than the array, a footprint wider than the array or narrower than the spacing, a\n"
+    "peak under 3 noise sigma; 1 refused (no centre, nothing written); 2 usage error.\n";
 
 const char* kWaveformUsage =
     "usage: laserwb-cli calib waveform (WAVEFORM.csv | --height H) [--features CANDIDATES.csv] [options]\n"
@@ -103,7 +121,10 @@ const char* kSimCalibUsage =
     "  --passes N      calibration passes (default 4)\n"
     "  --single-beam   only beam 1 fires\n"
     "  --geographic    detector positions as lat/lon\n"
-    "  --saturation S  detector saturation level (default none)\n";
+    "  --saturation S  detector saturation level (default none)\n"
+    "  --field-case    the detector array is one of the field population (17 x 9 detectors at 5 m,\n"
+    "                  13-17 m footprint, noise 2-5 % of the peak, full or trigger-style report, dead\n"
+    "                  and saturated detectors), drawn from the seed\n";
 
 
 }  // namespace
@@ -112,9 +133,9 @@ int cmdCalibDetector(int argc, char** argv) {
     const std::string cmd = "calib detector";
     Args a(cmd, kDetectorUsage);
     for (const char* o : {"--model", "--fixed-background", "--trigger", "--saturation", "--rel-noise", "--noise-floor", "-o",
-                          "--output", "--detectors"})
+                          "--output", "--detectors", "--outlier-sigma"})
         a.option(o, true);
-    for (const char* o : {"--scale-chi2", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    for (const char* o : {"--scale-chi2", "--no-censoring", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (wantsHelp(a)) {
         std::cout << kDetectorUsage;
@@ -124,19 +145,25 @@ int cmdCalibDetector(int argc, char** argv) {
     std::string err;
     if (a.has("--model")) {
         const std::string m = a.value("--model");
-        if (m == "elliptical") p.model = SurfaceModel::Elliptical;
+        if (m == "auto") p.model = SurfaceModel::Auto;
+        else if (m == "elliptical") p.model = SurfaceModel::Elliptical;
         else if (m == "circular") p.model = SurfaceModel::Circular;
-        else return fail(cmd, "--model must be elliptical or circular, not \"" + m + "\"", kUsage);
+        else return fail(cmd, "--model must be auto, elliptical or circular, not \"" + m + "\"", kUsage);
     }
     if (a.has("--fixed-background")) {
         p.fitBackground = false;
         if (!a.getDouble("--fixed-background", -1e300, 1e300, &p.background, &err)) return fail(cmd, err, kUsage);
     }
+    if (a.has("--rel-noise") || a.has("--noise-floor")) p.noise = NoiseSource::Given;
     if (!a.getDouble("--trigger", 0, 1e300, &p.triggerThreshold, &err) ||
         !a.getDouble("--saturation", 0, 1e300, &p.saturationLevel, &err) ||
-        !a.getDouble("--rel-noise", 0, 1, &p.relativeNoise, &err) || !a.getDouble("--noise-floor", 0, 1e300, &p.noiseFloor, &err))
+        !a.getDouble("--rel-noise", 0, 1, &p.relativeNoise, &err) || !a.getDouble("--noise-floor", 0, 1e300, &p.noiseFloor, &err) ||
+        !a.getDouble("--outlier-sigma", 0, 1e6, &p.outlierSigma, &err))
         return fail(cmd, err, kUsage);
     p.scaleByChi2 = a.has("--scale-chi2");
+    if (p.scaleByChi2 && p.noise != NoiseSource::Given)
+        return fail(cmd, "--scale-chi2 applies to a given noise model (--rel-noise / --noise-floor)", kUsage);
+    p.censor = !a.has("--no-censoring");
     if (const std::string e = validate(p); !e.empty()) return fail(cmd, e, kUsage);
     if (a.positional().size() != 1) return fail(cmd, "give exactly one detector CSV", kUsage);
     const std::string out = outPath(a);
@@ -150,32 +177,24 @@ int cmdCalibDetector(int argc, char** argv) {
     const DetectorFitResult r = fitDetectorArray(arr, p);
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
     warn(cmd, r.warnings);
-    if (!out.empty()) {
-        const auto& s = r.surface;
-        const auto& e = r.centreEllipse;
-        const std::string csv =
-            "centre_e_m,centre_n_m,sigma_e_m,sigma_n_m,cov_en_m2,ellipse_major_m,ellipse_minor_m,ellipse_deg,lat_deg,lon_deg,"
-            "h_m,amplitude,amplitude_sd,sigma_major_m,sigma_major_sd_m,sigma_minor_m,sigma_minor_sd_m,orientation_deg,"
-            "background,used,dof,chi2,rms_residual,iterations\n" +
-            fx(r.centreE, 4) + "," + fx(r.centreN, 4) + "," + fx(e.sigmaE, 4) + "," + fx(e.sigmaN, 4) + "," + gx(e.covEN) + "," +
-            fx(e.semiMajor, 4) + "," + fx(e.semiMinor, 4) + "," + fx(e.orientationRad / kDeg, 3) + "," +
-            fx(r.centreLatDeg, 9) + "," + fx(r.centreLonDeg, 9) + "," + fx(r.centreH, 3) + "," + gx(s.amplitude) + "," +
-            gx(r.amplitudeSd) + "," + fx(s.sigmaMajor, 4) + "," + fx(r.sigmaMajorSd, 4) + "," + fx(s.sigmaMinor, 4) + "," +
-            fx(r.sigmaMinorSd, 4) + "," + fx(s.orientationRad / kDeg, 3) + "," + gx(s.background) + "," +
-            std::to_string(r.used) + "," + std::to_string(r.dof) + "," + gx(r.chi2) + "," + gx(r.rmsResidual) + "," +
-            std::to_string(r.iterations) + "\n";
-        if (!core::writeFileAtomic(outs.stagingPath(out), csv, &err)) return fail(cmd, outs.unstaged(err));
-    }
+    if (!out.empty() && !writeDetectorCentreCsv(outs.stagingPath(out), r, &err)) return fail(cmd, outs.unstaged(err));
     if (a.has("--detectors") && !writeDetectorReportCsv(outs.stagingPath(a.value("--detectors")), arr, r, &err))
         return fail(cmd, outs.unstaged(err));
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
-        std::cerr << "calib detector: " << r.used << " of " << arr.detectors.size() << " detectors used; centre E "
-                  << fx(r.centreE, 3) << " m, N " << fx(r.centreN, 3) << " m; 1-sigma ellipse "
-                  << fx(r.centreEllipse.semiMajor, 3) << " x " << fx(r.centreEllipse.semiMinor, 3) << " m at "
-                  << fx(r.centreEllipse.orientationRad / kDeg, 1) << " deg";
+        const auto& e = r.centreEllipse;
+        std::cerr << "calib detector: " << r.used << " measurements and " << r.censored << " bounds of " << arr.detectors.size()
+                  << " detectors in the fit (" << r.outliers << " outliers set aside), " << r.seeing << " see the footprint; "
+                  << surfaceModelName(r.modelUsed) << " surface; centre E " << fx(r.centreE, 3) << " m, N " << fx(r.centreN, 3)
+                  << " m; 1-sigma ellipse " << fx(e.semiMajor, 3) << " x " << fx(e.semiMinor, 3) << " m at "
+                  << fx(e.orientationRad / kDeg, 1) << " deg (95 %: x" << fx(r.centreEllipse95Scale, 3) << ")";
         if (arr.geographic) std::cerr << "; lat " << fx(r.centreLatDeg, 8) << ", lon " << fx(r.centreLonDeg, 8);
-        std::cerr << "\n";
+        std::cerr << "\n  noise " << r.noise.description << "; chi2/dof " << fx(r.chi2Exact / std::max(r.dof, 1), 3)
+                  << " on " << r.dof << " dof\n";
+    }
+    if (r.doubtful) {
+        for (const auto& d : r.doubts) std::cerr << "laserwb-cli " << cmd << ": doubtful: " << d << "\n";
+        return kDoubtful;
     }
     return kOk;
 }
@@ -418,7 +437,7 @@ int cmdSimulateCalib(int argc, char** argv) {
     const std::string cmd = "simulate calib";
     Args a(cmd, kSimCalibUsage);
     for (const char* o : {"--seed", "--passes", "--saturation"}) a.option(o, true);
-    for (const char* o : {"--single-beam", "--geographic", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    for (const char* o : {"--single-beam", "--geographic", "--field-case", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (wantsHelp(a)) {
         std::cout << kSimCalibUsage;
@@ -454,8 +473,9 @@ int cmdSimulateCalib(int argc, char** argv) {
     if (!cp.dualBeam) beams.resize(1);
     // Detector array.
     sim::DetectorSimParams dp;
+    if (a.has("--field-case")) dp = sim::drawDetectorFieldCase(sim::Rng::mix(s0, 4));
     dp.geographic = a.has("--geographic");
-    dp.saturationLevel = saturation;
+    if (a.has("--saturation")) dp.saturationLevel = saturation;
     const sim::DetectorSimulation ds = sim::simulateDetectorArray(dp, sim::Rng::mix(s0, 1));
     const auto& t = ds.truth;
     const std::string dtruth = "centre_e_m,centre_n_m,sigma_major_m,sigma_minor_m,orientation_deg,amplitude,background,"

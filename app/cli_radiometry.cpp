@@ -7,6 +7,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
 #include "core/radiometry/gcp.hpp"
+#include "core/radiometry/geotiff.hpp"
 #include "core/radiometry/mosaic.hpp"
 #include "core/radiometry/reflectance.hpp"
 
@@ -27,6 +28,19 @@ void warn(const std::string& cmd, const std::vector<std::string>& ws) {
 bool maxPixels(const Args& a, long long* out, std::string* err) {
     *out = core::kMaxImagePixels;
     return a.getInt("--max-pixels", 1, 1LL << 40, out, err);
+}
+
+bool isTiff(const std::string& path) {
+    const size_t dot = path.find_last_of('.');
+    const std::string ext = dot == std::string::npos ? std::string() : core::toLower(path.substr(dot + 1));
+    return ext == "tif" || ext == "tiff";
+}
+// An image output: a GeoTIFF (through GDAL) when it has a georeference, is a .tif and plain
+// TIFF was not asked for; else the plain writer (PNG, TIFF, PGM by extension).
+bool writeMapImage(const std::string& path, const cv::Mat& image, const GeoReference& geo, bool plain, std::string* err,
+                   bool floatNoData = false) {
+    if (geo.valid && !plain && isTiff(path)) return writeGeoTiff(path, image, geo, err, floatNoData, NAN);
+    return writeImage(path, image, err);
 }
 
 const char* kMosaicUsage =
@@ -53,6 +67,11 @@ const char* kGcpUsage =
     "  --pixel-size M          map pixel size in metres (default: the image's own scale)\n"
     "  --residuals RES.csv     per GCP: map and pixel residuals\n"
     "  --valid MASK.png        255 where the map pixel came from inside the image\n"
+    "  -o MAP.tif is a GeoTIFF (through GDAL): geotransform in the markers' map metres, so GIS tools\n"
+    "  open it in place; MAP.png, or --plain-tiff, writes a plain image without georeferencing.\n"
+    "  --crs CRS               the CRS of the markers' map coordinates (e.g. EPSG:32650); default a\n"
+    "                          local engineering frame in metres\n"
+    "  --plain-tiff            write MAP.tif (and --valid) as plain TIFF\n"
     "  --max-pixels N           largest image read, from its header (default 268435456 = 16384^2)\n";
 
 const char* kFitUsage =
@@ -62,12 +81,19 @@ const char* kFitUsage =
     "sqrt(V_M^2 + V_err^2).\n"
     "REGIONS.csv: name, reflectance (%), and dn or a rectangle x, y, w, h on --image.\n"
     "  --image DN.tif          measure each region's mean DN on this image\n"
-    "  --dn-min D, --dn-max D  camera linear range (default 100, 60000); regions outside are warned\n"
-    "  --exclude-out-of-range  leave regions outside the range out of the fit\n"
+    "  --dn-min D, --dn-max D  camera linear range (default 100, 60000). Regions measured on --image:\n"
+    "                          pixels outside the range are masked from the region's mean and counted;\n"
+    "                          a region left with too few pixels is left out of the fit, with the reason.\n"
+    "                          Regions given as dn: a mean outside the range is warned about\n"
+    "  --min-region-pixels N   pixels a region keeps after masking (default 25)\n"
+    "  --min-region-fraction F and this fraction of its pixels (default 0.5)\n"
+    "  --no-pixel-mask         average every pixel of a region, out-of-range ones included (only counted)\n"
+    "  --exclude-out-of-range  leave regions whose mean DN is outside the range out of the fit\n"
     "  --vm PCT                spectrometer uncertainty V_M (default 0.17 %)\n"
     "  -o, --output FIT.csv    k, b, k_sd, b_sd, cov_kb, n, residual_sd, r2, mean_dn, vm_pct,\n"
     "                          paper_uncertainty_pct, uncertainty_at_mean_pct\n"
-    "  --regions OUT.csv       per region: dn, reflectance, predicted, residual, used, note\n"
+    "  --regions OUT.csv       per region: dn, reflectance, predicted, residual, used, pixels,\n"
+    "                          pixels_masked, note\n"
     "  --max-pixels N           largest image read, from its header (default 268435456 = 16384^2)\n";
 
 const char* kApplyUsage =
@@ -76,6 +102,8 @@ const char* kApplyUsage =
     "  --dn-min D, --dn-max D  camera linear range (default 100, 60000): pixels outside are counted\n"
     "  --nan-out-of-range      and set to NaN\n"
     "  --uncertainty UNC.tif   per-pixel uncertainty sqrt(V_M^2 + prediction variance) (needs --fit)\n"
+    "  A georeferenced DN_IMAGE (GeoTIFF) gives georeferenced outputs (same geotransform and CRS);\n"
+    "  --plain-tiff            write plain TIFF outputs even then\n"
     "  --check CHECK.csv       check regions (name, reflectance, x, y, w, h) -> relative errors\n"
     "  --table TABLE.csv       the relative-error table (with --check)\n"
     "  --limit PCT             relative-error limit (default 5 %)\n"
@@ -158,9 +186,9 @@ int cmdRadiometryMosaic(int argc, char** argv) {
 int cmdRadiometryGcp(int argc, char** argv) {
     const std::string cmd = "radiometry gcp";
     Args a(cmd, kGcpUsage);
-    for (const char* o : {"--gcps", "--model", "--pixel-size", "--residuals", "--valid", "-o", "--output", "--max-pixels"})
+    for (const char* o : {"--gcps", "--model", "--pixel-size", "--residuals", "--valid", "-o", "--output", "--max-pixels", "--crs"})
         a.option(o, true);
-    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    for (const char* o : {"--plain-tiff", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (wantsHelp(a)) {
         std::cout << kGcpUsage;
@@ -178,6 +206,9 @@ int cmdRadiometryGcp(int argc, char** argv) {
     if (out.empty()) return fail(cmd, "no output file: give -o MAP.tif", kUsage);
     long long maxPx = 0;
     if (!maxPixels(a, &maxPx, &err)) return fail(cmd, err, kUsage);
+    std::string crsWkt;
+    if (a.has("--crs") && !crsFromUserInput(a.value("--crs"), &crsWkt, &err)) return fail(cmd, "--crs: " + err, kUsage);
+    const bool plain = a.has("--plain-tiff");
     core::OutputSet outs;
     outs.addInput(a.positional()[0]);
     outs.addInput(a.value("--gcps"));
@@ -195,8 +226,9 @@ int cmdRadiometryGcp(int argc, char** argv) {
     const MapGrid grid = gridCovering(fit, img.size(), pixel > 0 ? pixel : fit.metresPerPixel);
     const WarpResult w = warpToMap(img, fit, grid);
     if (!w.ok) return fail(cmd, w.error);
-    if (!writeImage(outs.stagingPath(out), w.image, &err) ||
-        (a.has("--valid") && !writeImage(outs.stagingPath(a.value("--valid")), w.valid, &err)) ||
+    const GeoReference geo = geoReferenceOf(grid, crsWkt);
+    if (!writeMapImage(outs.stagingPath(out), w.image, geo, plain, &err, w.image.depth() == CV_32F) ||
+        (a.has("--valid") && !writeMapImage(outs.stagingPath(a.value("--valid")), w.valid, geo, plain, &err)) ||
         (a.has("--residuals") && !writeGcpResidualCsv(outs.stagingPath(a.value("--residuals")), gcps, fit, &err)))
         return fail(cmd, outs.unstaged(err));
     if (int rc = commitOutputs(cmd, outs)) return rc;
@@ -204,16 +236,17 @@ int cmdRadiometryGcp(int argc, char** argv) {
         std::cerr << "radiometry gcp: " << gcps.size() << " GCPs, " << geoModelName(fit.model) << "; RMS "
                   << fx(fit.rmsMap, 4) << " m = " << fx(fit.rmsPx, 3) << " px; map grid " << grid.width << "x" << grid.height
                   << " at " << core::formatDouble(grid.pixelSize, 4) << " m, top-left centre (" << fx(grid.originX, 4)
-                  << ", " << fx(grid.originY, 4) << ")\n";
+                  << ", " << fx(grid.originY, 4) << ")" << (geo.valid && !plain && isTiff(out) ? ", GeoTIFF" : "") << "\n";
     return kOk;
 }
 
 int cmdRadiometryFit(int argc, char** argv) {
     const std::string cmd = "radiometry fit";
     Args a(cmd, kFitUsage);
-    for (const char* o : {"--image", "--dn-min", "--dn-max", "--vm", "-o", "--output", "--regions", "--max-pixels"})
+    for (const char* o : {"--image", "--dn-min", "--dn-max", "--vm", "-o", "--output", "--regions", "--max-pixels",
+                          "--min-region-pixels", "--min-region-fraction"})
         a.option(o, true);
-    for (const char* o : {"--exclude-out-of-range", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    for (const char* o : {"--exclude-out-of-range", "--no-pixel-mask", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (wantsHelp(a)) {
         std::cout << kFitUsage;
@@ -222,9 +255,14 @@ int cmdRadiometryFit(int argc, char** argv) {
     ReflectanceFitParams p;
     std::string err;
     if (!a.getDouble("--dn-min", -1e300, 1e300, &p.dnMin, &err) || !a.getDouble("--dn-max", -1e300, 1e300, &p.dnMax, &err) ||
-        !a.getDouble("--vm", 0, 100, &p.spectrometerPct, &err))
+        !a.getDouble("--vm", 0, 100, &p.spectrometerPct, &err) ||
+        !a.getDouble("--min-region-fraction", 0, 1, &p.minRegionFraction, &err))
         return fail(cmd, err, kUsage);
+    long long minPx = p.minRegionPixels;
+    if (!a.getInt("--min-region-pixels", 1, 1000000000, &minPx, &err)) return fail(cmd, err, kUsage);
+    p.minRegionPixels = static_cast<int>(minPx);
     p.excludeOutOfRange = a.has("--exclude-out-of-range");
+    p.maskOutOfRangePixels = !a.has("--no-pixel-mask");
     if (const std::string e = validate(p); !e.empty()) return fail(cmd, e, kUsage);
     if (a.positional().size() != 1) return fail(cmd, "give exactly one region CSV", kUsage);
     const std::string out = outPath(a);
@@ -257,6 +295,12 @@ int cmdRadiometryFit(int argc, char** argv) {
                   << core::formatDouble(f.kSd, 3) << " %/DN, B = " << core::formatDouble(f.b, 6) << " +- "
                   << core::formatDouble(f.bSd, 3) << " %; R^2 " << fx(f.r2, 5) << "; uncertainty (eq. 6) "
                   << fx(f.paperUncertaintyPct, 4) << " %, at the mean DN " << fx(f.uncertaintyAtMeanPct, 4) << " %\n";
+        long long outside = 0;
+        for (const Region& rg : regions) outside += rg.pixelsOutOfRange;
+        if (a.has("--image"))
+            std::cerr << "  linear range " << core::formatDouble(p.dnMin, 6) << ".." << core::formatDouble(p.dnMax, 6) << ": "
+                      << outside << " region pixels outside, " << (p.maskOutOfRangePixels ? "masked" : "not masked")
+                      << ", " << r.regionsExcluded << " region" << (r.regionsExcluded == 1 ? "" : "s") << " left out\n";
     }
     return kOk;
 }
@@ -267,7 +311,7 @@ int cmdRadiometryApply(int argc, char** argv) {
     for (const char* o : {"--fit", "--k", "--b", "--dn-min", "--dn-max", "--uncertainty", "--check", "--table", "--limit", "-o",
                           "--output", "--max-pixels"})
         a.option(o, true);
-    for (const char* o : {"--nan-out-of-range", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    for (const char* o : {"--nan-out-of-range", "--plain-tiff", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (wantsHelp(a)) {
         std::cout << kApplyUsage;
@@ -302,6 +346,9 @@ int cmdRadiometryApply(int argc, char** argv) {
     if (a.has("--fit") && !readFitCsv(a.value("--fit"), &fit, &err)) return fail(cmd, err);
     cv::Mat img;
     if (!readImageAnyDepth(a.positional()[0], &img, &err, maxPx)) return fail(cmd, err);
+    GeoReference geo;  // the input's georeferencing, when it has one (a file GDAL cannot open has none)
+    if (std::string gerr; !readGeoReference(a.positional()[0], &geo, &gerr)) geo = GeoReference{};
+    const bool plain = a.has("--plain-tiff");
     const ApplyResult r = applyReflectance(img, fit, p);
     if (!r.ok) return fail(cmd, r.error);
     warn(cmd, r.warnings);
@@ -312,12 +359,18 @@ int cmdRadiometryApply(int argc, char** argv) {
         check = relativeErrors(regions, &r.reflectance, limit);
         if (!check.ok) return fail(cmd, a.value("--check") + ": " + check.error);
     }
-    if (!writeFloatTiff(outs.stagingPath(out), r.reflectance, &err) ||
-        (a.has("--uncertainty") && !writeFloatTiff(outs.stagingPath(a.value("--uncertainty")), r.uncertainty, &err)) ||
+    auto writeFloat = [&](const std::string& path, const cv::Mat& m) {
+        if (geo.valid && !plain && isTiff(path)) return writeGeoTiff(path, m, geo, &err, true, NAN);
+        return writeFloatTiff(path, m, &err);
+    };
+    if (!writeFloat(outs.stagingPath(out), r.reflectance) ||
+        (a.has("--uncertainty") && !writeFloat(outs.stagingPath(a.value("--uncertainty")), r.uncertainty)) ||
         (a.has("--table") && !writeRelativeErrorCsv(outs.stagingPath(a.value("--table")), check, &err)))
         return fail(cmd, outs.unstaged(err));
     if (int rc = commitOutputs(cmd, outs)) return rc;
-    if (!quiet(a)) std::cerr << "radiometry apply: " << img.cols << "x" << img.rows << " -> " << out << "\n";
+    if (!quiet(a))
+        std::cerr << "radiometry apply: " << img.cols << "x" << img.rows << " -> " << out
+                  << (geo.valid && !plain ? " (georeferenced as the input)" : "") << "\n";
     if (a.has("--check")) {
         for (const auto& row : check.rows)
             std::cout << row.name << ": measured " << fx(row.measured, 4) << " %, image " << fx(row.simulated, 4)

@@ -80,7 +80,8 @@ private slots:
 
     void detectorRecoversTheTruth() {
         const QString out = path("centre.csv"), rep = path("detectors_report.csv");
-        const CliRun r = runCli({"calib", "detector", sim + "/detectors.csv", "--trigger", "50", "--noise-floor", "2", "-o", out,
+        const CliRun r = runCli({"calib", "detector", sim + "/detectors.csv", "--trigger", "50", "--rel-noise", "0.05", "--noise-floor", "2",
+                                 "-o", out,
                                  "--detectors", rep, "-q"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const auto got = rowOf(out), truth = rowOf(sim + "/detector_truth.csv");
@@ -88,7 +89,7 @@ private slots:
         QVERIFY(std::fabs(got.at("centre_n_m") - truth.at("centre_n_m")) <= 3 * got.at("sigma_n_m"));
         const auto table = lwb::core::readCsv(rep.toStdString());
         QCOMPARE(table.table.rows.size(), size_t(81 * 33));
-        QCOMPARE(cell(rep, 0, "status"), std::string("untriggered"));  // a corner of the array
+        QCOMPARE(cell(rep, 0, "status"), std::string("at_most"));  // a corner of the array: untriggered, censored
     }
 
     void waveformFindsTheFeature() {
@@ -125,6 +126,44 @@ private slots:
         QVERIFY(std::fabs(s1.at("mean") - 0.039) <= 0.0005 && std::fabs(s2.at("mean") - 0.007) <= 0.0005);
     }
 
+    // Issue 12: a field array with default settings; a trusted result exits 0 and reports the
+    // noise model it estimated; a doubtful one (here: a wrong noise model given) exits 3 with the
+    // outputs written and the reasons on stderr and in the CSV.
+    void detectorFieldArraysAndTheDoubtfulExitCode() {
+        QString dir;
+        for (int seed = 1; seed < 40 && dir.isEmpty(); ++seed) {
+            const QString d = path(QString("field%1").arg(seed));
+            QVERIFY(runCli({"simulate", "calib", d, "--seed", QString::number(seed), "--field-case", "-q"}).exitCode == 0);
+            // A full report: every one of the 17 x 9 detectors has an energy.
+            const auto csv = lwb::core::readCsv((d + "/detectors.csv").toStdString());
+            bool full = csv.ok && csv.table.rows.size() == 153;
+            for (const auto& row : csv.table.rows) full = full && !row[csv.table.column("energy")].empty();
+            if (full) dir = d;
+        }
+        QVERIFY(!dir.isEmpty());
+        const QString out = path("field_centre.csv"), rep = path("field_detectors.csv");
+        const CliRun r = runCli({"calib", "detector", dir + "/detectors.csv", "-o", out, "--detectors", rep});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.err.contains("noise estimated from the residuals"), qPrintable(r.err));
+        QCOMPARE(cell(out, 0, "noise_source"), std::string("data"));
+        QCOMPARE(cell(out, 0, "doubtful"), std::string("0"));
+        const auto c = rowOf(out), t = rowOf(dir + "/detector_truth.csv");
+        QVERIFY(std::fabs(c.at("noise_floor") / t.at("noise_floor") - 1) < 0.15);
+        const double de = c.at("centre_e_m") - t.at("centre_e_m"), dn = c.at("centre_n_m") - t.at("centre_n_m");
+        QVERIFY2(std::hypot(de, dn) <= c.at("ellipse95_major_m") * 3.4 / 2.45, qPrintable(QString::number(std::hypot(de, dn))));
+        QVERIFY(readAll(rep).startsWith("id,e_m,n_m,h_m,energy,status,reason,model,residual,bound,sigma\n"));
+        // The old default noise (5 % of the energy, no floor), given: doubtful, exit 3, written.
+        const QString bad = path("doubtful_centre.csv");
+        const CliRun d = runCli({"calib", "detector", dir + "/detectors.csv", "--rel-noise", "0.05", "-o", bad});
+        QCOMPARE(d.exitCode, 3);
+        QVERIFY2(d.err.contains("doubtful: chi2/dof"), qPrintable(d.err));
+        QCOMPARE(cell(bad, 0, "doubtful"), std::string("1"));
+        QVERIFY(cell(bad, 0, "doubts").find("chi2/dof") != std::string::npos);
+        QCOMPARE(cell(bad, 0, "noise_source"), std::string("given"));
+        // --scale-chi2 belongs to a given noise model.
+        QCOMPARE(runCli({"calib", "detector", dir + "/detectors.csv", "--scale-chi2"}).exitCode, 2);
+    }
+
     void badInputsFailCleanly() {
         // Malformed detector CSV: exit 1, file and line named, nothing written.
         QVERIFY(writeText(path("bad_det.csv"), "id,e,n,energy\nA,0,0,10\nB,5,5,NaN\n"));
@@ -136,7 +175,7 @@ private slots:
         QVERIFY(writeText(path("few.csv"), "id,e,n,energy\nA,0,0,10\nB,5,0,20\nC,0,5,15\nD,5,5,30\n"));
         r = runCli({"calib", "detector", path("few.csv"), "-o", path("never2.csv")});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.contains("usable detectors"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("detectors with a measurement"), qPrintable(r.err));
         QVERIFY(!QFile::exists(path("never2.csv")));
         // Singular geometry: a nadir beam 1 (its azimuth correction moves nothing).
         QVERIFY(writeText(path("nadir.json"), "{\"beams\": [{\"id\": 1, \"alpha_deg\": 0, \"beta_deg\": 90},"

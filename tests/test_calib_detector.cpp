@@ -15,6 +15,8 @@ using namespace lwb::core::calib;
 namespace {
 DetectorFitParams matching(const sim::DetectorSimParams& sp) {
     DetectorFitParams p;
+    p.model = SurfaceModel::Elliptical;
+    p.noise = NoiseSource::Given;
     p.triggerThreshold = sp.triggerThreshold;
     p.relativeNoise = sp.relativeNoise;
     p.noiseFloor = sp.noiseFloor;
@@ -113,13 +115,16 @@ private slots:
             for (size_t i = 0; i < r.detectors.size(); ++i) {
                 const auto& o = r.detectors[i];
                 const auto& d = s.array.detectors[i];
+                // Censored by default: a saturated detector says "at least", an untriggered one "at most".
                 if (d.saturated == 1) {
                     ++sawSaturated;
-                    QCOMPARE(int(o.status), int(DetectorStatus::Saturated));
+                    QCOMPARE(int(o.status), int(DetectorStatus::AtLeast));
                     QVERIFY(!o.reason.empty());
+                    QCOMPARE(o.bound, sp.saturationLevel);
                 } else if (d.triggered == 0) {
-                    QCOMPARE(int(o.status), int(DetectorStatus::Untriggered));
+                    QCOMPARE(int(o.status), int(DetectorStatus::AtMost));
                     QVERIFY(!o.reason.empty());
+                    QCOMPARE(o.bound, sp.triggerThreshold);
                 } else {
                     QCOMPARE(int(o.status), int(DetectorStatus::Used));
                     QVERIFY(o.reason.empty());
@@ -144,6 +149,8 @@ private slots:
         DetectorFitParams p;
         p.triggerThreshold = 2;
         p.saturationLevel = 80;  // the detector at (0, 0) sees 85.5
+        p.noise = NoiseSource::Given;
+        p.censor = false;  // set aside, each with its reason
         p.relativeNoise = 0;
         p.noiseFloor = 0.01;
         const DetectorFitResult r = fitDetectorArray(a, p);
@@ -174,14 +181,22 @@ private slots:
             const double e = i % 3 * 5.0, n = i / 3 * 5.0;
             a.detectors.push_back(det("d" + std::to_string(i), e, n, 100 * std::exp(-0.5 * ((e - 4) * (e - 4) + (n - 3) * (n - 3)) / 16)));
         }
-        const DetectorFitResult r = fitDetectorArray(a, {});
+        DetectorFitParams e;
+        e.model = SurfaceModel::Elliptical;
+        const DetectorFitResult r = fitDetectorArray(a, e);
         QVERIFY(!r.ok);
-        QVERIFY2(r.error.find("only 6 usable detectors") != std::string::npos, r.error.c_str());
+        QVERIFY2(r.error.find("only 6 detectors with a measurement") != std::string::npos, r.error.c_str());
         QVERIFY2(r.error.find("at least 7") != std::string::npos, r.error.c_str());
-        // The circular model without background has 4 parameters: six detectors determine it.
+        // The circular model without background has 4 parameters: six detectors determine it, and
+        // the default (Auto) chooses it for six.
+        const DetectorFitResult ra = fitDetectorArray(a, {});
+        QVERIFY2(ra.ok, ra.error.c_str());
+        QCOMPARE(int(ra.modelUsed), int(SurfaceModel::Circular));
+        QCOMPARE(ra.covariance.rows(), 4);
         DetectorFitParams c;
         c.model = SurfaceModel::Circular;
         c.fitBackground = false;
+        c.noise = NoiseSource::Given;
         c.relativeNoise = 0;
         c.noiseFloor = 0.01;
         const DetectorFitResult rc = fitDetectorArray(a, c);

@@ -188,11 +188,80 @@ private slots:
         QVERIFY2(measureRegionDn(img, {}, &regions, &err), err.c_str());
         QCOMPARE(regions[0].dn, 12000.0);
         QCOMPARE(regions[0].pixels, 400);
+        // The saturated pixel is masked from the mean (per-pixel linear range) and counted.
+        QCOMPARE(regions[1].pixelsOutOfRange, 1);
+        QCOMPARE(regions[1].pixels, 299);
+        QCOMPARE(regions[1].pixelsTotal, 300);
+        QCOMPARE(regions[1].dn, 30000.0);
+        // Without the mask it is only counted, and pulls the mean.
+        ReflectanceFitParams noMask;
+        noMask.maskOutOfRangePixels = false;
+        QVERIFY2(measureRegionDn(img, noMask, &regions, &err), err.c_str());
         QCOMPARE(regions[1].pixelsOutOfRange, 1);
         QVERIFY(std::fabs(regions[1].dn - (299 * 30000.0 + 64000) / 300) < 1e-9);
         regions[1].rect = cv::Rect(190, 90, 20, 20);  // leaves the image
         QVERIFY(!measureRegionDn(img, {}, &regions, &err));
         QVERIFY2(err.find("B") != std::string::npos && err.find("leaves") != std::string::npos, err.c_str());
+    }
+
+    // Issue 12: a panel with some pixels at 65535 (a glint) but an in-range mean. The linear-range
+    // test is per pixel: the glint is masked and counted, K and B come out of the clean pixels
+    // (K within 0.05 % of the truth); a panel left with too few pixels is left out, with the reason.
+    void partlySaturatedPanelIsMaskedPerPixel() {
+        const double kTrue = 1.0 / 700, bTrue = -0.8;  // reflectance % = K·DN + B
+        const double refl[] = {5, 20, 35, 50, 65, 80};
+        cv::Mat img(120, 6 * 50, CV_16UC1, cv::Scalar(500));
+        sim::Rng rng(1212);
+        std::vector<Region> regions;
+        for (int i = 0; i < 6; ++i) {
+            const double dn = (refl[i] - bTrue) / kTrue;
+            const cv::Rect rect(i * 50 + 5, 10, 40, 40);
+            for (int y = rect.y; y < rect.y + rect.height; ++y)
+                for (int x = rect.x; x < rect.x + rect.width; ++x)
+                    img.at<uint16_t>(y, x) = cv::saturate_cast<uint16_t>(dn + rng.normal(0, 30));
+            Region r;
+            r.name = "panel " + std::to_string(i + 1);
+            r.reflectance = refl[i];
+            r.rect = rect;
+            regions.push_back(r);
+        }
+        // Panel 4 (DN ≈ 35 560): a glint of 10 × 12 pixels at 65535; its mean stays in range.
+        img(cv::Rect(3 * 50 + 15, 20, 10, 12)).setTo(65535);
+        // Panel 6 (DN ≈ 56 560): 90 % of it saturated, too few pixels left to trust.
+        img(cv::Rect(5 * 50 + 5, 10, 40, 36)).setTo(65535);
+        std::string err;
+        std::vector<Region> measured = regions;
+        QVERIFY2(measureRegionDn(img, {}, &measured, &err), err.c_str());
+        QCOMPARE(measured[3].pixelsOutOfRange, 120);
+        QCOMPARE(measured[3].pixels, 1600 - 120);
+        QCOMPARE(measured[5].pixelsOutOfRange, 1440);
+        const ReflectanceFitResult r = fitReflectance(measured, {});
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.pixelsMasked, 120LL + 1440LL);
+        QCOMPARE(r.regionsExcluded, 1);
+        QVERIFY(r.regions[3].used);
+        QVERIFY(r.regions[3].note.find("120 of 1600 pixels") != std::string::npos);
+        QVERIFY(!r.regions[5].used);
+        QVERIFY2(r.regions[5].note.find("only 160 of 1600 pixels") != std::string::npos, r.regions[5].note.c_str());
+        QCOMPARE(r.fit.n, 5);
+        qInfo("K %.9g (truth %.9g, %.4f %%), B %.5f (truth %.5f)", r.fit.k, kTrue, 100 * (r.fit.k / kTrue - 1), r.fit.b, bTrue);
+        QVERIFY(std::fabs(r.fit.k / kTrue - 1) <= 5e-4);
+        // Before: region means with the glint averaged in, and the old region-mean test only.
+        ReflectanceFitParams old;
+        old.maskOutOfRangePixels = false;
+        old.excludeOutOfRange = true;
+        std::vector<Region> unmasked = regions;
+        QVERIFY2(measureRegionDn(img, old, &unmasked, &err), err.c_str());
+        const ReflectanceFitResult before = fitReflectance(unmasked, old);
+        QVERIFY2(before.ok, before.error.c_str());
+        qInfo("unmasked: K %.9g (%.3f %% from the truth)", before.fit.k, 100 * (before.fit.k / kTrue - 1));
+        QVERIFY(std::fabs(before.fit.k / kTrue - 1) > 5e-4);  // the glint does shift K
+        // The per-region report carries the pixel counts.
+        const QString p = path("regions_out.csv");
+        QVERIFY2(writeRegionFitCsv(p.toStdString(), measured, r, &err), err.c_str());
+        const QByteArray csv = lwbtest::readAll(p);
+        QVERIFY(csv.startsWith("name,dn,reflectance,predicted,residual,used,pixels,pixels_masked,note\n"));
+        QVERIFY(csv.contains(",1,1480,120,"));
     }
 
     void applyWritesAFloatTiffAndCountsOutOfRange() {

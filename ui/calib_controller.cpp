@@ -341,7 +341,8 @@ QString validateCalibParams(const CalibParams& p) {
 
 QJsonObject calibParamsToJson(const CalibParams& p) {
     QJsonObject d;
-    d["model"] = p.detector.model == SurfaceModel::Circular ? "circular" : "elliptical";
+    d["model"] = surfaceModelName(p.detector.model);
+    d["noise"] = p.detector.noise == NoiseSource::Given ? "given" : "data";
     d["fit_background"] = p.detector.fitBackground;
     d["background"] = p.detector.background;
     d["trigger"] = p.detector.triggerThreshold;
@@ -377,7 +378,9 @@ bool calibParamsFromJson(const QJsonObject& o, CalibParams* out, QString* error)
     CalibParams p;
     JsonReader r{"detector", error};
     const QJsonObject d = o["detector"].toObject();
-    r.choice(d, "model", &p.detector.model, {{"elliptical", SurfaceModel::Elliptical}, {"circular", SurfaceModel::Circular}});
+    r.choice(d, "model", &p.detector.model,
+             {{"auto", SurfaceModel::Auto}, {"elliptical", SurfaceModel::Elliptical}, {"circular", SurfaceModel::Circular}});
+    r.choice(d, "noise", &p.detector.noise, {{"data", NoiseSource::FromData}, {"given", NoiseSource::Given}});
     r.boolean(d, "fit_background", &p.detector.fitBackground);
     r.num(d, "background", &p.detector.background);
     r.num(d, "trigger", &p.detector.triggerThreshold);
@@ -610,20 +613,9 @@ bool CalibController::exportDetectorReport(const QString& path, QString* error) 
 
 bool CalibController::exportCentre(const QString& path, QString* error) const {
     if (!m_run.hasDetector || !m_run.detector.ok) return fail(error, "no detector fit to export");
-    const DetectorFitResult& r = m_run.detector;
-    const auto& s = r.surface;
-    const auto& e = r.centreEllipse;
-    const std::string csv =
-        "centre_e_m,centre_n_m,sigma_e_m,sigma_n_m,cov_en_m2,ellipse_major_m,ellipse_minor_m,ellipse_deg,lat_deg,lon_deg,"
-        "h_m,amplitude,amplitude_sd,sigma_major_m,sigma_major_sd_m,sigma_minor_m,sigma_minor_sd_m,orientation_deg,"
-        "background,used,dof,chi2,rms_residual,iterations\n" +
-        fx(r.centreE, 4) + "," + fx(r.centreN, 4) + "," + fx(e.sigmaE, 4) + "," + fx(e.sigmaN, 4) + "," + gx(e.covEN) + "," +
-        fx(e.semiMajor, 4) + "," + fx(e.semiMinor, 4) + "," + fx(e.orientationRad / kDeg, 3) + "," + fx(r.centreLatDeg, 9) +
-        "," + fx(r.centreLonDeg, 9) + "," + fx(r.centreH, 3) + "," + gx(s.amplitude) + "," + gx(r.amplitudeSd) + "," +
-        fx(s.sigmaMajor, 4) + "," + fx(r.sigmaMajorSd, 4) + "," + fx(s.sigmaMinor, 4) + "," + fx(r.sigmaMinorSd, 4) + "," +
-        fx(s.orientationRad / kDeg, 3) + "," + gx(s.background) + "," + std::to_string(r.used) + "," + std::to_string(r.dof) +
-        "," + gx(r.chi2) + "," + gx(r.rmsResidual) + "," + std::to_string(r.iterations) + "\n";
-    return writeText(path, csv, error);
+    std::string err;
+    if (!writeDetectorCentreCsv(path.toStdString(), m_run.detector, &err)) return fail(error, err);
+    return true;
 }
 
 bool CalibController::exportPointing(const QString& path, QString* error) const {

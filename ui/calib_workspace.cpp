@@ -488,12 +488,15 @@ void CalibWorkspace::buildPanel(QWidget* panel) {
     auto* df = new QFormLayout(dg);
     df->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     m_surfaceModel = new QComboBox(dg);
-    m_surfaceModel->addItems({tr("Elliptical (7 parameters)"), tr("Circular (5 parameters)")});
+    m_surfaceModel->addItems({tr("Elliptical (7 parameters)"), tr("Circular (5 parameters)"),
+                              tr("Auto (elliptical from 10 measured detectors)")});
     m_fitBackground = new QCheckBox(tr("Fit the background"), dg);
     m_background = spin(dg, -1e9, 1e9, 0, 2, {}, tr("Background held fixed when it is not fitted (energy unit)"));
     m_trigger = spin(dg, 0, 1e12, 0, 2, {}, tr("Energies at or below this count as untriggered (energy unit)"));
     m_saturation = spin(dg, 0, 1e12, 0, 2, {}, tr("Energies at or above this count as saturated (0 = no level)"));
     m_saturation->setSpecialValueText(tr("none"));
+    m_noiseFromData = new QCheckBox(tr("Estimate the noise from the array"), dg);
+    m_noiseFromData->setToolTip(tr("Floor and relative term from the fit's residuals; off: the noise given below"));
     m_relNoise = new ParamSlider(tr("Relative noise"), 0, 0.5, 0.05, 3, false, {}, dg);
     m_relNoise->setToolTipText(tr("Energy noise σ as a fraction of the model energy"));
     m_noiseFloor = spin(dg, 0, 1e12, 0, 2, {}, tr("Additive energy noise σ (energy unit)"));
@@ -503,6 +506,7 @@ void CalibWorkspace::buildPanel(QWidget* panel) {
     df->addRow(tr("Fixed background"), m_background);
     df->addRow(tr("Trigger threshold"), m_trigger);
     df->addRow(tr("Saturation level"), m_saturation);
+    df->addRow(m_noiseFromData);
     df->addRow(m_relNoise);
     df->addRow(tr("Noise floor"), m_noiseFloor);
     df->addRow(m_detScaleChi2);
@@ -561,7 +565,7 @@ void CalibWorkspace::buildPanel(QWidget* panel) {
 
     for (QComboBox* c : {m_surfaceModel, m_pointingModel})
         connect(c, &QComboBox::currentIndexChanged, this, [this] { paramsFromWidgets(); });
-    for (QCheckBox* c : {m_fitBackground, m_detScaleChi2, m_solveRange, m_fixRelative, m_ptScaleChi2})
+    for (QCheckBox* c : {m_fitBackground, m_noiseFromData, m_detScaleChi2, m_solveRange, m_fixRelative, m_ptScaleChi2})
         connect(c, &QCheckBox::toggled, this, [this] { paramsFromWidgets(); });
     for (QDoubleSpinBox* s : {m_background, m_trigger, m_saturation, m_noiseFloor, m_sigmaH, m_sigmaV, m_sigmaRange, m_sigmaAtt,
                               m_sigmaOrbit, m_incidence, m_thredH, m_smooth, m_minSep, m_dt})
@@ -608,6 +612,7 @@ void CalibWorkspace::openDemo() {
     // The detector fit's noise model is set to the simulator's (5 % of the energy, floor 2), as
     // the simulated control points come with their own noise model (the pointing defaults).
     CalibParams p = m_controller->params();
+    p.detector.noise = NoiseSource::Given;
     p.detector.relativeNoise = 0.05;
     p.detector.noiseFloor = 2;
     m_controller->setParams(p);
@@ -638,7 +643,10 @@ void CalibWorkspace::showInputs() {
 void CalibWorkspace::widgetsFromParams() {
     m_loading = true;
     const CalibParams& p = m_controller->params();
-    m_surfaceModel->setCurrentIndex(p.detector.model == SurfaceModel::Circular ? 1 : 0);
+    m_surfaceModel->setCurrentIndex(p.detector.model == SurfaceModel::Circular ? 1 : p.detector.model == SurfaceModel::Auto ? 2 : 0);
+    m_noiseFromData->setChecked(p.detector.noise == NoiseSource::FromData);
+    m_relNoise->setEnabled(p.detector.noise == NoiseSource::Given);
+    m_noiseFloor->setEnabled(p.detector.noise == NoiseSource::Given);
     m_fitBackground->setChecked(p.detector.fitBackground);
     m_background->setValue(p.detector.background);
     m_background->setEnabled(!p.detector.fitBackground);
@@ -668,7 +676,11 @@ void CalibWorkspace::widgetsFromParams() {
 void CalibWorkspace::paramsFromWidgets() {
     if (m_loading) return;
     CalibParams p = m_controller->params();
-    p.detector.model = m_surfaceModel->currentIndex() == 1 ? SurfaceModel::Circular : SurfaceModel::Elliptical;
+    const int model = m_surfaceModel->currentIndex();
+    p.detector.model = model == 1 ? SurfaceModel::Circular : model == 2 ? SurfaceModel::Auto : SurfaceModel::Elliptical;
+    p.detector.noise = m_noiseFromData->isChecked() ? NoiseSource::FromData : NoiseSource::Given;
+    m_relNoise->setEnabled(p.detector.noise == NoiseSource::Given);
+    m_noiseFloor->setEnabled(p.detector.noise == NoiseSource::Given);
     p.detector.fitBackground = m_fitBackground->isChecked();
     m_background->setEnabled(!p.detector.fitBackground);
     p.detector.background = m_background->value();
@@ -736,7 +748,7 @@ void CalibWorkspace::showDetector(const CalibRun& run) {
         if (std::isfinite(d.energy)) emax = std::max(emax, d.energy);
     if (!(emax > 0)) emax = 1;
     const Grid g = gridOf(a);
-    QVector<double> ux, uy, sx, sy;
+    QVector<double> ux, uy, sx, sy, bx, by;
     std::vector<DetectorStatus> status(a.detectors.size(), DetectorStatus::Used);
     if (r.ok || r.detectors.size() == a.detectors.size())
         for (size_t i = 0; i < r.detectors.size(); ++i) status[i] = r.detectors[i].status;
@@ -757,7 +769,10 @@ void CalibWorkspace::showDetector(const CalibRun& run) {
             uy << d.n;
             continue;
         }
-        if (status[i] != DetectorStatus::Used) {
+        if (status[i] == DetectorStatus::AtLeast || status[i] == DetectorStatus::AtMost) {
+            bx << d.e;
+            by << d.n;
+        } else if (status[i] != DetectorStatus::Used) {
             sx << d.e;
             sy << d.n;
         }
@@ -782,8 +797,12 @@ void CalibWorkspace::showDetector(const CalibRun& run) {
         }
     scatter(p, tr("untriggered (no energy)"), QCPScatterStyle(QCPScatterStyle::ssDisc, kGrey, kGrey, 2.5))->setData(ux, uy);
     if (!sx.isEmpty())
-        scatter(p, tr("set aside (threshold / saturation)"), QCPScatterStyle(QCPScatterStyle::ssCross, QPen(kRed, 1.6), Qt::NoBrush, 8))
+        scatter(p, tr("set aside (outlier, or censoring off)"), QCPScatterStyle(QCPScatterStyle::ssCross, QPen(kRed, 1.6), Qt::NoBrush, 8))
             ->setData(sx, sy);
+    if (!bx.isEmpty())
+        scatter(p, tr("in the fit as a bound (threshold / saturation)"),
+                QCPScatterStyle(QCPScatterStyle::ssPlus, QPen(QColor(230, 140, 0), 1.6), Qt::NoBrush, 8))
+            ->setData(bx, by);
     if (r.ok) {
         const GaussSurface& s = r.surface;
         setEllipse(ellipseCurve(p, tr("fitted footprint 1σ"), QPen(QColor(0, 200, 255), 1.6)), s.e0, s.n0, s.sigmaMajor,
@@ -827,11 +846,12 @@ void CalibWorkspace::showDetector(const CalibRun& run) {
         const UncertaintyEllipse& e = r.centreEllipse;
         setEllipse(ellipseCurve(m_centrePlot, tr("1σ ellipse"), QPen(kBlue, 1.8)), 0, 0, 100 * e.semiMajor, 100 * e.semiMinor,
                    e.orientationRad);
-        setEllipse(ellipseCurve(m_centrePlot, tr("95 % ellipse (×2.4477)"), QPen(kBlue, 1.3, Qt::DashLine)), 0, 0,
-                   244.77 * e.semiMajor, 244.77 * e.semiMinor, e.orientationRad);
+        const double k95 = std::isfinite(r.centreEllipse95Scale) ? r.centreEllipse95Scale : 2.4477;
+        setEllipse(ellipseCurve(m_centrePlot, tr("95 % ellipse (×%1)").arg(num(k95, 3)), QPen(kBlue, 1.3, Qt::DashLine)), 0, 0,
+                   100 * k95 * e.semiMajor, 100 * k95 * e.semiMinor, e.orientationRad);
         scatter(m_centrePlot, tr("fitted centre"), QCPScatterStyle(QCPScatterStyle::ssCrossCircle, QPen(kBlue, 1.8), Qt::NoBrush, 11))
             ->setData({0.0}, {0.0});
-        double lim = 2.4477 * 100 * e.semiMajor * 1.5;
+        double lim = k95 * 100 * e.semiMajor * 1.5;
         if (truth) {
             const double dx = 100 * (run.data->detectorTruth.e0 - r.centreE), dy = 100 * (run.data->detectorTruth.n0 - r.centreN);
             scatter(m_centrePlot, tr("simulated centre"), QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(kGreen, 1.8), Qt::NoBrush, 10))
@@ -867,6 +887,9 @@ void CalibWorkspace::showDetector(const CalibRun& run) {
                     .arg(r.dof)
                     .arg(num(r.chi2, 1), QString::number(r.rmsResidual, 'g', 3))
                     .arg(r.iterations);
+        html += tr("<br><b>Noise</b> %1").arg(QString::fromStdString(r.noise.description).toHtmlEscaped());
+        for (const auto& d : r.doubts)
+            html += "<br><b style='color:#c03030'>" + tr("Doubtful: %1").arg(QString::fromStdString(d).toHtmlEscaped()) + "</b>";
         for (const auto& w : r.warnings) html += "<br><i>" + QString::fromStdString(w).toHtmlEscaped() + "</i>";
         // Convergence of the detector fit.
         QVector<double> x, y;

@@ -98,7 +98,7 @@ private:
     QTableWidget *m_statsTable, *m_paramTable, *m_rankTable;
     // Parameters.
     QComboBox *m_surfaceModel, *m_pointingModel, *m_colorMap;
-    QCheckBox *m_fitBackground, *m_detScaleChi2, *m_solveRange, *m_fixRelative, *m_ptScaleChi2, *m_showTruth;
+    QCheckBox *m_fitBackground, *m_noiseFromData, *m_detScaleChi2, *m_solveRange, *m_fixRelative, *m_ptScaleChi2, *m_showTruth;
     QDoubleSpinBox *m_background, *m_trigger, *m_saturation, *m_noiseFloor;
     ParamSlider* m_relNoise;
     QDoubleSpinBox *m_sigmaH, *m_sigmaV, *m_sigmaRange, *m_sigmaAtt, *m_sigmaOrbit;

@@ -424,7 +424,12 @@ bool RadiometryController::openImage(const QString& path, QString* error) {
     cancelMosaic();
     auto img = imageFrom(m, {});
     img->source = path;
-    emit status(tr("%1: %2×%3 px").arg(QFileInfo(path).fileName()).arg(m.cols).arg(m.rows));
+    if (!readGeoReference(path.toStdString(), &img->geo, &err)) img->geo = GeoReference{};  // no georeferencing
+    emit status(tr("%1: %2×%3 px%4")
+                    .arg(QFileInfo(path).fileName())
+                    .arg(m.cols)
+                    .arg(m.rows)
+                    .arg(img->geo.valid ? tr(", georeferenced") : QString()));
     setImage(img);
     return true;
 }

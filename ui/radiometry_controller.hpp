@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/common/feedback.hpp"
+#include "core/radiometry/geotiff.hpp"
 #include "core/radiometry/mosaic.hpp"
 #include "core/radiometry/reflectance.hpp"
 
@@ -55,6 +56,7 @@ struct RadiometryImage {
     std::vector<core::radiometry::PairRegistration> pairs;  ///< mosaic pairs (when mosaicked)
     std::vector<std::string> warnings;
     double demoK = NAN, demoB = NAN;  ///< demo: the simulated line V_REF = K·V_DN + B
+    core::radiometry::GeoReference geo;  ///< a GeoTIFF's georeferencing (ground coordinates, m)
 };
 
 /// One run of measure → fit → apply → check.

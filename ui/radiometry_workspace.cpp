@@ -390,6 +390,10 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
             const cv::Mat& d = m_controller->image().display;
             if (x < 0 || y < 0 || x >= d.cols || y >= d.rows) return;
             QString t = tr("Pixel (%1, %2): %3 DN").arg(x).arg(y).arg(d.at<float>(y, x), 0, 'f', 0);
+            if (const GeoReference& geo = m_controller->image().geo; geo.valid) {
+                const cv::Point2d g = pixelCentreToMap(geo, x, y);
+                t += tr(" · ground E %1 m, N %2 m").arg(g.x, 0, 'f', 3).arg(g.y, 0, 'f', 3);
+            }
             const ApplyResult& a = m_controller->run().apply;
             if (a.ok && a.reflectance.size() == d.size()) {
                 t += tr(" · reflectance %1 %").arg(a.reflectance.at<float>(y, x), 0, 'f', 3);
@@ -731,6 +735,16 @@ void RadiometryWorkspace::showImage() {
                                          .arg(std::isfinite(img.demoK)
                                                   ? tr(" · simulated line K = %1 %/DN, B = %2 %").arg(img.demoK).arg(img.demoB)
                                                   : QString()));
+    if (img.geo.valid && !img.dn.empty()) {
+        // Ground coordinates of the georeferenced image (GeoTIFF): its corners' pixel centres.
+        const cv::Point2d tl = pixelCentreToMap(img.geo, 0, 0), br = pixelCentreToMap(img.geo, img.dn.cols - 1, img.dn.rows - 1);
+        m_readout->setText(tr("Georeferenced: pixel %1 m; top-left pixel at E %2, N %3 m; bottom-right at E %4, N %5 m")
+                               .arg(std::hypot(img.geo.transform[1], img.geo.transform[4]), 0, 'g', 4)
+                               .arg(tl.x, 0, 'f', 3)
+                               .arg(tl.y, 0, 'f', 3)
+                               .arg(br.x, 0, 'f', 3)
+                               .arg(br.y, 0, 'f', 3));
+    }
     QString mi;
     for (const auto& pr : img.pairs)
         mi += tr("frames %1–%2: %3/%4 inliers, RMS %5 px<br>")

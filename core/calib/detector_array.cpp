@@ -143,6 +143,9 @@ std::string validate(const DetectorFitParams& p) {
     if (!(p.noiseFloor >= 0 && std::isfinite(p.noiseFloor))) return "noise floor must be >= 0";
     if (p.recommendedDetectors < 0 || p.recommendedDetectors > 100000) return "recommended detectors must be 0..100000";
     if (p.maxIterations < 1 || p.maxIterations > 10000) return "LM iterations must be within 1..10000";
+    if (!(p.outlierSigma == 0 || (p.outlierSigma >= 3 && p.outlierSigma <= 1e6))) return "outlier limit must be 0 (off) or within 3..1e6 sigma";
+    if (!(p.chi2Probability >= 0 && p.chi2Probability <= 0.5)) return "chi2 probability must be within 0..0.5";
+    if (!(p.maxAxisRatio >= 1 && p.maxAxisRatio <= 1e6)) return "largest plausible axis ratio must be within 1..1e6";
     return {};
 }
 
@@ -163,12 +166,24 @@ UncertaintyEllipse ellipseFromCovariance(double varE, double varN, double covEN)
     return u;
 }
 
+const char* surfaceModelName(SurfaceModel m) {
+    switch (m) {
+        case SurfaceModel::Auto: return "auto";
+        case SurfaceModel::Elliptical: return "elliptical";
+        case SurfaceModel::Circular: return "circular";
+    }
+    return "?";
+}
+
 const char* detectorStatusName(DetectorStatus s) {
     switch (s) {
         case DetectorStatus::Used: return "used";
         case DetectorStatus::Untriggered: return "untriggered";
         case DetectorStatus::Saturated: return "saturated";
         case DetectorStatus::NoEnergy: return "no_energy";
+        case DetectorStatus::AtLeast: return "at_least";
+        case DetectorStatus::AtMost: return "at_most";
+        case DetectorStatus::Outlier: return "outlier";
     }
     return "?";
 }
@@ -186,8 +201,14 @@ Shape shapeOf(double a, double b, double c) {
     return {u.semiMajor, u.semiMinor, u.orientationRad};
 }
 
-struct Point {
-    double de, dn, energy;
+// One detector in the fit: a measurement, or a bound (censored: "at least" / "at most" value).
+enum class Kind { Exact, AtLeast, AtMost };
+struct Obs {
+    double de, dn, value;
+    Kind kind;
+    size_t index;      // into the array
+    double sigma = 1;  // noise σ (energy unit) of this pass
+    double count = 1;  // detectors this term stands for (identical far "at most" bounds merged)
 };
 
 // Parameter layout: [A, de0, dn0, a, (b, c,) (B)] with de0, dn0 relative to the reference point.
@@ -207,6 +228,226 @@ void unpack(const Layout& L, const Eigen::VectorXd& p, double fixedBg, double* A
     *bg = L.background ? p(L.count() - 1) : fixedBg;
 }
 
+// −2 ln Φ(z) and the inverse Mills ratio φ(z)/Φ(z), accurate in both tails.
+void censoredTerm(double z, double* q, double* millsRatio) {
+    constexpr double kInvSqrt2Pi = 0.3989422804014327, kSqrtHalf = 0.7071067811865476;
+    if (z > 0) {
+        const double tail = 0.5 * std::erfc(z * kSqrtHalf);  // 1 − Φ(z)
+        *q = -2 * std::log1p(-tail);
+        *millsRatio = kInvSqrt2Pi * std::exp(-0.5 * z * z) / (1 - tail);
+    } else if (z > -30) {
+        const double cdf = 0.5 * std::erfc(-z * kSqrtHalf);
+        *q = -2 * std::log(cdf);
+        *millsRatio = kInvSqrt2Pi * std::exp(-0.5 * z * z) / cdf;
+    } else {  // asymptotic series of Φ(z) for z → −∞
+        const double z2 = z * z, series = 1 - 1 / z2 + 3 / (z2 * z2);
+        *q = z2 + std::log(2 * M_PI) + 2 * std::log(-z) - 2 * std::log(series);
+        *millsRatio = -z / series;
+    }
+}
+
+// Whitened residuals of the Gaussian surface: (model − energy)/σ for a measurement, and
+// √(−2 ln P(bound statement)) for a censored detector (its normal likelihood as a square).
+struct SurfaceProblem {
+    const std::vector<Obs>* obs = nullptr;
+    Layout L;
+    double fixedBg = 0;
+    double robustC = 0;  // > 0: Cauchy loss c²·ln(1 + q/c²) on each term's q = r² (c in σ units)
+
+    double model(const Eigen::VectorXd& p, double de, double dn) const {
+        double A, x0, y0, a, b, c, bg;
+        unpack(L, p, fixedBg, &A, &x0, &y0, &a, &b, &c, &bg);
+        const double dx = de - x0, dy = dn - y0;
+        return A * std::exp(-0.5 * (a * dx * dx + 2 * b * dx * dy + c * dy * dy)) + bg;
+    }
+
+    bool evaluate(const Eigen::VectorXd& p, Eigen::VectorXd* r, Eigen::MatrixXd* J) const {
+        double A, x0, y0, a, b, c, bg;
+        unpack(L, p, fixedBg, &A, &x0, &y0, &a, &b, &c, &bg);
+        if (!(A > 0) || !(a > 0) || !(c > 0) || !(a * c - b * b > 0)) return false;
+        const int np = L.count();
+        const auto& o = *obs;
+        r->resize(static_cast<int>(o.size()));
+        if (J) J->resize(static_cast<int>(o.size()), np);
+        Eigen::RowVectorXd grad(np);
+        for (size_t k = 0; k < o.size(); ++k) {
+            const int i = static_cast<int>(k);
+            const double dx = o[k].de - x0, dy = o[k].dn - y0;
+            const double g = std::exp(-0.5 * (a * dx * dx + 2 * b * dx * dy + c * dy * dy));
+            const double m = A * g + bg, s = o[k].sigma;
+            grad(0) = g;
+            grad(1) = A * g * (a * dx + b * dy);
+            grad(2) = A * g * (b * dx + c * dy);
+            if (L.elliptical) {
+                grad(3) = -0.5 * A * g * dx * dx;
+                grad(4) = -A * g * dx * dy;
+                grad(5) = -0.5 * A * g * dy * dy;
+            } else {
+                grad(3) = -0.5 * A * g * (dx * dx + dy * dy);
+            }
+            if (L.background) grad(np - 1) = 1;
+            if (o[k].kind == Kind::Exact) {
+                (*r)(i) = (m - o[k].value) / s;
+                if (J) J->row(i) = grad / s;
+            } else {
+                // At least v: P = Φ((m − v)/σ); at most v: P = Φ((v − m)/σ).
+                const double sign = o[k].kind == Kind::AtLeast ? 1.0 : -1.0;
+                double q, lambda;
+                censoredTerm(sign * (m - o[k].value) / s, &q, &lambda);
+                const double rr = std::sqrt(std::max(q, 0.0));
+                (*r)(i) = rr;
+                if (J) J->row(i) = rr > 1e-150 ? Eigen::RowVectorXd(-lambda * sign / (s * rr) * grad) : Eigen::RowVectorXd::Zero(np);
+                if (o[k].count != 1) {
+                    const double w = std::sqrt(o[k].count);
+                    (*r)(i) *= w;
+                    if (J) J->row(i) *= w;
+                }
+            }
+            if (robustC > 0) {  // r' = ±√ρ(r²), dr'/dr = r / (r'·(1 + r²/c²))
+                const double rv = (*r)(i), q = rv * rv, c2 = robustC * robustC;
+                const double rp = std::copysign(std::sqrt(c2 * std::log1p(q / c2)), rv);
+                if (J && std::fabs(rv) > 1e-150) J->row(i) *= rv / (rp * (1 + q / c2));
+                (*r)(i) = rp;
+            }
+        }
+        return true;
+    }
+};
+
+LmOutcome solveSurface(const SurfaceProblem& sp, const Eigen::VectorXd& start, int maxIterations) {
+    LmProblem prob;
+    prob.parameters = sp.L.count();
+    prob.evaluate = [&sp](const Eigen::VectorXd& p, Eigen::VectorXd* r, Eigen::MatrixXd* J) { return sp.evaluate(p, r, J); };
+    LmOptions opt;
+    opt.maxIterations = maxIterations;
+    return levenbergMarquardt(prob, start, opt);
+}
+
+// Noise σ² = floor² + (rel·level)² from squared residuals u (leverage corrected, so E[u] = σ²)
+// at the model levels: maximum likelihood of the scale for each share t of the relative term,
+// t on a grid; the relative term is kept only when it raises the log-likelihood by more than
+// BIC's ½ ln n for its parameter.
+void estimateNoise(const std::vector<double>& u, const std::vector<double>& level, bool allowRelative, double* floor,
+                   double* rel) {
+    const size_t n = u.size();
+    double top = 0;
+    for (double l : level) top = std::max(top, l);
+    double uMax = 0;
+    for (double x : u) uMax = std::max(uMax, x);
+    const double tiny = 1e-30 * std::max({top * top, uMax, 1e-300});
+    auto profile = [&](double t, double* s2) {
+        double acc = 0, logw = 0;
+        for (size_t k = 0; k < n; ++k) {
+            const double f = top > 0 ? level[k] / top : 0;
+            const double w = (1 - t) + t * f * f;
+            acc += u[k] / w;
+            logw += std::log(w);
+        }
+        *s2 = std::max(acc / n, tiny);
+        return -0.5 * (logw + n * std::log(*s2));
+    };
+    double s2 = 0, bestT = 0;
+    const double l0 = profile(0, &s2);
+    double best = l0, bestS2 = s2;
+    if (allowRelative && top > 0 && n >= 4)
+        for (int i = 1; i <= 49; ++i) {
+            const double t = i / 50.0;
+            const double l = profile(t, &s2);
+            if (l > best) {
+                best = l;
+                bestT = t;
+                bestS2 = s2;
+            }
+        }
+    if (bestT > 0 && 2 * (best - l0) <= std::log(static_cast<double>(n))) {
+        bestT = 0;
+        profile(0, &bestS2);
+    }
+    *floor = std::sqrt(bestS2 * (1 - bestT));
+    *rel = top > 0 ? std::sqrt(bestS2 * bestT) / top : 0;
+}
+
+// Upper tail P(χ²_ν ≥ x) by the Wilson–Hilferty cube-root normal approximation.
+double chi2UpperTail(double x, int nu) {
+    if (nu <= 0 || !(x >= 0)) return NAN;
+    const double v = nu, h = 2.0 / (9 * v);
+    const double z = (std::cbrt(x / v) - (1 - h)) / std::sqrt(h);
+    return 0.5 * std::erfc(z / std::sqrt(2.0));
+}
+
+using P2 = Eigen::Vector2d;
+
+// Convex hull (Andrew's monotone chain), counter-clockwise, no repeated points.
+std::vector<P2> convexHull(std::vector<P2> pts) {
+    std::sort(pts.begin(), pts.end(), [](const P2& a, const P2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    if (pts.size() < 3) return pts;
+    auto cross = [](const P2& o, const P2& a, const P2& b) {
+        return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+    };
+    std::vector<P2> h(2 * pts.size());
+    size_t k = 0;
+    for (size_t i = 0; i < pts.size(); ++i) {
+        while (k >= 2 && cross(h[k - 2], h[k - 1], pts[i]) <= 0) --k;
+        h[k++] = pts[i];
+    }
+    for (size_t i = pts.size() - 1, t = k + 1; i-- > 0;) {
+        while (k >= t && cross(h[k - 2], h[k - 1], pts[i]) <= 0) --k;
+        h[k++] = pts[i];
+    }
+    h.resize(k - 1);
+    return h;
+}
+
+// Distance of p outside the convex hull of pts (0 inside or on it; NaN without points).
+double distanceOutsideHull(const std::vector<P2>& pts, const P2& p) {
+    const std::vector<P2> h = convexHull(pts);
+    if (h.empty()) return NAN;
+    if (h.size() == 1) return (p - h[0]).norm();
+    bool inside = h.size() >= 3;
+    double best = INFINITY;
+    for (size_t i = 0; i < h.size(); ++i) {
+        const P2& a = h[i];
+        const P2& b = h[(i + 1) % h.size()];
+        const P2 ab = b - a;
+        if ((ab.x() * (p.y() - a.y()) - ab.y() * (p.x() - a.x())) < 0) inside = false;
+        const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+        best = std::min(best, (p - (a + t * ab)).norm());
+        if (h.size() == 2) break;
+    }
+    return inside ? 0.0 : best;
+}
+
+// Distance of every point to its nearest other point (∞ when alone), by a sweep over east.
+std::vector<double> nearestNeighbourDistances(const std::vector<P2>& pts) {
+    std::vector<size_t> order(pts.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return pts[a].x() < pts[b].x(); });
+    std::vector<double> nn(pts.size(), INFINITY);
+    for (size_t i = 0; i < order.size(); ++i)
+        for (size_t j = i + 1; j < order.size(); ++j) {
+            const P2& a = pts[order[i]];
+            const P2& b = pts[order[j]];
+            if (b.x() - a.x() >= std::max(nn[order[i]], 0.0) && std::isfinite(nn[order[i]])) break;
+            const double d = (a - b).norm();
+            if (d <= 0) continue;
+            nn[order[i]] = std::min(nn[order[i]], d);
+            nn[order[j]] = std::min(nn[order[j]], d);
+        }
+    std::vector<double> finite;
+    for (double d : nn)
+        if (std::isfinite(d)) finite.push_back(d);
+    return finite;
+}
+
+// Median of a copy.
+double median(std::vector<double> v) {
+    if (v.empty()) return NAN;
+    const size_t m = v.size() / 2;
+    std::nth_element(v.begin(), v.begin() + m, v.end());
+    return v[m];
+}
+
 }  // namespace
 
 DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFitParams& params) {
@@ -216,10 +457,12 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
         return res;
     }
     const auto& det = array.detectors;
-    res.detectors.resize(det.size());
-    int untriggered = 0, saturated = 0, noEnergy = 0;
-    std::vector<size_t> used;
-    for (size_t i = 0; i < det.size(); ++i) {
+    const size_t nd = det.size();
+    res.detectors.resize(nd);
+    // 1. What each detector says: a measurement, "at least" (saturated), "at most" (untriggered), nothing.
+    bool anySatColumn = false;
+    for (const Detector& d : det) anySatColumn = anySatColumn || d.saturated >= 0;
+    for (size_t i = 0; i < nd; ++i) {
         const Detector& d = det[i];
         DetectorOutcome& o = res.detectors[i];
         const std::string en = formatDouble(d.energy, 6);
@@ -231,202 +474,384 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
         if (d.triggered == 0) {
             o.status = DetectorStatus::Untriggered;
             o.reason = "marked untriggered in the input";
-        } else if (!std::isfinite(d.energy)) {
-            o.status = DetectorStatus::NoEnergy;
-            o.reason = "no finite energy recorded";
         } else if (d.saturated == 1) {
             o.status = DetectorStatus::Saturated;
             o.reason = "marked saturated in the input";
+            o.bound = std::isfinite(d.energy) ? d.energy : params.saturationLevel > 0 ? params.saturationLevel : NAN;
+        } else if (!std::isfinite(d.energy)) {
+            o.status = DetectorStatus::NoEnergy;
+            o.reason = "no finite energy recorded";
         } else if (params.saturationLevel > 0 && d.energy >= params.saturationLevel) {
             o.status = DetectorStatus::Saturated;
             o.reason = "energy " + en + " >= saturation level " + formatDouble(params.saturationLevel, 6);
-        } else if (d.energy <= params.triggerThreshold) {
+            o.bound = params.saturationLevel;
+        } else if (params.triggerThreshold > 0 && d.energy <= params.triggerThreshold) {
             o.status = DetectorStatus::Untriggered;
             o.reason = "energy " + en + " <= trigger threshold " + formatDouble(params.triggerThreshold, 6);
         } else {
             o.status = DetectorStatus::Used;
-            used.push_back(i);
         }
-        if (o.status == DetectorStatus::Untriggered) ++untriggered;
-        if (o.status == DetectorStatus::Saturated) ++saturated;
-        if (o.status == DetectorStatus::NoEnergy) ++noEnergy;
     }
+    // A clip level nobody declared: the highest energy shared exactly by two or more detectors.
+    double maxExact = -INFINITY, minExact = INFINITY, minTriggered = INFINITY;
+    for (size_t i = 0; i < nd; ++i)
+        if (res.detectors[i].status == DetectorStatus::Used) {
+            maxExact = std::max(maxExact, det[i].energy);
+            minExact = std::min(minExact, det[i].energy);
+            if (det[i].triggered == 1) minTriggered = std::min(minTriggered, det[i].energy);
+        }
+    if (!anySatColumn && !(params.saturationLevel > 0) && std::isfinite(maxExact) && maxExact > 0) {
+        int atMax = 0;
+        for (size_t i = 0; i < nd; ++i) atMax += res.detectors[i].status == DetectorStatus::Used && det[i].energy == maxExact;
+        if (atMax >= 2) {
+            for (size_t i = 0; i < nd; ++i)
+                if (res.detectors[i].status == DetectorStatus::Used && det[i].energy == maxExact) {
+                    res.detectors[i].status = DetectorStatus::Saturated;
+                    res.detectors[i].reason = "shares the highest energy " + formatDouble(maxExact, 6) + " (clipped)";
+                    res.detectors[i].bound = maxExact;
+                }
+            res.warnings.push_back(std::to_string(atMax) + " detectors share the highest energy " + formatDouble(maxExact, 6) +
+                                   ": taken as saturated at that level (give the saturation level to decide otherwise)");
+            maxExact = -INFINITY;
+            for (size_t i = 0; i < nd; ++i)
+                if (res.detectors[i].status == DetectorStatus::Used) maxExact = std::max(maxExact, det[i].energy);
+        }
+    }
+    const double upperBound = params.triggerThreshold > 0 ? params.triggerThreshold
+                              : std::isfinite(minTriggered) ? minTriggered
+                                                            : minExact;
+    int untriggered = 0, saturated = 0, noEnergy = 0;
+    std::vector<Obs> obs;
+    for (size_t i = 0; i < nd; ++i) {
+        DetectorOutcome& o = res.detectors[i];
+        if (o.status == DetectorStatus::Saturated) {
+            ++saturated;
+            if (!std::isfinite(o.bound)) o.bound = maxExact;  // at least the brightest measurement
+            if (params.censor && std::isfinite(o.bound)) {
+                o.status = DetectorStatus::AtLeast;
+                o.reason += "; in the fit as at least " + formatDouble(o.bound, 6);
+            }
+        } else if (o.status == DetectorStatus::Untriggered) {
+            ++untriggered;
+            if (params.censor && std::isfinite(upperBound)) {
+                o.status = DetectorStatus::AtMost;
+                o.bound = upperBound;
+                o.reason += "; in the fit as at most " + formatDouble(upperBound, 6);
+            }
+        } else if (o.status == DetectorStatus::NoEnergy) {
+            ++noEnergy;
+        }
+        if (o.status == DetectorStatus::Used) obs.push_back({det[i].e, det[i].n, det[i].energy, Kind::Exact, i});
+        else if (o.status == DetectorStatus::AtLeast) obs.push_back({det[i].e, det[i].n, o.bound, Kind::AtLeast, i});
+        else if (o.status == DetectorStatus::AtMost) obs.push_back({det[i].e, det[i].n, o.bound, Kind::AtMost, i});
+    }
+    int nExact = 0, nLeast = 0;
+    for (const Obs& ob : obs) {
+        nExact += ob.kind == Kind::Exact;
+        nLeast += ob.kind == Kind::AtLeast;
+    }
+    // 2. The surface: Auto takes the elliptical one from 10 measurements (3 degrees of freedom left),
+    // else the circular one, without background below 7.
+    const int informative = nExact + nLeast;
     Layout L;
-    L.elliptical = params.model == SurfaceModel::Elliptical;
     L.background = params.fitBackground;
+    SurfaceModel model = params.model;
+    if (model == SurfaceModel::Auto) {
+        model = informative >= 10 ? SurfaceModel::Elliptical : SurfaceModel::Circular;
+        if (informative < 7) L.background = false;
+    }
+    L.elliptical = model == SurfaceModel::Elliptical;
+    res.modelUsed = model;
     const int np = L.count();
-    res.used = static_cast<int>(used.size());
-    if (res.used < np) {
-        res.error = "only " + std::to_string(res.used) + " usable detector" + (res.used == 1 ? "" : "s") + " (" +
-                    std::to_string(untriggered) + " untriggered, " + std::to_string(saturated) + " saturated, " +
-                    std::to_string(noEnergy) + " without energy, of " + std::to_string(det.size()) + ") for the " +
-                    std::to_string(np) + "-parameter Gaussian surface: at least " + std::to_string(np) + " are needed";
+    const double fixedBg = params.background;
+    res.used = static_cast<int>(obs.size());
+    // Auto leaves at least one degree of freedom (the noise is estimated from the residuals).
+    const int needed = params.model == SurfaceModel::Auto ? np + 1 : np;
+    if (informative < needed) {
+        res.error = "only " + std::to_string(informative) + " detector" + (informative == 1 ? "" : "s") +
+                    " with a measurement (" + std::to_string(untriggered) + " untriggered, " + std::to_string(saturated) +
+                    " saturated, " + std::to_string(noEnergy) + " without energy, of " + std::to_string(nd) + ") for the " +
+                    std::to_string(np) + "-parameter Gaussian surface: at least " + std::to_string(needed) + " are needed";
         return res;
     }
-    // Reference point and geometry check on the used detectors.
-    double maxE = -INFINITY, minE = INFINITY;
-    for (size_t i : used) {
-        maxE = std::max(maxE, det[i].energy);
-        minE = std::min(minE, det[i].energy);
-    }
-    const double bg0 = L.background ? std::min(0.0, minE) : params.background;
-    double sw = 0, re = 0, rn = 0;
-    for (size_t i : used) {
-        const double w = std::pow(std::max(det[i].energy - bg0, 0.0), 2);
-        sw += w;
-        re += w * det[i].e;
-        rn += w * det[i].n;
-    }
-    if (!(sw > 0)) {
-        res.error = "no usable detector has energy above the background";
-        return res;
-    }
-    re /= sw;
-    rn /= sw;
-    {
+    {  // geometry: the measured detectors must span two dimensions
         Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
-        double me = 0, mn = 0;
-        for (size_t i : used) {
-            me += det[i].e;
-            mn += det[i].n;
-        }
-        me /= used.size();
-        mn /= used.size();
-        for (size_t i : used) {
-            const Eigen::Vector2d d(det[i].e - me, det[i].n - mn);
-            s += d * d.transpose();
-        }
+        P2 mean = P2::Zero();
+        int n = 0;
+        for (const Obs& ob : obs)
+            if (ob.kind != Kind::AtMost) {
+                mean += P2(ob.de, ob.dn);
+                ++n;
+            }
+        mean /= n;
+        for (const Obs& ob : obs)
+            if (ob.kind != Kind::AtMost) {
+                const P2 d = P2(ob.de, ob.dn) - mean;
+                s += d * d.transpose();
+            }
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(s);
         if (!(es.eigenvalues()(0) > 1e-9 * std::max(1.0, es.eigenvalues()(1)))) {
-            res.error = "the " + std::to_string(res.used) +
-                        " usable detectors lie on one line: a 2D Gaussian surface is not determined across it";
+            res.error = "the " + std::to_string(informative) +
+                        " measured detectors lie on one line: a 2D Gaussian surface is not determined across it";
             return res;
         }
     }
-    std::vector<Point> pts;
-    pts.reserve(used.size());
-    for (size_t i : used) pts.push_back({det[i].e - re, det[i].n - rn, det[i].energy});
-    // Starting width: from log ratios of mid-level detectors (robust on a truncated footprint).
-    const double A0 = std::max(maxE - bg0, 1e-300);
-    std::vector<double> s2;
-    for (const auto& p : pts) {
-        const double f = (p.energy - bg0) / A0;
-        const double r2 = p.de * p.de + p.dn * p.dn;
-        if (f > 0.05 && f < 0.9 && r2 > 0) s2.push_back(r2 / (2 * std::log(1 / f)));
-    }
-    double sigma0 = 1.0;
-    if (s2.empty()) {
-        // Fallback width: the smallest detector spacing (sweep over points sorted by east, so a
-        // large array is not a quadratic scan).
-        std::vector<std::pair<double, double>> byE;
-        byE.reserve(pts.size());
-        for (const auto& p : pts) byE.emplace_back(p.de, p.dn);
-        std::sort(byE.begin(), byE.end());
-        double nn = INFINITY;
-        for (size_t i = 0; i < byE.size(); ++i)
-            for (size_t j = i + 1; j < byE.size() && byE[j].first - byE[i].first < nn; ++j) {
-                const double d = std::hypot(byE[j].first - byE[i].first, byE[j].second - byE[i].second);
-                if (d > 0) nn = std::min(nn, d);
-            }
-        if (std::isfinite(nn)) sigma0 = nn;
+    // 3. Starting point: background candidates (0 or the lowest energy, and the lower quartile),
+    // centre at the centroid of the brightest half, width from log ratios of mid-level detectors.
+    std::vector<double> vals;
+    double vmax = -INFINITY;
+    for (const Obs& ob : obs)
+        if (ob.kind != Kind::AtMost) {
+            vals.push_back(ob.value);
+            vmax = std::max(vmax, ob.value);
+        }
+    std::vector<double> bgStarts;
+    if (!L.background) {
+        bgStarts = {fixedBg};
     } else {
-        std::nth_element(s2.begin(), s2.begin() + s2.size() / 2, s2.end());
-        sigma0 = std::sqrt(s2[s2.size() / 2]);
+        std::vector<double> sorted = vals;
+        std::sort(sorted.begin(), sorted.end());
+        bgStarts = {std::min(0.0, sorted.front())};
+        const double q1 = sorted[sorted.size() / 4];
+        if (sorted.size() >= 20 && q1 - bgStarts[0] > 0.02 * (vmax - bgStarts[0])) bgStarts.push_back(q1);
     }
-    const double floorAbs = params.noiseFloor > 0 ? params.noiseFloor : 1e-3 * params.relativeNoise * A0;
-    const bool weighted = params.relativeNoise > 0 || params.noiseFloor > 0;
-    std::vector<double> sigma(pts.size(), 1.0);
-    auto setWeights = [&](const std::function<double(size_t)>& level) {
-        if (!weighted) return;
-        for (size_t k = 0; k < pts.size(); ++k) {
-            const double m = params.relativeNoise * std::max(level(k), 0.0);
-            sigma[k] = std::sqrt(floorAbs * floorAbs + m * m);
-        }
-    };
-    auto modelAt = [&](const Eigen::VectorXd& p, size_t k) {
-        double A, x0, y0, a, b, c, bg;
-        unpack(L, p, params.background, &A, &x0, &y0, &a, &b, &c, &bg);
-        const double dx = pts[k].de - x0, dy = pts[k].dn - y0;
-        return A * std::exp(-0.5 * (a * dx * dx + 2 * b * dx * dy + c * dy * dy)) + bg;
-    };
-    LmProblem prob;
-    prob.parameters = np;
-    prob.evaluate = [&](const Eigen::VectorXd& p, Eigen::VectorXd* r, Eigen::MatrixXd* J) {
-        double A, x0, y0, a, b, c, bg;
-        unpack(L, p, params.background, &A, &x0, &y0, &a, &b, &c, &bg);
-        if (!(A > 0) || !(a > 0) || !(c > 0) || !(a * c - b * b > 0)) return false;
-        r->resize(static_cast<int>(pts.size()));
-        if (J) J->resize(static_cast<int>(pts.size()), np);
-        for (size_t k = 0; k < pts.size(); ++k) {
-            const int i = static_cast<int>(k);
-            const double dx = pts[k].de - x0, dy = pts[k].dn - y0;
-            const double g = std::exp(-0.5 * (a * dx * dx + 2 * b * dx * dy + c * dy * dy));
-            const double m = A * g + bg;
-            const double w = 1.0 / sigma[k];
-            (*r)(i) = (m - pts[k].energy) * w;
-            if (!J) continue;
-            (*J)(i, 0) = g * w;
-            (*J)(i, 1) = A * g * (a * dx + b * dy) * w;
-            (*J)(i, 2) = A * g * (b * dx + c * dy) * w;
-            if (L.elliptical) {
-                (*J)(i, 3) = -0.5 * A * g * dx * dx * w;
-                (*J)(i, 4) = -A * g * dx * dy * w;
-                (*J)(i, 5) = -0.5 * A * g * dy * dy * w;
-            } else {
-                (*J)(i, 3) = -0.5 * A * g * (dx * dx + dy * dy) * w;
-            }
-            if (L.background) (*J)(i, np - 1) = w;
-        }
-        return true;
-    };
-    LmOptions opt;
-    opt.maxIterations = params.maxIterations;
-    LmOutcome best;
-    std::string lastFailure;  // why the starts failed, when none succeeds
-    // Multi-start over the width (a truncated footprint can mislead one start).
-    for (double f : {1.0, 0.5, 2.0}) {
-        Eigen::VectorXd p0(np);
-        const double s0 = sigma0 * f, a0 = 1.0 / (s0 * s0);
-        if (L.elliptical)
-            p0.head(6) << A0, 0, 0, a0, 0, a0;
-        else
-            p0.head(4) << A0, 0, 0, a0;
-        if (L.background) p0(np - 1) = bg0;
-        setWeights([&](size_t k) { return pts[k].energy; });
-        LmOutcome o = levenbergMarquardt(prob, p0, opt);
-        // Two re-weighting passes with the model instead of the noisy data.
-        for (int pass = 0; o.ok && weighted && pass < 2; ++pass) {
-            const Eigen::VectorXd pk = o.params;
-            setWeights([&](size_t k) { return modelAt(pk, k); });
-            LmOutcome o2 = levenbergMarquardt(prob, pk, opt);
-            if (!o2.ok) break;
-            o2.history.insert(o2.history.begin(), o.history.begin(), o.history.end() - 1);
-            o = o2;
-        }
-        if (!o.ok) lastFailure = o.error;
-        if (o.ok && (!best.ok || o.cost < best.cost)) best = o;
-    }
-    if (!best.ok) {
-        res.error = "Gaussian surface fit failed from every start (widths 0.5, 1 and 2 times the energy-weighted "
-                    "spread): " + (lastFailure.empty() ? std::string("the solver did not converge") : lastFailure);
+    const double refBg = bgStarts.back();
+    if (!(vmax > refBg)) {
+        res.error = "no detector has energy above the background";
         return res;
     }
-    // Keep the weights of the winning fit for the covariance.
-    if (weighted) {
-        const Eigen::VectorXd pk = best.params;
-        setWeights([&](size_t k) { return modelAt(pk, k); });
+    double re = 0, rn = 0, sw = 0;
+    {
+        const double half = refBg + 0.5 * (vmax - refBg);
+        for (const Obs& ob : obs)
+            if (ob.kind != Kind::AtMost && ob.value >= half) {
+                const double w = ob.value - half + 1e-12 * (vmax - refBg);
+                sw += w;
+                re += w * ob.de;
+                rn += w * ob.dn;
+            }
+        re /= sw;
+        rn /= sw;
+    }
+    for (Obs& ob : obs) {
+        ob.de -= re;
+        ob.dn -= rn;
+    }
+    auto startWidth = [&](double bg0) {
+        const double A0 = vmax - bg0;
+        std::vector<double> s2;
+        for (const Obs& ob : obs) {
+            if (ob.kind == Kind::AtMost) continue;
+            const double f = (ob.value - bg0) / A0, r2 = ob.de * ob.de + ob.dn * ob.dn;
+            if (f > 0.05 && f < 0.9 && r2 > 0) s2.push_back(r2 / (2 * std::log(1 / f)));
+        }
+        if (!s2.empty()) return std::sqrt(median(s2));
+        // Fallback: the smallest detector spacing.
+        std::vector<P2> pts;
+        for (const Obs& ob : obs) pts.emplace_back(ob.de, ob.dn);
+        const std::vector<double> nn = nearestNeighbourDistances(pts);
+        return nn.empty() ? 1.0 : *std::min_element(nn.begin(), nn.end());
+    };
+    SurfaceProblem sp;
+    sp.obs = &obs;
+    sp.L = L;
+    sp.fixedBg = fixedBg;
+    const bool given = params.noise == NoiseSource::Given;
+    const bool givenWeighted = given && (params.relativeNoise > 0 || params.noiseFloor > 0);
+    auto sigmaOf = [](double floor, double rel, double level) {
+        const double m = rel * std::max(level, 0.0);
+        return std::sqrt(floor * floor + m * m);
+    };
+    // A given relative noise without a floor: 0.1 % of it at the peak keeps zero and negative
+    // energies (background detectors) finite in the fit.
+    const double givenFloor =
+        params.noiseFloor > 0 ? params.noiseFloor : 1e-3 * params.relativeNoise * (vmax - refBg);
+    // First pass: a common σ of 5 % of the peak (only the censored terms feel its size).
+    for (Obs& ob : obs) ob.sigma = 0.05 * (vmax - refBg);
+    if (givenWeighted)
+        for (Obs& ob : obs) ob.sigma = std::max(sigmaOf(givenFloor, params.relativeNoise, ob.value), 1e-300);
+    sp.robustC = params.outlierSigma > 0 ? 3.0 : 0.0;
+    LmOutcome best;
+    std::string lastFailure;
+    for (double bg0 : bgStarts)
+        for (double f : {1.0, 0.5, 2.0}) {
+            Eigen::VectorXd p0(np);
+            const double s0 = startWidth(bg0) * f, a0 = 1.0 / (s0 * s0);
+            if (L.elliptical)
+                p0.head(6) << vmax - bg0, 0, 0, a0, 0, a0;
+            else
+                p0.head(4) << vmax - bg0, 0, 0, a0;
+            if (L.background) p0(np - 1) = bg0;
+            LmOutcome o = solveSurface(sp, p0, params.maxIterations);
+            if (!o.ok) lastFailure = o.error;
+            if (o.ok && (!best.ok || o.cost < best.cost)) best = o;
+        }
+    if (!best.ok) {
+        res.error = "Gaussian surface fit failed from every start (widths 0.5, 1 and 2 times the spread of the bright "
+                    "detectors): " + (lastFailure.empty() ? std::string("the solver did not converge") : lastFailure);
+        return res;
+    }
+    // The starts ran with a Cauchy loss, so that a few dead or faulty detectors cannot bend the
+    // surface; once more with σ scaled to the robust spread of the residuals, then plain least
+    // squares below after the inconsistent detectors are set aside.
+    if (sp.robustC > 0) {
+        std::vector<double> z;
+        for (size_t k = 0; k < obs.size(); ++k)
+            if (obs[k].kind == Kind::Exact)
+                z.push_back(std::fabs(obs[k].value - sp.model(best.params, obs[k].de, obs[k].dn)) / obs[k].sigma);
+        const double scale = 1.4826 * median(z);
+        if (scale > 0 && std::isfinite(scale) && !givenWeighted) {
+            for (Obs& ob : obs) ob.sigma *= scale;
+            LmOutcome o = solveSurface(sp, best.params, params.maxIterations);
+            if (o.ok) {
+                o.history.insert(o.history.begin(), best.history.begin(), best.history.end() - 1);
+                best = o;
+            }
+        }
+    }
+    // Untriggered detectors far from the footprint (the surface below 1e-12 of its peak there) all
+    // say the same about the background: one term standing for all of them keeps large arrays fast.
+    {
+        double A, x0, y0, a, b, c, bg;
+        unpack(L, best.params, fixedBg, &A, &x0, &y0, &a, &b, &c, &bg);
+        std::vector<Obs> kept;
+        Obs far{0, 0, 0, Kind::AtMost, 0};
+        far.count = 0;
+        double farG = INFINITY;
+        for (const Obs& ob : obs) {
+            const double g = (sp.model(best.params, ob.de, ob.dn) - bg) / A;
+            if (ob.kind != Kind::AtMost || g > 1e-12 || (far.count > 0 && ob.value != far.value)) {
+                kept.push_back(ob);
+                continue;
+            }
+            if (g < farG) {
+                const double n = far.count;
+                far = ob;
+                far.count = n;
+                farG = g;
+            }
+            far.count += 1;
+        }
+        if (far.count > 1) {
+            kept.push_back(far);
+            obs.swap(kept);
+            LmOutcome o = solveSurface(sp, best.params, params.maxIterations);
+            if (o.ok) {
+                o.history.insert(o.history.begin(), best.history.begin(), best.history.end() - 1);
+                best = o;
+            }
+        }
+    }
+    // 4. Noise model and outliers, iterated with refits: residuals → (floor, relative) → weights.
+    const int maxOutliers = params.outlierSigma > 0 ? std::max(1, informative / 5) : 0;
+    double floorN = givenFloor, relN = params.relativeNoise;
+    int noiseDof = 0;
+    auto leverage = [&](const Eigen::MatrixXd& J) {
+        Eigen::VectorXd h = Eigen::VectorXd::Zero(J.rows());
+        Eigen::MatrixXd cov;
+        double rc = 0;
+        if (covarianceFromJacobian(J, 1e-14, &cov, &rc))
+            for (int i = 0; i < J.rows(); ++i) h(i) = J.row(i) * cov * J.row(i).transpose();
+        return h;
+    };
+    for (int pass = 0; pass < 12; ++pass) {
+        const Eigen::VectorXd p = best.params;
+        Eigen::VectorXd h = leverage(best.jacobian);
+        // Outliers are judged on the robust fit in the first pass (all of them at once), then one
+        // at a time on the least-squares refits; the noise and the refits are plain least squares.
+        sp.robustC = 0;
+        bool removed = false;
+        if (params.outlierSigma > 0) {
+            std::vector<double> z(obs.size(), 0.0), zExact;
+            for (size_t k = 0; k < obs.size(); ++k) {
+                const double m = sp.model(p, obs[k].de, obs[k].dn);
+                const double lev = std::sqrt(1 - std::min(h(static_cast<int>(k)), 0.99));
+                if (obs[k].kind == Kind::Exact) {
+                    z[k] = std::fabs(obs[k].value - m) / (obs[k].sigma * lev);
+                    zExact.push_back(z[k]);
+                } else if (obs[k].kind == Kind::AtLeast) {
+                    z[k] = (obs[k].value - m) / obs[k].sigma;
+                } else {
+                    z[k] = (m - obs[k].value) / obs[k].sigma;
+                }
+            }
+            const double scale = std::max(1.4826 * median(zExact), 1.0);
+            std::vector<size_t> order;
+            for (size_t k = 0; k < obs.size(); ++k)
+                if (z[k] / scale > params.outlierSigma) order.push_back(k);
+            std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return z[i] > z[j]; });
+            if (pass > 0 && order.size() > 1) order.erase(order.begin() + 1, order.end());
+            std::vector<bool> drop(obs.size(), false);
+            for (size_t k : order) {
+                if (res.outliers >= maxOutliers || informative - res.outliers - 1 < np + 2) break;
+                const Obs& ob = obs[k];
+                DetectorOutcome& o = res.detectors[ob.index];
+                o.status = DetectorStatus::Outlier;
+                o.reason = (ob.kind == Kind::Exact ? "energy " + formatDouble(ob.value, 6)
+                            : ob.kind == Kind::AtLeast ? "saturated at " + formatDouble(ob.value, 6)
+                                                       : "untriggered (at most " + formatDouble(ob.value, 6) + ")") +
+                           " against " + formatDouble(sp.model(p, ob.de, ob.dn), 6) + " from the fit: " +
+                           formatFixed(z[k] / scale, 1) + " robust sigma off, set aside (dead or faulty detector?)";
+                ++res.outliers;
+                drop[k] = true;
+                removed = true;
+            }
+            if (removed) {
+                std::vector<Obs> kept;
+                std::vector<double> hk;
+                for (size_t k = 0; k < obs.size(); ++k)
+                    if (!drop[k]) {
+                        kept.push_back(obs[k]);
+                        hk.push_back(h(static_cast<int>(k)));
+                    }
+                obs.swap(kept);
+                h = Eigen::Map<Eigen::VectorXd>(hk.data(), static_cast<int>(hk.size()));
+            }
+        }
+        // Noise from the remaining measurements' residuals (leverage corrected).
+        std::vector<double> u, level;
+        for (size_t k = 0; k < obs.size(); ++k) {
+            if (obs[k].kind != Kind::Exact) continue;
+            const double m = sp.model(p, obs[k].de, obs[k].dn), e = obs[k].value - m;
+            u.push_back(e * e / (1 - std::min(h(static_cast<int>(k)), 0.99)));
+            level.push_back(std::max(m, 0.0));
+        }
+        noiseDof = static_cast<int>(u.size()) - np;
+        double newFloor = floorN, newRel = relN;
+        if (!givenWeighted && noiseDof >= 1) estimateNoise(u, level, !given, &newFloor, &newRel);
+        if (!givenWeighted && noiseDof < 1) {  // nothing to estimate from: keep the first pass's σ
+            newFloor = obs.front().sigma;
+            newRel = 0;
+        }
+        const double A = std::max(p(0), 1e-300);
+        newFloor = std::max(newFloor, 1e-9 * A);
+        const bool noiseSettled = pass > 0 && std::fabs(newFloor - floorN) <= 0.01 * floorN + 1e-12 * A &&
+                                  std::fabs(newRel - relN) <= 0.01 * relN + 1e-6;
+        floorN = newFloor;
+        relN = newRel;
+        for (Obs& ob : obs) ob.sigma = std::max(sigmaOf(floorN, relN, sp.model(p, ob.de, ob.dn)), 1e-300);
+        LmOutcome o = solveSurface(sp, best.params, params.maxIterations);
+        if (!o.ok) break;
+        o.history.insert(o.history.begin(), best.history.begin(), best.history.end() - 1);
+        best = o;
+        if (noiseSettled && !removed && pass >= 2) break;
+    }
+    // The final weights at the final model, and the fit's figures.
+    for (Obs& ob : obs) ob.sigma = std::max(sigmaOf(floorN, relN, sp.model(best.params, ob.de, ob.dn)), 1e-300);
+    {
         Eigen::VectorXd r;
         Eigen::MatrixXd J;
-        prob.evaluate(pk, &r, &J);
-        best.residuals = r;
-        best.jacobian = J;
-        best.cost = r.squaredNorm();
+        if (sp.evaluate(best.params, &r, &J)) {
+            best.residuals = r;
+            best.jacobian = J;
+            best.cost = r.squaredNorm();
+        }
     }
     if (!best.converged) res.warnings.push_back("the surface fit stopped at the iteration limit before converging");
     const Eigen::VectorXd& p = best.params;
     GaussSurface& s = res.surface;
     double A, x0, y0, a, b, c, bg;
-    unpack(L, p, params.background, &A, &x0, &y0, &a, &b, &c, &bg);
+    unpack(L, p, fixedBg, &A, &x0, &y0, &a, &b, &c, &bg);
     s.amplitude = A;
     s.e0 = x0 + re;
     s.n0 = y0 + rn;
@@ -441,30 +866,76 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     res.centreE = s.e0;
     res.centreN = s.n0;
     res.iterations = static_cast<int>(best.history.size()) - 1;
-    for (const auto& h : best.history) res.costPerIteration.push_back(h.cost);
-    res.dof = res.used - np;
+    for (const auto& hst : best.history) res.costPerIteration.push_back(hst.cost);
+    res.used = 0;
     res.chi2 = best.cost;
+    res.chi2Exact = 0;
+    res.censored = 0;
+    for (size_t k = 0; k < obs.size(); ++k) {
+        if (obs[k].kind == Kind::Exact) {
+            ++res.used;
+            res.chi2Exact += best.residuals(static_cast<int>(k)) * best.residuals(static_cast<int>(k));
+        } else {
+            res.censored += static_cast<int>(obs[k].count);
+        }
+    }
+    res.dof = res.used - np;
+    // Noise model used.
+    NoiseModelUsed& nm = res.noise;
+    nm.source = params.noise;
+    nm.floor = floorN;
+    nm.relative = relN;
+    nm.dof = givenWeighted ? 0 : std::max(noiseDof, 0);
+    if (givenWeighted)
+        nm.description = "given: floor " + formatDouble(floorN, 4) + ", relative " + formatDouble(relN, 4);
+    else if (noiseDof >= 1)
+        nm.description = std::string(given ? "unweighted, scale from the residuals" : "estimated from the residuals") + " of " +
+                         std::to_string(res.used) + " measurements (" + std::to_string(noiseDof) +
+                         " dof): floor " + formatDouble(floorN, 4) + ", relative " + formatDouble(relN, 4);
+    else
+        nm.description = "no degrees of freedom to estimate the noise: floor taken as 5 % of the peak, " + formatDouble(floorN, 4);
     res.paramNames = L.elliptical ? std::vector<std::string>{"amplitude", "e0_m", "n0_m", "a_per_m2", "b_per_m2", "c_per_m2"}
                                   : std::vector<std::string>{"amplitude", "e0_m", "n0_m", "a_per_m2"};
     if (L.background) res.paramNames.push_back("background");
+    // Detectors that see the footprint (informative): above the background by 3 noise σ and 1 % of the peak.
+    const double sigmaBg = sigmaOf(floorN, relN, bg);
+    std::vector<P2> seeingPts, arrayPts;
+    for (size_t i = 0; i < nd; ++i) {
+        arrayPts.emplace_back(det[i].e, det[i].n);
+        const DetectorOutcome& o = res.detectors[i];
+        const bool sees = (o.status == DetectorStatus::Used && det[i].energy - bg > std::max(3 * sigmaBg, 0.01 * A)) ||
+                          o.status == DetectorStatus::AtLeast;
+        if (sees) seeingPts.emplace_back(det[i].e, det[i].n);
+    }
+    res.seeing = static_cast<int>(seeingPts.size());
     Eigen::MatrixXd cov;
     double rcond = 0;
     if (!covarianceFromJacobian(best.jacobian, 1e-12, &cov, &rcond)) {
-        res.error = "the detector geometry does not determine the Gaussian surface (reciprocal condition " +
-                    formatDouble(rcond, 3) + "): too few detectors around the footprint";
+        res.error = "the detectors do not determine the Gaussian surface (reciprocal condition " + formatDouble(rcond, 3) + ")";
+        if (res.seeing <= 9) res.error += ": only " + std::to_string(res.seeing) + " detectors see the footprint";
         return res;
     }
     double scale = 1;
-    if (!weighted || params.scaleByChi2) {
+    const bool scaled = given && (!givenWeighted || params.scaleByChi2);
+    if (scaled && givenWeighted) {
         if (res.dof > 0) {
-            scale = res.chi2 / res.dof;
+            scale = res.chi2Exact / res.dof;
         } else {
             scale = NAN;
-            res.warnings.push_back("as many parameters as detectors: the fit passes through every detector and its "
+            res.warnings.push_back("as many parameters as measurements: the fit passes through every detector and its "
                                    "uncertainty cannot be estimated");
         }
     }
     res.covariance = cov * scale;
+    // 95 % scale: χ²₂ with a known noise; with a noise scale estimated from ν dof, 2·F(2, ν).
+    const bool estimatedScale = !givenWeighted || params.scaleByChi2;
+    const int nu = estimatedScale ? std::max(res.dof, 0) : 0;
+    if (!estimatedScale)
+        res.centreEllipse95Scale = std::sqrt(-2 * std::log(0.05));
+    else if (nu >= 1)
+        res.centreEllipse95Scale = std::sqrt(nu * (std::pow(0.05, -2.0 / nu) - 1));
+    else
+        res.centreEllipse95Scale = NAN;
     const Eigen::MatrixXd& C = res.covariance;
     res.centreEllipse = ellipseFromCovariance(C(1, 1), C(2, 2), C(1, 2));
     res.amplitudeSd = std::sqrt(C(0, 0));
@@ -472,53 +943,106 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
         const int ia = 3, ib = L.elliptical ? 4 : -1, ic = L.elliptical ? 5 : 3;
         Eigen::MatrixXd G(2, np);
         G.setZero();
-        const double h = 1e-6 * std::max(std::fabs(a), std::fabs(c));
+        const double hh = 1e-6 * std::max(std::fabs(a), std::fabs(c));
         auto widths = [&](double aa, double bb, double cc) {
             const Shape t = shapeOf(aa, bb, cc);
             return Eigen::Vector2d(t.sigmaMajor, t.sigmaMinor);
         };
         if (L.elliptical) {
-            G.col(ia) = (widths(a + h, b, c) - widths(a - h, b, c)) / (2 * h);
-            G.col(ib) = (widths(a, b + h, c) - widths(a, b - h, c)) / (2 * h);
-            G.col(ic) = (widths(a, b, c + h) - widths(a, b, c - h)) / (2 * h);
+            G.col(ia) = (widths(a + hh, b, c) - widths(a - hh, b, c)) / (2 * hh);
+            G.col(ib) = (widths(a, b + hh, c) - widths(a, b - hh, c)) / (2 * hh);
+            G.col(ic) = (widths(a, b, c + hh) - widths(a, b, c - hh)) / (2 * hh);
         } else {
-            G.col(ia) = (widths(a + h, 0, a + h) - widths(a - h, 0, a - h)) / (2 * h);
+            G.col(ia) = (widths(a + hh, 0, a + hh) - widths(a - hh, 0, a - hh)) / (2 * hh);
         }
         const Eigen::Matrix2d cw = G * C * G.transpose();
         res.sigmaMajorSd = sqrtVariance(cw(0, 0));
         res.sigmaMinorSd = sqrtVariance(cw(1, 1));
     }
-    // Per-detector model and residual; consistency of the set-aside detectors.
+    // Per-detector model, residual and σ; consistency of the set-aside detectors.
     double ss = 0;
-    for (size_t i = 0; i < det.size(); ++i) {
+    int nss = 0;
+    for (size_t i = 0; i < nd; ++i) {
         DetectorOutcome& o = res.detectors[i];
         o.model = evalSurface(s, det[i].e, det[i].n);
+        if (o.status == DetectorStatus::Used || o.status == DetectorStatus::AtLeast || o.status == DetectorStatus::AtMost)
+            o.sigma = sigmaOf(floorN, relN, o.model);
         if (o.status == DetectorStatus::Used) {
             o.residual = det[i].energy - o.model;
             ss += o.residual * o.residual;
+            ++nss;
         } else if (o.status == DetectorStatus::Untriggered && params.triggerThreshold > 0 &&
                    o.model > 2 * params.triggerThreshold) {
             res.warnings.push_back("detector " + det[i].id + " is untriggered but the fit predicts " +
                                    formatDouble(o.model, 4) + ", twice the trigger threshold");
-        } else if (o.status == DetectorStatus::Saturated && params.saturationLevel > 0 &&
-                   o.model < 0.8 * params.saturationLevel) {
+        } else if (o.status == DetectorStatus::Saturated && std::isfinite(o.bound) && o.model < 0.8 * o.bound) {
             res.warnings.push_back("detector " + det[i].id + " is saturated but the fit predicts only " +
                                    formatDouble(o.model, 4));
         }
     }
-    res.rmsResidual = std::sqrt(ss / res.used);
-    if (res.used < params.recommendedDetectors)
-        res.warnings.push_back("only " + std::to_string(res.used) + " usable detectors (paper 002 asks for at least " +
+    res.rmsResidual = nss ? std::sqrt(ss / nss) : NAN;
+    if (res.outliers > 0)
+        res.warnings.push_back(std::to_string(res.outliers) + " detector" + (res.outliers == 1 ? "" : "s") +
+                               " inconsistent with the fit by more than " + formatDouble(params.outlierSigma, 3) +
+                               " robust sigma set aside (see the detector report)");
+    if (res.seeing < params.recommendedDetectors)
+        res.warnings.push_back("only " + std::to_string(res.seeing) + " detectors see the footprint (paper 002 asks for at least " +
                                std::to_string(params.recommendedDetectors) + ")");
-    double emin = INFINITY, emax = -INFINITY, nmin = INFINITY, nmax = -INFINITY;
-    for (size_t i : used) {
-        emin = std::min(emin, det[i].e);
-        emax = std::max(emax, det[i].e);
-        nmin = std::min(nmin, det[i].n);
-        nmax = std::max(nmax, det[i].n);
+    // 5. Doubts: a centre was found, but is it to be trusted?
+    auto doubt = [&](const std::string& why) {
+        res.doubtful = true;
+        res.doubts.push_back(why);
+    };
+    const double radius = 2 * s.sigmaMajor;  // 1/e² radius along the major axis
+    // The array's extent (bounding-box diagonal) and its typical spacing (median nearest neighbour).
+    double extent = 0, spacing = NAN;
+    {
+        double e0 = INFINITY, e1 = -INFINITY, n0 = INFINITY, n1 = -INFINITY;
+        for (const auto& d : det) {
+            e0 = std::min(e0, d.e);
+            e1 = std::max(e1, d.e);
+            n0 = std::min(n0, d.n);
+            n1 = std::max(n1, d.n);
+        }
+        extent = std::hypot(e1 - e0, n1 - n0);
+        spacing = median(nearestNeighbourDistances(arrayPts));
     }
-    if (s.e0 < emin || s.e0 > emax || s.n0 < nmin || s.n0 > nmax)
-        res.warnings.push_back("the fitted centre lies outside the usable detectors (extrapolated)");
+    const P2 centre(s.e0, s.n0);
+    res.centreOutsideSeeingM = distanceOutsideHull(seeingPts, centre);
+    res.centreOutsideArrayM = distanceOutsideHull(arrayPts, centre);
+    if (given && givenWeighted && res.dof >= 1) {
+        res.chi2Probability = chi2UpperTail(res.chi2Exact, res.dof);
+        if (res.chi2Probability < 0.5 * params.chi2Probability || res.chi2Probability > 1 - 0.5 * params.chi2Probability)
+            doubt("chi2/dof " + formatDouble(res.chi2Exact / res.dof, 4) + " on " + std::to_string(res.dof) +
+                  " dof is far from 1 (P = " + formatDouble(res.chi2Probability, 3) +
+                  "): the given noise model does not describe these detectors");
+    }
+    if (res.seeing == 0)
+        doubt("no detector sees the footprint (none rises 3 noise sigma above the background)");
+    else if (res.centreOutsideSeeingM > radius)
+        doubt("the centre lies " + formatFixed(res.centreOutsideSeeingM, 2) + " m outside the detectors that see the footprint "
+              "(more than its 1/e2 radius " + formatFixed(radius, 2) + " m)");
+    if (res.centreOutsideArrayM > radius)
+        doubt("the centre lies " + formatFixed(res.centreOutsideArrayM, 2) + " m outside the array (more than the footprint's "
+              "1/e2 radius " + formatFixed(radius, 2) + " m)");
+    const double k95 = res.centreEllipse95Scale;
+    if (!std::isfinite(k95) || !std::isfinite(res.centreEllipse.semiMajor))
+        doubt("the centre's uncertainty cannot be estimated (no degrees of freedom left)");
+    else if (2 * k95 * res.centreEllipse.semiMajor > extent)
+        doubt("the 95 % ellipse (" + formatFixed(2 * k95 * res.centreEllipse.semiMajor, 2) + " m across) is larger than the array (" +
+              formatFixed(extent, 2) + " m)");
+    if (4 * s.sigmaMajor > 2 * extent)
+        doubt("the fitted footprint (1/e2 diameter " + formatFixed(4 * s.sigmaMajor, 2) + " m) is more than twice as wide "
+              "as the array (" + formatFixed(extent, 2) + " m): its width is not determined");
+    if (std::isfinite(spacing) && 4 * s.sigmaMinor < spacing)
+        doubt("the fitted footprint (1/e2 diameter " + formatFixed(4 * s.sigmaMinor, 2) +
+              " m across its minor axis) is narrower than the detector spacing (" + formatFixed(spacing, 2) + " m)");
+    if (s.sigmaMajor > params.maxAxisRatio * s.sigmaMinor)
+        doubt("the fitted footprint's axis ratio " + formatFixed(s.sigmaMajor / s.sigmaMinor, 2) + " exceeds " +
+              formatDouble(params.maxAxisRatio, 3) + ": not a laser footprint's shape (a dead detector under the peak?)");
+    if (!(A > 3 * sigmaBg))
+        doubt("the footprint's peak " + formatDouble(A, 4) + " is less than 3 noise sigma (" + formatDouble(sigmaBg, 4) +
+              ") above the background");
     // Height at the centre: plane through the detector heights (all surveyed detectors).
     {
         std::vector<const Detector*> hs;
@@ -574,16 +1098,44 @@ bool writeDetectorCsv(const std::string& path, const DetectorArray& array, std::
     return writeFileAtomic(path, s, error);
 }
 
+bool writeDetectorCentreCsv(const std::string& path, const DetectorFitResult& r, std::string* error) {
+    auto fx = [](double v, int d) { return std::isfinite(v) ? formatFixed(v, d) : std::string(); };
+    auto gx = [](double v) { return std::isfinite(v) ? formatDouble(v, 10) : std::string(); };
+    const auto& s = r.surface;
+    const auto& e = r.centreEllipse;
+    const double k = r.centreEllipse95Scale;
+    std::string doubts;
+    for (const auto& d : r.doubts) doubts += (doubts.empty() ? "" : "; ") + d;
+    const std::string csv =
+        "centre_e_m,centre_n_m,sigma_e_m,sigma_n_m,cov_en_m2,ellipse_major_m,ellipse_minor_m,ellipse_deg,ellipse95_scale,"
+        "ellipse95_major_m,ellipse95_minor_m,lat_deg,lon_deg,h_m,amplitude,amplitude_sd,sigma_major_m,sigma_major_sd_m,"
+        "sigma_minor_m,sigma_minor_sd_m,orientation_deg,background,model,used,censored,outliers,seeing,dof,chi2,chi2_exact,"
+        "rms_residual,iterations,noise_source,noise_floor,noise_relative,noise_dof,doubtful,doubts\n" +
+        fx(r.centreE, 4) + "," + fx(r.centreN, 4) + "," + fx(e.sigmaE, 4) + "," + fx(e.sigmaN, 4) + "," + gx(e.covEN) + "," +
+        fx(e.semiMajor, 4) + "," + fx(e.semiMinor, 4) + "," + fx(e.orientationRad / kDeg, 3) + "," + fx(k, 4) + "," +
+        fx(k * e.semiMajor, 4) + "," + fx(k * e.semiMinor, 4) + "," + fx(r.centreLatDeg, 9) + "," + fx(r.centreLonDeg, 9) + "," +
+        fx(r.centreH, 3) + "," + gx(s.amplitude) + "," + gx(r.amplitudeSd) + "," + fx(s.sigmaMajor, 4) + "," +
+        fx(r.sigmaMajorSd, 4) + "," + fx(s.sigmaMinor, 4) + "," + fx(r.sigmaMinorSd, 4) + "," +
+        fx(s.orientationRad / kDeg, 3) + "," + gx(s.background) + "," + surfaceModelName(r.modelUsed) + "," +
+        std::to_string(r.used) + "," + std::to_string(r.censored) + "," + std::to_string(r.outliers) + "," +
+        std::to_string(r.seeing) + "," + std::to_string(r.dof) + "," + gx(r.chi2) + "," + gx(r.chi2Exact) + "," +
+        gx(r.rmsResidual) + "," + std::to_string(r.iterations) + "," +
+        (r.noise.source == NoiseSource::Given ? "given" : "data") + "," + gx(r.noise.floor) + "," + gx(r.noise.relative) + "," +
+        std::to_string(r.noise.dof) + "," + (r.doubtful ? "1" : "0") + "," + csvEscape(doubts) + "\n";
+    return writeFileAtomic(path, csv, error);
+}
+
 bool writeDetectorReportCsv(const std::string& path, const DetectorArray& array, const DetectorFitResult& r,
                             std::string* error) {
-    std::string s = "id,e_m,n_m,h_m,energy,status,reason,model,residual\n";
+    std::string s = "id,e_m,n_m,h_m,energy,status,reason,model,residual,bound,sigma\n";
     auto f = [](double v, int d) { return std::isfinite(v) ? formatFixed(v, d) : std::string(); };
     auto g = [](double v) { return std::isfinite(v) ? formatDouble(v, 8) : std::string(); };
     for (size_t i = 0; i < array.detectors.size() && i < r.detectors.size(); ++i) {
         const Detector& d = array.detectors[i];
         const DetectorOutcome& o = r.detectors[i];
         s += csvEscape(d.id) + "," + f(d.e, 3) + "," + f(d.n, 3) + "," + f(d.h, 3) + "," + g(d.energy) + "," +
-             detectorStatusName(o.status) + "," + csvEscape(o.reason) + "," + g(o.model) + "," + g(o.residual) + "\n";
+             detectorStatusName(o.status) + "," + csvEscape(o.reason) + "," + g(o.model) + "," + g(o.residual) + "," +
+             g(o.bound) + "," + g(o.sigma) + "\n";
     }
     return writeFileAtomic(path, s, error);
 }

@@ -22,9 +22,11 @@ std::string regionName(const Region& r, size_t i) {
 // count, and how many fall outside [lo, hi]. Only the rectangle is converted to double.
 struct RectStats {
     double sum = 0, sum2 = 0;
-    int n = 0, outside = 0;
+    int n = 0, outside = 0, finite = 0;  // n: pixels summed
 };
-bool rectStats(const cv::Mat& image, const cv::Rect& rect, double lo, double hi, RectStats* st, std::string* error) {
+// mask: leave the pixels outside [lo, hi] out of the sums (they are still counted in `outside`).
+bool rectStats(const cv::Mat& image, const cv::Rect& rect, double lo, double hi, RectStats* st, std::string* error,
+               bool mask = false) {
     cv::Mat roi;
     try {
         image(rect).convertTo(roi, CV_64F);
@@ -37,10 +39,13 @@ bool rectStats(const cv::Mat& image, const cv::Rect& rect, double lo, double hi,
         for (int x = 0; x < roi.cols; ++x) {
             const double v = row[x];
             if (!std::isfinite(v)) continue;
+            ++st->finite;
+            const bool out = v < lo || v > hi;
+            if (out) ++st->outside;
+            if (out && mask) continue;
             st->sum += v;
             st->sum2 += v * v;
             ++st->n;
-            if (v < lo || v > hi) ++st->outside;
         }
     }
     return true;
@@ -133,6 +138,8 @@ bool readRegionCsv(const std::string& path, std::vector<Region>* out, std::strin
 std::string validate(const ReflectanceFitParams& p) {
     if (!std::isfinite(p.dnMin) || !std::isfinite(p.dnMax) || !(p.dnMin < p.dnMax)) return "the DN range needs min < max";
     if (!(p.spectrometerPct >= 0 && p.spectrometerPct < 100)) return "spectrometer uncertainty must be within 0..100 %";
+    if (p.minRegionPixels < 1 || p.minRegionPixels > 1000000000) return "minimum region pixels must be >= 1";
+    if (!(p.minRegionFraction >= 0 && p.minRegionFraction <= 1)) return "minimum region fraction must be within 0..1";
     return {};
 }
 
@@ -153,15 +160,16 @@ bool measureRegionDn(const cv::Mat& image, const ReflectanceFitParams& params, s
             return false;
         }
         RectStats st;
-        if (!rectStats(image, r.rect, params.dnMin, params.dnMax, &st, error)) return false;
-        if (st.n == 0) {
+        if (!rectStats(image, r.rect, params.dnMin, params.dnMax, &st, error, params.maskOutOfRangePixels)) return false;
+        if (st.finite == 0) {
             *error = regionName(r, i) + ": no finite pixels inside the rectangle";
             return false;
         }
-        r.dn = st.sum / st.n;
-        r.dnStd = st.n > 1 ? sqrtVariance((st.sum2 - st.sum * st.sum / st.n) / (st.n - 1)) : 0;
+        r.dn = st.n > 0 ? st.sum / st.n : NAN;
+        r.dnStd = st.n > 1 ? sqrtVariance((st.sum2 - st.sum * st.sum / st.n) / (st.n - 1)) : st.n == 1 ? 0 : NAN;
         r.pixels = st.n;
         r.pixelsOutOfRange = st.outside;
+        r.pixelsTotal = st.finite;
     }
     return true;
 }
@@ -188,6 +196,28 @@ ReflectanceFitResult fitReflectance(const std::vector<Region>& regions, const Re
             res.error = regionName(r, i) + ": the measured reflectance is not a finite number";
             return res;
         }
+        const bool measured = r.pixelsTotal > 0;
+        if (measured && params.maskOutOfRangePixels) {
+            res.pixelsMasked += r.pixelsOutOfRange;
+            const int needed = std::max(params.minRegionPixels,
+                                        static_cast<int>(std::ceil(params.minRegionFraction * r.pixelsTotal)));
+            if (r.pixels < needed) {
+                o.used = false;
+                o.note = "only " + std::to_string(r.pixels) + " of " + std::to_string(r.pixelsTotal) +
+                         " pixels inside the camera's linear range " + formatDouble(params.dnMin, 6) + ".." +
+                         formatDouble(params.dnMax, 6) + " (needs " + std::to_string(needed) + ")";
+                res.warnings.push_back(regionName(r, i) + ": " + o.note + ", left out of the fit");
+                ++res.regionsExcluded;
+                continue;
+            }
+            if (r.pixelsOutOfRange > 0) {
+                o.note = std::to_string(r.pixelsOutOfRange) + " of " + std::to_string(r.pixelsTotal) +
+                         " pixels outside the linear range masked";
+                res.warnings.push_back(regionName(r, i) + ": " + o.note);
+            }
+            use.push_back(i);
+            continue;
+        }
         if (!std::isfinite(r.dn)) {
             res.error = regionName(r, i) + ": no mean DN (give dn, or a rectangle and the image)";
             return res;
@@ -198,6 +228,7 @@ ReflectanceFitResult fitReflectance(const std::vector<Region>& regions, const Re
                      formatDouble(params.dnMin, 6) + ".." + formatDouble(params.dnMax, 6);
             if (params.excludeOutOfRange) {
                 o.used = false;
+                ++res.regionsExcluded;
                 res.warnings.push_back(regionName(r, i) + ": " + o.note + ", left out of the fit");
             } else {
                 res.warnings.push_back(regionName(r, i) + ": " + o.note);
@@ -459,12 +490,16 @@ bool readFitCsv(const std::string& path, ReflectanceFit* fit, std::string* error
 
 bool writeRegionFitCsv(const std::string& path, const std::vector<Region>& regions, const ReflectanceFitResult& r,
                        std::string* error) {
-    std::string s = "name,dn,reflectance,predicted,residual,used,note\n";
+    std::string s = "name,dn,reflectance,predicted,residual,used,pixels,pixels_masked,note\n";
     auto g = [](double v) { return std::isfinite(v) ? formatDouble(v, 10) : std::string(); };
-    for (size_t i = 0; i < regions.size() && i < r.regions.size(); ++i)
-        s += csvEscape(regions[i].name) + "," + g(regions[i].dn) + "," + g(regions[i].reflectance) + "," +
-             g(r.regions[i].predicted) + "," + g(r.regions[i].residual) + "," + (r.regions[i].used ? "1" : "0") + "," +
-             csvEscape(r.regions[i].note) + "\n";
+    for (size_t i = 0; i < regions.size() && i < r.regions.size(); ++i) {
+        const Region& rg = regions[i];
+        const bool measured = rg.pixelsTotal > 0;
+        s += csvEscape(rg.name) + "," + g(rg.dn) + "," + g(rg.reflectance) + "," + g(r.regions[i].predicted) + "," +
+             g(r.regions[i].residual) + "," + (r.regions[i].used ? "1" : "0") + "," +
+             (measured ? std::to_string(rg.pixels) : std::string()) + "," +
+             (measured ? std::to_string(rg.pixelsOutOfRange) : std::string()) + "," + csvEscape(r.regions[i].note) + "\n";
+    }
     return writeFileAtomic(path, s, error);
 }
 

@@ -23,8 +23,9 @@ struct Region {
     double dn = NAN;            ///< mean DN: given, or measured from an image over `rect`
     double simulated = NAN;     ///< reflectance from the reflectance image (%): given, or measured over `rect`
     cv::Rect rect;              ///< region in image pixels (empty when the DN / simulated value is given)
-    int pixels = 0;             ///< pixels averaged (when measured)
-    int pixelsOutOfRange = 0;   ///< of those, outside the camera's linear range
+    int pixels = 0;             ///< pixels averaged (when measured): finite, and inside the linear range when masking
+    int pixelsOutOfRange = 0;   ///< finite pixels of the rectangle outside the camera's linear range (masked when masking)
+    int pixelsTotal = 0;        ///< finite pixels in the rectangle
     double dnStd = NAN;         ///< DN standard deviation inside the region (when measured)
     long line = 0;              ///< source line (for messages)
 };
@@ -36,14 +37,25 @@ bool readRegionCsv(const std::string& path, std::vector<Region>* out, std::strin
 struct ReflectanceFitParams {
     double dnMin = 100;                 ///< camera linear range, lower end (DN); paper 003: 100
     double dnMax = 60000;               ///< camera linear range, upper end (DN); paper 003: 60000
-    bool excludeOutOfRange = false;     ///< leave regions outside the range out of the fit (else: warn)
+    bool excludeOutOfRange = false;     ///< leave regions whose mean DN is outside the range out of the fit (else: warn)
     double spectrometerPct = 0.17;      ///< V_M, spectrometer uncertainty (%, ≥ 0); paper 003: 0.17
+    /// Measured regions: pixels outside [dnMin, dnMax] are masked from the region's statistics
+    /// (default true); false averages every finite pixel and only counts the out-of-range ones.
+    bool maskOutOfRangePixels = true;
+    /// A measured region keeps at least this many pixels after masking, else it is left out of the
+    /// fit with the reason (px, ≥ 1; default 25).
+    int minRegionPixels = 25;
+    /// … and at least this fraction of its finite pixels (0..1; default 0.5): a region masked more
+    /// than that is mostly saturated or dark and its remaining mean is not the panel's.
+    double minRegionFraction = 0.5;
 };
 std::string validate(const ReflectanceFitParams& p);
 
-/// Mean (and σ) DN of every region with a rectangle, from a single-channel image of any depth.
-/// Counts the pixels outside [dnMin, dnMax]. False (with *error naming the region) when a
-/// rectangle leaves the image or the image has more than one channel.
+/// Mean (and σ) DN of every region with a rectangle, from a single-channel image of any depth,
+/// over its pixels inside [dnMin, dnMax] (params.maskOutOfRangePixels; else over every finite
+/// pixel), counting the pixels outside. False (with *error naming the region) when a rectangle
+/// leaves the image or the image has more than one channel. A region with no pixel left keeps
+/// dn = NaN (fitReflectance leaves it out with the reason).
 bool measureRegionDn(const cv::Mat& image, const ReflectanceFitParams& params, std::vector<Region>* regions,
                      std::string* error);
 
@@ -73,6 +85,8 @@ struct ReflectanceFitResult {
     std::vector<std::string> warnings;
     ReflectanceFit fit;
     std::vector<RegionOutcome> regions;  ///< same order as the input
+    long long pixelsMasked = 0;          ///< pixels masked from the measured regions (outside the linear range)
+    int regionsExcluded = 0;             ///< regions left out of the fit
 };
 
 /// Least-squares line through (mean DN, reflectance) of the regions (eq. 5) with standard
@@ -90,7 +104,8 @@ double predictionUncertaintyPct(const ReflectanceFit& fit, double dn);
 bool writeFitCsv(const std::string& path, const ReflectanceFit& fit, std::string* error);
 /// Reads a fit CSV written by writeFitCsv (k and b required; the rest optional).
 bool readFitCsv(const std::string& path, ReflectanceFit* fit, std::string* error);
-/// Writes the per-region table (name, dn, reflectance, predicted, residual, used, note), atomically.
+/// Writes the per-region table (name, dn, reflectance, predicted, residual, used, pixels,
+/// pixels_masked, note), atomically.
 bool writeRegionFitCsv(const std::string& path, const std::vector<Region>& regions, const ReflectanceFitResult& r,
                        std::string* error);
 

@@ -118,7 +118,9 @@ CalibSimulation simulateCalibration(const CalibSimParams& p, uint64_t seed) {
 DetectorSimulation simulateDetectorArray(const DetectorSimParams& p, uint64_t seed) {
     DetectorSimulation s;
     Rng rng(seed);
-    const double e0 = rng.uniform(-p.centreSpreadM, p.centreSpreadM), n0 = rng.uniform(-p.centreSpreadM, p.centreSpreadM);
+    double e0 = rng.uniform(-p.centreSpreadM, p.centreSpreadM), n0 = rng.uniform(-p.centreSpreadM, p.centreSpreadM);
+    if (std::isfinite(p.centreE)) e0 = p.centreE;
+    if (std::isfinite(p.centreN)) n0 = p.centreN;
     const double ratio = rng.uniform(1.0, std::max(1.0, p.axisRatioMax));
     const double theta = rng.uniform(-M_PI / 2, M_PI / 2);
     // σ_major·σ_minor = sigmaM² keeps the footprint area.
@@ -155,21 +157,54 @@ DetectorSimulation simulateDetectorArray(const DetectorSimParams& p, uint64_t se
             d.h = p.heightM;
             const double truth = evalSurface(t, d.e, d.n);
             double e = truth + rng.normal(0, p.relativeNoise * std::fabs(truth)) + rng.normal(0, p.noiseFloor);
-            d.saturated = 0;
-            if (p.saturationLevel > 0 && e >= p.saturationLevel) {
+            const bool dead = p.deadFraction > 0 && rng.uniform() < p.deadFraction;
+            bool clipped = false;
+            if (dead) {
+                e = 0;
+            } else if (p.saturationLevel > 0 && e >= p.saturationLevel) {
                 e = p.saturationLevel;
-                d.saturated = 1;
+                clipped = true;
             }
-            if (e > p.triggerThreshold) {
+            d.saturated = p.flagSaturated ? (clipped ? 1 : 0) : -1;
+            if (p.fullReport) {
+                d.triggered = -1;
+                d.energy = e;
+            } else if (!dead && e > p.triggerThreshold) {
                 d.triggered = 1;
                 d.energy = e;
             } else {
+                if (!p.listUntriggered) continue;
                 d.triggered = 0;
                 d.energy = NAN;
+                if (p.flagSaturated) d.saturated = 0;
             }
             arr.detectors.push_back(d);
         }
     return s;
+}
+
+DetectorSimParams drawDetectorFieldCase(uint64_t seed) {
+    Rng rng(seed);
+    DetectorSimParams p;
+    p.rows = 17;
+    p.columns = 9;
+    p.spacingM = 5;
+    p.sigmaM = rng.uniform(13, 17) / 4;  // 1/e² diameter = 4σ
+    p.axisRatioMax = 1.3;
+    p.amplitude = 1000;
+    p.relativeNoise = 0;
+    p.noiseFloor = rng.uniform(0.02, 0.05) * p.amplitude;
+    const double halfE = 0.5 * (p.columns - 1) * p.spacingM - 5, halfN = 0.5 * (p.rows - 1) * p.spacingM - 5;
+    p.centreE = rng.uniform(-halfE, halfE);
+    p.centreN = rng.uniform(-halfN, halfN);
+    p.fullReport = rng.uniform() < 0.5;
+    p.background = p.fullReport ? rng.uniform(0, 0.03) * p.amplitude : 0;
+    p.triggerThreshold = p.background + 3 * p.noiseFloor;
+    p.listUntriggered = rng.uniform() < 0.5;
+    p.deadFraction = 0.02;
+    p.saturationLevel = rng.uniform() < 0.3 ? rng.uniform(0.6, 0.95) * p.amplitude : 0;
+    p.flagSaturated = rng.uniform() < 0.5;
+    return p;
 }
 
 WaveformSimulation simulateWaveform(const WaveformSimParams& p, uint64_t seed) {

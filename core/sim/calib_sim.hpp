@@ -59,9 +59,28 @@ struct DetectorSimParams {
     double triggerThreshold = 50;    ///< detectors at or below record nothing (triggered = 0)
     double saturationLevel = 0;      ///< > 0: energies at or above are clipped and flagged saturated
     double centreSpreadM = 10;       ///< footprint centre uniform within ± this of the array centre (m)
+    double centreE = NAN, centreN = NAN;  ///< when finite: the footprint centre (m), instead of a random one
     bool geographic = false;         ///< give positions as lat/lon around (originLatDeg, originLonDeg)
     double originLatDeg = 42.7, originLonDeg = 112.6, heightM = 1000;
+    /// Every detector reports its energy, background and noise included (negative values too),
+    /// with no triggered column; else only detectors above triggerThreshold record an energy.
+    bool fullReport = false;
+    /// Trigger-style arrays: list the untriggered detectors (triggered = 0, no energy); false
+    /// leaves them out of the array, as a field file that holds only the triggered ones.
+    bool listUntriggered = true;
+    double deadFraction = 0;         ///< each detector is dead with this probability (0..1): it records
+                                     ///< 0 in a full report and never triggers otherwise
+    bool flagSaturated = true;       ///< the file has the saturated column (false: clipped values unflagged)
 };
+
+/// One array of the field population of issue 12, drawn from the seed: 17 × 9 detectors on a
+/// 5 m grid, a Gaussian footprint of 13–17 m 1/e² diameter with axis ratio 1–1.3 at any
+/// orientation, centre anywhere at least 5 m inside the array's edge, additive noise 2–5 % of the
+/// peak; half the arrays report every detector (background 0–3 % of the peak, negative values
+/// too), half only the detectors above a trigger level 3 noise σ above the background (untriggered
+/// ones listed with triggered = 0 in half of those); 2 % dead detectors; in 30 % of the arrays the
+/// peak saturates at 60–95 % of the amplitude (flagged in half of those).
+DetectorSimParams drawDetectorFieldCase(uint64_t seed);
 
 struct DetectorSimulation {
     calib::DetectorArray array;

@@ -127,9 +127,22 @@ private slots:
         QVERIFY(run.detector.centreE != eBefore);
         QVERIFY(w.detectorSummary()->text() != summaryBefore);
         QVERIFY(w.detectorSummary()->text().contains(QString("%1 of %2 detectors").arg(above).arg(c->data().array.detectors.size())));
-        QCPGraph* aside = graphNamed(w.energyPlot(), "set aside (threshold / saturation)");
+        // Detectors at or below the threshold stay in the fit as "at most" bounds (censoring).
+        QCPGraph* aside = graphNamed(w.energyPlot(), "in the fit as a bound (threshold / saturation)");
         QVERIFY(aside);
         QCOMPARE(aside->dataCount(), usedBefore - above);
+        // The map draws what the fit did: bounds and set-aside detectors as the fit's own statuses.
+        int bounds = 0, setAside = 0;
+        for (size_t i = 0; i < run.detector.detectors.size(); ++i) {
+            const auto& d = c->data().array.detectors[i];
+            if (!std::isfinite(d.energy) || d.triggered == 0) continue;
+            const auto st = run.detector.detectors[i].status;
+            if (st == DetectorStatus::AtLeast || st == DetectorStatus::AtMost) ++bounds;
+            else if (st != DetectorStatus::Used) ++setAside;
+        }
+        QCOMPARE(aside->dataCount(), bounds);
+        QCPGraph* setAsideGraph = graphNamed(w.energyPlot(), "set aside (outlier, or censoring off)");
+        QCOMPARE(setAsideGraph ? setAsideGraph->dataCount() : 0, setAside);
         // thred_h below the wood's Δh: no candidate any more, and the table says so.
         const double dh = c->run().match.bestDeltaHM;
         QVERIFY(dh > 0.005);
