@@ -102,7 +102,7 @@ class TestCliOutputs : public QObject {
             if (c.outputs.first().startsWith("simf/")) QVERIFY2(!QFileInfo::exists(p("simf")), qPrintable(name));
         }
         noStagingFiles();
-        for (const QString& sub : {"simc", "simf"})
+        for (const char* sub : {"simc", "simf"})
             for (const QString& f : filesIn(p(sub))) QVERIFY2(!f.contains(".lwb-"), qPrintable(f));
     }
 
