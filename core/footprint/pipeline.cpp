@@ -212,10 +212,21 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
             if (c.ok) r.crlbPx = c.radialPx;
         }
     }
-    const Judgement j = judge(r.fit, r.domain, roi.cols, roi.rows, params.verdict);
-    r.verdict = j.verdict;
-    r.reasons = j.reasons;
+    judgeResult(&r, roi.cols, roi.rows, params.verdict);
     return r;
+}
+
+void judgeResult(FootprintResult* r, int roiWidth, int roiHeight, const VerdictParams& verdict) {
+    if (!r->ok) return;
+    Judgement j = judge(r->fit, r->domain, roiWidth, roiHeight, verdict);
+    r->verdict = j.verdict;
+    r->reasons = std::move(j.reasons);
+}
+
+bool onlyVerdictDiffers(const FootprintParams& a, const FootprintParams& b) {
+    for (const std::string& key : footprintSchema().changedKeys(a, b))
+        if (key.rfind("verdict.", 0) != 0 && key != "preset") return false;
+    return true;
 }
 
 std::vector<FrameRoiResult> processFrame(const cv::Mat& image, const FootprintParams& params,
