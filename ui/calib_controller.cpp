@@ -558,13 +558,7 @@ bool CalibController::setParams(const CalibParams& p, QString* error) {
 }
 
 bool CalibController::waitIdle(int timeoutMs) {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < timeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        if (!busy()) return true;
-    }
-    return false;
+    return waitUntilIdle([this] { return busy(); }, timeoutMs);
 }
 
 // ---------------------------------------------------------------------------------------------

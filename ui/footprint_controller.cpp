@@ -514,13 +514,7 @@ TrendResult FootprintController::trend(const TrendParams& tp) const {
 }
 
 bool FootprintController::waitIdle(int timeoutMs) {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < timeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        if (!busy()) return true;
-    }
-    return false;
+    return waitUntilIdle([this] { return busy(); }, timeoutMs);
 }
 
 }  // namespace lwb::ui

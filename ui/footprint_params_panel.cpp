@@ -71,21 +71,10 @@ FootprintParamsPanel::FootprintParamsPanel(QWidget* parent)
     m_advanced = new CollapsibleSection(tr("Advanced (every other parameter)"), this);
     form.addRemaining(m_advanced->form(), {"preset"});
     top->addWidget(m_advanced);
-    m_message = new QLabel(this);
-    m_message->setWordWrap(true);
-    m_message->setStyleSheet("color: #b00000");
-    m_message->hide();
+    m_message = form.addMessageLabel([this] { emit paramsChanged(m_form->params()); });
     top->addWidget(m_message);
     top->addStretch(1);
 
-    form.onChanged = [this](const std::string&) {
-        m_message->hide();
-        emit paramsChanged(m_form->params());
-    };
-    form.onRefused = [this](const QString& why) {
-        m_message->setText(tr("Not applied: %1").arg(why));
-        m_message->show();
-    };
     connect(m_preset, &QComboBox::activated, this, [this](int i) {
         QString err;
         if (!loadPreset(m_preset->itemData(i).toString(), &err)) QMessageBox::warning(this, tr("Preset"), err);

@@ -83,14 +83,18 @@ void LiveJob::track(QFuture<void> f) {
     m_futures = std::move(kept);
 }
 
-bool LiveJob::waitIdle(int timeoutMs) {
+bool waitUntilIdle(const std::function<bool()>& busy, int timeoutMs) {
     QElapsedTimer t;
     t.start();
-    while (busy()) {
-        if (t.elapsed() >= timeoutMs) return false;
+    for (;;) {  // events first: a result may be queued for delivery
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        if (!busy()) return true;
+        if (t.elapsed() >= timeoutMs) return false;
     }
-    return true;
+}
+
+bool LiveJob::waitIdle(int timeoutMs) {
+    return waitUntilIdle([this] { return busy(); }, timeoutMs);
 }
 
 }  // namespace lwb::ui

@@ -21,6 +21,10 @@
 
 namespace lwb::ui {
 
+/// Processes events until busy() is false or timeoutMs passes; false on timeout (the
+/// controllers' waitIdle for tests and benchmarks).
+bool waitUntilIdle(const std::function<bool()>& busy, int timeoutMs);
+
 class LiveJob : public QObject {
     Q_OBJECT
 public:

@@ -583,13 +583,7 @@ bool RadiometryController::setParams(const RadiometryParams& p, QString* error) 
 }
 
 bool RadiometryController::waitIdle(int timeoutMs) {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < timeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        if (!busy()) return true;
-    }
-    return false;
+    return waitUntilIdle([this] { return busy(); }, timeoutMs);
 }
 
 // ---------------------------------------------------------------------------------------------

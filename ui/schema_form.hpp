@@ -13,6 +13,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QToolButton>
 #include <QWidget>
@@ -223,6 +224,24 @@ public:
         for (auto& b : m_bindings) b.show(m_p);
         m_refreshing = false;
         return n;
+    }
+
+    /// A label for refused edits ("Not applied: why"), hidden until an edit is refused and again
+    /// after an accepted one; sets onRefused and onChanged (which then calls `changed`).
+    QLabel* addMessageLabel(std::function<void()> changed) {
+        auto* label = new QLabel(m_owner);
+        label->setWordWrap(true);
+        label->setStyleSheet("color: #b00000");
+        label->hide();
+        onChanged = [label, changed = std::move(changed)](const std::string&) {
+            label->hide();
+            changed();
+        };
+        onRefused = [label](const QString& why) {
+            label->setText(QObject::tr("Not applied: %1").arg(why));
+            label->show();
+        };
+        return label;
     }
 
     QWidget* widget(const std::string& key) const {

@@ -34,10 +34,7 @@ SlrParamsPanel::SlrParamsPanel(QWidget* parent)
     m_advanced = new CollapsibleSection(tr("Advanced (every other parameter)"), this);
     form.addRemaining(m_advanced->form());
     top->addWidget(m_advanced);
-    m_message = new QLabel(this);
-    m_message->setWordWrap(true);
-    m_message->setStyleSheet("color: #b00000");
-    m_message->hide();
+    m_message = form.addMessageLabel([this] { emit paramsChanged(m_form->params()); });
     top->addWidget(m_message);
 
     form.adjust = [this](const std::string& key, SlrParams& p) {
@@ -52,14 +49,6 @@ SlrParamsPanel::SlrParamsPanel(QWidget* parent)
             if (s.areaLimit == 0) s.areaLimit = m_scale.areaLimit;
             if (s.connectivity == 0) s.connectivity = m_scale.connectivity;
         }
-    };
-    form.onChanged = [this](const std::string&) {
-        m_message->hide();
-        emit paramsChanged(m_form->params());
-    };
-    form.onRefused = [this](const QString& why) {
-        m_message->setText(tr("Not applied: %1").arg(why));
-        m_message->show();
     };
     setParams(SlrParams{});
 }

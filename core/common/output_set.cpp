@@ -224,6 +224,15 @@ bool OutputSet::commit() {
     return true;
 }
 
+void OutputSet::drop(const std::string& output) {
+    for (size_t i = 0; i < m_items.size(); ++i)
+        if (m_items[i].path == output) {
+            if (!m_items[i].staging.empty()) std::remove(m_items[i].staging.c_str());
+            m_items.erase(m_items.begin() + static_cast<long>(i));
+            return;
+        }
+}
+
 void OutputSet::abandon() {
     for (const auto& it : m_items)
         if (!it.staging.empty()) std::remove(it.staging.c_str());

@@ -33,6 +33,8 @@ public:
     /// Where to write `output` (a staging file in the target's folder, with the target's
     /// extension, so that writers choosing a format by extension still work). check() first.
     std::string stagingPath(const std::string& output) const;
+    /// Forgets an output the run turned out not to produce (its staging file, if any, removed).
+    void drop(const std::string& output);
     /// Renames every staged output into place. On failure the targets already replaced are
     /// restored, every staged file is removed, and error() says what failed.
     bool commit();

@@ -57,6 +57,10 @@ const Schema<FootprintParams>& footprintSchema() {
                "(peak - background) / noise below this: no spot");
         s.integer("segment.min_pixels", LWB_FIELD(F, segment.minPixels), "px", {1, 100000}, {1, 50},
                   "a domain smaller than this: no spot");
+        s.real("segment.local_snr_floor", LWB_FIELD(F, segment.localSnrFloor), "", {0, 1, true, false}, {0.5, 1},
+               "peaks from this x min_peak_snr up get a second look against a ring around them (kept as faint, doubtful)");
+        s.real("segment.ring_inner_px", LWB_FIELD(F, segment.ringInnerPx), "px", {1, 100}, {4, 12}, "inner radius of that ring");
+        s.real("segment.ring_outer_px", LWB_FIELD(F, segment.ringOuterPx), "px", {1, 100}, {6, 16}, "outer radius of that ring");
         s.real("segment.second_spot_min_separation_px", LWB_FIELD(F, segment.secondSpotMinSeparation), "px", {1, 1000, false, true},
                {2, 12}, "two peaks at least this far apart are two spots (the second-spot verdict)");
         s.boolean("gcm.subtract_background", LWB_FIELD(F, gcm.subtractBackground),
@@ -88,6 +92,16 @@ const Schema<FootprintParams>& footprintSchema() {
         s.real("gauss.textured_ratio", LWB_FIELD(F, gauss.texturedRatio), "", {1, 1000}, {1, 4},
                "ground counts as textured when its sigma exceeds the photon + read sigma by this factor");
         s.integer("gauss.lm_min_half_width", LWB_FIELD(F, gauss.lmMinHalfWidth), "px", {2, 200}, {2, 8}, "LM window half-width lower bound");
+        s.boolean("gauss.difference_fit", LWB_FIELD(F, gauss.differenceFit),
+                  "textured ground: LM on neighbouring-pixel differences (whitens real ground's red spectrum)");
+        s.real("gauss.lm_window_sigmas_difference", LWB_FIELD(F, gauss.lmWindowSigmasDifference), "sigma", {1, 20}, {1.5, 4},
+               "LM window half-width in major-axis sigma for the difference fit");
+        s.real("gauss.uncertainty_texture_scale", LWB_FIELD(F, gauss.uncertaintyTextureScale), "", {0, 100}, {0, 6},
+               "uncertainty_px: texture shift scale after the difference fit (calibrated for 63 % coverage)");
+        s.real("gauss.uncertainty_texture_scale_pixel_fit", LWB_FIELD(F, gauss.uncertaintyTextureScalePixelFit), "", {0, 100},
+               {0, 8}, "the same after the pixel fit");
+        s.real("gauss.uncertainty_deadband", LWB_FIELD(F, gauss.uncertaintyDeadband), "", {0, 10}, {0, 1},
+               "texture counts beyond (1 + this) x the photon part");
         s.boolean("gauss.noise_weights", LWB_FIELD(F, gauss.noiseWeights), "LM weights 1 / (photon + read + ground-texture variance)");
         s.boolean("gauss.robust_loss", LWB_FIELD(F, gauss.robustLoss), "textured ground: Cauchy loss instead of least squares");
         s.real("gauss.robust_scale", LWB_FIELD(F, gauss.robustScale), "sigma", {0.1, 100, true, true}, {0.5, 4},
@@ -111,6 +125,8 @@ const Schema<FootprintParams>& footprintSchema() {
              "", {0, 1e6, true, false}, {1e-7, 1e-3}, "fit residual limit (paper 000 eq. 8, f normalised to unit sum); null = off")
             .specials = {{NAN, "off"}};
         s.boolean("verdict.check_edge", LWB_FIELD(F, verdict.checkEdge), "the spot's 1/e^2 ellipse must lie inside the ROI");
+        s.real("verdict.edge_extent", LWB_FIELD(F, verdict.edgeExtent), "", {0.5, 5}, {0.8, 2},
+               "the edge check uses the 1/e^2 ellipse times this (1.25: the 2.5 sigma ellipse)");
         s.boolean("verdict.check_saturation", LWB_FIELD(F, verdict.checkSaturation), "saturated spot pixels make a shot doubtful");
         s.integer("verdict.saturation_max_pixels", LWB_FIELD(F, verdict.saturationMaxPixels), "px", {0, 1e6}, {0, 20},
                   "more saturated domain pixels than this: doubtful");
@@ -127,6 +143,7 @@ const Schema<FootprintParams>& footprintSchema() {
                 return "noise class thresholds must satisfy background.night_below <= weak_below <= strong_above";
             if (p.segment.peakSmooth % 2 == 0) return "segment.peak_smooth must be odd (1, 3, 5, 7 or 9 px)";
             if (p.tefm.erosionSize % 2 == 0) return "tefm.erosion_size must be odd (1..15 px)";
+            if (!(p.segment.ringInnerPx < p.segment.ringOuterPx)) return "segment.ring_inner_px must be below ring_outer_px";
             return {};
         });
         return s;
@@ -199,6 +216,7 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
                 r.fit = g.fit;
                 r.gaussModel = g.model;
                 r.gaussStage = g.stage;
+                r.startNote = g.fallbackStart ? g.note : std::string();
                 break;
             }
         }
@@ -221,6 +239,9 @@ void judgeResult(FootprintResult* r, int roiWidth, int roiHeight, const VerdictP
     Judgement j = judge(r->fit, r->domain, roiWidth, roiHeight, verdict);
     r->verdict = j.verdict;
     r->reasons = std::move(j.reasons);
+    // A fit that had to start from moments is doubtful at best, whatever the criteria.
+    if (!r->startNote.empty() && r->verdict == Verdict::Good) r->verdict = Verdict::Doubtful;
+    if (!r->startNote.empty() && r->verdict == Verdict::Doubtful) r->reasons.push_back(r->startNote);
 }
 
 bool onlyVerdictDiffers(const FootprintParams& a, const FootprintParams& b) {

@@ -61,6 +61,7 @@ struct FootprintResult {
     Verdict verdict = Verdict::Rejected;
     std::vector<std::string> reasons;
     double crlbPx = NAN;        ///< Cramér–Rao bound on the radial error (closed form, fitted spot)
+    std::string startNote;      ///< the Gaussian fit started from moments (why): the verdict stage keeps it doubtful
 };
 
 /// Runs the whole pipeline on a CV_32FC1 ROI. Never throws.

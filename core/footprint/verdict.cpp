@@ -74,7 +74,7 @@ Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int 
     if (p.checkEdge) {
         // Half extents of the ellipse of full axes major/minor at the fit's orientation.
         const double big = std::max(fit.sigmaX, fit.sigmaY);
-        const double scale = big > 0 ? 0.5 * fit.majorAxisPx / big : 0;
+        const double scale = big > 0 ? 0.5 * fit.majorAxisPx / big * p.edgeExtent : 0;
         const double ax = fit.sigmaX * scale, ay = fit.sigmaY * scale;
         const double c = std::cos(fit.tiltRad), s = std::sin(fit.tiltRad);
         const double hx = std::hypot(ax * c, ay * s), hy = std::hypot(ax * s, ay * c);
@@ -83,6 +83,9 @@ Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int 
     }
     if (p.checkSaturation && domain.saturatedPixels > p.saturationMaxPixels)
         j.reasons.push_back("saturated: " + std::to_string(domain.saturatedPixels) + " px at full scale");
+    if (domain.faint)
+        j.reasons.push_back("faint: peak " + formatDouble(domain.peakSnr, 3) + " sigma above the ROI's ground, " +
+                            formatDouble(domain.localPeakSnr, 3) + " above the ring around it");
     if (p.checkSecondSpot && domain.secondPeakFraction >= p.secondSpotFraction)
         j.reasons.push_back("second spot at (" + std::to_string(domain.secondPeakX) + ", " +
                             std::to_string(domain.secondPeakY) + "), " +

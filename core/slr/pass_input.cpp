@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <cerrno>
+#include <cstring>
+#include <dirent.h>
 #include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
@@ -13,6 +16,7 @@
 #include "core/slr/cpf.hpp"
 #include "core/slr/oc_csv.hpp"
 #include "core/slr/sinex.hpp"
+#include "core/slr/slr_time.hpp"
 
 namespace lwb::core::slr {
 
@@ -170,37 +174,175 @@ bool isCrdFile(const std::string& path) {
     return crdName;
 }
 
+namespace {
+
+// The regular files of a folder, sorted by name (hidden files left out).
+bool listFolder(const std::string& dir, std::vector<std::string>* files, std::string* error) {
+    DIR* d = ::opendir(dir.c_str());
+    if (!d) {
+        *error = dir + ": cannot open the folder: " + std::strerror(errno);
+        return false;
+    }
+    while (const dirent* e = ::readdir(d)) {
+        const std::string name = e->d_name;
+        if (name.empty() || name[0] == '.') continue;
+        const std::string full = dir + (dir.back() == '/' ? "" : "/") + name;
+        struct stat st {};
+        if (::stat(full.c_str(), &st) == 0 && S_ISREG(st.st_mode)) files->push_back(full);
+    }
+    ::closedir(d);
+    std::sort(files->begin(), files->end());
+    return true;
+}
+
+// Time span of a prediction (MJD + s): its positions' first and last epochs.
+bool cpfSpan(const CpfFile& cpf, double* first, double* last) {
+    if (cpf.positions.empty()) return false;
+    *first = INFINITY;
+    *last = -INFINITY;
+    for (const auto& p : cpf.positions) {
+        const double t = double(p.mjd) * 86400.0 + p.sod;
+        *first = std::min(*first, t);
+        *last = std::max(*last, t);
+    }
+    return true;
+}
+
+// Start and end of a pass (MJD·86400 + s) from its range epochs and H4 date.
+bool passSpan(const CrdPass& pass, double* first, double* last) {
+    const CrdSession& q = pass.session;
+    if (pass.ranges.empty() || q.startYear <= 0) return false;
+    const double day0 = double(mjdFromDate(q.startYear, q.startMonth, q.startDay)) * 86400.0;
+    *first = INFINITY;
+    *last = -INFINITY;
+    for (const auto& r : pass.ranges) {
+        // Epochs are seconds of the H4 start day; a pass over midnight has them past 86400 or wraps.
+        double t = r.secOfDay;
+        if (t + 43200 < (q.startHour * 3600.0 + q.startMinute * 60.0 + q.startSecond)) t += 86400;
+        *first = std::min(*first, day0 + t);
+        *last = std::max(*last, day0 + t);
+    }
+    return std::isfinite(*first);
+}
+
+// Does the prediction fit the pass: the same satellite (no id that differs everywhere) and a time
+// span covering the pass with a margin for the interpolation window? "" when it fits, else why not.
+std::string cpfMismatch(const CpfFile& cpf, const CrdPass& pass, const std::string& crdPath, std::vector<std::string>* warnings) {
+    std::string err;
+    if (!checkCpfTarget(cpf, pass, crdPath, &err, warnings)) return err;
+    double cf = 0, cl = 0, pf = 0, pl = 0;
+    if (cpfSpan(cpf, &cf, &cl) && passSpan(pass, &pf, &pl) && (pf < cf || pl > cl)) {
+        int y = 0, mo = 0, d = 0;
+        dateFromMjd(long(cf / 86400), &y, &mo, &d);
+        char a[32], b[32];
+        std::snprintf(a, sizeof a, "%04d-%02d-%02d", y, mo, d);
+        dateFromMjd(long(cl / 86400), &y, &mo, &d);
+        std::snprintf(b, sizeof b, "%04d-%02d-%02d", y, mo, d);
+        return (cpf.path.empty() ? std::string("cpf") : cpf.path) + ": the prediction covers " + a + " to " + b +
+               ", not the pass (" + timeText(pass.session.startYear, pass.session.startMonth, pass.session.startDay,
+                                              pass.session.startHour, pass.session.startMinute, pass.session.startSecond) +
+               ")";
+    }
+    return {};
+}
+
+}  // namespace
+
+bool readPassSources(const PassInputParams& params, PassSources* out, std::string* error) {
+    *out = PassSources();
+    if (!params.cpfPath.empty()) {
+        struct stat st {};
+        out->cpfFolder = ::stat(params.cpfPath.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+        std::vector<std::string> files;
+        if (out->cpfFolder) {
+            if (!listFolder(params.cpfPath, &files, error)) return false;
+        } else {
+            files.push_back(params.cpfPath);
+        }
+        for (const auto& f : files) {
+            CpfReadResult cpf = readCpf(f);
+            if (!cpf.ok) {
+                if (!out->cpfFolder) {
+                    *error = withWarnings(cpf.error, cpf.warnings);
+                    return false;
+                }
+                out->skipped.push_back(f + ": not used: " + cpf.error);
+                continue;
+            }
+            out->cpfs.push_back(std::move(cpf));
+        }
+        if (out->cpfFolder && out->cpfs.empty()) {
+            *error = params.cpfPath + ": the folder holds no readable CPF file";
+            return false;
+        }
+    }
+    if (!params.sinexPath.empty()) {
+        const SinexReadResult snx = readSinex(params.sinexPath);
+        if (!snx.ok) {
+            *error = snx.error;
+            return false;
+        }
+        out->stations = snx.file;
+        out->haveStations = true;
+    }
+    return true;
+}
+
 PassInputResult loadPass(const std::string& path, int passIndex, const PassInputParams& params, const Feedback* fb) {
     PassInputResult r;
-    PassData& d = r.pass;
-    d.source = path;
-    if (!isCrdFile(path)) {
-        const OcCsvReadResult csv = readOcCsv(path);
-        if (!csv.ok) {
-            r.error = csv.error;
-            return r;
-        }
-        r.warnings = csv.warnings;
-        d.t = csv.table.epoch_s;
-        d.oc = csv.table.oc_s;
-        d.ocOrigin = "O-C table";
-        PassSummary s;
-        s.ranges = d.t.size();
-        r.passes.push_back(s);
-        if (d.t.size() < 3) {
-            r.error = path + ": the O-C table holds " + std::to_string(d.t.size()) + " points; screening needs at least 3";
-            return r;
-        }
-        r.ok = true;
-        return r;
-    }
-    CrdReadResult crd = readCrd(path, {}, fb);
+    r.pass.source = path;
+    if (!isCrdFile(path)) return passFromOcTable(path);
+    const CrdReadResult crd = readCrd(path, {}, fb);
     if (!crd.ok) {
         r.error = withWarnings(crd.error, crd.warnings);
         return r;
     }
+    PassSources sources;
+    if (!params.cpfPath.empty() && !params.sinexPath.empty() && !readPassSources(params, &sources, &r.error)) {
+        for (size_t i = 0; i < crd.file.passes.size(); ++i) r.passes.push_back(summarise(crd.file.passes[i], int(i)));
+        return r;
+    }
+    return passFromCrd(crd, path, passIndex, params, sources, fb);
+}
+
+PassInputResult passFromOcTable(const std::string& path) {
+    PassInputResult r;
+    PassData& d = r.pass;
+    d.source = path;
+    const OcCsvReadResult csv = readOcCsv(path);
+    if (!csv.ok) {
+        r.error = csv.error;
+        return r;
+    }
+    r.warnings = csv.warnings;
+    d.t = csv.table.epoch_s;
+    d.oc = csv.table.oc_s;
+    d.ocOrigin = "O-C table";
+    PassSummary s;
+    s.ranges = d.t.size();
+    r.passes.push_back(s);
+    if (d.t.size() < 3) {
+        r.error = path + ": the O-C table holds " + std::to_string(d.t.size()) + " points; screening needs at least 3";
+        return r;
+    }
+    r.ok = true;
+    return r;
+}
+
+std::vector<PassSummary> summarisePasses(const CrdFile& file) {
+    std::vector<PassSummary> v;
+    for (size_t i = 0; i < file.passes.size(); ++i) v.push_back(summarise(file.passes[i], int(i)));
+    return v;
+}
+
+PassInputResult passFromCrd(const CrdReadResult& crdIn, const std::string& path, int passIndex, const PassInputParams& params,
+                            const PassSources& sources, const Feedback* fb) {
+    PassInputResult r;
+    PassData& d = r.pass;
+    d.source = path;
+    const CrdReadResult& crd = crdIn;
     r.warnings = crd.warnings;
-    for (size_t i = 0; i < crd.file.passes.size(); ++i) r.passes.push_back(summarise(crd.file.passes[i], int(i)));
+    r.passes = summarisePasses(crd.file);
     if (passIndex < 0) {
         for (size_t i = 0; i < crd.file.passes.size() && passIndex < 0; ++i)
             if (!crd.file.passes[i].ranges.empty()) passIndex = int(i);
@@ -246,31 +388,47 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
     d.cdpPad = pass.station.cdpPadId;
     d.damaged = damagedRecords(pass, path, r.warnings);
     OcResult oc;
-    const bool predicted = !params.cpfPath.empty() && !params.sinexPath.empty();
     if (!params.cpfPath.empty() != !params.sinexPath.empty())
         r.warnings.push_back("O-C from a prediction needs both the CPF and the SINEX file; using the fitted TOF trend");
     double altitudeKm = 0;
     std::vector<std::string> cpfWarnings;
-    if (predicted) {
-        const CpfReadResult cpf = readCpf(params.cpfPath);
-        if (!cpf.ok) {
-            r.error = withWarnings(cpf.error, cpf.warnings);
+    // The prediction for this pass: the given CPF, or the one of a folder whose satellite and
+    // time span fit. When none fits: an error, or with cpfFallback (and always for a folder) the
+    // pass's own TOF trend with a note saying why.
+    const CpfFile* cpf = nullptr;
+    std::string why;
+    if (!sources.cpfs.empty() && sources.haveStations) {
+        for (const auto& c : sources.cpfs) {
+            std::vector<std::string> w = c.warnings;
+            const std::string m = cpfMismatch(c.file, pass, path, &w);
+            if (m.empty()) {
+                cpf = &c.file;
+                cpfWarnings = w;
+                break;
+            }
+            if (why.empty() || !sources.cpfFolder) why = m;
+        }
+        if (!cpf && sources.cpfFolder)
+            why = params.cpfPath + ": no prediction in the folder fits the pass (satellite " + pass.target.name +
+                  (idGiven(pass.target.ilrsId) ? ", ILRS id " + pass.target.ilrsId : std::string()) + ")" +
+                  (why.empty() ? std::string() : "; e.g. " + why);
+        if (!cpf && !sources.cpfFolder && !params.cpfFallback) {
+            r.error = withWarnings(why, sources.cpfs.front().warnings);
             return r;
         }
-        cpfWarnings = cpf.warnings;
-        if (!checkCpfTarget(cpf.file, pass, path, &r.error, &cpfWarnings)) return r;
-        const SinexReadResult snx = readSinex(params.sinexPath);
-        if (!snx.ok) {
-            r.error = snx.error;
-            return r;
-        }
-        oc = computeOc(pass, cpf.file, snx.file, params.oc, fb);
-        d.ocOrigin = "CPF prediction";
+    }
+    if (cpf) {
+        oc = computeOc(pass, *cpf, sources.stations, params.oc, fb);
+        d.ocOrigin = "CPF prediction" + (sources.cpfFolder ? " " + cpf->path : std::string());
         double rmin = INFINITY;
-        for (const auto& p : cpf.file.positions) rmin = std::min(rmin, p.position.norm());
+        for (const auto& p : cpf->positions) rmin = std::min(rmin, p.position.norm());
         if (std::isfinite(rmin)) altitudeKm = rmin / 1000.0 - kEarthRadiusKm;
         for (const auto& w : cpfWarnings) r.warnings.push_back(w);
     } else {
+        if (!why.empty()) {
+            d.ocNote = why + "; O-C against the pass's own TOF trend";
+            r.warnings.push_back(d.ocNote);
+        }
         oc = computeTrendOc(pass, params.trend, fb);
         d.ocOrigin = "fitted TOF trend (no prediction)";
     }
@@ -296,7 +454,7 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
     }
     d.altitudeKm = altitudeKm;
     d.hasCrd = true;
-    d.crd = std::move(crd.file);
+    d.crd = crd.file;
     r.ok = true;
     return r;
 }

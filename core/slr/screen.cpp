@@ -11,6 +11,7 @@
 #include "core/slr/kdtree2.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/screen_auto.hpp"
+#include "core/slr/screen_follow.hpp"
 
 namespace lwb::core::slr {
 
@@ -423,6 +424,9 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
         for (size_t i = 0; i < n; ++i) flat[i] = oc[i] - shift[i];
         PostfitParams pp;
         pp.degree = 8;
+        pp.autoDegree = false;  // the refinement's trend as before: one degree-8 polynomial,
+        pp.splitGapS = -1;      // no segments and no gross-outlier pass (the 3σ clip does)
+        pp.grossSigma = 0;
         pp.rejectSigma = 3;
         pp.normalPoints = false;
         pp.binLengthS = 1;  // unused (no normal points); keeps validate() content
@@ -517,6 +521,32 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
     const double span = n > 1 ? *std::max_element(t.begin(), t.end()) - *std::min_element(t.begin(), t.end()) : 0;
     const bool sparse = params.sparseRateBelow <= 0 || !(span > 0) || double(n) / span < params.sparseRateBelow;
     if (res.ok && params.automatic && params.refineRounds > 0 && sparse) refine(t, oc, params, fb, res);
+    // Track following for sparse passes (like the refinement): a dense pass's track forms
+    // regions at any usable scale, and following 10⁵ returns costs a third of a 10⁶-point run.
+    if (res.ok && params.automatic && params.followTrack && sparse && !cancelled(fb)) {
+        const auto tf = Clock::now();
+        // On the O-C as given: smooth, whereas a refinement's flattened O-C has kinks at the
+        // ends of the trend it subtracted (held constant beyond the accepted span).
+        const FollowResult f = followTrack(t, oc, acceptedMask(res), FollowParams{}, fb);
+        if (f.ok) {
+            for (size_t i = 0; i < n; ++i) {
+                const bool was = res.pointClass[i] != PointClass::Noise, now = f.accepted[i] != 0;
+                if (was == now) continue;
+                if (now) {
+                    res.pointClass[i] = PointClass::Recovered;
+                    ++res.recoveredPoints;
+                    --res.noisePoints;
+                } else {
+                    (res.pointClass[i] == PointClass::Signal ? res.signalPoints : res.recoveredPoints)--;
+                    res.pointClass[i] = PointClass::Noise;
+                    ++res.noisePoints;
+                }
+            }
+            res.followedAdded = f.added;
+            res.followedDropped = f.dropped;
+        }
+        res.recoveryMs += msSince(tf);
+    }
     res.totalMs = msSince(t0);
     if (res.ok && fb) fb->setProgress(1.0);
     return res;

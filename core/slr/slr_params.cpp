@@ -52,7 +52,18 @@ const Schema<SlrParams>& slrSchema() {
                   "automatic mode: screening rounds on the O-C flattened by the accepted track's trend");
         s.real("screen.sparse_rate_below", LWB_FIELD(S, screen.sparseRateBelow), "1/s", {0, 1e7}, {0, 200},
                "passes with fewer returns per second get the sparse-pass ladders and refinement; 0 = always");
-        s.integer("postfit.degree", LWB_FIELD(S, postfit.degree), "", {0, 30}, {2, 15}, "trend polynomial degree (Legendre)");
+        s.boolean("screen.follow_track", LWB_FIELD(S, screen.followTrack),
+                  "automatic mode, sparse passes: follow the track from the accepted pieces (ends, gaps, pieces beyond gaps)");
+        s.integer("postfit.degree", LWB_FIELD(S, postfit.degree), "", {0, 30}, {2, 15},
+                  "trend polynomial degree (Legendre, per segment); the largest tried when auto_degree");
+        s.boolean("postfit.auto_degree", LWB_FIELD(S, postfit.autoDegree),
+                  "choose each segment's model by BIC (degrees 0..degree, cubic splines); false = degree as given");
+        s.real("postfit.split_gap_s", LWB_FIELD(S, postfit.splitGapS), "s", {-1, 86400}, {10, 300},
+               "split the trend at gaps longer than this; 0 = auto (3 bin lengths, at least 20 s); < 0 = one trend")
+            .specials = {{0, "auto"}};
+        s.real("postfit.gross_sigma", LWB_FIELD(S, postfit.grossSigma), "sigma", {3, 1000}, {5, 30},
+               "reject points this many robust sigma off the local track before the fit; 0 = off")
+            .specials = {{0, "off"}};
         s.real("postfit.reject_sigma", LWB_FIELD(S, postfit.rejectSigma), "sigma", {1, 10}, {2, 4},
                "k of the k-sigma rejection: 2.5 single-photon, 3 multi-photon (ILRS); 0 = off")
             .specials = {{0, "off"}};
