@@ -422,15 +422,21 @@ bool calibParamsFromJson(const QJsonObject& o, CalibParams* out, QString* error)
 
 CalibController::CalibController(QObject* parent) : QObject(parent), m_data(std::make_shared<CalibData>()) {
     qRegisterMetaType<lwb::ui::CalibRun>();
-    m_debounce.setSingleShot(true);
-    m_debounce.setInterval(30);  // coalesces a burst of field edits
-    connect(&m_debounce, &QTimer::timeout, this, &CalibController::start);
+    m_job.setWork<CalibRun>(
+        [this]() -> std::function<CalibRun(core::Feedback&)> {
+            const std::shared_ptr<const CalibData> data = m_data;
+            const CalibParams params = m_params;
+            return [data, params](core::Feedback&) { return compute(data, params); };
+        },
+        [this](CalibRun run) {
+            run.generation = m_job.generation();
+            run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - m_job.changedAt());
+            m_run = std::move(run);
+            emit runReady(m_run);
+        });
 }
 
-CalibController::~CalibController() {
-    ++m_generation;  // anything still running is stale
-    QThreadPool::globalInstance()->waitForDone(10000);
-}
+CalibController::~CalibController() { m_job.cancel(); }
 
 void CalibController::openDemo() {
     CalibInputs in;
@@ -554,43 +560,8 @@ bool CalibController::setParams(const CalibParams& p, QString* error) {
     return true;
 }
 
-void CalibController::schedule() {
-    ++m_generation;
-    m_changedAt = QDateTime::currentMSecsSinceEpoch();
-    m_debounce.start();
-}
-
-void CalibController::start() {
-    m_running = true;
-    const quint64 gen = m_generation;
-    const qint64 t0 = m_changedAt;
-    const std::shared_ptr<const CalibData> data = m_data;
-    const CalibParams params = m_params;
-    QPointer<CalibController> self(this);
-    (void)QtConcurrent::run([=]() {
-        CalibRun run = compute(data, params);
-        run.generation = gen;
-        QMetaObject::invokeMethod(
-            qApp,
-            [self, run, gen, t0]() mutable {
-                if (!self || gen != self->m_generation) return;  // stale: a newer run is on its way
-                run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - t0);
-                self->m_run = std::move(run);
-                self->m_running = false;
-                emit self->runReady(self->m_run);
-            },
-            Qt::QueuedConnection);
-    });
-}
-
 bool CalibController::waitIdle(int timeoutMs) {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < timeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        if (!busy()) return true;
-    }
-    return false;
+    return waitUntilIdle([this] { return busy(); }, timeoutMs);
 }
 
 // ---------------------------------------------------------------------------------------------

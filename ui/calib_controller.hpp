@@ -11,7 +11,6 @@
 #include <QJsonObject>
 #include <QObject>
 #include <QString>
-#include <QTimer>
 #include <memory>
 #include <vector>
 
@@ -20,6 +19,8 @@
 #include "core/calib/pointing.hpp"
 #include "core/calib/validation_stats.hpp"
 #include "core/calib/waveform.hpp"
+
+#include "ui/live_job.hpp"
 
 namespace lwb::ui {
 
@@ -104,7 +105,7 @@ public:
     const CalibParams& params() const { return m_params; }
     const CalibRun& run() const { return m_run; }
     bool hasRun() const { return m_run.generation != 0; }
-    bool busy() const { return m_running || m_debounce.isActive(); }
+    bool busy() const { return m_job.busy(); }
 
     /// Every part from the simulators (seeded, deterministic).
     void openDemo();
@@ -140,16 +141,12 @@ signals:
     void status(const QString& message);
 
 private:
-    void schedule();
-    void start();
+    void schedule() { m_job.schedule(); }
 
     std::shared_ptr<const CalibData> m_data;
     CalibParams m_params;
     CalibRun m_run;
-    QTimer m_debounce;
-    quint64 m_generation = 0;
-    bool m_running = false;
-    qint64 m_changedAt = 0;
+    LiveJob m_job;  // the live rerun (debounce, cancel, generation tag)
 };
 
 }  // namespace lwb::ui

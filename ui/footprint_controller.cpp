@@ -6,10 +6,11 @@
 #include <QFileInfo>
 #include <QPointer>
 #include <QThreadPool>
+#include <QThread>
 #include <QtConcurrent>
 #include <mutex>
+#include <thread>
 
-#include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
@@ -132,21 +133,116 @@ struct LoadState : IndexedJob {
     size_t appended = 0;
 };
 
-struct RejudgeState : IndexedJob {
-    using IndexedJob::IndexedJob;
-    std::vector<FootprintResult> results;
-};
+namespace {
+// Runs fn(i) for i in [0, n) on every core, stopping early when fb is cancelled.
+void parallelFor(size_t n, core::Feedback& fb, const std::function<void(size_t)>& fn) {
+    std::atomic<size_t> next{0}, done{0};
+    auto worker = [&] {
+        for (size_t i = next++; i < n && !fb.isCancelled(); i = next++) {
+            fn(i);
+            const size_t d = ++done;
+            if (d % 64 == 0) fb.setProgress(double(d) / double(n));
+        }
+    };
+    const int threads = std::max(1, std::min<int>(QThread::idealThreadCount(), int(n)));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+}
+}  // namespace
 
 FootprintController::FootprintController(QObject* parent) : QObject(parent) {
     qRegisterMetaType<lwb::ui::ShotDetail>();
-    m_debounce.setSingleShot(true);
-    m_debounce.setInterval(150);
-    connect(&m_debounce, &QTimer::timeout, this, &FootprintController::startRejudge);
+    // The current shot: each method's fit, for the overlays.
+    m_currentJob.setWork<ShotDetail>(
+        [this]() -> std::function<ShotDetail(core::Feedback&)> {
+            const Shot* s = shot(m_current);
+            if (!s) return {};
+            if (s->roi.empty()) {
+                ShotDetail d;
+                d.index = m_current;
+                d.selected.error = s->loadError.toStdString();
+                emit currentDetailReady(d);
+                return {};
+            }
+            const cv::Mat roi = s->roi;
+            const QPoint origin = s->origin;
+            const int index = m_current;
+            const FootprintParams params = m_params;
+            auto fits = m_fits;
+            return [=](core::Feedback&) {
+                ShotDetail d;
+                d.index = index;
+                d.roi = roi;
+                d.origin = origin;
+                d.selected = processRoi(roi, params);
+                FootprintParams q = params;
+                for (Method m : {Method::Gauss, Method::Tefm, Method::Gcm}) {
+                    FootprintResult& r = m == Method::Gauss ? d.gauss : m == Method::Tefm ? d.tefm : d.gcm;
+                    q.method = m;
+                    r = params.method == m ? d.selected : processRoi(roi, q);
+                }
+                *fits += 3;
+                return d;
+            };
+        },
+        [this](ShotDetail d) {
+            if (d.index != m_current || d.index >= count()) return;
+            // Judged with the criteria of now (they may have moved while the fit ran).
+            for (FootprintResult* r : {&d.selected, &d.gauss, &d.tefm, &d.gcm})
+                judgeResult(r, d.roi.cols, d.roi.rows, m_params.verdict);
+            d.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - m_currentJob.changedAt());
+            m_detail = d;
+            applyResult(m_shots[size_t(d.index)], d.selected);
+            emit shotsChanged(d.index, d.index);
+            emit countsChanged();
+            emit currentDetailReady(d);
+        });
+    // The whole list, refitted in the background after the current shot.
+    m_listJob.setWork<std::shared_ptr<std::vector<FootprintResult>>>(
+        [this]() -> std::function<std::shared_ptr<std::vector<FootprintResult>>(core::Feedback&)> {
+            if (m_loading || m_shots.empty()) return {};  // the loader refits when it is done
+            std::vector<cv::Mat> rois;
+            rois.reserve(m_shots.size());
+            for (const Shot& s : m_shots) rois.push_back(s.roi);
+            const FootprintParams params = m_params;
+            auto fits = m_fits;
+            return [rois, params, fits](core::Feedback& fb) {
+                auto out = std::make_shared<std::vector<FootprintResult>>(rois.size());
+                parallelFor(rois.size(), fb, [&](size_t i) {
+                    if (rois[i].empty()) return;
+                    (*out)[i] = processRoi(rois[i], params);
+                    ++*fits;
+                });
+                return out;
+            };
+        },
+        [this](std::shared_ptr<std::vector<FootprintResult>> results) {
+            if (results->size() != m_shots.size()) return;  // the list changed meanwhile
+            for (size_t i = 0; i < m_shots.size(); ++i) {
+                if (m_shots[i].roi.empty()) continue;
+                FootprintResult& r = (*results)[i];
+                judgeResult(&r, m_shots[i].roi.cols, m_shots[i].roi.rows, m_params.verdict);
+                applyResult(m_shots[i], r);
+            }
+            if (!m_shots.empty()) emit shotsChanged(0, count() - 1);
+            emit countsChanged();
+            emit rejudgeFinished();
+        });
+    // The list follows the current shot, so the shot in view is fitted first.
+    connect(&m_currentJob, &LiveJob::idle, this, [this] {
+        if (m_listDue) {
+            m_listDue = false;
+            m_listJob.schedule();
+        }
+    });
 }
 
 FootprintController::~FootprintController() {
     if (m_loadFeedback) m_loadFeedback->cancel();
-    if (m_rejudgeFeedback) m_rejudgeFeedback->cancel();
+    m_currentJob.cancel();
+    m_listJob.cancel();
     QThreadPool::globalInstance()->waitForDone(5000);
 }
 
@@ -156,6 +252,7 @@ void FootprintController::process(Shot& s, const FootprintParams& p) {
 
 void FootprintController::applyResult(Shot& s, const FootprintResult& r) {
     s.processed = true;
+    s.result = r;
     s.reasons.clear();
     if (!r.ok) {
         s.verdict = Verdict::Rejected;
@@ -171,13 +268,16 @@ void FootprintController::applyResult(Shot& s, const FootprintResult& r) {
 
 void FootprintController::clear() {
     cancelLoading();
-    if (m_rejudgeFeedback) m_rejudgeFeedback->cancel();
+    m_currentJob.cancel();
+    m_listJob.cancel();
+    m_listDue = false;
     emit shotsAboutToReset();
     m_shots.clear();
     m_inputs.clear();
     m_current = -1;
-    m_rejudgeRunning = false;
+    m_detail = ShotDetail{};
     ++m_listGeneration;
+    *m_fits = 0;
     emit shotsReset();
     emit countsChanged();
 }
@@ -185,7 +285,10 @@ void FootprintController::clear() {
 void FootprintController::setShots(std::vector<Shot> shots) {
     clear();
     for (Shot& s : shots)
-        if (!s.processed) process(s, m_params);
+        if (!s.processed) {
+            process(s, m_params);
+            ++*m_fits;
+        }
     emit shotsAboutToReset();
     m_shots = std::move(shots);
     emit shotsReset();
@@ -224,32 +327,43 @@ void FootprintController::open(const QStringList& paths, bool append) {
     m_loadFeedback = std::shared_ptr<core::Feedback>(job, &job->feedback);
     m_loading = true;
     const FootprintParams params = m_params;
-    job->start([job, params](size_t i) {
+    auto fits = m_fits;
+    job->start([job, params, fits](size_t i) {
         Shot& s = job->results[i];
         loadShot(s, params);
-        if (s.loadError.isEmpty()) process(s, params);
+        if (s.loadError.isEmpty()) {
+            process(s, params);
+            ++*fits;
+        }
     });
     const quint64 listGen = m_listGeneration;
-    const quint64 gen = m_generation;
+    const quint64 fitGen = m_fitGeneration;
     auto* timer = new QTimer(this);
     timer->setInterval(40);
-    connect(timer, &QTimer::timeout, this, [this, job, timer, listGen, gen]() {
+    connect(timer, &QTimer::timeout, this, [this, job, timer, listGen, fitGen]() {
         if (listGen != m_listGeneration) {  // the list was replaced meanwhile: drop everything
             job->feedback.cancel();
             if (job->finished()) timer->deleteLater();
             return;
         }
         const int first = count();
+        const bool refitDue = fitGen != m_fitGeneration;  // fit parameters changed during loading
         {
             std::lock_guard<std::mutex> lock(job->mutex);
             size_t ready = job->appended;
             while (ready < job->total && job->done[ready]) ++ready;
             if (ready > job->appended) {
                 emit shotsAboutToAppend(first, first + int(ready - job->appended) - 1);
-                while (job->appended < ready) m_shots.push_back(std::move(job->results[job->appended++]));
+                while (job->appended < ready) {
+                    Shot s = std::move(job->results[job->appended++]);
+                    if (!refitDue && s.processed) {  // the criteria of now
+                        judgeResult(&s.result, s.roi.cols, s.roi.rows, m_params.verdict);
+                        applyResult(s, s.result);
+                    }
+                    m_shots.push_back(std::move(s));
+                }
             }
         }
-        const bool stale = gen != m_generation;  // parameters changed during loading
         if (count() > first) {
             emit shotsAppended(first, count() - 1);
             emit countsChanged();
@@ -264,121 +378,56 @@ void FootprintController::open(const QStringList& paths, bool append) {
         for (const Shot& s : m_shots) failed += !s.loadError.isEmpty();
         const bool cancelled = job->appended < job->total;
         emit loadFinished(int(job->appended), failed, cancelled);
-        if (stale) startRejudge();
+        if (refitDue) m_listJob.startNow();
     });
     timer->start();
 }
 
 void FootprintController::setParams(const FootprintParams& p) {
+    // Results under the old parameters hold under the new ones but for the verdict: judge again.
+    const bool verdictOnly = onlyVerdictDiffers(m_params, p) && validate(m_params).empty();
     m_params = p;
-    ++m_generation;
-    m_paramChangedAt = QDateTime::currentMSecsSinceEpoch();
-    runCurrent();
-    m_debounce.start();
+    if (verdictOnly) {
+        rejudgeAll();
+        return;
+    }
+    ++m_fitGeneration;
+    m_listJob.cancel();     // a refit under the old parameters is of no use now
+    m_listDue = true;       // refitted once the current shot is
+    if (shot(m_current)) m_currentJob.schedule();
+    else {
+        m_listDue = false;
+        m_listJob.schedule();
+    }
+}
+
+void FootprintController::rejudgeAll() {
+    QElapsedTimer t;
+    t.start();
+    const core::footprint::VerdictParams& v = m_params.verdict;
+    for (Shot& s : m_shots)
+        if (s.processed && !s.roi.empty()) {
+            judgeResult(&s.result, s.roi.cols, s.roi.rows, v);
+            applyResult(s, s.result);
+        }
+    const bool haveDetail = m_detail.index >= 0 && m_detail.index == m_current && !m_detail.roi.empty();
+    if (haveDetail)
+        for (FootprintResult* r : {&m_detail.selected, &m_detail.gauss, &m_detail.tefm, &m_detail.gcm})
+            judgeResult(r, m_detail.roi.cols, m_detail.roi.rows, v);
+    m_lastRejudgeMs = t.nsecsElapsed() / 1e6;
+    if (!m_shots.empty()) emit shotsChanged(0, count() - 1);
+    emit countsChanged();
+    if (haveDetail) {
+        m_detail.latencyMs = m_lastRejudgeMs;
+        emit currentDetailReady(m_detail);
+    }
+    emit rejudgeFinished();
 }
 
 void FootprintController::setCurrent(int index) {
     if (index < -1 || index >= count()) return;
     m_current = index;
-    m_paramChangedAt = QDateTime::currentMSecsSinceEpoch();
-    runCurrent();
-}
-
-void FootprintController::runCurrent() {
-    const Shot* s = shot(m_current);
-    if (!s) return;
-    if (s->roi.empty()) {
-        ShotDetail d;
-        d.index = m_current;
-        d.selected.error = s->loadError.toStdString();
-        emit currentDetailReady(d);
-        return;
-    }
-    const cv::Mat roi = s->roi;
-    const QPoint origin = s->origin;
-    const int index = m_current;
-    const quint64 gen = m_generation;
-    const quint64 listGen = m_listGeneration;
-    const FootprintParams params = m_params;
-    const qint64 t0 = m_paramChangedAt;
-    QPointer<FootprintController> self(this);
-    (void)QtConcurrent::run([=]() {
-        ShotDetail d;
-        d.index = index;
-        d.roi = roi;
-        d.origin = origin;
-        d.selected = processRoi(roi, params);
-        FootprintParams q = params;
-        q.method = Method::Gauss;
-        d.gauss = params.method == Method::Gauss ? d.selected : processRoi(roi, q);
-        q.method = Method::Tefm;
-        d.tefm = params.method == Method::Tefm ? d.selected : processRoi(roi, q);
-        q.method = Method::Gcm;
-        d.gcm = params.method == Method::Gcm ? d.selected : processRoi(roi, q);
-        QMetaObject::invokeMethod(
-            qApp,
-            [self, d, gen, listGen, t0]() mutable {
-                if (!self || gen != self->m_generation || listGen != self->m_listGeneration || d.index != self->m_current)
-                    return;  // stale
-                d.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - t0);
-                Shot& s = self->m_shots[size_t(d.index)];
-                self->applyResult(s, d.selected);
-                emit self->shotsChanged(d.index, d.index);
-                emit self->countsChanged();
-                emit self->currentDetailReady(d);
-            },
-            Qt::QueuedConnection);
-    });
-}
-
-void FootprintController::startRejudge() {
-    if (m_loading) return;  // the loader re-judges when it is done
-    if (m_rejudgeFeedback) m_rejudgeFeedback->cancel();
-    if (m_shots.empty()) {
-        m_rejudgeRunning = false;
-        return;
-    }
-    auto job = std::make_shared<RejudgeState>(m_shots.size());
-    job->results.resize(m_shots.size());
-    std::vector<cv::Mat> rois;
-    rois.reserve(m_shots.size());
-    for (const Shot& s : m_shots) rois.push_back(s.roi);
-    m_rejudgeFeedback = std::shared_ptr<core::Feedback>(job, &job->feedback);
-    m_rejudgeRunning = true;
-    const FootprintParams params = m_params;
-    job->start([job, params, rois](size_t i) {
-        if (!rois[i].empty()) job->results[i] = processRoi(rois[i], params);
-    });
-    const quint64 gen = m_generation, listGen = m_listGeneration;
-    auto* timer = new QTimer(this);
-    timer->setInterval(60);
-    connect(timer, &QTimer::timeout, this, [this, job, timer, gen, listGen]() {
-        const bool stale = gen != m_generation || listGen != m_listGeneration;
-        if (stale) job->feedback.cancel();
-        if (!stale) {
-            int first = -1, last = -1;
-            std::lock_guard<std::mutex> lock(job->mutex);
-            for (size_t i = 0; i < job->total; ++i) {
-                if (job->done[i] != 1 || i >= m_shots.size()) continue;
-                job->done[i] = 2;  // applied
-                if (!m_shots[i].roi.empty()) applyResult(m_shots[i], job->results[i]);
-                if (first < 0) first = int(i);
-                last = int(i);
-            }
-            if (first >= 0) {
-                emit shotsChanged(first, last);
-                emit countsChanged();
-            }
-        }
-        if (!job->finished()) return;
-        timer->stop();
-        timer->deleteLater();
-        if (!stale) {
-            m_rejudgeRunning = false;
-            emit rejudgeFinished();
-        }
-    });
-    timer->start();
+    if (index >= 0) m_currentJob.startNow();
 }
 
 void FootprintController::setOverride(int index, Verdict v, const QString& note) {
@@ -419,22 +468,25 @@ FootprintController::Counts FootprintController::counts() const {
 }
 
 bool FootprintController::exportAccepted(const QString& path, QString* error) const {
-    std::string out = "file,x,y,verdict,method,noise_class,sigma_x,sigma_y,axis_ratio,tilt_deg,major_axis_px,mse,snr,"
-                      "uncertainty_px,time,beam,camera,override,note\n";
-    auto num = [](double v, int d) { return std::isfinite(v) ? core::formatFixed(v, d) : std::string(); };
+    std::vector<BatchItem> items;
+    FootprintCsvExtra extra;
+    extra.names = {"time", "beam", "camera", "override", "note"};
     for (const Shot& s : m_shots) {
         if (!s.loadError.isEmpty() || s.effectiveVerdict() != Verdict::Good || !s.fit.ok) continue;
-        const auto& f = s.fit;
-        out += core::csvEscape(s.file.toStdString()) + "," + num(s.fullX(), 4) + "," + num(s.fullY(), 4) + ",good," +
-               methodName(m_params.method) + "," + s.noiseClass.toStdString() + "," + num(f.sigmaX, 4) + "," +
-               num(f.sigmaY, 4) + "," + num(f.axisRatio, 4) + "," + num(f.tiltRad * 180 / M_PI, 3) + "," +
-               num(f.majorAxisPx, 3) + "," + (std::isfinite(f.mse) ? core::formatDouble(f.mse, 4) : "") + "," +
-               num(f.snr, 2) + "," + num(f.uncertaintyPx, 5) + "," + core::csvEscape(s.time.toStdString()) + "," +
-               core::csvEscape(s.beam.toStdString()) + "," + core::csvEscape(s.camera.toStdString()) + "," +
-               (s.overridden ? "manual" : "") + "," + core::csvEscape(s.note.toStdString()) + "\n";
+        BatchItem item;
+        item.file = s.file.toStdString();
+        FrameRoiResult fr;
+        fr.result = s.result;
+        fr.result.verdict = Verdict::Good;  // the effective verdict: an analyst's "good" counts
+        fr.originX = s.origin.x();
+        fr.originY = s.origin.y();
+        item.rois.push_back(std::move(fr));
+        items.push_back(std::move(item));
+        extra.values.push_back({s.time.toStdString(), s.beam.toStdString(), s.camera.toStdString(),
+                                s.overridden ? "manual" : "", s.note.toStdString()});
     }
     std::string err;
-    if (!core::writeFileAtomic(path.toStdString(), out, &err)) {
+    if (!writeFootprintCsv(path.toStdString(), items, m_params.method, &err, &extra)) {
         *error = QString::fromStdString(err);
         return false;
     }
@@ -462,13 +514,7 @@ TrendResult FootprintController::trend(const TrendParams& tp) const {
 }
 
 bool FootprintController::waitIdle(int timeoutMs) {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < timeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        if (!m_loading && !m_rejudgeRunning && !m_debounce.isActive()) return true;
-    }
-    return false;
+    return waitUntilIdle([this] { return busy(); }, timeoutMs);
 }
 
 }  // namespace lwb::ui

@@ -1,13 +1,15 @@
 #pragma once
 // The footprint workspace's controller: owns the shot list, the parameters and every job that
-// runs the core (loading, live rerun of the current shot, background re-judging of the list).
-// Widgets never call the core; they talk to this object. Jobs run on the global thread pool,
-// are tagged with a generation number, and results of a stale generation are dropped.
+// runs the core (loading, live rerun of the current shot, background refit of the list).
+// Widgets never call the core; they talk to this object. The current shot and the list are each
+// a LiveJob (ui/live_job.hpp: debounce, cancel, generation tag). A change of the verdict criteria
+// alone re-judges the cached fits at once (core::footprint::judgeResult), with no refit.
 #include <QObject>
 #include <QPointF>
 #include <QStringList>
 #include <QTimer>
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "core/common/feedback.hpp"
 #include "core/footprint/pipeline.hpp"
 #include "core/footprint/trend.hpp"
+#include "ui/live_job.hpp"
 
 namespace lwb::ui {
 
@@ -35,6 +38,8 @@ struct Shot {
     QString loadError;         ///< why the frame could not be read
     // Result under the current parameters
     bool processed = false;
+    core::footprint::FootprintResult result;  ///< the pipeline's result (ROI coordinates)
+    // Shown in the table (from result).
     Verdict verdict = Verdict::Rejected;
     QStringList reasons;
     QString noiseClass;
@@ -70,7 +75,7 @@ public:
     int count() const { return int(m_shots.size()); }
     const core::footprint::FootprintParams& params() const { return m_params; }
     int current() const { return m_current; }
-    bool busy() const { return m_loading || m_rejudgeRunning; }
+    bool busy() const { return m_loading || m_listJob.busy() || m_currentJob.busy(); }
 
     /// Files and folders (every image inside), or a CSV list (file,time,beam[,camera][,center_x,center_y]).
     /// Loading runs in the background; rows appear as results arrive. Replaces the list unless append.
@@ -80,9 +85,14 @@ public:
     void cancelLoading();
     void clear();
 
-    /// New parameters: the current shot is re-run at once (debounced), the whole list re-judged
-    /// in the background.
+    /// New parameters. A change of the verdict criteria only: every cached fit (the list and the
+    /// current shot's methods) is judged again at once, no refit. Any other change: the current
+    /// shot is refitted (live job), then the whole list in the background.
     void setParams(const core::footprint::FootprintParams& p);
+    /// Fits made since the list was last replaced (tests: a verdict change must not refit).
+    long long fitCount() const { return *m_fits; }
+    /// ms the last re-judging of cached fits took (the latency benchmark).
+    double lastRejudgeMs() const { return m_lastRejudgeMs; }
     void setCurrent(int index);
 
     void setOverride(int index, Verdict v, const QString& note);
@@ -94,8 +104,9 @@ public:
     };
     Counts counts() const;
 
-    /// Accepted shots (effective verdict good) as CSV (the footprint report columns + time,
-    /// beam, camera, override, note). Atomic. False with *error.
+    /// Accepted shots (effective verdict good) as CSV through the core writer of the
+    /// `footprint` command's report (core::footprint::writeFootprintCsv, every column), plus
+    /// time, beam, camera, override and note. Atomic. False with *error.
     bool exportAccepted(const QString& path, QString* error) const;
     /// Monthly trend of the accepted shots that have a time and a beam.
     core::footprint::TrendResult trend(const core::footprint::TrendParams& tp) const;
@@ -119,8 +130,7 @@ signals:
     void error(const QString& message);
 
 private:
-    void runCurrent();
-    void startRejudge();
+    void rejudgeAll();
     static void applyResult(Shot& s, const core::footprint::FootprintResult& r);
     static void process(Shot& s, const core::footprint::FootprintParams& p);
 
@@ -128,12 +138,15 @@ private:
     QStringList m_inputs;
     core::footprint::FootprintParams m_params;
     int m_current = -1;
-    QTimer m_debounce;
-    quint64 m_generation = 0;        // bumps on every parameter change
+    ShotDetail m_detail;             // the current shot's last result (re-judged in place)
+    LiveJob m_currentJob, m_listJob;
+    quint64 m_fitGeneration = 0;     // bumps on every change that needs a refit
     quint64 m_listGeneration = 0;    // bumps when the list is replaced
-    std::shared_ptr<core::Feedback> m_loadFeedback, m_rejudgeFeedback;
-    bool m_loading = false, m_rejudgeRunning = false;
-    qint64 m_paramChangedAt = 0;     // ms timestamp of the last parameter change (latency)
+    std::shared_ptr<core::Feedback> m_loadFeedback;
+    bool m_loading = false;
+    bool m_listDue = false;          // refit the list once the current shot is done
+    std::shared_ptr<std::atomic<long long>> m_fits = std::make_shared<std::atomic<long long>>(0);  // workers count too
+    double m_lastRejudgeMs = 0;
 };
 
 }  // namespace lwb::ui

@@ -27,6 +27,7 @@
 #include "ui/demo.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/image_view.hpp"
+#include "ui/session_json.hpp"
 #include "ui/shot_table_model.hpp"
 
 namespace lwb::ui {
@@ -520,7 +521,7 @@ QJsonObject FootprintWorkspace::saveState() const {
     o["inputs"] = inputs;
     o["demo"] = m_controller->inputs().isEmpty() && m_controller->count() > 0 &&
                 m_controller->shot(0)->file.startsWith("demo:");
-    o["params"] = QJsonDocument::fromJson(QByteArray::fromStdString(footprintParamsToJson(m_controller->params()).dump())).object();
+    o["params"] = toQtJson(footprintParamsToJson(m_controller->params()));  // every field
     QJsonObject ov;
     for (const Shot& s : m_controller->shots()) {
         if (!s.overridden && s.note.isEmpty()) continue;
@@ -534,14 +535,18 @@ QJsonObject FootprintWorkspace::saveState() const {
     return o;
 }
 
-bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error) {
+bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                                      const std::vector<std::string>& at) {
+    if (!checkSessionKeys(state, {"inputs", "demo", "params", "overrides", "current"}, "footprint", error, doc, at))
+        return false;
+    // Every parameter from the session over the defaults.
     FootprintParams p;
     if (state.contains("params")) {
-        const std::string text = QJsonDocument(state["params"].toObject()).toJson().toStdString();
-        const core::JsonParseResult j = core::parseJson(text, "session params");
+        std::vector<std::string> where = at;
+        where.push_back("params");
         std::string err;
-        if (!j.ok || !footprintParamsFromJson(j.value, &p, &err)) {
-            *error = tr("footprint parameters: %1").arg(QString::fromStdString(j.ok ? err : j.error));
+        if (!footprintSchema().fromJson(fromQtJson(state["params"]), &p, &err, doc, where)) {
+            *error = QString::fromStdString(err);
             return false;
         }
     }

@@ -4,6 +4,7 @@
 #include <QJsonObject>
 #include <QWidget>
 
+#include "core/common/json.hpp"
 #include "ui/footprint_controller.hpp"
 
 class QTableView;
@@ -35,8 +36,12 @@ public:
     /// Session state: inputs, parameters, overrides and notes (keyed by file and ROI centre).
     QJsonObject saveState() const;
     /// Restores a session; loading of the inputs runs in the background, overrides are applied
-    /// as rows arrive. False with *error when the state is malformed.
-    bool restoreState(const QJsonObject& state, QString* error);
+    /// as rows arrive. The parameters start from the defaults and every field given is read
+    /// (footprintSchema().fromJson: unknown keys are errors naming the key, with the line and
+    /// column when `doc`, the parsed session file, is given; `at`: this state's path in it).
+    /// False with *error when the state is malformed.
+    bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                      const std::vector<std::string>& at = {"footprint"});
 
     /// "review" or "trend".
     void showTab(const QString& name);

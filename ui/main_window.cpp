@@ -17,6 +17,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 
+#include "core/common/json.hpp"
 #include "ui/demo.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/footprint_workspace.hpp"
@@ -187,15 +188,13 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
     };
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) return fail(tr("%1: %2").arg(path, f.errorString()));
-    QJsonParseError pe;
-    const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &pe);
-    if (pe.error != QJsonParseError::NoError) {
-        // Turn the byte offset into a line number for the message.
-        f.seek(0);
-        const QByteArray head = f.read(pe.offset);
-        return fail(tr("%1:%2: %3").arg(path).arg(head.count('\n') + 1).arg(pe.errorString()));
-    }
-    const QJsonObject o = doc.object();
+    const QByteArray text = f.readAll();
+    // Parsed by the core's reader first: strict (duplicate keys refused), and its positions
+    // give the parameter sections' messages their line and column.
+    const core::JsonParseResult parsed = core::parseJson(text.toStdString(), path.toStdString());
+    if (!parsed.ok) return fail(QString::fromStdString(parsed.error));
+    const QJsonObject o = QJsonDocument::fromJson(text).object();
+    if (!parsed.value.is_object()) return fail(tr("%1: a session is a JSON object").arg(path));
     if (o["format"].toString() != "laserwb-session")
         return fail(tr("%1: not a Laser Workbench session (no \"format\": \"laserwb-session\")").arg(path));
     // A whole number 1..kSessionVersion (toInt() would turn 1e300 or 1.5 into 0 and let it pass).
@@ -214,8 +213,8 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
     const QJsonObject slrBefore = m_slr->saveState();
     const QJsonObject calibBefore = m_calib->saveState();
     const QJsonObject radBefore = m_radiometry->saveState();
-    if (!m_footprint->restoreState(o["footprint"].toObject(), &err) ||
-        (o.contains("slr") && !m_slr->restoreState(o["slr"].toObject(), &err)) ||
+    if (!m_footprint->restoreState(o["footprint"].toObject(), &err, &parsed) ||
+        (o.contains("slr") && !m_slr->restoreState(o["slr"].toObject(), &err, &parsed)) ||
         (o.contains("calibration") && !m_calib->restoreState(o["calibration"].toObject(), &err)) ||
         (o.contains("radiometry") && !m_radiometry->restoreState(o["radiometry"].toObject(), &err))) {
         QString ignored;
@@ -223,7 +222,7 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
         m_slr->restoreState(slrBefore, &ignored);
         m_calib->restoreState(calibBefore, &ignored);
         m_radiometry->restoreState(radBefore, &ignored);
-        return fail(tr("%1: %2").arg(path, err));
+        return fail(err.startsWith(path + ":") ? err : tr("%1: %2").arg(path, err));
     }
     m_sessionPath = path;
     addRecent(path);

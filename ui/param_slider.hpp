@@ -1,37 +1,69 @@
 #pragma once
-// A labelled slider with a numeric field, linear or logarithmic; the unit of parameter panels.
+// A labelled slider with a numeric field, built from a schema row (core::FieldInfo): the label,
+// unit and tooltip (doc, valid range, special values) come from the row; the field accepts the
+// row's valid range, the slider covers its typical UI range (log10 when uiLog). A value outside
+// the UI range is kept exactly — the slider pins at its end, the field shows the true value —
+// and changes only when the user changes it. A special value of the row (0 = "auto", NaN =
+// "estimated" or "off") gets a check box beside the slider.
 #include <QWidget>
+#include <vector>
 
-class QSlider;
+#include "core/common/schema.hpp"
+
+class QCheckBox;
 class QDoubleSpinBox;
 class QLabel;
+class QSlider;
 
 namespace lwb::ui {
 
 class ParamSlider : public QWidget {
     Q_OBJECT
 public:
-    /// decimals: shown in the field; logScale: the slider moves in log10(value) (lo > 0).
+    /// label: shown instead of the row's own (its key's last part).
+    explicit ParamSlider(const core::FieldInfo& info, const QString& label = {}, QWidget* parent = nullptr);
+    /// A slider without a schema row: the valid range is the slider's [lo, hi].
     ParamSlider(const QString& label, double lo, double hi, double value, int decimals, bool logScale = false,
                 const QString& unit = {}, QWidget* parent = nullptr);
+
+    /// The value exactly as set or edited (a special's value while its box is checked).
     double value() const { return m_value; }
-    /// Sets the value without emitting valueChanged (for loading presets/sessions).
+    /// Shows v without emitting valueChanged; never clamped or rounded.
     void setValue(double v);
+    /// What the slider and field show while a special value is on, e.g. the scale the automatic
+    /// mode chose in the last run; unchecking the special box starts from it. NaN: none.
+    void setSpecialHint(double v);
     void setToolTipText(const QString& tip);
+
+    const core::FieldInfo& info() const { return m_info; }
     QSlider* slider() const { return m_slider; }
     QDoubleSpinBox* field() const { return m_field; }
+    QLabel* label() const { return m_label; }
+    /// The check box of the row's first special value, nullptr when it has none.
+    QCheckBox* specialBox() const { return m_specials.empty() ? nullptr : m_specials.front(); }
+    /// The value lies outside the slider's range (the slider sits at its end).
+    bool pinned() const;
 
 signals:
     void valueChanged(double value);
 
 private:
+    void build(const QString& label);
+    void show();
+    void userValue(double v);
     int toSlider(double v) const;
     double fromSlider(int s) const;
-    QSlider* m_slider;
-    QDoubleSpinBox* m_field;
-    QLabel* m_label;
-    double m_lo, m_hi, m_value;
-    bool m_log;
+    int specialIndex(double v) const;
+
+    core::FieldInfo m_info;
+    QSlider* m_slider = nullptr;
+    QDoubleSpinBox* m_field = nullptr;
+    QLabel* m_label = nullptr;
+    std::vector<QCheckBox*> m_specials;
+    double m_value = 0;
+    double m_regular = 0;        ///< the last value that is not a special one
+    double m_hint = NAN;
+    bool m_intSlider = false;    ///< the slider's positions are the integers of the UI range
     bool m_updating = false;
 };
 

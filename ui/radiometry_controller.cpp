@@ -301,13 +301,24 @@ bool radiometryParamsFromJson(const QJsonObject& o, RadiometryParams* out, QStri
 RadiometryController::RadiometryController(QObject* parent)
     : QObject(parent), m_image(std::make_shared<RadiometryImage>()) {
     qRegisterMetaType<lwb::ui::RadiometryRun>();
-    m_debounce.setSingleShot(true);
-    m_debounce.setInterval(30);
-    connect(&m_debounce, &QTimer::timeout, this, &RadiometryController::start);
+    m_job.setWork<RadiometryRun>(
+        [this]() -> std::function<RadiometryRun(core::Feedback&)> {
+            if (m_mosaicRunning) return {};  // the new image schedules a run when it arrives
+            const std::shared_ptr<const RadiometryImage> img = m_image;
+            const std::vector<PickedRegion> regions = m_regions;
+            const RadiometryParams params = m_params;
+            return [img, regions, params](core::Feedback&) { return compute(img, regions, params); };
+        },
+        [this](RadiometryRun run) {
+            run.generation = m_job.generation();
+            run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - m_job.changedAt());
+            m_run = std::move(run);
+            emit runReady(m_run);
+        });
 }
 
 RadiometryController::~RadiometryController() {
-    ++m_generation;
+    m_job.cancel();
     ++m_imageGeneration;
     if (m_mosaicFeedback) m_mosaicFeedback->cancel();
     QThreadPool::globalInstance()->waitForDone(10000);
@@ -576,45 +587,8 @@ bool RadiometryController::setParams(const RadiometryParams& p, QString* error) 
     return true;
 }
 
-void RadiometryController::schedule() {
-    ++m_generation;
-    m_changedAt = QDateTime::currentMSecsSinceEpoch();
-    m_debounce.start();
-}
-
-void RadiometryController::start() {
-    if (m_mosaicRunning) return;  // the new image schedules a run when it arrives
-    m_running = true;
-    const quint64 gen = m_generation;
-    const qint64 t0 = m_changedAt;
-    const std::shared_ptr<const RadiometryImage> img = m_image;
-    const std::vector<PickedRegion> regions = m_regions;
-    const RadiometryParams params = m_params;
-    QPointer<RadiometryController> self(this);
-    (void)QtConcurrent::run([=]() {
-        RadiometryRun run = compute(img, regions, params);
-        run.generation = gen;
-        QMetaObject::invokeMethod(
-            qApp,
-            [self, run, gen, t0]() mutable {
-                if (!self || gen != self->m_generation) return;
-                run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - t0);
-                self->m_run = std::move(run);
-                self->m_running = false;
-                emit self->runReady(self->m_run);
-            },
-            Qt::QueuedConnection);
-    });
-}
-
 bool RadiometryController::waitIdle(int timeoutMs) {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < timeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        if (!busy()) return true;
-    }
-    return false;
+    return waitUntilIdle([this] { return busy(); }, timeoutMs);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -10,7 +10,6 @@
 #include <QRect>
 #include <QString>
 #include <QStringList>
-#include <QTimer>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <vector>
@@ -19,6 +18,8 @@
 #include "core/radiometry/geotiff.hpp"
 #include "core/radiometry/mosaic.hpp"
 #include "core/radiometry/reflectance.hpp"
+
+#include "ui/live_job.hpp"
 
 namespace lwb::ui {
 
@@ -87,7 +88,7 @@ public:
     const RadiometryParams& params() const { return m_params; }
     const RadiometryRun& run() const { return m_run; }
     bool hasRun() const { return m_run.generation != 0; }
-    bool busy() const { return m_mosaicRunning || m_running || m_debounce.isActive(); }
+    bool busy() const { return m_mosaicRunning || m_job.busy(); }
 
     /// The simulated field: six frames of a row with grey panels and check surfaces, mosaicked
     /// in the background; its panels and check regions become the regions.
@@ -139,8 +140,7 @@ signals:
     void status(const QString& message);
 
 private:
-    void schedule();
-    void start();
+    void schedule() { m_job.schedule(); }
     void startMosaic(std::vector<cv::Mat> frames, const QStringList& paths, bool demo);
     void setImage(std::shared_ptr<const RadiometryImage> img);
 
@@ -148,13 +148,11 @@ private:
     std::vector<PickedRegion> m_regions;
     RadiometryParams m_params;
     RadiometryRun m_run;
-    QTimer m_debounce;
-    quint64 m_generation = 0;
+    LiveJob m_job;  // the live rerun (debounce, cancel, generation tag)
     quint64 m_imageGeneration = 0;
     std::shared_ptr<core::Feedback> m_mosaicFeedback;
-    bool m_running = false, m_mosaicRunning = false;
+    bool m_mosaicRunning = false;
     bool m_keepRegionsOnDemo = false;  // a session restores its own regions over the demo's
-    qint64 m_changedAt = 0;
 
 public:
     /// For session restore: the next demo image keeps the current regions instead of its own.

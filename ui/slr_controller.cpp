@@ -16,15 +16,72 @@ using namespace core::slr;
 
 SlrController::SlrController(QObject* parent) : QObject(parent) {
     qRegisterMetaType<lwb::ui::SlrRun>();
-    m_debounce.setSingleShot(true);
-    m_debounce.setInterval(15);  // coalesces a burst of slider events; the screening itself is the latency
-    connect(&m_debounce, &QTimer::timeout, this, &SlrController::start);
     m_presetFile = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/slr-presets.json";
+    m_job.setWork<SlrRun>(
+        [this]() -> std::function<SlrRun(core::Feedback&)> {
+            if (!hasPass()) return {};
+            // What this run reuses: the last screening (only the post-fit or the edits changed),
+            // or the scale the automatic mode chose (only C changed), or nothing.
+            std::shared_ptr<const SlrRun> previous = !m_screenDue && m_run->screen.ok ? m_run : nullptr;
+            const bool keepScale = m_screenDue && m_scaleValid && m_params.screen.automatic;
+            const ScaleChoice scale = m_scale;
+            auto t = m_t, oc = m_oc, tof = m_tof;
+            const SlrParams params = m_params;
+            const std::vector<int8_t> forced = m_forced;
+            return [=](core::Feedback& fb) {
+                SlrRun run;
+                if (previous) {
+                    run.screen = previous->screen;
+                    run.screenReused = true;
+                    run.scaleReused = previous->scaleReused;
+                } else if (keepScale) {
+                    run.screen = screenSignal(*t, *oc, params.screen, scale, &fb);
+                    run.scaleReused = true;
+                } else {
+                    run.screen = screenSignal(*t, *oc, params.screen, &fb);
+                }
+                if (fb.isCancelled() || !run.screen.ok) return run;
+                run.accepted = acceptedMask(run.screen);
+                for (size_t i = 0; i < run.accepted.size() && i < forced.size(); ++i)
+                    if (forced[i] > 0) run.accepted[i] = 1;
+                    else if (forced[i] < 0) run.accepted[i] = 0;
+                run.post = postfit(*t, *oc, run.accepted, *tof, params.postfit, &fb);
+                return run;
+            };
+        },
+        [this](SlrRun run) {
+            run.generation = m_job.generation();
+            run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - m_job.changedAt());
+            if (!run.screen.ok) {
+                emit runFailed(QString::fromStdString(run.screen.error));
+                return;
+            }
+            if (!run.screenReused) {
+                ++m_screenings;
+                m_screenDue = false;
+                // The automatic choice: reused while only C moves.
+                if (!run.scaleReused) {
+                    m_scale = scaleChoice(run.screen);
+                    m_scaleValid = m_params.screen.automatic;
+                }
+            }
+            m_run = std::make_shared<const SlrRun>(std::move(run));
+            emit runReady(*m_run);
+        });
 }
 
-SlrController::~SlrController() {
-    if (m_feedback) m_feedback->cancel();
-    QThreadPool::globalInstance()->waitForDone(10000);
+SlrController::~SlrController() { m_job.cancel(); }
+
+void SlrController::passLoaded() {
+    m_t = std::make_shared<const std::vector<double>>(m_pass.t);
+    m_oc = std::make_shared<const std::vector<double>>(m_pass.oc);
+    m_tof = std::make_shared<const std::vector<double>>(m_pass.tof);
+    m_screenDue = true;
+    m_scaleValid = false;
+    m_screenings = 0;
+    m_run = std::make_shared<const SlrRun>();
+    m_forced.assign(m_pass.t.size(), 0);
+    m_edits.clear();
 }
 
 bool SlrController::open(const QString& path, int passIndex, const PassInputParams& input, QString* error) {
@@ -38,11 +95,9 @@ bool SlrController::open(const QString& path, int passIndex, const PassInputPara
     m_passes = r.passes;
     m_warnings = r.warnings;
     m_truth.clear();
-    m_autoScale.valid = false;
-    m_forced.assign(m_pass.t.size(), 0);
-    m_edits.clear();
-    m_postfit.altitudeKm = m_pass.altitudeKm;
-    m_postfit.binLengthS = 0;
+    passLoaded();
+    m_params.postfit.altitudeKm = m_pass.altitudeKm;
+    m_params.postfit.binLengthS = 0;
     for (const auto& w : r.warnings) emit status(QString::fromStdString(w));
     const bool preset = applySatellitePreset();
     emit passChanged();
@@ -52,7 +107,7 @@ bool SlrController::open(const QString& path, int passIndex, const PassInputPara
                     .arg(m_pass.t.size())
                     .arg(QString::fromStdString(m_pass.ocOrigin))
                     .arg(preset ? tr("; preset of %1 applied").arg(QString::fromStdString(m_pass.satellite)) : QString()));
-    schedule();
+    m_job.schedule();
     return true;
 }
 
@@ -70,96 +125,29 @@ void SlrController::setSimulatedPass(const std::vector<double>& t, const std::ve
     m_passes.clear();
     m_warnings.clear();
     m_truth = truth;
-    m_autoScale.valid = false;
-    m_forced.assign(t.size(), 0);
-    m_edits.clear();
-    m_postfit.altitudeKm = altitudeKm;
+    passLoaded();
+    m_params.postfit.altitudeKm = altitudeKm;
+    applySatellitePreset();  // as for a pass read from a file
     emit passChanged();
     emit editsChanged();
-    schedule();
+    m_job.schedule();
 }
 
-void SlrController::setScreenParams(const ScreenParams& p) {
-    const ScreenParams& q = m_screen;
-    const bool onlyCosine = p.automatic == q.automatic && p.magT == q.magT && p.magOc == q.magOc &&
-                            p.areaLimit == q.areaLimit && p.connectivity == q.connectivity &&
-                            p.slopeNeighbours == q.slopeNeighbours && p.slopeBinDeg == q.slopeBinDeg &&
-                            p.slopePeakFraction == q.slopePeakFraction && p.slopeAgreeFraction == q.slopeAgreeFraction &&
-                            p.maxSlopeRangeDeg == q.maxSlopeRangeDeg && p.slopeBlockRegions == q.slopeBlockRegions &&
-                            p.pieceRows == q.pieceRows && p.recoveryGapFactor == q.recoveryGapFactor &&
-                            p.areaTolerance == q.areaTolerance && p.autoMaxPoints == q.autoMaxPoints;
-    if (!onlyCosine || !m_reuseScaleForCosine) m_autoScale.valid = false;
-    m_screen = p;
-    schedule();
-}
-
-void SlrController::setPostfitParams(const PostfitParams& p) {
-    m_postfit = p;
-    schedule();
-}
-
-void SlrController::schedule() {
-    ++m_generation;
-    m_changedAt = QDateTime::currentMSecsSinceEpoch();
-    if (m_feedback) m_feedback->cancel();  // the running job is stale now
-    m_debounce.start();
-}
-
-void SlrController::start() {
-    if (!hasPass()) return;
-    auto fb = std::make_shared<core::Feedback>();
-    m_feedback = fb;
-    m_running = true;
-    const quint64 gen = m_generation;
-    const qint64 t0 = m_changedAt;
-    // Copies for the worker: the pass vectors are shared read-only through a snapshot.
-    auto t = std::make_shared<const std::vector<double>>(m_pass.t);
-    auto oc = std::make_shared<const std::vector<double>>(m_pass.oc);
-    auto tof = std::make_shared<const std::vector<double>>(m_pass.tof);
-    ScreenParams sp = m_screen;
-    const bool reused = sp.automatic && m_autoScale.valid;
-    if (reused) {
-        sp.magT = m_autoScale.magT;
-        sp.magOc = m_autoScale.magOc;
-        sp.areaLimit = m_autoScale.areaLimit;
-        sp.connectivity = m_autoScale.connectivity;
-    }
-    PostfitParams pp = m_postfit;
-    const std::vector<int8_t> forced = m_forced;
-    QPointer<SlrController> self(this);
-    (void)QtConcurrent::run([=]() {
-        SlrRun run;
-        run.generation = gen;
-        run.screen = screenSignal(*t, *oc, sp, fb.get());
-        if (fb->isCancelled()) return;
-        if (run.screen.ok) {
-            run.accepted = acceptedMask(run.screen);
-            for (size_t i = 0; i < run.accepted.size() && i < forced.size(); ++i)
-                if (forced[i] > 0) run.accepted[i] = 1;
-                else if (forced[i] < 0) run.accepted[i] = 0;
-            run.post = postfit(*t, *oc, run.accepted, *tof, pp, fb.get());
+void SlrController::setParams(const SlrParams& p) {
+    const std::vector<std::string> keys = slrSchema().changedKeys(m_params, p);
+    m_params = p;
+    if (keys.empty()) return;
+    bool screen = false, onlyCosine = true;
+    for (const std::string& k : keys)
+        if (k.rfind("screen.", 0) == 0) {
+            screen = true;
+            onlyCosine = onlyCosine && k == "screen.cosine_c";
         }
-        if (fb->isCancelled()) return;
-        QMetaObject::invokeMethod(
-            qApp,
-            [self, run, t0, reused]() mutable {
-                if (!self || run.generation != self->m_generation) return;  // stale
-                run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - t0);
-                self->m_running = false;
-                if (!run.screen.ok) {
-                    emit self->runFailed(QString::fromStdString(run.screen.error));
-                    return;
-                }
-                self->m_run = std::move(run);
-                self->m_lastScaleReused = reused;
-                const ScreenResult& r = self->m_run.screen;
-                if (self->m_screen.automatic && !self->m_autoScale.valid && r.autoMagT && r.autoMagOc)
-                    self->m_autoScale = {true, r.magT, r.magOc, r.areaLimit, r.connectivity};
-                // The automatic choice becomes visible to the sliders (through runReady).
-                emit self->runReady(self->m_run);
-            },
-            Qt::QueuedConnection);
-    });
+    if (screen) {
+        m_screenDue = true;
+        if (!onlyCosine || !m_reuseScaleForCosine) m_scaleValid = false;
+    }
+    m_job.schedule();
 }
 
 void SlrController::forcePoints(const std::vector<uint32_t>& indices, bool in) {
@@ -172,7 +160,7 @@ void SlrController::forcePoints(const std::vector<uint32_t>& indices, bool in) {
     }
     m_edits.push_back(std::move(e));
     emit editsChanged();
-    schedule();
+    m_job.schedule();
 }
 
 bool SlrController::undoEdit() {
@@ -181,7 +169,7 @@ bool SlrController::undoEdit() {
     m_edits.pop_back();
     for (size_t k = 0; k < e.indices.size(); ++k) m_forced[e.indices[k]] = e.before[k];
     emit editsChanged();
-    schedule();
+    m_job.schedule();
     return true;
 }
 
@@ -189,7 +177,7 @@ void SlrController::clearEdits() {
     std::fill(m_forced.begin(), m_forced.end(), 0);
     m_edits.clear();
     emit editsChanged();
-    schedule();
+    m_job.schedule();
 }
 
 void SlrController::setPresetFile(const QString& path) { m_presetFile = path; }
@@ -211,16 +199,16 @@ bool SlrController::savePreset(QString* error) {
     SatellitePreset p;
     p.name = m_pass.satellite;
     p.ilrsId = m_pass.ilrsId;
-    p.screen = m_screen;
+    p.screen = m_params.screen;
     // Keep the scale the automatic mode chose, so the preset reproduces this screening.
-    if (hasRun() && m_screen.automatic) {
+    if (hasRun() && m_params.screen.automatic) {
         p.screen.automatic = false;
-        p.screen.magT = m_run.screen.magT;
-        p.screen.magOc = m_run.screen.magOc;
-        p.screen.areaLimit = m_run.screen.areaLimit;
-        p.screen.connectivity = m_run.screen.connectivity;
+        p.screen.magT = m_run->screen.magT;
+        p.screen.magOc = m_run->screen.magOc;
+        p.screen.areaLimit = m_run->screen.areaLimit;
+        p.screen.connectivity = m_run->screen.connectivity;
     }
-    p.postfit = m_postfit;
+    p.postfit = m_params.postfit;
     bool replaced = false;
     for (auto& q : presets)
         if ((!p.ilrsId.empty() && q.ilrsId == p.ilrsId) || (p.ilrsId.empty() && q.name == p.name)) {
@@ -246,10 +234,11 @@ bool SlrController::applySatellitePreset() {
     }
     const SatellitePreset* p = findPreset(r.presets, m_pass.satellite, m_pass.ilrsId);
     if (!p) return false;
-    m_screen = p->screen;
-    const double altitude = m_postfit.altitudeKm;
-    m_postfit = p->postfit;
-    if (!(m_postfit.altitudeKm > 0)) m_postfit.altitudeKm = altitude;
+    const double altitude = m_params.postfit.altitudeKm;
+    m_params = {p->screen, p->postfit};
+    if (!(m_params.postfit.altitudeKm > 0)) m_params.postfit.altitudeKm = altitude;
+    m_screenDue = true;
+    m_scaleValid = false;
     return true;
 }
 
@@ -259,7 +248,7 @@ bool SlrController::exportCsv(const QString& path, QString* error) const {
         return false;
     }
     std::string err;
-    if (!writeScreenCsv(path.toStdString(), m_pass, m_run.screen, m_run.accepted, &m_run.post, &err)) {
+    if (!writeScreenCsv(path.toStdString(), m_pass, m_run->screen, m_run->accepted, &m_run->post, &err)) {
         *error = QString::fromStdString(err);
         return false;
     }
@@ -272,7 +261,7 @@ bool SlrController::exportCrd(const QString& path, QString* error) const {
         return false;
     }
     std::string err;
-    if (!writeScreenedCrd(path.toStdString(), m_pass, m_run.accepted, &err)) {
+    if (!writeScreenedCrd(path.toStdString(), m_pass, m_run->accepted, &err)) {
         *error = QString::fromStdString(err);
         return false;
     }
@@ -280,26 +269,18 @@ bool SlrController::exportCrd(const QString& path, QString* error) const {
 }
 
 bool SlrController::exportNormalPoints(const QString& path, QString* error) const {
-    if (!hasRun() || !m_run.post.ok) {
+    if (!hasRun() || !m_run->post.ok) {
         *error = tr("no normal points to export");
         return false;
     }
     std::string err;
-    if (!writeNormalPointCrd(path.toStdString(), m_pass, m_run.post.normalPoints, &err)) {
+    if (!writeNormalPointCrd(path.toStdString(), m_pass, m_run->post.normalPoints, &err)) {
         *error = QString::fromStdString(err);
         return false;
     }
     return true;
 }
 
-bool SlrController::waitIdle(int timeoutMs) {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < timeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        if (!m_running && !m_debounce.isActive()) return true;
-    }
-    return false;
-}
+bool SlrController::waitIdle(int timeoutMs) { return m_job.waitIdle(timeoutMs); }
 
 }  // namespace lwb::ui

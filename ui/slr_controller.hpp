@@ -1,11 +1,13 @@
 #pragma once
 // The SLR workspace's controller: the pass, the screening and post-fit parameters, manual
 // edits (forced in / out, undoable, kept across reruns), per-satellite presets, and the
-// background rerun on every change (generation-tagged; stale results dropped).
+// background rerun on every change (a LiveJob: debounce, cancel, generation tag). A run reruns
+// only the stages a change affects: the post-fit alone after a post-fit setting or a manual
+// edit; the screening at the scale the automatic mode chose (core::slr::ScaleChoice, passed
+// in) after a change of C alone; everything after any other change.
 #include <QObject>
 #include <QSet>
 #include <QString>
-#include <QTimer>
 #include <memory>
 #include <vector>
 
@@ -14,6 +16,8 @@
 #include "core/slr/postfit.hpp"
 #include "core/slr/presets.hpp"
 #include "core/slr/screen.hpp"
+#include "core/slr/slr_params.hpp"
+#include "ui/live_job.hpp"
 
 namespace lwb::ui {
 
@@ -23,6 +27,8 @@ struct SlrRun {
     core::slr::ScreenResult screen;
     std::vector<uint8_t> accepted;       ///< after manual edits
     core::slr::PostfitResult post;
+    bool scaleReused = false;            ///< screened at the scale an earlier run chose (C changed alone)
+    bool screenReused = false;           ///< the screening of the previous run, only the post-fit ran
     double latencyMs = 0;                ///< parameter change → result delivered
 };
 
@@ -37,10 +43,11 @@ public:
     /// The readers' warnings about the open pass's files ("FILE:LINE: ..."), empty for a simulation.
     const std::vector<std::string>& warnings() const { return m_warnings; }
     bool hasPass() const { return !m_pass.t.empty(); }
-    const SlrRun& run() const { return m_run; }
-    bool hasRun() const { return m_run.screen.ok; }
-    const core::slr::ScreenParams& screenParams() const { return m_screen; }
-    const core::slr::PostfitParams& postfitParams() const { return m_postfit; }
+    const SlrRun& run() const { return *m_run; }
+    bool hasRun() const { return m_run->screen.ok; }
+    const core::slr::SlrParams& params() const { return m_params; }
+    const core::slr::ScreenParams& screenParams() const { return m_params.screen; }
+    const core::slr::PostfitParams& postfitParams() const { return m_params.postfit; }
     const core::slr::PassInputParams& inputParams() const { return m_input; }
     /// Truth per point for simulated passes (1 = signal), empty otherwise.
     const std::vector<uint8_t>& truth() const { return m_truth; }
@@ -51,15 +58,20 @@ public:
     /// A simulated pass (the demo and the latency benchmark).
     void setSimulatedPass(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<double>& tof,
                           const std::vector<uint8_t>& truth, const QString& name, double altitudeKm);
-    void setScreenParams(const core::slr::ScreenParams& p);
+    /// New parameters: reruns the stages the changed keys (slrSchema().changedKeys) affect.
+    void setParams(const core::slr::SlrParams& p);
+    void setScreenParams(const core::slr::ScreenParams& p) { setParams({p, m_params.postfit}); }
+    void setPostfitParams(const core::slr::PostfitParams& p) { setParams({m_params.screen, p}); }
     /// When on, moving only the cosine constant keeps the scale the automatic mode chose (the
     /// effect of C alone, and a faster rerun); off, every change searches the scale again, as
     /// `laserwb-cli slr` does.
     void setReuseScaleForCosine(bool on) { m_reuseScaleForCosine = on; }
     bool reuseScaleForCosine() const { return m_reuseScaleForCosine; }
     /// True when the last run used a scale kept from an earlier automatic choice.
-    bool scaleReused() const { return m_lastScaleReused; }
-    void setPostfitParams(const core::slr::PostfitParams& p);
+    bool scaleReused() const { return m_run->scaleReused; }
+    /// Screenings run since the pass was opened (tests: a post-fit change must not screen).
+    int screenCount() const { return m_screenings; }
+    bool busy() const { return m_job.busy(); }
 
     // Manual edits: points forced in (accepted) or out; undoable; kept across reruns.
     void forcePoints(const std::vector<uint32_t>& indices, bool in);
@@ -91,16 +103,14 @@ signals:
     void status(const QString& message);
 
 private:
-    void schedule();
-    void start();
+    void passLoaded();
 
     core::slr::PassData m_pass;
     std::vector<core::slr::PassSummary> m_passes;
     std::vector<std::string> m_warnings;
     std::vector<uint8_t> m_truth;
     core::slr::PassInputParams m_input;
-    core::slr::ScreenParams m_screen;
-    core::slr::PostfitParams m_postfit;
+    core::slr::SlrParams m_params;
     std::vector<int8_t> m_forced;
     struct Edit {
         std::vector<uint32_t> indices;
@@ -108,21 +118,17 @@ private:
     };
     std::vector<Edit> m_edits;
     QString m_presetFile;
-    SlrRun m_run;
-    QTimer m_debounce;
-    quint64 m_generation = 0;
-    std::shared_ptr<core::Feedback> m_feedback;
-    bool m_running = false;
-    qint64 m_changedAt = 0;
-    // The scale the automatic mode chose for this pass. Moving only C (which acts on the
-    // recovery step) reuses it instead of searching again; any other change searches anew.
-    struct CachedScale {
-        bool valid = false;
-        double magT = 0, magOc = 0;
-        int areaLimit = 0, connectivity = 0;
-    } m_autoScale;
+    std::shared_ptr<const SlrRun> m_run = std::make_shared<const SlrRun>();
+    LiveJob m_job;
+    // The pass for the workers, shared read-only.
+    std::shared_ptr<const std::vector<double>> m_t, m_oc, m_tof;
+    // Stages: the screening is due again (a screening parameter or the pass changed); the
+    // scale the automatic mode chose may be passed in (only C changed since it was chosen).
+    bool m_screenDue = true;
+    bool m_scaleValid = false;
+    core::slr::ScaleChoice m_scale;
     bool m_reuseScaleForCosine = true;
-    bool m_lastScaleReused = false;
+    int m_screenings = 0;
 };
 
 }  // namespace lwb::ui

@@ -24,6 +24,8 @@
 
 #include "core/sim/slr_sim.hpp"
 #include "ui/param_slider.hpp"
+#include "ui/session_json.hpp"
+#include "ui/slr_params_panel.hpp"
 #include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
@@ -160,33 +162,8 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     // Right: parameters.
     auto* panel = new QWidget(this);
     auto* pl = new QVBoxLayout(panel);
-    auto* sg = new QGroupBox(tr("Screening (binary image)"), panel);
-    auto* sf = new QFormLayout(sg);
-    m_auto = new QCheckBox(tr("Automatic scale, area limit and connectivity"), sg);
-    m_auto->setChecked(true);
-    m_magT = new ParamSlider(tr("mag_T"), 1e-3, 1e4, 1, 4, true, tr("px/s"), sg);
-    m_magOc = new ParamSlider(tr("mag_OC"), 1e5, 1e13, 1e9, 4, true, tr("px/s"), sg);
-    m_area = new ParamSlider(tr("Area limit"), 1, 200, 7, 0, false, tr("px"), sg);
-    m_connectivity = new QComboBox(sg);
-    m_connectivity->addItems({tr("4-connectivity"), tr("8-connectivity")});
-    m_cosine = new ParamSlider(tr("Cosine C"), 0.90, 0.999, 0.95, 3, false, {}, sg);
-    m_cosine->setToolTipText(tr("Recovery accepts a pending region when C < |cos| of the angle to its two nearest signal regions"));
-    sf->addRow(m_auto);
-    sf->addRow(m_magT);
-    sf->addRow(m_magOc);
-    sf->addRow(m_area);
-    sf->addRow(tr("Connectivity"), m_connectivity);
-    sf->addRow(m_cosine);
-    pl->addWidget(sg);
-    auto* pg = new QGroupBox(tr("Post-fit and normal points"), panel);
-    auto* pf = new QFormLayout(pg);
-    m_reject = new QComboBox(pg);
-    m_reject->addItems({tr("2.5 σ (single photon)"), tr("3 σ (multi photon)"), tr("off")});
-    m_reject->setCurrentIndex(1);
-    m_degree = new ParamSlider(tr("Trend degree"), 0, 20, 10, 0, false, {}, pg);
-    pf->addRow(tr("Rejection"), m_reject);
-    pf->addRow(m_degree);
-    pl->addWidget(pg);
+    m_params = new SlrParamsPanel(panel);
+    pl->addWidget(m_params);
     auto* eg = new QGroupBox(tr("Manual edits (box on the O-C plot)"), panel);
     auto* el = new QVBoxLayout(eg);
     m_modeZoom = new QRadioButton(tr("Pan / zoom"), eg);
@@ -226,7 +203,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
         m_clearEdits->setEnabled(m_controller->editCount() > 0);
     });
     connect(m_controller, &SlrController::passChanged, this, [this] {
-        widgetsFromParams();
+        m_params->setParams(m_controller->params());  // a satellite preset may have come with the pass
         const PassData& p = m_controller->pass();
         m_info->setText(tr("<b>%1</b> %2 — %3 points, O-C from %4%5")
                             .arg(QString::fromStdString(p.satellite).toHtmlEscaped(),
@@ -250,11 +227,10 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
         m_ocPlot->xAxis->setRange(0, 1);  // force a rescale on the first run of the new pass
         m_ocPlot->setProperty("fresh", true);
     });
-    for (ParamSlider* s : {m_magT, m_magOc, m_area, m_cosine, m_degree})
-        connect(s, &ParamSlider::valueChanged, this, [this] { paramsFromWidgets(); });
-    connect(m_auto, &QCheckBox::toggled, this, [this] { paramsFromWidgets(); });
-    connect(m_connectivity, &QComboBox::currentIndexChanged, this, [this] { paramsFromWidgets(); });
-    connect(m_reject, &QComboBox::currentIndexChanged, this, [this] { paramsFromWidgets(); });
+    connect(m_params, &SlrParamsPanel::paramsChanged, this, [this](const SlrParams& p) {
+        m_controller->setParams(p);
+        emit modified();
+    });
     connect(m_ocPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_ocPlot, m_imagePlot); });
     connect(m_ocPlot->yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_ocPlot, m_imagePlot); });
     connect(m_imagePlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_imagePlot, m_ocPlot); });
@@ -314,7 +290,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     connect(exCsv, &QPushButton::clicked, this, [=] { exporter(tr("Export points"), tr("CSV (*.csv)"), &SlrController::exportCsv); });
     connect(exCrd, &QPushButton::clicked, this, [=] { exporter(tr("Export CRD full rate"), tr("CRD (*.frd *.fr2 *.crd)"), &SlrController::exportCrd); });
     connect(exNp, &QPushButton::clicked, this, [=] { exporter(tr("Export normal points"), tr("CRD (*.npt *.np2 *.crd)"), &SlrController::exportNormalPoints); });
-    widgetsFromParams();
+    m_params->setParams(m_controller->params());
     m_undo->setEnabled(false);
     m_clearEdits->setEnabled(false);
 }
@@ -365,45 +341,10 @@ void SlrWorkspace::openDemo(int points) {
                                    p.altitudeKm);
 }
 
-void SlrWorkspace::widgetsFromParams() {
-    m_loading = true;
-    const ScreenParams& s = m_controller->screenParams();
-    m_auto->setChecked(s.automatic);
-    if (s.magT > 0) m_magT->setValue(s.magT);
-    if (s.magOc > 0) m_magOc->setValue(s.magOc);
-    if (s.areaLimit > 0) m_area->setValue(s.areaLimit);
-    if (s.connectivity) m_connectivity->setCurrentIndex(s.connectivity == 4 ? 0 : 1);
-    m_cosine->setValue(s.cosineC);
-    for (QWidget* w : std::initializer_list<QWidget*>{m_magT, m_magOc, m_area, m_connectivity}) w->setEnabled(!s.automatic);
-    const PostfitParams& p = m_controller->postfitParams();
-    m_reject->setCurrentIndex(p.rejectSigma == 0 ? 2 : p.rejectSigma < 2.75 ? 0 : 1);
-    m_degree->setValue(p.degree);
-    m_loading = false;
-}
-
-void SlrWorkspace::paramsFromWidgets() {
-    if (m_loading) return;
-    ScreenParams s = m_controller->screenParams();
-    s.automatic = m_auto->isChecked();
-    for (QWidget* w : std::initializer_list<QWidget*>{m_magT, m_magOc, m_area, m_connectivity}) w->setEnabled(!s.automatic);
-    if (s.automatic) {
-        s.magT = s.magOc = 0;
-        s.areaLimit = s.connectivity = 0;
-    } else {
-        s.magT = m_magT->value();
-        s.magOc = m_magOc->value();
-        s.areaLimit = int(std::lround(m_area->value()));
-        s.connectivity = m_connectivity->currentIndex() == 0 ? 4 : 8;
-    }
-    s.cosineC = m_cosine->value();
-    if (!validate(s).empty()) return;
-    PostfitParams p = m_controller->postfitParams();
-    p.rejectSigma = m_reject->currentIndex() == 0 ? 2.5 : m_reject->currentIndex() == 1 ? 3.0 : 0.0;
-    p.degree = int(std::lround(m_degree->value()));
-    m_controller->setScreenParams(s);
-    m_controller->setPostfitParams(p);
-    emit modified();
-}
+ParamSlider* SlrWorkspace::cosineSlider() const { return m_params->slider("screen.cosine_c"); }
+ParamSlider* SlrWorkspace::magOcSlider() const { return m_params->slider("screen.mag_oc"); }
+ParamSlider* SlrWorkspace::areaSlider() const { return m_params->slider("screen.area_limit"); }
+QCheckBox* SlrWorkspace::autoCheck() const { return m_params->autoCheck(); }
 
 void SlrWorkspace::linkRanges(QCustomPlot* from, QCustomPlot* to) {
     if (m_linking) return;
@@ -433,15 +374,8 @@ void SlrWorkspace::boxSelected(const QRect& rect) {
 void SlrWorkspace::showRun(const SlrRun& run) {
     const PassData& p = m_controller->pass();
     const ScreenResult& s = run.screen;
-    // Show the automatic choice on the (disabled) sliders.
-    if (m_controller->screenParams().automatic) {
-        m_loading = true;
-        m_magT->setValue(s.magT);
-        m_magOc->setValue(s.magOc);
-        m_area->setValue(s.areaLimit);
-        m_connectivity->setCurrentIndex(s.connectivity == 4 ? 0 : 1);
-        m_loading = false;
-    }
+    // The scale used, on the fields left at auto.
+    m_params->showScale(scaleChoice(s));
     const bool fresh = m_ocPlot->property("fresh").toBool();
     const QCPRange xr = m_ocPlot->xAxis->range(), yr = m_ocPlot->yAxis->range();
     // O-C scatter by class.
@@ -680,19 +614,9 @@ QJsonObject SlrWorkspace::saveState() const {
     o["sinex"] = m_snxPath;
     o["pass"] = m_controller->pass().passIndex;
     o["demo"] = m_path.isEmpty() && m_controller->hasPass();
-    const ScreenParams& s = m_controller->screenParams();
-    QJsonObject sp;
-    sp["automatic"] = s.automatic;
-    sp["mag_t"] = s.magT;
-    sp["mag_oc"] = s.magOc;
-    sp["area_limit"] = s.areaLimit;
-    sp["connectivity"] = s.connectivity;
-    sp["cosine_c"] = s.cosineC;
-    o["screen"] = sp;
-    QJsonObject pp;
-    pp["reject_sigma"] = m_controller->postfitParams().rejectSigma;
-    pp["degree"] = m_controller->postfitParams().degree;
-    o["postfit"] = pp;
+    // The schema's JSON: its two sections, every field.
+    const QJsonObject params = toQtJson(slrSchema().toJson(m_controller->params()));
+    for (auto it = params.begin(); it != params.end(); ++it) o[it.key()] = it.value();
     QJsonArray forced;
     const auto& f = m_controller->forced();
     for (size_t i = 0; i < f.size(); ++i)
@@ -701,24 +625,18 @@ QJsonObject SlrWorkspace::saveState() const {
     return o;
 }
 
-bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error) {
-    ScreenParams s;
-    const QJsonObject sp = o["screen"].toObject();
-    s.automatic = sp["automatic"].toBool(true);
-    s.magT = sp["mag_t"].toDouble();
-    s.magOc = sp["mag_oc"].toDouble();
-    s.areaLimit = sp["area_limit"].toInt();
-    s.connectivity = sp["connectivity"].toInt();
-    s.cosineC = sp["cosine_c"].toDouble(0.95);
-    if (const std::string e = validate(s); !e.empty()) {
-        *error = tr("SLR screening parameters: %1").arg(QString::fromStdString(e));
+bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
+                                const std::vector<std::string>& at) {
+    if (!checkSessionKeys(o, {"path", "cpf", "sinex", "pass", "demo", "forced", "screen", "postfit"}, "slr", error, doc, at))
         return false;
-    }
-    const QJsonObject pp = o["postfit"].toObject();
-    const double rejectSigma = pp["reject_sigma"].toDouble(3.0);
-    const int degree = pp["degree"].toInt(10);
-    if (!(rejectSigma == 0 || (rejectSigma >= 1 && rejectSigma <= 10)) || degree < 0 || degree > 30) {
-        *error = tr("SLR post-fit parameters: rejection %1 σ, degree %2 out of range").arg(rejectSigma).arg(degree);
+    // Every parameter from the session over the defaults (the sections the schema writes).
+    core::Json j = core::Json::object();
+    for (const char* section : {"screen", "postfit"})
+        if (o.contains(section)) j[section] = fromQtJson(o[section]);
+    SlrParams params;
+    std::string err;
+    if (!slrSchema().fromJson(j, &params, &err, doc, at)) {
+        *error = QString::fromStdString(err);
         return false;
     }
     m_cpfPath = o["cpf"].toString();
@@ -731,11 +649,9 @@ bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error) {
     } else if (o["demo"].toBool()) {
         openDemo();
     }
-    m_controller->setScreenParams(s);
-    PostfitParams p = m_controller->postfitParams();  // the altitude comes with the pass
-    p.rejectSigma = rejectSigma;
-    p.degree = degree;
-    m_controller->setPostfitParams(p);
+    // A session written before every field was saved has no altitude: the pass's stays.
+    if (!o["postfit"].toObject().contains("altitude_km")) params.postfit.altitudeKm = m_controller->params().postfit.altitudeKm;
+    m_controller->setParams(params);
     std::vector<uint32_t> in, out;
     for (const auto& v : o["forced"].toArray()) {
         const QJsonArray a = v.toArray();
@@ -748,7 +664,7 @@ bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error) {
     }
     m_controller->forcePoints(in, true);
     m_controller->forcePoints(out, false);
-    widgetsFromParams();
+    m_params->setParams(m_controller->params());
     return true;
 }
 

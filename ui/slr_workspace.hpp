@@ -1,8 +1,10 @@
 #pragma once
 // The SLR workspace: the O-C scatter beside its binary image (axes linked), the residual
-// histogram, sliders for the screening parameters, box edits, presets and exports.
+// histogram, the parameter panel (ui/slr_params_panel.hpp), box edits, presets and exports.
 #include <QJsonObject>
 #include <QWidget>
+
+#include "core/common/json.hpp"
 
 #include "ui/slr_controller.hpp"
 
@@ -18,16 +20,18 @@ class QCPColorMap;
 namespace lwb::ui {
 
 class ParamSlider;
+class SlrParamsPanel;
 
 class SlrWorkspace : public QWidget {
     Q_OBJECT
 public:
     explicit SlrWorkspace(QWidget* parent = nullptr);
     SlrController* controller() const { return m_controller; }
-    ParamSlider* cosineSlider() const { return m_cosine; }
-    ParamSlider* magOcSlider() const { return m_magOc; }
-    ParamSlider* areaSlider() const { return m_area; }
-    QCheckBox* autoCheck() const { return m_auto; }
+    SlrParamsPanel* paramsPanel() const { return m_params; }
+    ParamSlider* cosineSlider() const;
+    ParamSlider* magOcSlider() const;
+    ParamSlider* areaSlider() const;
+    QCheckBox* autoCheck() const;
     QCustomPlot* ocPlot() const { return m_ocPlot; }
     QCustomPlot* imagePlot() const { return m_imagePlot; }
     QLabel* infoLabel() const { return m_info; }  ///< the pass line and the readers' warnings
@@ -37,8 +41,15 @@ public:
     /// A simulated kHz pass of about `points` points (the demo, the latency benchmark).
     void openDemo(int points = 20000);
 
+    /// Session state: inputs, edits, and the parameters as slrSchema()'s JSON ("screen" and
+    /// "postfit", every field).
     QJsonObject saveState() const;
-    bool restoreState(const QJsonObject& state, QString* error);
+    /// Restores a session. The parameters start from the defaults and every field given is read
+    /// (Schema::fromJson: unknown keys and invalid values are errors naming the key, with the
+    /// line and column when `doc`, the parsed session file, is given; `at` is this state's path
+    /// in it). False with *error, nothing changed.
+    bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                      const std::vector<std::string>& at = {"slr"});
 
 signals:
     void modified();
@@ -46,8 +57,6 @@ signals:
 
 private:
     void showRun(const SlrRun& run);
-    void paramsFromWidgets();
-    void widgetsFromParams();
     void linkRanges(QCustomPlot* from, QCustomPlot* to);
     void boxSelected(const QRect& rect);
     void pickFile(QString* target, QLabel* label, const QString& title, const QString& filter);
@@ -55,9 +64,8 @@ private:
     SlrController* m_controller;
     QCustomPlot *m_ocPlot, *m_imagePlot, *m_histPlot;
     QCPColorMap* m_imageMap;
-    QComboBox *m_passCombo, *m_connectivity, *m_reject;
-    QCheckBox* m_auto;
-    ParamSlider *m_magT, *m_magOc, *m_area, *m_cosine, *m_degree;
+    QComboBox* m_passCombo;
+    SlrParamsPanel* m_params;
     QRadioButton *m_modeZoom, *m_modeIn, *m_modeOut;
     QPushButton *m_undo, *m_clearEdits;
     QLabel *m_info, *m_stats, *m_cpfLabel, *m_snxLabel;

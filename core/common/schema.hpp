@@ -284,6 +284,27 @@ public:
         }
     }
 
+    /// The keys of the fields whose values differ between a and b (NaN equals NaN), in table
+    /// order: what a change touched, for running again only the stages it affects.
+    std::vector<std::string> changedKeys(const P& a, const P& b) const {
+        std::vector<std::string> keys;
+        auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+        for (const auto& f : m_fields) {
+            bool eq = true;
+            switch (f.kind) {
+                case FieldKind::Text: eq = f.getText(a) == f.getText(b); break;
+                case FieldKind::Range: {
+                    const RangeValue x = f.getRange(a), y = f.getRange(b);
+                    eq = x.enabled == y.enabled && same(x.lo, y.lo) && same(x.hi, y.hi);
+                    break;
+                }
+                default: eq = same(f.get(a), f.get(b));
+            }
+            if (!eq) keys.push_back(f.key);
+        }
+        return keys;
+    }
+
     /// "key  unit  range  default  doc" lines for --help and docs.
     std::string describe(const P& defaults) const {
         std::string s;

@@ -54,9 +54,11 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
     return out;
 }
 
-std::string footprintCsvHeader() {
-    return "file,x,y,verdict,reasons,method,noise_class,sigma_x,sigma_y,axis_ratio,tilt_deg,major_axis_px,"
-           "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0\n";
+std::string footprintCsvHeader(const std::vector<std::string>& extra) {
+    std::string h = "file,x,y,verdict,reasons,method,noise_class,sigma_x,sigma_y,axis_ratio,tilt_deg,major_axis_px,"
+                    "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0";
+    for (const auto& name : extra) h += "," + csvEscape(name);
+    return h + "\n";
 }
 
 namespace {
@@ -69,12 +71,15 @@ std::string joinReasons(const std::vector<std::string>& r) {
 }
 }  // namespace
 
-std::string footprintCsvRows(const BatchItem& item, Method method) {
+std::string footprintCsvRows(const BatchItem& item, Method method, const std::vector<std::string>& extra) {
+    std::string end;  // the extra columns and the line end
+    for (const auto& v : extra) end += "," + csvEscape(v);
+    end += "\n";
     std::string out;
     const std::string file = csvEscape(item.file);
     if (!item.readError.empty()) {
         out += file + ",,,rejected," + csvEscape("unreadable: " + item.readError) + "," + methodName(method) +
-               ",,,,,,,,,,0,,,,,,,\n";
+               ",,,,,,,,,,0,,,,,,," + end;
         return out;
     }
     for (size_t k = 0; k < item.rois.size(); ++k) {
@@ -82,7 +87,7 @@ std::string footprintCsvRows(const BatchItem& item, Method method) {
         const FootprintResult& r = fr.result;
         if (!r.ok) {
             out += file + ",,,rejected," + csvEscape(r.error) + "," + methodName(method) + ",,,,,,,,,," +
-                   std::to_string(k) + ",,,,,,,\n";
+                   std::to_string(k) + ",,,,,,," + end;
             continue;
         }
         const SpotFit& f = r.fit;
@@ -104,20 +109,33 @@ std::string footprintCsvRows(const BatchItem& item, Method method) {
                    num(f.amplitude, 1) + "," + num(f.background, 1);
         else
             out += ",,,," + num(r.background.level, 1);
-        out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY) + "\n";
+        out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY) + end;
     }
     return out;
 }
 
 bool writeFootprintCsv(const std::string& path, const std::vector<BatchItem>& items, Method method,
-                       std::string* error) {
+                       std::string* error, const FootprintCsvExtra* extra) {
+    if (extra && extra->values.size() != items.size()) {
+        *error = "footprint report: " + std::to_string(extra->values.size()) + " rows of extra columns for " +
+                 std::to_string(items.size()) + " items";
+        return false;
+    }
+    if (extra)
+        for (size_t i = 0; i < items.size(); ++i)
+            if (extra->values[i].size() != extra->names.size()) {
+                *error = "footprint report: item " + std::to_string(i) + " has " + std::to_string(extra->values[i].size()) +
+                         " extra values for " + std::to_string(extra->names.size()) + " extra columns";
+                return false;
+            }
     AtomicFile f(path);
     if (!f.ok()) {
         *error = f.error();
         return false;
     }
-    f.stream() << footprintCsvHeader();
-    for (const auto& it : items) f.stream() << footprintCsvRows(it, method);
+    static const std::vector<std::string> none;
+    f.stream() << footprintCsvHeader(extra ? extra->names : none);
+    for (size_t i = 0; i < items.size(); ++i) f.stream() << footprintCsvRows(items[i], method, extra ? extra->values[i] : none);
     if (!f.commit()) {
         *error = f.error();
         return false;

@@ -37,12 +37,22 @@ using BatchItemFn = std::function<void(size_t index, const BatchItem& item)>;
 BatchResult runFootprintBatch(const std::vector<std::string>& files, const BatchParams& params,
                               Feedback* fb = nullptr, const BatchItemFn& onItem = {});
 
-/// The CSV header of footprint reports.
-std::string footprintCsvHeader();
-/// One CSV row per ROI of the item (coordinates in full-image px), each ending in '\n'.
-std::string footprintCsvRows(const BatchItem& item, Method method);
-/// Writes a whole report atomically. False with *error on failure.
+/// The CSV header of footprint reports, with `extra` column names appended.
+std::string footprintCsvHeader(const std::vector<std::string>& extra = {});
+/// One CSV row per ROI of the item (coordinates in full-image px), each ending in '\n', with
+/// the `extra` values (CSV-escaped here) appended to every row.
+std::string footprintCsvRows(const BatchItem& item, Method method, const std::vector<std::string>& extra = {});
+
+/// Columns a caller appends to the report (the workbench adds time, beam, camera, override and
+/// note): the names, and per item one value per name.
+struct FootprintCsvExtra {
+    std::vector<std::string> names;
+    std::vector<std::vector<std::string>> values;  ///< values[item][column]
+};
+
+/// Writes a whole report atomically (the `footprint` command's and the workbench's export).
+/// False with *error on failure.
 bool writeFootprintCsv(const std::string& path, const std::vector<BatchItem>& items, Method method,
-                       std::string* error);
+                       std::string* error, const FootprintCsvExtra* extra = nullptr);
 
 }  // namespace lwb::core::footprint

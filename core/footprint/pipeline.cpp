@@ -204,7 +204,6 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
     const double bg = r.background.level, noise = r.background.noise;
     r.domain = segmentSpot(roi, bg, noise, params.camera.saturationDn, params.segment);
     r.ok = true;
-    std::string fallbackNote;  // the Gaussian fit had to start from moments: doubtful
     if (r.domain.found) {
         switch (params.method) {
             case Method::Gcm: r.fit = fitGcm(roi, bg, noise, params.gcm); break;
@@ -217,7 +216,7 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
                 r.fit = g.fit;
                 r.gaussModel = g.model;
                 r.gaussStage = g.stage;
-                fallbackNote = g.fallbackStart ? g.note : std::string();
+                r.startNote = g.fallbackStart ? g.note : std::string();
                 break;
             }
         }
@@ -231,12 +230,24 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
             if (c.ok) r.crlbPx = c.radialPx;
         }
     }
-    const Judgement j = judge(r.fit, r.domain, roi.cols, roi.rows, params.verdict);
-    r.verdict = j.verdict;
-    r.reasons = j.reasons;
-    if (!fallbackNote.empty() && r.verdict == Verdict::Good) r.verdict = Verdict::Doubtful;
-    if (!fallbackNote.empty() && r.verdict == Verdict::Doubtful) r.reasons.push_back(fallbackNote);
+    judgeResult(&r, roi.cols, roi.rows, params.verdict);
     return r;
+}
+
+void judgeResult(FootprintResult* r, int roiWidth, int roiHeight, const VerdictParams& verdict) {
+    if (!r->ok) return;
+    Judgement j = judge(r->fit, r->domain, roiWidth, roiHeight, verdict);
+    r->verdict = j.verdict;
+    r->reasons = std::move(j.reasons);
+    // A fit that had to start from moments is doubtful at best, whatever the criteria.
+    if (!r->startNote.empty() && r->verdict == Verdict::Good) r->verdict = Verdict::Doubtful;
+    if (!r->startNote.empty() && r->verdict == Verdict::Doubtful) r->reasons.push_back(r->startNote);
+}
+
+bool onlyVerdictDiffers(const FootprintParams& a, const FootprintParams& b) {
+    for (const std::string& key : footprintSchema().changedKeys(a, b))
+        if (key.rfind("verdict.", 0) != 0 && key != "preset") return false;
+    return true;
 }
 
 std::vector<FrameRoiResult> processFrame(const cv::Mat& image, const FootprintParams& params,

@@ -61,10 +61,20 @@ struct FootprintResult {
     Verdict verdict = Verdict::Rejected;
     std::vector<std::string> reasons;
     double crlbPx = NAN;        ///< Cramér–Rao bound on the radial error (closed form, fitted spot)
+    std::string startNote;      ///< the Gaussian fit started from moments (why): the verdict stage keeps it doubtful
 };
 
 /// Runs the whole pipeline on a CV_32FC1 ROI. Never throws.
 FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params);
+
+/// The verdict stage of processRoi on its own: judges r's fit and domain again with other
+/// criteria, no refit (roiWidth / roiHeight: the ROI's size, for the edge check). A result that
+/// is not ok (unusable input or params) is left as it is.
+void judgeResult(FootprintResult* r, int roiWidth, int roiHeight, const VerdictParams& verdict);
+/// True when results under `a` hold under `b` but for the verdict: only verdict criteria (and
+/// the informational preset name) differ, so judgeResult() replaces processRoi(). The stages
+/// are told apart by the schema's keys ("verdict." is the verdict stage).
+bool onlyVerdictDiffers(const FootprintParams& a, const FootprintParams& b);
 
 struct FrameRoiResult {
     FootprintResult result;     ///< fit in ROI coordinates

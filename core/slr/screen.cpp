@@ -572,6 +572,25 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
     return res;
 }
 
+ScaleChoice scaleChoice(const ScreenResult& r) {
+    return {r.magT, r.magOc, r.areaLimit, r.connectivity, r.autoMagT, r.autoMagOc, r.autoArea, r.autoConnectivity};
+}
+
+ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
+                          const ScaleChoice& scale, Feedback* fb) {
+    ScreenParams p = params;
+    if (p.magT == 0) p.magT = scale.magT;
+    if (p.magOc == 0) p.magOc = scale.magOc;
+    if (p.areaLimit == 0) p.areaLimit = scale.areaLimit;
+    if (p.connectivity == 0) p.connectivity = scale.connectivity;
+    ScreenResult r = screenSignal(t, oc, p, fb);
+    r.autoMagT = params.magT == 0 && scale.autoMagT;
+    r.autoMagOc = params.magOc == 0 && scale.autoMagOc;
+    r.autoArea = params.areaLimit == 0 && scale.autoArea;
+    r.autoConnectivity = params.connectivity == 0 && scale.autoConnectivity;
+    return r;
+}
+
 std::vector<uint8_t> acceptedMask(const ScreenResult& r) {
     std::vector<uint8_t> m(r.pointClass.size());
     for (size_t i = 0; i < m.size(); ++i) m[i] = r.pointClass[i] != PointClass::Noise;

@@ -155,6 +155,23 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
 /// A mask (1 = accepted: signal or recovered) for postfit.
 std::vector<uint8_t> acceptedMask(const ScreenResult& r);
 
+/// The scale stage's result: the binary-image scale, area limit and connectivity a screening
+/// used, and which of them the automatic mode chose. Passed back to screenSignal() to screen
+/// the same pass again without searching (the workbench does so when only C or the post-fit
+/// settings change).
+struct ScaleChoice {
+    double magT = 0, magOc = 0;
+    int areaLimit = 0, connectivity = 0;
+    bool autoMagT = false, autoMagOc = false, autoArea = false, autoConnectivity = false;
+};
+/// The scale of a successful screening.
+ScaleChoice scaleChoice(const ScreenResult& r);
+/// Steps 1–6 at a given scale: the parameters left at 0 (automatic) in `params` are taken from
+/// `scale` instead of being searched; the result reports them as automatic choices, as the run
+/// that chose them did.
+ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
+                          const ScaleChoice& scale, Feedback* fb = nullptr);
+
 // ---- The steps, public for tests and for a step-by-step view. ----
 
 /// Step 3: indices of the regions with area ≥ areaLimit (candidates), in region order.

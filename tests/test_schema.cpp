@@ -1,0 +1,155 @@
+// The parameter schema tables (issue 9): every field of every table survives every path —
+// JSON (configs, --print-config), --set key=value, SLR presets, footprint config files — and a
+// field's accessor touches that field only. A field left out of any path fails here.
+#include <QtTest>
+#include <set>
+
+#include "core/common/json.hpp"
+#include "core/footprint/pipeline.hpp"
+#include "core/footprint/trend.hpp"
+#include "core/slr/presets.hpp"
+#include "core/slr/slr_params.hpp"
+#include "schema_cases.hpp"
+#include "test_support.hpp"
+
+using namespace lwb::core;
+using lwb::test::joined;
+using lwb::test::otherValue;
+using lwb::test::setOtherValue;
+
+namespace {
+
+// Every field on its own: other value -> JSON text -> parsed -> over the defaults.
+template <class P>
+void everyFieldThroughJson(const Schema<P>& schema) {
+    QVERIFY(!schema.fields().empty());
+    const P def{};
+    const Json written = schema.toJson(def);
+    for (const auto& f : schema.fields()) {
+        // Always written, even at the default.
+        const Json* v = &written;
+        std::string path;
+        for (size_t a = 0, b; a <= f.key.size(); a = b + 1) {
+            b = f.key.find('.', a);
+            if (b == std::string::npos) b = f.key.size();
+            const std::string part = f.key.substr(a, b - a);
+            QVERIFY2(v->is_object() && v->contains(part), (schema.name() + "." + f.key + " not written").c_str());
+            v = &(*v)[part];
+        }
+        P base = def;
+        const P p = otherValue(schema, f, &base);
+        // The accessor touches this field and no other.
+        QCOMPARE(QString::fromStdString(joined(schema.changedKeys(base, p))), QString::fromStdString(f.key));
+        const JsonParseResult parsed = parseJson(dumpJson(schema.toJson(p)), "mem");
+        QVERIFY2(parsed.ok, parsed.error.c_str());
+        P back{};
+        std::string err;
+        QVERIFY2(schema.fromJson(parsed.value, &back, &err, &parsed), err.c_str());
+        QVERIFY2(schema.changedKeys(p, back).empty(), (f.key + " lost: " + joined(schema.changedKeys(p, back))).c_str());
+        // --set key=value with the value's own text (over the base: a rule may tie the field to others).
+        P set = base;
+        QVERIFY2(schema.setFromText(&set, f.key, schema.valueText(f, p), &err), (f.key + ": " + err).c_str());
+        QVERIFY2(schema.changedKeys(p, set).empty(), (f.key + " via --set: " + joined(schema.changedKeys(p, set))).c_str());
+    }
+}
+
+// Every field at once (as many as the rules allow together: all of them in today's tables).
+template <class P>
+P allOther(const Schema<P>& schema) {
+    // The fields at special values first (automatic off needs the scale they fix), then the rest.
+    P p{};
+    std::set<std::string> done;
+    for (int pass = 0; pass < 2; ++pass)
+        for (const auto& f : schema.fields()) {
+            if (done.count(f.key) || (pass == 0 && f.specials.empty())) continue;
+            P q = p;
+            if (f.kind == FieldKind::Text && f.key == "preset") f.setText(q, "yao2021");
+            else if (!setOtherValue(schema, f, &q)) continue;
+            p = q;
+            done.insert(f.key);
+        }
+    return p;
+}
+
+}  // namespace
+
+class TestSchema : public QObject {
+    Q_OBJECT
+private slots:
+    void footprintEveryField() { everyFieldThroughJson(footprint::footprintSchema()); }
+    void slrEveryField() { everyFieldThroughJson(slr::slrSchema()); }
+    void trendEveryField() { everyFieldThroughJson(footprint::trendSchema()); }
+
+    void allFieldsTogether() {
+        const auto& fs = footprint::footprintSchema();
+        const footprint::FootprintParams fp = allOther(fs);
+        QCOMPARE(fs.changedKeys(footprint::FootprintParams{}, fp).size(), fs.fields().size());
+        footprint::FootprintParams fback;
+        std::string err;
+        // The config-file path (the user presets of the workbench are such files).
+        const JsonParseResult fj = parseJson(dumpJson(footprint::footprintParamsToJson(fp)), "preset.json");
+        QVERIFY2(fj.ok, fj.error.c_str());
+        QVERIFY2(footprint::footprintParamsFromJson(fj.value, &fback, &err, &fj), err.c_str());
+        QVERIFY2(fs.changedKeys(fp, fback).empty(), joined(fs.changedKeys(fp, fback)).c_str());
+
+        const auto& ss = slr::slrSchema();
+        const slr::SlrParams sp = allOther(ss);
+        QCOMPARE(ss.changedKeys(slr::SlrParams{}, sp).size(), ss.fields().size());
+        const JsonParseResult sj = parseJson(dumpJson(ss.toJson(sp)), "mem");
+        slr::SlrParams sback;
+        QVERIFY2(ss.fromJson(sj.value, &sback, &err, &sj), err.c_str());
+        QVERIFY2(ss.changedKeys(sp, sback).empty(), joined(ss.changedKeys(sp, sback)).c_str());
+    }
+
+    // Each field of the SLR table through a satellite preset file and back.
+    void slrPresetEveryField() {
+        const auto& ss = slr::slrSchema();
+        for (const auto& f : ss.fields()) {
+            slr::SlrParams base;
+            const slr::SlrParams p = otherValue(ss, f, &base);
+            slr::SatellitePreset preset;
+            preset.name = "LAGEOS-1";
+            preset.ilrsId = "7603901";
+            preset.screen = p.screen;
+            preset.postfit = p.postfit;
+            const JsonParseResult parsed = parseJson(dumpJson(slr::presetsToJson({preset})), "presets.json");
+            QVERIFY2(parsed.ok, parsed.error.c_str());
+            const slr::PresetsResult back = slr::presetsFromJson(parsed.value, "presets.json", &parsed);
+            QVERIFY2(back.ok, (f.key + ": " + back.error).c_str());
+            QCOMPARE(back.presets.size(), size_t(1));
+            const slr::SlrParams q{back.presets[0].screen, back.presets[0].postfit};
+            QVERIFY2(ss.changedKeys(p, q).empty(), (f.key + " lost in a preset: " + joined(ss.changedKeys(p, q))).c_str());
+        }
+    }
+
+    // Values outside the UI range but valid are kept exactly (the issue's C = 0.8 and axis
+    // ratio 5), and invalid ones are refused with the key and the range.
+    void outsideUiRangeKept() {
+        const auto& ss = slr::slrSchema();
+        const auto* c = ss.find("screen.cosine_c");
+        QVERIFY(c);
+        QVERIFY(0.8 < c->uiLo);  // the case is outside the slider's range
+        slr::SlrParams p;
+        std::string err;
+        QVERIFY2(ss.setFromText(&p, "screen.cosine_c", "0.8", &err), err.c_str());
+        QCOMPARE(p.screen.cosineC, 0.8);
+        QVERIFY(!ss.setFromText(&p, "screen.cosine_c", "1.2", &err));
+        QVERIFY2(err.find("screen.cosine_c") != std::string::npos && err.find("[0.5, 1)") != std::string::npos, err.c_str());
+        QCOMPARE(p.screen.cosineC, 0.8);  // untouched on error
+
+        const auto& fs = footprint::footprintSchema();
+        const auto* ar = fs.find("verdict.axis_ratio");
+        QVERIFY(ar && ar->kind == FieldKind::Range);
+        footprint::FootprintParams fp;
+        QVERIFY2(fs.setFromText(&fp, "verdict.axis_ratio", "1,5", &err), err.c_str());
+        QVERIFY(5 > ar->uiHi);
+        const JsonParseResult j = parseJson(dumpJson(fs.toJson(fp)), "mem");
+        footprint::FootprintParams back;
+        QVERIFY2(fs.fromJson(j.value, &back, &err, &j), err.c_str());
+        QCOMPARE(fs.valueText(*ar, back), std::string("1,5"));
+        QCOMPARE(back.verdict.axisRatio.hi, 5.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSchema)
+#include "test_schema.moc"

@@ -1,0 +1,74 @@
+#include "ui/slr_params_panel.hpp"
+
+#include <QCheckBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QVBoxLayout>
+
+namespace lwb::ui {
+
+using namespace core::slr;
+
+SlrParamsPanel::~SlrParamsPanel() = default;
+
+SlrParamsPanel::SlrParamsPanel(QWidget* parent)
+    : QWidget(parent), m_form(std::make_unique<SchemaForm<SlrParams>>(slrSchema(), this)) {
+    SchemaForm<SlrParams>& form = *m_form;
+    auto* top = new QVBoxLayout(this);
+    top->setContentsMargins(0, 0, 0, 0);
+    auto* sg = new QGroupBox(tr("Screening (binary image)"), this);
+    auto* sf = new QFormLayout(sg);
+    form.place(sf, "screen.automatic", tr("Automatic scale, area limit and connectivity"));
+    form.place(sf, "screen.mag_t", tr("mag_T"));
+    form.place(sf, "screen.mag_oc", tr("mag_OC"));
+    form.place(sf, "screen.area_limit", tr("Area limit"));
+    sf->addRow(tr("Connectivity"), form.addValues("screen.connectivity", {{4, tr("4-connectivity")}, {8, tr("8-connectivity")}}));
+    form.place(sf, "screen.cosine_c", tr("Cosine C"));
+    top->addWidget(sg);
+    auto* pg = new QGroupBox(tr("Post-fit and normal points"), this);
+    auto* pf = new QFormLayout(pg);
+    form.place(pf, "postfit.reject_sigma", tr("Rejection (k σ)"));
+    form.place(pf, "postfit.degree", tr("Trend degree"));
+    top->addWidget(pg);
+    m_advanced = new CollapsibleSection(tr("Advanced (every other parameter)"), this);
+    form.addRemaining(m_advanced->form());
+    top->addWidget(m_advanced);
+    m_message = form.addMessageLabel([this] { emit paramsChanged(m_form->params()); });
+    top->addWidget(m_message);
+
+    form.adjust = [this](const std::string& key, SlrParams& p) {
+        if (key != "screen.automatic") return;
+        ScreenParams& s = p.screen;
+        if (s.automatic) {  // on: the scale, area limit and connectivity are chosen again
+            s.magT = s.magOc = 0;
+            s.areaLimit = s.connectivity = 0;
+        } else if (m_haveScale) {  // off: from what the automatic mode chose last
+            if (s.magT == 0) s.magT = m_scale.magT;
+            if (s.magOc == 0) s.magOc = m_scale.magOc;
+            if (s.areaLimit == 0) s.areaLimit = m_scale.areaLimit;
+            if (s.connectivity == 0) s.connectivity = m_scale.connectivity;
+        }
+    };
+    setParams(SlrParams{});
+}
+
+void SlrParamsPanel::setParams(const SlrParams& p) {
+    m_form->setParams(p);
+    m_message->hide();
+}
+
+void SlrParamsPanel::showScale(const ScaleChoice& scale) {
+    m_scale = scale;
+    m_haveScale = scale.magT > 0 && scale.magOc > 0 && scale.areaLimit > 0 && scale.connectivity > 0;
+    m_form->setHint("screen.mag_t", scale.magT);
+    m_form->setHint("screen.mag_oc", scale.magOc);
+    m_form->setHint("screen.area_limit", scale.areaLimit);
+    m_form->setHint("screen.connectivity", scale.connectivity);
+}
+
+ParamSlider* SlrParamsPanel::slider(const std::string& key) const { return qobject_cast<ParamSlider*>(m_form->widget(key)); }
+
+QCheckBox* SlrParamsPanel::autoCheck() const { return qobject_cast<QCheckBox*>(m_form->widget("screen.automatic")); }
+
+}  // namespace lwb::ui
