@@ -16,11 +16,6 @@
 using namespace lwb::core::footprint;
 using lwb::fuzz::check;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    lwb::fuzz::quietOpenCv();
-    return 0;
-}
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string_view bytes = lwb::fuzz::asText(data, size);
     auto starts = [&](const char* magic, size_t n) { return size >= n && std::memcmp(data, magic, n) == 0; };

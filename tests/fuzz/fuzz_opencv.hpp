@@ -1,5 +1,6 @@
 #pragma once
-// OpenCV settings shared by the image targets, applied once from LLVMFuzzerInitialize:
+// OpenCV settings shared by the image targets, applied once from LLVMFuzzerInitialize (defined
+// here: include this header in the target's one source file):
 // - no worker threads (one input at a time; faster and quieter under ASan);
 // - no log lines (imread reports every undecodable input);
 // - a decoded-size cap of 2^20 pixels through OpenCV's own OPENCV_IO_MAX_IMAGE_PIXELS (unless
@@ -19,3 +20,8 @@ inline void quietOpenCv() {
 }
 
 }  // namespace lwb::fuzz
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    lwb::fuzz::quietOpenCv();
+    return 0;
+}

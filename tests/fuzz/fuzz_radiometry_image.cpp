@@ -10,11 +10,6 @@
 using namespace lwb::core::radiometry;
 using lwb::fuzz::check;
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    lwb::fuzz::quietOpenCv();
-    return 0;
-}
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     cv::Mat image;
     if (!lwb::fuzz::readThroughFile(lwb::fuzz::asText(data, size), "tif", readImageAnyDepth, &image)) return 0;

@@ -44,7 +44,9 @@ for t in "${targets[@]}"; do
   what="$findings"
   if [ $rc -ne 0 ] || [ $findings -gt 0 ]; then
     failed+=("$t")
-    what="$findings ($(grep -m1 -oE 'ERROR: [A-Za-z]+: [^ ]+( [^ ]+)?|runtime error: .*|deadly signal|out-of-memory|timeout after' "$log" | head -c 90); see $log)"
+    kind=$(grep -m1 -oE 'ERROR: [A-Za-z]+: [^ ]+( [^ ]+)?|runtime error: .*|out-of-memory|timeout after' "$log" | head -c 90)
+    where=$(grep -m1 -oE '(core|ui|tests/fuzz)/[a-z_/]+\.(cpp|hpp):[0-9]+' "$log")  # a trap: the broken check
+    what="$findings ($kind${where:+ at $where}; see $log)"
   fi
   printf '%-20s %12s %9s %7s %7s %7s %8s  %s\n' "$t" "$(stat number_of_executed_units)" \
     "$(stat average_exec_per_sec)" "${cov:--}" "${ft:--}" "${corp:--}" "$(stat peak_rss_mb)" "$what"
