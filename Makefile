@@ -50,8 +50,7 @@ fuzz:
 
 # The whole suite built with clang ASan + UBSan (incl. float-cast-overflow, no recovery) in
 # $(SANITIZE_BUILD): any finding or leak (third-party suppressions: tests/sanitize/lsan.supp)
-# fails. Measured on the 2-core CI-like machine (docs/fuzzing.md): clean build SANITIZE_BUILD_MIN
-# min + suite SANITIZE_RUN_MIN min.
+# fails. Its duration is not measured yet (docs/fuzzing.md, "Sanitized suite").
 test-sanitize:
 	@LWB_CLANG=1 ./.ci/install-deps
 	@[ -f $(SANITIZE_BUILD)/CMakeCache.txt ] || \

@@ -105,11 +105,6 @@ const char* kSimCalibUsage =
     "  --geographic    detector positions as lat/lon\n"
     "  --saturation S  detector saturation level (default none)\n";
 
-bool makeDir(const std::string& dir) {
-    ::mkdir(dir.c_str(), 0755);
-    struct stat st {};
-    return ::stat(dir.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
 
 }  // namespace
 
@@ -144,12 +139,17 @@ int cmdCalibDetector(int argc, char** argv) {
     p.scaleByChi2 = a.has("--scale-chi2");
     if (const std::string e = validate(p); !e.empty()) return fail(cmd, e, kUsage);
     if (a.positional().size() != 1) return fail(cmd, "give exactly one detector CSV", kUsage);
+    const std::string out = outPath(a);
+    core::OutputSet outs;
+    outs.addInput(a.positional()[0]);
+    if (!out.empty()) outs.addOutput(out);
+    if (a.has("--detectors")) outs.addOutput(a.value("--detectors"));
+    if (int rc = checkOutputs(cmd, outs)) return rc;
     DetectorArray arr;
     if (!readDetectorCsv(a.positional()[0], &arr, &err)) return fail(cmd, err);
     const DetectorFitResult r = fitDetectorArray(arr, p);
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
     warn(cmd, r.warnings);
-    const std::string out = outPath(a);
     if (!out.empty()) {
         const auto& s = r.surface;
         const auto& e = r.centreEllipse;
@@ -164,9 +164,11 @@ int cmdCalibDetector(int argc, char** argv) {
             fx(r.sigmaMinorSd, 4) + "," + fx(s.orientationRad / kDeg, 3) + "," + gx(s.background) + "," +
             std::to_string(r.used) + "," + std::to_string(r.dof) + "," + gx(r.chi2) + "," + gx(r.rmsResidual) + "," +
             std::to_string(r.iterations) + "\n";
-        if (!core::writeFileAtomic(out, csv, &err)) return fail(cmd, err);
+        if (!core::writeFileAtomic(outs.stagingPath(out), csv, &err)) return fail(cmd, outs.unstaged(err));
     }
-    if (a.has("--detectors") && !writeDetectorReportCsv(a.value("--detectors"), arr, r, &err)) return fail(cmd, err);
+    if (a.has("--detectors") && !writeDetectorReportCsv(outs.stagingPath(a.value("--detectors")), arr, r, &err))
+        return fail(cmd, outs.unstaged(err));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
         std::cerr << "calib detector: " << r.used << " of " << arr.detectors.size() << " detectors used; centre E "
                   << fx(r.centreE, 3) << " m, N " << fx(r.centreN, 3) << " m; 1-sigma ellipse "
@@ -200,6 +202,14 @@ int cmdCalibWaveform(int argc, char** argv) {
         return fail(cmd, "give one waveform CSV or --height H (not both)", kUsage);
     if (a.has("--height") && !a.has("--features")) return fail(cmd, "--height needs --features to match against", kUsage);
     if (a.has("--model") && a.has("--height")) return fail(cmd, "--model needs a waveform file", kUsage);
+    if (!outPath(a).empty() && !a.has("--features"))
+        return fail(cmd, "-o writes the candidate ranking: give --features", kUsage);
+    core::OutputSet outs;
+    if (!a.has("--height")) outs.addInput(a.positional()[0]);
+    outs.addInput(a.value("--features"));
+    if (!outPath(a).empty()) outs.addOutput(outPath(a));
+    if (a.has("--model")) outs.addOutput(a.value("--model"));
+    if (int rc = checkOutputs(cmd, outs)) return rc;
     WaveformResult wr;
     Waveform w;
     if (!a.has("--height")) {
@@ -219,8 +229,6 @@ int cmdCalibWaveform(int argc, char** argv) {
         mr = matchFeature(cands, height, mp);
         if (!mr.ok) return fail(cmd, mr.error);
         warn(cmd, mr.warnings);
-    } else if (!outPath(a).empty()) {
-        return fail(cmd, "-o writes the candidate ranking: give --features", kUsage);
     }
     if (!outPath(a).empty()) {
         std::string s = "rank,id,h_m,delta_h_m,below_threshold,chosen\n";
@@ -229,14 +237,15 @@ int cmdCalibWaveform(int argc, char** argv) {
             s += std::to_string(k + 1) + "," + core::csvEscape(cands[d.index].id) + "," + gx(cands[d.index].heightM) + "," +
                  fx(d.deltaHM, 4) + "," + (d.belowThreshold ? "1" : "0") + "," + (mr.found && k == 0 ? "1" : "0") + "\n";
         }
-        if (!core::writeFileAtomic(outPath(a), s, &err)) return fail(cmd, err);
+        if (!core::writeFileAtomic(outs.stagingPath(outPath(a)), s, &err)) return fail(cmd, outs.unstaged(err));
     }
     if (a.has("--model")) {
         std::string s = "time_ns,amplitude,model\n";
         for (size_t i = 0; i < w.timeNs.size(); ++i)
             s += gx(w.timeNs[i]) + "," + gx(w.amplitude[i]) + "," + gx(wr.model[i]) + "\n";
-        if (!core::writeFileAtomic(a.value("--model"), s, &err)) return fail(cmd, err);
+        if (!core::writeFileAtomic(outs.stagingPath(a.value("--model")), s, &err)) return fail(cmd, outs.unstaged(err));
     }
+    if (int rc = commitOutputs(cmd, outs)) return rc;
     if (a.has("--features")) {
         if (!mr.found) {
             std::cout << "no candidate within thred_h " << core::formatDouble(mp.thresholdM, 4) << " m (closest: "
@@ -285,6 +294,13 @@ int cmdCalibPointing(int argc, char** argv) {
     if (!a.has("--beams")) return fail(cmd, "no beam designs: give --beams BEAMS.json", kUsage);
     const std::string out = outPath(a);
     if (out.empty()) return fail(cmd, "no output file: give -o OUT.csv", kUsage);
+    core::OutputSet outs;
+    outs.addInput(a.positional()[0]);
+    outs.addInput(a.value("--beams"));
+    outs.addOutput(out);
+    for (const char* o : {"--params", "--residuals", "--iterations", "--beams-out"})
+        if (a.has(o)) outs.addOutput(a.value(o));
+    if (int rc = checkOutputs(cmd, outs)) return rc;
     std::vector<BeamDesign> beams;
     if (!readBeamsJson(a.value("--beams"), &beams, &err)) return fail(cmd, err);
     std::vector<ControlPoint> pts;
@@ -338,12 +354,15 @@ int cmdCalibPointing(int argc, char** argv) {
         calibrated[k].alphaRad = r.beams[k].alphaRad;
         calibrated[k].betaRad = r.beams[k].betaRad;
     }
-    if (!core::writeFileAtomic(out, s, &err) ||
-        (a.has("--params") && !core::writeFileAtomic(a.value("--params"), ps, &err)) ||
-        (a.has("--residuals") && !core::writeFileAtomic(a.value("--residuals"), rs, &err)) ||
-        (a.has("--iterations") && !core::writeFileAtomic(a.value("--iterations"), is, &err)) ||
-        (a.has("--beams-out") && !core::writeFileAtomic(a.value("--beams-out"), beamsToJson(calibrated), &err)))
-        return fail(cmd, err);
+    auto write = [&](const std::string& path, const std::string& text) {
+        return core::writeFileAtomic(outs.stagingPath(path), text, &err);
+    };
+    if (!write(out, s) || (a.has("--params") && !write(a.value("--params"), ps)) ||
+        (a.has("--residuals") && !write(a.value("--residuals"), rs)) ||
+        (a.has("--iterations") && !write(a.value("--iterations"), is)) ||
+        (a.has("--beams-out") && !write(a.value("--beams-out"), beamsToJson(calibrated))))
+        return fail(cmd, outs.unstaged(err));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
         std::cerr << "calib pointing: " << calibModelName(r.model) << "-beam model, " << pts.size() << " control points, "
                   << r.iterations.size() - 1 << " iterations; RMS plan " << fx(r.iterations.front().rmsPlanM, 3) << " -> "
@@ -371,6 +390,10 @@ int cmdCalibStats(int argc, char** argv) {
         return kOk;
     }
     if (a.positional().size() != 1) return fail(cmd, "give exactly one CSV of differences", kUsage);
+    core::OutputSet outs;
+    outs.addInput(a.positional()[0]);
+    if (!outPath(a).empty()) outs.addOutput(outPath(a));
+    if (int rc = checkOutputs(cmd, outs)) return rc;
     std::vector<DifferenceGroup> groups;
     std::string err;
     if (!readDifferencesCsv(a.positional()[0], a.value("--group"), &groups, &err)) return fail(cmd, err);
@@ -386,8 +409,9 @@ int cmdCalibStats(int argc, char** argv) {
         for (const auto& lv : labelledStats(t))
             std::cout << "  " << lv.label << ": " << (lv.key == "n" ? std::to_string(t.n) : fx(lv.value, 4)) << "\n";
     }
-    if (!outPath(a).empty() && !core::writeFileAtomic(outPath(a), s, &err)) return fail(cmd, err);
-    return kOk;
+    if (!outPath(a).empty() && !core::writeFileAtomic(outs.stagingPath(outPath(a)), s, &err))
+        return fail(cmd, outs.unstaged(err));
+    return commitOutputs(cmd, outs);
 }
 
 int cmdSimulateCalib(int argc, char** argv) {
@@ -408,7 +432,14 @@ int cmdSimulateCalib(int argc, char** argv) {
         return fail(cmd, err, kUsage);
     if (a.positional().size() != 1) return fail(cmd, "give exactly one output folder", kUsage);
     const std::string dir = a.positional()[0];
-    if (!makeDir(dir)) return fail(cmd, dir + ": cannot create the folder");
+    const FolderForOutputs folder(dir);
+    if (!folder.ok()) return fail(cmd, dir + ": cannot create the folder");
+    core::OutputSet outs;
+    for (const char* f : {"beams.json", "control_points.csv", "pointing_truth.csv", "detectors.csv", "detector_truth.csv",
+                          "waveform.csv", "features.csv", "waveform_truth.csv"})
+        outs.addOutput(dir + "/" + f);
+    if (int rc = checkOutputs(cmd, outs)) return rc;
+    auto staged = [&](const char* name) { return outs.stagingPath(dir + "/" + name); };
     const uint64_t s0 = static_cast<uint64_t>(seed);
     // Pointing.
     sim::CalibSimParams cp;
@@ -450,14 +481,16 @@ int cmdSimulateCalib(int argc, char** argv) {
     }
     const std::string wtruth = "height_m,delta_t_ns,feature\n" + fx(wp.heightM, 6) + "," + fx(ws.deltaTNs, 6) + ",F" +
                                std::to_string(truthIndex + 1) + "\n";
-    if (!core::writeFileAtomic(dir + "/beams.json", beamsToJson(beams), &err) ||
-        !writeControlPointCsv(dir + "/control_points.csv", cs.points, &err) ||
-        !core::writeFileAtomic(dir + "/pointing_truth.csv", truth, &err) ||
-        !writeDetectorCsv(dir + "/detectors.csv", ds.array, &err) ||
-        !core::writeFileAtomic(dir + "/detector_truth.csv", dtruth, &err) ||
-        !core::writeFileAtomic(dir + "/waveform.csv", wave, &err) || !core::writeFileAtomic(dir + "/features.csv", feats, &err) ||
-        !core::writeFileAtomic(dir + "/waveform_truth.csv", wtruth, &err))
-        return fail(cmd, err);
+    if (!core::writeFileAtomic(staged("beams.json"), beamsToJson(beams), &err) ||
+        !writeControlPointCsv(staged("control_points.csv"), cs.points, &err) ||
+        !core::writeFileAtomic(staged("pointing_truth.csv"), truth, &err) ||
+        !writeDetectorCsv(staged("detectors.csv"), ds.array, &err) ||
+        !core::writeFileAtomic(staged("detector_truth.csv"), dtruth, &err) ||
+        !core::writeFileAtomic(staged("waveform.csv"), wave, &err) || !core::writeFileAtomic(staged("features.csv"), feats, &err) ||
+        !core::writeFileAtomic(staged("waveform_truth.csv"), wtruth, &err))
+        return fail(cmd, outs.unstaged(err));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
+    folder.keep();
     if (!quiet(a)) std::cerr << "simulate calib: wrote " << dir << "/{beams.json, control_points.csv, pointing_truth.csv, "
                              << "detectors.csv, detector_truth.csv, waveform.csv, features.csv, waveform_truth.csv}\n";
     return kOk;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "core/common/text.hpp"
@@ -129,6 +130,25 @@ void Progress::update(size_t done) {
 
 void Progress::finish() {
     if (!m_quiet && m_tty) std::fprintf(stderr, "\n");
+}
+
+FolderForOutputs::FolderForOutputs(std::string dir) : m_dir(std::move(dir)) {
+    m_created = ::mkdir(m_dir.c_str(), 0755) == 0;
+    struct stat st {};
+    m_ok = ::stat(m_dir.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+FolderForOutputs::~FolderForOutputs() {
+    if (m_created && !m_keep) ::rmdir(m_dir.c_str());  // only succeeds when empty
+}
+
+int checkOutputs(const std::string& command, core::OutputSet& outs) {
+    if (outs.check()) return kOk;
+    return fail(command, outs.error(), outs.namingProblem() ? kUsage : kFailed);
+}
+
+int commitOutputs(const std::string& command, core::OutputSet& outs) {
+    return outs.commit() ? kOk : fail(command, outs.error());
 }
 
 bool parsePoint(const std::string& s, double* x, double* y) {

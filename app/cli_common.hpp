@@ -1,9 +1,13 @@
 #pragma once
 // Shared plumbing of laserwb-cli: option parsing, messages, progress on stderr.
 #include <chrono>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
+
+#include "core/common/output_set.hpp"
+#include "core/common/schema.hpp"
 
 namespace lwb::cli {
 
@@ -53,6 +57,92 @@ private:
     bool m_quiet, m_tty;
     int m_lastDecile = -1;
     std::chrono::steady_clock::time_point m_start, m_last;
+};
+
+/// Checks a run's outputs before any work is done (core::OutputSet::check). 0 when they may be
+/// written; else prints why and returns the exit code: usage (2) for outputs naming an input or
+/// each other, failed (1) for a file-system problem.
+int checkOutputs(const std::string& command, core::OutputSet& outs);
+/// Renames a run's staged outputs into place: kOk, or prints why and returns kFailed (then none
+/// of the outputs was replaced).
+int commitOutputs(const std::string& command, core::OutputSet& outs);
+
+/// An output folder for a run that writes several files into it: created when missing, and
+/// removed again (when still empty) unless keep() is called, so a failed run leaves nothing.
+class FolderForOutputs {
+public:
+    explicit FolderForOutputs(std::string dir);
+    ~FolderForOutputs();
+    FolderForOutputs(const FolderForOutputs&) = delete;
+    FolderForOutputs& operator=(const FolderForOutputs&) = delete;
+    bool ok() const { return m_ok; }
+    void keep() const { m_keep = true; }
+
+private:
+    std::string m_dir;
+    bool m_ok = false, m_created = false;
+    mutable bool m_keep = false;
+};
+
+/// A named option that sets one schema field ("--cos-c" for "screen.cosine_c"): today's flags,
+/// kept as aliases of --set.
+struct ParamAlias {
+    std::string flag, key;
+};
+
+/// --config FILE, --print-config and --set KEY=VALUE for a command whose parameters a schema
+/// declares (core/common/schema.hpp), plus its named aliases. Ranges, messages and the JSON all
+/// come from the schema, so the CLI, configs, presets and the GUI agree.
+template <class P>
+class ParamOptions {
+public:
+    ParamOptions(const core::Schema<P>& schema, std::vector<ParamAlias> aliases = {})
+        : m_schema(schema), m_aliases(std::move(aliases)) {}
+
+    void declare(Args& a) const {
+        a.option("--config", true);
+        a.option("--set", true, true);
+        a.option("--print-config", false);
+        for (const auto& al : m_aliases) a.option(al.flag, true);
+    }
+    static const char* help() {
+        return "  --config FILE.json   parameters (every key: --print-config); the options below override it\n"
+               "  --set KEY=VALUE      set one parameter (repeatable), e.g. --set screen.cosine_c=0.97\n"
+               "  --print-config       print the effective parameters as JSON and exit\n";
+    }
+    /// Applies --config, then `afterConfig` (a command's own option that sets several fields,
+    /// such as a preset), then the aliases, then each --set, over *p. 0 when fine, else the exit
+    /// code after printing why: 1 for a bad config file, 2 for a bad option.
+    int apply(const std::string& cmd, const Args& a, P* p, const std::function<int(P*)>& afterConfig = {}) const {
+        std::string err;
+        if (a.has("--config")) {
+            const core::JsonParseResult j = core::readJsonFile(a.value("--config"));
+            if (!j.ok) return fail(cmd, j.error);
+            if (!fromJson(j, p, &err)) return fail(cmd, err);
+        }
+        if (afterConfig)
+            if (int rc = afterConfig(p)) return rc;
+        for (const auto& al : m_aliases)
+            if (a.has(al.flag) && !m_schema.setFromText(p, al.key, a.value(al.flag), &err))
+                return fail(cmd, al.flag + " " + a.value(al.flag) + ": " + err, kUsage);
+        for (const std::string& kv : a.values("--set")) {
+            const size_t eq = kv.find('=');
+            if (eq == std::string::npos) return fail(cmd, "--set needs KEY=VALUE, not \"" + kv + "\"", kUsage);
+            if (!m_schema.setFromText(p, std::string(core::trim(kv.substr(0, eq))), kv.substr(eq + 1), &err))
+                return fail(cmd, "--set " + kv + ": " + err, kUsage);
+        }
+        return kOk;
+    }
+    bool printRequested(const Args& a) const { return a.has("--print-config"); }
+    std::string json(const P& p) const { return core::dumpJson(m_schema.toJson(p)); }
+
+    /// How a config file is read: the schema's fromJson, or a caller's (a preset applied first).
+    std::function<bool(const core::JsonParseResult&, P*, std::string*)> fromJson =
+        [this](const core::JsonParseResult& j, P* p, std::string* err) { return m_schema.fromJson(j.value, p, err, &j); };
+
+private:
+    const core::Schema<P>& m_schema;
+    std::vector<ParamAlias> m_aliases;
 };
 
 /// "X,Y" → two finite numbers.

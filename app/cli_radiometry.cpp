@@ -23,6 +23,11 @@ bool wantsHelp(const Args& a) { return a.has("--help") || a.has("-h"); }
 void warn(const std::string& cmd, const std::vector<std::string>& ws) {
     for (const auto& w : ws) std::cerr << "laserwb-cli " << cmd << ": warning: " << w << "\n";
 }
+// --max-pixels: the largest image decoded (its header is read first).
+bool maxPixels(const Args& a, long long* out, std::string* err) {
+    *out = core::kMaxImagePixels;
+    return a.getInt("--max-pixels", 1, 1LL << 40, out, err);
+}
 
 const char* kMosaicUsage =
     "usage: laserwb-cli radiometry mosaic FRAME... -o ROW.tif [options]\n"
@@ -36,7 +41,8 @@ const char* kMosaicUsage =
     "  --min-inliers N          fewer consistent matches for a pair is an error (default 12)\n"
     "  -o, --output ROW.tif     the row image (same depth as the frames; .tif or .png)\n"
     "  --coverage MASK.png      255 where a frame contributed\n"
-    "  --pairs PAIRS.csv        per pair: keypoints, matches, inliers, RMS, shift, rotation, scale\n";
+    "  --pairs PAIRS.csv        per pair: keypoints, matches, inliers, RMS, shift, rotation, scale\n"
+    "  --max-pixels N           largest image read, from its header (default 268435456 = 16384^2)\n";
 
 const char* kGcpUsage =
     "usage: laserwb-cli radiometry gcp IMAGE --gcps GCPS.csv -o MAP.tif [options]\n"
@@ -46,7 +52,8 @@ const char* kGcpUsage =
     "  --model affine|homography   (default affine)\n"
     "  --pixel-size M          map pixel size in metres (default: the image's own scale)\n"
     "  --residuals RES.csv     per GCP: map and pixel residuals\n"
-    "  --valid MASK.png        255 where the map pixel came from inside the image\n";
+    "  --valid MASK.png        255 where the map pixel came from inside the image\n"
+    "  --max-pixels N           largest image read, from its header (default 268435456 = 16384^2)\n";
 
 const char* kFitUsage =
     "usage: laserwb-cli radiometry fit REGIONS.csv [--image DN.tif] -o FIT.csv [options]\n"
@@ -60,7 +67,8 @@ const char* kFitUsage =
     "  --vm PCT                spectrometer uncertainty V_M (default 0.17 %)\n"
     "  -o, --output FIT.csv    k, b, k_sd, b_sd, cov_kb, n, residual_sd, r2, mean_dn, vm_pct,\n"
     "                          paper_uncertainty_pct, uncertainty_at_mean_pct\n"
-    "  --regions OUT.csv       per region: dn, reflectance, predicted, residual, used, note\n";
+    "  --regions OUT.csv       per region: dn, reflectance, predicted, residual, used, note\n"
+    "  --max-pixels N           largest image read, from its header (default 268435456 = 16384^2)\n";
 
 const char* kApplyUsage =
     "usage: laserwb-cli radiometry apply DN_IMAGE (--fit FIT.csv | --k K --b B) -o REFLECTANCE.tif [options]\n"
@@ -70,14 +78,16 @@ const char* kApplyUsage =
     "  --uncertainty UNC.tif   per-pixel uncertainty sqrt(V_M^2 + prediction variance) (needs --fit)\n"
     "  --check CHECK.csv       check regions (name, reflectance, x, y, w, h) -> relative errors\n"
     "  --table TABLE.csv       the relative-error table (with --check)\n"
-    "  --limit PCT             relative-error limit (default 5 %)\n";
+    "  --limit PCT             relative-error limit (default 5 %)\n"
+    "  --max-pixels N           largest image read, from its header (default 268435456 = 16384^2)\n";
 
 const char* kCheckUsage =
     "usage: laserwb-cli radiometry check CHECK.csv [--image REFLECTANCE.tif] [-o TABLE.csv] [--limit PCT]\n"
     "Relative error of simulated (image) against measured reflectance per check region (paper 003\n"
     "tables 5-7): |simulated - measured| / measured * 100.\n"
     "CHECK.csv: name, measured (or reflectance), and simulated or a rectangle x, y, w, h on --image.\n"
-    "Exit code 1 also when a region exceeds the limit (default 5 %); the table is still written.\n";
+    "Exit code 1 also when a region exceeds the limit (default 5 %); the table is still written.\n"
+    "  --max-pixels N           largest image read, from its header (default 268435456 = 16384^2)\n";
 
 }  // namespace
 
@@ -85,7 +95,7 @@ int cmdRadiometryMosaic(int argc, char** argv) {
     const std::string cmd = "radiometry mosaic";
     Args a(cmd, kMosaicUsage);
     for (const char* o : {"--features", "--model", "--blend", "--ransac-px", "--min-inliers", "-o", "--output", "--coverage",
-                          "--pairs"})
+                          "--pairs", "--max-pixels"})
         a.option(o, true);
     for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
@@ -105,13 +115,22 @@ int cmdRadiometryMosaic(int argc, char** argv) {
     if (!a.getDouble("--ransac-px", 1e-3, 1000, &p.ransacThresholdPx, &err) || !a.getInt("--min-inliers", 4, 100000, &minInl, &err))
         return fail(cmd, err, kUsage);
     p.minInliers = static_cast<int>(minInl);
+    if (const std::string e = validate(p); !e.empty()) return fail(cmd, e, kUsage);
     const std::string out = outPath(a);
     if (out.empty()) return fail(cmd, "no output file: give -o ROW.tif", kUsage);
     if (a.positional().size() < 2) return fail(cmd, "give at least two frames, in scan order", kUsage);
+    long long maxPx = 0;
+    if (!maxPixels(a, &maxPx, &err)) return fail(cmd, err, kUsage);
+    core::OutputSet outs;
+    for (const auto& f : a.positional()) outs.addInput(f);
+    outs.addOutput(out);
+    for (const char* o : {"--coverage", "--pairs"})
+        if (a.has(o)) outs.addOutput(a.value(o));
+    if (int rc = checkOutputs(cmd, outs)) return rc;
     std::vector<cv::Mat> frames;
     for (const auto& f : a.positional()) {
         cv::Mat m;
-        if (!readImageAnyDepth(f, &m, &err)) return fail(cmd, err);
+        if (!readImageAnyDepth(f, &m, &err, maxPx)) return fail(cmd, err);
         frames.push_back(m);
     }
     Progress progress("mosaic", 100, quiet(a));
@@ -120,9 +139,11 @@ int cmdRadiometryMosaic(int argc, char** argv) {
     progress.finish();
     if (!r.ok) return fail(cmd, r.error);
     warn(cmd, r.warnings);
-    if (!writeImage(out, r.image, &err)) return fail(cmd, err);
-    if (a.has("--coverage") && !writeImage(a.value("--coverage"), r.coverage, &err)) return fail(cmd, err);
-    if (a.has("--pairs") && !writePairCsv(a.value("--pairs"), r, &err)) return fail(cmd, err);
+    if (!writeImage(outs.stagingPath(out), r.image, &err) ||
+        (a.has("--coverage") && !writeImage(outs.stagingPath(a.value("--coverage")), r.coverage, &err)) ||
+        (a.has("--pairs") && !writePairCsv(outs.stagingPath(a.value("--pairs")), r, &err)))
+        return fail(cmd, outs.unstaged(err));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
         std::cerr << "radiometry mosaic: " << frames.size() << " frames -> " << r.image.cols << "x" << r.image.rows << " "
                   << out << "\n";
@@ -137,7 +158,8 @@ int cmdRadiometryMosaic(int argc, char** argv) {
 int cmdRadiometryGcp(int argc, char** argv) {
     const std::string cmd = "radiometry gcp";
     Args a(cmd, kGcpUsage);
-    for (const char* o : {"--gcps", "--model", "--pixel-size", "--residuals", "--valid", "-o", "--output"}) a.option(o, true);
+    for (const char* o : {"--gcps", "--model", "--pixel-size", "--residuals", "--valid", "-o", "--output", "--max-pixels"})
+        a.option(o, true);
     for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (wantsHelp(a)) {
@@ -154,19 +176,30 @@ int cmdRadiometryGcp(int argc, char** argv) {
     if (!a.has("--gcps")) return fail(cmd, "no control points: give --gcps GCPS.csv", kUsage);
     const std::string out = outPath(a);
     if (out.empty()) return fail(cmd, "no output file: give -o MAP.tif", kUsage);
+    long long maxPx = 0;
+    if (!maxPixels(a, &maxPx, &err)) return fail(cmd, err, kUsage);
+    core::OutputSet outs;
+    outs.addInput(a.positional()[0]);
+    outs.addInput(a.value("--gcps"));
+    outs.addOutput(out);
+    for (const char* o : {"--valid", "--residuals"})
+        if (a.has(o)) outs.addOutput(a.value(o));
+    if (int rc = checkOutputs(cmd, outs)) return rc;
     std::vector<Gcp> gcps;
     if (!readGcpCsv(a.value("--gcps"), &gcps, &err)) return fail(cmd, err);
     cv::Mat img;
-    if (!readImageAnyDepth(a.positional()[0], &img, &err)) return fail(cmd, err);
+    if (!readImageAnyDepth(a.positional()[0], &img, &err, maxPx)) return fail(cmd, err);
     const GcpFitResult fit = fitGcpTransform(gcps, p);
     if (!fit.ok) return fail(cmd, a.value("--gcps") + ": " + fit.error);
     warn(cmd, fit.warnings);
     const MapGrid grid = gridCovering(fit, img.size(), pixel > 0 ? pixel : fit.metresPerPixel);
     const WarpResult w = warpToMap(img, fit, grid);
     if (!w.ok) return fail(cmd, w.error);
-    if (!writeImage(out, w.image, &err)) return fail(cmd, err);
-    if (a.has("--valid") && !writeImage(a.value("--valid"), w.valid, &err)) return fail(cmd, err);
-    if (a.has("--residuals") && !writeGcpResidualCsv(a.value("--residuals"), gcps, fit, &err)) return fail(cmd, err);
+    if (!writeImage(outs.stagingPath(out), w.image, &err) ||
+        (a.has("--valid") && !writeImage(outs.stagingPath(a.value("--valid")), w.valid, &err)) ||
+        (a.has("--residuals") && !writeGcpResidualCsv(outs.stagingPath(a.value("--residuals")), gcps, fit, &err)))
+        return fail(cmd, outs.unstaged(err));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a))
         std::cerr << "radiometry gcp: " << gcps.size() << " GCPs, " << geoModelName(fit.model) << "; RMS "
                   << fx(fit.rmsMap, 4) << " m = " << fx(fit.rmsPx, 3) << " px; map grid " << grid.width << "x" << grid.height
@@ -178,7 +211,8 @@ int cmdRadiometryGcp(int argc, char** argv) {
 int cmdRadiometryFit(int argc, char** argv) {
     const std::string cmd = "radiometry fit";
     Args a(cmd, kFitUsage);
-    for (const char* o : {"--image", "--dn-min", "--dn-max", "--vm", "-o", "--output", "--regions"}) a.option(o, true);
+    for (const char* o : {"--image", "--dn-min", "--dn-max", "--vm", "-o", "--output", "--regions", "--max-pixels"})
+        a.option(o, true);
     for (const char* o : {"--exclude-out-of-range", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (wantsHelp(a)) {
@@ -195,18 +229,28 @@ int cmdRadiometryFit(int argc, char** argv) {
     if (a.positional().size() != 1) return fail(cmd, "give exactly one region CSV", kUsage);
     const std::string out = outPath(a);
     if (out.empty()) return fail(cmd, "no output file: give -o FIT.csv", kUsage);
+    long long maxPx = 0;
+    if (!maxPixels(a, &maxPx, &err)) return fail(cmd, err, kUsage);
+    core::OutputSet outs;
+    outs.addInput(a.positional()[0]);
+    outs.addInput(a.value("--image"));
+    outs.addOutput(out);
+    if (a.has("--regions")) outs.addOutput(a.value("--regions"));
+    if (int rc = checkOutputs(cmd, outs)) return rc;
     std::vector<Region> regions;
     if (!readRegionCsv(a.positional()[0], &regions, &err)) return fail(cmd, err);
     if (a.has("--image")) {
         cv::Mat img;
-        if (!readImageAnyDepth(a.value("--image"), &img, &err)) return fail(cmd, err);
+        if (!readImageAnyDepth(a.value("--image"), &img, &err, maxPx)) return fail(cmd, err);
         if (!measureRegionDn(img, p, &regions, &err)) return fail(cmd, a.positional()[0] + ": " + err);
     }
     const ReflectanceFitResult r = fitReflectance(regions, p);
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
     warn(cmd, r.warnings);
-    if (!writeFitCsv(out, r.fit, &err)) return fail(cmd, err);
-    if (a.has("--regions") && !writeRegionFitCsv(a.value("--regions"), regions, r, &err)) return fail(cmd, err);
+    if (!writeFitCsv(outs.stagingPath(out), r.fit, &err) ||
+        (a.has("--regions") && !writeRegionFitCsv(outs.stagingPath(a.value("--regions")), regions, r, &err)))
+        return fail(cmd, outs.unstaged(err));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
         const auto& f = r.fit;
         std::cerr << "radiometry fit: " << f.n << " regions; K = " << core::formatDouble(f.k, 6) << " +- "
@@ -221,7 +265,7 @@ int cmdRadiometryApply(int argc, char** argv) {
     const std::string cmd = "radiometry apply";
     Args a(cmd, kApplyUsage);
     for (const char* o : {"--fit", "--k", "--b", "--dn-min", "--dn-max", "--uncertainty", "--check", "--table", "--limit", "-o",
-                          "--output"})
+                          "--output", "--max-pixels"})
         a.option(o, true);
     for (const char* o : {"--nan-out-of-range", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
@@ -246,9 +290,18 @@ int cmdRadiometryApply(int argc, char** argv) {
     if (a.positional().size() != 1) return fail(cmd, "give exactly one DN image", kUsage);
     const std::string out = outPath(a);
     if (out.empty()) return fail(cmd, "no output file: give -o REFLECTANCE.tif", kUsage);
+    long long maxPx = 0;
+    if (!maxPixels(a, &maxPx, &err)) return fail(cmd, err, kUsage);
+    core::OutputSet outs;
+    for (const char* in : {"--fit", "--check"}) outs.addInput(a.value(in));
+    outs.addInput(a.positional()[0]);
+    outs.addOutput(out);
+    for (const char* o : {"--uncertainty", "--table"})
+        if (a.has(o)) outs.addOutput(a.value(o));
+    if (int rc = checkOutputs(cmd, outs)) return rc;
     if (a.has("--fit") && !readFitCsv(a.value("--fit"), &fit, &err)) return fail(cmd, err);
     cv::Mat img;
-    if (!readImageAnyDepth(a.positional()[0], &img, &err)) return fail(cmd, err);
+    if (!readImageAnyDepth(a.positional()[0], &img, &err, maxPx)) return fail(cmd, err);
     const ApplyResult r = applyReflectance(img, fit, p);
     if (!r.ok) return fail(cmd, r.error);
     warn(cmd, r.warnings);
@@ -259,9 +312,11 @@ int cmdRadiometryApply(int argc, char** argv) {
         check = relativeErrors(regions, &r.reflectance, limit);
         if (!check.ok) return fail(cmd, a.value("--check") + ": " + check.error);
     }
-    if (!writeFloatTiff(out, r.reflectance, &err)) return fail(cmd, err);
-    if (a.has("--uncertainty") && !writeFloatTiff(a.value("--uncertainty"), r.uncertainty, &err)) return fail(cmd, err);
-    if (a.has("--table") && !writeRelativeErrorCsv(a.value("--table"), check, &err)) return fail(cmd, err);
+    if (!writeFloatTiff(outs.stagingPath(out), r.reflectance, &err) ||
+        (a.has("--uncertainty") && !writeFloatTiff(outs.stagingPath(a.value("--uncertainty")), r.uncertainty, &err)) ||
+        (a.has("--table") && !writeRelativeErrorCsv(outs.stagingPath(a.value("--table")), check, &err)))
+        return fail(cmd, outs.unstaged(err));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) std::cerr << "radiometry apply: " << img.cols << "x" << img.rows << " -> " << out << "\n";
     if (a.has("--check")) {
         for (const auto& row : check.rows)
@@ -277,7 +332,7 @@ int cmdRadiometryApply(int argc, char** argv) {
 int cmdRadiometryCheck(int argc, char** argv) {
     const std::string cmd = "radiometry check";
     Args a(cmd, kCheckUsage);
-    for (const char* o : {"--image", "--limit", "-o", "--output"}) a.option(o, true);
+    for (const char* o : {"--image", "--limit", "-o", "--output", "--max-pixels"}) a.option(o, true);
     for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (wantsHelp(a)) {
@@ -288,13 +343,22 @@ int cmdRadiometryCheck(int argc, char** argv) {
     double limit = 5;
     if (!a.getDouble("--limit", 1e-9, 1e6, &limit, &err)) return fail(cmd, err, kUsage);
     if (a.positional().size() != 1) return fail(cmd, "give exactly one check-region CSV", kUsage);
+    long long maxPx = 0;
+    if (!maxPixels(a, &maxPx, &err)) return fail(cmd, err, kUsage);
+    core::OutputSet outs;
+    outs.addInput(a.positional()[0]);
+    outs.addInput(a.value("--image"));
+    if (!outPath(a).empty()) outs.addOutput(outPath(a));
+    if (int rc = checkOutputs(cmd, outs)) return rc;
     std::vector<Region> regions;
     if (!readRegionCsv(a.positional()[0], &regions, &err)) return fail(cmd, err);
     cv::Mat img;
-    if (a.has("--image") && !readImageAnyDepth(a.value("--image"), &img, &err)) return fail(cmd, err);
+    if (a.has("--image") && !readImageAnyDepth(a.value("--image"), &img, &err, maxPx)) return fail(cmd, err);
     const RelativeErrorResult r = relativeErrors(regions, a.has("--image") ? &img : nullptr, limit);
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
-    if (!outPath(a).empty() && !writeRelativeErrorCsv(outPath(a), r, &err)) return fail(cmd, err);
+    if (!outPath(a).empty() && !writeRelativeErrorCsv(outs.stagingPath(outPath(a)), r, &err))
+        return fail(cmd, outs.unstaged(err));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
     for (const auto& row : r.rows)
         std::cout << row.name << ": measured " << fx(row.measured, 5) << " %, simulated " << fx(row.simulated, 5)
                   << " %, relative error " << fx(row.relativeErrorPct, 6) << " %\n";

@@ -2,6 +2,7 @@
 // post-fit with k-sigma rejection and ILRS normal points; per-point CSV, CRD full rate with
 // filter flags and CRD normal points. The loading and writing is core/slr/pass_input.hpp, the
 // layer the SLR workspace of the GUI uses too.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -13,10 +14,15 @@
 
 #include "cli_commands.hpp"
 #include "cli_common.hpp"
+#include "core/common/atomic_file.hpp"
+#include "core/common/csv.hpp"
 #include "core/common/text.hpp"
+#include "core/slr/np_context.hpp"
 #include "core/slr/pass_input.hpp"
+#include "core/slr/pass_run.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/presets.hpp"
+#include "core/slr/slr_params.hpp"
 #include "core/slr/screen.hpp"
 
 namespace lwb::cli {
@@ -29,14 +35,28 @@ const char* kSlrUsage =
     "usage: laserwb-cli slr INPUT [options] -o OUT.csv [--crd-out FILE] [--npt-out FILE]\n"
     "Screens one SLR pass: signal extraction by binary image (paper 004; automatic scale by default),\n"
     "then a trend fit with k-sigma rejection and ILRS normal points. A summary goes to stderr.\n"
-    "INPUT: a CRD file (.frd .fr2 .npt .np2 .crd; v1 or v2) or an O-C CSV (header with epoch_s,oc_s;\n"
-    "       epoch in s, O-C in s of two-way time of flight).\n"
+    "INPUT: a CRD file (v1 or v2; recognised by its H1 record, whatever the name) or an O-C CSV\n"
+    "       (header with epoch_s,oc_s; epoch in s, O-C in s of two-way time of flight).\n"
     "  --cpf FILE --stations SINEX   O-C of a CRD pass from this CPF prediction and these station\n"
-    "                        coordinates (both needed); without them, O-C against a robust trend of the\n"
-    "                        pass's own time of flight (a range bias and a smooth drift are absorbed)\n"
+    "                        coordinates (--cpf needs --stations); without --cpf, O-C against a robust\n"
+    "                        trend of the pass's own time of flight (a range bias and a smooth drift\n"
+    "                        are absorbed). --stations alone: the station's position for day or night\n"
+    "                        (the Sun's elevation per normal-point bin: at least 6 points by day, 3 by\n"
+    "                        night); without it a CRD pass gets the day minimum of 6\n"
     "  --pass K              pass number in the CRD file, 1-based (1 = the first pass of the file);\n"
     "                        default: the first pass with full-rate (type 10) records\n"
-    "Screening (automatic by default; each option below replaces only its own parameter):\n"
+    "  --all-passes --out-dir DIR   every pass of the CRD file with the same options: DIR/passNNN.csv\n"
+    "                        (as -o) for each pass screened and DIR/summary.csv (one row per pass:\n"
+    "                        station, satellite, UTC start, duration, points, accepted, RMS, normal\n"
+    "                        points, agreement with the station's flags, status and reason); a pass\n"
+    "                        that cannot be processed is a failed row, the others go on. --cpf may\n"
+    "                        then be a folder: the CPF that fits each pass (satellite ids and time\n"
+    "                        span) is picked; a pass no CPF fits is screened on its own TOF trend\n"
+    "Parameters (automatic screening by default; each option replaces only its own parameter; every\n"
+    "parameter with its range and meaning: --help-params):\n"
+    "  --config FILE.json    parameters (as --print-config writes them)\n"
+    "  --set KEY=VALUE       one parameter (repeatable), e.g. --set screen.cosine_c=0.97\n"
+    "  --print-config        print the effective parameters as JSON and exit\n"
     "  --mag-t X             pixels per second of epoch (paper table 1: 10 conventional, 1 diffuse)\n"
     "  --mag-oc Y            pixels per second of O-C (paper: 1e10 conventional, 1e7 diffuse)\n"
     "  --area-min N          area limit in pixels: regions at least this large are candidates\n"
@@ -83,74 +103,208 @@ std::string named(const std::string& path, const std::string& msg) {
     return path + ": " + msg;
 }
 
-struct Staged {
-    std::string finalPath, stagePath;
-};
-
-// Output files are first written (each atomically) under a staging name beside the target and
-// renamed into place only when every one of them was written: a failed run leaves none.
-// An output path that can be created or replaced: not a folder, in a folder that exists and
-// that we may write to. False with *why.
-bool outputWritable(const std::string& path, std::string* why) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-        *why = "is a folder";
-        return false;
-    }
-    const size_t slash = path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-    if (::access(dir.c_str(), W_OK) != 0) {
-        *why = "cannot write in " + dir + ": " + std::strerror(errno);
-        return false;
-    }
-    return true;
+// The command's defaults: the core's, with the multi-photon rejection of 3 sigma.
+slr::SlrParams cliDefaults() {
+    slr::SlrParams p;
+    p.postfit.rejectSigma = 3;
+    return p;
 }
 
-class Outputs {
-public:
-    std::string stage(const std::string& finalPath) {
-        const size_t slash = finalPath.find_last_of('/');
-        const std::string dir = slash == std::string::npos ? "" : finalPath.substr(0, slash + 1);
-        const std::string base = slash == std::string::npos ? finalPath : finalPath.substr(slash + 1);
-        const std::string st = dir + "." + base + ".lwb-stage-" + std::to_string(::getpid());
-        m_files.push_back({finalPath, st});
-        return st;
-    }
-    bool commit(std::string* error) {
-        for (size_t i = 0; i < m_files.size(); ++i) {
-            if (std::rename(m_files[i].stagePath.c_str(), m_files[i].finalPath.c_str()) != 0) {
-                *error = "cannot write " + m_files[i].finalPath + ": " + std::strerror(errno);
-                for (size_t j = i; j < m_files.size(); ++j) std::remove(m_files[j].stagePath.c_str());
-                m_files.clear();
-                return false;
-            }
-        }
-        m_files.clear();
-        return true;
-    }
-    ~Outputs() {
-        for (const auto& f : m_files) std::remove(f.stagePath.c_str());
-    }
+std::string ps(double s) { return core::formatFixed(s * 1e12, 1) + " ps"; }
+std::string f4(double v) { return std::isfinite(v) ? core::formatFixed(v, 4) : std::string(); }
 
-private:
-    std::vector<Staged> m_files;
+// What every pass of a run shares: the presets, the station file and the options.
+struct RunInputs {
+    const std::vector<slr::SatellitePreset>& presets;
+    bool havePresets;
+    std::string satellite;
+    const slr::SinexFile* stations;
+    const ParamOptions<slr::SlrParams>* options;
+    const Args* args;
 };
 
-std::string ps(double s) { return core::formatFixed(s * 1e12, 1) + " ps"; }
+// The parameters of one pass: defaults, its preset and normal-point context, then the options.
+int settingsFor(const std::string& cmd, const slr::PassData& pass, const RunInputs& ri, slr::PassSettings* out) {
+    std::string err;
+    if (!slr::passSettings(pass, cliDefaults(), ri.havePresets ? &ri.presets : nullptr, ri.satellite, ri.stations, out, &err))
+        return fail(cmd, ri.args->value("--preset") + ": " + err);
+    if (int rc = ri.options->apply(cmd, *ri.args, &out->params)) return rc;
+    if (const std::string e = slr::validate(out->params.screen); !e.empty())
+        return fail(cmd, (out->presetName.empty() ? std::string() : "preset " + out->presetName + ": ") + e, kUsage);
+    return kOk;
+}
+
+void printSummary(const std::string& what, const slr::PassData& pass, const slr::PassSettings& settings,
+                  const slr::PassRunResult& r) {
+    const slr::ScreenResult& s = r.screen;
+    const slr::PostfitResult& post = r.post;
+    const slr::PostfitParams& pp = settings.params.postfit;
+    for (const auto& w : s.warnings) std::cerr << "laserwb-cli slr: warning: " << w << "\n";
+    if (!r.postOk && !r.postNote.empty()) std::cerr << "laserwb-cli slr: warning: " << r.postNote << "\n";
+    if (r.postOk)
+        for (const auto& w : post.warnings) std::cerr << "laserwb-cli slr: warning: " << w << "\n";
+    auto mark = [](bool automatic) { return automatic ? " (auto)" : ""; };
+    std::cerr << "slr: " << what;
+    if (!pass.satellite.empty()) std::cerr << " (" << pass.satellite << (pass.station.empty() ? "" : " from " + pass.station) << ")";
+    std::cerr << ": O-C from " << pass.ocOrigin << (settings.presetName.empty() ? "" : "; preset " + settings.presetName) << "\n"
+              << "  points " << pass.t.size() << ", accepted " << r.acceptedCount << " (" << s.signalPoints << " signal + "
+              << s.recoveredPoints << " recovered), noise " << s.noisePoints << "\n"
+              << "  scale: mag_T " << core::formatDouble(s.magT, 4) << mark(s.autoMagT) << ", mag_OC "
+              << core::formatDouble(s.magOc, 4) << mark(s.autoMagOc) << ", area limit " << s.areaLimit << mark(s.autoArea)
+              << ", connectivity " << s.connectivity << mark(s.autoConnectivity) << ", C "
+              << core::formatDouble(settings.params.screen.cosineC, 4);
+    if (!s.trials.empty()) std::cerr << "; " << s.trials.size() << " scales tried";
+    std::cerr << "\n";
+    if (r.postOk) {
+        std::cerr << "  post-fit: degree " << post.degree << ", " << core::formatDouble(pp.rejectSigma, 3)
+                  << "-sigma rejection removed " << post.rejected << " of " << post.used << ", RMS "
+                  << ps(post.stats.rms) << " (" << core::formatFixed(post.stats.rms * 0.5 * 299792458.0 * 1e3, 1)
+                  << " mm one-way)\n";
+        if (post.normalPoints.empty() && !r.postNote.empty())
+            std::cerr << "  " << r.postNote << "\n";
+        else
+            std::cerr << "  normal points: " << post.normalPoints.size() << " (bins of "
+                      << core::formatDouble(post.binLengthS, 4) << " s, at least " << post.minPointsPerBin << " points"
+                      << (post.dayBins + post.nightBins ? " (" + std::to_string(post.dayBins) + " day, " +
+                                                              std::to_string(post.nightBins) + " night bins)"
+                                                        : std::string(pp.daylight ? " (day)" : " (night)"))
+                      << (post.binsTooSmall ? ", " + std::to_string(post.binsTooSmall) + " bins too small" : "") << ")\n";
+        for (const auto& note : settings.notes) std::cerr << "  " << note << "\n";
+    }
+    const slr::StationAgreement& g = r.agreement;
+    if (g.available) {
+        std::cerr << "  against the station's filter flags (" << g.data << " data, " << g.noise << " noise): screening precision "
+                  << f4(g.precision) << ", recall " << f4(g.recall);
+        if (r.postOk) std::cerr << "; after post-fit precision " << f4(g.keptPrecision) << ", recall " << f4(g.keptRecall);
+        std::cerr << "\n";
+    } else if (g.data > 0) {
+        std::cerr << "  the station's filter flags are incomplete (some 0 = unknown): no comparison\n";
+    }
+}
+
+// --all-passes: every pass of a CRD file screened with the same options, each pass's outputs
+// and a summary.csv in `dir`, written together at the end. A pass that cannot be processed is a
+// row of the summary with its reason; the others go on.
+int screenAllPasses(const std::string& cmd, const std::string& input, const slr::PassInputParams& in, const RunInputs& ri,
+                    const std::string& dir, bool quiet) {
+    const slr::CrdReadResult crd = slr::readCrd(input);
+    if (!crd.ok) return fail(cmd, crd.error);
+    slr::PassSources sources;
+    std::string err;
+    if (!in.cpfPath.empty() && !in.sinexPath.empty() && !slr::readPassSources(in, &sources, &err)) return fail(cmd, err);
+    slr::PassInputParams inFallback = in;
+    inFallback.cpfFallback = true;  // a pass the CPF does not fit is screened on its own TOF trend, with a note
+    const FolderForOutputs folder(dir);
+    if (!folder.ok()) return fail(cmd, dir + ": cannot create the folder");
+    const size_t n = crd.file.passes.size();
+    // The outputs' names first, so that every one is checked before any work.
+    std::vector<std::string> names(n);
+    core::OutputSet outs;
+    outs.addInput(input);
+    for (size_t i = 0; i < n; ++i) {
+        char name[64];
+        std::snprintf(name, sizeof name, "pass%03zu.csv", i + 1);
+        names[i] = dir + "/" + name;
+        outs.addOutput(names[i]);
+    }
+    const std::string summaryPath = dir + "/summary.csv";
+    outs.addOutput(summaryPath);
+    if (int rc = checkOutputs(cmd, outs)) return rc;
+    std::string summary =
+        "pass,station,satellite,ilrs_id,start_utc,duration_s,points,accepted,rms_ps,rms_mm,normal_points,"
+        "station_precision,station_recall,oc_origin,status,reason,seconds,output\n";
+    Progress progress("slr", n, quiet);
+    size_t done = 0, okCount = 0;
+    std::vector<bool> written(n, false);
+    const std::vector<slr::PassSummary> passes = slr::summarisePasses(crd.file);
+    for (size_t i = 0; i < n; ++i) {
+        const slr::PassSummary& ps0 = passes[i];
+        std::string row = std::to_string(i + 1) + "," + core::csvEscape(ps0.station) + "," + core::csvEscape(ps0.satellite) + "," +
+                          core::csvEscape(ps0.ilrsId) + "," + ps0.start + ",";
+        auto failRow = [&](const std::string& why) {
+            // duration empty, the points, accepted .. oc_origin empty, then status and reason.
+            summary += row + "," + std::to_string(ps0.ranges) + ",,,,,,,,failed," + core::csvEscape(why) + ",,\n";
+        };
+        const slr::PassInputResult p = slr::passFromCrd(crd, input, int(i), inFallback, sources);
+        progress.update(++done);
+        if (!p.ok) {
+            failRow(p.error.substr(0, p.error.find('\n')));
+            continue;
+        }
+        if (!p.pass.damaged.empty()) {
+            failRow(p.pass.damaged);
+            continue;
+        }
+        slr::PassSettings settings;
+        if (!slr::passSettings(p.pass, cliDefaults(), ri.havePresets ? &ri.presets : nullptr, ri.satellite, ri.stations,
+                               &settings, &err)) {
+            failRow(err);
+            continue;
+        }
+        if (int rc = ri.options->apply(cmd, *ri.args, &settings.params)) return rc;
+        const slr::PassRunResult r = slr::runPass(p.pass, settings.params);
+        if (!r.ok) {
+            failRow(r.error);
+            continue;
+        }
+        if (!slr::writeScreenCsv(outs.stagingPath(names[i]), p.pass, r.screen, r.accepted, r.postOk ? &r.post : nullptr, &err))
+            return fail(cmd, outs.unstaged(err));
+        written[i] = true;
+        ++okCount;
+        const double duration = p.pass.t.empty() ? 0 : p.pass.t.back() - p.pass.t.front();
+        const double rms = r.postOk ? r.post.stats.rms : NAN;
+        summary += row + core::formatFixed(duration, 1) + "," + std::to_string(p.pass.t.size()) + "," +
+                   std::to_string(r.acceptedCount) + "," + (std::isfinite(rms) ? core::formatFixed(rms * 1e12, 1) : "") + "," +
+                   (std::isfinite(rms) ? core::formatFixed(rms * 0.5 * 299792458.0 * 1e3, 2) : "") + "," +
+                   (r.postOk ? std::to_string(r.post.normalPoints.size()) : "") + "," + f4(r.agreement.precision) + "," +
+                   f4(r.agreement.recall) + "," + core::csvEscape(p.pass.ocOrigin) + ",ok," +
+                   core::csvEscape(!p.pass.ocNote.empty() ? p.pass.ocNote : r.postNote) + "," + core::formatFixed(r.seconds, 3) +
+                   "," + names[i].substr(dir.size() + 1) + "\n";
+    }
+    progress.finish();
+    // Passes with no result have no file.
+    for (size_t i = 0; i < n; ++i)
+        if (!written[i]) outs.drop(names[i]);
+    if (!core::writeFileAtomic(outs.stagingPath(summaryPath), summary, &err)) return fail(cmd, outs.unstaged(err));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
+    folder.keep();
+    if (!quiet)
+        std::cerr << "slr: " << input << ": " << okCount << " of " << n << " passes screened -> " << dir << "/ (summary.csv)\n";
+    return okCount > 0 ? kOk : kFailed;
+}
 
 }  // namespace
 
 int cmdSlr(int argc, char** argv) {
     const std::string cmd = "slr";
     Args a(cmd, kSlrUsage);
-    for (const char* o : {"--cpf", "--stations", "--satellite", "--mag-t", "--mag-oc", "--area-min", "--connectivity",
-                          "--cos-c", "--preset", "--pass", "--reject", "--np-bin", "-o", "--output", "--crd-out",
-                          "--npt-out"})
+    // Every screening and post-fit parameter: slr_params.hpp's schema; the named options are
+    // aliases of --set with the schema's ranges.
+    const ParamOptions<slr::SlrParams> params(slr::slrSchema(), {{"--mag-t", "screen.mag_t"},
+                                                                 {"--mag-oc", "screen.mag_oc"},
+                                                                 {"--area-min", "screen.area_limit"},
+                                                                 {"--connectivity", "screen.connectivity"},
+                                                                 {"--cos-c", "screen.cosine_c"},
+                                                                 {"--reject", "postfit.reject_sigma"},
+                                                                 {"--np-bin", "postfit.bin_length_s"}});
+    params.declare(a);
+    for (const char* o : {"--cpf", "--stations", "--satellite", "--preset", "--pass", "-o", "--output", "--crd-out", "--npt-out",
+                          "--out-dir"})
         a.option(o, true);
-    for (const char* o : {"--quiet", "-q", "--help", "-h"}) a.option(o, false);
+    for (const char* o : {"--quiet", "-q", "--help", "-h", "--help-params", "--all-passes"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail(cmd, a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
         std::cout << kSlrUsage;
+        return kOk;
+    }
+    if (a.has("--help-params")) {
+        std::cout << "slr parameters (key = default unit  valid range):\n" << slr::slrSchema().describe(cliDefaults());
+        return kOk;
+    }
+    if (params.printRequested(a)) {  // the defaults with --config and the options applied (no preset: it needs the pass)
+        slr::SlrParams p = cliDefaults();
+        if (int rc = params.apply(cmd, a, &p)) return rc;
+        std::cout << params.json(p);
         return kOk;
     }
     const bool quiet = a.has("--quiet") || a.has("-q");
@@ -160,47 +314,40 @@ int cmdSlr(int argc, char** argv) {
         return fail(cmd, a.positional().empty() ? "no input file" : "give exactly one input file", kUsage);
     const std::string input = a.positional()[0];
     if (a.has("-o") && a.has("--output")) return fail(cmd, "give -o or --output, not both", kUsage);
+    const bool allPasses = a.has("--all-passes");
+    const std::string outDir = a.value("--out-dir");
+    if (allPasses) {
+        if (outDir.empty()) return fail(cmd, "--all-passes needs --out-dir DIR (each pass's CSV and summary.csv go there)", kUsage);
+        for (const char* o : {"-o", "--output", "--crd-out", "--npt-out", "--pass"})
+            if (a.has(o)) return fail(cmd, std::string(o) + " is for one pass; --all-passes writes DIR/passNNN.csv and DIR/summary.csv", kUsage);
+    } else if (!outDir.empty()) {
+        return fail(cmd, "--out-dir goes with --all-passes", kUsage);
+    }
     const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
-    if (out.empty()) return fail(cmd, "no output file: give -o OUT.csv", kUsage);
+    if (out.empty() && !allPasses) return fail(cmd, "no output file: give -o OUT.csv", kUsage);
     const std::string crdOut = a.value("--crd-out"), nptOut = a.value("--npt-out");
-    {
-        std::set<std::string> seen = {input};
-        for (const std::string* p : {&out, &crdOut, &nptOut}) {
-            if (p->empty() && p != &out) continue;
-            if (!seen.insert(*p).second)
-                return fail(cmd, *p == input ? "an output would overwrite the input " + input
-                                             : "two outputs name the same file " + *p,
-                            kUsage);
-        }
-    }
-    // Every output must be writable before anything is computed or written, so that a failure
-    // cannot leave one output renamed into place and another missing.
-    for (const std::string* p : {&out, &crdOut, &nptOut}) {
-        if (p->empty()) continue;
-        std::string why;
-        if (!outputWritable(*p, &why)) return fail(cmd, *p + ": " + why + " (nothing written)");
-    }
-    if (a.has("--cpf") != a.has("--stations"))
+    // Every output is checked before anything is computed or written: none may replace an
+    // input or another output (same device and inode, whatever the spelling), devices and
+    // folders are refused, and all are renamed into place together at the end.
+    core::OutputSet outs;
+    for (const char* in : {"--cpf", "--stations", "--preset"}) outs.addInput(a.value(in));
+    outs.addInput(input);
+    for (const std::string* p : {&out, &crdOut, &nptOut})
+        if (!p->empty()) outs.addOutput(*p);
+    if (!allPasses)
+        if (int rc = checkOutputs(cmd, outs)) return rc;
+    if (a.has("--cpf") && !a.has("--stations"))
         return fail(cmd, "--cpf and --stations go together (O-C from the prediction needs both)", kUsage);
     if (a.has("--satellite") && !a.has("--preset"))
         return fail(cmd, "--satellite selects a preset entry; give --preset FILE with it", kUsage);
     std::string err;
-    long long passK = 0, area = 0, conn = 0;
-    double magT = 0, magOc = 0, cosC = 0, reject = 3, npBin = 0;
-    if (!a.getInt("--pass", 1, 1000000, &passK, &err) || !a.getDouble("--mag-t", 1e-9, 1e15, &magT, &err) ||
-        !a.getDouble("--mag-oc", 1e-9, 1e18, &magOc, &err) || !a.getInt("--area-min", 1, 1000000, &area, &err) ||
-        !a.getDouble("--cos-c", 0.5, 0.999999999, &cosC, &err) || !a.getDouble("--reject", 0, 10, &reject, &err) ||
-        !a.getDouble("--np-bin", 0.1, 86400, &npBin, &err))
-        return fail(cmd, err, kUsage);
-    if (a.has("--connectivity")) {
-        const std::string c = a.value("--connectivity");
-        if (c != "4" && c != "8") return fail(cmd, "--connectivity must be 4 or 8, not \"" + c + "\"", kUsage);
-        conn = c == "4" ? 4 : 8;
+    long long passK = 0;
+    if (!a.getInt("--pass", 1, 1000000, &passK, &err)) return fail(cmd, err, kUsage);
+    {  // Bad options and config are usage errors before anything is read.
+        slr::SlrParams probe = cliDefaults();
+        if (int rc = params.apply(cmd, a, &probe)) return rc;
     }
-    if (a.has("--reject") && reject > 0 && reject < 1)
-        return fail(cmd, "--reject must be 0 (off) or 1..10 (2.5 single-photon, 3 multi-photon), not " + a.value("--reject"),
-                    kUsage);
-    const bool csvInput = !slr::isCrdPath(input);
+    const bool csvInput = !slr::isCrdFile(input);
     if (csvInput && (!crdOut.empty() || !nptOut.empty()))
         return fail(cmd,
                     std::string(!crdOut.empty() ? "--crd-out" : "--npt-out") +
@@ -211,6 +358,7 @@ int cmdSlr(int argc, char** argv) {
         return fail(cmd, std::string(a.has("--cpf") ? "--cpf/--stations" : "--pass") + " apply to a CRD input; " +
                              input + " is an O-C table",
                     kUsage);
+    if (csvInput && allPasses) return fail(cmd, "--all-passes needs a CRD input; " + input + " is an O-C table (one pass)", kUsage);
 
     // ---- presets (read before the pass so that a bad file stops early) ----
     std::vector<slr::SatellitePreset> presets;
@@ -220,10 +368,19 @@ int cmdSlr(int argc, char** argv) {
         presets = pr.presets;
     }
 
-    // ---- the pass ----
+    // ---- the station file (day or night per normal-point bin), read once ----
     slr::PassInputParams in;
     in.cpfPath = a.value("--cpf");
-    in.sinexPath = a.value("--stations");
+    if (a.has("--cpf")) in.sinexPath = a.value("--stations");
+    slr::SinexReadResult snx;
+    if (a.has("--stations")) {
+        snx = slr::readSinex(a.value("--stations"));
+        if (!snx.ok) return fail(cmd, named(a.value("--stations"), snx.error));
+    }
+    const RunInputs ri{presets, a.has("--preset"), a.value("--satellite"), snx.ok ? &snx.file : nullptr, &params, &a};
+    if (allPasses) return screenAllPasses(cmd, input, in, ri, outDir, quiet);
+
+    // ---- the pass ----
     const int passIndex = a.has("--pass") ? static_cast<int>(passK - 1) : -1;
     const slr::PassInputResult loaded = slr::loadPass(input, passIndex, in);
     if (!loaded.ok) {
@@ -239,152 +396,38 @@ int cmdSlr(int argc, char** argv) {
     const slr::PassData& pass = loaded.pass;
     // A record of the pass to screen that the reader had to skip ("FILE:LINE: ..."): the point is
     // missing from the screening and the damaged line would be written back as it is. Refused.
-    if (pass.hasCrd) {
-        // The reader lists the skipped lines of each pass whether or not its warning list is full.
-        const auto& skipped = pass.crd.passes[static_cast<size_t>(pass.passIndex)].skippedLines;
-        if (!skipped.empty()) {
-            std::string why = input + ":" + std::to_string(skipped.front()) + ": a damaged record";
-            for (const auto& w : loaded.warnings)
-                if (w.rfind(input + ":" + std::to_string(skipped.front()) + ":", 0) == 0) why = w;
-            return fail(cmd, why + " (" + std::to_string(skipped.size()) +
-                                 " damaged record(s) in the pass to screen: repair or remove them; nothing written)");
-        }
-    }
+    if (!pass.damaged.empty()) return fail(cmd, pass.damaged + "; nothing written");
     if (!quiet)
         for (const auto& w : loaded.warnings) std::cerr << "laserwb-cli slr: warning: " << w << "\n";
 
-    // ---- parameters: defaults (automatic), preset, explicit options ----
-    slr::ScreenParams sp;
-    slr::PostfitParams pp;
-    pp.rejectSigma = 3;
-    pp.altitudeKm = pass.altitudeKm;
-    std::string presetName;
-    if (a.has("--preset")) {
-        const std::string want = a.value("--satellite");
-        const slr::SatellitePreset* p =
-            want.empty() ? slr::findPreset(presets, pass.satellite, pass.ilrsId) : slr::findPreset(presets, want, want);
-        if (!p) {
-            std::string have;
-            for (const auto& q : presets)
-                have += (have.empty() ? "" : ", ") + (q.name.empty() ? q.ilrsId : q.name) +
-                        (q.ilrsId.empty() || q.name.empty() ? "" : " (" + q.ilrsId + ")");
-            std::string who = !want.empty() ? "\"" + want + "\""
-                              : pass.satellite.empty() && pass.ilrsId.empty()
-                                  ? std::string("(none: an O-C table names no satellite; give --satellite NAME)")
-                                  : "\"" + pass.satellite + "\"" + (pass.ilrsId.empty() ? "" : " (ILRS id " + pass.ilrsId + ")");
-            return fail(cmd, a.value("--preset") + ": no preset for satellite " + who + "; the file holds: " +
-                                 (have.empty() ? "no entries" : have));
-        }
-        presetName = p->name.empty() ? p->ilrsId : p->name;
-        sp = p->screen;
-        const double alt = pp.altitudeKm;
-        pp = p->postfit;
-        if (!(pp.altitudeKm > 0)) pp.altitudeKm = alt;
-    }
-    if (a.has("--mag-t")) sp.magT = magT;
-    if (a.has("--mag-oc")) sp.magOc = magOc;
-    if (a.has("--area-min")) sp.areaLimit = static_cast<int>(area);
-    if (a.has("--connectivity")) sp.connectivity = static_cast<int>(conn);
-    if (a.has("--cos-c")) sp.cosineC = cosC;
-    if (a.has("--reject")) pp.rejectSigma = reject;
-    if (a.has("--np-bin")) pp.binLengthS = npBin;
-    if (const std::string e = slr::validate(sp); !e.empty())
-        return fail(cmd, (presetName.empty() ? std::string() : "preset " + presetName + ": ") + e, kUsage);
-    std::string npNote;
-    if (!(pp.binLengthS > 0) && !(pp.altitudeKm > 0)) {
-        pp.normalPoints = false;
-        npNote = "no normal points: the satellite's altitude is unknown (give --np-bin S or a preset with altitude_km)";
-        if (!nptOut.empty()) return fail(cmd, npNote, kUsage);
-    }
-    if (const std::string e = slr::validate(pp); !e.empty()) return fail(cmd, e, kUsage);
+    // ---- parameters: defaults (automatic), preset, normal-point context, config file, options ----
+    slr::PassSettings settings;
+    if (int rc = settingsFor(cmd, pass, ri, &settings)) return rc;
+    const slr::SlrParams& run = settings.params;
+    if (!nptOut.empty() && !(run.postfit.binLengthS > 0) && !(run.postfit.altitudeKm > 0))
+        return fail(cmd, "no normal points: the satellite's altitude is unknown (give --np-bin S or a preset with altitude_km)",
+                    kUsage);
 
     // ---- screening and post-fit ----
-    const slr::ScreenResult s = slr::screenSignal(pass.t, pass.oc, sp);
+    const slr::PassRunResult r = slr::runPass(pass, run);
     const std::string what = csvInput ? input : input + " pass " + std::to_string(pass.passIndex + 1);
-    if (!s.ok) return fail(cmd, what + ": screening failed: " + s.error);
-    const std::vector<uint8_t> accepted = slr::acceptedMask(s);
-    size_t nAcc = 0;
-    for (uint8_t v : accepted) nAcc += v;
-    slr::PostfitResult post;
-    bool postOk = false;
-    if (nAcc >= 2) {
-        post = slr::postfit(pass.t, pass.oc, accepted, pass.tof, pp);
-        postOk = post.ok;
-        if (!post.ok && !quiet) std::cerr << "laserwb-cli slr: warning: post-fit not done: " << post.error << "\n";
-    } else if (!quiet) {
-        std::cerr << "laserwb-cli slr: warning: post-fit not done: " << nAcc << " point(s) accepted\n";
-    }
-    if (!nptOut.empty() && (!postOk || post.normalPoints.empty()))
+    if (!r.ok) return fail(cmd, what + ": " + r.error);
+    if (!nptOut.empty() && (!r.postOk || r.post.normalPoints.empty()))
         return fail(cmd, what + ": no normal points to write to " + nptOut +
-                             (postOk ? " (no bin holds the minimum number of kept points)" : " (no post-fit)"));
+                             (r.postOk ? " (no bin holds the minimum number of kept points)" : " (" + r.postNote + ")"));
 
     // ---- outputs: all or nothing ----
-    Outputs outs;
-    if (!slr::writeScreenCsv(outs.stage(out), pass, s, accepted, postOk ? &post : nullptr, &err))
-        return fail(cmd, out + ": " + err);
-    if (!crdOut.empty() && !slr::writeScreenedCrd(outs.stage(crdOut), pass, accepted, &err))
-        return fail(cmd, crdOut + ": " + err);
-    if (!nptOut.empty() && !slr::writeNormalPointCrd(outs.stage(nptOut), pass, post.normalPoints, &err))
-        return fail(cmd, nptOut + ": " + err);
-    if (!outs.commit(&err)) return fail(cmd, err);
-
-    // ---- summary ----
-    if (quiet) return kOk;
-    for (const auto& w : s.warnings) std::cerr << "laserwb-cli slr: warning: " << w << "\n";
-    if (postOk)
-        for (const auto& w : post.warnings) std::cerr << "laserwb-cli slr: warning: " << w << "\n";
-    auto mark = [](bool automatic) { return automatic ? " (auto)" : ""; };
-    std::cerr << "slr: " << what;
-    if (!pass.satellite.empty()) std::cerr << " (" << pass.satellite << (pass.station.empty() ? "" : " from " + pass.station) << ")";
-    std::cerr << ": O-C from " << pass.ocOrigin << (presetName.empty() ? "" : "; preset " + presetName) << "\n"
-              << "  points " << pass.t.size() << ", accepted " << nAcc << " (" << s.signalPoints << " signal + "
-              << s.recoveredPoints << " recovered), noise " << s.noisePoints << "\n"
-              << "  scale: mag_T " << core::formatDouble(s.magT, 4) << mark(s.autoMagT) << ", mag_OC "
-              << core::formatDouble(s.magOc, 4) << mark(s.autoMagOc) << ", area limit " << s.areaLimit << mark(s.autoArea)
-              << ", connectivity " << s.connectivity << mark(s.autoConnectivity) << ", C "
-              << core::formatDouble(sp.cosineC, 4);
-    if (!s.trials.empty()) std::cerr << "; " << s.trials.size() << " scales tried";
-    std::cerr << "\n";
-    if (postOk) {
-        std::cerr << "  post-fit: degree " << post.degree << ", " << core::formatDouble(pp.rejectSigma, 3)
-                  << "-sigma rejection removed " << post.rejected << " of " << post.used << ", RMS "
-                  << ps(post.stats.rms) << " (" << core::formatFixed(post.stats.rms * 0.5 * 299792458.0 * 1e3, 1)
-                  << " mm one-way)\n";
-        if (pp.normalPoints)
-            std::cerr << "  normal points: " << post.normalPoints.size() << " (bins of "
-                      << core::formatDouble(post.binLengthS, 4) << " s, at least " << post.minPointsPerBin << " points"
-                      << (post.binsTooSmall ? ", " + std::to_string(post.binsTooSmall) + " bins too small" : "") << ")\n";
-        else
-            std::cerr << "  " << npNote << "\n";
+    if (!slr::writeScreenCsv(outs.stagingPath(out), pass, r.screen, r.accepted, r.postOk ? &r.post : nullptr, &err))
+        return fail(cmd, named(out, outs.unstaged(err)));
+    if (!crdOut.empty() && !slr::writeScreenedCrd(outs.stagingPath(crdOut), pass, r.accepted, &err))
+        return fail(cmd, named(crdOut, outs.unstaged(err)));
+    if (!nptOut.empty() && !slr::writeNormalPointCrd(outs.stagingPath(nptOut), pass, r.post.normalPoints, &err))
+        return fail(cmd, named(nptOut, outs.unstaged(err)));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
+    if (!quiet) {
+        printSummary(what, pass, settings, r);
+        std::cerr << "  -> " << out << (crdOut.empty() ? "" : ", " + crdOut) << (nptOut.empty() ? "" : ", " + nptOut) << "\n";
     }
-    // Against the station's own filter flags, when the file carries them.
-    long long f1 = 0, f2 = 0;
-    for (int f : pass.stationFlag) {
-        f1 += f == 1;
-        f2 += f == 2;
-    }
-    if (f2 > 0 && f1 + f2 == static_cast<long long>(pass.stationFlag.size())) {
-        long long tp = 0, fp = 0, keptTp = 0, keptFp = 0;
-        for (size_t i = 0; i < accepted.size(); ++i) {
-            const bool sig = pass.stationFlag[i] == 2;
-            tp += accepted[i] && sig;
-            fp += accepted[i] && !sig;
-            if (postOk) {
-                keptTp += post.kept[i] && sig;
-                keptFp += post.kept[i] && !sig;
-            }
-        }
-        auto f4 = [](double v) { return core::formatFixed(v, 4); };
-        std::cerr << "  against the station's filter flags (" << f2 << " data, " << f1 << " noise): screening precision "
-                  << f4(tp + fp ? double(tp) / double(tp + fp) : 0) << ", recall " << f4(double(tp) / double(f2));
-        if (postOk)
-            std::cerr << "; after post-fit precision " << f4(keptTp + keptFp ? double(keptTp) / double(keptTp + keptFp) : 0)
-                      << ", recall " << f4(double(keptTp) / double(f2));
-        std::cerr << "\n";
-    } else if (f2 > 0) {
-        std::cerr << "  the station's filter flags are incomplete (some 0 = unknown): no comparison\n";
-    }
-    std::cerr << "  -> " << out << (crdOut.empty() ? "" : ", " + crdOut) << (nptOut.empty() ? "" : ", " + nptOut) << "\n";
     return kOk;
 }
 

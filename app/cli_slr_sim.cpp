@@ -28,9 +28,9 @@ namespace {
 
 // Shortest round-trip text of a double.
 void putDouble(std::string& out, double v) {
-    char buf[32];
+    char buf[32];  // the shortest round-trip form of any double takes at most 24 characters
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    out.append(buf, r.ptr);
+    if (r.ec == std::errc()) out.append(buf, r.ptr);
 }
 
 // Writes a simulated pass as CSV, atomically. Columns: epoch_s,oc_s,truth[,track_oc_s,tof_s].
@@ -67,19 +67,26 @@ bool writePassCsv(const std::string& path, const sim::SlrSimPass& pass, bool ful
 }
 
 const char* kSimUsage =
-    "usage: laserwb-cli simulate slr [--kind khz|conventional|diffuse] [--points N] [--duration S]\n"
-    "                                [--signal-fraction F] [--day|--night] --seed S OUT.csv\n"
+    "usage: laserwb-cli simulate slr [--kind khz|conventional|diffuse|leo] [--points N] [--duration S]\n"
+    "                                [--signal-fraction F] [--day|--night] [--drift NS_PER_S]\n"
+    "                                [--curvature NS_PER_S2] [--gaps LIST] --seed S OUT.csv\n"
     "Simulates one SLR pass with exact truth: O-C = b + (2/c)·rho'(t)·tau (range bias b, time bias tau,\n"
     "range rate of a straight-line flyby) + jitter, and noise uniform over the range gate.\n"
     "OUT.csv columns: epoch_s (s of day), oc_s (two-way O-C, s), truth (1 signal, 0 noise),\n"
     "track_oc_s (the exact model O-C at that epoch), tof_s (observed two-way time of flight, s).\n"
     "Readers of epoch_s,oc_s ignore the other columns. A summary of the pass goes to stderr.\n"
     "  --kind K              khz (2 kHz single-photon, LEO; default), conventional (10 Hz, LAGEOS),\n"
-    "                        diffuse (20 Hz debris ranging)\n"
+    "                        diffuse (20 Hz debris ranging), leo (10 Hz multi-photon, Jason-class\n"
+    "                        satellite, low pass, noisy station)\n"
     "  --points N            exactly N points in the pass (the return probability follows)\n"
     "  --duration S          pass length in seconds (default: the kind's, 600 / 2400 / 300)\n"
     "  --signal-fraction F   signal / all points, 0.001..1 (default: from the day or night noise rate)\n"
     "  --day, --night        noise rate of a day or night pass (default night)\n"
+    "  --drift D             extra O-C drift of D ns per s about the pass middle (a steep track)\n"
+    "  --curvature Q         extra O-C curvature: Q ns per s^2 (x^2 about the pass middle)\n"
+    "  --gaps LIST           gaps in the track, comma-separated START:LENGTH[:SHIFT_NS][:nodata]\n"
+    "                        (s from the first shot; no signal inside, noise goes on unless nodata;\n"
+    "                        SHIFT_NS moves the track from the end of the gap on)\n"
     "  --seed S              random seed; the same seed gives the same file\n";
 
 }  // namespace
@@ -87,7 +94,8 @@ const char* kSimUsage =
 int cmdSimulateSlr(int argc, char** argv) {
     const std::string cmd = "simulate slr";
     Args a(cmd, kSimUsage);
-    for (const char* o : {"--kind", "--points", "--duration", "--signal-fraction", "--seed"}) a.option(o, true);
+    for (const char* o : {"--kind", "--points", "--duration", "--signal-fraction", "--seed", "--drift", "--curvature", "--gaps"})
+        a.option(o, true);
     for (const char* o : {"--day", "--night", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
@@ -96,14 +104,18 @@ int cmdSimulateSlr(int argc, char** argv) {
     }
     sim::SlrKind kind = sim::SlrKind::Khz;
     if (a.has("--kind") && !sim::parseSlrKind(a.value("--kind"), &kind))
-        return fail(cmd, "--kind must be khz, conventional or diffuse, not \"" + a.value("--kind") + "\"", kUsage);
+        return fail(cmd, "--kind must be khz, conventional, diffuse or leo, not \"" + a.value("--kind") + "\"", kUsage);
     sim::SlrSimParams p = sim::slrSimPreset(kind);
     std::string err;
     long long points = 0, seed = 0;
-    double duration = p.durationS, fraction = 0;
+    double duration = p.durationS, fraction = 0, driftNs = 0, curvNs = 0;
     if (!a.getInt("--points", 1, 50000000, &points, &err) || !a.getDouble("--duration", 1, 172800, &duration, &err) ||
-        !a.getDouble("--signal-fraction", 0.001, 1, &fraction, &err) || !a.getInt("--seed", 0, (1LL << 62), &seed, &err))
+        !a.getDouble("--signal-fraction", 0.001, 1, &fraction, &err) || !a.getInt("--seed", 0, (1LL << 62), &seed, &err) ||
+        !a.getDouble("--drift", -1e6, 1e6, &driftNs, &err) || !a.getDouble("--curvature", -1e6, 1e6, &curvNs, &err))
         return fail(cmd, err, kUsage);
+    if (a.has("--gaps") && !sim::parseSlrGaps(a.value("--gaps"), &p.gaps, &err)) return fail(cmd, "--gaps: " + err, kUsage);
+    p.driftSPerS = driftNs * 1e-9;
+    p.driftSPerS2 = curvNs * 1e-9;
     if (a.has("--day") && a.has("--night")) return fail(cmd, "give --day or --night, not both", kUsage);
     if (!a.has("--seed")) return fail(cmd, "--seed is required (the same seed gives the same pass)", kUsage);
     if (a.positional().size() != 1) return fail(cmd, "give exactly one output file OUT.csv", kUsage);
@@ -216,7 +228,7 @@ int cmdBenchSlr(int argc, char** argv) {
     double fraction = 0.1;
     sim::SlrKind kind = sim::SlrKind::Khz;
     if (a.has("--kind") && !sim::parseSlrKind(a.value("--kind"), &kind))
-        return fail(cmd, "--kind must be khz, conventional or diffuse", kUsage);
+        return fail(cmd, "--kind must be khz, conventional, diffuse or leo", kUsage);
     if (!a.getInt("--points", 1000, 20000000, &points, &err) || !a.getInt("--seed", 0, 1LL << 62, &seed, &err) ||
         !a.getDouble("--signal-fraction", 0.001, 1, &fraction, &err))
         return fail(cmd, err, kUsage);

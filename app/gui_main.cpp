@@ -1,6 +1,8 @@
 // laserwb: the workbench. With no arguments it opens the built-in demo.
 //   laserwb [SESSION]
 //   laserwb --screenshot OUT.png [--workspace footprint|slr] [--size WxH] [SESSION]
+#include <cstdio>
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
@@ -9,10 +11,22 @@
 #include "ui/main_window.hpp"
 
 int main(int argc, char** argv) {
-    // --screenshot renders without a display.
-    for (int i = 1; i < argc; ++i)
-        if (QByteArray(argv[i]) == "--screenshot" && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-            qputenv("QT_QPA_PLATFORM", "offscreen");
+    // --screenshot renders without a display, and --help / --version need none.
+    bool offscreen = false;
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray a(argv[i]);
+        offscreen |= a == "--screenshot" || a == "--help" || a == "-h" || a == "--help-all" || a == "-?" ||
+                     a == "--version" || a == "-v";
+    }
+    if (offscreen && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    // Without a display Qt would abort (exit 134); say what to do instead.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") && qEnvironmentVariableIsEmpty("DISPLAY") &&
+        qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
+        fprintf(stderr,
+                "laserwb: no display (neither DISPLAY nor WAYLAND_DISPLAY is set). Run it in a desktop session,\n"
+                "use 'laserwb --screenshot OUT.png' to render the window offscreen, or laserwb-cli for batch work.\n");
+        return 1;
+    }
     QApplication app(argc, argv);
     QApplication::setApplicationName("laserwb");
     QApplication::setOrganizationName("LaserWorkbench");

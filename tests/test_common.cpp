@@ -13,25 +13,26 @@ class TestCommon : public QObject {
     Q_OBJECT
 private slots:
     void jsonRoundTrip() {
-        Json j = Json::object();
-        j.set("name", "wu2021");
-        j.set("ratio", 1.25);
-        j.set("tiny", 1e-5);
-        j.set("flag", true);
-        Json arr = Json::array();
-        arr.push(1.0);
-        arr.push(-30);
-        j.set("range", arr);
-        j.set("none", Json());
-        const JsonParseResult back = parseJson(j.dump(), "mem");
+        const Json j = {{"name", "wu2021"}, {"ratio", 1.25}, {"tiny", 1e-5}, {"flag", true},
+                        {"range", {1.0, -30}},   {"none", nullptr}, {"nan", NAN}, {"tenth", 0.1}};
+        const std::string text = dumpJson(j);
+        const JsonParseResult back = parseJson(text, "mem");
         QVERIFY2(back.ok, back.error.c_str());
-        QCOMPARE(back.value.find("name")->asString(), std::string("wu2021"));
-        QCOMPARE(back.value.find("ratio")->asNumber(), 1.25);
-        QCOMPARE(back.value.find("tiny")->asNumber(), 1e-5);  // shortest text still round-trips exactly
-        QVERIFY(back.value.find("flag")->asBool());
-        QCOMPARE(back.value.find("range")->items().size(), size_t(2));
-        QVERIFY(back.value.find("none")->isNull());
-        QVERIFY(j.dump().find("0.10000000000000001") == std::string::npos);
+        QCOMPARE(back.value["name"].get<std::string>(), std::string("wu2021"));
+        QCOMPARE(back.value["ratio"].get<double>(), 1.25);
+        QCOMPARE(back.value["tiny"].get<double>(), 1e-5);  // shortest text still round-trips exactly
+        QVERIFY(back.value["flag"].get<bool>());
+        QCOMPARE(back.value["range"].size(), size_t(2));
+        QVERIFY(back.value["none"].is_null());
+        QVERIFY(back.value["nan"].is_null());  // JSON has no NaN: written as null
+        QVERIFY(text.find("0.10000000000000001") == std::string::npos);
+        QCOMPARE(back.value.begin().key(), std::string("name"));  // key order kept
+        // Member positions for messages about values.
+        const JsonParseResult doc = parseJson("{\n  \"a\": {\"b\": [1,\n {\"c\": 2}]}\n}", "f.json");
+        QVERIFY(doc.ok);
+        QCOMPARE(doc.where({"a", "b", "[1]", "c"}), std::string("f.json:3:3: "));
+        QCOMPARE(doc.where({"a"}), std::string("f.json:2:3: "));
+        QCOMPARE(doc.where({"zz"}), std::string("f.json: "));
     }
 
     void jsonErrorsCarryLineAndColumn_data() {
@@ -40,7 +41,9 @@ private slots:
         QTest::newRow("nan literal") << "{\n  \"a\": NaN\n}" << "cfg:2:8";
         QTest::newRow("trailing comma") << "{\"a\": 1,}" << "cfg:1:9";
         QTest::newRow("unclosed") << "{\"a\": [1, 2" << "cfg:1:12";
-        QTest::newRow("duplicate key") << "{\"a\": 1, \"a\": 2}" << "cfg:1:";
+        QTest::newRow("duplicate key") << "{\"a\": 1, \"a\": 2}" << "cfg:1:2";
+        QTest::newRow("nested duplicate") << "{\"x\": [{\"a\": 1},\n {\"b\": 1, \"b\": 2}]}" << "cfg:2:3";
+        QTest::newRow("too deep") << QString(100, '[') + QString(100, ']') << "cfg:";
         QTest::newRow("garbage after") << "{} x" << "cfg:1:4";
         QTest::newRow("empty") << "" << "cfg:1:1";
         QTest::newRow("huge number") << "{\"a\": 1e999}" << "cfg:1:7";

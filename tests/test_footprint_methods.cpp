@@ -126,6 +126,8 @@ private slots:
         sim::EvalParams ep;
         ep.countPerScene = 150;
         ep.seed = 101;
+        // The synthetic ground these scales were set on; photo ground: test_footprint_photo.
+        ep.sim.ground = sim::GroundSource::Synthetic;
         sim::Scene s;
         QVERIFY(sim::parseScene(scene.toStdString(), &s));
         ep.scenes = {s};

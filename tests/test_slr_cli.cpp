@@ -337,11 +337,8 @@ private slots:
               s.recall);
         QVERIFY(s.onTrackFlag1 <= 5);  // "a few" (README); more would mean the band is wrong
         QVERIFY2(s.precision >= 0.95, qPrintable(QString("precision %1").arg(s.precision)));
-        if (file.startsWith("7080_JASON1"))
-            QEXPECT_FAIL("JASON1", "known: the track's last segment (13 returns 100 s after the rest, on a different "
-                                   "slope of the fitted-trend O-C) and 10 returns at the start of the arc are not found; "
-                                   "recall 0.59 (docs/slr-detection.md)",
-                         Continue);
+        // JASON1: the two returns 100 s before the arc (station NP 1, 2 ranges) cannot be told from
+        // noise without a prediction (docs/slr-detection.md); the rest of the track is found.
         QVERIFY2(s.recall >= 0.95, qPrintable(QString("recall %1").arg(s.recall)));
     }
 
@@ -395,11 +392,16 @@ private slots:
         QTest::newRow("no input") << QStringList{"-o", "@out"} << "no input file";
         QTest::newRow("two inputs") << QStringList{crd, crd, "-o", "@out"} << "exactly one input";
         QTest::newRow("unknown option") << QStringList{crd, "--bogus", "-o", "@out"} << "unknown option --bogus";
-        QTest::newRow("connectivity 5") << QStringList{crd, "--connectivity", "5", "-o", "@out"} << "--connectivity must be 4 or 8";
-        QTest::newRow("mag-t 1e30") << QStringList{crd, "--mag-t", "1e30", "-o", "@out"} << "--mag-t must be a number";
+        QTest::newRow("connectivity 5") << QStringList{crd, "--connectivity", "5", "-o", "@out"}
+                                        << "--connectivity 5: slr: screen.connectivity must be 4, 8 or 0 (auto)";
+        QTest::newRow("mag-t 1e30") << QStringList{crd, "--mag-t", "1e30", "-o", "@out"}
+                                    << "--mag-t 1e30: slr.screen.mag_t = 1e+30: must be in (0, 1e+15] (0 = auto)";
+        QTest::newRow("cos-c 1.2 via --set") << QStringList{crd, "--set", "screen.cosine_c=1.2", "-o", "@out"}
+                                             << "slr.screen.cosine_c = 1.2: must be in [0.5, 1)";
+        QTest::newRow("unknown --set key") << QStringList{crd, "--set", "screen.cosine=0.9", "-o", "@out"} << "unknown parameter";
         QTest::newRow("mag-oc text") << QStringList{crd, "--mag-oc", "big", "-o", "@out"} << "--mag-oc";
         QTest::newRow("cos-c 1") << QStringList{crd, "--cos-c", "1", "-o", "@out"} << "--cos-c";
-        QTest::newRow("area 0") << QStringList{crd, "--area-min", "0", "-o", "@out"} << "--area-min";
+        QTest::newRow("area -1") << QStringList{crd, "--area-min", "-1", "-o", "@out"} << "--area-min";
         QTest::newRow("reject 0.5") << QStringList{crd, "--reject", "0.5", "-o", "@out"} << "--reject";
         QTest::newRow("pass 0") << QStringList{crd, "--pass", "0", "-o", "@out"} << "--pass";
         QTest::newRow("cpf alone") << QStringList{crd, "--cpf", "x.hts", "-o", "@out"} << "--cpf and --stations go together";
@@ -494,6 +496,184 @@ private slots:
         QVERIFY(!QFile::exists(p("first.csv")));
     }
 
+    // ---- issue 8 -------------------------------------------------------------------------------
+    /// Item 2 at its cause: a value std::to_chars cannot fit is refused, never written as the
+    /// buffer's old bytes (the reader refuses such epochs now; a pass built in memory can still hold one).
+    void screenCsvRefusesWhatDoesNotFit() {
+        PassData pass;
+        pass.t = {0.0, 1.0, 1e300};
+        pass.oc = {1e-9, 2e-9, 3e-9};
+        ScreenResult screen;
+        screen.ok = true;
+        screen.pointClass.assign(3, PointClass::Signal);
+        const std::string out = p("nofit.csv").toStdString();
+        std::string err;
+        QVERIFY(!writeScreenCsv(out, pass, screen, std::vector<uint8_t>(3, 1), nullptr, &err));
+        QVERIFY2(err.find("point 2") != std::string::npos && err.find("too large") != std::string::npos, err.c_str());
+        QVERIFY(!QFile::exists(p("nofit.csv")));
+        noStrayFiles();
+        pass.t[2] = 2.0;  // the same pass with a sound epoch is written
+        QVERIFY2(writeScreenCsv(out, pass, screen, std::vector<uint8_t>(3, 1), nullptr, &err), err.c_str());
+        QVERIFY(lwbtest::readAll(p("nofit.csv")).contains("\n2,2.000000000,3.000000e-09,signal,"));
+    }
+
+    /// Item 9: CRD told by its content, not its name.
+    void crdRecognisedByContent_data() {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QByteArray>("text");  // "-" for no file
+        QTest::addColumn<bool>("crd");
+        const QByteArray crd = "H1 CRD 2 2021 9 1 21\nH2 GLSL 1824 81 1 4 EUROLAS\n";
+        QTest::newRow("v2C ending") << "pass.v2C" << crd << true;
+        QTest::newRow("no ending, lower case") << "pass" << crd.toLower() << true;
+        QTest::newRow("comments and blank lines first") << "pass.txt" << "\n00 a comment\n   \n" + crd << true;
+        QTest::newRow("CRLF and a BOM") << "pass.dat" << "\xEF\xBB\xBFh1 crd 1 2007 12 20 2\r\n" + crd << true;
+        QTest::newRow("a CPF (its reader names the mistake)") << "pred.v2C" << QByteArray("H1 CPF 2 HTS 2012\n") << true;
+        QTest::newRow("csv") << "oc.csv" << QByteArray("epoch_s,oc_s\n1,2\n") << false;
+        QTest::newRow("csv without ending") << "oc" << QByteArray("epoch_s,oc_s\n1,2\n") << false;
+        QTest::newRow("csv called .frd") << "oc.frd" << QByteArray("# O-C\nepoch_s,oc_s\n1,2\n") << false;
+        QTest::newRow("garbage called .frd") << "bin.frd" << QByteArray("\x7f" "ELF garbage\n") << true;
+        QTest::newRow("garbage called .csv") << "bin.csv" << QByteArray("\x7f" "ELF garbage\n") << false;
+        QTest::newRow("missing .npt") << "gone.npt" << QByteArray("-") << true;
+        QTest::newRow("missing .csv") << "gone.csv" << QByteArray("-") << false;
+    }
+    void crdRecognisedByContent() {
+        QFETCH(QString, name);
+        QFETCH(QByteArray, text);
+        QFETCH(bool, crd);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(name);
+        if (text != "-") QVERIFY(lwbtest::writeText(path, text));
+        QCOMPARE(isCrdFile(path.toStdString()), crd);
+    }
+    void crdWithAnyNameThroughCli() {
+        const QString beacon = slr("7080_Beacon-C_crd_071220_1715_0.frd");
+        if (!QFile::exists(beacon)) QSKIP("shared SLR data absent");
+        const auto src = readCrd(beacon.toStdString());
+        QVERIFY2(src.ok, src.error.c_str());
+        for (const QString name : {"beacon.v2C", "beacon"}) {
+            QVERIFY(lwbtest::writeText(p(name), lwbtest::readAll(beacon)));
+            const QString out = p(name + "-out.csv"), crdOut = p(name + "-out.frd");
+            const auto r = runCli({"slr", p(name), "-o", out, "--crd-out", crdOut}, kTimeoutMs);
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            std::vector<Row> rows;
+            QString why;
+            QVERIFY2(readRows(out, &rows, &why), qPrintable(why));
+            QCOMPARE(rows.size(), src.file.passes.front().ranges.size());
+            QVERIFY(readCrd(crdOut.toStdString()).ok);
+        }
+    }
+
+    /// Item 9: a run that fails says what in the file is wrong (file:line), not only "no full-rate pass".
+    void readerProblemsAreNamed_data() {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<QStringList>("messages");
+        const QByteArray head = "h1 CRD 2 2018 2 1 17\nh2 CHAL 9998 19 01 4 WPLTN\nh3 lageos2 9207002 5986 22195 0 1 1\n";
+        const QByteArray np = head + "h4 1 2018 2 1 15 14 58 2018 2 1 15 48 57 0 0 0 0 1 0 2 0\nc0 0 532.000 std\n"
+                              "11 54927.620161400002 0.044106029140 std 2 120.0 1457 70.0 0.319 2.496 -12.0 1.2 0 5.7\n"
+                              "11 56209.259001400002   corrupted    std 2 120.0 1515 72.1 0.227 2.222 -14.0 1.3 0 5.7\n"
+                              "11 56836.982001400000 0.049325702229 std 2 120.0 1140 68.3 0.418 2.467 -16.0 0.9 0 5.7\n"
+                              "h8\nh9\n";
+        QTest::newRow("normal points only, one corrupted")
+            << "np.v2C" << np
+            << QStringList{"no full-rate pass", "1 normal-point pass", "np.v2C:7: type 11 record skipped: field 2 (time of flight)"};
+        QByteArray fr = head + "h4 0 2018 2 1 15 14 58 2018 2 1 15 48 57 0 0 0 0 1 0 9 0\nc0 0 532.000 std\n"
+                               "10 54927.6 0.044106029140 std 2 2 0 0 0 na\n10 54928.6 corrupted std 2 2 0 0 0 na\nh8\n";
+        QTest::newRow("range type 9, a corrupted type 10")
+            << "fr.v2C" << fr
+            << QStringList{"holds 1 full-rate records", "fr.v2C:4: H4 field 20 (range type indicator) is 9",
+                           "fr.v2C:7: type 10 record skipped: field 2 (time of flight)"};
+        QTest::newRow("H1 names CPF") << "cpf.frd" << QByteArray(np).replace("h1 CRD", "H1 CPF")
+                                      << QStringList{"cpf.frd:1: H1 names the format \"CPF\", not \"CRD\""};
+        QTest::newRow("a bad block does not hide the good one")
+            << "blocks.frd" << QByteArray(np).replace("h8\nh9\n", "h8\nh4 0 2018 2 1 -1 -1 -1 -1 -1 -1 -1 -1 -1 0 0 0 0 1 0 2 0\nh9\n")
+            << QStringList{"no full-rate pass", "pass 2 cannot be used: ", "blocks.frd:10: H4 start date-time"};
+    }
+    void readerProblemsAreNamed() {
+        QFETCH(QString, name);
+        QFETCH(QByteArray, text);
+        QFETCH(QStringList, messages);
+        QVERIFY(lwbtest::writeText(p(name), text));
+        const auto r = runCli({"slr", p(name), "-o", p("named.csv")}, kTimeoutMs);
+        QVERIFY2(r.exitCode == 1, qPrintable(r.err));
+        for (const QString& m : messages) QVERIFY2(r.err.contains(m), qPrintable("no \"" + m + "\" in:\n" + r.err));
+        QVERIFY(!QFile::exists(p("named.csv")));
+    }
+
+    /// Item 9: the prediction's problems named: a damaged position record, a missing 99 end
+    /// record, a prediction of another satellite.
+    void cpfProblemsAreNamed_data() {
+        QTest::addColumn<QString>("edit");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("two records, one corrupted") << "corrupt" << 1 << "cpf.hts:5: type 10 record skipped: X, Y, Z";
+        QTest::newRow("no 99 end record") << "no99" << 0 << "the file ends without the 99 end-of-ephemeris record";
+        QTest::newRow("another satellite") << "lageos2" << 1 << "cpf.hts: the prediction is for another satellite";
+        QTest::newRow("NORAD number differs") << "norad" << 0 << "the NORAD number of the prediction and the pass differ";
+        QTest::newRow("no H2 to compare") << "noH2" << 0 << "cannot check that the prediction is for the pass's satellite";
+    }
+    void cpfProblemsAreNamed() {
+        QFETCH(QString, edit);
+        QFETCH(int, exitCode);
+        QFETCH(QString, message);
+        const QString crd = slr("blits_201206.frd"), cpf = slr("blits_cpf_120626_6801.hts"),
+                      snx = slr("SLRF2014_POS+VEL_2030.0_200428.snx");
+        if (!QFile::exists(crd) || !QFile::exists(cpf) || !QFile::exists(snx)) QSKIP("shared SLR data absent");
+        QList<QByteArray> lines = lwbtest::readAll(cpf).split('\n');
+        while (!lines.isEmpty() && lines.back().trimmed().isEmpty()) lines.removeLast();
+        QVERIFY(lines[1].startsWith("H2  0904907 5558    35871 "));
+        if (edit == "corrupt") {  // H1 H2 H9, two records (the second damaged), 99
+            lines = {lines[0], lines[1], lines[2], lines[3], "10 0 56104    240.00000  0   corrupted  1.0  2.0", "99"};
+        } else if (edit == "no99") {
+            QVERIFY(lines.back().startsWith("99"));
+            lines.removeLast();
+        } else if (edit == "lageos2") {
+            lines[1].replace("0904907 5558    35871", "9207002 5986    22195");
+        } else if (edit == "norad") {
+            lines[1].replace("0904907 5558    35871", "0904907 5558    35872");
+        } else if (edit == "noH2") {
+            lines.removeAt(1);
+        }
+        QVERIFY(lwbtest::writeText(p("cpf.hts"), lines.join('\n') + "\n"));
+        // Pass 41 of the month (28 June 2012, 08:29) lies within the CPF's 26 June - 1 July span.
+        const QString out = p("cpf-out.csv");
+        QFile::remove(out);
+        const auto r = runCli({"slr", crd, "--pass", "41", "--cpf", p("cpf.hts"), "--stations", snx, "-o", out}, kTimeoutMs);
+        QVERIFY2(r.exitCode == exitCode, qPrintable(r.err));
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QCOMPARE(QFile::exists(out), exitCode == 0);
+    }
+
+    /// Item 8 at the core: a pass with a damaged record is read (the GUI shows it) but no writer
+    /// takes it: its points are incomplete and the damaged line would be written back.
+    void damagedPassIsNotWritten() {
+        const QString beacon = slr("7080_Beacon-C_crd_071220_1715_0.frd");
+        if (!QFile::exists(beacon)) QSKIP("shared SLR data absent");
+        QList<QByteArray> lines = lwbtest::readAll(beacon).split('\n');
+        lines[19] = "10 62171.73";  // line 20 cut short
+        QVERIFY(lwbtest::writeText(p("cut.frd"), lines.join('\n')));
+        const PassInputResult in = loadPass(p("cut.frd").toStdString(), -1, {});
+        QVERIFY2(in.ok, in.error.c_str());
+        QVERIFY2(QString::fromStdString(in.pass.damaged).startsWith(p("cut.frd") + ":20: type 10 record skipped"),
+                 in.pass.damaged.c_str());
+        const size_t n = in.pass.t.size();
+        ScreenResult screen;
+        screen.ok = true;
+        screen.pointClass.assign(n, PointClass::Signal);
+        const std::vector<uint8_t> accepted(n, 1);
+        std::string err;
+        QVERIFY(!writeScreenCsv(p("cut.csv").toStdString(), in.pass, screen, accepted, nullptr, &err));
+        QCOMPARE(err, in.pass.damaged);
+        QVERIFY(!writeScreenedCrd(p("cut-out.frd").toStdString(), in.pass, accepted, &err));
+        QCOMPARE(err, in.pass.damaged);
+        NormalPoint np;
+        np.epochS = in.pass.t.front();
+        np.tofS = in.pass.tof.front();
+        QVERIFY(!writeNormalPointCrd(p("cut.npt").toStdString(), in.pass, {np}, &err));
+        QCOMPARE(err, in.pass.damaged);
+        for (const char* f : {"cut.csv", "cut-out.frd", "cut.npt"}) QVERIFY(!QFile::exists(p(f)));
+    }
+
     void helpAndDispatch() {
         auto r = runCli({"slr", "--help"});
         QCOMPARE(r.exitCode, 0);
@@ -532,6 +712,15 @@ private slots:
                                     << "nan.csv:3:";
         QTest::newRow("two csv rows") << "two.csv" << QByteArray("epoch_s,oc_s\n1,1e-9\n2,2e-9\n") << QStringList{}
                                       << "at least 3";
+        // Issue 8 item 2: an epoch of 1e300 once went through and the CSV got 64 bytes of stack.
+        QTest::newRow("epoch 1e300") << "e300.csv" << QByteArray("epoch_s,oc_s\n1,1e-9\n1e300,2e-9\n3,3e-9\n4,4e-9\n")
+                                     << QStringList{} << "e300.csv:3: epoch_s 1e300 is not a plausible epoch";
+        QTest::newRow("epoch 1e60") << "e60.csv" << QByteArray("epoch_s,oc_s\n1,1e-9\n2,2e-9\n3,3e-9\n-1e60,4e-9\n")
+                                    << QStringList{} << "e60.csv:5: epoch_s -1e60 is not a plausible epoch";
+        QTest::newRow("O-C 1e300") << "oc300.csv" << QByteArray("epoch_s,oc_s\n1,1e-9\n2,1e300\n3,3e-9\n4,4e-9\n")
+                                   << QStringList{} << "oc300.csv:3: oc_s 1e300 is not a plausible O-C";
+        QTest::newRow("O-C in ns") << "ns.csv" << QByteArray("epoch_s,oc_s\n1,1.5\n2,12.5\n3,3.5\n4,4.5\n")
+                                   << QStringList{} << "ns.csv:3: oc_s 12.5 is not a plausible O-C";
         QTest::newRow("csv without oc") << "hdr.csv" << QByteArray("epoch_s,range\n1,2\n") << QStringList{} << "hdr.csv:1:";
         QTest::newRow("binary crd") << "bin.frd" << QByteArray("\x00\x01\x02\x03garbage\x00", 12) << QStringList{} << "bin.frd";
         QTest::newRow("missing file") << "nothere.frd" << QByteArray() << QStringList{} << "nothere.frd";

@@ -98,6 +98,17 @@ const QByteArray kGoodCrd =
     "H8\n"                                                    // 9
     "H9\n";                                                   // 10
 
+/// True when the read gave exactly one warning, starting with `prefix` and holding every part.
+bool oneWarning(const CrdReadResult& r, const QString& prefix, const QStringList& parts, QString* why) {
+    *why = QString::fromStdString(joined(r.warnings));
+    if (r.warnings.size() != 1) return false;
+    const QString w = QString::fromStdString(r.warnings[0]);
+    if (!w.startsWith(prefix)) return false;
+    for (const QString& part : parts)
+        if (!w.contains(part)) return false;
+    return true;
+}
+
 QByteArray replaceLine(const QByteArray& text, int line, const QByteArray& with) {
     QList<QByteArray> lines = text.split('\n');
     lines[line - 1] = with;
@@ -527,10 +538,8 @@ private slots:
         const CrdReadResult r = readText(dir, "bad.fr2", replaceLine(kGoodCrd, 6, line6), &path);
         QVERIFY2(r.ok, r.error.c_str());
         QCOMPARE(r.file.passes.front().ranges.size(), size_t(2));  // the two sound records are kept
-        QCOMPARE(r.warnings.size(), size_t(1));
-        const QString w = QString::fromStdString(r.warnings[0]);
-        QVERIFY2(w.startsWith(path + ":6: "), r.warnings[0].c_str());
-        QVERIFY2(w.contains(what), r.warnings[0].c_str());
+        QString why;
+        QVERIFY2(oneWarning(r, path + ":6: ", {what}, &why), qPrintable(why));
         // The bad line is still written back: nothing is lost.
         QCOMPARE(QByteArray::fromStdString(formatCrd(r.file)), replaceLine(kGoodCrd, 6, line6));
     }
@@ -628,6 +637,142 @@ private slots:
         QVERIFY2(makeNormalPointPass(r.file.passes[1], {n}, &np, &err), err.c_str());
         QCOMPARE(np.records.front().id, std::string("h1"));
         QVERIFY(!np.inheritsHeaders);
+    }
+
+    // ---- issue 8, item 9: other projects' fixtures (written here from their description) --------
+
+    /// A last block whose H4 gives the end date-time as unknown (-1 in all six fields): read with
+    /// a note, the end unknown; a bare H4 with no record, or a bad H4, costs only its own block.
+    void unusableBlockKeepsTheOtherPasses_data() {
+        QTest::addColumn<QByteArray>("lastBlock");
+        QTest::addColumn<bool>("usable");     // the last block is read as a pass
+        QTest::addColumn<QString>("what");    // in the warning at line 11 (the last H4)
+        QTest::newRow("end unknown, with records")
+            << QByteArray("H4 0 2021 9 1 21 46 0 -1 -1 -1 -1 -1 -1 0 0 0 0 1 0 2 0\n"
+                          "10 78360.4 0.0131 sys1 2 2 0 0 0 na\nH8\n")
+            << true << "end date-time is not given";
+        QTest::newRow("end unknown (na), with records")
+            << QByteArray("h4 0 2021 9 1 21 46 0 na na na na na na 0 0 0 0 1 0 2 0\n"
+                          "10 78360.4 0.0131 sys1 2 2 0 0 0 na\nh8\n")
+            << true << "end date-time is not given";
+        QTest::newRow("bare H4, end unknown, no record")
+            << QByteArray("H4 1 2021 9 1 21 46 0 -1 -1 -1 -1 -1 -1 0 0 0 0 1 0 2 0\n") << false
+            << "no readable range record";
+        QTest::newRow("start unknown") << QByteArray("H4 0 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 0 0 0 0 1 0 2 0\n"
+                                                     "10 78360.4 0.0131 sys1 2 2 0 0 0 na\nH8\n")
+                                       << false << "start date-time is not a valid date";
+        QTest::newRow("end half unknown") << QByteArray("H4 0 2021 9 1 21 46 0 2021 -1 -1 -1 -1 -1 0 0 0 0 1 0 2 0\n"
+                                                        "10 78360.4 0.0131 sys1 2 2 0 0 0 na\nH8\n")
+                                          << false << "end date-time is not a valid date";
+    }
+    void unusableBlockKeepsTheOtherPasses() {
+        QFETCH(QByteArray, lastBlock);
+        QFETCH(bool, usable);
+        QFETCH(QString, what);
+        // Two sound passes (lines 1-9, the second inheriting H1-H3), then the block at line 11.
+        QByteArray text = kGoodCrd;
+        text.chop(3);  // no H9 yet
+        text += "H4 0 2021 9 1 20 50 0 2021 9 1 20 51 0 0 0 0 0 1 0 2 1\n"  // 9
+                "10 75000.5 0.0131 sys1 2 2 0 0 0 na\n"                     // 10
+                + lastBlock + "H9\n";
+        text.replace("H8\nH4 0 2021 9 1 20 50", "H4 0 2021 9 1 20 50");  // the first pass ends with the new H4
+        QTemporaryDir dir;
+        QString path;
+        const CrdReadResult r = readText(dir, "blocks.crd", text, &path);
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.file.passes.size(), size_t(3));
+        QCOMPARE(r.file.passes[0].ranges.size(), size_t(3));
+        QCOMPARE(r.file.passes[1].ranges.size(), size_t(1));
+        QVERIFY(r.file.passes[0].problem.empty() && r.file.passes[1].problem.empty());
+        const CrdPass& last = r.file.passes[2];
+        QCOMPARE(last.problem.empty(), usable);
+        QCOMPARE(last.ranges.size(), size_t(usable ? 1 : 0));
+        if (usable) QCOMPARE(last.session.endYear, kCrdAbsent);
+        // The message about the block names its H4 line (and, when skipped, the pass).
+        int about = 0;
+        for (const auto& w : r.warnings)
+            about += w.rfind(lwbtest::str(path) + ":11: ", 0) == 0 && QString::fromStdString(w).contains(what) &&
+                     (usable || w.find("pass 3 skipped") != std::string::npos);
+        QVERIFY2(about == 1, joined(r.warnings).c_str());
+        // Nothing is lost on writing back, the unusable block included.
+        QCOMPARE(QByteArray::fromStdString(formatCrd(r.file)), text);
+        // A file whose every block is unusable is still refused, naming the first one.
+        const CrdReadResult alone = readText(dir, "alone.crd", "H1 CRD 2 2021 9 1 21\nH2 GLSL 1824 81 1 4 EUROLAS\n"
+                                                               "H3 hy2c 2006601 2209 46469 0 1 1\n" + lastBlock);
+        if (!usable) {
+            QVERIFY(!alone.ok);
+            QVERIFY2(alone.error.find(":4: ") != std::string::npos && QString::fromStdString(alone.error).contains(what),
+                     alone.error.c_str());
+        }
+    }
+
+    /// H4 flags outside their ranges: a warning naming the field, read as unknown.
+    void h4FlagsOutOfRange_data() {
+        QTest::addColumn<QByteArray>("h4");
+        QTest::addColumn<QString>("what");
+        QTest::newRow("range type 9") << QByteArray("H4 0 2021 9 1 20 46 0 2021 9 1 20 47 19 0 0 0 0 1 0 9 1")
+                                      << "field 20 (range type indicator) is 9, outside 0..4";
+        QTest::newRow("quality alert 7") << QByteArray("H4 0 2021 9 1 20 46 0 2021 9 1 20 47 19 0 0 0 0 1 0 2 7")
+                                         << "field 21 (data quality alert indicator) is 7";
+        QTest::newRow("refraction flag 2") << QByteArray("H4 0 2021 9 1 20 46 0 2021 9 1 20 47 19 0 2 0 0 1 0 2 1")
+                                           << "field 15 (tropospheric refraction applied indicator) is 2";
+        QTest::newRow("text flag") << QByteArray("H4 0 2021 9 1 20 46 0 2021 9 1 20 47 19 0 0 0 0 x 0 2 1")
+                                   << "station system delay applied indicator";
+    }
+    void h4FlagsOutOfRange() {
+        QFETCH(QByteArray, h4);
+        QFETCH(QString, what);
+        QTemporaryDir dir;
+        QString path;
+        const CrdReadResult r = readText(dir, "flags.fr2", replaceLine(kGoodCrd, 4, h4), &path);
+        QVERIFY2(r.ok, r.error.c_str());
+        QString why;
+        QVERIFY2(oneWarning(r, path + ":4: H4 ", {what, "read as unknown"}, &why), qPrintable(why));
+        const CrdSession& s = r.file.passes.front().session;
+        const int flags[8] = {s.releaseFlag, s.refractionApplied, s.comApplied, s.receiveAmpApplied, s.stationDelayApplied,
+                              s.spacecraftDelayApplied, s.rangeType, s.qualityAlert};
+        int unknown = 0;
+        for (int f : flags) unknown += f == kCrdAbsent;
+        QCOMPARE(unknown, 1);  // only the bad one
+    }
+
+    /// An H1 naming CPF is a prediction given as ranging data: refused at its line. Another
+    /// unknown format name is read as CRD v1 with one warning (not one per reading of the H1).
+    void h1FormatName() {
+        QTemporaryDir dir;
+        QString path;
+        const CrdReadResult cpf = readText(dir, "h1.v2C", replaceLine(kGoodCrd, 1, "H1 CPF 2 2021 9 1 21"), &path);
+        QVERIFY(!cpf.ok);
+        QVERIFY2(QString::fromStdString(cpf.error).startsWith(path + ":1: "), cpf.error.c_str());
+        QVERIFY2(cpf.error.find("\"CPF\", not \"CRD\"") != std::string::npos, cpf.error.c_str());
+        const CrdReadResult other = readText(dir, "h1.frd", replaceLine(kGoodCrd, 1, "h1 XRD 2 2021 9 1 21"), &path);
+        QVERIFY2(other.ok, other.error.c_str());
+        QString why;
+        QVERIFY2(oneWarning(other, path + ":1: ", {"read as CRD v1"}, &why), qPrintable(why));
+    }
+
+    /// A corrupted time of flight in a type-11 (normal point) or type-10 record: skipped with a
+    /// warning that names the line and the field.
+    void corruptedTimeOfFlight_data() {
+        QTest::addColumn<QByteArray>("record");
+        QTest::newRow("type 11") << QByteArray("11 74776.082358022497   corrupted    sys1 2 120.0 1515 72.1 0.227 2.222 -14.0 1.3 0 5.7");
+        QTest::newRow("type 10") << QByteArray("10 74776.082358022497   corrupted    sys1 2 2 0 0 0 na");
+    }
+    void corruptedTimeOfFlight() {
+        QFETCH(QByteArray, record);
+        QTemporaryDir dir;
+        QString path;
+        QByteArray text = replaceLine(kGoodCrd, 7, record);
+        if (record.startsWith("11")) {  // a normal-point pass
+            text = replaceLine(text, 4, "H4 1 2021 9 1 20 46 0 2021 9 1 20 47 19 0 0 0 0 1 0 2 1");
+            text = replaceLine(text, 6, "11 74760.420166021300 0.013024392652 sys1 2 120.0 1457 70.0 0.319 2.496 -12.0 1.2 0 5.7");
+            text = replaceLine(text, 8, "11 74777.099340164496 0.013115307576 sys1 2 120.0 894 66.8 0.255 2.620 -7.0 0.7 0 5.7");
+        }
+        const CrdReadResult r = readText(dir, "tof.crd", text, &path);
+        QVERIFY2(r.ok, r.error.c_str());
+        QString why;
+        QVERIFY2(oneWarning(r, path + ":7: type 1", {"time of flight", "corrupted"}, &why), qPrintable(why));
+        QCOMPARE(r.file.passes.front().skippedLines, std::vector<long>{7});
     }
 
     void cancelStopsTheRead() {
@@ -782,36 +927,46 @@ private slots:
     void cpfBadInput_data() {
         QTest::addColumn<QByteArray>("text");
         QTest::addColumn<bool>("ok");
-        QTest::addColumn<QString>("what");
+        QTest::addColumn<QString>("what");   // in the error, or in one of the warnings
+        QTest::addColumn<int>("warnings");
         const QByteArray head = "H1 CPF 2 HTS 2012 6 26 12 6801 1 blits\nH9\n";
         QByteArray many;
         for (int i = 0; i < 12; ++i) many += "10 0 56104 " + QByteArray::number(i * 240) + ".0 0 7000000 0 0\n";
-        QTest::newRow("empty") << QByteArray() << false << "empty file";
-        QTest::newRow("not a CPF") << QByteArray("hello\n") << false << ":1:";
-        QTest::newRow("binary") << QByteArray("H1 CPF\x00\x01", 8) << false << "binary";
-        QTest::newRow("no positions") << head << false << "no readable type 10";
-        QTest::newRow("NaN coordinate") << head + "10 0 56104 0.0 0 nan 0 0\n" + many << true << ":3:";
-        QTest::newRow("text in MJD") << head + "10 0 5610x4 0.0 0 1 0 0\n" + many << true << ":3:";
-        QTest::newRow("out of order") << head + many + "10 0 56104 100.0 0 7000000 0 0\n" << true << "not after";
-        QTest::newRow("v2 sound") << head + many << true << "";
+        QTest::newRow("empty") << QByteArray() << false << "empty file" << 0;
+        QTest::newRow("not a CPF") << QByteArray("hello\n") << false << ":1:" << 0;
+        QTest::newRow("binary") << QByteArray("H1 CPF\x00\x01", 8) << false << "binary" << 0;
+        QTest::newRow("no positions") << head + "99\n" << false << "no readable type 10" << 0;
+        QTest::newRow("NaN coordinate") << head + "10 0 56104 0.0 0 nan 0 0\n" + many + "99\n" << true << ":3:" << 1;
+        QTest::newRow("text in MJD") << head + "10 0 5610x4 0.0 0 1 0 0\n" + many + "99\n" << true << ":3:" << 1;
+        QTest::newRow("corrupted X") << head + "10 0 56104 0.0 0 corrupted 0 0\n" + many + "99\n" << true
+                                     << "p.cpf:3: type 10 record skipped: X, Y, Z must be finite numbers" << 1;
+        QTest::newRow("out of order") << head + many + "10 0 56104 100.0 0 7000000 0 0\n99\n" << true << "not after" << 1;
+        // The format ends every file with a 99 record: a file without it was probably cut short.
+        QTest::newRow("no 99 end record") << head + many << true << "p.cpf:14: the file ends without the 99" << 1;
+        QTest::newRow("cut inside a record") << head + many + "10 0 56104 2880.0 0 70000" << true
+                                             << "p.cpf:15: the file ends without the 99" << 2;
+        QTest::newRow("a CRD file") << QByteArray(kGoodCrd) << false
+                                    << "p.cpf:1: H1 must start with \"CPF <version>\": this H1 names CRD ranging data" << 0;
+        QTest::newRow("v2 sound") << head + many + "99\n" << true << "" << 0;
     }
     void cpfBadInput() {
         QFETCH(QByteArray, text);
         QFETCH(bool, ok);
         QFETCH(QString, what);
+        QFETCH(int, warnings);
         const CpfReadResult r = parseCpf(std::string(text.constData(), static_cast<size_t>(text.size())), "p.cpf");
         QCOMPARE(r.ok, ok);
         if (!ok) {
             QVERIFY2(QString::fromStdString(r.error).contains(what), r.error.c_str());
-        } else {
-            QCOMPARE(r.file.header.version, 2);
-            QCOMPARE(r.file.header.targetName, std::string("blits"));  // v2 H1 has the sub-daily sequence first
-            QCOMPARE(r.file.positions.size(), size_t(12));
-            if (!what.isEmpty()) {
-                QCOMPARE(r.warnings.size(), size_t(1));
-                QVERIFY2(QString::fromStdString(r.warnings[0]).contains(what), r.warnings[0].c_str());
-            }
+            return;
         }
+        QCOMPARE(r.file.header.version, 2);
+        QCOMPARE(r.file.header.targetName, std::string("blits"));  // v2 H1 has the sub-daily sequence first
+        QCOMPARE(r.file.positions.size(), size_t(12));
+        QCOMPARE(int(r.warnings.size()), warnings);
+        bool found = what.isEmpty();
+        for (const auto& w : r.warnings) found = found || QString::fromStdString(w).contains(what);
+        QVERIFY2(found, joined(r.warnings).c_str());
     }
 
     // ---- SINEX ----------------------------------------------------------------------------------

@@ -632,13 +632,20 @@ private slots:
     }
 
     void residualStatistics() {
-        // A symmetric set: skew 0; four values ±1, ±3: mean 0, rms √5, m4 = 41 → kurtosis 41/25 − 3.
+        // A symmetric set: skew 0; four values ±1, ±3: mean 0, ILRS rms √(20/3) (n − 1),
+        // Σd⁴/n = 41 → kurtosis 41/(20/3)² − 3.
         const ResidualStats s = residualStats({-3, -1, 1, 3});
         QCOMPARE(s.n, 4LL);
         QCOMPARE(s.mean, 0.0);
-        QVERIFY(std::fabs(s.rms - std::sqrt(5.0)) < 1e-12);
+        QVERIFY(std::fabs(s.rms - std::sqrt(20.0 / 3)) < 1e-12);
         QVERIFY(std::fabs(s.skew) < 1e-12);
-        QVERIFY(std::fabs(s.kurtosis - (41.0 / 25 - 3)) < 1e-12);
+        QVERIFY(std::fabs(s.kurtosis - (41.0 / (400.0 / 9) - 3)) < 1e-12);
+        // Two points ±d: the kurtosis of the station's two-range normal points, 1/4 − 3 = −2.75.
+        QVERIFY(std::fabs(residualStats({-2e-12, 2e-12}).kurtosis + 2.75) < 1e-12);
+        // Three points: Σd⁴ = (Σd²)²/2 for any three summing to zero, so −2.333 (MLRS writes it too).
+        QVERIFY(std::fabs(residualStats({-1, -0.2, 1.2}).kurtosis - (2.0 / 3 - 3)) < 1e-12);
+        // Skew: the signed third moment over rms³: (−1, −1, 2): Σd³/n = 2, rms √3 → 2/3^1.5.
+        QVERIFY(std::fabs(residualStats({-1, -1, 2}).skew - 2 / std::pow(3.0, 1.5)) < 1e-12);
         // A skewed sample (exponential): the peak sits below the mean, skew ≈ 2, kurtosis ≈ 6.
         sim::Rng rng(9);
         std::vector<double> e;

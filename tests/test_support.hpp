@@ -21,9 +21,15 @@ struct CliRun {
     QString out, err;
 };
 
-/// Runs laserwb-cli with args; waits up to timeoutMs.
-inline CliRun runCli(const QStringList& args, int timeoutMs = 120000) {
+/// Runs laserwb-cli with args; waits up to timeoutMs. `env` entries ("NAME=value") are added
+/// to the child's environment.
+inline CliRun runCli(const QStringList& args, int timeoutMs = 120000, const QStringList& env = {}) {
     QProcess p;
+    if (!env.isEmpty()) {
+        QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
+        for (const QString& kv : env) e.insert(kv.section('=', 0, 0), kv.section('=', 1));
+        p.setProcessEnvironment(e);
+    }
     p.start(QString(LWB_CLI), args);
     CliRun r;
     if (!p.waitForFinished(timeoutMs)) {

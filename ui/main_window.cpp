@@ -1,3 +1,4 @@
+#include <cmath>
 #include "ui/main_window.hpp"
 
 #include <QApplication>
@@ -197,8 +198,16 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
     const QJsonObject o = doc.object();
     if (o["format"].toString() != "laserwb-session")
         return fail(tr("%1: not a Laser Workbench session (no \"format\": \"laserwb-session\")").arg(path));
-    if (o["version"].toInt() > kSessionVersion)
-        return fail(tr("%1: session version %2 is newer than this program reads (%3)").arg(path).arg(o["version"].toInt()).arg(kSessionVersion));
+    // A whole number 1..kSessionVersion (toInt() would turn 1e300 or 1.5 into 0 and let it pass).
+    const QJsonValue version = o["version"];
+    const double vd = version.toDouble(-1);
+    if (!version.isDouble() || vd != std::floor(vd) || vd < 1 || vd > 1e9)
+        return fail(tr("%1: \"version\" must be a whole number from 1 to %2, not %3")
+                        .arg(path)
+                        .arg(kSessionVersion)
+                        .arg(version.isDouble() ? QString::number(vd, 'g', 6) : QStringLiteral("a non-number")));
+    if (vd > kSessionVersion)
+        return fail(tr("%1: session version %2 is newer than this program reads (%3)").arg(path).arg(qint64(vd)).arg(kSessionVersion));
     // Validate everything before touching the current state.
     QString err;
     const QJsonObject before = m_footprint->saveState();

@@ -1054,8 +1054,16 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error) {
         r.reflectance = refl.isDouble() ? refl.toDouble() : NAN;
         if (j.contains("rect")) {
             const QJsonArray a = j["rect"].toArray();
-            if (a.size() != 4 || a[2].toInt() < 1 || a[3].toInt() < 1 || a[0].toInt(-1) < 0 || a[1].toInt(-1) < 0) {
-                *error = tr("radiometry region %1 (%2): rect must be [x, y, w, h] with x, y ≥ 0 and w, h ≥ 1").arg(i + 1).arg(r.name);
+            // Each a whole number up to a million pixels, so that x + w cannot overflow an int.
+            auto coord = [&](int k, int lo) {
+                const double v = a[k].toDouble(-1);
+                return a[k].isDouble() && v == std::floor(v) && v >= lo && v <= 1e6;
+            };
+            if (a.size() != 4 || !coord(0, 0) || !coord(1, 0) || !coord(2, 1) || !coord(3, 1)) {
+                *error = tr("radiometry region %1 (%2): rect must be [x, y, w, h], whole numbers with 0 ≤ x, y ≤ 1000000 "
+                            "and 1 ≤ w, h ≤ 1000000")
+                             .arg(i + 1)
+                             .arg(r.name);
                 return false;
             }
             r.rect = QRect(a[0].toInt(), a[1].toInt(), a[2].toInt(), a[3].toInt());

@@ -36,6 +36,7 @@ bool SlrController::open(const QString& path, int passIndex, const PassInputPara
     m_input = input;
     m_pass = r.pass;
     m_passes = r.passes;
+    m_warnings = r.warnings;
     m_truth.clear();
     m_autoScale.valid = false;
     m_forced.assign(m_pass.t.size(), 0);
@@ -67,6 +68,7 @@ void SlrController::setSimulatedPass(const std::vector<double>& t, const std::ve
     m_pass.tof = tof;
     m_pass.altitudeKm = altitudeKm;
     m_passes.clear();
+    m_warnings.clear();
     m_truth = truth;
     m_autoScale.valid = false;
     m_forced.assign(t.size(), 0);

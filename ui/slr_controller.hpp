@@ -34,6 +34,8 @@ public:
 
     const core::slr::PassData& pass() const { return m_pass; }
     const std::vector<core::slr::PassSummary>& passes() const { return m_passes; }
+    /// The readers' warnings about the open pass's files ("FILE:LINE: ..."), empty for a simulation.
+    const std::vector<std::string>& warnings() const { return m_warnings; }
     bool hasPass() const { return !m_pass.t.empty(); }
     const SlrRun& run() const { return m_run; }
     bool hasRun() const { return m_run.screen.ok; }
@@ -74,6 +76,7 @@ public:
     /// Loads the preset of the pass's satellite if there is one; true when one was applied.
     bool applySatellitePreset();
 
+    /// The exports refuse a pass with damaged records (PassData::damaged), as the CLI does.
     bool exportCsv(const QString& path, QString* error) const;
     bool exportCrd(const QString& path, QString* error) const;
     bool exportNormalPoints(const QString& path, QString* error) const;
@@ -93,6 +96,7 @@ private:
 
     core::slr::PassData m_pass;
     std::vector<core::slr::PassSummary> m_passes;
+    std::vector<std::string> m_warnings;
     std::vector<uint8_t> m_truth;
     core::slr::PassInputParams m_input;
     core::slr::ScreenParams m_screen;

@@ -19,6 +19,7 @@
 #include <QSplitter>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
+#include <algorithm>
 #include <climits>
 
 #include "core/sim/slr_sim.hpp"
@@ -233,6 +234,19 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
                             .arg(p.t.size())
                             .arg(QString::fromStdString(p.ocOrigin))
                             .arg(p.station.empty() ? QString() : tr(", station %1").arg(QString::fromStdString(p.station))));
+        // What the readers said about the files, in view (not only in the status bar): a damaged
+        // record means an incomplete pass, and no export (the CLI refuses such a pass too).
+        QString notes;
+        if (!p.damaged.empty())
+            notes += tr("<br><b style=\"color:#b00000\">Damaged records: exports are refused.</b> %1")
+                         .arg(QString::fromStdString(p.damaged).toHtmlEscaped());
+        const auto& warnings = m_controller->warnings();
+        const size_t shown = std::min<size_t>(warnings.size(), 5);
+        if (!warnings.empty())
+            notes += tr("<br><b>%n warning(s) reading the files:</b>", nullptr, int(warnings.size()));
+        for (size_t i = 0; i < shown; ++i) notes += "<br>" + QString::fromStdString(warnings[i]).toHtmlEscaped();
+        if (warnings.size() > shown) notes += tr("<br>… and %1 more (in the status messages)").arg(warnings.size() - shown);
+        m_info->setText(m_info->text() + notes);
         m_ocPlot->xAxis->setRange(0, 1);  // force a rescale on the first run of the new pass
         m_ocPlot->setProperty("fresh", true);
     });
@@ -285,6 +299,10 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
         else emit status(tr("Preset saved for %1 in %2").arg(QString::fromStdString(m_controller->pass().satellite), m_controller->presetFile()));
     });
     auto exporter = [this](const QString& title, const QString& filter, auto fn) {
+        if (const std::string& damaged = m_controller->pass().damaged; !damaged.empty()) {
+            QMessageBox::warning(this, title, QString::fromStdString(damaged));
+            return;
+        }
         QSettings st;
         const QString path = QFileDialog::getSaveFileName(this, title, st.value("paths/slrExport").toString(), filter);
         if (path.isEmpty()) return;

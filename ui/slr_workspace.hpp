@@ -30,6 +30,7 @@ public:
     QCheckBox* autoCheck() const { return m_auto; }
     QCustomPlot* ocPlot() const { return m_ocPlot; }
     QCustomPlot* imagePlot() const { return m_imagePlot; }
+    QLabel* infoLabel() const { return m_info; }  ///< the pass line and the readers' warnings
 
     /// Opens a CRD or O-C CSV with the CPF/SINEX chosen in the workspace; errors in a dialog.
     bool openPath(const QString& path, int passIndex, QString* error);

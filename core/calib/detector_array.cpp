@@ -382,6 +382,7 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     LmOptions opt;
     opt.maxIterations = params.maxIterations;
     LmOutcome best;
+    std::string lastFailure;  // why the starts failed, when none succeeds
     // Multi-start over the width (a truncated footprint can mislead one start).
     for (double f : {1.0, 0.5, 2.0}) {
         Eigen::VectorXd p0(np);
@@ -402,10 +403,12 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
             o2.history.insert(o2.history.begin(), o.history.begin(), o.history.end() - 1);
             o = o2;
         }
+        if (!o.ok) lastFailure = o.error;
         if (o.ok && (!best.ok || o.cost < best.cost)) best = o;
     }
     if (!best.ok) {
-        res.error = "Gaussian surface fit failed: " + best.error;
+        res.error = "Gaussian surface fit failed from every start (widths 0.5, 1 and 2 times the energy-weighted "
+                    "spread): " + (lastFailure.empty() ? std::string("the solver did not converge") : lastFailure);
         return res;
     }
     // Keep the weights of the winning fit for the covariance.

@@ -574,16 +574,18 @@ bool readBeamsJson(const std::string& path, std::vector<BeamDesign>* out, std::s
         *error = j.error;
         return false;
     }
-    const Json* arr = j.value.isObject() ? j.value.find("beams") : nullptr;
-    if (!arr || !arr->isArray() || arr->items().empty()) {
+    const Json& root = j.value;
+    if (!root.is_object() || !root.contains("beams") || !root["beams"].is_array() || root["beams"].empty()) {
         *error = path + ": needs {\"beams\": [{\"id\": 1, \"alpha_deg\": ..., \"beta_deg\": ...}, ...]}";
         return false;
     }
+    const Json& arr = root["beams"];
     std::vector<BeamDesign> v;
-    for (size_t i = 0; i < arr->items().size(); ++i) {
-        const Json& b = arr->items()[i];
-        const std::string where = path + ": beams[" + std::to_string(i) + "]: ";
-        if (!b.isObject()) {
+    for (size_t i = 0; i < arr.size(); ++i) {
+        const Json& b = arr[i];
+        const std::string at = "[" + std::to_string(i) + "]";
+        const std::string where = j.where({"beams", at}) + "beams" + at + ": ";
+        if (!b.is_object()) {
             *error = where + "not an object";
             return false;
         }
@@ -595,7 +597,7 @@ bool readBeamsJson(const std::string& path, std::vector<BeamDesign>* out, std::s
             *error = where + err;
             return false;
         }
-        if (!b.find("id") || !std::isfinite(alpha) || !std::isfinite(beta)) {
+        if (!b.contains("id") || !std::isfinite(alpha) || !std::isfinite(beta)) {
             *error = where + "needs id, alpha_deg and beta_deg";
             return false;
         }
@@ -603,21 +605,27 @@ bool readBeamsJson(const std::string& path, std::vector<BeamDesign>* out, std::s
             *error = where + "alpha_deg must be within 0..90";
             return false;
         }
+        for (size_t k = 0; k < v.size(); ++k)
+            if (v[k].id == d.id) {
+                *error = where + "id " + std::to_string(d.id) + " is already used by beams[" + std::to_string(k) +
+                         "]; each beam is designed once";
+                return false;
+            }
         d.alphaRad = alpha * kDeg;
         d.betaRad = beta * kDeg;
-        auto vec = [&](const char* key, int n, double* dst) {
-            const Json* a = b.find(key);
-            if (!a) return true;
-            if (!a->isArray() || static_cast<int>(a->items().size()) != n) {
+        auto vec = [&](const char* key, size_t n, double* dst) {
+            if (!b.contains(key)) return true;
+            const Json& a = b[key];
+            if (!a.is_array() || a.size() != n) {
                 *error = where + key + " must be an array of " + std::to_string(n) + " numbers";
                 return false;
             }
-            for (int k = 0; k < n; ++k) {
-                if (!a->items()[k].isNumber() || !std::isfinite(a->items()[k].asNumber())) {
+            for (size_t k = 0; k < n; ++k) {
+                if (!a[k].is_number() || !std::isfinite(a[k].get<double>())) {
                     *error = where + key + " must hold finite numbers";
                     return false;
                 }
-                dst[k] = a->items()[k].asNumber();
+                dst[k] = a[k].get<double>();
             }
             return true;
         };
@@ -637,26 +645,14 @@ bool readBeamsJson(const std::string& path, std::vector<BeamDesign>* out, std::s
 }
 
 std::string beamsToJson(const std::vector<BeamDesign>& beams) {
-    Json root = Json::object();
     Json arr = Json::array();
-    for (const auto& b : beams) {
-        Json o = Json::object();
-        o.set("id", b.id);
-        o.set("alpha_deg", b.alphaRad / kDeg);
-        o.set("beta_deg", b.betaRad / kDeg);
-        Json off = Json::array();
-        for (int k = 0; k < 3; ++k) off.push(b.offsetBodyM(k));
-        o.set("offset_m", off);
-        Json q = Json::array();
-        q.push(b.laserToBody.w());
-        q.push(b.laserToBody.x());
-        q.push(b.laserToBody.y());
-        q.push(b.laserToBody.z());
-        o.set("mounting_quat", q);
-        arr.push(o);
-    }
-    root.set("beams", arr);
-    return root.dump(2) + "\n";
+    for (const auto& b : beams)
+        arr.push_back({{"id", b.id},
+                       {"alpha_deg", b.alphaRad / kDeg},
+                       {"beta_deg", b.betaRad / kDeg},
+                       {"offset_m", {b.offsetBodyM(0), b.offsetBodyM(1), b.offsetBodyM(2)}},
+                       {"mounting_quat", {b.laserToBody.w(), b.laserToBody.x(), b.laserToBody.y(), b.laserToBody.z()}}});
+    return dumpJson(Json{{"beams", arr}});
 }
 
 }  // namespace lwb::core::calib

@@ -8,6 +8,12 @@
 
 namespace lwb::core::calib {
 
+namespace {
+// Laser minus control heights: metres at most for a working altimeter, never kilometres. A
+// larger value is a damaged field (and 1e308 would overflow the sums into inf).
+constexpr double kMaxElevationDifferenceM = 1e4;
+}  // namespace
+
 ElevationStatsResult elevationStats(const std::vector<double>& d) {
     ElevationStatsResult r;
     if (d.empty()) {
@@ -15,8 +21,9 @@ ElevationStatsResult elevationStats(const std::vector<double>& d) {
         return r;
     }
     for (size_t i = 0; i < d.size(); ++i)
-        if (!std::isfinite(d[i])) {
-            r.error = "elevation difference " + std::to_string(i + 1) + " is not a finite number";
+        if (!std::isfinite(d[i]) || std::fabs(d[i]) > kMaxElevationDifferenceM) {
+            r.error = "elevation difference " + std::to_string(i + 1) + " (" + formatShortest(d[i]) +
+                      " m) is not plausible: |d| must be at most 10 km";
             return r;
         }
     ElevationStats& s = r.stats;
@@ -98,6 +105,10 @@ bool readDifferencesCsv(const std::string& path, const std::string& groupColumn,
                 return false;
             }
             v = a - b;
+        }
+        if (std::fabs(v) > kMaxElevationDifferenceM) {
+            *error = where + "difference " + formatShortest(v) + " m is not plausible (|d| must be at most 10 km)";
+            return false;
         }
         const std::string g = cg >= 0 ? std::string(trim(row[cg])) : std::string();
         auto it = std::find_if(groups.begin(), groups.end(), [&](const DifferenceGroup& x) { return x.group == g; });

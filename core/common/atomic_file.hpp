@@ -32,7 +32,17 @@ private:
 /// Whole-content convenience: true on success, else false and *error set.
 bool writeFileAtomic(const std::string& path, const std::string& content, std::string* error);
 
-/// Reads a whole file; false and *error ("cannot open FILE: reason") on failure.
-bool readFileText(const std::string& path, std::string* content, std::string* error);
+/// Largest text input read by default (bytes): the biggest real inputs (a day of kHz CRD) are a
+/// few hundred MB; anything larger is refused with its size rather than exhausting memory.
+constexpr long long kMaxTextInputBytes = 2LL << 30;
+
+/// True (with *error "FILE: why") when `path` is not an existing regular file: missing, a
+/// folder, a device, FIFO or socket (reading those can block or never end). *size on success.
+bool regularFileProblem(const std::string& path, std::string* error, long long* size = nullptr);
+
+/// Reads a whole regular file of at most maxBytes (0 = no limit); false and *error
+/// ("FILE: reason") on failure, including out of memory.
+bool readFileText(const std::string& path, std::string* content, std::string* error,
+                  long long maxBytes = kMaxTextInputBytes);
 
 }  // namespace lwb::core

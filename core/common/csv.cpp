@@ -61,7 +61,7 @@ bool nextRecord(std::string_view text, size_t& pos, long& line, std::vector<std:
         }
     }
     if (inQuotes) {
-        *err = "line " + std::to_string(startLine) + ": quoted field is not closed";
+        *err = std::to_string(startLine) + ": a quoted field opened on this line is never closed (a \" missing, or the file cut short)";
         return false;
     }
     fields.push_back(std::move(cur));

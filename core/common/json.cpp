@@ -1,352 +1,258 @@
 #include "core/common/json.hpp"
 
-#include <cctype>
 #include <cmath>
-#include <cstdio>
-#include <unordered_set>
+#include <set>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
 
 namespace lwb::core {
 
-const Json* Json::find(const std::string& key) const {
-    if (m_type != Type::Object) return nullptr;
-    for (const auto& kv : m_obj)
-        if (kv.first == key) return &kv.second;
-    return nullptr;
-}
-
-Json& Json::set(const std::string& key, Json value) {
-    if (m_type == Type::Null) m_type = Type::Object;
-    for (auto& kv : m_obj)
-        if (kv.first == key) {
-            kv.second = std::move(value);
-            return kv.second;
-        }
-    m_obj.emplace_back(key, std::move(value));
-    return m_obj.back().second;
-}
-
-Json& Json::appendMember(std::string key, Json value) {
-    if (m_type == Type::Null) m_type = Type::Object;
-    m_obj.emplace_back(std::move(key), std::move(value));
-    return m_obj.back().second;
-}
-
-Json& Json::push(Json value) {
-    if (m_type == Type::Null) m_type = Type::Array;
-    m_arr.push_back(std::move(value));
-    return m_arr.back();
-}
-
 namespace {
-void dumpString(std::string& out, const std::string& s) {
-    out.push_back('"');
-    for (unsigned char c : s) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\r': out += "\\r"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (c < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                    out += buf;
-                } else {
-                    out.push_back(static_cast<char>(c));
-                }
+
+constexpr int kMaxDepth = 64;
+
+// Line and column (1-based) of a byte offset.
+std::string lineCol(std::string_view text, size_t offset) {
+    long line = 1, col = 1;
+    for (size_t k = 0; k < offset && k < text.size(); ++k) {
+        if (text[k] == '\n') {
+            ++line;
+            col = 1;
+        } else {
+            ++col;
         }
     }
-    out.push_back('"');
-}
-void newline(std::string& out, int indent, int depth) {
-    if (indent < 0) return;
-    out.push_back('\n');
-    out.append(static_cast<size_t>(indent * depth), ' ');
-}
-}  // namespace
-
-void Json::dumpTo(std::string& out, int indent, int depth) const {
-    switch (m_type) {
-        case Type::Null: out += "null"; break;
-        case Type::Bool: out += m_bool ? "true" : "false"; break;
-        case Type::Number:
-            // JSON has no NaN: write null, which the number readers reject.
-            out += std::isfinite(m_num) ? formatShortest(m_num) : "null";
-            break;
-        case Type::String: dumpString(out, m_str); break;
-        case Type::Array:
-            out.push_back('[');
-            for (size_t i = 0; i < m_arr.size(); ++i) {
-                if (i) out.push_back(',');
-                newline(out, indent, depth + 1);
-                m_arr[i].dumpTo(out, indent, depth + 1);
-            }
-            if (!m_arr.empty()) newline(out, indent, depth);
-            out.push_back(']');
-            break;
-        case Type::Object:
-            out.push_back('{');
-            for (size_t i = 0; i < m_obj.size(); ++i) {
-                if (i) out.push_back(',');
-                newline(out, indent, depth + 1);
-                dumpString(out, m_obj[i].first);
-                out += indent < 0 ? ":" : ": ";
-                m_obj[i].second.dumpTo(out, indent, depth + 1);
-            }
-            if (!m_obj.empty()) newline(out, indent, depth);
-            out.push_back('}');
-            break;
-    }
+    return std::to_string(line) + ":" + std::to_string(col);
 }
 
-std::string Json::dump(int indent) const {
-    std::string out;
-    dumpTo(out, indent, 0);
-    if (indent >= 0) out.push_back('\n');
-    return out;
-}
-
-namespace {
-class Parser {
-public:
-    Parser(const std::string& text, const std::string& source) : m_t(text), m_src(source) {}
-
-    JsonParseResult run() {
-        JsonParseResult r;
-        skipWs();
-        if (!parseValue(r.value, 0)) {
-            r.error = m_err;
-            return r;
+// Finds the byte offset of a member's key (or of an array element) by path, walking the text
+// with a small scanner that knows strings, objects and arrays. npos when absent. The text is
+// known to be valid JSON (it parsed).
+size_t locate(std::string_view t, const std::vector<std::string>& path) {
+    struct Level {
+        bool object;
+        std::string key;   // object: the current member's key
+        long index = 0;    // array: the current element
+        bool matched;      // every level above and this one's entry so far match the path
+    };
+    std::vector<Level> stack;
+    auto depthMatches = [&]() {
+        // The path prefix up to the current depth matches the open containers.
+        if (stack.size() > path.size()) return false;
+        for (size_t d = 0; d + 1 < stack.size(); ++d) {
+            const Level& l = stack[d];
+            const std::string here = l.object ? l.key : "[" + std::to_string(l.index) + "]";
+            if (here != path[d]) return false;
         }
-        skipWs();
-        if (m_i != m_t.size()) {
-            fail("unexpected text after the JSON value");
-            r.error = m_err;
-            return r;
-        }
-        r.ok = true;
-        return r;
-    }
-
-private:
-    bool fail(const std::string& what) {
-        if (m_err.empty()) {
-            long line = 1, col = 1;
-            for (size_t k = 0; k < m_i && k < m_t.size(); ++k) {
-                if (m_t[k] == '\n') {
-                    ++line;
-                    col = 1;
-                } else {
-                    ++col;
-                }
-            }
-            m_err = m_src + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + what;
-        }
-        return false;
-    }
-    void skipWs() {
-        while (m_i < m_t.size() &&
-               (m_t[m_i] == ' ' || m_t[m_i] == '\t' || m_t[m_i] == '\n' || m_t[m_i] == '\r'))
-            ++m_i;
-    }
-    bool literal(const char* word, size_t n) {
-        if (m_t.compare(m_i, n, word) != 0) return fail("unknown word (expected a JSON value)");
-        m_i += n;
         return true;
-    }
-    bool parseValue(Json& v, int depth) {
-        if (depth > 200) return fail("nesting deeper than 200 levels");
-        if (m_i >= m_t.size()) return fail("unexpected end of text");
-        const char c = m_t[m_i];
-        if (c == '{') return parseObject(v, depth);
-        if (c == '[') return parseArray(v, depth);
+    };
+    bool expectKey = false;
+    for (size_t i = 0; i < t.size(); ++i) {
+        const char c = t[i];
         if (c == '"') {
+            const size_t start = i;
             std::string s;
-            if (!parseString(s)) return false;
-            v = Json(std::move(s));
-            return true;
-        }
-        if (c == 't') { if (!literal("true", 4)) return false; v = Json(true); return true; }
-        if (c == 'f') { if (!literal("false", 5)) return false; v = Json(false); return true; }
-        if (c == 'n') { if (!literal("null", 4)) return false; v = Json(); return true; }
-        if (c == '-' || (c >= '0' && c <= '9')) return parseNumber(v);
-        if (c == 'N' || c == 'I') return fail("NaN and Infinity are not JSON numbers");
-        return fail(std::string("unexpected character '") + c + "'");
-    }
-    bool parseNumber(Json& v) {
-        const size_t b = m_i;
-        if (m_t[m_i] == '-') ++m_i;
-        if (m_i < m_t.size() && (m_t[m_i] == 'I' || m_t[m_i] == 'N'))
-            return fail("NaN and Infinity are not JSON numbers");
-        while (m_i < m_t.size() && (std::isdigit(static_cast<unsigned char>(m_t[m_i])) ||
-                                    m_t[m_i] == '.' || m_t[m_i] == 'e' || m_t[m_i] == 'E' ||
-                                    m_t[m_i] == '+' || m_t[m_i] == '-'))
-            ++m_i;
-        double d = 0;
-        if (!parseDouble(std::string_view(m_t).substr(b, m_i - b), &d)) {
-            m_i = b;
-            return fail("malformed or out-of-range number");
-        }
-        v = Json(d);
-        return true;
-    }
-    bool parseString(std::string& s) {
-        ++m_i;  // opening quote
-        while (m_i < m_t.size()) {
-            const char c = m_t[m_i++];
-            if (c == '"') return true;
-            if (static_cast<unsigned char>(c) < 0x20) return fail("control character in a string");
-            if (c != '\\') {
-                s.push_back(c);
-                continue;
+            for (++i; i < t.size() && t[i] != '"'; ++i) {
+                if (t[i] == '\\' && i + 1 < t.size()) ++i;
+                s.push_back(t[i]);
             }
-            if (m_i >= m_t.size()) break;
-            const char e = m_t[m_i++];
-            switch (e) {
-                case '"': s.push_back('"'); break;
-                case '\\': s.push_back('\\'); break;
-                case '/': s.push_back('/'); break;
-                case 'b': s.push_back('\b'); break;
-                case 'f': s.push_back('\f'); break;
-                case 'n': s.push_back('\n'); break;
-                case 'r': s.push_back('\r'); break;
-                case 't': s.push_back('\t'); break;
-                case 'u': {
-                    if (m_i + 4 > m_t.size()) return fail("short \\u escape");
-                    unsigned cp = 0;
-                    for (int k = 0; k < 4; ++k) {
-                        const char h = m_t[m_i++];
-                        cp <<= 4;
-                        if (h >= '0' && h <= '9') cp |= unsigned(h - '0');
-                        else if (h >= 'a' && h <= 'f') cp |= unsigned(h - 'a' + 10);
-                        else if (h >= 'A' && h <= 'F') cp |= unsigned(h - 'A' + 10);
-                        else return fail("bad \\u escape");
-                    }
-                    if (cp < 0x80) {
-                        s.push_back(static_cast<char>(cp));
-                    } else if (cp < 0x800) {
-                        s.push_back(static_cast<char>(0xC0 | (cp >> 6)));
-                        s.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-                    } else {
-                        s.push_back(static_cast<char>(0xE0 | (cp >> 12)));
-                        s.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-                        s.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-                    }
-                    break;
-                }
-                default: return fail("unknown escape in a string");
+            if (expectKey && !stack.empty() && stack.back().object) {
+                stack.back().key = s;
+                expectKey = false;
+                if (stack.size() == path.size() && depthMatches() && s == path.back()) return start;
             }
+            continue;
         }
-        return fail("string is not closed");
-    }
-    bool parseArray(Json& v, int depth) {
-        v = Json::array();
-        ++m_i;
-        skipWs();
-        if (m_i < m_t.size() && m_t[m_i] == ']') { ++m_i; return true; }
-        while (true) {
-            skipWs();
-            Json item;
-            if (!parseValue(item, depth + 1)) return false;
-            v.push(std::move(item));
-            skipWs();
-            if (m_i >= m_t.size()) return fail("array is not closed");
-            if (m_t[m_i] == ',') { ++m_i; continue; }
-            if (m_t[m_i] == ']') { ++m_i; return true; }
-            return fail("expected ',' or ']' in an array");
-        }
-    }
-    bool parseObject(Json& v, int depth) {
-        v = Json::object();
-        std::unordered_set<std::string> seen;  // duplicate keys in O(1), not a scan per key
-        ++m_i;
-        skipWs();
-        if (m_i < m_t.size() && m_t[m_i] == '}') { ++m_i; return true; }
-        while (true) {
-            skipWs();
-            if (m_i >= m_t.size() || m_t[m_i] != '"') return fail("expected a quoted key");
-            std::string key;
-            if (!parseString(key)) return false;
-            if (!seen.insert(key).second) return fail("key \"" + key + "\" appears twice");
-            skipWs();
-            if (m_i >= m_t.size() || m_t[m_i] != ':') return fail("expected ':' after a key");
-            ++m_i;
-            skipWs();
-            Json item;
-            if (!parseValue(item, depth + 1)) return false;
-            v.appendMember(std::move(key), std::move(item));
-            skipWs();
-            if (m_i >= m_t.size()) return fail("object is not closed");
-            if (m_t[m_i] == ',') { ++m_i; continue; }
-            if (m_t[m_i] == '}') { ++m_i; return true; }
-            return fail("expected ',' or '}' in an object");
+        if (c == '{' || c == '[') {
+            if (!stack.empty() && !stack.back().object && stack.size() == path.size() && depthMatches() &&
+                "[" + std::to_string(stack.back().index) + "]" == path.back())
+                return i;
+            stack.push_back({c == '{', {}, 0, false});
+            expectKey = c == '{';
+        } else if (c == '}' || c == ']') {
+            if (!stack.empty()) stack.pop_back();
+        } else if (c == ',') {
+            if (!stack.empty()) {
+                if (stack.back().object) expectKey = true;
+                else ++stack.back().index;
+            }
+        } else if (!stack.empty() && !stack.back().object && stack.size() == path.size() && depthMatches() &&
+                   !std::isspace(static_cast<unsigned char>(c)) && "[" + std::to_string(stack.back().index) + "]" == path.back()) {
+            return i;  // a scalar array element
         }
     }
+    return std::string_view::npos;
+}
 
-    const std::string& m_t;
-    const std::string& m_src;
-    size_t m_i = 0;
-    std::string m_err;
+struct DuplicateKey {
+    std::vector<std::string> path;
 };
+struct TooDeep {};
+
 }  // namespace
 
-JsonParseResult parseJson(const std::string& text, const std::string& source) {
-    return Parser(text, source).run();
+std::string JsonParseResult::where(const std::vector<std::string>& path) const {
+    const size_t at = path.empty() ? std::string_view::npos : locate(text, path);
+    if (at == std::string_view::npos) return source + ": ";
+    return source + ":" + lineCol(text, at) + ": ";
+}
+
+JsonParseResult parseJson(std::string_view text, const std::string& source) {
+    JsonParseResult r;
+    r.source = source;
+    r.text = std::string(text);
+    // Open containers: an object's keys so far, or an array's element count; with them the
+    // path of the member being read, for the position of a duplicate key.
+    struct Open {
+        bool object;
+        std::set<std::string> keys;
+        std::string key;
+        long count = 0;
+    };
+    std::vector<Open> open;
+    auto pathHere = [&]() {
+        std::vector<std::string> path;
+        for (const Open& o : open) path.push_back(o.object ? o.key : "[" + std::to_string(o.count) + "]");
+        return path;
+    };
+    auto elementDone = [&]() {
+        if (!open.empty() && !open.back().object) ++open.back().count;
+    };
+    const Json::parser_callback_t check = [&](int depth, Json::parse_event_t event, Json& parsed) {
+        if (depth > kMaxDepth) throw TooDeep{};
+        switch (event) {
+            case Json::parse_event_t::object_start: open.push_back({true, {}, {}, 0}); break;
+            case Json::parse_event_t::array_start: open.push_back({false, {}, {}, 0}); break;
+            case Json::parse_event_t::key:
+                if (!open.empty()) {
+                    open.back().key = parsed.get<std::string>();
+                    if (!open.back().keys.insert(open.back().key).second) throw DuplicateKey{pathHere()};
+                }
+                break;
+            case Json::parse_event_t::object_end:
+            case Json::parse_event_t::array_end:
+                if (!open.empty()) open.pop_back();
+                elementDone();
+                break;
+            case Json::parse_event_t::value: elementDone(); break;
+        }
+        return true;
+    };
+    try {
+        r.value = Json::parse(text.begin(), text.end(), check);
+        r.ok = true;
+    } catch (const Json::parse_error& e) {
+        // "[json.exception.parse_error.101] parse error at line 2, column 7: syntax error ..."
+        std::string what = e.what();
+        const size_t at = what.find(" at line ");
+        const size_t colon = at == std::string::npos ? std::string::npos : what.find(": ", at);
+        std::string msg = colon == std::string::npos ? what : what.substr(colon + 2);
+        r.error = source + ":" + lineCol(text, e.byte > 0 ? e.byte - 1 : 0) + ": " + msg;
+    } catch (const Json::out_of_range& e) {  // a number beyond double range: "... parsing '1e999'"
+        std::string what = e.what();
+        const size_t sp = what.find("] ");
+        what = sp == std::string::npos ? what : what.substr(sp + 2);
+        const size_t q1 = what.find('\''), q2 = q1 == std::string::npos ? q1 : what.find('\'', q1 + 1);
+        const size_t at = q2 == std::string::npos ? std::string_view::npos : text.find(what.substr(q1 + 1, q2 - q1 - 1));
+        r.error = source + (at == std::string_view::npos ? std::string() : ":" + lineCol(text, at)) + ": " + what;
+    } catch (const DuplicateKey& d) {
+        r.value = Json();
+        r.error = r.where(d.path) + "the key \"" + printableExcerpt(d.path.back()) + "\" appears twice in one object";
+    } catch (const TooDeep&) {
+        r.error = source + ": nested deeper than " + std::to_string(kMaxDepth) + " levels";
+    } catch (const std::exception& e) {
+        r.error = source + ": " + e.what();
+    }
+    if (!r.ok) r.value = Json();
+    return r;
 }
 
 JsonParseResult readJsonFile(const std::string& path) {
     JsonParseResult r;
     std::string text;
-    if (!readFileText(path, &text, &r.error)) return r;
+    if (!readFileText(path, &text, &r.error)) {
+        r.source = path;
+        return r;
+    }
     return parseJson(text, path);
 }
 
+namespace {
+Json finiteOnly(const Json& j) {
+    if (j.is_number_float() && !std::isfinite(j.get<double>())) return nullptr;
+    if (j.is_structured()) {
+        Json c = j;
+        for (auto& v : c) v = finiteOnly(v);
+        return c;
+    }
+    return j;
+}
+}  // namespace
+
+std::string dumpJson(const Json& j, int indent) {
+    std::string s = finiteOnly(j).dump(indent < 0 ? -1 : indent, ' ', false, Json::error_handler_t::replace);
+    if (indent >= 0) s.push_back('\n');
+    return s;
+}
+
 bool jsonNumber(const Json& obj, const std::string& key, double* out, std::string* error) {
-    const Json* v = obj.find(key);
-    if (!v) return true;
-    if (!v->isNumber() || !std::isfinite(v->asNumber())) {
+    const auto it = obj.find(key);
+    if (it == obj.end()) return true;
+    if (!it->is_number() || !std::isfinite(it->get<double>())) {
         *error = "\"" + key + "\" must be a finite number";
         return false;
     }
-    *out = v->asNumber();
+    *out = it->get<double>();
     return true;
 }
 
 bool jsonInt(const Json& obj, const std::string& key, int* out, std::string* error) {
-    double d = *out;
-    if (!jsonNumber(obj, key, &d, error)) return false;
-    if (d != std::floor(d) || std::fabs(d) > 2e9) {
+    const auto it = obj.find(key);
+    if (it == obj.end()) return true;
+    const double v = it->is_number() ? it->get<double>() : NAN;
+    if (!(v == std::floor(v) && std::fabs(v) <= 2147483647.0)) {
         *error = "\"" + key + "\" must be a whole number";
         return false;
     }
-    *out = static_cast<int>(d);
-    return true;
-}
-
-bool jsonBool(const Json& obj, const std::string& key, bool* out, std::string* error) {
-    const Json* v = obj.find(key);
-    if (!v) return true;
-    if (!v->isBool()) {
-        *error = "\"" + key + "\" must be true or false";
-        return false;
-    }
-    *out = v->asBool();
+    *out = static_cast<int>(v);
     return true;
 }
 
 bool jsonString(const Json& obj, const std::string& key, std::string* out, std::string* error) {
-    const Json* v = obj.find(key);
-    if (!v) return true;
-    if (!v->isString()) {
+    const auto it = obj.find(key);
+    if (it == obj.end()) return true;
+    if (!it->is_string()) {
         *error = "\"" + key + "\" must be a string";
         return false;
     }
-    *out = v->asString();
+    *out = it->get<std::string>();
     return true;
+}
+
+std::vector<std::string> firstUnknownKey(const Json& given, const Json& reference) {
+    if (!given.is_object() || !reference.is_object()) return {};
+    for (auto it = given.begin(); it != given.end(); ++it) {
+        const auto ref = reference.find(it.key());
+        if (ref == reference.end()) return {it.key()};
+        if (it->is_object() && ref->is_object()) {
+            std::vector<std::string> inner = firstUnknownKey(*it, *ref);
+            if (!inner.empty()) {
+                inner.insert(inner.begin(), it.key());
+                return inner;
+            }
+        }
+    }
+    return {};
+}
+
+std::string joinPath(const std::vector<std::string>& path) {
+    std::string s;
+    for (const auto& p : path) {
+        if (!s.empty() && p.rfind("[", 0) != 0) s += ".";
+        s += p;
+    }
+    return s;
 }
 
 }  // namespace lwb::core

@@ -1,82 +1,48 @@
 #pragma once
-// A small JSON value with a strict parser (errors carry line and column) and a writer.
-// Used for configs and presets so that core stays std + Eigen + OpenCV only.
-#include <map>
-#include <memory>
+// JSON for configs, presets, sessions and beam files: nlohmann-json (Debian's
+// nlohmann-json3-dev) with key order kept, plus what our messages need on top of it — errors as
+// "SOURCE:LINE:COL: what", duplicate keys and absurd nesting refused, and the position of any
+// member for messages about its value.
+#include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lwb::core {
 
-class Json {
-public:
-    enum class Type { Null, Bool, Number, String, Array, Object };
-    using Array = std::vector<Json>;
-    using Object = std::vector<std::pair<std::string, Json>>;  ///< keeps key order
-
-    Json() = default;
-    Json(std::nullptr_t) {}
-    Json(bool b) : m_type(Type::Bool), m_bool(b) {}
-    Json(double d) : m_type(Type::Number), m_num(d) {}
-    Json(int i) : m_type(Type::Number), m_num(i) {}
-    Json(long long i) : m_type(Type::Number), m_num(static_cast<double>(i)) {}
-    Json(const char* s) : m_type(Type::String), m_str(s) {}
-    Json(std::string s) : m_type(Type::String), m_str(std::move(s)) {}
-    static Json array() { Json j; j.m_type = Type::Array; return j; }
-    static Json object() { Json j; j.m_type = Type::Object; return j; }
-
-    Type type() const { return m_type; }
-    bool isNull() const { return m_type == Type::Null; }
-    bool isBool() const { return m_type == Type::Bool; }
-    bool isNumber() const { return m_type == Type::Number; }
-    bool isString() const { return m_type == Type::String; }
-    bool isArray() const { return m_type == Type::Array; }
-    bool isObject() const { return m_type == Type::Object; }
-
-    bool asBool() const { return m_bool; }
-    double asNumber() const { return m_num; }
-    const std::string& asString() const { return m_str; }
-    const Array& items() const { return m_arr; }
-    Array& items() { return m_arr; }
-    const Object& members() const { return m_obj; }
-
-    /// Object member or nullptr.
-    const Json* find(const std::string& key) const;
-    /// Sets (or replaces) an object member; turns a Null into an Object.
-    Json& set(const std::string& key, Json value);
-    /// Appends a member without looking for an existing one (the caller knows the key is new).
-    Json& appendMember(std::string key, Json value);
-    /// Appends to an array; turns a Null into an Array.
-    Json& push(Json value);
-
-    /// Serialises; indent < 0 gives one line.
-    std::string dump(int indent = 2) const;
-
-private:
-    void dumpTo(std::string& out, int indent, int depth) const;
-    Type m_type = Type::Null;
-    bool m_bool = false;
-    double m_num = 0;
-    std::string m_str;
-    Array m_arr;
-    Object m_obj;
-};
+using Json = nlohmann::ordered_json;
 
 struct JsonParseResult {
     bool ok = false;
-    std::string error;  ///< "SOURCE:LINE:COL: what is wrong"
+    std::string error;   ///< "SOURCE:LINE:COL: what is wrong"
     Json value;
+    std::string source;  ///< the name given (a file path)
+    std::string text;    ///< the text parsed, for where()
+    /// "SOURCE:LINE:COL: " of the member at `path` (object keys; array indices as "[3]"), or
+    /// "SOURCE: " when it cannot be found (a value built in memory, say).
+    std::string where(const std::vector<std::string>& path) const;
 };
 
-/// Parses RFC 8259 JSON (no NaN/Infinity literals, no comments, no trailing commas).
-JsonParseResult parseJson(const std::string& text, const std::string& source = "json");
+/// Parses RFC 8259 JSON (no NaN/Infinity literals, comments or trailing commas); duplicate keys
+/// in an object and nesting deeper than 64 levels are errors.
+JsonParseResult parseJson(std::string_view text, const std::string& source = "json");
+/// Reads (a regular file, size-limited like every text input) and parses.
 JsonParseResult readJsonFile(const std::string& path);
+
+/// Serialises with `indent` spaces (< 0: one line) and a final newline when indented. Numbers
+/// that are not finite are written as null (JSON has no NaN).
+std::string dumpJson(const Json& j, int indent = 2);
 
 /// Reads a number member into *out when present. False (with *error naming the key) when the
 /// member is present but not a finite number; true and untouched when absent.
 bool jsonNumber(const Json& obj, const std::string& key, double* out, std::string* error);
 bool jsonInt(const Json& obj, const std::string& key, int* out, std::string* error);
-bool jsonBool(const Json& obj, const std::string& key, bool* out, std::string* error);
 bool jsonString(const Json& obj, const std::string& key, std::string* out, std::string* error);
+
+/// The first member of `given` (searched recursively through nested objects) whose key
+/// `reference` does not have, as a path; empty when every key is known.
+std::vector<std::string> firstUnknownKey(const Json& given, const Json& reference);
+/// "a.b.c" from a path.
+std::string joinPath(const std::vector<std::string>& path);
 
 }  // namespace lwb::core

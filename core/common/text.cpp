@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -16,21 +17,89 @@ std::string_view trim(std::string_view s) {
     return s.substr(b, e - b);
 }
 
-bool parseDouble(std::string_view s, double* out, bool allowNonFinite) {
+namespace {
+// Decimal number syntax: [+-] (digits [. digits] | . digits) [(e|E) [+-] digits]. A point with
+// no digit after it is accepted only when trailingPoint (FORTRAN F-format, "26.").
+bool decimalSyntax(std::string_view s, bool trailingPoint) {
+    size_t i = 0;
+    const size_t n = s.size();
+    auto digits = [&]() {
+        const size_t b = i;
+        while (i < n && s[i] >= '0' && s[i] <= '9') ++i;
+        return i - b;
+    };
+    if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
+    const size_t intDigits = digits();
+    if (i < n && s[i] == '.') {
+        ++i;
+        const size_t frac = digits();
+        if (frac == 0 && (intDigits == 0 || !trailingPoint)) return false;
+    } else if (intDigits == 0) {
+        return false;
+    }
+    if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+        ++i;
+        if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
+        if (digits() == 0) return false;
+    }
+    return i == n;
+}
+
+// Decimal exponent of the leading significant digit of a number of valid syntax (for telling
+// overflow from underflow).
+long decimalExponent(std::string_view s) {
+    long exp = 0;
+    if (const size_t ePos = s.find_first_of("eE"); ePos != std::string_view::npos) {
+        long long x = 0;
+        std::string_view t = s.substr(ePos + 1);
+        if (!t.empty() && t[0] == '+') t.remove_prefix(1);
+        const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
+        exp = r.ec == std::errc() ? static_cast<long>(std::clamp(x, -100000LL, 100000LL))
+                                  : (!t.empty() && t[0] == '-' ? -100000 : 100000);
+        s = s.substr(0, ePos);
+    }
+    const size_t point = s.find('.');
+    const std::string_view ip = s.substr(0, point), fp = point == std::string_view::npos ? "" : s.substr(point + 1);
+    const size_t firstInt = ip.find_first_of("123456789");
+    if (firstInt != std::string_view::npos) return exp + static_cast<long>(ip.size() - firstInt) - 1;
+    const size_t firstFrac = fp.find_first_of("123456789");
+    return firstFrac == std::string_view::npos ? -100000 : exp - static_cast<long>(firstFrac) - 1;
+}
+
+bool parseNumber(std::string_view s, double* out, bool allowNonFinite, bool trailingPoint) {
     s = trim(s);
     if (s.empty() || s.size() > 64) return false;
-    char buf[72];
-    s.copy(buf, s.size());
-    buf[s.size()] = '\0';
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(buf, &end);
-    if (end != buf + s.size()) return false;
-    if (errno == ERANGE && std::isinf(v)) return false;
-    if (!allowNonFinite && !std::isfinite(v)) return false;
+    double v = 0;
+    if (!decimalSyntax(s, trailingPoint)) {
+        if (!allowNonFinite) return false;
+        const std::string l = toLower(s[0] == '+' || s[0] == '-' ? s.substr(1) : s);
+        if (l != "nan" && l != "inf" && l != "infinity") return false;
+        v = l == "nan" ? NAN : (s[0] == '-' ? -INFINITY : INFINITY);
+        *out = v;
+        return true;
+    }
+    // from_chars: locale-independent (a GUI may set LC_NUMERIC to a decimal comma); no leading '+'.
+    const char* b = s.data() + (s[0] == '+' ? 1 : 0);
+    const char* e = s.data() + s.size();
+    const auto r = std::from_chars(b, e, v, std::chars_format::general);
+    if (r.ec == std::errc::result_out_of_range) {
+        // Underflow to zero is harmless (1e-400 reads as 0); overflow is an error.
+        if (decimalExponent(std::string_view(b, static_cast<size_t>(e - b))) > 0) return false;
+        v = 0;
+    } else if (r.ec != std::errc() || r.ptr != e) {
+        return false;
+    }
+    if (!std::isfinite(v)) return false;
     *out = v;
     return true;
 }
+}  // namespace
+
+bool parseDouble(std::string_view s, double* out, bool allowNonFinite) {
+    return parseNumber(s, out, allowNonFinite, false);
+}
+
+bool parseFortranDouble(std::string_view s, double* out) { return parseNumber(s, out, false, true); }
 
 bool parseLong(std::string_view s, long long* out) {
     s = trim(s);

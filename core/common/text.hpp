@@ -10,9 +10,14 @@ namespace lwb::core {
 /// undefined uncertainty must not be reported as 0).
 inline double sqrtVariance(double v) { return v != v ? v : (v > 0 ? __builtin_sqrt(v) : 0.0); }
 
-/// Parses the whole of `s` (surrounding blanks allowed) as a double. False on empty text,
-/// trailing garbage, or overflow. NaN / inf texts parse only when allowNonFinite.
+/// Parses the whole of `s` (surrounding blanks allowed) as a decimal number:
+/// [+-] (digits [. digits] | . digits) [(e|E) [+-] digits]. False on empty text, trailing
+/// garbage, hex floats, a point or exponent with no digits after it ("261.", "1e": a number
+/// cut short), and overflow. Locale-independent. NaN / inf texts parse only when allowNonFinite.
 bool parseDouble(std::string_view s, double* out, bool allowNonFinite = false);
+/// As parseDouble, but a point with no digits after it is accepted ("26."): the FORTRAN
+/// F-format the ILRS files (CRD, CPF, SINEX) are written in.
+bool parseFortranDouble(std::string_view s, double* out);
 /// Parses the whole of `s` as a base-10 integer. False on garbage or overflow.
 bool parseLong(std::string_view s, long long* out);
 

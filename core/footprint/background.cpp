@@ -17,16 +17,6 @@ const char* noiseClassName(NoiseClass c) {
     return "?";
 }
 
-std::string validate(const BackgroundParams& p) {
-    if (!std::isfinite(p.nightBelow) || !std::isfinite(p.weakBelow) || !std::isfinite(p.strongAbove))
-        return "noise class thresholds must be finite numbers";
-    if (!(p.nightBelow <= p.weakBelow && p.weakBelow <= p.strongAbove))
-        return "noise class thresholds must satisfy night_below <= weak_below <= strong_above";
-    if (!(p.clipSigma > 0.5 && p.clipSigma < 100)) return "background clip sigma must be in (0.5, 100)";
-    if (p.iterations < 0 || p.iterations > 50) return "background clip iterations must be in 0..50";
-    return {};
-}
-
 namespace {
 // Histogram of the ROI (at most 4096 bins, 1 DN wide for 14-bit data) from which the clipped
 // median and MAD are read in O(bins) per clipping pass: no sorting, no per-pass copies.
@@ -44,15 +34,23 @@ Histogram buildHistogram(const cv::Mat& roi) {
     const double span = mx - mn;
     // 1 DN per bin for integer data, at most 4096 bins; float data with a spread under a DN
     // still gets two bins or more (at least a bin per half of the spread).
-    const int bins = span > 0 ? static_cast<int>(std::clamp(std::floor(span) + 1, 2.0, 4096.0)) : 1;
+    int bins = span > 0 ? static_cast<int>(std::clamp(std::floor(span) + 1, 2.0, 4096.0)) : 1;
     h.width = bins > 1 ? static_cast<float>(span / (bins - 1)) : 1.0f;
+    if (!(h.width > 0) || !std::isfinite(h.width)) {  // a spread below the smallest float
+        bins = 1;
+        h.width = 1.0f;
+    }
     h.counts.assign(static_cast<size_t>(bins), 0);
-    const float inv = 1.0f / h.width;
     const size_t last = static_cast<size_t>(bins - 1);
+    // The bin index in double and clamped before the cast: float arithmetic over a spread near
+    // FLT_MAX would give inf, and casting inf is undefined.
+    const double invD = 1.0 / h.width, lastD = static_cast<double>(last);
     for (int y = 0; y < roi.rows; ++y) {
         const float* row = roi.ptr<float>(y);
-        for (int x = 0; x < roi.cols; ++x)
-            ++h.counts[std::min(last, static_cast<size_t>(std::max(0.0f, (row[x] - h.lo) * inv + 0.5f)))];
+        for (int x = 0; x < roi.cols; ++x) {
+            const double b = (static_cast<double>(row[x]) - h.lo) * invD + 0.5;
+            ++h.counts[static_cast<size_t>(std::clamp(b, 0.0, lastD))];
+        }
     }
     return h;
 }
@@ -86,7 +84,10 @@ BackgroundResult estimateBackground(const cv::Mat& roi, const BackgroundParams& 
         }
         madBins = lo;
         const double sigma = std::max(1.4826 * madBins * h.width, 0.5);
-        const int next = std::min(top, static_cast<int>((h.value(medianBin) + params.clipSigma * sigma - h.lo) / h.width));
+        // In double, clamped before the cast: with a bin width far below a DN (float data of
+        // tiny values) the clip level is ~1e12 bins away and would overflow an int.
+        const double nextBin = (h.value(medianBin) + params.clipSigma * sigma - h.lo) / h.width;
+        const int next = nextBin >= top ? top : static_cast<int>(std::max(nextBin, 0.0));
         if (next >= top) break;
         top = next;
     }

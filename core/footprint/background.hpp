@@ -27,7 +27,5 @@ struct BackgroundResult {
 
 /// Estimates the background of a CV_32FC1 ROI. Bright (spot) pixels are clipped iteratively.
 BackgroundResult estimateBackground(const cv::Mat& roi, const BackgroundParams& params = {});
-/// Checks the thresholds; empty string when valid.
-std::string validate(const BackgroundParams& p);
 
 }  // namespace lwb::core::footprint

@@ -32,6 +32,17 @@ struct GaussParams {
     double lmWindowSigmas = 3.0;          ///< LM window half-width (major-axis σ), photon-limited
     double lmWindowSigmasTextured = 1.75; ///< the same on textured ground
     int lmMinHalfWidth = 3;      ///< LM window half-width lower bound (px)
+    /// Textured ground: LM on the differences of neighbouring pixels instead of the pixels. Real
+    /// ground's red spectrum makes its pixel errors correlated; a difference whitens it (close to
+    /// generalised least squares for that correlation).
+    bool differenceFit = true;
+    double lmWindowSigmasDifference = 2.5; ///< LM window for the difference fit (major-axis σ)
+    /// uncertainty_px adds, in quadrature, scale·(ground texture σ of a neighbour difference)·σ/A
+    /// to the LM covariance (which assumes independent pixels): the shift texture gives the
+    /// centre. Scales calibrated for ≈ 63 % coverage (Rayleigh) on the photo simulator.
+    double uncertaintyTextureScale = 2.0;          ///< after the difference fit
+    double uncertaintyTextureScalePixelFit = 4.0;  ///< after the pixel fit (faint texture)
+    double uncertaintyDeadband = 0.1;              ///< texture counts beyond (1 + this)·photon part
     bool robustLoss = true;      ///< textured ground: Cauchy loss instead of least squares
     double robustScale = 1.5;    ///< Cauchy scale in residual σ
 };
@@ -46,8 +57,9 @@ struct GaussModel {
 struct GaussResult {
     SpotFit fit;
     GaussModel model;
-    std::string stage;   ///< stage that produced the result: "wu", "guo" or "lm"
+    std::string stage;   ///< stage that produced the result: "wu", "guo", "moments" or "lm"
     std::string note;    ///< e.g. why LM was not kept
+    bool fallbackStart = false;  ///< the log fit was not peaked; LM started from moments (doubtful)
 };
 
 /// Fits the spot of a CV_32FC1 ROI on the given domain. background/noise from
@@ -55,6 +67,5 @@ struct GaussResult {
 GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double background, double noise,
                      const GaussParams& params = {}, const CameraParams& camera = {});
 
-std::string validate(const GaussParams& p);
 
 }  // namespace lwb::core::footprint

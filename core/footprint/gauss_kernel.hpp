@@ -9,5 +9,16 @@ namespace lwb::core::footprint::kernel {
 void halfNegExp(const double* q, double* out, int n);
 /// Sum of the Cauchy costs c²·ln(1 + z2[i]/c²) for i < n.
 double cauchyCostSum(const double* z2, int n, double c2);
+/// Difference-fit weights: for i < m, dr[i] = res[i + step] − res[i], z = w0[i]·dr², w[i] = w0[i]
+/// (or w0[i]/(1 + z/c2) with the Cauchy loss, c2 > 0). Returns Σ w·dr² in *chi2 and the cost:
+/// Σ z, or Σ c2·ln(1 + z/c2) (in single precision: it only ranks LM trial steps).
+double differenceWeights(const double* res, int m, int step, const double* w0, double c2, double* w, double* dr,
+                         double* chi2);
+/// Weighted Gram matrix of neighbour differences for the difference fit: with
+/// d_u[i] = P[u·n + i + step] − P[u·n + i], gram[u·k + v] = Σ_i w[i]·d_u[i]·d_v[i] (v ≤ u, lower
+/// triangle filled), rhs[u] = Σ_i w[i]·d_u[i]·r[i] and wd[u] = Σ_i w[i]·d_u[i], for i < n − step
+/// and u, v < k ≤ 8.
+void differenceGram(const double* P, int n, int k, int step, const double* w, const double* r, double* gram,
+                    double* rhs, double* wd);
 
 }  // namespace lwb::core::footprint::kernel

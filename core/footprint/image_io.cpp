@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/image_header.hpp"
 #include "core/common/text.hpp"
 
 namespace lwb::core::footprint {
@@ -35,6 +36,11 @@ ImageReadResult readRaw(const std::string& path, const ImageReadParams& p) {
     if (p.rawWidth > 65536 || p.rawHeight > 65536)
         return fail(path, "raw size " + std::to_string(p.rawWidth) + "x" + std::to_string(p.rawHeight) +
                               " is implausibly large");
+    if (p.maxPixels > 0 && static_cast<long long>(p.rawWidth) * p.rawHeight > p.maxPixels)
+        return fail(path, "raw size " + std::to_string(p.rawWidth) + "x" + std::to_string(p.rawHeight) + " = " +
+                              std::to_string(static_cast<long long>(p.rawWidth) * p.rawHeight) +
+                              " pixels is more than the limit of " + std::to_string(p.maxPixels) +
+                              " pixels (raise it with --max-pixels)");
     std::string bytes, err;
     if (!readFileText(path, &bytes, &err)) return fail(path, err.substr(err.find(": ") + 2));
     const size_t want = size_t(p.rawWidth) * size_t(p.rawHeight) * 2;
@@ -63,10 +69,12 @@ bool isFrameFile(const std::string& path) {
 }
 
 ImageReadResult readFrame(const std::string& path, const ImageReadParams& params) {
+    std::string err;
+    long long size = 0;
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0) return fail(path, "no such file");
-    if (S_ISDIR(st.st_mode)) return fail(path, "is a folder, not an image");
-    if (st.st_size == 0) return fail(path, "empty file");
+    if (regularFileProblem(path, &err, &size)) return fail(path, err.substr(std::min(err.size(), path.size() + 2)));
+    if (size == 0) return fail(path, "empty file");
     const std::string ext = extensionOf(path);
     ImageReadResult r;
     if (isRaw(ext)) {
@@ -75,9 +83,18 @@ ImageReadResult readFrame(const std::string& path, const ImageReadParams& params
     } else {
         cv::Mat m;
         try {
-            m = cv::imread(path, cv::IMREAD_UNCHANGED);
+            std::string bytes;
+            if (!readFileText(path, &bytes, &err)) return fail(path, err.substr(std::min(err.size(), path.size() + 2)));
+            if (const std::string why = imageSizeProblem(bytes, path, params.maxPixels); !why.empty()) {
+                r.error = why;
+                return r;
+            }
+            const cv::Mat buf(1, static_cast<int>(std::min<size_t>(bytes.size(), INT32_MAX)), CV_8U, bytes.data());
+            m = cv::imdecode(buf, cv::IMREAD_UNCHANGED);
         } catch (const cv::Exception& e) {
             return fail(path, std::string("cannot decode image: ") + e.what());
+        } catch (const std::bad_alloc&) {
+            return fail(path, "out of memory decoding the image");
         }
         if (m.empty()) return fail(path, "not a readable image (unknown format, truncated or corrupt)");
         if (m.channels() != 1)

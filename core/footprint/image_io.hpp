@@ -2,6 +2,8 @@
 // Footprint frame input: 16-bit PNG / TIFF / PGM through OpenCV, and raw little-endian
 // 16-bit with the size given. 14-bit data (0..16383) is taken as it is, never rescaled.
 #include <opencv2/core.hpp>
+
+#include "core/common/image_header.hpp"
 #include <string>
 #include <vector>
 
@@ -11,6 +13,7 @@ struct ImageReadParams {
     int rawWidth = 0;       ///< width of .raw/.bin frames (px); required for them
     int rawHeight = 0;      ///< height of .raw/.bin frames (px)
     bool rawBigEndian = false;  ///< raw byte order (GF-7 products are little-endian)
+    long long maxPixels = kMaxImagePixels;  ///< larger images are refused before decoding (0 = no limit)
 };
 
 struct ImageReadResult {

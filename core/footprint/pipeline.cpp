@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/common/schema.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/crlb.hpp"
 
@@ -25,15 +26,132 @@ bool parseMethod(const std::string& s, Method* m) {
     return true;
 }
 
-std::string validate(const FootprintParams& p) {
-    for (const std::string& e : {validate(p.roi), validate(p.background), validate(p.segment), validate(p.tefm),
-                                 validate(p.gauss), validate(p.verdict)})
-        if (!e.empty()) return e;
-    if (!(p.camera.gainEPerDn > 0 && p.camera.gainEPerDn < 1e4)) return "camera gain must be in (0, 1e4) e-/DN";
-    if (!(p.camera.readNoiseE >= 0 && p.camera.readNoiseE < 1e5)) return "read noise must be in [0, 1e5) e-";
-    if (!(p.camera.saturationDn > 0 && p.camera.saturationDn <= 1e9)) return "saturation level must be in (0, 1e9] DN";
-    return {};
+const Schema<FootprintParams>& footprintSchema() {
+    static const Schema<FootprintParams> schema = [] {
+        using F = FootprintParams;
+        using I = Interval;
+        Schema<F> s("footprint");
+        s.choice("method", LWB_FIELD(F, method), {"gcm", "tefm", "gauss"},
+                 "centre method: gray centroid, TEFM (paper 001) or the Gaussian fit (paper 000 + Guo + LM)");
+        s.text("preset", LWB_FIELD(F, preset), "name of the verdict criteria the verdict values came from (wu2021, yao2021)");
+        s.integer("roi.size", LWB_FIELD(F, roi.size), "px", {4, 1024}, {16, 64}, "ROI side N cut around the spot");
+        s.real("roi.blob_sigma", LWB_FIELD(F, roi.blobSigma), "px", {0.3, 50, true, true}, {1, 6},
+               "spot scale of the blob search's matched filter (frames without --center)");
+        s.real("background.night_below", LWB_FIELD(F, background.nightBelow), "DN", {-1e9, 1e9}, {0, 3000},
+               "background below this is a night shot (paper: 300-500 DN)");
+        s.real("background.weak_below", LWB_FIELD(F, background.weakBelow), "DN", {-1e9, 1e9}, {2000, 6000},
+               "day background below this is weak noise (paper 000: 4000 DN)");
+        s.real("background.strong_above", LWB_FIELD(F, background.strongAbove), "DN", {-1e9, 1e9}, {2000, 8000},
+               "day background above this is strong noise (paper 000: 4500 DN)");
+        s.real("background.clip_sigma", LWB_FIELD(F, background.clipSigma), "", {0.5, 100, true, true}, {1.5, 5},
+               "upper clip, in robust sigma, that removes spot pixels from the background");
+        s.integer("background.iterations", LWB_FIELD(F, background.iterations), "", {0, 50}, {0, 10}, "clipping passes");
+        s.real("segment.threshold_factor", LWB_FIELD(F, segment.thresholdFactor), "", {0, 1, true, true}, {0.05, 0.5},
+               "threshold = background + factor x (peak - background); 1/e^2 = 0.1353 (paper 001 eq. 3)");
+        s.integer("segment.peak_smooth", LWB_FIELD(F, segment.peakSmooth), "px", {1, 9}, {1, 9},
+                  "odd box size smoothing the ROI before the peak is taken; 1 = raw");
+        s.boolean("segment.fill_holes", LWB_FIELD(F, segment.fillHoles), "dark pixels enclosed by the domain belong to it");
+        s.integer("segment.opening_radius", LWB_FIELD(F, segment.openingRadius), "px", {0, 10}, {0, 5},
+                  "cut features narrower than 2r+1 px (roads) off the domain; 0 = off");
+        s.real("segment.min_peak_snr", LWB_FIELD(F, segment.minPeakSnr), "", {0, 1e6, false, true}, {2, 20},
+               "(peak - background) / noise below this: no spot");
+        s.integer("segment.min_pixels", LWB_FIELD(F, segment.minPixels), "px", {1, 100000}, {1, 50},
+                  "a domain smaller than this: no spot");
+        s.real("segment.local_snr_floor", LWB_FIELD(F, segment.localSnrFloor), "", {0, 1, true, false}, {0.5, 1},
+               "peaks from this x min_peak_snr up get a second look against a ring around them (kept as faint, doubtful)");
+        s.real("segment.ring_inner_px", LWB_FIELD(F, segment.ringInnerPx), "px", {1, 100}, {4, 12}, "inner radius of that ring");
+        s.real("segment.ring_outer_px", LWB_FIELD(F, segment.ringOuterPx), "px", {1, 100}, {6, 16}, "outer radius of that ring");
+        s.real("segment.second_spot_min_separation_px", LWB_FIELD(F, segment.secondSpotMinSeparation), "px", {1, 1000, false, true},
+               {2, 12}, "two peaks at least this far apart are two spots (the second-spot verdict)");
+        s.boolean("gcm.subtract_background", LWB_FIELD(F, gcm.subtractBackground),
+                  "subtract the background before the gray centroid (the paper weights raw DN)");
+        s.real("tefm.background_offset", LWB_FIELD(F, tefm.backgroundOffset), "DN", {0, 1e6, false, true}, {0, 5000},
+               "step 1 ground offset subtracted from the chip (paper 001: 2000 DN); null = the estimated background")
+            .specials = {{NAN, "estimated"}};
+        s.real("tefm.threshold_factor", LWB_FIELD(F, tefm.thresholdFactor), "", {0, 1, true, true}, {0.05, 0.5},
+               "step 2: T = factor x max(I - offset); 1/e^2");
+        s.integer("tefm.erosion_size", LWB_FIELD(F, tefm.erosionSize), "px", {1, 15}, {1, 9},
+                  "step 3: odd side of the erosion neighbourhood D1; 1 = none");
+        s.boolean("tefm.centroid_on_eroded", LWB_FIELD(F, tefm.centroidOnEroded),
+                  "step 5 weights: the eroded image (the paper's order) instead of the thresholded one");
+        s.boolean("gauss.xy_term", LWB_FIELD(F, gauss.xyTerm), "add the f.xy column (tilt); false = the paper's system");
+        s.integer("gauss.guo_iterations", LWB_FIELD(F, gauss.guoIterations), "", {0, 50}, {0, 6},
+                  "model-weighted passes after the first solve (0 = paper)");
+        s.boolean("gauss.lm", LWB_FIELD(F, gauss.lmRefine), "Levenberg-Marquardt refinement (false = paper / Guo only)");
+        s.integer("gauss.lm_max_iterations", LWB_FIELD(F, gauss.lmMaxIterations), "", {1, 500}, {5, 50}, "LM iteration cap");
+        s.real("gauss.lm_tolerance_px", LWB_FIELD(F, gauss.lmTolerancePx), "px", {0, 1, true, true}, {1e-4, 0.01},
+               "LM stops when a step moves the centre less than this");
+        s.real("gauss.lm_max_move_px", LWB_FIELD(F, gauss.lmMaxMovePx), "px", {0, 100, true, false}, {0.5, 6},
+               "LM results further than this from the log fit are not kept");
+        s.real("gauss.lm_max_shape_change", LWB_FIELD(F, gauss.lmMaxShapeChange), "", {1, 100, true, false}, {1.2, 4},
+               "nor those whose major sigma or sigma1 x sigma2 changed by more than this factor");
+        s.real("gauss.lm_window_sigmas", LWB_FIELD(F, gauss.lmWindowSigmas), "sigma", {1, 20}, {1.5, 5},
+               "LM window half-width in major-axis sigma, photon-limited ground");
+        s.real("gauss.lm_window_sigmas_textured", LWB_FIELD(F, gauss.lmWindowSigmasTextured), "sigma", {1, 20}, {1, 4},
+               "LM window half-width in major-axis sigma, textured ground");
+        s.real("gauss.textured_ratio", LWB_FIELD(F, gauss.texturedRatio), "", {1, 1000}, {1, 4},
+               "ground counts as textured when its sigma exceeds the photon + read sigma by this factor");
+        s.integer("gauss.lm_min_half_width", LWB_FIELD(F, gauss.lmMinHalfWidth), "px", {2, 200}, {2, 8}, "LM window half-width lower bound");
+        s.boolean("gauss.difference_fit", LWB_FIELD(F, gauss.differenceFit),
+                  "textured ground: LM on neighbouring-pixel differences (whitens real ground's red spectrum)");
+        s.real("gauss.lm_window_sigmas_difference", LWB_FIELD(F, gauss.lmWindowSigmasDifference), "sigma", {1, 20}, {1.5, 4},
+               "LM window half-width in major-axis sigma for the difference fit");
+        s.real("gauss.uncertainty_texture_scale", LWB_FIELD(F, gauss.uncertaintyTextureScale), "", {0, 100}, {0, 6},
+               "uncertainty_px: texture shift scale after the difference fit (calibrated for 63 % coverage)");
+        s.real("gauss.uncertainty_texture_scale_pixel_fit", LWB_FIELD(F, gauss.uncertaintyTextureScalePixelFit), "", {0, 100},
+               {0, 8}, "the same after the pixel fit");
+        s.real("gauss.uncertainty_deadband", LWB_FIELD(F, gauss.uncertaintyDeadband), "", {0, 10}, {0, 1},
+               "texture counts beyond (1 + this) x the photon part");
+        s.boolean("gauss.noise_weights", LWB_FIELD(F, gauss.noiseWeights), "LM weights 1 / (photon + read + ground-texture variance)");
+        s.boolean("gauss.robust_loss", LWB_FIELD(F, gauss.robustLoss), "textured ground: Cauchy loss instead of least squares");
+        s.real("gauss.robust_scale", LWB_FIELD(F, gauss.robustScale), "sigma", {0.1, 100, true, true}, {0.5, 4},
+               "Cauchy scale in residual sigma");
+        s.range("verdict.axis_ratio", LWB_FIELD(F, verdict.axisRatio.enabled), LWB_FIELD(F, verdict.axisRatio.lo),
+                LWB_FIELD(F, verdict.axisRatio.hi), "", {0, 1000}, {1, 3},
+                "good spots have C = sigma_x / sigma_y in this range (paper 000: (1, 1.5)); null = not checked");
+        s.range("verdict.major_axis_px", LWB_FIELD(F, verdict.majorAxisPx.enabled), LWB_FIELD(F, verdict.majorAxisPx.lo),
+                LWB_FIELD(F, verdict.majorAxisPx.hi), "px", {0, 10000}, {0, 40},
+                "full major axis at 1/e^2 (paper 000: (10, 18))");
+        s.range("verdict.tilt_deg", LWB_FIELD(F, verdict.tiltDeg.enabled), LWB_FIELD(F, verdict.tiltDeg.lo),
+                LWB_FIELD(F, verdict.tiltDeg.hi), "deg", {-90, 90}, {-90, 90}, "tilt of the x-near axis (paper 000: (-30, 30))");
+        s.range("verdict.eccentricity", LWB_FIELD(F, verdict.eccentricity.enabled), LWB_FIELD(F, verdict.eccentricity.lo),
+                LWB_FIELD(F, verdict.eccentricity.hi), "", {0, 1}, {0, 1}, "spot eccentricity (paper 001: 0.2-0.8)");
+        s.real(
+             "verdict.mse_max", [](const F& p) { return p.verdict.mseEnabled ? p.verdict.mseMax : NAN; },
+             [](F& p, double v) {
+                 p.verdict.mseEnabled = !std::isnan(v);
+                 if (!std::isnan(v)) p.verdict.mseMax = v;
+             },
+             "", {0, 1e6, true, false}, {1e-7, 1e-3}, "fit residual limit (paper 000 eq. 8, f normalised to unit sum); null = off")
+            .specials = {{NAN, "off"}};
+        s.boolean("verdict.check_edge", LWB_FIELD(F, verdict.checkEdge), "the spot's 1/e^2 ellipse must lie inside the ROI");
+        s.real("verdict.edge_extent", LWB_FIELD(F, verdict.edgeExtent), "", {0.5, 5}, {0.8, 2},
+               "the edge check uses the 1/e^2 ellipse times this (1.25: the 2.5 sigma ellipse)");
+        s.boolean("verdict.check_saturation", LWB_FIELD(F, verdict.checkSaturation), "saturated spot pixels make a shot doubtful");
+        s.integer("verdict.saturation_max_pixels", LWB_FIELD(F, verdict.saturationMaxPixels), "px", {0, 1e6}, {0, 20},
+                  "more saturated domain pixels than this: doubtful");
+        s.boolean("verdict.check_second_spot", LWB_FIELD(F, verdict.checkSecondSpot), "a second separate peak makes a shot doubtful");
+        s.real("verdict.second_spot_fraction", LWB_FIELD(F, verdict.secondSpotFraction), "", {0, 10, true, false}, {0.1, 1},
+               "a separate peak this strong (of the main amplitude): doubtful");
+        s.real("camera.gain_e_per_dn", LWB_FIELD(F, camera.gainEPerDn), "e-/DN", {0, 1e4, true, true}, {0.5, 10},
+               "camera gain, for photon noise weights and the Cramer-Rao bound");
+        s.real("camera.read_noise_e", LWB_FIELD(F, camera.readNoiseE), "e-", {0, 1e5, false, true}, {0, 100}, "read noise (rms)");
+        s.real("camera.saturation_dn", LWB_FIELD(F, camera.saturationDn), "DN", {0, 1e9, true, false}, {4095, 65535},
+               "full scale (16383 for 14-bit data)");
+        s.rule([](const F& p) -> std::string {
+            if (!(p.background.nightBelow <= p.background.weakBelow && p.background.weakBelow <= p.background.strongAbove))
+                return "noise class thresholds must satisfy background.night_below <= weak_below <= strong_above";
+            if (p.segment.peakSmooth % 2 == 0) return "segment.peak_smooth must be odd (1, 3, 5, 7 or 9 px)";
+            if (p.tefm.erosionSize % 2 == 0) return "tefm.erosion_size must be odd (1..15 px)";
+            if (!(p.segment.ringInnerPx < p.segment.ringOuterPx)) return "segment.ring_inner_px must be below ring_outer_px";
+            return {};
+        });
+        return s;
+    }();
+    return schema;
 }
+
+std::string validate(const FootprintParams& p) { return footprintSchema().validate(p); }
 
 bool applyPreset(const std::string& name, FootprintParams* p) {
     if (!verdictPreset(name, &p->verdict)) return false;
@@ -41,209 +159,23 @@ bool applyPreset(const std::string& name, FootprintParams* p) {
     return true;
 }
 
-namespace {
-bool readRange(const Json& obj, const std::string& key, Range* r, std::string* error) {
-    const Json* v = obj.find(key);
-    if (!v) return true;
-    if (v->isNull()) {
-        r->enabled = false;
-        return true;
-    }
-    if (!v->isArray() || v->items().size() != 2 || !v->items()[0].isNumber() || !v->items()[1].isNumber() ||
-        !std::isfinite(v->items()[0].asNumber()) || !std::isfinite(v->items()[1].asNumber())) {
-        *error = "\"" + key + "\" must be [low, high] with finite numbers, or null to switch it off";
-        return false;
-    }
-    *r = {true, v->items()[0].asNumber(), v->items()[1].asNumber()};
-    return true;
-}
-Json rangeJson(const Range& r) {
-    if (!r.enabled) return Json();
-    Json a = Json::array();
-    a.push(r.lo);
-    a.push(r.hi);
-    return a;
-}
-bool section(const Json& j, const char* key, const Json** out, std::string* error) {
-    *out = j.find(key);
-    if (*out && !(*out)->isObject()) {
-        *error = std::string("\"") + key + "\" must be an object";
-        return false;
-    }
-    return true;
-}
-}  // namespace
-
-bool footprintParamsFromJson(const Json& j, FootprintParams* out, std::string* error) {
-    if (!j.isObject()) {
-        *error = "config must be a JSON object";
-        return false;
-    }
+bool footprintParamsFromJson(const Json& j, FootprintParams* out, std::string* error, const JsonParseResult* doc) {
     FootprintParams p = *out;
-    std::string s;
-    if (const Json* m = j.find("method")) {
-        if (!m->isString() || !parseMethod(m->asString(), &p.method)) {
-            *error = "\"method\" must be \"gauss\", \"tefm\" or \"gcm\"";
+    // A hand-written config may name only a preset: its verdict criteria come first, and any
+    // verdict value the file gives overrides them.
+    if (j.is_object() && j.contains("preset")) {
+        const Json& pr = j["preset"];
+        if (!pr.is_string() || !applyPreset(pr.get<std::string>(), &p)) {
+            *error = (doc ? doc->where({"preset"}) : std::string()) + "footprint.preset must be wu2021 or yao2021";
             return false;
         }
     }
-    if (const Json* pr = j.find("preset")) {
-        if (!pr->isString() || !applyPreset(pr->asString(), &p)) {
-            *error = "\"preset\" must be one of: wu2021, yao2021";
-            return false;
-        }
-    }
-    const Json* sec = nullptr;
-    auto fail = [&](const std::string& where) {
-        *error = where + ": " + *error;
-        return false;
-    };
-    if (!section(j, "roi", &sec, error)) return false;
-    if (sec && !(jsonInt(*sec, "size", &p.roi.size, error) && jsonNumber(*sec, "blob_sigma", &p.roi.blobSigma, error)))
-        return fail("roi");
-    if (sec && sec->find("size")) p.roi.sizeExplicit = true;
-    if (!section(j, "background", &sec, error)) return false;
-    if (sec && !(jsonNumber(*sec, "night_below", &p.background.nightBelow, error) &&
-                 jsonNumber(*sec, "weak_below", &p.background.weakBelow, error) &&
-                 jsonNumber(*sec, "strong_above", &p.background.strongAbove, error) &&
-                 jsonNumber(*sec, "clip_sigma", &p.background.clipSigma, error) &&
-                 jsonInt(*sec, "iterations", &p.background.iterations, error)))
-        return fail("background");
-    if (!section(j, "segment", &sec, error)) return false;
-    if (sec && !(jsonNumber(*sec, "threshold_factor", &p.segment.thresholdFactor, error) &&
-                 jsonInt(*sec, "peak_smooth", &p.segment.peakSmooth, error) &&
-                 jsonBool(*sec, "fill_holes", &p.segment.fillHoles, error) &&
-                 jsonInt(*sec, "opening_radius", &p.segment.openingRadius, error) &&
-                 jsonNumber(*sec, "min_peak_snr", &p.segment.minPeakSnr, error) &&
-                 jsonInt(*sec, "min_pixels", &p.segment.minPixels, error)))
-        return fail("segment");
-    if (!section(j, "gcm", &sec, error)) return false;
-    if (sec && !jsonBool(*sec, "subtract_background", &p.gcm.subtractBackground, error)) return fail("gcm");
-    if (!section(j, "tefm", &sec, error)) return false;
-    if (sec) {
-        if (const Json* off = sec->find("background_offset"); off && off->isNull())
-            p.tefm.backgroundOffset = NAN;
-        else if (!jsonNumber(*sec, "background_offset", &p.tefm.backgroundOffset, error))
-            return fail("tefm");
-        if (!(jsonNumber(*sec, "threshold_factor", &p.tefm.thresholdFactor, error) &&
-              jsonInt(*sec, "erosion_size", &p.tefm.erosionSize, error) &&
-              jsonBool(*sec, "centroid_on_eroded", &p.tefm.centroidOnEroded, error)))
-            return fail("tefm");
-    }
-    if (!section(j, "gauss", &sec, error)) return false;
-    if (sec && !(jsonBool(*sec, "xy_term", &p.gauss.xyTerm, error) &&
-                 jsonInt(*sec, "guo_iterations", &p.gauss.guoIterations, error) &&
-                 jsonBool(*sec, "lm", &p.gauss.lmRefine, error) &&
-                 jsonInt(*sec, "lm_max_iterations", &p.gauss.lmMaxIterations, error) &&
-                 jsonNumber(*sec, "lm_tolerance_px", &p.gauss.lmTolerancePx, error) &&
-                 jsonNumber(*sec, "lm_max_move_px", &p.gauss.lmMaxMovePx, error) &&
-                 jsonNumber(*sec, "lm_max_shape_change", &p.gauss.lmMaxShapeChange, error) &&
-                 jsonNumber(*sec, "lm_window_sigmas", &p.gauss.lmWindowSigmas, error) &&
-                 jsonNumber(*sec, "lm_window_sigmas_textured", &p.gauss.lmWindowSigmasTextured, error) &&
-                 jsonNumber(*sec, "textured_ratio", &p.gauss.texturedRatio, error) &&
-                 jsonInt(*sec, "lm_min_half_width", &p.gauss.lmMinHalfWidth, error) &&
-                 jsonBool(*sec, "noise_weights", &p.gauss.noiseWeights, error) &&
-                 jsonBool(*sec, "robust_loss", &p.gauss.robustLoss, error) &&
-                 jsonNumber(*sec, "robust_scale", &p.gauss.robustScale, error)))
-        return fail("gauss");
-    if (!section(j, "verdict", &sec, error)) return false;
-    if (sec) {
-        VerdictParams& v = p.verdict;
-        if (!(readRange(*sec, "axis_ratio", &v.axisRatio, error) && readRange(*sec, "major_axis_px", &v.majorAxisPx, error) &&
-              readRange(*sec, "tilt_deg", &v.tiltDeg, error) && readRange(*sec, "eccentricity", &v.eccentricity, error) &&
-              jsonBool(*sec, "check_edge", &v.checkEdge, error) &&
-              jsonBool(*sec, "check_saturation", &v.checkSaturation, error) &&
-              jsonInt(*sec, "saturation_max_pixels", &v.saturationMaxPixels, error) &&
-              jsonBool(*sec, "check_second_spot", &v.checkSecondSpot, error) &&
-              jsonNumber(*sec, "second_spot_fraction", &v.secondSpotFraction, error)))
-            return fail("verdict");
-        if (const Json* mse = sec->find("mse_max"); mse && mse->isNull())
-            v.mseEnabled = false;
-        else if (mse && !jsonNumber(*sec, "mse_max", &v.mseMax, error))
-            return fail("verdict");
-        else if (mse)
-            v.mseEnabled = true;
-    }
-    if (!section(j, "camera", &sec, error)) return false;
-    if (sec && !(jsonNumber(*sec, "gain_e_per_dn", &p.camera.gainEPerDn, error) &&
-                 jsonNumber(*sec, "read_noise_e", &p.camera.readNoiseE, error) &&
-                 jsonNumber(*sec, "saturation_dn", &p.camera.saturationDn, error)))
-        return fail("camera");
-    if (const std::string e = validate(p); !e.empty()) {
-        *error = e;
-        return false;
-    }
+    if (!footprintSchema().fromJson(j, &p, error, doc)) return false;
     *out = p;
     return true;
 }
 
-Json footprintParamsToJson(const FootprintParams& p) {
-    Json j = Json::object();
-    j.set("method", methodName(p.method));
-    j.set("preset", p.preset);
-    Json roi = Json::object();
-    roi.set("size", p.roi.size);
-    roi.set("blob_sigma", p.roi.blobSigma);
-    j.set("roi", roi);
-    Json bg = Json::object();
-    bg.set("night_below", p.background.nightBelow);
-    bg.set("weak_below", p.background.weakBelow);
-    bg.set("strong_above", p.background.strongAbove);
-    bg.set("clip_sigma", p.background.clipSigma);
-    bg.set("iterations", p.background.iterations);
-    j.set("background", bg);
-    Json seg = Json::object();
-    seg.set("threshold_factor", p.segment.thresholdFactor);
-    seg.set("peak_smooth", p.segment.peakSmooth);
-    seg.set("fill_holes", p.segment.fillHoles);
-    seg.set("opening_radius", p.segment.openingRadius);
-    seg.set("min_peak_snr", p.segment.minPeakSnr);
-    seg.set("min_pixels", p.segment.minPixels);
-    j.set("segment", seg);
-    Json gcm = Json::object();
-    gcm.set("subtract_background", p.gcm.subtractBackground);
-    j.set("gcm", gcm);
-    Json tefm = Json::object();
-    tefm.set("background_offset", std::isnan(p.tefm.backgroundOffset) ? Json() : Json(p.tefm.backgroundOffset));
-    tefm.set("threshold_factor", p.tefm.thresholdFactor);
-    tefm.set("erosion_size", p.tefm.erosionSize);
-    tefm.set("centroid_on_eroded", p.tefm.centroidOnEroded);
-    j.set("tefm", tefm);
-    Json g = Json::object();
-    g.set("xy_term", p.gauss.xyTerm);
-    g.set("guo_iterations", p.gauss.guoIterations);
-    g.set("lm", p.gauss.lmRefine);
-    g.set("lm_max_iterations", p.gauss.lmMaxIterations);
-    g.set("lm_tolerance_px", p.gauss.lmTolerancePx);
-    g.set("lm_max_move_px", p.gauss.lmMaxMovePx);
-    g.set("lm_max_shape_change", p.gauss.lmMaxShapeChange);
-    g.set("lm_window_sigmas", p.gauss.lmWindowSigmas);
-    g.set("lm_window_sigmas_textured", p.gauss.lmWindowSigmasTextured);
-    g.set("textured_ratio", p.gauss.texturedRatio);
-    g.set("lm_min_half_width", p.gauss.lmMinHalfWidth);
-    g.set("noise_weights", p.gauss.noiseWeights);
-    g.set("robust_loss", p.gauss.robustLoss);
-    g.set("robust_scale", p.gauss.robustScale);
-    j.set("gauss", g);
-    Json v = Json::object();
-    v.set("axis_ratio", rangeJson(p.verdict.axisRatio));
-    v.set("major_axis_px", rangeJson(p.verdict.majorAxisPx));
-    v.set("tilt_deg", rangeJson(p.verdict.tiltDeg));
-    v.set("eccentricity", rangeJson(p.verdict.eccentricity));
-    v.set("mse_max", p.verdict.mseEnabled ? Json(p.verdict.mseMax) : Json());
-    v.set("check_edge", p.verdict.checkEdge);
-    v.set("check_saturation", p.verdict.checkSaturation);
-    v.set("saturation_max_pixels", p.verdict.saturationMaxPixels);
-    v.set("check_second_spot", p.verdict.checkSecondSpot);
-    v.set("second_spot_fraction", p.verdict.secondSpotFraction);
-    j.set("verdict", v);
-    Json cam = Json::object();
-    cam.set("gain_e_per_dn", p.camera.gainEPerDn);
-    cam.set("read_noise_e", p.camera.readNoiseE);
-    cam.set("saturation_dn", p.camera.saturationDn);
-    j.set("camera", cam);
-    return j;
-}
+Json footprintParamsToJson(const FootprintParams& p) { return footprintSchema().toJson(p); }
 
 FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
     FootprintResult r;
@@ -272,6 +204,7 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
     const double bg = r.background.level, noise = r.background.noise;
     r.domain = segmentSpot(roi, bg, noise, params.camera.saturationDn, params.segment);
     r.ok = true;
+    std::string fallbackNote;  // the Gaussian fit had to start from moments: doubtful
     if (r.domain.found) {
         switch (params.method) {
             case Method::Gcm: r.fit = fitGcm(roi, bg, noise, params.gcm); break;
@@ -284,6 +217,7 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
                 r.fit = g.fit;
                 r.gaussModel = g.model;
                 r.gaussStage = g.stage;
+                fallbackNote = g.fallbackStart ? g.note : std::string();
                 break;
             }
         }
@@ -300,6 +234,8 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
     const Judgement j = judge(r.fit, r.domain, roi.cols, roi.rows, params.verdict);
     r.verdict = j.verdict;
     r.reasons = j.reasons;
+    if (!fallbackNote.empty() && r.verdict == Verdict::Good) r.verdict = Verdict::Doubtful;
+    if (!fallbackNote.empty() && r.verdict == Verdict::Doubtful) r.reasons.push_back(fallbackNote);
     return r;
 }
 

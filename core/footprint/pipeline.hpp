@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/common/json.hpp"
+#include "core/common/schema.hpp"
 #include "core/footprint/background.hpp"
 #include "core/footprint/gauss_fit.hpp"
 #include "core/footprint/gcm.hpp"
@@ -34,13 +35,17 @@ struct FootprintParams {
 };
 
 /// Empty when every parameter is valid, else what is wrong.
+/// The parameter table (core/common/schema.hpp): every field's key, unit, range, UI range and
+/// doc, declared once. JSON configs, sessions, the CLI's --set and the GUI panel use it.
+const Schema<FootprintParams>& footprintSchema();
 std::string validate(const FootprintParams& p);
 /// Loads the named verdict preset into p (and records the name). False when unknown.
 bool applyPreset(const std::string& name, FootprintParams* p);
 
-/// Reads a JSON config over p (missing keys keep their values). False with *error naming the
-/// key or the position when anything is malformed, non-finite or out of range.
-bool footprintParamsFromJson(const Json& j, FootprintParams* p, std::string* error);
+/// Reads a JSON config over p (missing keys keep their values; a "preset" is applied before the
+/// verdict values). False with *error naming the key, and its line and column when `doc` is
+/// given, when anything is unknown, malformed, non-finite or out of range.
+bool footprintParamsFromJson(const Json& j, FootprintParams* p, std::string* error, const JsonParseResult* doc = nullptr);
 Json footprintParamsToJson(const FootprintParams& p);
 
 struct FootprintResult {

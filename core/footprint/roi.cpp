@@ -1,5 +1,7 @@
 #include "core/footprint/roi.hpp"
 
+#include "core/footprint/pipeline.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
@@ -7,10 +9,10 @@
 namespace lwb::core::footprint {
 
 std::string validate(const RoiParams& p) {
-    if (p.size < 4 || p.size > 1024) return "ROI size must be within 4..1024 px";
-    if (p.hasCenter && (!std::isfinite(p.centerX) || !std::isfinite(p.centerY)))
-        return "ROI centre must be finite numbers";
-    if (!(p.blobSigma > 0.3 && p.blobSigma < 50)) return "blob search sigma must be in (0.3, 50) px";
+    FootprintParams f;  // the ranges are the footprint schema's roi rows
+    f.roi = p;
+    if (std::string e = footprintSchema().validate(f, "roi."); !e.empty()) return e;
+    if (p.hasCenter && (!std::isfinite(p.centerX) || !std::isfinite(p.centerY))) return "ROI centre must be finite numbers";
     return {};
 }
 

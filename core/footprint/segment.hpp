@@ -14,7 +14,13 @@ struct SegmentParams {
     int peakSmooth = 3;        ///< box size (odd, px) smoothing the ROI before the peak is taken; 1 = raw
     bool fillHoles = true;     ///< close the domain: dark pixels enclosed by it belong to it
     int openingRadius = 2;     ///< cut features narrower than 2r+1 px (roads) off the domain; 0 = off
-    double minPeakSnr = 6.0;   ///< (peak − bg)/noise below this: no spot
+    double minPeakSnr = 6.0;   ///< (peak − bg)/noise below this: no spot (unless the local look passes)
+    /// Peaks from localSnrFloor·minPeakSnr up get a second look against a ring (ringInnerPx to
+    /// ringOuterPx around the peak): one that stands localSnrFloor·minPeakSnr ring-σ above the
+    /// ring's median too is kept as a faint spot (doubtful), for ground whose large bright and
+    /// dark areas inflate the ROI-wide σ.
+    double localSnrFloor = 0.8;
+    double ringInnerPx = 8, ringOuterPx = 12;
     int minPixels = 6;         ///< a domain smaller than this: no spot
     double secondSpotMinSeparation = 4.0;  ///< px between two peaks to call them two spots
 };
@@ -26,6 +32,8 @@ struct SpotDomain {
     int peakX = 0, peakY = 0;     ///< brightest (smoothed) pixel
     double peak = 0;              ///< smoothed peak value (DN)
     double peakSnr = 0;           ///< (peak − bg)/noise
+    double localPeakSnr = 0;      ///< the ring look's SNR, when the ROI-wide one was too low
+    bool faint = false;           ///< found by the ring look only: the verdict marks it doubtful
     double threshold = 0;         ///< DN
     std::vector<int> pixels;      ///< domain pixels, index y·width + x
     std::vector<unsigned char> mask;  ///< width·height, 1 inside the domain
@@ -39,6 +47,5 @@ struct SpotDomain {
 SpotDomain segmentSpot(const cv::Mat& roi, double background, double noise, double saturationDn,
                        const SegmentParams& params);
 
-std::string validate(const SegmentParams& p);
 
 }  // namespace lwb::core::footprint

@@ -8,16 +8,6 @@
 
 namespace lwb::core::footprint {
 
-std::string validate(const TefmParams& p) {
-    if (!std::isnan(p.backgroundOffset) && !(std::isfinite(p.backgroundOffset) && p.backgroundOffset >= 0 &&
-                                             p.backgroundOffset < 1e6))
-        return "TEFM background offset must be empty (estimated) or a number in [0, 1e6) DN";
-    if (!(p.thresholdFactor > 0 && p.thresholdFactor < 1)) return "TEFM threshold factor must be in (0, 1)";
-    if (p.erosionSize < 1 || p.erosionSize > 15 || p.erosionSize % 2 == 0)
-        return "TEFM erosion size must be odd, 1..15 px";
-    return {};
-}
-
 TefmResult fitTefm(const cv::Mat& roi, double background, double noise, const TefmParams& params) {
     TefmResult r;
     const double offset = std::isnan(params.backgroundOffset) ? background : params.backgroundOffset;

@@ -30,6 +30,5 @@ struct TefmResult {
 /// Runs TEFM on a CV_32FC1 ROI. background/noise: the ROI's estimated background level and σ.
 TefmResult fitTefm(const cv::Mat& roi, double background, double noise, const TefmParams& params = {});
 
-std::string validate(const TefmParams& p);
 
 }  // namespace lwb::core::footprint

@@ -38,6 +38,12 @@ bool monthOf(const std::string& time, std::string* month) {
     return true;
 }
 
+namespace {
+// Centroids are pixel coordinates of a camera frame (550 px for GF-7); beyond a million pixels
+// a value is a damaged field, and squaring it in the statistics would overflow.
+constexpr double kMaxCentroidPx = 1e6;
+}  // namespace
+
 bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, std::string* error) {
     const CsvReadResult csv = readCsv(path);
     if (!csv.ok) {
@@ -61,7 +67,13 @@ bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, 
             return false;
         }
         if (!parseDouble(row[cx], &r.x) || !parseDouble(row[cy], &r.y)) {
-            *error = where + "x and y must be finite numbers";
+            *error = where + "x and y must be finite numbers, not \"" + printableExcerpt(row[cx]) + "\", \"" +
+                     printableExcerpt(row[cy]) + "\"";
+            return false;
+        }
+        if (std::fabs(r.x) > kMaxCentroidPx || std::fabs(r.y) > kMaxCentroidPx) {
+            *error = where + "x = " + formatShortest(r.x) + ", y = " + formatShortest(r.y) +
+                     " is not a plausible spot centroid (|x|, |y| <= 1e6 px)";
             return false;
         }
         r.beam = std::string(trim(row[cb]));
@@ -79,12 +91,22 @@ bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, 
     return true;
 }
 
-std::string validate(const TrendParams& p) {
-    if (!(p.arcsecPerPx > 0 && p.arcsecPerPx < 1e6)) return "arcsec per pixel must be in (0, 1e6)";
-    if (!(p.rejectSigma == 0 || (p.rejectSigma >= 1 && p.rejectSigma <= 100))) return "rejection sigma must be 0 (off) or 1..100";
-    if (p.minShots < 1) return "minimum shots per month must be >= 1";
-    return {};
+const Schema<TrendParams>& trendSchema() {
+    static const Schema<TrendParams> schema = [] {
+        using T = TrendParams;
+        Schema<T> s("trend");
+        s.real("arcsec_per_px", LWB_FIELD(T, arcsecPerPx), "arcsec/px", {0, 1e6, true, true}, {0.1, 2},
+               "pointing change per pixel (paper 001 LFC: 1.5 urad/px = 0.31 arcsec)");
+        s.real("reject_sigma", LWB_FIELD(T, rejectSigma), "sigma", {1, 100}, {2, 5},
+               "iterative k-sigma rejection of shots within a month; 0 = off")
+            .specials = {{0, "off"}};
+        s.integer("min_shots", LWB_FIELD(T, minShots), "", {1, 1000000000}, {1, 100}, "months with fewer shots are left out");
+        return s;
+    }();
+    return schema;
 }
+
+std::string validate(const TrendParams& p) { return trendSchema().validate(p); }
 
 TrendResult computeTrend(const std::vector<CentroidRecord>& records, const TrendParams& params) {
     TrendResult res;

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/common/schema.hpp"
+
 namespace lwb::core::footprint {
 
 struct CentroidRecord {
@@ -14,6 +16,10 @@ struct CentroidRecord {
     double x = 0, y = 0; ///< full-image px
     long line = 0;       ///< source line (for messages)
 };
+
+struct TrendParams;
+/// The trend parameters' table (core/common/schema.hpp).
+const Schema<TrendParams>& trendSchema();
 
 struct TrendParams {
     double arcsecPerPx = 0.31;  ///< pointing change per px (paper 001: LFC 1.5 µrad/px ≈ 0.31″)

@@ -44,16 +44,6 @@ bool verdictPreset(const std::string& name, VerdictParams* out) {
     return true;
 }
 
-std::string validate(const VerdictParams& p) {
-    for (const Range* r : {&p.axisRatio, &p.majorAxisPx, &p.tiltDeg, &p.eccentricity})
-        if (r->enabled && !(std::isfinite(r->lo) && std::isfinite(r->hi) && r->lo <= r->hi))
-            return "verdict ranges must be finite with low <= high";
-    if (p.mseEnabled && !(std::isfinite(p.mseMax) && p.mseMax > 0)) return "MSE limit must be a positive number";
-    if (p.saturationMaxPixels < 0) return "saturated pixel allowance must be >= 0";
-    if (!(p.secondSpotFraction > 0 && p.secondSpotFraction <= 10)) return "second-spot fraction must be in (0, 10]";
-    return {};
-}
-
 namespace {
 std::string rangeText(const Range& r) {
     return "[" + formatDouble(r.lo, 4) + ", " + formatDouble(r.hi, 4) + "]";
@@ -84,7 +74,7 @@ Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int 
     if (p.checkEdge) {
         // Half extents of the ellipse of full axes major/minor at the fit's orientation.
         const double big = std::max(fit.sigmaX, fit.sigmaY);
-        const double scale = big > 0 ? 0.5 * fit.majorAxisPx / big : 0;
+        const double scale = big > 0 ? 0.5 * fit.majorAxisPx / big * p.edgeExtent : 0;
         const double ax = fit.sigmaX * scale, ay = fit.sigmaY * scale;
         const double c = std::cos(fit.tiltRad), s = std::sin(fit.tiltRad);
         const double hx = std::hypot(ax * c, ay * s), hy = std::hypot(ax * s, ay * c);
@@ -93,6 +83,9 @@ Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int 
     }
     if (p.checkSaturation && domain.saturatedPixels > p.saturationMaxPixels)
         j.reasons.push_back("saturated: " + std::to_string(domain.saturatedPixels) + " px at full scale");
+    if (domain.faint)
+        j.reasons.push_back("faint: peak " + formatDouble(domain.peakSnr, 3) + " sigma above the ROI's ground, " +
+                            formatDouble(domain.localPeakSnr, 3) + " above the ring around it");
     if (p.checkSecondSpot && domain.secondPeakFraction >= p.secondSpotFraction)
         j.reasons.push_back("second spot at (" + std::to_string(domain.secondPeakX) + ", " +
                             std::to_string(domain.secondPeakY) + "), " +

@@ -27,7 +27,10 @@ struct VerdictParams {
     Range eccentricity{false, 0.2, 0.8};  ///< paper 001: 0.2–0.8
     bool mseEnabled = true;
     double mseMax = 1e-5;                 ///< paper 000 eq. 8 residual, f normalised to unit sum
-    bool checkEdge = true;                ///< the spot's 1/e² ellipse must lie inside the ROI
+    bool checkEdge = true;                ///< the spot's ellipse (1/e² × edgeExtent) must lie inside the ROI
+    /// 1.25: the 2.5σ ellipse of a Gaussian (the 1/e² one leaves a spot whose minor axis points at
+    /// an edge 4 px away "inside", with a tenth of its light cut off by the ROI's border).
+    double edgeExtent = 1.25;
     bool checkSaturation = true;
     int saturationMaxPixels = 0;          ///< more saturated domain pixels than this: doubtful
     bool checkSecondSpot = true;
@@ -49,6 +52,5 @@ struct Judgement {
 Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int roiHeight,
                 const VerdictParams& params);
 
-std::string validate(const VerdictParams& p);
 
 }  // namespace lwb::core::footprint

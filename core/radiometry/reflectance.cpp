@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/image_header.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/text.hpp"
 
@@ -45,6 +46,9 @@ bool rectStats(const cv::Mat& image, const cv::Rect& rect, double lo, double hi,
     }
     return true;
 }
+
+// Plausible magnitudes of the inputs (see readRegionCsv and readFitCsv).
+constexpr double kMaxReflectancePct = 150, kMaxDn = 1e9, kMaxLineCoefficient = 1e6;
 
 std::string extensionOf(const std::string& path) {
     const size_t dot = path.find_last_of('.');
@@ -94,6 +98,20 @@ bool readRegionCsv(const std::string& path, std::vector<Region>* out, std::strin
             return true;
         };
         if (!opt(cd, &r.dn) || !opt(cs, &r.simulated)) return false;
+        // Magnitudes a measurement can have: reflectance in percent, DN of a camera. Anything
+        // else is a damaged field (1e308 would overflow the fit's sums).
+        if (r.reflectance < 0 || r.reflectance > kMaxReflectancePct) {
+            *error = where + "reflectance " + formatShortest(r.reflectance) + " is not a plausible reflectance in percent (0..150)";
+            return false;
+        }
+        if (std::isfinite(r.simulated) && (r.simulated < -kMaxReflectancePct || r.simulated > kMaxReflectancePct)) {
+            *error = where + "simulated reflectance " + formatShortest(r.simulated) + " % is not plausible (|value| <= 150)";
+            return false;
+        }
+        if (std::isfinite(r.dn) && std::fabs(r.dn) > kMaxDn) {
+            *error = where + "dn " + formatShortest(r.dn) + " is not a plausible digital number (|dn| <= 1e9)";
+            return false;
+        }
         if (rect && !trim(row[cx]).empty()) {
             long long x = 0, y = 0, w = 0, h = 0;
             if (!parseLong(row[cx], &x) || !parseLong(row[cy], &y) || !parseLong(row[cw], &w) || !parseLong(row[ch], &h) ||
@@ -237,6 +255,10 @@ ReflectanceFitResult fitReflectance(const std::vector<Region>& regions, const Re
     f.spectrometerPct = params.spectrometerPct;
     f.paperUncertaintyPct = paperUncertaintyPct(params.spectrometerPct, f.kSd, f.bSd);
     f.uncertaintyAtMeanPct = predictionUncertaintyPct(f, xm);
+    if (!std::isfinite(f.k) || !std::isfinite(f.b) || !std::isfinite(f.kSd) || !std::isfinite(f.bSd)) {
+        res.error = "the fit gave a non-finite K, B or standard error (the region values overflow double precision)";
+        return res;
+    }
     if (f.k <= 0) res.warnings.push_back("the fitted slope K is not positive: reflectance falls as DN rises");
     res.ok = true;
     return res;
@@ -289,8 +311,22 @@ ApplyResult applyReflectance(const cv::Mat& dn, const ReflectanceFit& fit, const
                 if (uo) uo[x] = NAN;
                 continue;
             }
-            out[x] = static_cast<float>(fit.k * v + fit.b);
-            if (uo) uo[x] = static_cast<float>(predictionUncertaintyPct(fit, v));
+            const double refl = fit.k * v + fit.b;
+            // In double and checked before the float cast: K and B of any size reach here from
+            // the command line, and a value beyond float range would be undefined, not inf.
+            if (!(std::fabs(refl) <= 1e6)) {
+                res.error = "K = " + formatShortest(fit.k) + ", B = " + formatShortest(fit.b) + " give a reflectance of " +
+                            formatShortest(refl) + " % at DN " + formatShortest(v) + " (pixel " + std::to_string(x) + ", " +
+                            std::to_string(y) + "): not plausible (|reflectance| <= 1e6 %)";
+                res.reflectance.release();
+                res.uncertainty.release();
+                return res;
+            }
+            out[x] = static_cast<float>(refl);
+            if (uo) {
+                const double u = predictionUncertaintyPct(fit, v);
+                uo[x] = std::fabs(u) <= 1e30 ? static_cast<float>(u) : NAN;
+            }
         }
     }
     const size_t total = f.total();
@@ -405,6 +441,11 @@ bool readFitCsv(const std::string& path, ReflectanceFit* fit, std::string* error
             return false;
         }
     }
+    if (std::fabs(f.k) > kMaxLineCoefficient || std::fabs(f.b) > kMaxLineCoefficient) {
+        *error = where + "k = " + formatShortest(f.k) + ", b = " + formatShortest(f.b) +
+                 " is not a plausible calibration line (|k|, |b| <= 1e6 % per DN and %)";
+        return false;
+    }
     if (const int c = t.column("n"); c >= 0 && !trim(row[c]).empty()) {
         long long n = 0;
         if (!parseLong(row[c], &n) || n < 0 || n > std::numeric_limits<int>::max()) {
@@ -482,17 +523,24 @@ bool writeFloatTiff(const std::string& path, const cv::Mat& image, std::string* 
     return writeImage(path, image, error);
 }
 
-bool readImageAnyDepth(const std::string& path, cv::Mat* out, std::string* error) {
+bool readImageAnyDepth(const std::string& path, cv::Mat* out, std::string* error, long long maxPixels) {
     std::string bytes;
     if (!readFileText(path, &bytes, error)) return false;
+    if (const std::string why = imageSizeProblem(bytes, path, maxPixels); !why.empty()) {
+        *error = why;
+        return false;
+    }
     cv::Mat img;
     try {
-        const std::vector<uchar> buf(bytes.begin(), bytes.end());
+        const cv::Mat buf(1, static_cast<int>(std::min<size_t>(bytes.size(), INT32_MAX)), CV_8U, bytes.data());
         img = cv::imdecode(buf, cv::IMREAD_UNCHANGED);
         if (!img.empty() && img.channels() == 3) cv::cvtColor(img, img, cv::COLOR_BGR2GRAY);
         if (!img.empty() && img.channels() == 4) cv::cvtColor(img, img, cv::COLOR_BGRA2GRAY);
     } catch (const cv::Exception& e) {
         *error = path + ": cannot decode the image: " + e.what();
+        return false;
+    } catch (const std::bad_alloc&) {
+        *error = path + ": out of memory decoding the image";
         return false;
     }
     if (img.empty()) {

@@ -9,6 +9,7 @@
 // were percentages (V_err² = σ_K² + σ_B²): paperUncertaintyPct. Because σ_B is the error of the
 // line at DN = 0, far outside the data, the propagated error of the line at a given DN,
 // √(σ_K²·DN² + 2·DN·cov(K,B) + σ_B²), is offered too (predictionUncertaintyPct).
+#include "core/common/image_header.hpp"
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <string>
@@ -141,8 +142,11 @@ bool writeRelativeErrorCsv(const std::string& path, const RelativeErrorResult& r
 /// Writes a single-channel CV_32F image as a 32-bit float TIFF, atomically.
 bool writeFloatTiff(const std::string& path, const cv::Mat& image, std::string* error);
 
-/// Reads a single-channel image of any depth (PNG, TIFF, PGM...) unchanged. Errors name the file.
-bool readImageAnyDepth(const std::string& path, cv::Mat* out, std::string* error);
+/// Reads a single-channel image of any depth (PNG, TIFF, PGM, JPEG) unchanged; colour is
+/// converted to grey. Images over maxPixels (0 = no limit) are refused from their header,
+/// before decoding. Errors name the file.
+bool readImageAnyDepth(const std::string& path, cv::Mat* out, std::string* error,
+                       long long maxPixels = kMaxImagePixels);
 
 /// Writes an image in the format of the path's extension (.tif/.tiff keep 8U, 16U and 32F;
 /// .png keeps 8U and 16U), atomically.

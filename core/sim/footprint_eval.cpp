@@ -61,12 +61,22 @@ struct ShotOutcome {
     Verdict verdict = Verdict::Rejected;
     bool classOk = false;
     double reportedCrlb = NAN;
+    bool visible = false;
+    bool covered = false;
 };
 }  // namespace
 
 std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::vector<MethodVariant>& variants,
-                                         Feedback* fb) {
+                                         Feedback* fb, std::string* error) {
     std::vector<EvalStats> out;
+    for (Scene scene : params.scenes) {
+        FootprintSimParams sp = params.sim;
+        sp.scene = scene;
+        if (const std::string e = groundProblem(sp); !e.empty()) {
+            if (error) *error = e;
+            return out;
+        }
+    }
     const size_t nv = variants.size();
     const int total = params.countPerScene * static_cast<int>(params.scenes.size());
     std::atomic<int> progress{0};
@@ -107,6 +117,8 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
                     o.classOk = r.ok && trueClass(t.groundMedian, variants[v].params.background) == r.background.noiseClass;
                     o.fitted = r.ok && r.fit.ok && r.verdict != Verdict::Rejected;
                     if (o.fitted && t.hasSpot) o.err = std::hypot(r.fit.x - t.x, r.fit.y - t.y);
+                    o.covered = o.fitted && t.hasSpot && o.err < r.fit.uncertaintyPx;
+                    o.visible = t.hasSpot && t.amplitude >= 5 * std::max(t.textureRms, 1.0);
                     o.reportedCrlb = r.crlbPx;
                 }
                 const int p = ++progress;
@@ -135,6 +147,9 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
                 else ++s.rejected;
                 if (o.classOk) ++s.classCorrect;
                 if (o.fitted) ++s.fitted;
+                if (o.visible) ++s.visible;
+                if (o.visible && o.fitted) ++s.visibleFitted;
+                if (o.covered) ++s.covered;
                 if (std::isfinite(o.err)) errs.push_back(o.err);
                 if (std::isfinite(crlb[i])) {
                     crlbSum += crlb[i] * crlb[i];
@@ -173,14 +188,14 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
 std::string evalTableMarkdown(const std::vector<EvalStats>& stats) {
     std::string t =
         "| method | scene | case | n | fitted | good | doubtful | rejected | mean err (px) | var (px²) | RMS (px) | "
-        "median | p99 | max | CRLB (px) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "median | p99 | max | CRLB (px) | covered by u |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& s : stats) {
         t += "| " + s.variant + " | " + sceneName(s.scene) + " | " + spotCaseName(s.spotCase) + " | " +
              std::to_string(s.n) + " | " + std::to_string(s.fitted) + " | " + std::to_string(s.good) + " | " +
              std::to_string(s.doubtful) + " | " + std::to_string(s.rejected) + " | " + formatFixed(s.meanErr, 3) +
              " | " + formatFixed(s.varErr, 4) + " | " + formatFixed(s.rmsErr, 3) + " | " + formatFixed(s.medianErr, 3) +
              " | " + formatFixed(s.p99Err, 3) + " | " + formatFixed(s.maxErr, 3) + " | " + formatFixed(s.meanCrlb, 4) +
-             " |\n";
+             " | " + (s.fitted ? formatFixed(100.0 * s.covered / s.fitted, 1) + " %" : std::string("—")) + " |\n";
     }
     return t;
 }

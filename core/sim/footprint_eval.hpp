@@ -46,10 +46,14 @@ struct EvalStats {
     double meanCrlb = 0;  ///< RMS of the numerical CRLB (truth parameters, photon + read noise) (px):
                           ///< the floor of rmsErr
     double meanReportedCrlb = 0;  ///< mean of the pipeline's closed-form crlb_px
+    int visible = 0;        ///< shots whose spot is plainly visible: amplitude ≥ 5× the ground RMS
+    int visibleFitted = 0;  ///< of those, shots that got a centre (good or doubtful)
+    int covered = 0;        ///< fitted shots with |error| < uncertainty_px (Rayleigh level: 63.2 %)
 };
 
+/// Empty (with *error set when given) when the simulator cannot make the asked-for ground.
 std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::vector<MethodVariant>& variants,
-                                         Feedback* fb = nullptr);
+                                         Feedback* fb = nullptr, std::string* error = nullptr);
 
 /// Markdown table of the stats (one row per variant and scene).
 std::string evalTableMarkdown(const std::vector<EvalStats>& stats);

@@ -7,6 +7,7 @@
 
 #include "core/common/text.hpp"
 #include "core/sim/rng.hpp"
+#include "core/sim/terrain_photo.hpp"
 
 namespace lwb::core::sim {
 
@@ -52,12 +53,24 @@ bool parseSpotCase(const std::string& s, SpotCase* out) {
     return false;
 }
 
-SceneLevels sceneLevels(Scene s) {
+const char* groundSourceName(GroundSource g) { return g == GroundSource::Photo ? "photo" : "synthetic"; }
+
+bool parseGroundSource(const std::string& s, GroundSource* out) {
+    for (GroundSource g : {GroundSource::Photo, GroundSource::Synthetic})
+        if (toLower(s) == groundSourceName(g)) {
+            *out = g;
+            return true;
+        }
+    return false;
+}
+
+SceneLevels sceneLevels(Scene s, GroundSource g) {
+    const bool photo = g == GroundSource::Photo;
     switch (s) {
-        case Scene::Weak: return {2500, 3900, 100, 220, true};
-        case Scene::Moderate: return {4000, 4500, 150, 300, true};
-        case Scene::Strong: return {4550, 5400, 220, 420, true};
-        case Scene::Night: return {300, 500, 8, 25, false};
+        case Scene::Weak: return {2500, 3900, 100, 220, !photo};
+        case Scene::Moderate: return {4000, 4500, 150, 300, !photo};
+        case Scene::Strong: return {4550, 5400, 220, 420, !photo};
+        case Scene::Night: return {300, 500, photo ? 10.0 : 8.0, photo ? 40.0 : 25.0, false};
         case Scene::Flat: return {3000, 3000, 0, 0, false};
     }
     return {0, 0, 0, 0, false};
@@ -151,16 +164,36 @@ cv::Mat simulateGround(int width, int height, double mean, double rms, bool feat
     return g;
 }
 
+std::string groundProblem(const FootprintSimParams& p) {
+    if (p.ground != GroundSource::Photo || p.scene == Scene::Flat) return {};
+    return terrainPhotos().ok ? std::string() : terrainPhotos().error;
+}
+
 FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
     Rng rng(seed);
     FootprintSimShot shot;
     FootprintSimTruth& t = shot.truth;
     t.scene = p.scene;
     t.spotCase = p.spotCase;
-    const SceneLevels lv = sceneLevels(p.scene);
+    const TerrainPhotos& photos = terrainPhotos();
+    const bool photo = p.ground == GroundSource::Photo && p.scene != Scene::Flat && photos.ok;
+    const SceneLevels lv = sceneLevels(p.scene, photo ? GroundSource::Photo : GroundSource::Synthetic);
     t.groundMean = rng.uniform(lv.meanMin, lv.meanMax);
     t.textureRms = rng.uniform(lv.textureMin, lv.textureMax);
-    cv::Mat img = simulateGround(p.width, p.height, t.groundMean, t.textureRms, lv.features, rng.next());
+    const uint64_t groundSeed = rng.next();
+    cv::Mat img;
+    if (photo) {
+        Rng groundRng(groundSeed);
+        TerrainPatchInfo info;
+        img = terrainPatch(photos, p.width, p.height, t.groundMean, t.textureRms, groundRng, {}, &info);
+        t.textureRms = t.textureRms * std::min(1.0, info.rawRms / TerrainPatchParams{}.minRawRms);
+        t.groundPhoto = true;
+        t.groundNote = info.photo + " band " + std::to_string(info.band) + " zoom " + formatFixed(info.zoom, 2) +
+                       " angle " + formatFixed(info.angleDeg, 1) + (info.flipped ? " flipped" : "");
+    } else {
+        img = simulateGround(p.width, p.height, t.groundMean, t.textureRms, lv.features, groundSeed);
+        if (p.ground == GroundSource::Photo && p.scene != Scene::Flat) t.groundNote = "synthetic: " + photos.error;
+    }
     const bool night = p.scene == Scene::Night;
     // Spot shape.
     t.sigmaMajor = rng.uniform(p.sigmaMajorMin, p.sigmaMajorMax);

@@ -1,8 +1,9 @@
 #pragma once
 // Footprint-camera shot simulator with exact truth: a pixel-integrated, elliptical, tilted
-// Gaussian laser spot on a structured ground background (multi-scale texture, roads, field
-// edges, clouds), photon + read noise, 14-bit quantisation; day and night scenes and the
-// doubtful cases the verdict must catch. Deterministic for a seed.
+// Gaussian laser spot on ground cut from real aerial photographs (core/sim/terrain_photo; or,
+// asked for explicitly, the older synthetic ground: multi-scale noise, roads, field edges),
+// clouds, photon + read noise, 14-bit quantisation; day and night scenes and the doubtful
+// cases the verdict must catch. Deterministic for a seed.
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <string>
@@ -13,28 +14,36 @@ namespace lwb::core::sim {
 
 enum class Scene { Weak, Moderate, Strong, Night, Flat };
 enum class SpotCase { Normal, NoSpot, Saturated, DoubleSpot, Edge, Elongated };
+/// Photo: real aerial photographs (the default); Synthetic: red-spectrum noise + roads, field
+/// edges and buildings (the simulator before issue 14, easier than real ground).
+enum class GroundSource { Photo, Synthetic };
 const char* sceneName(Scene s);
 const char* spotCaseName(SpotCase c);
 bool parseScene(const std::string& s, Scene* out);
 bool parseSpotCase(const std::string& s, SpotCase* out);
+const char* groundSourceName(GroundSource g);
+bool parseGroundSource(const std::string& s, GroundSource* out);
 
 /// Ground level and texture per scene (DN). Day classes follow paper 000's histogram bands
 /// (weak < 4000, moderate 4000–4500, strong > 4500); night 300–500 DN.
 struct SceneLevels {
     double meanMin, meanMax;        ///< ground mean level (DN)
     double textureMin, textureMax;  ///< ground texture RMS (DN), before features
-    bool features;                  ///< roads, field edges and buildings
+    bool features;                  ///< roads, field edges and buildings (synthetic ground only)
 };
-SceneLevels sceneLevels(Scene s);
+/// Night texture: 10–40 DN RMS on photo ground (real night ground varies more than the 8–25 DN
+/// the synthetic ground had); synthetic ground keeps its old ranges.
+SceneLevels sceneLevels(Scene s, GroundSource g = GroundSource::Photo);
 
 struct FootprintSimParams {
     int width = 32, height = 32;   ///< image size (a ROI, or 550×550 for a full frame)
     Scene scene = Scene::Weak;
     SpotCase spotCase = SpotCase::Normal;
     footprint::CameraParams camera;  ///< gain, read noise, full scale
-    double sigmaMajorMin = 3.0, sigmaMajorMax = 4.2;  ///< px: L_A = 4σ of 12–17 px (paper 000: 10–18)
+    GroundSource ground = GroundSource::Photo;
+    double sigmaMajorMin = 2.5, sigmaMajorMax = 4.2;  ///< px: L_A = 4σ of 10–17 px (paper 000: 10–18)
     double axisRatioMin = 1.1, axisRatioMax = 1.4;    ///< paper 000: ≈ 1.25
-    double tiltMaxDeg = 20;        ///< |tilt| of the long axis from x
+    double tiltMaxDeg = 25;        ///< |tilt| of the long axis from x
     double centreJitterPx = 3;     ///< spot centre spread around the image (or given) centre
     /// DN above the ground by day. As in paper 000's experiment (one spot image added to ground
     /// patches of every class) the amplitude does not depend on the ground class; with ground
@@ -54,7 +63,9 @@ struct FootprintSimTruth {
     double groundMean = 0;         ///< DN, the texture's mean level (before features and clouds)
     double groundMedian = 0;       ///< DN, median of the noise-free ground under the spot's ROI: where
                                    ///< its histogram concentrates, which is what the noise class means
-    double textureRms = 0;         ///< DN
+    double textureRms = 0;         ///< DN, RMS of the ground texture (photo: after scaling)
+    bool groundPhoto = false;      ///< the ground is a terrain photograph
+    std::string groundNote;        ///< photo, band, zoom, angle, flip; or why no photo was used
     double x2 = NAN, y2 = NAN;     ///< second spot centre (DoubleSpot)
     Scene scene = Scene::Weak;
     SpotCase spotCase = SpotCase::Normal;
@@ -66,7 +77,12 @@ struct FootprintSimShot {
     FootprintSimTruth truth;
 };
 
+/// Photo ground falls back to synthetic ground when no photographs are installed (the truth
+/// says so); callers that need photos check groundProblem() first.
 FootprintSimShot simulateFootprint(const FootprintSimParams& params, uint64_t seed);
+
+/// Empty when the asked-for ground can be simulated, else why not (photographs missing).
+std::string groundProblem(const FootprintSimParams& params);
 
 /// The ground alone (no noise): multi-scale texture of unit RMS scaled to `rms`, plus mean,
 /// plus features when asked. Exposed for tests of the texture statistics.

@@ -26,12 +26,13 @@ const char* slrKindName(SlrKind k) {
         case SlrKind::Khz: return "khz";
         case SlrKind::Conventional: return "conventional";
         case SlrKind::Diffuse: return "diffuse";
+        case SlrKind::Leo: return "leo";
     }
     return "?";
 }
 
 bool parseSlrKind(const std::string& s, SlrKind* out) {
-    for (SlrKind k : {SlrKind::Khz, SlrKind::Conventional, SlrKind::Diffuse})
+    for (SlrKind k : {SlrKind::Khz, SlrKind::Conventional, SlrKind::Diffuse, SlrKind::Leo})
         if (toLower(s) == slrKindName(k)) {
             *out = k;
             return true;
@@ -75,6 +76,21 @@ SlrSimParams slrSimPreset(SlrKind kind) {
             p.rangeBiasMaxS = 500e-9;
             p.timeBiasMaxS = 10e-3;
             break;
+        case SlrKind::Leo:  // 10 Hz multi-photon ranging to a Jason-class satellite, low pass, noisy station
+            p.fireRateHz = 10;
+            p.returnProbability = 0.5;
+            p.noiseRateNightHz = 20;
+            p.noiseRateDayHz = 60;
+            p.gateS = 10e-6;
+            p.jitterS = 60e-12;
+            p.tailS = 0;
+            p.durationS = 600;
+            p.altitudeKm = 1336;
+            p.tcaDistanceKm = 2600;  // low pass: ~25° maximum elevation
+            p.velocityKmS = 7.2;
+            p.rangeBiasMaxS = 50e-9;
+            p.timeBiasMaxS = 2e-3;
+            break;
     }
     return p;
 }
@@ -96,7 +112,50 @@ std::string validate(const SlrSimParams& p) {
     if (!fin(p.rangeBiasMaxS) || p.rangeBiasMaxS < 0 || !fin(p.timeBiasMaxS) || p.timeBiasMaxS < 0)
         return "bias limits must be >= 0";
     if (!fin(p.altitudeKm) || p.altitudeKm < 0) return "altitude must be >= 0";
+    if (!fin(p.driftSPerS) || !fin(p.driftSPerS2) || std::fabs(p.driftSPerS) > 1e-3 || std::fabs(p.driftSPerS2) > 1e-3)
+        return "O-C drift terms must be finite and at most 1e-3 (s/s, s/s²)";
+    for (size_t g = 0; g < p.gaps.size(); ++g) {
+        const SlrSimGap& q = p.gaps[g];
+        if (!fin(q.startS) || !fin(q.lengthS) || !fin(q.levelShiftS) || q.startS < 0 || q.lengthS <= 0 ||
+            std::fabs(q.levelShiftS) > 1)
+            return "gap " + std::to_string(g + 1) + ": start must be >= 0, length > 0 and the level shift at most 1 s";
+    }
     return {};
+}
+
+namespace {
+std::vector<std::string> splitOn(std::string_view s, char sep) {
+    std::vector<std::string> out;
+    size_t a = 0;
+    for (size_t b = 0; b <= s.size(); ++b)
+        if (b == s.size() || s[b] == sep) {
+            out.emplace_back(s.substr(a, b - a));
+            a = b + 1;
+        }
+    return out;
+}
+}  // namespace
+
+bool parseSlrGaps(const std::string& text, std::vector<SlrSimGap>* out, std::string* error) {
+    out->clear();
+    for (const std::string& item : splitOn(text, ',')) {
+        const std::vector<std::string> f = splitOn(trim(item), ':');
+        SlrSimGap g;
+        bool ok = f.size() >= 2 && f.size() <= 4 && parseDouble(trim(f[0]), &g.startS) && parseDouble(trim(f[1]), &g.lengthS);
+        for (size_t k = 2; ok && k < f.size(); ++k) {
+            const std::string v(trim(f[k]));
+            double ns = 0;
+            if (v == "nodata") g.noise = false;
+            else if (k == 2 && parseDouble(v, &ns)) g.levelShiftS = ns * 1e-9;
+            else ok = false;
+        }
+        if (!ok || !(g.lengthS > 0) || g.startS < 0) {
+            *error = "gap \"" + item + "\" is not START:LENGTH[:SHIFT_NS][:nodata] (seconds from the first shot, length > 0)";
+            return false;
+        }
+        out->push_back(g);
+    }
+    return true;
 }
 
 double slrTrackOc(const SlrSimParams& p, double rangeBiasS, double timeBiasS, double tcaSod, double t) {
@@ -110,6 +169,16 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
         return out;
     }
     Rng rng(seed);
+    // Gaps (seconds from the first shot): no signal inside; no noise either in a no-data gap.
+    auto gapAt = [&](double x, bool* noiseOk) {
+        for (const SlrSimGap& g : p.gaps)
+            if (x >= g.startS && x < g.startS + g.lengthS) {
+                *noiseOk = g.noise;
+                return true;
+            }
+        *noiseOk = true;
+        return false;
+    };
     const double noiseRate = p.daylight ? p.noiseRateDayHz : p.noiseRateNightHz;
     const double sigRate = p.fireRateHz * p.returnProbability;
     // Counts and duration.
@@ -126,22 +195,35 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
             out.error = "too many shots (" + std::to_string(shots) + "): shorten the pass";
             return out;
         }
-        // Exactly ns distinct signal shots among `shots` (selection sampling, ascending).
+        // Exactly ns distinct signal shots among the shots outside the gaps (selection sampling,
+        // ascending).
+        long long open = shots;
+        bool dummy = true;
+        if (!p.gaps.empty()) {
+            open = 0;
+            for (long long k = 0; k < shots; ++k) open += !gapAt(static_cast<double>(k) / p.fireRateHz, &dummy);
+        }
+        ns = std::min(ns, open);
         sigShots.reserve(static_cast<size_t>(ns));
-        long long need = ns;
-        for (long long k = 0; k < shots && need > 0; ++k)
-            if (rng.uniform() * static_cast<double>(shots - k) < static_cast<double>(need)) {
+        long long need = ns, left = open;
+        for (long long k = 0; k < shots && need > 0; ++k) {
+            if (!p.gaps.empty() && gapAt(static_cast<double>(k) / p.fireRateHz, &dummy)) continue;
+            if (rng.uniform() * static_cast<double>(left) < static_cast<double>(need)) {
                 sigShots.push_back(k);
                 --need;
             }
+            --left;
+        }
     } else {
         shots = std::max<long long>(1, std::llround(p.durationS * p.fireRateHz));
         if (shots > 1000000000LL) {
             out.error = "too many shots (" + std::to_string(shots) + "): shorten the pass";
             return out;
         }
+        bool dummy = true;
         for (long long k = 0; k < shots; ++k)
-            if (rng.uniform() < p.returnProbability) sigShots.push_back(k);
+            if (rng.uniform() < p.returnProbability && !(!p.gaps.empty() && gapAt(static_cast<double>(k) / p.fireRateHz, &dummy)))
+                sigShots.push_back(k);
         ns = static_cast<long long>(sigShots.size());
         if (p.signalFraction > 0)
             nn = std::llround(static_cast<double>(ns) * (1 - p.signalFraction) / p.signalFraction);
@@ -157,10 +239,19 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
     out.rangeBiasS = rng.uniform(-p.rangeBiasMaxS, p.rangeBiasMaxS);
     out.timeBiasS = rng.uniform(-p.timeBiasMaxS, p.timeBiasMaxS);
     out.tcaSod = p.startSod + duration * rng.uniform(0.35, 0.65);
+    // The track: eq. 1, the extra drift about the pass middle and the level shifts after gaps.
+    const double tMid = p.startSod + 0.5 * duration;
+    auto track = [&](double t) {
+        const double x = t - tMid;
+        double v = slrTrackOc(p, out.rangeBiasS, out.timeBiasS, out.tcaSod, t) + p.driftSPerS * x + p.driftSPerS2 * x * x;
+        for (const SlrSimGap& g : p.gaps)
+            if (t - p.startSod >= g.startS + g.lengthS) v += g.levelShiftS;
+        return v;
+    };
     // Gate: the track (with 6σ of jitter) kept inside the middle 80 % of the gate.
     double tLo = 1e300, tHi = -1e300;
     for (int i = 0; i <= 400; ++i) {
-        const double v = slrTrackOc(p, out.rangeBiasS, out.timeBiasS, out.tcaSod, p.startSod + duration * i / 400.0);
+        const double v = track(p.startSod + duration * i / 400.0);
         tLo = std::min(tLo, v);
         tHi = std::max(tHi, v);
     }
@@ -177,14 +268,17 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
     pts.reserve(static_cast<size_t>(ns + nn));
     for (long long k : sigShots) {
         const double t = p.startSod + static_cast<double>(k) / p.fireRateHz;
-        double oc = slrTrackOc(p, out.rangeBiasS, out.timeBiasS, out.tcaSod, t) + p.jitterS * rng.normal();
+        double oc = track(t) + p.jitterS * rng.normal();
         if (p.tailS > 0) oc += -p.tailS * std::log(1.0 - rng.uniform());
         pts.push_back({t, oc, 1});
     }
     for (long long j = 0; j < nn; ++j) {
         const long long k = std::min<long long>(shots - 1, static_cast<long long>(rng.uniform() * static_cast<double>(shots)));
         const double t = p.startSod + static_cast<double>(k) / p.fireRateHz;
-        pts.push_back({t, out.gateLoS + p.gateS * rng.uniform(), 0});
+        const double o = out.gateLoS + p.gateS * rng.uniform();
+        bool noiseOk = true;
+        if (!p.gaps.empty() && gapAt(t - p.startSod, &noiseOk) && !noiseOk) continue;  // no data in the gap
+        pts.push_back({t, o, 0});
     }
     std::sort(pts.begin(), pts.end(), [](const Pt& a, const Pt& b) {
         return a.t < b.t || (a.t == b.t && (a.oc < b.oc || (a.oc == b.oc && a.sig > b.sig)));
@@ -199,13 +293,13 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
         out.epochS[i] = pts[i].t;
         out.ocS[i] = pts[i].oc;
         out.isSignal[i] = pts[i].sig;
-        out.trackOcS[i] = slrTrackOc(p, out.rangeBiasS, out.timeBiasS, out.tcaSod, pts[i].t);
+        out.trackOcS[i] = track(pts[i].t);
         out.tofS[i] = 2.0 * rangeM(p, out.tcaSod, pts[i].t) / kC + pts[i].oc;
     }
     out.durationS = duration;
     out.shots = shots;
-    out.signalCount = ns;
-    out.noiseCount = nn;
+    out.signalCount = static_cast<long long>(sigShots.size());
+    out.noiseCount = static_cast<long long>(n) - out.signalCount;
     out.signalFraction = n ? static_cast<double>(ns) / static_cast<double>(n) : 0;
     out.ok = true;
     return out;

@@ -9,17 +9,31 @@
 // Kinds (presets): kHz single-photon ranging to a LEO satellite (2 kHz, 2 % return probability,
 // 25 ps jitter, 200 ns gate, 40 noise/s at night, 600 by day); conventional 10 Hz ranging to
 // LAGEOS (60 % returns, 80 ps, 1 µs gate, 0.3 / 2 noise/s); diffuse (debris) ranging (20 Hz,
-// 15 %, 2 ns, 10 µs gate, 3 / 20 noise/s). signalFraction overrides the noise rate so that
+// 15 %, 2 ns, 10 µs gate, 3 / 20 noise/s); leo: 10 Hz multi-photon ranging to a low-orbit
+// altimetry satellite (Jason class, 1336 km) on a low pass from a noisy station (50 % returns,
+// 60 ps, 10 µs gate, 20 / 60 noise/s). signalFraction overrides the noise rate so that
 // signal / all = fraction (down to 3 % and below).
+//
+// Hard passes (issue 13): an extra O-C drift (a steep, curved track as against a poor
+// prediction or a fitted TOF trend), and gaps in the track (clouds, a lost lock): no signal
+// inside a gap (noise goes on unless told otherwise), and the track may resume at another level
+// after a gap (a range-bias jump, e.g. a recalibration or a prediction update).
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace lwb::core::sim {
 
-enum class SlrKind { Khz, Conventional, Diffuse };
-const char* slrKindName(SlrKind k);                   ///< "khz", "conventional", "diffuse"
+enum class SlrKind { Khz, Conventional, Diffuse, Leo };
+const char* slrKindName(SlrKind k);                   ///< "khz", "conventional", "diffuse", "leo"
 bool parseSlrKind(const std::string& s, SlrKind* out);
+
+/// A gap in the track: no signal from startS to startS + lengthS (seconds from the first shot).
+struct SlrSimGap {
+    double startS = 0, lengthS = 0;
+    bool noise = true;         ///< noise goes on in the gap (signal lost); false: no data at all (no tracking)
+    double levelShiftS = 0;    ///< the track is shifted by this (two-way s) from the end of the gap on
+};
 
 struct SlrSimParams {
     SlrKind kind = SlrKind::Khz;
@@ -41,6 +55,9 @@ struct SlrSimParams {
     double velocityKmS = 7.2;       ///< relative speed at closest approach, > 0
     double rangeBiasMaxS = 5e-9;    ///< |b| ≤ this (two-way s), drawn uniformly
     double timeBiasMaxS = 0.3e-3;   ///< |τ| ≤ this (s), drawn uniformly
+    double driftSPerS = 0;          ///< extra O-C drift: driftSPerS·x + driftSPerS2·x², x = t − pass middle (s)
+    double driftSPerS2 = 0;
+    std::vector<SlrSimGap> gaps;    ///< gaps in the track (each inside the pass, lengths > 0)
 };
 
 /// The preset physics for a kind (day/night only picks which noise rate is used later).
@@ -65,7 +82,12 @@ struct SlrSimPass {
 /// Simulates one pass. Deterministic for (params, seed).
 SlrSimPass simulateSlrPass(const SlrSimParams& params, uint64_t seed);
 
-/// The model O-C (s) of a pass at epoch t (for truth comparisons).
+/// The model O-C (s) of a pass at epoch t (for truth comparisons): eq. 1 only, without the
+/// drift and the level shifts of the gaps (those are in SlrSimPass::trackOcS).
 double slrTrackOc(const SlrSimParams& p, double rangeBiasS, double timeBiasS, double tcaSod, double t);
+
+/// Parses gaps written as START:LENGTH[:SHIFT_NS][:nodata], comma-separated (s, s, ns of
+/// two-way O-C). False with *error naming the bad item.
+bool parseSlrGaps(const std::string& text, std::vector<SlrSimGap>* out, std::string* error);
 
 }  // namespace lwb::core::sim

@@ -24,7 +24,7 @@ bool toInt(std::string_view s, long* out) {
         return true;
     }
     double d = 0;
-    if (parseDouble(s, &d) && d == std::floor(d) && std::fabs(d) < 2e9) {
+    if (parseFortranDouble(s, &d) && d == std::floor(d) && std::fabs(d) < 2e9) {
         *out = static_cast<long>(d);
         return true;
     }
@@ -83,7 +83,10 @@ CpfReadResult parseCpf(std::string_view text, const std::string& source) {
                     continue;
                 }
                 if (f.size() < 3 || toLower(f[1]) != "cpf") {
-                    res.error = where(src, lineNo) + "H1 must start with \"CPF <version>\"";
+                    res.error = where(src, lineNo) + "H1 must start with \"CPF <version>\"" +
+                                (f.size() >= 2 && toLower(f[1]) == "crd"
+                                     ? std::string(": this H1 names CRD ranging data, not a CPF prediction")
+                                     : std::string());
                     return res;
                 }
                 long v = 0;
@@ -130,7 +133,7 @@ CpfReadResult parseCpf(std::string_view text, const std::string& source) {
                 if (f.size() > 21 && toInt(f[21], &x)) h.comApplied = static_cast<int>(x);
             } else if (id == "h5") {
                 double off = 0;
-                if (f.size() > 1 && parseDouble(f[1], &off)) h.comOffsetM = off;
+                if (f.size() > 1 && parseFortranDouble(f[1], &off)) h.comOffsetM = off;
                 else warn(where(src, lineNo) + "H5 centre-of-mass offset unreadable; ignored");
             } else if (id == "h9") {
                 continue;
@@ -143,9 +146,9 @@ CpfReadResult parseCpf(std::string_view text, const std::string& source) {
                 if (f.size() < 8) why = "has " + std::to_string(f.size() - 1) + " fields (expected 7)";
                 else if (!toInt(f[1], &dir) || dir < 0 || dir > 2) why = "direction flag is not 0, 1 or 2";
                 else if (!toInt(f[2], &mjd) || mjd < 15000 || mjd > 100000) why = "MJD is not a day number in 15000..100000";
-                else if (!parseDouble(f[3], &sod) || sod < 0 || sod >= 86401) why = "seconds of day not in 0..86400";
+                else if (!parseFortranDouble(f[3], &sod) || sod < 0 || sod >= 86401) why = "seconds of day not in 0..86400";
                 else if (!toInt(f[4], &leap)) why = "leap-second flag is not an integer";
-                else if (!parseDouble(f[5], &xyz[0]) || !parseDouble(f[6], &xyz[1]) || !parseDouble(f[7], &xyz[2]))
+                else if (!parseFortranDouble(f[5], &xyz[0]) || !parseFortranDouble(f[6], &xyz[1]) || !parseFortranDouble(f[7], &xyz[2]))
                     why = "X, Y, Z must be finite numbers";
                 else if (std::fabs(xyz[0]) > 1e12 || std::fabs(xyz[1]) > 1e12 || std::fabs(xyz[2]) > 1e12)
                     why = "position beyond 1e12 m";
@@ -164,8 +167,8 @@ CpfReadResult parseCpf(std::string_view text, const std::string& source) {
             } else if (id == "20") {
                 double v[3];
                 long dir = 0;
-                if (f.size() < 5 || !toInt(f[1], &dir) || !parseDouble(f[2], &v[0]) || !parseDouble(f[3], &v[1]) ||
-                    !parseDouble(f[4], &v[2])) {
+                if (f.size() < 5 || !toInt(f[1], &dir) || !parseFortranDouble(f[2], &v[0]) || !parseFortranDouble(f[3], &v[1]) ||
+                    !parseFortranDouble(f[4], &v[2])) {
                     warn(where(src, lineNo) + "type 20 velocity record unreadable; skipped");
                     continue;
                 }
@@ -184,6 +187,10 @@ CpfReadResult parseCpf(std::string_view text, const std::string& source) {
                 if (res.file.otherLines.size() < 100000) res.file.otherLines.emplace_back(line);
             }
         }
+        // The format closes every file with a 99 record: without it the file was probably cut short.
+        if (!ended && haveH1)
+            warn(where(src, lineNo) + "the file ends without the 99 end-of-ephemeris record: truncated? (its last " +
+                 "prediction records may be missing)");
         if (dropped) res.warnings.push_back("... and " + std::to_string(dropped) + " more warnings");
         if (res.file.positions.empty()) {
             res.error = src + ": no readable type 10 position record";

@@ -54,7 +54,7 @@ bool numberField(const Fields& fs, size_t i, const char* name, Need need, double
         *out = NAN;
         return true;
     }
-    if (!parseDouble(fs.f[i], out)) {
+    if (!parseFortranDouble(fs.f[i], out)) {
         *why = "field " + std::to_string(i) + " (" + name + ") is not a finite number: \"" + excerpt(fs.f[i]) + "\"";
         return false;
     }
@@ -78,7 +78,7 @@ bool intField(const Fields& fs, size_t i, const char* name, Need need, long* out
         return true;
     }
     double d = 0;
-    if (parseDouble(fs.f[i], &d) && d == std::floor(d) && std::fabs(d) < 2e9) {
+    if (parseFortranDouble(fs.f[i], &d) && d == std::floor(d) && std::fabs(d) < 2e9) {
         *out = static_cast<long>(d);
         return true;
     }
@@ -170,15 +170,21 @@ std::string where(const std::string& source, long line) {
 
 // ---- header records ------------------------------------------------------------------------
 
-void parseH1(const CrdRecord& r, const std::string& src, CrdFormatHeader* h, Sink* sink) {
+/// False (with *fatal) when the H1 names the other ILRS format: a prediction is no ranging data.
+bool parseH1(const CrdRecord& r, const std::string& src, CrdFormatHeader* h, Sink* sink, std::string* fatal) {
     const Fields fs(r.text);
     h->text = r.text;
     h->line = r.line;
     h->version = 1;
     std::string why;
+    if (fs.n >= 2 && toLower(fs.f[1]) == "cpf") {
+        *fatal = "H1 names the format \"" + excerpt(fs.f[1], 8) +
+                 "\", not \"CRD\": a CPF prediction, not ranging data (or a damaged header)";
+        return false;
+    }
     if (fs.n < 3 || toLower(fs.f[1]) != "crd") {
         sink->add(where(src, r.line) + "H1 does not start with \"CRD <version>\"; read as CRD v1");
-        return;
+        return true;
     }
     int v = 1;
     if (!intField(fs, 2, "format version", Need::Required, &v, &why) || v < 0 || v > 9) {
@@ -194,6 +200,7 @@ void parseH1(const CrdRecord& r, const std::string& src, CrdFormatHeader* h, Sin
         h->day = d;
         h->hour = hh;
     }
+    return true;
 }
 
 void parseH2(const CrdRecord& r, const std::string& src, CrdStation* h, Sink* sink) {
@@ -240,8 +247,23 @@ void parseH3(const CrdRecord& r, const std::string& src, CrdTarget* h, Sink* sin
     if (intField(fs, 8, "target location", Need::Optional, &v, &why)) h->targetLocation = v;
 }
 
-/// H4 is required for the pass epochs: a bad date is an error.
-bool parseH4(const CrdRecord& r, CrdSession* h, std::string* why) {
+/// True when the six fields from `first` on are all "unknown" (-1 or na): how some stations write
+/// an H4 end date-time they did not fill in.
+bool allUnknown(const Fields& fs, size_t first) {
+    for (size_t i = first; i < first + 6; ++i) {
+        if (i >= fs.n) return false;
+        long long v = 0;
+        if (!isNa(fs.f[i]) && !(parseLong(fs.f[i], &v) && v == kCrdAbsent)) return false;
+    }
+    return true;
+}
+
+bool validTime(int h, int m, int s) { return h >= 0 && h <= 23 && m >= 0 && m <= 59 && s >= 0 && s <= 60; }
+
+/// H4 is required for the pass epochs: a bad data type or start date-time is an error (the
+/// block cannot be a pass). An end date-time written as unknown is accepted with a note; flags
+/// outside their ranges are read as unknown with a warning.
+bool parseH4(const CrdRecord& r, const std::string& src, CrdSession* h, Sink* sink, std::string* why) {
     const Fields fs(r.text);
     *h = CrdSession();
     h->text = r.text;
@@ -250,15 +272,17 @@ bool parseH4(const CrdRecord& r, CrdSession* h, std::string* why) {
         *why = "H4 needs the data type and the start and end date-times (13 fields), found " + std::to_string(fs.n - 1);
         return false;
     }
+    const bool endUnknown = allUnknown(fs, 8);
     int v[13];
     static const char* kNames[13] = {"data type", "start year", "start month", "start day", "start hour", "start minute",
                                      "start second", "end year", "end month", "end day", "end hour", "end minute",
                                      "end second"};
-    for (int i = 0; i < 13; ++i)
+    for (int i = 0; i < (endUnknown ? 7 : 13); ++i)
         if (!intField(fs, static_cast<size_t>(i + 1), kNames[i], Need::Required, &v[i], why)) {
             *why = "H4 " + *why;
             return false;
         }
+    if (endUnknown) std::fill(v + 7, v + 13, kCrdAbsent);
     h->dataType = v[0];
     h->startYear = v[1], h->startMonth = v[2], h->startDay = v[3], h->startHour = v[4], h->startMinute = v[5],
     h->startSecond = v[6];
@@ -268,22 +292,44 @@ bool parseH4(const CrdRecord& r, CrdSession* h, std::string* why) {
                std::to_string(h->dataType);
         return false;
     }
-    if (!validDate(h->startYear, h->startMonth, h->startDay) || h->startHour < 0 || h->startHour > 23 ||
-        h->startMinute < 0 || h->startMinute > 59 || h->startSecond < 0 || h->startSecond > 60) {
+    if (!validDate(h->startYear, h->startMonth, h->startDay) || !validTime(h->startHour, h->startMinute, h->startSecond)) {
         *why = "H4 start date-time is not a valid date and time";
         return false;
     }
-    if (!validDate(h->endYear, h->endMonth, h->endDay) || h->endHour < 0 || h->endHour > 23 || h->endMinute < 0 ||
-        h->endMinute > 59 || h->endSecond < 0 || h->endSecond > 60) {
+    if (endUnknown) {
+        sink->add(where(src, r.line) + "H4 end date-time is not given (-1 or na in all six fields); the pass is read "
+                                       "with its end unknown");
+    } else if (!validDate(h->endYear, h->endMonth, h->endDay) || !validTime(h->endHour, h->endMinute, h->endSecond)) {
         *why = "H4 end date-time is not a valid date and time";
         return false;
     }
-    int* flags[8] = {&h->releaseFlag, &h->refractionApplied, &h->comApplied, &h->receiveAmpApplied,
-                     &h->stationDelayApplied, &h->spacecraftDelayApplied, &h->rangeType, &h->qualityAlert};
-    std::string ignore;
+    struct Flag {
+        int* field;
+        const char* name;
+        int max;  // valid 0..max
+        const char* meaning;
+    };
+    const Flag flags[8] = {
+        {&h->releaseFlag, "data release flag", 99, "0 first release, 1 first replacement, ..."},
+        {&h->refractionApplied, "tropospheric refraction applied indicator", 1, "0 no, 1 yes"},
+        {&h->comApplied, "centre-of-mass correction applied indicator", 1, "0 no, 1 yes"},
+        {&h->receiveAmpApplied, "receive amplitude correction applied indicator", 1, "0 no, 1 yes"},
+        {&h->stationDelayApplied, "station system delay applied indicator", 1, "0 no, 1 yes"},
+        {&h->spacecraftDelayApplied, "spacecraft system delay applied indicator", 1, "0 no, 1 yes"},
+        {&h->rangeType, "range type indicator", 4, "0 no ranges, 1 one-way, 2 two-way, 3 received only, 4 mixed"},
+        {&h->qualityAlert, "data quality alert indicator", 2, "0 good, 1 suspect, 2 poor"}};
     for (int i = 0; i < 8; ++i) {
         int x = kCrdAbsent;
-        if (intField(fs, static_cast<size_t>(14 + i), "flag", Need::Optional, &x, &ignore)) *flags[i] = x;
+        std::string bad;
+        if (!intField(fs, static_cast<size_t>(14 + i), flags[i].name, Need::Optional, &x, &bad)) {
+            sink->add(where(src, r.line) + "H4 " + bad + "; read as unknown");
+        } else if (x != kCrdAbsent && (x < 0 || x > flags[i].max)) {
+            sink->add(where(src, r.line) + "H4 field " + std::to_string(14 + i) + " (" + flags[i].name + ") is " +
+                      std::to_string(x) + ", outside 0.." + std::to_string(flags[i].max) + " (" + flags[i].meaning +
+                      "); read as unknown");
+        } else {
+            *flags[i].field = x;
+        }
     }
     return true;
 }
@@ -409,9 +455,7 @@ void addRecord(Parse parse, const CrdRecord& r, size_t i, const std::string& src
     list.push_back(std::move(x));
 }
 
-/// Fills the parsed lists of a pass from its records. Header values present in the records
-/// override the inherited ones already in the pass. False (with *error) when the H4 is bad.
-bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::string* error) {
+void clearParsed(CrdPass* p) {
     p->configs.clear();
     p->ranges.clear();
     p->normalPoints.clear();
@@ -421,6 +465,17 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
     p->calibrations.clear();
     p->skippedLines.clear();
     p->predictionHeader.clear();
+}
+
+/// Fills the parsed lists of a pass from its records. Header values present in the records
+/// override the inherited ones already in the pass. False (with *error, the lists left empty)
+/// when the H4 is bad.
+bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::string* error) {
+    clearParsed(p);
+    p->problem.clear();
+    // H1..H3 were read (and warned about) when the file was split into passes.
+    std::vector<std::string> again;
+    Sink quiet{&again, 0};
     bool sawH4 = false;
     for (size_t i = 0; i < p->records.size(); ++i) {
         const CrdRecord& r = p->records[i];
@@ -428,14 +483,15 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
         if (id.empty() || id == "00" || id[0] == '9') continue;
         std::string why;
         if (id == "h1") {
-            parseH1(r, src, &p->format, sink);
+            parseH1(r, src, &p->format, &quiet, &why);
         } else if (id == "h2") {
-            parseH2(r, src, &p->station, sink);
+            parseH2(r, src, &p->station, &quiet);
         } else if (id == "h3") {
-            parseH3(r, src, &p->target, sink);
+            parseH3(r, src, &p->target, &quiet);
         } else if (id == "h4") {
-            if (!parseH4(r, &p->session, &why)) {
+            if (!parseH4(r, src, &p->session, sink, &why)) {
                 *error = where(src, r.line) + why;
+                clearParsed(p);
                 return false;
             }
             sawH4 = true;
@@ -570,7 +626,12 @@ CrdReadResult parseCrd(std::string_view text, const std::string& source, const C
             if (id == "h1" || id == "h2" || id == "h3") {
                 if (open) closePass("pass ended without H8 (new H" + id.substr(1) + ")", lineNo);
                 if (id == "h1") {
-                    parseH1(rec, src, &curH1, &sink);
+                    std::string why;
+                    if (!parseH1(rec, src, &curH1, &sink, &why)) {
+                        res.error = where(src, lineNo) + why;
+                        res.file.passes.clear();
+                        return res;
+                    }
                     haveH1 = true;
                 } else if (id == "h2") {
                     parseH2(rec, src, &curH2, &sink);
@@ -659,18 +720,35 @@ CrdReadResult parseCrd(std::string_view text, const std::string& source, const C
             CrdPass& p = passes[k];
             std::string err;
             if (!parsePassRecords(&p, src, &sink, &err)) {
-                res.error = err;
-                res.file.passes.clear();
-                return res;
-            }
-            if (p.ranges.empty() && p.normalPoints.empty()) {
-                res.error = where(src, p.session.line) + "pass " + std::to_string(k + 1) + " (" + p.station.name + ", " +
+                p.problem = err;
+            } else if (p.ranges.empty() && p.normalPoints.empty()) {
+                p.problem = where(src, p.session.line) + "pass " + std::to_string(k + 1) + " (" + p.station.name + ", " +
                             p.target.name + ") has no readable range record (type 10 or 11)";
-                res.file.passes.clear();
-                return res;
+                clearParsed(&p);
             }
             if (feedback) feedback->setProgress(0.5 + 0.5 * static_cast<double>(k + 1) / static_cast<double>(passes.size()));
         }
+        // A block that cannot be a pass does not cost the file its other passes: it is kept (for
+        // writing back) and named in a warning. Only a file without any usable pass is refused.
+        size_t unusable = 0;
+        const CrdPass* firstBad = nullptr;
+        for (size_t k = 0; k < passes.size(); ++k) {
+            if (passes[k].problem.empty()) continue;
+            if (!firstBad) firstBad = &passes[k];
+            ++unusable;
+        }
+        if (unusable == passes.size()) {
+            res.error = firstBad->problem;
+            if (unusable > 1)
+                res.error += " (and the file's " + std::to_string(unusable - 1) + " other pass" +
+                             (unusable > 2 ? "es cannot" : " cannot") + " be used either)";
+            res.file.passes.clear();
+            return res;
+        }
+        for (size_t k = 0; k < passes.size(); ++k)
+            if (!passes[k].problem.empty())
+                sink.add(passes[k].problem + "; pass " + std::to_string(k + 1) +
+                         " skipped (its lines are kept as they are), the file's other passes are read");
         sink.close();
         res.ok = true;
     } catch (const std::exception& e) {

@@ -13,9 +13,14 @@
 // 30 (pointing), 40/41 (calibration). Others (21, 42, 50, 60, C1..C7, 9x) are kept verbatim.
 //
 // Errors vs warnings: a record that cannot be read inside an otherwise sound pass is skipped
-// with a warning "FILE:LINE: ..." (the line is still kept for writing). A file that has no
-// H1/H4 before its data, a pass without any 10/11 record, binary data or an empty file stop
-// the read with an error naming file and line.
+// with a warning "FILE:LINE: ..." (the line is still kept for writing). A block that cannot be
+// a pass (H4 without a valid data type or start date-time, no readable 10/11 record) is kept
+// with CrdPass::problem set and a warning, so that the other passes of the file are still read;
+// an H4 end date-time written as unknown (-1 or na in all six fields) is accepted with a note.
+// H4 flags outside their ranges (range type 0..4, ...) are warned about and read as unknown.
+// A file that has no H1/H4 before its data, whose H1 names another format (CPF), whose every
+// pass is unusable, binary data or an empty file stop the read with an error naming file and
+// line.
 #include <cmath>
 #include <string>
 #include <string_view>
@@ -73,7 +78,8 @@ struct CrdTarget {
 struct CrdSession {
     int dataType = 0;          ///< 0 full rate, 1 normal point, 2 sampled engineering
     int startYear = 0, startMonth = 0, startDay = 0, startHour = 0, startMinute = 0, startSecond = 0;  ///< UTC
-    int endYear = 0, endMonth = 0, endDay = 0, endHour = 0, endMinute = 0, endSecond = 0;              ///< UTC
+    /// UTC; all kCrdAbsent when the H4 gives the end as unknown (-1 or na)
+    int endYear = 0, endMonth = 0, endDay = 0, endHour = 0, endMinute = 0, endSecond = 0;
     int releaseFlag = kCrdAbsent;        ///< data release (0 first release, ...)
     int refractionApplied = kCrdAbsent;  ///< 1: tropospheric refraction already applied to the ranges
     int comApplied = kCrdAbsent;         ///< 1: centre-of-mass correction applied
@@ -82,6 +88,7 @@ struct CrdSession {
     int spacecraftDelayApplied = kCrdAbsent;  ///< 1: spacecraft system delay applied
     int rangeType = kCrdAbsent;          ///< 0 no ranges, 1 one-way, 2 two-way, 3 received only, 4 mixed
     int qualityAlert = kCrdAbsent;       ///< 0 good, 1 suspect, 2 poor
+    // (a flag outside its range is read as kCrdAbsent, with a warning)
     std::string text;
     long line = 0;
 };
@@ -212,6 +219,10 @@ struct CrdPass {
     /// parsed and were left out of the lists above (each also has a warning, while the warning
     /// list is not full).
     std::vector<long> skippedLines;
+    /// Non-empty when the block cannot be used as a pass ("FILE:LINE: why": an H4 without a valid
+    /// start date-time or data type, or no readable range record). Its lines are kept for writing
+    /// back, its parsed lists are empty; the reader warns about it and reads the other passes.
+    std::string problem;
 
     /// MJD of the H4 start date (0h UTC): epochs are measured from it.
     long startMjd() const;

@@ -1,12 +1,9 @@
 #include "core/slr/oc_csv.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
-#include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
@@ -67,33 +64,17 @@ bool splitLine(std::string_view line, std::vector<std::string_view>* out) {
     }
 }
 
-/// Strict decimal number: optional sign, digits, point, exponent; finite.
-bool parseNumber(std::string_view s, double* out) {
-    s = trimBlanks(s);
-    if (s.empty()) return false;
-    const char* b = s.data();
-    const char* e = s.data() + s.size();
-    if (*b == '+') {
-        ++b;
-        if (b == e || *b == '-' || *b == '+') return false;
-    }
-    // Reject inf/nan spellings up front (from_chars would accept them).
-    const char c = (*b == '-' && b + 1 < e) ? b[1] : *b;
-    if (!((c >= '0' && c <= '9') || c == '.')) return false;
-    double v = 0;
-    const auto r = std::from_chars(b, e, v, std::chars_format::general);
-    if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v)) return false;
-    *out = v;
-    return true;
-}
+/// Strict decimal number (core::parseDouble): no hex, no inf/nan, nothing cut short; finite.
+bool parseNumber(std::string_view s, double* out) { return parseDouble(trimBlanks(s), out); }
 
 std::string lower(std::string_view s) { return toLower(trimBlanks(s)); }
 
 void appendNumber(std::string* out, double v) {
     if (!std::isfinite(v)) return;
-    char buf[40];
+    char buf[40];  // the shortest round-trip text of a double has at most 24 characters
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    out->append(buf, static_cast<size_t>(r.ptr - buf));
+    if (r.ec == std::errc()) out->append(buf, static_cast<size_t>(r.ptr - buf));
+    else *out += formatDouble(v, 17);  // not reached; never the buffer's old bytes
 }
 
 }  // namespace
@@ -201,6 +182,16 @@ OcCsvReadResult parseOcCsv(std::string_view text, const std::string& source, con
                 res.error = at(lineNo) + "oc_s is not a finite number: \"" + excerpt(fields[static_cast<size_t>(cOc)]) + "\"";
                 return res;
             }
+            if (!(std::fabs(e) <= kMaxOcEpochS)) {
+                res.error = at(lineNo) + "epoch_s " + excerpt(fields[static_cast<size_t>(cEpoch)]) +
+                            " is not a plausible epoch in seconds (|epoch_s| <= 1e10 s)";
+                return res;
+            }
+            if (!(std::fabs(o) <= kMaxOcS)) {
+                res.error = at(lineNo) + "oc_s " + excerpt(fields[static_cast<size_t>(cOc)]) +
+                            " is not a plausible O-C in seconds of two-way time of flight (|oc_s| <= 3 s)";
+                return res;
+            }
             for (size_t k = 0; k < cExtra.size(); ++k) {
                 double v = NAN;
                 const std::string_view fv = fields[static_cast<size_t>(cExtra[k])];
@@ -238,35 +229,8 @@ OcCsvReadResult parseOcCsv(std::string_view text, const std::string& source, con
 
 OcCsvReadResult readOcCsv(const std::string& path, const OcCsvParams& params) {
     OcCsvReadResult r;
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) {
-        r.error = path + ": " + std::strerror(errno);
-        return r;
-    }
-    if (S_ISDIR(st.st_mode)) {
-        r.error = path + ": is a folder, not a file";
-        return r;
-    }
-    FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) {
-        r.error = path + ": cannot open: " + std::strerror(errno);
-        return r;
-    }
     std::string text;
-    try {
-        text.resize(static_cast<size_t>(st.st_size));
-        const size_t got = text.empty() ? 0 : std::fread(&text[0], 1, text.size(), f);
-        text.resize(got);
-        // A file that grew while being read, or a pipe: read the rest.
-        char buf[65536];
-        size_t more = 0;
-        while ((more = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, more);
-    } catch (const std::exception& e) {
-        std::fclose(f);
-        r.error = path + ": " + e.what();
-        return r;
-    }
-    std::fclose(f);
+    if (!readFileText(path, &text, &r.error)) return r;
     return parseOcCsv(text, path, params);
 }
 

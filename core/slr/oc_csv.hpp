@@ -4,6 +4,7 @@
 // unless asked for by name. Blank lines and lines starting with '#' are skipped; CRLF and a
 // UTF-8 BOM are accepted; fields may be double-quoted. Numbers are strict: the whole field
 // must be a decimal number; NaN, inf and anything else stop the read with "FILE:LINE: ...".
+// Implausible values stop it too: |epoch_s| beyond kMaxOcEpochS, |oc_s| beyond kMaxOcS.
 // A hand-written parser (no per-field strings): 10^6 rows read in about 0.1 s.
 #include <string>
 #include <string_view>
@@ -12,6 +13,13 @@
 #include "core/slr/oc.hpp"
 
 namespace lwb::core::slr {
+
+/// Largest |epoch_s| read (s): 317 years from whatever origin (Unix, GPS and MJD seconds all fit);
+/// beyond it a double no longer resolves the 2 us that SLR epochs need.
+constexpr double kMaxOcEpochS = 1e10;
+/// Largest |oc_s| read (s, two-way): more than the two-way time of flight to the Moon (2.6 s). A
+/// larger value is not an O-C in seconds (nanoseconds or metres by mistake, or a damaged field).
+constexpr double kMaxOcS = 3.0;
 
 struct OcTable {
     std::vector<double> epoch_s;                ///< s (seconds since 0h UTC of the pass day, or any origin the writer chose)

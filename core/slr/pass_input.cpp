@@ -4,12 +4,19 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <cerrno>
+#include <cstring>
+#include <dirent.h>
+#include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/output_set.hpp"
 #include "core/common/text.hpp"
 #include "core/slr/cpf.hpp"
 #include "core/slr/oc_csv.hpp"
 #include "core/slr/sinex.hpp"
+#include "core/slr/slr_time.hpp"
 
 namespace lwb::core::slr {
 
@@ -37,55 +44,323 @@ PassSummary summarise(const CrdPass& p, int index) {
     s.station = p.station.name;
     const CrdSession& q = p.session;
     s.start = timeText(q.startYear, q.startMonth, q.startDay, q.startHour, q.startMinute, q.startSecond);
-    s.end = timeText(q.endYear, q.endMonth, q.endDay, q.endHour, q.endMinute, q.endSecond);
+    s.end = q.endYear == kCrdAbsent ? std::string("(end not given)")
+                                    : timeText(q.endYear, q.endMonth, q.endDay, q.endHour, q.endMinute, q.endSecond);
     s.ranges = p.ranges.size();
     s.normalPoints = p.normalPoints.size();
     s.dataType = q.dataType;
+    s.problem = p.problem;
     return s;
+}
+
+/// `error` followed by the first readers' warnings (the damaged lines that may explain it).
+std::string withWarnings(std::string error, const std::vector<std::string>& first,
+                         const std::vector<std::string>& second = {}) {
+    constexpr size_t kShown = 5;
+    const size_t n = first.size() + second.size();
+    if (n == 0) return error;
+    error += "\n  the reader's warnings" + (n > kShown ? " (first " + std::to_string(kShown) + " of " + std::to_string(n) + ")"
+                                                       : std::string()) + ":";
+    for (size_t i = 0; i < n && i < kShown; ++i) error += "\n  " + (i < first.size() ? first[i] : second[i - first.size()]);
+    return error;
+}
+
+/// An id of a CRD H3 or CPF H2 that is given: not empty, "na" or -1.
+bool idGiven(const std::string& id) {
+    const std::string l = toLower(trim(id));
+    return !l.empty() && l != "na" && l != "-1";
+}
+
+/// ILRS ids compared as numbers when both are ("0904907" is "904907"), else as text.
+bool sameIlrsId(const std::string& a, const std::string& b) {
+    long long x = 0, y = 0;
+    if (parseLong(a, &x) && parseLong(b, &y)) return x == y;
+    return toLower(trim(a)) == toLower(trim(b));
+}
+
+std::string idList(const std::string& name, const std::string& ilrs, long norad, long sic) {
+    std::string s = name.empty() ? std::string("?") : name;
+    s += ": ILRS id " + (idGiven(ilrs) ? ilrs : std::string("not given"));
+    s += ", NORAD " + (norad > 0 ? std::to_string(norad) : std::string("not given"));
+    s += ", SIC " + (sic > 0 ? std::to_string(sic) : std::string("not given"));
+    return s;
+}
+
+/// The prediction must be for the pass's satellite. Compares the ids both files give (ILRS id,
+/// NORAD number, SIC): an error when every one of them differs, a warning when some differ or
+/// none can be compared. O-C against another satellite's orbit is kilometres of nonsense.
+bool checkCpfTarget(const CpfFile& cpf, const CrdPass& pass, const std::string& crdPath, std::string* error,
+                    std::vector<std::string>* warnings) {
+    const CpfHeader& h = cpf.header;
+    const CrdTarget& t = pass.target;
+    const std::string cpfName = cpf.path.empty() ? std::string("cpf") : cpf.path;
+    int compared = 0;
+    std::vector<std::string> differ;
+    if (idGiven(h.ilrsId) && idGiven(t.ilrsId)) {
+        ++compared;
+        if (!sameIlrsId(h.ilrsId, t.ilrsId)) differ.push_back("ILRS id");
+    }
+    if (h.norad > 0 && t.norad > 0) {
+        ++compared;
+        if (h.norad != t.norad) differ.push_back("NORAD number");
+    }
+    if (h.sic > 0 && t.sic > 0) {
+        ++compared;
+        if (h.sic != t.sic) differ.push_back("SIC");
+    }
+    const std::string both = "the CPF H2 gives " + idList(h.targetName, h.ilrsId, h.norad, h.sic) + "; the pass's H3 (" + crdPath + ":" +
+                             std::to_string(t.line) + ") gives " + idList(t.name, t.ilrsId, t.norad, t.sic);
+    if (compared == 0) {
+        warnings->push_back(cpfName + ": cannot check that the prediction is for the pass's satellite (no id that both "
+                                      "files give): " + both);
+        return true;
+    }
+    if (differ.size() == size_t(compared)) {
+        *error = cpfName + ": the prediction is for another satellite: " + both +
+                 ". Give the CPF of the pass's satellite.";
+        return false;
+    }
+    if (!differ.empty()) {
+        std::string which;
+        for (const auto& d : differ) which += (which.empty() ? "" : " and ") + d;
+        warnings->push_back(cpfName + ": the " + which + " of the prediction and the pass differ (the other ids agree): " +
+                            both);
+    }
+    return true;
+}
+
+/// The first damaged record of the pass with its warning, or "" when none.
+std::string damagedRecords(const CrdPass& pass, const std::string& path, const std::vector<std::string>& warnings) {
+    if (pass.skippedLines.empty()) return {};
+    // The reader lists the skipped lines whether or not its warning list is full.
+    const std::string at = path + ":" + std::to_string(pass.skippedLines.front()) + ":";
+    std::string why = at + " a damaged record";
+    for (const auto& w : warnings)  // (the same line may also end the file: "file ends without H8")
+        if (w.rfind(at, 0) == 0 && w.find(" record skipped: ") != std::string::npos) {
+            why = w;
+            break;
+        }
+    return why + " (" + std::to_string(pass.skippedLines.size()) +
+           " damaged record(s) in the pass to screen: repair or remove them before writing results)";
 }
 }  // namespace
 
-bool isCrdPath(const std::string& path) {
+bool isCrdFile(const std::string& path) {
     const std::string e = extension(path);
-    return e == "frd" || e == "fr2" || e == "npt" || e == "np2" || e == "crd";
+    const bool crdName = e == "frd" || e == "fr2" || e == "npt" || e == "np2" || e == "crd";
+    // Only a regular file is looked into (a FIFO would block); the reader reports the others.
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return crdName;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return crdName;
+    std::string head(65536, '\0');
+    in.read(&head[0], std::streamsize(head.size()));
+    head.resize(size_t(in.gcount()));
+    if (head.size() >= 3 && head.compare(0, 3, "\xEF\xBB\xBF") == 0) head.erase(0, 3);
+    size_t pos = 0;
+    while (pos < head.size()) {
+        size_t end = head.find('\n', pos);
+        if (end == std::string::npos) end = head.size();
+        const std::string_view line = std::string_view(head).substr(pos, end - pos);
+        pos = end + 1;
+        const std::vector<std::string_view> f = splitBlanks(line);
+        std::string first = f.empty() ? std::string() : toLower(f[0]);
+        while (!first.empty() && first.back() == '\r') first.pop_back();
+        if (first.empty() || first == "00") continue;  // blank line or CRD comment
+        if (first == "h1") return true;
+        if (first[0] == '#' || line.find(',') != std::string_view::npos) return false;  // CSV comment or header
+        return crdName;
+    }
+    return crdName;
+}
+
+namespace {
+
+// The regular files of a folder, sorted by name (hidden files left out).
+bool listFolder(const std::string& dir, std::vector<std::string>* files, std::string* error) {
+    DIR* d = ::opendir(dir.c_str());
+    if (!d) {
+        *error = dir + ": cannot open the folder: " + std::strerror(errno);
+        return false;
+    }
+    while (const dirent* e = ::readdir(d)) {
+        const std::string name = e->d_name;
+        if (name.empty() || name[0] == '.') continue;
+        const std::string full = dir + (dir.back() == '/' ? "" : "/") + name;
+        struct stat st {};
+        if (::stat(full.c_str(), &st) == 0 && S_ISREG(st.st_mode)) files->push_back(full);
+    }
+    ::closedir(d);
+    std::sort(files->begin(), files->end());
+    return true;
+}
+
+// Time span of a prediction (MJD + s): its positions' first and last epochs.
+bool cpfSpan(const CpfFile& cpf, double* first, double* last) {
+    if (cpf.positions.empty()) return false;
+    *first = INFINITY;
+    *last = -INFINITY;
+    for (const auto& p : cpf.positions) {
+        const double t = double(p.mjd) * 86400.0 + p.sod;
+        *first = std::min(*first, t);
+        *last = std::max(*last, t);
+    }
+    return true;
+}
+
+// Start and end of a pass (MJD·86400 + s) from its range epochs and H4 date.
+bool passSpan(const CrdPass& pass, double* first, double* last) {
+    const CrdSession& q = pass.session;
+    if (pass.ranges.empty() || q.startYear <= 0) return false;
+    const double day0 = double(mjdFromDate(q.startYear, q.startMonth, q.startDay)) * 86400.0;
+    *first = INFINITY;
+    *last = -INFINITY;
+    for (const auto& r : pass.ranges) {
+        // Epochs are seconds of the H4 start day; a pass over midnight has them past 86400 or wraps.
+        double t = r.secOfDay;
+        if (t + 43200 < (q.startHour * 3600.0 + q.startMinute * 60.0 + q.startSecond)) t += 86400;
+        *first = std::min(*first, day0 + t);
+        *last = std::max(*last, day0 + t);
+    }
+    return std::isfinite(*first);
+}
+
+// Does the prediction fit the pass: the same satellite (no id that differs everywhere) and a time
+// span covering the pass with a margin for the interpolation window? "" when it fits, else why not.
+std::string cpfMismatch(const CpfFile& cpf, const CrdPass& pass, const std::string& crdPath, std::vector<std::string>* warnings) {
+    std::string err;
+    if (!checkCpfTarget(cpf, pass, crdPath, &err, warnings)) return err;
+    double cf = 0, cl = 0, pf = 0, pl = 0;
+    if (cpfSpan(cpf, &cf, &cl) && passSpan(pass, &pf, &pl) && (pf < cf || pl > cl)) {
+        int y = 0, mo = 0, d = 0;
+        dateFromMjd(long(cf / 86400), &y, &mo, &d);
+        char a[32], b[32];
+        std::snprintf(a, sizeof a, "%04d-%02d-%02d", y, mo, d);
+        dateFromMjd(long(cl / 86400), &y, &mo, &d);
+        std::snprintf(b, sizeof b, "%04d-%02d-%02d", y, mo, d);
+        return (cpf.path.empty() ? std::string("cpf") : cpf.path) + ": the prediction covers " + a + " to " + b +
+               ", not the pass (" + timeText(pass.session.startYear, pass.session.startMonth, pass.session.startDay,
+                                              pass.session.startHour, pass.session.startMinute, pass.session.startSecond) +
+               ")";
+    }
+    return {};
+}
+
+}  // namespace
+
+bool readPassSources(const PassInputParams& params, PassSources* out, std::string* error) {
+    *out = PassSources();
+    if (!params.cpfPath.empty()) {
+        struct stat st {};
+        out->cpfFolder = ::stat(params.cpfPath.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+        std::vector<std::string> files;
+        if (out->cpfFolder) {
+            if (!listFolder(params.cpfPath, &files, error)) return false;
+        } else {
+            files.push_back(params.cpfPath);
+        }
+        for (const auto& f : files) {
+            CpfReadResult cpf = readCpf(f);
+            if (!cpf.ok) {
+                if (!out->cpfFolder) {
+                    *error = withWarnings(cpf.error, cpf.warnings);
+                    return false;
+                }
+                out->skipped.push_back(f + ": not used: " + cpf.error);
+                continue;
+            }
+            out->cpfs.push_back(std::move(cpf));
+        }
+        if (out->cpfFolder && out->cpfs.empty()) {
+            *error = params.cpfPath + ": the folder holds no readable CPF file";
+            return false;
+        }
+    }
+    if (!params.sinexPath.empty()) {
+        const SinexReadResult snx = readSinex(params.sinexPath);
+        if (!snx.ok) {
+            *error = snx.error;
+            return false;
+        }
+        out->stations = snx.file;
+        out->haveStations = true;
+    }
+    return true;
 }
 
 PassInputResult loadPass(const std::string& path, int passIndex, const PassInputParams& params, const Feedback* fb) {
     PassInputResult r;
+    r.pass.source = path;
+    if (!isCrdFile(path)) return passFromOcTable(path);
+    const CrdReadResult crd = readCrd(path, {}, fb);
+    if (!crd.ok) {
+        r.error = withWarnings(crd.error, crd.warnings);
+        return r;
+    }
+    PassSources sources;
+    if (!params.cpfPath.empty() && !params.sinexPath.empty() && !readPassSources(params, &sources, &r.error)) {
+        for (size_t i = 0; i < crd.file.passes.size(); ++i) r.passes.push_back(summarise(crd.file.passes[i], int(i)));
+        return r;
+    }
+    return passFromCrd(crd, path, passIndex, params, sources, fb);
+}
+
+PassInputResult passFromOcTable(const std::string& path) {
+    PassInputResult r;
     PassData& d = r.pass;
     d.source = path;
-    if (!isCrdPath(path)) {
-        const OcCsvReadResult csv = readOcCsv(path);
-        if (!csv.ok) {
-            r.error = csv.error;
-            return r;
-        }
-        r.warnings = csv.warnings;
-        d.t = csv.table.epoch_s;
-        d.oc = csv.table.oc_s;
-        d.ocOrigin = "O-C table";
-        PassSummary s;
-        s.ranges = d.t.size();
-        r.passes.push_back(s);
-        if (d.t.size() < 3) {
-            r.error = path + ": the O-C table holds " + std::to_string(d.t.size()) + " points; screening needs at least 3";
-            return r;
-        }
-        r.ok = true;
+    const OcCsvReadResult csv = readOcCsv(path);
+    if (!csv.ok) {
+        r.error = csv.error;
         return r;
     }
-    CrdReadResult crd = readCrd(path, {}, fb);
-    if (!crd.ok) {
-        r.error = crd.error;
+    r.warnings = csv.warnings;
+    d.t = csv.table.epoch_s;
+    d.oc = csv.table.oc_s;
+    d.ocOrigin = "O-C table";
+    PassSummary s;
+    s.ranges = d.t.size();
+    r.passes.push_back(s);
+    if (d.t.size() < 3) {
+        r.error = path + ": the O-C table holds " + std::to_string(d.t.size()) + " points; screening needs at least 3";
         return r;
     }
+    r.ok = true;
+    return r;
+}
+
+std::vector<PassSummary> summarisePasses(const CrdFile& file) {
+    std::vector<PassSummary> v;
+    for (size_t i = 0; i < file.passes.size(); ++i) v.push_back(summarise(file.passes[i], int(i)));
+    return v;
+}
+
+PassInputResult passFromCrd(const CrdReadResult& crdIn, const std::string& path, int passIndex, const PassInputParams& params,
+                            const PassSources& sources, const Feedback* fb) {
+    PassInputResult r;
+    PassData& d = r.pass;
+    d.source = path;
+    const CrdReadResult& crd = crdIn;
     r.warnings = crd.warnings;
-    for (size_t i = 0; i < crd.file.passes.size(); ++i) r.passes.push_back(summarise(crd.file.passes[i], int(i)));
+    r.passes = summarisePasses(crd.file);
     if (passIndex < 0) {
         for (size_t i = 0; i < crd.file.passes.size() && passIndex < 0; ++i)
             if (!crd.file.passes[i].ranges.empty()) passIndex = int(i);
         if (passIndex < 0) {
-            r.error = path + ": no full-rate pass (no type-10 records) to screen";
+            // Say what the file does hold: normal-point passes, blocks that could not be read.
+            size_t np = 0;
+            std::string bad;
+            for (size_t i = 0; i < crd.file.passes.size(); ++i) {
+                const CrdPass& q = crd.file.passes[i];
+                if (!q.problem.empty()) bad += "\n  pass " + std::to_string(i + 1) + " cannot be used: " + q.problem;
+                else np += !q.normalPoints.empty();
+            }
+            r.error = path + ": no full-rate pass (no readable type-10 records) to screen" +
+                      (np ? "; the file holds " + std::to_string(np) + " normal-point pass" + (np > 1 ? "es" : "") +
+                                " (type 11), which cannot be screened"
+                          : std::string()) +
+                      bad;
+            r.error = withWarnings(r.error, r.warnings);
             return r;
         }
     }
@@ -95,9 +370,15 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
         return r;
     }
     const CrdPass& pass = crd.file.passes[size_t(passIndex)];
+    if (!pass.problem.empty()) {
+        r.error = withWarnings(path + ": pass " + std::to_string(passIndex + 1) + " cannot be used: " + pass.problem,
+                               r.warnings);
+        return r;
+    }
     if (pass.ranges.size() < 3) {
-        r.error = path + ": pass " + std::to_string(passIndex + 1) + " holds " + std::to_string(pass.ranges.size()) +
-                  " full-rate records; screening needs at least 3";
+        r.error = withWarnings(path + ": pass " + std::to_string(passIndex + 1) + " holds " +
+                                   std::to_string(pass.ranges.size()) + " full-rate records; screening needs at least 3",
+                               r.warnings);
         return r;
     }
     d.passIndex = passIndex;
@@ -105,34 +386,56 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
     d.ilrsId = pass.target.ilrsId;
     d.station = pass.station.name;
     d.cdpPad = pass.station.cdpPadId;
+    d.damaged = damagedRecords(pass, path, r.warnings);
     OcResult oc;
-    const bool predicted = !params.cpfPath.empty() && !params.sinexPath.empty();
     if (!params.cpfPath.empty() != !params.sinexPath.empty())
         r.warnings.push_back("O-C from a prediction needs both the CPF and the SINEX file; using the fitted TOF trend");
     double altitudeKm = 0;
-    if (predicted) {
-        const CpfReadResult cpf = readCpf(params.cpfPath);
-        if (!cpf.ok) {
-            r.error = cpf.error;
+    std::vector<std::string> cpfWarnings;
+    // The prediction for this pass: the given CPF, or the one of a folder whose satellite and
+    // time span fit. When none fits: an error, or with cpfFallback (and always for a folder) the
+    // pass's own TOF trend with a note saying why.
+    const CpfFile* cpf = nullptr;
+    std::string why;
+    if (!sources.cpfs.empty() && sources.haveStations) {
+        for (const auto& c : sources.cpfs) {
+            std::vector<std::string> w = c.warnings;
+            const std::string m = cpfMismatch(c.file, pass, path, &w);
+            if (m.empty()) {
+                cpf = &c.file;
+                cpfWarnings = w;
+                break;
+            }
+            if (why.empty() || !sources.cpfFolder) why = m;
+        }
+        if (!cpf && sources.cpfFolder)
+            why = params.cpfPath + ": no prediction in the folder fits the pass (satellite " + pass.target.name +
+                  (idGiven(pass.target.ilrsId) ? ", ILRS id " + pass.target.ilrsId : std::string()) + ")" +
+                  (why.empty() ? std::string() : "; e.g. " + why);
+        if (!cpf && !sources.cpfFolder && !params.cpfFallback) {
+            r.error = withWarnings(why, sources.cpfs.front().warnings);
             return r;
         }
-        const SinexReadResult snx = readSinex(params.sinexPath);
-        if (!snx.ok) {
-            r.error = snx.error;
-            return r;
-        }
-        oc = computeOc(pass, cpf.file, snx.file, params.oc, fb);
-        d.ocOrigin = "CPF prediction";
+    }
+    if (cpf) {
+        oc = computeOc(pass, *cpf, sources.stations, params.oc, fb);
+        d.ocOrigin = "CPF prediction" + (sources.cpfFolder ? " " + cpf->path : std::string());
         double rmin = INFINITY;
-        for (const auto& p : cpf.file.positions) rmin = std::min(rmin, p.position.norm());
+        for (const auto& p : cpf->positions) rmin = std::min(rmin, p.position.norm());
         if (std::isfinite(rmin)) altitudeKm = rmin / 1000.0 - kEarthRadiusKm;
-        for (const auto& w : cpf.warnings) r.warnings.push_back(w);
+        for (const auto& w : cpfWarnings) r.warnings.push_back(w);
     } else {
+        if (!why.empty()) {
+            d.ocNote = why + "; O-C against the pass's own TOF trend";
+            r.warnings.push_back(d.ocNote);
+        }
         oc = computeTrendOc(pass, params.trend, fb);
         d.ocOrigin = "fitted TOF trend (no prediction)";
     }
     if (!oc.ok) {
-        r.error = oc.error;
+        // The prediction's warnings first: a damaged or missing position record explains most
+        // interpolation failures.
+        r.error = withWarnings(oc.error, cpfWarnings, crd.warnings);
         return r;
     }
     for (const auto& w : oc.warnings) r.warnings.push_back(w);
@@ -151,13 +454,29 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
     }
     d.altitudeKm = altitudeKm;
     d.hasCrd = true;
-    d.crd = std::move(crd.file);
+    d.crd = crd.file;
     r.ok = true;
     return r;
 }
 
+namespace {
+// A pass is written only whole (no damaged records) and never over the file it was read from.
+bool writablePassOutput(const std::string& path, const PassData& pass, std::string* error) {
+    if (!pass.damaged.empty()) {
+        *error = pass.damaged;
+        return false;
+    }
+    if (!pass.source.empty() && sameFile(path, pass.source)) {
+        *error = path + ": is the file this pass was read from; choose another name (the input is kept as it is)";
+        return false;
+    }
+    return true;
+}
+}  // namespace
+
 bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
                     const std::vector<uint8_t>& accepted, const PostfitResult* post, std::string* error) {
+    if (!writablePassOutput(path, pass, error)) return false;
     const size_t n = pass.t.size();
     if (screen.pointClass.size() != n || accepted.size() != n) {
         *error = "screening result does not match the pass (" + std::to_string(screen.pointClass.size()) + " vs " +
@@ -172,15 +491,20 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
     std::ostream& o = f.stream();
     o << "index,epoch_s,oc_s,class,region,residual_s,kept,station_flag\n";
     // std::to_chars instead of printf: a 10⁶-point pass is written in a fraction of the time.
+    // A value that does not fit the buffer (an epoch of 1e300 in fixed notation) is refused, never
+    // written as whatever the buffer held.
     std::string line;
     char num[64];
-    auto put = [&](auto value, std::chars_format fmt, int precision) {
+    bool fits = true;
+    auto put = [&](double value, std::chars_format fmt, int precision) {
         const auto res = std::to_chars(num, num + sizeof num, value, fmt, precision);
-        line.append(num, res.ptr);
+        if (res.ec != std::errc()) fits = false;
+        else line.append(num, res.ptr);
     };
     auto putInt = [&](unsigned long long value) {
         const auto res = std::to_chars(num, num + sizeof num, value);
-        line.append(num, res.ptr);
+        if (res.ec != std::errc()) fits = false;
+        else line.append(num, res.ptr);
     };
     for (size_t i = 0; i < n; ++i) {
         // A manual edit can accept a point the screening called noise (or the reverse).
@@ -209,6 +533,11 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
         line += ',';
         if (!pass.stationFlag.empty()) putInt(unsigned(std::max(0, pass.stationFlag[i])));
         line += '\n';
+        if (!fits) {
+            *error = "point " + std::to_string(i) + " (epoch_s " + formatDouble(pass.t[i], 6) + ", oc_s " +
+                     formatDouble(pass.oc[i], 6) + "): a value too large to write";
+            return false;  // the AtomicFile removes its temporary
+        }
         o.write(line.data(), std::streamsize(line.size()));
     }
     if (!f.commit()) {
@@ -224,6 +553,7 @@ bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::
         *error = "the pass did not come from a CRD file; there is nothing to write flags into";
         return false;
     }
+    if (!writablePassOutput(path, pass, error)) return false;
     CrdFile out = pass.crd;
     CrdPass& p = out.passes[size_t(pass.passIndex)];
     // Records that were not screened (no O-C: outside the prediction, one-way events) keep the
@@ -242,6 +572,7 @@ bool writeNormalPointCrd(const std::string& path, const PassData& pass, const st
         *error = "normal points as CRD need the pass's CRD headers (open the CRD file, not an O-C table)";
         return false;
     }
+    if (!writablePassOutput(path, pass, error)) return false;
     const CrdPass& full = pass.crd.passes[size_t(pass.passIndex)];
     std::vector<CrdNormalPoint> recs;
     for (const NormalPoint& np : nps) {

@@ -9,10 +9,12 @@
 #include <vector>
 
 #include "core/common/feedback.hpp"
+#include "core/slr/cpf.hpp"
 #include "core/slr/crd.hpp"
 #include "core/slr/oc.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/screen.hpp"
+#include "core/slr/sinex.hpp"
 
 namespace lwb::core::slr {
 
@@ -21,6 +23,19 @@ struct PassInputParams {
     std::string sinexPath;    ///< SINEX station coordinates
     OcParams oc;              ///< light time, refraction (default Mendes–Pavlis from the met records)
     TrendOcParams trend;      ///< the fallback without a prediction
+    /// A CPF that does not fit the pass (another satellite, or a time span that misses it):
+    /// false = an error; true = a warning and the pass's own TOF trend (as the GUI does). A
+    /// folder of CPF files always falls back when none of them fits.
+    bool cpfFallback = false;
+};
+
+/// Predictions and station coordinates, read once for the passes of a file.
+struct PassSources {
+    std::vector<CpfReadResult> cpfs;   ///< the CPF file, or every readable CPF of a folder (by name)
+    bool cpfFolder = false;
+    std::vector<std::string> skipped;  ///< files of the folder that are not readable CPF, with why
+    bool haveStations = false;
+    SinexFile stations;
 };
 
 struct PassSummary {
@@ -30,6 +45,7 @@ struct PassSummary {
     size_t ranges = 0;             ///< type-10 records
     size_t normalPoints = 0;       ///< type-11 records
     int dataType = 0;              ///< 0 full rate, 1 normal points
+    std::string problem;           ///< why the block cannot be used as a pass (CrdPass::problem), else empty
 };
 
 struct PassData {
@@ -38,6 +54,7 @@ struct PassData {
     std::string satellite, ilrsId, station;
     int cdpPad = -1;
     std::string ocOrigin;          ///< "CPF prediction", "fitted TOF trend (no prediction)" or "O-C table"
+    std::string ocNote;            ///< why a given prediction was not used (the TOF trend instead), else ""
     std::vector<double> t;         ///< epoch (s since 0h UTC of the pass day for CRD input)
     std::vector<double> oc;        ///< O-C (s, two-way)
     std::vector<double> tof;       ///< observed two-way TOF (s); empty for O-C tables
@@ -46,6 +63,10 @@ struct PassData {
     double altitudeKm = 0;         ///< satellite altitude estimate for the normal-point bin (0 = unknown)
     bool hasCrd = false;
     CrdFile crd;                   ///< the file as read (for writing back)
+    /// Non-empty when the reader skipped records of this pass as damaged: "FILE:LINE: why (N
+    /// damaged record(s) ...)". The pass can be looked at, but its points are incomplete and the
+    /// damaged lines would be written back as they are: every writer below refuses it.
+    std::string damaged;
 };
 
 struct PassInputResult {
@@ -56,16 +77,37 @@ struct PassInputResult {
     PassData pass;                    ///< the loaded pass
 };
 
-/// True for the CRD endings (frd fr2 npt np2 crd, any case).
-bool isCrdPath(const std::string& path);
+/// True when the file is to be read as CRD, by its content first: a first record (after blank
+/// lines and 00 comments) H1 ("H1 CRD ..." in any case) is CRD whatever the file is called
+/// (.v2C, no ending, ...); a first line with a comma or starting with '#' is a CSV. Otherwise,
+/// and for a file that cannot be looked into (missing, not a regular file, unreadable), the
+/// name decides: the CRD endings frd fr2 npt np2 crd, any case. False means an O-C CSV.
+bool isCrdFile(const std::string& path);
 
-/// Loads pass `passIndex` (0-based; -1 = the first full-rate pass) of a CRD file, or an O-C CSV.
+/// Reads params.cpfPath — a CPF file, or a folder whose readable CPF files are all kept — and
+/// params.sinexPath. False with *error.
+bool readPassSources(const PassInputParams& params, PassSources* out, std::string* error);
+/// One pass of an already-read CRD file (passIndex −1: the first with full-rate records). O-C
+/// against the prediction of `sources` that fits the pass (satellite ids and time span; picked
+/// from a folder), else against the pass's own TOF trend (see PassInputParams::cpfFallback).
+PassInputResult passFromCrd(const CrdReadResult& crd, const std::string& path, int passIndex, const PassInputParams& params,
+                            const PassSources& sources, const Feedback* fb = nullptr);
+/// An O-C table (CSV) as a pass.
+PassInputResult passFromOcTable(const std::string& path);
+/// One summary per pass of a CRD file.
+std::vector<PassSummary> summarisePasses(const CrdFile& file);
+
+/// Loads pass `passIndex` (0-based; -1 = the first full-rate pass) of a CRD file, or an O-C CSV
+/// (told apart by isCrdFile). With a CPF, the CPF must be for the pass's satellite (the ids of
+/// the CPF H2 and the CRD H3 that both give must agree). An error names what is wrong and ends
+/// with the first of the readers' warnings (the damaged lines that may explain it).
 PassInputResult loadPass(const std::string& path, int passIndex, const PassInputParams& params,
                          const Feedback* fb = nullptr);
 
 /// Per-point result as CSV: index,epoch_s,oc_s,class,region,residual_s,kept,station_flag, one
 /// row per point in pass order; index = the point's type-10 record in the CRD pass (0-based;
-/// pass.rangeIndex), or its row in an O-C table. `post` may be null. Atomic.
+/// pass.rangeIndex), or its row in an O-C table. `post` may be null. Atomic. Refuses a pass
+/// with damaged records (PassData::damaged).
 bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
                     const std::vector<uint8_t>& accepted, const PostfitResult* post, std::string* error);
 /// The pass as CRD full rate with filter flags 2 (accepted) / 1 (noise) on the screened records;

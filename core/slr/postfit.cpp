@@ -1,10 +1,14 @@
 #include "core/slr/postfit.hpp"
 
+#include "core/slr/slr_params.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <numeric>
 
 #include "core/common/text.hpp"
+#include "core/slr/screen_follow.hpp"
+#include "core/slr/solar.hpp"
 
 namespace lwb::core::slr {
 
@@ -94,17 +98,11 @@ double normalPointBinS(double km) {
 }
 
 std::string validate(const PostfitParams& p) {
-    if (p.degree < 0 || p.degree > 30) return "trend degree must be 0..30";
-    if (!std::isfinite(p.rejectSigma) || (p.rejectSigma != 0 && (p.rejectSigma < 1 || p.rejectSigma > 10)))
-        return "rejection sigma must be 0 (off) or 1..10 (ILRS: 2.5 single-photon, 3 multi-photon)";
-    if (p.maxIterations < 1 || p.maxIterations > 1000) return "iterations must be 1..1000";
-    if (!std::isfinite(p.binLengthS) || (p.binLengthS != 0 && (p.binLengthS < 0.1 || p.binLengthS > 86400)))
-        return "normal-point bin length must be 0 (from the altitude) or 0.1..86400 s";
-    if (p.normalPoints && p.binLengthS == 0 && !(std::isfinite(p.altitudeKm) && p.altitudeKm > 0))
+    if (std::string e = slrSchema().validate({ScreenParams{}, p}, "postfit."); !e.empty()) return e;
+    // Run-time conditions, not parameter ranges: the altitude may come with the pass.
+    if (p.normalPoints && p.binLengthS == 0 && !(p.altitudeKm > 0))
         return "give the normal-point bin length or the satellite altitude (km)";
     if (!std::isfinite(p.dayStartS)) return "day start must be finite";
-    if (p.minPointsPerBin < 0 || p.minPointsPerBin > 1000000) return "minimum points per bin must be 0 (ILRS) or 1..1000000";
-    if (!std::isfinite(p.fireRateHz) || p.fireRateHz < 0) return "fire rate must be >= 0 (0 = unknown)";
     return {};
 }
 
@@ -123,20 +121,62 @@ ResidualStats residualStats(const std::vector<double>& r) {
         m3 += d2 * d;
         m4 += d2 * d2;
     }
-    m2 /= n;
-    m3 /= n;
-    m4 /= n;
     s.mean = mean;
-    s.rms = std::sqrt(m2);
-    if (m2 > 0) {
-        s.skew = m3 / std::pow(m2, 1.5);
-        s.kurtosis = m4 / (m2 * m2) - 3;
+    if (r.size() < 2) {
+        s.peakMinusMean = 0;
+        return s;
+    }
+    // ILRS: rms with n − 1, the third and fourth moments over n, scaled by that rms.
+    const double var = m2 / (n - 1);
+    s.rms = std::sqrt(var);
+    if (var > 0) {
+        s.skew = (m3 / n) / std::pow(var, 1.5);
+        s.kurtosis = (m4 / n) / (var * var) - 3;
     }
     s.peakMinusMean = kernelPeak(r, mean, s.rms) - mean;
     return s;
 }
 
+namespace {
+const TrendSegment* segmentFor(const std::vector<TrendSegment>& segs, double t) {
+    if (segs.empty()) return nullptr;
+    const TrendSegment* best = &segs.front();
+    double bestD = 1e308;
+    for (const TrendSegment& g : segs) {
+        const double d = t < g.tStart ? g.tStart - t : t > g.tEnd ? t - g.tEnd : 0;
+        if (d < bestD) {
+            bestD = d;
+            best = &g;
+        }
+    }
+    return best;
+}
+// Uniform cubic B-spline with K intervals over [a, b]: the index of the first of the four
+// non-zero coefficients at t and their basis values.
+inline int splineBasis(double a, double b, int K, double t, double* w) {
+    const double h = (b - a) / K;
+    const double x = h > 0 ? (t - a) / h : 0;
+    const int i = std::clamp(static_cast<int>(std::floor(x)), 0, K - 1);
+    const double u = x - i, u2 = u * u, u3 = u2 * u;
+    w[0] = (1 - u) * (1 - u) * (1 - u) / 6;
+    w[1] = (3 * u3 - 6 * u2 + 4) / 6;
+    w[2] = (-3 * u3 + 3 * u2 + 3 * u + 1) / 6;
+    w[3] = u3 / 6;
+    return i;
+}
+double segmentAt(const TrendSegment& g, double t) {
+    if (g.knots > 0) {
+        double w[4];
+        const int i = splineBasis(g.tStart, g.tEnd, g.knots, t, w);
+        return g.coefficients[i] * w[0] + g.coefficients[i + 1] * w[1] + g.coefficients[i + 2] * w[2] +
+               g.coefficients[i + 3] * w[3];
+    }
+    return trendAt(g.coefficients, (t - g.tCenter) / g.tHalfSpan);
+}
+}  // namespace
+
 double evaluateTrend(const PostfitResult& r, double t) {
+    if (const TrendSegment* g = segmentFor(r.segments, t)) return segmentAt(*g, t);
     if (r.coefficients.empty()) return NAN;
     return trendAt(r.coefficients, (t - r.tCenter) / r.tHalfSpan);
 }
@@ -167,74 +207,232 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
         res.error = "only " + std::to_string(res.used) + " accepted point(s): at least 2 are needed for a trend";
         return res;
     }
-    double tMin = 1e308, tMax = -1e308;
+    res.binLengthS = p.binLengthS > 0 ? p.binLengthS : normalPointBinS(p.altitudeKm);
+    // Used points in time order.
+    std::vector<uint32_t> ord;
     for (size_t i = 0; i < n; ++i)
-        if (used[i]) {
-            tMin = std::min(tMin, t[i]);
-            tMax = std::max(tMax, t[i]);
-        }
-    res.tCenter = 0.5 * (tMin + tMax);
-    res.tHalfSpan = tMax > tMin ? 0.5 * (tMax - tMin) : 1.0;
-    int degree = p.degree;
-    if (tMax == tMin && degree > 0) {
-        res.warnings.push_back("all accepted epochs are equal: the trend is a constant");
-        degree = 0;
-    }
+        if (used[i]) ord.push_back(static_cast<uint32_t>(i));
+    std::stable_sort(ord.begin(), ord.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
     res.kept = used;
+    // Segments: split at gaps longer than splitGapS (automatic: 3 bins, at least 20 s).
+    double split = p.splitGapS;
+    if (split == 0) split = std::max(20.0, 3 * (std::isfinite(res.binLengthS) ? res.binLengthS : 0.0));
+    struct Seg {
+        size_t a, b;  // [a, b) in ord
+        TrendSegment trend;
+    };
+    std::vector<Seg> segs;
+    for (size_t k = 0; k < ord.size();) {
+        size_t e = k + 1;
+        while (e < ord.size() && !(split > 0 && t[ord[e]] - t[ord[e - 1]] > split)) ++e;
+        Seg g;
+        g.a = k;
+        g.b = e;
+        g.trend.tStart = t[ord[k]];
+        g.trend.tEnd = t[ord[e - 1]];
+        g.trend.tCenter = 0.5 * (g.trend.tStart + g.trend.tEnd);
+        g.trend.tHalfSpan = g.trend.tEnd > g.trend.tStart ? 0.5 * (g.trend.tEnd - g.trend.tStart) : 1.0;
+        segs.push_back(g);
+        k = e;
+    }
+    // Gross outliers against the local track (leave-one-out quadratic through 4 + 4 neighbours
+    // of the same segment), with one robust σ for the pass. Only the worst point of a
+    // neighbourhood goes per round (an outlier also pulls its neighbours' fits), three rounds at
+    // most (the k·σ rejection takes what is left). Part of the rejection: off with rejectSigma = 0.
+    if (p.grossSigma > 0 && p.rejectSigma > 0 && ord.size() >= 9) {
+        double sig = -1;
+        for (int round = 0; round < 3; ++round) {
+            std::vector<uint32_t> live;
+            std::vector<size_t> segOf;
+            for (size_t gi = 0; gi < segs.size(); ++gi)
+                for (size_t q = segs[gi].a; q < segs[gi].b; ++q)
+                    if (res.kept[ord[q]]) {
+                        live.push_back(ord[q]);
+                        segOf.push_back(gi);
+                    }
+            std::vector<double> r(live.size(), NAN);
+            for (size_t a0 = 0; a0 < live.size();) {
+                size_t b0 = a0;
+                while (b0 < live.size() && segOf[b0] == segOf[a0]) ++b0;
+                if (b0 - a0 >= 5) {
+                    const std::vector<uint32_t> part(live.begin() + static_cast<long>(a0), live.begin() + static_cast<long>(b0));
+                    const std::vector<double> rp = localTrackResiduals(t, oc, part, 4);
+                    std::copy(rp.begin(), rp.end(), r.begin() + static_cast<long>(a0));
+                }
+                a0 = b0;
+            }
+            if (sig < 0) {  // σ from the first round (all points): robust to the outliers themselves
+                std::vector<double> av;
+                for (double v : r)
+                    if (std::isfinite(v)) av.push_back(std::fabs(v));
+                if (av.size() < 5) break;
+                std::nth_element(av.begin(), av.begin() + static_cast<long>(av.size() / 2), av.end());
+                sig = 1.4826 * av[av.size() / 2];
+                if (!(sig > 0)) break;
+            }
+            bool any = false;
+            for (size_t q = 0; q < live.size(); ++q) {
+                if (!std::isfinite(r[q]) || std::fabs(r[q]) <= p.grossSigma * sig) continue;
+                bool worst = true;
+                for (size_t e = q >= 4 ? q - 4 : 0; e < std::min(live.size(), q + 5) && worst; ++e)
+                    if (e != q && segOf[e] == segOf[q] && std::isfinite(r[e]) && std::fabs(r[e]) > std::fabs(r[q])) worst = false;
+                if (!worst) continue;
+                res.kept[live[q]] = 0;
+                ++res.grossRejected;
+                any = true;
+            }
+            if (!any) break;
+        }
+    }
+    // Segment-level degree limits and the k·σ iteration follow.
+    if (res.used > 0 && t[ord.front()] == t[ord.back()] && p.degree > 0)
+        res.warnings.push_back("all accepted epochs are equal: the trend is a constant");
     res.residuals.assign(n, NAN);
     const double k = p.rejectSigma;
     std::vector<double> basis(32);
-    const int blockCols = 256;
     bool warnedDegree = false;
+    std::vector<int> frozen(segs.size(), INT32_MIN);
     for (int it = 1; it <= p.maxIterations; ++it) {
         res.iterations = it;
-        const long long nk = std::count(res.kept.begin(), res.kept.end(), uint8_t{1});
-        int d = degree;
-        if (nk < 2 * (d + 1)) {
-            d = std::max(0, static_cast<int>(nk / 2) - 1);
-            if (d < degree && !warnedDegree) {
-                warnedDegree = true;
-                res.warnings.push_back("only " + std::to_string(nk) + " points: trend degree lowered from " +
-                                       std::to_string(degree) + " to " + std::to_string(d));
+        long long nkAll = 0;
+        double ss = 0;
+        for (size_t gi = 0; gi < segs.size(); ++gi) {
+            Seg& g = segs[gi];
+            long long nk = 0;
+            for (size_t q = g.a; q < g.b; ++q) nk += res.kept[ord[q]];
+            int dMax = g.trend.tEnd > g.trend.tStart ? p.degree : 0;
+            if (nk < 2 * (dMax + 1)) {
+                const int d = std::max(0, static_cast<int>(nk / 2) - 1);
+                if (d < dMax && !warnedDegree && (!p.autoDegree || segs.size() == 1)) {
+                    warnedDegree = true;
+                    res.warnings.push_back("only " + std::to_string(nk) + " points: trend degree lowered from " +
+                                           std::to_string(p.degree) + " to at most " + std::to_string(d));
+                }
+                dMax = std::min(dMax, d);
             }
+            if (nk < 1) {  // every point of the segment rejected: keep its previous trend
+                if (g.trend.coefficients.empty()) g.trend.coefficients.assign(1, 0.0);
+                continue;
+            }
+            // Normal equations up to dMax (Legendre basis: the lower degrees are leading blocks), on
+            // the O-C less the segment's mean (so that yᵀy − cᵀ·rhs gives the residual sum exactly
+            // enough for the criterion).
+            double y0 = 0;
+            for (size_t q = g.a; q < g.b; ++q)
+                if (res.kept[ord[q]]) y0 += oc[ord[q]];
+            y0 /= static_cast<double>(nk);
+            const int m = dMax + 1;
+            Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m);
+            Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
+            double yy = 0;
+            const int blockCols = 256;
+            Eigen::MatrixXd B(m, blockCols);
+            Eigen::VectorXd y(blockCols);
+            int fill = 0;
+            auto flush = [&]() {
+                if (fill == 0) return;
+                M.selfadjointView<Eigen::Lower>().rankUpdate(B.leftCols(fill));
+                rhs.noalias() += B.leftCols(fill) * y.head(fill);
+                fill = 0;
+            };
+            for (size_t q = g.a; q < g.b; ++q) {
+                const uint32_t i = ord[q];
+                if (!res.kept[i]) continue;
+                legendre((t[i] - g.trend.tCenter) / g.trend.tHalfSpan, dMax, basis.data());
+                for (int j = 0; j < m; ++j) B(j, fill) = basis[static_cast<size_t>(j)];
+                y(fill) = oc[i] - y0;
+                yy += (oc[i] - y0) * (oc[i] - y0);
+                if (++fill == blockCols) flush();
+            }
+            flush();
+            const Eigen::MatrixXd Ms = M.selfadjointView<Eigen::Lower>();
+            auto solve = [&](int d) {
+                const Eigen::MatrixXd Md = Ms.topLeftCorner(d + 1, d + 1);
+                Eigen::VectorXd c = Md.ldlt().solve(rhs.head(d + 1));
+                if (!c.allFinite()) c = Md.completeOrthogonalDecomposition().solve(rhs.head(d + 1));
+                return c;
+            };
+            // Cubic splines of K intervals (K + 3 coefficients) on the same centred O-C.
+            auto splineFit = [&](int K, double* rss) {
+                const int mk = K + 3;
+                Eigen::MatrixXd S = Eigen::MatrixXd::Zero(mk, mk);
+                Eigen::VectorXd sr = Eigen::VectorXd::Zero(mk);
+                std::vector<int> perInterval(static_cast<size_t>(K), 0);
+                double w[4];
+                for (size_t q = g.a; q < g.b; ++q) {
+                    const uint32_t i = ord[q];
+                    if (!res.kept[i]) continue;
+                    const int j = splineBasis(g.trend.tStart, g.trend.tEnd, K, t[i], w);
+                    ++perInterval[static_cast<size_t>(j)];
+                    for (int r = 0; r < 4; ++r) {
+                        sr(j + r) += w[r] * (oc[i] - y0);
+                        for (int c2 = 0; c2 < 4; ++c2) S(j + r, j + c2) += w[r] * w[c2];
+                    }
+                }
+                // Every interval must hold points (else coefficients are free); a tiny ridge keeps
+                // the solution bounded.
+                const bool covered = std::all_of(perInterval.begin(), perInterval.end(), [](int c) { return c >= 2; });
+                S.diagonal().array() += 1e-12 * S.trace() / mk;
+                Eigen::VectorXd c = S.ldlt().solve(sr);
+                if (!c.allFinite()) c = S.completeOrthogonalDecomposition().solve(sr);
+                *rss = covered ? std::max(yy - c.dot(sr), 1e-300 + 1e-15 * yy) : 1e308;
+                return c;
+            };
+            // The model: code ≥ 0 a Legendre degree, < 0 a spline of −code intervals.
+            int code = dMax;
+            if (p.autoDegree && frozen[gi] != INT32_MIN) {
+                code = frozen[gi] >= 0 ? std::min(frozen[gi], dMax) : frozen[gi];
+            } else if (p.autoDegree) {
+                double bestBic = 1e308;
+                const double nd = static_cast<double>(nk);
+                for (int d = 0; d <= dMax; ++d) {
+                    const Eigen::VectorXd c = solve(d);
+                    const double rss = std::max(yy - c.dot(rhs.head(d + 1)), 1e-300 + 1e-15 * yy);
+                    const double bic = nd * std::log(rss / nd) + (d + 1) * std::log(nd);
+                    if (bic < bestBic - 1e-9) {
+                        bestBic = bic;
+                        code = d;
+                    }
+                }
+                const double span = g.trend.tEnd - g.trend.tStart, L = std::isfinite(res.binLengthS) ? res.binLengthS : 0;
+                for (int K = 2; L > 0 && K * L <= span && nk >= 2 * (K + 3) && K <= 64; K *= 2) {
+                    double rss = 0;
+                    splineFit(K, &rss);
+                    if (!(rss < 1e307)) continue;
+                    const double bic = nd * std::log(rss / nd) + (K + 3) * std::log(nd);
+                    if (bic < bestBic - 1e-9) {
+                        bestBic = bic;
+                        code = -K;
+                    }
+                }
+                if (it >= 3) frozen[gi] = code;  // settle the model: the rejection then converges
+            }
+            Eigen::VectorXd c;
+            if (code >= 0) {
+                c = solve(code);
+                c(0) += y0;  // P_0 = 1: the mean goes back into the constant term
+                g.trend.degree = code;
+                g.trend.knots = 0;
+            } else {
+                double rss = 0;
+                c = splineFit(-code, &rss);
+                c.array() += y0;  // the B-spline basis sums to 1
+                g.trend.degree = 3;
+                g.trend.knots = -code;
+            }
+            g.trend.coefficients.assign(c.data(), c.data() + c.size());
+            for (size_t q = g.a; q < g.b; ++q) {
+                const uint32_t i = ord[q];
+                res.residuals[i] = oc[i] - segmentAt(g.trend, t[i]);
+                if (res.kept[i]) ss += res.residuals[i] * res.residuals[i];
+            }
+            nkAll += nk;
         }
-        if (nk < 1) {
+        if (nkAll < 1) {
             res.error = "the rejection removed every point";
             return res;
         }
-        // Normal equations in blocks (M += B Bᵀ), Legendre basis: well conditioned.
-        const int m = d + 1;
-        Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m);
-        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
-        Eigen::MatrixXd B(m, blockCols);
-        Eigen::VectorXd y(blockCols);
-        int fill = 0;
-        auto flush = [&]() {
-            if (fill == 0) return;
-            M.selfadjointView<Eigen::Lower>().rankUpdate(B.leftCols(fill));
-            rhs.noalias() += B.leftCols(fill) * y.head(fill);
-            fill = 0;
-        };
-        for (size_t i = 0; i < n; ++i) {
-            if (!res.kept[i]) continue;
-            legendre((t[i] - res.tCenter) / res.tHalfSpan, d, basis.data());
-            for (int j = 0; j < m; ++j) B(j, fill) = basis[static_cast<size_t>(j)];
-            y(fill) = oc[i];
-            if (++fill == blockCols) flush();
-        }
-        flush();
-        const Eigen::MatrixXd Ms = M.selfadjointView<Eigen::Lower>();
-        Eigen::VectorXd c = Ms.ldlt().solve(rhs);
-        if (!c.allFinite()) c = Ms.completeOrthogonalDecomposition().solve(rhs);
-        res.degree = d;
-        res.coefficients.assign(c.data(), c.data() + m);
-        double ss = 0;
-        for (size_t i = 0; i < n; ++i) {
-            if (!used[i]) continue;  // the others get their residual after the loop
-            res.residuals[i] = oc[i] - trendAt(res.coefficients, (t[i] - res.tCenter) / res.tHalfSpan);
-            if (res.kept[i]) ss += res.residuals[i] * res.residuals[i];
-        }
-        res.sigmaS = std::sqrt(ss / static_cast<double>(nk));
+        res.sigmaS = std::sqrt(ss / static_cast<double>(nkAll));
         if (cancelled(fb)) {
             res.error = "cancelled";
             return res;
@@ -242,8 +440,9 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
         if (k == 0) break;
         bool changed = false;
         const double lim = k * res.sigmaS;
-        for (size_t i = 0; i < n; ++i) {
-            if (!used[i]) continue;
+        for (const uint32_t i : ord) {
+            // A gross outlier stays out (its residual is against the trend it never entered).
+            if (!res.kept[i] && std::fabs(res.residuals[i]) > p.grossSigma * res.sigmaS && p.grossSigma > 0) continue;
             const uint8_t keep = std::fabs(res.residuals[i]) <= lim;
             if (keep != res.kept[i]) {
                 res.kept[i] = keep;
@@ -257,8 +456,18 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
                                    std::to_string(p.maxIterations) + " iterations");
         }
     }
+    res.degree = 0;
+    size_t longest = 0;
+    for (size_t gi = 0; gi < segs.size(); ++gi) {
+        res.degree = std::max(res.degree, segs[gi].trend.degree);
+        if (segs[gi].b - segs[gi].a > segs[longest].b - segs[longest].a) longest = gi;
+        res.segments.push_back(segs[gi].trend);
+    }
+    res.tCenter = segs[longest].trend.tCenter;
+    res.tHalfSpan = segs[longest].trend.tHalfSpan;
+    res.coefficients = segs[longest].trend.coefficients;
     for (size_t i = 0; i < n; ++i)
-        if (!used[i]) res.residuals[i] = oc[i] - trendAt(res.coefficients, (t[i] - res.tCenter) / res.tHalfSpan);
+        if (!used[i]) res.residuals[i] = oc[i] - evaluateTrend(res, t[i]);
     std::vector<double> kr;
     for (size_t i = 0; i < n; ++i)
         if (res.kept[i]) kr.push_back(res.residuals[i]);
@@ -270,9 +479,10 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
     res.stats = residualStats(kr);
 
     // Normal points.
-    res.binLengthS = p.binLengthS > 0 ? p.binLengthS : normalPointBinS(p.altitudeKm);
+    const bool stationKnown = std::isfinite(p.stationLatDeg) && std::isfinite(p.stationLonDeg) && std::isfinite(p.dayStartMjd);
     res.minPointsPerBin = p.minPointsPerBin > 0 ? p.minPointsPerBin : (p.daylight ? 6 : 3);
     if (p.normalPoints) {
+        if (stationKnown && p.minPointsPerBin == 0) res.minPointsPerBin = 3;
         const double L = res.binLengthS;
         std::vector<uint32_t> idx;
         for (size_t i = 0; i < n; ++i)
@@ -285,7 +495,20 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
             size_t b = a;
             while (b < idx.size() && binOf(t[idx[b]]) == bin) ++b;
             const int cnt = static_cast<int>(b - a);
-            if (cnt < res.minPointsPerBin) {
+            // The ILRS minimum: 6 by day, 3 by night (the Sun at the station at the bin's middle).
+            int minPts = p.minPointsPerBin > 0 ? p.minPointsPerBin : (p.daylight ? 6 : 3);
+            double sunEl = NAN;
+            if (stationKnown) {
+                const double mid = p.dayStartS + (static_cast<double>(bin) + 0.5) * L;
+                sunEl = sunElevationDeg(p.dayStartMjd + (mid - p.dayStartS) / 86400.0, p.stationLatDeg, p.stationLonDeg);
+                const bool day = isDaylight(sunEl);
+                (day ? res.dayBins : res.nightBins)++;
+                if (p.minPointsPerBin == 0) {
+                    minPts = day ? 6 : 3;
+                    res.minPointsPerBin = std::max(res.minPointsPerBin, minPts);
+                }
+            }
+            if (cnt < minPts) {
                 ++res.binsTooSmall;
                 a = b;
                 continue;
@@ -316,6 +539,8 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
             np.peakMinusMeanPs = bs.peakMinusMean * 1e12;
             np.returnRatePct = p.fireRateHz > 0 ? 100.0 * cnt / (p.fireRateHz * L) : NAN;
             np.pointIndex = ep;
+            np.minPoints = minPts;
+            np.sunElevationDeg = sunEl;
             res.normalPoints.push_back(np);
             a = b;
         }

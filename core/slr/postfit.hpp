@@ -3,6 +3,17 @@
 // trend fitted to the accepted O-C, iterative k·σ rejection (2.5σ single-photon, 3σ
 // multi-photon), residual statistics, and normal points in bins aligned to 0h UTC whose length
 // follows the satellite's altitude, with a minimum number of points (6 by day, 3 by night).
+//
+// The trend model is chosen for the pass (issue 13): gross outliers are first rejected against
+// the local track (a leave-one-out quadratic through the neighbouring points, grossSigma robust
+// σ), so a point metres off the track never enters the fit; the pass is split into segments at
+// gaps longer than splitGapS (a polynomial across a gap bends to both sides); in each segment
+// the model is chosen by the Bayesian information criterion n·ln(RSS/n) + k·ln n (k
+// coefficients) among Legendre polynomials of degree 0..degree and cubic splines of 2, 4, …, 64
+// equal intervals no shorter than a bin (a trend without a prediction — the O-C against a fitted
+// TOF trend — bends at the ends of a pass more than a polynomial can follow); fixed degree, as
+// before, with autoDegree = false. Day or night per bin from the Sun's
+// elevation at the station (solar.hpp) when its position and the date are given.
 // A normal point: the epoch of the point nearest the bin's mean epoch, the trend there plus the
 // bin's mean residual (as O-C, and as a two-way TOF when the observed TOFs are given), bin RMS,
 // skew, kurtosis, peak − mean, number of points and return rate — the fields of a CRD type-11
@@ -23,14 +34,23 @@ namespace lwb::core::slr {
 double normalPointBinS(double altitudeKm);
 
 struct PostfitParams {
-    int degree = 10;              ///< trend polynomial degree (Legendre basis over the pass), 0..30
+    int degree = 10;              ///< trend polynomial degree (Legendre basis per segment), 0..30; the
+                                  ///< largest degree tried when autoDegree
+    bool autoDegree = true;       ///< choose the degree per segment (BIC); false = `degree` as given
+    double splitGapS = 0;         ///< split the trend at gaps longer than this (s); 0 = automatic
+                                  ///< (3 bin lengths, at least 20 s); < 0 = one trend for the pass
+    double grossSigma = 10;      ///< reject points this many robust σ off the local track before the
+                                  ///< fit; 0 = off, else 3..1000
     double rejectSigma = 3.0;     ///< k of the k·σ rejection: 2.5 single-photon, 3 multi-photon; 0 = off, else 1..10
     int maxIterations = 30;       ///< fit–reject iterations, 1..1000
     double binLengthS = 0;        ///< normal-point bin length (s), 0 = from altitudeKm; else 0.1..86400
     double altitudeKm = 0;        ///< satellite altitude (km) when binLengthS = 0
     double dayStartS = 0;         ///< epoch of 0h UTC of the pass's day (s, same scale as the epochs)
     int minPointsPerBin = 0;      ///< 0 = ILRS minimum (6 by day, 3 by night); else 1..1e6
-    bool daylight = false;        ///< day pass (for the ILRS minimum)
+    bool daylight = false;        ///< day pass (for the ILRS minimum) when the station is not given
+    double stationLatDeg = NAN;   ///< station geodetic latitude and east longitude (degrees) and the
+    double stationLonDeg = NAN;   ///< MJD of dayStartS: with all three, day or night per bin from the
+    double dayStartMjd = NAN;     ///< Sun's elevation at the bin's epoch (6 or 3 points minimum)
     double fireRateHz = 0;        ///< laser fire rate for the return rate; 0 = unknown (rate NaN)
     bool normalPoints = true;     ///< form normal points (off: trend and statistics only)
 };
@@ -38,13 +58,16 @@ struct PostfitParams {
 /// Empty when valid, else what is wrong.
 std::string validate(const PostfitParams& p);
 
-/// Moments of a set of residuals (s). skew = m3/m2^1.5, kurtosis = m4/m2² − 3 (excess, 0 for a
-/// Gaussian), population moments about the mean; peak = maximum of a Gaussian kernel density
-/// (Silverman bandwidth). NaN where undefined (n = 0; skew and kurtosis need rms > 0).
+/// Moments of a set of residuals (s), as the ILRS normal-point algorithm and CRD records take
+/// them: d = residual − mean, rms = sqrt(Σd²/(n−1)), skew = (Σd³/n)/rms³, kurtosis =
+/// (Σd⁴/n)/rms⁴ − 3 (0 for a Gaussian); peak = maximum of a Gaussian kernel density (Silverman
+/// bandwidth). (The MLRS normal points of the shared data match these RMS and kurtosis values;
+/// their skew is Σ|d|³/n/rms³, always positive — the signed third moment is kept here.) NaN
+/// where undefined (n = 0; rms needs n ≥ 2; skew and kurtosis need rms > 0).
 struct ResidualStats {
     long long n = 0;
     double mean = NAN;           ///< s
-    double rms = NAN;            ///< s, about the mean
+    double rms = NAN;            ///< s, about the mean, n − 1 in the denominator
     double skew = NAN;
     double kurtosis = NAN;       ///< excess
     double peakMinusMean = NAN;  ///< s
@@ -67,15 +90,30 @@ struct NormalPoint {
     double peakMinusMeanPs = NAN;  ///< (CRD field 11)
     double returnRatePct = NAN; ///< 100·points / (fire rate · bin length); NaN when unknown (CRD field 12)
     uint32_t pointIndex = 0;    ///< input index of the epoch point
+    int minPoints = 0;          ///< the minimum this bin had to reach (6 day, 3 night, or as given)
+    double sunElevationDeg = NAN;  ///< at the station at the epoch, when the station was given
+};
+
+/// One piece of the trend over [tStart, tEnd] (the used points of the segment): Legendre
+/// coefficients in u = (t − tCenter) / tHalfSpan (knots = 0), or a cubic B-spline with `knots`
+/// equal intervals over [tStart, tEnd] (knots + 3 coefficients; the end polynomials continue
+/// beyond).
+struct TrendSegment {
+    double tStart = 0, tEnd = 0, tCenter = 0, tHalfSpan = 1;
+    int degree = 0;     ///< Legendre degree, or 3 for a spline
+    int knots = 0;      ///< spline intervals; 0 = Legendre polynomial
+    std::vector<double> coefficients;
 };
 
 struct PostfitResult {
     bool ok = false;
     std::string error;
     std::vector<std::string> warnings;
-    int degree = 0;                     ///< degree actually fitted
-    double tCenter = 0, tHalfSpan = 1;  ///< trend variable u = (t − tCenter) / tHalfSpan ∈ [−1, 1]
-    std::vector<double> coefficients;   ///< Legendre coefficients of the trend (s)
+    int degree = 0;                     ///< highest degree fitted (over the segments)
+    double tCenter = 0, tHalfSpan = 1;  ///< the longest segment's trend variable u = (t − tCenter) / tHalfSpan
+    std::vector<double> coefficients;   ///< the longest segment's Legendre coefficients (s)
+    std::vector<TrendSegment> segments; ///< the trend, in time order (one when the pass has no long gap)
+    long long grossRejected = 0;        ///< of `rejected`: off the local track before the fit
     std::vector<uint8_t> kept;          ///< per input point: 1 when in the final fit
     std::vector<double> residuals;      ///< per input point: O-C − trend (s), every point
     ResidualStats stats;                ///< of the kept residuals
@@ -85,7 +123,8 @@ struct PostfitResult {
     long long rejected = 0;             ///< of those, removed by the k·σ rejection
     bool converged = true;
     double binLengthS = 0;
-    int minPointsPerBin = 0;
+    int minPointsPerBin = 0;            ///< the ILRS minimum used (the larger one when bins differ)
+    int dayBins = 0, nightBins = 0;     ///< bins judged by the Sun's elevation (station given)
     std::vector<NormalPoint> normalPoints;
     int binsTooSmall = 0;               ///< bins with points but fewer than the minimum
 };
@@ -97,7 +136,7 @@ struct PostfitResult {
 PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& use,
                       const std::vector<double>& tof, const PostfitParams& params, const Feedback* fb = nullptr);
 
-/// The fitted trend at epoch t (s of O-C).
+/// The fitted trend at epoch t (s of O-C): the segment holding t, else the nearest one.
 double evaluateTrend(const PostfitResult& r, double t);
 
 }  // namespace lwb::core::slr

@@ -6,85 +6,13 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
+#include "core/slr/slr_params.hpp"
 
 namespace lwb::core::slr {
 
 namespace {
 
 constexpr const char* kFormat = "laserwb-slr-presets";
-
-// One key of a section: a double, an int or a bool member of the params struct.
-struct Field {
-    const char* key;
-    double* d = nullptr;
-    int* i = nullptr;
-    bool* b = nullptr;
-};
-
-std::vector<Field> screenFields(ScreenParams& s) {
-    return {{"automatic", nullptr, nullptr, &s.automatic},
-            {"mag_t", &s.magT},
-            {"mag_oc", &s.magOc},
-            {"area_limit", nullptr, &s.areaLimit},
-            {"connectivity", nullptr, &s.connectivity},
-            {"cosine_c", &s.cosineC},
-            {"slope_neighbours", nullptr, &s.slopeNeighbours},
-            {"slope_bin_deg", &s.slopeBinDeg},
-            {"slope_peak_fraction", &s.slopePeakFraction},
-            {"slope_agree_fraction", &s.slopeAgreeFraction},
-            {"max_slope_range_deg", &s.maxSlopeRangeDeg},
-            {"slope_block_regions", nullptr, &s.slopeBlockRegions},
-            {"piece_rows", nullptr, &s.pieceRows},
-            {"recovery_gap_factor", &s.recoveryGapFactor},
-            {"area_tolerance", &s.areaTolerance},
-            {"auto_max_points", nullptr, &s.autoMaxPoints}};
-}
-
-std::vector<Field> postfitFields(PostfitParams& p) {
-    return {{"degree", nullptr, &p.degree},
-            {"reject_sigma", &p.rejectSigma},
-            {"max_iterations", nullptr, &p.maxIterations},
-            {"bin_length_s", &p.binLengthS},
-            {"min_points", nullptr, &p.minPointsPerBin},
-            {"daylight", nullptr, nullptr, &p.daylight},
-            {"fire_rate_hz", &p.fireRateHz},
-            {"normal_points", nullptr, nullptr, &p.normalPoints}};
-}
-
-// Reads a section's keys; unknown keys are errors. *error names the key.
-bool readSection(const Json& sec, std::vector<Field> fields, std::string* error) {
-    if (!sec.isObject()) {
-        *error = "must be an object";
-        return false;
-    }
-    for (const auto& [key, value] : sec.members()) {
-        bool known = false;
-        for (const Field& f : fields)
-            if (key == f.key) {
-                known = true;
-                bool ok = true;
-                if (f.d) ok = jsonNumber(sec, key, f.d, error);
-                else if (f.i) ok = jsonInt(sec, key, f.i, error);
-                else ok = jsonBool(sec, key, f.b, error);
-                if (!ok) return false;
-            }
-        if (!known) {
-            *error = "unknown key \"" + key + "\"";
-            return false;
-        }
-    }
-    return true;
-}
-
-Json sectionJson(const std::vector<Field>& fields) {
-    Json j = Json::object();
-    for (const Field& f : fields) {
-        if (f.d) j.set(f.key, *f.d);
-        else if (f.i) j.set(f.key, *f.i);
-        else j.set(f.key, *f.b);
-    }
-    return j;
-}
 
 std::string normalName(const std::string& s) {
     std::string out;
@@ -95,54 +23,61 @@ std::string normalName(const std::string& s) {
 
 }  // namespace
 
-PresetsResult presetsFromJson(const Json& doc, const std::string& source) {
+PresetsResult presetsFromJson(const Json& doc, const std::string& source, const JsonParseResult* parsed) {
     PresetsResult res;
-    auto fail = [&](const std::string& msg) {
-        res.error = source + ": " + msg;
+    auto at = [&](const std::vector<std::string>& path) { return parsed ? parsed->where(path) : source + ": "; };
+    auto fail = [&](const std::vector<std::string>& path, const std::string& msg) {
+        res.error = at(path) + msg;
         res.presets.clear();
         return res;
     };
-    if (!doc.isObject()) return fail("a presets file must be a JSON object");
-    for (const auto& [key, value] : doc.members())
-        if (key != "format" && key != "version" && key != "satellites") return fail("unknown key \"" + key + "\"");
-    if (const Json* f = doc.find("format"); f && !(f->isString() && f->asString() == kFormat))
-        return fail("\"format\" must be \"" + std::string(kFormat) + "\"");
-    if (const Json* v = doc.find("version"); v && !(v->isNumber() && v->asNumber() == 1))
-        return fail("\"version\" must be 1");
-    const Json* sats = doc.find("satellites");
-    if (!sats || !sats->isArray()) return fail("\"satellites\" must be an array of satellite entries");
+    if (!doc.is_object()) return fail({}, "a presets file must be a JSON object");
+    for (auto it = doc.begin(); it != doc.end(); ++it)
+        if (it.key() != "format" && it.key() != "version" && it.key() != "satellites")
+            return fail({it.key()}, "unknown key \"" + printableExcerpt(it.key()) + "\"");
+    if (doc.contains("format") && !(doc["format"].is_string() && doc["format"].get<std::string>() == kFormat))
+        return fail({"format"}, "\"format\" must be \"" + std::string(kFormat) + "\"");
+    if (doc.contains("version") && !(doc["version"].is_number() && doc["version"].get<double>() == 1))
+        return fail({"version"}, "\"version\" must be 1");
+    if (!doc.contains("satellites") || !doc["satellites"].is_array())
+        return fail({}, "\"satellites\" must be an array of satellite entries");
+    const Json& sats = doc["satellites"];
     std::set<std::string> names, ids;
-    for (size_t i = 0; i < sats->items().size(); ++i) {
-        const Json& e = sats->items()[i];
-        std::string where = "satellites[" + std::to_string(i) + "]";
-        if (!e.isObject()) return fail(where + ": must be an object");
+    for (size_t i = 0; i < sats.size(); ++i) {
+        const Json& e = sats[i];
+        const std::string index = "[" + std::to_string(i) + "]";
+        const std::vector<std::string> path{"satellites", index};
+        std::string where = "satellites" + index;
+        if (!e.is_object()) return fail(path, where + ": must be an object");
         SatellitePreset p;
         std::string err;
-        if (!jsonString(e, "name", &p.name, &err) || !jsonString(e, "ilrs_id", &p.ilrsId, &err))
-            return fail(where + ": " + err);
+        if (!jsonString(e, "name", &p.name, &err) || !jsonString(e, "ilrs_id", &p.ilrsId, &err)) return fail(path, where + ": " + err);
         p.name = std::string(trim(p.name));
         p.ilrsId = std::string(trim(p.ilrsId));
-        if (!p.name.empty() || !p.ilrsId.empty()) where += " (" + (p.name.empty() ? p.ilrsId : p.name) + ")";
-        if (p.name.empty() && p.ilrsId.empty()) return fail(where + ": needs a \"name\" or an \"ilrs_id\"");
+        if (!p.name.empty() || !p.ilrsId.empty())
+            where += " (" + printableExcerpt(p.name.empty() ? p.ilrsId : p.name) + ")";
+        if (p.name.empty() && p.ilrsId.empty()) return fail(path, where + ": needs a \"name\" or an \"ilrs_id\"");
         for (unsigned char c : p.ilrsId)
-            if (!std::isdigit(c)) return fail(where + ": \"ilrs_id\" must be digits (e.g. \"7603901\")");
-        for (const auto& [key, value] : e.members())
-            if (key != "name" && key != "ilrs_id" && key != "altitude_km" && key != "screen" && key != "postfit")
-                return fail(where + ": unknown key \"" + key + "\"");
-        if (!jsonNumber(e, "altitude_km", &p.postfit.altitudeKm, &err)) return fail(where + ": " + err);
-        if (p.postfit.altitudeKm < 0 || p.postfit.altitudeKm > 1e6) return fail(where + ": \"altitude_km\" must be 0..1e6");
-        if (const Json* s = e.find("screen"); s && !readSection(*s, screenFields(p.screen), &err))
-            return fail(where + ": \"screen\": " + err);
-        if (const Json* s = e.find("postfit"); s && !readSection(*s, postfitFields(p.postfit), &err))
-            return fail(where + ": \"postfit\": " + err);
-        if (const std::string v = validate(p.screen); !v.empty()) return fail(where + ": \"screen\": " + v);
-        PostfitParams pf = p.postfit;
-        pf.normalPoints = false;  // the altitude may come with the pass
-        if (const std::string v = validate(pf); !v.empty()) return fail(where + ": \"postfit\": " + v);
+            if (!std::isdigit(c)) return fail(path, where + ": \"ilrs_id\" must be digits (e.g. \"7603901\")");
+        // The parameters: the SLR schema's sections; "altitude_km" at the entry's top level is
+        // the older spelling of postfit.altitude_km.
+        Json params = Json::object();
+        for (auto it = e.begin(); it != e.end(); ++it) {
+            if (it.key() == "name" || it.key() == "ilrs_id") continue;
+            if (it.key() == "altitude_km") params["postfit"]["altitude_km"] = *it;
+            else params[it.key()] = *it;
+        }
+        SlrParams sp;  // parameter ranges only: whether the altitude is known is settled with the pass
+        if (!slrSchema().fromJson(params, &sp, &err, parsed, path)) {
+            // fromJson prefixes the position when it has the parse result; without it, the entry.
+            return fail({}, (parsed ? std::string() : where + ": ") + err);
+        }
+        p.screen = sp.screen;
+        p.postfit = sp.postfit;
         if (!p.name.empty() && !names.insert(normalName(p.name)).second)
-            return fail(where + ": the name \"" + p.name + "\" is used twice");
+            return fail(path, where + ": the name \"" + printableExcerpt(p.name) + "\" is used twice");
         if (!p.ilrsId.empty() && !ids.insert(p.ilrsId).second)
-            return fail(where + ": the ILRS id \"" + p.ilrsId + "\" is used twice");
+            return fail(path, where + ": the ILRS id \"" + p.ilrsId + "\" is used twice");
         res.presets.push_back(std::move(p));
     }
     res.ok = true;
@@ -156,26 +91,20 @@ PresetsResult loadPresets(const std::string& path) {
         r.error = j.error;
         return r;
     }
-    return presetsFromJson(j.value, path);
+    return presetsFromJson(j.value, path, &j);
 }
 
 Json presetsToJson(const std::vector<SatellitePreset>& presets) {
-    Json doc = Json::object();
-    doc.set("format", kFormat);
-    doc.set("version", 1);
     Json arr = Json::array();
     for (const SatellitePreset& p : presets) {
-        SatellitePreset c = p;
         Json e = Json::object();
-        if (!c.name.empty()) e.set("name", c.name);
-        if (!c.ilrsId.empty()) e.set("ilrs_id", c.ilrsId);
-        e.set("altitude_km", c.postfit.altitudeKm);
-        e.set("screen", sectionJson(screenFields(c.screen)));
-        e.set("postfit", sectionJson(postfitFields(c.postfit)));
-        arr.push(std::move(e));
+        if (!p.name.empty()) e["name"] = p.name;
+        if (!p.ilrsId.empty()) e["ilrs_id"] = p.ilrsId;
+        const Json params = slrSchema().toJson({p.screen, p.postfit});
+        for (auto it = params.begin(); it != params.end(); ++it) e[it.key()] = *it;
+        arr.push_back(std::move(e));
     }
-    doc.set("satellites", std::move(arr));
-    return doc;
+    return Json{{"format", kFormat}, {"version", 1}, {"satellites", arr}};
 }
 
 bool savePresets(const std::string& path, const std::vector<SatellitePreset>& presets, std::string* error) {
@@ -185,7 +114,7 @@ bool savePresets(const std::string& path, const std::vector<SatellitePreset>& pr
         *error = check.error + " (nothing written)";
         return false;
     }
-    return writeFileAtomic(path, doc.dump(2) + "\n", error);
+    return writeFileAtomic(path, dumpJson(doc), error);
 }
 
 const SatellitePreset* findPreset(const std::vector<SatellitePreset>& presets, const std::string& name,

@@ -12,7 +12,10 @@
 //         "postfit": { "degree": 10, "reject_sigma": 3, "bin_length_s": 0, "min_points": 0 } }
 //     ]
 //   }
-// Every key but "name" or "ilrs_id" (one of them) is optional; missing ones keep the defaults.
+// The "screen" and "postfit" sections are the SLR schema's (core/slr/slr_params.hpp): every
+// key is listed by `laserwb-cli slr --print-config`. Every key but "name" or "ilrs_id" (one of
+// them) is optional; missing ones keep the defaults. "altitude_km" may also be given at the
+// entry's top level (older files).
 // Unknown keys, wrong types, non-finite or out-of-range values and duplicate names or ids are
 // errors that name the entry and the key.
 #include <string>
@@ -37,8 +40,9 @@ struct PresetsResult {
     std::vector<SatellitePreset> presets;
 };
 
-/// Parses a presets document; `source` names it in errors.
-PresetsResult presetsFromJson(const Json& doc, const std::string& source = "presets");
+/// Parses a presets document; `source` names it in errors, `parsed` (the parse result the
+/// document came from) adds the line and column.
+PresetsResult presetsFromJson(const Json& doc, const std::string& source = "presets", const JsonParseResult* parsed = nullptr);
 /// Reads and parses a presets file.
 PresetsResult loadPresets(const std::string& path);
 /// The JSON document for the presets (every parameter written, so a file is self-describing).

@@ -1,5 +1,7 @@
 #include "core/slr/screen.hpp"
 
+#include "core/slr/slr_params.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -9,6 +11,7 @@
 #include "core/slr/kdtree2.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/screen_auto.hpp"
+#include "core/slr/screen_follow.hpp"
 
 namespace lwb::core::slr {
 
@@ -34,38 +37,7 @@ const char* pointClassName(PointClass c) {
     return "?";
 }
 
-std::string validate(const ScreenParams& p) {
-    auto bad = [](double v) { return !std::isfinite(v); };
-    if (bad(p.magT) || p.magT < 0) return "mag_T must be 0 (automatic) or a finite number > 0, not " + formatDouble(p.magT, 6);
-    if (bad(p.magOc) || p.magOc < 0) return "mag_OC must be 0 (automatic) or a finite number > 0, not " + formatDouble(p.magOc, 6);
-    if (p.magT > 1e15) return "mag_T " + formatDouble(p.magT, 6) + " is absurd (more than 1e15 pixels per second)";
-    if (p.magOc > 1e18) return "mag_OC " + formatDouble(p.magOc, 6) + " is absurd (more than 1e18 pixels per second)";
-    if (p.areaLimit < 0 || p.areaLimit > 1000000) return "area limit must be 0 (automatic) or 1..1000000 px, not " + std::to_string(p.areaLimit);
-    if (p.connectivity != 0 && p.connectivity != 4 && p.connectivity != 8)
-        return "connectivity must be 4, 8 or 0 (automatic), not " + std::to_string(p.connectivity);
-    if (bad(p.cosineC) || p.cosineC < 0.5 || p.cosineC >= 1) return "cosine constant C must be in [0.5, 1) (paper: 0.9 < C < 1)";
-    if (p.slopeNeighbours < 2 || p.slopeNeighbours > 64) return "slope neighbours must be 2..64";
-    if (bad(p.slopeBinDeg) || p.slopeBinDeg < 0.25 || p.slopeBinDeg > 30) return "slope bin must be 0.25..30 degrees";
-    if (bad(p.slopePeakFraction) || p.slopePeakFraction <= 0 || p.slopePeakFraction >= 1) return "slope peak fraction must be in (0, 1)";
-    if (bad(p.slopeAgreeFraction) || p.slopeAgreeFraction <= 0 || p.slopeAgreeFraction > 1) return "slope agree fraction must be in (0, 1]";
-    if (p.slopeBlockRegions != 0 && (p.slopeBlockRegions < 10 || p.slopeBlockRegions > 100000000))
-        return "slope block must be 0 (one histogram) or at least 10 regions";
-    if (bad(p.maxSlopeRangeDeg) || p.maxSlopeRangeDeg < 2 || p.maxSlopeRangeDeg > 180) return "maximum slope range must be 2..180 degrees";
-    if (p.pieceRows < 0 || p.pieceRows > 1000000) return "piece rows must be 0..1000000";
-    if (bad(p.recoveryGapFactor) || p.recoveryGapFactor < 0 || p.recoveryGapFactor > 1e6) return "recovery gap factor must be 0..1e6";
-    if (bad(p.areaTolerance) || p.areaTolerance <= 0 || p.areaTolerance > 0.5) return "area tolerance must be in (0, 0.5]";
-    if (p.autoMaxPoints < 1000 || p.autoMaxPoints > 10000000) return "automatic-mode points must be 1000..10000000";
-    if (p.refineRounds < 0 || p.refineRounds > 3) return "refine rounds must be 0..3";
-    if (bad(p.sparseRateBelow) || p.sparseRateBelow < 0 || p.sparseRateBelow > 1e7)
-        return "sparse-pass rate must be in [0, 1e7] returns per second";
-    if (!p.automatic) {
-        if (p.magT == 0) return "mag_T not given and the automatic mode is off";
-        if (p.magOc == 0) return "mag_OC not given and the automatic mode is off";
-        if (p.areaLimit == 0) return "area limit not given (0) and the automatic mode is off";
-        if (p.connectivity == 0) return "connectivity not given and the automatic mode is off";
-    }
-    return {};
-}
+std::string validate(const ScreenParams& p) { return slrSchema().validate({p, PostfitParams{}}, "screen."); }
 
 std::vector<uint32_t> splitByArea(const std::vector<Region>& regions, int64_t areaLimit) {
     std::vector<uint32_t> out;
@@ -452,6 +424,9 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
         for (size_t i = 0; i < n; ++i) flat[i] = oc[i] - shift[i];
         PostfitParams pp;
         pp.degree = 8;
+        pp.autoDegree = false;  // the refinement's trend as before: one degree-8 polynomial,
+        pp.splitGapS = -1;      // no segments and no gross-outlier pass (the 3σ clip does)
+        pp.grossSigma = 0;
         pp.rejectSigma = 3;
         pp.normalPoints = false;
         pp.binLengthS = 1;  // unused (no normal points); keeps validate() content
@@ -546,6 +521,32 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
     const double span = n > 1 ? *std::max_element(t.begin(), t.end()) - *std::min_element(t.begin(), t.end()) : 0;
     const bool sparse = params.sparseRateBelow <= 0 || !(span > 0) || double(n) / span < params.sparseRateBelow;
     if (res.ok && params.automatic && params.refineRounds > 0 && sparse) refine(t, oc, params, fb, res);
+    // Track following for sparse passes (like the refinement): a dense pass's track forms
+    // regions at any usable scale, and following 10⁵ returns costs a third of a 10⁶-point run.
+    if (res.ok && params.automatic && params.followTrack && sparse && !cancelled(fb)) {
+        const auto tf = Clock::now();
+        // On the O-C as given: smooth, whereas a refinement's flattened O-C has kinks at the
+        // ends of the trend it subtracted (held constant beyond the accepted span).
+        const FollowResult f = followTrack(t, oc, acceptedMask(res), FollowParams{}, fb);
+        if (f.ok) {
+            for (size_t i = 0; i < n; ++i) {
+                const bool was = res.pointClass[i] != PointClass::Noise, now = f.accepted[i] != 0;
+                if (was == now) continue;
+                if (now) {
+                    res.pointClass[i] = PointClass::Recovered;
+                    ++res.recoveredPoints;
+                    --res.noisePoints;
+                } else {
+                    (res.pointClass[i] == PointClass::Signal ? res.signalPoints : res.recoveredPoints)--;
+                    res.pointClass[i] = PointClass::Noise;
+                    ++res.noisePoints;
+                }
+            }
+            res.followedAdded = f.added;
+            res.followedDropped = f.dropped;
+        }
+        res.recoveryMs += msSince(tf);
+    }
     res.totalMs = msSince(t0);
     if (res.ok && fb) fb->setProgress(1.0);
     return res;

@@ -82,6 +82,11 @@ struct ScreenParams {
     /// and the refinement rounds; dense passes (kHz) do not need them and skip their cost.
     /// 0 = always use them.
     double sparseRateBelow = 50;
+    /// Automatic mode, sparse passes (sparseRateBelow): follow the track from the accepted
+    /// pieces through the pass afterwards (screen_follow.hpp): the sparse ends of the arc,
+    /// stretches between pieces and pieces beyond gaps, with the density contrast along the
+    /// track as the test. Off with automatic = false (the paper's fixed procedure).
+    bool followTrack = true;
 };
 
 /// Empty when the parameters are valid, else what is wrong (names the parameter).
@@ -106,6 +111,8 @@ struct ScreenResult {
     bool autoMagT = false, autoMagOc = false, autoArea = false, autoConnectivity = false;
     std::vector<ScaleTrial> trials;  ///< automatic mode: every scale tried, in order (of the kept round)
     int refinedRounds = 0;           ///< screening rounds on a flattened O-C that were kept (refineRounds)
+    long long followedAdded = 0;     ///< followTrack: points added as recovered
+    long long followedDropped = 0;   ///< followTrack: accepted points returned to noise (off the followed track)
     std::vector<double> flattenS;    ///< when refinedRounds > 0: per point, the trend subtracted from the O-C
                                      ///< before the kept round (its image is of oc − flattenS); else empty
     // Per point (same order as the input).

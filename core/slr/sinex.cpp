@@ -136,11 +136,11 @@ SinexReadResult parseSinex(std::string_view text, const std::string& source) {
                     warn(where(src, lineNo) + "REF_EPOCH \"" + excerpt(f[5]) + "\" is not YY:DOY:SSSSS; ignored");
                     continue;
                 }
-                if (!parseDouble(f[8], &value)) {
+                if (!parseFortranDouble(f[8], &value)) {
                     warn(where(src, lineNo) + "estimated value \"" + excerpt(f[8]) + "\" is not a finite number; ignored");
                     continue;
                 }
-                if (f.size() > 9 && !parseDouble(f[9], &sigma)) sigma = NAN;
+                if (f.size() > 9 && !parseFortranDouble(f[9], &sigma)) sigma = NAN;
                 const std::string unit(f[6]);
                 if ((which < 3 && unit != "m") || (which >= 3 && unit != "m/y")) {
                     warn(where(src, lineNo) + type + " unit \"" + excerpt(unit) + "\" (expected " +

@@ -20,6 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string_view bytes = lwb::fuzz::asText(data, size);
     auto starts = [&](const char* magic, size_t n) { return size >= n && std::memcmp(data, magic, n) == 0; };
     ImageReadParams params;
+    params.maxPixels = lwb::fuzz::kMaxPixels;
     std::string path;
     if (starts("\x89PNG", 4)) path = lwb::fuzz::inputFile(bytes, "png");
     else if (starts("II*\0", 4) || starts("MM\0*", 4)) path = lwb::fuzz::inputFile(bytes, "tif");

@@ -3,18 +3,22 @@
 // here: include this header in the target's one source file):
 // - no worker threads (one input at a time; faster and quieter under ASan);
 // - no log lines (imread reports every undecodable input);
-// - a decoded-size cap of 2^20 pixels through OpenCV's own OPENCV_IO_MAX_IMAGE_PIXELS (unless
-//   already set), so that a few header bytes declaring a huge image are refused before the
-//   pixel buffer is allocated instead of ending the run as an out-of-memory. This stands in for
-//   the readers' own decoded-size limit while there is none; it is not part of what is tested.
+// - kMaxPixels (2^20) as the readers' own decoded-size limit (checked from the header, before
+//   decoding: a few header bytes can declare a 65535x65535 image), and the same cap through
+//   OpenCV's OPENCV_IO_MAX_IMAGE_PIXELS (unless already set) as a backstop for a header our check
+//   does not parse, so that such an input is refused instead of ending the run as an
+//   out-of-memory.
 #include <cstdlib>
+#include <string>
 #include <opencv2/core.hpp>
 #include <opencv2/core/utils/logger.hpp>
 
 namespace lwb::fuzz {
 
+constexpr long long kMaxPixels = 1 << 20;
+
 inline void quietOpenCv() {
-    ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", "1048576", 0);
+    ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(kMaxPixels).c_str(), 0);
     cv::setNumThreads(0);
     cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
 }

@@ -24,6 +24,7 @@
 #include "core/sim/slr_sim.hpp"
 #include "core/slr/oc_csv.hpp"
 #include "core/slr/presets.hpp"
+#include "core/slr/slr_params.hpp"
 
 namespace fs = std::filesystem;
 using namespace lwb::core;
@@ -134,6 +135,8 @@ void footprintSeeds() {
     const footprint::FootprintParams fp;
     text("footprint_config", "defaults.json", footprint::footprintParamsToJson(fp).dump());
     text("footprint_config", "partial.json", "{\"method\": \"gcm\", \"roi\": {\"size\": 40}}\n");
+    text("footprint_config", "set-roi.txt", "roi.size=40");
+    text("footprint_config", "set-preset.txt", "preset=yao2021");
     text("json", "footprint.json", footprint::footprintParamsToJson(fp).dump(-1));
 
     sim::FootprintSimParams sp;
@@ -205,6 +208,10 @@ void jsonSeeds() {
     presets[1].screen.automatic = true;
     const std::string doc = slr::presetsToJson(presets).dump();
     text("slr_presets", "two.json", doc);
+    text("slr_config", "defaults.json", slr::slrSchema().toJson(slr::SlrParams{}).dump(1));
+    text("slr_config", "partial.json", "{\"screen\": {\"cosine_c\": 0.97, \"automatic\": true}}\n");
+    text("slr_config", "set-cosine.txt", "screen.cosine_c=0.97");
+    text("slr_config", "set-auto.txt", "screen.area_limit=auto");
     text("slr_presets", "minimal.json",
          "{\"format\": \"laserwb-slr-presets\", \"version\": 1, \"satellites\": [{\"ilrs_id\": \"1\"}]}");
     text("json", "presets.json", doc);

@@ -1,0 +1,243 @@
+#include "core/common/output_set.hpp"
+
+#include <atomic>
+#include <cerrno>
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace lwb::core {
+
+namespace {
+
+std::string folderOf(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    if (slash == std::string::npos) return ".";
+    return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+std::string baseOf(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string realPath(const std::string& path) {
+    char buf[PATH_MAX];
+    return ::realpath(path.c_str(), buf) ? std::string(buf) : std::string();
+}
+
+// The file a path names, for comparisons: device and inode when it exists, else the
+// canonical folder and the name.
+struct Identity {
+    bool exists = false;
+    dev_t dev = 0;
+    ino_t ino = 0;
+    std::string canonical;
+    bool same(const Identity& o) const {
+        if (exists && o.exists) return dev == o.dev && ino == o.ino;
+        return !exists && !o.exists && canonical == o.canonical;
+    }
+};
+
+const char* kindOf(mode_t m) {
+    if (S_ISCHR(m)) return "a character device";
+    if (S_ISBLK(m)) return "a block device";
+    if (S_ISFIFO(m)) return "a FIFO (named pipe)";
+    if (S_ISSOCK(m)) return "a socket";
+    return "not a regular file";
+}
+
+}  // namespace
+
+std::string faultInjectedName(const char* phase) {
+    const char* v = std::getenv("LWB_FAULT_OUTPUT");
+    if (!v) return {};
+    const std::string s = v, p = std::string(phase) + ":";
+    return s.rfind(p, 0) == 0 ? s.substr(p.size()) : std::string();
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+    struct stat sa {}, sb {};
+    return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+OutputSet::~OutputSet() { abandon(); }
+
+void OutputSet::addInput(const std::string& path) {
+    if (!path.empty()) m_inputs.push_back(path);
+}
+
+void OutputSet::addOutput(const std::string& path) {
+    m_items.push_back({path, {}, {}});
+    m_checked = false;
+}
+
+bool OutputSet::check() {
+    m_error.clear();
+    m_naming = false;
+    std::vector<Identity> inputs;
+    for (const auto& in : m_inputs) {
+        struct stat st {};
+        if (::stat(in.c_str(), &st) != 0) continue;
+        Identity id;
+        id.exists = true;
+        id.dev = st.st_dev;
+        id.ino = st.st_ino;
+        inputs.push_back(id);
+    }
+    std::vector<Identity> outputs;
+    static std::atomic<int> counter{0};
+    for (auto& it : m_items) {
+        const std::string& p = it.path;
+        if (p.empty()) {
+            m_error = "an output file name is empty";
+            return false;
+        }
+        Identity id;
+        struct stat st {}, lst {};
+        const bool linkExists = ::lstat(p.c_str(), &lst) == 0;
+        if (::stat(p.c_str(), &st) == 0) {
+            if (S_ISDIR(st.st_mode)) {
+                m_error = p + ": is a folder, not a file (nothing written)";
+                return false;
+            }
+            if (!S_ISREG(st.st_mode)) {
+                m_error = p + ": is " + kindOf(st.st_mode) + "; refusing to replace it (nothing written)";
+                return false;
+            }
+            id.exists = true;
+            id.dev = st.st_dev;
+            id.ino = st.st_ino;
+            it.target = realPath(p);
+            if (it.target.empty()) it.target = p;
+            if (::access(it.target.c_str(), W_OK) != 0) {
+                m_error = p + ": is read-only; refusing to replace it (nothing written)";
+                return false;
+            }
+        } else if (linkExists && S_ISLNK(lst.st_mode)) {
+            m_error = p + ": is a symbolic link to a missing file (nothing written)";
+            return false;
+        } else {
+            const std::string dir = folderOf(p);
+            const std::string realDir = realPath(dir);
+            struct stat ds {};
+            if (realDir.empty() || ::stat(realDir.c_str(), &ds) != 0 || !S_ISDIR(ds.st_mode)) {
+                m_error = p + ": the folder " + dir + " does not exist (nothing written)";
+                return false;
+            }
+            it.target = (realDir == "/" ? "" : realDir) + "/" + baseOf(p);
+            id.canonical = it.target;
+        }
+        const std::string targetDir = folderOf(it.target);
+        if (::access(targetDir.c_str(), W_OK) != 0) {
+            m_error = p + ": cannot write in " + targetDir + ": " + std::strerror(errno) + " (nothing written)";
+            return false;
+        }
+        for (const auto& in : inputs)
+            if (id.same(in)) {
+                m_error = p + ": an output would overwrite the input (the same file); nothing written";
+                m_naming = true;
+                return false;
+            }
+        for (size_t k = 0; k < outputs.size(); ++k)
+            if (id.same(outputs[k])) {
+                m_error = "two outputs name the same file: " + m_items[k].path + " and " + p + " (nothing written)";
+                m_naming = true;
+                return false;
+            }
+        outputs.push_back(id);
+        it.staging = targetDir + "/.lwb-stage-" + std::to_string(::getpid()) + "-" + std::to_string(++counter) + "-" +
+                     baseOf(it.target);
+    }
+    m_checked = true;
+    return true;
+}
+
+std::string OutputSet::stagingPath(const std::string& output) const {
+    if (!m_checked) return {};
+    for (const auto& it : m_items)
+        if (it.path == output) return it.staging;
+    return {};
+}
+
+std::string OutputSet::unstaged(std::string message) const {
+    for (const auto& it : m_items) {
+        if (it.staging.empty()) continue;
+        for (size_t pos; (pos = message.find(it.staging)) != std::string::npos;)
+            message.replace(pos, it.staging.size(), it.path);
+    }
+    return message;
+}
+
+bool OutputSet::commit() {
+    if (!m_checked) {
+        m_error = "internal error: outputs committed before they were checked";
+        abandon();
+        return false;
+    }
+    for (const auto& it : m_items) {
+        struct stat st {};
+        if (::stat(it.staging.c_str(), &st) != 0) {
+            m_error = it.path + ": was not written (nothing written)";
+            abandon();
+            return false;
+        }
+    }
+    // Keep a hard link to each file about to be replaced, so that a failure half-way through
+    // can put the earlier ones back.
+    std::vector<std::string> backups(m_items.size());
+    const std::string faultName = faultInjectedName("rename");
+    size_t done = 0;
+    for (; done < m_items.size(); ++done) {
+        const Item& it = m_items[done];
+        struct stat st {};
+        if (::stat(it.target.c_str(), &st) == 0) {
+            const std::string b = folderOf(it.target) + "/.lwb-backup-" + std::to_string(::getpid()) + "-" +
+                                  std::to_string(done) + "-" + baseOf(it.target);
+            if (::link(it.target.c_str(), b.c_str()) == 0) backups[done] = b;
+        }
+        const bool injected = !faultName.empty() && it.target.size() >= faultName.size() &&
+                              it.target.compare(it.target.size() - faultName.size(), faultName.size(), faultName) == 0;
+        if (injected || std::rename(it.staging.c_str(), it.target.c_str()) != 0) {
+            m_error = "cannot write " + it.path + ": " + (injected ? "injected fault" : std::strerror(errno)) +
+                      " (nothing written; the files already replaced were restored)";
+            break;
+        }
+    }
+    if (done < m_items.size()) {
+        for (size_t j = 0; j < done; ++j) {
+            if (!backups[j].empty()) std::rename(backups[j].c_str(), m_items[j].target.c_str());
+            else std::remove(m_items[j].target.c_str());
+        }
+        for (size_t j = done; j < backups.size(); ++j)
+            if (!backups[j].empty()) std::remove(backups[j].c_str());
+        abandon();
+        return false;
+    }
+    for (const auto& b : backups)
+        if (!b.empty()) std::remove(b.c_str());
+    m_items.clear();
+    m_checked = false;
+    return true;
+}
+
+void OutputSet::drop(const std::string& output) {
+    for (size_t i = 0; i < m_items.size(); ++i)
+        if (m_items[i].path == output) {
+            if (!m_items[i].staging.empty()) std::remove(m_items[i].staging.c_str());
+            m_items.erase(m_items.begin() + static_cast<long>(i));
+            return;
+        }
+}
+
+void OutputSet::abandon() {
+    for (const auto& it : m_items)
+        if (!it.staging.empty()) std::remove(it.staging.c_str());
+    m_items.clear();
+    m_checked = false;
+}
+
+}  // namespace lwb::core

@@ -1,0 +1,104 @@
+#include "core/sim/terrain_photo.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace lwb::core::sim {
+
+std::vector<std::string> terrainPhotoDirs() {
+    std::vector<std::string> dirs;
+    if (const char* env = std::getenv("LWB_TERRAIN_PHOTOS"); env && *env) dirs.emplace_back(env);
+    dirs.emplace_back("/usr/share/doc/opencv-doc/examples/data");
+    return dirs;
+}
+
+namespace {
+TerrainPhotos loadPhotos() {
+    TerrainPhotos t;
+    const char* files[] = {"aero1.jpg", "aero3.jpg"};
+    for (const std::string& dir : terrainPhotoDirs()) {
+        TerrainPhotos cand;
+        cand.dir = dir;
+        for (const char* f : files) {
+            const cv::Mat bgr = cv::imread(dir + "/" + f, cv::IMREAD_COLOR);
+            if (bgr.empty() || bgr.cols < 200 || bgr.rows < 200) continue;
+            const int photo = static_cast<int>(cand.names.size());
+            cand.names.emplace_back(f);
+            cv::Mat grey, ch[3];
+            cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
+            cv::split(bgr, ch);
+            for (const cv::Mat* band : {&grey, &ch[2], &ch[1], &ch[0]}) {
+                cv::Mat f32;
+                band->convertTo(f32, CV_32F);
+                cand.bands.push_back(f32);
+                cand.photoOfBand.push_back(photo);
+            }
+        }
+        if (!cand.bands.empty()) {
+            cand.ok = true;
+            return cand;
+        }
+    }
+    t.error = "no terrain photographs (aero1.jpg, aero3.jpg) in";
+    for (const std::string& dir : terrainPhotoDirs()) t.error += " " + dir;
+    t.error += ": install Debian's opencv-doc (.ci/install-deps does) or set LWB_TERRAIN_PHOTOS to a folder holding them";
+    return t;
+}
+}  // namespace
+
+const TerrainPhotos& terrainPhotos() {
+    static const TerrainPhotos photos = loadPhotos();
+    return photos;
+}
+
+cv::Mat terrainPatch(const TerrainPhotos& photos, int w, int h, double mean, double rms, Rng& rng,
+                     const TerrainPatchParams& params, TerrainPatchInfo* info) {
+    const int bandIndex = std::min(static_cast<int>(rng.uniform() * photos.bands.size()),
+                                   static_cast<int>(photos.bands.size()) - 1);
+    const cv::Mat& src = photos.bands[static_cast<size_t>(bandIndex)];
+    // Zoom: photo pixels per ROI pixel, log-uniform; a large frame must still fit in the photo.
+    const double half = (std::max(w, h) / 2.0 + 2) * std::sqrt(2.0);
+    const double zoomFit = (std::min(src.cols, src.rows) / 2.0 - 8) / half;
+    const double zHi = std::min(params.zoomMax, zoomFit), zLo = std::min(params.zoomMin, zHi);
+    const double zoom = std::exp(rng.uniform(std::log(zLo), std::log(zHi)));
+    const double angle = rng.uniform(0, 2 * M_PI);
+    const bool flip = rng.uniform() < 0.5;
+    // Each ROI pixel integrates zoom×zoom photo pixels: a Gaussian of the box's extra spread
+    // stands in for the integral before the bilinear resampling.
+    const double blur = zoom > 1 ? std::sqrt((zoom * zoom - 1) / 12.0) : 0.0;
+    const double reach = zoom * half;
+    const int margin = static_cast<int>(std::ceil(3 * blur)) + 3;
+    const double lo = reach + margin;
+    const double cx = rng.uniform(lo, std::max(lo, src.cols - lo)), cy = rng.uniform(lo, std::max(lo, src.rows - lo));
+    cv::Rect box(static_cast<int>(std::floor(cx - reach - margin)), static_cast<int>(std::floor(cy - reach - margin)), 0, 0);
+    box.width = static_cast<int>(std::ceil(2 * (reach + margin))) + 2;
+    box.height = box.width;
+    box &= cv::Rect(0, 0, src.cols, src.rows);
+    cv::Mat crop = src(box).clone();
+    if (blur > 0.2) cv::GaussianBlur(crop, crop, cv::Size(0, 0), blur, blur, cv::BORDER_REFLECT);
+    const double c = std::cos(angle), s = std::sin(angle), fx = flip ? -1.0 : 1.0;
+    const double x0 = (w - 1) / 2.0, y0 = (h - 1) / 2.0, u0 = cx - box.x, v0 = cy - box.y;
+    // ROI (x, y) → crop (u, v) = centre + zoom·R(angle)·diag(fx, 1)·(x − x0, y − y0).
+    cv::Mat M = (cv::Mat_<double>(2, 3) << zoom * c * fx, -zoom * s, u0 - zoom * c * fx * x0 + zoom * s * y0,
+                 zoom * s * fx, zoom * c, v0 - zoom * s * fx * x0 - zoom * c * y0);
+    cv::Mat patch;
+    cv::warpAffine(crop, patch, M, cv::Size(w, h), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP, cv::BORDER_REFLECT);
+    cv::Scalar m, sd;
+    cv::meanStdDev(patch, m, sd);
+    const double gain = rms / std::max(sd[0], params.minRawRms);
+    patch = (patch - m[0]) * gain + mean;
+    if (info) {
+        info->photo = photos.names[static_cast<size_t>(photos.photoOfBand[static_cast<size_t>(bandIndex)])];
+        info->band = bandIndex % 4;
+        info->zoom = zoom;
+        info->angleDeg = angle * 180 / M_PI;
+        info->flipped = flip;
+        info->rawRms = sd[0];
+    }
+    return patch;
+}
+
+}  // namespace lwb::core::sim

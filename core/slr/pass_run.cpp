@@ -1,0 +1,109 @@
+#include "core/slr/pass_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/common/text.hpp"
+#include "core/slr/np_context.hpp"
+
+namespace lwb::core::slr {
+
+bool passSettings(const PassData& pass, const SlrParams& base, const std::vector<SatellitePreset>* presets,
+                  const std::string& satellite, const SinexFile* stations, PassSettings* out, std::string* error) {
+    PassSettings s;
+    s.params = base;
+    s.params.postfit.altitudeKm = pass.altitudeKm;
+    if (presets) {
+        const SatellitePreset* p =
+            satellite.empty() ? findPreset(*presets, pass.satellite, pass.ilrsId) : findPreset(*presets, satellite, satellite);
+        if (!p) {
+            std::string have;
+            const size_t shown = std::min<size_t>(presets->size(), 20);  // a long file is not dumped whole
+            for (size_t k = 0; k < shown; ++k) {
+                const auto& q = (*presets)[k];
+                have += (have.empty() ? "" : ", ") + printableExcerpt(q.name.empty() ? q.ilrsId : q.name) +
+                        (q.ilrsId.empty() || q.name.empty() ? "" : " (" + printableExcerpt(q.ilrsId) + ")");
+            }
+            if (presets->size() > shown) have += ", ... and " + std::to_string(presets->size() - shown) + " more";
+            const std::string who =
+                !satellite.empty() ? "\"" + satellite + "\""
+                : pass.satellite.empty() && pass.ilrsId.empty()
+                    ? std::string("(none: an O-C table names no satellite; give --satellite NAME)")
+                    : "\"" + pass.satellite + "\"" + (pass.ilrsId.empty() ? "" : " (ILRS id " + pass.ilrsId + ")");
+            *error = "no preset for satellite " + who + "; the file holds: " + (have.empty() ? "no entries" : have);
+            return false;
+        }
+        s.presetName = p->name.empty() ? p->ilrsId : p->name;
+        const double alt = s.params.postfit.altitudeKm;
+        s.params = {p->screen, p->postfit};
+        if (!(s.params.postfit.altitudeKm > 0)) s.params.postfit.altitudeKm = alt;
+    }
+    if (pass.hasCrd) {
+        s.notes = fillNormalPointContext(pass.crd.passes[size_t(pass.passIndex)], pass.cdpPad, stations, &s.params.postfit);
+        // Day or night unknown: the day minimum (6), unless a preset says which.
+        if (!std::isfinite(s.params.postfit.stationLatDeg) && s.presetName.empty()) s.params.postfit.daylight = true;
+    }
+    *out = std::move(s);
+    return true;
+}
+
+StationAgreement stationAgreement(const PassData& pass, const std::vector<uint8_t>& accepted, const PostfitResult* post) {
+    StationAgreement a;
+    for (int f : pass.stationFlag) {
+        a.noise += f == 1;
+        a.data += f == 2;
+    }
+    if (a.data == 0 || a.data + a.noise != static_cast<long long>(pass.stationFlag.size()) ||
+        accepted.size() != pass.stationFlag.size())
+        return a;
+    a.available = true;
+    long long tp = 0, fp = 0, keptTp = 0, keptFp = 0;
+    const bool kept = post && post->ok && post->kept.size() == accepted.size();
+    for (size_t i = 0; i < accepted.size(); ++i) {
+        const bool sig = pass.stationFlag[i] == 2;
+        tp += accepted[i] && sig;
+        fp += accepted[i] && !sig;
+        if (kept) {
+            keptTp += post->kept[i] && sig;
+            keptFp += post->kept[i] && !sig;
+        }
+    }
+    a.precision = tp + fp ? double(tp) / double(tp + fp) : 0;
+    a.recall = double(tp) / double(a.data);
+    if (kept) {
+        a.keptPrecision = keptTp + keptFp ? double(keptTp) / double(keptTp + keptFp) : 0;
+        a.keptRecall = double(keptTp) / double(a.data);
+    }
+    return a;
+}
+
+PassRunResult runPass(const PassData& pass, SlrParams params, Feedback* fb) {
+    PassRunResult r;
+    const auto t0 = std::chrono::steady_clock::now();
+    PostfitParams& pp = params.postfit;
+    if (!(pp.binLengthS > 0) && !(pp.altitudeKm > 0)) {
+        pp.normalPoints = false;
+        r.postNote = "no normal points: the satellite's altitude is unknown (give the bin length or the altitude)";
+    }
+    r.screen = screenSignal(pass.t, pass.oc, params.screen, fb);
+    if (!r.screen.ok) {
+        r.error = "screening failed: " + r.screen.error;
+        return r;
+    }
+    r.accepted = acceptedMask(r.screen);
+    for (uint8_t v : r.accepted) r.acceptedCount += v;
+    if (r.acceptedCount >= 2) {
+        r.post = postfit(pass.t, pass.oc, r.accepted, pass.tof, pp);
+        r.postOk = r.post.ok;
+        if (!r.post.ok) r.postNote = "post-fit not done: " + r.post.error;
+    } else {
+        r.postNote = "post-fit not done: " + std::to_string(r.acceptedCount) + " point(s) accepted";
+    }
+    r.agreement = stationAgreement(pass, r.accepted, r.postOk ? &r.post : nullptr);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.ok = true;
+    return r;
+}
+
+}  // namespace lwb::core::slr

@@ -1,0 +1,59 @@
+#pragma once
+// One pass from its data to its results — the parameters for the pass (preset, normal-point
+// context), the screening (paper 004), the post-fit with normal points, and the agreement with
+// the station's own filter flags — shared by `laserwb-cli slr` (one pass or --all-passes) and
+// the workbench's SLR workspace.
+#include <string>
+#include <vector>
+
+#include "core/common/feedback.hpp"
+#include "core/slr/pass_input.hpp"
+#include "core/slr/postfit.hpp"
+#include "core/slr/presets.hpp"
+#include "core/slr/screen.hpp"
+#include "core/slr/slr_params.hpp"
+
+namespace lwb::core::slr {
+
+struct PassSettings {
+    SlrParams params;
+    std::string presetName;          ///< the preset applied ("" when none)
+    std::vector<std::string> notes;  ///< normal-point context: fire rate, day or night, station
+};
+
+/// The parameters for `pass` before the user's explicit options: `base`, then the satellite's
+/// entry of `presets` (looked up under `satellite` when given, else the pass's H3 name / ILRS id;
+/// no presets = none), then the normal-point context of a CRD pass (C1 fire rate; the station's
+/// position from `stations` for day or night per bin; without a station and a preset, the day
+/// minimum of 6 points). False with *error when presets are given and none is for the pass.
+bool passSettings(const PassData& pass, const SlrParams& base, const std::vector<SatellitePreset>* presets,
+                  const std::string& satellite, const SinexFile* stations, PassSettings* out, std::string* error);
+
+/// The screening against the station's filter flags (2 data, 1 noise), when every point has one.
+struct StationAgreement {
+    bool available = false;
+    long long data = 0, noise = 0;        ///< station flags 2 and 1
+    double precision = NAN, recall = NAN; ///< of the screening
+    double keptPrecision = NAN, keptRecall = NAN;  ///< after the post-fit (NaN without one)
+};
+StationAgreement stationAgreement(const PassData& pass, const std::vector<uint8_t>& accepted, const PostfitResult* post);
+
+struct PassRunResult {
+    bool ok = false;
+    std::string error;                 ///< the screening failed
+    ScreenResult screen;
+    std::vector<uint8_t> accepted;     ///< per point: signal or recovered
+    size_t acceptedCount = 0;
+    bool postOk = false;
+    std::string postNote;              ///< why there is no post-fit, or no normal points
+    PostfitResult post;
+    StationAgreement agreement;
+    double seconds = 0;                ///< wall time of screening + post-fit
+};
+
+/// Screens the pass and, with at least two accepted points, fits the trend and forms the normal
+/// points. Normal points are switched off (with a note) when neither a bin length nor the
+/// satellite's altitude is known.
+PassRunResult runPass(const PassData& pass, SlrParams params, Feedback* fb = nullptr);
+
+}  // namespace lwb::core::slr

@@ -1,0 +1,388 @@
+#include "core/slr/screen_follow.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace lwb::core::slr {
+
+namespace {
+
+double robustSigma(std::vector<double>& r) {
+    if (r.empty()) return 0;
+    for (double& v : r) v = std::fabs(v);
+    const size_t m = r.size() / 2;
+    std::nth_element(r.begin(), r.begin() + static_cast<long>(m), r.end());
+    return 1.4826 * r[m];
+}
+
+// A polynomial of degree ≤ 2 in x = (t − t0) / scale, fitted by least squares, with the inverse
+// normal matrix for the prediction variance factor.
+struct LocalFit {
+    int degree = -1;
+    double t0 = 0, scale = 1;
+    double c[3] = {0, 0, 0};
+    double inv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    double sigma = 0;  // robust σ of the residuals (s)
+
+    double at(double t) const {
+        const double x = (t - t0) / scale;
+        return c[0] + c[1] * x + c[2] * x * x;
+    }
+    // x·(XᵀX)⁻¹·xᵀ: the variance of the prediction in units of σ².
+    double varFactor(double t) const {
+        const double x = (t - t0) / scale, b[3] = {1, x, x * x};
+        double v = 0;
+        for (int i = 0; i <= degree; ++i)
+            for (int j = 0; j <= degree; ++j) v += b[i] * inv[i][j] * b[j];
+        return std::max(0.0, v);
+    }
+    // The curvature term |c₂|·Δ² in seconds of O-C for Δ seconds past t0.
+    double curvature(double dt) const { return degree >= 2 ? std::fabs(c[2]) * (dt / scale) * (dt / scale) : 0; }
+};
+
+// Fits (T[i], O[i]) for the indices given; degree lowered to what the points allow.
+bool fitLocal(const std::vector<double>& T, const std::vector<double>& O, const uint32_t* idx, size_t n, double t0,
+              int maxDegree, LocalFit* f) {
+    if (n == 0) return false;
+    double scale = 0;
+    for (size_t k = 0; k < n; ++k) scale = std::max(scale, std::fabs(T[idx[k]] - t0));
+    if (!(scale > 0)) scale = 1;
+    int d = std::min<int>(maxDegree, n >= 6 ? 2 : n >= 3 ? 1 : 0);
+    for (; d >= 0; --d) {
+        const int m = d + 1;
+        double A[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, y[3] = {0, 0, 0};
+        for (size_t k = 0; k < n; ++k) {
+            const double x = (T[idx[k]] - t0) / scale, b[3] = {1, x, x * x};
+            for (int i = 0; i < m; ++i) {
+                y[i] += b[i] * O[idx[k]];
+                for (int j = 0; j < m; ++j) A[i][j] += b[i] * b[j];
+            }
+        }
+        // Gauss–Jordan inverse of the m×m normal matrix.
+        double M[3][6] = {};
+        for (int i = 0; i < m; ++i) {
+            for (int j = 0; j < m; ++j) M[i][j] = A[i][j];
+            M[i][m + i] = 1;
+        }
+        bool singular = false;
+        for (int col = 0; col < m && !singular; ++col) {
+            int piv = col;
+            for (int r = col + 1; r < m; ++r)
+                if (std::fabs(M[r][col]) > std::fabs(M[piv][col])) piv = r;
+            if (!(std::fabs(M[piv][col]) > 1e-12 * (1 + std::fabs(A[0][0])))) {
+                singular = true;
+                break;
+            }
+            if (piv != col)
+                for (int j = 0; j < 2 * m; ++j) std::swap(M[piv][j], M[col][j]);
+            const double inv = 1.0 / M[col][col];
+            for (int j = 0; j < 2 * m; ++j) M[col][j] *= inv;
+            for (int r = 0; r < m; ++r)
+                if (r != col) {
+                    const double f0 = M[r][col];
+                    for (int j = 0; j < 2 * m; ++j) M[r][j] -= f0 * M[col][j];
+                }
+        }
+        if (singular) continue;
+        f->degree = d;
+        f->t0 = t0;
+        f->scale = scale;
+        for (int i = 0; i < 3; ++i) {
+            f->c[i] = 0;
+            for (int j = 0; j < 3; ++j) f->inv[i][j] = 0;
+        }
+        for (int i = 0; i < m; ++i) {
+            for (int j = 0; j < m; ++j) {
+                f->inv[i][j] = M[i][m + j];
+                f->c[i] += M[i][m + j] * y[j];
+            }
+        }
+        std::vector<double> r(n);
+        for (size_t k = 0; k < n; ++k) r[k] = O[idx[k]] - f->at(T[idx[k]]);
+        f->sigma = robustSigma(r);
+        return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::vector<double> localTrackResiduals(const std::vector<double>& t, const std::vector<double>& oc,
+                                        const std::vector<uint32_t>& idx, int side) {
+    const size_t n = idx.size(), h = static_cast<size_t>(std::max(1, side));
+    std::vector<double> r(n, NAN);
+    std::vector<uint32_t> nb;
+    LocalFit lf;
+    for (size_t a = 0; a < n; ++a) {
+        // `side` on each side, shifted inwards at the ends of the list.
+        size_t lo = a >= h ? a - h : 0, hi = std::min(n - 1, lo + 2 * h);
+        if (hi - lo < 2 * h) lo = hi >= 2 * h ? hi - 2 * h : 0;
+        nb.clear();
+        for (size_t q = lo; q <= hi; ++q)
+            if (q != a) nb.push_back(idx[q]);
+        if (nb.size() >= 3 && fitLocal(t, oc, nb.data(), nb.size(), t[idx[a]], 2, &lf)) r[a] = oc[idx[a]] - lf.at(t[idx[a]]);
+    }
+    return r;
+}
+
+double poissonTail(long long m, double mean) {
+    if (m <= 0) return 1;
+    if (!(mean > 0)) return 0;
+    const double md = static_cast<double>(m);
+    if (md <= mean) return 1;  // not improbable
+    // Upper bound by the geometric series of the terms beyond m (ratio ≤ mean / (m + 1) < 1).
+    const double logTerm = -mean + md * std::log(mean) - std::lgamma(md + 1);
+    const double ratio = mean / (md + 1);
+    return std::min(1.0, std::exp(logTerm) / (1 - ratio));
+}
+
+FollowResult followTrack(const std::vector<double>& t, const std::vector<double>& oc,
+                         const std::vector<uint8_t>& accepted, const FollowParams& p, const Feedback* fb) {
+    FollowResult res;
+    const size_t n = t.size();
+    res.accepted = accepted;
+    if (oc.size() != n || accepted.size() != n) return res;
+    res.ok = true;
+    size_t nAcc = 0;
+    for (uint8_t a : accepted) nAcc += a != 0;
+    const size_t anchorN = static_cast<size_t>(std::max(4, p.anchorPoints));
+    if (nAcc < anchorN || n < 3) return res;
+
+    // Time order.
+    std::vector<uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    if (!std::is_sorted(t.begin(), t.end()))
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
+    std::vector<double> T(n), O(n);
+    std::vector<uint8_t> A(n);
+    for (size_t k = 0; k < n; ++k) {
+        T[k] = t[order[k]];
+        O[k] = oc[order[k]];
+        A[k] = accepted[order[k]] != 0;
+    }
+    const double span = T[n - 1] - T[0];
+    if (!(span > 0)) return res;
+
+    // Robust O-C span (the gate) and the local noise rate from the points called noise.
+    double gate = 0;
+    {
+        std::vector<double> s;
+        const size_t step = std::max<size_t>(1, n / 100000);
+        for (size_t k = 0; k < n; k += step) s.push_back(O[k]);
+        const size_t lo = static_cast<size_t>(0.005 * static_cast<double>(s.size() - 1));
+        const size_t hi = static_cast<size_t>(0.995 * static_cast<double>(s.size() - 1) + 0.5);
+        std::nth_element(s.begin(), s.begin() + static_cast<long>(lo), s.end());
+        const double a = s[lo];
+        std::nth_element(s.begin(), s.begin() + static_cast<long>(hi), s.end());
+        gate = s[hi] - a;
+        if (!(gate > 0)) return res;
+    }
+    const size_t nBins = std::clamp<size_t>(static_cast<size_t>(span / 10.0), 1, 64);
+    const double binW = span / static_cast<double>(nBins);
+    std::vector<double> density(nBins, 0.0);  // noise points per s per s of O-C
+    for (size_t k = 0; k < n; ++k)
+        if (!A[k]) density[std::min(nBins - 1, static_cast<size_t>((T[k] - T[0]) / binW))] += 1;
+    for (double& d : density) d = std::max(d, 1.0) / (binW * gate);  // at least one point per bin: never a zero density
+    auto densityOver = [&](double a, double b) {
+        if (a > b) std::swap(a, b);
+        const size_t i0 = std::min(nBins - 1, static_cast<size_t>(std::max(0.0, (a - T[0]) / binW)));
+        const size_t i1 = std::min(nBins - 1, static_cast<size_t>(std::max(0.0, (b - T[0]) / binW)));
+        double m = 0;
+        for (size_t i = i0; i <= i1; ++i) m = std::max(m, density[i]);
+        return m;
+    };
+    const double maxGap = p.maxGapS > 0 ? p.maxGapS : std::clamp(0.25 * span, 30.0, 300.0);
+    const double k = p.bandSigma;
+
+    // Anchors: runs of anchorN consecutive accepted points, ranked by their quadratic fit's width.
+    std::vector<uint32_t> acc;
+    for (size_t q = 0; q < n; ++q)
+        if (A[q]) acc.push_back(static_cast<uint32_t>(q));
+    struct Run {
+        size_t first;  // index into acc
+        double sigma;
+    };
+    std::vector<Run> runs;
+    LocalFit lf;
+    for (size_t a = 0; a + anchorN <= acc.size(); a += std::max<size_t>(1, anchorN / 2)) {
+        if (!fitLocal(T, O, acc.data() + a, anchorN, T[acc[a + anchorN / 2]], 2, &lf)) continue;
+        double worst = 0;
+        for (size_t q = a; q < a + anchorN; ++q) worst = std::max(worst, std::fabs(O[acc[q]] - lf.at(T[acc[q]])));
+        runs.push_back({a, worst});
+    }
+    if (runs.empty()) return res;
+    std::sort(runs.begin(), runs.end(), [](const Run& x, const Run& y) { return x.sigma < y.sigma || (x.sigma == y.sigma && x.first < y.first); });
+    // The track width σ: leave-one-out residuals of the accepted points about a quadratic through
+    // their 4 + 4 accepted neighbours in time, robust σ over the pass (1.4826·MAD), less the
+    // prediction's own spread (a factor ≈ 1.2 for 8 neighbours).
+    double sigmaTrack = 0;
+    {
+        std::vector<double> r = localTrackResiduals(T, O, acc, 4);
+        r.erase(std::remove_if(r.begin(), r.end(), [](double v) { return !std::isfinite(v); }), r.end());
+        sigmaTrack = robustSigma(r) / 1.2;
+        if (!(sigmaTrack > 0)) sigmaTrack = runs.front().sigma / 1.5;
+        sigmaTrack = std::max(sigmaTrack, 1e-15);
+    }
+    res.sigmaS = sigmaTrack;
+
+    std::vector<uint8_t> inTrack(n, 0);
+    std::vector<uint32_t> walk, cand, keep, fitIdx;
+    std::vector<std::pair<double, double>> stretches;  // followed time spans
+    const size_t fitN = static_cast<size_t>(std::max(8, p.fitPoints));
+    for (const Run& run : runs) {
+        if (cancelled(fb)) break;
+        // Skip anchors already followed through (any of their points on a track) or not a line.
+        bool taken = false;
+        for (size_t q = run.first; q < run.first + anchorN; ++q) taken = taken || inTrack[acc[q]];
+        if (taken || run.sigma > 6 * sigmaTrack) continue;
+        ++res.pieces;
+        for (size_t q = run.first; q < run.first + anchorN; ++q) inTrack[acc[q]] = 1;
+        double lo = T[acc[run.first]], hi = T[acc[run.first + anchorN - 1]];
+        // Walks to do: (seed points in walk order, direction). A piece found beyond a gap becomes
+        // a seed of its own (followed back towards the gap, and onwards on its own fit).
+        std::vector<std::pair<std::vector<uint32_t>, int>> tasks;
+        for (int dir : {-1, +1}) {
+            std::vector<uint32_t> seed;
+            for (size_t q = 0; q < anchorN; ++q) seed.push_back(acc[dir > 0 ? run.first + q : run.first + anchorN - 1 - q]);
+            tasks.push_back({seed, dir});
+        }
+        while (!tasks.empty()) {
+            walk = std::move(tasks.back().first);
+            const int dir = tasks.back().second;
+            tasks.pop_back();
+            double L = 0;
+            size_t sinceJump = 0;  // walk position of the first point beyond the last gap crossed
+            for (;;) {
+                const uint32_t front = walk.back();
+                const double tf = T[front];
+                // Local fit through the last fitN followed points (only those beyond the last gap
+                // crossed, once there are 6 of them: the track may change level or slope there).
+                size_t m = std::min(fitN, walk.size());
+                if (walk.size() - sinceJump >= 6) m = std::min(m, walk.size() - sinceJump);
+                fitIdx.assign(walk.end() - static_cast<long>(m), walk.end());
+                if (!fitLocal(T, O, fitIdx.data(), m, tf, 2, &lf)) break;
+                const double sigma = sigmaTrack;
+                // Window: a few typical spacings of the followed points, doubling up to maxGap.
+                const double spacing = std::max(1e-7, std::fabs(T[walk.back()] - T[walk[walk.size() - m]]) /
+                                                          static_cast<double>(std::max<size_t>(1, m - 1)));
+                if (L == 0) L = 3 * spacing;
+                auto band = [&](double tc) {
+                    const double dt = std::fabs(tc - tf);
+                    return std::min(gate / 8, k * sigma * std::sqrt(1 + lf.varFactor(tc)) + lf.curvature(dt));
+                };
+                cand.clear();
+                bool metTrack = false, pastEnd = true;
+                for (long q = static_cast<long>(front) + dir; q >= 0 && q < static_cast<long>(n); q += dir) {
+                    const double dt = dir * (T[q] - tf);
+                    if (dt > L) {
+                        pastEnd = false;
+                        break;
+                    }
+                    if (inTrack[q]) {
+                        metTrack = std::fabs(O[q] - lf.at(T[q])) <= band(T[q]);
+                        if (metTrack) break;
+                        continue;
+                    }
+                    if (std::fabs(O[q] - lf.at(T[q])) <= band(T[q])) cand.push_back(static_cast<uint32_t>(q));
+                }
+                // Expected noise in the search band over the window (trapezoid over 16 steps).
+                const double tEnd = tf + dir * L;
+                double area = 0;
+                for (int s = 0; s < 16; ++s) {
+                    const double a = tf + dir * L * s / 16.0, b = tf + dir * L * (s + 1) / 16.0;
+                    area += 0.5 * (band(a) + band(b)) * 2 * (L / 16.0);
+                }
+                const double rho = densityOver(tf, tEnd);
+                const double eWide = area * rho;
+                // A band that noise fills (or too many candidates to sort out) is no prediction: the
+                // track is lost here.
+                if (cand.size() > 64 || eWide > 5) break;
+                // Candidates consistent among themselves: each within k·σ·sqrt(1 + v) of a fit through
+                // the other candidates and the last followed points (leave one out, so that a noise
+                // point cannot pull the fit onto itself); the worst dropped while one is beyond.
+                keep = cand;
+                // Beyond a gap the candidates are judged among themselves (a fit across the gap
+                // would have to bend to both sides), when there are enough of them.
+                const bool jump = !cand.empty() && dir * (T[cand.front()] - tf) > 4 * spacing;
+                while (!keep.empty()) {
+                    const size_t near = jump && keep.size() >= 5 ? 0 : std::min<size_t>(walk.size(), 6);
+                    size_t worst = 0;
+                    double wr = -1;
+                    for (size_t c = 0; c < keep.size(); ++c) {
+                        fitIdx.assign(walk.end() - static_cast<long>(near), walk.end());
+                        for (size_t e = 0; e < keep.size(); ++e)
+                            if (e != c) fitIdx.push_back(keep[e]);
+                        std::sort(fitIdx.begin(), fitIdx.end());
+                        LocalFit cf;
+                        if (!fitLocal(T, O, fitIdx.data(), fitIdx.size(), tf, 2, &cf)) continue;
+                        const double r = std::fabs(O[keep[c]] - cf.at(T[keep[c]])) / std::sqrt(1 + cf.varFactor(T[keep[c]]));
+                        if (r > wr) {
+                            wr = r;
+                            worst = c;
+                        }
+                    }
+                    if (wr <= k * sigma) break;
+                    keep.erase(keep.begin() + static_cast<long>(worst));
+                }
+                bool took = false;
+                if (!keep.empty()) {
+                    // The density contrast: m consistent points where the narrow band (k·σ about the
+                    // track over the window) expects eLine noise points, with the number of such
+                    // bands the search band holds as the look-elsewhere factor.
+                    const double eLine = std::max(1e-300, rho * 2 * k * sigma * L);
+                    const double trials = std::max(1.0, eWide / eLine);
+                    if (poissonTail(static_cast<long long>(keep.size()), eLine) * trials < p.alpha) {
+                        std::sort(keep.begin(), keep.end());
+                        if (dir < 0) std::reverse(keep.begin(), keep.end());
+                        for (uint32_t q : keep) {
+                            inTrack[q] = 1;
+                            walk.push_back(q);
+                            res.added += !A[q];
+                            lo = std::min(lo, T[q]);
+                            hi = std::max(hi, T[q]);
+                        }
+                        if (jump && keep.size() >= 3) {
+                            // A piece beyond a gap: followed on its own fit, and back towards the gap.
+                            sinceJump = walk.size() - keep.size();
+                            tasks.push_back({std::vector<uint32_t>(keep.rbegin(), keep.rend()), -dir});
+                        }
+                        took = true;
+                        L = 0;
+                    }
+                }
+                if (metTrack) break;
+                if (!took) {
+                    if (L >= maxGap || pastEnd) break;
+                    L = std::min(2 * L, maxGap);
+                }
+            }
+        }
+        stretches.push_back({lo, hi});
+    }
+    // Accepted points inside a followed stretch but far from the track: noise.
+    if (p.dropSigma > 0) {
+        std::vector<uint32_t> tr;
+        for (size_t q = 0; q < n; ++q)
+            if (inTrack[q]) tr.push_back(static_cast<uint32_t>(q));
+        for (size_t q = 0; q < n && !tr.empty(); ++q) {
+            if (!A[q] || inTrack[q]) continue;
+            bool inside = false;
+            for (const auto& [a, b] : stretches) inside = inside || (T[q] >= a && T[q] <= b);
+            if (!inside) continue;
+            // The followed points nearest in time (up to 10 on each side).
+            const size_t pos = static_cast<size_t>(std::lower_bound(tr.begin(), tr.end(), static_cast<uint32_t>(q)) - tr.begin());
+            const size_t a = pos >= 10 ? pos - 10 : 0, b = std::min(tr.size(), pos + 10);
+            if (b - a < 3) continue;
+            if (!fitLocal(T, O, tr.data() + a, b - a, T[q], 2, &lf)) continue;
+            if (std::fabs(O[q] - lf.at(T[q])) > p.dropSigma * std::max(lf.sigma, sigmaTrack)) {
+                A[q] = 0;
+                ++res.dropped;
+            }
+        }
+    }
+    for (size_t q = 0; q < n; ++q) res.accepted[order[q]] = (A[q] || inTrack[q]) ? 1 : 0;
+    return res;
+}
+
+}  // namespace lwb::core::slr

@@ -1,0 +1,317 @@
+// One output discipline for every laserwb-cli command (issue 8): outputs are checked before any
+// work, written under staging names and renamed into place together. Here every command with two
+// or more outputs is made to fail on its last output — while writing, and while renaming after
+// the others were already renamed — and nothing may be left: no new file, no replaced file, no
+// staging file. And an output that names an input through another spelling (./x, a symbolic
+// link, a hard link), a device or a FIFO is refused with the input unchanged.
+#include <QtTest>
+#include <opencv2/imgcodecs.hpp>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/common/output_set.hpp"
+#include "core/sim/scene_sim.hpp"
+#include "test_support.hpp"
+
+using namespace lwbtest;
+
+namespace {
+const int kTimeoutMs = 120000;
+
+struct Case {
+    QStringList args;     ///< with @name for files in the case's folder
+    QStringList outputs;  ///< the outputs, last one last
+};
+}  // namespace
+
+class TestCliOutputs : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QString p(const QString& n) const { return m_dir.path() + "/" + n; }
+    QString m_calib;  // simulate calib folder
+
+    QStringList expand(const QStringList& args) const {
+        QStringList out;
+        for (const QString& a : args) out << (a.startsWith('@') ? p(a.mid(1)) : a);
+        return out;
+    }
+    void noStagingFiles() const {
+        for (const QString& f : filesIn(m_dir.path()))
+            QVERIFY2(!f.contains(".lwb-stage-") && !f.contains(".lwb-backup-") && !f.contains(".tmp-"), qPrintable(f));
+    }
+
+    // The commands with two or more outputs, each with its inputs prepared in the folder.
+    QMap<QString, Case> multiOutputCases() const {
+        QMap<QString, Case> c;
+        const QString slrIn = sharedPath("slr/7080_STELLA_crd_071220_2128_0.frd");
+        if (QFile::exists(slrIn))
+            c["slr"] = {{"slr", slrIn, "--np-bin", "30", "-q", "-o", "@s.csv", "--crd-out", "@s.frd", "--npt-out", "@s.npt"},
+                        {"s.csv", "s.frd", "s.npt"}};
+        c["calib detector"] = {{"calib", "detector", "@calib/detectors.csv", "-q", "-o", "@d.csv", "--detectors", "@d_rep.csv"},
+                               {"d.csv", "d_rep.csv"}};
+        c["calib waveform"] = {{"calib", "waveform", "@calib/waveform.csv", "--features", "@calib/features.csv", "-o", "@w.csv",
+                                "--model", "@w_model.csv"},
+                               {"w.csv", "w_model.csv"}};
+        c["calib pointing"] = {{"calib", "pointing", "@calib/control_points.csv", "--beams", "@calib/beams.json", "--model", "dual",
+                                "-q", "-o", "@pt.csv", "--params", "@pt_p.csv", "--residuals", "@pt_r.csv", "--iterations",
+                                "@pt_i.csv", "--beams-out", "@pt_b.json"},
+                               {"pt.csv", "pt_p.csv", "pt_r.csv", "pt_i.csv", "pt_b.json"}};
+        c["radiometry mosaic"] = {{"radiometry", "mosaic", "@f0.png", "@f1.png", "@f2.png", "-q", "-o", "@row.tif", "--coverage",
+                                   "@cov.png", "--pairs", "@pairs.csv"},
+                                  {"row.tif", "cov.png", "pairs.csv"}};
+        c["radiometry gcp"] = {{"radiometry", "gcp", "@img.png", "--gcps", "@gcps.csv", "-q", "-o", "@map.tif", "--valid",
+                                "@valid.png", "--residuals", "@gcp_res.csv"},
+                               {"map.tif", "valid.png", "gcp_res.csv"}};
+        c["radiometry fit"] = {{"radiometry", "fit", "@regions.csv", "-q", "-o", "@fit.csv", "--regions", "@fit_regions.csv"},
+                               {"fit.csv", "fit_regions.csv"}};
+        c["radiometry apply"] = {{"radiometry", "apply", "@img.png", "--fit", "@fit_in.csv", "--check", "@check.csv", "-q", "-o",
+                                  "@refl.tif", "--uncertainty", "@unc.tif", "--table", "@table.csv"},
+                                 {"refl.tif", "unc.tif", "table.csv"}};
+        c["simulate calib"] = {{"simulate", "calib", "@simc", "-q"},
+                               {"simc/beams.json", "simc/control_points.csv", "simc/pointing_truth.csv", "simc/detectors.csv",
+                                "simc/detector_truth.csv", "simc/waveform.csv", "simc/features.csv",
+                                "simc/waveform_truth.csv"}};
+        c["simulate footprint"] = {{"simulate", "footprint", "--count", "3", "-q", "@simf"},
+                                   {"simf/shot_000000.png", "simf/shot_000001.png", "simf/shot_000002.png", "simf/truth.csv"}};
+        return c;
+    }
+
+    // Runs a case that must succeed (to learn it works at all), then with the fault.
+    void runWithFault(const QString& name, const Case& c, const QString& phase, bool outputsExistBefore) {
+        for (const QString& o : c.outputs) QFile::remove(p(o));
+        QDir(p("simc")).removeRecursively();
+        QDir(p("simf")).removeRecursively();
+        if (outputsExistBefore) {
+            QDir().mkpath(p("simc"));
+            QDir().mkpath(p("simf"));
+            for (const QString& o : c.outputs) QVERIFY(writeText(p(o), "previous content of " + o.toUtf8()));
+        }
+        const QString last = c.outputs.last().section('/', -1);
+        const CliRun r = runCli(expand(c.args), kTimeoutMs, {"LWB_FAULT_OUTPUT=" + phase + ":" + last});
+        QVERIFY2(r.exitCode == 1, qPrintable(name + " " + phase + ": exit " + QString::number(r.exitCode) + "\n" + r.err));
+        QVERIFY2(r.err.contains(last), qPrintable(name + ": the message names the output: " + r.err));
+        for (const QString& o : c.outputs) {
+            if (outputsExistBefore)
+                QVERIFY2(readAll(p(o)) == "previous content of " + o.toUtf8(), qPrintable(name + " " + phase + ": " + o + " replaced"));
+            else
+                QVERIFY2(!QFile::exists(p(o)), qPrintable(name + " " + phase + ": " + o + " left behind"));
+        }
+        if (!outputsExistBefore) {
+            // A folder the run created for its outputs is gone too.
+            if (c.outputs.first().startsWith("simc/")) QVERIFY2(!QFileInfo::exists(p("simc")), qPrintable(name));
+            if (c.outputs.first().startsWith("simf/")) QVERIFY2(!QFileInfo::exists(p("simf")), qPrintable(name));
+        }
+        noStagingFiles();
+        for (const QString& sub : {"simc", "simf"})
+            for (const QString& f : filesIn(p(sub))) QVERIFY2(!f.contains(".lwb-"), qPrintable(f));
+    }
+
+private slots:
+    void initTestCase() {
+        QVERIFY(m_dir.isValid());
+        // Calibration inputs from the simulator.
+        CliRun r = runCli({"simulate", "calib", p("calib"), "-q"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        // Radiometry inputs: three overlapping frames, a 16-bit image with GCPs, regions and a fit.
+        lwb::core::sim::RowFramesParams rp;
+        rp.frames = 3;
+        const auto rf = lwb::core::sim::simulateRowFrames(rp, {}, 5);
+        for (size_t k = 0; k < rf.frames.size(); ++k)
+            QVERIFY(cv::imwrite(p(QString("f%1.png").arg(k)).toStdString(), rf.frames[k]));
+        cv::Mat img(60, 120, CV_16UC1);
+        for (int y = 0; y < img.rows; ++y)
+            for (int x = 0; x < img.cols; ++x) img.at<uint16_t>(y, x) = static_cast<uint16_t>(1000 + 200 * x + y);
+        QVERIFY(cv::imwrite(p("img.png").toStdString(), img));
+        QVERIFY(writeText(p("gcps.csv"), "id,x,y,map_x,map_y\nA,0,0,0,0.6\nB,119,0,1.19,0.6\nC,0,59,0,0.01\nD,119,59,1.19,0.01\n"));
+        QVERIFY(writeText(p("regions.csv"), "name,reflectance,dn\na,10,1000\nb,20,2000\nc,30.1,3000\nd,39.9,4000\n"));
+        QVERIFY(writeText(p("fit_in.csv"), "k,b,k_sd,b_sd,cov_kb,n\n0.001,0,1e-6,0.01,0,4\n"));
+        QVERIFY(writeText(p("check.csv"), "name,reflectance,x,y,w,h\nc1,1.7035,2,2,4,4\n"));
+    }
+
+    // Every multi-output command works when nothing is injected (so the fault runs below test
+    // the discipline, not a broken command).
+    void everyMultiOutputCommandWorks_data() {
+        QTest::addColumn<QString>("name");
+        for (const QString& n : multiOutputCases().keys()) QTest::newRow(qPrintable(n)) << n;
+    }
+    void everyMultiOutputCommandWorks() {
+        QFETCH(QString, name);
+        const Case c = multiOutputCases()[name];
+        QDir(p("simc")).removeRecursively();
+        QDir(p("simf")).removeRecursively();
+        const CliRun r = runCli(expand(c.args), kTimeoutMs);
+        QVERIFY2(r.exitCode == 0, qPrintable(name + ": " + r.err));
+        for (const QString& o : c.outputs) QVERIFY2(QFile::exists(p(o)), qPrintable(name + ": " + o));
+        noStagingFiles();
+    }
+
+    // The last output fails while being written or while being renamed into place (after the
+    // others were renamed): exit 1, the output named, and no output left (or each previous file
+    // kept exactly as it was).
+    void lastOutputFailsNothingLeft_data() {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QString>("phase");
+        QTest::addColumn<bool>("existed");
+        for (const QString& n : multiOutputCases().keys())
+            for (const char* phase : {"write", "rename"})
+                for (bool existed : {false, true})
+                    QTest::newRow(qPrintable(n + " " + phase + (existed ? " over old files" : ""))) << n << phase << existed;
+    }
+    void lastOutputFailsNothingLeft() {
+        QFETCH(QString, name);
+        QFETCH(QString, phase);
+        QFETCH(bool, existed);
+        runWithFault(name, multiOutputCases()[name], phase, existed);
+    }
+
+    // -o naming an input through another spelling is refused (exit 2) and the input unchanged.
+    void outputNamingAnInputIsRefused_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("input");
+        QTest::newRow("footprint ./x") << QStringList{"footprint", "@shot.png", "-o", "./shot.png"} << "shot.png";
+        QTest::newRow("footprint folder input") << QStringList{"footprint", "@shots", "-o", "@shots/shot_000001.png"}
+                                                << "shots/shot_000001.png";
+        QTest::newRow("trend symlink") << QStringList{"trend", "@cent.csv", "-o", "@cent_link.csv"} << "cent.csv";
+        QTest::newRow("trend hard link") << QStringList{"trend", "@cent.csv", "-o", "@cent_hard.csv"} << "cent.csv";
+        QTest::newRow("calib detector ../x") << QStringList{"calib", "detector", "@det.csv", "-o", "@sub/../det.csv"} << "det.csv";
+        QTest::newRow("calib detector report") << QStringList{"calib", "detector", "@det.csv", "--detectors", "./det.csv"}
+                                               << "det.csv";
+        QTest::newRow("calib stats") << QStringList{"calib", "stats", "@diff.csv", "-o", "./diff.csv"} << "diff.csv";
+        QTest::newRow("calib pointing beams-out") << QStringList{"calib", "pointing", "@calib/control_points.csv", "--beams",
+                                                                 "@calib/beams.json", "-o", "@pp.csv", "--beams-out",
+                                                                 "./calib/beams.json"}
+                                                  << "calib/beams.json";
+        QTest::newRow("radiometry apply") << QStringList{"radiometry", "apply", "@img.png", "--k", "0.001", "--b", "0", "-o",
+                                                         "./img.png"}
+                                          << "img.png";
+        QTest::newRow("radiometry mosaic coverage") << QStringList{"radiometry", "mosaic", "@f0.png", "@f1.png", "-o", "@r.tif",
+                                                                   "--coverage", "./f1.png"}
+                                                    << "f1.png";
+        QTest::newRow("radiometry fit regions") << QStringList{"radiometry", "fit", "@regions.csv", "-o", "@fx.csv",
+                                                               "--regions", "@regions_link.csv"}
+                                                << "regions.csv";
+        const QString slrIn = sharedPath("slr/7080_STELLA_crd_071220_2128_0.frd");
+        if (QFile::exists(slrIn)) {
+            QTest::newRow("slr crd-out ./pass") << QStringList{"slr", "@pass.frd", "-o", "@o.csv", "--crd-out", "./pass.frd",
+                                                               "--area-min", "1000000"}
+                                                << "pass.frd";
+            QTest::newRow("slr symlink") << QStringList{"slr", "@pass.frd", "-o", "@pass_link.frd"} << "pass.frd";
+        }
+    }
+    void outputNamingAnInputIsRefused() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, input);
+        // Fresh inputs.
+        QDir().mkpath(p("sub"));
+        QDir().mkpath(p("shots"));
+        QVERIFY(runCli({"simulate", "footprint", "--count", "2", "-q", p("shots")}).exitCode == 0);
+        QFile::remove(p("shot.png"));
+        QVERIFY(QFile::copy(p("shots/shot_000000.png"), p("shot.png")));
+        QVERIFY(writeText(p("cent.csv"), "time,beam,x,y\n2020-03-01,1,120.8,263.7\n2020-04-01,1,120.5,264.5\n"));
+        QFile::remove(p("cent_link.csv"));
+        QFile::remove(p("cent_hard.csv"));
+        QVERIFY(QFile::link(p("cent.csv"), p("cent_link.csv")));
+        QVERIFY(::link(p("cent.csv").toLocal8Bit().constData(), p("cent_hard.csv").toLocal8Bit().constData()) == 0);
+        QFile::remove(p("det.csv"));
+        QVERIFY(QFile::copy(p("calib/detectors.csv"), p("det.csv")));
+        QVERIFY(writeText(p("diff.csv"), "d\n0.1\n-0.05\n0.02\n"));
+        QFile::remove(p("regions_link.csv"));
+        QVERIFY(QFile::link(p("regions.csv"), p("regions_link.csv")));
+        const QString slrIn = sharedPath("slr/7080_STELLA_crd_071220_2128_0.frd");
+        if (QFile::exists(slrIn)) {
+            QFile::remove(p("pass.frd"));
+            QFile::remove(p("pass_link.frd"));
+            QVERIFY(QFile::copy(slrIn, p("pass.frd")));
+            QVERIFY(QFile::link(p("pass.frd"), p("pass_link.frd")));
+        }
+        const QByteArray before = readAll(p(input));
+        QVERIFY(!before.isEmpty());
+        // Relative spellings are relative to the folder: run there.
+        const QString cwd = QDir::currentPath();
+        QDir::setCurrent(m_dir.path());
+        const CliRun r = runCli(expand(args), kTimeoutMs);
+        QDir::setCurrent(cwd);
+        QVERIFY2(r.exitCode == 2, qPrintable(QString::number(r.exitCode) + ": " + r.err));
+        QVERIFY2(r.err.contains("overwrite the input"), qPrintable(r.err));
+        QVERIFY2(readAll(p(input)) == before, "the input was changed");
+        noStagingFiles();
+    }
+
+    // Two outputs naming one file in different spellings: refused before anything is written.
+    void twoOutputsOneFileRefused() {
+        const QString slrIn = sharedPath("slr/7080_STELLA_crd_071220_2128_0.frd");
+        if (!QFile::exists(slrIn)) QSKIP("shared SLR data absent");
+        QFile::remove(p("same.csv"));
+        const QString cwd = QDir::currentPath();
+        QDir::setCurrent(m_dir.path());
+        const CliRun r = runCli({"slr", slrIn, "-o", "same.csv", "--crd-out", "./same.csv"}, kTimeoutMs);
+        QDir::setCurrent(cwd);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("same file"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(p("same.csv")));
+    }
+
+    // A device or a FIFO as an output is refused and left as it was.
+    void specialFilesAreNotReplaced() {
+        CliRun r = runCli({"trend", p("cent.csv"), "-o", "/dev/null"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("character device"), qPrintable(r.err));
+        struct stat st {};
+        QVERIFY(::stat("/dev/null", &st) == 0 && S_ISCHR(st.st_mode));
+        QVERIFY(writeText(p("cent.csv"), "time,beam,x,y\n2020-03-01,1,120.8,263.7\n"));
+        QFile::remove(p("fifo_out"));
+        QVERIFY(::mkfifo(p("fifo_out").toLocal8Bit().constData(), 0600) == 0);
+        r = runCli({"trend", p("cent.csv"), "-o", p("fifo_out")}, 20000);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("FIFO"), qPrintable(r.err));
+        QVERIFY(::stat(p("fifo_out").toLocal8Bit().constData(), &st) == 0 && S_ISFIFO(st.st_mode));
+        // A symbolic link as output: the file it names is replaced, the link stays a link.
+        QFile::remove(p("real_out.csv"));
+        QFile::remove(p("link_out.csv"));
+        QVERIFY(writeText(p("real_out.csv"), "old"));
+        QVERIFY(QFile::link(p("real_out.csv"), p("link_out.csv")));
+        r = runCli({"trend", p("cent.csv"), "-o", p("link_out.csv"), "-q"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(QFileInfo(p("link_out.csv")).isSymLink());
+        QVERIFY(readAll(p("real_out.csv")).startsWith("camera,beam,month"));
+    }
+
+    // The core class itself: a missing folder, and commit restoring what it replaced.
+    void outputSetUnit() {
+        lwb::core::OutputSet none;
+        none.addOutput(p("no/such/folder/x.csv").toStdString());
+        QVERIFY(!none.check());
+        QVERIFY2(QString::fromStdString(none.error()).contains("does not exist"), none.error().c_str());
+        QVERIFY(!none.namingProblem());
+
+        QVERIFY(writeText(p("a.txt"), "A-old"));
+        QFile::remove(p("b.txt"));
+        {
+            lwb::core::OutputSet s;
+            s.addOutput(p("a.txt").toStdString());
+            s.addOutput(p("b.txt").toStdString());
+            QVERIFY2(s.check(), s.error().c_str());
+            QVERIFY(writeText(QString::fromStdString(s.stagingPath(p("a.txt").toStdString())), "A-new"));
+            QVERIFY(writeText(QString::fromStdString(s.stagingPath(p("b.txt").toStdString())), "B-new"));
+            qputenv("LWB_FAULT_OUTPUT", "rename:b.txt");
+            const bool ok = s.commit();
+            qunsetenv("LWB_FAULT_OUTPUT");
+            QVERIFY(!ok);
+        }
+        QCOMPARE(readAll(p("a.txt")), QByteArray("A-old"));  // put back
+        QVERIFY(!QFile::exists(p("b.txt")));
+        noStagingFiles();
+        {
+            lwb::core::OutputSet s;
+            s.addOutput(p("a.txt").toStdString());
+            QVERIFY(s.check());
+            QVERIFY(writeText(QString::fromStdString(s.stagingPath(p("a.txt").toStdString())), "A-new"));
+            // Abandoned (destroyed without commit): the target is untouched.
+        }
+        QCOMPARE(readAll(p("a.txt")), QByteArray("A-old"));
+        noStagingFiles();
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliOutputs)
+#include "test_cli_outputs.moc"

@@ -1,0 +1,129 @@
+// laserwb-cli slr --all-passes (issue 11): a day of passes in one go. Every pass of the file is a
+// row of summary.csv; a pass that cannot be processed is a failed row with its reason and the
+// others go on; --cpf may be a folder, from which each pass gets the prediction that fits it.
+#include <QtTest>
+
+#include "core/common/csv.hpp"
+#include "core/common/text.hpp"
+#include "core/slr/pass_input.hpp"
+#include "test_support.hpp"
+
+using namespace lwbtest;
+using namespace lwb::core;
+
+class TestSlrAllPasses : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QString p(const QString& n) const { return m_dir.path() + "/" + n; }
+
+    static CsvTable summary(const QString& path) {
+        const CsvReadResult r = readCsv(path.toStdString());
+        return r.ok ? r.table : CsvTable{};
+    }
+
+private slots:
+    void initTestCase() { QVERIFY(m_dir.isValid()); }
+
+    void everyPassIsARow() {
+        const QString in = sharedPath("slr/hy2c_202109.fr2");
+        if (!QFile::exists(in)) QSKIP("shared SLR data absent");
+        const CliRun r = runCli({"slr", in, "--all-passes", "--out-dir", p("hy2c")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const CsvTable t = summary(p("hy2c/summary.csv"));
+        // The file's six passes, in file order, each once.
+        const auto passes = slr::summarisePasses(slr::readCrd(in.toStdString()).file);
+        QCOMPARE(t.rows.size(), passes.size());
+        QCOMPARE(t.rows.size(), size_t(6));
+        const int cStatus = t.column("status"), cReason = t.column("reason"), cPoints = t.column("points"),
+                  cStart = t.column("start_utc"), cOut = t.column("output"), cAcc = t.column("accepted");
+        QVERIFY(cStatus >= 0 && cReason >= 0 && cPoints >= 0 && cStart >= 0 && cOut >= 0 && cAcc >= 0);
+        int ok = 0, failed = 0;
+        for (size_t i = 0; i < t.rows.size(); ++i) {
+            const auto& row = t.rows[i];
+            QCOMPARE(row[0], std::to_string(i + 1));
+            QCOMPARE(row[size_t(cStart)], passes[i].start);
+            QCOMPARE(row[size_t(cPoints)], std::to_string(passes[i].ranges));
+            if (row[size_t(cStatus)] == "failed") {
+                ++failed;
+                // Pass 1 (5 records), 4 and 5 are too short for the TOF trend: the reason says so.
+                QVERIFY2(row[size_t(cReason)].find("at least 10 are needed") != std::string::npos, row[size_t(cReason)].c_str());
+                QVERIFY(row[size_t(cOut)].empty());
+            } else {
+                QCOMPARE(row[size_t(cStatus)], std::string("ok"));
+                ++ok;
+                QVERIFY2(QFile::exists(p("hy2c/" + QString::fromStdString(row[size_t(cOut)]))), row[size_t(cOut)].c_str());
+            }
+        }
+        QCOMPARE(failed, 3);
+        QCOMPARE(ok, 3);
+        // Pass 6 (101 points) screens with most of its points kept.
+        long long acc = 0;
+        QVERIFY(parseLong(t.rows[5][size_t(cAcc)], &acc) && acc > 50);
+        QVERIFY(!QFile::exists(p("hy2c/pass001.csv")));
+        QVERIFY(r.err.contains("3 of 6 passes screened"));
+    }
+
+    void cpfFolderPicksThePredictionThatFits() {
+        const QString in = sharedPath("slr/blits_201206.frd"), cpf = sharedPath("slr/blits_cpf_120626_6801.hts"),
+                      snx = sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
+        if (!QFile::exists(in)) QSKIP("shared SLR data absent");
+        // A folder with the CPF, a CPF for another satellite and a file that is no CPF at all.
+        QDir().mkpath(p("cpfs"));
+        QVERIFY(QFile::copy(cpf, p("cpfs/blits.hts")));
+        QByteArray other = readAll(cpf);
+        other.replace("BLITS", "OTHER").replace("0904907", "1234567");
+        QList<QByteArray> lines = other.split('\n');
+        for (QByteArray& l : lines)
+            if (l.startsWith("H2") || l.startsWith("h2")) {
+                QList<QByteArray> f = l.simplified().split(' ');
+                if (f.size() > 3) {
+                    f[2] = "1234567";
+                    f[3] = "9999";
+                    if (f.size() > 4) f[4] = "99999";
+                }
+                l = f.join(' ');
+            }
+        QVERIFY(writeText(p("cpfs/a_other.hts"), lines.join('\n')));
+        QVERIFY(writeText(p("cpfs/readme.txt"), "not a prediction\n"));
+        const CliRun r = runCli({"slr", in, "--all-passes", "--out-dir", p("blits"), "--cpf", p("cpfs"), "--stations", snx, "-q"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const CsvTable t = summary(p("blits/summary.csv"));
+        QCOMPARE(t.rows.size(), size_t(54));
+        const int cOrigin = t.column("oc_origin"), cStart = t.column("start_utc"), cReason = t.column("reason");
+        int predicted = 0, inSpan = 0;
+        for (const auto& row : t.rows) {
+            const std::string& start = row[size_t(cStart)];
+            const bool covered = start >= "2012-06-26" && start < "2012-07-01";  // inside the CPF's H2 span
+            if (row[size_t(cOrigin)].find("CPF prediction") != std::string::npos) {
+                ++predicted;
+                QVERIFY2(row[size_t(cOrigin)].find("blits.hts") != std::string::npos, row[size_t(cOrigin)].c_str());
+                QVERIFY2(start >= "2012-06-25", start.c_str());
+            } else if (row[0] != "" && !row[size_t(cReason)].empty() && !covered) {
+                // Outside the CPF's days: the own-TOF O-C, and the reason names the folder.
+                QVERIFY2(row[size_t(cReason)].find("no prediction in the folder fits") != std::string::npos ||
+                             row[size_t(cReason)].find("at least") != std::string::npos,
+                         row[size_t(cReason)].c_str());
+            }
+            inSpan += covered;
+        }
+        // Every pass inside the span gets the prediction (7 in this file), none outside it.
+        QVERIFY2(inSpan >= 5, qPrintable(QString::number(inSpan)));
+        QVERIFY2(predicted == inSpan, qPrintable(QString("%1 predicted, %2 in the span").arg(predicted).arg(inSpan)));
+    }
+
+    void usage() {
+        const QString in = sharedPath("slr/hy2c_202109.fr2");
+        if (!QFile::exists(in)) QSKIP("shared SLR data absent");
+        CliRun r = runCli({"slr", in, "--all-passes"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("--out-dir"));
+        r = runCli({"slr", in, "--all-passes", "--out-dir", p("x"), "--pass", "2"});
+        QCOMPARE(r.exitCode, 2);
+        r = runCli({"slr", in, "--out-dir", p("x"), "-o", p("x.csv")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(!QFileInfo::exists(p("x")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSlrAllPasses)
+#include "test_slr_all_passes.moc"
