@@ -7,7 +7,8 @@
 // - Anything else is one --set KEY=VALUE (the first '=' splits it).
 // Either is applied or refused with a reason. Parameters that were applied validate, are written
 // (toJson) and read again to the same document, and every field's text (valueText, as the
-// tables show it) set back through --set gives the same document.
+// tables show it) set back through --set gives the same document. Written with core::dumpJson,
+// as the CLI writes --print-config.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,12 +40,12 @@ void fuzzParams(const core::Schema<P>& schema, std::string_view bytes, FromJson 
         if (!ok) return;
     }
     check(schema.validate(p).empty());
-    const std::string text = schema.toJson(p).dump();
+    const std::string text = core::dumpJson(schema.toJson(p), -1);
     const core::JsonParseResult back = core::parseJson(text, "fuzz");
     check(back.ok);
     P q{};
     check(fromJson(back, &q, &err));
-    check(schema.toJson(q).dump() == text);
+    check(core::dumpJson(schema.toJson(q), -1) == text);
     // Field by field as --set does; a rule between two fields may refuse one until the other is
     // set, so refused fields are tried again while any pass makes progress.
     P r{};
@@ -58,7 +59,7 @@ void fuzzParams(const core::Schema<P>& schema, std::string_view bytes, FromJson 
         left = refused;
     }
     check(left.empty());
-    check(schema.toJson(r).dump() == text);
+    check(core::dumpJson(schema.toJson(r), -1) == text);
 }
 
 }  // namespace lwb::fuzz
