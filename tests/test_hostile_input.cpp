@@ -202,6 +202,18 @@ private slots:
         // Cut inside the header: recognised, incomplete, refused with a reason.
         QVERIFY(!readImageHeader(std::string_view("\x89PNG\r\n\x1a\n\0\0", 10)).complete);
         QVERIFY(QString::fromStdString(imageSizeProblem(std::string_view("II*\0\x08\0\0\0", 8), "x.tif", 0)).contains("truncated"));
+        // fuzz_frame finding: a classic TIFF whose last IFD entry, ImageWidth, claims type LONG8
+        // (8 bytes, BigTIFF only) in a 4-byte value field: its value was read past the entry and
+        // the end of the file (ASan: heap-buffer-overflow) and the header taken as complete.
+        const char tiff[] = "II*\0\x08\0\0\0\x02\0"
+                            "\x01\x01\x03\0\x01\0\0\0\x05\0\0\0"   // ImageLength SHORT 5
+                            "\x00\x01\x10\0\x01\0\0\0\x07\0\0\0";  // ImageWidth LONG8
+        const std::vector<char> exact(tiff, tiff + sizeof(tiff) - 1);  // no byte after the entry
+        QCOMPARE(exact.size(), size_t(34));
+        const ImageHeader bad = readImageHeader(std::string_view(exact.data(), exact.size()));
+        QVERIFY(bad.recognised && !bad.complete);
+        QVERIFY(QString::fromStdString(imageSizeProblem(std::string_view(exact.data(), exact.size()), "x.tif", 0))
+                    .contains("damaged"));
     }
 
     // SIGSEGV: a float TIFF of tiny values (~1e-12) overflowed the histogram clip index.

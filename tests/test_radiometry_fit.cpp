@@ -174,6 +174,26 @@ private slots:
         QVERIFY2(err.find(":1:") != std::string::npos, err.c_str());
     }
 
+    // Inputs the fuzzers produced (docs/fuzzing.md), reduced: each was accepted wrongly or broke a
+    // reader's invariant; now refused with a message naming the file, line and field.
+    void fuzzRegressions_data() {
+        QTest::addColumn<QByteArray>("fitCsv");
+        QTest::addColumn<QString>("expected");
+        // fuzz_fit_csv: n above INT_MAX was wrapped to a negative count, and the fit written
+        // from it could not be read back.
+        QTest::newRow("fit n beyond int") << QByteArray("k,b,n\n3576,-1.5,2184380000\n") << "fit.csv:2: n must be";
+    }
+    void fuzzRegressions() {
+        QFETCH(QByteArray, fitCsv);
+        QFETCH(QString, expected);
+        const QString p = path("fit.csv");
+        QVERIFY(lwbtest::writeText(p, fitCsv));
+        ReflectanceFit fit;
+        std::string err;
+        QVERIFY(!readFitCsv(p.toStdString(), &fit, &err));
+        QVERIFY2(QString::fromStdString(err).contains(expected), err.c_str());
+    }
+
     void measuresRegionsOnAnImage() {
         cv::Mat img(100, 200, CV_16UC1, cv::Scalar(50));
         img(cv::Rect(10, 10, 20, 20)).setTo(12000);

@@ -284,6 +284,8 @@ bool radiometryParamsFromJson(const QJsonObject& o, RadiometryParams* out, QStri
         !num(o, "limit_pct", &p.limitPct) || !num(m, "ransac_px", &p.mosaic.ransacThresholdPx) ||
         !num(m, "min_inliers", &minInliers))
         return false;
+    if (minInliers != std::floor(minInliers) || std::fabs(minInliers) > 1e9)  // before the int conversion
+        return fail(error, QObject::tr("radiometry parameter min_inliers must be a whole number, not %1").arg(minInliers));
     p.mosaic.minInliers = int(minInliers);
     if (m.contains("features") && !parseFeatureType(m["features"].toString().toStdString(), &p.mosaic.features))
         return fail(error, QObject::tr("mosaic features must be akaze or orb, not \"%1\"").arg(m["features"].toString()));

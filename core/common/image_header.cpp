@@ -51,8 +51,10 @@ void tiff(std::string_view b, ImageHeader* h) {
         const uint64_t tag = r.get(e, 2), type = r.get(e + 2, 2);
         if (tag != 256 && tag != 257) continue;
         // SHORT (3) or LONG (4) or LONG8 (16), left-justified in the value field.
+        // The value must fit the entry's value field (4 bytes in classic TIFF, 8 in BigTIFF):
+        // a LONG8 in a classic TIFF does not, and its read ran past the entry (and the buffer).
         const size_t width = type == 3 ? 2 : type == 4 ? 4 : type == 16 ? 8 : 0;
-        if (width == 0) return;
+        if (width == 0 || valueOff + width > entrySize) return;
         const long long v = static_cast<long long>(r.get(e + valueOff, width));
         if (tag == 256) h->width = v, haveW = true;
         else h->height = v, haveH = true;

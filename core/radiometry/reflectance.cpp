@@ -1,6 +1,7 @@
 #include "core/radiometry/reflectance.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -478,8 +479,9 @@ bool readFitCsv(const std::string& path, ReflectanceFit* fit, std::string* error
     }
     if (const int c = t.column("n"); c >= 0 && !trim(row[c]).empty()) {
         long long n = 0;
-        if (!parseLong(row[c], &n) || n < 0) {
-            *error = where + "n must be a whole number";
+        if (!parseLong(row[c], &n) || n < 0 || n > std::numeric_limits<int>::max()) {
+            *error = where + "n must be a whole number from 0 to " + std::to_string(std::numeric_limits<int>::max()) +
+                     ", not \"" + printableExcerpt(row[c]) + "\"";
             return false;
         }
         f.n = static_cast<int>(n);

@@ -287,6 +287,22 @@ private slots:
         QVERIFY(c->run().fit.ok);
     }
 
+    // Session parameters the fuzzer produced (fuzz_session, docs/fuzzing.md): a min_inliers of
+    // 2e58 was converted to int (undefined behaviour; INT_MIN in practice, then refused without
+    // naming the key) and 12.5 silently became 12. Both are refused naming the key.
+    void sessionParamsFuzzRegressions_data() {
+        QTest::addColumn<QByteArray>("params");
+        QTest::newRow("min_inliers 2e58") << QByteArray(R"({"mosaic": {"min_inliers": 2e58}})");
+        QTest::newRow("min_inliers 12.5") << QByteArray(R"({"mosaic": {"min_inliers": 12.5}})");
+    }
+    void sessionParamsFuzzRegressions() {
+        QFETCH(QByteArray, params);
+        RadiometryParams p;
+        QString err;
+        QVERIFY(!radiometryParamsFromJson(QJsonDocument::fromJson(params).object(), &p, &err));
+        QVERIFY2(err.contains("min_inliers") && err.contains("whole number"), qPrintable(err));
+    }
+
     void sessionRoundTrip() {
         QJsonObject state;
         double k = 0, b = 0;
