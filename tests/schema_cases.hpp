@@ -21,7 +21,11 @@ bool setOtherValue(const core::Schema<P>& schema, const typename core::Schema<P>
     switch (f.kind) {
         case FieldKind::Boolean: f.set(q, f.get(q) != 0 ? 0 : 1); break;
         case FieldKind::Choice: f.set(q, std::fmod(f.get(q) + 1, double(f.choices.size()))); break;
-        case FieldKind::Text: f.setText(q, f.getText(q) + "_x"); break;
+        case FieldKind::Text:
+            // The footprint preset names known criteria (a rule); other text fields take any text.
+            if (f.key == "preset") f.setText(q, f.getText(q) == "yao2021" ? "wu2021" : "yao2021");
+            else f.setText(q, f.getText(q) + "_x");
+            break;
         case FieldKind::Range: {
             core::RangeValue r = f.getRange(q);
             const core::RangeValue was = r;

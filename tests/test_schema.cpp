@@ -124,6 +124,22 @@ private slots:
 
     // Values outside the UI range but valid are kept exactly (the C = 0.8 and axis
     // ratio 5), and invalid ones are refused with the key and the range.
+    // Fuzz finding 5 (fuzz_footprint_config): --set preset=<any text> was accepted, and the
+    // config --print-config then wrote could not be read back.
+    void footprintPresetMustBeKnown() {
+        const auto& fs = footprint::footprintSchema();
+        footprint::FootprintParams p;
+        std::string err;
+        QVERIFY(!fs.setFromText(&p, "preset", "bogus", &err));
+        QVERIFY2(err.find("must be wu2021 or yao2021") != std::string::npos, err.c_str());
+        QCOMPARE(QString::fromStdString(p.preset), QString("wu2021"));  // untouched on error
+        QVERIFY2(fs.setFromText(&p, "preset", "yao2021", &err), err.c_str());
+        const JsonParseResult back = parseJson(dumpJson(fs.toJson(p)), "mem");
+        footprint::FootprintParams q;
+        QVERIFY2(back.ok && footprint::footprintParamsFromJson(back.value, &q, &err, &back), err.c_str());
+        QCOMPARE(QString::fromStdString(q.preset), QString("yao2021"));
+    }
+
     void outsideUiRangeKept() {
         const auto& ss = slr::slrSchema();
         const auto* c = ss.find("screen.cosine_c");

@@ -141,6 +141,10 @@ const Schema<FootprintParams>& footprintSchema() {
         s.rule([](const F& p) -> std::string {
             if (!(p.background.nightBelow <= p.background.weakBelow && p.background.weakBelow <= p.background.strongAbove))
                 return "noise class thresholds must satisfy background.night_below <= weak_below <= strong_above";
+            // Fuzz finding 5: --set preset=<anything> was taken, then the written config could
+            // not be read back (a config file's preset must name known criteria).
+            if (VerdictParams known; !verdictPreset(p.preset, &known))
+                return "preset = \"" + printableExcerpt(p.preset, 40) + "\": must be wu2021 or yao2021";
             if (p.segment.peakSmooth % 2 == 0) return "segment.peak_smooth must be odd (1, 3, 5, 7 or 9 px)";
             if (p.tefm.erosionSize % 2 == 0) return "tefm.erosion_size must be odd (1..15 px)";
             if (!(p.segment.ringInnerPx < p.segment.ringOuterPx)) return "segment.ring_inner_px must be below ring_outer_px";
