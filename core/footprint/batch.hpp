@@ -18,10 +18,26 @@ struct BatchParams {
     int threads = 0;                   ///< worker threads; 0 = all cores
 };
 
+/// The analyst's review of one ROI (the workbench's review table; the CLI has none).
+struct RoiReview {
+    bool overridden = false;            ///< a manual verdict replaces the computed one
+    Verdict verdict = Verdict::Good;    ///< the manual verdict (when overridden)
+    std::string time, beam, camera, note;
+};
+
 struct BatchItem {
     std::string file;
     std::string readError;              ///< the frame could not be read (then rois is empty)
     std::vector<FrameRoiResult> rois;   ///< one per centre (or one)
+    std::vector<RoiReview> reviews;     ///< review tables only: one per ROI (one when unreadable)
+};
+
+/// What a footprint report holds beyond the CLI's columns.
+struct FootprintCsvOptions {
+    /// Adds time,beam,camera,auto_verdict,override,note; `verdict` is then the effective one (the
+    /// manual verdict where there is one) and auto_verdict the computed one.
+    bool review = false;
+    bool acceptedOnly = false;          ///< only rows whose (effective) verdict is good, with a fit
 };
 
 struct BatchResult {
@@ -38,11 +54,11 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
                               Feedback* fb = nullptr, const BatchItemFn& onItem = {});
 
 /// The CSV header of footprint reports.
-std::string footprintCsvHeader();
+std::string footprintCsvHeader(const FootprintCsvOptions& options = {});
 /// One CSV row per ROI of the item (coordinates in full-image px), each ending in '\n'.
-std::string footprintCsvRows(const BatchItem& item, Method method);
+std::string footprintCsvRows(const BatchItem& item, Method method, const FootprintCsvOptions& options = {});
 /// Writes a whole report atomically. False with *error on failure.
 bool writeFootprintCsv(const std::string& path, const std::vector<BatchItem>& items, Method method,
-                       std::string* error);
+                       std::string* error, const FootprintCsvOptions& options = {});
 
 }  // namespace lwb::core::footprint
