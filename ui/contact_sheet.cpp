@@ -56,7 +56,8 @@ public:
         p->setFont(o.font);
         p->setPen(selected ? o.palette.color(QPalette::HighlightedText) : o.palette.color(QPalette::Text));
         const QRect text(r.left() + 2, img.bottom() + 3, r.width() - 4, o.fontMetrics.height());
-        p->drawText(text, Qt::AlignCenter, o.fontMetrics.elidedText(QFileInfo(s->file).fileName(), Qt::ElideMiddle, text.width()));
+        // The end of a name tells shots apart (shot_000123.png, demo:b1_2020-04_02).
+        p->drawText(text, Qt::AlignCenter, o.fontMetrics.elidedText(QFileInfo(s->file).fileName(), Qt::ElideLeft, text.width()));
         if (o.state & QStyle::State_HasFocus) {
             p->setPen(QPen(o.palette.color(QPalette::Highlight).lighter(130), 2));
             p->setBrush(Qt::NoBrush);
@@ -114,7 +115,7 @@ QImage ContactSheet::thumbnail(int sourceRow) const {
     if (m_cache.contains(sourceRow)) return m_cache[sourceRow];
     const Shot* s = m_c->shot(sourceRow);
     if (!s || s->roi.empty()) return {};
-    DisplaySettings ds;  // zscale, linear: faint and bright spots both visible
+    DisplaySettings ds;  // min–max, linear: the spot's shape, as the review shows it by default
     const core::DisplayLimits l = displayLimits(s->roi, ds);
     const QImage img = renderStretched(s->roi, m_map, ds.stretch, l.lo, l.hi)
                            .scaled(kThumb, kThumb, Qt::KeepAspectRatio, Qt::FastTransformation);

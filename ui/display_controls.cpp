@@ -93,7 +93,7 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     lay->addWidget(m_lo);
     lay->addWidget(new QLabel(QStringLiteral("–"), this));
     lay->addWidget(m_hi);
-    m_limits->setCurrentIndex(int(LimitsMode::ZScale));
+    m_limits->setCurrentIndex(int(DisplaySettings{}.limits));
     auto sync = [this] {
         const bool manual = m_limits->currentIndex() == int(LimitsMode::Manual);
         m_lo->setReadOnly(!manual);

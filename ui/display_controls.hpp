@@ -18,7 +18,8 @@ namespace lwb::ui {
 enum class LimitsMode { MinMax, ZScale, Percentile, Manual };
 
 struct DisplaySettings {
-    LimitsMode limits = LimitsMode::ZScale;
+    /// Min–max by default: zscale suits the ground around the spot but clips the spot's peak.
+    LimitsMode limits = LimitsMode::MinMax;
     core::StretchKind stretch = core::StretchKind::Linear;
     double manualLo = 0, manualHi = 1;
 };

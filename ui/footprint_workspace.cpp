@@ -360,7 +360,9 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
         if (row >= 0 && row != currentSourceRow()) selectRow(row);
     });
     connect(m_tabs, &QTabWidget::currentChanged, this, [this] {
-        if (m_tabs->currentWidget() == m_sheet) m_sheet->setCurrentSourceRow(currentSourceRow());
+        if (m_tabs->currentWidget() != m_sheet) return;
+        m_sheet->setCurrentSourceRow(currentSourceRow());
+        m_sheet->setFocus();  // arrows, A / R / N and Enter act on the sheet at once
     });
 
     m_roiView->setOverlay([this](QPainter& p, double scale) {
@@ -759,7 +761,7 @@ bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error) 
     if (state.contains("display")) {
         const QJsonObject disp = state["display"].toObject();
         DisplaySettings ds;
-        ds.limits = LimitsMode(std::clamp(disp["limits"].toInt(int(LimitsMode::ZScale)), 0, int(LimitsMode::Manual)));
+        ds.limits = LimitsMode(std::clamp(disp["limits"].toInt(int(ds.limits)), 0, int(LimitsMode::Manual)));
         for (core::StretchKind k : {core::StretchKind::Linear, core::StretchKind::Sqrt, core::StretchKind::Log, core::StretchKind::Asinh})
             if (disp["stretch"].toString() == core::stretchKindName(k)) ds.stretch = k;
         ds.manualLo = disp["low"].toDouble(0);

@@ -50,6 +50,22 @@ int currentSource(FootprintWorkspace* fw) {
     return i.isValid() ? fw->proxy()->mapToSource(i).row() : -1;
 }
 
+// Opens inputs and waits until they are loaded and judged.
+bool loadAndWait(FootprintController* c, const QStringList& inputs) {
+    QSignalSpy finished(c, &FootprintController::loadFinished);
+    c->open(inputs);
+    return finished.wait(30000) && c->waitIdle(30000);
+}
+
+// The demo, judged, in a shown and active 1400x900 window.
+bool showDemo(MainWindow& w) {
+    if (!w.openDemo() || !w.footprint()->controller()->waitIdle(60000)) return false;
+    w.resize(1400, 900);
+    w.show();
+    w.activateWindow();
+    return QTest::qWaitForWindowActive(&w);
+}
+
 // Selects a source row and waits for its detail (the ROI view then shows it).
 bool showShot(FootprintWorkspace* fw, int row) {
     QSignalSpy detail(fw->controller(), &FootprintController::currentDetailReady);
@@ -111,10 +127,7 @@ private slots:
         MainWindow w;
         FootprintWorkspace* fw = w.footprint();
         FootprintController* c = fw->controller();
-        QSignalSpy finished(c, &FootprintController::loadFinished);
-        c->open({m_dir.path() + "/shots/shot_000000.png", m_dir.path() + "/junk/broken.png"});
-        QVERIFY(finished.wait(30000));
-        QVERIFY(c->waitIdle(30000));
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/shots/shot_000000.png", m_dir.path() + "/junk/broken.png"}));
         QCOMPARE(c->count(), 2);
         w.resize(1400, 900);
         w.show();
@@ -164,10 +177,7 @@ private slots:
         MainWindow w;
         FootprintWorkspace* fw = w.footprint();
         FootprintController* c = fw->controller();
-        QSignalSpy finished(c, &FootprintController::loadFinished);
-        c->open({m_dir.path() + "/junk/broken.png", m_dir.path() + "/shots/shot_000000.png"});
-        QVERIFY(finished.wait(30000));
-        QVERIFY(c->waitIdle(30000));
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/junk/broken.png", m_dir.path() + "/shots/shot_000000.png"}));
         QCOMPARE(c->counts().rejected, 0);
         QCOMPARE(c->counts().good, 1);
         const QModelIndex v = fw->table()->model()->index(0, ShotTableModel::VerdictCol);
@@ -202,10 +212,7 @@ private slots:
             MainWindow w;
             FootprintWorkspace* fw = w.footprint();
             FootprintController* c = fw->controller();
-            QSignalSpy finished(c, &FootprintController::loadFinished);
-            c->open({m_dir.path() + "/shots"});
-            QVERIFY(finished.wait(30000));
-            QVERIFY(c->waitIdle(30000));
+            QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
             filterCombo(&w)->setCurrentIndex(2);
             QVERIFY(fw->proxy()->rowCount() >= 3);
             fw->table()->selectRow(2);
@@ -307,10 +314,7 @@ private slots:
         MainWindow w;
         FootprintWorkspace* fw = w.footprint();
         FootprintController* c = fw->controller();
-        QSignalSpy finished(c, &FootprintController::loadFinished);
-        c->open({m_dir.path() + "/shots", m_dir.path() + "/junk/broken.png"});
-        QVERIFY(finished.wait(30000));
-        QVERIFY(c->waitIdle(30000));
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/shots", m_dir.path() + "/junk/broken.png"}));
         QCOMPARE(c->count(), 41);
         int firstDoubtful = -1;
         for (int i = 0; i < c->count() && firstDoubtful < 0; ++i)
@@ -403,21 +407,17 @@ private slots:
             QVERIFY(finished.first().at(2).toBool());
             QVERIFY(cancel->isHidden());
         } else {
-            QVERIFY2(t.elapsed() < kProgressDelayMs + 100, "a long load finished without showing Cancel");
+            QFAIL(qPrintable(QString("150 full frames loaded in %1 ms, before Cancel was shown: make the load longer")
+                                 .arg(t.elapsed())));
         }
     }
 
     // Item 8: N goes to the next unreviewed shot; the counter; the contact sheet by keyboard and click.
     void triageNextUnreviewedCounterAndContactSheet() {
         MainWindow w;
-        QVERIFY(w.openDemo());
+        QVERIFY(showDemo(w));
         FootprintWorkspace* fw = w.footprint();
         FootprintController* c = fw->controller();
-        QVERIFY(c->waitIdle(60000));
-        w.resize(1400, 900);
-        w.show();
-        w.activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
         fw->filterBox()->setCurrentIndex(0);  // all shots
         int doubtful = 0;
         for (const Shot& s : c->shots()) doubtful += s.verdict == Verdict::Doubtful;
@@ -447,7 +447,7 @@ private slots:
             QCOMPARE(sheet->model()->data(sheet->model()->index(r, 0), ShotTableModel::StateRole).toInt(),
                      int(ShotState::Doubtful));
         }
-        sheet->setFocus();
+        QVERIFY(sheet->hasFocus());  // showing the sheet gives it the keyboard
         sheet->setCurrentIndex(sheet->model()->index(0, 0));
         QTest::keyClick(sheet, Qt::Key_Right);
         QTest::keyClick(sheet, Qt::Key_Right);
@@ -469,19 +469,21 @@ private slots:
     // limits and the colour bar, all equal to the core's numbers.
     void roiDisplayLimitsStretchHistogramColourBar() {
         MainWindow w;
-        QVERIFY(w.openDemo());
+        QVERIFY(showDemo(w));
         FootprintWorkspace* fw = w.footprint();
         FootprintController* c = fw->controller();
-        QVERIFY(c->waitIdle(60000));
-        w.resize(1400, 900);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
         QSignalSpy detail(c, &FootprintController::currentDetailReady);
         fw->selectRow(7);
         c->setCurrent(7);
         QVERIFY(detail.wait(10000));
         const cv::Mat roi = c->shot(7)->roi;
         DisplayControls* dc = fw->displayControls();
+        // By default min–max: the spot's peak is not clipped (zscale would saturate it).
+        double roiMin = 0, roiMax = 0;
+        cv::minMaxLoc(roi, &roiMin, &roiMax);
+        QCOMPARE(dc->limitsBox()->currentIndex(), int(LimitsMode::MinMax));
+        QCOMPARE(fw->histogram()->limitLo(), roiMin);
+        QCOMPARE(fw->histogram()->limitHi(), roiMax);
         dc->limitsBox()->setCurrentIndex(int(LimitsMode::ZScale));
         const cv::Mat cont = roi.clone();
         const auto z = lwb::core::zscale(cont.ptr<float>(), cont.total());
