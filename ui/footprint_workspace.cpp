@@ -149,7 +149,9 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     m_table->setColumnWidth(ShotTableModel::Beam, 40);
     m_table->setColumnWidth(ShotTableModel::X, 64);
     m_table->setColumnWidth(ShotTableModel::Y, 64);
-    m_table->setColumnWidth(ShotTableModel::VerdictCol, 70);
+    // Wide enough for "rejected (manual)": a manual verdict was cut to "good ..." in the screenshot.
+    m_table->setColumnWidth(ShotTableModel::VerdictCol,
+                            m_table->fontMetrics().horizontalAdvance(tr("unreadable (manual)")) + 12);
     m_table->setColumnWidth(ShotTableModel::Reasons, 160);
     leftLay->addWidget(m_table, 1);
     auto* overrideRow = new QHBoxLayout;

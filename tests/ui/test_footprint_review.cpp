@@ -427,6 +427,11 @@ private slots:
         fw->selectRow(1);
         fw->acceptCurrent();
         fw->rejectCurrent();
+        // The verdict column shows a manual verdict in full (it was cut to "good ...").
+        const QString manualText = fw->table()->model()->data(fw->table()->model()->index(2, ShotTableModel::VerdictCol)).toString();
+        QCOMPARE(manualText, QString("rejected (manual)"));
+        QVERIFY(fw->table()->columnWidth(ShotTableModel::VerdictCol) >
+                fw->table()->fontMetrics().horizontalAdvance(manualText) + 6);
         fw->selectRow(0);
         fw->table()->setFocus();
         QTest::keyClick(fw->table(), Qt::Key_N);
