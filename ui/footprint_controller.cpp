@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QPointer>
@@ -15,6 +16,8 @@
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
 #include "core/footprint/image_io.hpp"
+#include "ui/footprint_export.hpp"
+#include "ui/frame_loader.hpp"
 
 namespace lwb::ui {
 
@@ -36,10 +39,10 @@ struct IndexedJob {
 
     template <class Fn>
     void start(Fn work) {
-        const int threads = std::max(1, QThreadPool::globalInstance()->maxThreadCount());
+        const int threads = loaderThreadCount();  // every core but one: the GUI keeps one
         running = threads;
         for (int t = 0; t < threads; ++t)
-            (void)QtConcurrent::run([this, work]() {
+            (void)QtConcurrent::run(loaderPool(), [this, work]() {
                 for (size_t i = next++; i < total && !feedback.isCancelled(); i = next++) {
                     work(i);
                     std::lock_guard<std::mutex> lock(mutex);
@@ -56,10 +59,21 @@ struct Spec {
     QPointF center;
 };
 
-// Expands the inputs into shot specs: folders and files, and CSV lists.
-bool expandSpecs(const QStringList& inputs, std::vector<Spec>* out, QString* error) {
+// Expands the inputs into shot specs: folders (their images) and image files, or CSV shot
+// lists. A CSV given with image files (a folder's truth.csv selected with its frames) and any
+// other non-image file are left out and listed in *skipped.
+bool expandSpecs(const QStringList& inputs, std::vector<Spec>* out, QStringList* skipped, QString* error) {
+    bool anyImage = false;
+    for (const QString& in : inputs) anyImage |= QFileInfo(in).isDir() || isFrameFile(in.toStdString());
     for (const QString& in : inputs) {
-        if (QFileInfo(in).suffix().compare("csv", Qt::CaseInsensitive) == 0) {
+        const bool csvList = QFileInfo(in).suffix().compare("csv", Qt::CaseInsensitive) == 0;
+        if (!QFileInfo(in).isDir() && !isFrameFile(in.toStdString()) && (!csvList || anyImage)) {
+            if (QFileInfo(in).exists()) {
+                skipped->append(in);
+                continue;
+            }
+        }
+        if (csvList && !anyImage) {
             const core::CsvReadResult csv = core::readCsv(in.toStdString());
             if (!csv.ok) {
                 *error = QString::fromStdString(csv.error);
@@ -93,6 +107,9 @@ bool expandSpecs(const QStringList& inputs, std::vector<Spec>* out, QString* err
             }
             continue;
         }
+        if (QFileInfo(in).isDir())  // a folder: its files that are not images are left out too
+            for (const QString& f : QDir(in).entryList(QDir::Files, QDir::Name))
+                if (!isFrameFile(f.toStdString())) skipped->append(QDir(in).filePath(f));
         std::vector<std::string> files;
         std::string err;
         if (!expandInputs({in.toStdString()}, &files, &err)) {
@@ -303,7 +320,8 @@ void FootprintController::cancelLoading() {
 void FootprintController::open(const QStringList& paths, bool append) {
     std::vector<Spec> specs;
     QString err;
-    if (!expandSpecs(paths, &specs, &err)) {
+    QStringList skipped;
+    if (!expandSpecs(paths, &specs, &skipped, &err)) {
         emit error(err);
         return;
     }
@@ -312,6 +330,7 @@ void FootprintController::open(const QStringList& paths, bool append) {
         return;
     }
     if (!append) clear();
+    m_skipped = skipped;
     m_inputs += paths;
     auto job = std::make_shared<LoadState>(specs.size());
     job->results.resize(specs.size());
@@ -340,7 +359,9 @@ void FootprintController::open(const QStringList& paths, bool append) {
     const quint64 fitGen = m_fitGeneration;
     auto* timer = new QTimer(this);
     timer->setInterval(40);
-    connect(timer, &QTimer::timeout, this, [this, job, timer, listGen, fitGen]() {
+    auto started = std::make_shared<QElapsedTimer>();
+    started->start();
+    connect(timer, &QTimer::timeout, this, [this, job, timer, listGen, fitGen, started]() {
         if (listGen != m_listGeneration) {  // the list was replaced meanwhile: drop everything
             job->feedback.cancel();
             if (job->finished()) timer->deleteLater();
@@ -367,9 +388,11 @@ void FootprintController::open(const QStringList& paths, bool append) {
         if (count() > first) {
             emit shotsAppended(first, count() - 1);
             emit countsChanged();
-            emit loadProgress(int(job->appended), int(job->total));
             if (m_current < 0) setCurrent(0);
         }
+        // Progress (and with it Cancel) once the load has lasted: short loads do not flash it.
+        if (started->elapsed() >= kProgressDelayMs && !job->finished())
+            emit loadProgress(int(job->appended), int(job->total));
         if (!job->finished()) return;
         timer->stop();
         timer->deleteLater();
@@ -456,11 +479,15 @@ void FootprintController::setNote(int index, const QString& note) {
 FootprintController::Counts FootprintController::counts() const {
     Counts c;
     for (const Shot& s : m_shots) {
-        if (!s.processed && s.loadError.isEmpty()) {
+        if (!s.loadError.isEmpty()) {
+            ++c.unreadable;
+            continue;
+        }
+        if (!s.processed) {
             ++c.pending;
             continue;
         }
-        const Verdict v = s.loadError.isEmpty() ? s.effectiveVerdict() : Verdict::Rejected;
+        const Verdict v = s.effectiveVerdict();
         (v == Verdict::Good ? c.good : v == Verdict::Doubtful ? c.doubtful : c.rejected)++;
         c.overridden += s.overridden;
     }
@@ -468,29 +495,7 @@ FootprintController::Counts FootprintController::counts() const {
 }
 
 bool FootprintController::exportAccepted(const QString& path, QString* error) const {
-    std::vector<BatchItem> items;
-    FootprintCsvExtra extra;
-    extra.names = {"time", "beam", "camera", "override", "note"};
-    for (const Shot& s : m_shots) {
-        if (!s.loadError.isEmpty() || s.effectiveVerdict() != Verdict::Good || !s.fit.ok) continue;
-        BatchItem item;
-        item.file = s.file.toStdString();
-        FrameRoiResult fr;
-        fr.result = s.result;
-        fr.result.verdict = Verdict::Good;  // the effective verdict: an analyst's "good" counts
-        fr.originX = s.origin.x();
-        fr.originY = s.origin.y();
-        item.rois.push_back(std::move(fr));
-        items.push_back(std::move(item));
-        extra.values.push_back({s.time.toStdString(), s.beam.toStdString(), s.camera.toStdString(),
-                                s.overridden ? "manual" : "", s.note.toStdString()});
-    }
-    std::string err;
-    if (!writeFootprintCsv(path.toStdString(), items, m_params.method, &err, &extra)) {
-        *error = QString::fromStdString(err);
-        return false;
-    }
-    return true;
+    return writeFootprintReview(m_shots, m_params.method, path, true, error);
 }
 
 TrendResult FootprintController::trend(const TrendParams& tp) const {

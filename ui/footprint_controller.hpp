@@ -44,6 +44,7 @@ struct Shot {
     QStringList reasons;
     QString noiseClass;
     core::footprint::SpotFit fit;  ///< ROI coordinates
+    core::footprint::FootprintResult result;  ///< the whole result (for the report columns)
     // The analyst's decision
     bool overridden = false;
     Verdict overrideVerdict = Verdict::Good;
@@ -101,6 +102,7 @@ public:
 
     struct Counts {
         int good = 0, doubtful = 0, rejected = 0, pending = 0, overridden = 0;
+        int unreadable = 0;  ///< frames that could not be read (not in good/doubtful/rejected)
     };
     Counts counts() const;
 
@@ -113,6 +115,9 @@ public:
 
     /// Inputs as given to open() (for the session).
     const QStringList& inputs() const { return m_inputs; }
+    /// Files of the last open() that are not images and were left out (a truth.csv among
+    /// frames, notes...).
+    const QStringList& skippedInputs() const { return m_skipped; }
     /// Waits (processing events) until loading and re-judging are done, or timeoutMs passes.
     bool waitIdle(int timeoutMs);
 
@@ -135,7 +140,7 @@ private:
     static void process(Shot& s, const core::footprint::FootprintParams& p);
 
     std::vector<Shot> m_shots;
-    QStringList m_inputs;
+    QStringList m_inputs, m_skipped;
     core::footprint::FootprintParams m_params;
     int m_current = -1;
     ShotDetail m_detail;             // the current shot's last result (re-judged in place)

@@ -15,18 +15,26 @@
 #include <QScrollArea>
 #include <QShortcut>
 #include <QSplitter>
+#include <QFileDialog>
+#include <QSettings>
 #include <QTabWidget>
 #include <QTableView>
+#include <QUndoStack>
 #include <QVBoxLayout>
 #include <QtConcurrent>
 #include <qcustomplot.h>
 
 #include "core/common/json.hpp"
 #include "core/footprint/image_io.hpp"
+#include "ui/app_undo.hpp"
 #include "ui/color_maps.hpp"
+#include "ui/contact_sheet.hpp"
 #include "ui/demo.hpp"
+#include "ui/display_controls.hpp"
+#include "ui/footprint_export.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/image_view.hpp"
+#include "ui/review_commands.hpp"
 #include "ui/session_json.hpp"
 #include "ui/shot_table_model.hpp"
 
@@ -39,6 +47,7 @@ const QColor kGaussColor(0, 220, 255);
 const QColor kTefmColor(255, 165, 0);
 const QColor kGcmColor(255, 64, 255);
 const QColor kDomainColor(255, 255, 255, 200);
+const char* kReadoutHint = QT_TRANSLATE_NOOP("lwb::ui::FootprintWorkspace", "Move the cursor over the ROI for pixel values");
 
 QString overrideKey(const Shot& s) {
     return s.hasCenter ? QString("%1#%2,%3").arg(s.file).arg(s.center.x()).arg(s.center.y()) : s.file;
@@ -77,7 +86,14 @@ QCustomPlot* makePlot(const QString& yLabel, QWidget* parent) {
     plot->yAxis->setLabel(yLabel);
     plot->legend->setVisible(true);
     plot->legend->setFont(QFont(plot->font().family(), 8));
-    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    // The legend gets a row of its own under the axis rect, so it never covers the first months.
+    auto* legendRow = new QCPLayoutGrid;
+    plot->plotLayout()->addElement(1, 0, legendRow);
+    legendRow->setMargins(QMargins(4, 0, 4, 2));
+    legendRow->addElement(0, 0, plot->legend);  // takes it out of the axis rect's inset layout
+    plot->plotLayout()->setRowStretchFactor(1, 0.001);
+    plot->legend->setFillOrder(QCPLegend::foColumnsFirst);
+    plot->legend->setWrap(4);
     plot->legend->setBrush(QColor(255, 255, 255, 200));
     plot->legend->setRowSpacing(0);
     plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
@@ -106,12 +122,21 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     leftLay->setContentsMargins(0, 0, 0, 0);
     auto* filterRow = new QHBoxLayout;
     m_filter = new QComboBox(left);
-    m_filter->addItems({tr("All shots"), tr("Good only"), tr("Doubtful only"), tr("Rejected only"), tr("Manual verdicts")});
+    m_filter->addItems({tr("All shots"), tr("Good only"), tr("Doubtful only"), tr("Rejected only"), tr("Unreadable only"),
+                        tr("Manual verdicts")});
+    m_filter->setToolTip(tr("Which shots the table and the contact sheet show (Alt+O)"));
     m_counts = new QLabel(left);
-    filterRow->addWidget(new QLabel(tr("Show:"), left));
+    m_counts->setWordWrap(true);
+    auto* show = new QLabel(tr("Sh&ow:"), left);
+    show->setBuddy(m_filter);
+    filterRow->addWidget(show);
     filterRow->addWidget(m_filter);
     filterRow->addWidget(m_counts, 1);
     leftLay->addLayout(filterRow);
+    m_reviewed = new QLabel(left);
+    m_reviewed->setToolTip(tr("Shots the pipeline judged doubtful that have a manual verdict. "
+                              "N goes to the next shot of the view without one"));
+    leftLay->addWidget(m_reviewed);
     m_table = new QTableView(left);
     m_table->setModel(m_proxy);
     m_table->setSortingEnabled(true);
@@ -126,20 +151,28 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     m_table->setColumnWidth(ShotTableModel::Beam, 40);
     m_table->setColumnWidth(ShotTableModel::X, 64);
     m_table->setColumnWidth(ShotTableModel::Y, 64);
-    m_table->setColumnWidth(ShotTableModel::VerdictCol, 70);
+    // Wide enough for "rejected (manual)": a manual verdict was cut to "good ..." in the screenshot.
+    m_table->setColumnWidth(ShotTableModel::VerdictCol,
+                            m_table->fontMetrics().horizontalAdvance(tr("unreadable (manual)")) + 12);
     m_table->setColumnWidth(ShotTableModel::Reasons, 160);
     leftLay->addWidget(m_table, 1);
     auto* overrideRow = new QHBoxLayout;
     auto* accept = new QPushButton(tr("Accept (A)"), left);
     auto* reject = new QPushButton(tr("Reject (R)"), left);
+    auto* next = new QPushButton(tr("Next unreviewed (N)"), left);
     auto* clearOv = new QPushButton(tr("Auto"), left);
+    accept->setToolTip(tr("Manual verdict good for this shot, then the next shot of the view (A)"));
+    reject->setToolTip(tr("Manual verdict rejected for this shot, then the next shot of the view (R)"));
+    next->setToolTip(tr("The next shot of the view that has no manual verdict yet (N)"));
     clearOv->setToolTip(tr("Drop the manual verdict and use the computed one"));
     overrideRow->addWidget(accept);
     overrideRow->addWidget(reject);
+    overrideRow->addWidget(next);
     overrideRow->addWidget(clearOv);
     leftLay->addLayout(overrideRow);
     m_note = new QLineEdit(left);
-    m_note->setPlaceholderText(tr("Note on this shot (kept in the session and the export)"));
+    m_note->setPlaceholderText(tr("Note on this shot (E; Enter keeps it and goes back to the list)"));
+    m_note->setToolTip(tr("Kept in the session and the review table export"));
     leftLay->addWidget(m_note);
 
     // Centre: review and trend tabs.
@@ -150,8 +183,8 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     m_colorMap = new QComboBox(review);
     m_colorMap->addItems(colorMapNames());
     m_colorMap->setCurrentIndex(1);
-    m_stretch = new QComboBox(review);
-    m_stretch->addItems(stretchNames());
+    m_colorMap->setToolTip(tr("Colour map of the ROI, the frame and the contact sheet"));
+    m_display = new DisplayControls(review);
     m_showGauss = new QCheckBox(tr("Gaussian 1/e²"), review);
     m_showTefm = new QCheckBox(tr("TEFM ellipse"), review);
     m_showDomain = new QCheckBox(tr("Domain"), review);
@@ -159,11 +192,14 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres}) c->setChecked(true);
     viewRow->addWidget(new QLabel(tr("Colours:"), review));
     viewRow->addWidget(m_colorMap);
-    viewRow->addWidget(m_stretch);
-    viewRow->addSpacing(8);
-    for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres}) viewRow->addWidget(c);
+    viewRow->addWidget(m_display);
     viewRow->addStretch(1);
     revLay->addLayout(viewRow);
+    auto* overlayRow = new QHBoxLayout;
+    overlayRow->addWidget(new QLabel(tr("Draw:"), review));
+    for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres}) overlayRow->addWidget(c);
+    overlayRow->addStretch(1);
+    revLay->addLayout(overlayRow);
     auto* views = new QSplitter(Qt::Horizontal, review);
     m_roiView = new ImageView(views);
     m_frameView = new ImageView(views);
@@ -172,7 +208,15 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     views->setStretchFactor(0, 3);
     views->setStretchFactor(1, 2);
     revLay->addWidget(views, 1);
-    m_readout = new QLabel(tr("Move the cursor over the ROI for pixel values"), review);
+    auto* scaleRow = new QHBoxLayout;
+    m_histogram = new HistogramView(review);
+    m_colorBar = new ColorBar(review);
+    m_histogram->setFixedHeight(72);
+    m_colorBar->setFixedHeight(40);
+    scaleRow->addWidget(m_histogram, 1);
+    scaleRow->addWidget(m_colorBar, 1, Qt::AlignBottom);
+    revLay->addLayout(scaleRow);
+    m_readout = new QLabel(tr(kReadoutHint), review);
     revLay->addWidget(m_readout);
     m_details = new QLabel(review);
     m_details->setTextFormat(Qt::RichText);
@@ -180,6 +224,9 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     m_details->setWordWrap(true);
     revLay->addWidget(m_details);
     m_tabs->addTab(review, tr("Review"));
+    m_reviewTab = review;
+    m_sheet = new ContactSheet(m_controller, m_proxy, m_tabs);
+    m_tabs->addTab(m_sheet, tr("Contact sheet"));
 
     auto* trend = new QWidget(m_tabs);
     auto* trendLay = new QVBoxLayout(trend);
@@ -193,6 +240,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     trendLay->addWidget(m_plotPointing, 1);
     trendLay->addWidget(m_trendSummary);
     m_tabs->addTab(trend, tr("Trend"));
+    m_trendTab = trend;
 
     // Right: parameters.
     m_panel = new FootprintParamsPanel(this);
@@ -214,8 +262,21 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     lay->addWidget(split);
 
     // Wiring.
-    connect(m_filter, &QComboBox::currentIndexChanged, this,
-            [this](int i) { m_proxy->setVerdictFilter(ShotFilterProxy::Filter(i)); });
+    connect(m_filter, &QComboBox::currentIndexChanged, this, [this](int i) {
+        const int keep = currentSourceRow();
+        m_proxy->setVerdictFilter(ShotFilterProxy::Filter(i));
+        // Stay on the current shot when it is in the new view, else start at the top.
+        const QModelIndex p = m_proxy->mapFromSource(m_model->index(keep, 0));
+        if (p.isValid())
+            m_table->selectRow(p.row());
+        else if (m_proxy->rowCount() > 0)
+            m_table->selectRow(0);
+        emit modified();
+    });
+    connect(m_controller, &FootprintController::shotsAboutToReset, this, [] { appUndoStack().clear(); });
+    connect(&appUndoStack(), &QUndoStack::indexChanged, this, [this] {
+        if (appUndoStack().count() > 0) emit modified();
+    });
     connect(m_table->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this] { currentRowChanged(); });
     connect(m_panel, &FootprintParamsPanel::paramsChanged, this, [this](const FootprintParams& p) {
@@ -224,6 +285,13 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     });
     connect(m_controller, &FootprintController::currentDetailReady, this, &FootprintWorkspace::showDetail);
     connect(m_controller, &FootprintController::countsChanged, this, &FootprintWorkspace::updateCounts);
+    connect(m_controller, &FootprintController::shotsChanged, this, [this](int first, int last) {
+        const int cur = currentSourceRow();
+        if (cur >= first && cur <= last && !m_note->hasFocus()) {
+            const Shot* s = m_controller->shot(cur);
+            if (s && m_note->text() != s->note) m_note->setText(s->note);
+        }
+    });
     connect(m_controller, &FootprintController::rejudgeFinished, this, &FootprintWorkspace::refreshTrend);
     connect(m_controller, &FootprintController::shotsAppended, this, [this](int, int) {
         applyPendingOverrides();
@@ -231,16 +299,32 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     });
     connect(m_controller, &FootprintController::shotsReset, this, [this] {
         if (m_proxy->rowCount() > 0) m_table->selectRow(0);
+        applyPendingOverrides();
     });
     connect(m_controller, &FootprintController::loadProgress, this,
             [this](int done, int total) { emit status(tr("Loaded %1 of %2 shots").arg(done).arg(total)); });
     connect(m_controller, &FootprintController::loadFinished, this, [this](int loaded, int failed, bool cancelled) {
-        emit status(cancelled ? tr("Loading cancelled after %1 shots").arg(loaded)
-                              : tr("Loaded %1 shots (%2 unreadable)").arg(loaded).arg(failed));
+        QString msg = cancelled ? tr("Loading cancelled after %1 shots").arg(loaded)
+                                : tr("Loaded %1 shots (%2 unreadable)").arg(loaded).arg(failed);
+        const QStringList& skipped = m_controller->skippedInputs();
+        if (!skipped.isEmpty()) {
+            QStringList names;
+            for (const QString& f : skipped.mid(0, 3)) names << QFileInfo(f).fileName();
+            msg += tr("; skipped %1 %2 that %3 not an image (%4%5)")
+                       .arg(skipped.size())
+                       .arg(skipped.size() == 1 ? tr("file") : tr("files"))
+                       .arg(skipped.size() == 1 ? tr("is") : tr("are"))
+                       .arg(names.join(", "))
+                       .arg(skipped.size() > 3 ? ", …" : "");
+        }
+        emit status(msg);
         refreshTrend();
     });
-    for (QComboBox* c : {m_colorMap, m_stretch})
-        connect(c, &QComboBox::currentIndexChanged, this, [this] { showDetail(m_detail); });
+    connect(m_colorMap, &QComboBox::currentIndexChanged, this, [this] {
+        m_sheet->setColorMap(colorMapFromIndex(m_colorMap->currentIndex()));
+        showDetail(m_detail);
+    });
+    connect(m_display, &DisplayControls::changed, this, [this] { showDetail(m_detail); });
     for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres})
         connect(c, &QCheckBox::toggled, this, [this] { m_roiView->update(); });
     connect(m_roiView, &ImageView::pixelHovered, this, [this](double x, double y, double v) {
@@ -251,21 +335,39 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     });
     connect(accept, &QPushButton::clicked, this, &FootprintWorkspace::acceptCurrent);
     connect(reject, &QPushButton::clicked, this, &FootprintWorkspace::rejectCurrent);
-    connect(clearOv, &QPushButton::clicked, this, [this] {
-        m_controller->clearOverride(currentSourceRow());
-        emit modified();
+    connect(next, &QPushButton::clicked, this, &FootprintWorkspace::nextUnreviewed);
+    connect(clearOv, &QPushButton::clicked, this, [this] { judgeCurrent(false, Verdict::Good); });
+    connect(m_note, &QLineEdit::editingFinished, this, &FootprintWorkspace::commitNote);
+    connect(m_note, &QLineEdit::returnPressed, this, [this] { m_table->setFocus(); });
+    // Review keys on the table and on the contact sheet (the sheet follows the table's current).
+    for (QWidget* target : {static_cast<QWidget*>(m_table), static_cast<QWidget*>(m_sheet)}) {
+        auto key = [this, target](Qt::Key k, void (FootprintWorkspace::*fn)()) {
+            auto* sc = new QShortcut(QKeySequence(k), target, nullptr, nullptr, Qt::WidgetShortcut);
+            connect(sc, &QShortcut::activated, this, fn);
+        };
+        key(Qt::Key_A, &FootprintWorkspace::acceptCurrent);
+        key(Qt::Key_R, &FootprintWorkspace::rejectCurrent);
+        key(Qt::Key_N, &FootprintWorkspace::nextUnreviewed);
+        auto* e = new QShortcut(QKeySequence(Qt::Key_E), target, nullptr, nullptr, Qt::WidgetShortcut);
+        connect(e, &QShortcut::activated, this, [this] {
+            m_note->setFocus();
+            m_note->selectAll();
+        });
+    }
+    connect(m_sheet, &ContactSheet::openShot, this, [this](int row) {
+        selectRow(row);
+        m_tabs->setCurrentWidget(m_reviewTab);
+        m_table->setFocus();
     });
-    connect(m_note, &QLineEdit::editingFinished, this, [this] {
-        const Shot* s = m_controller->shot(currentSourceRow());
-        if (s && s->note != m_note->text()) {
-            m_controller->setNote(currentSourceRow(), m_note->text());
-            emit modified();
-        }
+    connect(m_sheet->selectionModel(), &QItemSelectionModel::currentChanged, this, [this] {
+        const int row = m_sheet->currentSourceRow();
+        if (row >= 0 && row != currentSourceRow()) selectRow(row);
     });
-    auto* a = new QShortcut(QKeySequence(Qt::Key_A), m_table, nullptr, nullptr, Qt::WidgetShortcut);
-    auto* r = new QShortcut(QKeySequence(Qt::Key_R), m_table, nullptr, nullptr, Qt::WidgetShortcut);
-    connect(a, &QShortcut::activated, this, &FootprintWorkspace::acceptCurrent);
-    connect(r, &QShortcut::activated, this, &FootprintWorkspace::rejectCurrent);
+    connect(m_tabs, &QTabWidget::currentChanged, this, [this] {
+        if (m_tabs->currentWidget() != m_sheet) return;
+        m_sheet->setCurrentSourceRow(currentSourceRow());
+        m_sheet->setFocus();  // arrows, A / R / N and Enter act on the sheet at once
+    });
 
     m_roiView->setOverlay([this](QPainter& p, double scale) {
         const ShotDetail& d = m_detail;
@@ -318,26 +420,90 @@ void FootprintWorkspace::currentRowChanged() {
     m_controller->setCurrent(row);
     const Shot* s = m_controller->shot(row);
     m_note->setText(s ? s->note : QString());
+    m_readout->setText(tr(kReadoutHint));  // the value under the cursor belonged to the last shot
+    if (m_tabs->currentWidget() == m_sheet && m_sheet->currentSourceRow() != row) m_sheet->setCurrentSourceRow(row);
 }
 
-void FootprintWorkspace::showTab(const QString& name) { m_tabs->setCurrentIndex(name == "trend" ? 1 : 0); }
-
-void FootprintWorkspace::acceptCurrent() {
-    const int row = currentSourceRow();
-    if (row < 0) return;
-    m_controller->setOverride(row, Verdict::Good, m_note->text());
-    emit modified();
-    const int next = m_table->currentIndex().row() + 1;
-    if (next < m_proxy->rowCount()) m_table->selectRow(next);
+void FootprintWorkspace::showTab(const QString& name) {
+    m_tabs->setCurrentWidget(name == "trend" ? m_trendTab : name == "sheet" ? static_cast<QWidget*>(m_sheet) : m_reviewTab);
 }
 
-void FootprintWorkspace::rejectCurrent() {
+void FootprintWorkspace::commitNote() {
+    const int row = currentSourceRow();
+    const Shot* s = m_controller->shot(row);
+    if (s && s->note != m_note->text()) appUndoStack().push(new ShotNoteCommand(m_controller, row, m_note->text()));
+}
+
+void FootprintWorkspace::judgeCurrent(bool overridden, Verdict v) {
+    const QModelIndex cur = m_table->currentIndex();
     const int row = currentSourceRow();
     if (row < 0) return;
-    m_controller->setOverride(row, Verdict::Rejected, m_note->text());
+    // The next shot of the view as it is now: after the verdict this shot may leave the view
+    // (a doubtful shot accepted under "Doubtful only"), and the row after it would move up.
+    const int nextProxy = cur.row() + 1;
+    const int nextSource =
+        nextProxy < m_proxy->rowCount() ? m_proxy->mapToSource(m_proxy->index(nextProxy, 0)).row() : -1;
+    const Shot* s = m_controller->shot(row);
+    const bool noteChanged = s->note != m_note->text();
+    if (noteChanged) appUndoStack().beginMacro(tr("note and verdict on %1").arg(QFileInfo(s->file).fileName()));
+    if (noteChanged) appUndoStack().push(new ShotNoteCommand(m_controller, row, m_note->text()));
+    appUndoStack().push(new ShotVerdictCommand(m_controller, row, overridden, v));
+    if (noteChanged) appUndoStack().endMacro();
     emit modified();
-    const int next = m_table->currentIndex().row() + 1;
-    if (next < m_proxy->rowCount()) m_table->selectRow(next);
+    if (!overridden) return;  // "Auto" stays on the shot
+    if (nextSource >= 0) {
+        selectRow(nextSource);
+    } else {
+        // The last shot of the view: stay on it if it is still shown, else on the new last row.
+        const QModelIndex p = m_proxy->mapFromSource(m_model->index(row, 0));
+        if (p.isValid())
+            m_table->selectRow(p.row());
+        else if (m_proxy->rowCount() > 0)
+            m_table->selectRow(m_proxy->rowCount() - 1);
+        emit status(tr("Last shot of the view"));
+    }
+    if (m_tabs->currentWidget() == m_sheet) m_sheet->setCurrentSourceRow(currentSourceRow());
+}
+
+void FootprintWorkspace::acceptCurrent() { judgeCurrent(true, Verdict::Good); }
+
+void FootprintWorkspace::rejectCurrent() { judgeCurrent(true, Verdict::Rejected); }
+
+void FootprintWorkspace::nextUnreviewed() {
+    const int n = m_proxy->rowCount();
+    if (n == 0) return;
+    const int start = m_table->currentIndex().isValid() ? m_table->currentIndex().row() : -1;
+    for (int k = 1; k <= n; ++k) {
+        const int p = (start + k) % n;
+        const Shot* s = m_controller->shot(m_proxy->mapToSource(m_proxy->index(p, 0)).row());
+        if (s && !s->overridden) {
+            m_table->selectRow(p);
+            if (m_tabs->currentWidget() == m_sheet) m_sheet->setCurrentSourceRow(currentSourceRow());
+            return;
+        }
+    }
+    emit status(tr("Every shot of this view has a manual verdict"));
+}
+
+bool FootprintWorkspace::exportTable(const QString& path, bool acceptedOnly, QString* error) {
+    commitNote();
+    return writeFootprintReview(m_controller->shots(), m_controller->params().method, path, acceptedOnly, error);
+}
+
+void FootprintWorkspace::exportDialog(bool acceptedOnly) {
+    QSettings st;
+    const QString path = QFileDialog::getSaveFileName(
+        this, acceptedOnly ? tr("Export accepted shots") : tr("Export the review table"),
+        st.value("paths/lastExport").toString(), tr("CSV (*.csv)"));
+    if (path.isEmpty()) return;
+    st.setValue("paths/lastExport", QFileInfo(path).absolutePath());
+    QString err;
+    if (!exportTable(path, acceptedOnly, &err)) {
+        emit status(tr("Cannot export: %1").arg(err));
+        return;
+    }
+    emit status(acceptedOnly ? tr("Exported %1 accepted shots to %2").arg(m_controller->counts().good).arg(path)
+                             : tr("Exported the review table (%1 shots) to %2").arg(m_controller->count()).arg(path));
 }
 
 void FootprintWorkspace::updateCounts() {
@@ -347,9 +513,17 @@ void FootprintWorkspace::updateCounts() {
                     .arg(c.good)
                     .arg(c.doubtful)
                     .arg(c.rejected);
+    if (c.unreadable) t += tr(" · <span style='color:#6e6e78'>%1 unreadable</span>").arg(c.unreadable);
     if (c.pending) t += tr(" · %1 pending").arg(c.pending);
     if (c.overridden) t += tr(" · %1 manual").arg(c.overridden);
     m_counts->setText(t);
+    int doubtful = 0, reviewed = 0;
+    for (const Shot& s : m_controller->shots()) {
+        if (!s.loadError.isEmpty() || !s.processed || s.verdict != Verdict::Doubtful) continue;
+        ++doubtful;
+        reviewed += s.overridden;
+    }
+    m_reviewed->setText(tr("Reviewed %1 of %2 doubtful").arg(reviewed).arg(doubtful));
 }
 
 void FootprintWorkspace::showDetail(const ShotDetail& d) {
@@ -358,12 +532,17 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
     if (!s || d.roi.empty()) {
         m_roiView->clear();
         m_frameView->clear();
+        m_histogram->clear();
         m_details->setText(s ? tr("<b>%1</b><br>%2").arg(s->file.toHtmlEscaped(), s->loadError.toHtmlEscaped()) : QString());
         return;
     }
     const ColorMap cm = colorMapFromIndex(m_colorMap->currentIndex());
-    const Stretch st = stretchFromIndex(m_stretch->currentIndex());
-    m_roiView->setImage(d.roi, renderImage(d.roi, cm, st), QPointF(d.origin));
+    const DisplaySettings ds = m_display->settings();
+    const core::DisplayLimits lim = displayLimits(d.roi, ds);
+    m_display->showLimits(lim.lo, lim.hi);
+    m_roiView->setImage(d.roi, renderStretched(d.roi, cm, ds.stretch, lim.lo, lim.hi), QPointF(d.origin));
+    m_histogram->setData(d.roi, lim.lo, lim.hi);
+    m_colorBar->setScale(cm, ds.stretch, lim.lo, lim.hi);
     const FootprintResult& r = d.selected;
     const Verdict v = s->effectiveVerdict();
     QString badge = verdictLabel(v).toUpper();
@@ -383,7 +562,8 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
             const int cx = d.origin.x() + d.roi.cols / 2, cy = d.origin.y() + d.roi.rows / 2;
             const cv::Rect win = cv::Rect(cx - half, cy - half, 2 * half, 2 * half) & cv::Rect(0, 0, m_frame.cols, m_frame.rows);
             const cv::Mat crop = m_frame(win).clone();
-            m_frameView->setImage(crop, renderImage(crop, cm, st), QPointF(win.x, win.y));
+            const core::DisplayLimits fl = ds.limits == LimitsMode::Manual ? lim : displayLimits(crop, ds);
+            m_frameView->setImage(crop, renderStretched(crop, cm, ds.stretch, fl.lo, fl.hi), QPointF(win.x, win.y));
             m_frameView->setOverlay([this, win](QPainter& p, double scale) {
                 const QPointF o(m_detail.origin.x() - win.x, m_detail.origin.y() - win.y);
                 p.setPen(QPen(Qt::white, 1.5 / scale));
@@ -445,10 +625,18 @@ void FootprintWorkspace::refreshTrend() {
     const TrendResult tr_ = m_controller->trend(tp);
     for (QCustomPlot* p : {m_plotX, m_plotY, m_plotPointing}) p->clearGraphs();
     if (!tr_.ok) {
+        // No empty legend boxes or axes left from an earlier list: the plots go, the reason stays.
         m_trendSummary->setText(tr("Trend: %1. A shot list CSV with time and beam columns (or the demo) gives the "
                                    "monthly centroid trend.").arg(QString::fromStdString(tr_.error)));
-        for (QCustomPlot* p : {m_plotX, m_plotY, m_plotPointing}) p->replot(QCustomPlot::rpQueuedReplot);
+        for (QCustomPlot* p : {m_plotX, m_plotY, m_plotPointing}) {
+            p->legend->setVisible(false);
+            p->hide();
+        }
         return;
+    }
+    for (QCustomPlot* p : {m_plotX, m_plotY, m_plotPointing}) {
+        p->legend->setVisible(true);
+        p->show();
     }
     static const QColor colors[] = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44), QColor(148, 103, 189)};
     // Every series is shown as the change from its first month's mean, so both beams share an
@@ -532,12 +720,23 @@ QJsonObject FootprintWorkspace::saveState() const {
     }
     o["overrides"] = ov;
     o["current"] = m_controller->current();
+    if (const Shot* cur = m_controller->shot(currentSourceRow())) o["current_key"] = overrideKey(*cur);
+    o["filter"] = ShotFilterProxy::filterKeys().value(m_filter->currentIndex());
+    const DisplaySettings ds = m_display->settings();
+    QJsonObject disp;
+    disp["limits"] = int(ds.limits);
+    disp["stretch"] = QString::fromLatin1(core::stretchKindName(ds.stretch));
+    disp["low"] = ds.manualLo;
+    disp["high"] = ds.manualHi;
+    disp["colors"] = m_colorMap->currentIndex();
+    o["display"] = disp;
     return o;
 }
 
 bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
                                       const std::vector<std::string>& at) {
-    if (!checkSessionKeys(state, {"inputs", "demo", "params", "overrides", "current"}, "footprint", error, doc, at))
+    if (!checkSessionKeys(state, {"inputs", "demo", "params", "overrides", "current", "current_key", "filter", "display"},
+                          "footprint", error, doc, at))
         return false;
     // Every parameter from the session over the defaults.
     FootprintParams p;
@@ -559,9 +758,28 @@ bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, 
             return false;
         }
     }
+    const QString filter = state["filter"].toString("all");
+    const int filterIndex = ShotFilterProxy::filterKeys().indexOf(filter);
+    if (filterIndex < 0) {
+        *error = tr("unknown filter \"%1\" (one of %2)").arg(filter, ShotFilterProxy::filterKeys().join(", "));
+        return false;
+    }
     m_panel->setParams(p);
     m_controller->setParams(p);
+    m_filter->setCurrentIndex(filterIndex);
+    if (state.contains("display")) {
+        const QJsonObject disp = state["display"].toObject();
+        DisplaySettings ds;
+        ds.limits = LimitsMode(std::clamp(disp["limits"].toInt(int(ds.limits)), 0, int(LimitsMode::Manual)));
+        for (core::StretchKind k : {core::StretchKind::Linear, core::StretchKind::Sqrt, core::StretchKind::Log, core::StretchKind::Asinh})
+            if (disp["stretch"].toString() == core::stretchKindName(k)) ds.stretch = k;
+        ds.manualLo = disp["low"].toDouble(0);
+        ds.manualHi = disp["high"].toDouble(1);
+        m_display->setSettings(ds);
+        m_colorMap->setCurrentIndex(std::clamp(disp["colors"].toInt(1), 0, m_colorMap->count() - 1));
+    }
     m_pendingOverrides = ov;
+    m_pendingCurrent = state["current_key"].toString();
     QStringList inputs;
     for (const auto& v : state["inputs"].toArray()) inputs << v.toString();
     if (state["demo"].toBool())
@@ -572,13 +790,12 @@ bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, 
         m_controller->clear();
     applyPendingOverrides();
     const int cur = state["current"].toInt(-1);
-    if (cur >= 0 && cur < m_controller->count()) selectRow(cur);
+    if (m_pendingCurrent.isEmpty() && cur >= 0 && cur < m_controller->count()) selectRow(cur);
     return true;
 }
 
 void FootprintWorkspace::applyPendingOverrides() {
-    if (m_pendingOverrides.isEmpty()) return;
-    for (int i = 0; i < m_controller->count(); ++i) {
+    for (int i = 0; !m_pendingOverrides.isEmpty() && i < m_controller->count(); ++i) {
         const Shot& s = *m_controller->shot(i);
         const QString key = overrideKey(s);
         if (!m_pendingOverrides.contains(key)) continue;
@@ -591,6 +808,12 @@ void FootprintWorkspace::applyPendingOverrides() {
             m_controller->setNote(i, e["note"].toString());
         }
         m_pendingOverrides.remove(key);
+    }
+    // The session's current shot, once it has arrived (after its override: it decides the view).
+    for (int i = 0; !m_pendingCurrent.isEmpty() && i < m_controller->count(); ++i) {
+        if (overrideKey(*m_controller->shot(i)) != m_pendingCurrent) continue;
+        m_pendingCurrent.clear();
+        selectRow(i);
     }
 }
 

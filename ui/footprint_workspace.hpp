@@ -1,11 +1,15 @@
 #pragma once
 // The footprint review workspace: shot table, ROI and frame views with the fits drawn over
-// them, the parameter panel, and the trend plots.
+// them (DS9-like limits, stretch, histogram and colour bar), a contact sheet of the current
+// view, the parameter panel, and the trend plots. The review loop: filter, then A / R / N
+// (accept, reject, next unreviewed) and E (note) by keyboard; every verdict and note is an
+// undoable command on appUndoStack().
 #include <QJsonObject>
 #include <QWidget>
 
 #include "core/common/json.hpp"
 #include "ui/footprint_controller.hpp"
+#include "ui/shot_table_model.hpp"
 
 class QTableView;
 class QComboBox;
@@ -19,9 +23,11 @@ class QTextBrowser;
 namespace lwb::ui {
 
 class ImageView;
-class ShotTableModel;
-class ShotFilterProxy;
 class FootprintParamsPanel;
+class ContactSheet;
+class DisplayControls;
+class HistogramView;
+class ColorBar;
 
 class FootprintWorkspace : public QWidget {
     Q_OBJECT
@@ -32,22 +38,40 @@ public:
     QTableView* table() const { return m_table; }
     ShotFilterProxy* proxy() const { return m_proxy; }
     ImageView* roiView() const { return m_roiView; }
+    ContactSheet* contactSheet() const { return m_sheet; }
+    DisplayControls* displayControls() const { return m_display; }
+    HistogramView* histogram() const { return m_histogram; }
+    ColorBar* colorBar() const { return m_colorBar; }
+    QComboBox* filterBox() const { return m_filter; }
+    QLineEdit* noteField() const { return m_note; }
+    QLabel* readout() const { return m_readout; }
+    /// "reviewed 12 of 30 doubtful": shots judged doubtful by the pipeline that have a manual verdict.
+    QLabel* reviewedLabel() const { return m_reviewed; }
 
-    /// Session state: inputs, parameters, overrides and notes (keyed by file and ROI centre).
+    /// Session state: inputs, parameters, overrides and notes (keyed by file and ROI centre),
+    /// the filter and the current shot.
     QJsonObject saveState() const;
-    /// Restores a session; loading of the inputs runs in the background, overrides are applied
-    /// as rows arrive. The parameters start from the defaults and every field given is read
+    /// Restores a session; loading of the inputs runs in the background, overrides (and the
+    /// current shot) are applied as rows arrive. The parameters start from the defaults and every field given is read
     /// (footprintSchema().fromJson: unknown keys are errors naming the key, with the line and
     /// column when `doc`, the parsed session file, is given; `at`: this state's path in it).
     /// False with *error when the state is malformed.
     bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
                       const std::vector<std::string>& at = {"footprint"});
 
-    /// "review" or "trend".
+    /// "review", "sheet" (contact sheet) or "trend".
     void showTab(const QString& name);
     void acceptCurrent();
     void rejectCurrent();
+    /// The next shot of the view after the current one (wrapping) without a manual verdict.
+    void nextUnreviewed();
     void selectRow(int sourceRow);
+
+    /// The review table (every shot; acceptedOnly: the accepted ones) through the CLI's report
+    /// writer with the review columns. Atomic. False with *error.
+    bool exportTable(const QString& path, bool acceptedOnly, QString* error);
+    /// Asks for a file and exports (status message or error).
+    void exportDialog(bool acceptedOnly);
 
 signals:
     void modified();               ///< something a session would save changed
@@ -59,28 +83,36 @@ private:
     void refreshTrend();
     void currentRowChanged();
     int currentSourceRow() const;
+    void judgeCurrent(bool overridden, Verdict v);
+    void commitNote();
 
 public:
-    /// Applies session overrides to the rows that have arrived (called as rows arrive).
+    /// Applies session overrides (and the session's current shot) to the rows that have arrived
+    /// (called as rows arrive).
     void applyPendingOverrides();
 
 private:
-
     FootprintController* m_controller;
     ShotTableModel* m_model;
     ShotFilterProxy* m_proxy;
     QTableView* m_table;
-    QComboBox *m_filter, *m_colorMap, *m_stretch;
-    QLabel *m_counts, *m_readout, *m_details;
+    QComboBox *m_filter, *m_colorMap;
+    DisplayControls* m_display;
+    HistogramView* m_histogram;
+    ColorBar* m_colorBar;
+    QLabel *m_counts, *m_reviewed, *m_readout, *m_details;
     QCheckBox *m_showGauss, *m_showTefm, *m_showDomain, *m_showCentres;
     ImageView *m_roiView, *m_frameView;
+    ContactSheet* m_sheet;
     QLineEdit* m_note;
     FootprintParamsPanel* m_panel;
     QTabWidget* m_tabs;
+    QWidget *m_reviewTab, *m_trendTab;
     QCustomPlot *m_plotX, *m_plotY, *m_plotPointing;
     QLabel* m_trendSummary;
     ShotDetail m_detail;
     QJsonObject m_pendingOverrides;  // from a session, applied when rows arrive
+    QString m_pendingCurrent;        // from a session: key of the shot to make current
     cv::Mat m_frame;                 // full frame of the current shot (when it is one)
     QString m_frameFile;
 };

@@ -26,7 +26,6 @@ void ImageView::setImage(const cv::Mat& data, const QImage& rendered, QPointF or
 void ImageView::clear() {
     m_data.release();
     m_image = QImage();
-    m_overlay = nullptr;
     m_badge.clear();
     update();
 }

@@ -17,11 +17,14 @@ public:
     /// The data (CV_32FC1, for the readout) and its rendering. origin: full-image coordinates of
     /// the data's pixel (0,0), shown in the readout.
     void setImage(const cv::Mat& data, const QImage& rendered, QPointF origin = {});
+    /// Drops the image and the badge; the overlay function stays (it draws the next image).
     void clear();
     /// Painter callback for overlays; the painter is already transformed to image coordinates
     /// (one unit = one pixel; pixel (x, y) covers x−0.5..x+0.5). pxScale: screen px per image px.
     using OverlayFn = std::function<void(class QPainter&, double pxScale)>;
     void setOverlay(OverlayFn fn);
+    bool hasOverlay() const { return bool(m_overlay); }
+    bool hasImage() const { return !m_image.isNull(); }
     void setBadge(const QString& text, const QColor& color);
     void fitToWindow();
     double zoom() const { return m_zoom; }

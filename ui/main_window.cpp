@@ -59,9 +59,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             [this](const QString& msg) { showError(tr("Cannot open the footprint inputs"), msg); });
     // Progress of long loads, with a cancel button, in the status bar.
     m_progress = new QProgressBar(this);
+    m_progress->setObjectName("loadProgress");
     m_progress->setMaximumWidth(260);
     m_progress->setFormat(tr("%v / %m shots"));
     m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setObjectName("loadCancel");
     statusBar()->addPermanentWidget(m_progress);
     statusBar()->addPermanentWidget(m_cancel);
     m_progress->hide();
@@ -86,7 +88,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
 void MainWindow::buildMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&Open frames, folder or shot list…"), QKeySequence::Open, this, &MainWindow::openInputs);
+    file->addAction(tr("&Open frames or shot list…"), QKeySequence::Open, this, &MainWindow::openInputs);
+    file->addAction(tr("Open &folder of frames…"), this, &MainWindow::openFolder)->setObjectName("actionOpenFolder");
     file->addAction(tr("Open &demo"), this, &MainWindow::openDemo);
     file->addSeparator();
     file->addAction(tr("Open &session…"), QKeySequence(tr("Ctrl+Shift+O")), this, &MainWindow::openSessionDialog);
@@ -95,6 +98,8 @@ void MainWindow::buildMenus() {
     file->addAction(tr("Save session &as…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
     file->addSeparator();
     file->addAction(tr("&Export accepted shots…"), QKeySequence(tr("Ctrl+E")), this, &MainWindow::exportAccepted);
+    file->addAction(tr("Export review &table…"), this, [this] { m_footprint->exportDialog(false); })
+        ->setObjectName("actionExportReview");
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -122,7 +127,8 @@ void MainWindow::setModified(bool m) {
     setWindowTitle(tr("%1%2 — Laser Workbench").arg(name, m ? "*" : ""));
 }
 
-void MainWindow::openDemo() {
+bool MainWindow::openDemo() {
+    if (!maybeSave()) return false;
     m_footprint->controller()->setShots(demoFootprintShots());
     m_footprint->controller()->setParams(m_footprint->paramsPanel()->params());
     m_slr->openDemo();
@@ -134,6 +140,23 @@ void MainWindow::openDemo() {
                              8000);
     m_sessionPath.clear();
     setModified(false);
+    return true;
+}
+
+bool MainWindow::openFootprintInputs(const QStringList& paths) {
+    if (paths.isEmpty() || !maybeSave()) return false;
+    m_footprint->controller()->open(paths);
+    setModified(true);
+    return true;
+}
+
+void MainWindow::openFolder() {
+    QSettings st;
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open a folder of footprint frames"),
+                                                          st.value("paths/lastInput").toString());
+    if (dir.isEmpty()) return;
+    st.setValue("paths/lastInput", dir);
+    openFootprintInputs({dir});
 }
 
 void MainWindow::openInputs() {
@@ -146,8 +169,7 @@ void MainWindow::openInputs() {
     QStringList files = dlg.selectedFiles();
     if (files.isEmpty()) return;
     st.setValue("paths/lastInput", QFileInfo(files.first()).absolutePath());
-    m_footprint->controller()->open(files);
-    setModified(true);
+    openFootprintInputs(files);
 }
 
 QJsonObject MainWindow::sessionState() const {
@@ -186,6 +208,10 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
         if (!quiet) showError(tr("Cannot open the session"), why);
         return false;
     };
+    if (!maybeSave()) {  // the analyst cancelled: not an error to report
+        if (errorOut) *errorOut = tr("%1: not opened (cancelled; the current changes are kept)").arg(path);
+        return false;
+    }
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) return fail(tr("%1: %2").arg(path, f.errorString()));
     const QByteArray text = f.readAll();
@@ -233,7 +259,6 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
 }
 
 void MainWindow::openSessionDialog() {
-    if (!maybeSave()) return;
     QSettings st;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open session"), st.value("paths/lastSession").toString(),
                                                       tr("Laser Workbench sessions (*.lwb.json *.json)"));
@@ -266,9 +291,17 @@ bool MainWindow::saveAs() {
 
 bool MainWindow::maybeSave() {
     if (!m_modified) return true;
-    const auto answer = QMessageBox::question(this, tr("Unsaved changes"),
-                                              tr("The session has unsaved changes (verdicts, notes, parameters). Save them?"),
-                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    QMessageBox::StandardButton answer;
+    if (m_prompt) {
+        answer = m_prompt();
+    } else if (qApp->platformName() == "offscreen") {
+        qWarning("unsaved changes discarded: no one can answer a dialog on the offscreen platform");
+        answer = QMessageBox::Discard;
+    } else {
+        answer = QMessageBox::question(this, tr("Unsaved changes"),
+                                       tr("The session has unsaved changes (verdicts, notes, parameters). Save them?"),
+                                       QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    }
     if (answer == QMessageBox::Save) return save();
     return answer == QMessageBox::Discard;
 }
@@ -301,9 +334,7 @@ void MainWindow::rebuildRecentMenu() {
     m_recentMenu->clear();
     const QStringList recent = QSettings().value("recentSessions").toStringList();
     for (const QString& p : recent)
-        m_recentMenu->addAction(QFileInfo(p).fileName(), this, [this, p] {
-            if (maybeSave()) openSession(p);
-        })->setToolTip(p);
+        m_recentMenu->addAction(QFileInfo(p).fileName(), this, [this, p] { openSession(p); })->setToolTip(p);
     m_recentMenu->setEnabled(!recent.isEmpty());
 }
 

@@ -3,6 +3,8 @@
 // unsaved-changes prompt), settings, status bar, error dialogs.
 #include <QJsonObject>
 #include <QMainWindow>
+#include <QMessageBox>
+#include <functional>
 
 class QTabWidget;
 class QMenu;
@@ -27,10 +29,22 @@ public:
     RadiometryWorkspace* radiometry() const { return m_radiometry; }
     QTabWidget* tabs() const { return m_tabs; }
 
-    /// Loads the built-in demo in every workspace.
-    void openDemo();
-    /// Opens a session file; on error shows a dialog (unless quiet) and keeps the current state.
+    /// Loads the built-in demo in every workspace (after the unsaved-changes prompt; false when
+    /// the analyst cancelled it).
+    bool openDemo();
+    /// Opens footprint frames, folders or a shot list, replacing the list (after the
+    /// unsaved-changes prompt; false when cancelled).
+    bool openFootprintInputs(const QStringList& paths);
+    /// Opens a session file (after the unsaved-changes prompt); on error shows a dialog (unless
+    /// quiet) and keeps the current state.
     bool openSession(const QString& path, bool quiet = false, QString* error = nullptr);
+    /// Answers the unsaved-changes prompt instead of a dialog (tests, scripted runs): returns
+    /// Save, Discard or Cancel. Unset: a dialog (on the offscreen platform, where nobody can
+    /// answer one, Discard with a warning).
+    using PromptFn = std::function<QMessageBox::StandardButton()>;
+    void setUnsavedChangesPrompt(PromptFn fn) { m_prompt = std::move(fn); }
+    /// Asks whether to save unsaved changes before they are replaced; false: do not go on.
+    bool maybeSave();
     /// Saves the session atomically. False with *error.
     bool saveSession(const QString& path, QString* error);
     QJsonObject sessionState() const;
@@ -45,10 +59,10 @@ protected:
 private:
     void buildMenus();
     void openInputs();
+    void openFolder();
     void openSessionDialog();
     bool save();
     bool saveAs();
-    bool maybeSave();
     void exportAccepted();
     void setModified(bool m);
     void addRecent(const QString& path);
@@ -65,6 +79,7 @@ private:
     QPushButton* m_cancel = nullptr;
     QString m_sessionPath;
     bool m_modified = false;
+    PromptFn m_prompt;
 };
 
 }  // namespace lwb::ui

@@ -17,6 +17,30 @@ QColor verdictColor(Verdict v) {
     return Qt::gray;
 }
 
+ShotState shotState(const Shot& s) {
+    if (!s.loadError.isEmpty()) return ShotState::Unreadable;
+    if (!s.processed) return ShotState::Pending;
+    return ShotState(int(s.effectiveVerdict()));  // Good, Doubtful, Rejected share the values
+}
+
+QString shotStateLabel(ShotState s) {
+    switch (s) {
+        case ShotState::Unreadable: return QObject::tr("unreadable");
+        case ShotState::Pending: return QObject::tr("…");
+        default: return verdictLabel(Verdict(int(s)));
+    }
+}
+
+QColor shotStateColor(ShotState s) {
+    switch (s) {
+        case ShotState::Unreadable: return QColor(110, 110, 120);
+        case ShotState::Pending: return QColor(128, 128, 128);
+        default: return verdictColor(Verdict(int(s)));
+    }
+}
+
+QStringList ShotFilterProxy::filterKeys() { return {"all", "good", "doubtful", "rejected", "unreadable", "manual"}; }
+
 ShotTableModel::ShotTableModel(FootprintController* c, QObject* parent) : QAbstractTableModel(parent), m_c(c) {
     connect(c, &FootprintController::shotsAboutToReset, this, [this]() { beginResetModel(); });
     connect(c, &FootprintController::shotsReset, this, [this]() { endResetModel(); });
@@ -42,14 +66,16 @@ QVariant ShotTableModel::data(const QModelIndex& index, int role) const {
     if (!s) return {};
     const bool failed = !s->loadError.isEmpty();
     const Verdict v = failed ? Verdict::Rejected : s->effectiveVerdict();
-    if (role == VerdictRole) return int(v);
+    const ShotState state = shotState(*s);
+    if (role == VerdictRole) return failed ? -1 : int(v);
+    if (role == StateRole) return int(state);
     if (role == Qt::ToolTipRole) {
         if (failed) return s->loadError;
         if (index.column() == Reasons || index.column() == VerdictCol) return s->reasons.join("\n");
         if (index.column() == Time) return s->time;
         return s->file;
     }
-    if (role == Qt::ForegroundRole && index.column() == VerdictCol) return verdictColor(v);
+    if (role == Qt::ForegroundRole && index.column() == VerdictCol) return shotStateColor(state);
     if (role == Qt::TextAlignmentRole && (index.column() == X || index.column() == Y))
         return int(Qt::AlignRight | Qt::AlignVCenter);
     if (role != Qt::DisplayRole && role != SortRole) return {};
@@ -67,8 +93,8 @@ QVariant ShotTableModel::data(const QModelIndex& index, int role) const {
             return std::isfinite(y) && v != Verdict::Rejected ? (sort ? QVariant(y) : QString::number(y, 'f', 3)) : QVariant();
         }
         case VerdictCol:
-            if (!failed && !s->processed) return tr("…");
-            return s->overridden ? verdictLabel(v) + tr(" (manual)") : verdictLabel(v);
+            if (sort) return int(state) * 2 + (s->overridden ? 1 : 0);
+            return s->overridden && !failed ? shotStateLabel(state) + tr(" (manual)") : shotStateLabel(state);
         case Reasons: return failed ? s->loadError : s->reasons.join("; ");
         case NoiseClass: return s->noiseClass;
         case Note: return s->note;
@@ -84,11 +110,12 @@ void ShotFilterProxy::setVerdictFilter(Filter f) {
 bool ShotFilterProxy::filterAcceptsRow(int row, const QModelIndex& parent) const {
     if (m_filter == All) return true;
     const QModelIndex i = sourceModel()->index(row, 0, parent);
-    const Verdict v = Verdict(sourceModel()->data(i, ShotTableModel::VerdictRole).toInt());
+    const ShotState s = ShotState(sourceModel()->data(i, ShotTableModel::StateRole).toInt());
     switch (m_filter) {
-        case GoodOnly: return v == Verdict::Good;
-        case DoubtfulOnly: return v == Verdict::Doubtful;
-        case RejectedOnly: return v == Verdict::Rejected;
+        case GoodOnly: return s == ShotState::Good;
+        case DoubtfulOnly: return s == ShotState::Doubtful;
+        case RejectedOnly: return s == ShotState::Rejected;
+        case UnreadableOnly: return s == ShotState::Unreadable;
         case OverriddenOnly:
             return sourceModel()->data(sourceModel()->index(row, ShotTableModel::VerdictCol, parent)).toString().contains("manual");
         default: return true;

@@ -12,7 +12,9 @@ class ShotTableModel : public QAbstractTableModel {
     Q_OBJECT
 public:
     enum Column { File, Time, Beam, X, Y, VerdictCol, Reasons, NoiseClass, Note, ColumnCount };
-    enum Roles { SortRole = Qt::UserRole + 1, VerdictRole };
+    /// VerdictRole: the effective Verdict (int) of a readable shot, -1 for an unreadable one.
+    /// StateRole: the ShotState (int).
+    enum Roles { SortRole = Qt::UserRole + 1, VerdictRole, StateRole };
     explicit ShotTableModel(FootprintController* c, QObject* parent = nullptr);
 
     int rowCount(const QModelIndex& parent = {}) const override;
@@ -27,7 +29,9 @@ private:
 class ShotFilterProxy : public QSortFilterProxyModel {
     Q_OBJECT
 public:
-    enum Filter { All, GoodOnly, DoubtfulOnly, RejectedOnly, OverriddenOnly };
+    enum Filter { All, GoodOnly, DoubtfulOnly, RejectedOnly, UnreadableOnly, OverriddenOnly };
+    /// Names for the session file (index = Filter).
+    static QStringList filterKeys();
     using QSortFilterProxyModel::QSortFilterProxyModel;
     void setVerdictFilter(Filter f);
     Filter verdictFilter() const { return m_filter; }
@@ -41,5 +45,12 @@ private:
 
 QString verdictLabel(Verdict v);
 QColor verdictColor(Verdict v);
+
+/// What the review shows for a shot: its effective verdict, or that it could not be read, or
+/// that it has not been judged yet.
+enum class ShotState { Good, Doubtful, Rejected, Unreadable, Pending };
+ShotState shotState(const Shot& s);
+QString shotStateLabel(ShotState s);
+QColor shotStateColor(ShotState s);
 
 }  // namespace lwb::ui

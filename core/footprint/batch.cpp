@@ -54,10 +54,11 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
     return out;
 }
 
-std::string footprintCsvHeader(const std::vector<std::string>& extra) {
-    std::string h = "file,x,y,verdict,reasons,method,noise_class,sigma_x,sigma_y,axis_ratio,tilt_deg,major_axis_px,"
-                    "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0";
-    for (const auto& name : extra) h += "," + csvEscape(name);
+std::string footprintCsvHeader(const FootprintCsvOptions& o) {
+    std::string h =
+        "file,x,y,verdict,reasons,method,noise_class,sigma_x,sigma_y,axis_ratio,tilt_deg,major_axis_px,"
+        "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0";
+    if (o.review) h += ",time,beam,camera,auto_verdict,override,note";
     return h + "\n";
 }
 
@@ -69,32 +70,43 @@ std::string joinReasons(const std::vector<std::string>& r) {
     for (size_t i = 0; i < r.size(); ++i) s += (i ? "; " : "") + r[i];
     return s;
 }
+// The review columns of ROI k (empty fields when the item carries no review for it).
+std::string reviewColumns(const BatchItem& item, size_t k, Verdict computed) {
+    const RoiReview rv = k < item.reviews.size() ? item.reviews[k] : RoiReview{};
+    return "," + csvEscape(rv.time) + "," + csvEscape(rv.beam) + "," + csvEscape(rv.camera) + "," +
+           verdictName(computed) + "," + (rv.overridden ? "manual" : "") + "," + csvEscape(rv.note);
+}
 }  // namespace
 
-std::string footprintCsvRows(const BatchItem& item, Method method, const std::vector<std::string>& extra) {
-    std::string end;  // the extra columns and the line end
-    for (const auto& v : extra) end += "," + csvEscape(v);
-    end += "\n";
+std::string footprintCsvRows(const BatchItem& item, Method method, const FootprintCsvOptions& o) {
     std::string out;
     const std::string file = csvEscape(item.file);
+    // Unreadable frames and failed fits are rejected rows, whatever the review says.
+    auto failedRow = [&](const std::string& reason, size_t k, const std::string& roi) {
+        if (o.acceptedOnly) return;
+        out += file + ",,,rejected," + csvEscape(reason) + "," + methodName(method) + ",,,,,,,,,," + roi + ",,,,,,,";
+        if (o.review) out += reviewColumns(item, k, Verdict::Rejected);
+        out += "\n";
+    };
     if (!item.readError.empty()) {
-        out += file + ",,,rejected," + csvEscape("unreadable: " + item.readError) + "," + methodName(method) +
-               ",,,,,,,,,,0,,,,,,," + end;
+        failedRow("unreadable: " + item.readError, 0, "0");
         return out;
     }
     for (size_t k = 0; k < item.rois.size(); ++k) {
         const FrameRoiResult& fr = item.rois[k];
         const FootprintResult& r = fr.result;
         if (!r.ok) {
-            out += file + ",,,rejected," + csvEscape(r.error) + "," + methodName(method) + ",,,,,,,,,," +
-                   std::to_string(k) + ",,,,,,," + end;
+            failedRow(r.error, k, std::to_string(k));
             continue;
         }
         const SpotFit& f = r.fit;
-        const bool has = f.ok && r.verdict != Verdict::Rejected;
+        Verdict v = r.verdict;
+        if (o.review && k < item.reviews.size() && item.reviews[k].overridden) v = item.reviews[k].verdict;
+        if (o.acceptedOnly && (v != Verdict::Good || !f.ok)) continue;
+        const bool has = f.ok && v != Verdict::Rejected;
         out += file + ",";
         out += (has ? num(f.x + fr.originX, 4) : "") + "," + (has ? num(f.y + fr.originY, 4) : "") + ",";
-        out += std::string(verdictName(r.verdict)) + "," + csvEscape(joinReasons(r.reasons)) + ",";
+        out += std::string(verdictName(v)) + "," + csvEscape(joinReasons(r.reasons)) + ",";
         out += std::string(methodName(r.method)) + "," + noiseClassName(r.background.noiseClass) + ",";
         if (f.ok) {
             out += num(f.sigmaX, 4) + "," + num(f.sigmaY, 4) + "," + num(f.axisRatio, 4) + "," +
@@ -109,33 +121,22 @@ std::string footprintCsvRows(const BatchItem& item, Method method, const std::ve
                    num(f.amplitude, 1) + "," + num(f.background, 1);
         else
             out += ",,,," + num(r.background.level, 1);
-        out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY) + end;
+        out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY);
+        if (o.review) out += reviewColumns(item, k, r.verdict);
+        out += "\n";
     }
     return out;
 }
 
 bool writeFootprintCsv(const std::string& path, const std::vector<BatchItem>& items, Method method,
-                       std::string* error, const FootprintCsvExtra* extra) {
-    if (extra && extra->values.size() != items.size()) {
-        *error = "footprint report: " + std::to_string(extra->values.size()) + " rows of extra columns for " +
-                 std::to_string(items.size()) + " items";
-        return false;
-    }
-    if (extra)
-        for (size_t i = 0; i < items.size(); ++i)
-            if (extra->values[i].size() != extra->names.size()) {
-                *error = "footprint report: item " + std::to_string(i) + " has " + std::to_string(extra->values[i].size()) +
-                         " extra values for " + std::to_string(extra->names.size()) + " extra columns";
-                return false;
-            }
+                       std::string* error, const FootprintCsvOptions& options) {
     AtomicFile f(path);
     if (!f.ok()) {
         *error = f.error();
         return false;
     }
-    static const std::vector<std::string> none;
-    f.stream() << footprintCsvHeader(extra ? extra->names : none);
-    for (size_t i = 0; i < items.size(); ++i) f.stream() << footprintCsvRows(items[i], method, extra ? extra->values[i] : none);
+    f.stream() << footprintCsvHeader(options);
+    for (const auto& it : items) f.stream() << footprintCsvRows(it, method, options);
     if (!f.commit()) {
         *error = f.error();
         return false;

@@ -18,10 +18,26 @@ struct BatchParams {
     int threads = 0;                   ///< worker threads; 0 = all cores
 };
 
+/// The analyst's review of one ROI (the workbench's review table; the CLI has none).
+struct RoiReview {
+    bool overridden = false;            ///< a manual verdict replaces the computed one
+    Verdict verdict = Verdict::Good;    ///< the manual verdict (when overridden)
+    std::string time, beam, camera, note;
+};
+
 struct BatchItem {
     std::string file;
     std::string readError;              ///< the frame could not be read (then rois is empty)
     std::vector<FrameRoiResult> rois;   ///< one per centre (or one)
+    std::vector<RoiReview> reviews;     ///< review tables only: one per ROI (one when unreadable)
+};
+
+/// What a footprint report holds beyond the CLI's columns.
+struct FootprintCsvOptions {
+    /// Adds time,beam,camera,auto_verdict,override,note; `verdict` is then the effective one (the
+    /// manual verdict where there is one) and auto_verdict the computed one.
+    bool review = false;
+    bool acceptedOnly = false;          ///< only rows whose (effective) verdict is good, with a fit
 };
 
 struct BatchResult {
@@ -37,22 +53,12 @@ using BatchItemFn = std::function<void(size_t index, const BatchItem& item)>;
 BatchResult runFootprintBatch(const std::vector<std::string>& files, const BatchParams& params,
                               Feedback* fb = nullptr, const BatchItemFn& onItem = {});
 
-/// The CSV header of footprint reports, with `extra` column names appended.
-std::string footprintCsvHeader(const std::vector<std::string>& extra = {});
-/// One CSV row per ROI of the item (coordinates in full-image px), each ending in '\n', with
-/// the `extra` values (CSV-escaped here) appended to every row.
-std::string footprintCsvRows(const BatchItem& item, Method method, const std::vector<std::string>& extra = {});
-
-/// Columns a caller appends to the report (the workbench adds time, beam, camera, override and
-/// note): the names, and per item one value per name.
-struct FootprintCsvExtra {
-    std::vector<std::string> names;
-    std::vector<std::vector<std::string>> values;  ///< values[item][column]
-};
-
-/// Writes a whole report atomically (the `footprint` command's and the workbench's export).
-/// False with *error on failure.
+/// The CSV header of footprint reports.
+std::string footprintCsvHeader(const FootprintCsvOptions& options = {});
+/// One CSV row per ROI of the item (coordinates in full-image px), each ending in '\n'.
+std::string footprintCsvRows(const BatchItem& item, Method method, const FootprintCsvOptions& options = {});
+/// Writes a whole report atomically. False with *error on failure.
 bool writeFootprintCsv(const std::string& path, const std::vector<BatchItem>& items, Method method,
-                       std::string* error, const FootprintCsvExtra* extra = nullptr);
+                       std::string* error, const FootprintCsvOptions& options = {});
 
 }  // namespace lwb::core::footprint

@@ -1,0 +1,667 @@
+// The footprint review loop under the offscreen platform (issue 10): a filtered A/R sweep that
+// visits every shot once, overlays after an unreadable frame, folders with non-image files,
+// "unreadable" as its own state, the pixel readout, the trend legend, session filter and current
+// shot, the unsaved-changes prompt, the review table export, progress and Cancel of long loads,
+// triage (N, the reviewed counter, the contact sheet), DS9-like ROI display, and a 200-shot
+// folder reviewed by keyboard only.
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QThread>
+#include <QThreadPool>
+#include <QUndoStack>
+#include <QtTest>
+#include <map>
+#include <qcustomplot.h>
+
+#include "core/common/csv.hpp"
+#include "core/common/display_stretch.hpp"
+#include "test_support.hpp"
+#include "ui/app_undo.hpp"
+#include "ui/contact_sheet.hpp"
+#include "ui/display_controls.hpp"
+#include "ui/footprint_workspace.hpp"
+#include "ui/frame_loader.hpp"
+#include "ui/image_view.hpp"
+#include "ui/main_window.hpp"
+#include "ui/shot_table_model.hpp"
+
+using namespace lwb::ui;
+
+namespace {
+QComboBox* filterCombo(QWidget* w) {
+    for (QComboBox* c : w->findChildren<QComboBox*>())
+        if (c->count() > 2 && c->itemText(2) == "Doubtful only") return c;
+    return nullptr;
+}
+
+int currentSource(FootprintWorkspace* fw) {
+    const QModelIndex i = fw->table()->currentIndex();
+    return i.isValid() ? fw->proxy()->mapToSource(i).row() : -1;
+}
+
+// Opens inputs and waits until they are loaded and judged.
+bool loadAndWait(FootprintController* c, const QStringList& inputs) {
+    QSignalSpy finished(c, &FootprintController::loadFinished);
+    c->open(inputs);
+    return finished.wait(30000) && c->waitIdle(30000);
+}
+
+// The demo, judged, in a shown and active 1400x900 window.
+bool showDemo(MainWindow& w) {
+    if (!w.openDemo() || !w.footprint()->controller()->waitIdle(60000)) return false;
+    w.resize(1400, 900);
+    w.show();
+    w.activateWindow();
+    return QTest::qWaitForWindowActive(&w);
+}
+
+// Selects a source row and waits for its detail (the ROI view then shows it).
+bool showShot(FootprintWorkspace* fw, int row) {
+    QSignalSpy detail(fw->controller(), &FootprintController::currentDetailReady);
+    fw->selectRow(row);
+    if (fw->controller()->current() != row) return false;
+    fw->controller()->setCurrent(row);
+    return !detail.isEmpty() || detail.wait(10000);  // an unreadable shot's detail comes at once
+}
+}  // namespace
+
+class TestFootprintReview : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        const auto r = lwbtest::runCli({"simulate", "footprint", "--count", "40", "--seed", "5", "--case", "mixed", "-q",
+                                        m_dir.path() + "/shots"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QDir().mkpath(m_dir.path() + "/junk");
+        QVERIFY(lwbtest::writeText(m_dir.path() + "/junk/broken.png", "not a png"));
+    }
+
+    // Item 1: A and R in "Doubtful only" visit the view's shots in order, each exactly once.
+    void filteredAcceptRejectVisitsEveryShotOnce() {
+        MainWindow w;
+        w.openDemo();
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(c->waitIdle(60000));
+        QComboBox* filter = filterCombo(&w);
+        QVERIFY(filter);
+        filter->setCurrentIndex(2);  // Doubtful only
+        const int n = fw->proxy()->rowCount();
+        QVERIFY2(n >= 10, qPrintable(QString("%1 doubtful demo shots").arg(n)));
+        QList<int> view;
+        for (int r = 0; r < n; ++r) view << fw->proxy()->mapToSource(fw->proxy()->index(r, 0)).row();
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        fw->table()->selectRow(0);
+        fw->table()->setFocus();
+        QList<int> visited;
+        for (int k = 0; k < n; ++k) {
+            const int row = currentSource(fw);
+            if (row < 0 || visited.contains(row)) break;
+            visited << row;
+            QTest::keyClick(fw->table(), k % 2 ? Qt::Key_R : Qt::Key_A);
+            QCOMPARE(c->shot(row)->overridden, true);
+        }
+        QCOMPARE(visited, view);
+        for (int k = 0; k < n; ++k)
+            QCOMPARE(c->shot(view[k])->effectiveVerdict(), k % 2 ? Verdict::Rejected : Verdict::Good);
+    }
+
+    // Item 2: the ROI view draws the fits again after an unreadable frame was shown.
+    void overlaysSurviveAnUnreadableFrame() {
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/shots/shot_000000.png", m_dir.path() + "/junk/broken.png"}));
+        QCOMPARE(c->count(), 2);
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QList<QCheckBox*> boxes;
+        for (QCheckBox* b : w.findChildren<QCheckBox*>())
+            if (b->text() == "Centres" || b->text() == "Domain" || b->text().startsWith("Gaussian") || b->text().startsWith("TEFM"))
+                boxes << b;
+        QCOMPARE(boxes.size(), 4);
+        auto grabWith = [&](bool on) {
+            for (QCheckBox* b : boxes) b->setChecked(on);
+            return fw->roiView()->grab().toImage();
+        };
+        QVERIFY(showShot(fw, 0));
+        const QImage before = grabWith(true);
+        QVERIFY(before != grabWith(false));  // the overlays draw something
+        QVERIFY(showShot(fw, 1));             // the unreadable frame
+        QVERIFY(showShot(fw, 0));
+        const QImage without = grabWith(false);
+        const QImage with = grabWith(true);
+        QVERIFY2(with != without, "no overlays on a good shot after an unreadable one");
+    }
+
+    // Item 4: the files of a simulated folder, truth.csv included: only images are read, and
+    // the status says how many files were skipped.
+    void nonImageFilesAreSkippedAndCounted() {
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QStringList files;
+        for (const QString& f : QDir(m_dir.path() + "/shots").entryList(QDir::Files, QDir::Name))
+            files << m_dir.path() + "/shots/" + f;
+        QCOMPARE(files.size(), 41);  // 40 frames and truth.csv
+        QSignalSpy status(fw, &FootprintWorkspace::status);
+        QSignalSpy finished(c, &FootprintController::loadFinished);
+        c->open(files);
+        QVERIFY(finished.wait(30000));
+        QCOMPARE(c->count(), 40);
+        QVERIFY(!status.isEmpty());
+        const QString last = status.last().at(0).toString();
+        QVERIFY2(last.contains("skipped 1"), qPrintable(last));
+    }
+
+    // Item 5: an unreadable frame is "unreadable", not "rejected", in the table, the counts and
+    // the filter.
+    void unreadableIsItsOwnState() {
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/junk/broken.png", m_dir.path() + "/shots/shot_000000.png"}));
+        QCOMPARE(c->counts().rejected, 0);
+        QCOMPARE(c->counts().good, 1);
+        const QModelIndex v = fw->table()->model()->index(0, ShotTableModel::VerdictCol);
+        QCOMPARE(fw->table()->model()->data(v).toString(), QString("unreadable"));
+        filterCombo(&w)->setCurrentIndex(3);  // Rejected only
+        QCOMPARE(fw->proxy()->rowCount(), 0);
+    }
+
+    // Item 7: the pixel readout does not keep the previous shot's value.
+    void pixelReadoutClearedOnShotChange() {
+        MainWindow w;
+        w.openDemo();
+        FootprintWorkspace* fw = w.footprint();
+        QVERIFY(fw->controller()->waitIdle(60000));
+        QLabel* readout = nullptr;
+        for (QLabel* l : w.findChildren<QLabel*>())
+            if (l->text().startsWith("Move the cursor")) readout = l;
+        QVERIFY(readout);
+        const QString hint = readout->text();
+        QVERIFY(showShot(fw, 0));
+        emit fw->roiView()->pixelHovered(130, 270, 4321);
+        QVERIFY(readout->text().contains("4321"));
+        QVERIFY(showShot(fw, 1));
+        QCOMPARE(readout->text(), hint);
+    }
+
+    // Item 7: a session brings back the filter and the current shot.
+    void sessionRestoresFilterAndCurrentShot() {
+        const QString session = m_dir.path() + "/filter.lwb.json";
+        int current = -1;
+        {
+            MainWindow w;
+            FootprintWorkspace* fw = w.footprint();
+            FootprintController* c = fw->controller();
+            QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
+            filterCombo(&w)->setCurrentIndex(2);
+            QVERIFY(fw->proxy()->rowCount() >= 3);
+            fw->table()->selectRow(2);
+            current = currentSource(fw);
+            QVERIFY(current > 2);
+            QString err;
+            QVERIFY2(w.saveSession(session, &err), qPrintable(err));
+        }
+        MainWindow w2;
+        QString err;
+        QVERIFY2(w2.openSession(session, true, &err), qPrintable(err));
+        QVERIFY(w2.footprint()->controller()->waitIdle(30000));
+        QCOMPARE(filterCombo(&w2)->currentIndex(), 2);
+        QCOMPARE(currentSource(w2.footprint()), current);
+        QCOMPARE(w2.footprint()->controller()->current(), current);
+    }
+
+    // Item 7: the trend legend sits outside the data area; without times there are no empty
+    // legend boxes or stale axes.
+    void trendLegendAndEmptyTrend() {
+        MainWindow w;
+        w.openDemo();
+        FootprintWorkspace* fw = w.footprint();
+        QVERIFY(fw->controller()->waitIdle(60000));
+        w.resize(1400, 900);
+        w.show();
+        fw->showTab("trend");
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const QList<QCustomPlot*> plots = fw->findChildren<QCustomPlot*>();
+        QCOMPARE(plots.size(), 3);
+        for (QCustomPlot* p : plots) {
+            p->replot();
+            QVERIFY(p->graphCount() > 0);
+            QVERIFY(p->legend->visible());
+            QVERIFY2(!p->legend->outerRect().intersects(p->axisRect()->rect()), "the legend covers the data");
+        }
+        QSignalSpy finished(fw->controller(), &FootprintController::loadFinished);
+        fw->controller()->open({m_dir.path() + "/shots"});  // no times
+        QVERIFY(finished.wait(30000));
+        QVERIFY(fw->controller()->waitIdle(30000));
+        for (QCustomPlot* p : plots) {
+            QCOMPARE(p->graphCount(), 0);
+            QVERIFY2(p->isHidden() || !p->legend->visible(), "an empty legend box is shown");
+            QVERIFY2(p->isHidden() || !p->xAxis->visible(), "stale axes are shown");
+        }
+    }
+    // Item 3: every action that replaces the list asks first when there are unsaved changes;
+    // Cancel keeps the manual verdicts, Discard goes on.
+    void replacingUnsavedWorkAsksFirst() {
+        const QString session = m_dir.path() + "/prompt.lwb.json";
+        {
+            MainWindow w0;
+            QVERIFY(w0.openDemo());
+            QString err;
+            QVERIFY2(w0.saveSession(session, &err), qPrintable(err));
+        }
+        MainWindow w;
+        QVERIFY(w.openDemo());
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(c->waitIdle(60000));
+        int asked = 0;
+        QMessageBox::StandardButton answer = QMessageBox::Cancel;
+        w.setUnsavedChangesPrompt([&] {
+            ++asked;
+            return answer;
+        });
+        QVERIFY(w.openDemo());  // nothing unsaved: no question
+        QCOMPARE(asked, 0);
+        fw->selectRow(5);
+        fw->rejectCurrent();
+        QVERIFY(w.isModified());
+        QVERIFY(!w.openDemo());
+        QCOMPARE(asked, 1);
+        QVERIFY(!w.openFootprintInputs({m_dir.path() + "/shots"}));
+        QCOMPARE(asked, 2);
+        QString err;
+        QVERIFY(!w.openSession(session, true, &err));
+        QCOMPARE(asked, 3);
+        QVERIFY(c->shot(5)->overridden);  // still there after three cancels
+        QCOMPARE(c->count(), 240);
+        answer = QMessageBox::Discard;
+        QVERIFY(w.openFootprintInputs({m_dir.path() + "/shots"}));
+        QCOMPARE(asked, 4);
+        QVERIFY(c->waitIdle(30000));
+        QCOMPARE(c->count(), 40);
+        // A folder picker exists in the File menu.
+        bool folderAction = false;
+        for (QAction* a : w.findChildren<QAction*>()) folderAction |= a->objectName() == "actionOpenFolder";
+        QVERIFY(folderAction);
+    }
+
+    // Item 6: the review table (every shot) and the accepted shots through the CLI's writer:
+    // the CLI's columns with the same values, then time..note; atomic.
+    void exportReviewTableMatchesTheCli() {
+        const auto cli = lwbtest::runCli({"footprint", "--keep-going", "-q", m_dir.path() + "/shots",
+                                          m_dir.path() + "/junk/broken.png", "-o", m_dir.path() + "/cli.csv"});
+        QVERIFY2(cli.exitCode == 0, qPrintable(cli.err));
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/shots", m_dir.path() + "/junk/broken.png"}));
+        QCOMPARE(c->count(), 41);
+        int firstDoubtful = -1;
+        for (int i = 0; i < c->count() && firstDoubtful < 0; ++i)
+            if (c->shot(i)->verdict == Verdict::Doubtful && c->shot(i)->loadError.isEmpty()) firstDoubtful = i;
+        QVERIFY(firstDoubtful >= 0);
+        fw->selectRow(firstDoubtful);
+        fw->noteField()->setText("looked fine, \"edge\" case");
+        fw->acceptCurrent();
+        fw->selectRow(0);
+        fw->rejectCurrent();
+        const QString table = m_dir.path() + "/review.csv", accepted = m_dir.path() + "/accepted.csv";
+        QString err;
+        QVERIFY2(fw->exportTable(table, false, &err), qPrintable(err));
+        QVERIFY2(fw->exportTable(accepted, true, &err), qPrintable(err));
+        const auto ref = lwb::core::readCsv((m_dir.path() + "/cli.csv").toStdString());
+        const auto got = lwb::core::readCsv(table.toStdString());
+        QVERIFY(ref.ok && got.ok);
+        QCOMPARE(int(got.table.rows.size()), 41);
+        QCOMPARE(int(ref.table.rows.size()), 41);
+        // The CLI's header first, then the review columns.
+        QCOMPARE(int(got.table.header.size()), int(ref.table.header.size()) + 6);
+        for (size_t k = 0; k < ref.table.header.size(); ++k) QCOMPARE(got.table.header[k], ref.table.header[k]);
+        const int colFile = got.table.column("file"), colOv = got.table.column("override"),
+                  colNote = got.table.column("note"), colVerdict = got.table.column("verdict"),
+                  colAuto = got.table.column("auto_verdict");
+        QVERIFY(colOv > 0 && colNote > 0 && colAuto > 0);
+        std::map<std::string, std::vector<std::string>> cliRows;
+        for (const auto& r : ref.table.rows) cliRows[r[0]] = r;
+        int manual = 0, compared = 0;
+        for (const auto& r : got.table.rows) {
+            QVERIFY(cliRows.count(r[colFile]));
+            const auto& cr = cliRows[r[colFile]];
+            if (r[colOv] == "manual") {
+                ++manual;
+                continue;
+            }
+            for (size_t k = 0; k < ref.table.header.size(); ++k)
+                QVERIFY2(r[k] == cr[k], qPrintable(QString("%1 column %2: %3 vs CLI %4")
+                                                       .arg(QString::fromStdString(r[colFile]))
+                                                       .arg(QString::fromStdString(ref.table.header[k]))
+                                                       .arg(QString::fromStdString(r[k]), QString::fromStdString(cr[k]))));
+            QCOMPARE(r[colAuto], r[colVerdict]);
+            ++compared;
+        }
+        QCOMPARE(manual, 2);
+        QCOMPARE(compared, 39);
+        const std::string noted = c->shot(firstDoubtful)->file.toStdString();
+        for (const auto& r : got.table.rows)
+            if (r[colFile] == noted) {
+                QCOMPARE(r[colVerdict], std::string("good"));
+                QCOMPARE(r[colAuto], std::string("doubtful"));
+                QCOMPARE(r[colNote], std::string("looked fine, \"edge\" case"));
+            }
+        const auto acc = lwb::core::readCsv(accepted.toStdString());
+        QVERIFY(acc.ok);
+        QCOMPARE(int(acc.table.rows.size()), c->counts().good);
+        for (const auto& r : acc.table.rows) QCOMPARE(r[acc.table.column("verdict")], std::string("good"));
+        // Atomic: a folder that does not exist is an error naming the file, and nothing is left.
+        QVERIFY(!fw->exportTable(m_dir.path() + "/nowhere/review.csv", false, &err));
+        QVERIFY2(err.contains("nowhere"), qPrintable(err));
+        QVERIFY(!QFile::exists(m_dir.path() + "/nowhere"));
+    }
+
+    // Item 7: a long load shows progress and Cancel; the loader leaves a core to the GUI.
+    void longLoadShowsProgressAndCancel() {
+        QCOMPARE(loaderThreadCount(), std::max(1, QThread::idealThreadCount() - 1));
+        QCOMPARE(loaderPool()->maxThreadCount(), loaderThreadCount());
+        const auto r = lwbtest::runCli({"simulate", "footprint", "--count", "150", "--seed", "9", "--full-frame", "-q",
+                                        m_dir.path() + "/frames"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* cancel = w.findChild<QPushButton*>("loadCancel");
+        auto* progress = w.findChild<QProgressBar*>("loadProgress");
+        QVERIFY(cancel && progress);
+        FootprintController* c = w.footprint()->controller();
+        QSignalSpy finished(c, &FootprintController::loadFinished);
+        QElapsedTimer t;
+        t.start();
+        c->open({m_dir.path() + "/frames"});
+        QVERIFY(cancel->isHidden());  // not at once: short loads do not flash it
+        QTRY_VERIFY_WITH_TIMEOUT(!cancel->isHidden() || !finished.isEmpty(), 20000);
+        if (finished.isEmpty()) {
+            QVERIFY(t.elapsed() >= kProgressDelayMs);
+            QVERIFY(!progress->isHidden());
+            QVERIFY(loaderPool()->activeThreadCount() <= loaderThreadCount());
+            QTest::mouseClick(cancel, Qt::LeftButton);
+            QVERIFY(finished.wait(30000));
+            QVERIFY(finished.first().at(2).toBool());
+            QVERIFY(cancel->isHidden());
+        } else {
+            QFAIL(qPrintable(QString("150 full frames loaded in %1 ms, before Cancel was shown: make the load longer")
+                                 .arg(t.elapsed())));
+        }
+    }
+
+    // Item 8: N goes to the next unreviewed shot; the counter; the contact sheet by keyboard and click.
+    void triageNextUnreviewedCounterAndContactSheet() {
+        MainWindow w;
+        QVERIFY(showDemo(w));
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        fw->filterBox()->setCurrentIndex(0);  // all shots
+        int doubtful = 0;
+        for (const Shot& s : c->shots()) doubtful += s.verdict == Verdict::Doubtful;
+        QVERIFY(doubtful > 5);
+        QCOMPARE(fw->reviewedLabel()->text(), QString("Reviewed 0 of %1 doubtful").arg(doubtful));
+        // Manual verdicts on rows 1 and 2; N from row 0 skips them.
+        fw->selectRow(1);
+        fw->acceptCurrent();
+        fw->rejectCurrent();
+        // The verdict column shows a manual verdict in full (it was cut to "good ...").
+        const QString manualText = fw->table()->model()->data(fw->table()->model()->index(2, ShotTableModel::VerdictCol)).toString();
+        QCOMPARE(manualText, QString("rejected (manual)"));
+        QVERIFY(fw->table()->columnWidth(ShotTableModel::VerdictCol) >
+                fw->table()->fontMetrics().horizontalAdvance(manualText) + 6);
+        fw->selectRow(0);
+        fw->table()->setFocus();
+        QTest::keyClick(fw->table(), Qt::Key_N);
+        QCOMPARE(currentSource(fw), 3);
+        int reviewed = 0;
+        for (int i : {1, 2}) reviewed += c->shot(i)->verdict == Verdict::Doubtful;
+        QCOMPARE(fw->reviewedLabel()->text(), QString("Reviewed %1 of %2 doubtful").arg(reviewed).arg(doubtful));
+        // Contact sheet of "Doubtful only": one thumbnail per shot of the view, with badges.
+        fw->filterBox()->setCurrentIndex(2);
+        fw->showTab("sheet");
+        ContactSheet* sheet = fw->contactSheet();
+        QVERIFY(sheet->isVisible());
+        QCOMPARE(sheet->model()->rowCount(), fw->proxy()->rowCount());
+        QVERIFY(sheet->model()->rowCount() >= 5);
+        for (int r = 0; r < sheet->model()->rowCount(); ++r) {
+            const int src = fw->proxy()->mapToSource(fw->proxy()->index(r, 0)).row();
+            QVERIFY(!sheet->thumbnail(src).isNull());
+            QCOMPARE(sheet->model()->data(sheet->model()->index(r, 0), ShotTableModel::StateRole).toInt(),
+                     int(ShotState::Doubtful));
+        }
+        QVERIFY(sheet->hasFocus());  // showing the sheet gives it the keyboard
+        sheet->setCurrentIndex(sheet->model()->index(0, 0));
+        QTest::keyClick(sheet, Qt::Key_Right);
+        QTest::keyClick(sheet, Qt::Key_Right);
+        const int third = fw->proxy()->mapToSource(fw->proxy()->index(2, 0)).row();
+        QCOMPARE(sheet->currentSourceRow(), third);
+        QTest::keyClick(sheet, Qt::Key_Return);
+        QCOMPARE(currentSource(fw), third);
+        QCOMPARE(c->current(), third);
+        QVERIFY(fw->roiView()->isVisible());  // the review tab again
+        // A click on the fifth thumbnail opens it.
+        fw->showTab("sheet");
+        const QModelIndex fifth = sheet->model()->index(4, 0);
+        QTest::mouseClick(sheet->viewport(), Qt::LeftButton, {}, sheet->visualRect(fifth).center());
+        QCOMPARE(currentSource(fw), fw->proxy()->mapToSource(fifth).row());
+        QVERIFY(fw->roiView()->isVisible());
+    }
+
+    // Item 9: zscale / manual limits and the stretches drive the ROI rendering, the histogram
+    // limits and the colour bar, all equal to the core's numbers.
+    void roiDisplayLimitsStretchHistogramColourBar() {
+        MainWindow w;
+        QVERIFY(showDemo(w));
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QSignalSpy detail(c, &FootprintController::currentDetailReady);
+        fw->selectRow(7);
+        c->setCurrent(7);
+        QVERIFY(detail.wait(10000));
+        const cv::Mat roi = c->shot(7)->roi;
+        DisplayControls* dc = fw->displayControls();
+        // By default min–max: the spot's peak is not clipped (zscale would saturate it).
+        double roiMin = 0, roiMax = 0;
+        cv::minMaxLoc(roi, &roiMin, &roiMax);
+        QCOMPARE(dc->limitsBox()->currentIndex(), int(LimitsMode::MinMax));
+        QCOMPARE(fw->histogram()->limitLo(), roiMin);
+        QCOMPARE(fw->histogram()->limitHi(), roiMax);
+        dc->limitsBox()->setCurrentIndex(int(LimitsMode::ZScale));
+        const cv::Mat cont = roi.clone();
+        const auto z = lwb::core::zscale(cont.ptr<float>(), cont.total());
+        QVERIFY(z.ok);
+        QCOMPARE(fw->histogram()->limitLo(), z.z1);
+        QCOMPARE(fw->histogram()->limitHi(), z.z2);
+        QCOMPARE(fw->colorBar()->lo(), z.z1);
+        QCOMPARE(fw->colorBar()->hi(), z.z2);
+        QVERIFY(fw->histogram()->rangeLo() <= z.z1 && fw->histogram()->rangeHi() >= z.z2);
+        size_t total = 0;
+        for (size_t b : fw->histogram()->bins()) total += b;
+        QCOMPARE(total, size_t(roi.total()));
+        const QImage linear = fw->roiView()->grab().toImage();
+        dc->stretchBox()->setCurrentIndex(int(lwb::core::StretchKind::Log));
+        QVERIFY(fw->roiView()->grab().toImage() != linear);
+        // Manual limits: typed values are used as they are.
+        dc->limitsBox()->setCurrentIndex(int(LimitsMode::Manual));
+        auto boxes = dc->findChildren<QDoubleSpinBox*>();
+        QCOMPARE(boxes.size(), 2);
+        boxes[0]->setValue(1000);
+        boxes[1]->setValue(9000);
+        QCOMPARE(fw->histogram()->limitLo(), 1000.0);
+        QCOMPARE(fw->histogram()->limitHi(), 9000.0);
+        QCOMPARE(fw->colorBar()->lo(), 1000.0);
+        const auto ticks = fw->colorBar()->ticks();
+        QVERIFY(ticks.size() >= 3);
+        QVERIFY(ticks.front() >= 1000 && ticks.back() <= 9000);
+        // The limits stay when the shot changes (manual), and follow it otherwise.
+        fw->selectRow(8);
+        c->setCurrent(8);
+        QVERIFY(detail.wait(10000));
+        QCOMPARE(fw->histogram()->limitLo(), 1000.0);
+    }
+
+    // Must show: a 200-shot folder with 30 doubtful shots reviewed by keyboard only (filter,
+    // then A / R / N and E for notes); every doubtful shot visited; the review table holds 200
+    // rows with the overrides and notes.
+    void keyboardReviewOfA200ShotFolder() {
+        // Build the folder: 300 mixed simulated shots judged by the workbench itself, then 170
+        // good and 30 doubtful of them copied in (and a truth.csv that must be skipped).
+        const QString staging = m_dir.path() + "/staging", folder = m_dir.path() + "/review200";
+        auto r = lwbtest::runCli({"simulate", "footprint", "--count", "300", "--seed", "21", "--case", "mixed", "-q", staging});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QStringList good, doubtfulFiles;
+        {
+            FootprintController judge;
+            QSignalSpy done(&judge, &FootprintController::loadFinished);
+            judge.open({staging});
+            QVERIFY(done.wait(60000));
+            QVERIFY(judge.waitIdle(60000));
+            for (const Shot& s : judge.shots()) {
+                if (s.verdict == Verdict::Good && good.size() < 170) good << s.file;
+                if (s.verdict == Verdict::Doubtful && doubtfulFiles.size() < 30) doubtfulFiles << s.file;
+            }
+        }
+        QCOMPARE(good.size(), 170);
+        QCOMPARE(doubtfulFiles.size(), 30);
+        QDir().mkpath(folder);
+        for (int i = 0, g = 0, d = 0; i < 200; ++i) {
+            const QString src = (i % 7 == 3 && d < 30) || g >= 170 ? doubtfulFiles[d++] : good[g++];
+            QVERIFY(QFile::copy(src, folder + QString("/shot_%1.png").arg(i, 3, 10, QChar('0'))));
+        }
+        QVERIFY(QFile::copy(staging + "/truth.csv", folder + "/truth.csv"));
+
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        w.resize(1400, 900);
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QSignalSpy status(fw, &FootprintWorkspace::status);
+        QSignalSpy finished(c, &FootprintController::loadFinished);
+        QVERIFY(w.openFootprintInputs({folder}));
+        QVERIFY(finished.wait(60000));
+        QVERIFY(c->waitIdle(60000));
+        QCOMPARE(c->count(), 200);
+        QCOMPARE(c->counts().doubtful, 30);
+        QVERIFY2(status.last().at(0).toString().contains("skipped 1"), qPrintable(status.last().at(0).toString()));
+        // Keyboard: Alt+O to the filter, D for "Doubtful only", Tab to the table.
+        QTest::keyClick(&w, Qt::Key_O, Qt::AltModifier);
+        QVERIFY(fw->filterBox()->hasFocus());
+        QTest::keyClick(fw->filterBox(), Qt::Key_D);
+        QCOMPARE(fw->filterBox()->currentText(), QString("Doubtful only"));
+        QTest::keyClick(fw->filterBox(), Qt::Key_Tab);
+        QVERIFY(fw->table()->hasFocus());
+        QCOMPARE(fw->proxy()->rowCount(), 30);
+        QList<int> view;
+        for (int k = 0; k < 30; ++k) view << fw->proxy()->mapToSource(fw->proxy()->index(k, 0)).row();
+        QCOMPARE(currentSource(fw), view[0]);
+        // First pass: A / R in turn, a note on every 4th, N (skip for now) on every 5th.
+        QList<int> firstPass, skipped;
+        QMap<int, QString> notes;
+        QMap<int, Verdict> verdicts;
+        for (int k = 0; k < 30; ++k) {
+            const int row = currentSource(fw);
+            QVERIFY(row >= 0);
+            firstPass << row;
+            if (k % 5 == 4) {
+                skipped << row;
+                QTest::keyClick(fw->table(), Qt::Key_N);
+                continue;
+            }
+            if (k % 4 == 0) {
+                QTest::keyClick(fw->table(), Qt::Key_E);
+                QVERIFY(fw->noteField()->hasFocus());
+                notes[row] = QString("checked %1, spot ok").arg(k);
+                QTest::keyClicks(fw->noteField(), notes[row]);
+                QTest::keyClick(fw->noteField(), Qt::Key_Return);
+                QVERIFY(fw->table()->hasFocus());
+            }
+            verdicts[row] = k % 2 ? Verdict::Rejected : Verdict::Good;
+            QTest::keyClick(fw->table(), k % 2 ? Qt::Key_R : Qt::Key_A);
+        }
+        QCOMPARE(firstPass, view);  // the view in order, none skipped
+        QCOMPARE(fw->proxy()->rowCount(), skipped.size());
+        QCOMPARE(fw->reviewedLabel()->text(), QString("Reviewed %1 of 30 doubtful").arg(30 - skipped.size()));
+        // Second pass: the skipped ones are what is left in the view; N / A until none is left.
+        QList<int> secondPass;
+        for (int guard = 0; fw->proxy()->rowCount() > 0 && guard < 40; ++guard) {
+            QTest::keyClick(fw->table(), Qt::Key_N);
+            const int row = currentSource(fw);
+            secondPass << row;
+            verdicts[row] = Verdict::Good;
+            QTest::keyClick(fw->table(), Qt::Key_A);
+        }
+        std::sort(secondPass.begin(), secondPass.end());
+        std::sort(skipped.begin(), skipped.end());
+        QCOMPARE(secondPass, skipped);
+        QCOMPARE(fw->reviewedLabel()->text(), QString("Reviewed 30 of 30 doubtful"));
+        QCOMPARE(c->counts().overridden, 30);
+        QCOMPARE(c->counts().doubtful, 0);
+        // Every verdict and note is one undo step: undo the last accept, redo it.
+        const int last = secondPass.isEmpty() ? -1 : currentSource(fw);
+        Q_UNUSED(last);
+        appUndoStack().undo();
+        QCOMPARE(c->counts().overridden, 29);
+        appUndoStack().redo();
+        QCOMPARE(c->counts().overridden, 30);
+        // The exported review table: 200 rows, the 30 manual verdicts and the notes.
+        const QString out = m_dir.path() + "/review200.csv";
+        QString err;
+        QVERIFY2(fw->exportTable(out, false, &err), qPrintable(err));
+        const auto csv = lwb::core::readCsv(out.toStdString());
+        QVERIFY(csv.ok);
+        QCOMPARE(int(csv.table.rows.size()), 200);
+        const int cf = csv.table.column("file"), cv = csv.table.column("verdict"), co = csv.table.column("override"),
+                  cn = csv.table.column("note"), ca = csv.table.column("auto_verdict");
+        int manual = 0, noted = 0;
+        for (const auto& row : csv.table.rows) {
+            int src = -1;
+            for (int i = 0; i < c->count(); ++i)
+                if (c->shot(i)->file.toStdString() == row[cf]) src = i;
+            QVERIFY(src >= 0);
+            if (row[co] == "manual") {
+                ++manual;
+                QVERIFY(verdicts.contains(src));
+                QCOMPARE(row[cv], std::string(lwb::core::footprint::verdictName(verdicts[src])));
+                QCOMPARE(row[ca], std::string("doubtful"));
+            } else {
+                QVERIFY(!verdicts.contains(src));
+                QCOMPARE(row[cv], std::string("good"));
+            }
+            if (!row[cn].empty()) {
+                ++noted;
+                QCOMPARE(QString::fromStdString(row[cn]), notes.value(src));
+            }
+        }
+        QCOMPARE(manual, 30);
+        QCOMPARE(noted, notes.size());
+        QVERIFY(noted >= 5);
+    }
+};
+
+QTEST_MAIN(TestFootprintReview)
+#include "test_footprint_review.moc"
