@@ -28,6 +28,7 @@
 #include "ui/footprint_params_panel.hpp"
 #include "ui/image_view.hpp"
 #include "ui/shot_table_model.hpp"
+#include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
 
@@ -107,6 +108,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     m_filter = new QComboBox(left);
     m_filter->addItems({tr("All shots"), tr("Good only"), tr("Doubtful only"), tr("Rejected only"), tr("Manual verdicts")});
     m_counts = new QLabel(left);
+    m_counts->setWordWrap(true);  // a long count line wraps instead of widening the window (issue 10 layout)
     filterRow->addWidget(new QLabel(tr("Show:"), left));
     filterRow->addWidget(m_filter);
     filterRow->addWidget(m_counts, 1);
@@ -162,7 +164,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     viewRow->addSpacing(8);
     for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres}) viewRow->addWidget(c);
     viewRow->addStretch(1);
-    revLay->addLayout(viewRow);
+    revLay->addLayout(wrapRow(viewRow));  // wraps in a narrow window (issue 10 layout)
     auto* views = new QSplitter(Qt::Horizontal, review);
     m_roiView = new ImageView(views);
     m_frameView = new ImageView(views);
@@ -198,7 +200,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     auto* scroll = new QScrollArea(this);
     scroll->setWidget(m_panel);
     scroll->setWidgetResizable(true);
-    scroll->setMinimumWidth(330);
+    fitPanelWidth(scroll);  // as wide as the panel needs: nothing cut off, no sideways scrolling
 
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(left);

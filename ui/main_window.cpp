@@ -42,6 +42,9 @@
 #include "ui/plot_kit.hpp"
 #include "ui/radiometry_workspace.hpp"
 
+// The resources live in the static ui library: registered here, or the linker may drop them.
+static void initUiResources() { Q_INIT_RESOURCE(laserwb); }
+
 namespace lwb::ui {
 
 namespace {
@@ -93,6 +96,7 @@ QPalette darkPalette() {
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    initUiResources();
     setWindowIcon(QIcon(":/icons/laserwb.svg"));
     m_tabs = new QTabWidget(this);
     m_tabs->setDocumentMode(true);

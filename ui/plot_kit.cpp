@@ -314,6 +314,7 @@ void PlotKit::beginUserChange() {
         m_haveHome = true;
         m_history.clear();
     }
+    if (!m_history.empty() && sameView(m_history.back(), now)) return;  // already the last step
     m_history.push_back(now);
     if (m_history.size() > 100) m_history.erase(m_history.begin());
 }

@@ -1,5 +1,6 @@
 #include "ui/workspace_layout.hpp"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -13,48 +14,46 @@ namespace lwb::ui {
 
 namespace {
 
-// A scroll area as wide as its panel needs (plus the vertical scroll bar), so that nothing in
-// the panel is cut off and it never scrolls sideways.
-class PanelScroll : public QScrollArea {
+// Keeps a scroll area as wide as its panel needs (plus the vertical scroll bar), following the
+// panel's layout as it changes, so that nothing in the panel is cut off and it never scrolls
+// sideways.
+class PanelWidth : public QObject {
 public:
-    using QScrollArea::QScrollArea;
-    QSize minimumSizeHint() const override {
-        const QWidget* w = widget();
-        const int need = w ? w->minimumSizeHint().width() : 0;
-        const int bar = style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, this);
-        return QSize(need + bar + 2 * frameWidth() + 2, 80);
+    explicit PanelWidth(QScrollArea* scroll) : QObject(scroll), m_scroll(scroll) {
+        scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        if (scroll->widget()) scroll->widget()->installEventFilter(this);
+        update();
     }
-    QSize sizeHint() const override { return minimumSizeHint().expandedTo(QSize(m_prefer, 200)); }
-    int m_prefer = 0;
+    void update() {
+        const QWidget* w = m_scroll->widget();
+        if (!w) return;
+        const int bar = m_scroll->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, m_scroll);
+        m_scroll->setMinimumWidth(w->minimumSizeHint().width() + bar + 2 * m_scroll->frameWidth() + 2);
+    }
+
+protected:
+    bool eventFilter(QObject*, QEvent* e) override {
+        if (e->type() == QEvent::LayoutRequest || e->type() == QEvent::Show) update();
+        return false;
+    }
+
+private:
+    QScrollArea* m_scroll;
 };
 
 }  // namespace
 
 void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* body, QWidget* panel,
                      int panelMinWidth, int centreWidth) {
-    auto* scroll = new PanelScroll(workspace);
+    auto* scroll = new QScrollArea(workspace);
     scroll->setObjectName("parameterPanel");
     scroll->setWidget(panel);
     scroll->setWidgetResizable(true);
-    scroll->m_prefer = panelMinWidth;
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
-    // The row of inputs: its widgets in a flow that wraps (a plain row would set the window's
-    // minimum width to the sum of the buttons).
-    auto* flow = new FlowLayout(nullptr, 6);
-    std::function<void(QLayout*)> move = [&](QLayout* from) {
-        while (QLayoutItem* it = from->takeAt(0)) {
-            if (QWidget* w = it->widget()) flow->addWidget(w);
-            else if (QLayout* inner = it->layout()) move(inner);
-            delete it;  // a nested layout once emptied; spacers and stretches mean nothing in a flow
-        }
-    };
-    move(top);
-    delete top;
+    fitPanelWidth(scroll);
     auto* centre = new QWidget(workspace);
     auto* cl = new QVBoxLayout(centre);
     cl->setContentsMargins(0, 0, 0, 0);
-    cl->addLayout(flow);
+    cl->addLayout(wrapRow(top));
     cl->addWidget(info);
     cl->addWidget(body, 1);
     auto* split = new QSplitter(Qt::Horizontal, workspace);
@@ -68,6 +67,22 @@ void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* b
     auto* lay = new QHBoxLayout(workspace);
     lay->setContentsMargins(4, 4, 4, 4);
     lay->addWidget(split);
+}
+
+void fitPanelWidth(QScrollArea* scroll) { new PanelWidth(scroll); }
+
+QLayout* wrapRow(QLayout* row) {
+    auto* flow = new FlowLayout(nullptr, row->spacing() >= 0 ? row->spacing() : 6);
+    std::function<void(QLayout*)> move = [&](QLayout* from) {
+        while (QLayoutItem* it = from->takeAt(0)) {
+            if (QWidget* w = it->widget()) flow->addWidget(w);
+            else if (QLayout* inner = it->layout()) move(inner);
+            delete it;  // a nested layout once emptied; spacers and stretches mean nothing in a flow
+        }
+    };
+    move(row);
+    delete row;
+    return flow;
 }
 
 // ---------------------------------------------------------------------------------------------

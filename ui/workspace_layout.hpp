@@ -11,12 +11,20 @@
 #include <QLayout>
 #include <QList>
 
+class QScrollArea;
 class QWidget;
 
 namespace lwb::ui {
 
 void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* body, QWidget* panel,
                      int panelMinWidth, int centreWidth);
+
+/// A row of controls (a QHBoxLayout not yet installed) as a FlowLayout that wraps: the same
+/// widgets in the same order; spacers and stretches are dropped. `row` is deleted.
+QLayout* wrapRow(QLayout* row);
+/// Keeps a parameter panel's scroll area as wide as the panel's widest row plus the scroll bar
+/// (nothing cut off, no sideways scrolling), following the panel as it changes.
+void fitPanelWidth(QScrollArea* scroll);
 
 /// Lays its widgets out left to right and wraps onto the next line when the width runs out.
 class FlowLayout : public QLayout {
