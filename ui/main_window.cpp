@@ -31,6 +31,7 @@
 #include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <qcustomplot.h>
 
 #include "ui/app_undo.hpp"
 #include "ui/demo.hpp"
@@ -109,6 +110,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_radiometry = new RadiometryWorkspace(m_tabs);
     m_tabs->addTab(m_radiometry, tr("Radiometry"));
     setCentralWidget(m_tabs);
+    // A plot's minimum width is otherwise its legend's natural width: the SLR workspace's two
+    // plots side by side, each with a three-column legend, asked for a 1271 px window. Plots
+    // without a minimum of their own get a small one (a long legend is then clipped, not the window).
+    for (QCustomPlot* p : m_tabs->findChildren<QCustomPlot*>())
+        if (p->minimumWidth() == 0) p->setMinimumWidth(160);
     buildMenus();
     connect(m_footprint, &FootprintWorkspace::modified, this, [this] { setModified(true); });
     connect(m_footprint, &FootprintWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_footprint, s, 5000); });

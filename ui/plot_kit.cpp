@@ -494,7 +494,7 @@ bool PlotKit::eventFilter(QObject* o, QEvent* e) {
         else if (we->modifiers() & Qt::ControlModifier) which = Qt::Vertical;
         // One history step per wheel gesture (a pause of 0.6 s starts a new one).
         const qint64 now = QDateTime::currentMSecsSinceEpoch();
-        if (now - m_lastWheelMs > 600) beginUserChange();
+        if (now - m_lastWheelMs > 600 || !sameView(snapshot(), m_lastUser)) beginUserChange();
         m_lastWheelMs = now;
         zoomAxes(which, std::pow(0.85, delta / 120.0), pos);
         endUserChange();

@@ -309,7 +309,14 @@ private slots:
             w.showWorkspace(ws);
             QTest::qWait(50);
             QApplication::processEvents();
-            QCOMPARE(w.size(), QSize(1024, 700));
+            const QSize cur = w.tabs()->currentWidget()->minimumSizeHint();
+            QVERIFY2(w.size() == QSize(1024, 700),
+                     qPrintable(QString("%1: the window grew to %2×%3 (the workspace needs %4×%5)")
+                                    .arg(ws)
+                                    .arg(w.width())
+                                    .arg(w.height())
+                                    .arg(cur.width())
+                                    .arg(cur.height())));
             const QString out = widgetOutside(&w);
             QVERIFY2(out.isEmpty(), qPrintable(QString(ws) + ": " + out));
             // The parameter panel is as wide as its content: nothing cut off, no sideways scroll.

@@ -89,8 +89,9 @@ private slots:
         const double px = 100.0 / p->axisRect()->width(), py = 10.0 / p->axisRect()->height();
         QVERIFY2(std::fabs(p->xAxis->range().lower - 20) <= 1.5 * px, qPrintable(QString::number(p->xAxis->range().lower)));
         QVERIFY2(std::fabs(p->xAxis->range().upper - 50) <= 1.5 * px, qPrintable(QString::number(p->xAxis->range().upper)));
-        QVERIFY(std::fabs(p->yAxis->range().lower - 3) <= 1.5 * py);
-        QVERIFY(std::fabs(p->yAxis->range().upper - 8) <= 1.5 * py);
+        const QString yr = QString("y %1..%2").arg(p->yAxis->range().lower).arg(p->yAxis->range().upper);
+        QVERIFY2(std::fabs(p->yAxis->range().lower - 3) <= 1.5 * py, qPrintable(yr));
+        QVERIFY2(std::fabs(p->yAxis->range().upper - 8) <= 1.5 * py, qPrintable(yr));
         // Another plot (not linked) did not move.
         QCOMPARE(other->xAxis->range().lower, 0.0);
         QCOMPARE(other->xAxis->range().upper, 100.0);
