@@ -38,6 +38,7 @@ QCustomPlot* makePlot(QWidget* parent) {
     p->xAxis->setRange(0, 100);
     p->yAxis->setRange(0, 10);
     p->show();
+    QApplication::processEvents();  // the resize reaches the plot: its viewport is final
     p->replot();
     return p;
 }
@@ -69,7 +70,12 @@ private slots:
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(m_dir.isValid());
     }
-    void init() { m_host = new QWidget; }
+    void init() {
+        m_host = new QWidget;
+        m_host->resize(700, 500);
+        m_host->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_host));
+    }
     void cleanup() {
         delete m_host;
         m_host = nullptr;
