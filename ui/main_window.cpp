@@ -556,7 +556,7 @@ void MainWindow::openForCurrent() {
     const QList<QAction*> acts = openActions(ws);
     runOrOffer(ws, acts, tr("Nothing to open here"), statusBar());
     for (QAction* a : acts)
-        if (a->parent() == ws && a->text() != QString()) a->deleteLater();
+        if (a->parent() == ws) a->deleteLater();  // made for this call (menu entries stay)
 }
 
 void MainWindow::exportForCurrent() {
@@ -564,7 +564,7 @@ void MainWindow::exportForCurrent() {
     const QList<QAction*> acts = exportActions(ws);
     runOrOffer(ws, acts, tr("Nothing to export here"), statusBar());
     for (QAction* a : acts)
-        if (a->parent() == ws) a->deleteLater();
+        if (a->parent() == ws) a->deleteLater();  // made for this call (menu entries stay)
 }
 
 QStringList MainWindow::recentInputs() const { return QSettings().value("recentInputs").toStringList(); }
