@@ -270,9 +270,8 @@ PlotKit::PlotKit(QCustomPlot* plot, const PlotKitOptions& options) : QObject(plo
     plot->installEventFilter(this);
     plot->setFocusPolicy(Qt::ClickFocus);
     plot->setContextMenuPolicy(Qt::PreventContextMenu);  // the kit's own menu, on a right click
-    plot->setToolTip(tr("Wheel: zoom (Shift: x only, Ctrl: y only; over an axis: that axis) · drag: pan · "
-                        "right-drag or Shift+drag: box zoom · double-click or Home: reset · Backspace: back · "
-                        "right-click: export, copy · click a legend entry: hide / show its series"));
+    // No tooltip over the whole plot (it would cover the data); the gestures are in the
+    // right-click menu, Help ▸ Keyboard shortcuts and the user guide.
     connect(plot, &QCustomPlot::legendClick, this, [this](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent* e) {
         if (m_options.legendToggle && item && e->button() == Qt::LeftButton) legendClicked(item);
     });
