@@ -29,6 +29,7 @@
 
 #include "ui/color_maps.hpp"
 #include "ui/param_slider.hpp"
+#include "ui/plot_kit.hpp"
 #include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
@@ -39,14 +40,6 @@ namespace {
 
 const QColor kBlue(31, 119, 180), kOrange(255, 127, 14), kGreen(44, 160, 44), kRed(214, 39, 40), kGrey(150, 150, 150),
     kPurple(148, 103, 189);
-
-QCPColorGradient gradientFor(ColorMap map) {
-    QCPColorGradient g;
-    g.clearColorStops();
-    for (int i = 0; i <= 16; ++i) g.setColorStopAt(i / 16.0, QColor(mapColor(map, i / 16.0)));
-    g.setNanHandling(QCPColorGradient::nhTransparent);
-    return g;
-}
 
 // Shows a box of data with one unit of x as long on screen as one unit of y: the box is
 // centred and the shorter side widened. The box is kept (as a property) and refitted whenever
@@ -66,60 +59,33 @@ void fitEqual(QCustomPlot* plot, double x0, double x1, double y0, double y1) {
     plot->yAxis->setRange(cy - 0.5 * s * ar.height(), cy + 0.5 * s * ar.height());
 }
 
+// Back to the kept box (the plot kit's home view of an equal-aspect plot).
+void refitEqual(QCustomPlot* p) {
+    const QRectF b = p->property("box").toRectF();
+    if (b.isNull()) return;
+    fitEqual(p, b.left(), b.right(), b.top(), b.bottom());
+    p->replot(QCustomPlot::rpQueuedReplot);
+}
+
 class EqualAspect : public QObject {
 public:
-    explicit EqualAspect(QCustomPlot* plot) : QObject(plot), m_plot(plot) { plot->installEventFilter(this); }
+    explicit EqualAspect(QCustomPlot* plot) : QObject(plot), m_plot(plot) {
+        plot->installEventFilter(this);
+        PlotKitOptions o;
+        o.home = [plot] { refitEqual(plot); };
+        installPlotKit(plot, o);
+    }
 
 protected:
     bool eventFilter(QObject* o, QEvent* e) override {
-        if (o == m_plot && (e->type() == QEvent::Resize || e->type() == QEvent::MouseButtonDblClick))
-            QMetaObject::invokeMethod(
-                m_plot,
-                [p = m_plot] {
-                    const QRectF b = p->property("box").toRectF();
-                    if (b.isNull()) return;
-                    fitEqual(p, b.left(), b.right(), b.top(), b.bottom());
-                    p->replot(QCustomPlot::rpQueuedReplot);
-                },
-                Qt::QueuedConnection);
+        if (o == m_plot && e->type() == QEvent::Resize)
+            QMetaObject::invokeMethod(m_plot, [p = m_plot] { refitEqual(p); }, Qt::QueuedConnection);
         return false;
     }
 
 private:
     QCustomPlot* m_plot;
 };
-
-QCustomPlot* newPlot(QWidget* parent, const QString& title, const QString& x, const QString& y) {
-    auto* p = new QCustomPlot(parent);
-    p->setMinimumSize(220, 180);
-    p->xAxis->setLabel(x);
-    p->yAxis->setLabel(y);
-    p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-    if (!title.isEmpty()) {
-        p->plotLayout()->insertRow(0);
-        QFont f = p->font();
-        f.setBold(true);
-        f.setPointSizeF(f.pointSizeF() * 0.95);
-        p->plotLayout()->addElement(0, 0, new QCPTextElement(p, title, f));
-    }
-    p->legend->setFont(QFont(p->font().family(), 8));
-    p->legend->setBrush(QColor(255, 255, 255, 215));
-    p->legend->setBorderPen(QPen(QColor(180, 180, 180)));
-    return p;
-}
-
-// Moves the legend into a row under the axis rect (so it never hides data).
-void legendBelow(QCustomPlot* p, int columns) {
-    p->legend->setVisible(true);
-    p->legend->setWrap(columns);
-    p->legend->setFillOrder(QCPLegend::foColumnsFirst, true);
-    p->axisRect()->insetLayout()->take(p->legend);
-    const int row = p->plotLayout()->rowCount();
-    p->plotLayout()->addElement(row, 0, p->legend);
-    p->plotLayout()->setRowStretchFactor(row, 0.001);
-    p->legend->setBorderPen(Qt::NoPen);
-    p->legend->setBrush(Qt::NoBrush);
-}
 
 QCPGraph* scatter(QCustomPlot* p, const QString& name, QCPScatterStyle style, QCPAxis* y = nullptr) {
     QCPGraph* g = p->addGraph(p->xAxis, y ? y : p->yAxis);
@@ -263,7 +229,7 @@ CalibWorkspace::CalibWorkspace(QWidget* parent) : QWidget(parent) {
     m_inputs = new QLabel(this);
     m_inputs->setWordWrap(true);
     m_inputs->setTextFormat(Qt::RichText);
-    m_inputs->setStyleSheet("color: #444;");
+    m_inputs->setForegroundRole(QPalette::PlaceholderText);
 
     // Tab 1: detector array, pointing, statistics.
     m_tabs = new QTabWidget(this);
@@ -272,20 +238,10 @@ CalibWorkspace::CalibWorkspace(QWidget* parent) : QWidget(parent) {
     pageLay->setContentsMargins(2, 2, 2, 2);
 
     m_energyPlot = newPlot(page, tr("Detector energies and the fitted footprint"), tr("East (m)"), tr("North (m)"));
-    m_energyMap = new QCPColorMap(m_energyPlot->xAxis, m_energyPlot->yAxis);
-    m_energyMap->setInterpolate(false);
-    m_energyMap->setTightBoundary(false);
+    const ImageMap energy = addImageMap(m_energyPlot, tr("Energy (file unit)"), false);
+    m_energyMap = energy.map;
+    m_energyScale = energy.scale;
     m_energyMap->setName(tr("energy"));
-    m_energyMap->removeFromLegend();
-    m_energyScale = new QCPColorScale(m_energyPlot);
-    m_energyScale->setType(QCPAxis::atRight);
-    m_energyScale->setLabel(tr("Energy (file unit)"));
-    m_energyScale->setBarWidth(12);
-    m_energyPlot->plotLayout()->addElement(1, 1, m_energyScale);
-    m_energyMap->setColorScale(m_energyScale);
-    auto* group = new QCPMarginGroup(m_energyPlot);
-    m_energyPlot->axisRect()->setMarginGroup(QCP::msBottom | QCP::msTop, group);
-    m_energyScale->setMarginGroup(QCP::msBottom | QCP::msTop, group);
     new EqualAspect(m_energyPlot);
 
     m_centrePlot = newPlot(page, tr("Footprint centre: uncertainty"), tr("ΔEast from the fitted centre (cm)"),

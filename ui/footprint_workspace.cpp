@@ -37,6 +37,7 @@
 #include "ui/review_commands.hpp"
 #include "ui/session_json.hpp"
 #include "ui/shot_table_model.hpp"
+#include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
 
@@ -194,7 +195,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     viewRow->addWidget(m_colorMap);
     viewRow->addWidget(m_display);
     viewRow->addStretch(1);
-    revLay->addLayout(viewRow);
+    revLay->addLayout(wrapRow(viewRow));  // wraps in a narrow window (issue 10 layout)
     auto* overlayRow = new QHBoxLayout;
     overlayRow->addWidget(new QLabel(tr("Draw:"), review));
     for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres}) overlayRow->addWidget(c);
@@ -247,7 +248,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     auto* scroll = new QScrollArea(this);
     scroll->setWidget(m_panel);
     scroll->setWidgetResizable(true);
-    scroll->setMinimumWidth(330);
+    fitPanelWidth(scroll);  // as wide as the panel needs: nothing cut off, no sideways scrolling
 
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(left);

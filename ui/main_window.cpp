@@ -1,39 +1,104 @@
 #include <cmath>
 #include "ui/main_window.hpp"
 
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHeaderView>
 #include <QJsonDocument>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyleFactory>
 #include <QTabWidget>
+#include <QTableWidget>
+#include <QTextBrowser>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
 
 #include "core/common/json.hpp"
+#include "ui/app_undo.hpp"
 #include "ui/demo.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/footprint_workspace.hpp"
 #include "ui/slr_controller.hpp"
 #include "ui/slr_workspace.hpp"
 #include "ui/calib_workspace.hpp"
+#include "ui/plot_kit.hpp"
 #include "ui/radiometry_workspace.hpp"
+
+// The resources live in the static ui library: registered here, or the linker may drop them.
+static void initUiResources() { Q_INIT_RESOURCE(laserwb); }
 
 namespace lwb::ui {
 
 namespace {
 constexpr int kSessionVersion = 1;
 constexpr int kMaxRecent = 8;
+
+const QStringList kCrdSuffixes = {"frd", "fr2", "npt", "np2", "crd", "v2c", "qlk"};
+const QStringList kImageSuffixes = {"png", "tif", "tiff", "pgm", "raw", "bin"};
+
+// The first line that is not empty or a comment, lower-cased (for telling CSV kinds apart).
+QString firstLine(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return QString();
+    for (int i = 0; i < 50 && !f.atEnd(); ++i) {
+        const QString line = QString::fromUtf8(f.readLine(4096)).trimmed().toLower();
+        if (!line.isEmpty() && !line.startsWith('#')) return line;
+    }
+    return QString();
+}
+
+QPalette darkPalette() {
+    QPalette p;
+    const QColor window(45, 47, 50), base(30, 32, 35), text(225, 225, 225), disabled(125, 125, 125), accent(42, 130, 218);
+    p.setColor(QPalette::Window, window);
+    p.setColor(QPalette::WindowText, text);
+    p.setColor(QPalette::Base, base);
+    p.setColor(QPalette::AlternateBase, QColor(40, 42, 46));
+    p.setColor(QPalette::ToolTipBase, QColor(55, 57, 60));
+    p.setColor(QPalette::ToolTipText, text);
+    p.setColor(QPalette::PlaceholderText, QColor(160, 160, 160));
+    p.setColor(QPalette::Text, text);
+    p.setColor(QPalette::Button, window);
+    p.setColor(QPalette::ButtonText, text);
+    p.setColor(QPalette::BrightText, Qt::red);
+    p.setColor(QPalette::Link, QColor(90, 170, 255));
+    p.setColor(QPalette::Highlight, accent);
+    p.setColor(QPalette::HighlightedText, Qt::white);
+    p.setColor(QPalette::Light, QColor(70, 72, 76));
+    p.setColor(QPalette::Midlight, QColor(60, 62, 66));
+    p.setColor(QPalette::Mid, QColor(40, 42, 45));
+    p.setColor(QPalette::Dark, QColor(25, 26, 28));
+    p.setColor(QPalette::Shadow, Qt::black);
+    for (auto role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText, QPalette::HighlightedText})
+        p.setColor(QPalette::Disabled, role, disabled);
+    p.setColor(QPalette::Disabled, QPalette::Base, window);
+    p.setColor(QPalette::Disabled, QPalette::Highlight, QColor(80, 80, 80));
+    return p;
+}
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    initUiResources();
     setWindowIcon(QIcon(":/icons/laserwb.svg"));
     m_tabs = new QTabWidget(this);
     m_tabs->setDocumentMode(true);
@@ -46,15 +111,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_radiometry = new RadiometryWorkspace(m_tabs);
     m_tabs->addTab(m_radiometry, tr("Radiometry"));
     setCentralWidget(m_tabs);
+    // A plot's minimum width is otherwise its legend's natural width: the SLR workspace's two
+    // plots side by side, each with a three-column legend, asked for a 1271 px window. Plots
+    // without a minimum of their own get a small one (a long legend is then clipped, not the window).
+    for (QCustomPlot* p : m_tabs->findChildren<QCustomPlot*>())
+        if (p->minimumWidth() == 0) p->setMinimumWidth(160);
     buildMenus();
     connect(m_footprint, &FootprintWorkspace::modified, this, [this] { setModified(true); });
-    connect(m_footprint, &FootprintWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 5000); });
+    connect(m_footprint, &FootprintWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_footprint, s, 5000); });
     connect(m_slr, &SlrWorkspace::modified, this, [this] { setModified(true); });
-    connect(m_slr, &SlrWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 8000); });
+    connect(m_slr, &SlrWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_slr, s, 8000); });
     connect(m_calib, &CalibWorkspace::modified, this, [this] { setModified(true); });
-    connect(m_calib, &CalibWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 8000); });
+    connect(m_calib, &CalibWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_calib, s, 8000); });
     connect(m_radiometry, &RadiometryWorkspace::modified, this, [this] { setModified(true); });
-    connect(m_radiometry, &RadiometryWorkspace::status, this, [this](const QString& s) { statusBar()->showMessage(s, 8000); });
+    connect(m_radiometry, &RadiometryWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_radiometry, s, 8000); });
     connect(m_footprint->controller(), &FootprintController::error, this,
             [this](const QString& msg) { showError(tr("Cannot open the footprint inputs"), msg); });
     // Progress of long loads, with a cancel button, in the status bar.
@@ -80,29 +150,96 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         m_cancel->hide();
     });
     connect(m_cancel, &QPushButton::clicked, fc, &FootprintController::cancelLoading);
+    // New data: the undo history refers to the data it was made on.
+    connect(fc, &FootprintController::shotsReset, this, [] { appUndoStack().clear(); });
+    connect(m_slr->controller(), &SlrController::passChanged, this, [] { appUndoStack().clear(); });
+    connect(m_calib->controller(), &CalibController::inputsChanged, this, [] { appUndoStack().clear(); });
+    connect(m_radiometry->controller(), &RadiometryController::imageChanged, this, [] { appUndoStack().clear(); });
+    setAcceptDrops(true);
     QSettings st;
     if (!restoreGeometry(st.value("window/geometry").toByteArray())) resize(1480, 900);
+    setDarkTheme(st.value("view/theme").toString() == "dark");
     statusBar()->showMessage(tr("Ready"));
     setModified(false);
 }
 
+void MainWindow::workspaceStatus(QWidget* workspace, const QString& message, int timeoutMs) {
+    // Only the workspace in front speaks in the status bar: a workspace working in the
+    // background (the radiometry demo mosaic at start-up) must not cover the current one's line.
+    if (m_tabs->currentWidget() == workspace) statusBar()->showMessage(message, timeoutMs);
+}
+
 void MainWindow::buildMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&Open frames or shot list…"), QKeySequence::Open, this, &MainWindow::openInputs);
-    file->addAction(tr("Open &folder of frames…"), this, &MainWindow::openFolder)->setObjectName("actionOpenFolder");
+    file->addAction(tr("&Open… (current workspace)"), QKeySequence::Open, this, &MainWindow::openForCurrent)
+        ->setToolTip(tr("Opens the inputs of the workspace in front"));
+    file->addAction(tr("Open footprint &frames or shot list…"), this, &MainWindow::openInputs);
+    file->addAction(tr("Open &folder of footprint frames…"), this, &MainWindow::openFolder)->setObjectName("actionOpenFolder");
     file->addAction(tr("Open &demo"), this, &MainWindow::openDemo);
+    m_recentInputsMenu = file->addMenu(tr("Recent &inputs"));
     file->addSeparator();
     file->addAction(tr("Open &session…"), QKeySequence(tr("Ctrl+Shift+O")), this, &MainWindow::openSessionDialog);
     m_recentMenu = file->addMenu(tr("&Recent sessions"));
     file->addAction(tr("&Save session"), QKeySequence::Save, this, &MainWindow::save);
     file->addAction(tr("Save session &as…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
     file->addSeparator();
-    file->addAction(tr("&Export accepted shots…"), QKeySequence(tr("Ctrl+E")), this, &MainWindow::exportAccepted);
-    file->addAction(tr("Export review &table…"), this, [this] { m_footprint->exportDialog(false); })
+    file->addAction(tr("&Export… (current workspace)"), QKeySequence(tr("Ctrl+E")), this, &MainWindow::exportForCurrent);
+    file->addAction(tr("Export accepted footprint shots…"), this, &MainWindow::exportAccepted);
+    file->addAction(tr("Export footprint review &table…"), this, [this] { m_footprint->exportDialog(false); })
         ->setObjectName("actionExportReview");
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = appUndoStack().createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = appUndoStack().createRedoAction(this, tr("&Redo"));
+    redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    m_workspaceGroup = new QActionGroup(this);
+    for (int i = 0; i < m_tabs->count(); ++i) {
+        QAction* a = view->addAction(m_tabs->tabText(i), this, [this, i] { m_tabs->setCurrentIndex(i); });
+        a->setShortcut(QKeySequence(tr("Ctrl+%1").arg(i + 1)));
+        a->setCheckable(true);
+        a->setChecked(i == m_tabs->currentIndex());
+        m_workspaceGroup->addAction(a);
+    }
+    connect(m_tabs, &QTabWidget::currentChanged, this, [this](int i) {
+        const auto acts = m_workspaceGroup->actions();
+        if (i >= 0 && i < acts.size()) acts[i]->setChecked(true);
+        statusBar()->clearMessage();
+    });
+    view->addSeparator();
+    m_panelsAction = view->addAction(tr("&Parameter panels"), this, [this](bool on) { setPanelsVisible(on); });
+    m_panelsAction->setCheckable(true);
+    m_panelsAction->setChecked(true);
+    m_panelsAction->setShortcut(QKeySequence(tr("Ctrl+Shift+P")));
+    QAction* sb = view->addAction(tr("&Status bar"), this, [this](bool on) { statusBar()->setVisible(on); });
+    sb->setCheckable(true);
+    sb->setChecked(true);
+    QAction* fs = view->addAction(tr("&Full screen"), this, [this](bool on) {
+        if (on) showFullScreen();
+        else showNormal();
+    });
+    fs->setCheckable(true);
+    fs->setShortcut(QKeySequence::FullScreen);
+    view->addSeparator();
+    auto* themes = new QActionGroup(this);
+    m_lightAction = view->addAction(tr("&Light theme"), this, [this] { setDarkTheme(false); });
+    m_darkAction = view->addAction(tr("&Dark theme"), this, [this] { setDarkTheme(true); });
+    for (QAction* a : {m_lightAction, m_darkAction}) {
+        a->setCheckable(true);
+        themes->addAction(a);
+    }
+    m_lightAction->setChecked(true);
+
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&User guide"), QKeySequence::HelpContents, this, &MainWindow::showUserGuide);
+    help->addAction(tr("&Keyboard shortcuts"), this, &MainWindow::showShortcuts);
+    help->addSeparator();
     help->addAction(tr("&About"), this, [this] {
         QMessageBox::about(this, tr("About Laser Workbench"),
                            tr("<b>Laser Workbench</b> 0.1<br>Footprint spot centres, SLR signal extraction, "
@@ -110,6 +247,99 @@ void MainWindow::buildMenus() {
                               "equivalent in <tt>laserwb-cli</tt>."));
     });
     rebuildRecentMenu();
+    rebuildRecentInputsMenu();
+}
+
+void MainWindow::setDarkTheme(bool dark) {
+    m_dark = dark;
+    if (auto* fusion = QStyleFactory::create("Fusion")) QApplication::setStyle(fusion);
+    QApplication::setPalette(dark ? darkPalette() : QApplication::style()->standardPalette());
+    setPlotTheme(dark);
+    if (m_darkAction) (dark ? m_darkAction : m_lightAction)->setChecked(true);
+    QSettings().setValue("view/theme", dark ? "dark" : "light");
+}
+
+void MainWindow::setPanelsVisible(bool visible) {
+    // The parameter panels sit in scroll areas named "parameterPanel" (ui/workspace_layout); the
+    // footprint workspace's panel is found from its widget.
+    QList<QWidget*> panels;
+    for (QScrollArea* a : findChildren<QScrollArea*>("parameterPanel")) panels << a;
+    QWidget* fp = m_footprint->paramsPanel();
+    while (fp && fp->parentWidget() && fp->parentWidget() != m_footprint && !qobject_cast<QScrollArea*>(fp)) fp = fp->parentWidget();
+    if (fp && !panels.contains(fp)) panels << fp;
+    for (QWidget* w : panels) w->setVisible(visible);
+    if (m_panelsAction) m_panelsAction->setChecked(visible);
+}
+
+QStringList MainWindow::shortcutList() const {
+    QStringList out;
+    std::function<void(const QList<QAction*>&, const QString&)> walk = [&](const QList<QAction*>& acts, const QString& menu) {
+        for (QAction* a : acts) {
+            if (a->menu()) {
+                walk(a->menu()->actions(), a->menu()->title().remove('&'));
+                continue;
+            }
+            const QList<QKeySequence> keys = a->shortcuts();
+            if (keys.isEmpty()) continue;
+            QStringList ks;
+            for (const QKeySequence& k : keys) ks << k.toString(QKeySequence::NativeText);
+            QString text = a->text().remove('&');
+            text = text.split('\t').first();
+            out << ks.join(", ") + "\t" + menu + " ▸ " + text;
+        }
+    };
+    walk(menuBar()->actions(), QString());
+    out << tr("↑ / ↓\tFootprint ▸ previous / next shot") << tr("A\tFootprint ▸ accept the shot and move on")
+        << tr("R\tFootprint ▸ reject the shot and move on");
+    out << tr("Wheel\tPlot ▸ zoom both axes about the cursor") << tr("Shift+Wheel\tPlot ▸ zoom x only")
+        << tr("Ctrl+Wheel\tPlot ▸ zoom y only") << tr("Wheel / drag over an axis\tPlot ▸ zoom / pan that axis only")
+        << tr("Drag\tPlot ▸ pan") << tr("Right-drag, Shift+drag\tPlot ▸ box zoom")
+        << tr("Double-click, Home\tPlot ▸ reset to the home view") << tr("Backspace\tPlot ▸ back in the zoom history")
+        << tr("Right-click\tPlot ▸ export PNG / SVG / PDF, copy to the clipboard")
+        << tr("Click a legend entry\tPlot ▸ hide / show its series");
+    return out;
+}
+
+void MainWindow::showShortcuts() {
+    auto* dlg = new QDialog(this);
+    dlg->setAttribute(Qt::WA_DeleteOnClose);
+    dlg->setWindowTitle(tr("Keyboard shortcuts"));
+    auto* lay = new QVBoxLayout(dlg);
+    const QStringList rows = shortcutList();
+    auto* t = new QTableWidget(int(rows.size()), 2, dlg);
+    t->setHorizontalHeaderLabels({tr("Keys"), tr("What")});
+    t->verticalHeader()->hide();
+    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    t->horizontalHeader()->setStretchLastSection(true);
+    for (int i = 0; i < rows.size(); ++i) {
+        const QStringList parts = rows[i].split('\t');
+        t->setItem(i, 0, new QTableWidgetItem(parts.value(0)));
+        t->setItem(i, 1, new QTableWidgetItem(parts.value(1)));
+    }
+    t->resizeColumnToContents(0);
+    lay->addWidget(t);
+    auto* bb = new QDialogButtonBox(QDialogButtonBox::Close, dlg);
+    connect(bb, &QDialogButtonBox::rejected, dlg, &QDialog::close);
+    lay->addWidget(bb);
+    dlg->resize(560, 520);
+    dlg->show();
+}
+
+void MainWindow::showUserGuide() {
+    auto* dlg = new QDialog(this);
+    dlg->setAttribute(Qt::WA_DeleteOnClose);
+    dlg->setWindowTitle(tr("Laser Workbench — user guide"));
+    auto* lay = new QVBoxLayout(dlg);
+    auto* b = new QTextBrowser(dlg);
+    b->setObjectName("userGuide");
+    b->setOpenExternalLinks(true);
+    b->setSource(QUrl("qrc:/docs/user-guide.md"), QTextDocument::MarkdownResource);
+    lay->addWidget(b);
+    auto* bb = new QDialogButtonBox(QDialogButtonBox::Close, dlg);
+    connect(bb, &QDialogButtonBox::rejected, dlg, &QDialog::close);
+    lay->addWidget(bb);
+    dlg->resize(std::min(900, width()), std::min(760, height()));
+    dlg->show();
 }
 
 void MainWindow::showError(const QString& what, const QString& detail) {
@@ -139,6 +369,7 @@ bool MainWindow::openDemo() {
                                  .arg(m_footprint->controller()->count()),
                              8000);
     m_sessionPath.clear();
+    appUndoStack().clear();
     setModified(false);
     return true;
 }
@@ -147,6 +378,9 @@ bool MainWindow::openFootprintInputs(const QStringList& paths) {
     if (paths.isEmpty() || !maybeSave()) return false;
     m_footprint->controller()->open(paths);
     setModified(true);
+    // One entry for a folder or a shot list; several frames are remembered by their folder.
+    const QString first = paths.first();
+    addRecentInput("footprint", paths.size() == 1 ? first : QFileInfo(first).absolutePath());
     return true;
 }
 
@@ -170,6 +404,235 @@ void MainWindow::openInputs() {
     if (files.isEmpty()) return;
     st.setValue("paths/lastInput", QFileInfo(files.first()).absolutePath());
     openFootprintInputs(files);
+}
+
+QString MainWindow::workspaceForPath(const QString& path) const {
+    const QFileInfo fi(path);
+    if (fi.isDir()) return "footprint";
+    const QString suffix = fi.suffix().toLower();
+    if (kImageSuffixes.contains(suffix))
+        return m_tabs->currentWidget() == m_radiometry && suffix != "raw" && suffix != "bin" ? "radiometry" : "footprint";
+    if (kCrdSuffixes.contains(suffix)) return "slr";
+    const QString head = firstLine(path);
+    if (suffix == "json") return head.contains("{") || head.isEmpty() ? "session" : QString();
+    if (suffix == "csv" || suffix == "txt") {
+        if (head.contains("oc_s") || head.contains("epoch_s")) return "slr";
+        if (head.startsWith("file")) return "footprint";
+        return QString();
+    }
+    // No or another ending: a CRD file is told by its first record.
+    if (head.startsWith("h1 ") || head.startsWith("h1\t")) return "slr";
+    return QString();
+}
+
+bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
+    QStringList problems, footprint, radiometry;
+    for (const QString& p : paths) {
+        if (!QFileInfo::exists(p)) {
+            problems << tr("%1: no such file or folder").arg(p);
+            continue;
+        }
+        const QString where = workspaceForPath(p);
+        if (where == "footprint") {
+            footprint << p;
+        } else if (where == "radiometry") {
+            radiometry << p;
+        } else if (where == "slr") {
+            QString err;
+            if (!m_slr->openPath(p, -1, &err)) problems << err;
+            else {
+                m_tabs->setCurrentWidget(m_slr);
+                addRecentInput("slr", p, m_slr->controller()->pass().passIndex);
+                setModified(true);
+            }
+        } else if (where == "session") {
+            if (!maybeSave()) continue;
+            QString err;
+            if (!openSession(p, true, &err)) problems << err;
+        } else {
+            problems << tr("%1: not a file the workbench opens (CRD, O-C or shot-list CSV, images, a folder of frames, "
+                           "a session)")
+                            .arg(p);
+        }
+    }
+    if (!footprint.isEmpty()) {
+        openFootprintInputs(footprint);
+        m_tabs->setCurrentWidget(m_footprint);
+    }
+    if (!radiometry.isEmpty()) {
+        std::sort(radiometry.begin(), radiometry.end());  // file names carry the scan order
+        QString err;
+        const bool ok = radiometry.size() == 1 ? m_radiometry->controller()->openImage(radiometry.first(), &err)
+                                               : m_radiometry->controller()->openFrames(radiometry, &err);
+        if (!ok) problems << err;
+        else {
+            addRecentInput("radiometry", radiometry.size() == 1 ? radiometry.first() : QFileInfo(radiometry.first()).absolutePath());
+            setModified(true);
+        }
+    }
+    if (!problems.isEmpty()) {
+        if (errorOut) *errorOut = problems.join("\n");
+        showError(tr("Cannot open everything dropped"), problems.join("\n"));
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+    if (!e->mimeData()->hasUrls()) return;
+    for (const QUrl& u : e->mimeData()->urls())
+        if (!u.isLocalFile()) return;
+    e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+    QStringList paths;
+    for (const QUrl& u : e->mimeData()->urls())
+        if (u.isLocalFile()) paths << u.toLocalFile();
+    if (paths.isEmpty()) return;
+    e->acceptProposedAction();
+    // After the drop returns: opening may show a dialog.
+    QMetaObject::invokeMethod(this, [this, paths] { openPaths(paths); }, Qt::QueuedConnection);
+}
+
+QList<QAction*> MainWindow::openActions(QWidget* ws) {
+    QList<QAction*> out;
+    if (ws == m_footprint) {
+        auto* a = new QAction(tr("Frames, folder or shot list…"), ws);
+        connect(a, &QAction::triggered, this, &MainWindow::openInputs);
+        out << a;
+        return out;
+    }
+    if (ws == m_slr) {
+        auto* a = new QAction(tr("CRD file or O-C table…"), ws);
+        connect(a, &QAction::triggered, this, [this] {
+            QSettings st;
+            const QString path = QFileDialog::getOpenFileName(this, tr("Open a ranging pass"), st.value("paths/slr").toString(),
+                                                              tr("CRD and O-C tables (*.frd *.fr2 *.npt *.np2 *.crd *.csv);;All files (*)"));
+            if (path.isEmpty()) return;
+            st.setValue("paths/slr", QFileInfo(path).absolutePath());
+            openPaths({path});
+        });
+        out << a;
+        return out;
+    }
+    // The calibration and radiometry workspaces: the "…" buttons of their input row.
+    for (QPushButton* b : ws->findChildren<QPushButton*>()) {
+        const QString t = b->text();
+        if (!t.endsWith(QStringLiteral("…")) || t.startsWith(tr("Export")) || !b->isEnabled()) continue;
+        auto* a = new QAction(t, ws);
+        a->setToolTip(b->toolTip());
+        connect(a, &QAction::triggered, b, &QPushButton::click);
+        out << a;
+    }
+    return out;
+}
+
+QList<QAction*> MainWindow::exportActions(QWidget* ws) {
+    QList<QAction*> out;
+    if (ws == m_footprint) {
+        auto* a = new QAction(tr("Accepted shots (CSV)…"), ws);
+        connect(a, &QAction::triggered, this, &MainWindow::exportAccepted);
+        out << a;
+        return out;
+    }
+    // The workspace's "Export…" buttons and the entries of its Export menus.
+    for (QWidget* w : ws->findChildren<QWidget*>()) {
+        if (auto* tb = qobject_cast<QToolButton*>(w); tb && tb->menu() && tb->text().startsWith(tr("Export"))) {
+            for (QAction* a : tb->menu()->actions())
+                if (!a->isSeparator()) out << a;
+        } else if (auto* pb = qobject_cast<QPushButton*>(w); pb && pb->text().startsWith(tr("Export"))) {
+            auto* a = new QAction(pb->text(), ws);
+            a->setEnabled(pb->isEnabled());
+            connect(a, &QAction::triggered, pb, &QPushButton::click);
+            out << a;
+        }
+    }
+    return out;
+}
+
+namespace {
+// One entry runs at once; several are offered in a menu under the cursor.
+void runOrOffer(QWidget* parent, const QList<QAction*>& actions, const QString& none, QStatusBar* bar) {
+    if (actions.isEmpty()) {
+        bar->showMessage(none, 6000);
+        return;
+    }
+    if (actions.size() == 1) {
+        actions.first()->trigger();
+        return;
+    }
+    QMenu menu(parent);
+    menu.addActions(actions);
+    QPoint at = parent->mapToGlobal(parent->rect().center());
+    if (parent->rect().contains(parent->mapFromGlobal(QCursor::pos()))) at = QCursor::pos();
+    menu.exec(at);
+}
+}  // namespace
+
+void MainWindow::openForCurrent() {
+    QWidget* ws = m_tabs->currentWidget();
+    const QList<QAction*> acts = openActions(ws);
+    runOrOffer(ws, acts, tr("Nothing to open here"), statusBar());
+    for (QAction* a : acts)
+        if (a->parent() == ws) a->deleteLater();  // made for this call (menu entries stay)
+}
+
+void MainWindow::exportForCurrent() {
+    QWidget* ws = m_tabs->currentWidget();
+    const QList<QAction*> acts = exportActions(ws);
+    runOrOffer(ws, acts, tr("Nothing to export here"), statusBar());
+    for (QAction* a : acts)
+        if (a->parent() == ws) a->deleteLater();  // made for this call (menu entries stay)
+}
+
+QStringList MainWindow::recentInputs() const { return QSettings().value("recentInputs").toStringList(); }
+
+void MainWindow::addRecentInput(const QString& kind, const QString& path, int pass) {
+    const QString abs = QFileInfo(path).absoluteFilePath();
+    QString entry = kind + "\t" + abs;
+    if (pass >= 0) entry += "\t" + QString::number(pass);
+    QStringList recent = recentInputs();
+    // One entry per input (a newer pass of the same file replaces the older one).
+    for (int i = recent.size() - 1; i >= 0; --i) {
+        const QStringList f = recent[i].split('\t');
+        if (f.value(0) == kind && f.value(1) == abs) recent.removeAt(i);
+    }
+    recent.prepend(entry);
+    while (recent.size() > kMaxRecent) recent.removeLast();
+    QSettings().setValue("recentInputs", recent);
+    rebuildRecentInputsMenu();
+}
+
+void MainWindow::rebuildRecentInputsMenu() {
+    if (!m_recentInputsMenu) return;
+    m_recentInputsMenu->clear();
+    const QStringList recent = recentInputs();
+    const QMap<QString, QString> kinds = {{"footprint", tr("footprint")}, {"slr", tr("SLR")}, {"radiometry", tr("radiometry")}};
+    for (const QString& e : recent) {
+        const QStringList f = e.split('\t');
+        if (f.size() < 2) continue;
+        const QString kind = f[0], path = f[1];
+        const int pass = f.size() > 2 ? f[2].toInt() : -1;
+        QString label = tr("%1 — %2").arg(kinds.value(kind, kind), QFileInfo(path).fileName());
+        if (pass >= 0) label += tr(", pass %1").arg(pass + 1);
+        QAction* a = m_recentInputsMenu->addAction(label, this, [this, kind, path, pass] {
+            QString err;
+            if (kind == "slr") {
+                if (!m_slr->openPath(path, pass, &err)) showError(tr("Cannot open the pass"), err);
+                else m_tabs->setCurrentWidget(m_slr);
+            } else if (kind == "radiometry") {
+                const bool ok = QFileInfo(path).isDir() ? false : m_radiometry->controller()->openImage(path, &err);
+                if (!ok) showError(tr("Cannot open the image"), err.isEmpty() ? tr("%1: a folder of frames; open them with Mosaic frames…").arg(path) : err);
+                else m_tabs->setCurrentWidget(m_radiometry);
+            } else {
+                if (!openFootprintInputs({path})) return;
+                m_tabs->setCurrentWidget(m_footprint);
+            }
+        });
+        a->setToolTip(path);
+    }
+    m_recentInputsMenu->setEnabled(!m_recentInputsMenu->isEmpty());
 }
 
 QJsonObject MainWindow::sessionState() const {
@@ -252,6 +715,7 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
     }
     m_sessionPath = path;
     addRecent(path);
+    appUndoStack().clear();
     setModified(false);
     showWorkspace(o["workspace"].toString());
     statusBar()->showMessage(tr("Opened %1").arg(path), 5000);

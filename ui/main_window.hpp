@@ -8,6 +8,8 @@
 
 class QTabWidget;
 class QMenu;
+class QAction;
+class QActionGroup;
 class QProgressBar;
 class QPushButton;
 
@@ -53,11 +55,43 @@ public:
     /// Waits until every workspace's background work is done (for screenshots and tests).
     bool waitIdle(int timeoutMs);
 
+    /// Opens files or folders where they belong (dropped on the window, recent inputs):
+    /// CRD (.frd .fr2 .npt .np2 .crd) and O-C tables → SLR; a session (.json) → the session;
+    /// images and folders → footprint (radiometry when it is the current workspace); a shot list
+    /// (.csv) → footprint. False with *error naming what could not be opened and why.
+    bool openPaths(const QStringList& paths, QString* error = nullptr);
+    /// Which workspace a path opens in: "slr", "footprint", "radiometry", "session" or "" (none).
+    QString workspaceForPath(const QString& path) const;
+    /// Ctrl+O / Ctrl+E: the current workspace's open and export.
+    void openForCurrent();
+    void exportForCurrent();
+    /// The export entries of a workspace (its "Export…" buttons and menus), for Ctrl+E.
+    QList<QAction*> exportActions(QWidget* workspace);
+    /// The open entries of a workspace, for Ctrl+O.
+    QList<QAction*> openActions(QWidget* workspace);
+
+    /// Light or dark (Fusion palette); saved in the settings; plots follow.
+    void setDarkTheme(bool dark);
+    bool isDarkTheme() const { return m_dark; }
+    /// Shows or hides every workspace's parameter panel.
+    void setPanelsVisible(bool visible);
+    /// The recent inputs ("kind\tpath[\tpass]"), newest first.
+    QStringList recentInputs() const;
+    void addRecentInput(const QString& kind, const QString& path, int pass = -1);
+    /// The keyboard shortcuts as "keys\twhat" lines (Help ▸ Keyboard shortcuts).
+    QStringList shortcutList() const;
+    void showUserGuide();
+    void showShortcuts();
+
 protected:
     void closeEvent(class QCloseEvent* e) override;
+    void dragEnterEvent(class QDragEnterEvent* e) override;
+    void dropEvent(class QDropEvent* e) override;
 
 private:
     void buildMenus();
+    void rebuildRecentInputsMenu();
+    void workspaceStatus(QWidget* workspace, const QString& message, int timeoutMs);
     void openInputs();
     void openFolder();
     void openSessionDialog();
@@ -75,6 +109,10 @@ private:
     CalibWorkspace* m_calib;
     RadiometryWorkspace* m_radiometry;
     QMenu* m_recentMenu = nullptr;
+    QMenu* m_recentInputsMenu = nullptr;
+    QActionGroup* m_workspaceGroup = nullptr;
+    QAction *m_darkAction = nullptr, *m_lightAction = nullptr, *m_panelsAction = nullptr;
+    bool m_dark = false;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;
     QString m_sessionPath;

@@ -29,6 +29,7 @@
 #include <qcustomplot.h>
 
 #include "ui/color_maps.hpp"
+#include "ui/plot_kit.hpp"
 #include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
@@ -40,53 +41,6 @@ namespace {
 const QColor kFitColor(0, 215, 255), kCheckColor(255, 140, 0), kBlue(31, 119, 180), kGrey(150, 150, 150),
     kRed(214, 39, 40), kGreenText(30, 120, 50);
 constexpr int kMaxDisplayCells = 2400;  // per axis: larger images are shown area-averaged
-
-QCPColorGradient gradientFor(ColorMap map) {
-    QCPColorGradient g;
-    g.clearColorStops();
-    for (int i = 0; i <= 16; ++i) g.setColorStopAt(i / 16.0, QColor(mapColor(map, i / 16.0)));
-    g.setNanHandling(QCPColorGradient::nhTransparent);
-    return g;
-}
-
-QCustomPlot* newPlot(QWidget* parent, const QString& title, const QString& x, const QString& y) {
-    auto* p = new QCustomPlot(parent);
-    p->setMinimumSize(200, 150);
-    p->xAxis->setLabel(x);
-    p->yAxis->setLabel(y);
-    p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-    if (!title.isEmpty()) {
-        p->plotLayout()->insertRow(0);
-        QFont f = p->font();
-        f.setBold(true);
-        f.setPointSizeF(f.pointSizeF() * 0.95);
-        p->plotLayout()->addElement(0, 0, new QCPTextElement(p, title, f));
-    }
-    p->legend->setFont(QFont(p->font().family(), 8));
-    p->legend->setBrush(QColor(255, 255, 255, 215));
-    p->legend->setBorderPen(QPen(QColor(180, 180, 180)));
-    return p;
-}
-
-// An image plot: a colour map with a colour scale, y down (row 0 on top), equal aspect.
-QCPColorMap* imageMap(QCustomPlot* p, const QString& scaleLabel, QCPColorScale** scale) {
-    p->yAxis->setRangeReversed(true);
-    auto* m = new QCPColorMap(p->xAxis, p->yAxis);
-    m->setInterpolate(false);
-    m->setTightBoundary(false);
-    auto* s = new QCPColorScale(p);
-    s->setType(QCPAxis::atRight);
-    s->setLabel(scaleLabel);
-    s->setBarWidth(12);
-    p->plotLayout()->addElement(1, 1, s);
-    p->axisRect()->setBackground(QColor(222, 222, 222));  // no data (outside the image or the mosaic)
-    m->setColorScale(s);
-    auto* group = new QCPMarginGroup(p);
-    p->axisRect()->setMarginGroup(QCP::msBottom | QCP::msTop, group);
-    s->setMarginGroup(QCP::msBottom | QCP::msTop, group);
-    *scale = s;
-    return m;
-}
 
 // Fills a colour map from a CV_32F image (NaN where mask is 0), area-averaged when large.
 void fillMap(QCPColorMap* map, const cv::Mat& img, const cv::Mat& mask) {
@@ -159,21 +113,24 @@ QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, int de
     return s;
 }
 
-// Refits an image plot to its window when resized (unless the analyst zoomed in).
+// Refits an image plot to its window when resized (unless the analyst zoomed in); the fit is
+// also the plot kit's home view.
 class ImageFit : public QObject {
 public:
     ImageFit(QCustomPlot* plot, std::function<void()> fit) : QObject(plot), m_plot(plot), m_fit(std::move(fit)) {
         plot->installEventFilter(this);
+        PlotKitOptions o;
+        o.home = [plot, f = m_fit] {
+            plot->setProperty("zoomed", false);
+            f();
+        };
+        installPlotKit(plot, o);
     }
 
 protected:
     bool eventFilter(QObject* o, QEvent* e) override {
         if (o == m_plot && e->type() == QEvent::Resize)
             QMetaObject::invokeMethod(m_plot, [f = m_fit] { f(); }, Qt::QueuedConnection);
-        if (o == m_plot && e->type() == QEvent::MouseButtonDblClick) {
-            m_plot->setProperty("zoomed", false);
-            m_fit();
-        }
         if (o == m_plot && (e->type() == QEvent::Wheel || e->type() == QEvent::MouseMove)) {
             if (e->type() == QEvent::Wheel || (static_cast<QMouseEvent*>(e)->buttons() & Qt::LeftButton))
                 if (m_plot->selectionRectMode() == QCP::srmNone) m_plot->setProperty("zoomed", true);
@@ -225,14 +182,18 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
     top->addWidget(exportBtn);
     m_info = new QLabel(this);
     m_info->setTextFormat(Qt::RichText);
-    m_info->setStyleSheet("color: #444;");
+    m_info->setForegroundRole(QPalette::PlaceholderText);
 
     // Images.
     m_dnPlot = newPlot(this, tr("DN image with the picked regions"), tr("Column (px)"), tr("Row (px)"));
-    m_dnMap = imageMap(m_dnPlot, tr("DN"), &m_dnScale);
+    const ImageMap dn = addImageMap(m_dnPlot, tr("DN"), true);
+    m_dnMap = dn.map;
+    m_dnScale = dn.scale;
     m_dnMap->setName(tr("DN"));
     m_reflPlot = newPlot(this, tr("Reflectance image V_REF = K·V_DN + B"), tr("Column (px)"), tr("Row (px)"));
-    m_reflMap = imageMap(m_reflPlot, tr("Reflectance (%)"), &m_reflScale);
+    const ImageMap refl = addImageMap(m_reflPlot, tr("Reflectance (%)"), true);
+    m_reflMap = refl.map;
+    m_reflScale = refl.scale;
     for (QCustomPlot* p : {m_dnPlot, m_reflPlot}) {
         p->setMinimumHeight(170);
         p->selectionRect()->setPen(QPen(kFitColor, 1.5, Qt::DashLine));
@@ -244,10 +205,7 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
     // Fit plot and tables.
     m_fitPlot = newPlot(this, tr("Calibration line (paper 003 eq. 5)"), tr("Mean DN of the region, V_DN"),
                         tr("Measured reflectance V_REF (%)"));
-    m_fitPlot->legend->setVisible(true);
-    m_fitPlot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
-    m_fitPlot->legend->setFont(QFont(font().family(), 7));
-    m_fitPlot->legend->setRowSpacing(0);
+    legendBelow(m_fitPlot, 2);
     m_fitSummary = new QLabel(this);
     m_fitSummary->setWordWrap(true);
     m_fitSummary->setTextFormat(Qt::RichText);
@@ -548,9 +506,11 @@ void RadiometryWorkspace::buildPanel(QWidget* panel) {
     m_reflColors->setCurrentIndex(int(ColorMap::Viridis));
     vf->addRow(tr("DN colours"), m_dnColors);
     vf->addRow(tr("Reflectance colours"), m_reflColors);
-    auto* hint = new QLabel(tr("Wheel: zoom · drag: pan · double-click: whole image"), vg);
+    auto* hint = new QLabel(tr("Wheel: zoom (Shift: x, Ctrl: y) · drag: pan · right-drag: box zoom · double-click: "
+                               "whole image · right-click: export"),
+                            vg);
     hint->setWordWrap(true);
-    hint->setStyleSheet("color: #666;");
+    hint->setForegroundRole(QPalette::PlaceholderText);
     vf->addRow(hint);
     pl->addWidget(vg);
     pl->addStretch(1);

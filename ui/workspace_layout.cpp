@@ -1,23 +1,59 @@
 #include "ui/workspace_layout.hpp"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSplitter>
+#include <QStyle>
 #include <QVBoxLayout>
+#include <QWidget>
+#include <functional>
 
 namespace lwb::ui {
+
+namespace {
+
+// Keeps a scroll area as wide as its panel needs (plus the vertical scroll bar), following the
+// panel's layout as it changes, so that nothing in the panel is cut off and it never scrolls
+// sideways.
+class PanelWidth : public QObject {
+public:
+    explicit PanelWidth(QScrollArea* scroll) : QObject(scroll), m_scroll(scroll) {
+        scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        if (scroll->widget()) scroll->widget()->installEventFilter(this);
+        update();
+    }
+    void update() {
+        const QWidget* w = m_scroll->widget();
+        if (!w) return;
+        const int bar = m_scroll->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, m_scroll);
+        m_scroll->setMinimumWidth(w->minimumSizeHint().width() + bar + 2 * m_scroll->frameWidth() + 2);
+    }
+
+protected:
+    bool eventFilter(QObject*, QEvent* e) override {
+        if (e->type() == QEvent::LayoutRequest || e->type() == QEvent::Show) update();
+        return false;
+    }
+
+private:
+    QScrollArea* m_scroll;
+};
+
+}  // namespace
 
 void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* body, QWidget* panel,
                      int panelMinWidth, int centreWidth) {
     auto* scroll = new QScrollArea(workspace);
+    scroll->setObjectName("parameterPanel");
     scroll->setWidget(panel);
     scroll->setWidgetResizable(true);
-    scroll->setMinimumWidth(panelMinWidth);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    fitPanelWidth(scroll);
     auto* centre = new QWidget(workspace);
     auto* cl = new QVBoxLayout(centre);
     cl->setContentsMargins(0, 0, 0, 0);
-    cl->addLayout(top);
+    cl->addLayout(wrapRow(top));
     cl->addWidget(info);
     cl->addWidget(body, 1);
     auto* split = new QSplitter(Qt::Horizontal, workspace);
@@ -25,10 +61,88 @@ void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* b
     split->addWidget(scroll);
     split->setStretchFactor(0, 1);
     split->setStretchFactor(1, 0);
-    split->setSizes({centreWidth, panelMinWidth + 10});
+    split->setCollapsible(0, false);
+    split->setCollapsible(1, true);
+    split->setSizes({centreWidth, std::max(panelMinWidth, scroll->minimumSizeHint().width()) + 10});
     auto* lay = new QHBoxLayout(workspace);
     lay->setContentsMargins(4, 4, 4, 4);
     lay->addWidget(split);
+}
+
+void fitPanelWidth(QScrollArea* scroll) { new PanelWidth(scroll); }
+
+QLayout* wrapRow(QLayout* row) {
+    auto* flow = new FlowLayout(nullptr, row->spacing() >= 0 ? row->spacing() : 6);
+    std::function<void(QLayout*)> move = [&](QLayout* from) {
+        while (QLayoutItem* it = from->takeAt(0)) {
+            if (QWidget* w = it->widget()) flow->addWidget(w);
+            else if (QLayout* inner = it->layout()) move(inner);
+            delete it;  // a nested layout once emptied; spacers and stretches mean nothing in a flow
+        }
+    };
+    move(row);
+    delete row;
+    return flow;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+FlowLayout::FlowLayout(QWidget* parent, int spacing) : QLayout(parent) {
+    setSpacing(spacing);
+    setContentsMargins(0, 0, 0, 0);
+}
+
+FlowLayout::~FlowLayout() {
+    while (QLayoutItem* it = takeAt(0)) delete it;
+}
+
+void FlowLayout::addItem(QLayoutItem* item) { m_items.append(item); }
+
+QLayoutItem* FlowLayout::takeAt(int i) { return i >= 0 && i < m_items.size() ? m_items.takeAt(i) : nullptr; }
+
+void FlowLayout::setGeometry(const QRect& rect) {
+    QLayout::setGeometry(rect);
+    place(rect, true);
+}
+
+QSize FlowLayout::sizeHint() const {
+    // One line when there is room for it.
+    int w = 0, h = 0;
+    for (QLayoutItem* it : m_items) {
+        if (it->isEmpty()) continue;
+        const QSize s = it->sizeHint();
+        w += s.width() + (w > 0 ? spacing() : 0);
+        h = std::max(h, s.height());
+    }
+    const QMargins m = contentsMargins();
+    return QSize(w + m.left() + m.right(), h + m.top() + m.bottom());
+}
+
+QSize FlowLayout::minimumSize() const {
+    QSize s;
+    for (QLayoutItem* it : m_items)
+        if (!it->isEmpty()) s = s.expandedTo(it->minimumSize());
+    const QMargins m = contentsMargins();
+    return s + QSize(m.left() + m.right(), m.top() + m.bottom());
+}
+
+int FlowLayout::place(const QRect& rect, bool apply) const {
+    const QMargins m = contentsMargins();
+    const QRect r = rect.adjusted(m.left(), m.top(), -m.right(), -m.bottom());
+    int x = r.x(), y = r.y(), line = 0;
+    for (QLayoutItem* it : m_items) {
+        if (it->isEmpty()) continue;
+        const QSize s = it->sizeHint();
+        if (x > r.x() && x + s.width() > r.right() + 1) {  // wrap
+            x = r.x();
+            y += line + spacing();
+            line = 0;
+        }
+        if (apply) it->setGeometry(QRect(QPoint(x, y), s));
+        x += s.width() + spacing();
+        line = std::max(line, s.height());
+    }
+    return y + line - rect.y() + m.bottom();
 }
 
 }  // namespace lwb::ui

@@ -2,12 +2,49 @@
 // The layout the SLR, calibration and radiometry workspaces share: a centre column (a row of
 // inputs, an information line, the body) and the parameter panel on the right in a scroll area,
 // side by side in a splitter.
-class QLayout;
+//
+// Small windows (1024×700, or 150 % scaling on 1920×1080): the row of inputs wraps onto more
+// lines instead of widening the window (FlowLayout); the parameter panel scrolls vertically, is
+// as wide as its widest row (never cut off, never scrolled sideways), and can be collapsed by
+// dragging the splitter or with View ▸ Parameter panels (the scroll area is named
+// "parameterPanel").
+#include <QLayout>
+#include <QList>
+
+class QScrollArea;
 class QWidget;
 
 namespace lwb::ui {
 
 void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* body, QWidget* panel,
                      int panelMinWidth, int centreWidth);
+
+/// A row of controls (a QHBoxLayout not yet installed) as a FlowLayout that wraps: the same
+/// widgets in the same order; spacers and stretches are dropped. `row` is deleted.
+QLayout* wrapRow(QLayout* row);
+/// Keeps a parameter panel's scroll area as wide as the panel's widest row plus the scroll bar
+/// (nothing cut off, no sideways scrolling), following the panel as it changes.
+void fitPanelWidth(QScrollArea* scroll);
+
+/// Lays its widgets out left to right and wraps onto the next line when the width runs out.
+class FlowLayout : public QLayout {
+public:
+    explicit FlowLayout(QWidget* parent = nullptr, int spacing = 6);
+    ~FlowLayout() override;
+    void addItem(QLayoutItem* item) override;
+    int count() const override { return int(m_items.size()); }
+    QLayoutItem* itemAt(int i) const override { return m_items.value(i); }
+    QLayoutItem* takeAt(int i) override;
+    Qt::Orientations expandingDirections() const override { return {}; }
+    bool hasHeightForWidth() const override { return true; }
+    int heightForWidth(int width) const override { return place(QRect(0, 0, width, 0), false); }
+    void setGeometry(const QRect& rect) override;
+    QSize sizeHint() const override;
+    QSize minimumSize() const override;
+
+private:
+    int place(const QRect& rect, bool apply) const;
+    QList<QLayoutItem*> m_items;
+};
 
 }  // namespace lwb::ui

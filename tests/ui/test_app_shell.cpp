@@ -1,0 +1,336 @@
+// The application shell (issue 10 "Application shell" and "Layout"): Edit ▸ Undo / Redo on the
+// one undo stack, cleared when new data loads; the View menu (workspaces, panels, theme saved in
+// the settings); Help ▸ User guide from the bundled docs and the shortcut list; Ctrl+O / Ctrl+E
+// on the current workspace; recent inputs; files and folders dropped on the window open in the
+// right workspace; at start-up the status bar does not show another workspace's message; the
+// window is usable at 1024×700.
+#include <QAbstractScrollArea>
+#include <QMenuBar>
+#include <QMimeData>
+#include <QScrollArea>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTextBrowser>
+#include <QUndoCommand>
+#include <QUndoStack>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include "test_support.hpp"
+#include "ui/app_undo.hpp"
+#include "ui/calib_workspace.hpp"
+#include "ui/footprint_workspace.hpp"
+#include "ui/main_window.hpp"
+#include "ui/plot_kit.hpp"
+#include "ui/radiometry_workspace.hpp"
+#include "ui/slr_workspace.hpp"
+
+using namespace lwb::ui;
+
+namespace {
+
+class SetInt : public QUndoCommand {
+public:
+    SetInt(int* target, int value) : m_target(target), m_old(*target), m_new(value) { setText("set"); }
+    void redo() override { *m_target = m_new; }
+    void undo() override { *m_target = m_old; }
+
+private:
+    int* m_target;
+    int m_old, m_new;
+};
+
+QAction* menuAction(QMainWindow& w, const QString& menu, const QString& startsWith) {
+    for (QAction* m : w.menuBar()->actions())
+        if (m->menu() && m->text().remove('&') == menu)
+            for (QAction* a : m->menu()->actions())
+                if (a->text().remove('&').startsWith(startsWith)) return a;
+    return nullptr;
+}
+
+// Every visible widget of the window that is not inside a scrolled viewport lies inside the
+// window; returns the first one that does not (or an empty string).
+QString widgetOutside(QWidget* window) {
+    const QRect frame = window->rect();
+    for (QWidget* c : window->findChildren<QWidget*>()) {
+        if (!c->isVisibleTo(window) || c->isWindow()) continue;
+        bool scrolled = false;
+        for (QWidget* p = c->parentWidget(); p && p != window; p = p->parentWidget())
+            if (auto* sa = qobject_cast<QAbstractScrollArea*>(p); sa && c != sa->viewport() && sa->isAncestorOf(c) &&
+                                                                    sa->viewport()->isAncestorOf(c))
+                scrolled = true;
+        if (scrolled) continue;
+        const QRect r(c->mapTo(window, QPoint(0, 0)), c->size());
+        if (!frame.contains(r))
+            return QString("%1 \"%2\" at %3,%4 %5×%6 outside %7×%8")
+                .arg(c->metaObject()->className(), c->objectName())
+                .arg(r.x())
+                .arg(r.y())
+                .arg(r.width())
+                .arg(r.height())
+                .arg(frame.width())
+                .arg(frame.height());
+    }
+    return QString();
+}
+
+}  // namespace
+
+class TestAppShell : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+        QVERIFY(m_dir.isValid());
+    }
+
+    // Reproduced: after start-up (the demo) the status bar read the radiometry workspace's
+    // "Mosaicking…" / demo line while the footprint workspace was in front.
+    void startUpStatusIsNotAnotherWorkspaces() {
+        MainWindow w;
+        QSignalSpy radiometry(w.radiometry(), &RadiometryWorkspace::status);
+        QSignalSpy calib(w.calib(), &CalibWorkspace::status);
+        w.openDemo();
+        w.showWorkspace("footprint");
+        w.show();
+        QVERIFY(w.waitIdle(120000));
+        QVERIFY(radiometry.count() > 0);  // the radiometry workspace did speak
+        const QString shown = w.statusBar()->currentMessage();
+        for (const auto& args : radiometry) QVERIFY2(shown != args.at(0).toString(), qPrintable(shown));
+        for (const auto& args : calib) QVERIFY2(shown != args.at(0).toString(), qPrintable(shown));
+        // In front, a workspace's messages are shown.
+        w.showWorkspace("radiometry");
+        emit w.radiometry()->status("radiometry speaking");
+        QCOMPARE(w.statusBar()->currentMessage(), QString("radiometry speaking"));
+    }
+
+    void editMenuUndoRedoOnTheOneStackClearedByNewData() {
+        MainWindow w;
+        QAction* undo = menuAction(w, "Edit", "Undo");
+        QAction* redo = menuAction(w, "Edit", "Redo");
+        QVERIFY(undo && redo);
+        QCOMPARE(undo->shortcut(), QKeySequence(QKeySequence::Undo));
+        QVERIFY(redo->shortcuts().contains(QKeySequence("Ctrl+Shift+Z")));
+        int value = 1;
+        appUndoStack().push(new SetInt(&value, 2));
+        QCOMPARE(value, 2);
+        QVERIFY(undo->isEnabled());
+        undo->trigger();
+        QCOMPARE(value, 1);
+        redo->trigger();
+        QCOMPARE(value, 2);
+        // The shortcut reaches it from the window.
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(value, 1);
+        QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(value, 2);
+        // New data: the history is of other data.
+        w.openDemo();
+        QCOMPARE(appUndoStack().count(), 0);
+        QVERIFY(!undo->isEnabled());
+        appUndoStack().push(new SetInt(&value, 3));
+        w.calib()->openDemo();  // new inputs in one workspace
+        QCOMPARE(appUndoStack().count(), 0);
+        QVERIFY(w.waitIdle(120000));
+    }
+
+    void viewMenuSwitchesWorkspacesPanelsAndTheme() {
+        {
+            MainWindow w;
+            w.resize(1280, 800);
+            w.show();
+            QAction* slr = menuAction(w, "View", "SLR");
+            QVERIFY(slr);
+            QCOMPARE(slr->shortcut(), QKeySequence("Ctrl+2"));
+            slr->trigger();
+            QCOMPARE(w.tabs()->currentWidget(), static_cast<QWidget*>(w.slr()));
+            // Panels.
+            const auto panels = w.findChildren<QScrollArea*>("parameterPanel");
+            QCOMPARE(panels.size(), 3);  // SLR, calibration, radiometry (ui/workspace_layout)
+            w.setPanelsVisible(false);
+            for (QScrollArea* a : panels) QVERIFY(!a->isVisibleTo(&w) || !a->isVisible());
+            QVERIFY(!w.slr()->findChild<QScrollArea*>("parameterPanel")->isVisibleTo(w.slr()));
+            w.setPanelsVisible(true);
+            QVERIFY(w.slr()->findChild<QScrollArea*>("parameterPanel")->isVisibleTo(w.slr()));
+            // Theme: the palette, the plots, the settings.
+            QAction* dark = menuAction(w, "View", "Dark theme");
+            QVERIFY(dark);
+            dark->trigger();
+            QVERIFY(w.isDarkTheme());
+            QVERIFY(QApplication::palette().color(QPalette::Window).lightness() < 80);
+            QCustomPlot* p = w.calib()->energyPlot();
+            p->replot();
+            QVERIFY(p->toPixmap(200, 150).toImage().pixelColor(2, 2).lightness() < 80);
+            QCOMPARE(QSettings().value("view/theme").toString(), QString("dark"));
+        }
+        {
+            MainWindow again;  // the theme comes back from the settings
+            QVERIFY(again.isDarkTheme());
+            QVERIFY(plotThemeDark());
+            again.setDarkTheme(false);
+            QVERIFY(QApplication::palette().color(QPalette::Window).lightness() > 150);
+            QCOMPARE(QSettings().value("view/theme").toString(), QString("light"));
+        }
+    }
+
+    void helpShowsTheBundledGuideAndTheShortcuts() {
+        MainWindow w;
+        QFile guide(":/docs/user-guide.md");
+        QVERIFY(guide.open(QIODevice::ReadOnly));
+        QVERIFY(guide.readAll().contains("Footprint review"));
+        w.showUserGuide();
+        auto* browser = w.findChild<QTextBrowser*>("userGuide");
+        QVERIFY(browser);
+        QVERIFY(browser->toPlainText().contains("Footprint review"));
+        QVERIFY(browser->toPlainText().contains("SLR pass screening"));
+        const QStringList keys = w.shortcutList();
+        auto has = [&](const QString& key, const QString& what) {
+            for (const QString& k : keys)
+                if (k.startsWith(key + "\t") && k.contains(what)) return true;
+            return false;
+        };
+        QVERIFY(has(QKeySequence(QKeySequence::Undo).toString(QKeySequence::NativeText), "Undo"));
+        QVERIFY(has(QKeySequence(QKeySequence::Open).toString(QKeySequence::NativeText), "Open"));
+        QVERIFY(has("Ctrl+E", "Export"));
+        QVERIFY(has("Shift+Wheel", "x only"));
+    }
+
+    void ctrlOAndCtrlEActOnTheCurrentWorkspace() {
+        MainWindow w;
+        QAction* open = menuAction(w, "File", "Open… (current");
+        QAction* exp = menuAction(w, "File", "Export… (current");
+        QVERIFY(open && exp);
+        QCOMPARE(open->shortcut(), QKeySequence(QKeySequence::Open));
+        QCOMPARE(exp->shortcut(), QKeySequence("Ctrl+E"));
+        auto texts = [](const QList<QAction*>& acts) {
+            QStringList t;
+            for (QAction* a : acts) t << a->text();
+            return t;
+        };
+        const QStringList calibOpen = texts(w.openActions(w.calib()));
+        QVERIFY2(calibOpen.contains("Detectors…") && calibOpen.contains("Waveform…"), qPrintable(calibOpen.join(", ")));
+        const QStringList radOpen = texts(w.openActions(w.radiometry()));
+        QVERIFY2(radOpen.contains("DN image…") && radOpen.contains("Mosaic frames…"), qPrintable(radOpen.join(", ")));
+        QCOMPARE(w.openActions(w.slr()).size(), 1);
+        QCOMPARE(w.openActions(w.footprint()).size(), 1);
+        const QStringList calibExport = texts(w.exportActions(w.calib()));
+        QVERIFY2(calibExport.contains("Detector report (per detector)…"), qPrintable(calibExport.join(", ")));
+        const QStringList radExport = texts(w.exportActions(w.radiometry()));
+        QVERIFY(radExport.contains("Reflectance image (TIFF)…"));
+        const QStringList slrExport = texts(w.exportActions(w.slr()));
+        QCOMPARE(slrExport.size(), 3);
+        QVERIFY(slrExport.first().startsWith("Export points"));
+        QCOMPARE(w.exportActions(w.footprint()).size(), 1);
+    }
+
+    void pathsOpenInTheRightWorkspace() {
+        MainWindow w;
+        const QString d = m_dir.path();
+        QVERIFY(lwbtest::writeText(d + "/pass.frd", "H1 CRD  2 2021 09 05 10\n"));
+        QVERIFY(lwbtest::writeText(d + "/oc.csv", "epoch_s,oc_s\n1,0\n"));
+        QVERIFY(lwbtest::writeText(d + "/shots.csv", "file,time,beam\na.png,2020-01-01,1\n"));
+        QVERIFY(lwbtest::writeText(d + "/noending", "h1 CRD  2 2021 09 05 10\n"));
+        QVERIFY(lwbtest::writeText(d + "/notes.txt", "just some words\n"));
+        QVERIFY(lwbtest::writeText(d + "/s.json", "{\"format\": \"laserwb-session\"}\n"));
+        QVERIFY(QDir(d).mkpath("frames"));
+        QImage(8, 8, QImage::Format_Grayscale8).save(d + "/frames/f1.png");
+        QCOMPARE(w.workspaceForPath(d + "/pass.frd"), QString("slr"));
+        QCOMPARE(w.workspaceForPath(d + "/oc.csv"), QString("slr"));
+        QCOMPARE(w.workspaceForPath(d + "/shots.csv"), QString("footprint"));
+        QCOMPARE(w.workspaceForPath(d + "/noending"), QString("slr"));
+        QCOMPARE(w.workspaceForPath(d + "/notes.txt"), QString());
+        QCOMPARE(w.workspaceForPath(d + "/s.json"), QString("session"));
+        QCOMPARE(w.workspaceForPath(d + "/frames"), QString("footprint"));
+        QCOMPARE(w.workspaceForPath(d + "/frames/f1.png"), QString("footprint"));
+        w.showWorkspace("radiometry");
+        QCOMPARE(w.workspaceForPath(d + "/frames/f1.png"), QString("radiometry"));
+        // Something that opens nowhere: an error naming it, nothing replaced.
+        QString err;
+        QVERIFY(!w.openPaths({d + "/notes.txt"}, &err));
+        QVERIFY(err.contains("notes.txt"));
+        QVERIFY(w.waitIdle(60000));
+    }
+
+    void droppedCrdOpensInSlrAndIsARecentInput() {
+        const QString jason = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
+        if (!QFile::exists(jason)) QSKIP("shared SLR data absent");
+        QSettings().remove("recentInputs");
+        MainWindow w;
+        w.resize(1024, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.acceptDrops());
+        auto* mime = new QMimeData;
+        mime->setUrls({QUrl::fromLocalFile(jason)});
+        const QPoint at = w.rect().center();
+        QDragEnterEvent enter(at, Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&w, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(QPointF(at), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&w, &drop);
+        QTRY_COMPARE_WITH_TIMEOUT(w.tabs()->currentWidget(), static_cast<QWidget*>(w.slr()), 10000);
+        QVERIFY(!w.slr()->controller()->passes().empty());
+        QVERIFY(w.waitIdle(120000));
+        const QStringList recent = w.recentInputs();
+        QVERIFY(!recent.isEmpty());
+        QVERIFY2(recent.first().startsWith("slr\t") && recent.first().contains("JASON1"), qPrintable(recent.first()));
+        // And it is in File ▸ Recent inputs.
+        QAction* menu = menuAction(w, "File", "Recent inputs");
+        QVERIFY(menu && menu->menu());
+        QVERIFY(!menu->menu()->actions().isEmpty());
+        QVERIFY(menu->menu()->actions().first()->text().contains("JASON1"));
+        delete mime;
+    }
+
+    // Reproduced first: minimum 1442×684 (footprint) and panels cut off at the default size.
+    void usableAt1024x700() {
+        MainWindow w;
+        w.openDemo();
+        w.resize(1024, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.waitIdle(120000));
+        const QSize min = w.minimumSizeHint().expandedTo(w.minimumSize());
+        QString pages;
+        for (int i = 0; i < w.tabs()->count(); ++i) {
+            const QSize m = w.tabs()->widget(i)->minimumSizeHint();
+            pages += QString(" %1 %2×%3").arg(w.tabs()->tabText(i)).arg(m.width()).arg(m.height());
+        }
+        QVERIFY2(min.width() <= 1024 && min.height() <= 700,
+                 qPrintable(QString("minimum %1×%2;%3").arg(min.width()).arg(min.height()).arg(pages)));
+        for (const char* ws : {"footprint", "slr", "calibration", "radiometry", "calibration:waveform", "footprint:trend"}) {
+            w.showWorkspace(ws);
+            QTest::qWait(50);
+            QApplication::processEvents();
+            const QSize cur = w.tabs()->currentWidget()->minimumSizeHint();
+            QVERIFY2(w.size() == QSize(1024, 700),
+                     qPrintable(QString("%1: the window grew to %2×%3 (the workspace needs %4×%5)")
+                                    .arg(ws)
+                                    .arg(w.width())
+                                    .arg(w.height())
+                                    .arg(cur.width())
+                                    .arg(cur.height())));
+            const QString out = widgetOutside(&w);
+            QVERIFY2(out.isEmpty(), qPrintable(QString(ws) + ": " + out));
+            // The parameter panel is as wide as its content: nothing cut off, no sideways scroll.
+            for (QScrollArea* a : w.tabs()->currentWidget()->findChildren<QScrollArea*>("parameterPanel")) {
+                if (!a->isVisible()) continue;
+                QVERIFY2(a->widget()->width() >= a->widget()->minimumSizeHint().width(),
+                         qPrintable(QString("%1: panel %2 px wide, needs %3")
+                                        .arg(ws)
+                                        .arg(a->widget()->width())
+                                        .arg(a->widget()->minimumSizeHint().width())));
+            }
+        }
+    }
+};
+
+QTEST_MAIN(TestAppShell)
+#include "test_app_shell.moc"

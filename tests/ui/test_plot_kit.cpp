@@ -1,0 +1,305 @@
+// The shared plot kit (issue 10 "Plots", issue 11 "See the track"): box zoom changes only the
+// range asked, per-axis zoom only that axis, reset restores the view the workspace set, the zoom
+// history steps back, exports are valid PNG / SVG / PDF files, a legend click hides its series,
+// linked plots follow the master's x range, the UTC time axis reads hh:mm:ss, plots follow the
+// theme; and the calibration and radiometry workspaces' plots carry the kit.
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include "test_support.hpp"
+#include "ui/calib_workspace.hpp"
+#include "ui/plot_kit.hpp"
+#include "ui/radiometry_workspace.hpp"
+
+using namespace lwb::ui;
+
+namespace {
+
+// A shown plot with two named series over x 0..100, y 0..10 and a legend.
+QCustomPlot* makePlot(QWidget* parent) {
+    QCustomPlot* p = newPlot(parent, "Test plot", "x", "y");
+    p->resize(600, 400);
+    QVector<double> x, a, b;
+    for (int i = 0; i <= 100; ++i) {
+        x << i;
+        a << 5 + 4 * std::sin(i / 10.0);
+        b << 5 + 4 * std::cos(i / 10.0);
+    }
+    QCPGraph* ga = p->addGraph();
+    ga->setName("sine");
+    ga->setData(x, a);
+    QCPGraph* gb = p->addGraph();
+    gb->setName("cosine");
+    gb->setData(x, b);
+    p->legend->setVisible(true);
+    p->xAxis->setRange(0, 100);
+    p->yAxis->setRange(0, 10);
+    p->show();
+    QApplication::processEvents();  // the resize reaches the plot: its viewport is final
+    p->replot();
+    return p;
+}
+
+QPoint pixel(QCustomPlot* p, double x, double y) {
+    return QPoint(int(std::lround(p->xAxis->coordToPixel(x))), int(std::lround(p->yAxis->coordToPixel(y))));
+}
+
+void wheel(QCustomPlot* p, const QPoint& at, int delta, Qt::KeyboardModifiers mods) {
+    QWheelEvent e(QPointF(at), QPointF(p->mapToGlobal(at)), QPoint(), QPoint(0, delta), Qt::NoButton, mods,
+                  Qt::NoScrollPhase, false);
+    QApplication::sendEvent(p, &e);
+}
+
+QByteArray head(const QString& path, int n) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.read(n) : QByteArray();
+}
+
+}  // namespace
+
+class TestPlotKit : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QWidget* m_host = nullptr;
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY(m_dir.isValid());
+    }
+    void init() {
+        m_host = new QWidget;
+        m_host->resize(700, 500);
+        m_host->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_host));
+    }
+    void cleanup() {
+        delete m_host;
+        m_host = nullptr;
+        setPlotTheme(false);
+    }
+
+    void boxZoomChangesOnlyTheRangeAsked() {
+        QCustomPlot* p = makePlot(m_host);
+        QCustomPlot* other = makePlot(m_host);
+        // A right-button drag from (20, 8) to (50, 3) in data coordinates.
+        const QPoint a = pixel(p, 20, 8), b = pixel(p, 50, 3);
+        QTest::mousePress(p, Qt::RightButton, Qt::NoModifier, a);
+        QMouseEvent move(QEvent::MouseMove, QPointF(b), QPointF(p->mapToGlobal(b)), Qt::NoButton, Qt::RightButton, Qt::NoModifier);
+        QApplication::sendEvent(p, &move);
+        QTest::mouseRelease(p, Qt::RightButton, Qt::NoModifier, b);
+        // The new ranges are the box, to a pixel.
+        const double px = 100.0 / p->axisRect()->width(), py = 10.0 / p->axisRect()->height();
+        QVERIFY2(std::fabs(p->xAxis->range().lower - 20) <= 1.5 * px, qPrintable(QString::number(p->xAxis->range().lower)));
+        QVERIFY2(std::fabs(p->xAxis->range().upper - 50) <= 1.5 * px, qPrintable(QString::number(p->xAxis->range().upper)));
+        const QString yr = QString("y %1..%2").arg(p->yAxis->range().lower).arg(p->yAxis->range().upper);
+        QVERIFY2(std::fabs(p->yAxis->range().lower - 3) <= 1.5 * py, qPrintable(yr));
+        QVERIFY2(std::fabs(p->yAxis->range().upper - 8) <= 1.5 * py, qPrintable(yr));
+        // Another plot (not linked) did not move.
+        QCOMPARE(other->xAxis->range().lower, 0.0);
+        QCOMPARE(other->xAxis->range().upper, 100.0);
+        // Shift + left drag is a box zoom too.
+        const QPoint c = pixel(p, 30, 7), d = pixel(p, 40, 4);
+        QTest::mousePress(p, Qt::LeftButton, Qt::ShiftModifier, c);
+        QMouseEvent move2(QEvent::MouseMove, QPointF(d), QPointF(p->mapToGlobal(d)), Qt::NoButton, Qt::LeftButton, Qt::ShiftModifier);
+        QApplication::sendEvent(p, &move2);
+        QTest::mouseRelease(p, Qt::LeftButton, Qt::ShiftModifier, d);
+        p->replot();
+        QVERIFY(std::fabs(p->xAxis->range().lower - 30) <= 1.5 * px);
+        QVERIFY(std::fabs(p->xAxis->range().upper - 40) <= 1.5 * px);
+        QVERIFY(std::fabs(p->yAxis->range().lower - 4) <= 1.5 * py);
+        QVERIFY(std::fabs(p->yAxis->range().upper - 7) <= 1.5 * py);
+    }
+
+    void perAxisZoomChangesOnlyThatAxis() {
+        QCustomPlot* p = makePlot(m_host);
+        const QPoint centre = pixel(p, 50, 5);
+        wheel(p, centre, 240, Qt::ShiftModifier);  // x only, zoom in
+        QVERIFY2(p->xAxis->range().size() < 99, qPrintable(QString::number(p->xAxis->range().size())));
+        QCOMPARE(p->yAxis->range().lower, 0.0);
+        QCOMPARE(p->yAxis->range().upper, 10.0);
+        const QCPRange x = p->xAxis->range();
+        wheel(p, centre, 240, Qt::ControlModifier);  // y only
+        QVERIFY(p->yAxis->range().size() < 9.9);
+        QCOMPARE(p->xAxis->range().lower, x.lower);
+        QCOMPARE(p->xAxis->range().upper, x.upper);
+        // The wheel over the y axis (left of the axis rect) zooms y only.
+        p->replot();
+        const QCPRange y = p->yAxis->range();
+        const QPoint onYAxis(p->axisRect()->left() - 10, p->axisRect()->center().y());
+        wheel(p, onYAxis, -240, Qt::NoModifier);  // zoom out
+        QVERIFY(p->yAxis->range().size() > y.size() * 1.1);
+        QCOMPARE(p->xAxis->range().lower, x.lower);
+        // A drag along the x axis (below the axis rect) pans x only.
+        p->replot();
+        const QCPRange y2 = p->yAxis->range(), x2 = p->xAxis->range();
+        const QPoint onXAxis(p->axisRect()->center().x(), p->axisRect()->bottom() + 8);
+        QTest::mousePress(p, Qt::LeftButton, Qt::NoModifier, onXAxis);
+        const QPoint to = onXAxis + QPoint(60, 0);
+        QMouseEvent mv(QEvent::MouseMove, QPointF(to), QPointF(p->mapToGlobal(to)), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(p, &mv);
+        QTest::mouseRelease(p, Qt::LeftButton, Qt::NoModifier, to);
+        QVERIFY(p->xAxis->range().lower < x2.lower);                       // dragged right: earlier x shown
+        QVERIFY(std::fabs(p->xAxis->range().size() - x2.size()) < 1e-9);  // a pan, not a zoom
+        QCOMPARE(p->yAxis->range().lower, y2.lower);
+        QCOMPARE(p->yAxis->range().upper, y2.upper);
+    }
+
+    void resetRestoresAndBackStepsThroughTheHistory() {
+        QCustomPlot* p = makePlot(m_host);
+        PlotKit* kit = plotKit(p);
+        QVERIFY(kit);
+        const QPoint centre = pixel(p, 50, 5);
+        wheel(p, centre, 240, Qt::NoModifier);
+        const QCPRange afterWheel = p->xAxis->range();
+        QVERIFY(afterWheel.size() < 99);
+        kit->zoomToPixels(QRect(pixel(p, afterWheel.lower + 5, 9), pixel(p, afterWheel.lower + 15, 2)));
+        QVERIFY(p->xAxis->range().size() < 11);
+        // Double-click: home, the view the code set.
+        QTest::mouseDClick(p, Qt::LeftButton, Qt::NoModifier, centre);
+        QCOMPARE(p->xAxis->range().lower, 0.0);
+        QCOMPARE(p->xAxis->range().upper, 100.0);
+        QCOMPARE(p->yAxis->range().lower, 0.0);
+        QCOMPARE(p->yAxis->range().upper, 10.0);
+        // Back: the box zoom, then the wheel zoom.
+        QVERIFY(kit->back());
+        QVERIFY(p->xAxis->range().size() < 11);
+        QVERIFY(kit->back());
+        QCOMPARE(p->xAxis->range().lower, afterWheel.lower);
+        QCOMPARE(p->xAxis->range().upper, afterWheel.upper);
+        // The code sets a new view (new data): it becomes the home view.
+        p->xAxis->setRange(200, 300);
+        wheel(p, centre, 240, Qt::ShiftModifier);
+        QVERIFY(p->xAxis->range().size() < 99);
+        p->setFocus();
+        QTest::keyClick(p, Qt::Key_Home);
+        QCOMPARE(p->xAxis->range().lower, 200.0);
+        QCOMPARE(p->xAxis->range().upper, 300.0);
+    }
+
+    void exportsAreValidFiles() {
+        QCustomPlot* p = makePlot(m_host);
+        QString err;
+        const QString png = m_dir.filePath("plot.png"), svg = m_dir.filePath("plot.svg"), pdf = m_dir.filePath("plot.pdf");
+        QVERIFY2(exportPlot(p, png, &err), qPrintable(err));
+        QVERIFY2(exportPlot(p, svg, &err), qPrintable(err));
+        QVERIFY2(exportPlot(p, pdf, &err), qPrintable(err));
+        QCOMPARE(head(png, 8), QByteArray("\x89PNG\r\n\x1a\n", 8));
+        QVERIFY(QFileInfo(png).size() > 2000);
+        QImage img(png);
+        QCOMPARE(img.size(), p->size());
+        // Not blank: the plot's lines are drawn (more than two colours).
+        QSet<QRgb> colours;
+        for (int y = 0; y < img.height(); y += 3)
+            for (int x = 0; x < img.width(); x += 3) colours.insert(img.pixel(x, y));
+        QVERIFY(colours.size() > 5);
+        const QByteArray s = lwbtest::readAll(svg);
+        QVERIFY(s.startsWith("<?xml"));
+        QVERIFY(s.contains("<svg"));
+        QVERIFY(s.contains("</svg>"));
+        QVERIFY(s.contains("sine"));  // the legend text is text, not pixels
+        QCOMPARE(head(pdf, 5), QByteArray("%PDF-"));
+        const QByteArray d = lwbtest::readAll(pdf);
+        QVERIFY(d.size() > 1000);
+        QVERIFY(d.trimmed().endsWith("%%EOF"));
+        // An unknown format is refused, naming the file, and writes nothing.
+        QVERIFY(!exportPlot(p, m_dir.filePath("plot.bmpx"), &err));
+        QVERIFY(err.contains("plot.bmpx"));
+        QVERIFY(!QFile::exists(m_dir.filePath("plot.bmpx")));
+        // An unwritable place: an error, no crash.
+        QVERIFY(!exportPlot(p, m_dir.filePath("no/such/dir/plot.png"), &err));
+        QVERIFY(err.contains("plot.png"));
+    }
+
+    void legendClickHidesAndShowsItsSeries() {
+        QCustomPlot* p = makePlot(m_host);
+        QCPGraph* sine = p->graph(0);
+        QCPPlottableLegendItem* item = p->legend->itemWithPlottable(sine);
+        QVERIFY(item);
+        const QPoint at = item->rect().center();
+        QTest::mouseClick(p, Qt::LeftButton, Qt::NoModifier, at);
+        QVERIFY(!sine->visible());
+        QVERIFY(p->graph(1)->visible());
+        QVERIFY(plotKit(p)->isSeriesHidden("sine"));
+        // Kept hidden when the workspace rebuilds its series (same name).
+        p->clearGraphs();
+        QCPGraph* again = p->addGraph();
+        again->setName("sine");
+        p->replot();
+        QVERIFY(!again->visible());
+        QCPPlottableLegendItem* item2 = p->legend->itemWithPlottable(again);
+        QTest::mouseClick(p, Qt::LeftButton, Qt::NoModifier, item2->rect().center());
+        QVERIFY(again->visible());
+    }
+
+    void linkedPlotsFollowTheMastersXRange() {
+        QCustomPlot* master = makePlot(m_host);
+        QCustomPlot* follower = makePlot(m_host);
+        linkXRange(master, follower);
+        follower->yAxis->setRange(-1, 1);
+        wheel(master, pixel(master, 30, 5), 240, Qt::NoModifier);
+        QCOMPARE(follower->xAxis->range().lower, master->xAxis->range().lower);
+        QCOMPARE(follower->xAxis->range().upper, master->xAxis->range().upper);
+        QCOMPARE(follower->yAxis->range().lower, -1.0);  // its own y stays
+    }
+
+    void utcTimeAxisReadsClockTimeAndDate() {
+        QCOMPARE(utcClock(0), QString("00:00:00"));
+        QCOMPARE(utcClock(42500), QString("11:48:20"));
+        QCOMPARE(utcClock(86399.9996, 3), QString("00:00:00.000"));  // rounds into the next day
+        QCOMPARE(utcClock(86400 + 61.25, 2), QString("00:01:01.25"));
+        QCustomPlot* p = makePlot(m_host);
+        setUtcTimeAxis(p->xAxis, QDate(2021, 9, 5));
+        QVERIFY(p->xAxis->label().contains("2021-09-05"));
+        QVERIFY(p->xAxis->label().contains("UTC"));
+        p->xAxis->setRange(42500, 42800);
+        p->replot();
+        const QVector<QString> labels = p->xAxis->tickVectorLabels();
+        QVERIFY(!labels.isEmpty());
+        for (const QString& l : labels) QVERIFY2(QRegularExpression("^\\d\\d:\\d\\d:\\d\\d$").match(l).hasMatch(), qPrintable(l));
+        // Zoomed to 2 s: fractions of a second.
+        p->xAxis->setRange(42500, 42502);
+        p->replot();
+        QVERIFY(p->xAxis->tickVectorLabels().first().contains('.'));
+        setUtcTimeAxis(p->xAxis, QDate(2021, 9, 5), TimeAxisMode::SecondsOfDay);
+        p->xAxis->setRange(42500, 42800);
+        p->replot();
+        QVERIFY(!p->xAxis->tickVectorLabels().first().contains(':'));
+        QVERIFY(p->xAxis->label().contains("seconds of day"));
+    }
+
+    void plotsFollowTheTheme() {
+        QCustomPlot* p = makePlot(m_host);
+        p->graph(0)->setPen(QPen(Qt::black));
+        setPlotTheme(true);
+        p->replot();
+        QVERIFY(p->toPixmap(200, 150).toImage().pixelColor(2, 2).lightness() < 80);
+        QVERIFY(p->xAxis->tickLabelColor().lightness() > 170);
+        QVERIFY(p->graph(0)->pen().color().lightness() > 170);  // black ink turned light
+        setPlotTheme(false);
+        p->replot();
+        QVERIFY(p->toPixmap(200, 150).toImage().pixelColor(2, 2).lightness() > 200);
+        QCOMPARE(p->graph(0)->pen().color(), QColor(Qt::black));
+    }
+
+    void calibrationAndRadiometryPlotsCarryTheKit() {
+        auto* calib = new CalibWorkspace(m_host);
+        for (QCustomPlot* p : {calib->energyPlot(), calib->centrePlot(), calib->pointingConvergencePlot(),
+                               calib->detectorConvergencePlot(), calib->waveformPlot()})
+            QVERIFY(plotKit(p));
+        auto* rad = new RadiometryWorkspace(m_host);
+        for (QCustomPlot* p : {rad->dnPlot(), rad->reflectancePlot(), rad->fitPlot()}) QVERIFY(plotKit(p));
+        // The image plots have their colour bar beside the axis rect, in one shared style.
+        for (QCustomPlot* p : {calib->energyPlot(), rad->dnPlot(), rad->reflectancePlot()}) {
+            bool scale = false;
+            for (QCPLayoutElement* e : p->plotLayout()->elements(true)) scale |= qobject_cast<QCPColorScale*>(e) != nullptr;
+            QVERIFY(scale);
+        }
+    }
+};
+
+QTEST_MAIN(TestPlotKit)
+#include "test_plot_kit.moc"

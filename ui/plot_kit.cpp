@@ -1,0 +1,598 @@
+#include "ui/plot_kit.hpp"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QKeyEvent>
+#include <QMenu>
+#include <QMessageBox>
+#include <QMouseEvent>
+#include <QPdfWriter>
+#include <QPointer>
+#include <QRegularExpression>
+#include <QRubberBand>
+#include <QSaveFile>
+#include <QSettings>
+#include <QSvgGenerator>
+#include <QWheelEvent>
+#include <cmath>
+#include <qcustomplot.h>
+
+namespace lwb::ui {
+
+namespace {
+
+bool g_dark = false;
+
+struct Theme {
+    QColor background, text, axis, grid, subGrid, legendBrush, legendBorder, noData, hiddenText, ink;
+};
+
+Theme theme() {
+    if (g_dark)
+        return {QColor(37, 40, 44),  QColor(222, 222, 222), QColor(165, 165, 165), QColor(78, 82, 88),
+                QColor(58, 61, 66),  QColor(45, 48, 53, 220), QColor(100, 100, 100), QColor(70, 72, 76),
+                QColor(120, 120, 120), QColor(231, 231, 231)};
+    return {Qt::white, QColor(20, 20, 20), QColor(40, 40, 40), QColor(200, 200, 200), QColor(225, 225, 225),
+            QColor(255, 255, 255, 215), QColor(180, 180, 180), QColor(222, 222, 222), QColor(170, 170, 170), Qt::black};
+}
+
+// The ink of series drawn "in black": black on light plots, near-white on dark ones.
+const QColor kLightInk(231, 231, 231);
+QColor swapInk(const QColor& c) {
+    if (g_dark && c == QColor(Qt::black)) return kLightInk;
+    if (!g_dark && c == kLightInk) return Qt::black;
+    return c;
+}
+
+QPen inked(QPen p) {
+    p.setColor(swapInk(p.color()));
+    return p;
+}
+
+// Ticks as hh:mm:ss of UTC for seconds of day, wrapping after midnight.
+class UtcTicker : public QCPAxisTicker {
+protected:
+    QString getTickLabel(double tick, const QLocale&, QChar, int) override {
+        // Decimals of the second as the tick step needs them.
+        const double step = m_step > 0 ? m_step : 1;
+        const int decimals = step >= 1 ? 0 : std::min(6, int(std::ceil(-std::log10(step) - 1e-9)));
+        return utcClock(tick, decimals);
+    }
+    double getTickStep(const QCPRange& range) override {
+        const double ideal = range.size() / double(mTickCount + 1e-10);
+        if (ideal >= 1) {
+            const double steps[] = {1, 2, 5, 10, 15, 20, 30, 60, 120, 300, 600, 900, 1200, 1800, 3600, 7200, 10800, 21600, 43200, 86400};
+            for (double s : steps)
+                if (s >= ideal) return m_step = s;
+            return m_step = 86400 * std::ceil(ideal / 86400);
+        }
+        const double mag = std::pow(10.0, std::floor(std::log10(ideal)));
+        const double m = ideal / mag;
+        return m_step = (m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * mag;
+    }
+
+private:
+    double m_step = 1;
+};
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+QString utcClock(double s, int decimals) {
+    if (!std::isfinite(s)) return QString();
+    double t = std::fmod(s, 86400.0);
+    if (t < 0) t += 86400;
+    const double scale = std::pow(10.0, decimals);
+    // Round once, on the whole value, so 59.9996 s shows as the next minute.
+    const qint64 units = qint64(std::llround(t * scale)) % qint64(86400 * scale);
+    const qint64 whole = qint64(units / scale);
+    QString out = QString("%1:%2:%3")
+                      .arg(whole / 3600, 2, 10, QChar('0'))
+                      .arg((whole / 60) % 60, 2, 10, QChar('0'))
+                      .arg(whole % 60, 2, 10, QChar('0'));
+    if (decimals > 0) out += QString(".%1").arg(units % qint64(scale), decimals, 10, QChar('0'));
+    return out;
+}
+
+void setUtcTimeAxis(QCPAxis* axis, const QDate& day, TimeAxisMode mode, const QString& what) {
+    const QString date = day.isValid() ? day.toString(Qt::ISODate) : QObject::tr("date unknown");
+    const QString lead = what.isEmpty() ? QString() : what + ", ";
+    if (mode == TimeAxisMode::Utc) {
+        axis->setTicker(QSharedPointer<QCPAxisTicker>(new UtcTicker));
+        axis->setLabel(QObject::tr("%1UTC on %2 (hh:mm:ss)").arg(lead, date));
+    } else {
+        axis->setTicker(QSharedPointer<QCPAxisTicker>(new QCPAxisTicker));
+        axis->setLabel(QObject::tr("%1seconds of day, UTC %2 (s)").arg(lead, date));
+    }
+}
+
+QCPColorGradient gradientFor(ColorMap map) {
+    QCPColorGradient g;
+    g.clearColorStops();
+    for (int i = 0; i <= 16; ++i) g.setColorStopAt(i / 16.0, QColor(mapColor(map, i / 16.0)));
+    g.setNanHandling(QCPColorGradient::nhTransparent);
+    return g;
+}
+
+void legendBelow(QCustomPlot* p, int columns) {
+    p->legend->setVisible(true);
+    p->legend->setWrap(columns);
+    p->legend->setFillOrder(QCPLegend::foColumnsFirst, true);
+    if (p->axisRect()->insetLayout()->elements(false).contains(p->legend)) {
+        p->axisRect()->insetLayout()->take(p->legend);
+        const int row = p->plotLayout()->rowCount();
+        p->plotLayout()->addElement(row, 0, p->legend);
+        p->plotLayout()->setRowStretchFactor(row, 0.001);
+    }
+    p->legend->setBorderPen(Qt::NoPen);
+    p->legend->setBrush(Qt::NoBrush);
+    p->setProperty("lwbLegendBelow", true);
+}
+
+QCustomPlot* newPlot(QWidget* parent, const QString& title, const QString& x, const QString& y, const PlotKitOptions& options) {
+    auto* p = new QCustomPlot(parent);
+    p->setMinimumSize(200, 150);
+    p->xAxis->setLabel(x);
+    p->yAxis->setLabel(y);
+    p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    if (!title.isEmpty()) {
+        p->plotLayout()->insertRow(0);
+        QFont f = p->font();
+        f.setBold(true);
+        f.setPointSizeF(f.pointSizeF() * 0.95);
+        auto* t = new QCPTextElement(p, title, f);
+        t->setObjectName("title");
+        p->plotLayout()->addElement(0, 0, t);
+    }
+    p->legend->setFont(QFont(p->font().family(), 8));
+    installPlotKit(p, options);
+    return p;
+}
+
+ImageMap addImageMap(QCustomPlot* p, const QString& label, bool yDown) {
+    ImageMap im;
+    if (yDown) p->yAxis->setRangeReversed(true);
+    im.map = new QCPColorMap(p->xAxis, p->yAxis);
+    im.map->setInterpolate(false);
+    im.map->setTightBoundary(false);
+    im.map->removeFromLegend();
+    im.scale = new QCPColorScale(p);
+    im.scale->setType(QCPAxis::atRight);
+    im.scale->setLabel(label);
+    im.scale->setBarWidth(12);
+    // Beside the axis rect, in its row (under a title row when there is one).
+    int row = 0;
+    for (int r = 0; r < p->plotLayout()->rowCount(); ++r)
+        if (p->plotLayout()->element(r, 0) == p->axisRect()) row = r;
+    p->plotLayout()->addElement(row, 1, im.scale);
+    im.map->setColorScale(im.scale);
+    auto* group = new QCPMarginGroup(p);
+    p->axisRect()->setMarginGroup(QCP::msBottom | QCP::msTop, group);
+    im.scale->setMarginGroup(QCP::msBottom | QCP::msTop, group);
+    p->setProperty("lwbImage", true);
+    if (PlotKit* k = plotKit(p)) k->applyTheme();
+    return im;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+bool exportPlot(QCustomPlot* plot, const QString& path, QString* error, int width, int height) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    const int w = width > 0 ? width : std::max(plot->width(), 100);
+    const int h = height > 0 ? height : std::max(plot->height(), 80);
+    QSaveFile f(path);
+    auto fail = [&](const QString& why) {
+        f.cancelWriting();
+        if (error) *error = QObject::tr("%1: %2").arg(path, why);
+        return false;
+    };
+    if (suffix != "png" && suffix != "svg" && suffix != "pdf")
+        return fail(QObject::tr("unknown plot format \"%1\" (use .png, .svg or .pdf)").arg(suffix));
+    if (!f.open(QIODevice::WriteOnly)) return fail(f.errorString());
+    plot->replot(QCustomPlot::rpImmediateRefresh);  // lays out with the current data
+    if (suffix == "png") {
+        const QPixmap pm = plot->toPixmap(w, h, 1.0);
+        if (pm.isNull() || !pm.save(&f, "PNG")) return fail(QObject::tr("cannot render the plot as PNG"));
+    } else if (suffix == "svg") {
+        QSvgGenerator gen;
+        gen.setOutputDevice(&f);
+        gen.setSize(QSize(w, h));
+        gen.setViewBox(QRect(0, 0, w, h));
+        gen.setTitle(QFileInfo(path).completeBaseName());
+        gen.setDescription(QObject::tr("Laser Workbench plot"));
+        QCPPainter painter;
+        if (!painter.begin(&gen)) return fail(QObject::tr("cannot start the SVG painter"));
+        painter.setMode(QCPPainter::pmVectorized);
+        plot->toPainter(&painter, w, h);
+        painter.end();
+    } else {
+        QPdfWriter pdf(&f);
+        pdf.setCreator(QObject::tr("Laser Workbench"));
+        pdf.setResolution(72);  // one device unit = one point = one screen pixel of the plot
+        pdf.setPageSize(QPageSize(QSizeF(w, h), QPageSize::Point, QString(), QPageSize::ExactMatch));
+        pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+        QCPPainter painter;
+        if (!painter.begin(&pdf)) return fail(QObject::tr("cannot start the PDF painter"));
+        painter.setMode(QCPPainter::pmVectorized);
+        plot->toPainter(&painter, w, h);
+        painter.end();
+    }
+    if (!f.commit()) return fail(f.errorString());
+    plot->replot(QCustomPlot::rpQueuedReplot);
+    return true;
+}
+
+void copyPlotToClipboard(QCustomPlot* plot) {
+    QApplication::clipboard()->setPixmap(plot->toPixmap(plot->width(), plot->height(), plot->devicePixelRatioF()));
+}
+
+// ---------------------------------------------------------------------------------------------
+
+void setPlotTheme(bool dark) {
+    g_dark = dark;
+    for (QWidget* w : QApplication::allWidgets())
+        if (auto* p = qobject_cast<QCustomPlot*>(w))
+            if (PlotKit* k = plotKit(p)) {
+                k->applyTheme();
+                p->replot(QCustomPlot::rpQueuedReplot);
+            }
+}
+
+bool plotThemeDark() { return g_dark; }
+
+void linkXRange(QCustomPlot* master, QCustomPlot* follower) {
+    QPointer<QCustomPlot> f(follower);
+    QObject::connect(master->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), follower, [f](const QCPRange& r) {
+        if (!f || f->xAxis->range() == r) return;
+        f->xAxis->setRange(r);
+        f->replot(QCustomPlot::rpQueuedReplot);
+    });
+}
+
+PlotKit* plotKit(const QCustomPlot* plot) { return plot ? plot->findChild<PlotKit*>(QString(), Qt::FindDirectChildrenOnly) : nullptr; }
+
+PlotKit* installPlotKit(QCustomPlot* plot, const PlotKitOptions& options) {
+    if (PlotKit* k = plotKit(plot)) {
+        k->setOptions(options);
+        return k;
+    }
+    return new PlotKit(plot, options);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+PlotKit::PlotKit(QCustomPlot* plot, const PlotKitOptions& options) : QObject(plot), m_plot(plot), m_options(options) {
+    plot->installEventFilter(this);
+    plot->setFocusPolicy(Qt::ClickFocus);
+    plot->setContextMenuPolicy(Qt::PreventContextMenu);  // the kit's own menu, on a right click
+    // No tooltip over the whole plot (it would cover the data); the gestures are in the
+    // right-click menu, Help ▸ Keyboard shortcuts and the user guide.
+    connect(plot, &QCustomPlot::legendClick, this, [this](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent* e) {
+        if (m_options.legendToggle && item && e->button() == Qt::LeftButton) legendClicked(item);
+    });
+    connect(plot, &QCustomPlot::beforeReplot, this, &PlotKit::applyTheme);
+    applyTheme();
+}
+
+PlotKit::Snapshot PlotKit::snapshot() const {
+    Snapshot s;
+    for (QCPAxis* a : m_plot->axisRect()->axes()) s.append({a, {a->range().lower, a->range().upper}});
+    return s;
+}
+
+void PlotKit::restore(const Snapshot& s) {
+    const QList<QCPAxis*> live = m_plot->axisRect()->axes();
+    for (const auto& e : s)
+        if (live.contains(e.first)) e.first->setRange(e.second.first, e.second.second);
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+    m_lastUser = snapshot();
+}
+
+bool PlotKit::sameView(const Snapshot& a, const Snapshot& b) const {
+    if (a.size() != b.size()) return false;
+    for (int i = 0; i < a.size(); ++i) {
+        if (a[i].first != b[i].first) return false;
+        const double tol = 1e-9 * std::max(1e-300, std::fabs(a[i].second.second - a[i].second.first));
+        if (std::fabs(a[i].second.first - b[i].second.first) > tol || std::fabs(a[i].second.second - b[i].second.second) > tol)
+            return false;
+    }
+    return true;
+}
+
+void PlotKit::beginUserChange() {
+    const Snapshot now = snapshot();
+    if (!m_haveHome || !sameView(now, m_lastUser)) {
+        // The code set this view since the user last zoomed: it is the new home, the old
+        // history is of other data.
+        m_home = now;
+        m_haveHome = true;
+        m_history.clear();
+    }
+    if (!m_history.empty() && sameView(m_history.back(), now)) return;  // already the last step
+    m_history.push_back(now);
+    if (m_history.size() > 100) m_history.erase(m_history.begin());
+}
+
+void PlotKit::endUserChange() {
+    m_lastUser = snapshot();
+    // A gesture that changed nothing (a click) leaves no history step.
+    if (!m_history.empty() && sameView(m_history.back(), m_lastUser)) m_history.pop_back();
+}
+
+void PlotKit::zoomToPixels(const QRect& r0) {
+    const QRect r = r0.normalized().intersected(m_plot->axisRect()->rect());
+    if (r.width() < 3 || r.height() < 3) return;
+    beginUserChange();
+    for (QCPAxis* a : m_plot->axisRect()->axes()) {
+        const bool horizontal = a->orientation() == Qt::Horizontal;
+        const double c0 = a->pixelToCoord(horizontal ? r.left() : r.top());
+        const double c1 = a->pixelToCoord(horizontal ? r.right() : r.bottom());
+        a->setRange(std::min(c0, c1), std::max(c0, c1));
+    }
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+    endUserChange();
+}
+
+void PlotKit::zoomAxes(Qt::Orientations which, double factor, const QPoint& centre) {
+    for (QCPAxis* a : m_plot->axisRect()->axes())
+        if (which.testFlag(a->orientation()))
+            a->scaleRange(factor, a->pixelToCoord(a->orientation() == Qt::Horizontal ? centre.x() : centre.y()));
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void PlotKit::home() {
+    beginUserChange();  // the current view, so that back() returns to it
+    if (m_options.home) m_options.home();
+    else restore(m_home);
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+    endUserChange();
+}
+
+bool PlotKit::back() {
+    if (m_history.empty()) return false;
+    const Snapshot s = m_history.back();
+    m_history.pop_back();
+    restore(s);
+    return true;
+}
+
+QCPAxis* PlotKit::axisAt(const QPoint& pos) const {
+    if (m_plot->axisRect()->rect().contains(pos)) return nullptr;
+    for (QCPAxis* a : m_plot->axisRect()->axes())
+        if (a->visible() && a->selectTest(pos, false) >= 0) return a;
+    return nullptr;
+}
+
+void PlotKit::setSeriesHidden(const QString& name, bool hidden) {
+    if (hidden) m_hidden.insert(name);
+    else m_hidden.remove(name);
+    for (int i = 0; i < m_plot->plottableCount(); ++i)
+        if (m_plot->plottable(i)->name() == name) m_plot->plottable(i)->setVisible(!hidden);
+    applyTheme();
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void PlotKit::legendClicked(QCPAbstractLegendItem* item) {
+    auto* pli = qobject_cast<QCPPlottableLegendItem*>(item);
+    if (!pli) return;
+    const QString name = pli->plottable()->name();
+    setSeriesHidden(name, !m_hidden.contains(name));
+}
+
+void PlotKit::applyTheme() {
+    const Theme t = theme();
+    QCustomPlot* p = m_plot;
+    p->setBackground(t.background);
+    auto styleAxis = [&](QCPAxis* a) {
+        a->setBasePen(QPen(t.axis, 1));
+        a->setTickPen(QPen(t.axis, 1));
+        a->setSubTickPen(QPen(t.axis, 1));
+        a->setTickLabelColor(t.text);
+        a->setLabelColor(t.text);
+        a->grid()->setPen(QPen(t.grid, 1, Qt::DotLine));
+        a->grid()->setSubGridPen(QPen(t.subGrid, 1, Qt::DotLine));
+        a->grid()->setZeroLinePen(QPen(t.grid, 1));
+    };
+    for (QCPAxisRect* r : p->axisRects()) {
+        for (QCPAxis* a : r->axes()) styleAxis(a);
+        r->setBackground(p->property("lwbImage").toBool() ? QBrush(t.noData) : QBrush(Qt::NoBrush));
+    }
+    for (QCPLayoutElement* e : p->plotLayout()->elements(true)) {
+        if (auto* te = qobject_cast<QCPTextElement*>(e)) te->setTextColor(t.text);
+        if (auto* cs = qobject_cast<QCPColorScale*>(e)) styleAxis(cs->axis());
+    }
+    if (!p->property("lwbLegendBelow").toBool()) {
+        p->legend->setBrush(t.legendBrush);
+        p->legend->setBorderPen(QPen(t.legendBorder));
+    }
+    p->legend->setTextColor(t.text);
+    // Series: the hidden ones (by name, so a rebuild keeps them hidden), black ink swapped.
+    for (int i = 0; i < p->plottableCount(); ++i) {
+        QCPAbstractPlottable* pl = p->plottable(i);
+        if (!pl->name().isEmpty() && m_hidden.contains(pl->name())) pl->setVisible(false);
+        pl->setPen(inked(pl->pen()));
+        if (auto* g = qobject_cast<QCPGraph*>(pl)) {
+            QCPScatterStyle ss = g->scatterStyle();
+            if (ss.pen().color() == QColor(Qt::black) || ss.pen().color() == kLightInk) {
+                ss.setPen(inked(ss.pen()));
+                g->setScatterStyle(ss);
+            }
+        }
+        if (QCPPlottableLegendItem* li = p->legend->itemWithPlottable(pl))
+            li->setTextColor(m_hidden.contains(pl->name()) ? t.hiddenText : t.text);
+    }
+    // Labels drawn on the plot.
+    for (int i = 0; i < p->itemCount(); ++i)
+        if (auto* it = qobject_cast<QCPItemText*>(p->item(i))) it->setColor(t.text);
+}
+
+QString PlotKit::defaultName() const {
+    if (!m_options.exportName.isEmpty()) return m_options.exportName;
+    for (QCPLayoutElement* e : m_plot->plotLayout()->elements(true))
+        if (auto* te = qobject_cast<QCPTextElement*>(e)) {
+            QString s = te->text().toLower();
+            s.replace(QRegularExpression("[^a-z0-9]+"), "-");
+            s = s.mid(0, 48);
+            while (s.endsWith('-')) s.chop(1);
+            while (s.startsWith('-')) s.remove(0, 1);
+            if (!s.isEmpty()) return s;
+        }
+    return QStringLiteral("plot");
+}
+
+void PlotKit::exportDialog(PlotFormat format) {
+    const QString ext = format == PlotFormat::Png ? "png" : format == PlotFormat::Svg ? "svg" : "pdf";
+    const QString filter = format == PlotFormat::Png   ? tr("PNG image (*.png)")
+                           : format == PlotFormat::Svg ? tr("SVG drawing (*.svg)")
+                                                       : tr("PDF document (*.pdf)");
+    QSettings st;
+    const QString dir = st.value("paths/plotExport").toString();
+    QString path = QFileDialog::getSaveFileName(m_plot, tr("Export the plot"), QDir(dir).filePath(defaultName() + "." + ext), filter);
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().toLower() != ext) path += "." + ext;
+    st.setValue("paths/plotExport", QFileInfo(path).absolutePath());
+    QString err;
+    if (!exportPlot(m_plot, path, &err)) QMessageBox::warning(m_plot, tr("Cannot export the plot"), err);
+}
+
+void PlotKit::showMenu(const QPoint& globalPos) {
+    QMenu menu(m_plot);
+    menu.addAction(tr("Reset view\tHome / double-click"), this, &PlotKit::home);
+    menu.addAction(tr("Back\tBackspace"), this, [this] { back(); })->setEnabled(!m_history.empty());
+    menu.addAction(tr("Box zoom (next drag)\tright-drag / Shift+drag"), this, [this] { m_boxNext = true; });
+    if (!m_hidden.isEmpty())
+        menu.addAction(tr("Show all series"), this, [this] {
+            const QSet<QString> names = m_hidden;
+            for (const QString& n : names) setSeriesHidden(n, false);
+        });
+    menu.addSeparator();
+    menu.addAction(tr("Export as PNG…"), this, [this] { exportDialog(PlotFormat::Png); });
+    menu.addAction(tr("Export as SVG…"), this, [this] { exportDialog(PlotFormat::Svg); });
+    menu.addAction(tr("Export as PDF…"), this, [this] { exportDialog(PlotFormat::Pdf); });
+    menu.addAction(tr("Copy to clipboard"), this, [this] { copyPlotToClipboard(m_plot); });
+    menu.exec(globalPos);
+}
+
+bool PlotKit::eventFilter(QObject* o, QEvent* e) {
+    if (o != m_plot) return false;
+    switch (e->type()) {
+    case QEvent::Wheel: {
+        auto* we = static_cast<QWheelEvent*>(e);
+        const QPoint pos = we->position().toPoint();
+        const int delta = we->angleDelta().y() != 0 ? we->angleDelta().y() : we->angleDelta().x();
+        if (delta == 0) return true;
+        Qt::Orientations which = Qt::Horizontal | Qt::Vertical;
+        if (QCPAxis* a = axisAt(pos)) which = a->orientation();
+        else if (!m_plot->axisRect()->rect().contains(pos)) return false;  // over the legend, the colour bar
+        if (we->modifiers() & Qt::ShiftModifier) which = Qt::Horizontal;
+        else if (we->modifiers() & Qt::ControlModifier) which = Qt::Vertical;
+        // One history step per wheel gesture (a pause of 0.6 s starts a new one).
+        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        if (now - m_lastWheelMs > 600 || !sameView(snapshot(), m_lastUser)) beginUserChange();
+        m_lastWheelMs = now;
+        zoomAxes(which, std::pow(0.85, delta / 120.0), pos);
+        endUserChange();
+        return true;
+    }
+    case QEvent::MouseButtonPress: {
+        auto* me = static_cast<QMouseEvent*>(e);
+        const QPoint pos = me->position().toPoint();
+        m_pressPos = pos;
+        if (me->button() == Qt::RightButton) {
+            m_rightPress = true;
+            m_drag = Drag::Box;
+            return true;
+        }
+        if (me->button() != Qt::LeftButton) return false;
+        if (m_boxNext || ((me->modifiers() & Qt::ShiftModifier) && m_plot->selectionRectMode() == QCP::srmNone &&
+                          m_plot->axisRect()->rect().contains(pos))) {
+            m_boxNext = false;
+            m_drag = Drag::Box;
+            return true;
+        }
+        if (QCPAxis* a = axisAt(pos)) {
+            m_drag = Drag::Axis;
+            m_dragAxis = a;
+            beginUserChange();
+            m_dragLower = a->range().lower;
+            m_dragUpper = a->range().upper;
+            return true;
+        }
+        if (m_plot->axisRect()->rect().contains(pos)) {
+            m_drag = Drag::Pan;
+            beginUserChange();
+        }
+        return false;
+    }
+    case QEvent::MouseMove: {
+        auto* me = static_cast<QMouseEvent*>(e);
+        const QPoint pos = me->position().toPoint();
+        if (m_drag == Drag::Box) {
+            if ((pos - m_pressPos).manhattanLength() < 5 && !m_band) return true;
+            if (!m_band) m_band = new QRubberBand(QRubberBand::Rectangle, m_plot);
+            m_band->setGeometry(QRect(m_pressPos, pos).normalized());
+            m_band->show();
+            return true;
+        }
+        if (m_drag == Drag::Axis && m_dragAxis) {
+            QCPAxis* a = m_dragAxis;
+            a->setRange(m_dragLower, m_dragUpper);
+            const bool h = a->orientation() == Qt::Horizontal;
+            const double c0 = a->pixelToCoord(h ? m_pressPos.x() : m_pressPos.y());
+            const double c1 = a->pixelToCoord(h ? pos.x() : pos.y());
+            if (a->scaleType() == QCPAxis::stLogarithmic && c0 > 0 && c1 > 0) a->setRange(m_dragLower * c0 / c1, m_dragUpper * c0 / c1);
+            else a->setRange(m_dragLower + c0 - c1, m_dragUpper + c0 - c1);
+            m_plot->replot(QCustomPlot::rpQueuedReplot);
+            return true;
+        }
+        return false;
+    }
+    case QEvent::MouseButtonRelease: {
+        auto* me = static_cast<QMouseEvent*>(e);
+        const QPoint pos = me->position().toPoint();
+        const Drag drag = m_drag;
+        m_drag = Drag::None;
+        if (drag == Drag::Box) {
+            const bool wasBand = m_band && m_band->isVisible();
+            if (m_band) m_band->hide();
+            if (wasBand || (pos - m_pressPos).manhattanLength() >= 5) zoomToPixels(QRect(m_pressPos, pos));
+            else if (m_rightPress) showMenu(m_plot->mapToGlobal(pos));
+            m_rightPress = false;
+            return true;
+        }
+        if (drag == Drag::Axis) {
+            m_dragAxis = nullptr;
+            endUserChange();
+            return true;
+        }
+        if (drag == Drag::Pan) endUserChange();
+        return false;
+    }
+    case QEvent::MouseButtonDblClick: {
+        auto* me = static_cast<QMouseEvent*>(e);
+        if (me->button() == Qt::LeftButton) home();
+        return false;
+    }
+    case QEvent::KeyPress: {
+        auto* ke = static_cast<QKeyEvent*>(e);
+        if (ke->key() == Qt::Key_Home) {
+            home();
+            return true;
+        }
+        if (ke->key() == Qt::Key_Backspace) {
+            back();
+            return true;
+        }
+        return false;
+    }
+    default:
+        return false;
+    }
+}
+
+}  // namespace lwb::ui
