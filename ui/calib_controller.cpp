@@ -248,17 +248,26 @@ bool CalibController::setInputs(const CalibInputs& in, QString* error) {
     return true;
 }
 
-bool CalibController::openDetectors(const QString& path, QString* error) {
-    CalibInputs in = inputs();
-    in.detectors = path;
+// Loads the given parts of `in` over a copy of the current inputs and adopts it; on an error
+// the inputs stay. Returns the new data (null on error).
+std::shared_ptr<const CalibData> CalibController::replaceParts(const CalibInputs& in, std::initializer_list<int> parts,
+                                                              QString* error) {
     auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::Detectors, in, d.get(), error)) return false;
+    for (int p : parts)
+        if (!loadPart(static_cast<Part>(p), in, d.get(), error)) return nullptr;
     d->inputs = in;
     m_data = d;
     emit inputsChanged();
-    emit status(tr("%1: %2 detectors").arg(QFileInfo(path).fileName()).arg(d->array.detectors.size()));
     schedule();
-    return true;
+    return d;
+}
+
+bool CalibController::openDetectors(const QString& path, QString* error) {
+    CalibInputs in = inputs();
+    in.detectors = path;
+    const auto d = replaceParts(in, {int(Part::Detectors)}, error);
+    if (d) emit status(tr("%1: %2 detectors").arg(QFileInfo(path).fileName()).arg(d->array.detectors.size()));
+    return d != nullptr;
 }
 
 bool CalibController::openControlPoints(const QString& path, const QString& beamsPath, QString* error) {
@@ -275,14 +284,10 @@ bool CalibController::openControlPoints(const QString& path, const QString& beam
             return false;
         }
     }
-    auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::ControlPoints, in, d.get(), error)) return false;
-    d->inputs = in;
-    m_data = d;
-    emit inputsChanged();
-    emit status(tr("%1: %2 control points, %3 beams").arg(QFileInfo(path).fileName()).arg(d->points.size()).arg(d->beams.size()));
-    schedule();
-    return true;
+    const auto d = replaceParts(in, {int(Part::ControlPoints)}, error);
+    if (d)
+        emit status(tr("%1: %2 control points, %3 beams").arg(QFileInfo(path).fileName()).arg(d->points.size()).arg(d->beams.size()));
+    return d != nullptr;
 }
 
 bool CalibController::openCheckPoints(const QString& path, QString* error) {
@@ -290,51 +295,28 @@ bool CalibController::openCheckPoints(const QString& path, QString* error) {
     in.checkPoints = path;
     in.differences.clear();  // the statistics follow the check points now
     in.groupColumn.clear();
-    auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::CheckPoints, in, d.get(), error) || !loadPart(Part::Differences, in, d.get(), error)) return false;
-    d->inputs = in;
-    m_data = d;
-    emit inputsChanged();
-    schedule();
-    return true;
+    return replaceParts(in, {int(Part::CheckPoints), int(Part::Differences)}, error) != nullptr;
 }
 
 bool CalibController::openDifferences(const QString& path, const QString& groupColumn, QString* error) {
     CalibInputs in = inputs();
     in.differences = path;
     in.groupColumn = groupColumn;
-    auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::Differences, in, d.get(), error)) return false;
-    d->inputs = in;
-    m_data = d;
-    emit inputsChanged();
-    emit status(tr("%1: %2 group(s) of differences").arg(QFileInfo(path).fileName()).arg(d->differences.size()));
-    schedule();
-    return true;
+    const auto d = replaceParts(in, {int(Part::Differences)}, error);
+    if (d) emit status(tr("%1: %2 group(s) of differences").arg(QFileInfo(path).fileName()).arg(d->differences.size()));
+    return d != nullptr;
 }
 
 bool CalibController::openWaveform(const QString& path, QString* error) {
     CalibInputs in = inputs();
     in.waveform = path;
-    auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::Waveform, in, d.get(), error)) return false;
-    d->inputs = in;
-    m_data = d;
-    emit inputsChanged();
-    schedule();
-    return true;
+    return replaceParts(in, {int(Part::Waveform)}, error) != nullptr;
 }
 
 bool CalibController::openFeatures(const QString& path, QString* error) {
     CalibInputs in = inputs();
     in.features = path;
-    auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::Features, in, d.get(), error)) return false;
-    d->inputs = in;
-    m_data = d;
-    emit inputsChanged();
-    schedule();
-    return true;
+    return replaceParts(in, {int(Part::Features)}, error) != nullptr;
 }
 
 bool CalibController::setParams(const CalibParams& p, QString* error) {

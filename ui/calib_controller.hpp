@@ -131,6 +131,8 @@ signals:
 
 private:
     void schedule() { m_job.schedule(); }
+    /// Loads the parts (the .cpp's Part values) of `in` over the current inputs and adopts them.
+    std::shared_ptr<const CalibData> replaceParts(const CalibInputs& in, std::initializer_list<int> parts, QString* error);
 
     std::shared_ptr<const CalibData> m_data;
     CalibParams m_params;
