@@ -5,6 +5,9 @@
 
 #include "cli_commands.hpp"
 #include "cli_common.hpp"
+#include "core/calib/calib_csv.hpp"
+#include "core/calib/calib_params.hpp"
+#include "core/calib/calib_run.hpp"
 #include "core/calib/detector_array.hpp"
 #include "core/calib/pointing.hpp"
 #include "core/calib/validation_stats.hpp"
@@ -127,44 +130,51 @@ const char* kSimCalibUsage =
     "                  and saturated detectors), drawn from the seed\n";
 
 
+
+// The calibration parameters: one schema (core/calib/calib_params.hpp) for every calib command,
+// so a workbench session's parameter block is a config file of any of them. Today's named
+// options are aliases of --set (flags that set several fields are applied after the config).
+std::string withParams(const char* usage) {
+    return std::string(usage) + ParamOptions<CalibParams>::paramsHelp("calib", "detector.outlier_sigma=5");
+}
+
+// The whole table's check (rules between fields included).
+std::string check(const CalibParams& p) { return validate(p); }
+
 }  // namespace
 
 int cmdCalibDetector(int argc, char** argv) {
     const std::string cmd = "calib detector";
-    Args a(cmd, kDetectorUsage);
-    for (const char* o : {"--model", "--fixed-background", "--trigger", "--saturation", "--rel-noise", "--noise-floor", "-o",
-                          "--output", "--detectors", "--outlier-sigma"})
-        a.option(o, true);
-    for (const char* o : {"--scale-chi2", "--no-censoring", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (wantsHelp(a)) {
-        std::cout << kDetectorUsage;
-        return kOk;
-    }
-    DetectorFitParams p;
+    const std::string usage = withParams(kDetectorUsage);
+    Args a(cmd, usage);
+    const ParamOptions<CalibParams> params(calibSchema(), {{"--model", "detector.model"},
+                                                           {"--trigger", "detector.trigger"},
+                                                           {"--saturation", "detector.saturation"},
+                                                           {"--rel-noise", "detector.rel_noise"},
+                                                           {"--noise-floor", "detector.noise_floor"},
+                                                           {"--outlier-sigma", "detector.outlier_sigma"}});
+    for (const char* o : {"--fixed-background", "-o", "--output", "--detectors"}) a.option(o, true);
+    for (const char* o : {"--scale-chi2", "--no-censoring"}) a.option(o, false);
+    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    CalibParams cp;
     std::string err;
-    if (a.has("--model")) {
-        const std::string m = a.value("--model");
-        if (m == "auto") p.model = SurfaceModel::Auto;
-        else if (m == "elliptical") p.model = SurfaceModel::Elliptical;
-        else if (m == "circular") p.model = SurfaceModel::Circular;
-        else return fail(cmd, "--model must be auto, elliptical or circular, not \"" + m + "\"", kUsage);
-    }
-    if (a.has("--fixed-background")) {
-        p.fitBackground = false;
-        if (!a.getDouble("--fixed-background", -1e300, 1e300, &p.background, &err)) return fail(cmd, err, kUsage);
-    }
-    if (a.has("--rel-noise") || a.has("--noise-floor")) p.noise = NoiseSource::Given;
-    if (!a.getDouble("--trigger", 0, 1e300, &p.triggerThreshold, &err) ||
-        !a.getDouble("--saturation", 0, 1e300, &p.saturationLevel, &err) ||
-        !a.getDouble("--rel-noise", 0, 1, &p.relativeNoise, &err) || !a.getDouble("--noise-floor", 0, 1e300, &p.noiseFloor, &err) ||
-        !a.getDouble("--outlier-sigma", 0, 1e6, &p.outlierSigma, &err))
-        return fail(cmd, err, kUsage);
-    p.scaleByChi2 = a.has("--scale-chi2");
+    if (int rc = params.load(cmd, a, &cp, check, [&](CalibParams* q) {
+            std::string e;
+            if (a.has("--fixed-background")) {
+                q->detector.fitBackground = false;
+                if (!calibSchema().setFromText(q, "detector.background", a.value("--fixed-background"), &e))
+                    return fail(cmd, "--fixed-background " + a.value("--fixed-background") + ": " + e, kUsage);
+            }
+            if (a.has("--rel-noise") || a.has("--noise-floor")) q->detector.noise = NoiseSource::Given;
+            if (a.has("--scale-chi2")) q->detector.scaleByChi2 = true;
+            if (a.has("--no-censoring")) q->detector.censor = false;
+            return int(kOk);
+        });
+        rc >= 0)
+        return rc;
+    const DetectorFitParams& p = cp.detector;
     if (p.scaleByChi2 && p.noise != NoiseSource::Given)
         return fail(cmd, "--scale-chi2 applies to a given noise model (--rel-noise / --noise-floor)", kUsage);
-    p.censor = !a.has("--no-censoring");
-    if (const std::string e = validate(p); !e.empty()) return fail(cmd, e, kUsage);
     if (a.positional().size() != 1) return fail(cmd, "give exactly one detector CSV", kUsage);
     const std::string out = outPath(a);
     core::OutputSet outs;
@@ -172,9 +182,11 @@ int cmdCalibDetector(int argc, char** argv) {
     if (!out.empty()) outs.addOutput(out);
     if (a.has("--detectors")) outs.addOutput(a.value("--detectors"));
     if (int rc = checkOutputs(cmd, outs)) return rc;
-    DetectorArray arr;
-    if (!readDetectorCsv(a.positional()[0], &arr, &err)) return fail(cmd, err);
-    const DetectorFitResult r = fitDetectorArray(arr, p);
+    CalibInputData in;
+    const DetectorArray& arr = in.array;
+    if (!readDetectorCsv(a.positional()[0], &in.array, &err)) return fail(cmd, err);
+    const CalibRunResult run = runCalibration(in, cp);
+    const DetectorFitResult& r = run.detector;
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
     warn(cmd, r.warnings);
     if (!out.empty() && !writeDetectorCentreCsv(outs.stagingPath(out), r, &err)) return fail(cmd, outs.unstaged(err));
@@ -201,22 +213,20 @@ int cmdCalibDetector(int argc, char** argv) {
 
 int cmdCalibWaveform(int argc, char** argv) {
     const std::string cmd = "calib waveform";
-    Args a(cmd, kWaveformUsage);
-    for (const char* o : {"--dt", "--incidence", "--height", "--features", "--thred-h", "-o", "--output", "--model"})
-        a.option(o, true);
-    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (wantsHelp(a)) {
-        std::cout << kWaveformUsage;
-        return kOk;
-    }
-    WaveformParams wp;
-    FeatureMatchParams mp;
+    const std::string usage = withParams(kWaveformUsage);
+    Args a(cmd, usage);
+    const ParamOptions<CalibParams> params(calibSchema(), {{"--dt", "waveform.sample_interval_ns"},
+                                                           {"--incidence", "waveform.incidence_deg"},
+                                                           {"--thred-h", "waveform.thred_h"}});
+    for (const char* o : {"--height", "--features", "-o", "--output", "--model"}) a.option(o, true);
+    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    CalibParams cp;
     std::string err;
     double height = NAN;
-    if (!a.getDouble("--dt", 1e-6, 1e6, &wp.sampleIntervalNs, &err) || !a.getDouble("--incidence", 0, 60, &wp.incidenceDeg, &err) ||
-        !a.getDouble("--thred-h", 1e-9, 1e6, &mp.thresholdM, &err) || !a.getDouble("--height", -1e6, 1e6, &height, &err))
-        return fail(cmd, err, kUsage);
+    if (!a.getDouble("--height", -1e6, 1e6, &height, &err)) return fail(cmd, err, kUsage);
+    if (int rc = params.load(cmd, a, &cp, check); rc >= 0) return rc;
+    const WaveformParams& wp = cp.waveform;
+    const FeatureMatchParams& mp = cp.match;
     if (a.has("--height") == (a.positional().size() == 1) || a.positional().size() > 1)
         return fail(cmd, "give one waveform CSV or --height H (not both)", kUsage);
     if (a.has("--height") && !a.has("--features")) return fail(cmd, "--height needs --features to match against", kUsage);
@@ -229,41 +239,31 @@ int cmdCalibWaveform(int argc, char** argv) {
     if (!outPath(a).empty()) outs.addOutput(outPath(a));
     if (a.has("--model")) outs.addOutput(a.value("--model"));
     if (int rc = checkOutputs(cmd, outs)) return rc;
-    WaveformResult wr;
-    Waveform w;
-    if (!a.has("--height")) {
-        if (!readWaveformCsv(a.positional()[0], wp.sampleIntervalNs, &w, &err)) return fail(cmd, err);
-        wr = decomposeWaveform(w, wp);
+    // The waveform (or the given height) and the candidates through the run layer.
+    CalibInputData in;
+    in.givenHeightM = height;
+    if (!a.has("--height") && !readWaveformCsv(a.positional()[0], wp.sampleIntervalNs, &in.waveform, &err)) return fail(cmd, err);
+    if (a.has("--features") && !readFeatureCsv(a.value("--features"), &in.features, &err)) return fail(cmd, err);
+    const CalibRunResult run = runCalibration(in, cp);
+    const Waveform& w = in.waveform;
+    const WaveformResult& wr = run.waveform;
+    if (run.hasWaveform) {
         if (!wr.ok) return fail(cmd, a.positional()[0] + ": " + wr.error);
         warn(cmd, wr.warnings);
-        height = wr.heightM;
         std::cout << "returns at " << fx(wr.first.centreNs, 3) << " and " << fx(wr.second.centreNs, 3) << " ns; dt "
                   << fx(wr.deltaTNs, 3) << " +- " << fx(wr.deltaTSdNs, 3) << " ns; h_waveform " << fx(wr.heightM, 3)
                   << " +- " << fx(wr.heightSdM, 3) << " m\n";
     }
-    std::vector<FeatureCandidate> cands;
-    FeatureMatchResult mr;
+    const std::vector<FeatureCandidate>& cands = in.features;
+    const FeatureMatchResult& mr = run.match;
     if (a.has("--features")) {
-        if (!readFeatureCsv(a.value("--features"), &cands, &err)) return fail(cmd, err);
-        mr = matchFeature(cands, height, mp);
+        if (!run.hasMatch) return fail(cmd, a.value("--features") + ": no candidate features");
         if (!mr.ok) return fail(cmd, mr.error);
         warn(cmd, mr.warnings);
     }
-    if (!outPath(a).empty()) {
-        std::string s = "rank,id,h_m,delta_h_m,below_threshold,chosen\n";
-        for (size_t k = 0; k < mr.ranking.size(); ++k) {
-            const auto& d = mr.ranking[k];
-            s += std::to_string(k + 1) + "," + core::csvEscape(cands[d.index].id) + "," + gx(cands[d.index].heightM) + "," +
-                 fx(d.deltaHM, 4) + "," + (d.belowThreshold ? "1" : "0") + "," + (mr.found && k == 0 ? "1" : "0") + "\n";
-        }
-        if (!core::writeFileAtomic(outs.stagingPath(outPath(a)), s, &err)) return fail(cmd, outs.unstaged(err));
-    }
-    if (a.has("--model")) {
-        std::string s = "time_ns,amplitude,model\n";
-        for (size_t i = 0; i < w.timeNs.size(); ++i)
-            s += gx(w.timeNs[i]) + "," + gx(w.amplitude[i]) + "," + gx(wr.model[i]) + "\n";
-        if (!core::writeFileAtomic(outs.stagingPath(a.value("--model")), s, &err)) return fail(cmd, outs.unstaged(err));
-    }
+    if ((!outPath(a).empty() && !writeTextOutput(outs.stagingPath(outPath(a)), rankingCsv(cands, mr), &err)) ||
+        (a.has("--model") && !writeTextOutput(outs.stagingPath(a.value("--model")), waveformModelCsv(w, wr), &err)))
+        return fail(cmd, outs.unstaged(err));
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (a.has("--features")) {
         if (!mr.found) {
@@ -279,36 +279,28 @@ int cmdCalibWaveform(int argc, char** argv) {
 
 int cmdCalibPointing(int argc, char** argv) {
     const std::string cmd = "calib pointing";
-    Args a(cmd, kPointingUsage);
-    for (const char* o : {"--beams", "--model", "--sigma-h", "--sigma-v", "--sigma-range", "--sigma-attitude-urad",
-                          "--sigma-orbit", "-o", "--output", "--params", "--residuals", "--iterations", "--beams-out"})
+    const std::string usage = withParams(kPointingUsage);
+    Args a(cmd, usage);
+    const ParamOptions<CalibParams> params(calibSchema(), {{"--model", "pointing.model"},
+                                                           {"--sigma-h", "pointing.sigma_h"},
+                                                           {"--sigma-v", "pointing.sigma_v"},
+                                                           {"--sigma-range", "pointing.sigma_range"},
+                                                           {"--sigma-attitude-urad", "pointing.sigma_attitude_urad"},
+                                                           {"--sigma-orbit", "pointing.sigma_orbit"}});
+    for (const char* o : {"--beams", "-o", "--output", "--params", "--residuals", "--iterations", "--beams-out"})
         a.option(o, true);
-    for (const char* o : {"--no-range", "--fix-relative", "--scale-chi2", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (wantsHelp(a)) {
-        std::cout << kPointingUsage;
-        return kOk;
-    }
-    PointingCalibParams p;
+    for (const char* o : {"--no-range", "--fix-relative", "--scale-chi2"}) a.option(o, false);
+    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    CalibParams cp;
     std::string err;
-    if (a.has("--model")) {
-        const std::string m = a.value("--model");
-        if (m == "single") p.model = CalibModel::SingleBeam;
-        else if (m == "dual") p.model = CalibModel::DualBeam;
-        else return fail(cmd, "--model must be single or dual, not \"" + m + "\"", kUsage);
-    }
-    double attUrad = p.sigmaAttitudeRad * 1e6;
-    if (!a.getDouble("--sigma-h", 1e-9, 1e6, &p.sigmaHorizontalM, &err) ||
-        !a.getDouble("--sigma-v", 1e-9, 1e6, &p.sigmaVerticalM, &err) ||
-        !a.getDouble("--sigma-range", 0, 1e6, &p.sigmaRangeM, &err) ||
-        !a.getDouble("--sigma-attitude-urad", 0, 1e5, &attUrad, &err) || !a.getDouble("--sigma-orbit", 0, 1e6, &p.sigmaOrbitM, &err))
-        return fail(cmd, err, kUsage);
-    p.sigmaAttitudeRad = attUrad * 1e-6;
-    p.solveRange = !a.has("--no-range");
-    p.fixRelativeRotation = a.has("--fix-relative");
-    p.scaleByChi2 = a.has("--scale-chi2");
-    if (a.has("--fix-relative") && p.model != CalibModel::DualBeam) return fail(cmd, "--fix-relative goes with --model dual", kUsage);
-    if (const std::string e = validate(p); !e.empty()) return fail(cmd, e, kUsage);
+    if (int rc = params.load(cmd, a, &cp, check, [&](CalibParams* q) {
+            if (a.has("--no-range")) q->pointing.solveRange = false;
+            if (a.has("--fix-relative")) q->pointing.fixRelativeRotation = true;
+            if (a.has("--scale-chi2")) q->pointing.scaleByChi2 = true;
+            return int(kOk);
+        });
+        rc >= 0)
+        return rc;
     if (a.positional().size() != 1) return fail(cmd, "give exactly one control-point CSV", kUsage);
     if (!a.has("--beams")) return fail(cmd, "no beam designs: give --beams BEAMS.json", kUsage);
     const std::string out = outPath(a);
@@ -320,69 +312,27 @@ int cmdCalibPointing(int argc, char** argv) {
     for (const char* o : {"--params", "--residuals", "--iterations", "--beams-out"})
         if (a.has(o)) outs.addOutput(a.value(o));
     if (int rc = checkOutputs(cmd, outs)) return rc;
-    std::vector<BeamDesign> beams;
-    if (!readBeamsJson(a.value("--beams"), &beams, &err)) return fail(cmd, err);
-    std::vector<ControlPoint> pts;
-    if (!readControlPointCsv(a.positional()[0], &pts, &err)) return fail(cmd, err);
-    const PointingCalibResult r = calibratePointing(beams, pts, p);
+    CalibInputData in;
+    const std::vector<BeamDesign>& beams = in.beams;
+    const std::vector<ControlPoint>& pts = in.points;
+    if (!readBeamsJson(a.value("--beams"), &in.beams, &err)) return fail(cmd, err);
+    if (!readControlPointCsv(a.positional()[0], &in.points, &err)) return fail(cmd, err);
+    if (in.points.empty()) return fail(cmd, a.positional()[0] + ": no control points");
+    const CalibRunResult run = runCalibration(in, cp);
+    const PointingCalibResult& r = run.pointing;
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
     warn(cmd, r.warnings);
-    const double urad = 1e6, deg = 1 / kDeg;
-    std::string s =
-        "beam,points,solved,d_alpha_urad,d_alpha_sd_urad,d_beta_urad,d_beta_sd_urad,d_rho_m,d_rho_sd_m,alpha_deg,beta_deg,"
-        "angle_x_design_deg,angle_y_design_deg,angle_z_design_deg,angle_x_deg,angle_y_deg,angle_z_deg,"
-        "d_angle_x_deg,d_angle_y_deg,d_angle_z_deg,angle_x_sd_deg,angle_y_sd_deg,angle_z_sd_deg,plan_shift_m\n";
-    for (const auto& b : r.beams) {
-        s += std::to_string(b.id) + "," + std::to_string(b.points) + "," + (b.solved ? "1" : "0") + "," +
-             fx(b.dAlphaRad * urad, 4) + "," + fx(b.dAlphaSdRad * urad, 4) + "," + fx(b.dBetaRad * urad, 3) + "," +
-             fx(b.dBetaSdRad * urad, 3) + "," + (b.rangeSolved ? fx(b.dRhoM, 4) : "") + "," +
-             (b.rangeSolved ? fx(b.dRhoSdM, 4) : "") + "," + fx(b.alphaRad * deg, 9) + "," + fx(b.betaRad * deg, 9) + "," +
-             fx(b.designAngles.x * deg, 9) + "," + fx(b.designAngles.y * deg, 9) + "," + fx(b.designAngles.z * deg, 9) + "," +
-             fx(b.calibratedAngles.x * deg, 9) + "," + fx(b.calibratedAngles.y * deg, 9) + "," +
-             fx(b.calibratedAngles.z * deg, 9) + "," + fx((b.calibratedAngles.x - b.designAngles.x) * deg, 9) + "," +
-             fx((b.calibratedAngles.y - b.designAngles.y) * deg, 9) + "," +
-             fx((b.calibratedAngles.z - b.designAngles.z) * deg, 9) + "," + fx(b.angleXSdRad * deg, 9) + "," +
-             fx(b.angleYSdRad * deg, 9) + "," + fx(b.angleZSdRad * deg, 9) + "," + fx(b.planShiftM, 3) + "\n";
-    }
-    std::string ps = "name,value,sd,unit\n";
-    for (size_t j = 0; j < r.params.size(); ++j)
-        ps += r.paramNames[j] + "," + gx(r.params[j]) + "," + gx(r.paramSd[j]) + "," +
-              (r.paramNames[j].rfind("drho", 0) == 0 ? "m" : "rad") + "\n";
-    std::string rs =
-        "id,beam,before_e_m,before_n_m,before_u_m,before_along_m,before_across_m,before_plan_m,after_e_m,after_n_m,after_u_m,"
-        "after_along_m,after_across_m,after_plan_m,normalized\n";
-    for (const auto& c : r.residuals) {
-        auto g = [](const GroundResidual& x) {
-            return fx(x.e, 4) + "," + fx(x.n, 4) + "," + fx(x.u, 4) + "," + fx(x.along, 4) + "," + fx(x.across, 4) + "," +
-                   fx(x.plan(), 4);
-        };
-        rs += core::csvEscape(c.id) + "," + std::to_string(c.beam) + "," + g(c.before) + "," + g(c.after) + "," +
-              fx(c.normalized, 4) + "\n";
-    }
-    std::string is = "iteration,chi2,rms_plan_m,rms_height_m,rms_3d_m";
-    for (const auto& n : r.paramNames) is += "," + n;
-    is += "\n";
-    for (const auto& it : r.iterations) {
-        is += std::to_string(it.iteration) + "," + gx(it.chi2) + "," + fx(it.rmsPlanM, 4) + "," + fx(it.rmsHeightM, 4) + "," +
-              fx(it.rms3dM, 4);
-        for (double v : it.params) is += "," + gx(v);
-        is += "\n";
-    }
-    std::vector<BeamDesign> calibrated = beams;
-    for (size_t k = 0; k < beams.size(); ++k) {
-        calibrated[k].alphaRad = r.beams[k].alphaRad;
-        calibrated[k].betaRad = r.beams[k].betaRad;
-    }
     auto write = [&](const std::string& path, const std::string& text) {
-        return core::writeFileAtomic(outs.stagingPath(path), text, &err);
+        return writeTextOutput(outs.stagingPath(path), text, &err);
     };
-    if (!write(out, s) || (a.has("--params") && !write(a.value("--params"), ps)) ||
-        (a.has("--residuals") && !write(a.value("--residuals"), rs)) ||
-        (a.has("--iterations") && !write(a.value("--iterations"), is)) ||
-        (a.has("--beams-out") && !write(a.value("--beams-out"), beamsToJson(calibrated))))
+    if (!write(out, pointingBeamsCsv(r)) || (a.has("--params") && !write(a.value("--params"), pointingParamsCsv(r))) ||
+        (a.has("--residuals") && !write(a.value("--residuals"), pointingResidualsCsv(r))) ||
+        (a.has("--iterations") && !write(a.value("--iterations"), pointingIterationsCsv(r))) ||
+        (a.has("--beams-out") && !write(a.value("--beams-out"), beamsToJson(calibratedBeams(beams, r)))))
         return fail(cmd, outs.unstaged(err));
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
+        const double urad = 1e6;
         std::cerr << "calib pointing: " << calibModelName(r.model) << "-beam model, " << pts.size() << " control points, "
                   << r.iterations.size() - 1 << " iterations; RMS plan " << fx(r.iterations.front().rmsPlanM, 3) << " -> "
                   << fx(r.iterations.back().rmsPlanM, 3) << " m, height " << fx(r.iterations.front().rmsHeightM, 3)
@@ -400,14 +350,13 @@ int cmdCalibPointing(int argc, char** argv) {
 
 int cmdCalibStats(int argc, char** argv) {
     const std::string cmd = "calib stats";
-    Args a(cmd, kStatsUsage);
+    const std::string usage = withParams(kStatsUsage);
+    Args a(cmd, usage);
+    const ParamOptions<CalibParams> params(calibSchema());  // none of its own: accepted for one config everywhere
     for (const char* o : {"--group", "-o", "--output"}) a.option(o, true);
-    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (wantsHelp(a)) {
-        std::cout << kStatsUsage;
-        return kOk;
-    }
+    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    CalibParams cp;
+    if (int rc = params.load(cmd, a, &cp, check); rc >= 0) return rc;
     if (a.positional().size() != 1) return fail(cmd, "give exactly one CSV of differences", kUsage);
     core::OutputSet outs;
     outs.addInput(a.positional()[0]);
@@ -416,19 +365,17 @@ int cmdCalibStats(int argc, char** argv) {
     std::vector<DifferenceGroup> groups;
     std::string err;
     if (!readDifferencesCsv(a.positional()[0], a.value("--group"), &groups, &err)) return fail(cmd, err);
-    std::string s = "group,n,mean,rms_about_zero,std_sample,std_population,min,max,median,mean_abs\n";
+    std::vector<std::pair<std::string, ElevationStats>> rows;
     for (const auto& g : groups) {
         const ElevationStatsResult r = elevationStats(g.d);
         if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
         const auto& t = r.stats;
-        s += core::csvEscape(g.group) + "," + std::to_string(t.n) + "," + fx(t.mean, 6) + "," + fx(t.rmsAboutZero, 6) + "," +
-             fx(t.stdSample, 6) + "," + fx(t.stdPopulation, 6) + "," + fx(t.min, 6) + "," + fx(t.max, 6) + "," +
-             fx(t.median, 6) + "," + fx(t.meanAbs, 6) + "\n";
+        rows.emplace_back(g.group, t);
         std::cout << (g.group.empty() ? std::string("all") : a.value("--group") + " " + g.group) << ":\n";
         for (const auto& lv : labelledStats(t))
             std::cout << "  " << lv.label << ": " << (lv.key == "n" ? std::to_string(t.n) : fx(lv.value, 4)) << "\n";
     }
-    if (!outPath(a).empty() && !core::writeFileAtomic(outs.stagingPath(outPath(a)), s, &err))
+    if (!outPath(a).empty() && !writeTextOutput(outs.stagingPath(outPath(a)), statsCsv(rows), &err))
         return fail(cmd, outs.unstaged(err));
     return commitOutputs(cmd, outs);
 }

@@ -2,6 +2,7 @@
 // Shared plumbing of laserwb-cli: option parsing, messages, progress on stderr.
 #include <chrono>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <string>
 #include <vector>
@@ -134,6 +135,44 @@ public:
         return kOk;
     }
     bool printRequested(const Args& a) const { return a.has("--print-config"); }
+
+    /// The usage's paragraph about these options (`what`: "calib", `example`: "detector.trigger=5").
+    static std::string paramsHelp(const std::string& what, const std::string& example) {
+        return "Parameters (every one: --print-config; units, ranges and meaning: --help-params):\n"
+               "  --config FILE.json   parameters (the " + what + " block of a workbench session); options override it\n"
+               "  --set KEY=VALUE      set one parameter (repeatable), e.g. --set " + example + "\n"
+               "  --print-config       print the effective parameters as JSON and exit\n"
+               "  --help-params        every parameter with its unit, range, default and meaning\n";
+    }
+    /// Declares these options with --help, -h, -q, --quiet and --help-params, parses argv[first..]
+    /// and answers --help (the usage) and --help-params (the table). -1 to go on, else the exit code.
+    int parseWithHelp(Args& a, int argc, char** argv, int first, const std::string& cmd) const {
+        declare(a);
+        for (const char* o : {"--help", "-h", "-q", "--quiet", "--help-params"}) a.option(o, false);
+        if (!a.parse(argc, argv, first)) return fail(cmd, a.error(), kUsage);
+        if (a.has("--help") || a.has("-h")) {
+            std::cout << a.usage();
+            return kOk;
+        }
+        if (a.has("--help-params")) {
+            std::cout << m_schema.name() << " parameters (key = default unit  valid range):\n" << m_schema.describe(P{});
+            return kOk;
+        }
+        return -1;
+    }
+    /// apply() over *p, then `check` on the whole struct (rules between fields, checked once every
+    /// setting is applied so the order of --set does not matter), then --print-config.
+    /// -1 to go on, else the exit code.
+    int load(const std::string& cmd, const Args& a, P* p, const std::function<std::string(const P&)>& check,
+             const std::function<int(P*)>& afterConfig = {}) const {
+        if (int rc = apply(cmd, a, p, afterConfig)) return rc;
+        if (const std::string e = check(*p); !e.empty()) return fail(cmd, e, kUsage);
+        if (printRequested(a)) {
+            std::cout << json(*p);
+            return kOk;
+        }
+        return -1;
+    }
     std::string json(const P& p) const { return core::dumpJson(m_schema.toJson(p)); }
 
     /// How a config file is read: the schema's fromJson, or a caller's (a preset applied first).

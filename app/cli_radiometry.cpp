@@ -9,6 +9,7 @@
 #include "core/radiometry/gcp.hpp"
 #include "core/radiometry/geotiff.hpp"
 #include "core/radiometry/mosaic.hpp"
+#include "core/radiometry/radiometry_params.hpp"
 #include "core/radiometry/reflectance.hpp"
 
 namespace lwb::cli {
@@ -117,33 +118,33 @@ const char* kCheckUsage =
     "Exit code 1 also when a region exceeds the limit (default 5 %); the table is still written.\n"
     "  --max-pixels N           largest image read, from its header (default 268435456 = 16384^2)\n";
 
+// The radiometry parameters: one schema (core/radiometry/radiometry_params.hpp) for every
+// radiometry command, so a workbench session's parameter block is a config file of any of them.
+// Today's named options are aliases of --set (flags are applied after the config).
+std::string withParams(const char* usage) {
+    return std::string(usage) + ParamOptions<RadiometryParams>::paramsHelp("radiometry", "mosaic.ransac_px=3");
+}
+
+// The whole table's check (rules between fields included).
+std::string check(const RadiometryParams& p) { return validate(p); }
+
 }  // namespace
 
 int cmdRadiometryMosaic(int argc, char** argv) {
     const std::string cmd = "radiometry mosaic";
-    Args a(cmd, kMosaicUsage);
-    for (const char* o : {"--features", "--model", "--blend", "--ransac-px", "--min-inliers", "-o", "--output", "--coverage",
-                          "--pairs", "--max-pixels"})
-        a.option(o, true);
-    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (wantsHelp(a)) {
-        std::cout << kMosaicUsage;
-        return kOk;
-    }
-    MosaicParams p;
+    const std::string usage = withParams(kMosaicUsage);
+    Args a(cmd, usage);
+    const ParamOptions<RadiometryParams> params(radiometrySchema(), {{"--features", "mosaic.features"},
+                                                                     {"--model", "mosaic.model"},
+                                                                     {"--blend", "mosaic.blend"},
+                                                                     {"--ransac-px", "mosaic.ransac_px"},
+                                                                     {"--min-inliers", "mosaic.min_inliers"}});
+    for (const char* o : {"-o", "--output", "--coverage", "--pairs", "--max-pixels"}) a.option(o, true);
+    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    RadiometryParams rp;
     std::string err;
-    if (a.has("--features") && !parseFeatureType(a.value("--features"), &p.features))
-        return fail(cmd, "--features must be akaze or orb", kUsage);
-    if (a.has("--model") && !parseMotionModel(a.value("--model"), &p.model))
-        return fail(cmd, "--model must be translation, similarity, affine or homography", kUsage);
-    if (a.has("--blend") && !parseBlendMode(a.value("--blend"), &p.blend))
-        return fail(cmd, "--blend must be feather, average or first", kUsage);
-    long long minInl = p.minInliers;
-    if (!a.getDouble("--ransac-px", 1e-3, 1000, &p.ransacThresholdPx, &err) || !a.getInt("--min-inliers", 4, 100000, &minInl, &err))
-        return fail(cmd, err, kUsage);
-    p.minInliers = static_cast<int>(minInl);
-    if (const std::string e = validate(p); !e.empty()) return fail(cmd, e, kUsage);
+    if (int rc = params.load(cmd, a, &rp, check); rc >= 0) return rc;
+    const MosaicParams& p = rp.mosaic;
     const std::string out = outPath(a);
     if (out.empty()) return fail(cmd, "no output file: give -o ROW.tif", kUsage);
     if (a.positional().size() < 2) return fail(cmd, "give at least two frames, in scan order", kUsage);
@@ -185,21 +186,18 @@ int cmdRadiometryMosaic(int argc, char** argv) {
 
 int cmdRadiometryGcp(int argc, char** argv) {
     const std::string cmd = "radiometry gcp";
-    Args a(cmd, kGcpUsage);
-    for (const char* o : {"--gcps", "--model", "--pixel-size", "--residuals", "--valid", "-o", "--output", "--max-pixels", "--crs"})
-        a.option(o, true);
-    for (const char* o : {"--plain-tiff", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (wantsHelp(a)) {
-        std::cout << kGcpUsage;
-        return kOk;
-    }
-    GcpFitParams p;
+    const std::string usage = withParams(kGcpUsage);
+    Args a(cmd, usage);
+    const ParamOptions<RadiometryParams> params(radiometrySchema(),
+                                                {{"--model", "gcp.model"}, {"--pixel-size", "gcp.pixel_size_m"}});
+    for (const char* o : {"--gcps", "--residuals", "--valid", "-o", "--output", "--max-pixels", "--crs"}) a.option(o, true);
+    a.option("--plain-tiff", false);
+    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    RadiometryParams rp;
     std::string err;
-    if (a.has("--model") && !parseGeoModel(a.value("--model"), &p.model))
-        return fail(cmd, "--model must be affine or homography", kUsage);
-    double pixel = 0;
-    if (!a.getDouble("--pixel-size", 1e-9, 1e9, &pixel, &err)) return fail(cmd, err, kUsage);
+    if (int rc = params.load(cmd, a, &rp, check); rc >= 0) return rc;
+    const GcpFitParams& p = rp.gcp;
+    const double pixel = rp.mapPixelSizeM;
     if (a.positional().size() != 1) return fail(cmd, "give exactly one image", kUsage);
     if (!a.has("--gcps")) return fail(cmd, "no control points: give --gcps GCPS.csv", kUsage);
     const std::string out = outPath(a);
@@ -242,28 +240,26 @@ int cmdRadiometryGcp(int argc, char** argv) {
 
 int cmdRadiometryFit(int argc, char** argv) {
     const std::string cmd = "radiometry fit";
-    Args a(cmd, kFitUsage);
-    for (const char* o : {"--image", "--dn-min", "--dn-max", "--vm", "-o", "--output", "--regions", "--max-pixels",
-                          "--min-region-pixels", "--min-region-fraction"})
-        a.option(o, true);
-    for (const char* o : {"--exclude-out-of-range", "--no-pixel-mask", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (wantsHelp(a)) {
-        std::cout << kFitUsage;
-        return kOk;
-    }
-    ReflectanceFitParams p;
+    const std::string usage = withParams(kFitUsage);
+    Args a(cmd, usage);
+    const ParamOptions<RadiometryParams> params(radiometrySchema(), {{"--dn-min", "dn_min"},
+                                                                     {"--dn-max", "dn_max"},
+                                                                     {"--vm", "vm_pct"},
+                                                                     {"--min-region-pixels", "min_region_pixels"},
+                                                                     {"--min-region-fraction", "min_region_fraction"}});
+    for (const char* o : {"--image", "-o", "--output", "--regions", "--max-pixels"}) a.option(o, true);
+    for (const char* o : {"--exclude-out-of-range", "--no-pixel-mask"}) a.option(o, false);
+    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    RadiometryParams rp;
     std::string err;
-    if (!a.getDouble("--dn-min", -1e300, 1e300, &p.dnMin, &err) || !a.getDouble("--dn-max", -1e300, 1e300, &p.dnMax, &err) ||
-        !a.getDouble("--vm", 0, 100, &p.spectrometerPct, &err) ||
-        !a.getDouble("--min-region-fraction", 0, 1, &p.minRegionFraction, &err))
-        return fail(cmd, err, kUsage);
-    long long minPx = p.minRegionPixels;
-    if (!a.getInt("--min-region-pixels", 1, 1000000000, &minPx, &err)) return fail(cmd, err, kUsage);
-    p.minRegionPixels = static_cast<int>(minPx);
-    p.excludeOutOfRange = a.has("--exclude-out-of-range");
-    p.maskOutOfRangePixels = !a.has("--no-pixel-mask");
-    if (const std::string e = validate(p); !e.empty()) return fail(cmd, e, kUsage);
+    if (int rc = params.load(cmd, a, &rp, check, [&](RadiometryParams* q) {
+            if (a.has("--exclude-out-of-range")) q->fit.excludeOutOfRange = true;
+            if (a.has("--no-pixel-mask")) q->fit.maskOutOfRangePixels = false;
+            return int(kOk);
+        });
+        rc >= 0)
+        return rc;
+    const ReflectanceFitParams& p = rp.fit;
     if (a.positional().size() != 1) return fail(cmd, "give exactly one region CSV", kUsage);
     const std::string out = outPath(a);
     if (out.empty()) return fail(cmd, "no output file: give -o FIT.csv", kUsage);
@@ -307,30 +303,33 @@ int cmdRadiometryFit(int argc, char** argv) {
 
 int cmdRadiometryApply(int argc, char** argv) {
     const std::string cmd = "radiometry apply";
-    Args a(cmd, kApplyUsage);
-    for (const char* o : {"--fit", "--k", "--b", "--dn-min", "--dn-max", "--uncertainty", "--check", "--table", "--limit", "-o",
-                          "--output", "--max-pixels"})
+    const std::string usage = withParams(kApplyUsage);
+    Args a(cmd, usage);
+    const ParamOptions<RadiometryParams> params(radiometrySchema(),
+                                                {{"--dn-min", "dn_min"}, {"--dn-max", "dn_max"}, {"--limit", "limit_pct"}});
+    for (const char* o : {"--fit", "--k", "--b", "--uncertainty", "--check", "--table", "-o", "--output", "--max-pixels"})
         a.option(o, true);
-    for (const char* o : {"--nan-out-of-range", "--plain-tiff", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (wantsHelp(a)) {
-        std::cout << kApplyUsage;
-        return kOk;
-    }
-    ApplyParams p;
+    for (const char* o : {"--nan-out-of-range", "--plain-tiff"}) a.option(o, false);
+    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    RadiometryParams rp;
     std::string err;
-    double limit = 5;
     ReflectanceFit fit;
-    if (!a.getDouble("--dn-min", -1e300, 1e300, &p.dnMin, &err) || !a.getDouble("--dn-max", -1e300, 1e300, &p.dnMax, &err) ||
-        !a.getDouble("--limit", 1e-9, 1e6, &limit, &err) || !a.getDouble("--k", -1e300, 1e300, &fit.k, &err) ||
-        !a.getDouble("--b", -1e300, 1e300, &fit.b, &err))
+    if (!a.getDouble("--k", -1e300, 1e300, &fit.k, &err) || !a.getDouble("--b", -1e300, 1e300, &fit.b, &err))
         return fail(cmd, err, kUsage);
+    if (int rc = params.load(cmd, a, &rp, check, [&](RadiometryParams* q) {
+            if (a.has("--nan-out-of-range")) q->outOfRangeToNan = true;
+            return int(kOk);
+        });
+        rc >= 0)
+        return rc;
+    // The uncertainty image is made when it is written.
+    rp.uncertaintyImage = a.has("--uncertainty");
+    const ApplyParams p = applyParamsOf(rp);
+    const double limit = rp.limitPct;
     if (a.has("--fit") == (a.has("--k") || a.has("--b")) || a.has("--k") != a.has("--b"))
         return fail(cmd, "give --fit FIT.csv, or --k K and --b B", kUsage);
     if (a.has("--uncertainty") && !a.has("--fit")) return fail(cmd, "--uncertainty needs --fit (the errors of K and B)", kUsage);
     if (a.has("--table") && !a.has("--check")) return fail(cmd, "--table needs --check", kUsage);
-    p.outOfRangeToNan = a.has("--nan-out-of-range");
-    p.uncertaintyImage = a.has("--uncertainty");
     if (a.positional().size() != 1) return fail(cmd, "give exactly one DN image", kUsage);
     const std::string out = outPath(a);
     if (out.empty()) return fail(cmd, "no output file: give -o REFLECTANCE.tif", kUsage);
@@ -384,17 +383,15 @@ int cmdRadiometryApply(int argc, char** argv) {
 
 int cmdRadiometryCheck(int argc, char** argv) {
     const std::string cmd = "radiometry check";
-    Args a(cmd, kCheckUsage);
-    for (const char* o : {"--image", "--limit", "-o", "--output", "--max-pixels"}) a.option(o, true);
-    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (wantsHelp(a)) {
-        std::cout << kCheckUsage;
-        return kOk;
-    }
+    const std::string usage = withParams(kCheckUsage);
+    Args a(cmd, usage);
+    const ParamOptions<RadiometryParams> params(radiometrySchema(), {{"--limit", "limit_pct"}});
+    for (const char* o : {"--image", "-o", "--output", "--max-pixels"}) a.option(o, true);
+    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    RadiometryParams rp;
     std::string err;
-    double limit = 5;
-    if (!a.getDouble("--limit", 1e-9, 1e6, &limit, &err)) return fail(cmd, err, kUsage);
+    if (int rc = params.load(cmd, a, &rp, check); rc >= 0) return rc;
+    const double limit = rp.limitPct;
     if (a.positional().size() != 1) return fail(cmd, "give exactly one check-region CSV", kUsage);
     long long maxPx = 0;
     if (!maxPixels(a, &maxPx, &err)) return fail(cmd, err, kUsage);

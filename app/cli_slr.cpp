@@ -279,6 +279,77 @@ int screenAllPasses(const std::string& cmd, const std::string& input, const slr:
 
 }  // namespace
 
+// What one slr run reads and writes, from its options (cmdSlr's first stage).
+struct SlrPlan {
+    std::string input, out, crdOut, nptOut, outDir;
+    bool allPasses = false, csvInput = false;
+    long long passK = 0;  ///< --pass K (1-based), 0 when not given
+};
+
+// The usage checks of cmdSlr (exit 2, nothing read or written): the input and outputs, the
+// options that go together, the parameters; the outputs are registered in *outs and checked
+// (single pass). -1 to go on, else the exit code.
+int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrParams>& params, SlrPlan* pl,
+               core::OutputSet* outs) {
+    // ---- usage checks (exit 2, nothing read or written) ----
+    if (a.positional().size() != 1)
+        return fail(cmd, a.positional().empty() ? "no input file" : "give exactly one input file", kUsage);
+    pl->input = a.positional()[0];
+    const std::string& input = pl->input;
+    if (a.has("-o") && a.has("--output")) return fail(cmd, "give -o or --output, not both", kUsage);
+    pl->allPasses = a.has("--all-passes");
+    const bool allPasses = pl->allPasses;
+    pl->outDir = a.value("--out-dir");
+    const std::string& outDir = pl->outDir;
+    if (allPasses) {
+        if (outDir.empty()) return fail(cmd, "--all-passes needs --out-dir DIR (each pass's CSV and summary.csv go there)", kUsage);
+        for (const char* o : {"-o", "--output", "--crd-out", "--npt-out", "--pass"})
+            if (a.has(o)) return fail(cmd, std::string(o) + " is for one pass; --all-passes writes DIR/passNNN.csv and DIR/summary.csv", kUsage);
+    } else if (!outDir.empty()) {
+        return fail(cmd, "--out-dir goes with --all-passes", kUsage);
+    }
+    pl->out = a.has("-o") ? a.value("-o") : a.value("--output");
+    const std::string& out = pl->out;
+    if (out.empty() && !allPasses) return fail(cmd, "no output file: give -o OUT.csv", kUsage);
+    pl->crdOut = a.value("--crd-out");
+    pl->nptOut = a.value("--npt-out");
+    const std::string &crdOut = pl->crdOut, &nptOut = pl->nptOut;
+    // Every output is checked before anything is computed or written: none may replace an
+    // input or another output (same device and inode, whatever the spelling), devices and
+    // folders are refused, and all are renamed into place together at the end.
+    for (const char* in : {"--cpf", "--stations", "--preset"}) outs->addInput(a.value(in));
+    outs->addInput(input);
+    for (const std::string* p : {&out, &crdOut, &nptOut})
+        if (!p->empty()) outs->addOutput(*p);
+    if (!allPasses)
+        if (int rc = checkOutputs(cmd, *outs)) return rc;
+    if (a.has("--cpf") && !a.has("--stations"))
+        return fail(cmd, "--cpf and --stations go together (O-C from the prediction needs both)", kUsage);
+    if (a.has("--satellite") && !a.has("--preset"))
+        return fail(cmd, "--satellite selects a preset entry; give --preset FILE with it", kUsage);
+    std::string err;
+    if (!a.getInt("--pass", 1, 1000000, &pl->passK, &err)) return fail(cmd, err, kUsage);
+    {  // Bad options and config are usage errors before anything is read.
+        slr::SlrParams probe = cliDefaults();
+        if (int rc = params.apply(cmd, a, &probe)) return rc;
+    }
+    pl->csvInput = !slr::isCrdFile(input);
+    const bool csvInput = pl->csvInput;
+    if (csvInput && (!crdOut.empty() || !nptOut.empty()))
+        return fail(cmd,
+                    std::string(!crdOut.empty() ? "--crd-out" : "--npt-out") +
+                        " needs a CRD input (its headers and records are written back); " + input +
+                        " is an O-C table",
+                    kUsage);
+    if (csvInput && (a.has("--cpf") || a.has("--pass")))
+        return fail(cmd, std::string(a.has("--cpf") ? "--cpf/--stations" : "--pass") + " apply to a CRD input; " +
+                             input + " is an O-C table",
+                    kUsage);
+    if (csvInput && allPasses) return fail(cmd, "--all-passes needs a CRD input; " + input + " is an O-C table (one pass)", kUsage);
+
+    return -1;
+}
+
 int cmdSlr(int argc, char** argv) {
     const std::string cmd = "slr";
     Args a(cmd, kSlrUsage);
@@ -312,57 +383,13 @@ int cmdSlr(int argc, char** argv) {
         return kOk;
     }
     const bool quiet = a.has("--quiet") || a.has("-q");
-
-    // ---- usage checks (exit 2, nothing read or written) ----
-    if (a.positional().size() != 1)
-        return fail(cmd, a.positional().empty() ? "no input file" : "give exactly one input file", kUsage);
-    const std::string input = a.positional()[0];
-    if (a.has("-o") && a.has("--output")) return fail(cmd, "give -o or --output, not both", kUsage);
-    const bool allPasses = a.has("--all-passes");
-    const std::string outDir = a.value("--out-dir");
-    if (allPasses) {
-        if (outDir.empty()) return fail(cmd, "--all-passes needs --out-dir DIR (each pass's CSV and summary.csv go there)", kUsage);
-        for (const char* o : {"-o", "--output", "--crd-out", "--npt-out", "--pass"})
-            if (a.has(o)) return fail(cmd, std::string(o) + " is for one pass; --all-passes writes DIR/passNNN.csv and DIR/summary.csv", kUsage);
-    } else if (!outDir.empty()) {
-        return fail(cmd, "--out-dir goes with --all-passes", kUsage);
-    }
-    const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
-    if (out.empty() && !allPasses) return fail(cmd, "no output file: give -o OUT.csv", kUsage);
-    const std::string crdOut = a.value("--crd-out"), nptOut = a.value("--npt-out");
-    // Every output is checked before anything is computed or written: none may replace an
-    // input or another output (same device and inode, whatever the spelling), devices and
-    // folders are refused, and all are renamed into place together at the end.
+    SlrPlan plan;
     core::OutputSet outs;
-    for (const char* in : {"--cpf", "--stations", "--preset"}) outs.addInput(a.value(in));
-    outs.addInput(input);
-    for (const std::string* p : {&out, &crdOut, &nptOut})
-        if (!p->empty()) outs.addOutput(*p);
-    if (!allPasses)
-        if (int rc = checkOutputs(cmd, outs)) return rc;
-    if (a.has("--cpf") && !a.has("--stations"))
-        return fail(cmd, "--cpf and --stations go together (O-C from the prediction needs both)", kUsage);
-    if (a.has("--satellite") && !a.has("--preset"))
-        return fail(cmd, "--satellite selects a preset entry; give --preset FILE with it", kUsage);
+    if (int rc = planSlrRun(cmd, a, params, &plan, &outs); rc >= 0) return rc;
+    const std::string &input = plan.input, &out = plan.out, &crdOut = plan.crdOut, &nptOut = plan.nptOut;
+    const bool allPasses = plan.allPasses, csvInput = plan.csvInput;
+    const long long passK = plan.passK;
     std::string err;
-    long long passK = 0;
-    if (!a.getInt("--pass", 1, 1000000, &passK, &err)) return fail(cmd, err, kUsage);
-    {  // Bad options and config are usage errors before anything is read.
-        slr::SlrParams probe = cliDefaults();
-        if (int rc = params.apply(cmd, a, &probe)) return rc;
-    }
-    const bool csvInput = !slr::isCrdFile(input);
-    if (csvInput && (!crdOut.empty() || !nptOut.empty()))
-        return fail(cmd,
-                    std::string(!crdOut.empty() ? "--crd-out" : "--npt-out") +
-                        " needs a CRD input (its headers and records are written back); " + input +
-                        " is an O-C table",
-                    kUsage);
-    if (csvInput && (a.has("--cpf") || a.has("--pass")))
-        return fail(cmd, std::string(a.has("--cpf") ? "--cpf/--stations" : "--pass") + " apply to a CRD input; " +
-                             input + " is an O-C table",
-                    kUsage);
-    if (csvInput && allPasses) return fail(cmd, "--all-passes needs a CRD input; " + input + " is an O-C table (one pass)", kUsage);
 
     // ---- presets (read before the pass so that a bad file stops early) ----
     std::vector<slr::SatellitePreset> presets;
@@ -382,7 +409,7 @@ int cmdSlr(int argc, char** argv) {
         if (!snx.ok) return fail(cmd, named(a.value("--stations"), snx.error));
     }
     const RunInputs ri{presets, a.has("--preset"), a.value("--satellite"), snx.ok ? &snx.file : nullptr, &params, &a};
-    if (allPasses) return screenAllPasses(cmd, input, in, ri, outDir, quiet);
+    if (allPasses) return screenAllPasses(cmd, input, in, ri, plan.outDir, quiet);
 
     // ---- the pass ----
     const int passIndex = a.has("--pass") ? static_cast<int>(passK - 1) : -1;

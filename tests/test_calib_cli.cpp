@@ -164,6 +164,32 @@ private slots:
         QCOMPARE(runCli({"calib", "detector", dir + "/detectors.csv", "--scale-chi2"}).exitCode, 2);
     }
 
+    // The calib and radiometry commands read one schema each: a printed config is a config of
+    // any command of the family, --set and the named aliases agree, bad keys are usage errors.
+    void parameterOptions() {
+        const CliRun printed = runCli({"calib", "detector", "--print-config", "--trigger", "7", "--set", "waveform.thred_h=0.25"});
+        QCOMPARE(printed.exitCode, 0);
+        QFile f(path("calib_params.json"));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(printed.out.toUtf8());
+        f.close();
+        const CliRun again = runCli({"calib", "pointing", "--config", path("calib_params.json"), "--print-config"});
+        QCOMPARE(again.exitCode, 0);
+        QCOMPARE(again.out, printed.out);  // every field, unchanged through another command
+        QVERIFY2(again.out.contains("\"trigger\": 7.0") && again.out.contains("\"thred_h\": 0.25"), qPrintable(again.out));
+        const CliRun bad = runCli({"calib", "waveform", "--set", "waveform.thred=1", "--height", "3", "--features", "x.csv"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("waveform.thred"), qPrintable(bad.err));
+        const CliRun range = runCli({"radiometry", "mosaic", "a.png", "b.png", "-o", "c.png", "--min-inliers", "3"});
+        QCOMPARE(range.exitCode, 2);
+        QVERIFY2(range.err.contains("mosaic.min_inliers") && range.err.contains("[4, 100000]"), qPrintable(range.err));
+        const CliRun order = runCli({"radiometry", "fit", "--dn-min", "61000", "--dn-max", "65000", "--print-config"});
+        QCOMPARE(order.exitCode, 0);  // the rule dn_min < dn_max holds once both are set
+        const CliRun help = runCli({"radiometry", "gcp", "--help-params"});
+        QCOMPARE(help.exitCode, 0);
+        QVERIFY(help.out.contains("gcp.pixel_size_m") && help.out.contains("mosaic.ransac_px"));
+    }
+
     void badInputsFailCleanly() {
         // Malformed detector CSV: exit 1, file and line named, nothing written.
         QVERIFY(writeText(path("bad_det.csv"), "id,e,n,energy\nA,0,0,10\nB,5,5,NaN\n"));

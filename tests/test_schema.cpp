@@ -4,9 +4,11 @@
 #include <QtTest>
 #include <set>
 
+#include "core/calib/calib_params.hpp"
 #include "core/common/json.hpp"
 #include "core/footprint/pipeline.hpp"
 #include "core/footprint/trend.hpp"
+#include "core/radiometry/radiometry_params.hpp"
 #include "core/slr/presets.hpp"
 #include "core/slr/slr_params.hpp"
 #include "schema_cases.hpp"
@@ -79,6 +81,65 @@ private slots:
     void footprintEveryField() { everyFieldThroughJson(footprint::footprintSchema()); }
     void slrEveryField() { everyFieldThroughJson(slr::slrSchema()); }
     void trendEveryField() { everyFieldThroughJson(footprint::trendSchema()); }
+    void calibEveryField() { everyFieldThroughJson(calib::calibSchema()); }
+    void radiometryEveryField() { everyFieldThroughJson(radiometry::radiometrySchema()); }
+
+    // Every field of the calibration and radiometry tables at once through JSON, and the
+    // whole-struct checks (rules between fields) accept what the tables accept.
+    void calibRadiometryAllFields() {
+        std::string err;
+        const auto& cs = calib::calibSchema();
+        calib::CalibParams cp = allOther(cs);
+        cp.pointing.fixRelativeRotation = cp.pointing.model == calib::CalibModel::DualBeam;  // the rule between them
+        QVERIFY2(calib::validate(cp).empty(), calib::validate(cp).c_str());
+        QVERIFY(cs.changedKeys(calib::CalibParams{}, cp).size() + 1 >= cs.fields().size());
+        const JsonParseResult cj = parseJson(dumpJson(cs.toJson(cp)), "session.json");
+        calib::CalibParams cback;
+        QVERIFY2(cs.fromJson(cj.value, &cback, &err, &cj), err.c_str());
+        QVERIFY2(cs.changedKeys(cp, cback).empty(), joined(cs.changedKeys(cp, cback)).c_str());
+
+        const auto& rs = radiometry::radiometrySchema();
+        const radiometry::RadiometryParams rp = allOther(rs);
+        QCOMPARE(rs.changedKeys(radiometry::RadiometryParams{}, rp).size(), rs.fields().size());
+        QVERIFY2(radiometry::validate(rp).empty(), radiometry::validate(rp).c_str());
+        const JsonParseResult rj = parseJson(dumpJson(rs.toJson(rp)), "session.json");
+        radiometry::RadiometryParams rback;
+        QVERIFY2(rs.fromJson(rj.value, &rback, &err, &rj), err.c_str());
+        QVERIFY2(rs.changedKeys(rp, rback).empty(), joined(rs.changedKeys(rp, rback)).c_str());
+    }
+
+    // The rules between fields are checked on the whole struct, so the order of --set does not
+    // matter, and bad values name the key and the range.
+    void calibRadiometryMessages() {
+        std::string err;
+        const auto& rs = radiometry::radiometrySchema();
+        radiometry::RadiometryParams rp;
+        QVERIFY2(rs.setFromText(&rp, "dn_min", "61000", &err), err.c_str());  // above dn_max for a moment
+        QVERIFY(!radiometry::validate(rp).empty());
+        QVERIFY2(rs.setFromText(&rp, "dn_max", "65000", &err), err.c_str());
+        QVERIFY2(radiometry::validate(rp).empty(), radiometry::validate(rp).c_str());
+        QVERIFY(!rs.setFromText(&rp, "mosaic.min_inliers", "3", &err));
+        QVERIFY2(err.find("radiometry.mosaic.min_inliers") != std::string::npos && err.find("[4, 100000]") != std::string::npos,
+                 err.c_str());
+        const auto& cs = calib::calibSchema();
+        calib::CalibParams cp;
+        QVERIFY(!cs.setFromText(&cp, "detector.outlier_sigma", "2", &err));
+        QVERIFY2(err.find("calib.detector.outlier_sigma") != std::string::npos, err.c_str());
+        QVERIFY2(cs.setFromText(&cp, "detector.outlier_sigma", "off", &err), err.c_str());
+        QCOMPARE(cp.detector.outlierSigma, 0.0);
+        QVERIFY2(cs.setFromText(&cp, "pointing.sigma_attitude_urad", "2.5", &err), err.c_str());
+        QCOMPARE(cp.pointing.sigmaAttitudeRad, 2.5e-6);
+        QVERIFY2(cs.setFromText(&cp, "pointing.fix_relative", "true", &err), err.c_str());
+        QVERIFY(!calib::validate(cp).empty());  // needs the dual model
+        QVERIFY2(cs.setFromText(&cp, "pointing.model", "dual", &err), err.c_str());
+        QVERIFY2(calib::validate(cp).empty(), calib::validate(cp).c_str());
+        // Unknown keys are errors with line and column.
+        const JsonParseResult j = parseJson("{\n  \"detector\": {\"trigger\": 5, \"trigerr\": 1}\n}", "cfg.json");
+        QVERIFY(j.ok);
+        calib::CalibParams back;
+        QVERIFY(!cs.fromJson(j.value, &back, &err, &j));
+        QVERIFY2(err.find("cfg.json:2:") != std::string::npos && err.find("trigerr") != std::string::npos, err.c_str());
+    }
 
     void allFieldsTogether() {
         const auto& fs = footprint::footprintSchema();

@@ -13,7 +13,9 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/text.hpp"
-#include "core/sim/calib_sim.hpp"
+#include "core/calib/calib_csv.hpp"
+#include "core/sim/demo_data.hpp"
+#include "ui/session_json.hpp"
 
 namespace lwb::ui {
 
@@ -23,24 +25,6 @@ namespace sim = core::sim;
 namespace {
 
 const QString kDemo = QStringLiteral("demo");
-
-// The demo's fixed seeds and features (paper 002's beam-1 case: a 2.9 m wood).
-constexpr uint64_t kDetectorSeed = 20230611, kPointingSeed = 20230612, kCheckSeed = 20230613, kWaveSeed = 20230614;
-constexpr double kDemoFeatureHeight = 2.93;
-
-sim::DetectorSimParams demoDetectorParams() {
-    // The GF-7-like footprint of the simulator (1σ 3.75 m) over a 2.5 m grid, denser than the
-    // simulator's 5 m default so the demo footprint covers a few dozen detectors.
-    sim::DetectorSimParams p;
-    p.rows = 61;
-    p.columns = 41;
-    p.spacingM = 2.5;
-    p.triggerThreshold = 20;
-    return p;
-}
-
-std::string fx(double v, int d) { return std::isfinite(v) ? core::formatFixed(v, d) : std::string(); }
-std::string gx(double v) { return std::isfinite(v) ? core::formatDouble(v, 10) : std::string(); }
 
 bool fail(QString* error, const std::string& msg) {
     if (error) *error = QString::fromStdString(msg);
@@ -58,9 +42,8 @@ bool loadPart(Part part, const CalibInputs& in, CalibData* d, QString* error) {
             d->hasDetectorTruth = false;
             if (in.detectors.isEmpty()) return true;
             if (in.detectors == kDemo) {
-                const sim::DetectorSimulation s = sim::simulateDetectorArray(demoDetectorParams(), kDetectorSeed);
+                const sim::DetectorSimulation s = sim::demoDetectorArray();
                 d->array = s.array;
-                d->array.source = "demo detector array";
                 d->detectorTruth = s.truth;
                 d->hasDetectorTruth = true;
                 return true;
@@ -76,8 +59,7 @@ bool loadPart(Part part, const CalibInputs& in, CalibData* d, QString* error) {
             d->hasPointingTruth = false;
             if (in.controlPoints.isEmpty()) return true;
             if (in.controlPoints == kDemo) {
-                sim::CalibSimParams p;  // 4 passes, both beams, the paper's error magnitudes
-                const sim::CalibSimulation s = sim::simulateCalibration(p, kPointingSeed);
+                const sim::CalibSimulation s = sim::demoCalibrationPasses();
                 d->beams = s.beams;
                 d->points = s.points;
                 d->hasPointingTruth = true;
@@ -108,9 +90,7 @@ bool loadPart(Part part, const CalibInputs& in, CalibData* d, QString* error) {
             d->checkPoints.clear();
             if (in.checkPoints.isEmpty()) return true;
             if (in.checkPoints == kDemo) {
-                sim::CalibSimParams p;
-                p.passes = 22;  // paper 002 validates on 22 and 24 points
-                d->checkPoints = sim::simulateCalibration(p, kCheckSeed).points;
+                d->checkPoints = sim::demoCheckPoints();
                 return true;
             }
             std::vector<ControlPoint> pts;
@@ -129,6 +109,8 @@ bool loadPart(Part part, const CalibInputs& in, CalibData* d, QString* error) {
             if (!readDifferencesCsv(in.differences.toStdString(), in.groupColumn.toStdString(), &g, &err))
                 return fail(error, err);
             d->differences = std::move(g);
+            d->differencesName = QFileInfo(in.differences).fileName().toStdString();
+            d->groupColumn = in.groupColumn.toStdString();
             return true;
         }
         case Part::Waveform: {
@@ -136,10 +118,8 @@ bool loadPart(Part part, const CalibInputs& in, CalibData* d, QString* error) {
             d->trueHeightM = NAN;
             if (in.waveform.isEmpty()) return true;
             if (in.waveform == kDemo) {
-                sim::WaveformSimParams p;
-                p.heightM = kDemoFeatureHeight;
-                d->waveform = sim::simulateWaveform(p, kWaveSeed).waveform;
-                d->trueHeightM = p.heightM;
+                d->waveform = sim::demoWaveform();
+                d->trueHeightM = sim::kDemoFeatureHeightM;
                 return true;
             }
             // The sample interval is a waveform parameter; files with a time column ignore it.
@@ -152,19 +132,7 @@ bool loadPart(Part part, const CalibInputs& in, CalibData* d, QString* error) {
             d->features.clear();
             if (in.features.isEmpty()) return true;
             if (in.features == kDemo) {
-                const struct {
-                    const char* id;
-                    double e, n, h;
-                } f[] = {{"wood W1", -12.5, 8.0, 2.90}, {"shed S2", 6.0, -14.5, 2.45}, {"hedge H3", 15.2, 3.1, 3.35},
-                         {"wall M4", -3.4, -6.7, 1.60}, {"tree row T5", 21.0, 17.5, 4.20}, {"building B6", -25.0, -20.0, 6.40}};
-                for (const auto& x : f) {
-                    FeatureCandidate c;
-                    c.id = x.id;
-                    c.e = x.e;
-                    c.n = x.n;
-                    c.heightM = x.h;
-                    d->features.push_back(c);
-                }
+                d->features = sim::demoFeatures();
                 return true;
             }
             std::vector<FeatureCandidate> c;
@@ -195,132 +163,27 @@ bool loadChanged(const CalibInputs& in, const CalibData* have, CalibData* d, QSt
     return true;
 }
 
-// The statistics of the run: differences file > check points after calibration > the control
-// points' own residuals after calibration.
-void computeStats(const CalibData& d, CalibRun& run) {
-    auto add = [&](const QString& name, std::vector<double> v) {
-        StatsColumn c;
-        c.name = name;
-        c.d = std::move(v);
-        c.stats = elevationStats(c.d);
-        if (!c.stats.ok && run.statsError.isEmpty()) run.statsError = name + ": " + QString::fromStdString(c.stats.error);
-        run.stats.push_back(std::move(c));
-    };
-    if (!d.differences.empty()) {
-        run.statsSource = QObject::tr("Elevation differences from %1").arg(QFileInfo(d.inputs.differences).fileName());
-        for (const auto& g : d.differences)
-            add(g.group.empty() ? QObject::tr("all") : (d.inputs.groupColumn.isEmpty() ? QString() : d.inputs.groupColumn + " ") +
-                                                           QString::fromStdString(g.group),
-                g.d);
-        return;
-    }
-    if (!run.hasPointing || !run.pointing.ok) {
-        if (!d.checkPoints.empty() || !d.points.empty())
-            run.statsError = QObject::tr("no statistics: the pointing calibration did not succeed");
-        return;
-    }
-    std::vector<int> beamIds;
-    for (const auto& b : d.beams) beamIds.push_back(b.id);
-    if (!d.checkPoints.empty()) {
-        run.check = checkCalibration(d.beams, run.pointing, d.checkPoints);
-        run.hasCheck = true;
-        if (!run.check.ok) {
-            run.statsError = QObject::tr("check points: %1").arg(QString::fromStdString(run.check.error));
-            return;
-        }
-        run.statsSource = QObject::tr("Height differences laser − control at %1 independent check points, calibrated")
-                              .arg(run.check.points.size());
-        for (int id : beamIds) {
-            std::vector<double> v = heightDifferences(run.check, id);
-            if (!v.empty()) add(QObject::tr("beam %1").arg(id), std::move(v));
-        }
-        return;
-    }
-    run.statsSource = QObject::tr("Height residuals of the %1 control points after calibration (not independent)")
-                          .arg(run.pointing.residuals.size());
-    for (int id : beamIds) {
-        std::vector<double> v;
-        for (const auto& r : run.pointing.residuals)
-            if (r.beam == id) v.push_back(r.after.u);
-        if (!v.empty()) add(QObject::tr("beam %1").arg(id), std::move(v));
-    }
-}
-
+// One run of the core run layer, with the strings the views show.
 CalibRun compute(std::shared_ptr<const CalibData> data, const CalibParams& p) {
-    const CalibData& d = *data;
+    core::calib::CalibRunResult r = core::calib::runCalibration(*data, p);
     CalibRun run;
     run.data = data;
     run.params = p;
-    if (!d.array.detectors.empty()) {
-        run.hasDetector = true;
-        run.detector = fitDetectorArray(d.array, p.detector);
-    }
-    if (!d.points.empty()) {
-        run.hasPointing = true;
-        run.pointing = calibratePointing(d.beams, d.points, p.pointing);
-    }
-    computeStats(d, run);
-    if (!d.waveform.amplitude.empty()) {
-        run.hasWaveform = true;
-        run.waveform = decomposeWaveform(d.waveform, p.waveform);
-        if (run.waveform.ok && !d.features.empty()) {
-            run.hasMatch = true;
-            run.match = matchFeature(d.features, run.waveform.heightM, p.match);
-        }
-    }
+    run.hasDetector = r.hasDetector;
+    run.detector = std::move(r.detector);
+    run.hasPointing = r.hasPointing;
+    run.pointing = std::move(r.pointing);
+    run.hasCheck = r.hasCheck;
+    run.check = std::move(r.check);
+    run.statsSource = QString::fromStdString(r.statsSource);
+    run.statsError = QString::fromStdString(r.statsError);
+    for (auto& g : r.stats) run.stats.push_back({QString::fromStdString(g.name), std::move(g.d), std::move(g.stats)});
+    run.hasWaveform = r.hasWaveform;
+    run.waveform = std::move(r.waveform);
+    run.hasMatch = r.hasMatch;
+    run.match = std::move(r.match);
     return run;
 }
-
-// JSON helpers: a missing key keeps the default; a wrong type is an error naming the key.
-struct JsonReader {
-    QString section;
-    QString* error;
-    bool ok = true;
-    void num(const QJsonObject& o, const char* key, double* v) {
-        if (!ok || !o.contains(key)) return;
-        if (!o[key].isDouble()) {
-            *error = QObject::tr("%1.%2 must be a number").arg(section, key);
-            ok = false;
-            return;
-        }
-        *v = o[key].toDouble();
-    }
-    void integer(const QJsonObject& o, const char* key, int* v) {
-        double x = *v;
-        num(o, key, &x);
-        if (ok && o.contains(key)) {
-            if (x != std::floor(x) || std::fabs(x) > 1e9) {
-                *error = QObject::tr("%1.%2 must be a whole number").arg(section, key);
-                ok = false;
-                return;
-            }
-            *v = int(x);
-        }
-    }
-    void boolean(const QJsonObject& o, const char* key, bool* v) {
-        if (!ok || !o.contains(key)) return;
-        if (!o[key].isBool()) {
-            *error = QObject::tr("%1.%2 must be true or false").arg(section, key);
-            ok = false;
-            return;
-        }
-        *v = o[key].toBool();
-    }
-    template <class E>
-    void choice(const QJsonObject& o, const char* key, E* v, std::initializer_list<std::pair<const char*, E>> names) {
-        if (!ok || !o.contains(key)) return;
-        const QString s = o[key].toString();
-        for (const auto& [n, e] : names)
-            if (s == n) {
-                *v = e;
-                return;
-            }
-        QStringList all;
-        for (const auto& [n, e] : names) all << n;
-        *error = QObject::tr("%1.%2 must be one of %3, not \"%4\"").arg(section, key, all.join(", "), s);
-        ok = false;
-    }
-};
 
 }  // namespace
 
@@ -329,91 +192,15 @@ bool CalibInputs::operator==(const CalibInputs& o) const {
            differences == o.differences && groupColumn == o.groupColumn && waveform == o.waveform && features == o.features;
 }
 
-QString validateCalibParams(const CalibParams& p) {
-    if (std::string e = validate(p.detector); !e.empty()) return QObject::tr("detector fit: %1").arg(QString::fromStdString(e));
-    if (std::string e = validate(p.pointing); !e.empty()) return QObject::tr("pointing calibration: %1").arg(QString::fromStdString(e));
-    if (std::string e = validate(p.waveform); !e.empty()) return QObject::tr("waveform: %1").arg(QString::fromStdString(e));
-    if (std::string e = validate(p.match); !e.empty()) return QObject::tr("feature match: %1").arg(QString::fromStdString(e));
-    if (p.pointing.fixRelativeRotation && p.pointing.model != CalibModel::DualBeam)
-        return QObject::tr("pointing calibration: fixing the relative rotation needs the dual-beam model");
-    return {};
-}
+QString validateCalibParams(const CalibParams& p) { return QString::fromStdString(validate(p)); }
 
-QJsonObject calibParamsToJson(const CalibParams& p) {
-    QJsonObject d;
-    d["model"] = surfaceModelName(p.detector.model);
-    d["noise"] = p.detector.noise == NoiseSource::Given ? "given" : "data";
-    d["fit_background"] = p.detector.fitBackground;
-    d["background"] = p.detector.background;
-    d["trigger"] = p.detector.triggerThreshold;
-    d["saturation"] = p.detector.saturationLevel;
-    d["rel_noise"] = p.detector.relativeNoise;
-    d["noise_floor"] = p.detector.noiseFloor;
-    d["scale_chi2"] = p.detector.scaleByChi2;
-    QJsonObject q;
-    q["model"] = calibModelName(p.pointing.model);
-    q["solve_range"] = p.pointing.solveRange;
-    q["fix_relative"] = p.pointing.fixRelativeRotation;
-    q["sigma_h"] = p.pointing.sigmaHorizontalM;
-    q["sigma_v"] = p.pointing.sigmaVerticalM;
-    q["sigma_range"] = p.pointing.sigmaRangeM;
-    q["sigma_attitude_urad"] = p.pointing.sigmaAttitudeRad * 1e6;
-    q["sigma_orbit"] = p.pointing.sigmaOrbitM;
-    q["scale_chi2"] = p.pointing.scaleByChi2;
-    QJsonObject w;
-    w["sample_interval_ns"] = p.waveform.sampleIntervalNs;
-    w["smooth_ns"] = p.waveform.smoothSigmaNs;
-    w["min_separation_ns"] = p.waveform.minSeparationNs;
-    w["min_second_peak"] = p.waveform.minSecondPeak;
-    w["incidence_deg"] = p.waveform.incidenceDeg;
-    w["thred_h"] = p.match.thresholdM;
-    QJsonObject o;
-    o["detector"] = d;
-    o["pointing"] = q;
-    o["waveform"] = w;
-    return o;
-}
+QJsonObject calibParamsToJson(const CalibParams& p) { return toQtJson(calibSchema().toJson(p)); }
 
 bool calibParamsFromJson(const QJsonObject& o, CalibParams* out, QString* error) {
     CalibParams p;
-    JsonReader r{"detector", error};
-    const QJsonObject d = o["detector"].toObject();
-    r.choice(d, "model", &p.detector.model,
-             {{"auto", SurfaceModel::Auto}, {"elliptical", SurfaceModel::Elliptical}, {"circular", SurfaceModel::Circular}});
-    r.choice(d, "noise", &p.detector.noise, {{"data", NoiseSource::FromData}, {"given", NoiseSource::Given}});
-    r.boolean(d, "fit_background", &p.detector.fitBackground);
-    r.num(d, "background", &p.detector.background);
-    r.num(d, "trigger", &p.detector.triggerThreshold);
-    r.num(d, "saturation", &p.detector.saturationLevel);
-    r.num(d, "rel_noise", &p.detector.relativeNoise);
-    r.num(d, "noise_floor", &p.detector.noiseFloor);
-    r.boolean(d, "scale_chi2", &p.detector.scaleByChi2);
-    r.section = "pointing";
-    const QJsonObject q = o["pointing"].toObject();
-    r.choice(q, "model", &p.pointing.model, {{"single", CalibModel::SingleBeam}, {"dual", CalibModel::DualBeam}});
-    r.boolean(q, "solve_range", &p.pointing.solveRange);
-    r.boolean(q, "fix_relative", &p.pointing.fixRelativeRotation);
-    r.num(q, "sigma_h", &p.pointing.sigmaHorizontalM);
-    r.num(q, "sigma_v", &p.pointing.sigmaVerticalM);
-    r.num(q, "sigma_range", &p.pointing.sigmaRangeM);
-    double att = p.pointing.sigmaAttitudeRad * 1e6;
-    r.num(q, "sigma_attitude_urad", &att);
-    p.pointing.sigmaAttitudeRad = att * 1e-6;
-    r.num(q, "sigma_orbit", &p.pointing.sigmaOrbitM);
-    r.boolean(q, "scale_chi2", &p.pointing.scaleByChi2);
-    r.section = "waveform";
-    const QJsonObject w = o["waveform"].toObject();
-    r.num(w, "sample_interval_ns", &p.waveform.sampleIntervalNs);
-    r.num(w, "smooth_ns", &p.waveform.smoothSigmaNs);
-    r.num(w, "min_separation_ns", &p.waveform.minSeparationNs);
-    r.num(w, "min_second_peak", &p.waveform.minSecondPeak);
-    r.num(w, "incidence_deg", &p.waveform.incidenceDeg);
-    r.num(w, "thred_h", &p.match.thresholdM);
-    if (!r.ok) return false;
-    if (const QString e = validateCalibParams(p); !e.isEmpty()) {
-        *error = e;
-        return false;
-    }
+    std::string err;
+    if (!calibSchema().fromJson(fromQtJson(o), &p, &err)) return fail(error, err);
+    if (const std::string e = validate(p); !e.empty()) return fail(error, e);
     *out = p;
     return true;
 }
@@ -461,17 +248,26 @@ bool CalibController::setInputs(const CalibInputs& in, QString* error) {
     return true;
 }
 
-bool CalibController::openDetectors(const QString& path, QString* error) {
-    CalibInputs in = inputs();
-    in.detectors = path;
+// Loads the given parts of `in` over a copy of the current inputs and adopts it; on an error
+// the inputs stay. Returns the new data (null on error).
+std::shared_ptr<const CalibData> CalibController::replaceParts(const CalibInputs& in, std::initializer_list<int> parts,
+                                                              QString* error) {
     auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::Detectors, in, d.get(), error)) return false;
+    for (int p : parts)
+        if (!loadPart(static_cast<Part>(p), in, d.get(), error)) return nullptr;
     d->inputs = in;
     m_data = d;
     emit inputsChanged();
-    emit status(tr("%1: %2 detectors").arg(QFileInfo(path).fileName()).arg(d->array.detectors.size()));
     schedule();
-    return true;
+    return d;
+}
+
+bool CalibController::openDetectors(const QString& path, QString* error) {
+    CalibInputs in = inputs();
+    in.detectors = path;
+    const auto d = replaceParts(in, {int(Part::Detectors)}, error);
+    if (d) emit status(tr("%1: %2 detectors").arg(QFileInfo(path).fileName()).arg(d->array.detectors.size()));
+    return d != nullptr;
 }
 
 bool CalibController::openControlPoints(const QString& path, const QString& beamsPath, QString* error) {
@@ -488,14 +284,10 @@ bool CalibController::openControlPoints(const QString& path, const QString& beam
             return false;
         }
     }
-    auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::ControlPoints, in, d.get(), error)) return false;
-    d->inputs = in;
-    m_data = d;
-    emit inputsChanged();
-    emit status(tr("%1: %2 control points, %3 beams").arg(QFileInfo(path).fileName()).arg(d->points.size()).arg(d->beams.size()));
-    schedule();
-    return true;
+    const auto d = replaceParts(in, {int(Part::ControlPoints)}, error);
+    if (d)
+        emit status(tr("%1: %2 control points, %3 beams").arg(QFileInfo(path).fileName()).arg(d->points.size()).arg(d->beams.size()));
+    return d != nullptr;
 }
 
 bool CalibController::openCheckPoints(const QString& path, QString* error) {
@@ -503,51 +295,28 @@ bool CalibController::openCheckPoints(const QString& path, QString* error) {
     in.checkPoints = path;
     in.differences.clear();  // the statistics follow the check points now
     in.groupColumn.clear();
-    auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::CheckPoints, in, d.get(), error) || !loadPart(Part::Differences, in, d.get(), error)) return false;
-    d->inputs = in;
-    m_data = d;
-    emit inputsChanged();
-    schedule();
-    return true;
+    return replaceParts(in, {int(Part::CheckPoints), int(Part::Differences)}, error) != nullptr;
 }
 
 bool CalibController::openDifferences(const QString& path, const QString& groupColumn, QString* error) {
     CalibInputs in = inputs();
     in.differences = path;
     in.groupColumn = groupColumn;
-    auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::Differences, in, d.get(), error)) return false;
-    d->inputs = in;
-    m_data = d;
-    emit inputsChanged();
-    emit status(tr("%1: %2 group(s) of differences").arg(QFileInfo(path).fileName()).arg(d->differences.size()));
-    schedule();
-    return true;
+    const auto d = replaceParts(in, {int(Part::Differences)}, error);
+    if (d) emit status(tr("%1: %2 group(s) of differences").arg(QFileInfo(path).fileName()).arg(d->differences.size()));
+    return d != nullptr;
 }
 
 bool CalibController::openWaveform(const QString& path, QString* error) {
     CalibInputs in = inputs();
     in.waveform = path;
-    auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::Waveform, in, d.get(), error)) return false;
-    d->inputs = in;
-    m_data = d;
-    emit inputsChanged();
-    schedule();
-    return true;
+    return replaceParts(in, {int(Part::Waveform)}, error) != nullptr;
 }
 
 bool CalibController::openFeatures(const QString& path, QString* error) {
     CalibInputs in = inputs();
     in.features = path;
-    auto d = std::make_shared<CalibData>(*m_data);
-    if (!loadPart(Part::Features, in, d.get(), error)) return false;
-    d->inputs = in;
-    m_data = d;
-    emit inputsChanged();
-    schedule();
-    return true;
+    return replaceParts(in, {int(Part::Features)}, error) != nullptr;
 }
 
 bool CalibController::setParams(const CalibParams& p, QString* error) {
@@ -570,7 +339,7 @@ bool CalibController::waitIdle(int timeoutMs) {
 namespace {
 bool writeText(const QString& path, const std::string& s, QString* error) {
     std::string err;
-    if (!core::writeFileAtomic(path.toStdString(), s, &err)) return fail(error, err);
+    if (!writeTextOutput(path.toStdString(), s, &err)) return fail(error, err);
     return true;
 }
 }  // namespace
@@ -591,53 +360,25 @@ bool CalibController::exportCentre(const QString& path, QString* error) const {
 
 bool CalibController::exportPointing(const QString& path, QString* error) const {
     if (!m_run.hasPointing || !m_run.pointing.ok) return fail(error, "no pointing calibration to export");
-    const PointingCalibResult& r = m_run.pointing;
-    std::string ps = "name,value,sd,unit\n";
-    for (size_t j = 0; j < r.params.size(); ++j)
-        ps += r.paramNames[j] + "," + gx(r.params[j]) + "," + gx(r.paramSd[j]) + "," +
-              (r.paramNames[j].rfind("drho", 0) == 0 ? "m" : "rad") + "\n";
-    return writeText(path, ps, error);
+    return writeText(path, pointingParamsCsv(m_run.pointing), error);
 }
 
 bool CalibController::exportIterations(const QString& path, QString* error) const {
     if (!m_run.hasPointing || !m_run.pointing.ok) return fail(error, "no pointing calibration to export");
-    const PointingCalibResult& r = m_run.pointing;
-    std::string is = "iteration,chi2,rms_plan_m,rms_height_m,rms_3d_m";
-    for (const auto& n : r.paramNames) is += "," + n;
-    is += "\n";
-    for (const auto& it : r.iterations) {
-        is += std::to_string(it.iteration) + "," + gx(it.chi2) + "," + fx(it.rmsPlanM, 4) + "," + fx(it.rmsHeightM, 4) + "," +
-              fx(it.rms3dM, 4);
-        for (double v : it.params) is += "," + gx(v);
-        is += "\n";
-    }
-    return writeText(path, is, error);
+    return writeText(path, pointingIterationsCsv(m_run.pointing), error);
 }
 
 bool CalibController::exportStats(const QString& path, QString* error) const {
     if (m_run.stats.empty()) return fail(error, "no validation statistics to export");
-    std::string s = "group,n,mean,rms_about_zero,std_sample,std_population,min,max,median,mean_abs\n";
-    for (const StatsColumn& c : m_run.stats) {
-        if (!c.stats.ok) continue;
-        const auto& t = c.stats.stats;
-        s += core::csvEscape(c.name.toStdString()) + "," + std::to_string(t.n) + "," + fx(t.mean, 6) + "," +
-             fx(t.rmsAboutZero, 6) + "," + fx(t.stdSample, 6) + "," + fx(t.stdPopulation, 6) + "," + fx(t.min, 6) + "," +
-             fx(t.max, 6) + "," + fx(t.median, 6) + "," + fx(t.meanAbs, 6) + "\n";
-    }
-    return writeText(path, s, error);
+    std::vector<std::pair<std::string, ElevationStats>> rows;
+    for (const StatsColumn& c : m_run.stats)
+        if (c.stats.ok) rows.emplace_back(c.name.toStdString(), c.stats.stats);
+    return writeText(path, statsCsv(rows), error);
 }
 
 bool CalibController::exportRanking(const QString& path, QString* error) const {
     if (!m_run.hasMatch || !m_run.match.ok) return fail(error, "no candidate ranking to export");
-    const FeatureMatchResult& mr = m_run.match;
-    const auto& cands = m_run.data->features;
-    std::string s = "rank,id,h_m,delta_h_m,below_threshold,chosen\n";
-    for (size_t k = 0; k < mr.ranking.size(); ++k) {
-        const auto& d = mr.ranking[k];
-        s += std::to_string(k + 1) + "," + core::csvEscape(cands[d.index].id) + "," + gx(cands[d.index].heightM) + "," +
-             fx(d.deltaHM, 4) + "," + (d.belowThreshold ? "1" : "0") + "," + (mr.found && k == 0 ? "1" : "0") + "\n";
-    }
-    return writeText(path, s, error);
+    return writeText(path, rankingCsv(m_run.data->features, m_run.match), error);
 }
 
 }  // namespace lwb::ui

@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "core/calib/calib_check.hpp"
+#include "core/calib/calib_params.hpp"
+#include "core/calib/calib_run.hpp"
 #include "core/calib/detector_array.hpp"
 #include "core/calib/pointing.hpp"
 #include "core/calib/validation_stats.hpp"
@@ -37,33 +39,20 @@ struct CalibInputs {
     bool operator==(const CalibInputs& o) const;
 };
 
-/// The loaded inputs (one immutable snapshot per change).
-struct CalibData {
+/// The loaded inputs (one immutable snapshot per change): the core run layer's inputs and
+/// where each part came from.
+struct CalibData : core::calib::CalibInputData {
     CalibInputs inputs;
-    core::calib::DetectorArray array;
-    bool hasDetectorTruth = false;            ///< demo: the simulated surface is known
-    core::calib::GaussSurface detectorTruth;
-    std::vector<core::calib::BeamDesign> beams;
-    std::vector<core::calib::ControlPoint> points;
-    std::vector<core::calib::ControlPoint> checkPoints;
-    bool hasPointingTruth = false;            ///< demo: the simulated corrections are known
-    double trueDAlpha[2] = {0, 0}, trueDBeta[2] = {0, 0}, trueDRho[2] = {0, 0};
-    std::vector<core::calib::DifferenceGroup> differences;
-    core::calib::Waveform waveform;
-    double trueHeightM = NAN;                 ///< demo: the simulated feature height
-    std::vector<core::calib::FeatureCandidate> features;
 };
 
-struct CalibParams {
-    core::calib::DetectorFitParams detector;
-    core::calib::PointingCalibParams pointing;
-    core::calib::WaveformParams waveform;
-    core::calib::FeatureMatchParams match;
-};
+/// The parameters of every step: one schema table (core::calib::calibSchema()).
+using CalibParams = core::calib::CalibParams;
 /// Empty when every step's parameters are valid, else the first problem.
 QString validateCalibParams(const CalibParams& p);
+/// The session's parameter block: the schema's JSON (every field, always written).
 QJsonObject calibParamsToJson(const CalibParams& p);
-/// Missing keys keep their defaults; wrong types or invalid values are errors (naming the key).
+/// Through the schema: unknown keys, wrong types and invalid values are errors naming the key;
+/// missing keys keep their defaults.
 bool calibParamsFromJson(const QJsonObject& o, CalibParams* p, QString* error);
 
 /// One group of elevation differences and its statistics.
@@ -73,7 +62,7 @@ struct StatsColumn {
     core::calib::ElevationStatsResult stats;
 };
 
-/// One run of the whole chain.
+/// One run of the whole chain (core::calib::runCalibration) and what it ran on.
 struct CalibRun {
     quint64 generation = 0;
     std::shared_ptr<const CalibData> data;    ///< the inputs this run used
@@ -142,6 +131,8 @@ signals:
 
 private:
     void schedule() { m_job.schedule(); }
+    /// Loads the parts (the .cpp's Part values) of `in` over the current inputs and adopts them.
+    std::shared_ptr<const CalibData> replaceParts(const CalibInputs& in, std::initializer_list<int> parts, QString* error);
 
     std::shared_ptr<const CalibData> m_data;
     CalibParams m_params;

@@ -7,7 +7,7 @@
 
 namespace lwb::ui {
 
-/// About 240 shots, 32×32 ROIs placed at paper 001's LFI beam positions with a slow drift.
+/// The footprint demo of core/sim/demo_data.hpp as workbench shots ("demo:NAME").
 std::vector<Shot> demoFootprintShots();
 
 }  // namespace lwb::ui

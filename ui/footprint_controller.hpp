@@ -44,7 +44,6 @@ struct Shot {
     QStringList reasons;
     QString noiseClass;
     core::footprint::SpotFit fit;  ///< ROI coordinates
-    core::footprint::FootprintResult result;  ///< the whole result (for the report columns)
     // The analyst's decision
     bool overridden = false;
     Verdict overrideVerdict = Verdict::Good;

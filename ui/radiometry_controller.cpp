@@ -13,8 +13,8 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/text.hpp"
-#include "core/sim/rng.hpp"
-#include "core/sim/scene_sim.hpp"
+#include "core/sim/demo_data.hpp"
+#include "ui/session_json.hpp"
 
 namespace lwb::ui {
 
@@ -29,90 +29,6 @@ bool fail(QString* error, const QString& msg) {
 }
 bool fail(QString* error, const std::string& msg) { return fail(error, QString::fromStdString(msg)); }
 
-std::string gx(double v) { return std::isfinite(v) ? core::formatDouble(v, 10) : std::string(); }
-
-// ---------------------------------------------------------------------------------------------
-// The demo field: a textured ground (scene_sim) with six grey panels of known reflectance for
-// the fit and four check surfaces, photographed as six overlapping frames of one row.
-
-// Paper 003's line (cement 1 image): V_REF = 0.00126·V_DN − 4.32576, reflectance in %.
-constexpr double kDemoK = 0.00126, kDemoB = -4.32576;
-constexpr uint64_t kDemoSeed = 20230901;
-
-struct DemoField {
-    std::vector<cv::Mat> frames;
-    cv::Point frame0;                    ///< scene position of frame 0's pixel (0, 0)
-    std::vector<PickedRegion> regions;   ///< rectangles in scene pixels
-};
-
-DemoField makeDemoField() {
-    DemoField f;
-    sim::RowFramesParams rp;             // 6 frames of 400×360 px, 1/4 overlap (paper 003)
-    const int step = int(std::lround(rp.frameWidth * (1 - rp.overlap)));
-    const int margin = rp.jitterPx + 2;
-    sim::SceneSimParams sp;
-    sp.width = (rp.frames - 1) * step + rp.frameWidth + 2 * margin;
-    sp.height = rp.frameHeight + 2 * margin;
-    cv::Mat scene = sim::simulateScene(sp, kDemoSeed);
-    sim::Rng rng(sim::Rng::mix(kDemoSeed, 7));
-    auto dnOf = [](double reflectance) { return (reflectance - kDemoB) / kDemoK; };
-    // Grey panels: uniform to 0.3 %, measured by the spectrometer to ±0.15 % reflectance.
-    const double panels[] = {4.8, 10.3, 19.7, 30.4, 44.6, 62.1};
-    for (int i = 0; i < 6; ++i) {
-        // In the middle of frame i, away from the overlaps the mosaic registers on; small enough
-        // (< 0.5 % of the pixels each) not to set the mosaic's 8-bit contrast stretch.
-        const cv::Rect r(margin + i * step + 184, margin + 60, 32, 32);
-        const double level = dnOf(panels[i]);
-        for (int y = r.y; y < r.y + r.height; ++y)
-            for (int x = r.x; x < r.x + r.width; ++x) scene.at<float>(y, x) = float(level * (1 + 0.003 * rng.normal()));
-        PickedRegion pr;
-        pr.name = QString("panel %1 %").arg(panels[i], 0, 'f', 0);
-        pr.role = RegionRole::Fit;
-        pr.rect = QRect(r.x + 5, r.y + 5, r.width - 10, r.height - 10);
-        pr.reflectance = std::round((panels[i] + 0.15 * rng.normal()) * 1000) / 1000;
-        f.regions.push_back(pr);
-    }
-    // Check surfaces: textured (σ 3 % of the level, 2 px grain), measured to ±1 %.
-    const struct {
-        const char* name;
-        double r;
-        int frame;
-    } checks[] = {{"cement 1", 27.4, 1}, {"lawn", 8.6, 2}, {"cement 2", 31.2, 3}, {"asphalt", 11.9, 4}};
-    for (const auto& c : checks) {
-        const cv::Rect r(margin + c.frame * step + 140, margin + 200, 120, 90);
-        cv::Mat tex(r.size(), CV_32F);
-        for (int y = 0; y < tex.rows; ++y)
-            for (int x = 0; x < tex.cols; ++x) tex.at<float>(y, x) = float(rng.normal());
-        cv::GaussianBlur(tex, tex, cv::Size(0, 0), 2.0);
-        cv::Scalar m, s;
-        cv::meanStdDev(tex, m, s);
-        const double level = dnOf(c.r);
-        cv::Mat patch = scene(r);
-        for (int y = 0; y < r.height; ++y)
-            for (int x = 0; x < r.width; ++x)
-                patch.at<float>(y, x) = float(level * (1 + 0.03 * (tex.at<float>(y, x) - m[0]) / std::max(s[0], 1e-9)));
-        PickedRegion pr;
-        pr.name = c.name;
-        pr.role = RegionRole::Check;
-        pr.rect = QRect(r.x + 10, r.y + 10, r.width - 20, r.height - 20);
-        pr.reflectance = std::round(c.r * (1 + 0.01 * rng.normal()) * 1000) / 1000;
-        f.regions.push_back(pr);
-    }
-    // The frames: jittered offsets along the row, 30 DN of noise each, 16-bit.
-    for (int k = 0; k < rp.frames; ++k) {
-        const int jx = int(std::lround(rng.uniform(-rp.jitterPx, rp.jitterPx)));
-        const int jy = int(std::lround(rng.uniform(-rp.jitterPx, rp.jitterPx)));
-        const cv::Point o(margin + k * step + jx, margin + jy);
-        if (k == 0) f.frame0 = o;
-        cv::Mat fr = scene(cv::Rect(o, cv::Size(rp.frameWidth, rp.frameHeight))).clone();
-        for (int y = 0; y < fr.rows; ++y)
-            for (int x = 0; x < fr.cols; ++x) fr.at<float>(y, x) += float(rng.normal(0, rp.noiseDn));
-        cv::Mat g;
-        fr.convertTo(g, CV_16U);
-        f.frames.push_back(g);
-    }
-    return f;
-}
 
 std::shared_ptr<RadiometryImage> imageFrom(const cv::Mat& dn, const cv::Mat& coverage) {
     auto img = std::make_shared<RadiometryImage>();
@@ -125,102 +41,45 @@ std::shared_ptr<RadiometryImage> imageFrom(const cv::Mat& dn, const cv::Mat& cov
 // ---------------------------------------------------------------------------------------------
 // measure → fit → apply → check
 
-RadiometryRun compute(std::shared_ptr<const RadiometryImage> img, const std::vector<PickedRegion>& regions,
-                      const RadiometryParams& p) {
-    RadiometryRun run;
-    run.regions = regions;
-    run.notes.assign(regions.size(), QString());
-    run.measured.resize(regions.size());
-    const bool haveImage = img && !img->dn.empty();
-    const cv::Rect bounds = haveImage ? cv::Rect(0, 0, img->dn.cols, img->dn.rows) : cv::Rect();
-    // Measure every rectangle that lies inside the image in one pass.
-    std::vector<Region> toMeasure;
-    std::vector<size_t> measuredIndex;
-    for (size_t i = 0; i < regions.size(); ++i) {
-        const PickedRegion& pr = regions[i];
-        Region& r = run.measured[i];
+std::vector<RegionPick> corePicks(const std::vector<PickedRegion>& regions) {
+    std::vector<RegionPick> out;
+    for (const PickedRegion& pr : regions) {
+        RegionPick r;
         r.name = pr.name.toStdString();
+        r.check = pr.role == RegionRole::Check;
+        if (!pr.rect.isEmpty()) r.rect = cv::Rect(pr.rect.x(), pr.rect.y(), pr.rect.width(), pr.rect.height());
         r.reflectance = pr.reflectance;
         r.dn = pr.dn;
-        if (pr.rect.isEmpty()) {
-            if (!std::isfinite(pr.dn)) run.notes[i] = QObject::tr("no rectangle and no DN");
-            continue;
-        }
-        r.rect = cv::Rect(pr.rect.x(), pr.rect.y(), pr.rect.width(), pr.rect.height());
-        r.dn = NAN;
-        if (!haveImage) {
-            run.notes[i] = QObject::tr("no image to measure on");
-            continue;
-        }
-        if ((r.rect & bounds) != r.rect) {
-            run.notes[i] = QObject::tr("rectangle leaves the %1×%2 image").arg(bounds.width).arg(bounds.height);
-            continue;
-        }
-        toMeasure.push_back(r);
-        measuredIndex.push_back(i);
+        out.push_back(r);
     }
-    if (!toMeasure.empty()) {
-        std::string err;
-        if (measureRegionDn(img->dn, p.fit, &toMeasure, &err)) {
-            for (size_t j = 0; j < toMeasure.size(); ++j) run.measured[measuredIndex[j]] = toMeasure[j];
-        } else {
-            run.error = QString::fromStdString(err);
-        }
-    }
-    // Fit over the fit regions that have a reflectance and a DN.
-    std::vector<Region> fitRegions;
-    for (size_t i = 0; i < regions.size(); ++i) {
-        if (regions[i].role != RegionRole::Fit) continue;
-        const Region& r = run.measured[i];
-        if (!std::isfinite(r.reflectance)) {
-            if (run.notes[i].isEmpty()) run.notes[i] = QObject::tr("enter the measured reflectance");
-            continue;
-        }
-        if (!std::isfinite(r.dn)) continue;
-        fitRegions.push_back(r);
-        run.fitIndex.push_back(int(i));
-    }
-    if (run.error.isEmpty()) {
-        run.fit = fitReflectance(fitRegions, p.fit);
-        if (!run.fit.ok) run.error = QString::fromStdString(run.fit.error);
-        for (size_t j = 0; j < run.fit.regions.size() && j < run.fitIndex.size(); ++j)
-            if (!run.fit.regions[j].note.empty()) run.notes[size_t(run.fitIndex[j])] = QString::fromStdString(run.fit.regions[j].note);
-    }
-    if (!run.fit.ok) return run;
-    if (haveImage) {
-        ApplyParams ap;
-        ap.dnMin = p.fit.dnMin;
-        ap.dnMax = p.fit.dnMax;
-        ap.outOfRangeToNan = p.outOfRangeToNan;
-        ap.uncertaintyImage = p.uncertaintyImage;
-        run.apply = applyReflectance(img->dn, run.fit.fit, ap);
-        if (!run.apply.ok) run.error = QString::fromStdString(run.apply.error);
-    }
-    // Relative errors of the check regions: over their rectangle on the reflectance image, or
-    // K·DN + B for regions given by their DN alone.
-    std::vector<Region> checks;
-    for (size_t i = 0; i < regions.size(); ++i) {
-        if (regions[i].role != RegionRole::Check) continue;
-        Region r = run.measured[i];
-        if (!(std::isfinite(r.reflectance) && r.reflectance > 0)) {
-            if (run.notes[i].isEmpty()) run.notes[i] = QObject::tr("enter the measured reflectance (> 0 %)");
-            continue;
-        }
-        if (!r.rect.empty() && !std::isfinite(r.dn)) continue;  // outside the image: noted above
-        if (r.rect.empty() || !run.apply.ok) {
-            if (!std::isfinite(r.dn)) continue;
-            r.rect = cv::Rect();
-            r.simulated = run.fit.fit.k * r.dn + run.fit.fit.b;
-        }
-        checks.push_back(r);
-        run.checkIndex.push_back(int(i));
-    }
-    if (checks.empty()) {
-        run.checkError = QObject::tr("no check regions with a measured reflectance");
-    } else {
-        run.check = relativeErrors(checks, run.apply.ok ? &run.apply.reflectance : nullptr, p.limitPct);
-        if (!run.check.ok) run.checkError = QString::fromStdString(run.check.error);
-    }
+    return out;
+}
+
+// The part of a run the regions' result table reads, back in core form.
+RadiometryRunResult runResultOf(const RadiometryRun& run) {
+    RadiometryRunResult r;
+    r.measured = run.measured;
+    r.fitIndex = run.fitIndex;
+    r.fit = run.fit;
+    for (const QString& n : run.notes) r.notes.push_back(n.toStdString());
+    return r;
+}
+
+// One run of the core run layer (measure -> fit -> apply -> check), with the strings the views show.
+RadiometryRun compute(std::shared_ptr<const RadiometryImage> img, const std::vector<PickedRegion>& regions,
+                      const RadiometryParams& p) {
+    RadiometryRunResult r = runRadiometry(img ? img->dn : cv::Mat(), corePicks(regions), p);
+    RadiometryRun run;
+    run.regions = regions;
+    run.measured = std::move(r.measured);
+    run.fitIndex = std::move(r.fitIndex);
+    run.fit = std::move(r.fit);
+    run.error = QString::fromStdString(r.error);
+    run.apply = std::move(r.apply);
+    run.checkIndex = std::move(r.checkIndex);
+    run.check = std::move(r.check);
+    run.checkError = QString::fromStdString(r.checkError);
+    for (const auto& n : r.notes) run.notes.push_back(QString::fromStdString(n));
     return run;
 }
 
@@ -236,64 +95,15 @@ bool parseRegionRole(const QString& s, RegionRole* r) {
     return true;
 }
 
-QString validateRadiometryParams(const RadiometryParams& p) {
-    if (std::string e = validate(p.fit); !e.empty()) return QObject::tr("reflectance fit: %1").arg(QString::fromStdString(e));
-    if (std::string e = validate(p.mosaic); !e.empty()) return QObject::tr("mosaic: %1").arg(QString::fromStdString(e));
-    if (!(p.limitPct > 0 && p.limitPct <= 1000)) return QObject::tr("the relative-error limit must be within 0..1000 %");
-    return {};
-}
+QString validateRadiometryParams(const RadiometryParams& p) { return QString::fromStdString(validate(p)); }
 
-QJsonObject radiometryParamsToJson(const RadiometryParams& p) {
-    QJsonObject o;
-    o["dn_min"] = p.fit.dnMin;
-    o["dn_max"] = p.fit.dnMax;
-    o["exclude_out_of_range"] = p.fit.excludeOutOfRange;
-    o["vm_pct"] = p.fit.spectrometerPct;
-    o["nan_out_of_range"] = p.outOfRangeToNan;
-    o["uncertainty_image"] = p.uncertaintyImage;
-    o["limit_pct"] = p.limitPct;
-    QJsonObject m;
-    m["features"] = featureTypeName(p.mosaic.features);
-    m["model"] = motionModelName(p.mosaic.model);
-    m["blend"] = blendModeName(p.mosaic.blend);
-    m["ransac_px"] = p.mosaic.ransacThresholdPx;
-    m["min_inliers"] = p.mosaic.minInliers;
-    o["mosaic"] = m;
-    return o;
-}
+QJsonObject radiometryParamsToJson(const RadiometryParams& p) { return toQtJson(radiometrySchema().toJson(p)); }
 
 bool radiometryParamsFromJson(const QJsonObject& o, RadiometryParams* out, QString* error) {
     RadiometryParams p;
-    auto num = [&](const QJsonObject& obj, const char* key, double* v) {
-        if (!obj.contains(key)) return true;
-        if (!obj[key].isDouble()) return fail(error, QObject::tr("radiometry parameter %1 must be a number").arg(key));
-        *v = obj[key].toDouble();
-        return true;
-    };
-    auto flag = [&](const QJsonObject& obj, const char* key, bool* v) {
-        if (!obj.contains(key)) return true;
-        if (!obj[key].isBool()) return fail(error, QObject::tr("radiometry parameter %1 must be true or false").arg(key));
-        *v = obj[key].toBool();
-        return true;
-    };
-    const QJsonObject m = o["mosaic"].toObject();
-    double minInliers = p.mosaic.minInliers;
-    if (!num(o, "dn_min", &p.fit.dnMin) || !num(o, "dn_max", &p.fit.dnMax) ||
-        !flag(o, "exclude_out_of_range", &p.fit.excludeOutOfRange) || !num(o, "vm_pct", &p.fit.spectrometerPct) ||
-        !flag(o, "nan_out_of_range", &p.outOfRangeToNan) || !flag(o, "uncertainty_image", &p.uncertaintyImage) ||
-        !num(o, "limit_pct", &p.limitPct) || !num(m, "ransac_px", &p.mosaic.ransacThresholdPx) ||
-        !num(m, "min_inliers", &minInliers))
-        return false;
-    if (minInliers != std::floor(minInliers) || std::fabs(minInliers) > 1e9)  // before the int conversion
-        return fail(error, QObject::tr("radiometry parameter min_inliers must be a whole number, not %1").arg(minInliers));
-    p.mosaic.minInliers = int(minInliers);
-    if (m.contains("features") && !parseFeatureType(m["features"].toString().toStdString(), &p.mosaic.features))
-        return fail(error, QObject::tr("mosaic features must be akaze or orb, not \"%1\"").arg(m["features"].toString()));
-    if (m.contains("model") && !parseMotionModel(m["model"].toString().toStdString(), &p.mosaic.model))
-        return fail(error, QObject::tr("mosaic model: unknown \"%1\"").arg(m["model"].toString()));
-    if (m.contains("blend") && !parseBlendMode(m["blend"].toString().toStdString(), &p.mosaic.blend))
-        return fail(error, QObject::tr("mosaic blend: unknown \"%1\"").arg(m["blend"].toString()));
-    if (const QString e = validateRadiometryParams(p); !e.isEmpty()) return fail(error, e);
+    std::string err;
+    if (!radiometrySchema().fromJson(fromQtJson(o), &p, &err)) return fail(error, err);
+    if (const std::string e = validate(p); !e.empty()) return fail(error, e);
     *out = p;
     return true;
 }
@@ -360,9 +170,9 @@ void RadiometryController::startMosaic(std::vector<cv::Mat> frames, const QStrin
                      : tr("Mosaicking %1 frames…").arg(frames.size()));
     QPointer<RadiometryController> self(this);
     (void)QtConcurrent::run([=]() mutable {
-        DemoField field;
+        sim::RadiometryDemoField field;
         if (demo) {
-            field = makeDemoField();
+            field = sim::demoRadiometryField();
             frames = field.frames;
         }
         MosaicResult r = mosaicRow(frames, mp, fb.get());
@@ -376,17 +186,21 @@ void RadiometryController::startMosaic(std::vector<cv::Mat> frames, const QStrin
             img->frames = paths;
             img->source = demo ? QStringLiteral("demo") : QString();
             if (demo) {
-                img->demoK = kDemoK;
-                img->demoB = kDemoB;
+                img->demoK = field.k;
+                img->demoB = field.b;
                 // Scene pixels → mosaic pixels through frame 0's transform.
                 const cv::Matx33d& t = r.frameToMosaic[0];
                 auto map = [&](double x, double y) {
                     const cv::Vec3d v = t * cv::Vec3d(x - field.frame0.x, y - field.frame0.y, 1);
                     return QPointF(v[0] / v[2], v[1] / v[2]);
                 };
-                for (PickedRegion pr : field.regions) {
-                    const QPointF a = map(pr.rect.left(), pr.rect.top());
-                    const QPointF b = map(pr.rect.left() + pr.rect.width(), pr.rect.top() + pr.rect.height());
+                for (const sim::DemoRegion& dr : field.regions) {
+                    PickedRegion pr;
+                    pr.name = QString::fromStdString(dr.name);
+                    pr.role = dr.check ? RegionRole::Check : RegionRole::Fit;
+                    pr.reflectance = dr.reflectance;
+                    const QPointF a = map(dr.rect.x, dr.rect.y);
+                    const QPointF b = map(dr.rect.x + dr.rect.width, dr.rect.y + dr.rect.height);
                     pr.rect = QRect(QPoint(int(std::lround(a.x())), int(std::lround(a.y()))),
                                     QPoint(int(std::lround(b.x())) - 1, int(std::lround(b.y())) - 1));
                     regions.push_back(pr);
@@ -604,31 +418,9 @@ bool RadiometryController::exportFit(const QString& path, QString* error) const 
 }
 
 bool RadiometryController::exportRegions(const QString& path, QString* error) const {
-    const RadiometryRun& r = m_run;
-    std::string s = "name,role,reflectance,x,y,w,h,dn,dn_sd,pixels,predicted,residual,used,note\n";
-    for (size_t i = 0; i < r.regions.size(); ++i) {
-        const PickedRegion& p = r.regions[i];
-        const Region& m = r.measured[i];
-        double predicted = NAN, residual = NAN;
-        bool used = false;
-        for (size_t j = 0; j < r.fitIndex.size(); ++j)
-            if (r.fitIndex[j] == int(i) && r.fit.ok) {
-                predicted = r.fit.regions[j].predicted;
-                residual = r.fit.regions[j].residual;
-                used = r.fit.regions[j].used;
-            }
-        if (p.role == RegionRole::Check && r.fit.ok && std::isfinite(m.dn)) predicted = r.fit.fit.k * m.dn + r.fit.fit.b;
-        const bool rect = !p.rect.isEmpty();
-        s += core::csvEscape(p.name.toStdString()) + "," + regionRoleName(p.role) + "," + gx(p.reflectance) + "," +
-             (rect ? std::to_string(p.rect.x()) + "," + std::to_string(p.rect.y()) + "," + std::to_string(p.rect.width()) + "," +
-                         std::to_string(p.rect.height())
-                   : std::string(",,,")) +
-             "," + gx(m.dn) + "," + gx(m.dnStd) + "," + (m.pixels ? std::to_string(m.pixels) : std::string()) + "," +
-             gx(predicted) + "," + gx(residual) + "," + (used ? "1" : "0") + "," +
-             core::csvEscape(i < r.notes.size() ? r.notes[i].toStdString() : std::string()) + "\n";
-    }
     std::string err;
-    if (!core::writeFileAtomic(path.toStdString(), s, &err)) return fail(error, err);
+    if (!core::writeFileAtomic(path.toStdString(), regionResultsCsv(corePicks(m_run.regions), runResultOf(m_run)), &err))
+        return fail(error, err);
     return true;
 }
 

@@ -17,6 +17,8 @@
 #include "core/common/feedback.hpp"
 #include "core/radiometry/geotiff.hpp"
 #include "core/radiometry/mosaic.hpp"
+#include "core/radiometry/radiometry_params.hpp"
+#include "core/radiometry/radiometry_run.hpp"
 #include "core/radiometry/reflectance.hpp"
 
 #include "ui/live_job.hpp"
@@ -36,15 +38,13 @@ struct PickedRegion {
     double dn = NAN;             ///< mean DN given in a regions file without a rectangle
 };
 
-struct RadiometryParams {
-    core::radiometry::ReflectanceFitParams fit;  ///< linear range, exclusion, V_M
-    bool outOfRangeToNan = false;                ///< reflectance image: pixels outside the range → NaN
-    bool uncertaintyImage = true;                ///< also compute the per-pixel uncertainty
-    double limitPct = 5.0;                       ///< relative-error limit (paper 003: 5 %)
-    core::radiometry::MosaicParams mosaic;
-};
+/// The parameters: one schema table (core::radiometry::radiometrySchema()).
+using RadiometryParams = core::radiometry::RadiometryParams;
 QString validateRadiometryParams(const RadiometryParams& p);
+/// The session's parameter block: the schema's JSON (every field, always written).
 QJsonObject radiometryParamsToJson(const RadiometryParams& p);
+/// Through the schema: unknown keys, wrong types and invalid values are errors naming the key;
+/// missing keys keep their defaults.
 bool radiometryParamsFromJson(const QJsonObject& o, RadiometryParams* p, QString* error);
 
 /// The DN image and where it came from.

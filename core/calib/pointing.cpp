@@ -129,6 +129,226 @@ std::string pointName(const ControlPoint& c, size_t i) {
     return s;
 }
 
+// ---- the stages of calibratePointing ----
+
+// The beam designs: one per id, finite; two for the dual-beam model. "" when fine.
+std::string checkBeams(const std::vector<BeamDesign>& beams, const PointingCalibParams& params, std::map<int, size_t>* byId) {
+    for (size_t k = 0; k < beams.size(); ++k) {
+        const BeamDesign& b = beams[k];
+        if (byId->count(b.id)) {
+            return "beam " + std::to_string(b.id) + " is designed twice";
+        }
+        (*byId)[b.id] = k;
+        if (!(std::isfinite(b.alphaRad) && std::isfinite(b.betaRad) && b.offsetBodyM.allFinite() &&
+              b.laserToBody.coeffs().allFinite() && b.laserToBody.norm() > 0.5)) {
+            return "beam " + std::to_string(b.id) + ": design angles, offset or mounting are not finite";
+        }
+    }
+    if (params.model == CalibModel::DualBeam && beams.size() != 2) {
+        return "the dual-beam model needs exactly two beam designs (got " + std::to_string(beams.size()) + ")";
+    }
+    return {};
+}
+
+// One control point: plausible geometry and sigmas, its ENU frame, along-track direction and
+// whitening (the observation covariance from the control, range, attitude and orbit noise).
+// "" when fine.
+std::string preparePoint(const ControlPoint& c, size_t i, const BeamDesign& beam, const PointingCalibParams& params,
+                         PointPrep* pp) {
+    if (!c.shot.satEcef.allFinite() || !c.groundEcef.allFinite() || !std::isfinite(c.shot.rangeM) ||
+        !c.shot.bodyToEcef.coeffs().allFinite()) {
+        return pointName(c, i) + ": non-finite satellite position, attitude, range or ground point";
+    }
+    // Plausible geometry: a ground point near the Earth's surface (6340–6400 km from the centre:
+    // polar radius 6357 km, equatorial 6378 km, with room for relief) and a satellite at least
+    // 10 km above it but within 100 000 km; anything else is a unit or typing error.
+    const double rg = c.groundEcef.norm(), rs = c.shot.satEcef.norm();
+    if (!(rg > 6.34e6 && rg < 6.40e6)) {
+        return pointName(c, i) + ": ground point " + formatDouble(rg / 1000, 6) +
+                    " km from the Earth's centre (expected about 6371 km: ECEF metres?)";
+    }
+    if (!(rs > rg + 1e4 && rs < 1e8)) {
+        return pointName(c, i) + ": satellite " + formatDouble(rs / 1000, 6) +
+                    " km from the Earth's centre (expected an orbit above the ground point)";
+    }
+    if (std::fabs(c.shot.bodyToEcef.norm() - 1) > 1e-3) {
+        return pointName(c, i) + ": the attitude quaternion is not a unit quaternion (norm " +
+                    formatDouble(c.shot.bodyToEcef.norm(), 6) + ")";
+    }
+    if (!(c.shot.rangeM > 0)) {
+        return pointName(c, i) + ": range must be > 0 m";
+    }
+    const double sh = std::isnan(c.sigmaHorizontalM) ? params.sigmaHorizontalM : c.sigmaHorizontalM;
+    const double sv = std::isnan(c.sigmaVerticalM) ? params.sigmaVerticalM : c.sigmaVerticalM;
+    if (!(sh > 0 && std::isfinite(sh)) || !(sv > 0 && std::isfinite(sv))) {
+        return pointName(c, i) + ": control-point sigmas must be finite and > 0";
+    }
+    const Geodetic g = ecefToGeodetic(c.groundEcef);
+    pp->toEnu = ecefToEnuRotation(g.latRad, g.lonRad);
+    const Eigen::Vector3d x = pp->toEnu * (c.shot.bodyToEcef.normalized() * Eigen::Vector3d::UnitX());
+    pp->along = Eigen::Vector2d(x.x(), x.y());
+    pp->along = pp->along.norm() > 1e-9 ? pp->along.normalized() : Eigen::Vector2d(0, 1);
+    // Observation covariance in ECEF.
+    const Eigen::Vector3d u =
+        (c.shot.bodyToEcef.normalized() * bodyPointing(beam, 0, 0)).normalized();
+    Eigen::Matrix3d C = pp->toEnu.transpose() * Eigen::Vector3d(sh * sh, sh * sh, sv * sv).asDiagonal() * pp->toEnu;
+    C += params.sigmaRangeM * params.sigmaRangeM * u * u.transpose();
+    C += std::pow(c.shot.rangeM * params.sigmaAttitudeRad, 2) * (Eigen::Matrix3d::Identity() - u * u.transpose());
+    C += params.sigmaOrbitM * params.sigmaOrbitM * Eigen::Matrix3d::Identity();
+    Eigen::MatrixXd P = c.useHeight ? Eigen::MatrixXd(pp->toEnu) : Eigen::MatrixXd(pp->toEnu.topRows(2));
+    const Eigen::MatrixXd Cp = P * C * P.transpose();
+    Eigen::LLT<Eigen::MatrixXd> llt(Cp);
+    if (llt.info() != Eigen::Success) {
+        return pointName(c, i) + ": its covariance is not positive definite";
+    }
+    pp->whiten = llt.matrixL().solve(P);
+    return {};
+}
+
+// The unknowns of the model: per beam (single) or beam 1 + relative rotation (dual), with range
+// biases when solved. "" when fine (beams without points are warned about, single model).
+std::string layoutParameters(const std::vector<BeamDesign>& beams, const std::vector<int>& count, const PointingCalibParams& params,
+                             Model* m, std::vector<std::string>* warnings) {
+    m->beams = &beams;
+    m->kind = params.model;
+    m->idx.resize(beams.size());
+    if (params.model == CalibModel::DualBeam) {
+        const std::string b1 = std::to_string(beams[0].id), b2 = std::to_string(beams[1].id);
+        if (count[0] == 0) {
+            return "dual-beam model: beam " + b1 + " (the reference) has no control points";
+        }
+        const bool needBeam2 = !params.fixRelativeRotation || params.solveRange;
+        if (count[1] == 0 && needBeam2) {
+            return "dual-beam model: beam " + b2 +
+                        " has no control points, so its relative rotation and range bias are undetermined "
+                        "(hold them with fixRelativeRotation and no range solution, or use the single-beam model)";
+        }
+        m->idx[0].dAlpha = m->add("dalpha_b" + b1);
+        m->idx[0].dBeta = m->add("dbeta_b" + b1);
+        if (params.solveRange) m->idx[0].dRho = m->add("drho_b" + b1);
+        if (!params.fixRelativeRotation) {
+            m->rIdx = m->add("rel_r");
+            m->aIdx = m->add("rel_a");
+        }
+        if (params.solveRange) m->idx[1].dRho = m->add("drho_b" + b2);
+    } else {
+        for (size_t k = 0; k < beams.size(); ++k) {
+            if (count[k] == 0) continue;
+            const std::string b = std::to_string(beams[k].id);
+            m->idx[k].dAlpha = m->add("dalpha_b" + b);
+            m->idx[k].dBeta = m->add("dbeta_b" + b);
+            if (params.solveRange) m->idx[k].dRho = m->add("drho_b" + b);
+        }
+        for (size_t k = 0; k < beams.size(); ++k)
+            if (count[k] == 0)
+                warnings->push_back("beam " + std::to_string(beams[k].id) + " has no control points: not calibrated");
+    }
+    return {};
+}
+
+// The record of every iteration: parameters, chi2, ground residuals and their RMS.
+void recordIterations(const std::vector<LmIterate>& history, const std::vector<ControlPoint>& points,
+                      const std::vector<PointPrep>& prep, const Model& m, PointingCalibResult& res) {
+    for (const LmIterate& it : history) {
+        CalibIteration ci;
+        ci.iteration = static_cast<int>(res.iterations.size());
+        ci.params.assign(it.params.data(), it.params.data() + it.params.size());
+        ci.chi2 = it.cost;
+        double sp = 0, sh = 0;
+        for (size_t i = 0; i < points.size(); ++i) {
+            const GroundResidual g = residualOf(prep[i], m.ground(prep[i].design, points[i].shot, it.params) - points[i].groundEcef);
+            ci.residuals.push_back(g);
+            sp += g.e * g.e + g.n * g.n;
+            sh += g.u * g.u;
+        }
+        ci.rmsPlanM = std::sqrt(sp / points.size());
+        ci.rmsHeightM = std::sqrt(sh / points.size());
+        ci.rms3dM = std::sqrt((sp + sh) / points.size());
+        res.iterations.push_back(std::move(ci));
+    }
+}
+
+// Per control point: residuals before and after, the normalized residual (outliers warned about).
+void recordResiduals(const std::vector<ControlPoint>& points, const std::vector<PointPrep>& prep, const Model& m,
+                     const Eigen::VectorXd& p, PointingCalibResult& res) {
+    for (size_t i = 0; i < points.size(); ++i) {
+        ControlPointResidual cr;
+        cr.index = i;
+        cr.id = points[i].id.empty() ? std::to_string(i + 1) : points[i].id;
+        cr.beam = points[i].beam;
+        cr.before = res.iterations.front().residuals[i];
+        cr.after = res.iterations.back().residuals[i];
+        const Eigen::Vector3d d = m.ground(prep[i].design, points[i].shot, p) - points[i].groundEcef;
+        cr.normalized = (prep[i].whiten * d).norm();
+        const double dims = points[i].useHeight ? 3 : 2;
+        if (cr.normalized > 4 * std::sqrt(dims))
+            res.warnings.push_back(pointName(points[i], i) + ": residual " + formatDouble(cr.normalized, 3) +
+                                   " sigma after calibration (outlier?)");
+        res.residuals.push_back(cr);
+    }
+}
+
+// Beam k's outcome: corrections, calibrated angles, three-axis angles and their sigmas (by
+// numeric propagation of the covariance), and the plan shift of its footprint.
+BeamCalibration beamOutcome(size_t k, const std::vector<BeamDesign>& beams, int points_k, const Model& m,
+                            const PointingCalibParams& params, const Eigen::VectorXd& p, const Eigen::MatrixXd& cov,
+                            const Eigen::VectorXd& steps, const std::vector<ControlPoint>& points,
+                            const std::vector<PointPrep>& prep, const std::vector<double>& paramSd) {
+    const int np = static_cast<int>(p.size());
+    BeamCalibration bc;
+    const BeamDesign& b = beams[k];
+    bc.id = b.id;
+    bc.points = points_k;
+    const bool hasParams = m.idx[k].dAlpha >= 0 || (params.model == CalibModel::DualBeam);
+    bc.solved = hasParams && (points_k > 0 || params.model == CalibModel::DualBeam);
+    bc.rangeSolved = m.idx[k].dRho >= 0;
+    auto derived = [&](const Eigen::VectorXd& q) {
+        const Eigen::Vector3d ub = m.uBody(k, q);
+        const Eigen::Vector3d ul = b.laserToBody.normalized().inverse() * ub;
+        double al, be;
+        pointingAngles(ul, &al, &be);
+        const ThreeAxisAngles t = threeAxisAngles(ub);
+        Eigen::VectorXd v(5);
+        v << al, be, t.x, t.y, t.z;
+        return v;
+    };
+    const Eigen::VectorXd v = derived(p);
+    bc.alphaRad = v(0);
+    bc.betaRad = v(1);
+    bc.dAlphaRad = v(0) - b.alphaRad;
+    bc.dBetaRad = std::remainder(v(1) - b.betaRad, 2 * M_PI);
+    bc.dRhoM = Model::at(p, m.idx[k].dRho);
+    bc.designAngles = threeAxisAngles(bodyPointing(b, 0, 0));
+    bc.calibratedAngles = {v(2), v(3), v(4)};
+    if (bc.solved) {
+        Eigen::MatrixXd G(5, np);
+        for (int j = 0; j < np; ++j) {
+            Eigen::VectorXd qp = p, qm = p;
+            qp(j) += steps(j);
+            qm(j) -= steps(j);
+            Eigen::VectorXd d = derived(qp) - derived(qm);
+            d(1) = std::remainder(d(1), 2 * M_PI);
+            G.col(j) = d / (2 * steps(j));
+        }
+        const Eigen::MatrixXd cv = G * cov * G.transpose();
+        bc.dAlphaSdRad = sqrtVariance(cv(0, 0));
+        bc.dBetaSdRad = sqrtVariance(cv(1, 1));
+        bc.angleXSdRad = sqrtVariance(cv(2, 2));
+        bc.angleYSdRad = sqrtVariance(cv(3, 3));
+        bc.angleZSdRad = sqrtVariance(cv(4, 4));
+        if (bc.rangeSolved) bc.dRhoSdM = paramSd[m.idx[k].dRho];
+        for (size_t i = 0; i < points.size(); ++i) {
+            if (prep[i].design != k) continue;
+            const Eigen::Vector3d g0 = geolocate(b, points[i].shot, bodyPointing(b, 0, 0), 0);
+            const Eigen::Vector3d g1 = geolocate(b, points[i].shot, m.uBody(k, p), 0);
+            const Eigen::Vector3d d = prep[i].toEnu * (g1 - g0);
+            bc.planShiftM = std::hypot(d.x(), d.y());
+            break;
+        }
+    }
+    return bc;
+}
+
 }  // namespace
 
 PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, const std::vector<ControlPoint>& points,
@@ -148,21 +368,8 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
         return res;
     }
     std::map<int, size_t> byId;
-    for (size_t k = 0; k < beams.size(); ++k) {
-        const BeamDesign& b = beams[k];
-        if (byId.count(b.id)) {
-            res.error = "beam " + std::to_string(b.id) + " is designed twice";
-            return res;
-        }
-        byId[b.id] = k;
-        if (!(std::isfinite(b.alphaRad) && std::isfinite(b.betaRad) && b.offsetBodyM.allFinite() &&
-              b.laserToBody.coeffs().allFinite() && b.laserToBody.norm() > 0.5)) {
-            res.error = "beam " + std::to_string(b.id) + ": design angles, offset or mounting are not finite";
-            return res;
-        }
-    }
-    if (params.model == CalibModel::DualBeam && beams.size() != 2) {
-        res.error = "the dual-beam model needs exactly two beam designs (got " + std::to_string(beams.size()) + ")";
+    if (const std::string e = checkBeams(beams, params, &byId); !e.empty()) {
+        res.error = e;
         return res;
     }
     std::vector<int> count(beams.size(), 0);
@@ -174,102 +381,20 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
             res.error = pointName(c, i) + ": beam " + std::to_string(c.beam) + " has no design";
             return res;
         }
-        if (!c.shot.satEcef.allFinite() || !c.groundEcef.allFinite() || !std::isfinite(c.shot.rangeM) ||
-            !c.shot.bodyToEcef.coeffs().allFinite()) {
-            res.error = pointName(c, i) + ": non-finite satellite position, attitude, range or ground point";
-            return res;
-        }
-        // Plausible geometry: a ground point near the Earth's surface (6340–6400 km from the centre:
-        // polar radius 6357 km, equatorial 6378 km, with room for relief) and a satellite at least
-        // 10 km above it but within 100 000 km; anything else is a unit or typing error.
-        const double rg = c.groundEcef.norm(), rs = c.shot.satEcef.norm();
-        if (!(rg > 6.34e6 && rg < 6.40e6)) {
-            res.error = pointName(c, i) + ": ground point " + formatDouble(rg / 1000, 6) +
-                        " km from the Earth's centre (expected about 6371 km: ECEF metres?)";
-            return res;
-        }
-        if (!(rs > rg + 1e4 && rs < 1e8)) {
-            res.error = pointName(c, i) + ": satellite " + formatDouble(rs / 1000, 6) +
-                        " km from the Earth's centre (expected an orbit above the ground point)";
-            return res;
-        }
-        if (std::fabs(c.shot.bodyToEcef.norm() - 1) > 1e-3) {
-            res.error = pointName(c, i) + ": the attitude quaternion is not a unit quaternion (norm " +
-                        formatDouble(c.shot.bodyToEcef.norm(), 6) + ")";
-            return res;
-        }
-        if (!(c.shot.rangeM > 0)) {
-            res.error = pointName(c, i) + ": range must be > 0 m";
-            return res;
-        }
-        const double sh = std::isnan(c.sigmaHorizontalM) ? params.sigmaHorizontalM : c.sigmaHorizontalM;
-        const double sv = std::isnan(c.sigmaVerticalM) ? params.sigmaVerticalM : c.sigmaVerticalM;
-        if (!(sh > 0 && std::isfinite(sh)) || !(sv > 0 && std::isfinite(sv))) {
-            res.error = pointName(c, i) + ": control-point sigmas must be finite and > 0";
-            return res;
-        }
         PointPrep& pp = prep[i];
         pp.design = it->second;
-        ++count[pp.design];
-        const Geodetic g = ecefToGeodetic(c.groundEcef);
-        pp.toEnu = ecefToEnuRotation(g.latRad, g.lonRad);
-        const Eigen::Vector3d x = pp.toEnu * (c.shot.bodyToEcef.normalized() * Eigen::Vector3d::UnitX());
-        pp.along = Eigen::Vector2d(x.x(), x.y());
-        pp.along = pp.along.norm() > 1e-9 ? pp.along.normalized() : Eigen::Vector2d(0, 1);
-        // Observation covariance in ECEF.
-        const Eigen::Vector3d u =
-            (c.shot.bodyToEcef.normalized() * bodyPointing(beams[pp.design], 0, 0)).normalized();
-        Eigen::Matrix3d C = pp.toEnu.transpose() * Eigen::Vector3d(sh * sh, sh * sh, sv * sv).asDiagonal() * pp.toEnu;
-        C += params.sigmaRangeM * params.sigmaRangeM * u * u.transpose();
-        C += std::pow(c.shot.rangeM * params.sigmaAttitudeRad, 2) * (Eigen::Matrix3d::Identity() - u * u.transpose());
-        C += params.sigmaOrbitM * params.sigmaOrbitM * Eigen::Matrix3d::Identity();
-        Eigen::MatrixXd P = c.useHeight ? Eigen::MatrixXd(pp.toEnu) : Eigen::MatrixXd(pp.toEnu.topRows(2));
-        const Eigen::MatrixXd Cp = P * C * P.transpose();
-        Eigen::LLT<Eigen::MatrixXd> llt(Cp);
-        if (llt.info() != Eigen::Success) {
-            res.error = pointName(c, i) + ": its covariance is not positive definite";
+        if (const std::string e = preparePoint(c, i, beams[pp.design], params, &pp); !e.empty()) {
+            res.error = e;
             return res;
         }
-        pp.whiten = llt.matrixL().solve(P);
+        ++count[pp.design];
         res.observations += c.useHeight ? 3 : 2;
     }
     // Parameter layout.
     Model m;
-    m.beams = &beams;
-    m.kind = params.model;
-    m.idx.resize(beams.size());
-    if (params.model == CalibModel::DualBeam) {
-        const std::string b1 = std::to_string(beams[0].id), b2 = std::to_string(beams[1].id);
-        if (count[0] == 0) {
-            res.error = "dual-beam model: beam " + b1 + " (the reference) has no control points";
-            return res;
-        }
-        const bool needBeam2 = !params.fixRelativeRotation || params.solveRange;
-        if (count[1] == 0 && needBeam2) {
-            res.error = "dual-beam model: beam " + b2 +
-                        " has no control points, so its relative rotation and range bias are undetermined "
-                        "(hold them with fixRelativeRotation and no range solution, or use the single-beam model)";
-            return res;
-        }
-        m.idx[0].dAlpha = m.add("dalpha_b" + b1);
-        m.idx[0].dBeta = m.add("dbeta_b" + b1);
-        if (params.solveRange) m.idx[0].dRho = m.add("drho_b" + b1);
-        if (!params.fixRelativeRotation) {
-            m.rIdx = m.add("rel_r");
-            m.aIdx = m.add("rel_a");
-        }
-        if (params.solveRange) m.idx[1].dRho = m.add("drho_b" + b2);
-    } else {
-        for (size_t k = 0; k < beams.size(); ++k) {
-            if (count[k] == 0) continue;
-            const std::string b = std::to_string(beams[k].id);
-            m.idx[k].dAlpha = m.add("dalpha_b" + b);
-            m.idx[k].dBeta = m.add("dbeta_b" + b);
-            if (params.solveRange) m.idx[k].dRho = m.add("drho_b" + b);
-        }
-        for (size_t k = 0; k < beams.size(); ++k)
-            if (count[k] == 0)
-                res.warnings.push_back("beam " + std::to_string(beams[k].id) + " has no control points: not calibrated");
+    if (const std::string e = layoutParameters(beams, count, params, &m, &res.warnings); !e.empty()) {
+        res.error = e;
+        return res;
     }
     const int np = static_cast<int>(m.names.size());
     res.paramNames = m.names;
@@ -356,95 +481,11 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
     if (res.dof > 0 && res.chi2 / res.dof > 4)
         res.warnings.push_back("residuals exceed the stated noise (reduced chi-square " + formatDouble(res.chi2 / res.dof, 3) +
                                "): check the sigmas or look for an outlier");
-    // Iteration records.
-    for (const LmIterate& it : o.history) {
-        CalibIteration ci;
-        ci.iteration = static_cast<int>(res.iterations.size());
-        ci.params.assign(it.params.data(), it.params.data() + np);
-        ci.chi2 = it.cost;
-        double sp = 0, sh = 0;
-        for (size_t i = 0; i < points.size(); ++i) {
-            const GroundResidual g = residualOf(prep[i], m.ground(prep[i].design, points[i].shot, it.params) - points[i].groundEcef);
-            ci.residuals.push_back(g);
-            sp += g.e * g.e + g.n * g.n;
-            sh += g.u * g.u;
-        }
-        ci.rmsPlanM = std::sqrt(sp / points.size());
-        ci.rmsHeightM = std::sqrt(sh / points.size());
-        ci.rms3dM = std::sqrt((sp + sh) / points.size());
-        res.iterations.push_back(std::move(ci));
-    }
-    // Per-point residuals before / after.
-    for (size_t i = 0; i < points.size(); ++i) {
-        ControlPointResidual cr;
-        cr.index = i;
-        cr.id = points[i].id.empty() ? std::to_string(i + 1) : points[i].id;
-        cr.beam = points[i].beam;
-        cr.before = res.iterations.front().residuals[i];
-        cr.after = res.iterations.back().residuals[i];
-        const Eigen::Vector3d d = m.ground(prep[i].design, points[i].shot, p) - points[i].groundEcef;
-        cr.normalized = (prep[i].whiten * d).norm();
-        const double dims = points[i].useHeight ? 3 : 2;
-        if (cr.normalized > 4 * std::sqrt(dims))
-            res.warnings.push_back(pointName(points[i], i) + ": residual " + formatDouble(cr.normalized, 3) +
-                                   " sigma after calibration (outlier?)");
-        res.residuals.push_back(cr);
-    }
-    // Per-beam outcome: corrections, calibrated angles, three-axis angles, their σ.
-    for (size_t k = 0; k < beams.size(); ++k) {
-        BeamCalibration bc;
-        const BeamDesign& b = beams[k];
-        bc.id = b.id;
-        bc.points = count[k];
-        const bool hasParams = m.idx[k].dAlpha >= 0 || (params.model == CalibModel::DualBeam);
-        bc.solved = hasParams && (count[k] > 0 || params.model == CalibModel::DualBeam);
-        bc.rangeSolved = m.idx[k].dRho >= 0;
-        auto derived = [&](const Eigen::VectorXd& q) {
-            const Eigen::Vector3d ub = m.uBody(k, q);
-            const Eigen::Vector3d ul = b.laserToBody.normalized().inverse() * ub;
-            double al, be;
-            pointingAngles(ul, &al, &be);
-            const ThreeAxisAngles t = threeAxisAngles(ub);
-            Eigen::VectorXd v(5);
-            v << al, be, t.x, t.y, t.z;
-            return v;
-        };
-        const Eigen::VectorXd v = derived(p);
-        bc.alphaRad = v(0);
-        bc.betaRad = v(1);
-        bc.dAlphaRad = v(0) - b.alphaRad;
-        bc.dBetaRad = std::remainder(v(1) - b.betaRad, 2 * M_PI);
-        bc.dRhoM = Model::at(p, m.idx[k].dRho);
-        bc.designAngles = threeAxisAngles(bodyPointing(b, 0, 0));
-        bc.calibratedAngles = {v(2), v(3), v(4)};
-        if (bc.solved) {
-            Eigen::MatrixXd G(5, np);
-            for (int j = 0; j < np; ++j) {
-                Eigen::VectorXd qp = p, qm = p;
-                qp(j) += steps(j);
-                qm(j) -= steps(j);
-                Eigen::VectorXd d = derived(qp) - derived(qm);
-                d(1) = std::remainder(d(1), 2 * M_PI);
-                G.col(j) = d / (2 * steps(j));
-            }
-            const Eigen::MatrixXd cv = G * cov * G.transpose();
-            bc.dAlphaSdRad = sqrtVariance(cv(0, 0));
-            bc.dBetaSdRad = sqrtVariance(cv(1, 1));
-            bc.angleXSdRad = sqrtVariance(cv(2, 2));
-            bc.angleYSdRad = sqrtVariance(cv(3, 3));
-            bc.angleZSdRad = sqrtVariance(cv(4, 4));
-            if (bc.rangeSolved) bc.dRhoSdM = res.paramSd[m.idx[k].dRho];
-            for (size_t i = 0; i < points.size(); ++i) {
-                if (prep[i].design != k) continue;
-                const Eigen::Vector3d g0 = geolocate(b, points[i].shot, bodyPointing(b, 0, 0), 0);
-                const Eigen::Vector3d g1 = geolocate(b, points[i].shot, m.uBody(k, p), 0);
-                const Eigen::Vector3d d = prep[i].toEnu * (g1 - g0);
-                bc.planShiftM = std::hypot(d.x(), d.y());
-                break;
-            }
-        }
-        res.beams.push_back(bc);
-    }
+    // Stages of the outcome: iterations, per-point residuals, per-beam results.
+    recordIterations(o.history, points, prep, m, res);
+    recordResiduals(points, prep, m, p, res);
+    for (size_t k = 0; k < beams.size(); ++k)
+        res.beams.push_back(beamOutcome(k, beams, count[k], m, params, p, cov, steps, points, prep, res.paramSd));
     res.ok = true;
     return res;
 }

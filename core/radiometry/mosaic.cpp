@@ -96,52 +96,242 @@ std::vector<cv::Mat> to8bit(const std::vector<cv::Mat>& frames) {
     return out;
 }
 
+
+// ---- the stages of mosaicRow ----------------------------------------------------------------
+
+// The frames: at least two, single-channel, one depth, at least 16x16. "" when fine.
+std::string checkFrames(const std::vector<cv::Mat>& frames) {
+    if (frames.size() < 2) return "a row mosaic needs at least two frames";
+    const int depth = frames[0].depth();
+    for (size_t i = 0; i < frames.size(); ++i) {
+        const cv::Mat& f = frames[i];
+        if (f.empty() || f.channels() != 1) return "frame " + std::to_string(i + 1) + " is empty or not single-channel";
+        if (f.depth() != depth || (depth != CV_8U && depth != CV_16U && depth != CV_32F))
+            return "frame " + std::to_string(i + 1) + ": every frame must share one depth (8-bit, 16-bit or 32-bit float)";
+        if (f.cols < 16 || f.rows < 16) return "frame " + std::to_string(i + 1) + " is smaller than 16x16";
+    }
+    return {};
+}
+
+// Keypoints and descriptors of every frame (progress 0..0.5). False when cancelled.
+bool detectFeatures(const std::vector<cv::Mat>& frames, const MosaicParams& params, const Feedback* fb,
+                    std::vector<std::vector<cv::KeyPoint>>* kps, std::vector<cv::Mat>* desc) {
+    const std::vector<cv::Mat> g8 = to8bit(frames);
+    cv::Ptr<cv::Feature2D> det;
+    if (params.features == FeatureType::Orb)
+        det = cv::ORB::create(params.maxFeatures);
+    else
+        det = cv::AKAZE::create();
+    kps->assign(frames.size(), {});
+    desc->assign(frames.size(), cv::Mat());
+    for (size_t i = 0; i < frames.size(); ++i) {
+        if (cancelled(fb)) return false;
+        det->detectAndCompute(g8[i], cv::noArray(), (*kps)[i], (*desc)[i]);
+        if (fb) fb->setProgress(0.5 * (i + 1) / frames.size());
+    }
+    return true;
+}
+
+// Translation: exhaustive consensus over (up to 500) single-match hypotheses (deterministic),
+// refined three times over its inliers.
+cv::Matx33d translationConsensus(const std::vector<cv::Point2f>& pTo, const std::vector<cv::Point2f>& pFrom, double thr,
+                                 std::vector<uchar>* inl) {
+    const size_t n = pTo.size(), stride = std::max<size_t>(1, n / 500);
+    size_t bestCount = 0;
+    cv::Point2d best;
+    for (size_t k = 0; k < n; k += stride) {
+        const cv::Point2d s = cv::Point2d(pFrom[k]) - cv::Point2d(pTo[k]);
+        size_t c = 0;
+        for (size_t j = 0; j < n; ++j)
+            if (cv::norm(cv::Point2d(pFrom[j]) - cv::Point2d(pTo[j]) - s) < thr) ++c;
+        if (c > bestCount) {
+            bestCount = c;
+            best = s;
+        }
+    }
+    for (int pass = 0; pass < 3; ++pass) {
+        cv::Point2d m(0, 0);
+        int c = 0;
+        inl->assign(n, 0);
+        for (size_t j = 0; j < n; ++j)
+            if (cv::norm(cv::Point2d(pFrom[j]) - cv::Point2d(pTo[j]) - best) < thr) {
+                (*inl)[j] = 1;
+                m += cv::Point2d(pFrom[j]) - cv::Point2d(pTo[j]);
+                ++c;
+            }
+        if (c) best = m / c;
+    }
+    return cv::Matx33d(1, 0, best.x, 0, 1, best.y, 0, 0, 1);
+}
+
+// Frame i onto frame i - 1: ratio-tested matches, the model's robust fit, its inliers, RMS,
+// shift, rotation and scale. "" when fine, else why (warnings go to *warnings).
+std::string registerPair(size_t i, const std::vector<std::vector<cv::KeyPoint>>& kps, const std::vector<cv::Mat>& desc,
+                         const MosaicParams& params, PairRegistration* out, std::vector<std::string>* warnings) {
+    PairRegistration pr;
+    pr.from = i - 1;
+    pr.to = i;
+    pr.keypointsFrom = static_cast<int>(kps[i - 1].size());
+    pr.keypointsTo = static_cast<int>(kps[i].size());
+    std::vector<cv::Point2f> pTo, pFrom;
+    if (!desc[i].empty() && !desc[i - 1].empty()) {
+        cv::BFMatcher matcher(cv::NORM_HAMMING);
+        std::vector<std::vector<cv::DMatch>> knn;
+        matcher.knnMatch(desc[i], desc[i - 1], knn, 2);
+        for (const auto& m : knn) {
+            if (m.size() < 2 || m[0].distance >= params.ratioTest * m[1].distance) continue;
+            pTo.push_back(kps[i][m[0].queryIdx].pt);
+            pFrom.push_back(kps[i - 1][m[0].trainIdx].pt);
+        }
+    }
+    pr.matches = static_cast<int>(pTo.size());
+    const std::string pairName = "frames " + std::to_string(i) + " and " + std::to_string(i + 1);
+    if (pr.matches < params.minInliers)
+        return pairName + ": only " + std::to_string(pr.matches) + " distinctive matches (need " +
+               std::to_string(params.minInliers) + "): too little overlap or texture, or frames out of order?";
+    cv::Matx33d h = cv::Matx33d::eye();
+    std::vector<uchar> inl;
+    const double thr = params.ransacThresholdPx;
+    if (params.model == MotionModel::Translation) {
+        h = translationConsensus(pTo, pFrom, thr, &inl);
+    } else if (params.model == MotionModel::Homography) {
+        const cv::Mat H = cv::findHomography(pTo, pFrom, cv::RANSAC, thr, inl, 2000, 0.995);
+        if (H.empty()) return pairName + ": no homography found";
+        h = cv::Matx33d(H);
+    } else {
+        const cv::Mat A = params.model == MotionModel::Similarity
+                              ? cv::estimateAffinePartial2D(pTo, pFrom, inl, cv::RANSAC, thr, 2000, 0.995, 10)
+                              : cv::estimateAffine2D(pTo, pFrom, inl, cv::RANSAC, thr, 2000, 0.995, 10);
+        if (A.empty()) return pairName + ": no " + motionModelName(params.model) + " transform found";
+        const cv::Mat_<double> a(A);
+        h = cv::Matx33d(a(0, 0), a(0, 1), a(0, 2), a(1, 0), a(1, 1), a(1, 2), 0, 0, 1);
+    }
+    double ss = 0;
+    int ni = 0;
+    for (size_t j = 0; j < inl.size(); ++j)
+        if (inl[j]) {
+            const cv::Point2d q = apply(h, pTo[j].x, pTo[j].y);
+            ss += std::pow(cv::norm(q - cv::Point2d(pFrom[j])), 2);
+            ++ni;
+        }
+    pr.inliers = ni;
+    pr.rmsPx = ni ? std::sqrt(ss / ni) : NAN;
+    pr.transform = h;
+    const cv::Point2d o = apply(h, 0, 0);
+    pr.shiftX = o.x;
+    pr.shiftY = o.y;
+    pr.scale = std::sqrt(std::fabs(h(0, 0) * h(1, 1) - h(0, 1) * h(1, 0)));
+    pr.rotationDeg = std::atan2(h(1, 0), h(0, 0)) * 180 / M_PI;
+    if (ni < params.minInliers)
+        return pairName + ": only " + std::to_string(ni) + " consistent matches (need " + std::to_string(params.minInliers) + ")";
+    if (std::fabs(pr.rotationDeg) > params.maxRotationDeg)
+        warnings->push_back(pairName + ": rotated by " + formatFixed(pr.rotationDeg, 2) + " degrees");
+    if (std::fabs(pr.scale - 1) > params.maxScaleChange)
+        warnings->push_back(pairName + ": scale changes by " + formatFixed(100 * (pr.scale - 1), 1) + " %");
+    *out = pr;
+    return {};
+}
+
+// The bounding box of frame `f` under transform m (pixel edges, not centres).
+void frameBounds(const cv::Mat& f, const cv::Matx33d& m, double* x0, double* y0, double* x1, double* y1) {
+    const double w = f.cols - 0.5, hh = f.rows - 0.5;
+    for (const cv::Point2d c : {cv::Point2d(-0.5, -0.5), cv::Point2d(w, -0.5), cv::Point2d(-0.5, hh), cv::Point2d(w, hh)}) {
+        const cv::Point2d p = apply(m, c.x, c.y);
+        *x0 = std::min(*x0, p.x);
+        *y0 = std::min(*y0, p.y);
+        *x1 = std::max(*x1, p.x);
+        *y1 = std::max(*y1, p.y);
+    }
+}
+
+// Adds frame f, warped by m, into the canvas sums inside box (feathered, averaged or first-wins).
+void blendFrame(const cv::Mat& frame, const cv::Matx33d& m, const cv::Rect& box, BlendMode blend, cv::Mat& sum, cv::Mat& wsum) {
+    const cv::Matx33d local = cv::Matx33d(1, 0, -box.x, 0, 1, -box.y, 0, 0, 1) * m;
+    cv::Mat f, warped, mask, weight;
+    frame.convertTo(f, CV_32F);
+    cv::warpPerspective(f, warped, cv::Mat(local), box.size(), cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+    cv::Mat ones(f.size(), CV_32F, cv::Scalar(1));
+    cv::warpPerspective(ones, mask, cv::Mat(local), box.size(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0));
+    cv::Mat valid = mask > 0.999f;
+    if (blend == BlendMode::Feather) {
+        cv::Mat pad(f.rows + 2, f.cols + 2, CV_8U, cv::Scalar(0)), dist;
+        pad(cv::Rect(1, 1, f.cols, f.rows)).setTo(255);
+        cv::distanceTransform(pad, dist, cv::DIST_L2, 3);
+        cv::warpPerspective(dist(cv::Rect(1, 1, f.cols, f.rows)), weight, cv::Mat(local), box.size(), cv::INTER_LINEAR,
+                            cv::BORDER_CONSTANT, cv::Scalar(0));
+    } else {
+        weight = cv::Mat(box.size(), CV_32F, cv::Scalar(1));
+    }
+    cv::Mat zero = weight.clone();
+    zero.setTo(0, ~valid);
+    weight = zero;
+    cv::Mat s = sum(box), ws = wsum(box);
+    if (blend == BlendMode::First) {
+        cv::Mat empty = ws == 0;
+        cv::Mat take = valid & empty;
+        warped.copyTo(s, take);
+        ws.setTo(1, take);
+    } else {
+        s += warped.mul(weight);
+        ws += weight;
+    }
+}
+
+// The canvas holding every registered frame and the blend into it (progress 0.5..1): fills
+// res.image, res.coverage and shifts res.frameToMosaic onto the canvas. "" when fine.
+std::string composeCanvas(const std::vector<cv::Mat>& frames, const MosaicParams& params, const Feedback* fb, MosaicResult& res) {
+    double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+    for (size_t i = 0; i < frames.size(); ++i) frameBounds(frames[i], res.frameToMosaic[i], &minX, &minY, &maxX, &maxY);
+    const double cw = std::ceil(maxX - minX), ch = std::ceil(maxY - minY);
+    if (!std::isfinite(cw) || !std::isfinite(ch) || cw > 32000 || ch > 32000 || cw * ch > params.maxCanvasPixels)
+        return "the mosaic would be " + formatFixed(cw, 0) + "x" + formatFixed(ch, 0) +
+               " pixels: too large (a registration went wrong, or raise the limit)";
+    const double ox = std::floor(minX + 0.5), oy = std::floor(minY + 0.5);  // frame 0 stays on the pixel grid
+    const cv::Matx33d shift(1, 0, -ox, 0, 1, -oy, 0, 0, 1);
+    const cv::Size canvas(static_cast<int>(std::ceil(maxX - ox + 0.5)), static_cast<int>(std::ceil(maxY - oy + 0.5)));
+    cv::Mat sum(canvas, CV_32F, cv::Scalar(0)), wsum(canvas, CV_32F, cv::Scalar(0));
+    for (size_t i = 0; i < frames.size(); ++i) {
+        if (cancelled(fb)) return "cancelled";
+        res.frameToMosaic[i] = shift * res.frameToMosaic[i];
+        const cv::Matx33d& m = res.frameToMosaic[i];
+        double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY, by1 = -INFINITY;
+        frameBounds(frames[i], m, &bx0, &by0, &bx1, &by1);
+        const cv::Rect box = cv::Rect(cv::Point(static_cast<int>(std::floor(bx0)), static_cast<int>(std::floor(by0))),
+                                      cv::Point(static_cast<int>(std::ceil(bx1)) + 1, static_cast<int>(std::ceil(by1)) + 1)) &
+                             cv::Rect(0, 0, canvas.width, canvas.height);
+        if (box.empty()) continue;
+        blendFrame(frames[i], m, box, params.blend, sum, wsum);
+        if (fb) fb->setProgress(0.5 + 0.5 * (i + 1) / frames.size());
+    }
+    res.coverage = wsum > 0;
+    cv::Mat avg;
+    cv::divide(sum, cv::max(wsum, 1e-12f), avg);
+    avg.setTo(0, ~res.coverage);
+    avg.convertTo(res.image, frames[0].depth());
+    return {};
+}
+
 }  // namespace
 
+// Stages: checkFrames -> detectFeatures -> registerPair (each neighbour pair, chained to frame 0)
+// -> composeCanvas (canvas, blend).
 MosaicResult mosaicRow(const std::vector<cv::Mat>& frames, const MosaicParams& params, const Feedback* fb) {
     MosaicResult res;
     if (const std::string e = validate(params); !e.empty()) {
         res.error = e;
         return res;
     }
-    if (frames.size() < 2) {
-        res.error = "a row mosaic needs at least two frames";
+    if (const std::string e = checkFrames(frames); !e.empty()) {
+        res.error = e;
         return res;
     }
-    const int depth = frames[0].depth();
-    for (size_t i = 0; i < frames.size(); ++i) {
-        const cv::Mat& f = frames[i];
-        if (f.empty() || f.channels() != 1) {
-            res.error = "frame " + std::to_string(i + 1) + " is empty or not single-channel";
-            return res;
-        }
-        if (f.depth() != depth || (depth != CV_8U && depth != CV_16U && depth != CV_32F)) {
-            res.error = "frame " + std::to_string(i + 1) + ": every frame must share one depth (8-bit, 16-bit or 32-bit float)";
-            return res;
-        }
-        if (f.cols < 16 || f.rows < 16) {
-            res.error = "frame " + std::to_string(i + 1) + " is smaller than 16x16";
-            return res;
-        }
-    }
     try {
-        const std::vector<cv::Mat> g8 = to8bit(frames);
-        cv::Ptr<cv::Feature2D> det;
-        if (params.features == FeatureType::Orb)
-            det = cv::ORB::create(params.maxFeatures);
-        else
-            det = cv::AKAZE::create();
-        std::vector<std::vector<cv::KeyPoint>> kps(frames.size());
-        std::vector<cv::Mat> desc(frames.size());
-        for (size_t i = 0; i < frames.size(); ++i) {
-            if (cancelled(fb)) {
-                res.error = "cancelled";
-                return res;
-            }
-            det->detectAndCompute(g8[i], cv::noArray(), kps[i], desc[i]);
-            if (fb) fb->setProgress(0.5 * (i + 1) / frames.size());
+        std::vector<std::vector<cv::KeyPoint>> kps;
+        std::vector<cv::Mat> desc;
+        if (!detectFeatures(frames, params, fb, &kps, &desc)) {
+            res.error = "cancelled";
+            return res;
         }
-        cv::BFMatcher matcher(cv::NORM_HAMMING);
         res.frameToMosaic.assign(frames.size(), cv::Matx33d::eye());
         for (size_t i = 1; i < frames.size(); ++i) {
             if (cancelled(fb)) {
@@ -149,182 +339,17 @@ MosaicResult mosaicRow(const std::vector<cv::Mat>& frames, const MosaicParams& p
                 return res;
             }
             PairRegistration pr;
-            pr.from = i - 1;
-            pr.to = i;
-            pr.keypointsFrom = static_cast<int>(kps[i - 1].size());
-            pr.keypointsTo = static_cast<int>(kps[i].size());
-            std::vector<cv::Point2f> pTo, pFrom;
-            if (!desc[i].empty() && !desc[i - 1].empty()) {
-                std::vector<std::vector<cv::DMatch>> knn;
-                matcher.knnMatch(desc[i], desc[i - 1], knn, 2);
-                for (const auto& m : knn) {
-                    if (m.size() < 2 || m[0].distance >= params.ratioTest * m[1].distance) continue;
-                    pTo.push_back(kps[i][m[0].queryIdx].pt);
-                    pFrom.push_back(kps[i - 1][m[0].trainIdx].pt);
-                }
-            }
-            pr.matches = static_cast<int>(pTo.size());
-            const std::string pairName = "frames " + std::to_string(i) + " and " + std::to_string(i + 1);
-            if (pr.matches < params.minInliers) {
-                res.error = pairName + ": only " + std::to_string(pr.matches) + " distinctive matches (need " +
-                            std::to_string(params.minInliers) + "): too little overlap or texture, or frames out of order?";
+            if (std::string e = registerPair(i, kps, desc, params, &pr, &res.warnings); !e.empty()) {
+                res.error = e;
                 return res;
             }
-            cv::Matx33d h = cv::Matx33d::eye();
-            std::vector<uchar> inl;
-            const double thr = params.ransacThresholdPx;
-            if (params.model == MotionModel::Translation) {
-                // Exhaustive consensus over (up to 500) single-match hypotheses: deterministic.
-                const size_t n = pTo.size(), stride = std::max<size_t>(1, n / 500);
-                size_t bestCount = 0;
-                cv::Point2d best;
-                for (size_t k = 0; k < n; k += stride) {
-                    const cv::Point2d s = cv::Point2d(pFrom[k]) - cv::Point2d(pTo[k]);
-                    size_t c = 0;
-                    for (size_t j = 0; j < n; ++j)
-                        if (cv::norm(cv::Point2d(pFrom[j]) - cv::Point2d(pTo[j]) - s) < thr) ++c;
-                    if (c > bestCount) {
-                        bestCount = c;
-                        best = s;
-                    }
-                }
-                for (int pass = 0; pass < 3; ++pass) {
-                    cv::Point2d m(0, 0);
-                    int c = 0;
-                    inl.assign(n, 0);
-                    for (size_t j = 0; j < n; ++j)
-                        if (cv::norm(cv::Point2d(pFrom[j]) - cv::Point2d(pTo[j]) - best) < thr) {
-                            inl[j] = 1;
-                            m += cv::Point2d(pFrom[j]) - cv::Point2d(pTo[j]);
-                            ++c;
-                        }
-                    if (c) best = m / c;
-                }
-                h = cv::Matx33d(1, 0, best.x, 0, 1, best.y, 0, 0, 1);
-            } else if (params.model == MotionModel::Homography) {
-                const cv::Mat H = cv::findHomography(pTo, pFrom, cv::RANSAC, thr, inl, 2000, 0.995);
-                if (H.empty()) {
-                    res.error = pairName + ": no homography found";
-                    return res;
-                }
-                h = cv::Matx33d(H);
-            } else {
-                const cv::Mat A = params.model == MotionModel::Similarity
-                                      ? cv::estimateAffinePartial2D(pTo, pFrom, inl, cv::RANSAC, thr, 2000, 0.995, 10)
-                                      : cv::estimateAffine2D(pTo, pFrom, inl, cv::RANSAC, thr, 2000, 0.995, 10);
-                if (A.empty()) {
-                    res.error = pairName + ": no " + motionModelName(params.model) + " transform found";
-                    return res;
-                }
-                const cv::Mat_<double> a(A);
-                h = cv::Matx33d(a(0, 0), a(0, 1), a(0, 2), a(1, 0), a(1, 1), a(1, 2), 0, 0, 1);
-            }
-            double ss = 0;
-            int ni = 0;
-            for (size_t j = 0; j < inl.size(); ++j)
-                if (inl[j]) {
-                    const cv::Point2d q = apply(h, pTo[j].x, pTo[j].y);
-                    ss += std::pow(cv::norm(q - cv::Point2d(pFrom[j])), 2);
-                    ++ni;
-                }
-            pr.inliers = ni;
-            pr.rmsPx = ni ? std::sqrt(ss / ni) : NAN;
-            pr.transform = h;
-            const cv::Point2d o = apply(h, 0, 0);
-            pr.shiftX = o.x;
-            pr.shiftY = o.y;
-            pr.scale = std::sqrt(std::fabs(h(0, 0) * h(1, 1) - h(0, 1) * h(1, 0)));
-            pr.rotationDeg = std::atan2(h(1, 0), h(0, 0)) * 180 / M_PI;
-            if (ni < params.minInliers) {
-                res.error = pairName + ": only " + std::to_string(ni) + " consistent matches (need " +
-                            std::to_string(params.minInliers) + ")";
-                return res;
-            }
-            if (std::fabs(pr.rotationDeg) > params.maxRotationDeg)
-                res.warnings.push_back(pairName + ": rotated by " + formatFixed(pr.rotationDeg, 2) + " degrees");
-            if (std::fabs(pr.scale - 1) > params.maxScaleChange)
-                res.warnings.push_back(pairName + ": scale changes by " + formatFixed(100 * (pr.scale - 1), 1) + " %");
-            res.frameToMosaic[i] = res.frameToMosaic[i - 1] * h;
+            res.frameToMosaic[i] = res.frameToMosaic[i - 1] * pr.transform;
             res.pairs.push_back(pr);
         }
-        // Canvas.
-        double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
-        for (size_t i = 0; i < frames.size(); ++i) {
-            const double w = frames[i].cols - 0.5, hh = frames[i].rows - 0.5;
-            for (const cv::Point2d c : {cv::Point2d(-0.5, -0.5), cv::Point2d(w, -0.5), cv::Point2d(-0.5, hh), cv::Point2d(w, hh)}) {
-                const cv::Point2d p = apply(res.frameToMosaic[i], c.x, c.y);
-                minX = std::min(minX, p.x);
-                minY = std::min(minY, p.y);
-                maxX = std::max(maxX, p.x);
-                maxY = std::max(maxY, p.y);
-            }
-        }
-        const double cw = std::ceil(maxX - minX), ch = std::ceil(maxY - minY);
-        if (!std::isfinite(cw) || !std::isfinite(ch) || cw > 32000 || ch > 32000 || cw * ch > params.maxCanvasPixels) {
-            res.error = "the mosaic would be " + formatFixed(cw, 0) + "x" + formatFixed(ch, 0) +
-                        " pixels: too large (a registration went wrong, or raise the limit)";
+        if (std::string e = composeCanvas(frames, params, fb, res); !e.empty()) {
+            res.error = e;
             return res;
         }
-        const double ox = std::floor(minX + 0.5), oy = std::floor(minY + 0.5);  // frame 0 stays on the pixel grid
-        const cv::Matx33d shift(1, 0, -ox, 0, 1, -oy, 0, 0, 1);
-        const cv::Size canvas(static_cast<int>(std::ceil(maxX - ox + 0.5)), static_cast<int>(std::ceil(maxY - oy + 0.5)));
-        cv::Mat sum(canvas, CV_32F, cv::Scalar(0)), wsum(canvas, CV_32F, cv::Scalar(0));
-        for (size_t i = 0; i < frames.size(); ++i) {
-            if (cancelled(fb)) {
-                res.error = "cancelled";
-                return res;
-            }
-            res.frameToMosaic[i] = shift * res.frameToMosaic[i];
-            const cv::Matx33d& m = res.frameToMosaic[i];
-            double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY, by1 = -INFINITY;
-            const double w = frames[i].cols - 0.5, hh = frames[i].rows - 0.5;
-            for (const cv::Point2d c : {cv::Point2d(-0.5, -0.5), cv::Point2d(w, -0.5), cv::Point2d(-0.5, hh), cv::Point2d(w, hh)}) {
-                const cv::Point2d p = apply(m, c.x, c.y);
-                bx0 = std::min(bx0, p.x);
-                by0 = std::min(by0, p.y);
-                bx1 = std::max(bx1, p.x);
-                by1 = std::max(by1, p.y);
-            }
-            const cv::Rect box = cv::Rect(cv::Point(static_cast<int>(std::floor(bx0)), static_cast<int>(std::floor(by0))),
-                                          cv::Point(static_cast<int>(std::ceil(bx1)) + 1, static_cast<int>(std::ceil(by1)) + 1)) &
-                                 cv::Rect(0, 0, canvas.width, canvas.height);
-            if (box.empty()) continue;
-            const cv::Matx33d local = cv::Matx33d(1, 0, -box.x, 0, 1, -box.y, 0, 0, 1) * m;
-            cv::Mat f, warped, mask, weight;
-            frames[i].convertTo(f, CV_32F);
-            cv::warpPerspective(f, warped, cv::Mat(local), box.size(), cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-            cv::Mat ones(f.size(), CV_32F, cv::Scalar(1));
-            cv::warpPerspective(ones, mask, cv::Mat(local), box.size(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0));
-            cv::Mat valid = mask > 0.999f;
-            if (params.blend == BlendMode::Feather) {
-                cv::Mat pad(f.rows + 2, f.cols + 2, CV_8U, cv::Scalar(0)), dist;
-                pad(cv::Rect(1, 1, f.cols, f.rows)).setTo(255);
-                cv::distanceTransform(pad, dist, cv::DIST_L2, 3);
-                cv::warpPerspective(dist(cv::Rect(1, 1, f.cols, f.rows)), weight, cv::Mat(local), box.size(), cv::INTER_LINEAR,
-                                    cv::BORDER_CONSTANT, cv::Scalar(0));
-            } else {
-                weight = cv::Mat(box.size(), CV_32F, cv::Scalar(1));
-            }
-            cv::Mat zero = weight.clone();
-            zero.setTo(0, ~valid);
-            weight = zero;
-            cv::Mat s = sum(box), ws = wsum(box);
-            if (params.blend == BlendMode::First) {
-                cv::Mat empty = ws == 0;
-                cv::Mat take = valid & empty;
-                warped.copyTo(s, take);
-                ws.setTo(1, take);
-            } else {
-                s += warped.mul(weight);
-                ws += weight;
-            }
-            if (fb) fb->setProgress(0.5 + 0.5 * (i + 1) / frames.size());
-        }
-        res.coverage = wsum > 0;
-        cv::Mat avg;
-        cv::divide(sum, cv::max(wsum, 1e-12f), avg);
-        avg.setTo(0, ~res.coverage);
-        avg.convertTo(res.image, depth);
     } catch (const cv::Exception& e) {
         res.error = std::string("mosaic failed: ") + e.what();
         return res;

@@ -1,0 +1,93 @@
+#include "core/calib/calib_run.hpp"
+
+#include <cmath>
+
+namespace lwb::core::calib {
+
+namespace {
+
+std::string fileName(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+void addGroup(CalibRunResult& run, const std::string& name, std::vector<double> d) {
+    StatsGroup g;
+    g.name = name;
+    g.d = std::move(d);
+    g.stats = elevationStats(g.d);
+    if (!g.stats.ok && run.statsError.empty()) run.statsError = name + ": " + g.stats.error;
+    run.stats.push_back(std::move(g));
+}
+
+// The validation statistics (see runCalibration).
+void computeStats(const CalibInputData& d, CalibRunResult& run) {
+    if (!d.differences.empty()) {
+        run.statsSource = "Elevation differences from " + fileName(d.differencesName);
+        for (const auto& g : d.differences)
+            addGroup(run, g.group.empty() ? std::string("all") : (d.groupColumn.empty() ? "" : d.groupColumn + " ") + g.group, g.d);
+        return;
+    }
+    if (!run.hasPointing || !run.pointing.ok) {
+        if (!d.checkPoints.empty() || !d.points.empty()) run.statsError = "no statistics: the pointing calibration did not succeed";
+        return;
+    }
+    if (!d.checkPoints.empty()) {
+        run.check = checkCalibration(d.beams, run.pointing, d.checkPoints);
+        run.hasCheck = true;
+        if (!run.check.ok) {
+            run.statsError = "check points: " + run.check.error;
+            return;
+        }
+        run.statsSource = "Height differences laser − control at " + std::to_string(run.check.points.size()) +
+                          " independent check points, calibrated";
+        for (const auto& b : d.beams) {
+            std::vector<double> v = heightDifferences(run.check, b.id);
+            if (!v.empty()) addGroup(run, "beam " + std::to_string(b.id), std::move(v));
+        }
+        return;
+    }
+    run.statsSource = "Height residuals of the " + std::to_string(run.pointing.residuals.size()) +
+                      " control points after calibration (not independent)";
+    for (const auto& b : d.beams) {
+        std::vector<double> v;
+        for (const auto& r : run.pointing.residuals)
+            if (r.beam == b.id) v.push_back(r.after.u);
+        if (!v.empty()) addGroup(run, "beam " + std::to_string(b.id), std::move(v));
+    }
+}
+
+}  // namespace
+
+CalibRunResult runCalibration(const CalibInputData& d, const CalibParams& p) {
+    CalibRunResult run;
+    if (!d.array.detectors.empty()) {
+        run.hasDetector = true;
+        run.detector = fitDetectorArray(d.array, p.detector);
+    }
+    if (!d.points.empty()) {
+        run.hasPointing = true;
+        run.pointing = calibratePointing(d.beams, d.points, p.pointing);
+    }
+    computeStats(d, run);
+    double height = d.givenHeightM;
+    if (!d.waveform.amplitude.empty()) {
+        run.hasWaveform = true;
+        run.waveform = decomposeWaveform(d.waveform, p.waveform);
+        height = run.waveform.ok ? run.waveform.heightM : NAN;
+    }
+    if (std::isfinite(height) && !d.features.empty()) {
+        run.hasMatch = true;
+        run.match = matchFeature(d.features, height, p.match);
+    }
+    return run;
+}
+
+std::vector<std::pair<std::string, ElevationStats>> statsRows(const std::vector<StatsGroup>& groups) {
+    std::vector<std::pair<std::string, ElevationStats>> rows;
+    for (const auto& g : groups)
+        if (g.stats.ok) rows.emplace_back(g.name, g.stats.stats);
+    return rows;
+}
+
+}  // namespace lwb::core::calib

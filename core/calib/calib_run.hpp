@@ -1,0 +1,67 @@
+#pragma once
+// The calibration run layer (paper 002), like SLR's pass_input / pass_run: the loaded inputs and
+// the parameters -> one run of every step that has its inputs (detector fit, pointing
+// calibration, validation statistics, waveform decomposition and feature match). The workbench's
+// controller and the CLI's calib commands call runCalibration, and write its results with the
+// writers of core/calib/calib_csv.hpp.
+#include <string>
+#include <vector>
+
+#include "core/calib/calib_check.hpp"
+#include "core/calib/calib_params.hpp"
+#include "core/calib/validation_stats.hpp"
+
+namespace lwb::core::calib {
+
+/// The inputs of a run; any part may be empty (its step is skipped).
+struct CalibInputData {
+    DetectorArray array;
+    bool hasDetectorTruth = false;  ///< simulated: the surface is known
+    GaussSurface detectorTruth;
+    std::vector<BeamDesign> beams;
+    std::vector<ControlPoint> points;       ///< control points of the pointing calibration
+    std::vector<ControlPoint> checkPoints;  ///< independent check points (validation)
+    bool hasPointingTruth = false;          ///< simulated: the corrections are known
+    double trueDAlpha[2] = {0, 0}, trueDBeta[2] = {0, 0}, trueDRho[2] = {0, 0};
+    std::vector<DifferenceGroup> differences;  ///< elevation differences (calib stats)
+    std::string differencesName;               ///< their file's name, for the statistics' source
+    std::string groupColumn;                   ///< their group column ("" = one group)
+    Waveform waveform;
+    double trueHeightM = NAN;                  ///< simulated: the feature height
+    /// No waveform: the height to match the features against (calib waveform --height).
+    double givenHeightM = NAN;
+    std::vector<FeatureCandidate> features;
+};
+
+/// One group of elevation differences and its statistics.
+struct StatsGroup {
+    std::string name;  ///< "beam 1", "beam 2", "all", or the group column and value
+    std::vector<double> d;
+    ElevationStatsResult stats;
+};
+
+struct CalibRunResult {
+    bool hasDetector = false;
+    DetectorFitResult detector;
+    bool hasPointing = false;
+    PointingCalibResult pointing;
+    bool hasCheck = false;
+    CalibrationCheckResult check;  ///< the check points after calibration
+    std::string statsSource;       ///< what the statistics are of
+    std::string statsError;
+    std::vector<StatsGroup> stats;
+    bool hasWaveform = false;
+    WaveformResult waveform;
+    bool hasMatch = false;
+    FeatureMatchResult match;
+};
+
+/// Every step that has its inputs. The statistics are those of the differences when given, else
+/// of the check points after calibration, else of the control points' own height residuals
+/// after calibration (not independent: the source says so).
+CalibRunResult runCalibration(const CalibInputData& in, const CalibParams& params);
+
+/// The statistics that succeeded, as rows for statsCsv.
+std::vector<std::pair<std::string, ElevationStats>> statsRows(const std::vector<StatsGroup>& groups);
+
+}  // namespace lwb::core::calib
