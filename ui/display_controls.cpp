@@ -1,5 +1,7 @@
 #include "ui/display_controls.hpp"
 
+#include "ui/workspace_layout.hpp"
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
@@ -68,8 +70,7 @@ QImage renderStretched(const cv::Mat& img, ColorMap map, StretchKind k, double l
 }
 
 DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
-    auto* lay = new QHBoxLayout(this);
-    lay->setContentsMargins(0, 0, 0, 0);
+    auto* lay = new QHBoxLayout;  // becomes a wrapping row below (the window stays usable at 1024 px)
     m_limits = new QComboBox(this);
     m_limits->addItems({tr("Min–max"), tr("ZScale"), tr("99.5 %"), tr("Manual")});
     m_limits->setToolTip(tr("Display limits: the ROI's min and max, IRAF zscale (as DS9), the 0.5–99.5 "
@@ -93,6 +94,7 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     lay->addWidget(m_lo);
     lay->addWidget(new QLabel(QStringLiteral("–"), this));
     lay->addWidget(m_hi);
+    setLayout(wrapRow(lay));
     m_limits->setCurrentIndex(int(DisplaySettings{}.limits));
     auto sync = [this] {
         const bool manual = m_limits->currentIndex() == int(LimitsMode::Manual);

@@ -34,6 +34,7 @@
 #include "ui/footprint_export.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/image_view.hpp"
+#include "ui/plot_kit.hpp"
 #include "ui/review_commands.hpp"
 #include "ui/session_json.hpp"
 #include "ui/shot_table_model.hpp"
@@ -85,19 +86,12 @@ QCustomPlot* makePlot(const QString& yLabel, QWidget* parent) {
     plot->xAxis->setTicker(ticker);
     plot->xAxis->setLabel(QObject::tr("Month (UTC)"));
     plot->yAxis->setLabel(yLabel);
-    plot->legend->setVisible(true);
+    // The one legend style (plot kit): a row under the axis rect, so it never covers the first
+    // months; two columns, so the window stays usable at 1024 px (four made the page 1294 px wide).
     plot->legend->setFont(QFont(plot->font().family(), 8));
-    // The legend gets a row of its own under the axis rect, so it never covers the first months.
-    auto* legendRow = new QCPLayoutGrid;
-    plot->plotLayout()->addElement(1, 0, legendRow);
-    legendRow->setMargins(QMargins(4, 0, 4, 2));
-    legendRow->addElement(0, 0, plot->legend);  // takes it out of the axis rect's inset layout
-    plot->plotLayout()->setRowStretchFactor(1, 0.001);
-    plot->legend->setFillOrder(QCPLegend::foColumnsFirst);
-    plot->legend->setWrap(4);
-    plot->legend->setBrush(QColor(255, 255, 255, 200));
+    legendBelow(plot, 2);
     plot->legend->setRowSpacing(0);
-    plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    installPlotKit(plot);  // box/axis zoom, reset, export, legend toggle
     return plot;
 }
 
@@ -170,7 +164,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     overrideRow->addWidget(reject);
     overrideRow->addWidget(next);
     overrideRow->addWidget(clearOv);
-    leftLay->addLayout(overrideRow);
+    leftLay->addLayout(wrapRow(overrideRow));  // wraps in a narrow window
     m_note = new QLineEdit(left);
     m_note->setPlaceholderText(tr("Note on this shot (E; Enter keeps it and goes back to the list)"));
     m_note->setToolTip(tr("Kept in the session and the review table export"));
@@ -200,7 +194,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     overlayRow->addWidget(new QLabel(tr("Draw:"), review));
     for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres}) overlayRow->addWidget(c);
     overlayRow->addStretch(1);
-    revLay->addLayout(overlayRow);
+    revLay->addLayout(wrapRow(overlayRow));
     auto* views = new QSplitter(Qt::Horizontal, review);
     m_roiView = new ImageView(views);
     m_frameView = new ImageView(views);
