@@ -1,5 +1,8 @@
 #include "ui/slr_params_panel.hpp"
 
+#include <QDoubleSpinBox>
+#include <algorithm>
+
 #include <QCheckBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -50,6 +53,14 @@ SlrParamsPanel::SlrParamsPanel(QWidget* parent)
             if (s.connectivity == 0) s.connectivity = m_scale.connectivity;
         }
     };
+    // The scale fields hold values like 1.23457e+10 px/s: wide enough for the number and its unit.
+    for (const char* key : {"screen.mag_t", "screen.mag_oc"})
+        if (ParamSlider* sl = slider(key)) {
+            QDoubleSpinBox* f = sl->field();
+            const int w = f->fontMetrics().horizontalAdvance("-1.23457e+10" + f->suffix()) + 40;
+            f->setMinimumWidth(w);
+            f->setMaximumWidth(std::max(w, f->maximumWidth()));
+        }
     setParams(SlrParams{});
 }
 
