@@ -127,6 +127,9 @@ bool SlrController::open(const QString& path, int passIndex, const PassInputPara
     m_passErrors.clear();
     for (const PassSummary& s : m_passes)
         if (!s.problem.empty()) m_passErrors[s.index] = QString::fromStdString(s.problem);
+    // -1: the first pass with full-rate records (when none has any, passFromCrd says what the file holds).
+    for (size_t i = 0; passIndex < 0 && i < crd->file.passes.size(); ++i)
+        if (!crd->file.passes[i].ranges.empty()) passIndex = int(i);
     m_selected = passIndex;
     loadSelected(nullptr);
     return true;
@@ -177,6 +180,7 @@ bool SlrController::loadSelected(QString* error) {
         // No pass open, the list stays: the reason is shown in place and against the pass.
         m_passProblem = QString::fromStdString(r.error);
         notePassError(m_selected, m_passProblem.section('\n', 0, 0));
+        m_job.cancel();  // a run of the previous pass is not delivered
         m_pass = PassData{};
         m_pass.source = m_path.toStdString();
         m_pass.passIndex = m_selected;

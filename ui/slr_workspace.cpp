@@ -452,6 +452,8 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     m_params->setParams(m_controller->params());
     m_undo->setEnabled(appUndoStack().canUndo());
     m_clearEdits->setEnabled(false);
+    m_cpfClear->setEnabled(false);
+    m_snxClear->setEnabled(false);
     applyTimeAxis();
 }
 
@@ -521,6 +523,8 @@ void SlrWorkspace::fillPassList() {
     m_loading = true;
     m_passCombo->clear();
     std::vector<PassSummary> passes = m_controller->passes();
+    if (passes.empty() && m_controller->hasPass())  // a simulated pass
+        m_passCombo->addItem(QString::fromStdString(m_controller->pass().source), 0);
     std::stable_sort(passes.begin(), passes.end(), [](const PassSummary& a, const PassSummary& b) { return a.start < b.start; });
     for (const PassSummary& s : passes) {
         if (s.satellite.empty() && s.start.empty()) {
@@ -566,7 +570,7 @@ void SlrWorkspace::showPass() {
         m_info->setText(m_controller->passProblem().isEmpty()
                             ? QString()
                             : tr("<b style=\"color:#b00000\">Pass %1 cannot be processed:</b> %2<br>The other passes of the file can be chosen in the list.")
-                                  .arg(m_controller->selectedPass() + 1)
+                                  .arg(m_controller->selectedPass() >= 0 ? QString::number(m_controller->selectedPass() + 1) : QString())
                                   .arg(m_controller->passProblem().toHtmlEscaped().replace("\n", "<br>")));
         for (QCustomPlot* plot : {m_ocPlot, m_imagePlot, m_histPlot}) plot->replot(QCustomPlot::rpQueuedReplot);
         return;
@@ -806,6 +810,7 @@ QString SlrWorkspace::readoutAt(const QPointF& pixel) const {
 
 void SlrWorkspace::showRun(const SlrRun& run) {
     const PassData& p = m_controller->pass();
+    if (p.t.empty() || run.accepted.size() != p.t.size()) return;
     const ScreenResult& s = run.screen;
     // The scale used, on the fields left at auto.
     m_params->showScale(scaleChoice(s));
@@ -1052,6 +1057,7 @@ QJsonObject SlrWorkspace::saveState() const {
     o["sinex"] = m_snxPath;
     o["pass"] = m_controller->pass().passIndex;
     o["demo"] = m_path.isEmpty() && m_controller->hasPass();
+    o["main_plot"] = m_residual ? "residual" : "oc";
     // The schema's JSON: its two sections, every field.
     const QJsonObject params = toQtJson(slrSchema().toJson(m_controller->params()));
     for (auto it = params.begin(); it != params.end(); ++it) o[it.key()] = it.value();
@@ -1065,7 +1071,7 @@ QJsonObject SlrWorkspace::saveState() const {
 
 bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
                                 const std::vector<std::string>& at) {
-    if (!checkSessionKeys(o, {"path", "cpf", "sinex", "pass", "demo", "forced", "screen", "postfit"}, "slr", error, doc, at))
+    if (!checkSessionKeys(o, {"path", "cpf", "sinex", "pass", "demo", "forced", "screen", "postfit", "main_plot"}, "slr", error, doc, at))
         return false;
     // Every parameter from the session over the defaults (the sections the schema writes).
     core::Json j = core::Json::object();
@@ -1077,10 +1083,19 @@ bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core
         *error = QString::fromStdString(err);
         return false;
     }
+    const QString mainPlot = o["main_plot"].toString("oc");
+    if (mainPlot != "oc" && mainPlot != "residual") {
+        *error = tr("slr.main_plot: \"%1\" is neither \"oc\" nor \"residual\"").arg(mainPlot);
+        return false;
+    }
+    m_residual = mainPlot == "residual";
+    m_viewCombo->setCurrentIndex(m_residual ? 1 : 0);
     m_cpfPath = o["cpf"].toString();
     m_snxPath = o["sinex"].toString();
     m_cpfLabel->setText(m_cpfPath.isEmpty() ? tr("no prediction") : QFileInfo(m_cpfPath).fileName());
     m_snxLabel->setText(m_snxPath.isEmpty() ? tr("no station file") : QFileInfo(m_snxPath).fileName());
+    m_cpfClear->setEnabled(!m_cpfPath.isEmpty());
+    m_snxClear->setEnabled(!m_snxPath.isEmpty());
     const QString path = o["path"].toString();
     if (!path.isEmpty()) {
         if (!openPath(path, o["pass"].toInt(-1), error)) return false;
