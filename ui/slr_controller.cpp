@@ -85,6 +85,27 @@ void SlrController::passLoaded() {
     m_edits.clear();
 }
 
+namespace {
+// The CPF (file or folder) and SINEX of `in`, read once for the passes of a file (none unless both are given).
+bool readSources(const PassInputParams& in, std::shared_ptr<const PassSources>* out, QString* error) {
+    auto sources = std::make_shared<PassSources>();
+    std::string err;
+    if (!in.cpfPath.empty() && !in.sinexPath.empty() && !readPassSources(in, sources.get(), &err)) {
+        *error = QString::fromStdString(err);
+        return false;
+    }
+    *out = sources;
+    return true;
+}
+}  // namespace
+
+void SlrController::resetPassErrors() {
+    // What is known from reading the file alone (blocks that cannot be a pass).
+    m_passErrors.clear();
+    for (const PassSummary& s : m_passes)
+        if (!s.problem.empty()) m_passErrors[s.index] = QString::fromStdString(s.problem);
+}
+
 bool SlrController::open(const QString& path, int passIndex, const PassInputParams& input, QString* error) {
     PassInputParams in = input;
     in.cpfFallback = true;  // a CPF that does not fit the pass: its own TOF trend, with a note
@@ -113,20 +134,14 @@ bool SlrController::open(const QString& path, int passIndex, const PassInputPara
         for (size_t i = 0; i < crd->warnings.size() && i < 5; ++i) *error += "\n" + QString::fromStdString(crd->warnings[i]);
         return false;
     }
-    auto sources = std::make_shared<PassSources>();
-    std::string err;
-    if (!in.cpfPath.empty() && !in.sinexPath.empty() && !readPassSources(in, sources.get(), &err)) {
-        *error = QString::fromStdString(err);
-        return false;
-    }
+    std::shared_ptr<const PassSources> sources;
+    if (!readSources(in, &sources, error)) return false;
     m_crd = crd;
     m_sources = sources;
     m_input = in;
     m_path = path;
     m_passes = summarisePasses(crd->file);
-    m_passErrors.clear();
-    for (const PassSummary& s : m_passes)
-        if (!s.problem.empty()) m_passErrors[s.index] = QString::fromStdString(s.problem);
+    resetPassErrors();
     // -1: the first pass with full-rate records (when none has any, passFromCrd says what the file holds).
     for (size_t i = 0; passIndex < 0 && i < crd->file.passes.size(); ++i)
         if (!crd->file.passes[i].ranges.empty()) passIndex = int(i);
@@ -149,19 +164,13 @@ bool SlrController::setSources(const QString& cpfPath, const QString& sinexPath,
     in.cpfPath = cpfPath.toStdString();
     in.sinexPath = sinexPath.toStdString();
     in.cpfFallback = true;
-    auto sources = std::make_shared<PassSources>();
-    std::string err;
-    if (!in.cpfPath.empty() && !in.sinexPath.empty() && !readPassSources(in, sources.get(), &err)) {
-        *error = QString::fromStdString(err);
-        return false;
-    }
+    std::shared_ptr<const PassSources> sources;
+    if (!readSources(in, &sources, error)) return false;
     m_input = in;
     m_sources = sources;
     if (m_crd) {
         // What was known against the passes may have been the old prediction's doing.
-        m_passErrors.clear();
-        for (const PassSummary& s : m_passes)
-            if (!s.problem.empty()) m_passErrors[s.index] = QString::fromStdString(s.problem);
+        resetPassErrors();
         loadSelected(nullptr);
     }
     return true;

@@ -130,6 +130,7 @@ signals:
 private:
     void passLoaded();
     void passOpened();
+    void resetPassErrors();
     bool loadSelected(QString* error);
 
     core::slr::PassData m_pass;

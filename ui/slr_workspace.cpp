@@ -618,6 +618,10 @@ ParamSlider* SlrWorkspace::areaSlider() const { return m_params->slider("screen.
 QCheckBox* SlrWorkspace::autoCheck() const { return m_params->autoCheck(); }
 
 void SlrWorkspace::linkRanges(QCustomPlot* from, QCustomPlot* to) {
+    // hh:mm:ss, with milliseconds when zoomed in to seconds.
+    for (QCustomPlot* p : {from, to})
+        if (auto t = qSharedPointerDynamicCast<QCPAxisTickerTime>(p->xAxis->ticker()))
+            t->setTimeFormat(p->xAxis->range().size() < 20 ? "%h:%m:%s.%z" : "%h:%m:%s");
     // Time always follows; the O-C axis only when both plots show the same quantity.
     if (m_linking) return;
     m_linking = true;
