@@ -133,7 +133,9 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
                           << (run.postOk ? QString::number(run.post.normalPoints.size()) : QString())
                           << (a.available ? QString("%1 / %2").arg(fixed(a.precision, 3), fixed(a.recall, 3)) : QString())
                           << fixed(run.seconds, 2);
-                    QString status = tr("ok, O-C from %1").arg(QString::fromStdString(p.pass.ocOrigin));
+                    // A pass screened without error may still keep nothing: said, not "ok".
+                    QString status = (run.acceptedCount ? tr("ok, O-C from %1") : tr("nothing accepted, O-C from %1"))
+                                         .arg(QString::fromStdString(p.pass.ocOrigin));
                     if (!p.pass.ocNote.empty()) status += " — " + QString::fromStdString(p.pass.ocNote);
                     else if (!run.postNote.empty()) status += " — " + QString::fromStdString(run.postNote);
                     cells << status;

@@ -72,8 +72,11 @@ void SlrParamsPanel::setParams(const SlrParams& p) {
 void SlrParamsPanel::showScale(const ScaleChoice& scale) {
     m_scale = scale;
     m_haveScale = scale.magT > 0 && scale.magOc > 0 && scale.areaLimit > 0 && scale.connectivity > 0;
-    m_form->setHint("screen.mag_t", scale.magT);
-    m_form->setHint("screen.mag_oc", scale.magOc);
+    // Shown to 6 significant digits (the field would show every digit and push the unit out);
+    // switching the automatic mode off starts from the exact values (m_scale).
+    auto six = [](double v) { return QString::number(v, 'g', 6).toDouble(); };
+    m_form->setHint("screen.mag_t", six(scale.magT));
+    m_form->setHint("screen.mag_oc", six(scale.magOc));
     m_form->setHint("screen.area_limit", scale.areaLimit);
     m_form->setHint("screen.connectivity", scale.connectivity);
 }

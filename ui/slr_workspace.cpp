@@ -1,5 +1,6 @@
 #include "ui/slr_workspace.hpp"
 
+#include <QAbstractItemView>
 #include <QButtonGroup>
 #include <QCheckBox>
 #include <QComboBox>
@@ -159,6 +160,12 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     m_snxLabel->setToolTip(tr("The station coordinates in use"));
     m_passCombo = new QComboBox(this);
     m_passCombo->setMinimumWidth(280);
+    // The items are long (start, station, satellite, duration, points, status): the combo does
+    // not grow to the longest, its popup shows them whole.
+    m_passCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_passCombo->setMinimumContentsLength(36);
+    m_passCombo->view()->setMinimumWidth(720);
+    for (QLabel* l : {m_cpfLabel, m_snxLabel}) l->setMaximumWidth(190);
     m_passCombo->setToolTip(tr("Every pass of the file by start time: station, satellite, UTC start, duration, points, status"));
     auto* all = new QPushButton(tr("Screen all passes…"), this);
     all->setToolTip(tr("Screen every pass of the file in the background: a table of the results, any row opens its pass"));
@@ -170,9 +177,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     top->addWidget(snx);
     top->addWidget(m_snxLabel);
     top->addWidget(m_snxClear);
-    top->addWidget(new QLabel(tr("Pass:"), this));
-    top->addWidget(m_passCombo, 1);
-    top->addWidget(all);
+    top->addStretch(1);
     m_info = new QLabel(this);
     m_info->setWordWrap(true);
 
@@ -231,11 +236,17 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     m_hover = new QLabel(this);
     m_hover->setToolTip(tr("The point nearest the mouse on the main plot: UTC epoch, O-C, residual, class, record index"));
     m_hover->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    tools->addWidget(new QLabel(tr("Pass:"), this));
+    tools->addWidget(m_passCombo, 1);
+    tools->addWidget(all);
+    tools->addSpacing(12);
     tools->addWidget(new QLabel(tr("Main plot:"), this));
     tools->addWidget(m_viewCombo);
     tools->addWidget(m_sodCheck);
     tools->addWidget(home);
-    tools->addWidget(m_hover, 1);
+    // The readout in its own line: its length changes with the point, the layout must not.
+    m_hover->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_hover->setMinimumHeight(m_hover->fontMetrics().height() + 2);
     m_ocPlot->setToolTip(QString());
     auto* plots = new QSplitter(Qt::Horizontal, this);
     plots->addWidget(m_ocPlot);
@@ -248,6 +259,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     auto* pbl = new QVBoxLayout(plotBox);
     pbl->setContentsMargins(0, 0, 0, 0);
     pbl->addLayout(tools);
+    pbl->addWidget(m_hover);
     pbl->addWidget(plots, 1);
     vsplit->addWidget(plotBox);
     auto* bottom = new QWidget(this);
@@ -307,7 +319,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     for (QPushButton* b : {savePreset, exCsv, exCrd, exNp}) xl->addWidget(b);
     pl->addWidget(xg);
     pl->addStretch(1);
-    layoutWorkspace(this, top, m_info, vsplit, panel, 340, 1100);
+    layoutWorkspace(this, top, m_info, vsplit, panel, 430, 1030);
 
     // Wiring.
     connect(m_controller, &SlrController::runReady, this, &SlrWorkspace::showRun);
@@ -362,6 +374,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
             p->replot(QCustomPlot::rpQueuedReplot);
         });
     }
+    m_ocPlot->setMouseTracking(true);  // the readout follows the mouse without a button held
     connect(m_ocPlot, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { m_hover->setText(readoutAt(e->position())); });
     connect(home, &QPushButton::clicked, this, &SlrWorkspace::resetView);
     connect(m_viewCombo, qOverload<int>(&QComboBox::activated), this, [this](int i) { setResidualView(i == 1); });
@@ -480,6 +493,7 @@ bool SlrWorkspace::setCpf(const QString& path, QString* error) {
     if (!m_controller->setSources(path, m_snxPath, error)) return false;
     m_cpfPath = path;
     m_cpfLabel->setText(path.isEmpty() ? tr("no prediction") : QFileInfo(path).fileName() + (QFileInfo(path).isDir() ? "/" : ""));
+    m_cpfLabel->setToolTip(path.isEmpty() ? tr("The prediction in use: none") : path);
     m_cpfClear->setEnabled(!path.isEmpty());
     emit modified();
     return true;
@@ -489,6 +503,7 @@ bool SlrWorkspace::setSinex(const QString& path, QString* error) {
     if (!m_controller->setSources(m_cpfPath, path, error)) return false;
     m_snxPath = path;
     m_snxLabel->setText(path.isEmpty() ? tr("no station file") : QFileInfo(path).fileName());
+    m_snxLabel->setToolTip(path.isEmpty() ? tr("The station coordinates in use: none") : path);
     m_snxClear->setEnabled(!path.isEmpty());
     emit modified();
     return true;
