@@ -53,6 +53,7 @@ SlrController::SlrController(QObject* parent) : QObject(parent) {
             run.generation = m_job.generation();
             run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - m_job.changedAt());
             if (!run.screen.ok) {
+                notePassError(m_selected, tr("screening: %1").arg(QString::fromStdString(run.screen.error)));
                 emit runFailed(QString::fromStdString(run.screen.error));
                 return;
             }
@@ -84,31 +85,145 @@ void SlrController::passLoaded() {
     m_edits.clear();
 }
 
-bool SlrController::open(const QString& path, int passIndex, const PassInputParams& input, QString* error) {
-    const PassInputResult r = loadPass(path.toStdString(), passIndex, input);
-    if (!r.ok) {
-        *error = QString::fromStdString(r.error);
+namespace {
+// The CPF (file or folder) and SINEX of `in`, read once for the passes of a file (none unless both are given).
+bool readSources(const PassInputParams& in, std::shared_ptr<const PassSources>* out, QString* error) {
+    auto sources = std::make_shared<PassSources>();
+    std::string err;
+    if (!in.cpfPath.empty() && !in.sinexPath.empty() && !readPassSources(in, sources.get(), &err)) {
+        *error = QString::fromStdString(err);
         return false;
     }
-    m_input = input;
-    m_pass = r.pass;
-    m_passes = r.passes;
+    *out = sources;
+    return true;
+}
+}  // namespace
+
+void SlrController::resetPassErrors() {
+    // What is known from reading the file alone (blocks that cannot be a pass).
+    m_passErrors.clear();
+    for (const PassSummary& s : m_passes)
+        if (!s.problem.empty()) m_passErrors[s.index] = QString::fromStdString(s.problem);
+}
+
+bool SlrController::open(const QString& path, int passIndex, const PassInputParams& input, QString* error) {
+    PassInputParams in = input;
+    in.cpfFallback = true;  // a CPF that does not fit the pass: its own TOF trend, with a note
+    if (!isCrdFile(path.toStdString())) {
+        const PassInputResult r = passFromOcTable(path.toStdString());
+        if (!r.ok) {
+            *error = QString::fromStdString(r.error);
+            return false;
+        }
+        m_crd.reset();
+        m_sources = std::make_shared<const PassSources>();
+        m_input = in;
+        m_path = path;
+        m_passErrors.clear();
+        m_passes = r.passes;
+        m_selected = 0;
+        m_passProblem.clear();
+        m_warnings = r.warnings;
+        m_pass = r.pass;
+        passOpened();
+        return true;
+    }
+    auto crd = std::make_shared<CrdReadResult>(readCrd(path.toStdString()));
+    if (!crd->ok) {
+        *error = QString::fromStdString(crd->error);
+        for (size_t i = 0; i < crd->warnings.size() && i < 5; ++i) *error += "\n" + QString::fromStdString(crd->warnings[i]);
+        return false;
+    }
+    std::shared_ptr<const PassSources> sources;
+    if (!readSources(in, &sources, error)) return false;
+    m_crd = crd;
+    m_sources = sources;
+    m_input = in;
+    m_path = path;
+    m_passes = summarisePasses(crd->file);
+    resetPassErrors();
+    // -1: the first pass with full-rate records (when none has any, passFromCrd says what the file holds).
+    for (size_t i = 0; passIndex < 0 && i < crd->file.passes.size(); ++i)
+        if (!crd->file.passes[i].ranges.empty()) passIndex = int(i);
+    m_selected = passIndex;
+    loadSelected(nullptr);
+    return true;
+}
+
+bool SlrController::selectPass(int index, QString* error) {
+    if (!m_crd) {
+        if (error) *error = tr("no CRD file is open");
+        return false;
+    }
+    m_selected = index;
+    return loadSelected(error);
+}
+
+bool SlrController::setSources(const QString& cpfPath, const QString& sinexPath, QString* error) {
+    PassInputParams in = m_input;
+    in.cpfPath = cpfPath.toStdString();
+    in.sinexPath = sinexPath.toStdString();
+    in.cpfFallback = true;
+    std::shared_ptr<const PassSources> sources;
+    if (!readSources(in, &sources, error)) return false;
+    m_input = in;
+    m_sources = sources;
+    if (m_crd) {
+        // What was known against the passes may have been the old prediction's doing.
+        resetPassErrors();
+        loadSelected(nullptr);
+    }
+    return true;
+}
+
+void SlrController::notePassError(int index, const QString& why) {
+    if (index < 0) return;
+    m_passErrors[index] = why;
+    emit passListChanged();
+}
+
+bool SlrController::loadSelected(QString* error) {
+    const PassInputResult r = passFromCrd(*m_crd, m_path.toStdString(), m_selected, m_input, *m_sources);
     m_warnings = r.warnings;
+    if (!r.ok) {
+        // No pass open, the list stays: the reason is shown in place and against the pass.
+        m_passProblem = QString::fromStdString(r.error);
+        notePassError(m_selected, m_passProblem.section('\n', 0, 0));
+        m_job.cancel();  // a run of the previous pass is not delivered
+        m_pass = PassData{};
+        m_pass.source = m_path.toStdString();
+        m_pass.passIndex = m_selected;
+        m_truth.clear();
+        passLoaded();
+        emit passChanged();
+        emit editsChanged();
+        emit status(tr("Pass %1 cannot be processed: %2").arg(m_selected + 1).arg(m_passProblem.section('\n', 0, 0)));
+        if (error) *error = m_passProblem;
+        return false;
+    }
+    m_passProblem.clear();
+    m_pass = r.pass;
+    m_selected = m_pass.passIndex;
+    if (m_passErrors.remove(m_selected)) emit passListChanged();
+    passOpened();
+    return true;
+}
+
+void SlrController::passOpened() {
     m_truth.clear();
     passLoaded();
     m_params.postfit.altitudeKm = m_pass.altitudeKm;
     m_params.postfit.binLengthS = 0;
-    for (const auto& w : r.warnings) emit status(QString::fromStdString(w));
+    for (const auto& w : m_warnings) emit status(QString::fromStdString(w));
     const bool preset = applySatellitePreset();
     emit passChanged();
     emit editsChanged();
     emit status(tr("%1: %2 points, O-C from %3%4")
-                    .arg(QFileInfo(path).fileName())
+                    .arg(QFileInfo(m_path).fileName())
                     .arg(m_pass.t.size())
                     .arg(QString::fromStdString(m_pass.ocOrigin))
                     .arg(preset ? tr("; preset of %1 applied").arg(QString::fromStdString(m_pass.satellite)) : QString()));
     m_job.schedule();
-    return true;
 }
 
 void SlrController::setSimulatedPass(const std::vector<double>& t, const std::vector<double>& oc,
@@ -124,6 +239,11 @@ void SlrController::setSimulatedPass(const std::vector<double>& t, const std::ve
     m_pass.altitudeKm = altitudeKm;
     m_passes.clear();
     m_warnings.clear();
+    m_crd.reset();
+    m_path.clear();
+    m_passProblem.clear();
+    m_passErrors.clear();
+    m_selected = 0;
     m_truth = truth;
     passLoaded();
     m_params.postfit.altitudeKm = altitudeKm;
@@ -159,6 +279,13 @@ void SlrController::forcePoints(const std::vector<uint32_t>& indices, bool in) {
         m_forced[i] = in ? 1 : -1;
     }
     m_edits.push_back(std::move(e));
+    emit editsChanged();
+    m_job.schedule();
+}
+
+void SlrController::setForced(const std::vector<int8_t>& forced) {
+    if (forced.size() != m_forced.size() || forced == m_forced) return;
+    m_forced = forced;
     emit editsChanged();
     m_job.schedule();
 }
@@ -255,13 +382,22 @@ bool SlrController::exportCsv(const QString& path, QString* error) const {
     return true;
 }
 
-bool SlrController::exportCrd(const QString& path, QString* error) const {
+bool SlrController::exportCrd(const QString& path, QString* error, bool wholeFile) const {
     if (!hasRun()) {
         *error = tr("no screening result to export");
         return false;
     }
     std::string err;
-    if (!writeScreenedCrd(path.toStdString(), m_pass, m_run->accepted, &err)) {
+    PassData pass;
+    const PassData* out = &m_pass;
+    if (!wholeFile && m_pass.hasCrd && m_pass.passIndex >= 0 && size_t(m_pass.passIndex) < m_pass.crd.passes.size()) {
+        // This pass alone: its headers and records, the file's trailer (H9).
+        pass = m_pass;
+        pass.crd.passes = {m_pass.crd.passes[size_t(m_pass.passIndex)]};
+        pass.passIndex = 0;
+        out = &pass;
+    }
+    if (!writeScreenedCrd(path.toStdString(), *out, m_run->accepted, &err)) {
         *error = QString::fromStdString(err);
         return false;
     }

@@ -5,6 +5,7 @@
 // only the stages a change affects: the post-fit alone after a post-fit setting or a manual
 // edit; the screening at the scale the automatic mode chose (core::slr::ScaleChoice, passed
 // in) after a change of C alone; everything after any other change.
+#include <QHash>
 #include <QObject>
 #include <QSet>
 #include <QString>
@@ -53,8 +54,28 @@ public:
     const std::vector<uint8_t>& truth() const { return m_truth; }
 
     /// Opens a CRD file (pass `passIndex`, -1 = first full-rate one) or an O-C CSV; the CPF and
-    /// SINEX paths in `input` give O-C from the prediction. On error the previous pass stays.
+    /// SINEX paths in `input` (a CPF file or a folder of them) give O-C from the prediction. The
+    /// file is read once and every pass is listed (passes()); a pass that cannot be processed
+    /// leaves no pass open and its reason in passProblem(), the list stays. False (the previous
+    /// file stays) only when the file or the CPF/SINEX cannot be read at all.
     bool open(const QString& path, int passIndex, const core::slr::PassInputParams& input, QString* error);
+    /// Opens pass `index` of the open CRD file; false with its reason (also in passProblem()).
+    bool selectPass(int index, QString* error);
+    /// New CPF / SINEX paths ("" clears them): read again, the current pass reopened. A CPF that
+    /// does not fit a pass leaves it on its own TOF trend with PassData::ocNote saying why.
+    bool setSources(const QString& cpfPath, const QString& sinexPath, QString* error);
+    /// Why the selected pass could not be opened ("" when it is open).
+    const QString& passProblem() const { return m_passProblem; }
+    int selectedPass() const { return m_selected; }
+    /// What is known of why pass `index` cannot be processed ("" = nothing known against it).
+    QString passError(int index) const { return m_passErrors.value(index); }
+    void notePassError(int index, const QString& why);
+    /// The open CRD file and its prediction sources, shared read-only (null for an O-C table).
+    std::shared_ptr<const core::slr::CrdReadResult> crd() const { return m_crd; }
+    std::shared_ptr<const core::slr::PassSources> sources() const { return m_sources; }
+    QString path() const { return m_path; }
+    /// Replaces the manual edits as a whole (the undo commands); one entry of the edit history.
+    void setForced(const std::vector<int8_t>& forced);
     /// A simulated pass (the demo and the latency benchmark).
     void setSimulatedPass(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<double>& tof,
                           const std::vector<uint8_t>& truth, const QString& name, double altitudeKm);
@@ -90,7 +111,9 @@ public:
 
     /// The exports refuse a pass with damaged records (PassData::damaged), as the CLI does.
     bool exportCsv(const QString& path, QString* error) const;
-    bool exportCrd(const QString& path, QString* error) const;
+    /// The pass's records with the screening's filter flags: `wholeFile` writes every pass of
+    /// the file (the others unchanged), else this pass alone (its headers and records).
+    bool exportCrd(const QString& path, QString* error, bool wholeFile = true) const;
     bool exportNormalPoints(const QString& path, QString* error) const;
 
     bool waitIdle(int timeoutMs);
@@ -100,12 +123,22 @@ signals:
     void runReady(const lwb::ui::SlrRun& run);
     void runFailed(const QString& message);
     void editsChanged();
+    /// What is known against the passes changed (passError()).
+    void passListChanged();
     void status(const QString& message);
 
 private:
     void passLoaded();
+    void passOpened();
+    void resetPassErrors();
+    bool loadSelected(QString* error);
 
     core::slr::PassData m_pass;
+    QString m_path, m_passProblem;
+    int m_selected = -1;
+    QHash<int, QString> m_passErrors;
+    std::shared_ptr<const core::slr::CrdReadResult> m_crd;
+    std::shared_ptr<const core::slr::PassSources> m_sources;
     std::vector<core::slr::PassSummary> m_passes;
     std::vector<std::string> m_warnings;
     std::vector<uint8_t> m_truth;

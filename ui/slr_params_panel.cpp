@@ -1,5 +1,8 @@
 #include "ui/slr_params_panel.hpp"
 
+#include <QDoubleSpinBox>
+#include <algorithm>
+
 #include <QCheckBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -50,6 +53,14 @@ SlrParamsPanel::SlrParamsPanel(QWidget* parent)
             if (s.connectivity == 0) s.connectivity = m_scale.connectivity;
         }
     };
+    // The scale fields hold values like 1.23457e+10 px/s: wide enough for the number and its unit.
+    for (const char* key : {"screen.mag_t", "screen.mag_oc"})
+        if (ParamSlider* sl = slider(key)) {
+            QDoubleSpinBox* f = sl->field();
+            const int w = f->fontMetrics().horizontalAdvance("-1.23457e+10" + f->suffix()) + 40;
+            f->setMinimumWidth(w);
+            f->setMaximumWidth(std::max(w, f->maximumWidth()));
+        }
     setParams(SlrParams{});
 }
 
@@ -61,8 +72,11 @@ void SlrParamsPanel::setParams(const SlrParams& p) {
 void SlrParamsPanel::showScale(const ScaleChoice& scale) {
     m_scale = scale;
     m_haveScale = scale.magT > 0 && scale.magOc > 0 && scale.areaLimit > 0 && scale.connectivity > 0;
-    m_form->setHint("screen.mag_t", scale.magT);
-    m_form->setHint("screen.mag_oc", scale.magOc);
+    // Shown to 6 significant digits (the field would show every digit and push the unit out);
+    // switching the automatic mode off starts from the exact values (m_scale).
+    auto six = [](double v) { return QString::number(v, 'g', 6).toDouble(); };
+    m_form->setHint("screen.mag_t", six(scale.magT));
+    m_form->setHint("screen.mag_oc", six(scale.magOc));
     m_form->setHint("screen.area_limit", scale.areaLimit);
     m_form->setHint("screen.connectivity", scale.connectivity);
 }

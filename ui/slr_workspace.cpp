@@ -1,5 +1,6 @@
 #include "ui/slr_workspace.hpp"
 
+#include <QAbstractItemView>
 #include <QButtonGroup>
 #include <QCheckBox>
 #include <QComboBox>
@@ -17,13 +18,17 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
+#include <QToolButton>
+#include <QUndoStack>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 #include <algorithm>
 #include <climits>
 
 #include "core/sim/slr_sim.hpp"
+#include "ui/app_undo.hpp"
 #include "ui/param_slider.hpp"
+#include "ui/slr_all_passes.hpp"
 #include "ui/session_json.hpp"
 #include "ui/slr_params_panel.hpp"
 #include "ui/workspace_layout.hpp"
@@ -36,6 +41,62 @@ namespace {
 const QColor kSignal(31, 119, 180), kRecovered(44, 160, 44), kNoise(150, 150, 150), kRejected(214, 39, 40),
     kNormalPoint(0, 0, 0), kForced(255, 127, 14);
 constexpr size_t kMaxShown = 40000;  // points per graph shown; more are thinned with a fixed stride
+constexpr double kMmPerPs = 0.149896229;  // 1 ps two-way = c / 2 · 1 ps of range, one-way
+
+// Undo: the manual edits of the pass as a whole, before and after.
+class ForcedCommand : public QUndoCommand {
+public:
+    ForcedCommand(SlrController* c, std::vector<int8_t> before, std::vector<int8_t> after, const QString& text)
+        : QUndoCommand(text), m_c(c), m_before(std::move(before)), m_after(std::move(after)) {}
+    void undo() override {
+        if (m_c) m_c->setForced(m_before);
+    }
+    void redo() override {
+        if (m_c) m_c->setForced(m_after);
+    }
+
+private:
+    QPointer<SlrController> m_c;
+    std::vector<int8_t> m_before, m_after;
+};
+
+// Undo: a parameter change. The first redo (on push) is the change already made; successive
+// changes of the same single parameter (a slider drag) merge into one step.
+class ParamsCommand : public QUndoCommand {
+public:
+    ParamsCommand(SlrWorkspace* w, const SlrParams& before, const SlrParams& after)
+        : m_w(w), m_before(before), m_after(after), m_keys(slrSchema().changedKeys(before, after)) {
+        setText(QObject::tr("Change %1").arg(m_keys.size() == 1 ? QString::fromStdString(m_keys[0]) : QObject::tr("SLR parameters")));
+    }
+    int id() const override { return 0x511; }
+    bool mergeWith(const QUndoCommand* other) override {
+        const auto* o = dynamic_cast<const ParamsCommand*>(other);
+        if (!o || o->m_w != m_w || m_keys.size() != 1 || o->m_keys != m_keys) return false;
+        m_after = o->m_after;
+        return true;
+    }
+    void undo() override { apply(m_before); }
+    void redo() override {
+        if (m_first) m_first = false;
+        else apply(m_after);
+    }
+
+private:
+    void apply(const SlrParams& p) {
+        if (!m_w) return;
+        m_w->paramsPanel()->setParams(p);
+        m_w->controller()->setParams(p);
+    }
+    QPointer<SlrWorkspace> m_w;
+    SlrParams m_before, m_after;
+    std::vector<std::string> m_keys;
+    bool m_first = true;
+};
+
+void pushParams(SlrWorkspace* w, const SlrParams& before, const SlrParams& after) {
+    if (slrSchema().changedKeys(before, after).empty()) return;
+    appUndoStack().push(new ParamsCommand(w, before, after));
+}
 
 QCustomPlot* newPlot(QWidget* parent, const QString& x, const QString& y) {
     auto* p = new QCustomPlot(parent);
@@ -80,19 +141,43 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     // Top: inputs.
     auto* top = new QHBoxLayout;
     auto* open = new QPushButton(tr("Open CRD / O-C CSV…"), this);
+    open->setToolTip(tr("Open an ILRS CRD full-rate file (every pass is listed) or an O-C table (CSV: epoch_s,oc_s)"));
     auto* cpf = new QPushButton(tr("CPF…"), this);
+    cpf->setToolTip(tr("A CPF prediction file: with the SINEX file, O-C from the prediction (replaces the one given)"));
+    auto* cpfDir = new QPushButton(tr("CPF folder…"), this);
+    cpfDir->setToolTip(tr("A folder of CPF files: for each pass the one whose satellite and time span fit is picked"));
+    m_cpfClear = new QToolButton(this);
+    m_cpfClear->setText(tr("Clear"));
+    m_cpfClear->setToolTip(tr("Clear the prediction: O-C from each pass's own fitted TOF trend"));
     auto* snx = new QPushButton(tr("SINEX…"), this);
+    snx->setToolTip(tr("SINEX station coordinates (needed with the CPF for O-C from the prediction, and for day/night normal points)"));
+    m_snxClear = new QToolButton(this);
+    m_snxClear->setText(tr("Clear"));
+    m_snxClear->setToolTip(tr("Clear the station coordinates"));
     m_cpfLabel = new QLabel(tr("no prediction"), this);
+    m_cpfLabel->setToolTip(tr("The prediction in use"));
     m_snxLabel = new QLabel(tr("no station file"), this);
+    m_snxLabel->setToolTip(tr("The station coordinates in use"));
     m_passCombo = new QComboBox(this);
     m_passCombo->setMinimumWidth(280);
+    // The items are long (start, station, satellite, duration, points, status): the combo does
+    // not grow to the longest, its popup shows them whole.
+    m_passCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_passCombo->setMinimumContentsLength(36);
+    m_passCombo->view()->setMinimumWidth(720);
+    for (QLabel* l : {m_cpfLabel, m_snxLabel}) l->setMaximumWidth(190);
+    m_passCombo->setToolTip(tr("Every pass of the file by start time: station, satellite, UTC start, duration, points, status"));
+    auto* all = new QPushButton(tr("Screen all passes…"), this);
+    all->setToolTip(tr("Screen every pass of the file in the background: a table of the results, any row opens its pass"));
     top->addWidget(open);
     top->addWidget(cpf);
+    top->addWidget(cpfDir);
     top->addWidget(m_cpfLabel);
+    top->addWidget(m_cpfClear);
     top->addWidget(snx);
     top->addWidget(m_snxLabel);
-    top->addWidget(new QLabel(tr("Pass:"), this));
-    top->addWidget(m_passCombo, 1);
+    top->addWidget(m_snxClear);
+    top->addStretch(1);
     m_info = new QLabel(this);
     m_info->setWordWrap(true);
 
@@ -102,7 +187,8 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     m_imagePlot->plotLayout()->insertRow(0);
     m_imagePlot->plotLayout()->addElement(0, 0, new QCPTextElement(m_imagePlot, tr("Binary image: occupied pixels by region class"), QFont(font().family(), 9)));
     m_ocPlot->plotLayout()->insertRow(0);
-    m_ocPlot->plotLayout()->addElement(0, 0, new QCPTextElement(m_ocPlot, tr("O-C residuals"), QFont(font().family(), 9)));
+    m_ocPlot->plotLayout()->addElement(0, 0, new QCPTextElement(m_ocPlot, tr("O-C"), QFont(font().family(), 9)));
+    m_ocPlot->yAxis2->setLabel(tr("mm, one-way"));
     m_histPlot = newPlot(this, tr("Post-fit residual (ps, two-way; 1 ps = 0.15 mm one-way)"), tr("Points"));
     m_histPlot->setMinimumHeight(140);
     for (QCustomPlot* p : {m_ocPlot, m_imagePlot}) {
@@ -137,6 +223,31 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
         g2->setLineStyle(QCPGraph::lsNone);
         g2->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, color, color, 8));
     }
+    // The plots' own tools: main plot, time axis, home, the hover readout.
+    auto* tools = new QHBoxLayout;
+    m_viewCombo = new QComboBox(this);
+    m_viewCombo->addItems({tr("O-C"), tr("Residual (O-C − trend)")});
+    m_viewCombo->setToolTip(tr("Main plot: the O-C (ns, two-way), or the residual about the post-fit trend "
+                               "(ps two-way, mm one-way on the right axis) where the track's spread is visible"));
+    m_sodCheck = new QCheckBox(tr("Seconds of day"), this);
+    m_sodCheck->setToolTip(tr("Time axis in seconds since 0h UTC instead of hh:mm:ss"));
+    auto* home = new QPushButton(tr("Home"), this);
+    home->setToolTip(tr("Fit every plot to its data again (also: double-click a plot)"));
+    m_hover = new QLabel(this);
+    m_hover->setToolTip(tr("The point nearest the mouse on the main plot: UTC epoch, O-C, residual, class, record index"));
+    m_hover->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    tools->addWidget(new QLabel(tr("Pass:"), this));
+    tools->addWidget(m_passCombo, 1);
+    tools->addWidget(all);
+    tools->addSpacing(12);
+    tools->addWidget(new QLabel(tr("Main plot:"), this));
+    tools->addWidget(m_viewCombo);
+    tools->addWidget(m_sodCheck);
+    tools->addWidget(home);
+    // The readout in its own line: its length changes with the point, the layout must not.
+    m_hover->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_hover->setMinimumHeight(m_hover->fontMetrics().height() + 2);
+    m_ocPlot->setToolTip(QString());
     auto* plots = new QSplitter(Qt::Horizontal, this);
     plots->addWidget(m_ocPlot);
     plots->addWidget(m_imagePlot);
@@ -144,7 +255,13 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     plots->setStretchFactor(1, 1);
     plots->setSizes({550, 550});
     auto* vsplit = new QSplitter(Qt::Vertical, this);
-    vsplit->addWidget(plots);
+    auto* plotBox = new QWidget(this);
+    auto* pbl = new QVBoxLayout(plotBox);
+    pbl->setContentsMargins(0, 0, 0, 0);
+    pbl->addLayout(tools);
+    pbl->addWidget(m_hover);
+    pbl->addWidget(plots, 1);
+    vsplit->addWidget(plotBox);
     auto* bottom = new QWidget(this);
     auto* bl = new QHBoxLayout(bottom);
     bl->setContentsMargins(0, 0, 0, 0);
@@ -164,20 +281,27 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     auto* pl = new QVBoxLayout(panel);
     m_params = new SlrParamsPanel(panel);
     pl->addWidget(m_params);
-    auto* eg = new QGroupBox(tr("Manual edits (box on the O-C plot)"), panel);
+    auto* eg = new QGroupBox(tr("Mouse on the main plot"), panel);
     auto* el = new QVBoxLayout(eg);
     m_modeZoom = new QRadioButton(tr("Pan / zoom"), eg);
+    m_modeZoom->setToolTip(tr("Drag pans, the wheel zooms both axes; Ctrl+wheel zooms time only, Shift+wheel O-C only"));
+    m_modeBoxZoom = new QRadioButton(tr("Box zoom"), eg);
+    m_modeBoxZoom->setToolTip(tr("Drag a box to zoom to it (the linked binary image follows); Home or double-click resets"));
     m_modeIn = new QRadioButton(tr("Box forces points in"), eg);
+    m_modeIn->setToolTip(tr("Points in the box are accepted whatever the screening says (undo: Edit ▸ Undo)"));
     m_modeOut = new QRadioButton(tr("Box forces points out"), eg);
+    m_modeOut->setToolTip(tr("Points in the box are rejected whatever the screening says (undo: Edit ▸ Undo)"));
     m_modeZoom->setChecked(true);
     auto* modes = new QButtonGroup(this);
-    for (QRadioButton* b : {m_modeZoom, m_modeIn, m_modeOut}) {
+    for (QRadioButton* b : {m_modeZoom, m_modeBoxZoom, m_modeIn, m_modeOut}) {
         modes->addButton(b);
         el->addWidget(b);
     }
     auto* er = new QHBoxLayout;
-    m_undo = new QPushButton(tr("Undo edit"), eg);
+    m_undo = new QPushButton(tr("Undo"), eg);
+    m_undo->setToolTip(tr("Undo the last edit or parameter change (the workbench's undo history, Ctrl+Z)"));
     m_clearEdits = new QPushButton(tr("Clear edits"), eg);
+    m_clearEdits->setToolTip(tr("Drop every manual edit of the pass (undoable)"));
     er->addWidget(m_undo);
     er->addWidget(m_clearEdits);
     el->addLayout(er);
@@ -188,66 +312,76 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     auto* exCsv = new QPushButton(tr("Export points (CSV)…"), xg);
     auto* exCrd = new QPushButton(tr("Export CRD full rate with flags…"), xg);
     auto* exNp = new QPushButton(tr("Export normal points (CRD)…"), xg);
+    savePreset->setToolTip(tr("Keep the current parameters (and the scale used) for the passes of this satellite"));
+    exCsv->setToolTip(tr("Per point: index, epoch, O-C, class, region, residual, kept, station flag"));
+    exCrd->setToolTip(tr("CRD full rate with filter flags 2 (accepted) / 1 (noise): this pass only, or the whole file with this pass's flags set"));
+    exNp->setToolTip(tr("The normal points of the pass as a CRD normal-point file"));
     for (QPushButton* b : {savePreset, exCsv, exCrd, exNp}) xl->addWidget(b);
     pl->addWidget(xg);
     pl->addStretch(1);
-    layoutWorkspace(this, top, m_info, vsplit, panel, 340, 1100);
+    layoutWorkspace(this, top, m_info, vsplit, panel, 430, 1030);
 
     // Wiring.
     connect(m_controller, &SlrController::runReady, this, &SlrWorkspace::showRun);
     connect(m_controller, &SlrController::runFailed, this,
             [this](const QString& m) { m_stats->setText(tr("<b>Screening failed:</b> %1").arg(m.toHtmlEscaped())); });
     connect(m_controller, &SlrController::status, this, &SlrWorkspace::status);
+    connect(m_controller, &SlrController::passListChanged, this, &SlrWorkspace::fillPassList);
     connect(m_controller, &SlrController::editsChanged, this, [this] {
-        m_undo->setEnabled(m_controller->editCount() > 0);
-        m_clearEdits->setEnabled(m_controller->editCount() > 0);
+        bool any = false;
+        for (int8_t f : m_controller->forced()) any = any || f;
+        m_clearEdits->setEnabled(any);
     });
-    connect(m_controller, &SlrController::passChanged, this, [this] {
-        m_params->setParams(m_controller->params());  // a satellite preset may have come with the pass
-        const PassData& p = m_controller->pass();
-        m_info->setText(tr("<b>%1</b> %2 — %3 points, O-C from %4%5")
-                            .arg(QString::fromStdString(p.satellite).toHtmlEscaped(),
-                                 p.ilrsId.empty() ? QString() : "(" + QString::fromStdString(p.ilrsId) + ")")
-                            .arg(p.t.size())
-                            .arg(QString::fromStdString(p.ocOrigin))
-                            .arg(p.station.empty() ? QString() : tr(", station %1").arg(QString::fromStdString(p.station))));
-        // What the readers said about the files, in view (not only in the status bar): a damaged
-        // record means an incomplete pass, and no export (the CLI refuses such a pass too).
-        QString notes;
-        if (!p.damaged.empty())
-            notes += tr("<br><b style=\"color:#b00000\">Damaged records: exports are refused.</b> %1")
-                         .arg(QString::fromStdString(p.damaged).toHtmlEscaped());
-        const auto& warnings = m_controller->warnings();
-        const size_t shown = std::min<size_t>(warnings.size(), 5);
-        if (!warnings.empty())
-            notes += tr("<br><b>%n warning(s) reading the files:</b>", nullptr, int(warnings.size()));
-        for (size_t i = 0; i < shown; ++i) notes += "<br>" + QString::fromStdString(warnings[i]).toHtmlEscaped();
-        if (warnings.size() > shown) notes += tr("<br>… and %1 more (in the status messages)").arg(warnings.size() - shown);
-        m_info->setText(m_info->text() + notes);
-        m_ocPlot->xAxis->setRange(0, 1);  // force a rescale on the first run of the new pass
-        m_ocPlot->setProperty("fresh", true);
-    });
+    auto undoState = [this] { m_undo->setEnabled(appUndoStack().canUndo()); };
+    connect(&appUndoStack(), &QUndoStack::canUndoChanged, this, undoState);
+    connect(m_controller, &SlrController::passChanged, this, &SlrWorkspace::showPass);
     connect(m_params, &SlrParamsPanel::paramsChanged, this, [this](const SlrParams& p) {
+        const SlrParams before = m_controller->params();
         m_controller->setParams(p);
+        if (!m_applyingParams) pushParams(this, before, p);
         emit modified();
     });
     connect(m_ocPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_ocPlot, m_imagePlot); });
-    connect(m_ocPlot->yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_ocPlot, m_imagePlot); });
+    connect(m_ocPlot->yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this](const QCPRange& r) {
+        m_ocPlot->yAxis2->setRange(r.lower * kMmPerPs, r.upper * kMmPerPs);  // mm one-way beside ps two-way
+        linkRanges(m_ocPlot, m_imagePlot);
+    });
     connect(m_imagePlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_imagePlot, m_ocPlot); });
     connect(m_imagePlot->yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_imagePlot, m_ocPlot); });
     connect(m_ocPlot->selectionRect(), &QCPSelectionRect::accepted, this,
             [this](const QRect& r, QMouseEvent*) { boxSelected(r); });
-    for (QRadioButton* b : {m_modeZoom, m_modeIn, m_modeOut})
+    for (QRadioButton* b : {m_modeZoom, m_modeBoxZoom, m_modeIn, m_modeOut})
         connect(b, &QRadioButton::toggled, this, [this] {
-            m_ocPlot->setSelectionRectMode(m_modeZoom->isChecked() ? QCP::srmNone : QCP::srmCustom);
+            m_ocPlot->setSelectionRectMode(m_modeZoom->isChecked()      ? QCP::srmNone
+                                           : m_modeBoxZoom->isChecked() ? QCP::srmZoom
+                                                                        : QCP::srmCustom);
         });
-    connect(m_undo, &QPushButton::clicked, this, [this] {
-        m_controller->undoEdit();
-        emit modified();
-    });
+    for (QCustomPlot* p : {m_ocPlot, m_imagePlot, m_histPlot}) {
+        p->installEventFilter(this);
+        connect(p, &QCustomPlot::mouseDoubleClick, this, [this] { resetView(); });
+        // A legend entry switches its series on and off.
+        connect(p, &QCustomPlot::legendClick, this, [this, p](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent*) {
+            auto* pi = qobject_cast<QCPPlottableLegendItem*>(item);
+            if (!pi) return;
+            const QString key = pi->plottable()->property("series").toString();
+            const bool hide = pi->plottable()->visible();
+            pi->plottable()->setVisible(!hide);
+            pi->setTextColor(hide ? QColor(160, 160, 160) : Qt::black);
+            if (!key.isEmpty()) {
+                if (hide) m_hidden.insert(key);
+                else m_hidden.remove(key);
+            }
+            p->replot(QCustomPlot::rpQueuedReplot);
+        });
+    }
+    m_ocPlot->setMouseTracking(true);  // the readout follows the mouse without a button held
+    connect(m_ocPlot, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { m_hover->setText(readoutAt(e->position())); });
+    connect(home, &QPushButton::clicked, this, &SlrWorkspace::resetView);
+    connect(m_viewCombo, qOverload<int>(&QComboBox::activated), this, [this](int i) { setResidualView(i == 1); });
+    connect(m_sodCheck, &QCheckBox::toggled, this, &SlrWorkspace::setSecondsOfDay);
+    connect(m_undo, &QPushButton::clicked, this, [] { appUndoStack().undo(); });
     connect(m_clearEdits, &QPushButton::clicked, this, [this] {
-        m_controller->clearEdits();
-        emit modified();
+        pushForced(std::vector<int8_t>(m_controller->forced().size(), 0), tr("Clear SLR edits"));
     });
     connect(open, &QPushButton::clicked, this, [this] {
         QSettings st;
@@ -256,55 +390,136 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
         if (path.isEmpty()) return;
         st.setValue("paths/slr", QFileInfo(path).absolutePath());
         QString err;
-        if (!openPath(path, -1, &err)) QMessageBox::warning(this, tr("Cannot open the pass"), err);
+        if (!openPath(path, -1, &err)) QMessageBox::warning(this, tr("Cannot open the file"), err);
     });
-    connect(cpf, &QPushButton::clicked, this, [this] {
-        pickFile(&m_cpfPath, m_cpfLabel, tr("CPF prediction"), tr("CPF (*.hts *.cpf *.sgf *.*)"));
+    auto choose = [this](bool folder, bool cpfFile) {
+        QSettings st;
+        const QString dir = st.value("paths/slrInputs", st.value("paths/slr")).toString();
+        const QString path = folder ? QFileDialog::getExistingDirectory(this, tr("Folder of CPF predictions"), dir)
+                             : cpfFile ? QFileDialog::getOpenFileName(this, tr("CPF prediction"), dir, tr("CPF (*.hts *.cpf *.sgf);;All files (*)"))
+                                       : QFileDialog::getOpenFileName(this, tr("SINEX station coordinates"), dir, tr("SINEX (*.snx *.SNX);;All files (*)"));
+        if (path.isEmpty()) return;
+        st.setValue("paths/slrInputs", folder ? path : QFileInfo(path).absolutePath());
+        QString err;
+        if (!(cpfFile || folder ? setCpf(path, &err) : setSinex(path, &err))) QMessageBox::warning(this, tr("Cannot use the file"), err);
+    };
+    connect(cpf, &QPushButton::clicked, this, [=] { choose(false, true); });
+    connect(cpfDir, &QPushButton::clicked, this, [=] { choose(true, true); });
+    connect(snx, &QPushButton::clicked, this, [=] { choose(false, false); });
+    connect(m_cpfClear, &QToolButton::clicked, this, [this] {
+        QString err;
+        if (!setCpf(QString(), &err)) QMessageBox::warning(this, tr("CPF"), err);
     });
-    connect(snx, &QPushButton::clicked, this, [this] {
-        pickFile(&m_snxPath, m_snxLabel, tr("SINEX station coordinates"), tr("SINEX (*.snx *.SNX *.*)"));
+    connect(m_snxClear, &QToolButton::clicked, this, [this] {
+        QString err;
+        if (!setSinex(QString(), &err)) QMessageBox::warning(this, tr("SINEX"), err);
     });
     connect(m_passCombo, &QComboBox::activated, this, [this](int i) {
-        QString err;
-        if (!m_path.isEmpty() && !openPath(m_path, m_passCombo->itemData(i).toInt(), &err))
-            QMessageBox::warning(this, tr("Cannot open the pass"), err);
+        if (m_loading || !m_controller->crd()) return;
+        m_controller->selectPass(m_passCombo->itemData(i).toInt(), nullptr);  // a failure is shown in place
+        emit modified();
+    });
+    connect(all, &QPushButton::clicked, this, [this] {
+        if (!screenAllPasses()) QMessageBox::information(this, tr("Screen all passes"), tr("Open a CRD file first."));
     });
     connect(savePreset, &QPushButton::clicked, this, [this] {
         QString err;
         if (!m_controller->savePreset(&err)) QMessageBox::warning(this, tr("Preset"), err);
         else emit status(tr("Preset saved for %1 in %2").arg(QString::fromStdString(m_controller->pass().satellite), m_controller->presetFile()));
     });
-    auto exporter = [this](const QString& title, const QString& filter, auto fn) {
+    auto savePath = [this](const QString& title, const QString& filter) -> QString {
         if (const std::string& damaged = m_controller->pass().damaged; !damaged.empty()) {
             QMessageBox::warning(this, title, QString::fromStdString(damaged));
-            return;
+            return {};
         }
         QSettings st;
         const QString path = QFileDialog::getSaveFileName(this, title, st.value("paths/slrExport").toString(), filter);
+        if (!path.isEmpty()) st.setValue("paths/slrExport", QFileInfo(path).absolutePath());
+        return path;
+    };
+    auto exporter = [=](const QString& title, const QString& filter, auto fn) {
+        const QString path = savePath(title, filter);
         if (path.isEmpty()) return;
-        st.setValue("paths/slrExport", QFileInfo(path).absolutePath());
         QString err;
         if (!(m_controller->*fn)(path, &err)) QMessageBox::warning(this, title, err);
         else emit status(tr("Wrote %1").arg(path));
     };
     connect(exCsv, &QPushButton::clicked, this, [=] { exporter(tr("Export points"), tr("CSV (*.csv)"), &SlrController::exportCsv); });
-    connect(exCrd, &QPushButton::clicked, this, [=] { exporter(tr("Export CRD full rate"), tr("CRD (*.frd *.fr2 *.crd)"), &SlrController::exportCrd); });
+    connect(exCrd, &QPushButton::clicked, this, [=] {
+        const QString title = tr("Export CRD full rate");
+        QMessageBox ask(QMessageBox::Question, title, tr("Write which records?"), QMessageBox::Cancel, this);
+        ask.setInformativeText(tr("Pass %1 of %2 passes in %3. Its records get filter flag 2 (accepted) or 1 (noise).")
+                                   .arg(m_controller->selectedPass() + 1)
+                                   .arg(m_controller->passes().size())
+                                   .arg(QFileInfo(m_path).fileName()));
+        QAbstractButton* one = ask.addButton(tr("This pass only"), QMessageBox::AcceptRole);
+        QAbstractButton* whole = ask.addButton(tr("Whole file with this pass's flags set"), QMessageBox::AcceptRole);
+        ask.exec();
+        if (ask.clickedButton() != one && ask.clickedButton() != whole) return;
+        const QString path = savePath(title, tr("CRD (*.frd *.fr2 *.crd)"));
+        if (path.isEmpty()) return;
+        QString message;
+        if (!exportCrd(path, ask.clickedButton() == whole, &message)) QMessageBox::warning(this, title, message);
+    });
     connect(exNp, &QPushButton::clicked, this, [=] { exporter(tr("Export normal points"), tr("CRD (*.npt *.np2 *.crd)"), &SlrController::exportNormalPoints); });
     m_params->setParams(m_controller->params());
-    m_undo->setEnabled(false);
+    m_undo->setEnabled(appUndoStack().canUndo());
     m_clearEdits->setEnabled(false);
+    m_cpfClear->setEnabled(false);
+    m_snxClear->setEnabled(false);
+    applyTimeAxis();
 }
 
-void SlrWorkspace::pickFile(QString* target, QLabel* label, const QString& title, const QString& filter) {
-    QSettings st;
-    const QString path = QFileDialog::getOpenFileName(this, title, st.value("paths/slr").toString(), filter);
-    if (path.isEmpty()) return;
-    *target = path;
-    label->setText(QFileInfo(path).fileName());
-    if (!m_path.isEmpty()) {
-        QString err;
-        if (!openPath(m_path, m_controller->pass().passIndex, &err)) QMessageBox::warning(this, title, err);
+bool SlrWorkspace::exportCrd(const QString& path, bool wholeFile, QString* message) {
+    if (!m_controller->exportCrd(path, message, wholeFile)) {
+        emit status(tr("Nothing written: %1").arg(*message));
+        return false;
     }
+    const PassData& p = m_controller->pass();
+    size_t data = 0;
+    for (uint8_t a : m_controller->run().accepted) data += a;
+    const QString flags = tr("pass %1 (%2, %3): %4 of %5 screened records flagged 2 (data), the rest 1 (noise)")
+                              .arg(p.passIndex + 1)
+                              .arg(QString::fromStdString(p.satellite), QString::fromStdString(m_controller->passes().empty() ? std::string() : m_controller->passes()[size_t(p.passIndex)].start))
+                              .arg(data)
+                              .arg(p.t.size());
+    *message = wholeFile ? tr("Wrote %1: the whole file (%2 passes), %3; the other passes as read").arg(path).arg(p.crd.passes.size()).arg(flags)
+                         : tr("Wrote %1: this pass only, %2").arg(path, flags);
+    emit status(*message);
+    return true;
+}
+
+bool SlrWorkspace::setCpf(const QString& path, QString* error) {
+    if (!m_controller->setSources(path, m_snxPath, error)) return false;
+    m_cpfPath = path;
+    m_cpfLabel->setText(path.isEmpty() ? tr("no prediction") : QFileInfo(path).fileName() + (QFileInfo(path).isDir() ? "/" : ""));
+    m_cpfLabel->setToolTip(path.isEmpty() ? tr("The prediction in use: none") : path);
+    m_cpfClear->setEnabled(!path.isEmpty());
+    emit modified();
+    return true;
+}
+
+bool SlrWorkspace::setSinex(const QString& path, QString* error) {
+    if (!m_controller->setSources(m_cpfPath, path, error)) return false;
+    m_snxPath = path;
+    m_snxLabel->setText(path.isEmpty() ? tr("no station file") : QFileInfo(path).fileName());
+    m_snxLabel->setToolTip(path.isEmpty() ? tr("The station coordinates in use: none") : path);
+    m_snxClear->setEnabled(!path.isEmpty());
+    emit modified();
+    return true;
+}
+
+SlrAllPassesDialog* SlrWorkspace::screenAllPasses() {
+    if (!m_controller->crd()) return nullptr;
+    if (m_all) m_all->deleteLater();
+    m_all = new SlrAllPassesDialog(m_controller, m_controller->params(), this);
+    m_all->setAttribute(Qt::WA_DeleteOnClose);
+    connect(m_all, &SlrAllPassesDialog::openPass, this, [this](int index) {
+        m_controller->selectPass(index, nullptr);
+        emit modified();
+    });
+    m_all->show();
+    return m_all;
 }
 
 bool SlrWorkspace::openPath(const QString& path, int passIndex, QString* error) {
@@ -313,18 +528,89 @@ bool SlrWorkspace::openPath(const QString& path, int passIndex, QString* error) 
     in.sinexPath = m_snxPath.toStdString();
     if (!m_controller->open(path, passIndex, in, error)) return false;
     m_path = path;
-    m_loading = true;
-    m_passCombo->clear();
-    for (const PassSummary& s : m_controller->passes())
-        m_passCombo->addItem(s.satellite.empty() ? tr("O-C table, %1 points").arg(s.ranges)
-                                                 : tr("%1: %2 %3, %4 ranges").arg(s.index + 1).arg(QString::fromStdString(s.satellite),
-                                                                                                 QString::fromStdString(s.start))
-                                                                                     .arg(s.ranges),
-                             s.index);
-    m_passCombo->setCurrentIndex(m_passCombo->findData(m_controller->pass().passIndex));
-    m_loading = false;
+    fillPassList();
     emit modified();
     return true;
+}
+
+void SlrWorkspace::fillPassList() {
+    // Every pass by start time: station, satellite, UTC start, duration, points, status.
+    m_loading = true;
+    m_passCombo->clear();
+    std::vector<PassSummary> passes = m_controller->passes();
+    if (passes.empty() && m_controller->hasPass())  // a simulated pass
+        m_passCombo->addItem(QString::fromStdString(m_controller->pass().source), 0);
+    std::stable_sort(passes.begin(), passes.end(), [](const PassSummary& a, const PassSummary& b) { return a.start < b.start; });
+    for (const PassSummary& s : passes) {
+        if (s.satellite.empty() && s.start.empty()) {
+            m_passCombo->addItem(tr("O-C table, %1 points").arg(s.ranges), s.index);
+            continue;
+        }
+        const QDateTime t0 = QDateTime::fromString(QString::fromStdString(s.start), "yyyy-MM-dd hh:mm:ss"),
+                        t1 = QDateTime::fromString(QString::fromStdString(s.end), "yyyy-MM-dd hh:mm:ss");
+        const qint64 d = t0.isValid() && t1.isValid() ? t0.secsTo(t1) : -1;
+        const QString why = m_controller->passError(s.index);
+        QString status = !why.isEmpty() ? tr("cannot be processed: %1").arg(why)
+                         : s.ranges == 0 ? (s.normalPoints ? tr("normal points only") : tr("no ranges"))
+                                         : tr("ok");
+        const QString text = tr("%1. %2 · %3 · %4 · %5 · %6 pts · %7")
+                                 .arg(s.index + 1)
+                                 .arg(QString::fromStdString(s.start), QString::fromStdString(s.station), QString::fromStdString(s.satellite))
+                                 .arg(d >= 0 ? QString("%1:%2").arg(d / 60).arg(d % 60, 2, 10, QChar('0')) : QString("?"))
+                                 .arg(s.ranges)
+                                 .arg(status.size() > 70 ? status.left(69) + "…" : status);
+        m_passCombo->addItem(text, s.index);
+        const int i = m_passCombo->count() - 1;
+        m_passCombo->setItemData(i, status, Qt::ToolTipRole);
+        if (!why.isEmpty()) m_passCombo->setItemData(i, QColor(170, 0, 0), Qt::ForegroundRole);
+    }
+    m_passCombo->setCurrentIndex(m_passCombo->findData(m_controller->selectedPass()));
+    m_loading = false;
+}
+
+void SlrWorkspace::showPass() {
+    fillPassList();
+    appUndoStack().clear();  // commands refer to the pass they were made on
+    m_params->setParams(m_controller->params());  // a satellite preset may have come with the pass
+    const PassData& p = m_controller->pass();
+    m_hover->clear();
+    if (!m_controller->hasPass()) {
+        // A pass that cannot be processed: its reason in place, the plots empty, the list usable.
+        for (QCustomPlot* plot : {m_ocPlot, m_histPlot}) plot->clearPlottables();
+        for (int g = 0; g < m_imagePlot->graphCount(); ++g) m_imagePlot->graph(g)->data()->clear();
+        m_imageMap->data()->clear();
+        m_y.clear();
+        m_class.clear();
+        m_stats->clear();
+        m_info->setText(m_controller->passProblem().isEmpty()
+                            ? QString()
+                            : tr("<b style=\"color:#b00000\">Pass %1 cannot be processed:</b> %2<br>The other passes of the file can be chosen in the list.")
+                                  .arg(m_controller->selectedPass() >= 0 ? QString::number(m_controller->selectedPass() + 1) : QString())
+                                  .arg(m_controller->passProblem().toHtmlEscaped().replace("\n", "<br>")));
+        for (QCustomPlot* plot : {m_ocPlot, m_imagePlot, m_histPlot}) plot->replot(QCustomPlot::rpQueuedReplot);
+        return;
+    }
+    QString text = tr("<b>%1</b> %2 — %3 points, O-C from %4%5")
+                       .arg(QString::fromStdString(p.satellite).toHtmlEscaped(),
+                            p.ilrsId.empty() ? QString() : "(" + QString::fromStdString(p.ilrsId) + ")")
+                       .arg(p.t.size())
+                       .arg(QString::fromStdString(p.ocOrigin))
+                       .arg(p.station.empty() ? QString() : tr(", station %1").arg(QString::fromStdString(p.station)));
+    // Why a prediction that was given is not used (another satellite, a span that misses the pass).
+    if (!p.ocNote.empty()) text += tr("<br><b style=\"color:#a05000\">Prediction not used:</b> %1").arg(QString::fromStdString(p.ocNote).toHtmlEscaped());
+    // What the readers said about the files, in view (not only in the status bar): a damaged
+    // record means an incomplete pass, and no export (the CLI refuses such a pass too).
+    if (!p.damaged.empty())
+        text += tr("<br><b style=\"color:#b00000\">Damaged records: exports are refused.</b> %1")
+                    .arg(QString::fromStdString(p.damaged).toHtmlEscaped());
+    const auto& warnings = m_controller->warnings();
+    const size_t shown = std::min<size_t>(warnings.size(), 5);
+    if (!warnings.empty()) text += tr("<br><b>%n warning(s) reading the files:</b>", nullptr, int(warnings.size()));
+    for (size_t i = 0; i < shown; ++i) text += "<br>" + QString::fromStdString(warnings[i]).toHtmlEscaped();
+    if (warnings.size() > shown) text += tr("<br>… and %1 more (in the status messages)").arg(warnings.size() - shown);
+    m_info->setText(text);
+    applyTimeAxis();
+    m_ocPlot->setProperty("fresh", true);  // fit the view on the first run of the new pass
 }
 
 void SlrWorkspace::openDemo(int points) {
@@ -347,105 +633,300 @@ ParamSlider* SlrWorkspace::areaSlider() const { return m_params->slider("screen.
 QCheckBox* SlrWorkspace::autoCheck() const { return m_params->autoCheck(); }
 
 void SlrWorkspace::linkRanges(QCustomPlot* from, QCustomPlot* to) {
+    // hh:mm:ss, with milliseconds when zoomed in to seconds.
+    for (QCustomPlot* p : {from, to})
+        if (auto t = qSharedPointerDynamicCast<QCPAxisTickerTime>(p->xAxis->ticker()))
+            t->setTimeFormat(p->xAxis->range().size() < 20 ? "%h:%m:%s.%z" : "%h:%m:%s");
+    // Time always follows; the O-C axis only when both plots show the same quantity.
     if (m_linking) return;
     m_linking = true;
     to->xAxis->setRange(from->xAxis->range());
-    if (!m_imageFlattened) to->yAxis->setRange(from->yAxis->range());
+    if (!m_imageFlattened && !m_ocPlot->yAxis2->visible()) to->yAxis->setRange(from->yAxis->range());
     to->replot(QCustomPlot::rpQueuedReplot);
     m_linking = false;
 }
 
 void SlrWorkspace::boxSelected(const QRect& rect) {
-    if (!m_controller->hasPass() || m_modeZoom->isChecked()) return;
+    if (!m_controller->hasPass() || m_y.size() != int(m_controller->pass().t.size())) return;
+    if (!m_modeIn->isChecked() && !m_modeOut->isChecked()) return;
     const double x0 = m_ocPlot->xAxis->pixelToCoord(rect.left()), x1 = m_ocPlot->xAxis->pixelToCoord(rect.right());
     const double y0 = m_ocPlot->yAxis->pixelToCoord(rect.bottom()), y1 = m_ocPlot->yAxis->pixelToCoord(rect.top());
     const PassData& p = m_controller->pass();
-    std::vector<uint32_t> idx;
+    const bool in = m_modeIn->isChecked();
+    std::vector<int8_t> after = m_controller->forced();
+    int count = 0;
     for (size_t i = 0; i < p.t.size(); ++i) {
-        const double y = p.oc[i] * 1e9;
-        if (p.t[i] >= std::min(x0, x1) && p.t[i] <= std::max(x0, x1) && y >= std::min(y0, y1) && y <= std::max(y0, y1))
-            idx.push_back(uint32_t(i));
+        const double y = m_y[int(i)];  // in the units shown (O-C or residual)
+        if (p.t[i] >= std::min(x0, x1) && p.t[i] <= std::max(x0, x1) && y >= std::min(y0, y1) && y <= std::max(y0, y1)) {
+            after[i] = in ? 1 : -1;
+            ++count;
+        }
     }
-    m_controller->forcePoints(idx, m_modeIn->isChecked());
-    emit status(tr("%1 points forced %2").arg(idx.size()).arg(m_modeIn->isChecked() ? tr("in") : tr("out")));
+    if (!count) return;
+    pushForced(after, in ? tr("Force %n SLR point(s) in", nullptr, count) : tr("Force %n SLR point(s) out", nullptr, count));
+    emit status(tr("%1 points forced %2 (Edit ▸ Undo takes it back)").arg(count).arg(in ? tr("in") : tr("out")));
+}
+
+void SlrWorkspace::pushForced(const std::vector<int8_t>& after, const QString& text) {
+    if (after == m_controller->forced()) return;
+    appUndoStack().push(new ForcedCommand(m_controller, m_controller->forced(), after, text));
     emit modified();
+}
+
+void SlrWorkspace::setBoxMode(BoxMode mode) {
+    (mode == BoxMode::Pan ? m_modeZoom : mode == BoxMode::Zoom ? m_modeBoxZoom : mode == BoxMode::ForceIn ? m_modeIn : m_modeOut)
+        ->setChecked(true);
+}
+
+void SlrWorkspace::setResidualView(bool on) {
+    m_residual = on;
+    m_viewCombo->setCurrentIndex(on ? 1 : 0);
+    if (m_controller->hasRun() && m_controller->hasPass()) showRun(m_controller->run());
+}
+
+void SlrWorkspace::setSecondsOfDay(bool on) {
+    m_secondsOfDay = on;
+    m_sodCheck->setChecked(on);
+    applyTimeAxis();
+}
+
+void SlrWorkspace::applyTimeAxis() {
+    // UTC hh:mm:ss with the date in the title for a CRD pass (epochs are seconds since 0h UTC
+    // of the pass day; a pass past midnight reads 24:.. on); seconds as given otherwise.
+    const PassData& p = m_controller->pass();
+    const int sel = m_controller->selectedPass();
+    const QString date = p.hasCrd && sel >= 0 && size_t(sel) < m_controller->passes().size()
+                             ? QString::fromStdString(m_controller->passes()[size_t(sel)].start).left(10)
+                             : QString();
+    const bool utc = !date.isEmpty() && !m_secondsOfDay;
+    QString label = !p.hasCrd ? tr("Epoch (s)") : utc ? tr("UTC on %1 (hh:mm:ss)").arg(date) : tr("Seconds of day (UTC %1)").arg(date);
+    for (QCustomPlot* plot : {m_ocPlot, m_imagePlot}) {
+        if (utc) {
+            QSharedPointer<QCPAxisTickerTime> t(new QCPAxisTickerTime);
+            t->setTimeFormat("%h:%m:%s");
+            t->setFieldWidth(QCPAxisTickerTime::tuHours, 2);
+            plot->xAxis->setTicker(t);
+        } else {
+            plot->xAxis->setTicker(QSharedPointer<QCPAxisTicker>(new QCPAxisTicker));
+        }
+        plot->xAxis->setLabel(label);
+        plot->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+void SlrWorkspace::fitMainPlot() {
+    // Fit the view to the points (noise, signal, recovered graphs), not to the trend or markers.
+    bool first = true;
+    for (int g = 0; g < m_ocPlot->graphCount(); ++g) {
+        const QString key = m_ocPlot->graph(g)->property("series").toString();
+        const bool residual = m_ocPlot->yAxis2->visible();
+        // In the residual view the noise spans the range gate: fit to the track.
+        if (key != "signal" && key != "recovered" && (residual || key != "noise")) continue;
+        bool found = false;
+        const QCPRange kr = m_ocPlot->graph(g)->getKeyRange(found);
+        if (!found) continue;
+        const QCPRange vr = m_ocPlot->graph(g)->getValueRange(found);
+        if (first) {
+            m_ocPlot->xAxis->setRange(kr);
+            m_ocPlot->yAxis->setRange(vr);
+            first = false;
+        } else {
+            m_ocPlot->xAxis->setRange(QCPRange(std::min(kr.lower, m_ocPlot->xAxis->range().lower), std::max(kr.upper, m_ocPlot->xAxis->range().upper)));
+            m_ocPlot->yAxis->setRange(QCPRange(std::min(vr.lower, m_ocPlot->yAxis->range().lower), std::max(vr.upper, m_ocPlot->yAxis->range().upper)));
+        }
+    }
+    if (first) m_ocPlot->rescaleAxes();
+    m_ocPlot->xAxis->scaleRange(1.04);
+    m_ocPlot->yAxis->scaleRange(1.08);
+    m_ocPlot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void SlrWorkspace::fitImagePlot() {
+    // The image in its own O-C frame: fitted to the signal and recovered pixels, so that the
+    // axis shows the track in that frame (the noise pixels span the whole range gate).
+    bool found = false;
+    QCPRange vr;
+    for (int g : {1, 2}) {
+        bool f = false;
+        const QCPRange r = m_imagePlot->graph(g)->getValueRange(f);
+        if (!f) continue;
+        vr = found ? QCPRange(std::min(vr.lower, r.lower), std::max(vr.upper, r.upper)) : r;
+        found = true;
+    }
+    m_linking = true;
+    if (found) {
+        const double pad = std::max(0.25 * vr.size(), 1e-3);
+        m_imagePlot->yAxis->setRange(vr.lower - pad, vr.upper + pad);
+    } else {
+        m_imagePlot->yAxis->rescale();
+    }
+    m_linking = false;
+    m_imagePlot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void SlrWorkspace::resetView() {
+    fitMainPlot();
+    linkRanges(m_ocPlot, m_imagePlot);
+    if (m_imageFlattened || m_ocPlot->yAxis2->visible()) fitImagePlot();
+    m_histPlot->rescaleAxes();
+    if (m_histPlot->plottableCount()) m_histPlot->yAxis->setRangeLower(0);
+    m_histPlot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+bool SlrWorkspace::eventFilter(QObject* watched, QEvent* event) {
+    // Modifier + wheel zooms one axis about the mouse: Ctrl the time axis, Shift the value axis.
+    auto* plot = qobject_cast<QCustomPlot*>(watched);
+    if (plot && event->type() == QEvent::Wheel) {
+        auto* e = static_cast<QWheelEvent*>(event);
+        const bool ctrl = e->modifiers() & Qt::ControlModifier, shift = e->modifiers() & Qt::ShiftModifier;
+        if (ctrl != shift) {
+            const int delta = e->angleDelta().y() ? e->angleDelta().y() : e->angleDelta().x();
+            const double factor = std::pow(0.85, delta / 120.0);
+            QCPAxis* axis = ctrl ? plot->xAxis : plot->yAxis;
+            const QPointF pos = e->position();
+            axis->scaleRange(factor, axis->pixelToCoord(ctrl ? pos.x() : pos.y()));
+            plot->replot(QCustomPlot::rpQueuedReplot);
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+QString SlrWorkspace::readoutAt(const QPointF& pixel) const {
+    const PassData& p = m_controller->pass();
+    if (!m_controller->hasRun() || m_y.size() != int(p.t.size())) return {};
+    // The nearest point within 10 px.
+    double best = 100;
+    int k = -1;
+    for (int i = 0; i < m_y.size(); ++i) {
+        const double dx = m_ocPlot->xAxis->coordToPixel(p.t[size_t(i)]) - pixel.x();
+        if (std::fabs(dx) > 10) continue;
+        const double dy = m_ocPlot->yAxis->coordToPixel(m_y[i]) - pixel.y();
+        if (dx * dx + dy * dy < best) {
+            best = dx * dx + dy * dy;
+            k = i;
+        }
+    }
+    if (k < 0) return {};
+    const SlrRun& run = m_controller->run();
+    const double t = p.t[size_t(k)];
+    const double sod = std::fmod(t, 86400.0);
+    QString epoch = p.hasCrd ? QString("%1:%2:%3 UTC")
+                                   .arg(int(t / 3600), 2, 10, QChar('0'))
+                                   .arg(int(sod / 60) % 60, 2, 10, QChar('0'))
+                                   .arg(std::fmod(sod, 60.0), 9, 'f', 6, QChar('0'))
+                             : QString("%1 s").arg(t, 0, 'f', 6);
+    QString text = tr("%1 · O-C %2 ns").arg(epoch).arg(p.oc[size_t(k)] * 1e9, 0, 'f', 3);
+    if (run.post.ok)
+        text += tr(" · residual %1 ps (%2 mm)").arg(run.post.residuals[size_t(k)] * 1e12, 0, 'f', 1).arg(run.post.residuals[size_t(k)] * 1e12 * kMmPerPs, 0, 'f', 1);
+    text += " · " + QString::fromLatin1(m_class[k]);
+    const auto& forced = m_controller->forced();
+    if (size_t(k) < forced.size() && forced[size_t(k)]) text += forced[size_t(k)] > 0 ? tr(" (forced in)") : tr(" (forced out)");
+    if (p.stationFlag.size() == p.t.size()) text += tr(" · station flag %1").arg(p.stationFlag[size_t(k)]);
+    text += p.rangeIndex.size() == p.t.size() ? tr(" · record %1").arg(p.rangeIndex[size_t(k)]) : tr(" · row %1").arg(k);
+    return text;
 }
 
 void SlrWorkspace::showRun(const SlrRun& run) {
     const PassData& p = m_controller->pass();
+    if (p.t.empty() || run.accepted.size() != p.t.size()) return;
     const ScreenResult& s = run.screen;
     // The scale used, on the fields left at auto.
     m_params->showScale(scaleChoice(s));
     const bool fresh = m_ocPlot->property("fresh").toBool();
     const QCPRange xr = m_ocPlot->xAxis->range(), yr = m_ocPlot->yAxis->range();
-    // O-C scatter by class.
+    // The main plot: O-C (ns) or the residual about the post-fit trend (ps two-way), by class.
+    const bool residual = m_residual && run.post.ok;
     m_ocPlot->clearGraphs();
-    QVector<double> nx, ny, sx, sy, rx, ry, jx, jy, fx, fy;
     const size_t n = p.t.size();
     const auto& forced = m_controller->forced();
+    m_y.resize(int(n));
+    m_class.resize(int(n));
+    QVector<double> nx, ny, sx, sy, rx, ry, jx, jy, fx, fy, dx, dy;
     for (size_t i = 0; i < n; ++i) {
-        const double x = p.t[i], y = p.oc[i] * 1e9;
+        const double x = p.t[i], y = residual ? run.post.residuals[i] * 1e12 : p.oc[i] * 1e9;
+        m_y[int(i)] = y;
         if (!run.accepted[i]) {
             nx << x;
             ny << y;
+            m_class[int(i)] = "noise";
         } else if (run.post.ok && !run.post.kept[i]) {
             jx << x;
             jy << y;
+            m_class[int(i)] = "rejected by the post-fit";
         } else if (s.pointClass[i] == PointClass::Recovered) {
             rx << x;
             ry << y;
+            m_class[int(i)] = "recovered";
         } else {
             sx << x;
             sy << y;
+            m_class[int(i)] = "signal";
         }
         if (i < forced.size() && forced[i]) {
             fx << x;
             fy << y;
         }
+        if (p.stationFlag.size() == n && p.stationFlag[i] == 2) {
+            dx << x;
+            dy << y;
+        }
     }
-    fill(scatter(m_ocPlot, tr("noise (%1)").arg(nx.size()), kNoise, QCPScatterStyle::ssDisc, 2.5), nx, ny);
-    fill(scatter(m_ocPlot, tr("signal (%1)").arg(sx.size()), kSignal, QCPScatterStyle::ssDisc, 3), sx, sy);
-    fill(scatter(m_ocPlot, tr("recovered (%1)").arg(rx.size()), kRecovered, QCPScatterStyle::ssDisc, 3.5), rx, ry);
-    fill(scatter(m_ocPlot, tr("rejected by post-fit (%1)").arg(jx.size()), kRejected, QCPScatterStyle::ssCross, 5), jx, jy);
-    if (!fx.isEmpty()) fill(scatter(m_ocPlot, tr("manual (%1)").arg(fx.size()), kForced, QCPScatterStyle::ssCircle, 7), fx, fy);
-    if (p.stationFlag.size() == n) {  // the station's own screening, for comparison
-        QVector<double> dx, dy;
-        for (size_t i = 0; i < n; ++i)
-            if (p.stationFlag[i] == 2) {
-                dx << p.t[i];
-                dy << p.oc[i] * 1e9;
-            }
-        QCPGraph* g = m_ocPlot->addGraph();
+    auto keyed = [this](QCPGraph* g, const QString& key) {
+        g->setProperty("series", key);
+        if (m_hidden.contains(key)) {
+            g->setVisible(false);
+            if (auto* li = m_ocPlot->legend->itemWithPlottable(g)) li->setTextColor(QColor(160, 160, 160));
+        }
+        return g;
+    };
+    if (p.stationFlag.size() == n) {
+        // The station's own screening, for comparison: small outline marks drawn first, under the
+        // classes and the edits, so that they stay visible.
+        QCPGraph* g = keyed(m_ocPlot->addGraph(), "station");
         g->setName(tr("station flag: data (%1)").arg(dx.size()));
         g->setLineStyle(QCPGraph::lsNone);
-        g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(QColor(90, 40, 140), 1), Qt::NoBrush, 7));
+        g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(QColor(150, 90, 200), 1), Qt::NoBrush, 6));
         fill(g, dx, dy);
+    }
+    fill(keyed(scatter(m_ocPlot, tr("noise (%1)").arg(nx.size()), kNoise, QCPScatterStyle::ssDisc, 2.5), "noise"), nx, ny);
+    fill(keyed(scatter(m_ocPlot, tr("signal (%1)").arg(sx.size()), kSignal, QCPScatterStyle::ssDisc, 3), "signal"), sx, sy);
+    fill(keyed(scatter(m_ocPlot, tr("recovered (%1)").arg(rx.size()), kRecovered, QCPScatterStyle::ssDisc, 3.5), "recovered"), rx, ry);
+    fill(keyed(scatter(m_ocPlot, tr("rejected by post-fit (%1)").arg(jx.size()), kRejected, QCPScatterStyle::ssCross, 5), "rejected"), jx, jy);
+    if (!fx.isEmpty()) {
+        QCPGraph* g = keyed(scatter(m_ocPlot, tr("manual (%1)").arg(fx.size()), kForced, QCPScatterStyle::ssSquare, 7), "manual");
+        g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(kForced, 1.5), Qt::NoBrush, 7));
+        fill(g, fx, fy);
     }
     if (run.post.ok) {
         QVector<double> tx, ty, px, py;
-        // The trend only where it was fitted (a polynomial outside its span means nothing).
-        double t0 = INFINITY, t1 = -INFINITY;
-        for (size_t i = 0; i < n; ++i)
-            if (run.post.kept[i]) {
-                t0 = std::min(t0, p.t[i]);
-                t1 = std::max(t1, p.t[i]);
+        // The trend per segment, only where it was fitted (a polynomial outside its span means
+        // nothing, and the pass is split at gaps): a break between the segments.
+        for (const TrendSegment& seg : run.post.segments) {
+            for (int k = 0; k <= 100; ++k) {
+                const double t = seg.tStart + (seg.tEnd - seg.tStart) * k / 100.0;
+                tx << t;
+                ty << (residual ? 0.0 : evaluateTrend(run.post, t) * 1e9);
             }
-        if (!(t1 > t0)) t0 = t1 = p.t.front();
-        for (int k = 0; k <= 200; ++k) {
-            const double t = t0 + (t1 - t0) * k / 200.0;
-            tx << t;
-            ty << evaluateTrend(run.post, t) * 1e9;
+            tx << seg.tEnd;
+            ty << qQNaN();
         }
-        QCPGraph* trend = m_ocPlot->addGraph();
-        trend->setName(tr("trend (degree %1)").arg(run.post.degree));
+        QCPGraph* trend = keyed(m_ocPlot->addGraph(), "trend");
+        trend->setName(residual ? tr("trend (zero)") : tr("trend (degree %1)").arg(run.post.degree));
         trend->setPen(QPen(QColor(60, 60, 60), 1.2));
-        trend->setData(tx, ty);
+        trend->setData(tx, ty, true);
         for (const NormalPoint& np : run.post.normalPoints) {
             px << np.epochS;
-            py << np.ocS * 1e9;
+            py << (residual ? np.meanResidualS * 1e12 : np.ocS * 1e9);
         }
-        fill(scatter(m_ocPlot, tr("normal points (%1)").arg(px.size()), kNormalPoint, QCPScatterStyle::ssDiamond, 8), px, py);
+        fill(keyed(scatter(m_ocPlot, tr("normal points (%1)").arg(px.size()), kNormalPoint, QCPScatterStyle::ssDiamond, 8), "np"), px, py);
     }
+    m_ocPlot->yAxis->setLabel(residual ? tr("O-C − trend (ps, two-way)") : tr("O-C (ns, two-way)"));
+    m_ocPlot->yAxis2->setVisible(residual);
+    if (auto* title = qobject_cast<QCPTextElement*>(m_ocPlot->plotLayout()->element(0, 0)))
+        title->setText(residual ? tr("Residual about the post-fit trend")
+                       : m_residual ? tr("O-C (no post-fit, so no residual view: %1)").arg(QString::fromStdString(run.post.error))
+                                    : tr("O-C"));
     // Binary image: the occupied pixels as a colour map in (epoch, O-C) units, so its axes can
     // follow the O-C plot. Cells hold 0 empty, 1 noise, 2 recovered, 3 signal; an image larger
     // than 2000 × 2000 cells is shown max-pooled (a cell shows the strongest class it covers).
@@ -456,7 +937,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
     std::vector<double> imgOc(p.oc);
     if (flattened)
         for (size_t i = 0; i < n; ++i) imgOc[i] -= s.flattenS[i];
-    m_imagePlot->yAxis->setLabel(flattened ? tr("O-C less the track's trend (ns, two-way)") : tr("O-C (ns, two-way)"));
+    m_imagePlot->yAxis->setLabel(flattened ? tr("O-C less the screening's track trend (ns, two-way)") : tr("O-C (ns, two-way)"));
     {
         long long r0 = LLONG_MAX, r1 = LLONG_MIN, c0 = LLONG_MAX, c1 = LLONG_MIN;
         for (size_t i = 0; i < n; ++i) {
@@ -495,36 +976,17 @@ void SlrWorkspace::showRun(const SlrRun& run) {
         fill(m_imagePlot->graph(2), gx[1], gy[1]);
         m_imagePlot->graph(2)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, kSignal, kSignal, 3));
     }
-    if (fresh) {
-        // Fit the view to the points (noise and signal graphs), not to the trend or markers.
-        m_ocPlot->rescaleAxes();
-        bool first = true;
-        for (int g = 0; g < std::min(2, m_ocPlot->graphCount()); ++g) {
-            bool found = false;
-            const QCPRange kr = m_ocPlot->graph(g)->getKeyRange(found);
-            if (!found) continue;
-            const QCPRange vr = m_ocPlot->graph(g)->getValueRange(found);
-            if (first) {
-                m_ocPlot->xAxis->setRange(kr);
-                m_ocPlot->yAxis->setRange(vr);
-                first = false;
-            } else {
-                m_ocPlot->xAxis->setRange(QCPRange(std::min(kr.lower, m_ocPlot->xAxis->range().lower), std::max(kr.upper, m_ocPlot->xAxis->range().upper)));
-                m_ocPlot->yAxis->setRange(QCPRange(std::min(vr.lower, m_ocPlot->yAxis->range().lower), std::max(vr.upper, m_ocPlot->yAxis->range().upper)));
-            }
-        }
-        m_ocPlot->xAxis->scaleRange(1.04);
-        m_ocPlot->yAxis->scaleRange(1.08);
+    if (fresh || residual != m_ocPlot->property("residualShown").toBool()) {
+        fitMainPlot();
+        if (!fresh) m_ocPlot->xAxis->setRange(xr);  // a switch of view keeps the time span
         m_ocPlot->setProperty("fresh", false);
+        m_ocPlot->setProperty("residualShown", residual);
     } else {
         m_ocPlot->xAxis->setRange(xr);
         m_ocPlot->yAxis->setRange(yr);
     }
     linkRanges(m_ocPlot, m_imagePlot);
-    if (flattened) {
-        m_imagePlot->yAxis->rescale();
-        m_imagePlot->yAxis->scaleRange(1.08);
-    }
+    if (m_imageFlattened || residual) fitImagePlot();
     // Residual histogram of the kept points.
     m_histPlot->clearPlottables();
     QString statsHtml;
@@ -614,6 +1076,7 @@ QJsonObject SlrWorkspace::saveState() const {
     o["sinex"] = m_snxPath;
     o["pass"] = m_controller->pass().passIndex;
     o["demo"] = m_path.isEmpty() && m_controller->hasPass();
+    o["main_plot"] = m_residual ? "residual" : "oc";
     // The schema's JSON: its two sections, every field.
     const QJsonObject params = toQtJson(slrSchema().toJson(m_controller->params()));
     for (auto it = params.begin(); it != params.end(); ++it) o[it.key()] = it.value();
@@ -627,7 +1090,7 @@ QJsonObject SlrWorkspace::saveState() const {
 
 bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
                                 const std::vector<std::string>& at) {
-    if (!checkSessionKeys(o, {"path", "cpf", "sinex", "pass", "demo", "forced", "screen", "postfit"}, "slr", error, doc, at))
+    if (!checkSessionKeys(o, {"path", "cpf", "sinex", "pass", "demo", "forced", "screen", "postfit", "main_plot"}, "slr", error, doc, at))
         return false;
     // Every parameter from the session over the defaults (the sections the schema writes).
     core::Json j = core::Json::object();
@@ -639,10 +1102,19 @@ bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core
         *error = QString::fromStdString(err);
         return false;
     }
+    const QString mainPlot = o["main_plot"].toString("oc");
+    if (mainPlot != "oc" && mainPlot != "residual") {
+        *error = tr("slr.main_plot: \"%1\" is neither \"oc\" nor \"residual\"").arg(mainPlot);
+        return false;
+    }
+    m_residual = mainPlot == "residual";
+    m_viewCombo->setCurrentIndex(m_residual ? 1 : 0);
     m_cpfPath = o["cpf"].toString();
     m_snxPath = o["sinex"].toString();
     m_cpfLabel->setText(m_cpfPath.isEmpty() ? tr("no prediction") : QFileInfo(m_cpfPath).fileName());
     m_snxLabel->setText(m_snxPath.isEmpty() ? tr("no station file") : QFileInfo(m_snxPath).fileName());
+    m_cpfClear->setEnabled(!m_cpfPath.isEmpty());
+    m_snxClear->setEnabled(!m_snxPath.isEmpty());
     const QString path = o["path"].toString();
     if (!path.isEmpty()) {
         if (!openPath(path, o["pass"].toInt(-1), error)) return false;

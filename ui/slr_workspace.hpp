@@ -2,6 +2,8 @@
 // The SLR workspace: the O-C scatter beside its binary image (axes linked), the residual
 // histogram, the parameter panel (ui/slr_params_panel.hpp), box edits, presets and exports.
 #include <QJsonObject>
+#include <QPointer>
+#include <QSet>
 #include <QWidget>
 
 #include "core/common/json.hpp"
@@ -9,6 +11,7 @@
 #include "ui/slr_controller.hpp"
 
 class QComboBox;
+class QToolButton;
 class QCheckBox;
 class QLabel;
 class QPushButton;
@@ -21,6 +24,7 @@ namespace lwb::ui {
 
 class ParamSlider;
 class SlrParamsPanel;
+class SlrAllPassesDialog;
 
 class SlrWorkspace : public QWidget {
     Q_OBJECT
@@ -35,6 +39,31 @@ public:
     QCustomPlot* ocPlot() const { return m_ocPlot; }
     QCustomPlot* imagePlot() const { return m_imagePlot; }
     QLabel* infoLabel() const { return m_info; }  ///< the pass line and the readers' warnings
+    QComboBox* passCombo() const { return m_passCombo; }  ///< every pass, by time; item data = pass index
+    QCustomPlot* histPlot() const { return m_histPlot; }
+    QLabel* hoverLabel() const { return m_hover; }
+
+    /// What a box drawn on the main plot does.
+    enum class BoxMode { Pan, Zoom, ForceIn, ForceOut };
+    void setBoxMode(BoxMode mode);
+    /// The main plot: O-C (ns) or the residual view (O-C less the post-fit trend, ps two-way on
+    /// the left axis, mm one-way on the right).
+    void setResidualView(bool on);
+    bool residualView() const { return m_residual; }
+    /// Time axis in seconds of day instead of UTC hh:mm:ss.
+    void setSecondsOfDay(bool on);
+    /// Home: every plot fitted to its data again.
+    void resetView();
+    /// The hover readout for a pixel of the main plot ("" when no point is near).
+    QString readoutAt(const QPointF& pixel) const;
+    /// New CPF (a file or a folder) or SINEX; "" clears it. The open pass is read again.
+    bool setCpf(const QString& path, QString* error);
+    bool setSinex(const QString& path, QString* error);
+    /// Exports the pass as CRD full rate with the screening's flags: `wholeFile` = every pass of
+    /// the file with this pass's flags set, else this pass alone. *message says what was written.
+    bool exportCrd(const QString& path, bool wholeFile, QString* message);
+    /// Opens the "all passes" table of the open CRD file (screened in the background).
+    SlrAllPassesDialog* screenAllPasses();
 
     /// Opens a CRD or O-C CSV with the CPF/SINEX chosen in the workspace; errors in a dialog.
     bool openPath(const QString& path, int passIndex, QString* error);
@@ -55,11 +84,19 @@ signals:
     void modified();
     void status(const QString& message);
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void showRun(const SlrRun& run);
+    void showPass();
+    void fillPassList();
+    void applyTimeAxis();
+    void fitMainPlot();
+    void fitImagePlot();
+    void pushForced(const std::vector<int8_t>& after, const QString& text);
     void linkRanges(QCustomPlot* from, QCustomPlot* to);
     void boxSelected(const QRect& rect);
-    void pickFile(QString* target, QLabel* label, const QString& title, const QString& filter);
 
     SlrController* m_controller;
     QCustomPlot *m_ocPlot, *m_imagePlot, *m_histPlot;
@@ -73,6 +110,16 @@ private:
     bool m_loading = false;
     bool m_linking = false;
     bool m_imageFlattened = false;  ///< the binary image is of the flattened O-C (refinement)
+    bool m_residual = false, m_secondsOfDay = false, m_applyingParams = false;
+    QRadioButton* m_modeBoxZoom;
+    QComboBox* m_viewCombo;
+    QCheckBox* m_sodCheck;
+    QToolButton *m_cpfClear, *m_snxClear;
+    QLabel* m_hover;
+    QSet<QString> m_hidden;        ///< series switched off in the legend (by key)
+    QVector<double> m_y;           ///< per point: the main plot's value (ns, or ps in the residual view)
+    QVector<const char*> m_class;  ///< per point: its class in the last run
+    QPointer<SlrAllPassesDialog> m_all;
 };
 
 }  // namespace lwb::ui

@@ -1,6 +1,10 @@
 // The SLR workspace under the offscreen platform: live screening, the cosine slider, manual
 // edits with undo, presets, exports, sessions.
 #include <QCheckBox>
+#include <QComboBox>
+#include <QTableWidget>
+#include <QUndoStack>
+#include <qcustomplot.h>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QSignalSpy>
@@ -10,9 +14,12 @@
 #include "core/common/csv.hpp"
 #include "core/sim/slr_sim.hpp"
 #include "core/slr/crd.hpp"
+#include "core/slr/pass_input.hpp"
 #include "test_support.hpp"
 #include "ui/main_window.hpp"
+#include "ui/app_undo.hpp"
 #include "ui/param_slider.hpp"
+#include "ui/slr_all_passes.hpp"
 #include "ui/slr_workspace.hpp"
 
 using namespace lwb::ui;
@@ -32,6 +39,31 @@ void openSparsePass(SlrController* c) {
     const SlrSimPass pass = simulateSlrPass(p, 7);
     QVERIFY(pass.ok);
     c->setSimulatedPass(pass.epochS, pass.ocS, pass.tofS, pass.isSignal, "sparse", p.altitudeKm);
+}
+// A left-button drag from a to b on a widget (press, moves, release), as the mouse does it.
+void drag(QWidget* w, QPoint a, QPoint b) {
+    auto send = [w](QEvent::Type t, QPoint pos, Qt::MouseButton button, Qt::MouseButtons buttons) {
+        QMouseEvent e(t, QPointF(pos), QPointF(w->mapToGlobal(pos)), button, buttons, Qt::NoModifier);
+        QCoreApplication::sendEvent(w, &e);
+    };
+    send(QEvent::MouseButtonPress, a, Qt::LeftButton, Qt::LeftButton);
+    send(QEvent::MouseMove, (a + b) / 2, Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseMove, b, Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, b, Qt::LeftButton, Qt::NoButton);
+}
+void wheel(QWidget* w, QPoint at, Qt::KeyboardModifiers mods, int delta) {
+    QWheelEvent e(QPointF(at), QPointF(w->mapToGlobal(at)), QPoint(), QPoint(0, delta), Qt::NoButton, mods, Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(w, &e);
+}
+// A workspace shown at a real size (the plots' pixel geometry) with the sparse simulated pass.
+void showWithSparsePass(SlrWorkspace* ws) {
+    ws->resize(1500, 950);
+    ws->show();
+    QVERIFY(QTest::qWaitForWindowExposed(ws));
+    openSparsePass(ws->controller());
+    QVERIFY(ws->controller()->waitIdle(60000));
+    QCoreApplication::processEvents();
+    ws->ocPlot()->replot();
 }
 }  // namespace
 
@@ -260,6 +292,239 @@ private slots:
         QVERIFY(w.slr()->openPath(jason, -1, &err));
         QCOMPARE(c->screenParams().cosineC, 0.91);
         QVERIFY(!c->screenParams().automatic);  // the preset keeps the scale that was used
+    }
+
+    /// Issue 11: a multi-pass file whose first pass cannot be processed opens; every pass is
+    /// listed by time, pass 1's reason is shown in place and in the list, a later pass screens,
+    /// and "screen all passes" fills its table with a row per pass.
+    void everyPassListedAndTheFirstFailureShown() {
+        const QString hy2c = lwbtest::sharedPath("slr/hy2c_202109.fr2");
+        if (!QFile::exists(hy2c)) QSKIP("shared data absent");
+        const auto passes = lwb::core::slr::summarisePasses(lwb::core::slr::readCrd(hy2c.toStdString()).file);
+        QCOMPARE(passes.size(), size_t(6));
+        MainWindow w;
+        SlrWorkspace* ws = w.slr();
+        SlrController* c = ws->controller();
+        QString err;
+        QVERIFY2(ws->openPath(hy2c, -1, &err), qPrintable(err));
+        QComboBox* list = ws->passCombo();
+        QCOMPARE(list->count(), 6);
+        for (int i = 0; i < list->count(); ++i) {
+            const auto& s = passes[size_t(list->itemData(i).toInt())];
+            if (i) QVERIFY(passes[size_t(list->itemData(i - 1).toInt())].start <= s.start);  // by time
+            for (const std::string& part : {s.start, s.station, s.satellite, std::to_string(s.ranges) + " pts"})
+                QVERIFY2(list->itemText(i).contains(QString::fromStdString(part)), qPrintable(list->itemText(i)));
+        }
+        // Pass 1 (5 records): too short for the TOF trend. No pass open, the reason in place.
+        QCOMPARE(c->selectedPass(), 0);
+        QVERIFY(!c->hasPass());
+        QVERIFY2(c->passProblem().contains("at least 10 are needed"), qPrintable(c->passProblem()));
+        QVERIFY2(ws->infoLabel()->text().contains("Pass 1 cannot be processed"), qPrintable(ws->infoLabel()->text()));
+        QVERIFY2(ws->infoLabel()->text().contains("at least 10 are needed"), qPrintable(ws->infoLabel()->text()));
+        QVERIFY2(list->itemText(list->findData(0)).contains("cannot be processed"), qPrintable(list->itemText(list->findData(0))));
+        // A later pass, chosen in the list, screens (pass 6, 101 points).
+        emit list->activated(list->findData(5));
+        QCOMPARE(c->selectedPass(), 5);
+        QVERIFY(c->hasPass());
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY(c->hasRun());
+        QVERIFY2(acceptedCount(c->run()) > 50, qPrintable(QString::number(acceptedCount(c->run()))));
+        QVERIFY(!ws->infoLabel()->text().contains("cannot be processed"));
+        QVERIFY(list->itemText(list->findData(0)).contains("cannot be processed"));  // still known against pass 1
+
+        // Export: this pass only, or the whole file with this pass's flags; the message says which.
+        const QString one = m_dir.path() + "/hy2c-pass6.fr2", whole = m_dir.path() + "/hy2c-all.fr2";
+        QString message;
+        QVERIFY2(ws->exportCrd(one, false, &message), qPrintable(message));
+        QVERIFY2(message.contains("this pass only") && message.contains("pass 6"), qPrintable(message));
+        QVERIFY2(ws->exportCrd(whole, true, &message), qPrintable(message));
+        QVERIFY2(message.contains("whole file (6 passes)"), qPrintable(message));
+        const auto backOne = lwb::core::slr::readCrd(one.toStdString()), backWhole = lwb::core::slr::readCrd(whole.toStdString());
+        QVERIFY(backOne.ok && backWhole.ok);
+        QCOMPARE(backOne.file.passes.size(), size_t(1));
+        QCOMPARE(backWhole.file.passes.size(), size_t(6));
+        int flagged = 0;
+        for (const auto& r : backOne.file.passes[0].ranges) flagged += r.filterFlag == 2;
+        QCOMPARE(flagged, acceptedCount(c->run()));
+
+        // Screen all passes: a row per pass, the failing ones with their reason; a row opens its pass.
+        SlrAllPassesDialog* all = ws->screenAllPasses();
+        QVERIFY(all);
+        QTRY_VERIFY_WITH_TIMEOUT(all->finished(), 120000);
+        QTableWidget* t = all->table();
+        QCOMPARE(t->rowCount(), 6);
+        int failed = 0, ok = 0;
+        for (int r = 0; r < t->rowCount(); ++r) {
+            const QString status = t->item(r, SlrAllPassesDialog::ColStatus)->text();
+            if (status.startsWith("failed")) {
+                ++failed;
+                QVERIFY2(status.contains("at least 10 are needed"), qPrintable(status));
+            } else {
+                ++ok;
+                const QString accepted = t->item(r, SlrAllPassesDialog::ColAccepted)->text();
+                QVERIFY(!accepted.isEmpty());
+                QVERIFY2(status.startsWith(accepted == "0" ? "nothing accepted" : "ok"), qPrintable(status));
+                if (all->passOfRow(r) == 5) QVERIFY(!t->item(r, SlrAllPassesDialog::ColRms)->text().isEmpty());  // 101 points
+            }
+        }
+        QCOMPARE(failed, 3);
+        QCOMPARE(ok, 3);
+        int row4 = -1;
+        for (int r = 0; r < t->rowCount(); ++r)
+            if (all->passOfRow(r) == 2) row4 = r;
+        QVERIFY(row4 >= 0);
+        QCOMPARE(t->item(row4, SlrAllPassesDialog::ColAccepted)->text().toInt() > 0, true);
+        emit t->cellDoubleClicked(row4, 0);
+        QCOMPARE(c->selectedPass(), 2);
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY(c->hasRun());
+        QCOMPARE(QString::number(acceptedCount(c->run())), t->item(row4, SlrAllPassesDialog::ColAccepted)->text());
+    }
+
+    /// Issue 11: BLITS with the CPF and SINEX opens although pass 1 is before the CPF; a pass in
+    /// the CPF's span gets the prediction; clearing the CPF gives the own-TOF O-C back, and the
+    /// CPF chosen again gives the prediction back.
+    void cpfClearedAndReplaced() {
+        const QString blits = lwbtest::sharedPath("slr/blits_201206.frd"), cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"),
+                      snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
+        if (!QFile::exists(blits) || !QFile::exists(cpf) || !QFile::exists(snx)) QSKIP("shared data absent");
+        MainWindow w;
+        SlrWorkspace* ws = w.slr();
+        SlrController* c = ws->controller();
+        QString err;
+        QVERIFY2(ws->setCpf(cpf, &err), qPrintable(err));
+        QVERIFY2(ws->setSinex(snx, &err), qPrintable(err));
+        QVERIFY2(ws->openPath(blits, -1, &err), qPrintable(err));
+        QCOMPARE(ws->passCombo()->count(), 54);
+        // Pass 1 is before the CPF starts: on its own TOF trend with the reason, or not processed with it.
+        QCOMPARE(c->selectedPass(), 0);
+        if (c->hasPass()) {
+            QVERIFY2(c->pass().ocNote.find("not the pass") != std::string::npos, c->pass().ocNote.c_str());
+            QVERIFY2(c->pass().ocOrigin.find("TOF") != std::string::npos, c->pass().ocOrigin.c_str());
+            QVERIFY(ws->infoLabel()->text().contains("Prediction not used"));
+        } else {
+            QVERIFY(!c->passProblem().isEmpty());
+        }
+        // The first pass inside the CPF's span with 100 points or more.
+        int k = -1;
+        for (const auto& s : c->passes())
+            if (k < 0 && s.start >= "2012-06-26" && s.start < "2012-07-01" && s.ranges >= 100) k = s.index;
+        QVERIFY(k >= 0);
+        emit ws->passCombo()->activated(ws->passCombo()->findData(k));
+        QCOMPARE(c->selectedPass(), k);
+        QVERIFY(c->hasPass());
+        QVERIFY2(c->pass().ocOrigin.find("CPF prediction") != std::string::npos, c->pass().ocOrigin.c_str());
+        const std::vector<double> ocPredicted = c->pass().oc;
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY(c->hasRun());
+        // Cleared: the own-TOF O-C, no note (nothing was given), the pass still screens.
+        QVERIFY2(ws->setCpf(QString(), &err), qPrintable(err));
+        QCOMPARE(c->selectedPass(), k);
+        QVERIFY2(c->pass().ocOrigin.find("TOF") != std::string::npos, c->pass().ocOrigin.c_str());
+        QVERIFY(c->pass().ocNote.empty());
+        QVERIFY(c->pass().oc != ocPredicted);
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY(c->hasRun());
+        // Replaced (chosen again): the prediction's O-C again.
+        QVERIFY2(ws->setCpf(cpf, &err), qPrintable(err));
+        QVERIFY(c->pass().oc == ocPredicted);
+    }
+
+    /// Issue 11: a box zoom on the main plot sets the ranges of the box and nothing else; the
+    /// binary image follows in time; Ctrl+wheel zooms time only, Shift+wheel O-C only; Home.
+    void boxZoomChangesOnlyTheRangeAsked() {
+        SlrWorkspace ws;
+        showWithSparsePass(&ws);
+        QCustomPlot* p = ws.ocPlot();
+        const QCPRange hx = ws.histPlot()->xAxis->range(), hy = ws.histPlot()->yAxis->range();
+        const QCPRange x0 = p->xAxis->range(), y0 = p->yAxis->range();
+        const QRect ar = p->axisRect()->rect();
+        QVERIFY(ar.width() > 200 && ar.height() > 100);
+        const QPoint a = ar.topLeft() + QPoint(ar.width() / 4, ar.height() / 3), b = a + QPoint(ar.width() / 5, ar.height() / 4);
+        const double ex0 = p->xAxis->pixelToCoord(a.x()), ex1 = p->xAxis->pixelToCoord(b.x());
+        const double ey0 = p->yAxis->pixelToCoord(b.y()), ey1 = p->yAxis->pixelToCoord(a.y());
+        const double px = x0.size() / ar.width(), py = y0.size() / ar.height();  // one pixel
+        ws.setBoxMode(SlrWorkspace::BoxMode::Zoom);
+        drag(p, a, b);
+        // The box's ranges, to the pixel the mouse can set.
+        QVERIFY2(std::fabs(p->xAxis->range().lower - ex0) <= 1.5 * px && std::fabs(p->xAxis->range().upper - ex1) <= 1.5 * px,
+                 qPrintable(QString("x %1..%2, asked %3..%4").arg(p->xAxis->range().lower).arg(p->xAxis->range().upper).arg(ex0).arg(ex1)));
+        QVERIFY2(std::fabs(p->yAxis->range().lower - ey0) <= 1.5 * py && std::fabs(p->yAxis->range().upper - ey1) <= 1.5 * py,
+                 qPrintable(QString("y %1..%2, asked %3..%4").arg(p->yAxis->range().lower).arg(p->yAxis->range().upper).arg(ey0).arg(ey1)));
+        QCOMPARE(ws.imagePlot()->xAxis->range().lower, p->xAxis->range().lower);  // linked in time
+        QCOMPARE(ws.imagePlot()->xAxis->range().upper, p->xAxis->range().upper);
+        QCOMPARE(ws.histPlot()->xAxis->range().lower, hx.lower);  // the histogram untouched
+        QCOMPARE(ws.histPlot()->yAxis->range().upper, hy.upper);
+        QCOMPARE(ws.controller()->editCount(), 0);  // a zoom is no edit
+        bool anyForced = false;
+        for (int8_t f : ws.controller()->forced()) anyForced = anyForced || f;
+        QVERIFY(!anyForced);
+        // Ctrl+wheel: time only; Shift+wheel: O-C only.
+        const QCPRange x1 = p->xAxis->range(), y1 = p->yAxis->range();
+        wheel(p, ar.center(), Qt::ControlModifier, 120);
+        QVERIFY(p->xAxis->range().size() < x1.size() * 0.95);
+        QCOMPARE(p->yAxis->range().lower, y1.lower);
+        QCOMPARE(p->yAxis->range().upper, y1.upper);
+        const QCPRange x2 = p->xAxis->range();
+        wheel(p, ar.center(), Qt::ShiftModifier, -120);
+        QVERIFY(p->yAxis->range().size() > y1.size() * 1.05);
+        QCOMPARE(p->xAxis->range().lower, x2.lower);
+        QCOMPARE(p->xAxis->range().upper, x2.upper);
+        // Home: the whole pass again.
+        ws.resetView();
+        QCOMPARE(p->xAxis->range().lower, x0.lower);
+        QCOMPARE(p->xAxis->range().upper, x0.upper);
+        // The residual view: ps two-way, mm one-way on the right axis, fitted to the track.
+        ws.setResidualView(true);
+        QVERIFY(p->yAxis->label().contains("ps"));
+        QVERIFY(p->yAxis2->visible());
+        QVERIFY(std::fabs(p->yAxis2->range().upper - p->yAxis->range().upper * 0.149896229) < 1e-9 * std::fabs(p->yAxis->range().upper) + 1e-12);
+        // The hover readout names the point under the mouse.
+        const SlrRun& run = ws.controller()->run();
+        size_t k = 0;
+        while (k < run.accepted.size() && !(run.accepted[k] && run.post.kept[k])) ++k;
+        QVERIFY(k < run.accepted.size());
+        const QPointF at(p->xAxis->coordToPixel(ws.controller()->pass().t[k]), p->yAxis->coordToPixel(run.post.residuals[k] * 1e12));
+        const QString readout = ws.readoutAt(at);
+        QVERIFY2(readout.contains("residual") && readout.contains("O-C") && readout.contains("row "), qPrintable(readout));
+    }
+
+    /// Issue 11: a box edit and a parameter change go on the workbench's undo history; undo
+    /// restores them, redo applies them again.
+    void undoRestoresABoxEdit() {
+        SlrWorkspace ws;
+        showWithSparsePass(&ws);
+        SlrController* c = ws.controller();
+        appUndoStack().clear();
+        const std::vector<uint8_t> before = c->run().accepted;
+        QVERIFY(acceptedCount(c->run()) > 0);
+        QCustomPlot* p = ws.ocPlot();
+        const QRect ar = p->axisRect()->rect();
+        ws.setBoxMode(SlrWorkspace::BoxMode::ForceOut);
+        drag(p, ar.topLeft() + QPoint(2, 2), ar.bottomRight() - QPoint(2, 2));  // every point in view
+        QCOMPARE(appUndoStack().count(), 1);
+        QVERIFY(c->waitIdle(60000));
+        QCOMPARE(acceptedCount(c->run()), 0);
+        appUndoStack().undo();
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY(c->run().accepted == before);
+        for (int8_t f : c->forced()) QCOMPARE(int(f), 0);
+        appUndoStack().redo();
+        QVERIFY(c->waitIdle(60000));
+        QCOMPARE(acceptedCount(c->run()), 0);
+        appUndoStack().undo();
+        QVERIFY(c->waitIdle(60000));
+        // A parameter change: undone in the controller and in the panel.
+        const double cos0 = c->screenParams().cosineC;
+        ws.cosineSlider()->field()->setValue(0.93);
+        QCOMPARE(c->screenParams().cosineC, 0.93);
+        QVERIFY(appUndoStack().canUndo());
+        appUndoStack().undo();
+        QCOMPARE(c->screenParams().cosineC, cos0);
+        QCOMPARE(ws.cosineSlider()->field()->value(), cos0);
+        appUndoStack().redo();
+        QCOMPARE(c->screenParams().cosineC, 0.93);
+        QVERIFY(c->waitIdle(60000));
     }
 };
 
