@@ -163,7 +163,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     // The items are long (start, station, satellite, duration, points, status): the combo does
     // not grow to the longest, its popup shows them whole.
     m_passCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_passCombo->setMinimumContentsLength(36);
+    m_passCombo->setMinimumContentsLength(28);
     m_passCombo->view()->setMinimumWidth(720);
     for (QLabel* l : {m_cpfLabel, m_snxLabel}) l->setMaximumWidth(190);
     m_passCombo->setToolTip(tr("Every pass of the file by start time: station, satellite, UTC start, duration, points, status"));
@@ -196,7 +196,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
         p->legend->setVisible(true);
         p->legend->setFont(QFont(font().family(), 8));
         p->legend->setFillOrder(QCPLegend::foColumnsFirst);
-        p->legend->setWrap(3);
+        p->legend->setWrap(2);  // two columns: the plots stay narrow enough for a 1024 px window
         p->axisRect()->insetLayout()->take(p->legend);
         p->plotLayout()->addElement(2, 0, p->legend);
         p->plotLayout()->setRowStretchFactor(2, 0.001);
@@ -258,7 +258,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     auto* plotBox = new QWidget(this);
     auto* pbl = new QVBoxLayout(plotBox);
     pbl->setContentsMargins(0, 0, 0, 0);
-    pbl->addLayout(tools);
+    pbl->addLayout(wrapRow(tools));  // wraps in a narrow window (usable at 1024 px)
     pbl->addWidget(m_hover);
     pbl->addWidget(plots, 1);
     vsplit->addWidget(plotBox);
@@ -319,7 +319,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     for (QPushButton* b : {savePreset, exCsv, exCrd, exNp}) xl->addWidget(b);
     pl->addWidget(xg);
     pl->addStretch(1);
-    layoutWorkspace(this, top, m_info, vsplit, panel, 430, 1030);
+    layoutWorkspace(this, wrapRow(top), m_info, vsplit, panel, 430, 1030);
 
     // Wiring.
     connect(m_controller, &SlrController::runReady, this, &SlrWorkspace::showRun);
