@@ -187,9 +187,11 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres}) c->setChecked(true);
     viewRow->addWidget(new QLabel(tr("Colours:"), review));
     viewRow->addWidget(m_colorMap);
-    viewRow->addWidget(m_display);
     viewRow->addStretch(1);
     revLay->addLayout(wrapRow(viewRow));  // wraps in a narrow window (issue 10 layout)
+    // The display controls on a line of their own: their row wraps inside the tab's width (nested
+    // in the wrapping row above, they were laid out at full length and clipped at 1024 px).
+    revLay->addWidget(m_display);
     auto* overlayRow = new QHBoxLayout;
     overlayRow->addWidget(new QLabel(tr("Draw:"), review));
     for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres}) overlayRow->addWidget(c);
