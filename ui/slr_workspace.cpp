@@ -709,6 +709,9 @@ void SlrWorkspace::applyTimeAxis() {
         } else {
             plot->xAxis->setTicker(QSharedPointer<QCPAxisTicker>(new QCPAxisTicker));
         }
+        // About one tick label per 70 px: five-digit epochs and hh:mm:ss labels ran into each
+        // other on a 1024 px window (seen in a screenshot).
+        plot->xAxis->ticker()->setTickCount(std::clamp(plot->width() / 70, 3, 8));
         plot->xAxis->setLabel(label);
         plot->replot(QCustomPlot::rpQueuedReplot);
     }

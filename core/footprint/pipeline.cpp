@@ -29,7 +29,6 @@ bool parseMethod(const std::string& s, Method* m) {
 const Schema<FootprintParams>& footprintSchema() {
     static const Schema<FootprintParams> schema = [] {
         using F = FootprintParams;
-        using I = Interval;
         Schema<F> s("footprint");
         s.choice("method", LWB_FIELD(F, method), {"gcm", "tefm", "gauss"},
                  "centre method: gray centroid, TEFM (paper 001) or the Gaussian fit (paper 000 + Guo + LM)");
