@@ -709,9 +709,9 @@ void SlrWorkspace::applyTimeAxis() {
         } else {
             plot->xAxis->setTicker(QSharedPointer<QCPAxisTicker>(new QCPAxisTicker));
         }
-        // About one tick label per 70 px: five-digit epochs and hh:mm:ss labels ran into each
+        // About one tick label per 70 px (110 for hh:mm:ss): five-digit epochs and clock labels ran into each
         // other on a 1024 px window (seen in a screenshot).
-        plot->xAxis->ticker()->setTickCount(std::clamp(plot->width() / 70, 3, 8));
+        plot->xAxis->ticker()->setTickCount(std::clamp(plot->width() / (utc ? 110 : 70), 2, 8));
         plot->xAxis->setLabel(label);
         plot->replot(QCustomPlot::rpQueuedReplot);
     }
@@ -720,6 +720,7 @@ void SlrWorkspace::applyTimeAxis() {
 void SlrWorkspace::fitMainPlot() {
     // Fit the view to the points (noise, signal, recovered graphs), not to the trend or markers.
     bool first = true;
+    QCPRange keys, values;
     for (int g = 0; g < m_ocPlot->graphCount(); ++g) {
         const QString key = m_ocPlot->graph(g)->property("series").toString();
         const bool residual = m_ocPlot->yAxis2->visible();
@@ -729,16 +730,28 @@ void SlrWorkspace::fitMainPlot() {
         const QCPRange kr = m_ocPlot->graph(g)->getKeyRange(found);
         if (!found) continue;
         const QCPRange vr = m_ocPlot->graph(g)->getValueRange(found);
+        // Accumulated here, set once below: a series of one point has an empty range, which
+        // QCPAxis::setRange ignores, and the union then took in the axis's old range (a pass
+        // with one noise point was shown from 00:00 UTC and from 0 to 5 ns).
         if (first) {
-            m_ocPlot->xAxis->setRange(kr);
-            m_ocPlot->yAxis->setRange(vr);
+            keys = kr;
+            values = vr;
             first = false;
         } else {
-            m_ocPlot->xAxis->setRange(QCPRange(std::min(kr.lower, m_ocPlot->xAxis->range().lower), std::max(kr.upper, m_ocPlot->xAxis->range().upper)));
-            m_ocPlot->yAxis->setRange(QCPRange(std::min(vr.lower, m_ocPlot->yAxis->range().lower), std::max(vr.upper, m_ocPlot->yAxis->range().upper)));
+            keys.expand(kr);
+            values.expand(vr);
         }
     }
-    if (first) m_ocPlot->rescaleAxes();
+    if (!first) {
+        auto widen = [](QCPRange r, double minHalf) {
+            if (r.size() < 2 * minHalf) r = QCPRange(r.center() - minHalf, r.center() + minHalf);
+            return r;
+        };
+        m_ocPlot->xAxis->setRange(widen(keys, 0.5));                                       // s
+        m_ocPlot->yAxis->setRange(widen(values, m_ocPlot->yAxis2->visible() ? 1 : 1e-3));  // ps or ns
+    } else {
+        m_ocPlot->rescaleAxes();
+    }
     m_ocPlot->xAxis->scaleRange(1.04);
     m_ocPlot->yAxis->scaleRange(1.08);
     m_ocPlot->replot(QCustomPlot::rpQueuedReplot);

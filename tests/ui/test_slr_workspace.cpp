@@ -384,6 +384,32 @@ private slots:
     /// Issue 11: BLITS with the CPF and SINEX opens although pass 1 is before the CPF; a pass in
     /// the CPF's span gets the prediction; clearing the CPF gives the own-TOF O-C back, and the
     /// CPF chosen again gives the prediction back.
+    // Seen in a screenshot: a pass whose noise series holds one point (BLITS pass 16, GRSM) was
+    // shown from 00:00 UTC and from 0 to 5 ns — a one-point range was ignored by setRange and
+    // the axis's old range joined the fit. The view must fit the pass's own epochs and O-C.
+    void viewFitsAPassWithAOnePointSeries() {
+        const QString blits = lwbtest::sharedPath("slr/blits_201206.frd");
+        if (!QFile::exists(blits)) QSKIP("shared data absent");
+        MainWindow w;
+        SlrWorkspace* ws = w.slr();
+        QString err;
+        QVERIFY2(ws->openPath(blits, 15, &err), qPrintable(err));  // 0-based: pass 16
+        QVERIFY(ws->controller()->waitIdle(60000));
+        QCoreApplication::processEvents();
+        const auto& pass = ws->controller()->pass();
+        QVERIFY(!pass.t.empty());
+        const auto [tLo, tHi] = std::minmax_element(pass.t.begin(), pass.t.end());
+        const auto [oLo, oHi] = std::minmax_element(pass.oc.begin(), pass.oc.end());
+        const QCPRange x = ws->ocPlot()->xAxis->range(), y = ws->ocPlot()->yAxis->range();
+        const double span = *tHi - *tLo;
+        // Tolerance: the view's 4 % margin on each side.
+        QVERIFY2(x.lower >= *tLo - 0.05 * span && x.upper <= *tHi + 0.05 * span,
+                 qPrintable(QString("x %1..%2, pass %3..%4").arg(x.lower).arg(x.upper).arg(*tLo).arg(*tHi)));
+        const double oSpan = (*oHi - *oLo) * 1e9;  // ns
+        QVERIFY2(y.lower >= *oLo * 1e9 - 0.1 * oSpan && y.upper <= *oHi * 1e9 + 0.1 * oSpan,
+                 qPrintable(QString("y %1..%2 ns, pass %3..%4 ns").arg(y.lower).arg(y.upper).arg(*oLo * 1e9).arg(*oHi * 1e9)));
+    }
+
     void cpfClearedAndReplaced() {
         const QString blits = lwbtest::sharedPath("slr/blits_201206.frd"), cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"),
                       snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
