@@ -271,7 +271,15 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     m_stats->setWordWrap(true);
     m_stats->setMinimumWidth(300);
     m_stats->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    bl->addWidget(m_stats, 1);
+    // In a scroll area: the summary grows (refinement, no noise floor, station flags) and was
+    // cut off at the bottom of a 900 px window.
+    auto* statsScroll = new QScrollArea(bottom);
+    statsScroll->setWidget(m_stats);
+    statsScroll->setWidgetResizable(true);
+    statsScroll->setFrameShape(QFrame::NoFrame);
+    statsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    statsScroll->setMinimumWidth(300);
+    bl->addWidget(statsScroll, 1);
     vsplit->addWidget(bottom);
     vsplit->setStretchFactor(0, 3);
     vsplit->setStretchFactor(1, 1);
@@ -1061,6 +1069,10 @@ void SlrWorkspace::showRun(const SlrRun& run) {
                      .arg(s.linearRegions)
                      .arg(s.recoveredRegions)
                      .arg(s.totalMs, 0, 'f', 0);
+    if (s.floorless)
+        statsHtml += tr("<br><b>No noise floor</b>: a filtered pass (σ %1 ps); +%2 within 5σ")
+                         .arg(s.floorSigmaS * 1e12, 0, 'f', 1)
+                         .arg(s.floorlessAdded);
     // Against the truth (simulation) or the station's own flags (CRD).
     const auto& truth = m_controller->truth();
     const bool haveTruth = truth.size() == n;
