@@ -97,7 +97,8 @@ NoiseFloorCheck checkNoiseFloor(const std::vector<double>& t, const std::vector<
     if (n < 20) return c;
     std::vector<size_t> order(n);
     std::iota(order.begin(), order.end(), size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return t[a] < t[b]; });
+    if (!std::is_sorted(t.begin(), t.begin() + static_cast<long>(n)))  // passes come in time order: skip the sort
+        std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return t[a] < t[b]; });
     const PiecewiseTrend tr = robustPiecewiseTrend(t.data(), oc.data(), order);
     c.residualS.resize(n);
     for (size_t i = 0; i < n; ++i) c.residualS[i] = oc[i] - tr.at(t[i]);
