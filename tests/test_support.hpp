@@ -59,6 +59,12 @@ inline bool writeText(const QString& path, const QByteArray& text) {
 }
 
 /// Files in a folder other than the expected ones (a half-written temporary, say).
+// The 40-shot simulated footprint folder (seed 5, mixed cases, with its truth.csv) the footprint
+// ui tests open, written to DIR.
+inline CliRun simulateFootprintFolder(const QString& dir) {
+    return runCli({"simulate", "footprint", "--count", "40", "--seed", "5", "--case", "mixed", "-q", dir});
+}
+
 inline QStringList filesIn(const QString& dir) { return QDir(dir).entryList(QDir::Files | QDir::Hidden); }
 
 }  // namespace lwbtest

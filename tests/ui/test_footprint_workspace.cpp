@@ -25,8 +25,7 @@ class TestFootprintWorkspace : public QObject {
 private slots:
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
-        const auto r = lwbtest::runCli({"simulate", "footprint", "--count", "40", "--seed", "5", "--case", "mixed", "-q",
-                                        m_dir.path() + "/shots"});
+        const auto r = lwbtest::simulateFootprintFolder(m_dir.path() + "/shots");
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     }
 
