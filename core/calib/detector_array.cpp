@@ -450,27 +450,30 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFitParams& params) {
-    DetectorFitResult res;
-    if (const std::string e = validate(params); !e.empty()) {
-        res.error = e;
-        return res;
-    }
+// fitDetectorArray in named stages: judge the detectors, choose the surface, start it robustly,
+// refine noise and outliers, then the figures, the uncertainty, the per-detector report, the
+// doubts and the centre's height. The stages share one SurfaceFit (observations, problem, best
+// solution, reference point and noise model).
+namespace {
+
+double sigmaOf(double floor, double rel, double level) {
+    const double m = rel * std::max(level, 0.0);
+    return std::sqrt(floor * floor + m * m);
+}
+
+bool givenNoise(const DetectorFitParams& p) { return p.noise == NoiseSource::Given; }
+bool givenWeights(const DetectorFitParams& p) { return givenNoise(p) && (p.relativeNoise > 0 || p.noiseFloor > 0); }
+
+// Stage 1a. What each detector says on its own: untriggered, saturated, no energy, or used.
+std::string judgeDetectors(const DetectorArray& array, const DetectorFitParams& params, std::vector<DetectorOutcome>* out) {
     const auto& det = array.detectors;
-    const size_t nd = det.size();
-    res.detectors.resize(nd);
-    // 1. What each detector says: a measurement, "at least" (saturated), "at most" (untriggered), nothing.
-    bool anySatColumn = false;
-    for (const Detector& d : det) anySatColumn = anySatColumn || d.saturated >= 0;
-    for (size_t i = 0; i < nd; ++i) {
+    for (size_t i = 0; i < det.size(); ++i) {
         const Detector& d = det[i];
-        DetectorOutcome& o = res.detectors[i];
+        DetectorOutcome& o = (*out)[i];
         const std::string en = formatDouble(d.energy, 6);
-        if (!std::isfinite(d.e) || !std::isfinite(d.n)) {
-            res.error = (array.source.empty() ? "detector " + d.id : array.source + ":" + std::to_string(d.line)) +
-                        ": non-finite position";
-            return res;
-        }
+        if (!std::isfinite(d.e) || !std::isfinite(d.n))
+            return (array.source.empty() ? "detector " + d.id : array.source + ":" + std::to_string(d.line)) +
+                   ": non-finite position";
         if (d.triggered == 0) {
             o.status = DetectorStatus::Untriggered;
             o.reason = "marked untriggered in the input";
@@ -492,369 +495,406 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
             o.status = DetectorStatus::Used;
         }
     }
-    // A clip level nobody declared: the highest energy shared exactly by two or more detectors.
-    double maxExact = -INFINITY, minExact = INFINITY, minTriggered = INFINITY;
-    for (size_t i = 0; i < nd; ++i)
-        if (res.detectors[i].status == DetectorStatus::Used) {
-            maxExact = std::max(maxExact, det[i].energy);
-            minExact = std::min(minExact, det[i].energy);
-            if (det[i].triggered == 1) minTriggered = std::min(minTriggered, det[i].energy);
+    return {};
+}
+
+// The range of the used detectors' energies (±∞ when none is used).
+struct UsedEnergies {
+    double max = -INFINITY, min = INFINITY, minTriggered = INFINITY;
+};
+UsedEnergies usedEnergies(const std::vector<Detector>& det, const std::vector<DetectorOutcome>& out) {
+    UsedEnergies u;
+    for (size_t i = 0; i < det.size(); ++i)
+        if (out[i].status == DetectorStatus::Used) {
+            u.max = std::max(u.max, det[i].energy);
+            u.min = std::min(u.min, det[i].energy);
+            if (det[i].triggered == 1) u.minTriggered = std::min(u.minTriggered, det[i].energy);
         }
-    if (!anySatColumn && !(params.saturationLevel > 0) && std::isfinite(maxExact) && maxExact > 0) {
-        int atMax = 0;
-        for (size_t i = 0; i < nd; ++i) atMax += res.detectors[i].status == DetectorStatus::Used && det[i].energy == maxExact;
-        if (atMax >= 2) {
-            for (size_t i = 0; i < nd; ++i)
-                if (res.detectors[i].status == DetectorStatus::Used && det[i].energy == maxExact) {
-                    res.detectors[i].status = DetectorStatus::Saturated;
-                    res.detectors[i].reason = "shares the highest energy " + formatDouble(maxExact, 6) + " (clipped)";
-                    res.detectors[i].bound = maxExact;
-                }
-            res.warnings.push_back(std::to_string(atMax) + " detectors share the highest energy " + formatDouble(maxExact, 6) +
-                                   ": taken as saturated at that level (give the saturation level to decide otherwise)");
-            maxExact = -INFINITY;
-            for (size_t i = 0; i < nd; ++i)
-                if (res.detectors[i].status == DetectorStatus::Used) maxExact = std::max(maxExact, det[i].energy);
+    return u;
+}
+
+// Stage 1b. A clip level nobody declared: when the input says nothing of saturation, the highest
+// energy shared exactly by two or more detectors is taken as saturation. True when it was.
+bool markUndeclaredClip(const DetectorArray& array, const DetectorFitParams& params, double maxUsed, DetectorFitResult* res) {
+    const auto& det = array.detectors;
+    bool anySatColumn = false;
+    for (const Detector& d : det) anySatColumn = anySatColumn || d.saturated >= 0;
+    if (anySatColumn || params.saturationLevel > 0 || !std::isfinite(maxUsed) || !(maxUsed > 0)) return false;
+    int atMax = 0;
+    for (size_t i = 0; i < det.size(); ++i) atMax += res->detectors[i].status == DetectorStatus::Used && det[i].energy == maxUsed;
+    if (atMax < 2) return false;
+    for (size_t i = 0; i < det.size(); ++i)
+        if (res->detectors[i].status == DetectorStatus::Used && det[i].energy == maxUsed) {
+            res->detectors[i].status = DetectorStatus::Saturated;
+            res->detectors[i].reason = "shares the highest energy " + formatDouble(maxUsed, 6) + " (clipped)";
+            res->detectors[i].bound = maxUsed;
         }
-    }
-    const double upperBound = params.triggerThreshold > 0 ? params.triggerThreshold
-                              : std::isfinite(minTriggered) ? minTriggered
-                                                            : minExact;
-    int untriggered = 0, saturated = 0, noEnergy = 0;
+    res->warnings.push_back(std::to_string(atMax) + " detectors share the highest energy " + formatDouble(maxUsed, 6) +
+                            ": taken as saturated at that level (give the saturation level to decide otherwise)");
+    return true;
+}
+
+// Stage 1c. The fit's observations: measurements, and (censoring on) saturated detectors as
+// "at least" their bound, untriggered ones as "at most" the trigger level.
+struct Observations {
     std::vector<Obs> obs;
-    for (size_t i = 0; i < nd; ++i) {
-        DetectorOutcome& o = res.detectors[i];
+    int untriggered = 0, saturated = 0, noEnergy = 0, exact = 0, atLeast = 0;
+    int informative() const { return exact + atLeast; }
+};
+Observations observationsOf(const std::vector<Detector>& det, const DetectorFitParams& params, double maxUsed, double upperBound,
+                            std::vector<DetectorOutcome>* out) {
+    Observations r;
+    for (size_t i = 0; i < det.size(); ++i) {
+        DetectorOutcome& o = (*out)[i];
         if (o.status == DetectorStatus::Saturated) {
-            ++saturated;
-            if (!std::isfinite(o.bound)) o.bound = maxExact;  // at least the brightest measurement
+            ++r.saturated;
+            if (!std::isfinite(o.bound)) o.bound = maxUsed;  // at least the brightest measurement
             if (params.censor && std::isfinite(o.bound)) {
                 o.status = DetectorStatus::AtLeast;
                 o.reason += "; in the fit as at least " + formatDouble(o.bound, 6);
             }
         } else if (o.status == DetectorStatus::Untriggered) {
-            ++untriggered;
+            ++r.untriggered;
             if (params.censor && std::isfinite(upperBound)) {
                 o.status = DetectorStatus::AtMost;
                 o.bound = upperBound;
                 o.reason += "; in the fit as at most " + formatDouble(upperBound, 6);
             }
         } else if (o.status == DetectorStatus::NoEnergy) {
-            ++noEnergy;
+            ++r.noEnergy;
         }
-        if (o.status == DetectorStatus::Used) obs.push_back({det[i].e, det[i].n, det[i].energy, Kind::Exact, i});
-        else if (o.status == DetectorStatus::AtLeast) obs.push_back({det[i].e, det[i].n, o.bound, Kind::AtLeast, i});
-        else if (o.status == DetectorStatus::AtMost) obs.push_back({det[i].e, det[i].n, o.bound, Kind::AtMost, i});
+        if (o.status == DetectorStatus::Used) r.obs.push_back({det[i].e, det[i].n, det[i].energy, Kind::Exact, i});
+        else if (o.status == DetectorStatus::AtLeast) r.obs.push_back({det[i].e, det[i].n, o.bound, Kind::AtLeast, i});
+        else if (o.status == DetectorStatus::AtMost) r.obs.push_back({det[i].e, det[i].n, o.bound, Kind::AtMost, i});
     }
-    int nExact = 0, nLeast = 0;
-    for (const Obs& ob : obs) {
-        nExact += ob.kind == Kind::Exact;
-        nLeast += ob.kind == Kind::AtLeast;
+    for (const Obs& ob : r.obs) {
+        r.exact += ob.kind == Kind::Exact;
+        r.atLeast += ob.kind == Kind::AtLeast;
     }
-    // 2. The surface: Auto takes the elliptical one from 10 measurements (3 degrees of freedom left),
-    // else the circular one, without background below 7.
-    const int informative = nExact + nLeast;
+    return r;
+}
+
+// Stage 2a. The surface: Auto takes the elliptical one from 10 measurements (3 degrees of freedom
+// left), else the circular one, without background below 7.
+Layout chooseSurface(const DetectorFitParams& params, int informative, SurfaceModel* model) {
     Layout L;
     L.background = params.fitBackground;
-    SurfaceModel model = params.model;
-    if (model == SurfaceModel::Auto) {
-        model = informative >= 10 ? SurfaceModel::Elliptical : SurfaceModel::Circular;
+    *model = params.model;
+    if (*model == SurfaceModel::Auto) {
+        *model = informative >= 10 ? SurfaceModel::Elliptical : SurfaceModel::Circular;
         if (informative < 7) L.background = false;
     }
-    L.elliptical = model == SurfaceModel::Elliptical;
-    res.modelUsed = model;
-    const int np = L.count();
-    const double fixedBg = params.background;
-    res.used = static_cast<int>(obs.size());
-    // Auto leaves at least one degree of freedom (the noise is estimated from the residuals).
+    L.elliptical = *model == SurfaceModel::Elliptical;
+    return L;
+}
+
+// Stage 2b. Enough measurements for the parameters (Auto leaves one degree of freedom for the
+// noise), spanning two dimensions. Returns the error, empty when the surface is determined.
+std::string checkDetermined(const Observations& ob, size_t detectors, const DetectorFitParams& params, int np) {
+    const int informative = ob.informative();
     const int needed = params.model == SurfaceModel::Auto ? np + 1 : np;
-    if (informative < needed) {
-        res.error = "only " + std::to_string(informative) + " detector" + (informative == 1 ? "" : "s") +
-                    " with a measurement (" + std::to_string(untriggered) + " untriggered, " + std::to_string(saturated) +
-                    " saturated, " + std::to_string(noEnergy) + " without energy, of " + std::to_string(nd) + ") for the " +
-                    std::to_string(np) + "-parameter Gaussian surface: at least " + std::to_string(needed) + " are needed";
-        return res;
-    }
-    {  // geometry: the measured detectors must span two dimensions
-        Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
-        P2 mean = P2::Zero();
-        int n = 0;
-        for (const Obs& ob : obs)
-            if (ob.kind != Kind::AtMost) {
-                mean += P2(ob.de, ob.dn);
-                ++n;
-            }
-        mean /= n;
-        for (const Obs& ob : obs)
-            if (ob.kind != Kind::AtMost) {
-                const P2 d = P2(ob.de, ob.dn) - mean;
-                s += d * d.transpose();
-            }
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(s);
-        if (!(es.eigenvalues()(0) > 1e-9 * std::max(1.0, es.eigenvalues()(1)))) {
-            res.error = "the " + std::to_string(informative) +
-                        " measured detectors lie on one line: a 2D Gaussian surface is not determined across it";
-            return res;
+    if (informative < needed)
+        return "only " + std::to_string(informative) + " detector" + (informative == 1 ? "" : "s") + " with a measurement (" +
+               std::to_string(ob.untriggered) + " untriggered, " + std::to_string(ob.saturated) + " saturated, " +
+               std::to_string(ob.noEnergy) + " without energy, of " + std::to_string(detectors) + ") for the " +
+               std::to_string(np) + "-parameter Gaussian surface: at least " + std::to_string(needed) + " are needed";
+    Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
+    P2 mean = P2::Zero();
+    int n = 0;
+    for (const Obs& o : ob.obs)
+        if (o.kind != Kind::AtMost) {
+            mean += P2(o.de, o.dn);
+            ++n;
         }
+    mean /= n;
+    for (const Obs& o : ob.obs)
+        if (o.kind != Kind::AtMost) {
+            const P2 d = P2(o.de, o.dn) - mean;
+            s += d * d.transpose();
+        }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(s);
+    if (!(es.eigenvalues()(0) > 1e-9 * std::max(1.0, es.eigenvalues()(1))))
+        return "the " + std::to_string(informative) +
+               " measured detectors lie on one line: a 2D Gaussian surface is not determined across it";
+    return {};
+}
+
+// The fit as the stages pass it on. `sp` points at `obs`: not copyable.
+struct SurfaceFit {
+    std::vector<Obs> obs;  // positions relative to (re, rn)
+    SurfaceProblem sp;
+    LmOutcome best;
+    double re = 0, rn = 0;        // reference point: centroid of the brightest half (m)
+    double vmax = 0, refBg = 0;   // brightest measurement and the background start it is judged against
+    double floorN = 0, relN = 0;  // noise model: σ² = floor² + (rel·level)²
+    int noiseDof = 0;
+    int maxIterations = 0;
+    explicit SurfaceFit(std::vector<Obs> o) : obs(std::move(o)) { sp.obs = &obs; }
+    SurfaceFit(const SurfaceFit&) = delete;
+    SurfaceFit& operator=(const SurfaceFit&) = delete;
+
+    // Refits from the best solution; keeps the refit (with the whole history) when it evaluates.
+    bool refit() {
+        LmOutcome o = solveSurface(sp, best.params, maxIterations);
+        if (!o.ok) return false;
+        o.history.insert(o.history.begin(), best.history.begin(), best.history.end() - 1);
+        best = std::move(o);
+        return true;
     }
-    // 3. Starting point: background candidates (0 or the lowest energy, and the lower quartile),
-    // centre at the centroid of the brightest half, width from log ratios of mid-level detectors.
+};
+
+// Width start from log ratios of mid-level detectors; else the smallest detector spacing.
+double startWidth(const std::vector<Obs>& obs, double bg0, double vmax) {
+    const double A0 = vmax - bg0;
+    std::vector<double> s2;
+    for (const Obs& ob : obs) {
+        if (ob.kind == Kind::AtMost) continue;
+        const double f = (ob.value - bg0) / A0, r2 = ob.de * ob.de + ob.dn * ob.dn;
+        if (f > 0.05 && f < 0.9 && r2 > 0) s2.push_back(r2 / (2 * std::log(1 / f)));
+    }
+    if (!s2.empty()) return std::sqrt(median(s2));
+    std::vector<P2> pts;
+    for (const Obs& ob : obs) pts.emplace_back(ob.de, ob.dn);
+    const std::vector<double> nn = nearestNeighbourDistances(pts);
+    return nn.empty() ? 1.0 : *std::min_element(nn.begin(), nn.end());
+}
+
+// Stage 3a. Background starts (0 or the lowest energy, and the lower quartile when it stands out)
+// and the brightest measurement; positions re-centred on the centroid of the brightest half.
+std::vector<double> backgroundStarts(const Layout& L, double fixedBg, SurfaceFit* f) {
     std::vector<double> vals;
-    double vmax = -INFINITY;
-    for (const Obs& ob : obs)
+    f->vmax = -INFINITY;
+    for (const Obs& ob : f->obs)
         if (ob.kind != Kind::AtMost) {
             vals.push_back(ob.value);
-            vmax = std::max(vmax, ob.value);
+            f->vmax = std::max(f->vmax, ob.value);
         }
-    std::vector<double> bgStarts;
-    if (!L.background) {
-        bgStarts = {fixedBg};
-    } else {
-        std::vector<double> sorted = vals;
-        std::sort(sorted.begin(), sorted.end());
-        bgStarts = {std::min(0.0, sorted.front())};
-        const double q1 = sorted[sorted.size() / 4];
-        if (sorted.size() >= 20 && q1 - bgStarts[0] > 0.02 * (vmax - bgStarts[0])) bgStarts.push_back(q1);
-    }
-    const double refBg = bgStarts.back();
-    if (!(vmax > refBg)) {
-        res.error = "no detector has energy above the background";
-        return res;
-    }
+    if (!L.background) return {fixedBg};
+    std::sort(vals.begin(), vals.end());
+    std::vector<double> starts = {std::min(0.0, vals.front())};
+    const double q1 = vals[vals.size() / 4];
+    if (vals.size() >= 20 && q1 - starts[0] > 0.02 * (f->vmax - starts[0])) starts.push_back(q1);
+    return starts;
+}
+
+void centreOnBrightHalf(SurfaceFit* f) {
     double re = 0, rn = 0, sw = 0;
-    {
-        const double half = refBg + 0.5 * (vmax - refBg);
-        for (const Obs& ob : obs)
-            if (ob.kind != Kind::AtMost && ob.value >= half) {
-                const double w = ob.value - half + 1e-12 * (vmax - refBg);
-                sw += w;
-                re += w * ob.de;
-                rn += w * ob.dn;
-            }
-        re /= sw;
-        rn /= sw;
-    }
-    for (Obs& ob : obs) {
-        ob.de -= re;
-        ob.dn -= rn;
-    }
-    auto startWidth = [&](double bg0) {
-        const double A0 = vmax - bg0;
-        std::vector<double> s2;
-        for (const Obs& ob : obs) {
-            if (ob.kind == Kind::AtMost) continue;
-            const double f = (ob.value - bg0) / A0, r2 = ob.de * ob.de + ob.dn * ob.dn;
-            if (f > 0.05 && f < 0.9 && r2 > 0) s2.push_back(r2 / (2 * std::log(1 / f)));
+    const double half = f->refBg + 0.5 * (f->vmax - f->refBg);
+    for (const Obs& ob : f->obs)
+        if (ob.kind != Kind::AtMost && ob.value >= half) {
+            const double w = ob.value - half + 1e-12 * (f->vmax - f->refBg);
+            sw += w;
+            re += w * ob.de;
+            rn += w * ob.dn;
         }
-        if (!s2.empty()) return std::sqrt(median(s2));
-        // Fallback: the smallest detector spacing.
-        std::vector<P2> pts;
-        for (const Obs& ob : obs) pts.emplace_back(ob.de, ob.dn);
-        const std::vector<double> nn = nearestNeighbourDistances(pts);
-        return nn.empty() ? 1.0 : *std::min_element(nn.begin(), nn.end());
-    };
-    SurfaceProblem sp;
-    sp.obs = &obs;
-    sp.L = L;
-    sp.fixedBg = fixedBg;
-    const bool given = params.noise == NoiseSource::Given;
-    const bool givenWeighted = given && (params.relativeNoise > 0 || params.noiseFloor > 0);
-    auto sigmaOf = [](double floor, double rel, double level) {
-        const double m = rel * std::max(level, 0.0);
-        return std::sqrt(floor * floor + m * m);
-    };
-    // A given relative noise without a floor: 0.1 % of it at the peak keeps zero and negative
-    // energies (background detectors) finite in the fit.
-    const double givenFloor =
-        params.noiseFloor > 0 ? params.noiseFloor : 1e-3 * params.relativeNoise * (vmax - refBg);
-    // First pass: a common σ of 5 % of the peak (only the censored terms feel its size).
-    for (Obs& ob : obs) ob.sigma = 0.05 * (vmax - refBg);
-    if (givenWeighted)
-        for (Obs& ob : obs) ob.sigma = std::max(sigmaOf(givenFloor, params.relativeNoise, ob.value), 1e-300);
-    sp.robustC = params.outlierSigma > 0 ? 3.0 : 0.0;
-    LmOutcome best;
+    f->re = re / sw;
+    f->rn = rn / sw;
+    for (Obs& ob : f->obs) {
+        ob.de -= f->re;
+        ob.dn -= f->rn;
+    }
+}
+
+// Stage 3b. Robust fits from every background start and widths 1, 0.5 and 2 times the start
+// width, with a Cauchy loss so that a few dead or faulty detectors cannot bend the surface; the
+// best is refitted once with σ scaled to the robust spread of its residuals. Returns the error.
+std::string robustStart(const DetectorFitParams& params, const std::vector<double>& bgStarts, SurfaceFit* f) {
+    const Layout& L = f->sp.L;
+    const int np = L.count();
+    const bool weighted = givenWeights(params);
+    // First pass: a common σ of 5 % of the peak (only the censored terms feel its size); given
+    // weights when the noise model is given.
+    for (Obs& ob : f->obs) ob.sigma = 0.05 * (f->vmax - f->refBg);
+    if (weighted)
+        for (Obs& ob : f->obs) ob.sigma = std::max(sigmaOf(f->floorN, params.relativeNoise, ob.value), 1e-300);
+    f->sp.robustC = params.outlierSigma > 0 ? 3.0 : 0.0;
     std::string lastFailure;
     for (double bg0 : bgStarts)
-        for (double f : {1.0, 0.5, 2.0}) {
+        for (double w : {1.0, 0.5, 2.0}) {
             Eigen::VectorXd p0(np);
-            const double s0 = startWidth(bg0) * f, a0 = 1.0 / (s0 * s0);
+            const double s0 = startWidth(f->obs, bg0, f->vmax) * w, a0 = 1.0 / (s0 * s0);
             if (L.elliptical)
-                p0.head(6) << vmax - bg0, 0, 0, a0, 0, a0;
+                p0.head(6) << f->vmax - bg0, 0, 0, a0, 0, a0;
             else
-                p0.head(4) << vmax - bg0, 0, 0, a0;
+                p0.head(4) << f->vmax - bg0, 0, 0, a0;
             if (L.background) p0(np - 1) = bg0;
-            LmOutcome o = solveSurface(sp, p0, params.maxIterations);
+            LmOutcome o = solveSurface(f->sp, p0, f->maxIterations);
             if (!o.ok) lastFailure = o.error;
-            if (o.ok && (!best.ok || o.cost < best.cost)) best = o;
+            if (o.ok && (!f->best.ok || o.cost < f->best.cost)) f->best = std::move(o);
         }
-    if (!best.ok) {
-        res.error = "Gaussian surface fit failed from every start (widths 0.5, 1 and 2 times the spread of the bright "
-                    "detectors): " + (lastFailure.empty() ? std::string("the solver did not converge") : lastFailure);
-        return res;
-    }
-    // The starts ran with a Cauchy loss, so that a few dead or faulty detectors cannot bend the
-    // surface; once more with σ scaled to the robust spread of the residuals, then plain least
-    // squares below after the inconsistent detectors are set aside.
-    if (sp.robustC > 0) {
+    if (!f->best.ok)
+        return "Gaussian surface fit failed from every start (widths 0.5, 1 and 2 times the spread of the bright "
+               "detectors): " + (lastFailure.empty() ? std::string("the solver did not converge") : lastFailure);
+    if (f->sp.robustC > 0) {
         std::vector<double> z;
-        for (size_t k = 0; k < obs.size(); ++k)
-            if (obs[k].kind == Kind::Exact)
-                z.push_back(std::fabs(obs[k].value - sp.model(best.params, obs[k].de, obs[k].dn)) / obs[k].sigma);
+        for (const Obs& ob : f->obs)
+            if (ob.kind == Kind::Exact) z.push_back(std::fabs(ob.value - f->sp.model(f->best.params, ob.de, ob.dn)) / ob.sigma);
         const double scale = 1.4826 * median(z);
-        if (scale > 0 && std::isfinite(scale) && !givenWeighted) {
-            for (Obs& ob : obs) ob.sigma *= scale;
-            LmOutcome o = solveSurface(sp, best.params, params.maxIterations);
-            if (o.ok) {
-                o.history.insert(o.history.begin(), best.history.begin(), best.history.end() - 1);
-                best = o;
-            }
+        if (scale > 0 && std::isfinite(scale) && !weighted) {
+            for (Obs& ob : f->obs) ob.sigma *= scale;
+            f->refit();
         }
     }
-    // Untriggered detectors far from the footprint (the surface below 1e-12 of its peak there) all
-    // say the same about the background: one term standing for all of them keeps large arrays fast.
-    {
-        double A, x0, y0, a, b, c, bg;
-        unpack(L, best.params, fixedBg, &A, &x0, &y0, &a, &b, &c, &bg);
+    return {};
+}
+
+// Stage 3c. Untriggered detectors far from the footprint (the surface below 1e-12 of its peak
+// there) all say the same about the background: one term standing for all of them keeps large
+// arrays fast.
+void mergeFarBounds(double fixedBg, SurfaceFit* f) {
+    double A, x0, y0, a, b, c, bg;
+    unpack(f->sp.L, f->best.params, fixedBg, &A, &x0, &y0, &a, &b, &c, &bg);
+    std::vector<Obs> kept;
+    Obs far{0, 0, 0, Kind::AtMost, 0};
+    far.count = 0;
+    double farG = INFINITY;
+    for (const Obs& ob : f->obs) {
+        const double g = (f->sp.model(f->best.params, ob.de, ob.dn) - bg) / A;
+        if (ob.kind != Kind::AtMost || g > 1e-12 || (far.count > 0 && ob.value != far.value)) {
+            kept.push_back(ob);
+            continue;
+        }
+        if (g < farG) {
+            const double n = far.count;
+            far = ob;
+            far.count = n;
+            farG = g;
+        }
+        far.count += 1;
+    }
+    if (far.count > 1) {
+        kept.push_back(far);
+        f->obs.swap(kept);
+        f->refit();
+    }
+}
+
+// Diagonal of the hat matrix J (JᵀJ)⁻¹ Jᵀ (zeros when JᵀJ is singular).
+Eigen::VectorXd leverage(const Eigen::MatrixXd& J) {
+    Eigen::VectorXd h = Eigen::VectorXd::Zero(J.rows());
+    Eigen::MatrixXd cov;
+    double rc = 0;
+    if (covarianceFromJacobian(J, 1e-14, &cov, &rc))
+        for (int i = 0; i < J.rows(); ++i) h(i) = J.row(i) * cov * J.row(i).transpose();
+    return h;
+}
+
+// Stage 4a. Detectors inconsistent with the fit at p beyond outlierSigma robust σ are set aside:
+// all of them in the first pass (on the robust fit), then one per pass. Keeps `h` in step with
+// the observations. True when any was set aside.
+bool setAsideOutliers(const DetectorFitParams& params, int pass, int maxOutliers, int informative, const Eigen::VectorXd& p,
+                      SurfaceFit* f, Eigen::VectorXd* h, DetectorFitResult* res) {
+    const std::vector<Obs>& obs = f->obs;
+    const int np = f->sp.L.count();
+    std::vector<double> z(obs.size(), 0.0), zExact;
+    for (size_t k = 0; k < obs.size(); ++k) {
+        const double m = f->sp.model(p, obs[k].de, obs[k].dn);
+        const double lev = std::sqrt(1 - std::min((*h)(static_cast<int>(k)), 0.99));
+        if (obs[k].kind == Kind::Exact) {
+            z[k] = std::fabs(obs[k].value - m) / (obs[k].sigma * lev);
+            zExact.push_back(z[k]);
+        } else if (obs[k].kind == Kind::AtLeast) {
+            z[k] = (obs[k].value - m) / obs[k].sigma;
+        } else {
+            z[k] = (m - obs[k].value) / obs[k].sigma;
+        }
+    }
+    const double scale = std::max(1.4826 * median(zExact), 1.0);
+    std::vector<size_t> order;
+    for (size_t k = 0; k < obs.size(); ++k)
+        if (z[k] / scale > params.outlierSigma) order.push_back(k);
+    std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return z[i] > z[j]; });
+    if (pass > 0 && order.size() > 1) order.erase(order.begin() + 1, order.end());
+    std::vector<bool> drop(obs.size(), false);
+    bool removed = false;
+    for (size_t k : order) {
+        if (res->outliers >= maxOutliers || informative - res->outliers - 1 < np + 2) break;
+        const Obs& ob = obs[k];
+        DetectorOutcome& o = res->detectors[ob.index];
+        o.status = DetectorStatus::Outlier;
+        o.reason = (ob.kind == Kind::Exact     ? "energy " + formatDouble(ob.value, 6)
+                    : ob.kind == Kind::AtLeast ? "saturated at " + formatDouble(ob.value, 6)
+                                               : "untriggered (at most " + formatDouble(ob.value, 6) + ")") +
+                   " against " + formatDouble(f->sp.model(p, ob.de, ob.dn), 6) + " from the fit: " +
+                   formatFixed(z[k] / scale, 1) + " robust sigma off, set aside (dead or faulty detector?)";
+        ++res->outliers;
+        drop[k] = true;
+        removed = true;
+    }
+    if (removed) {
         std::vector<Obs> kept;
-        Obs far{0, 0, 0, Kind::AtMost, 0};
-        far.count = 0;
-        double farG = INFINITY;
-        for (const Obs& ob : obs) {
-            const double g = (sp.model(best.params, ob.de, ob.dn) - bg) / A;
-            if (ob.kind != Kind::AtMost || g > 1e-12 || (far.count > 0 && ob.value != far.value)) {
-                kept.push_back(ob);
-                continue;
+        std::vector<double> hk;
+        for (size_t k = 0; k < obs.size(); ++k)
+            if (!drop[k]) {
+                kept.push_back(obs[k]);
+                hk.push_back((*h)(static_cast<int>(k)));
             }
-            if (g < farG) {
-                const double n = far.count;
-                far = ob;
-                far.count = n;
-                farG = g;
-            }
-            far.count += 1;
-        }
-        if (far.count > 1) {
-            kept.push_back(far);
-            obs.swap(kept);
-            LmOutcome o = solveSurface(sp, best.params, params.maxIterations);
-            if (o.ok) {
-                o.history.insert(o.history.begin(), best.history.begin(), best.history.end() - 1);
-                best = o;
-            }
-        }
+        f->obs.swap(kept);
+        *h = Eigen::Map<Eigen::VectorXd>(hk.data(), static_cast<int>(hk.size()));
     }
-    // 4. Noise model and outliers, iterated with refits: residuals → (floor, relative) → weights.
+    return removed;
+}
+
+// Stage 4. Noise model and outliers, iterated with refits: residuals → (floor, relative) →
+// weights, plain least squares from here on.
+void refineNoiseAndOutliers(const DetectorFitParams& params, int informative, SurfaceFit* f, DetectorFitResult* res) {
+    const bool given = givenNoise(params), weighted = givenWeights(params);
+    const int np = f->sp.L.count();
     const int maxOutliers = params.outlierSigma > 0 ? std::max(1, informative / 5) : 0;
-    double floorN = givenFloor, relN = params.relativeNoise;
-    int noiseDof = 0;
-    auto leverage = [&](const Eigen::MatrixXd& J) {
-        Eigen::VectorXd h = Eigen::VectorXd::Zero(J.rows());
-        Eigen::MatrixXd cov;
-        double rc = 0;
-        if (covarianceFromJacobian(J, 1e-14, &cov, &rc))
-            for (int i = 0; i < J.rows(); ++i) h(i) = J.row(i) * cov * J.row(i).transpose();
-        return h;
-    };
     for (int pass = 0; pass < 12; ++pass) {
-        const Eigen::VectorXd p = best.params;
-        Eigen::VectorXd h = leverage(best.jacobian);
-        // Outliers are judged on the robust fit in the first pass (all of them at once), then one
-        // at a time on the least-squares refits; the noise and the refits are plain least squares.
-        sp.robustC = 0;
-        bool removed = false;
-        if (params.outlierSigma > 0) {
-            std::vector<double> z(obs.size(), 0.0), zExact;
-            for (size_t k = 0; k < obs.size(); ++k) {
-                const double m = sp.model(p, obs[k].de, obs[k].dn);
-                const double lev = std::sqrt(1 - std::min(h(static_cast<int>(k)), 0.99));
-                if (obs[k].kind == Kind::Exact) {
-                    z[k] = std::fabs(obs[k].value - m) / (obs[k].sigma * lev);
-                    zExact.push_back(z[k]);
-                } else if (obs[k].kind == Kind::AtLeast) {
-                    z[k] = (obs[k].value - m) / obs[k].sigma;
-                } else {
-                    z[k] = (m - obs[k].value) / obs[k].sigma;
-                }
-            }
-            const double scale = std::max(1.4826 * median(zExact), 1.0);
-            std::vector<size_t> order;
-            for (size_t k = 0; k < obs.size(); ++k)
-                if (z[k] / scale > params.outlierSigma) order.push_back(k);
-            std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return z[i] > z[j]; });
-            if (pass > 0 && order.size() > 1) order.erase(order.begin() + 1, order.end());
-            std::vector<bool> drop(obs.size(), false);
-            for (size_t k : order) {
-                if (res.outliers >= maxOutliers || informative - res.outliers - 1 < np + 2) break;
-                const Obs& ob = obs[k];
-                DetectorOutcome& o = res.detectors[ob.index];
-                o.status = DetectorStatus::Outlier;
-                o.reason = (ob.kind == Kind::Exact ? "energy " + formatDouble(ob.value, 6)
-                            : ob.kind == Kind::AtLeast ? "saturated at " + formatDouble(ob.value, 6)
-                                                       : "untriggered (at most " + formatDouble(ob.value, 6) + ")") +
-                           " against " + formatDouble(sp.model(p, ob.de, ob.dn), 6) + " from the fit: " +
-                           formatFixed(z[k] / scale, 1) + " robust sigma off, set aside (dead or faulty detector?)";
-                ++res.outliers;
-                drop[k] = true;
-                removed = true;
-            }
-            if (removed) {
-                std::vector<Obs> kept;
-                std::vector<double> hk;
-                for (size_t k = 0; k < obs.size(); ++k)
-                    if (!drop[k]) {
-                        kept.push_back(obs[k]);
-                        hk.push_back(h(static_cast<int>(k)));
-                    }
-                obs.swap(kept);
-                h = Eigen::Map<Eigen::VectorXd>(hk.data(), static_cast<int>(hk.size()));
-            }
-        }
+        const Eigen::VectorXd p = f->best.params;
+        Eigen::VectorXd h = leverage(f->best.jacobian);
+        f->sp.robustC = 0;
+        const bool removed =
+            params.outlierSigma > 0 && setAsideOutliers(params, pass, maxOutliers, informative, p, f, &h, res);
         // Noise from the remaining measurements' residuals (leverage corrected).
         std::vector<double> u, level;
-        for (size_t k = 0; k < obs.size(); ++k) {
-            if (obs[k].kind != Kind::Exact) continue;
-            const double m = sp.model(p, obs[k].de, obs[k].dn), e = obs[k].value - m;
+        for (size_t k = 0; k < f->obs.size(); ++k) {
+            const Obs& ob = f->obs[k];
+            if (ob.kind != Kind::Exact) continue;
+            const double m = f->sp.model(p, ob.de, ob.dn), e = ob.value - m;
             u.push_back(e * e / (1 - std::min(h(static_cast<int>(k)), 0.99)));
             level.push_back(std::max(m, 0.0));
         }
-        noiseDof = static_cast<int>(u.size()) - np;
-        double newFloor = floorN, newRel = relN;
-        if (!givenWeighted && noiseDof >= 1) estimateNoise(u, level, !given, &newFloor, &newRel);
-        if (!givenWeighted && noiseDof < 1) {  // nothing to estimate from: keep the first pass's σ
-            newFloor = obs.front().sigma;
+        f->noiseDof = static_cast<int>(u.size()) - np;
+        double newFloor = f->floorN, newRel = f->relN;
+        if (!weighted && f->noiseDof >= 1) estimateNoise(u, level, !given, &newFloor, &newRel);
+        if (!weighted && f->noiseDof < 1) {  // nothing to estimate from: keep the first pass's σ
+            newFloor = f->obs.front().sigma;
             newRel = 0;
         }
         const double A = std::max(p(0), 1e-300);
         newFloor = std::max(newFloor, 1e-9 * A);
-        const bool noiseSettled = pass > 0 && std::fabs(newFloor - floorN) <= 0.01 * floorN + 1e-12 * A &&
-                                  std::fabs(newRel - relN) <= 0.01 * relN + 1e-6;
-        floorN = newFloor;
-        relN = newRel;
-        for (Obs& ob : obs) ob.sigma = std::max(sigmaOf(floorN, relN, sp.model(p, ob.de, ob.dn)), 1e-300);
-        LmOutcome o = solveSurface(sp, best.params, params.maxIterations);
-        if (!o.ok) break;
-        o.history.insert(o.history.begin(), best.history.begin(), best.history.end() - 1);
-        best = o;
+        const bool noiseSettled = pass > 0 && std::fabs(newFloor - f->floorN) <= 0.01 * f->floorN + 1e-12 * A &&
+                                  std::fabs(newRel - f->relN) <= 0.01 * f->relN + 1e-6;
+        f->floorN = newFloor;
+        f->relN = newRel;
+        for (Obs& ob : f->obs) ob.sigma = std::max(sigmaOf(f->floorN, f->relN, f->sp.model(p, ob.de, ob.dn)), 1e-300);
+        if (!f->refit()) break;
         if (noiseSettled && !removed && pass >= 2) break;
     }
-    // The final weights at the final model, and the fit's figures.
-    for (Obs& ob : obs) ob.sigma = std::max(sigmaOf(floorN, relN, sp.model(best.params, ob.de, ob.dn)), 1e-300);
+}
+
+// Stage 5. The final weights at the final model, the surface and the fit's figures.
+void finalFigures(const DetectorFitParams& params, double fixedBg, SurfaceFit* f, DetectorFitResult* res) {
+    const Layout& L = f->sp.L;
+    for (Obs& ob : f->obs) ob.sigma = std::max(sigmaOf(f->floorN, f->relN, f->sp.model(f->best.params, ob.de, ob.dn)), 1e-300);
     {
         Eigen::VectorXd r;
         Eigen::MatrixXd J;
-        if (sp.evaluate(best.params, &r, &J)) {
-            best.residuals = r;
-            best.jacobian = J;
-            best.cost = r.squaredNorm();
+        if (f->sp.evaluate(f->best.params, &r, &J)) {
+            f->best.residuals = r;
+            f->best.jacobian = J;
+            f->best.cost = r.squaredNorm();
         }
     }
-    if (!best.converged) res.warnings.push_back("the surface fit stopped at the iteration limit before converging");
-    const Eigen::VectorXd& p = best.params;
-    GaussSurface& s = res.surface;
+    if (!f->best.converged) res->warnings.push_back("the surface fit stopped at the iteration limit before converging");
+    GaussSurface& s = res->surface;
     double A, x0, y0, a, b, c, bg;
-    unpack(L, p, fixedBg, &A, &x0, &y0, &a, &b, &c, &bg);
+    unpack(L, f->best.params, fixedBg, &A, &x0, &y0, &a, &b, &c, &bg);
     s.amplitude = A;
-    s.e0 = x0 + re;
-    s.n0 = y0 + rn;
+    s.e0 = x0 + f->re;
+    s.n0 = y0 + f->rn;
     s.a = a;
     s.b = b;
     s.c = c;
@@ -863,173 +903,201 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     s.sigmaMajor = sh.sigmaMajor;
     s.sigmaMinor = sh.sigmaMinor;
     s.orientationRad = sh.orientation;
-    res.centreE = s.e0;
-    res.centreN = s.n0;
-    res.iterations = static_cast<int>(best.history.size()) - 1;
-    for (const auto& hst : best.history) res.costPerIteration.push_back(hst.cost);
-    res.used = 0;
-    res.chi2 = best.cost;
-    res.chi2Exact = 0;
-    res.censored = 0;
-    for (size_t k = 0; k < obs.size(); ++k) {
-        if (obs[k].kind == Kind::Exact) {
-            ++res.used;
-            res.chi2Exact += best.residuals(static_cast<int>(k)) * best.residuals(static_cast<int>(k));
+    res->centreE = s.e0;
+    res->centreN = s.n0;
+    res->iterations = static_cast<int>(f->best.history.size()) - 1;
+    for (const auto& hst : f->best.history) res->costPerIteration.push_back(hst.cost);
+    res->used = 0;
+    res->chi2 = f->best.cost;
+    res->chi2Exact = 0;
+    res->censored = 0;
+    for (size_t k = 0; k < f->obs.size(); ++k) {
+        if (f->obs[k].kind == Kind::Exact) {
+            ++res->used;
+            res->chi2Exact += f->best.residuals(static_cast<int>(k)) * f->best.residuals(static_cast<int>(k));
         } else {
-            res.censored += static_cast<int>(obs[k].count);
+            res->censored += static_cast<int>(f->obs[k].count);
         }
     }
-    res.dof = res.used - np;
-    // Noise model used.
-    NoiseModelUsed& nm = res.noise;
+    res->dof = res->used - L.count();
+    const bool given = givenNoise(params), weighted = givenWeights(params);
+    NoiseModelUsed& nm = res->noise;
     nm.source = params.noise;
-    nm.floor = floorN;
-    nm.relative = relN;
-    nm.dof = givenWeighted ? 0 : std::max(noiseDof, 0);
-    if (givenWeighted)
-        nm.description = "given: floor " + formatDouble(floorN, 4) + ", relative " + formatDouble(relN, 4);
-    else if (noiseDof >= 1)
+    nm.floor = f->floorN;
+    nm.relative = f->relN;
+    nm.dof = weighted ? 0 : std::max(f->noiseDof, 0);
+    if (weighted)
+        nm.description = "given: floor " + formatDouble(f->floorN, 4) + ", relative " + formatDouble(f->relN, 4);
+    else if (f->noiseDof >= 1)
         nm.description = std::string(given ? "unweighted, scale from the residuals" : "estimated from the residuals") + " of " +
-                         std::to_string(res.used) + " measurements (" + std::to_string(noiseDof) +
-                         " dof): floor " + formatDouble(floorN, 4) + ", relative " + formatDouble(relN, 4);
+                         std::to_string(res->used) + " measurements (" + std::to_string(f->noiseDof) +
+                         " dof): floor " + formatDouble(f->floorN, 4) + ", relative " + formatDouble(f->relN, 4);
     else
-        nm.description = "no degrees of freedom to estimate the noise: floor taken as 5 % of the peak, " + formatDouble(floorN, 4);
-    res.paramNames = L.elliptical ? std::vector<std::string>{"amplitude", "e0_m", "n0_m", "a_per_m2", "b_per_m2", "c_per_m2"}
-                                  : std::vector<std::string>{"amplitude", "e0_m", "n0_m", "a_per_m2"};
-    if (L.background) res.paramNames.push_back("background");
-    // Detectors that see the footprint (informative): above the background by 3 noise σ and 1 % of the peak.
-    const double sigmaBg = sigmaOf(floorN, relN, bg);
-    std::vector<P2> seeingPts, arrayPts;
-    for (size_t i = 0; i < nd; ++i) {
-        arrayPts.emplace_back(det[i].e, det[i].n);
-        const DetectorOutcome& o = res.detectors[i];
-        const bool sees = (o.status == DetectorStatus::Used && det[i].energy - bg > std::max(3 * sigmaBg, 0.01 * A)) ||
-                          o.status == DetectorStatus::AtLeast;
-        if (sees) seeingPts.emplace_back(det[i].e, det[i].n);
+        nm.description = "no degrees of freedom to estimate the noise: floor taken as 5 % of the peak, " + formatDouble(f->floorN, 4);
+    res->paramNames = L.elliptical ? std::vector<std::string>{"amplitude", "e0_m", "n0_m", "a_per_m2", "b_per_m2", "c_per_m2"}
+                                   : std::vector<std::string>{"amplitude", "e0_m", "n0_m", "a_per_m2"};
+    if (L.background) res->paramNames.push_back("background");
+}
+
+// σ of the noise model at the fitted background.
+double backgroundSigma(const DetectorFitResult& res) {
+    return sigmaOf(res.noise.floor, res.noise.relative, res.surface.background);
+}
+
+// Stage 6. Detectors that see the footprint: above the background by 3 noise σ and 1 % of the
+// peak, or saturated (their positions).
+std::vector<P2> seeingDetectors(const DetectorArray& array, DetectorFitResult* res) {
+    const double sigmaBg = backgroundSigma(*res), bg = res->surface.background, A = res->surface.amplitude;
+    std::vector<P2> pts;
+    for (size_t i = 0; i < array.detectors.size(); ++i) {
+        const Detector& d = array.detectors[i];
+        const DetectorOutcome& o = res->detectors[i];
+        if ((o.status == DetectorStatus::Used && d.energy - bg > std::max(3 * sigmaBg, 0.01 * A)) ||
+            o.status == DetectorStatus::AtLeast)
+            pts.emplace_back(d.e, d.n);
     }
-    res.seeing = static_cast<int>(seeingPts.size());
+    res->seeing = static_cast<int>(pts.size());
+    return pts;
+}
+
+// Stage 7. Covariance of the parameters (scaled by χ²/dof when the given weights are only
+// relative), the centre's 1σ and 95 % ellipses and the widths' σ. Returns the error.
+std::string covarianceAndEllipses(const DetectorFitParams& params, const SurfaceFit& f, DetectorFitResult* res) {
+    const Layout& L = f.sp.L;
+    const int np = L.count();
+    const bool given = givenNoise(params), weighted = givenWeights(params);
     Eigen::MatrixXd cov;
     double rcond = 0;
-    if (!covarianceFromJacobian(best.jacobian, 1e-12, &cov, &rcond)) {
-        res.error = "the detectors do not determine the Gaussian surface (reciprocal condition " + formatDouble(rcond, 3) + ")";
-        if (res.seeing <= 9) res.error += ": only " + std::to_string(res.seeing) + " detectors see the footprint";
-        return res;
+    if (!covarianceFromJacobian(f.best.jacobian, 1e-12, &cov, &rcond)) {
+        std::string e = "the detectors do not determine the Gaussian surface (reciprocal condition " + formatDouble(rcond, 3) + ")";
+        if (res->seeing <= 9) e += ": only " + std::to_string(res->seeing) + " detectors see the footprint";
+        return e;
     }
     double scale = 1;
-    const bool scaled = given && (!givenWeighted || params.scaleByChi2);
-    if (scaled && givenWeighted) {
-        if (res.dof > 0) {
-            scale = res.chi2Exact / res.dof;
+    const bool scaled = given && (!weighted || params.scaleByChi2);
+    if (scaled && weighted) {
+        if (res->dof > 0) {
+            scale = res->chi2Exact / res->dof;
         } else {
             scale = NAN;
-            res.warnings.push_back("as many parameters as measurements: the fit passes through every detector and its "
-                                   "uncertainty cannot be estimated");
+            res->warnings.push_back("as many parameters as measurements: the fit passes through every detector and its "
+                                    "uncertainty cannot be estimated");
         }
     }
-    res.covariance = cov * scale;
+    res->covariance = cov * scale;
     // 95 % scale: χ²₂ with a known noise; with a noise scale estimated from ν dof, 2·F(2, ν).
-    const bool estimatedScale = !givenWeighted || params.scaleByChi2;
-    const int nu = estimatedScale ? std::max(res.dof, 0) : 0;
+    const bool estimatedScale = !weighted || params.scaleByChi2;
+    const int nu = estimatedScale ? std::max(res->dof, 0) : 0;
     if (!estimatedScale)
-        res.centreEllipse95Scale = std::sqrt(-2 * std::log(0.05));
+        res->centreEllipse95Scale = std::sqrt(-2 * std::log(0.05));
     else if (nu >= 1)
-        res.centreEllipse95Scale = std::sqrt(nu * (std::pow(0.05, -2.0 / nu) - 1));
+        res->centreEllipse95Scale = std::sqrt(nu * (std::pow(0.05, -2.0 / nu) - 1));
     else
-        res.centreEllipse95Scale = NAN;
-    const Eigen::MatrixXd& C = res.covariance;
-    res.centreEllipse = ellipseFromCovariance(C(1, 1), C(2, 2), C(1, 2));
-    res.amplitudeSd = std::sqrt(C(0, 0));
-    {  // σ of the widths by the delta method over (a, b, c)
-        const int ia = 3, ib = L.elliptical ? 4 : -1, ic = L.elliptical ? 5 : 3;
-        Eigen::MatrixXd G(2, np);
-        G.setZero();
-        const double hh = 1e-6 * std::max(std::fabs(a), std::fabs(c));
-        auto widths = [&](double aa, double bb, double cc) {
-            const Shape t = shapeOf(aa, bb, cc);
-            return Eigen::Vector2d(t.sigmaMajor, t.sigmaMinor);
-        };
-        if (L.elliptical) {
-            G.col(ia) = (widths(a + hh, b, c) - widths(a - hh, b, c)) / (2 * hh);
-            G.col(ib) = (widths(a, b + hh, c) - widths(a, b - hh, c)) / (2 * hh);
-            G.col(ic) = (widths(a, b, c + hh) - widths(a, b, c - hh)) / (2 * hh);
-        } else {
-            G.col(ia) = (widths(a + hh, 0, a + hh) - widths(a - hh, 0, a - hh)) / (2 * hh);
-        }
-        const Eigen::Matrix2d cw = G * C * G.transpose();
-        res.sigmaMajorSd = sqrtVariance(cw(0, 0));
-        res.sigmaMinorSd = sqrtVariance(cw(1, 1));
+        res->centreEllipse95Scale = NAN;
+    const Eigen::MatrixXd& C = res->covariance;
+    res->centreEllipse = ellipseFromCovariance(C(1, 1), C(2, 2), C(1, 2));
+    res->amplitudeSd = std::sqrt(C(0, 0));
+    // σ of the widths by the delta method over (a, b, c).
+    const double a = res->surface.a, b = res->surface.b, c = res->surface.c;
+    const int ia = 3, ib = L.elliptical ? 4 : -1, ic = L.elliptical ? 5 : 3;
+    Eigen::MatrixXd G(2, np);
+    G.setZero();
+    const double hh = 1e-6 * std::max(std::fabs(a), std::fabs(c));
+    auto widths = [](double aa, double bb, double cc) {
+        const Shape t = shapeOf(aa, bb, cc);
+        return Eigen::Vector2d(t.sigmaMajor, t.sigmaMinor);
+    };
+    if (L.elliptical) {
+        G.col(ia) = (widths(a + hh, b, c) - widths(a - hh, b, c)) / (2 * hh);
+        G.col(ib) = (widths(a, b + hh, c) - widths(a, b - hh, c)) / (2 * hh);
+        G.col(ic) = (widths(a, b, c + hh) - widths(a, b, c - hh)) / (2 * hh);
+    } else {
+        G.col(ia) = (widths(a + hh, 0, a + hh) - widths(a - hh, 0, a - hh)) / (2 * hh);
     }
-    // Per-detector model, residual and σ; consistency of the set-aside detectors.
+    const Eigen::Matrix2d cw = G * C * G.transpose();
+    res->sigmaMajorSd = sqrtVariance(cw(0, 0));
+    res->sigmaMinorSd = sqrtVariance(cw(1, 1));
+    return {};
+}
+
+// Stage 8. Per-detector model, residual and σ; warnings where a set-aside detector contradicts
+// the fit; the warnings on outliers and on too few seeing detectors.
+void detectorReport(const DetectorArray& array, const DetectorFitParams& params, DetectorFitResult* res) {
+    const auto& det = array.detectors;
     double ss = 0;
     int nss = 0;
-    for (size_t i = 0; i < nd; ++i) {
-        DetectorOutcome& o = res.detectors[i];
-        o.model = evalSurface(s, det[i].e, det[i].n);
+    for (size_t i = 0; i < det.size(); ++i) {
+        DetectorOutcome& o = res->detectors[i];
+        o.model = evalSurface(res->surface, det[i].e, det[i].n);
         if (o.status == DetectorStatus::Used || o.status == DetectorStatus::AtLeast || o.status == DetectorStatus::AtMost)
-            o.sigma = sigmaOf(floorN, relN, o.model);
+            o.sigma = sigmaOf(res->noise.floor, res->noise.relative, o.model);
         if (o.status == DetectorStatus::Used) {
             o.residual = det[i].energy - o.model;
             ss += o.residual * o.residual;
             ++nss;
         } else if (o.status == DetectorStatus::Untriggered && params.triggerThreshold > 0 &&
                    o.model > 2 * params.triggerThreshold) {
-            res.warnings.push_back("detector " + det[i].id + " is untriggered but the fit predicts " +
-                                   formatDouble(o.model, 4) + ", twice the trigger threshold");
+            res->warnings.push_back("detector " + det[i].id + " is untriggered but the fit predicts " +
+                                    formatDouble(o.model, 4) + ", twice the trigger threshold");
         } else if (o.status == DetectorStatus::Saturated && std::isfinite(o.bound) && o.model < 0.8 * o.bound) {
-            res.warnings.push_back("detector " + det[i].id + " is saturated but the fit predicts only " +
-                                   formatDouble(o.model, 4));
+            res->warnings.push_back("detector " + det[i].id + " is saturated but the fit predicts only " +
+                                    formatDouble(o.model, 4));
         }
     }
-    res.rmsResidual = nss ? std::sqrt(ss / nss) : NAN;
-    if (res.outliers > 0)
-        res.warnings.push_back(std::to_string(res.outliers) + " detector" + (res.outliers == 1 ? "" : "s") +
-                               " inconsistent with the fit by more than " + formatDouble(params.outlierSigma, 3) +
-                               " robust sigma set aside (see the detector report)");
-    if (res.seeing < params.recommendedDetectors)
-        res.warnings.push_back("only " + std::to_string(res.seeing) + " detectors see the footprint (paper 002 asks for at least " +
-                               std::to_string(params.recommendedDetectors) + ")");
-    // 5. Doubts: a centre was found, but is it to be trusted?
-    auto doubt = [&](const std::string& why) {
-        res.doubtful = true;
-        res.doubts.push_back(why);
+    res->rmsResidual = nss ? std::sqrt(ss / nss) : NAN;
+    if (res->outliers > 0)
+        res->warnings.push_back(std::to_string(res->outliers) + " detector" + (res->outliers == 1 ? "" : "s") +
+                                " inconsistent with the fit by more than " + formatDouble(params.outlierSigma, 3) +
+                                " robust sigma set aside (see the detector report)");
+    if (res->seeing < params.recommendedDetectors)
+        res->warnings.push_back("only " + std::to_string(res->seeing) + " detectors see the footprint (paper 002 asks for at least " +
+                                std::to_string(params.recommendedDetectors) + ")");
+}
+
+// Stage 9. Doubts: a centre was found, but is it to be trusted?
+void judgeDoubts(const DetectorArray& array, const DetectorFitParams& params, const std::vector<P2>& seeingPts,
+                 DetectorFitResult* res) {
+    auto doubt = [res](const std::string& why) {
+        res->doubtful = true;
+        res->doubts.push_back(why);
     };
+    const GaussSurface& s = res->surface;
     const double radius = 2 * s.sigmaMajor;  // 1/e² radius along the major axis
     // The array's extent (bounding-box diagonal) and its typical spacing (median nearest neighbour).
-    double extent = 0, spacing = NAN;
-    {
-        double e0 = INFINITY, e1 = -INFINITY, n0 = INFINITY, n1 = -INFINITY;
-        for (const auto& d : det) {
-            e0 = std::min(e0, d.e);
-            e1 = std::max(e1, d.e);
-            n0 = std::min(n0, d.n);
-            n1 = std::max(n1, d.n);
-        }
-        extent = std::hypot(e1 - e0, n1 - n0);
-        spacing = median(nearestNeighbourDistances(arrayPts));
+    std::vector<P2> arrayPts;
+    double e0 = INFINITY, e1 = -INFINITY, n0 = INFINITY, n1 = -INFINITY;
+    for (const auto& d : array.detectors) {
+        arrayPts.emplace_back(d.e, d.n);
+        e0 = std::min(e0, d.e);
+        e1 = std::max(e1, d.e);
+        n0 = std::min(n0, d.n);
+        n1 = std::max(n1, d.n);
     }
+    const double extent = std::hypot(e1 - e0, n1 - n0);
+    const double spacing = median(nearestNeighbourDistances(arrayPts));
     const P2 centre(s.e0, s.n0);
-    res.centreOutsideSeeingM = distanceOutsideHull(seeingPts, centre);
-    res.centreOutsideArrayM = distanceOutsideHull(arrayPts, centre);
-    if (given && givenWeighted && res.dof >= 1) {
-        res.chi2Probability = chi2UpperTail(res.chi2Exact, res.dof);
-        if (res.chi2Probability < 0.5 * params.chi2Probability || res.chi2Probability > 1 - 0.5 * params.chi2Probability)
-            doubt("chi2/dof " + formatDouble(res.chi2Exact / res.dof, 4) + " on " + std::to_string(res.dof) +
-                  " dof is far from 1 (P = " + formatDouble(res.chi2Probability, 3) +
+    res->centreOutsideSeeingM = distanceOutsideHull(seeingPts, centre);
+    res->centreOutsideArrayM = distanceOutsideHull(arrayPts, centre);
+    if (givenWeights(params) && res->dof >= 1) {
+        res->chi2Probability = chi2UpperTail(res->chi2Exact, res->dof);
+        if (res->chi2Probability < 0.5 * params.chi2Probability || res->chi2Probability > 1 - 0.5 * params.chi2Probability)
+            doubt("chi2/dof " + formatDouble(res->chi2Exact / res->dof, 4) + " on " + std::to_string(res->dof) +
+                  " dof is far from 1 (P = " + formatDouble(res->chi2Probability, 3) +
                   "): the given noise model does not describe these detectors");
     }
-    if (res.seeing == 0)
+    if (res->seeing == 0)
         doubt("no detector sees the footprint (none rises 3 noise sigma above the background)");
-    else if (res.centreOutsideSeeingM > radius)
-        doubt("the centre lies " + formatFixed(res.centreOutsideSeeingM, 2) + " m outside the detectors that see the footprint "
+    else if (res->centreOutsideSeeingM > radius)
+        doubt("the centre lies " + formatFixed(res->centreOutsideSeeingM, 2) + " m outside the detectors that see the footprint "
               "(more than its 1/e2 radius " + formatFixed(radius, 2) + " m)");
-    if (res.centreOutsideArrayM > radius)
-        doubt("the centre lies " + formatFixed(res.centreOutsideArrayM, 2) + " m outside the array (more than the footprint's "
+    if (res->centreOutsideArrayM > radius)
+        doubt("the centre lies " + formatFixed(res->centreOutsideArrayM, 2) + " m outside the array (more than the footprint's "
               "1/e2 radius " + formatFixed(radius, 2) + " m)");
-    const double k95 = res.centreEllipse95Scale;
-    if (!std::isfinite(k95) || !std::isfinite(res.centreEllipse.semiMajor))
+    const double k95 = res->centreEllipse95Scale;
+    if (!std::isfinite(k95) || !std::isfinite(res->centreEllipse.semiMajor))
         doubt("the centre's uncertainty cannot be estimated (no degrees of freedom left)");
-    else if (2 * k95 * res.centreEllipse.semiMajor > extent)
-        doubt("the 95 % ellipse (" + formatFixed(2 * k95 * res.centreEllipse.semiMajor, 2) + " m across) is larger than the array (" +
+    else if (2 * k95 * res->centreEllipse.semiMajor > extent)
+        doubt("the 95 % ellipse (" + formatFixed(2 * k95 * res->centreEllipse.semiMajor, 2) + " m across) is larger than the array (" +
               formatFixed(extent, 2) + " m)");
     if (4 * s.sigmaMajor > 2 * extent)
         doubt("the fitted footprint (1/e2 diameter " + formatFixed(4 * s.sigmaMajor, 2) + " m) is more than twice as wide "
@@ -1040,40 +1108,106 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     if (s.sigmaMajor > params.maxAxisRatio * s.sigmaMinor)
         doubt("the fitted footprint's axis ratio " + formatFixed(s.sigmaMajor / s.sigmaMinor, 2) + " exceeds " +
               formatDouble(params.maxAxisRatio, 3) + ": not a laser footprint's shape (a dead detector under the peak?)");
-    if (!(A > 3 * sigmaBg))
-        doubt("the footprint's peak " + formatDouble(A, 4) + " is less than 3 noise sigma (" + formatDouble(sigmaBg, 4) +
+    const double sigmaBg = backgroundSigma(*res);
+    if (!(s.amplitude > 3 * sigmaBg))
+        doubt("the footprint's peak " + formatDouble(s.amplitude, 4) + " is less than 3 noise sigma (" + formatDouble(sigmaBg, 4) +
               ") above the background");
-    // Height at the centre: plane through the detector heights (all surveyed detectors).
-    {
-        std::vector<const Detector*> hs;
-        for (const auto& d : det)
-            if (std::isfinite(d.h)) hs.push_back(&d);
-        if (hs.size() >= 3) {
-            Eigen::MatrixXd M(hs.size(), 3);
-            Eigen::VectorXd y(hs.size());
-            for (size_t k = 0; k < hs.size(); ++k) {
-                M(k, 0) = 1;
-                M(k, 1) = hs[k]->e - s.e0;
-                M(k, 2) = hs[k]->n - s.n0;
-                y(k) = hs[k]->h;
-            }
-            Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(M);
-            if (qr.rank() == 3)
-                res.centreH = qr.solve(y)(0);
-            else
-                res.centreH = y.mean();
-        } else if (!hs.empty()) {
-            double m = 0;
-            for (auto* d : hs) m += d->h;
-            res.centreH = m / hs.size();
+}
+
+// Stage 10. Height at the centre from a plane through the surveyed detectors' heights, and the
+// centre's latitude and longitude when the array was geographic.
+void placeCentre(const DetectorArray& array, DetectorFitResult* res) {
+    const GaussSurface& s = res->surface;
+    std::vector<const Detector*> hs;
+    for (const auto& d : array.detectors)
+        if (std::isfinite(d.h)) hs.push_back(&d);
+    if (hs.size() >= 3) {
+        Eigen::MatrixXd M(hs.size(), 3);
+        Eigen::VectorXd y(hs.size());
+        for (size_t k = 0; k < hs.size(); ++k) {
+            M(k, 0) = 1;
+            M(k, 1) = hs[k]->e - s.e0;
+            M(k, 2) = hs[k]->n - s.n0;
+            y(k) = hs[k]->h;
         }
+        Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(M);
+        res->centreH = qr.rank() == 3 ? qr.solve(y)(0) : y.mean();
+    } else if (!hs.empty()) {
+        double m = 0;
+        for (auto* d : hs) m += d->h;
+        res->centreH = m / hs.size();
     }
     if (array.geographic) {
         const LocalFrame frame(array.originLatDeg * kDeg, array.originLonDeg * kDeg, array.originH);
         const Geodetic g = ecefToGeodetic(frame.toEcef(Eigen::Vector3d(s.e0, s.n0, 0)));
-        res.centreLatDeg = g.latRad / kDeg;
-        res.centreLonDeg = g.lonRad / kDeg;
+        res->centreLatDeg = g.latRad / kDeg;
+        res->centreLonDeg = g.lonRad / kDeg;
     }
+}
+
+}  // namespace
+
+DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFitParams& params) {
+    DetectorFitResult res;
+    if (const std::string e = validate(params); !e.empty()) {
+        res.error = e;
+        return res;
+    }
+    const auto& det = array.detectors;
+    res.detectors.resize(det.size());
+    // 1. What each detector says: a measurement, "at least" (saturated), "at most" (untriggered), nothing.
+    if (std::string e = judgeDetectors(array, params, &res.detectors); !e.empty()) {
+        res.error = std::move(e);
+        return res;
+    }
+    const UsedEnergies energies = usedEnergies(det, res.detectors);
+    const double maxUsed =
+        markUndeclaredClip(array, params, energies.max, &res) ? usedEnergies(det, res.detectors).max : energies.max;
+    const double upperBound = params.triggerThreshold > 0 ? params.triggerThreshold
+                              : std::isfinite(energies.minTriggered) ? energies.minTriggered
+                                                                     : energies.min;
+    Observations ob = observationsOf(det, params, maxUsed, upperBound, &res.detectors);
+    // 2. The surface, and whether the measurements determine it.
+    const int informative = ob.informative();
+    const Layout L = chooseSurface(params, informative, &res.modelUsed);
+    res.used = static_cast<int>(ob.obs.size());
+    if (std::string e = checkDetermined(ob, det.size(), params, L.count()); !e.empty()) {
+        res.error = std::move(e);
+        return res;
+    }
+    // 3. Start: robust fits from several starts, far untriggered detectors merged into one term.
+    SurfaceFit f(std::move(ob.obs));
+    f.sp.L = L;
+    f.sp.fixedBg = params.background;
+    f.maxIterations = params.maxIterations;
+    const std::vector<double> bgStarts = backgroundStarts(L, params.background, &f);
+    f.refBg = bgStarts.back();
+    if (!(f.vmax > f.refBg)) {
+        res.error = "no detector has energy above the background";
+        return res;
+    }
+    centreOnBrightHalf(&f);
+    // A given relative noise without a floor: 0.1 % of it at the peak keeps zero and negative
+    // energies (background detectors) finite in the fit.
+    f.floorN = params.noiseFloor > 0 ? params.noiseFloor : 1e-3 * params.relativeNoise * (f.vmax - f.refBg);
+    f.relN = params.relativeNoise;
+    if (std::string e = robustStart(params, bgStarts, &f); !e.empty()) {
+        res.error = std::move(e);
+        return res;
+    }
+    mergeFarBounds(params.background, &f);
+    // 4. Noise model and outliers, iterated with refits.
+    refineNoiseAndOutliers(params, informative, &f, &res);
+    // 5.–10. Figures, uncertainty, per-detector report, doubts, the centre's height and position.
+    finalFigures(params, params.background, &f, &res);
+    const std::vector<P2> seeingPts = seeingDetectors(array, &res);
+    if (std::string e = covarianceAndEllipses(params, f, &res); !e.empty()) {
+        res.error = std::move(e);
+        return res;
+    }
+    detectorReport(array, params, &res);
+    judgeDoubts(array, params, seeingPts, &res);
+    placeCentre(array, &res);
     res.ok = std::isfinite(res.centreE) && std::isfinite(res.centreN);
     if (!res.ok) res.error = "the surface fit produced a non-finite centre";
     return res;

@@ -522,6 +522,226 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
     return true;
 }
 
+
+// parseCrd, stage 1: the records grouped into passes. A pass opens at H4 with the H1/H2/H3 in
+// force and closes at H8 (or, with a warning, at the next header or at the end of the file);
+// comments, blank lines and user records outside a pass go with what follows.
+class PassSplitter {
+public:
+    PassSplitter(const std::string& src, Sink* sink, CrdFile* file) : src_(src), sink_(sink), file_(file) {}
+
+    // One record; false (and *error) when the file cannot be read as CRD from here.
+    bool add(CrdRecord rec, const Fields& fs, std::string* error) {
+        const std::string& id = rec.id;
+        const long lineNo = rec.line;
+        if (id.empty() || id == "00") {  // blank or comment: belongs to whatever is open
+            current().push_back(std::move(rec));
+            return true;
+        }
+        if (!idIsValid(id)) {
+            if (!open_ && !haveH1_) {
+                *error = where(src_, lineNo) + "not a CRD record: \"" + excerpt(rec.text) + "\" (expected H1)";
+                return false;
+            }
+            sink_->add(where(src_, lineNo) + "unknown record type \"" + excerpt(fs.f[0], 8) + "\"; kept, not interpreted");
+            current().push_back(std::move(rec));
+            return true;
+        }
+        if (id == "h1" || id == "h2" || id == "h3") return formatHeader(std::move(rec), error);
+        if (id == "h4") return openPass(std::move(rec), error);
+        if (id == "h8") {
+            if (!open_) {
+                sink_->add(where(src_, lineNo) + "H8 without an open pass; kept");
+                pending_.push_back(std::move(rec));
+                return true;
+            }
+            open_->records.push_back(std::move(rec));
+            open_->endedWithH8 = true;
+            close("", lineNo);
+            return true;
+        }
+        if (id == "h9") {
+            close("pass ended without H8 (H9)", lineNo);
+            pending_.push_back(std::move(rec));
+            return true;
+        }
+        if (id[0] == 'h') {  // h5 (prediction header), h6/h7 (not defined): part of the pass or the next one
+            current().push_back(std::move(rec));
+            return true;
+        }
+        // Configuration, data and user records.
+        if (!open_) {
+            if (id[0] == '9') {  // user records outside a pass: keep with what follows
+                pending_.push_back(std::move(rec));
+                return true;
+            }
+            *error = where(src_, lineNo) + "record " + std::string(fs.f[0]) + " " +
+                     (haveH1_ ? "outside a pass (no H4 session header before it)"
+                              : "before the H1 format header (not a CRD file, or its header is missing)");
+            return false;
+        }
+        open_->records.push_back(std::move(rec));
+        return true;
+    }
+
+    // At the end of the text: the open pass closes with a warning, what is left is the trailer.
+    void finish(long lastLine) {
+        close("file ends without H8 for the last pass", lastLine);
+        file_->trailer = std::move(pending_);
+    }
+
+private:
+    std::vector<CrdRecord>& current() { return open_ ? open_->records : pending_; }
+
+    void close(const std::string& why, long atLine) {
+        if (!open_) return;
+        if (!why.empty()) sink_->add(where(src_, atLine) + why);
+        open_ = nullptr;
+    }
+
+    bool formatHeader(CrdRecord rec, std::string* error) {
+        const std::string& id = rec.id;
+        close("pass ended without H8 (new H" + id.substr(1) + ")", rec.line);
+        if (id == "h1") {
+            std::string why;
+            if (!parseH1(rec, src_, &h1_, sink_, &why)) {
+                *error = where(src_, rec.line) + why;
+                return false;
+            }
+            haveH1_ = true;
+        } else if (id == "h2") {
+            parseH2(rec, src_, &h2_, sink_);
+            haveH2_ = true;
+        } else {
+            parseH3(rec, src_, &h3_, sink_);
+            haveH3_ = true;
+        }
+        own_[id[1] - '1'] = true;
+        pending_.push_back(std::move(rec));
+        return true;
+    }
+
+    bool openPass(CrdRecord rec, std::string* error) {
+        close("pass ended without H8 (new H4)", rec.line);
+        if (!haveH1_) {
+            *error = where(src_, rec.line) + "H4 before any H1 format header";
+            return false;
+        }
+        if (!haveH2_ || !haveH3_) {
+            *error = where(src_, rec.line) + "H4 before the " + std::string(!haveH2_ ? "H2 station" : "H3 target") + " header";
+            return false;
+        }
+        file_->passes.emplace_back();
+        open_ = &file_->passes.back();
+        open_->format = h1_;
+        open_->station = h2_;
+        open_->target = h3_;
+        open_->inheritsHeaders = !(own_[0] && own_[1] && own_[2]);
+        own_[0] = own_[1] = own_[2] = false;
+        open_->records = std::move(pending_);
+        pending_.clear();
+        open_->records.push_back(std::move(rec));
+        return true;
+    }
+
+    const std::string& src_;
+    Sink* sink_;
+    CrdFile* file_;
+    CrdFormatHeader h1_;
+    CrdStation h2_;
+    CrdTarget h3_;
+    bool haveH1_ = false, haveH2_ = false, haveH3_ = false;
+    bool own_[3] = {false, false, false};  // H1/H2/H3 seen since the last pass
+    std::vector<CrdRecord> pending_;       // records since the last pass closed
+    CrdPass* open_ = nullptr;
+};
+
+// Stage 1: the text's lines through the splitter (progress: the first half). False with
+// res->error on a line that cannot be CRD, on cancel, or without any pass.
+bool splitPasses(std::string_view text, const std::string& src, const Feedback* feedback, Sink* sink, CrdReadResult* res) {
+    PassSplitter splitter(src, sink, &res->file);
+    size_t pos = 0;
+    long lineNo = 0;
+    while (pos < text.size()) {
+        if ((lineNo & 0x3fff) == 0 && feedback) {
+            if (feedback->isCancelled()) {
+                res->error = src + ": cancelled";
+                return false;
+            }
+            feedback->setProgress(0.5 * static_cast<double>(pos) / static_cast<double>(text.size()));
+        }
+        size_t end = text.find('\n', pos);
+        const bool hadNewline = end != std::string_view::npos;
+        if (!hadNewline) end = text.size();
+        std::string_view line = text.substr(pos, end - pos);
+        pos = hadNewline ? end + 1 : end;
+        ++lineNo;
+        // Every trailing CR goes (so a text never ends with one and LF/CRLF writing is unambiguous).
+        if (!line.empty() && line.back() == '\r' && lineNo == 1) res->file.crlf = true;
+        while (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        CrdRecord rec;
+        rec.text = std::string(line);
+        rec.line = lineNo;
+        const Fields fs(line);
+        rec.id = fs.n ? toLower(fs.f[0]) : std::string();
+        if (!splitter.add(std::move(rec), fs, &res->error)) return false;
+    }
+    splitter.finish(lineNo);
+    if (res->file.passes.empty()) {
+        res->error = src + ": no CRD pass (no H4 session header) in " + std::to_string(lineNo) + " lines";
+        return false;
+    }
+    return true;
+}
+
+// Stage 2: the records of each pass parsed; a pass that cannot be read, or has no range record,
+// gets its problem (progress: the second half). False on cancel.
+bool parsePasses(const std::string& src, const Feedback* feedback, Sink* sink, CrdReadResult* res) {
+    std::vector<CrdPass>& passes = res->file.passes;
+    for (size_t k = 0; k < passes.size(); ++k) {
+        if (cancelled(feedback)) {
+            res->error = src + ": cancelled";
+            return false;
+        }
+        CrdPass& p = passes[k];
+        std::string err;
+        if (!parsePassRecords(&p, src, sink, &err)) {
+            p.problem = err;
+        } else if (p.ranges.empty() && p.normalPoints.empty()) {
+            p.problem = where(src, p.session.line) + "pass " + std::to_string(k + 1) + " (" + p.station.name + ", " +
+                        p.target.name + ") has no readable range record (type 10 or 11)";
+            clearParsed(&p);
+        }
+        if (feedback) feedback->setProgress(0.5 + 0.5 * static_cast<double>(k + 1) / static_cast<double>(passes.size()));
+    }
+    return true;
+}
+
+// Stage 3: a block that cannot be a pass does not cost the file its other passes: it is kept (for
+// writing back) and named in a warning. False (res->error) when no pass is usable.
+bool setAsideUnusablePasses(Sink* sink, CrdReadResult* res) {
+    const std::vector<CrdPass>& passes = res->file.passes;
+    size_t unusable = 0;
+    const CrdPass* firstBad = nullptr;
+    for (const CrdPass& p : passes) {
+        if (p.problem.empty()) continue;
+        if (!firstBad) firstBad = &p;
+        ++unusable;
+    }
+    if (unusable == passes.size()) {
+        res->error = firstBad->problem;
+        if (unusable > 1)
+            res->error += " (and the file's " + std::to_string(unusable - 1) + " other pass" +
+                          (unusable > 2 ? "es cannot" : " cannot") + " be used either)";
+        return false;
+    }
+    for (size_t k = 0; k < passes.size(); ++k)
+        if (!passes[k].problem.empty())
+            sink->add(passes[k].problem + "; pass " + std::to_string(k + 1) +
+                      " skipped (its lines are kept as they are), the file's other passes are read");
+    return true;
+}
+
 }  // namespace
 
 // ---- CrdPass ---------------------------------------------------------------------------------
@@ -562,193 +782,11 @@ CrdReadResult parseCrd(std::string_view text, const std::string& source, const C
             return res;
         }
         Sink sink{&res.warnings, params.maxWarnings};
-
-        // Stage 1: split the lines into passes.
-        CrdFormatHeader curH1;
-        CrdStation curH2;
-        CrdTarget curH3;
-        bool haveH1 = false, haveH2 = false, haveH3 = false;
-        bool own[3] = {false, false, false};  // H1/H2/H3 seen since the last pass
-        std::vector<CrdRecord> pending;  // lines since the last pass closed
-        CrdPass* open = nullptr;
-        size_t pos = 0;
-        long lineNo = 0;
-        bool firstLine = true;
-        std::vector<CrdPass>& passes = res.file.passes;
-
-        auto closePass = [&](const std::string& why, long atLine) {
-            if (!open) return;
-            if (!why.empty()) sink.add(where(src, atLine) + why);
-            open = nullptr;
-        };
-
-        while (pos < text.size()) {
-            if ((lineNo & 0x3fff) == 0 && feedback) {
-                if (feedback->isCancelled()) {
-                    res.error = src + ": cancelled";
-                    res.file.passes.clear();
-                    return res;
-                }
-                feedback->setProgress(0.5 * static_cast<double>(pos) / static_cast<double>(text.size()));
-            }
-            size_t end = text.find('\n', pos);
-            const bool hadNewline = end != std::string_view::npos;
-            if (!hadNewline) end = text.size();
-            std::string_view line = text.substr(pos, end - pos);
-            pos = hadNewline ? end + 1 : end;
-            ++lineNo;
-            // Every trailing CR goes (so a text never ends with one and LF/CRLF writing is unambiguous).
-            if (!line.empty() && line.back() == '\r' && firstLine) res.file.crlf = true;
-            while (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-            firstLine = false;
-
-            CrdRecord rec;
-            rec.text = std::string(line);
-            rec.line = lineNo;
-            const Fields fs(line);
-            rec.id = fs.n ? toLower(fs.f[0]) : std::string();
-            const std::string& id = rec.id;
-
-            if (id.empty() || id == "00") {  // blank or comment: belongs to whatever is open
-                (open ? open->records : pending).push_back(std::move(rec));
-                continue;
-            }
-            if (!idIsValid(id)) {
-                if (!open && !haveH1) {
-                    res.error = where(src, lineNo) + "not a CRD record: \"" + excerpt(line) + "\" (expected H1)";
-                    res.file.passes.clear();
-                    return res;
-                }
-                sink.add(where(src, lineNo) + "unknown record type \"" + excerpt(fs.f[0], 8) + "\"; kept, not interpreted");
-                (open ? open->records : pending).push_back(std::move(rec));
-                continue;
-            }
-            if (id == "h1" || id == "h2" || id == "h3") {
-                if (open) closePass("pass ended without H8 (new H" + id.substr(1) + ")", lineNo);
-                if (id == "h1") {
-                    std::string why;
-                    if (!parseH1(rec, src, &curH1, &sink, &why)) {
-                        res.error = where(src, lineNo) + why;
-                        res.file.passes.clear();
-                        return res;
-                    }
-                    haveH1 = true;
-                } else if (id == "h2") {
-                    parseH2(rec, src, &curH2, &sink);
-                    haveH2 = true;
-                } else {
-                    parseH3(rec, src, &curH3, &sink);
-                    haveH3 = true;
-                }
-                own[id[1] - '1'] = true;
-                pending.push_back(std::move(rec));
-                continue;
-            }
-            if (id == "h4") {
-                if (open) closePass("pass ended without H8 (new H4)", lineNo);
-                if (!haveH1) {
-                    res.error = where(src, lineNo) + "H4 before any H1 format header";
-                    res.file.passes.clear();
-                    return res;
-                }
-                if (!haveH2 || !haveH3) {
-                    res.error = where(src, lineNo) + "H4 before the " + std::string(!haveH2 ? "H2 station" : "H3 target") +
-                                " header";
-                    res.file.passes.clear();
-                    return res;
-                }
-                passes.emplace_back();
-                open = &passes.back();
-                open->format = curH1;
-                open->station = curH2;
-                open->target = curH3;
-                open->inheritsHeaders = !(own[0] && own[1] && own[2]);
-                own[0] = own[1] = own[2] = false;
-                open->records = std::move(pending);
-                pending.clear();
-                open->records.push_back(std::move(rec));
-                continue;
-            }
-            if (id == "h8") {
-                if (!open) {
-                    sink.add(where(src, lineNo) + "H8 without an open pass; kept");
-                    pending.push_back(std::move(rec));
-                    continue;
-                }
-                open->records.push_back(std::move(rec));
-                open->endedWithH8 = true;
-                closePass("", lineNo);
-                continue;
-            }
-            if (id == "h9") {
-                if (open) closePass("pass ended without H8 (H9)", lineNo);
-                pending.push_back(std::move(rec));
-                continue;
-            }
-            if (id[0] == 'h') {  // h5 (prediction header), h6/h7 (not defined): part of the pass or the next one
-                (open ? open->records : pending).push_back(std::move(rec));
-                continue;
-            }
-            // Configuration, data and user records.
-            if (!open) {
-                if (id[0] == '9') {  // user records outside a pass: keep with what follows
-                    pending.push_back(std::move(rec));
-                    continue;
-                }
-                res.error = where(src, lineNo) + "record " + std::string(fs.f[0]) + " " +
-                            (haveH1 ? "outside a pass (no H4 session header before it)"
-                                    : "before the H1 format header (not a CRD file, or its header is missing)");
-                res.file.passes.clear();
-                return res;
-            }
-            open->records.push_back(std::move(rec));
-        }
-        if (open) closePass("file ends without H8 for the last pass", lineNo);
-        res.file.trailer = std::move(pending);
-        if (passes.empty()) {
-            res.error = src + ": no CRD pass (no H4 session header) in " + std::to_string(lineNo) + " lines";
-            return res;
-        }
-
-        // Stage 2: parse the records of each pass.
-        for (size_t k = 0; k < passes.size(); ++k) {
-            if (cancelled(feedback)) {
-                res.error = src + ": cancelled";
-                res.file.passes.clear();
-                return res;
-            }
-            CrdPass& p = passes[k];
-            std::string err;
-            if (!parsePassRecords(&p, src, &sink, &err)) {
-                p.problem = err;
-            } else if (p.ranges.empty() && p.normalPoints.empty()) {
-                p.problem = where(src, p.session.line) + "pass " + std::to_string(k + 1) + " (" + p.station.name + ", " +
-                            p.target.name + ") has no readable range record (type 10 or 11)";
-                clearParsed(&p);
-            }
-            if (feedback) feedback->setProgress(0.5 + 0.5 * static_cast<double>(k + 1) / static_cast<double>(passes.size()));
-        }
-        // A block that cannot be a pass does not cost the file its other passes: it is kept (for
-        // writing back) and named in a warning. Only a file without any usable pass is refused.
-        size_t unusable = 0;
-        const CrdPass* firstBad = nullptr;
-        for (size_t k = 0; k < passes.size(); ++k) {
-            if (passes[k].problem.empty()) continue;
-            if (!firstBad) firstBad = &passes[k];
-            ++unusable;
-        }
-        if (unusable == passes.size()) {
-            res.error = firstBad->problem;
-            if (unusable > 1)
-                res.error += " (and the file's " + std::to_string(unusable - 1) + " other pass" +
-                             (unusable > 2 ? "es cannot" : " cannot") + " be used either)";
+        if (!splitPasses(text, src, feedback, &sink, &res) || !parsePasses(src, feedback, &sink, &res) ||
+            !setAsideUnusablePasses(&sink, &res)) {
             res.file.passes.clear();
             return res;
         }
-        for (size_t k = 0; k < passes.size(); ++k)
-            if (!passes[k].problem.empty())
-                sink.add(passes[k].problem + "; pass " + std::to_string(k + 1) +
-                         " skipped (its lines are kept as they are), the file's other passes are read");
         sink.close();
         res.ok = true;
     } catch (const std::exception& e) {

@@ -105,17 +105,133 @@ std::string validate(const TrendOcParams& p) {
     return {};
 }
 
+// computeOc in named stages: check the inputs, the centre-of-mass offset, the refraction set-up,
+// then per range the light times, the wavelength and the computed two-way time of flight.
+namespace {
+
+std::string checkStation(const Eigen::Vector3d& stationEcef) {
+    if (!stationEcef.allFinite() || stationEcef.norm() < 6.3e6 || stationEcef.norm() > 6.4e6)
+        return "station position is not on the Earth's surface (|r| must be 6300..6400 km)";
+    return {};
+}
+
+// The target's centre-of-mass offset (m): given, else the CPF's when it has not applied it, else 0.
+double comOffsetM(const OcParams& params, const CpfFile& cpf) {
+    if (!std::isnan(params.targetComOffsetM)) return params.targetComOffsetM;
+    return cpf.header.comApplied == 0 && std::isfinite(cpf.header.comOffsetM) ? cpf.header.comOffsetM : 0.0;
+}
+
+// Whether refraction is added (Mendes–Pavlis asked, the ranges not already corrected, met records
+// usable), with the met series; says why not in the warnings.
+bool setUpRefraction(const CrdPass& pass, const OcParams& params, const std::string& name, MetSeries* met,
+                     std::vector<std::string>* warnings) {
+    if (params.refraction != RefractionModel::MendesPavlis) return false;
+    if (pass.session.refractionApplied == 1) {
+        warnings->push_back(name + ": H4 says the ranges are already corrected for refraction; no correction added");
+        return false;
+    }
+    *met = metSeries(pass, warnings, pass.station.name);
+    if (met->empty()) {
+        warnings->push_back(name + ": no usable met (type 20) record: no refraction correction");
+        return false;
+    }
+    return true;
+}
+
+// One leg's light time (s) with the satellite fixed at `sat`, iterated from `leg`: dir = −1 for the
+// uplink (station at tb − up), +1 for the downlink (station at tb + down).
+double legTime(const Eigen::Vector3d& sat, const Eigen::Vector3d& station, int dir, double leg, const OcParams& params) {
+    for (int k = 0; k < params.maxIterations; ++k) {
+        const double next = (sat - rotated(station, dir * leg)).norm() / kSpeedOfLight;
+        const bool done = std::fabs(next - leg) < params.convergenceS;
+        leg = next;
+        if (done) break;
+    }
+    return leg;
+}
+
+// Light times of one range and the satellite at the bounce.
+struct LightTime {
+    bool ok = false;  // false: the prediction does not cover the bounce (spanError says why)
+    double up = 0, down = 0;
+    Eigen::Vector3d sat = Eigen::Vector3d::Zero();
+};
+
+// The observed time of flight only seeds the iteration. Epoch event 2 (ground transmit): bounce
+// = t + up, iterated with the uplink; 0 (ground receive): bounce = t − down, with the downlink;
+// else the epoch is the bounce.
+LightTime lightTime(const CpfInterpolator& interp, double startMjd, const Eigen::Vector3d& station, const OcParams& params,
+                    const CrdRange& r, double t, std::string* spanError) {
+    LightTime lt;
+    lt.up = lt.down = r.tofS / 2;
+    auto satAt = [&](double tt) {
+        const CpfState s = interp.atSeconds(startMjd, tt, false);
+        if (!s.ok) {
+            if (spanError->empty()) *spanError = s.error;
+            return false;
+        }
+        lt.sat = s.position;
+        return true;
+    };
+    if (r.epochEvent == 2 || r.epochEvent == 0) {
+        const bool transmit = r.epochEvent == 2;
+        double& leg = transmit ? lt.up : lt.down;
+        const int dir = transmit ? -1 : 1;
+        auto bounce = [&] { return transmit ? t + leg : t - leg; };
+        for (int k = 0; k < params.maxIterations; ++k) {
+            if (!satAt(bounce())) return lt;
+            const double next = (lt.sat - rotated(station, dir * leg)).norm() / kSpeedOfLight;
+            const bool done = std::fabs(next - leg) < params.convergenceS;
+            leg = next;
+            if (done) break;
+        }
+        if (!satAt(bounce())) return lt;
+    } else if (!satAt(t)) {
+        return lt;
+    }
+    lt.up = legTime(lt.sat, station, -1, lt.up, params);
+    lt.down = legTime(lt.sat, station, 1, lt.down, params);
+    lt.ok = true;
+    return lt;
+}
+
+// The wavelength (nm) for a range's refraction: given, else its configuration's C0 record, else
+// 532 nm with one warning per pass.
+double rangeWavelengthNm(const CrdPass& pass, const CrdRange& r, const OcParams& params, const std::string& name, bool* warned,
+                         std::vector<std::string>* warnings) {
+    if (!std::isnan(params.wavelengthNm)) return params.wavelengthNm;
+    const CrdSystemConfig* cfg = pass.config(r.configId);
+    if (!cfg && !pass.configs.empty()) cfg = &pass.configs.front();
+    const double lambda = cfg ? cfg->wavelengthNm : NAN;
+    if (lambda >= 300 && lambda <= 2000) return lambda;
+    if (!*warned)
+        warnings->push_back(name + ": no usable wavelength in the C0 record for configuration \"" + r.configId +
+                            "\"; 532 nm assumed");
+    *warned = true;
+    return 532.0;
+}
+
+void appendPassWarnings(const std::string& name, size_t skippedEvent, size_t skippedSpan, const std::string& spanError,
+                        OcResult* res) {
+    if (skippedEvent)
+        res->warnings.push_back(name + ": " + std::to_string(skippedEvent) +
+                                " records with a one-way epoch event (3..6) skipped: only two-way ranging is computed");
+    if (skippedSpan)
+        res->warnings.push_back(name + ": " + std::to_string(skippedSpan) + " records outside the prediction skipped (" +
+                                spanError + ")");
+}
+
+}  // namespace
+
 OcResult computeOc(const CrdPass& pass, const CpfFile& cpf, const Eigen::Vector3d& stationEcef, const OcParams& params,
                    const Feedback* feedback) {
     OcResult res;
     res.method = OcMethod::Prediction;
     try {
-        if (const std::string e = validate(params); !e.empty()) {
+        std::string e = validate(params);
+        if (e.empty()) e = checkStation(stationEcef);
+        if (!e.empty()) {
             res.error = e;
-            return res;
-        }
-        if (!stationEcef.allFinite() || stationEcef.norm() < 6.3e6 || stationEcef.norm() > 6.4e6) {
-            res.error = "station position is not on the Earth's surface (|r| must be 6300..6400 km)";
             return res;
         }
         const std::string name = passName(pass);
@@ -127,27 +243,9 @@ OcResult computeOc(const CrdPass& pass, const CpfFile& cpf, const Eigen::Vector3
         res.startMjd = pass.startMjd();
         res.stationEcef = stationEcef;
         const Geodetic geo = geodeticFromEcef(stationEcef);
-
-        // Centre-of-mass offset.
-        res.comOffsetM = params.targetComOffsetM;
-        if (std::isnan(res.comOffsetM))
-            res.comOffsetM = cpf.header.comApplied == 0 && std::isfinite(cpf.header.comOffsetM) ? cpf.header.comOffsetM : 0.0;
-
-        // Refraction set-up.
-        bool refr = params.refraction == RefractionModel::MendesPavlis;
+        res.comOffsetM = comOffsetM(params, cpf);
         MetSeries met;
-        if (refr && pass.session.refractionApplied == 1) {
-            res.warnings.push_back(name + ": H4 says the ranges are already corrected for refraction; no correction added");
-            refr = false;
-        }
-        if (refr) {
-            met = metSeries(pass, &res.warnings, pass.station.name);
-            if (met.empty()) {
-                res.warnings.push_back(name + ": no usable met (type 20) record: no refraction correction");
-                refr = false;
-            }
-        }
-        res.refractionApplied = refr;
+        res.refractionApplied = setUpRefraction(pass, params, name, &met, &res.warnings);
 
         bool warnedWavelength = false;
         size_t skippedEvent = 0, skippedSpan = 0;
@@ -169,105 +267,21 @@ OcResult computeOc(const CrdPass& pass, const CpfFile& cpf, const Eigen::Vector3
                 continue;
             }
             const double t = pass.passSeconds(r.secOfDay);
-            // Light times (s); the observed value only seeds the iteration.
-            double up = r.tofS / 2, down = r.tofS / 2, tb = 0;
-            Eigen::Vector3d sat;
-            bool good = true;
-            auto satAt = [&](double tt) {
-                const CpfState s = interp.atSeconds(res.startMjd, tt, false);
-                if (!s.ok) {
-                    if (spanError.empty()) spanError = s.error;
-                    good = false;
-                    return;
-                }
-                sat = s.position;
-            };
-            auto iterateUp = [&]() {  // satellite fixed at bounce; station at tb - up
-                for (int k = 0; k < params.maxIterations; ++k) {
-                    const double next = (sat - rotated(stationEcef, -up)).norm() / c;
-                    const bool done = std::fabs(next - up) < params.convergenceS;
-                    up = next;
-                    if (done) break;
-                }
-            };
-            auto iterateDown = [&]() {  // station at tb + down
-                for (int k = 0; k < params.maxIterations; ++k) {
-                    const double next = (sat - rotated(stationEcef, down)).norm() / c;
-                    const bool done = std::fabs(next - down) < params.convergenceS;
-                    down = next;
-                    if (done) break;
-                }
-            };
-            if (r.epochEvent == 2) {  // epoch = ground transmit: bounce = t + up
-                for (int k = 0; k < params.maxIterations && good; ++k) {
-                    tb = t + up;
-                    satAt(tb);
-                    if (!good) break;
-                    const double next = (sat - rotated(stationEcef, -up)).norm() / c;
-                    const bool done = std::fabs(next - up) < params.convergenceS;
-                    up = next;
-                    if (done) break;
-                }
-                if (good) {
-                    tb = t + up;
-                    satAt(tb);
-                    if (good) {
-                        iterateUp();
-                        iterateDown();
-                    }
-                }
-            } else if (r.epochEvent == 0) {  // epoch = ground receive: bounce = t - down
-                for (int k = 0; k < params.maxIterations && good; ++k) {
-                    tb = t - down;
-                    satAt(tb);
-                    if (!good) break;
-                    const double next = (sat - rotated(stationEcef, down)).norm() / c;
-                    const bool done = std::fabs(next - down) < params.convergenceS;
-                    down = next;
-                    if (done) break;
-                }
-                if (good) {
-                    tb = t - down;
-                    satAt(tb);
-                    if (good) {
-                        iterateDown();
-                        iterateUp();
-                    }
-                }
-            } else {  // epoch = bounce
-                tb = t;
-                satAt(tb);
-                if (good) {
-                    iterateUp();
-                    iterateDown();
-                }
-            }
-            if (!good) {
+            const LightTime lt = lightTime(interp, res.startMjd, stationEcef, params, r, t, &spanError);
+            if (!lt.ok) {
                 ++skippedSpan;
                 continue;
             }
-            double computed = up + down;
+            double computed = lt.up + lt.down;
             // Centre-of-mass offset: the reflection happens that much nearer the station, both legs.
             computed -= 2.0 * res.comOffsetM / c;
             if (params.shapiro)
-                computed += (shapiroM(rotated(stationEcef, -up), sat) + shapiroM(sat, rotated(stationEcef, down))) / c;
+                computed += (shapiroM(rotated(stationEcef, -lt.up), lt.sat) + shapiroM(lt.sat, rotated(stationEcef, lt.down))) / c;
             double az = 0, el = 0;
-            azimuthElevation(stationEcef, geo, sat, &az, &el);
+            azimuthElevation(stationEcef, geo, lt.sat, &az, &el);
             double refrS = 0;
-            if (refr) {
-                double lambda = params.wavelengthNm;
-                if (std::isnan(lambda)) {
-                    const CrdSystemConfig* cfg = pass.config(r.configId);
-                    if (!cfg && !pass.configs.empty()) cfg = &pass.configs.front();
-                    lambda = cfg ? cfg->wavelengthNm : NAN;
-                    if (!(lambda >= 300 && lambda <= 2000)) {
-                        if (!warnedWavelength)
-                            res.warnings.push_back(name + ": no usable wavelength in the C0 record for configuration \"" +
-                                                   r.configId + "\"; 532 nm assumed");
-                        warnedWavelength = true;
-                        lambda = 532.0;
-                    }
-                }
+            if (res.refractionApplied) {
+                const double lambda = rangeWavelengthNm(pass, r, params, name, &warnedWavelength, &res.warnings);
                 if (std::isnan(res.wavelengthNm)) res.wavelengthNm = lambda;
                 double P = 0, T = 0, H = 0;
                 met.at(t, &P, &T, &H);
@@ -285,22 +299,14 @@ OcResult computeOc(const CrdPass& pass, const CpfFile& cpf, const Eigen::Vector3
             res.line.push_back(r.line);
             res.filter_flag.push_back(r.filterFlag);
         }
-        if (skippedEvent)
-            res.warnings.push_back(name + ": " + std::to_string(skippedEvent) +
-                                   " records with a one-way epoch event (3..6) skipped: only two-way ranging is computed");
-        if (skippedSpan)
-            res.warnings.push_back(name + ": " + std::to_string(skippedSpan) + " records outside the prediction skipped (" +
-                                   spanError + ")");
+        appendPassWarnings(name, skippedEvent, skippedSpan, spanError, &res);
         if (res.oc_s.empty()) {
             res.error = name + ": no O-C computed" + (spanError.empty() ? std::string() : ": " + spanError);
             return res;
         }
-        for (size_t i = 0; i < res.elevation_rad.size(); ++i)
-            if (res.elevation_rad[i] < 0) {
-                res.warnings.push_back(name + ": the predicted target is below the horizon at some epochs: wrong station, "
-                                              "prediction or time?");
-                break;
-            }
+        if (std::any_of(res.elevation_rad.begin(), res.elevation_rad.end(), [](double el) { return el < 0; }))
+            res.warnings.push_back(name + ": the predicted target is below the horizon at some epochs: wrong station, "
+                                          "prediction or time?");
         if (feedback) feedback->setProgress(1.0);
         res.ok = true;
     } catch (const std::exception& e) {
