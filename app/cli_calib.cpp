@@ -442,9 +442,16 @@ int cmdSimulateCalib(int argc, char** argv) {
     std::string feats = "id,e,n,h\n";
     const int truthIndex = static_cast<int>(rng.uniform(0, 5));
     for (int i = 0; i < 5; ++i) {
-        const double off = i == truthIndex ? rng.uniform(-0.03, 0.03) : (rng.uniform() < 0.5 ? -1 : 1) * rng.uniform(0.3, 3);
-        feats += "F" + std::to_string(i + 1) + "," + fx(rng.uniform(-30, 30), 2) + "," + fx(rng.uniform(-30, 30), 2) + "," +
-                 fx(wp.heightM + off, 3) + "\n";
+        double off = 0;
+        if (i == truthIndex) {
+            off = rng.uniform(-0.03, 0.03);
+        } else {
+            const double sign = rng.uniform() < 0.5 ? -1 : 1;
+            off = sign * rng.uniform(0.3, 3);
+        }
+        // Named draws: the operands of a chain of + are evaluated in an unspecified order.
+        const double fn = rng.uniform(-30, 30), fe = rng.uniform(-30, 30);
+        feats += "F" + std::to_string(i + 1) + "," + fx(fe, 2) + "," + fx(fn, 2) + "," + fx(wp.heightM + off, 3) + "\n";
     }
     const std::string wtruth = "height_m,delta_t_ns,feature\n" + fx(wp.heightM, 6) + "," + fx(ws.deltaTNs, 6) + ",F" +
                                std::to_string(truthIndex + 1) + "\n";

@@ -87,8 +87,12 @@ CalibSimulation simulateCalibration(const CalibSimParams& p, uint64_t seed) {
         const Eigen::Matrix3d attKnown =
             att * smallRotation({rng.normal(0, p.sigmaAttitudeRad), rng.normal(0, p.sigmaAttitudeRad),
                                  rng.normal(0, p.sigmaAttitudeRad)});
-        const Eigen::Vector3d satKnown =
-            satTrue + Eigen::Vector3d(rng.normal(0, p.sigmaOrbitM), rng.normal(0, p.sigmaOrbitM), rng.normal(0, p.sigmaOrbitM));
+        // Draws as named values: the order of a constructor's arguments is unspecified (GCC takes
+        // them right to left, clang left to right), and a simulator must give the same data from
+        // every compiler. The order below is the one the GCC builds always had.
+        const double orbitZ = rng.normal(0, p.sigmaOrbitM), orbitY = rng.normal(0, p.sigmaOrbitM),
+                     orbitX = rng.normal(0, p.sigmaOrbitM);
+        const Eigen::Vector3d satKnown = satTrue + Eigen::Vector3d(orbitX, orbitY, orbitZ);
         const int nBeams = p.dualBeam ? 2 : 1;
         for (int k = 0; k < nBeams; ++k) {
             const BeamDesign& b = s.beams[k];
@@ -105,8 +109,9 @@ CalibSimulation simulateCalibration(const CalibSimParams& p, uint64_t seed) {
             c.shot.rangeM = rhoTrue - p.dRho[k] + rng.normal(0, p.sigmaRangeM);
             const Geodetic g = ecefToGeodetic(gTrue);
             const Eigen::Matrix3d genu = ecefToEnuRotation(g.latRad, g.lonRad);
-            const Eigen::Vector3d noise(rng.normal(0, p.sigmaHorizontalM), rng.normal(0, p.sigmaHorizontalM),
-                                        rng.normal(0, p.sigmaVerticalM));
+            const double up = rng.normal(0, p.sigmaVerticalM), north = rng.normal(0, p.sigmaHorizontalM),
+                         east = rng.normal(0, p.sigmaHorizontalM);  // (order: see satKnown)
+            const Eigen::Vector3d noise(east, north, up);
             c.groundEcef = gTrue + genu.transpose() * noise;
             s.points.push_back(c);
             s.trueGround.push_back(gTrue);
@@ -156,7 +161,8 @@ DetectorSimulation simulateDetectorArray(const DetectorSimParams& p, uint64_t se
             d.n = (r - 0.5 * (p.rows - 1)) * p.spacingM;
             d.h = p.heightM;
             const double truth = evalSurface(t, d.e, d.n);
-            double e = truth + rng.normal(0, p.relativeNoise * std::fabs(truth)) + rng.normal(0, p.noiseFloor);
+            const double relNoise = rng.normal(0, p.relativeNoise * std::fabs(truth)), floorNoise = rng.normal(0, p.noiseFloor);
+            double e = truth + relNoise + floorNoise;
             const bool dead = p.deadFraction > 0 && rng.uniform() < p.deadFraction;
             bool clipped = false;
             if (dead) {

@@ -108,7 +108,8 @@ void addFeatures(cv::Mat& g, double rms, Rng& rng) {
     if (rng.uniform() < 0.5) {  // road: a straight band, bright concrete or dark asphalt
         const double ang = rng.uniform(0, M_PI), px = rng.uniform(0, w), py = rng.uniform(0, h);
         const double halfWidth = rng.uniform(0.75, 2.0);
-        const double contrast = (rng.uniform() < 0.5 ? -1 : 1) * rng.uniform(1.5, 4.0) * rms;
+        const double sign = rng.uniform() < 0.5 ? -1 : 1;
+        const double contrast = sign * rng.uniform(1.5, 4.0) * rms;
         const double nx = -std::sin(ang), ny = std::cos(ang);
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
@@ -118,7 +119,8 @@ void addFeatures(cv::Mat& g, double rms, Rng& rng) {
     }
     if (rng.uniform() < 0.5) {  // field edge: a step across a straight line
         const double ang = rng.uniform(0, 2 * M_PI), px = rng.uniform(0, w), py = rng.uniform(0, h);
-        const double contrast = (rng.uniform() < 0.5 ? -1 : 1) * rng.uniform(0.5, 2.0) * rms;
+        const double sign = rng.uniform() < 0.5 ? -1 : 1;
+        const double contrast = sign * rng.uniform(0.5, 2.0) * rms;
         const double nx = std::cos(ang), ny = std::sin(ang);
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x)
@@ -264,7 +266,8 @@ FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
     shot.image.create(p.height, p.width, CV_16UC1);
     for (int y = 0; y < p.height; ++y)
         for (int x = 0; x < p.width; ++x) {
-            const double e = rng.poisson(std::max(0.0, static_cast<double>(img.at<float>(y, x))) * g) + rn * rng.normal();
+            const double photons = rng.poisson(std::max(0.0, static_cast<double>(img.at<float>(y, x))) * g);
+            const double e = photons + rn * rng.normal();
             const double dn = std::clamp(std::round(e / g), 0.0, p.camera.saturationDn);
             shot.image.at<uint16_t>(y, x) = static_cast<uint16_t>(dn);
         }

@@ -12,20 +12,26 @@ cv::Mat simulateScene(const SceneSimParams& p, uint64_t seed) {
     cv::Mat img(p.height, p.width, CV_32F, cv::Scalar(p.meanDn));
     for (int i = 0; i < p.features; ++i) {
         const double level = p.meanDn + rng.uniform(-1, 1) * p.contrastDn;
-        const cv::Point c(static_cast<int>(rng.uniform(0, p.width)), static_cast<int>(rng.uniform(0, p.height)));
+        // Draws as named values (a constructor's arguments are evaluated in an unspecified order:
+        // GCC right to left, clang left to right); the order is the one GCC builds always had.
+        const double cy = rng.uniform(0, p.height), cx = rng.uniform(0, p.width);
+        const cv::Point c(static_cast<int>(cx), static_cast<int>(cy));
         const int kind = static_cast<int>(rng.uniform(0, 3));
         if (kind == 0) {  // slab
-            const cv::Size s(static_cast<int>(rng.uniform(8, 80)), static_cast<int>(rng.uniform(8, 80)));
+            const double sh = rng.uniform(8, 80), sw = rng.uniform(8, 80);
+            const cv::Size s(static_cast<int>(sw), static_cast<int>(sh));
             const cv::RotatedRect r(c, s, static_cast<float>(rng.uniform(0, 180)));
             cv::Point2f v[4];
             r.points(v);
             std::vector<cv::Point> poly(v, v + 4);
             cv::fillConvexPoly(img, poly, cv::Scalar(level), cv::LINE_AA);
         } else if (kind == 1) {  // blob
-            cv::ellipse(img, c, cv::Size(static_cast<int>(rng.uniform(3, 30)), static_cast<int>(rng.uniform(3, 30))),
-                        rng.uniform(0, 180), 0, 360, cv::Scalar(level), cv::FILLED, cv::LINE_AA);
+            const double angle = rng.uniform(0, 180), ah = rng.uniform(3, 30), aw = rng.uniform(3, 30);
+            cv::ellipse(img, c, cv::Size(static_cast<int>(aw), static_cast<int>(ah)), angle, 0, 360, cv::Scalar(level),
+                        cv::FILLED, cv::LINE_AA);
         } else {  // joint / crack
-            const cv::Point d(static_cast<int>(rng.uniform(-120, 120)), static_cast<int>(rng.uniform(-120, 120)));
+            const double dy = rng.uniform(-120, 120), dx = rng.uniform(-120, 120);
+            const cv::Point d(static_cast<int>(dx), static_cast<int>(dy));
             cv::line(img, c, c + d, cv::Scalar(level), static_cast<int>(rng.uniform(1, 4)), cv::LINE_AA);
         }
     }
