@@ -196,11 +196,12 @@ QString validateCalibParams(const CalibParams& p) { return QString::fromStdStrin
 
 QJsonObject calibParamsToJson(const CalibParams& p) { return toQtJson(calibSchema().toJson(p)); }
 
-bool calibParamsFromJson(const QJsonObject& o, CalibParams* out, QString* error) {
+bool calibParamsFromJson(const QJsonObject& o, CalibParams* out, QString* error, const core::JsonParseResult* doc,
+        const std::vector<std::string>& at) {
     CalibParams p;
     std::string err;
-    if (!calibSchema().fromJson(fromQtJson(o), &p, &err)) return fail(error, err);
-    if (const std::string e = validate(p); !e.empty()) return fail(error, e);
+    if (!calibSchema().fromJson(fromQtJson(o), &p, &err, doc, at)) return fail(error, err);
+    if (const std::string e = validate(p); !e.empty()) return fail(error, (doc ? doc->where(at) : std::string()) + e);
     *out = p;
     return true;
 }

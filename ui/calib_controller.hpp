@@ -52,8 +52,10 @@ QString validateCalibParams(const CalibParams& p);
 /// The session's parameter block: the schema's JSON (every field, always written).
 QJsonObject calibParamsToJson(const CalibParams& p);
 /// Through the schema: unknown keys, wrong types and invalid values are errors naming the key;
-/// missing keys keep their defaults.
-bool calibParamsFromJson(const QJsonObject& o, CalibParams* p, QString* error);
+/// missing keys keep their defaults. With `doc` (the parsed session) a message starts with the
+/// value's file:line:col; `at` is the block's path in the session.
+bool calibParamsFromJson(const QJsonObject& o, CalibParams* p, QString* error, const core::JsonParseResult* doc = nullptr,
+        const std::vector<std::string>& at = {});
 
 /// One group of elevation differences and its statistics.
 struct StatsColumn {

@@ -27,9 +27,11 @@
 #include <map>
 #include <qcustomplot.h>
 
+#include "ui/calib_params_panel.hpp"
 #include "ui/color_maps.hpp"
 #include "ui/param_slider.hpp"
 #include "ui/plot_kit.hpp"
+#include "ui/session_json.hpp"
 #include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
@@ -134,20 +136,6 @@ QTableWidgetItem* cell(const QString& text, Qt::Alignment align = Qt::AlignRight
     auto* it = new QTableWidgetItem(text);
     it->setTextAlignment(align);
     return it;
-}
-
-QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, int decimals, const QString& suffix,
-                     const QString& tip) {
-    auto* s = new QDoubleSpinBox(parent);
-    s->setRange(lo, hi);
-    s->setDecimals(decimals);
-    s->setValue(value);
-    s->setKeyboardTracking(false);
-    s->setAccelerated(true);
-    if (!suffix.isEmpty()) s->setSuffix(" " + suffix);
-    s->setToolTip(tip);
-    s->setSingleStep(std::pow(10.0, -decimals + (decimals > 2 ? 1 : 0)));
-    return s;
 }
 
 // The detectors on a regular grid (the usual layout): origin, spacing and size; else not ok.
@@ -440,72 +428,9 @@ void CalibWorkspace::buildPanel(QWidget* panel) {
     auto* pl = new QVBoxLayout(panel);
     pl->setContentsMargins(4, 4, 4, 4);
 
-    auto* dg = new QGroupBox(tr("Detector surface fit (paper 002 §3.2.3)"), panel);
-    auto* df = new QFormLayout(dg);
-    df->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    m_surfaceModel = new QComboBox(dg);
-    m_surfaceModel->addItems({tr("Elliptical (7 parameters)"), tr("Circular (5 parameters)"),
-                              tr("Auto (elliptical from 10 measured detectors)")});
-    m_fitBackground = new QCheckBox(tr("Fit the background"), dg);
-    m_background = spin(dg, -1e9, 1e9, 0, 2, {}, tr("Background held fixed when it is not fitted (energy unit)"));
-    m_trigger = spin(dg, 0, 1e12, 0, 2, {}, tr("Energies at or below this count as untriggered (energy unit)"));
-    m_saturation = spin(dg, 0, 1e12, 0, 2, {}, tr("Energies at or above this count as saturated (0 = no level)"));
-    m_saturation->setSpecialValueText(tr("none"));
-    m_noiseFromData = new QCheckBox(tr("Estimate the noise from the array"), dg);
-    m_noiseFromData->setToolTip(tr("Floor and relative term from the fit's residuals; off: the noise given below"));
-    m_relNoise = new ParamSlider(tr("Relative noise"), 0, 0.5, 0.05, 3, false, {}, dg);
-    m_relNoise->setToolTipText(tr("Energy noise σ as a fraction of the model energy"));
-    m_noiseFloor = spin(dg, 0, 1e12, 0, 2, {}, tr("Additive energy noise σ (energy unit)"));
-    m_detScaleChi2 = new QCheckBox(tr("Scale the covariance by χ²/dof"), dg);
-    df->addRow(tr("Surface"), m_surfaceModel);
-    df->addRow(m_fitBackground);
-    df->addRow(tr("Fixed background"), m_background);
-    df->addRow(tr("Trigger threshold"), m_trigger);
-    df->addRow(tr("Saturation level"), m_saturation);
-    df->addRow(m_noiseFromData);
-    df->addRow(m_relNoise);
-    df->addRow(tr("Noise floor"), m_noiseFloor);
-    df->addRow(m_detScaleChi2);
-    pl->addWidget(dg);
-
-    auto* pg = new QGroupBox(tr("Pointing && range calibration (eq. 2–5)"), panel);
-    auto* pf = new QFormLayout(pg);
-    pf->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    m_pointingModel = new QComboBox(pg);
-    m_pointingModel->addItems({tr("Single beam (each on its own)"), tr("Dual beam (eq. 3)")});
-    m_solveRange = new QCheckBox(tr("Solve the range biases Δρ"), pg);
-    m_fixRelative = new QCheckBox(tr("Rigid beams (relative rotation fixed)"), pg);
-    m_sigmaH = spin(pg, 0.001, 1000, 0.5, 3, tr("m"), tr("Control-point σ per horizontal axis"));
-    m_sigmaV = spin(pg, 0.001, 1000, 0.05, 3, tr("m"), tr("Control-point height σ"));
-    m_sigmaRange = spin(pg, 0, 1000, 0.1, 3, tr("m"), tr("Range noise per shot"));
-    m_sigmaAtt = spin(pg, 0, 1e5, 1, 2, tr("µrad"), tr("Attitude noise per axis per shot"));
-    m_sigmaOrbit = spin(pg, 0, 1000, 0.05, 3, tr("m"), tr("Orbit position noise per axis"));
-    m_ptScaleChi2 = new QCheckBox(tr("Scale the covariance by χ²/dof"), pg);
-    pf->addRow(tr("Model"), m_pointingModel);
-    pf->addRow(m_solveRange);
-    pf->addRow(m_fixRelative);
-    pf->addRow(tr("σ horizontal"), m_sigmaH);
-    pf->addRow(tr("σ vertical"), m_sigmaV);
-    pf->addRow(tr("σ range"), m_sigmaRange);
-    pf->addRow(tr("σ attitude"), m_sigmaAtt);
-    pf->addRow(tr("σ orbit"), m_sigmaOrbit);
-    pf->addRow(m_ptScaleChi2);
-    pl->addWidget(pg);
-
-    auto* wg = new QGroupBox(tr("Waveform and feature match (eq. 1)"), panel);
-    auto* wf = new QFormLayout(wg);
-    wf->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    m_thredH = spin(wg, 0.001, 100, 0.1, 3, tr("m"), tr("thred_h: a candidate matches when Δh ≤ thred_h (paper 002: 0.1 m)"));
-    m_incidence = spin(wg, 0, 60, 0, 2, tr("°"), tr("Beam incidence from the vertical: h = Δt·c/2/cos θ"));
-    m_smooth = spin(wg, 0, 50, 1, 2, tr("ns"), tr("Gaussian smoothing for the peak search only"));
-    m_minSep = spin(wg, 0.01, 500, 2, 2, tr("ns"), tr("Smallest distance between the two returns"));
-    m_dt = spin(wg, 0.001, 1000, 0.5, 3, tr("ns"), tr("Sample interval for files without a time column (GF-7: 0.5 ns)"));
-    wf->addRow(tr("thred_h"), m_thredH);
-    wf->addRow(tr("Incidence θ"), m_incidence);
-    wf->addRow(tr("Peak-search smoothing"), m_smooth);
-    wf->addRow(tr("Min. separation"), m_minSep);
-    wf->addRow(tr("Sample interval"), m_dt);
-    pl->addWidget(wg);
+    m_params = new CalibParamsPanel(panel);
+    pl->addWidget(m_params);
+    bindParamsPanel(m_params, m_controller, this);
 
     auto* vg = new QGroupBox(tr("View"), panel);
     auto* vf = new QFormLayout(vg);
@@ -519,14 +444,6 @@ void CalibWorkspace::buildPanel(QWidget* panel) {
     pl->addWidget(vg);
     pl->addStretch(1);
 
-    for (QComboBox* c : {m_surfaceModel, m_pointingModel})
-        connect(c, &QComboBox::currentIndexChanged, this, [this] { paramsFromWidgets(); });
-    for (QCheckBox* c : {m_fitBackground, m_noiseFromData, m_detScaleChi2, m_solveRange, m_fixRelative, m_ptScaleChi2})
-        connect(c, &QCheckBox::toggled, this, [this] { paramsFromWidgets(); });
-    for (QDoubleSpinBox* s : {m_background, m_trigger, m_saturation, m_noiseFloor, m_sigmaH, m_sigmaV, m_sigmaRange, m_sigmaAtt,
-                              m_sigmaOrbit, m_incidence, m_thredH, m_smooth, m_minSep, m_dt})
-        connect(s, &QDoubleSpinBox::valueChanged, this, [this] { paramsFromWidgets(); });
-    connect(m_relNoise, &ParamSlider::valueChanged, this, [this] { paramsFromWidgets(); });
     connect(m_colorMap, &QComboBox::currentIndexChanged, this, [this] {
         if (m_controller->hasRun()) showDetector(m_controller->run());
         emit modified();
@@ -596,77 +513,11 @@ void CalibWorkspace::showInputs() {
                                src(in.features)));
 }
 
-void CalibWorkspace::widgetsFromParams() {
-    m_loading = true;
-    const CalibParams& p = m_controller->params();
-    m_surfaceModel->setCurrentIndex(p.detector.model == SurfaceModel::Circular ? 1 : p.detector.model == SurfaceModel::Auto ? 2 : 0);
-    m_noiseFromData->setChecked(p.detector.noise == NoiseSource::FromData);
-    m_relNoise->setEnabled(p.detector.noise == NoiseSource::Given);
-    m_noiseFloor->setEnabled(p.detector.noise == NoiseSource::Given);
-    m_fitBackground->setChecked(p.detector.fitBackground);
-    m_background->setValue(p.detector.background);
-    m_background->setEnabled(!p.detector.fitBackground);
-    m_trigger->setValue(p.detector.triggerThreshold);
-    m_saturation->setValue(p.detector.saturationLevel);
-    m_relNoise->setValue(p.detector.relativeNoise);
-    m_noiseFloor->setValue(p.detector.noiseFloor);
-    m_detScaleChi2->setChecked(p.detector.scaleByChi2);
-    m_pointingModel->setCurrentIndex(p.pointing.model == CalibModel::DualBeam ? 1 : 0);
-    m_solveRange->setChecked(p.pointing.solveRange);
-    m_fixRelative->setChecked(p.pointing.fixRelativeRotation);
-    m_fixRelative->setEnabled(p.pointing.model == CalibModel::DualBeam);
-    m_sigmaH->setValue(p.pointing.sigmaHorizontalM);
-    m_sigmaV->setValue(p.pointing.sigmaVerticalM);
-    m_sigmaRange->setValue(p.pointing.sigmaRangeM);
-    m_sigmaAtt->setValue(p.pointing.sigmaAttitudeRad * 1e6);
-    m_sigmaOrbit->setValue(p.pointing.sigmaOrbitM);
-    m_ptScaleChi2->setChecked(p.pointing.scaleByChi2);
-    m_thredH->setValue(p.match.thresholdM);
-    m_incidence->setValue(p.waveform.incidenceDeg);
-    m_smooth->setValue(p.waveform.smoothSigmaNs);
-    m_minSep->setValue(p.waveform.minSeparationNs);
-    m_dt->setValue(p.waveform.sampleIntervalNs);
-    m_loading = false;
-}
+void CalibWorkspace::widgetsFromParams() { m_params->setParams(m_controller->params()); }
 
-void CalibWorkspace::paramsFromWidgets() {
-    if (m_loading) return;
-    CalibParams p = m_controller->params();
-    const int model = m_surfaceModel->currentIndex();
-    p.detector.model = model == 1 ? SurfaceModel::Circular : model == 2 ? SurfaceModel::Auto : SurfaceModel::Elliptical;
-    p.detector.noise = m_noiseFromData->isChecked() ? NoiseSource::FromData : NoiseSource::Given;
-    m_relNoise->setEnabled(p.detector.noise == NoiseSource::Given);
-    m_noiseFloor->setEnabled(p.detector.noise == NoiseSource::Given);
-    p.detector.fitBackground = m_fitBackground->isChecked();
-    m_background->setEnabled(!p.detector.fitBackground);
-    p.detector.background = m_background->value();
-    p.detector.triggerThreshold = m_trigger->value();
-    p.detector.saturationLevel = m_saturation->value();
-    p.detector.relativeNoise = m_relNoise->value();
-    p.detector.noiseFloor = m_noiseFloor->value();
-    p.detector.scaleByChi2 = m_detScaleChi2->isChecked();
-    p.pointing.model = m_pointingModel->currentIndex() == 1 ? CalibModel::DualBeam : CalibModel::SingleBeam;
-    m_fixRelative->setEnabled(p.pointing.model == CalibModel::DualBeam);
-    p.pointing.solveRange = m_solveRange->isChecked();
-    p.pointing.fixRelativeRotation = m_fixRelative->isChecked() && p.pointing.model == CalibModel::DualBeam;
-    p.pointing.sigmaHorizontalM = m_sigmaH->value();
-    p.pointing.sigmaVerticalM = m_sigmaV->value();
-    p.pointing.sigmaRangeM = m_sigmaRange->value();
-    p.pointing.sigmaAttitudeRad = m_sigmaAtt->value() * 1e-6;
-    p.pointing.sigmaOrbitM = m_sigmaOrbit->value();
-    p.pointing.scaleByChi2 = m_ptScaleChi2->isChecked();
-    p.match.thresholdM = m_thredH->value();
-    p.waveform.incidenceDeg = m_incidence->value();
-    p.waveform.smoothSigmaNs = m_smooth->value();
-    p.waveform.minSeparationNs = m_minSep->value();
-    p.waveform.sampleIntervalNs = m_dt->value();
-    QString err;
-    if (!m_controller->setParams(p, &err)) {
-        emit status(err);
-        return;
-    }
-    emit modified();
-}
+QDoubleSpinBox* CalibWorkspace::triggerField() const { return m_params->field("detector.trigger"); }
+QDoubleSpinBox* CalibWorkspace::thresholdField() const { return m_params->field("waveform.thred_h"); }
+QComboBox* CalibWorkspace::pointingModelBox() const { return m_params->combo("pointing.model"); }
 
 // ---------------------------------------------------------------------------------------------
 
@@ -1167,11 +1018,20 @@ QJsonObject CalibWorkspace::saveState() const {
     return o;
 }
 
-bool CalibWorkspace::restoreState(const QJsonObject& o, QString* error) {
+bool CalibWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
+                                  const std::vector<std::string>& at) {
+    // Each message starts with the session's file:line:col of the value when `doc` is given.
+    auto where = [&](std::vector<std::string> rel) {
+        rel.insert(rel.begin(), at.begin(), at.end());
+        return QString::fromStdString(doc ? doc->where(rel) : std::string());
+    };
+    if (!checkSessionKeys(o, {"inputs", "params", "view"}, "calibration", error, doc, at)) return false;
     CalibParams p;
     QString err;
-    if (!calibParamsFromJson(o["params"].toObject(), &p, &err)) {
-        *error = tr("calibration parameters: %1").arg(err);
+    std::vector<std::string> paramsAt = at;
+    paramsAt.push_back("params");
+    if (!calibParamsFromJson(o["params"].toObject(), &p, &err, doc, paramsAt)) {
+        *error = err;
         return false;
     }
     const QJsonObject i = o["inputs"].toObject();
@@ -1182,9 +1042,14 @@ bool CalibWorkspace::restoreState(const QJsonObject& o, QString* error) {
     } keys[] = {{"detectors", &in.detectors},   {"control_points", &in.controlPoints}, {"beams", &in.beams},
                 {"check_points", &in.checkPoints}, {"differences", &in.differences},     {"group_column", &in.groupColumn},
                 {"waveform", &in.waveform},     {"features", &in.features}};
+    std::vector<std::string> inputKeys;
+    for (const auto& k : keys) inputKeys.push_back(k.key);
+    std::vector<std::string> inputsAt = at;
+    inputsAt.push_back("inputs");
+    if (!checkSessionKeys(i, inputKeys, "calibration inputs", error, doc, inputsAt)) return false;
     for (const auto& k : keys) {
         if (i.contains(k.key) && !i[k.key].isString()) {
-            *error = tr("calibration inputs: %1 must be a path, \"demo\" or empty").arg(k.key);
+            *error = where({"inputs", k.key}) + tr("calibration inputs: %1 must be a path, \"demo\" or empty").arg(k.key);
             return false;
         }
         *k.dst = i[k.key].toString();
@@ -1192,7 +1057,7 @@ bool CalibWorkspace::restoreState(const QJsonObject& o, QString* error) {
     const QJsonObject v = o["view"].toObject();
     const int cmap = v["color_map"].toInt(int(ColorMap::Inferno));
     if (cmap < 0 || cmap >= m_colorMap->count()) {
-        *error = tr("calibration view: colour map %1 out of range").arg(cmap);
+        *error = where({"view", "color_map"}) + tr("calibration view: colour map %1 out of range").arg(cmap);
         return false;
     }
     // Inputs last of the checks: loading them is all or nothing.

@@ -39,7 +39,7 @@ class QCPGraph;
 
 namespace lwb::ui {
 
-class ParamSlider;
+class CalibParamsPanel;
 
 class CalibWorkspace : public QWidget {
     Q_OBJECT
@@ -51,15 +51,19 @@ public:
     /// independent check passes, a double-peak waveform over six candidate features.
     void openDemo();
     QJsonObject saveState() const;
-    /// Validates everything first; on error (*error says what) the previous state stays.
-    bool restoreState(const QJsonObject& state, QString* error);
+    /// Validates everything first; on error (*error says what, with the session's file:line:col
+    /// when `doc`, the parsed session, is given; `at`: this state's path in it) the previous
+    /// state stays.
+    bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                      const std::vector<std::string>& at = {"calibration"});
     /// "detector" (array, pointing, statistics) or "waveform".
     void showTab(const QString& name);
 
     // For tests and screenshots.
-    QDoubleSpinBox* triggerField() const { return m_trigger; }
-    QDoubleSpinBox* thresholdField() const { return m_thredH; }
-    QComboBox* pointingModelBox() const { return m_pointingModel; }
+    QDoubleSpinBox* triggerField() const;
+    QDoubleSpinBox* thresholdField() const;
+    QComboBox* pointingModelBox() const;
+    CalibParamsPanel* paramsPanel() const { return m_params; }
     QCustomPlot* energyPlot() const { return m_energyPlot; }
     QCustomPlot* centrePlot() const { return m_centrePlot; }
     QCustomPlot* pointingConvergencePlot() const { return m_convPlot; }
@@ -82,7 +86,6 @@ private:
     void showStats(const CalibRun& run);
     void showWaveform(const CalibRun& run);
     void showInputs();
-    void paramsFromWidgets();
     void widgetsFromParams();
     void showError(const QString& title, const QString& message);
     QString openFile(const QString& title, const QString& filter);
@@ -97,13 +100,9 @@ private:
     QCPColorScale* m_energyScale;
     QTableWidget *m_statsTable, *m_paramTable, *m_rankTable;
     // Parameters.
-    QComboBox *m_surfaceModel, *m_pointingModel, *m_colorMap;
-    QCheckBox *m_fitBackground, *m_noiseFromData, *m_detScaleChi2, *m_solveRange, *m_fixRelative, *m_ptScaleChi2, *m_showTruth;
-    QDoubleSpinBox *m_background, *m_trigger, *m_saturation, *m_noiseFloor;
-    ParamSlider* m_relNoise;
-    QDoubleSpinBox *m_sigmaH, *m_sigmaV, *m_sigmaRange, *m_sigmaAtt, *m_sigmaOrbit;
-    QDoubleSpinBox *m_incidence, *m_thredH, *m_smooth, *m_minSep, *m_dt;
-    bool m_loading = false;
+    CalibParamsPanel* m_params;
+    QComboBox* m_colorMap;
+    QCheckBox* m_showTruth;
     bool m_fresh = true;  // the next detector result rescales the views
 };
 

@@ -704,8 +704,8 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
     const QJsonObject radBefore = m_radiometry->saveState();
     if (!m_footprint->restoreState(o["footprint"].toObject(), &err, &parsed) ||
         (o.contains("slr") && !m_slr->restoreState(o["slr"].toObject(), &err, &parsed)) ||
-        (o.contains("calibration") && !m_calib->restoreState(o["calibration"].toObject(), &err)) ||
-        (o.contains("radiometry") && !m_radiometry->restoreState(o["radiometry"].toObject(), &err))) {
+        (o.contains("calibration") && !m_calib->restoreState(o["calibration"].toObject(), &err, &parsed)) ||
+        (o.contains("radiometry") && !m_radiometry->restoreState(o["radiometry"].toObject(), &err, &parsed))) {
         QString ignored;
         m_footprint->restoreState(before, &ignored);
         m_slr->restoreState(slrBefore, &ignored);

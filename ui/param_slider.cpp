@@ -33,12 +33,14 @@ public:
         const double span = info.uiHi - info.uiLo;
         setSingleStep(integer ? 1 : span > 0 ? std::pow(10.0, std::floor(std::log10(span / 100))) : 0.01);
         setKeyboardTracking(false);
-        setMinimumWidth(92);
+        setMinimumWidth(86);
         setMaximumWidth(150);
         if (!info.unit.empty()) setSuffix(" " + QString::fromStdString(info.unit));
     }
     QString textFromValue(double v) const override {
         if (m_info.kind == core::FieldKind::Integer) return locale().toString(qlonglong(std::llround(v)));
+        // Whole numbers as such (60000, not the shortest form 6e+04); others in their shortest form.
+        if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 1e9) return locale().toString(qlonglong(v));
         return locale().toString(v, 'g', QLocale::FloatingPointShortest);
     }
     double valueFromText(const QString& text) const override { return parse(text, nullptr); }
@@ -113,11 +115,11 @@ void ParamSlider::build(const QString& label) {
     lay->setContentsMargins(0, 0, 0, 0);
     lay->setSpacing(4);
     m_label = new QLabel(label, this);
-    m_label->setMinimumWidth(110);
+    m_label->setMinimumWidth(100);
     m_slider = new QSlider(Qt::Horizontal, this);
     if (m_intSlider) m_slider->setRange(int(std::ceil(f.uiLo)), int(std::floor(f.uiHi)));
     else m_slider->setRange(0, kSteps);
-    m_slider->setMinimumWidth(70);
+    m_slider->setMinimumWidth(48);
     m_field = new ValueField(f, this);
     lay->addWidget(m_label);
     lay->addWidget(m_slider, 1);

@@ -99,11 +99,12 @@ QString validateRadiometryParams(const RadiometryParams& p) { return QString::fr
 
 QJsonObject radiometryParamsToJson(const RadiometryParams& p) { return toQtJson(radiometrySchema().toJson(p)); }
 
-bool radiometryParamsFromJson(const QJsonObject& o, RadiometryParams* out, QString* error) {
+bool radiometryParamsFromJson(const QJsonObject& o, RadiometryParams* out, QString* error, const core::JsonParseResult* doc,
+        const std::vector<std::string>& at) {
     RadiometryParams p;
     std::string err;
-    if (!radiometrySchema().fromJson(fromQtJson(o), &p, &err)) return fail(error, err);
-    if (const std::string e = validate(p); !e.empty()) return fail(error, e);
+    if (!radiometrySchema().fromJson(fromQtJson(o), &p, &err, doc, at)) return fail(error, err);
+    if (const std::string e = validate(p); !e.empty()) return fail(error, (doc ? doc->where(at) : std::string()) + e);
     *out = p;
     return true;
 }

@@ -44,8 +44,10 @@ QString validateRadiometryParams(const RadiometryParams& p);
 /// The session's parameter block: the schema's JSON (every field, always written).
 QJsonObject radiometryParamsToJson(const RadiometryParams& p);
 /// Through the schema: unknown keys, wrong types and invalid values are errors naming the key;
-/// missing keys keep their defaults.
-bool radiometryParamsFromJson(const QJsonObject& o, RadiometryParams* p, QString* error);
+/// missing keys keep their defaults. With `doc` (the parsed session) a message starts with the
+/// value's file:line:col; `at` is the block's path in the session.
+bool radiometryParamsFromJson(const QJsonObject& o, RadiometryParams* p, QString* error, const core::JsonParseResult* doc = nullptr,
+        const std::vector<std::string>& at = {});
 
 /// The DN image and where it came from.
 struct RadiometryImage {

@@ -28,8 +28,10 @@
 #include <opencv2/imgproc.hpp>
 #include <qcustomplot.h>
 
+#include "ui/calib_params_panel.hpp"
 #include "ui/color_maps.hpp"
 #include "ui/plot_kit.hpp"
+#include "ui/session_json.hpp"
 #include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
@@ -98,19 +100,6 @@ QTableWidgetItem* cell(const QString& text, bool editable = false, Qt::Alignment
     if (editable) f |= Qt::ItemIsEditable;
     it->setFlags(f);
     return it;
-}
-
-QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double value, int decimals, const QString& suffix,
-                     const QString& tip) {
-    auto* s = new QDoubleSpinBox(parent);
-    s->setRange(lo, hi);
-    s->setDecimals(decimals);
-    s->setValue(value);
-    s->setKeyboardTracking(false);
-    s->setAccelerated(true);
-    if (!suffix.isEmpty()) s->setSuffix(" " + suffix);
-    s->setToolTip(tip);
-    return s;
 }
 
 // Refits an image plot to its window when resized (unless the analyst zoomed in); the fit is
@@ -455,47 +444,13 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
 void RadiometryWorkspace::buildPanel(QWidget* panel) {
     auto* pl = new QVBoxLayout(panel);
     pl->setContentsMargins(4, 4, 4, 4);
-    auto* fg = new QGroupBox(tr("Fit and uncertainty (eq. 5–6)"), panel);
-    auto* ff = new QFormLayout(fg);
-    ff->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    m_dnMin = spin(fg, -1e9, 1e9, 100, 0, tr("DN"), tr("Lower end of the camera's linear range (paper 003: 100 DN)"));
-    m_dnMax = spin(fg, -1e9, 1e9, 60000, 0, tr("DN"), tr("Upper end of the camera's linear range (paper 003: 60000 DN)"));
-    m_exclude = new QCheckBox(tr("Leave regions outside the range out"), fg);
-    m_vm = spin(fg, 0, 100, 0.17, 3, tr("%"), tr("Spectrometer uncertainty V_M (paper 003: 0.17 %)"));
-    ff->addRow(tr("Linear range from"), m_dnMin);
-    ff->addRow(tr("to"), m_dnMax);
-    ff->addRow(m_exclude);
-    ff->addRow(tr("V_M"), m_vm);
-    pl->addWidget(fg);
-    auto* ag = new QGroupBox(tr("Reflectance image and check"), panel);
-    auto* af = new QFormLayout(ag);
-    af->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    m_nanOut = new QCheckBox(tr("Pixels outside the range → NaN"), ag);
-    m_uncImage = new QCheckBox(tr("Per-pixel uncertainty image"), ag);
-    m_limit = spin(ag, 0.001, 1000, 5, 2, tr("%"), tr("Relative-error limit (paper 003: 5 %)"));
-    af->addRow(m_nanOut);
-    af->addRow(m_uncImage);
-    af->addRow(tr("Relative-error limit"), m_limit);
-    pl->addWidget(ag);
-    auto* mg = new QGroupBox(tr("Row mosaic (§3.1)"), panel);
-    auto* mf = new QFormLayout(mg);
-    mf->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    m_features = new QComboBox(mg);
-    m_features->addItems({tr("AKAZE (sub-pixel)"), tr("ORB (faster)")});
-    m_motion = new QComboBox(mg);
-    m_motion->addItems({tr("Translation"), tr("Similarity"), tr("Affine"), tr("Homography")});
-    m_blend = new QComboBox(mg);
-    m_blend->addItems({tr("Feather"), tr("Average"), tr("First frame wins")});
-    m_ransac = spin(mg, 0.01, 100, 2, 2, tr("px"), tr("RANSAC inlier distance"));
-    m_mosaicInfo = new QLabel(mg);
+    m_params = new RadiometryParamsPanel(panel);
+    pl->addWidget(m_params);
+    m_mosaicInfo = new QLabel(panel);
     m_mosaicInfo->setWordWrap(true);
     m_mosaicInfo->setTextFormat(Qt::RichText);
-    mf->addRow(tr("Keypoints"), m_features);
-    mf->addRow(tr("Motion"), m_motion);
-    mf->addRow(tr("Blend"), m_blend);
-    mf->addRow(tr("RANSAC"), m_ransac);
-    mf->addRow(m_mosaicInfo);
-    pl->addWidget(mg);
+    m_params->mosaicGroup()->addRow(m_mosaicInfo);
+    bindParamsPanel(m_params, m_controller, this);
     auto* vg = new QGroupBox(tr("View"), panel);
     auto* vf = new QFormLayout(vg);
     m_dnColors = new QComboBox(vg);
@@ -515,12 +470,6 @@ void RadiometryWorkspace::buildPanel(QWidget* panel) {
     pl->addWidget(vg);
     pl->addStretch(1);
 
-    for (QDoubleSpinBox* s : {m_dnMin, m_dnMax, m_vm, m_limit, m_ransac})
-        connect(s, &QDoubleSpinBox::valueChanged, this, [this] { paramsFromWidgets(); });
-    for (QCheckBox* c : {m_exclude, m_nanOut, m_uncImage})
-        connect(c, &QCheckBox::toggled, this, [this] { paramsFromWidgets(); });
-    for (QComboBox* c : {m_features, m_motion, m_blend})
-        connect(c, &QComboBox::currentIndexChanged, this, [this] { paramsFromWidgets(); });
     connect(m_dnColors, &QComboBox::currentIndexChanged, this, [this] {
         showImage();
         emit modified();
@@ -531,44 +480,9 @@ void RadiometryWorkspace::buildPanel(QWidget* panel) {
     });
 }
 
-void RadiometryWorkspace::widgetsFromParams() {
-    m_loading = true;
-    const RadiometryParams& p = m_controller->params();
-    m_dnMin->setValue(p.fit.dnMin);
-    m_dnMax->setValue(p.fit.dnMax);
-    m_exclude->setChecked(p.fit.excludeOutOfRange);
-    m_vm->setValue(p.fit.spectrometerPct);
-    m_nanOut->setChecked(p.outOfRangeToNan);
-    m_uncImage->setChecked(p.uncertaintyImage);
-    m_limit->setValue(p.limitPct);
-    m_features->setCurrentIndex(p.mosaic.features == FeatureType::Orb ? 1 : 0);
-    m_motion->setCurrentIndex(int(p.mosaic.model));
-    m_blend->setCurrentIndex(int(p.mosaic.blend));
-    m_ransac->setValue(p.mosaic.ransacThresholdPx);
-    m_loading = false;
-}
+void RadiometryWorkspace::widgetsFromParams() { m_params->setParams(m_controller->params()); }
 
-void RadiometryWorkspace::paramsFromWidgets() {
-    if (m_loading) return;
-    RadiometryParams p = m_controller->params();
-    p.fit.dnMin = m_dnMin->value();
-    p.fit.dnMax = m_dnMax->value();
-    p.fit.excludeOutOfRange = m_exclude->isChecked();
-    p.fit.spectrometerPct = m_vm->value();
-    p.outOfRangeToNan = m_nanOut->isChecked();
-    p.uncertaintyImage = m_uncImage->isChecked();
-    p.limitPct = m_limit->value();
-    p.mosaic.features = m_features->currentIndex() == 1 ? FeatureType::Orb : FeatureType::Akaze;
-    p.mosaic.model = MotionModel(m_motion->currentIndex());
-    p.mosaic.blend = BlendMode(m_blend->currentIndex());
-    p.mosaic.ransacThresholdPx = m_ransac->value();
-    QString err;
-    if (!m_controller->setParams(p, &err)) {
-        emit status(err);
-        return;
-    }
-    emit modified();
-}
+QDoubleSpinBox* RadiometryWorkspace::vmField() const { return m_params->field("vm_pct"); }
 
 void RadiometryWorkspace::showError(const QString& title, const QString& message) {
     emit status(title + ": " + message);
@@ -1003,11 +917,21 @@ QJsonObject RadiometryWorkspace::saveState() const {
     return o;
 }
 
-bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error) {
+bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
+                                       const std::vector<std::string>& at) {
+    // Each message starts with the session's file:line:col of the value when `doc` is given.
+    auto where = [&](std::vector<std::string> rel) {
+        rel.insert(rel.begin(), at.begin(), at.end());
+        return QString::fromStdString(doc ? doc->where(rel) : std::string());
+    };
+    if (!checkSessionKeys(o, {"demo", "image", "frames", "regions", "params", "view"}, "radiometry", error, doc, at))
+        return false;
     RadiometryParams p;
     QString err;
-    if (!radiometryParamsFromJson(o["params"].toObject(), &p, &err)) {
-        *error = tr("radiometry parameters: %1").arg(err);
+    std::vector<std::string> paramsAt = at;
+    paramsAt.push_back("params");
+    if (!radiometryParamsFromJson(o["params"].toObject(), &p, &err, doc, paramsAt)) {
+        *error = err;
         return false;
     }
     std::vector<PickedRegion> regions;
@@ -1017,12 +941,12 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error) {
         PickedRegion r;
         r.name = j["name"].toString();
         if (!parseRegionRole(j["role"].toString(), &r.role)) {
-            *error = tr("radiometry region %1: role must be fit or check, not \"%2\"").arg(i + 1).arg(j["role"].toString());
+            *error = where({"regions", "[" + std::to_string(i) + "]", "role"}) + tr("radiometry region %1: role must be fit or check, not \"%2\"").arg(i + 1).arg(j["role"].toString());
             return false;
         }
         const QJsonValue refl = j["reflectance"];
         if (!refl.isNull() && !refl.isUndefined() && !refl.isDouble()) {
-            *error = tr("radiometry region %1 (%2): reflectance must be a number or null").arg(i + 1).arg(r.name);
+            *error = where({"regions", "[" + std::to_string(i) + "]", "reflectance"}) + tr("radiometry region %1 (%2): reflectance must be a number or null").arg(i + 1).arg(r.name);
             return false;
         }
         r.reflectance = refl.isDouble() ? refl.toDouble() : NAN;
@@ -1034,7 +958,7 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error) {
                 return a[k].isDouble() && v == std::floor(v) && v >= lo && v <= 1e6;
             };
             if (a.size() != 4 || !coord(0, 0) || !coord(1, 0) || !coord(2, 1) || !coord(3, 1)) {
-                *error = tr("radiometry region %1 (%2): rect must be [x, y, w, h], whole numbers with 0 ≤ x, y ≤ 1000000 "
+                *error = where({"regions", "[" + std::to_string(i) + "]", "rect"}) + tr("radiometry region %1 (%2): rect must be [x, y, w, h], whole numbers with 0 ≤ x, y ≤ 1000000 "
                             "and 1 ≤ w, h ≤ 1000000")
                              .arg(i + 1)
                              .arg(r.name);
@@ -1044,7 +968,7 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error) {
         } else if (j["dn"].isDouble()) {
             r.dn = j["dn"].toDouble();
         } else {
-            *error = tr("radiometry region %1 (%2): needs a rect or a dn").arg(i + 1).arg(r.name);
+            *error = where({"regions", "[" + std::to_string(i) + "]"}) + tr("radiometry region %1 (%2): needs a rect or a dn").arg(i + 1).arg(r.name);
             return false;
         }
         regions.push_back(r);
@@ -1052,7 +976,7 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error) {
     const QJsonObject v = o["view"].toObject();
     const int dnc = v["dn_colors"].toInt(int(ColorMap::Gray)), rc = v["reflectance_colors"].toInt(int(ColorMap::Viridis));
     if (dnc < 0 || dnc >= m_dnColors->count() || rc < 0 || rc >= m_reflColors->count()) {
-        *error = tr("radiometry view: colour map out of range");
+        *error = where({"view"}) + tr("radiometry view: colour map out of range");
         return false;
     }
     QStringList frames;
@@ -1060,7 +984,7 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error) {
     const QString image = o["image"].toString();
     const bool demo = o["demo"].toBool();
     if (frames.size() == 1) {
-        *error = tr("radiometry frames: a mosaic needs at least two frames");
+        *error = where({"frames"}) + tr("radiometry frames: a mosaic needs at least two frames");
         return false;
     }
     // The image: read now (errors leave everything as it was); a mosaic runs in the background

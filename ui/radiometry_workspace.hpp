@@ -30,10 +30,13 @@ class QLabel;
 class QRadioButton;
 class QTableWidget;
 class QCustomPlot;
+class QFormLayout;
 class QCPColorMap;
 class QCPColorScale;
 
 namespace lwb::ui {
+
+class RadiometryParamsPanel;
 
 class RadiometryWorkspace : public QWidget {
     Q_OBJECT
@@ -45,7 +48,10 @@ public:
     void openDemo();
     QJsonObject saveState() const;
     /// Validates everything first; on error (*error says what) the previous state stays.
-    bool restoreState(const QJsonObject& state, QString* error);
+    /// With `doc` (the parsed session) each message starts with the value's file:line:col; `at`
+    /// is this state's path in it.
+    bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                      const std::vector<std::string>& at = {"radiometry"});
 
     /// Adds a region drawn over `imageRect` (image pixels) as if the analyst had dragged it:
     /// the new row is selected and its reflectance cell opened for typing. Returns its index.
@@ -58,7 +64,8 @@ public:
     QTableWidget* regionTable() const { return m_regionTable; }
     QTableWidget* errorTable() const { return m_errorTable; }
     QLabel* fitSummary() const { return m_fitSummary; }
-    QDoubleSpinBox* vmField() const { return m_vm; }
+    QDoubleSpinBox* vmField() const;
+    RadiometryParamsPanel* paramsPanel() const { return m_params; }
     QRadioButton* drawFitButton() const { return m_modeFit; }
     QRadioButton* drawCheckButton() const { return m_modeCheck; }
 
@@ -77,7 +84,6 @@ private:
     void showReflectance(const RadiometryRun& run);
     void fitImage(QCustomPlot* plot);
     void alignImagePlots();
-    void paramsFromWidgets();
     void widgetsFromParams();
     void showError(const QString& title, const QString& message);
     void exportWith(const QString& title, const QString& filter,
@@ -91,10 +97,8 @@ private:
     QTableWidget *m_regionTable, *m_errorTable;
     QLabel *m_info, *m_readout, *m_fitSummary, *m_errorSummary, *m_mosaicInfo;
     QRadioButton *m_modePan, *m_modeFit, *m_modeCheck;
-    QComboBox *m_dnColors, *m_reflColors, *m_features, *m_motion, *m_blend;
-    QCheckBox *m_exclude, *m_nanOut, *m_uncImage;
-    QDoubleSpinBox *m_dnMin, *m_dnMax, *m_vm, *m_limit, *m_ransac;
-    bool m_loading = false;
+    QComboBox *m_dnColors, *m_reflColors;
+    RadiometryParamsPanel* m_params;
     bool m_tableUpdating = false;
     bool m_linking = false;
 };

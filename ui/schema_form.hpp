@@ -154,6 +154,10 @@ public:
                 for (size_t i = 0; i < f->choices.size(); ++i)
                     c->addItem(int(i) < choiceLabels.size() ? choiceLabels[int(i)] : QString::fromStdString(f->choices[i]), int(i));
                 c->setToolTip(tooltip(*f));
+                // A long choice text ("Auto (elliptical from 10 measured detectors)") does not set
+                // the panel's width: the combo takes the width the panel has, the list shows all.
+                c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+                c->setMinimumContentsLength(12);
                 QObject::connect(c, &QComboBox::currentIndexChanged, m_owner, [this, f, c](int i) {
                     const double v = c->itemData(i).toInt();
                     edited(*f, [f, v](P& p) { f->set(p, v); });

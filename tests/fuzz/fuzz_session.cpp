@@ -56,10 +56,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         return 0;
     }
     const QJsonObject o = doc.object();
-    roundTrip<ui::CalibParams>(o["calibration"].toObject()["params"].toObject(), ui::calibParamsFromJson,
-                               ui::calibParamsToJson);
-    roundTrip<ui::RadiometryParams>(o["radiometry"].toObject()["params"].toObject(), ui::radiometryParamsFromJson,
-                                    ui::radiometryParamsToJson);
+    roundTrip<ui::CalibParams>(
+        o["calibration"].toObject()["params"].toObject(),
+        [](const QJsonObject& b, ui::CalibParams* p, QString* e) { return ui::calibParamsFromJson(b, p, e); },
+        ui::calibParamsToJson);
+    roundTrip<ui::RadiometryParams>(
+        o["radiometry"].toObject()["params"].toObject(),
+        [](const QJsonObject& b, ui::RadiometryParams* p, QString* e) { return ui::radiometryParamsFromJson(b, p, e); },
+        ui::radiometryParamsToJson);
     footprintParams(o["footprint"].toObject()["params"].toObject());
     return 0;
 }

@@ -12,6 +12,7 @@
 #include <qcustomplot.h>
 
 #include "core/common/csv.hpp"
+#include "core/common/json.hpp"
 #include "test_support.hpp"
 #include "ui/calib_workspace.hpp"
 
@@ -349,6 +350,30 @@ private slots:
         QCOMPARE(b.controller()->params().detector.triggerThreshold, 120.0);
         QVERIFY(b.controller()->waitIdle(30000));
         QCOMPARE(b.controller()->run().detector.centreN, centre);
+    }
+
+    // A bad value in a session file is named with the file, line and column (issue 9): the
+    // parameter block through the schema, an unknown key, an input that is not a path.
+    void sessionErrorsNameLineAndColumn_data() {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("where");
+        QTest::addColumn<QString>("what");
+        QTest::newRow("rel_noise 3") << "{\n \"calibration\": {\n  \"params\": {\"detector\":\n   {\"rel_noise\": 3}}}}"
+                                     << "s.json:4:" << "rel_noise";
+        QTest::newRow("unknown key") << "{\n \"calibration\": {\n  \"params\": {},\n  \"colour\": 1}}" << "s.json:4:"
+                                     << "colour";
+        QTest::newRow("input not a path") << "{\"calibration\": {\n \"inputs\": {\n  \"detectors\": 7}}}" << "s.json:3:"
+                                          << "detectors";
+        QTest::newRow("dual-only rule")
+            << "{\"calibration\": {\n \"params\": {\"pointing\": {\"fix_relative\": true}}}}" << "s.json:2:"
+            << "fix_relative";
+    }
+    void sessionErrorsNameLineAndColumn() {
+        QFETCH(QString, text);
+        QFETCH(QString, where);
+        QFETCH(QString, what);
+        lwbtest::expectSessionRefused<CalibWorkspace, lwb::core::JsonParseResult>(
+            [](const std::string& t, const std::string& src) { return lwb::core::parseJson(t, src); }, text, "calibration", where, what);
     }
 };
 

@@ -13,6 +13,7 @@
 #include <qcustomplot.h>
 
 #include "core/common/csv.hpp"
+#include "core/common/json.hpp"
 #include "core/radiometry/reflectance.hpp"
 #include "test_support.hpp"
 #include "ui/radiometry_workspace.hpp"
@@ -303,6 +304,27 @@ private slots:
         // Refused naming the key: 12.5 as not a whole number, 2e58 as outside the valid range
         // (the schema checks the range before any conversion to int).
         QVERIFY2(err.contains("min_inliers") && (err.contains("whole number") || err.contains("must be in")), qPrintable(err));
+    }
+
+    // A bad value in a session file is named with the file, line and column (issue 9).
+    void sessionErrorsNameLineAndColumn_data() {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("where");
+        QTest::addColumn<QString>("what");
+        QTest::newRow("limit_pct -1") << "{\"radiometry\": {\n \"params\":\n  {\"limit_pct\": -1}}}" << "s.json:3:"
+                                      << "limit_pct";
+        QTest::newRow("unknown key") << "{\"radiometry\": {\n \"params\": {},\n \"regoins\": []}}" << "s.json:3:"
+                                     << "regoins";
+        QTest::newRow("region role") << "{\"radiometry\": {\"regions\": [\n {\"name\": \"a\", \"role\": \"fit\", \"dn\": 5},\n "
+                                        "{\"name\": \"b\",\n  \"role\": \"both\", \"dn\": 5}]}}"
+                                     << "s.json:4:" << "role";
+    }
+    void sessionErrorsNameLineAndColumn() {
+        QFETCH(QString, text);
+        QFETCH(QString, where);
+        QFETCH(QString, what);
+        lwbtest::expectSessionRefused<RadiometryWorkspace, lwb::core::JsonParseResult>(
+            [](const std::string& t, const std::string& src) { return lwb::core::parseJson(t, src); }, text, "radiometry", where, what);
     }
 
     void sessionRoundTrip() {

@@ -16,6 +16,7 @@
 #include "core/slr/presets.hpp"
 #include "schema_cases.hpp"
 #include "test_support.hpp"
+#include "ui/calib_params_panel.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/footprint_workspace.hpp"
 #include "ui/live_job.hpp"
@@ -160,6 +161,26 @@ private slots:
         everyFieldThroughPanel<FootprintParams, FootprintParamsPanel>(footprint::footprintSchema(), {"preset"});
     }
     void slrPanelEveryField() { everyFieldThroughPanel<SlrParams, SlrParamsPanel>(slr::slrSchema(), {}); }
+    // The calibration and radiometry panels: every field of their tables has a generated widget
+    // that writes exactly its own field (no hand-mapped widgets left).
+    void calibPanelEveryField() { everyFieldThroughPanel<calib::CalibParams, CalibParamsPanel>(calib::calibSchema(), {}); }
+    void radiometryPanelEveryField() {
+        everyFieldThroughPanel<radiometry::RadiometryParams, RadiometryParamsPanel>(radiometry::radiometrySchema(), {});
+    }
+    // Leaving the dual model releases the rigid beams (a rule between fields the form keeps).
+    void calibPanelDualModelRule() {
+        CalibParamsPanel panel;
+        calib::CalibParams p;
+        p.pointing.model = calib::CalibModel::DualBeam;
+        p.pointing.fixRelativeRotation = true;
+        panel.setParams(p);
+        QVERIFY(panel.form().widget("pointing.fix_relative")->isEnabled());
+        panel.combo("pointing.model")->setCurrentIndex(0);
+        QCOMPARE(panel.params().pointing.model, calib::CalibModel::SingleBeam);
+        QVERIFY(!panel.params().pointing.fixRelativeRotation);
+        QVERIFY(calib::validate(panel.params()).empty());
+        QVERIFY(!panel.form().widget("pointing.fix_relative")->isEnabled());
+    }
 
     // Each SLR field: satellite preset -> controller (the pass brings its preset) -> session ->
     // a new workspace -> its params.
