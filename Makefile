@@ -50,7 +50,8 @@ fuzz:
 
 # The whole suite built with clang ASan + UBSan (incl. float-cast-overflow, no recovery) in
 # $(SANITIZE_BUILD): any finding or leak (third-party suppressions: tests/sanitize/lsan.supp)
-# fails. Its duration is not measured yet (docs/fuzzing.md, "Sanitized suite").
+# fails. About 20 minutes from a clean tree on 2 cores (docs/fuzzing.md, "Sanitized suite");
+# .ci/run runs it after make test when the CI budget allows.
 test-sanitize:
 	@LWB_CLANG=1 ./.ci/install-deps
 	@[ -f $(SANITIZE_BUILD)/CMakeCache.txt ] || \
