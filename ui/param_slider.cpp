@@ -1,6 +1,8 @@
 #include "ui/param_slider.hpp"
 
+#include <QApplication>
 #include <QCheckBox>
+#include <QEvent>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -14,6 +16,21 @@ namespace lwb::ui {
 
 namespace {
 constexpr int kSteps = 1000;
+
+// Passes the wheel on to the panel (its scroll area) while the control has no focus.
+class WheelGuard : public QObject {
+public:
+    using QObject::QObject;
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* e) override {
+        if (e->type() != QEvent::Wheel) return false;
+        auto* w = qobject_cast<QWidget*>(watched);
+        if (!w || w->hasFocus()) return false;
+        e->ignore();  // not accepted: QApplication offers it to the parents, the scroll area scrolls
+        return true;
+    }
+};
 
 double roundSignificant(double v, int digits) {
     if (v == 0 || !std::isfinite(v)) return v;
@@ -115,7 +132,9 @@ void ParamSlider::build(const QString& label) {
     lay->setContentsMargins(0, 0, 0, 0);
     lay->setSpacing(4);
     m_label = new QLabel(label, this);
-    m_label->setMinimumWidth(100);
+    // At least 100 px so that the sliders of a panel line up; a longer label keeps its text
+    // (up to 130 px) rather than being cut when the panel is at its narrowest.
+    m_label->setMinimumWidth(std::clamp(m_label->sizeHint().width(), 100, 130));
     m_slider = new QSlider(Qt::Horizontal, this);
     if (m_intSlider) m_slider->setRange(int(std::ceil(f.uiLo)), int(std::floor(f.uiHi)));
     else m_slider->setRange(0, kSteps);
@@ -124,6 +143,8 @@ void ParamSlider::build(const QString& label) {
     lay->addWidget(m_label);
     lay->addWidget(m_slider, 1);
     lay->addWidget(m_field);
+    guardWheel(m_slider);
+    guardWheel(m_field);
     for (const core::SpecialValue& s : f.specials) {
         auto* box = new QCheckBox(QString::fromStdString(s.meaning), this);
         box->setToolTip(tr("%1 = %2").arg(std::isnan(s.value) ? QString("null") : QString::number(s.value),
@@ -168,6 +189,12 @@ void ParamSlider::setValue(double v) {
 void ParamSlider::setSpecialHint(double v) {
     m_hint = v;
     if (specialIndex(m_value) >= 0) show();
+}
+
+void guardWheel(QWidget* control) {
+    static WheelGuard* guard = new WheelGuard(qApp);
+    control->setFocusPolicy(Qt::StrongFocus);  // a wheel over it does not take the focus either
+    control->installEventFilter(guard);
 }
 
 bool ParamSlider::pinned() const {

@@ -17,6 +17,11 @@ class QSlider;
 
 namespace lwb::ui {
 
+/// A value control in a scrolling panel changes on the wheel only once it has the focus (a click
+/// or Tab); before that the wheel scrolls the panel. Without it, scrolling a panel with the
+/// mouse over a slider, field or combo box silently changed the parameter under the pointer.
+void guardWheel(QWidget* control);
+
 class ParamSlider : public QWidget {
     Q_OBJECT
 public:

@@ -158,6 +158,7 @@ public:
                 // the panel's width: the combo takes the width the panel has, the list shows all.
                 c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
                 c->setMinimumContentsLength(12);
+                guardWheel(c);
                 QObject::connect(c, &QComboBox::currentIndexChanged, m_owner, [this, f, c](int i) {
                     const double v = c->itemData(i).toInt();
                     edited(*f, [f, v](P& p) { f->set(p, v); });
@@ -193,6 +194,7 @@ public:
         const Field* f = field(key);
         auto* c = new ValueCombo(*f, std::move(values), m_owner);
         c->setToolTip(tooltip(*f));
+        guardWheel(c);
         QObject::connect(c, &ValueCombo::valueEdited, m_owner,
                          [this, f](double v) { edited(*f, [f, v](P& p) { f->set(p, v); }); });
         bind(f, c, label.isEmpty() ? defaultLabel(*f) : label, [f, c](const P& p) { c->setValue(f->get(p)); });
