@@ -1049,7 +1049,8 @@ bool CalibWorkspace::restoreState(const QJsonObject& o, QString* error, const co
     if (!checkSessionKeys(i, inputKeys, "calibration inputs", error, doc, inputsAt)) return false;
     for (const auto& k : keys) {
         if (i.contains(k.key) && !i[k.key].isString()) {
-            *error = where({"inputs", k.key}) + tr("calibration inputs: %1 must be a path, \"demo\" or empty").arg(k.key);
+            *error = where({"inputs", k.key}) +
+                     tr("calibration inputs: %1 must be a path, \"demo\" or empty").arg(k.key);
             return false;
         }
         *k.dst = i[k.key].toString();

@@ -924,6 +924,11 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error, con
         rel.insert(rel.begin(), at.begin(), at.end());
         return QString::fromStdString(doc ? doc->where(rel) : std::string());
     };
+    auto whereRegion = [&](int i, const char* key) {
+        std::vector<std::string> rel = {"regions", "[" + std::to_string(i) + "]"};
+        if (key) rel.push_back(key);
+        return where(rel);
+    };
     if (!checkSessionKeys(o, {"demo", "image", "frames", "regions", "params", "view"}, "radiometry", error, doc, at))
         return false;
     RadiometryParams p;
@@ -941,12 +946,14 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error, con
         PickedRegion r;
         r.name = j["name"].toString();
         if (!parseRegionRole(j["role"].toString(), &r.role)) {
-            *error = where({"regions", "[" + std::to_string(i) + "]", "role"}) + tr("radiometry region %1: role must be fit or check, not \"%2\"").arg(i + 1).arg(j["role"].toString());
+            *error = whereRegion(i, "role") +
+                     tr("radiometry region %1: role must be fit or check, not \"%2\"").arg(i + 1).arg(j["role"].toString());
             return false;
         }
         const QJsonValue refl = j["reflectance"];
         if (!refl.isNull() && !refl.isUndefined() && !refl.isDouble()) {
-            *error = where({"regions", "[" + std::to_string(i) + "]", "reflectance"}) + tr("radiometry region %1 (%2): reflectance must be a number or null").arg(i + 1).arg(r.name);
+            *error = whereRegion(i, "reflectance") +
+                     tr("radiometry region %1 (%2): reflectance must be a number or null").arg(i + 1).arg(r.name);
             return false;
         }
         r.reflectance = refl.isDouble() ? refl.toDouble() : NAN;
@@ -958,7 +965,8 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error, con
                 return a[k].isDouble() && v == std::floor(v) && v >= lo && v <= 1e6;
             };
             if (a.size() != 4 || !coord(0, 0) || !coord(1, 0) || !coord(2, 1) || !coord(3, 1)) {
-                *error = where({"regions", "[" + std::to_string(i) + "]", "rect"}) + tr("radiometry region %1 (%2): rect must be [x, y, w, h], whole numbers with 0 ≤ x, y ≤ 1000000 "
+                *error = whereRegion(i, "rect") +
+                         tr("radiometry region %1 (%2): rect must be [x, y, w, h], whole numbers with 0 ≤ x, y ≤ 1000000 "
                             "and 1 ≤ w, h ≤ 1000000")
                              .arg(i + 1)
                              .arg(r.name);
@@ -968,7 +976,8 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error, con
         } else if (j["dn"].isDouble()) {
             r.dn = j["dn"].toDouble();
         } else {
-            *error = where({"regions", "[" + std::to_string(i) + "]"}) + tr("radiometry region %1 (%2): needs a rect or a dn").arg(i + 1).arg(r.name);
+            *error = whereRegion(i, nullptr) +
+                     tr("radiometry region %1 (%2): needs a rect or a dn").arg(i + 1).arg(r.name);
             return false;
         }
         regions.push_back(r);
