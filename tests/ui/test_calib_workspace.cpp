@@ -12,7 +12,7 @@
 #include <qcustomplot.h>
 
 #include "core/common/csv.hpp"
-#include "core/common/json.hpp"
+#include "session_refused.hpp"
 #include "test_support.hpp"
 #include "ui/calib_workspace.hpp"
 
@@ -372,8 +372,7 @@ private slots:
         QFETCH(QString, text);
         QFETCH(QString, where);
         QFETCH(QString, what);
-        lwbtest::expectSessionRefused<CalibWorkspace, lwb::core::JsonParseResult>(
-            [](const std::string& t, const std::string& src) { return lwb::core::parseJson(t, src); }, text, "calibration", where, what);
+        lwbtest::expectSessionRefused<CalibWorkspace>(text, "calibration", where, what);
     }
 };
 

@@ -13,8 +13,8 @@
 #include <qcustomplot.h>
 
 #include "core/common/csv.hpp"
-#include "core/common/json.hpp"
 #include "core/radiometry/reflectance.hpp"
+#include "session_refused.hpp"
 #include "test_support.hpp"
 #include "ui/radiometry_workspace.hpp"
 
@@ -323,8 +323,7 @@ private slots:
         QFETCH(QString, text);
         QFETCH(QString, where);
         QFETCH(QString, what);
-        lwbtest::expectSessionRefused<RadiometryWorkspace, lwb::core::JsonParseResult>(
-            [](const std::string& t, const std::string& src) { return lwb::core::parseJson(t, src); }, text, "radiometry", where, what);
+        lwbtest::expectSessionRefused<RadiometryWorkspace>(text, "radiometry", where, what);
     }
 
     void sessionRoundTrip() {
