@@ -2,8 +2,6 @@
 // Helpers shared by the tests: temporary folders, the shared data folder, running the CLI.
 #include <QDir>
 #include <QFile>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QProcess>
 #include <QString>
 #include <QTemporaryDir>
@@ -68,18 +66,5 @@ inline CliRun simulateFootprintFolder(const QString& dir) {
 }
 
 inline QStringList filesIn(const QString& dir) { return QDir(dir).entryList(QDir::Files | QDir::Hidden); }
-
-// Restores `block` of the session `text` (as the main window does: parsed by the core's JSON
-// reader as "s.json") into a fresh Workspace and checks it is refused with a message that starts
-// with `where` ("s.json:LINE:") and names `what`.
-template <class Workspace, class ParseResult, class Parse>
-void expectSessionRefused(Parse parse, const QString& text, const char* block, const QString& where, const QString& what) {
-    const ParseResult doc = parse(text.toStdString(), "s.json");
-    QVERIFY2(doc.ok, doc.error.c_str());
-    Workspace w;
-    QString err;
-    QVERIFY(!w.restoreState(QJsonDocument::fromJson(text.toUtf8()).object()[block].toObject(), &err, &doc));
-    QVERIFY2(err.startsWith(where) && err.contains(what), qPrintable(err));
-}
 
 }  // namespace lwbtest
