@@ -3,6 +3,7 @@
 #include <iostream>
 #include <string>
 
+#include "core/common/allocator.hpp"
 #include "cli_commands.hpp"
 #include "cli_common.hpp"
 
@@ -53,6 +54,7 @@ int dispatch(int argc, char** argv);
 
 // Last resort: an exception escaping a command (out of memory, say) is reported, not a crash.
 int main(int argc, char** argv) {
+    lwb::core::tuneAllocator();
     try {
         return dispatch(argc, argv);
     } catch (const std::exception& e) {

@@ -8,9 +8,11 @@
 #include <QDir>
 #include <QTimer>
 
+#include "core/common/allocator.hpp"
 #include "ui/main_window.hpp"
 
 int main(int argc, char** argv) {
+    lwb::core::tuneAllocator();
     // --screenshot renders without a display, and --help / --version need none.
     bool offscreen = false;
     for (int i = 1; i < argc; ++i) {

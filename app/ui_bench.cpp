@@ -13,6 +13,7 @@
 #include "ui/image_view.hpp"
 #include "ui/main_window.hpp"
 #include "ui/param_slider.hpp"
+#include "core/common/allocator.hpp"
 #include "core/slr/screen.hpp"
 #include "ui/slr_workspace.hpp"
 #include <qcustomplot.h>
@@ -33,6 +34,7 @@ Stats stats(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    lwb::core::tuneAllocator();
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     QApplication::setApplicationName("laserwb-uibench");

@@ -371,6 +371,34 @@ private slots:
         QCOMPARE(r3.magT, r4.magT);
     }
 
+    void scaleSearchIsTheSameOnOneThreadAndMany() {
+        // A sparse pass (four ladders, run side by side): the trials, their order and the
+        // choice must not depend on the number of threads.
+        sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Conventional);
+        sp.points = 6000;
+        sp.signalFraction = 0.05;
+        const sim::SlrSimPass pass = sim::simulateSlrPass(sp, 5);
+        std::vector<ScreenResult> r;
+        for (int threads : {1, 4, 0}) {
+            setScaleSearchThreads(threads);
+            r.push_back(screenSignal(pass.epochS, pass.ocS, ScreenParams{}));
+        }
+        setScaleSearchThreads(0);
+        QVERIFY2(r[0].ok, r[0].error.c_str());
+        QVERIFY(r[0].trials.size() > 30);  // the four ladders of a sparse pass ran
+        for (size_t k = 1; k < r.size(); ++k) {
+            QCOMPARE(r[k].trials.size(), r[0].trials.size());
+            for (size_t i = 0; i < r[0].trials.size(); ++i) {
+                QCOMPARE(r[k].trials[i].magT, r[0].trials[i].magT);
+                QCOMPARE(r[k].trials[i].magOc, r[0].trials[i].magOc);
+                QCOMPARE(r[k].trials[i].score, r[0].trials[i].score);
+            }
+            QCOMPARE(r[k].magT, r[0].magT);
+            QCOMPARE(r[k].magOc, r[0].magOc);
+            QVERIFY(r[k].pointClass == r[0].pointClass);
+        }
+    }
+
     void cancelStopsTheScreening() {
         sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Diffuse);
         const sim::SlrSimPass pass = sim::simulateSlrPass(sp, 2);

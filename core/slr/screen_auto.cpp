@@ -1,6 +1,11 @@
 #include "core/slr/screen_auto.hpp"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <cmath>
 #include <numeric>
 
@@ -9,6 +14,39 @@
 namespace lwb::core::slr {
 
 namespace {
+
+std::atomic<int> gSearchThreads{0};
+
+// job(0) … job(n − 1) on up to min(n, threads) threads, the calling one included; returns when
+// all are done. An exception in a job is rethrown here, after every thread has joined.
+template <class Job>
+void runInParallel(size_t n, Job&& job) {
+    const int want = gSearchThreads.load();
+    const size_t cores = want > 0 ? static_cast<size_t>(want) : std::max(1u, std::thread::hardware_concurrency());
+    const size_t workers = std::min(n, cores);
+    if (workers <= 1) {
+        for (size_t i = 0; i < n; ++i) job(i);
+        return;
+    }
+    std::atomic<size_t> next{0};
+    std::exception_ptr failure;
+    std::mutex failureLock;
+    auto loop = [&] {
+        for (size_t i; (i = next.fetch_add(1)) < n;) {
+            try {
+                job(i);
+            } catch (...) {
+                const std::lock_guard<std::mutex> lock(failureLock);
+                if (!failure) failure = std::current_exception();
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    for (size_t w = 1; w < workers; ++w) pool.emplace_back(loop);
+    loop();
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+}
 
 double medianOf(std::vector<double>& v) {
     if (v.empty()) return 0;
@@ -34,6 +72,8 @@ double quantileOf(const std::vector<double>& v, double q) {
 }
 
 }  // namespace
+
+void setScaleSearchThreads(int threads) { gSearchThreads.store(std::max(0, threads)); }
 
 double PiecewiseTrend::at(double x) const {
     if (pieces.empty()) return 0;
@@ -245,46 +285,56 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
     auto dO = [&](double k) { return oAuto ? gate * std::pow(2.0, -k) : 1.0 / params.magOc; };
     auto dT = [&](double k, double c) { return tAuto ? c / (rate * dO(k) / gate) : 1.0 / params.magT; };
 
-    ScreenParams tp = params;
-    tp.automatic = true;
-    tp.followTrack = false;  // the trials score the image's own result
-    tp.acceptFloorless = false;
+    ScreenParams base = params;
+    base.automatic = true;
+    base.followTrack = false;  // the trials score the image's own result
+    base.acceptFloorless = false;
     // (the trials keep the refinement rounds: a sparse pass against a fitted-trend O-C is judged
     // on its flattened O-C, which decides the scale of passes such as JASON1 7080)
-    std::vector<uint8_t> mask(st.size());
-    struct Best {
-        double score = -1e300;
-        double k = 0, c = 0.1;
+
+    // One trial: the extraction at scale (k, c, conn) on every window, scored. Touches nothing
+    // shared, so trials run side by side (runInParallel); their results are taken in a fixed
+    // order (take), which keeps the choice the same whatever the number of threads.
+    struct Trial {
+        bool usable = false;  // false: the scale is unusable (too coarse in time for the windows)
+        double k = 0, c = 0;
         int conn = 8;
-        bool any = false;
-    } best;
-    // Runs one trial; false when the scale is unusable (too coarse in time for the windows).
-    auto trial = [&](double k, double c, int conn, double* scoreOut) {
+        ScaleTrial rec;
+    };
+    auto runTrial = [&](double k, double c, int conn) {
+        Trial out;
+        out.k = k;
+        out.c = c;
+        out.conn = conn;
         const double dt = dT(k, c), doc = dO(k);
-        if (!(dt > 0) || !(doc > 0) || dt > meanWinSpan / 8) return false;
+        if (!(dt > 0) || !(doc > 0) || dt > meanWinSpan / 8) return out;
+        ScreenParams tp = base;
         tp.magT = 1.0 / dt;
         tp.magOc = 1.0 / doc;
         tp.connectivity = conn;
-        if (tp.magT > 1e15 || tp.magOc > 1e18) return false;
+        if (tp.magT > 1e15 || tp.magOc > 1e18) return out;
         // Each window is screened on its own (as a short pass), so that windows far apart in
         // time and slope do not share slope histograms.
         ExtractionScore total;
         double bandSig = 0;
         int area = 0;
+        std::vector<uint8_t> mask;
         for (const auto& [b, e] : slices) {
             const std::vector<double> wt(st.begin() + static_cast<long>(b), st.begin() + static_cast<long>(e));
             const std::vector<double> wo(so.begin() + static_cast<long>(b), so.begin() + static_cast<long>(e));
             const ScreenResult r = screenSignal(wt, wo, tp, nullptr);
-            if (!r.ok) return false;
+            if (!r.ok) return out;
             area = std::max(area, r.areaLimit);
-            for (size_t i = 0; i < wt.size(); ++i) mask[b + i] = r.pointClass[i] != PointClass::Noise;
-            const ExtractionScore s = scoreExtraction(st.data() + b, so.data() + b, mask.data() + b, e - b);
+            mask.resize(wt.size());
+            for (size_t i = 0; i < wt.size(); ++i) mask[i] = r.pointClass[i] != PointClass::Noise;
+            const ExtractionScore s = scoreExtraction(st.data() + b, so.data() + b, mask.data(), e - b);
             total.score += s.score;
             total.truePositives += s.truePositives;
             total.selected += s.selected;
             bandSig += s.bandSignal;
         }
-        ScaleTrial tr;
+        out.usable = true;
+        ScaleTrial& tr = out.rec;
         tr.magT = tp.magT;
         tr.magOc = tp.magOc;
         tr.areaLimit = area;
@@ -293,19 +343,34 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         tr.selected = total.selected;
         tr.precisionEst = total.selected > 0 ? total.truePositives / static_cast<double>(total.selected) : 0;
         tr.recallEst = bandSig > 0 ? std::min(1.0, total.truePositives / bandSig) : 0;
-        res.trials.push_back(tr);
-        *scoreOut = total.score;
-        if (!best.any || total.score > best.score) {
+        return out;
+    };
+    struct Best {
+        double score = -1e300;
+        double k = 0, c = 0.1;
+        int conn = 8;
+        bool any = false;
+    } best;
+    auto take = [&](const Trial& tr) {
+        if (!tr.usable) return;
+        res.trials.push_back(tr.rec);
+        if (!best.any || tr.rec.score > best.score) {
             best.any = true;
-            best.score = total.score;
-            best.k = k;
-            best.c = c;
-            best.conn = conn;
+            best.score = tr.rec.score;
+            best.k = tr.k;
+            best.c = tr.c;
+            best.conn = tr.conn;
         }
-        return true;
+    };
+    // Independent trials (a list of scales) side by side, taken in list order.
+    auto trialsInOrder = [&](const std::vector<std::array<double, 3>>& scales) {
+        std::vector<Trial> out(scales.size());
+        runInParallel(scales.size(), [&](size_t i) {
+            if (!cancelled(fb)) out[i] = runTrial(scales[i][0], scales[i][1], static_cast<int>(scales[i][2]));
+        });
+        for (const Trial& tr : out) take(tr);
     };
 
-    double sc = 0;
     if (oAuto) {
         // Coarse ladders over the O-C scale, from coarse to fine; each stops when the time pixel
         // gets too long for the windows or after 4 trials below its best. With the time pixel
@@ -313,41 +378,45 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         // suits dense passes (kHz, many returns per second), the sparse ones suit passes of a few
         // returns per second with a sharp track in a wide gate (e.g. MLRS 10 Hz multi-photon
         // passes: 0.1 ns jitter in a 10 µs gate), whose track only forms regions with time pixels
-        // of a few seconds, i.e. far below 0.1 noise points per pixel.
+        // of a few seconds, i.e. far below 0.1 noise points per pixel. The ladders are
+        // independent of each other and run side by side.
         const bool sparse = params.sparseRateBelow <= 0 || res.ratePerS < params.sparseRateBelow;
         const std::vector<double> ladderC = tAuto && sparse ? std::vector<double>{0.1, 0.1 / 8, 0.1 / 64, 0.1 / 512}
                                                             : std::vector<double>{0.1};
         // (A coarse-to-fine ladder — every other O-C scale, patience 2 — halves the time of a
         // sparse pass but picks a scale on JASON1 7080 that finds only 70 % of its track: not used.)
-        const int kStep = 1, patience = 4;
-        for (double c : ladderC) {
+        const int patience = 4;
+        std::vector<std::vector<Trial>> ladders(ladderC.size());
+        runInParallel(ladderC.size(), [&](size_t l) {
+            const double c = ladderC[l];
             int worse = 0;
             double ladderBest = -1e300;
-            for (int k = 2; k <= 24; k += kStep) {
+            for (int k = 2; k <= 24; ++k) {
                 if (cancelled(fb)) break;
-                if (!trial(k, c, conn0, &sc)) {
+                ladders[l].push_back(runTrial(k, c, conn0));
+                const Trial& tr = ladders[l].back();
+                if (!tr.usable) {
                     if (tAuto && dT(k, c) > meanWinSpan / 8) break;
                     continue;
                 }
-                if (sc > ladderBest) {
-                    ladderBest = sc;
+                if (tr.rec.score > ladderBest) {
+                    ladderBest = tr.rec.score;
                     worse = 0;
                 } else if (ladderBest > 0 && ++worse >= patience) {
                     break;
                 }
             }
-        }
-        if (kStep > 1 && best.any && !cancelled(fb)) {
-            const double k0 = best.k, c0 = best.c;
-            for (double k : {k0 - 1, k0 + 1})
-                if (k >= 2) trial(k, c0, conn0, &sc);
-        }
+        });
+        for (const auto& ladder : ladders)
+            for (const Trial& tr : ladder) take(tr);
     } else if (tAuto) {
         int worse = 0;
         for (int j = -7; j <= 3; ++j) {
             if (cancelled(fb)) break;
             const double c = std::pow(2.0, j);
-            if (!trial(0, c, conn0, &sc)) {
+            const Trial tr = runTrial(0, c, conn0);
+            take(tr);
+            if (!tr.usable) {
                 if (dT(0, c) > meanWinSpan / 8) break;
                 continue;
             }
@@ -355,7 +424,7 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
             if (worse >= 4) break;
         }
     } else {
-        trial(0, 0.1, conn0, &sc);
+        take(runTrial(0, 0.1, conn0));
     }
     if (cancelled(fb)) {
         res.error = "cancelled";
@@ -365,22 +434,19 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         res.error = "the automatic mode found no usable scale (the pass is too short or too sparse for a binary image)";
         return res;
     }
-    // Refinement around the best: half steps in the free dimensions.
+    // Refinement around the best: half steps in the free dimensions, then the other connectivity.
     {
         const double k0 = best.k, c0 = best.c;
-        std::vector<std::pair<double, double>> cand;
+        std::vector<std::array<double, 3>> cand;
         const std::vector<double> ks = oAuto ? std::vector<double>{k0 - 0.5, k0, k0 + 0.5} : std::vector<double>{k0};
         std::vector<double> cs = {c0};
         if (tAuto) cs = oAuto ? std::vector<double>{c0 / 2, c0, c0 * 2} : std::vector<double>{c0 / std::sqrt(2.0), c0, c0 * std::sqrt(2.0)};
         for (double k : ks)
             for (double c : cs)
-                if (!(k == k0 && c == c0)) cand.push_back({k, c});
-        for (const auto& [k, c] : cand) {
-            if (cancelled(fb)) break;
-            trial(k, c, conn0, &sc);
-        }
+                if (!(k == k0 && c == c0)) cand.push_back({k, c, static_cast<double>(conn0)});
+        trialsInOrder(cand);
     }
-    if (cAuto && !cancelled(fb)) trial(best.k, best.c, conn0 == 8 ? 4 : 8, &sc);
+    if (cAuto && !cancelled(fb)) trialsInOrder({{best.k, best.c, conn0 == 8 ? 4.0 : 8.0}});
     if (cancelled(fb)) {
         res.error = "cancelled";
         return res;
