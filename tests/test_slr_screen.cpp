@@ -168,6 +168,46 @@ private slots:
         }
     }
 
+    void regionAreasAgreeWithTheImage() {
+        // regionAreas (the automatic area limit's null model) must find exactly the regions of
+        // buildBinaryImage: random points at occupancies from sparse to percolating, in time
+        // order (the per-row path) and shuffled (the general path), both connectivities, and
+        // negative coordinates.
+        sim::Rng rng(77);
+        for (int round = 0; round < 12; ++round) {
+            const size_t n = 200 + static_cast<size_t>(rng.uniform() * 3000);
+            std::vector<double> t(n), oc(n);
+            for (size_t i = 0; i < n; ++i) {
+                t[i] = -50 + 100.0 * static_cast<double>(i) / static_cast<double>(n);
+                oc[i] = -1e-7 + 2e-7 * rng.uniform();
+            }
+            MappingParams mp;
+            mp.magT = 0.2 + rng.uniform() * 2;
+            mp.magOc = (0.05 + rng.uniform()) * 1e9;
+            mp.connectivity = round % 2 ? 4 : 8;
+            for (int shuffled = 0; shuffled < 2; ++shuffled) {
+                if (shuffled)
+                    for (size_t i = n - 1; i > 0; --i) {
+                        const size_t j = static_cast<size_t>(rng.uniform() * static_cast<double>(i + 1)) % (i + 1);
+                        std::swap(t[i], t[j]);
+                        std::swap(oc[i], oc[j]);
+                    }
+                const BinaryImage img = buildBinaryImage(t, oc, mp);
+                QVERIFY(img.ok);
+                std::vector<int64_t> want, got = regionAreas(t, oc, mp);
+                for (const Region& r : img.regions) want.push_back(r.area);
+                std::sort(want.begin(), want.end());
+                std::sort(got.begin(), got.end());
+                QVERIFY2(got == want, qPrintable(QString("round %1 shuffled %2: %3 regions vs %4")
+                                                     .arg(round).arg(shuffled).arg(got.size()).arg(want.size())));
+            }
+        }
+        MappingParams bad;
+        bad.magT = 0;
+        QVERIFY(regionAreas({1, 2}, {0, 0}, bad).empty());
+        QVERIFY(regionAreas({1, NAN}, {0, 0}, MappingParams{}).empty());
+    }
+
     // ---------------------------------------------------------------- step 3: area split
     void areaSplit() {
         const std::vector<Region> regs = {regionAt(0, 0, 1), regionAt(5, 5, 3), regionAt(9, 9, 5), regionAt(20, 1, 2)};

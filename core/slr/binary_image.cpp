@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <numeric>
+#include <tuple>
 
 #include "core/common/text.hpp"
 
@@ -64,6 +65,36 @@ inline bool mapOne(double t, double oc, double magT, double magOc, int64_t* row,
     if (!(std::fabs(r) <= kCoordLimit) || !(std::fabs(c) <= kCoordLimit)) return false;
     *row = roundToInt64(r);
     *col = roundToInt64(c);
+    return true;
+}
+
+// Labelling: pixels sorted by (row, col), so the neighbours of a pixel in the row above form a
+// contiguous run found with a moving pointer, and the left neighbour is the previous pixel.
+// 4-connectivity links (r, c−1) and (r−1, c); 8 adds (r−1, c±1). False when cancelled.
+bool linkPixels(const int64_t* row, const int64_t* col, size_t pixels, bool eight, UnionFind& uf, const Feedback* fb) {
+    size_t rowStart = 0, prevStart = 0, prevEnd = 0;  // current row run start; previous row run [prevStart, prevEnd)
+    bool havePrev = false;
+    size_t j = 0;  // pointer into the previous row
+    for (size_t p = 0; p < pixels; ++p) {
+        const int64_t r = row[p], c = col[p];
+        if (p == 0 || r != row[p - 1]) {
+            // New row: the previous row run is the one just finished, if it is exactly r − 1.
+            if (p > 0) {
+                havePrev = row[p - 1] == r - 1;
+                prevStart = rowStart;
+                prevEnd = p;
+            }
+            rowStart = p;
+            j = prevStart;
+        }
+        if (p > rowStart && col[p - 1] == c - 1) uf.unite(static_cast<uint32_t>(p - 1), static_cast<uint32_t>(p));
+        if (havePrev) {
+            const int64_t lo = eight ? c - 1 : c, hi = eight ? c + 1 : c;
+            while (j < prevEnd && col[j] < lo) ++j;
+            for (size_t k = j; k < prevEnd && col[k] <= hi; ++k) uf.unite(static_cast<uint32_t>(k), static_cast<uint32_t>(p));
+        }
+        if ((p & 0xFFFFF) == 0xFFFFF && cancelled(fb)) return false;
+    }
     return true;
 }
 }  // namespace
@@ -190,37 +221,10 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
     img.pixelPointStart.push_back(static_cast<uint32_t>(n));
     items.reset();
 
-    // Labelling: pixels are sorted by (row, col), so the neighbours of a pixel in the row above
-    // form a contiguous run found with a moving pointer, and the left neighbour is the previous
-    // pixel. 4-connectivity links (r, c−1) and (r−1, c); 8 adds (r−1, c±1).
     UnionFind uf(pixels);
-    const bool eight = params.connectivity == 8;
-    size_t rowStart = 0, prevStart = 0, prevEnd = 0;  // current row run start; previous row run [prevStart, prevEnd)
-    bool havePrev = false;
-    size_t j = 0;  // pointer into the previous row
-    for (size_t p = 0; p < pixels; ++p) {
-        const int64_t r = img.pixelRow[p], c = img.pixelCol[p];
-        if (p == 0 || r != img.pixelRow[p - 1]) {
-            // New row: the previous row run is the one just finished, if it is exactly r − 1.
-            if (p > 0) {
-                havePrev = img.pixelRow[p - 1] == r - 1;
-                prevStart = rowStart;
-                prevEnd = p;
-            }
-            rowStart = p;
-            j = prevStart;
-        }
-        if (p > rowStart && img.pixelCol[p - 1] == c - 1) uf.unite(static_cast<uint32_t>(p - 1), static_cast<uint32_t>(p));
-        if (havePrev) {
-            const int64_t lo = eight ? c - 1 : c, hi = eight ? c + 1 : c;
-            while (j < prevEnd && img.pixelCol[j] < lo) ++j;
-            for (size_t k = j; k < prevEnd && img.pixelCol[k] <= hi; ++k)
-                uf.unite(static_cast<uint32_t>(k), static_cast<uint32_t>(p));
-        }
-        if ((p & 0xFFFFF) == 0xFFFFF && cancelled(fb)) {
-            img.error = "cancelled";
-            return img;
-        }
+    if (!linkPixels(img.pixelRow.data(), img.pixelCol.data(), pixels, params.connectivity == 8, uf, fb)) {
+        img.error = "cancelled";
+        return img;
     }
     // Compact labels in order of each region's first pixel; per-region statistics.
     img.pixelRegion.assign(pixels, 0);
@@ -261,6 +265,57 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
     }
     img.ok = true;
     return img;
+}
+
+std::vector<int64_t> regionAreas(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params) {
+    std::vector<int64_t> areas;
+    const size_t n = std::min(t.size(), oc.size());
+    if (!validate(params).empty() || n == 0 || n > kMaxPoints) return areas;
+    std::vector<int64_t> rows(n), cols(n);
+    bool rowsInOrder = true;
+    for (size_t i = 0; i < n; ++i) {
+        if (!mapOne(t[i], oc[i], params.magT, params.magOc, &rows[i], &cols[i])) return areas;
+        rowsInOrder = rowsInOrder && (i == 0 || rows[i] >= rows[i - 1]);
+    }
+    // The distinct pixels in (row, col) order. Points in time order (the usual case) are in row
+    // order already: only each row's columns are sorted.
+    if (rowsInOrder) {
+        size_t out = 0;
+        for (size_t a = 0; a < n;) {
+            size_t b = a + 1;
+            while (b < n && rows[b] == rows[a]) ++b;
+            std::sort(cols.begin() + static_cast<long>(a), cols.begin() + static_cast<long>(b));
+            for (size_t i = a; i < b; ++i)
+                if (i == a || cols[i] != cols[i - 1]) {
+                    rows[out] = rows[a];
+                    cols[out++] = cols[i];
+                }
+            a = b;
+        }
+        rows.resize(out);
+        cols.resize(out);
+    } else {
+        std::vector<std::pair<int64_t, int64_t>> px(n);
+        for (size_t i = 0; i < n; ++i) px[i] = {rows[i], cols[i]};
+        std::sort(px.begin(), px.end());
+        px.erase(std::unique(px.begin(), px.end()), px.end());
+        rows.resize(px.size());
+        cols.resize(px.size());
+        for (size_t i = 0; i < px.size(); ++i) std::tie(rows[i], cols[i]) = px[i];
+    }
+    const size_t pixels = rows.size();
+    UnionFind uf(pixels);
+    linkPixels(rows.data(), cols.data(), pixels, params.connectivity == 8, uf, nullptr);
+    std::vector<uint32_t> slot(pixels, UINT32_MAX);
+    for (size_t p = 0; p < pixels; ++p) {
+        const uint32_t root = uf.find(static_cast<uint32_t>(p));
+        if (slot[root] == UINT32_MAX) {
+            slot[root] = static_cast<uint32_t>(areas.size());
+            areas.push_back(0);
+        }
+        ++areas[slot[root]];
+    }
+    return areas;
 }
 
 }  // namespace lwb::core::slr

@@ -67,4 +67,10 @@ bool mapPoint(double t, double oc, double magT, double magOc, int64_t* row, int6
 BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params,
                              const Feedback* fb = nullptr);
 
+/// The areas (pixels) of the regions buildBinaryImage() would find, in no particular order, and
+/// nothing else: the same pixels and links at a fraction of the cost (no index matrix, no
+/// region statistics, no 64-bit sort when the points come in time order). Empty when the
+/// parameters are invalid, a point is not finite or maps beyond 2^61, or there are no points.
+std::vector<int64_t> regionAreas(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params);
+
 }  // namespace lwb::core::slr

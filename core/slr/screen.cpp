@@ -72,12 +72,12 @@ int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& 
     sim::Rng rng(0x6e756c6cULL ^ static_cast<uint64_t>(nt.size()));
     no.resize(nt.size());
     for (double& v : no) v = oLo + (oHi - oLo) * rng.uniform();
-    const BinaryImage img = buildBinaryImage(nt, no, mapping, nullptr);
-    if (!img.ok || img.regions.empty()) return 2;
+    const std::vector<int64_t> areas = regionAreas(nt, no, mapping);
+    if (areas.empty()) return 2;
     std::vector<size_t> atLeast(66, 0);  // atLeast[a] = regions with area ≥ a (a ≤ 65)
-    for (const auto& r : img.regions) ++atLeast[static_cast<size_t>(std::min<int64_t>(r.area, 65))];
+    for (int64_t area : areas) ++atLeast[static_cast<size_t>(std::min<int64_t>(area, 65))];
     for (size_t a = 64; a >= 1; --a) atLeast[a] += atLeast[a + 1];
-    const double allowed = std::max(1.0, tolerance * static_cast<double>(img.regions.size()));
+    const double allowed = std::max(1.0, tolerance * static_cast<double>(areas.size()));
     for (size_t a = 2; a <= 64; ++a)
         if (static_cast<double>(atLeast[a]) <= allowed) return static_cast<int>(a);
     return 64;
