@@ -11,6 +11,7 @@
 #include "cli_common.hpp"
 #include "cli_commands.hpp"
 #include "core/common/atomic_file.hpp"
+#include "core/common/image_codecs.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
 #include "core/footprint/crlb.hpp"
@@ -446,7 +447,7 @@ int cmdBenchFootprint(int argc, char** argv) {
         shot.image.convertTo(f, CV_32F);
         rois.push_back(f);
         std::vector<uchar> buf;
-        cv::imencode(".png", shot.image, buf);
+        core::imageEncode(".png", shot.image, buf);
         pngs.push_back(std::move(buf));
     }
     using clock = std::chrono::steady_clock;
@@ -476,7 +477,7 @@ int cmdBenchFootprint(int argc, char** argv) {
     }
     const FootprintParams def;
     const auto [rate, us] = run([&](size_t i) {
-        cv::Mat img = cv::imdecode(pngs[i], cv::IMREAD_UNCHANGED), f;
+        cv::Mat img = core::imageDecode(cv::Mat(pngs[i]), cv::IMREAD_UNCHANGED), f;
         img.convertTo(f, CV_32F);
         sink += processRoi(f, def).verdict == Verdict::Good;
     });

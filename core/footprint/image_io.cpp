@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/image_codecs.hpp"
 #include "core/common/image_header.hpp"
 #include "core/common/text.hpp"
 
@@ -90,7 +91,7 @@ ImageReadResult readFrame(const std::string& path, const ImageReadParams& params
                 return r;
             }
             const cv::Mat buf(1, static_cast<int>(std::min<size_t>(bytes.size(), INT32_MAX)), CV_8U, bytes.data());
-            m = cv::imdecode(buf, cv::IMREAD_UNCHANGED);
+            m = imageDecode(buf, cv::IMREAD_UNCHANGED);
         } catch (const cv::Exception& e) {
             return fail(path, std::string("cannot decode image: ") + e.what());
         } catch (const std::bad_alloc&) {
@@ -176,7 +177,7 @@ bool writeFrame16(const std::string& path, const cv::Mat& image16, std::string* 
     } else {
         std::vector<uchar> buf;
         try {
-            if (!cv::imencode("." + ext, image16, buf)) {
+            if (!imageEncode("." + ext, image16, buf)) {
                 *error = path + ": cannot encode as ." + ext;
                 return false;
             }

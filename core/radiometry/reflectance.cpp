@@ -6,8 +6,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/atomic_file.hpp"
-#include "core/common/image_header.hpp"
 #include "core/common/csv.hpp"
+#include "core/common/image_codecs.hpp"
+#include "core/common/image_header.hpp"
 #include "core/common/text.hpp"
 
 namespace lwb::core::radiometry {
@@ -534,7 +535,7 @@ bool writeImage(const std::string& path, const cv::Mat& image, std::string* erro
     }
     std::vector<uchar> buf;
     try {
-        if (!cv::imencode("." + ext, image, buf)) {
+        if (!imageEncode("." + ext, image, buf)) {
             *error = path + ": cannot encode as ." + ext;
             return false;
         }
@@ -568,7 +569,7 @@ bool readImageAnyDepth(const std::string& path, cv::Mat* out, std::string* error
     cv::Mat img;
     try {
         const cv::Mat buf(1, static_cast<int>(std::min<size_t>(bytes.size(), INT32_MAX)), CV_8U, bytes.data());
-        img = cv::imdecode(buf, cv::IMREAD_UNCHANGED);
+        img = imageDecode(buf, cv::IMREAD_UNCHANGED);
         if (!img.empty() && img.channels() == 3) cv::cvtColor(img, img, cv::COLOR_BGR2GRAY);
         if (!img.empty() && img.channels() == 4) cv::cvtColor(img, img, cv::COLOR_BGRA2GRAY);
     } catch (const cv::Exception& e) {

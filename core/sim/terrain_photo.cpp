@@ -6,6 +6,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "core/common/image_codecs.hpp"
+
 namespace lwb::core::sim {
 
 std::vector<std::string> terrainPhotoDirs() {
@@ -16,6 +18,14 @@ std::vector<std::string> terrainPhotoDirs() {
 }
 
 namespace {
+cv::Mat readPhoto(const std::string& path) {
+    try {
+        return imageRead(path, cv::IMREAD_COLOR);
+    } catch (const cv::Exception&) {  // no codec module: as if the photograph were absent
+        return {};
+    }
+}
+
 TerrainPhotos loadPhotos() {
     TerrainPhotos t;
     const char* files[] = {"aero1.jpg", "aero3.jpg"};
@@ -23,7 +33,7 @@ TerrainPhotos loadPhotos() {
         TerrainPhotos cand;
         cand.dir = dir;
         for (const char* f : files) {
-            const cv::Mat bgr = cv::imread(dir + "/" + f, cv::IMREAD_COLOR);
+            const cv::Mat bgr = readPhoto(dir + "/" + f);
             if (bgr.empty() || bgr.cols < 200 || bgr.rows < 200) continue;
             const int photo = static_cast<int>(cand.names.size());
             cand.names.emplace_back(f);

@@ -1,0 +1,89 @@
+#include "core/common/image_codecs.hpp"
+
+#include <dlfcn.h>
+#include <mutex>
+#include <unistd.h>
+
+#include "core/codecs_module/codec_api.hpp"
+
+#ifndef LWB_CODECS_BUILD_PATH
+#define LWB_CODECS_BUILD_PATH ""
+#endif
+
+namespace lwb::core {
+namespace codecs {
+namespace {
+std::string exeDir() {
+    char buf[4096];
+    const ssize_t n = readlink("/proc/self/exe", buf, sizeof(buf) - 1);
+    if (n <= 0) return {};
+    const std::string p(buf, static_cast<size_t>(n));
+    const size_t slash = p.rfind('/');
+    return slash == std::string::npos ? std::string() : p.substr(0, slash);
+}
+
+struct Loaded {
+    const CodecModule* module = nullptr;
+    std::string why;
+};
+
+Loaded load() {
+    Loaded l;
+    std::vector<std::string> candidates;
+    if (const char* env = std::getenv("LWB_CODECS"); env && *env) candidates.emplace_back(env);
+    if (const std::string d = exeDir(); !d.empty()) candidates.push_back(d + "/liblaserwb_codecs.so");
+    if (*LWB_CODECS_BUILD_PATH) candidates.emplace_back(LWB_CODECS_BUILD_PATH);
+    for (const std::string& path : candidates) {
+        if (access(path.c_str(), R_OK) != 0) {
+            l.why += (l.why.empty() ? "" : "; ") + path + ": not found";
+            continue;
+        }
+        void* h = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!h) {
+            const char* e = dlerror();
+            l.why += (l.why.empty() ? "" : "; ") + std::string(e ? e : path + ": cannot be loaded");
+            continue;
+        }
+        using Entry = const CodecModule* (*)();
+        const auto entry = reinterpret_cast<Entry>(dlsym(h, "lwb_codec_module"));
+        const CodecModule* m = entry ? entry() : nullptr;
+        if (!m || m->abi != kCodecAbi || m->size != sizeof(CodecModule)) {
+            l.why += (l.why.empty() ? "" : "; ") + path + ": not the codec module of this build";
+            continue;  // (left loaded: unloading a library that may have run constructors is not worth the risk)
+        }
+        l.module = m;
+        l.why.clear();
+        return l;
+    }
+    l.why = "the image codec module (liblaserwb_codecs.so) cannot be loaded: " + l.why;
+    return l;
+}
+}  // namespace
+
+const CodecModule* codecModule(std::string* why) {
+    static std::once_flag once;
+    static Loaded loaded;
+    std::call_once(once, [] { loaded = load(); });
+    if (!loaded.module && why) *why = loaded.why;
+    return loaded.module;
+}
+
+namespace {
+const CodecModule& required() {
+    std::string why;
+    const CodecModule* m = codecModule(&why);
+    if (!m) throw cv::Exception(cv::Error::StsError, why, "image codecs", __FILE__, __LINE__);
+    return *m;
+}
+}  // namespace
+}  // namespace codecs
+
+cv::Mat imageDecode(const cv::Mat& buf, int flags) { return codecs::required().decode(buf, flags); }
+
+bool imageEncode(const std::string& ext, const cv::Mat& image, std::vector<uchar>& buf, const std::vector<int>& params) {
+    return codecs::required().encode(ext, image, &buf, params);
+}
+
+cv::Mat imageRead(const std::string& path, int flags) { return codecs::required().read(path, flags); }
+
+}  // namespace lwb::core
