@@ -181,6 +181,52 @@ double evaluateTrend(const PostfitResult& r, double t) {
     return trendAt(r.coefficients, (t - r.tCenter) / r.tHalfSpan);
 }
 
+namespace {
+// trendAt(c, (t[i] − centre) / halfSpan) for every i, eight points at a time: the same
+// operations in the same order for each point (so the same values), but eight independent
+// recurrences in flight instead of one chain of divisions.
+void polynomialMany(const std::vector<double>& c, double centre, double halfSpan, const double* t, size_t n, double* out) {
+    constexpr size_t B = 8;
+    const int d = static_cast<int>(c.size()) - 1;
+    double u[B], b0[B], b1[B], b2[B], s[B];
+    for (size_t a = 0; a < n; a += B) {
+        const size_t m = std::min(B, n - a);
+        for (size_t j = 0; j < m; ++j) {
+            u[j] = (t[a + j] - centre) / halfSpan;
+            b0[j] = 1;
+            s[j] = 0;
+            s[j] += c[0] * b0[j];
+        }
+        if (d >= 1)
+            for (size_t j = 0; j < m; ++j) {
+                b1[j] = u[j];
+                s[j] += c[1] * b1[j];
+            }
+        for (int k = 1; k < d; ++k) {
+            for (size_t j = 0; j < m; ++j) {
+                b2[j] = ((2 * k + 1) * u[j] * b1[j] - k * b0[j]) / (k + 1);
+                s[j] += c[static_cast<size_t>(k + 1)] * b2[j];
+                b0[j] = b1[j];
+                b1[j] = b2[j];
+            }
+        }
+        for (size_t j = 0; j < m; ++j) out[a + j] = s[j];
+    }
+}
+}  // namespace
+
+void evaluateTrendMany(const PostfitResult& r, const double* t, size_t n, double* out) {
+    const bool onePolynomial = r.segments.size() == 1 && r.segments[0].knots == 0 && !r.segments[0].coefficients.empty();
+    if (onePolynomial) {
+        const TrendSegment& g = r.segments[0];
+        polynomialMany(g.coefficients, g.tCenter, g.tHalfSpan, t, n, out);
+    } else if (r.segments.empty() && !r.coefficients.empty()) {
+        polynomialMany(r.coefficients, r.tCenter, r.tHalfSpan, t, n, out);
+    } else {
+        for (size_t i = 0; i < n; ++i) out[i] = evaluateTrend(r, t[i]);
+    }
+}
+
 PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& use,
                       const std::vector<double>& tof, const PostfitParams& p, const Feedback* fb) {
     PostfitResult res;
@@ -466,8 +512,15 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
     res.tCenter = segs[longest].trend.tCenter;
     res.tHalfSpan = segs[longest].trend.tHalfSpan;
     res.coefficients = segs[longest].trend.coefficients;
-    for (size_t i = 0; i < n; ++i)
-        if (!used[i]) res.residuals[i] = oc[i] - evaluateTrend(res, t[i]);
+    {
+        std::vector<double> tu, yu;
+        for (size_t i = 0; i < n; ++i)
+            if (!used[i]) tu.push_back(t[i]);
+        yu.resize(tu.size());
+        evaluateTrendMany(res, tu.data(), tu.size(), yu.data());
+        for (size_t i = 0, k = 0; i < n; ++i)
+            if (!used[i]) res.residuals[i] = oc[i] - yu[k++];
+    }
     std::vector<double> kr;
     for (size_t i = 0; i < n; ++i)
         if (res.kept[i]) kr.push_back(res.residuals[i]);

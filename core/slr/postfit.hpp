@@ -138,5 +138,7 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
 
 /// The fitted trend at epoch t (s of O-C): the segment holding t, else the nearest one.
 double evaluateTrend(const PostfitResult& r, double t);
+/// evaluateTrend(r, t[i]) into out[i] for i < n (the same values, several points at a time).
+void evaluateTrendMany(const PostfitResult& r, const double* t, size_t n, double* out);
 
 }  // namespace lwb::core::slr

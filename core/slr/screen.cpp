@@ -451,9 +451,11 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
             }
             if (dev * res.magOc < 1) return;
         }
-        std::vector<double> nextShift(shift);
+        std::vector<double> nextShift(shift), tc(n), trend(n);
+        for (size_t i = 0; i < n; ++i) tc[i] = std::clamp(t[i], lo, hi);
+        evaluateTrendMany(f, tc.data(), n, trend.data());
         for (size_t i = 0; i < n; ++i) {
-            nextShift[i] += evaluateTrend(f, std::clamp(t[i], lo, hi));
+            nextShift[i] += trend[i];
             flat[i] = oc[i] - nextShift[i];
         }
         ScreenResult r2 = screenSignal(t, flat, again, fb);
