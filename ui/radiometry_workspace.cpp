@@ -189,7 +189,8 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
         p->selectionRect()->setBrush(QColor(0, 215, 255, 40));
         new ImageFit(p, [this, p] { fitImage(p); });
     }
-    m_readout = new QLabel(tr("Move the cursor over an image for its DN and reflectance"), this);
+    m_readout = new QLabel(readoutPrompt(), this);
+    m_readout->setObjectName("readout");
 
     // Fit plot and tables.
     m_fitPlot = newPlot(this, tr("Calibration line (paper 003 eq. 5)"), tr("Mean DN of the region, V_DN"),
@@ -586,6 +587,8 @@ void RadiometryWorkspace::fitImage(QCustomPlot* p) {
     m_linking = false;
 }
 
+QString RadiometryWorkspace::readoutPrompt() const { return tr("Move the cursor over an image for its DN and reflectance"); }
+
 void RadiometryWorkspace::showImage() {
     const RadiometryImage& img = m_controller->image();
     m_dnMap->setGradient(gradientFor(colorMapFromIndex(m_dnColors->currentIndex())));
@@ -618,6 +621,8 @@ void RadiometryWorkspace::showImage() {
                                .arg(tl.y, 0, 'f', 3)
                                .arg(br.x, 0, 'f', 3)
                                .arg(br.y, 0, 'f', 3));
+    } else {
+        m_readout->setText(readoutPrompt());  // not the last image's pixel (it may not exist in this one)
     }
     QString mi;
     for (const auto& pr : img.pairs)

@@ -76,6 +76,7 @@ signals:
 private:
     void buildPanel(QWidget* panel);
     void showImage();
+    QString readoutPrompt() const;
     void showRun(const RadiometryRun& run);
     void showOverlays();
     void refreshRegionTable();

@@ -175,6 +175,30 @@ private slots:
         QCOMPARE(w.regionTable()->currentRow(), int(before));  // selected, its reflectance cell open for typing
     }
 
+    // Seen in a real window: after opening a 32×32 image the pixel readout still showed the
+    // demo's "Pixel (1430, 347): 25293 DN · reflectance 27.487 %", a pixel the new image
+    // does not have.
+    void openingAnImageClearsThePixelReadout() {
+        RadiometryWorkspace w;
+        RadiometryController* c = w.controller();
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.openDemo();
+        QVERIFY(c->waitIdle(60000));
+        auto* readout = w.findChild<QLabel*>("readout");
+        QVERIFY(readout);
+        QCustomPlot* p = w.dnPlot();
+        QTest::mouseMove(p, QPoint(int(p->xAxis->coordToPixel(300)), int(p->yAxis->coordToPixel(120))));
+        QVERIFY2(readout->text().startsWith("Pixel ("), qPrintable(readout->text()));  // (the pixel under the pointer, ±2)
+        cv::Mat small(32, 32, CV_16U, cv::Scalar(5000));
+        std::string e;
+        QVERIFY(writeImage(path("small.png").toStdString(), small, &e));
+        QString err;
+        QVERIFY2(c->openImage(path("small.png"), &err), qPrintable(err));
+        QVERIFY2(!readout->text().contains("Pixel ("), qPrintable(readout->text()));
+    }
+
     void exportsReadBack() {
         RadiometryWorkspace w;
         RadiometryController* c = w.controller();
