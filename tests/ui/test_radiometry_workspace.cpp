@@ -39,6 +39,15 @@ class TestRadiometryWorkspace : public QObject {
     QTemporaryDir m_dir;
     QString path(const QString& f) const { return m_dir.path() + "/" + f; }
 
+    // The workspace shown in a window, with the demo opened and screened.
+    static bool showDemo(RadiometryWorkspace& w) {
+        w.resize(1200, 800);
+        w.show();
+        if (!QTest::qWaitForWindowExposed(&w)) return false;
+        w.openDemo();
+        return w.controller()->waitIdle(60000);
+    }
+
 private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
@@ -150,11 +159,7 @@ private slots:
     void draggingOnTheImageAddsARegion() {
         RadiometryWorkspace w;
         RadiometryController* c = w.controller();
-        w.resize(1200, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        w.openDemo();
-        QVERIFY(c->waitIdle(60000));
+        QVERIFY(showDemo(w));
         const size_t before = c->regions().size();
         w.drawCheckButton()->setChecked(true);
         QCustomPlot* p = w.dnPlot();
@@ -181,11 +186,7 @@ private slots:
     void openingAnImageClearsThePixelReadout() {
         RadiometryWorkspace w;
         RadiometryController* c = w.controller();
-        w.resize(1200, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        w.openDemo();
-        QVERIFY(c->waitIdle(60000));
+        QVERIFY(showDemo(w));
         auto* readout = w.findChild<QLabel*>("readout");
         QVERIFY(readout);
         QCustomPlot* p = w.dnPlot();
