@@ -442,9 +442,14 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         res.error = "the automatic mode found no usable scale (the pass is too short or too sparse for a binary image)";
         return res;
     }
-    // Refinement around the best: half steps in the free dimensions, then the other connectivity.
+    // Refinement around the best: half steps in the free dimensions, then the other connectivity
+    // at the best of those. The connectivity trial at the current best runs beside the half
+    // steps and is kept when they leave the best where it was (the usual case); otherwise it is
+    // run again at the new best. Either way the trials taken, and their order, are the same as
+    // running the two steps one after the other.
     {
         const double k0 = best.k, c0 = best.c;
+        const double otherConn = conn0 == 8 ? 4.0 : 8.0;
         std::vector<std::array<double, 3>> cand;
         const std::vector<double> ks = oAuto ? std::vector<double>{k0 - 0.5, k0, k0 + 0.5} : std::vector<double>{k0};
         std::vector<double> cs = {c0};
@@ -452,9 +457,18 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         for (double k : ks)
             for (double c : cs)
                 if (!(k == k0 && c == c0)) cand.push_back({k, c, static_cast<double>(conn0)});
-        trialsInOrder(cand);
+        const size_t halfSteps = cand.size();
+        if (cAuto) cand.push_back({k0, c0, otherConn});
+        std::vector<Trial> out(cand.size());
+        runInParallel(cand.size(), [&](size_t i) {
+            if (!cancelled(fb)) out[i] = runTrial(cand[i][0], cand[i][1], static_cast<int>(cand[i][2]));
+        });
+        for (size_t i = 0; i < halfSteps; ++i) take(out[i]);
+        if (cAuto && !cancelled(fb)) {
+            if (best.k == k0 && best.c == c0) take(out[halfSteps]);
+            else trialsInOrder({{best.k, best.c, otherConn}});
+        }
     }
-    if (cAuto && !cancelled(fb)) trialsInOrder({{best.k, best.c, conn0 == 8 ? 4.0 : 8.0}});
     if (cancelled(fb)) {
         res.error = "cancelled";
         return res;
