@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <exception>
 #include <mutex>
-#include <thread>
-#include <cmath>
 #include <numeric>
+#include <thread>
 
 #include "core/common/text.hpp"
 
