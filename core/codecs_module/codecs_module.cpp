@@ -157,6 +157,7 @@ void fillGeo(GDALDatasetH ds, GeoReference* geo) {
     const char* wkt = GDALGetProjectionRef(ds);
     if (wkt) geo->crsWkt = wkt;
 }
+
 bool readGeoReference(const std::string& path, GeoReference* geo, std::string* error) {
     GDALDatasetH ds = openRaster(path, error);
     if (!ds) return false;
@@ -200,8 +201,6 @@ bool readGeoTiff(const std::string& path, cv::Mat* image, GeoReference* geo, std
     GDALClose(ds);
     return ok;
 }
-
-
 }  // namespace
 }  // namespace lwb::core::codecs
 

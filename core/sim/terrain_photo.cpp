@@ -18,22 +18,26 @@ std::vector<std::string> terrainPhotoDirs() {
 }
 
 namespace {
-cv::Mat readPhoto(const std::string& path) {
+// The photograph, or empty (absent or unreadable); *why says so when no decoder could be used at
+// all (the codec module not loaded), which the error must name instead of a missing package.
+cv::Mat readPhoto(const std::string& path, std::string* why) {
     try {
         return imageRead(path, cv::IMREAD_COLOR);
-    } catch (const cv::Exception&) {  // no codec module: as if the photograph were absent
+    } catch (const cv::Exception& e) {
+        *why = e.what();
         return {};
     }
 }
 
 TerrainPhotos loadPhotos() {
     TerrainPhotos t;
+    std::string decoderProblem;
     const char* files[] = {"aero1.jpg", "aero3.jpg"};
     for (const std::string& dir : terrainPhotoDirs()) {
         TerrainPhotos cand;
         cand.dir = dir;
         for (const char* f : files) {
-            const cv::Mat bgr = readPhoto(dir + "/" + f);
+            const cv::Mat bgr = readPhoto(dir + "/" + f, &decoderProblem);
             if (bgr.empty() || bgr.cols < 200 || bgr.rows < 200) continue;
             const int photo = static_cast<int>(cand.names.size());
             cand.names.emplace_back(f);
@@ -51,6 +55,10 @@ TerrainPhotos loadPhotos() {
             cand.ok = true;
             return cand;
         }
+    }
+    if (!decoderProblem.empty()) {
+        t.error = "the terrain photographs cannot be decoded: " + decoderProblem;
+        return t;
     }
     t.error = "no terrain photographs (aero1.jpg, aero3.jpg) in";
     for (const std::string& dir : terrainPhotoDirs()) t.error += " " + dir;
