@@ -362,13 +362,13 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
             best.conn = tr.conn;
         }
     };
-    // Independent trials (a list of scales) side by side, taken in list order.
-    auto trialsInOrder = [&](const std::vector<std::array<double, 3>>& scales) {
+    // Independent trials at a list of scales (k, c, connectivity), side by side; in list order.
+    auto runTrials = [&](const std::vector<std::array<double, 3>>& scales) {
         std::vector<Trial> out(scales.size());
         runInParallel(scales.size(), [&](size_t i) {
             if (!cancelled(fb)) out[i] = runTrial(scales[i][0], scales[i][1], static_cast<int>(scales[i][2]));
         });
-        for (const Trial& tr : out) take(tr);
+        return out;
     };
 
     if (oAuto) {
@@ -459,14 +459,11 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
                 if (!(k == k0 && c == c0)) cand.push_back({k, c, static_cast<double>(conn0)});
         const size_t halfSteps = cand.size();
         if (cAuto) cand.push_back({k0, c0, otherConn});
-        std::vector<Trial> out(cand.size());
-        runInParallel(cand.size(), [&](size_t i) {
-            if (!cancelled(fb)) out[i] = runTrial(cand[i][0], cand[i][1], static_cast<int>(cand[i][2]));
-        });
+        const std::vector<Trial> out = runTrials(cand);
         for (size_t i = 0; i < halfSteps; ++i) take(out[i]);
         if (cAuto && !cancelled(fb)) {
             if (best.k == k0 && best.c == c0) take(out[halfSteps]);
-            else trialsInOrder({{best.k, best.c, otherConn}});
+            else take(runTrials({{best.k, best.c, otherConn}}).front());
         }
     }
     if (cancelled(fb)) {
