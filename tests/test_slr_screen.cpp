@@ -300,6 +300,153 @@ private slots:
         QCOMPARE(recoverPending(regs, pending, four, 0.95, 4.5).recovered, (std::vector<uint32_t>{2}));
     }
 
+    void recoveryWithAGapLimitMatchesAFullScan() {
+        // recoverPending with a gap limit skips, before its k-d tree, the pending regions whose
+        // band of rows holds no anchor within twice the limit. Against a scan of every anchor
+        // for every pending region (the definition): random tracks with gaps and stray
+        // anchors, pending regions near the track and all over a wide gate, four gap factors.
+        sim::Rng rng(4242);
+        size_t recoveredTotal = 0, pendingTotal = 0;
+        for (int round = 0; round < 24; ++round) {
+            std::vector<Anchor> anchors;
+            std::vector<Region> regs;
+            const double slope = -2 + 4 * rng.uniform(), curve = 0.01 * (rng.uniform() - 0.5);
+            auto track = [&](double row) { return 500 + slope * row + curve * row * row; };
+            for (int i = 0; i < 60; ++i) {
+                const double row = 3.0 * i + (i > 30 ? 40 : 0) + rng.uniform();
+                anchors.push_back({row, track(row) + rng.uniform() - 0.5, 3, static_cast<uint32_t>(regs.size())});
+                regs.push_back(regionAt(anchors.back().row, anchors.back().col, 3));
+            }
+            for (int i = 0; i < 5; ++i) {  // stray anchors (noise taken for signal)
+                anchors.push_back({250 * rng.uniform(), 3000 * rng.uniform() - 1000, 1, static_cast<uint32_t>(regs.size())});
+                regs.push_back(regionAt(anchors.back().row, anchors.back().col, 1));
+            }
+            std::vector<uint32_t> pending;
+            for (int i = 0; i < 400; ++i) {
+                const double row = 300 * rng.uniform() - 25;
+                const double col = i % 2 ? track(row) + 20 * (rng.uniform() - 0.5) : 4000 * rng.uniform() - 1500;
+                pending.push_back(static_cast<uint32_t>(regs.size()));
+                regs.push_back(regionAt(row, col, 1));
+            }
+            for (int i = 1; i < 60; ++i) {  // in line beyond an anchor, up to a spacing away
+                const Anchor &a = anchors[static_cast<size_t>(i)], &b = anchors[static_cast<size_t>(i - 1)];
+                const double u = 0.5 + 0.6 * rng.uniform();
+                pending.push_back(static_cast<uint32_t>(regs.size()));
+                regs.push_back(regionAt(a.row + u * (a.row - b.row), a.col + u * (a.col - b.col), 1));
+            }
+            for (double gap : {0.5, 1.0, 3.0, 10.0}) {
+                const double C = 0.9 + 0.09 * rng.uniform();
+                // The definition: the limit from the median nearest-anchor distance, then the
+                // two nearest anchors (ties by index) within twice the limit.
+                std::vector<double> nn;
+                for (size_t a = 0; a < anchors.size(); ++a) {
+                    double best = INFINITY;
+                    for (size_t b = 0; b < anchors.size(); ++b)
+                        if (a != b)
+                            best = std::min(best, std::pow(anchors[a].row - anchors[b].row, 2) +
+                                                      std::pow(anchors[a].col - anchors[b].col, 2));
+                    nn.push_back(best);
+                }
+                std::nth_element(nn.begin(), nn.begin() + static_cast<long>(nn.size() / 2), nn.end());
+                const double limit = gap * std::max(std::sqrt(nn[nn.size() / 2]), 1.0);
+                std::vector<uint32_t> want;
+                for (uint32_t x : pending) {
+                    std::vector<std::pair<double, size_t>> near;
+                    for (size_t a = 0; a < anchors.size(); ++a) {
+                        const double d2 = std::pow(anchors[a].row - regs[x].row, 2) + std::pow(anchors[a].col - regs[x].col, 2);
+                        if (d2 <= 4 * limit * limit) near.push_back({d2, a});
+                    }
+                    if (near.size() < 2) continue;
+                    std::partial_sort(near.begin(), near.begin() + 2, near.end());
+                    const Anchor &P = anchors[near[0].second], &Q = anchors[near[1].second];
+                    if (std::pow(P.row - Q.row, 2) + std::pow(P.col - Q.col, 2) > limit * limit) continue;
+                    if (collinearAccept(P.row, P.col, regs[x].row, regs[x].col, Q.row, Q.col, C)) want.push_back(x);
+                }
+                const RecoveryResult got = recoverPending(regs, pending, anchors, C, gap);
+                QVERIFY2(got.recovered == want, qPrintable(QString("round %1 gap %2: %3 recovered, the scan %4")
+                                                               .arg(round).arg(gap).arg(got.recovered.size()).arg(want.size())));
+                QCOMPARE(got.maxPairDistance, limit);
+                recoveredTotal += want.size();
+                pendingTotal += pending.size();
+            }
+        }
+        // The comparison means something: regions are recovered, most are not.
+        QVERIFY(recoveredTotal > 100);
+        QVERIFY(recoveredTotal < pendingTotal / 2);
+    }
+
+    void piecewiseTrendInOrderEqualsBisection() {
+        // atAscending (points in time order walk the pieces) gives at()'s value bit for bit.
+        sim::Rng rng(99);
+        for (int round = 0; round < 20; ++round) {
+            const size_t n = 10 + static_cast<size_t>(rng.uniform() * 400);
+            std::vector<double> t(n), oc(n);
+            double x = 0;
+            for (size_t i = 0; i < n; ++i) {
+                x += rng.uniform() < 0.05 ? 30 * rng.uniform() : rng.uniform();  // gaps between pieces
+                t[i] = x;
+                oc[i] = 1e-6 * std::sin(x / 20) + 1e-9 * rng.uniform();
+            }
+            std::vector<size_t> sel;
+            for (size_t i = 0; i < n; ++i)
+                if (rng.uniform() < 0.7) sel.push_back(i);
+            const PiecewiseTrend tr = robustPiecewiseTrend(t.data(), oc.data(), sel);
+            size_t piece = 0;
+            for (double q = -5; q < x + 5; q += 0.37 * rng.uniform()) {
+                const double a = tr.at(q), b = tr.atAscending(q, piece);
+                QVERIFY2(a == b || (std::isnan(a) && std::isnan(b)), qPrintable(QString("round %1 at %2").arg(round).arg(q)));
+            }
+        }
+    }
+
+    void imageIsTheSameWhateverThePointOrder() {
+        // Points in time order are sorted row by row (few to a row) or by one radix sort (many
+        // to a row); shuffled points always by the radix sort. Same pixels, same regions, same
+        // points per pixel in either order.
+        sim::Rng rng(31);
+        for (int round = 0; round < 12; ++round) {
+            const size_t n = 500 + static_cast<size_t>(rng.uniform() * 4000);
+            std::vector<double> t(n), oc(n);
+            for (size_t i = 0; i < n; ++i) {
+                t[i] = 600.0 * static_cast<double>(i) / static_cast<double>(n);
+                oc[i] = (rng.uniform() < 0.2 ? 1e-9 * std::sin(t[i] / 50) : 1e-8 * rng.uniform()) - 3e-9;
+            }
+            MappingParams mp;
+            mp.magT = round % 3 == 0 ? 0.05 : 2 + 3 * rng.uniform();  // many points to a row, or few
+            mp.magOc = (0.2 + rng.uniform()) * (round % 3 == 0 ? 1e11 : 1e10);
+            mp.connectivity = round % 2 ? 4 : 8;
+            std::vector<size_t> perm(n);
+            for (size_t i = 0; i < n; ++i) perm[i] = i;
+            for (size_t i = n - 1; i > 0; --i)
+                std::swap(perm[i], perm[static_cast<size_t>(rng.uniform() * static_cast<double>(i + 1)) % (i + 1)]);
+            std::vector<double> st(n), so(n);
+            for (size_t i = 0; i < n; ++i) {
+                st[i] = t[perm[i]];
+                so[i] = oc[perm[i]];
+            }
+            const BinaryImage a = buildBinaryImage(t, oc, mp), b = buildBinaryImage(st, so, mp);
+            QVERIFY(a.ok && b.ok);
+            QVERIFY(a.pixelRow == b.pixelRow && a.pixelCol == b.pixelCol && a.pixelRegion == b.pixelRegion);
+            QCOMPARE(a.pixelPointStart, b.pixelPointStart);
+            QCOMPARE(a.regions.size(), b.regions.size());
+            for (size_t r = 0; r < a.regions.size(); ++r) {
+                QCOMPARE(a.regions[r].area, b.regions[r].area);
+                QCOMPARE(a.regions[r].points, b.regions[r].points);
+                QCOMPARE(a.regions[r].row, b.regions[r].row);
+                QCOMPARE(a.regions[r].col, b.regions[r].col);
+            }
+            for (size_t p = 0; p < a.pixelCount(); ++p) {
+                std::vector<size_t> pa, pb;
+                for (uint32_t k = a.pixelPointStart[p]; k < a.pixelPointStart[p + 1]; ++k) pa.push_back(a.pixelPoints[k]);
+                for (uint32_t k = b.pixelPointStart[p]; k < b.pixelPointStart[p + 1]; ++k) pb.push_back(perm[b.pixelPoints[k]]);
+                std::sort(pb.begin(), pb.end());
+                QVERIFY2(pa == pb, qPrintable(QString("round %1 pixel %2").arg(round).arg(p)));
+                QVERIFY(std::is_sorted(pa.begin(), pa.end()));  // ties in index order
+            }
+            QVERIFY(a.regions.size() > 10);
+        }
+    }
+
     // ---------------------------------------------------------------- step 6 and the whole
     void inverseMappingCoversEveryPointOnce() {
         sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Diffuse);

@@ -135,6 +135,8 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
     // the mapping on the many small images of a scale search.
     std::unique_ptr<Item[]> items(new Item[n]);
     int64_t rMin = 0, rMax = 0, cMin = 0, cMax = 0;
+    bool rowsInOrder = true;  // points in time order (the usual case): rows never decrease
+    size_t rowRuns = 0;       // runs of equal rows in index order
     for (size_t i = 0; i < n; ++i) {
         if (!std::isfinite(t[i]) || !std::isfinite(oc[i])) {
             img.error = "point " + std::to_string(i) + " has a non-finite " + (std::isfinite(t[i]) ? "O-C" : "epoch");
@@ -147,6 +149,8 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
             return img;
         }
         items[i] = Item{static_cast<uint64_t>(r), static_cast<uint64_t>(c), static_cast<uint32_t>(i)};
+        rowsInOrder = rowsInOrder && (i == 0 || r >= rMax);
+        rowRuns += i == 0 || r != static_cast<int64_t>(items[i - 1].key);
         if (i == 0 || r < rMin) rMin = r;
         if (i == 0 || r > rMax) rMax = r;
         if (i == 0 || c < cMin) cMin = c;
@@ -161,15 +165,36 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
     img.rows = rMax - rMin + 1;
     img.cols = cMax - cMin + 1;
 
-    // Pass 2: sort the points by shifted (row, col). One 64-bit key when rows·cols fits, else
-    // a lexicographic pair compare (absurd magnifications: still O(n log n), never an image).
-    const bool oneKey = static_cast<double>(img.rows) * static_cast<double>(img.cols) < 9.0e18;
+    // Pass 2: sort the points by shifted (row, col), ties in index order. Points whose rows
+    // never decrease, a few to a row (the many sparse images of a scale search), are sorted row
+    // by row on the column by insertion. Otherwise one 64-bit key when rows·cols fits (radix),
+    // else a lexicographic pair compare (absurd magnifications: still O(n log n), never an image).
+    const bool byRow = rowsInOrder && n <= 8 * rowRuns;
+    const bool oneKey = !byRow && static_cast<double>(img.rows) * static_cast<double>(img.cols) < 9.0e18;
     for (size_t i = 0; i < n; ++i) {
         const uint64_t sr = items[i].key - static_cast<uint64_t>(rMin), sc = items[i].key2 - static_cast<uint64_t>(cMin);
         items[i].key = oneKey ? sr * static_cast<uint64_t>(img.cols) + sc : sr;
         items[i].key2 = oneKey ? 0 : sc;
     }
-    if (oneKey) {
+    if (byRow) {
+        for (size_t a = 0; a < n;) {
+            size_t b = a + 1;
+            while (b < n && items[b].key == items[a].key) ++b;
+            if (b - a <= 16) {  // insertion sort: stable, so ties stay in index order
+                for (size_t i = a + 1; i < b; ++i) {
+                    const Item x = items[i];
+                    size_t j = i;
+                    for (; j > a && items[j - 1].key2 > x.key2; --j) items[j] = items[j - 1];
+                    items[j] = x;
+                }
+            } else {
+                std::sort(items.get() + a, items.get() + b, [](const Item& u, const Item& v) {
+                    return u.key2 != v.key2 ? u.key2 < v.key2 : u.idx < v.idx;
+                });
+            }
+            a = b;
+        }
+    } else if (oneKey) {
         // LSD radix sort on the 64-bit key, 11 bits a pass (stable: ties stay in index order).
         const uint64_t maxKey = static_cast<uint64_t>(img.rows) * static_cast<uint64_t>(img.cols) - 1;
         int bits = 0;
@@ -226,21 +251,22 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
         img.error = "cancelled";
         return img;
     }
-    // Compact labels in order of each region's first pixel; per-region statistics.
+    // Compact labels in order of each region's first pixel; per-region statistics. A root is
+    // the smallest pixel of its region (union by smaller index), so a pixel that is its own
+    // root starts a region and any other takes its root's label, given earlier.
     img.pixelRegion.assign(pixels, 0);
     size_t roots = 0;
-    for (size_t p = 0; p < pixels; ++p) roots += uf.find(static_cast<uint32_t>(p)) == p;
+    for (size_t p = 0; p < pixels; ++p) roots += uf.parent[p] == p;
     img.regions.reserve(roots);
-    std::vector<uint32_t> labelOfRoot(pixels, UINT32_MAX);
     std::vector<double> sumR, sumC;
     sumR.reserve(roots);
     sumC.reserve(roots);
     for (size_t p = 0; p < pixels; ++p) {
         const uint32_t root = uf.find(static_cast<uint32_t>(p));
-        uint32_t lab = labelOfRoot[root];
+        uint32_t lab = img.pixelRegion[root];
         const int64_t r = img.pixelRow[p], c = img.pixelCol[p];
-        if (lab == UINT32_MAX) {
-            lab = labelOfRoot[root] = static_cast<uint32_t>(img.regions.size());
+        if (root == p) {
+            lab = static_cast<uint32_t>(img.regions.size());
             Region reg;
             reg.rowMin = reg.rowMax = r;
             reg.colMin = reg.colMax = c;
@@ -306,14 +332,15 @@ std::vector<int64_t> regionAreas(const std::vector<double>& t, const std::vector
     const size_t pixels = rows.size();
     UnionFind uf(pixels);
     linkPixels(rows.data(), cols.data(), pixels, params.connectivity == 8, uf, nullptr);
-    std::vector<uint32_t> slot(pixels, UINT32_MAX);
+    std::vector<uint32_t> slot(pixels);  // a root's area slot (a root is its region's first pixel)
     for (size_t p = 0; p < pixels; ++p) {
         const uint32_t root = uf.find(static_cast<uint32_t>(p));
-        if (slot[root] == UINT32_MAX) {
-            slot[root] = static_cast<uint32_t>(areas.size());
-            areas.push_back(0);
+        if (root == p) {
+            slot[p] = static_cast<uint32_t>(areas.size());
+            areas.push_back(1);
+        } else {
+            ++areas[slot[root]];
         }
-        ++areas[slot[root]];
     }
     return areas;
 }

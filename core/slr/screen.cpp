@@ -61,6 +61,7 @@ int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& 
         tHi = ts[b];
     }
     std::vector<double> nt, no;
+    nt.reserve(std::min(n, maxPoints));
     double oLo = 1e308, oHi = -1e308;
     for (size_t i = 0; i < n; ++i)
         if (t[i] >= tLo && t[i] <= tHi) {
@@ -265,6 +266,57 @@ bool collinearAccept(double pRow, double pCol, double xRow, double xCol, double 
     return cosP < -C;
 }
 
+namespace {
+// Anchors binned by row into bands at least `radius` tall, with the columns each band and its
+// two neighbours span. farFromAll(row, col): no anchor lies within `radius` of (row, col) —
+// decided with a margin, so it is never true of a point the exact distance would keep.
+// A radius of 0 or a non-finite one: never far.
+class RowBands {
+public:
+    RowBands(const std::vector<Anchor>& anchors, double radius) {
+        if (!(radius > 0) || !std::isfinite(radius) || anchors.empty()) return;
+        double lo = anchors.front().row, hi = lo;
+        for (const Anchor& a : anchors) {
+            lo = std::min(lo, a.row);
+            hi = std::max(hi, a.row);
+        }
+        const double span = hi - lo;
+        if (!std::isfinite(span)) return;
+        m_radius = radius * (1 + 1e-9) + 1e-9;
+        m_height = std::max(m_radius, span / 65536);  // at most ~65536 bands
+        m_row0 = lo;
+        const size_t bands = static_cast<size_t>(span / m_height) + 1;
+        std::vector<double> cMin(bands, INFINITY), cMax(bands, -INFINITY);
+        for (const Anchor& a : anchors) {
+            const size_t b = std::min(bands - 1, static_cast<size_t>((a.row - lo) / m_height));
+            cMin[b] = std::min(cMin[b], a.col);
+            cMax[b] = std::max(cMax[b], a.col);
+        }
+        m_lo.assign(bands, INFINITY);
+        m_hi.assign(bands, -INFINITY);
+        for (size_t b = 0; b < bands; ++b)
+            for (size_t k = b > 0 ? b - 1 : 0; k <= std::min(bands - 1, b + 1); ++k) {
+                m_lo[b] = std::min(m_lo[b], cMin[k]);
+                m_hi[b] = std::max(m_hi[b], cMax[k]);
+            }
+    }
+    bool farFromAll(double row, double col) const {
+        if (m_lo.empty() || !std::isfinite(row) || !std::isfinite(col)) return false;
+        const double f = std::floor((row - m_row0) / m_height);
+        const double last = static_cast<double>(m_lo.size() - 1);
+        // Rows more than one band from the anchors' are more than the radius away; within one
+        // band beyond the ends, the end band's neighbourhood covers them.
+        if (f < -1 || f > last + 1) return true;
+        const size_t b = static_cast<size_t>(std::clamp(f, 0.0, last));
+        return col < m_lo[b] - m_radius || col > m_hi[b] + m_radius;
+    }
+
+private:
+    double m_radius = 0, m_height = 1, m_row0 = 0;
+    std::vector<double> m_lo, m_hi;
+};
+}  // namespace
+
 RecoveryResult recoverPending(const std::vector<Region>& regions, const std::vector<uint32_t>& pending,
                               const std::vector<Anchor>& anchors, double cosineC, double gapFactor, const Feedback* fb) {
     RecoveryResult res;
@@ -288,10 +340,16 @@ RecoveryResult recoverPending(const std::vector<Region>& regions, const std::vec
         res.maxPairDistance = gapFactor * std::max(typical, 1.0);
         maxPair2 = res.maxPairDistance * res.maxPairDistance;
     }
+    // Acceptance needs |XP| ≤ |PQ| ≤ gap limit (or X between P and Q), so |XQ| ≤ 2·limit:
+    // the search radius prunes the far-away pending regions, which are most of them. Before the
+    // tree, bands of rows (at least 2·limit tall) hold the columns their anchors span: a pending
+    // region whose column lies beyond 2·limit of every anchor in its band and the two beside it
+    // has no anchor within 2·limit, and is passed over at once (the noise of a sparse pass in
+    // a wide gate, far from its track). The test only skips what the search would not find.
+    const RowBands bands(anchors, gapFactor > 0 ? 2 * res.maxPairDistance : 0);
     for (size_t i = 0; i < pending.size(); ++i) {
         const Region& r = regions[pending[i]];
-        // Acceptance needs |XP| ≤ |PQ| ≤ gap limit (or X between P and Q), so |XQ| ≤ 2·limit:
-        // the search radius prunes the far-away pending regions, which are most of them.
+        if (bands.farFromAll(r.row, r.col)) continue;
         if (tree.nearest(r.row, r.col, 2, UINT32_MAX, idx, d2, 4 * maxPair2) < 2) continue;
         const Anchor& P = anchors[idx[0]];
         const Anchor& Q = anchors[idx[1]];
@@ -409,7 +467,8 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
     const size_t n = t.size();
     std::vector<uint32_t> order(n);
     for (uint32_t i = 0; i < n; ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
+    if (!std::is_sorted(t.begin(), t.end()))
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
     double score = wholePassScore(order, t, oc, res);
     std::vector<double> shift(n, 0.0), flat(n);
     ScreenParams again = params;

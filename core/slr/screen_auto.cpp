@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <condition_variable>
+#include <limits>
+#include <map>
+#include <optional>
 #include <cmath>
 #include <exception>
 #include <mutex>
@@ -48,6 +52,85 @@ void runInParallel(size_t n, Job&& job) {
     if (failure) std::rethrow_exception(failure);
 }
 
+// Ladders of trials. Trial `step` of ladder l is an independent computation, run(l, step)
+// (nullopt: the ladder has no such step, nor any later one), but whether the ladder goes on is
+// decided on its trials in order: decide(l, step, result) is given them one by one, from step
+// 0, and returns true to stop the ladder after that one. The trials run on the cores; when
+// fewer ladders are left going than threads, a ladder's next steps (at most `ahead` of them)
+// run before its decisions, and results past a ladder's stop are dropped. decide sees exactly
+// the trials, in the order, of running each ladder alone step by step; it runs under a lock.
+template <class T, class Run, class Decide>
+void runLadders(size_t ladders, int ahead, Run&& run, Decide&& decide) {
+    struct Ladder {
+        int launched = 0, decided = 0;
+        int limit = std::numeric_limits<int>::max();  // first step that does not exist
+        bool stopped = false;
+        std::map<int, T> done;  // finished, not yet decided
+    };
+    std::vector<Ladder> st(ladders);
+    std::mutex lock;
+    std::condition_variable changed;
+    int running = 0;
+    std::exception_ptr failure;
+    auto loop = [&] {
+        std::unique_lock<std::mutex> held(lock);
+        for (;;) {
+            size_t pick = ladders;
+            int pickAhead = ahead + 1;
+            for (size_t l = 0; l < ladders && !failure; ++l) {
+                const Ladder& x = st[l];
+                const int a = x.launched - x.decided;
+                if (!x.stopped && x.launched < x.limit && a < pickAhead) {
+                    pick = l;
+                    pickAhead = a;
+                }
+            }
+            if (pick == ladders) {
+                if (running == 0) {
+                    changed.notify_all();
+                    return;
+                }
+                changed.wait(held);
+                continue;
+            }
+            const int step = st[pick].launched++;
+            ++running;
+            held.unlock();
+            std::optional<T> r;
+            std::exception_ptr e;
+            try {
+                r = run(pick, step);
+            } catch (...) {
+                e = std::current_exception();
+            }
+            held.lock();
+            --running;
+            Ladder& x = st[pick];
+            if (e && !failure) failure = e;
+            if (!r) x.limit = std::min(x.limit, step);
+            else x.done.emplace(step, std::move(*r));
+            for (auto it = x.done.begin(); !x.stopped && it != x.done.end() && it->first == x.decided;
+                 it = x.done.erase(it), ++x.decided) {
+                try {
+                    x.stopped = decide(pick, x.decided, std::move(it->second));
+                } catch (...) {
+                    if (!failure) failure = std::current_exception();
+                    x.stopped = true;
+                }
+            }
+            if (x.decided >= x.limit) x.stopped = true;
+            changed.notify_all();
+        }
+    };
+    const int want = gSearchThreads.load();
+    const size_t workers = want > 0 ? static_cast<size_t>(want) : std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::thread> pool;
+    for (size_t w = 1; w < workers; ++w) pool.emplace_back(loop);
+    loop();
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+}
+
 double medianOf(std::vector<double>& v) {
     if (v.empty()) return 0;
     const size_t m = v.size() / 2;
@@ -75,6 +158,18 @@ double quantileOf(const std::vector<double>& v, double q) {
 
 void setScaleSearchThreads(int threads) { gSearchThreads.store(std::max(0, threads)); }
 
+namespace {
+// The value of the trend at x inside the pieces' span, given the last piece starting at or
+// before x.
+double interpolate(const std::vector<PiecewiseTrend::Piece>& pieces, size_t lo, double x) {
+    const PiecewiseTrend::Piece& p = pieces[lo];
+    if (x <= p.t1 || lo + 1 == pieces.size()) return p.at(std::min(x, p.t1));
+    const PiecewiseTrend::Piece& q = pieces[lo + 1];
+    const double a = p.at(p.t1), b = q.at(q.t0), dt = q.t0 - p.t1;
+    return dt > 0 ? a + (b - a) * (x - p.t1) / dt : b;
+}
+}  // namespace
+
 double PiecewiseTrend::at(double x) const {
     if (pieces.empty()) return 0;
     if (x <= pieces.front().t0) return pieces.front().at(pieces.front().t0);
@@ -85,11 +180,19 @@ double PiecewiseTrend::at(double x) const {
         const size_t mid = (lo + hi) / 2;
         (pieces[mid].t0 <= x ? lo : hi) = mid;
     }
-    const Piece& p = pieces[lo];
-    if (x <= p.t1 || lo + 1 == pieces.size()) return p.at(std::min(x, p.t1));
-    const Piece& q = pieces[lo + 1];
-    const double a = p.at(p.t1), b = q.at(q.t0), dt = q.t0 - p.t1;
-    return dt > 0 ? a + (b - a) * (x - p.t1) / dt : b;
+    return interpolate(pieces, lo, x);
+}
+
+double PiecewiseTrend::atAscending(double x, size_t& piece) const {
+    if (pieces.empty()) return 0;
+    if (x <= pieces.front().t0) return pieces.front().at(pieces.front().t0);
+    if (x >= pieces.back().t1) return pieces.back().at(pieces.back().t1);
+    // The last piece starting at or before x (the bisection of at() finds the same one when the
+    // starts ascend), moving on from the previous call's.
+    size_t lo = piece < pieces.size() && pieces[piece].t0 <= x ? piece : 0;
+    while (lo + 1 < pieces.size() && pieces[lo + 1].t0 <= x) ++lo;
+    piece = lo;
+    return interpolate(pieces, lo, x);
 }
 
 PiecewiseTrend robustPiecewiseTrend(const double* t, const double* oc, const std::vector<size_t>& sel) {
@@ -180,7 +283,12 @@ ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t
         return s;
     }
     const PiecewiseTrend trendModel = robustPiecewiseTrend(t, oc, sel);
-    auto trend = [&](double x) { return trendModel.at(x); };
+    // Points in time order (as they come from the scale search) walk the pieces in order.
+    const bool ascending = std::is_sorted(t, t + n) &&
+                           std::is_sorted(trendModel.pieces.begin(), trendModel.pieces.end(),
+                                          [](const auto& a, const auto& b) { return a.t0 < b.t0; });
+    size_t piece = 0;
+    auto trend = [&](double x) { return ascending ? trendModel.atAscending(x, piece) : trendModel.at(x); };
     std::vector<double> rs;
     rs.reserve(ns);
     for (size_t i : sel) rs.push_back(oc[i] - trend(t[i]));
@@ -206,6 +314,7 @@ ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t
         return s;
     }
     double nIn = 0, sIn = 0;
+    piece = 0;
     for (size_t i = 0; i < n; ++i) {
         if (std::fabs(oc[i] - trend(t[i]) - med) <= h) {
             nIn += 1;
@@ -378,43 +487,54 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         // suits dense passes (kHz, many returns per second), the sparse ones suit passes of a few
         // returns per second with a sharp track in a wide gate (e.g. MLRS 10 Hz multi-photon
         // passes: 0.1 ns jitter in a 10 µs gate), whose track only forms regions with time pixels
-        // of a few seconds, i.e. far below 0.1 noise points per pixel. The ladders are
-        // independent of each other and run side by side.
+        // of a few seconds, i.e. far below 0.1 noise points per pixel. The ladders run side by
+        // side (runLadders), a ladder's next trials ahead of its stopping rule when cores are
+        // idle: the last ladder going, or the only one, no longer runs on one core.
         const bool sparse = params.sparseRateBelow <= 0 || res.ratePerS < params.sparseRateBelow;
         const std::vector<double> ladderC = tAuto && sparse ? std::vector<double>{0.1, 0.1 / 8, 0.1 / 64, 0.1 / 512}
                                                             : std::vector<double>{0.1};
         // (A coarse-to-fine ladder — every other O-C scale, patience 2 — halves the time of a
         // sparse pass but picks a scale on JASON1 7080 that finds only 70 % of its track: not used.)
         const int patience = 4;
-        std::vector<std::vector<Trial>> ladders(ladderC.size());
-        runInParallel(ladderC.size(), [&](size_t l) {
-            const double c = ladderC[l];
+        // Each ladder starts where a time pixel holds at least 1/16 of a point on average
+        // (Δt·r = c·2^k ≥ 1/16): the finer time scales before it, with rows almost all
+        // empty, never won on any pass measured (54 simulated, 7 real, the 6 filtered
+        // station passes, the golden outputs: every result byte-identical to starting at
+        // k = 2, a sixth to a quarter fewer trials). Starting at one point per time pixel
+        // cut a third of the trials but lost most of the track of a filtered 208-point
+        // station pass (recall 0.84), whose best scale has about 1/4 point per time pixel.
+        auto kStart = [&](double c) {
+            return tAuto ? std::max(2, static_cast<int>(std::ceil(std::log2(1.0 / (16 * c)) - 1e-9))) : 2;
+        };
+        // A ladder stops after a trial too coarse in time for the windows, or after `patience`
+        // trials below its best once that is positive.
+        struct LadderState {
             int worse = 0;
-            double ladderBest = -1e300;
-            // Each ladder starts where a time pixel holds at least 1/16 of a point on average
-            // (Δt·r = c·2^k ≥ 1/16): the finer time scales before it, with rows almost all
-            // empty, never won on any pass measured (54 simulated, 7 real, the 6 filtered
-            // station passes, the golden outputs: every result byte-identical to starting at
-            // k = 2, a sixth to a quarter fewer trials). Starting at one point per time pixel
-            // cut a third of the trials but lost most of the track of a filtered 208-point
-            // station pass (recall 0.84), whose best scale has about 1/4 point per time pixel.
-            const int kStart = tAuto ? std::max(2, static_cast<int>(std::ceil(std::log2(1.0 / (16 * c)) - 1e-9))) : 2;
-            for (int k = kStart; k <= 24; ++k) {
-                if (cancelled(fb)) break;
-                ladders[l].push_back(runTrial(k, c, conn0));
-                const Trial& tr = ladders[l].back();
-                if (!tr.usable) {
-                    if (tAuto && dT(k, c) > meanWinSpan / 8) break;
-                    continue;
+            double best = -1e300;
+        };
+        std::vector<LadderState> state(ladderC.size());
+        std::vector<std::vector<Trial>> ladders(ladderC.size());
+        runLadders<Trial>(
+            ladderC.size(), 2,
+            [&](size_t l, int step) -> std::optional<Trial> {
+                const int k = kStart(ladderC[l]) + step;
+                if (k > 24 || cancelled(fb)) return std::nullopt;
+                return runTrial(k, ladderC[l], conn0);
+            },
+            [&](size_t l, int step, Trial&& tr) {
+                const double c = ladderC[l];
+                const int k = kStart(c) + step;
+                LadderState& st = state[l];
+                ladders[l].push_back(std::move(tr));
+                const Trial& last = ladders[l].back();
+                if (!last.usable) return tAuto && dT(k, c) > meanWinSpan / 8;
+                if (last.rec.score > st.best) {
+                    st.best = last.rec.score;
+                    st.worse = 0;
+                    return false;
                 }
-                if (tr.rec.score > ladderBest) {
-                    ladderBest = tr.rec.score;
-                    worse = 0;
-                } else if (ladderBest > 0 && ++worse >= patience) {
-                    break;
-                }
-            }
-        });
+                return st.best > 0 && ++st.worse >= patience;
+            });
         for (const auto& ladder : ladders)
             for (const Trial& tr : ladder) take(tr);
     } else if (tAuto) {
