@@ -297,41 +297,47 @@ std::vector<int64_t> regionAreas(const std::vector<double>& t, const std::vector
     std::vector<int64_t> areas;
     const size_t n = std::min(t.size(), oc.size());
     if (!validate(params).empty() || n == 0 || n > kMaxPoints) return areas;
-    std::vector<int64_t> rows(n), cols(n);
+    // Not value-initialised: every element is written by the mapping.
+    std::unique_ptr<int64_t[]> rows(new int64_t[n]), cols(new int64_t[n]);
     bool rowsInOrder = true;
     for (size_t i = 0; i < n; ++i) {
         if (!mapOne(t[i], oc[i], params.magT, params.magOc, &rows[i], &cols[i])) return areas;
         rowsInOrder = rowsInOrder && (i == 0 || rows[i] >= rows[i - 1]);
     }
     // The distinct pixels in (row, col) order. Points in time order (the usual case) are in row
-    // order already: only each row's columns are sorted.
+    // order already: only each row's columns are sorted (by insertion when a row holds few).
+    size_t pixels = 0;
     if (rowsInOrder) {
-        size_t out = 0;
         for (size_t a = 0; a < n;) {
             size_t b = a + 1;
             while (b < n && rows[b] == rows[a]) ++b;
-            std::sort(cols.begin() + static_cast<long>(a), cols.begin() + static_cast<long>(b));
+            if (b - a <= 16) {
+                for (size_t i = a + 1; i < b; ++i) {
+                    const int64_t x = cols[i];
+                    size_t j = i;
+                    for (; j > a && cols[j - 1] > x; --j) cols[j] = cols[j - 1];
+                    cols[j] = x;
+                }
+            } else {
+                std::sort(cols.get() + a, cols.get() + b);
+            }
             for (size_t i = a; i < b; ++i)
                 if (i == a || cols[i] != cols[i - 1]) {
-                    rows[out] = rows[a];
-                    cols[out++] = cols[i];
+                    rows[pixels] = rows[a];
+                    cols[pixels++] = cols[i];
                 }
             a = b;
         }
-        rows.resize(out);
-        cols.resize(out);
     } else {
         std::vector<std::pair<int64_t, int64_t>> px(n);
         for (size_t i = 0; i < n; ++i) px[i] = {rows[i], cols[i]};
         std::sort(px.begin(), px.end());
         px.erase(std::unique(px.begin(), px.end()), px.end());
-        rows.resize(px.size());
-        cols.resize(px.size());
-        for (size_t i = 0; i < px.size(); ++i) std::tie(rows[i], cols[i]) = px[i];
+        pixels = px.size();
+        for (size_t i = 0; i < pixels; ++i) std::tie(rows[i], cols[i]) = px[i];
     }
-    const size_t pixels = rows.size();
     UnionFind uf(pixels);
-    linkPixels(rows.data(), cols.data(), pixels, params.connectivity == 8, uf, nullptr);
+    linkPixels(rows.get(), cols.get(), pixels, params.connectivity == 8, uf, nullptr);
     std::vector<uint32_t> slot(pixels);  // a root's area slot (a root is its region's first pixel)
     for (size_t p = 0; p < pixels; ++p) {
         const uint32_t root = uf.find(static_cast<uint32_t>(p));

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "core/common/text.hpp"
 #include "core/sim/rng.hpp"
@@ -222,8 +223,13 @@ std::vector<Anchor> regionPieces(const BinaryImage& img, const std::vector<uint8
     }
     // Pixels are in (row, col) order, so each region's pieces come in increasing order: one
     // current piece per region is enough.
-    std::vector<int64_t> curPiece(img.regions.size(), -1);
-    std::vector<uint32_t> curAnchor(img.regions.size(), 0);
+    // Only the selected regions' entries are ever read: only they are initialised (the
+    // candidates or the signal, a few of the many regions of a sparse image).
+    const size_t regions = img.regions.size();
+    std::unique_ptr<int64_t[]> curPiece(new int64_t[regions]);
+    std::unique_ptr<uint32_t[]> curAnchor(new uint32_t[regions]);
+    for (size_t r = 0; r < regions; ++r)
+        if (selected[r]) curPiece[r] = -1;
     std::vector<double> sumR, sumC;
     for (size_t p = 0; p < img.pixelCount(); ++p) {
         const uint32_t reg = img.pixelRegion[p];
