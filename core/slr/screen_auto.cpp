@@ -401,8 +401,8 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
     // The trials keep one refinement round: a sparse pass against a fitted-trend O-C is judged
     // on its flattened O-C, which decides the scale of passes such as JASON1 7080 (without it,
     // recall 0.966 → 0.932 there). Dropping the second round inside the trials left the
-    // results of the real passes as they were (the 7 of docs/slr-detection.md, 17 of the other
-    // 18 passes of the shared files, the filtered station passes, the golden outputs: blits
+    // results of the real passes as they were (the 7 of docs/slr-detection.md, 13 of the other
+    // 14 screenable passes of the shared files, the filtered station passes, the golden outputs: blits
     // pass 8, a filtered pass, now keeps all 227 points, not 226) and changed three of 54
     // simulated passes by at most one point (F1 equal or better), for a fifth of the time of a
     // sparse pass.
