@@ -5,7 +5,10 @@
 // sample. Skipped when the photographs are not installed (.ci/install-deps installs them).
 #include <QtTest>
 
+#include "core/footprint/pipeline.hpp"
 #include "core/sim/footprint_eval.hpp"
+#include "core/sim/footprint_sim.hpp"
+#include "core/sim/rng.hpp"
 #include "core/sim/terrain_photo.hpp"
 #include "footprint_cases.hpp"
 #include "test_support.hpp"
@@ -79,6 +82,53 @@ private slots:
                                                                     .arg(sceneName(sc)).arg(s->visibleFitted)
                                                                     .arg(s->visible)));
         }
+    }
+
+    void everyVisibleStrongSpotIsPositionedOnOtherSeeds() {
+        // Seeds other than the test's own: on seeds 2, 5, 7, 11 and 12 the fit before
+        // 2026-11-26 left one or two clearly visible strong-ground spots of 2000 without a
+        // position (the ROI's σ, and the ring's, inflated by large bright and dark fields; or a
+        // domain joined to brighter ground through a neck). Strong ground, 2000 shots each.
+        MethodVariant def;
+        QVERIFY(findVariant("gauss", &def));
+        for (uint64_t seed : {2, 5, 7, 11, 12}) {
+            EvalParams ep;
+            ep.countPerScene = 2000;
+            ep.seed = seed;
+            ep.scenes = {Scene::Strong};
+            std::string err;
+            const std::vector<EvalStats> st = evaluateFootprint(ep, {def}, nullptr, &err);
+            QVERIFY2(st.size() == 1, err.c_str());
+            QVERIFY(st[0].visible > 0.99 * st[0].n);
+            QVERIFY2(st[0].visibleFitted == st[0].visible,
+                     qPrintable(QString("seed %1: %2 of %3 visible spots positioned")
+                                    .arg(seed).arg(st[0].visibleFitted).arg(st[0].visible)));
+        }
+    }
+
+    void spotJoinedToBrighterGroundIsFittedFromItsCore() {
+        // `simulate footprint --seed 5 --scene strong`, shot 1778: a clear spot (3635 DN on
+        // ground of 407 DN RMS) whose domain runs through a neck into brighter ground at the
+        // ROI's lower left; the domain's log-intensity is a saddle and LM from its moments ran
+        // 3.6 px towards the bright ground. Fitted from the pixels joined to the peak above 30 %
+        // of its height, the spot is positioned, doubtful, within 0.1 px of the truth.
+        FootprintSimParams sp;
+        sp.scene = Scene::Strong;
+        const FootprintSimShot shot = simulateFootprint(sp, Rng::mix(5, 1778));
+        QVERIFY(shot.truth.hasSpot);
+        cv::Mat roi;
+        shot.image.convertTo(roi, CV_32F);
+        footprint::FootprintParams p;
+        const footprint::FootprintResult r = footprint::processRoi(roi, p);
+        QVERIFY2(r.fit.ok, r.fit.error.c_str());
+        QCOMPARE(int(r.verdict), int(footprint::Verdict::Doubtful));
+        QVERIFY(!r.startNote.empty());
+        const double err = std::hypot(r.fit.x - shot.truth.x, r.fit.y - shot.truth.y);
+        QVERIFY2(err < 0.1, qPrintable(QString("error %1 px").arg(err)));
+        // Without the core fit (coreFraction 0) the same shot gets no position: the case is real.
+        p.gauss.coreFraction = 0;
+        const footprint::FootprintResult old = footprint::processRoi(roi, p);
+        QVERIFY(!old.fit.ok || old.verdict == footprint::Verdict::Rejected);
     }
 
     void uncertaintyCoversTheTruthAtItsLevel() {

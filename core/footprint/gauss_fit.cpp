@@ -120,6 +120,39 @@ bool momentStart(const std::vector<DomainPixel>& px, double S, Quad* q) {
 
 // Paper 000 eq. 8 residual at a given model: E_i = fn_i·ln(f_i / g_i), fn = f / Σf. At the
 // log-fit's own solution this equals ‖A − B·C‖²/N of eq. 8 exactly.
+// The domain pixels joined to the peak pixel (4-connected, within the domain) whose value is at
+// least `fraction` of the peak's height above the background, relative to (refX, refY); f > 0.
+std::vector<DomainPixel> domainCore(const float* img, int w, int h, const SpotDomain& domain, double background,
+                                    double fraction, double refX, double refY) {
+    std::vector<DomainPixel> out;
+    if (domain.peakX < 0 || domain.peakY < 0 || domain.peakX >= w || domain.peakY >= h ||
+        domain.mask.size() != size_t(w) * size_t(h))
+        return out;
+    double top = 0;
+    for (int p : domain.pixels) top = std::max(top, double(img[p]) - background);
+    const double level = fraction * top;
+    std::vector<unsigned char> seen(size_t(w) * size_t(h), 0);
+    std::vector<int> stack;
+    const int start = domain.peakY * w + domain.peakX;
+    if (!domain.mask[size_t(start)] || !(img[start] - background >= level)) return out;
+    seen[size_t(start)] = 1;
+    stack.push_back(start);
+    while (!stack.empty()) {
+        const int p = stack.back();
+        stack.pop_back();
+        const double f = img[p] - background;
+        if (f > 0) out.push_back({p % w - refX, p / w - refY, f, 0});
+        const int x = p % w, y = p / w;
+        const int next[4] = {x > 0 ? p - 1 : -1, x + 1 < w ? p + 1 : -1, y > 0 ? p - w : -1, y + 1 < h ? p + w : -1};
+        for (int q : next) {
+            if (q < 0 || seen[size_t(q)] || !domain.mask[size_t(q)] || !(img[q] - background >= level)) continue;
+            seen[size_t(q)] = 1;
+            stack.push_back(q);
+        }
+    }
+    return out;
+}
+
 double paperMse(const std::vector<DomainPixel>& px, const std::vector<double>& model) {
     double s = 0;
     for (const auto& p : px) s += p.f;
@@ -436,7 +469,33 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     // Paper 000 solves by QR; when Guo passes refine the result anyway, the 6×6 normal
     // equations give the same start for a fraction of the cost.
     const bool qr = params.guoIterations == 0;
-    if (!logFit(px, wts, params.xyTerm, qr, &q)) {
+    bool peaked = logFit(px, wts, params.xyTerm, qr, &q);
+    if (!peaked && params.coreFraction > 0) {
+        // Ground brighter than the threshold next to the spot joins the domain through a neck
+        // and makes its log-intensity a saddle. The spot's own core — the domain pixels joined
+        // to the peak at or above coreFraction of its height — leaves that ground beyond the
+        // dip between them: its log fit is the spot's (the verdict keeps it doubtful).
+        std::vector<DomainPixel> core = domainCore(img, w, h, domain, background, params.coreFraction, refX, refY);
+        double coreS = 0;
+        for (const auto& c : core) coreS += c.f;
+        if (core.size() >= 7 && core.size() < px.size()) {
+            std::vector<double> coreW(core.size());
+            for (size_t i = 0; i < core.size(); ++i) {
+                core[i].lnfn = std::log(core[i].f / coreS);
+                coreW[i] = core[i].f / coreS;
+            }
+            if (logFit(core, coreW, params.xyTerm, qr, &q)) {
+                px = std::move(core);
+                wts = std::move(coreW);
+                S = coreS;
+                peaked = true;
+                r.coreStart = true;
+                r.note = "the domain's log-intensity is not peaked (brighter ground joined it): fitted from the spot's "
+                         "core";
+            }
+        }
+    }
+    if (!peaked) {
         // Ground brighter than the threshold around the spot can make the domain's log-intensity
         // a saddle. The spot is still there: start LM from the moments of the domain's bright
         // core (pixels above half the brightest), and say so (the verdict marks it doubtful).

@@ -45,6 +45,10 @@ struct GaussParams {
     double uncertaintyDeadband = 0.1;              ///< texture counts beyond (1 + this)·photon part
     bool robustLoss = true;      ///< textured ground: Cauchy loss instead of least squares
     double robustScale = 1.5;    ///< Cauchy scale in residual σ
+    /// When the domain's log-intensity is not peaked (brighter ground joined the domain), the log
+    /// fit is tried again on the spot's core: the domain pixels joined to the peak (4-connected)
+    /// at or above this fraction of its height above the background. 0 = straight to the moments.
+    double coreFraction = 0.3;
 };
 
 /// A rotated Gaussian: amplitude·exp(−½[a·dx² + 2b·dx·dy + c·dy²]), dx = x − x0, dy = y − y0.
@@ -60,6 +64,7 @@ struct GaussResult {
     std::string stage;   ///< stage that produced the result: "wu", "guo", "moments" or "lm"
     std::string note;    ///< e.g. why LM was not kept
     bool fallbackStart = false;  ///< the log fit was not peaked; LM started from moments (doubtful)
+    bool coreStart = false;      ///< the domain's log fit was not peaked; its core's was (doubtful)
 };
 
 /// Fits the spot of a CV_32FC1 ROI on the given domain. background/noise from

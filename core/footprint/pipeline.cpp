@@ -56,8 +56,12 @@ const Schema<FootprintParams>& footprintSchema() {
                "(peak - background) / noise below this: no spot");
         s.integer("segment.min_pixels", LWB_FIELD(F, segment.minPixels), "px", {1, 100000}, {1, 50},
                   "a domain smaller than this: no spot");
-        s.real("segment.local_snr_floor", LWB_FIELD(F, segment.localSnrFloor), "", {0, 1, true, false}, {0.5, 1},
+        s.real("segment.local_look_from", LWB_FIELD(F, segment.localLookFrom), "", {0, 1, true, false}, {0.3, 1},
                "peaks from this x min_peak_snr up get a second look against a ring around them (kept as faint, doubtful)");
+        s.real("segment.local_snr_floor", LWB_FIELD(F, segment.localSnrFloor), "", {0, 1, true, false}, {0.5, 1},
+               "second look: the peak passes standing this x min_peak_snr ring sigma above the ring's median");
+        s.real("segment.texture_snr", LWB_FIELD(F, segment.textureSnr), "", {0, 1e6, false, true}, {5, 40},
+               "second look: or this many sigma of the ring's pixel-scale texture (neighbour differences / sqrt 2)");
         s.real("segment.ring_inner_px", LWB_FIELD(F, segment.ringInnerPx), "px", {1, 100}, {4, 12}, "inner radius of that ring");
         s.real("segment.ring_outer_px", LWB_FIELD(F, segment.ringOuterPx), "px", {1, 100}, {6, 16}, "outer radius of that ring");
         s.real("segment.second_spot_min_separation_px", LWB_FIELD(F, segment.secondSpotMinSeparation), "px", {1, 1000, false, true},
@@ -91,6 +95,9 @@ const Schema<FootprintParams>& footprintSchema() {
         s.real("gauss.textured_ratio", LWB_FIELD(F, gauss.texturedRatio), "", {1, 1000}, {1, 4},
                "ground counts as textured when its sigma exceeds the photon + read sigma by this factor");
         s.integer("gauss.lm_min_half_width", LWB_FIELD(F, gauss.lmMinHalfWidth), "px", {2, 200}, {2, 8}, "LM window half-width lower bound");
+        s.real("gauss.core_fraction", LWB_FIELD(F, gauss.coreFraction), "", {0, 0.9}, {0, 0.8},
+               "domain not peaked (brighter ground joined it): log fit again on the pixels joined to the peak above "
+               "this fraction of its height; 0 = moments at once");
         s.boolean("gauss.difference_fit", LWB_FIELD(F, gauss.differenceFit),
                   "textured ground: LM on neighbouring-pixel differences (whitens real ground's red spectrum)");
         s.real("gauss.lm_window_sigmas_difference", LWB_FIELD(F, gauss.lmWindowSigmasDifference), "sigma", {1, 20}, {1.5, 4},
@@ -219,7 +226,7 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
                 r.fit = g.fit;
                 r.gaussModel = g.model;
                 r.gaussStage = g.stage;
-                r.startNote = g.fallbackStart ? g.note : std::string();
+                r.startNote = g.fallbackStart || g.coreStart ? g.note : std::string();
                 break;
             }
         }

@@ -105,25 +105,38 @@ void openAroundPeak(std::vector<unsigned char>& above, int w, int h, int r, int 
     above[size_t(py) * w + px] = 1;
 }
 
-// (peak − median of a ring r0..r1 px around (px, py)) / robust σ of the ring; 0 when the ring
-// holds too few pixels inside the ROI.
-double ringPeakSnr(const float* img, int w, int h, int px, int py, double peak, double r0, double r1) {
-    thread_local std::vector<float> ring;
+// The peak against a ring r0..r1 px around (px, py): (peak − the ring's median) over the ring's
+// robust σ (ring), and over its pixel-scale texture σ — the robust σ of the ring's horizontal
+// neighbour differences / √2 (texture) — which large bright and dark areas crossing the ring
+// do not inflate. Both 0 when the ring holds too few pixels inside the ROI.
+struct RingLook {
+    double ring = 0, texture = 0;
+};
+RingLook ringPeakSnr(const float* img, int w, int h, int px, int py, double peak, double r0, double r1) {
+    thread_local std::vector<float> ring, diff;
     ring.clear();
+    diff.clear();
     const int R = static_cast<int>(std::ceil(r1));
+    const int xa = std::max(0, px - R), xb = std::min(w - 1, px + R);
     for (int y = std::max(0, py - R); y <= std::min(h - 1, py + R); ++y)
-        for (int x = std::max(0, px - R); x <= std::min(w - 1, px + R); ++x) {
+        for (int x = xa; x <= xb; ++x) {
             const double r2 = double(x - px) * (x - px) + double(y - py) * (y - py);
-            if (r2 >= r0 * r0 && r2 <= r1 * r1) ring.push_back(img[y * w + x]);
+            if (r2 < r0 * r0 || r2 > r1 * r1) continue;
+            ring.push_back(img[y * w + x]);
+            if (x + 1 < w) diff.push_back(std::fabs(img[y * w + x + 1] - img[y * w + x]));
         }
-    if (ring.size() < 24) return 0;
+    RingLook out;
+    if (ring.size() < 24 || diff.size() < 24) return out;
     const size_t mid = ring.size() / 2;
     std::nth_element(ring.begin(), ring.begin() + mid, ring.end());
     const double median = ring[mid];
     for (float& v : ring) v = static_cast<float>(std::fabs(v - median));
     std::nth_element(ring.begin(), ring.begin() + mid, ring.end());
-    const double sigma = std::max(1.4826 * ring[mid], 0.5);
-    return (peak - median) / sigma;
+    out.ring = (peak - median) / std::max(1.4826 * ring[mid], 0.5);
+    const size_t dm = diff.size() / 2;
+    std::nth_element(diff.begin(), diff.begin() + dm, diff.end());
+    out.texture = (peak - median) / std::max(1.4826 * diff[dm] / std::sqrt(2.0), 0.5);
+    return out;
 }
 
 // Box mean over (2r+1)² with replicated borders.
@@ -180,11 +193,15 @@ SpotDomain segmentSpot(const cv::Mat& roi, double background, double noise, doub
     // look measures the peak against a ring around it instead (its median and robust σ); a peak
     // that passes both looks at localSnrFloor·minPeakSnr is kept as a faint spot, which the
     // verdict marks doubtful: a visible spot gets a position, an empty ROI is never called good.
-    if (amp > 0 && d.peakSnr < params.minPeakSnr && d.peakSnr >= params.localSnrFloor * params.minPeakSnr) {
-        const double local = ringPeakSnr(roi.ptr<float>(), w, h, maxP.x, maxP.y, maxV, params.ringInnerPx,
-                                         params.ringOuterPx);
-        d.localPeakSnr = local;
-        d.faint = local >= params.localSnrFloor * params.minPeakSnr;
+    // The ring's σ itself can hold a bright field and a dark one; against the ring's pixel-scale
+    // texture a spot stands out all the same, so a peak that stands textureSnr texture-σ above
+    // the ring's median passes the second look too.
+    if (amp > 0 && d.peakSnr < params.minPeakSnr && d.peakSnr >= params.localLookFrom * params.minPeakSnr) {
+        const RingLook look = ringPeakSnr(roi.ptr<float>(), w, h, maxP.x, maxP.y, maxV, params.ringInnerPx,
+                                          params.ringOuterPx);
+        d.localPeakSnr = look.ring;
+        d.localTextureSnr = look.texture;
+        d.faint = look.ring >= params.localSnrFloor * params.minPeakSnr || look.texture >= params.textureSnr;
     }
     if (amp <= 0 || (d.peakSnr < params.minPeakSnr && !d.faint)) {
         d.why = "no spot: peak only " + std::to_string(d.peakSnr).substr(0, 5) + " sigma above the background";

@@ -15,11 +15,14 @@ struct SegmentParams {
     bool fillHoles = true;     ///< close the domain: dark pixels enclosed by it belong to it
     int openingRadius = 2;     ///< cut features narrower than 2r+1 px (roads) off the domain; 0 = off
     double minPeakSnr = 6.0;   ///< (peak − bg)/noise below this: no spot (unless the local look passes)
-    /// Peaks from localSnrFloor·minPeakSnr up get a second look against a ring (ringInnerPx to
-    /// ringOuterPx around the peak): one that stands localSnrFloor·minPeakSnr ring-σ above the
-    /// ring's median too is kept as a faint spot (doubtful), for ground whose large bright and
-    /// dark areas inflate the ROI-wide σ.
+    /// Peaks from localLookFrom·minPeakSnr up get a second look against a ring (ringInnerPx to
+    /// ringOuterPx around the peak): one that stands localSnrFloor·minPeakSnr ring-σ, or
+    /// textureSnr σ of the ring's pixel-scale texture, above the ring's median is kept as a
+    /// faint spot (doubtful), for ground whose large bright and dark areas inflate the ROI-wide
+    /// σ (and the ring's, when the ring crosses them).
+    double localLookFrom = 0.6;
     double localSnrFloor = 0.8;
+    double textureSnr = 14.4;
     double ringInnerPx = 8, ringOuterPx = 12;
     int minPixels = 6;         ///< a domain smaller than this: no spot
     double secondSpotMinSeparation = 4.0;  ///< px between two peaks to call them two spots
@@ -33,6 +36,7 @@ struct SpotDomain {
     double peak = 0;              ///< smoothed peak value (DN)
     double peakSnr = 0;           ///< (peak − bg)/noise
     double localPeakSnr = 0;      ///< the ring look's SNR, when the ROI-wide one was too low
+    double localTextureSnr = 0;   ///< the same against the ring's pixel-scale texture σ
     bool faint = false;           ///< found by the ring look only: the verdict marks it doubtful
     double threshold = 0;         ///< DN
     std::vector<int> pixels;      ///< domain pixels, index y·width + x

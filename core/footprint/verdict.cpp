@@ -85,7 +85,8 @@ Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int 
         j.reasons.push_back("saturated: " + std::to_string(domain.saturatedPixels) + " px at full scale");
     if (domain.faint)
         j.reasons.push_back("faint: peak " + formatDouble(domain.peakSnr, 3) + " sigma above the ROI's ground, " +
-                            formatDouble(domain.localPeakSnr, 3) + " above the ring around it");
+                            formatDouble(domain.localPeakSnr, 3) + " above the ring around it, " +
+                            formatDouble(domain.localTextureSnr, 3) + " above its pixel-scale texture");
     if (p.checkSecondSpot && domain.secondPeakFraction >= p.secondSpotFraction)
         j.reasons.push_back("second spot at (" + std::to_string(domain.secondPeakX) + ", " +
                             std::to_string(domain.secondPeakY) + "), " +
