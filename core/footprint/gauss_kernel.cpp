@@ -47,23 +47,28 @@ __attribute__((target_clones("avx2", "default")))
 void differenceGram(const double* P, int n, int k, int step, const double* w, const double* r, double* gram,
                     double* rhs, double* wd) {
     const int m = n - step;
-    thread_local double dif[8][1024];
-    // Blocks of up to 1024 differences keep the weighted columns in L1.
+    thread_local double dif[8][1024], wdif[8][1024];
+    // Blocks of up to 1024 differences keep the columns in L1. Each column is kept plain and
+    // weighted (w·d): a Gram entry is then one multiply–add of two loads per difference.
     for (int base = 0; base < m; base += 1024) {
         const int len = m - base < 1024 ? m - base : 1024;
         for (int u = 0; u < k; ++u) {
             const double* pu = P + static_cast<long>(u) * n + base;
             double* d = dif[u];
+            double* wdu = wdif[u];
 #pragma omp simd
-            for (int i = 0; i < len; ++i) d[i] = pu[i + step] - pu[i];
+            for (int i = 0; i < len; ++i) {
+                d[i] = pu[i + step] - pu[i];
+                wdu[i] = w[base + i] * d[i];
+            }
         }
         for (int u = 0; u < k; ++u) {
-            const double* du = dif[u];
+            const double* wu = wdif[u];
             double acc = 0, acc1 = 0;
 #pragma omp simd reduction(+ : acc, acc1)
             for (int i = 0; i < len; ++i) {
-                acc += w[base + i] * du[i] * r[base + i];
-                acc1 += w[base + i] * du[i];
+                acc += wu[i] * r[base + i];
+                acc1 += wu[i];
             }
             rhs[u] = (base == 0 ? 0.0 : rhs[u]) + acc;
             wd[u] = (base == 0 ? 0.0 : wd[u]) + acc1;
@@ -71,7 +76,7 @@ void differenceGram(const double* P, int n, int k, int step, const double* w, co
                 const double* dv = dif[v];
                 double g = 0;
 #pragma omp simd reduction(+ : g)
-                for (int i = 0; i < len; ++i) g += w[base + i] * du[i] * dv[i];
+                for (int i = 0; i < len; ++i) g += wu[i] * dv[i];
                 gram[u * k + v] = (base == 0 ? 0.0 : gram[u * k + v]) + g;
             }
         }
