@@ -498,8 +498,16 @@ FootprintController::Counts FootprintController::counts() const {
     return c;
 }
 
-bool FootprintController::exportAccepted(const QString& path, QString* error) const {
-    return writeFootprintReview(m_shots, m_params.method, path, true, error);
+bool FootprintController::exportAccepted(const QString& path, QString* error, int* rows) const {
+    return writeFootprintReview(m_shots, m_params.method, path, true, error, rows);
+}
+
+QString FootprintController::acceptedExportMessage(int rows, const QString& path) const {
+    const int withoutPosition = counts().good - rows;
+    QString msg = tr("Exported %n accepted shot(s) to %1", nullptr, rows).arg(path);
+    if (withoutPosition > 0)
+        msg += tr("; %n accepted shot(s) without a position (no fit) left out", nullptr, withoutPosition);
+    return msg;
 }
 
 TrendResult FootprintController::trend(const TrendParams& tp) const {

@@ -107,8 +107,12 @@ public:
 
     /// Accepted shots (effective verdict good) as CSV through the core writer of the
     /// `footprint` command's report (core::footprint::writeFootprintCsv, every column), plus
-    /// time, beam, camera, override and note. Atomic. False with *error.
-    bool exportAccepted(const QString& path, QString* error) const;
+    /// time, beam, camera, override and note. Atomic. False with *error; *rows (when given) is
+    /// the number of shots written.
+    bool exportAccepted(const QString& path, QString* error, int* rows = nullptr) const;
+    /// The status line after exporting `rows` accepted shots to `path`: says how many accepted
+    /// shots have no position (accepted by hand, their fit failed) and were left out.
+    QString acceptedExportMessage(int rows, const QString& path) const;
     /// Monthly trend of the accepted shots that have a time and a beam.
     core::footprint::TrendResult trend(const core::footprint::TrendParams& tp) const;
 

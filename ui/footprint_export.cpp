@@ -7,7 +7,7 @@ namespace lwb::ui {
 using namespace core::footprint;
 
 bool writeFootprintReview(const std::vector<Shot>& shots, Method method, const QString& path, bool acceptedOnly,
-                          QString* error) {
+                          QString* error, int* rows) {
     std::vector<BatchItem> items;
     items.reserve(shots.size());
     for (const Shot& s : shots) {
@@ -41,10 +41,12 @@ bool writeFootprintReview(const std::vector<Shot>& shots, Method method, const Q
     o.review = true;
     o.acceptedOnly = acceptedOnly;
     std::string err;
-    if (!writeFootprintCsv(path.toStdString(), items, method, &err, o)) {
+    size_t written = 0;
+    if (!writeFootprintCsv(path.toStdString(), items, method, &err, o, &written)) {
         *error = QString::fromStdString(err);
         return false;
     }
+    if (rows) *rows = static_cast<int>(written);
     return true;
 }
 

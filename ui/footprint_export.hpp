@@ -10,8 +10,9 @@
 namespace lwb::ui {
 
 /// Every shot (acceptedOnly false) or the shots whose effective verdict is good and that have a
-/// fit. False with *error (the file named) when it cannot be written.
+/// fit. False with *error (the file named) when it cannot be written; *rows (when given) is the
+/// number of rows written.
 bool writeFootprintReview(const std::vector<Shot>& shots, core::footprint::Method method, const QString& path,
-                          bool acceptedOnly, QString* error);
+                          bool acceptedOnly, QString* error, int* rows = nullptr);
 
 }  // namespace lwb::ui

@@ -482,9 +482,9 @@ void FootprintWorkspace::nextUnreviewed() {
     emit status(tr("Every shot of this view has a manual verdict"));
 }
 
-bool FootprintWorkspace::exportTable(const QString& path, bool acceptedOnly, QString* error) {
+bool FootprintWorkspace::exportTable(const QString& path, bool acceptedOnly, QString* error, int* rows) {
     commitNote();
-    return writeFootprintReview(m_controller->shots(), m_controller->params().method, path, acceptedOnly, error);
+    return writeFootprintReview(m_controller->shots(), m_controller->params().method, path, acceptedOnly, error, rows);
 }
 
 void FootprintWorkspace::exportDialog(bool acceptedOnly) {
@@ -495,11 +495,12 @@ void FootprintWorkspace::exportDialog(bool acceptedOnly) {
     if (path.isEmpty()) return;
     st.setValue("paths/lastExport", QFileInfo(path).absolutePath());
     QString err;
-    if (!exportTable(path, acceptedOnly, &err)) {
+    int rows = 0;
+    if (!exportTable(path, acceptedOnly, &err, &rows)) {
         emit status(tr("Cannot export: %1").arg(err));
         return;
     }
-    emit status(acceptedOnly ? tr("Exported %1 accepted shots to %2").arg(m_controller->counts().good).arg(path)
+    emit status(acceptedOnly ? m_controller->acceptedExportMessage(rows, path)
                              : tr("Exported the review table (%1 shots) to %2").arg(m_controller->count()).arg(path));
 }
 

@@ -69,7 +69,7 @@ public:
 
     /// The review table (every shot; acceptedOnly: the accepted ones) through the CLI's report
     /// writer with the review columns. Atomic. False with *error.
-    bool exportTable(const QString& path, bool acceptedOnly, QString* error);
+    bool exportTable(const QString& path, bool acceptedOnly, QString* error, int* rows = nullptr);
     /// Asks for a file and exports (status message or error).
     void exportDialog(bool acceptedOnly);
 

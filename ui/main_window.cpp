@@ -777,10 +777,11 @@ void MainWindow::exportAccepted() {
     if (path.isEmpty()) return;
     st.setValue("paths/lastExport", QFileInfo(path).absolutePath());
     QString err;
-    if (!m_footprint->controller()->exportAccepted(path, &err))
+    int rows = 0;
+    if (!m_footprint->controller()->exportAccepted(path, &err, &rows))
         showError(tr("Cannot export"), err);
     else
-        statusBar()->showMessage(tr("Exported %1 accepted shots to %2").arg(m_footprint->controller()->counts().good).arg(path), 6000);
+        statusBar()->showMessage(m_footprint->controller()->acceptedExportMessage(rows, path), 6000);
 }
 
 void MainWindow::addRecent(const QString& path) {

@@ -78,8 +78,9 @@ std::string reviewColumns(const BatchItem& item, size_t k, Verdict computed) {
 }
 }  // namespace
 
-std::string footprintCsvRows(const BatchItem& item, Method method, const FootprintCsvOptions& o) {
+std::string footprintCsvRows(const BatchItem& item, Method method, const FootprintCsvOptions& o, size_t* rows) {
     std::string out;
+    size_t count = 0;
     const std::string file = csvEscape(item.file);
     // Unreadable frames and failed fits are rejected rows, whatever the review says.
     auto failedRow = [&](const std::string& reason, size_t k, const std::string& roi) {
@@ -87,9 +88,11 @@ std::string footprintCsvRows(const BatchItem& item, Method method, const Footpri
         out += file + ",,,rejected," + csvEscape(reason) + "," + methodName(method) + ",,,,,,,,,," + roi + ",,,,,,,";
         if (o.review) out += reviewColumns(item, k, Verdict::Rejected);
         out += "\n";
+        ++count;
     };
     if (!item.readError.empty()) {
         failedRow("unreadable: " + item.readError, 0, "0");
+        if (rows) *rows += count;
         return out;
     }
     for (size_t k = 0; k < item.rois.size(); ++k) {
@@ -124,19 +127,22 @@ std::string footprintCsvRows(const BatchItem& item, Method method, const Footpri
         out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY);
         if (o.review) out += reviewColumns(item, k, r.verdict);
         out += "\n";
+        ++count;
     }
+    if (rows) *rows += count;
     return out;
 }
 
 bool writeFootprintCsv(const std::string& path, const std::vector<BatchItem>& items, Method method,
-                       std::string* error, const FootprintCsvOptions& options) {
+                       std::string* error, const FootprintCsvOptions& options, size_t* rows) {
+    if (rows) *rows = 0;
     AtomicFile f(path);
     if (!f.ok()) {
         *error = f.error();
         return false;
     }
     f.stream() << footprintCsvHeader(options);
-    for (const auto& it : items) f.stream() << footprintCsvRows(it, method, options);
+    for (const auto& it : items) f.stream() << footprintCsvRows(it, method, options, rows);
     if (!f.commit()) {
         *error = f.error();
         return false;

@@ -55,10 +55,13 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
 
 /// The CSV header of footprint reports.
 std::string footprintCsvHeader(const FootprintCsvOptions& options = {});
-/// One CSV row per ROI of the item (coordinates in full-image px), each ending in '\n'.
-std::string footprintCsvRows(const BatchItem& item, Method method, const FootprintCsvOptions& options = {});
-/// Writes a whole report atomically. False with *error on failure.
+/// One CSV row per ROI of the item (coordinates in full-image px), each ending in '\n'; adds the
+/// number of rows to *rows when given.
+std::string footprintCsvRows(const BatchItem& item, Method method, const FootprintCsvOptions& options = {},
+                             size_t* rows = nullptr);
+/// Writes a whole report atomically. False with *error on failure; *rows (when given) is the
+/// number of data rows written.
 bool writeFootprintCsv(const std::string& path, const std::vector<BatchItem>& items, Method method,
-                       std::string* error, const FootprintCsvOptions& options = {});
+                       std::string* error, const FootprintCsvOptions& options = {}, size_t* rows = nullptr);
 
 }  // namespace lwb::core::footprint

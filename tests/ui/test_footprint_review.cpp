@@ -378,6 +378,39 @@ private slots:
     }
 
     // Item 7: a long load shows progress and Cancel; the loader leaves a core to the GUI.
+    // Found in a real window (2026-11-26): a shot accepted by hand whose fit failed has no
+    // position, so the accepted export leaves it out, yet the status line counted it ("Exported
+    // 35 accepted shots", 34 rows). The message now gives the rows written and what was left out.
+    void acceptedExportCountsTheRowsWritten() {
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
+        int rejected = -1;
+        for (int i = 0; i < c->count() && rejected < 0; ++i)
+            if (c->shot(i)->verdict == Verdict::Rejected && c->shot(i)->loadError.isEmpty()) rejected = i;
+        QVERIFY2(rejected >= 0, "the simulated folder holds a rejected shot (an empty ROI)");
+        fw->selectRow(rejected);
+        fw->acceptCurrent();
+        QCOMPARE(c->shot(rejected)->effectiveVerdict(), Verdict::Good);
+        const int good = c->counts().good;
+        const QString path = m_dir.path() + "/accepted_rows.csv";
+        QString err;
+        int rows = -1;
+        QVERIFY2(c->exportAccepted(path, &err, &rows), qPrintable(err));
+        const auto got = lwb::core::readCsv(path.toStdString());
+        QVERIFY(got.ok);
+        QCOMPARE(int(got.table.rows.size()), rows);
+        QCOMPARE(rows, good - 1);
+        const QString msg = c->acceptedExportMessage(rows, path);
+        QVERIFY2(msg.startsWith(QString("Exported %1 accepted shot").arg(rows)), qPrintable(msg));
+        QVERIFY2(msg.contains("1 accepted shot(s) without a position"), qPrintable(msg));
+        // The workspace's own export path counts the same rows.
+        int rows2 = -1;
+        QVERIFY2(fw->exportTable(path, true, &err, &rows2), qPrintable(err));
+        QCOMPARE(rows2, rows);
+    }
+
     void longLoadShowsProgressAndCancel() {
         QCOMPARE(loaderThreadCount(), std::max(1, QThread::idealThreadCount() - 1));
         QCOMPARE(loaderPool()->maxThreadCount(), loaderThreadCount());
