@@ -150,6 +150,10 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     m_table->setColumnWidth(ShotTableModel::VerdictCol,
                             m_table->fontMetrics().horizontalAdvance(tr("unreadable (manual)")) + 12);
     m_table->setColumnWidth(ShotTableModel::Reasons, 160);
+    // The verdict is what a reviewer reads first: shown right after the file name, so it is in
+    // view without scrolling at the default width (it sat behind a horizontal scrollbar,
+    // cut to "doubtf", after the time, beam and position columns). Only the view's order moves.
+    m_table->horizontalHeader()->moveSection(m_table->horizontalHeader()->visualIndex(ShotTableModel::VerdictCol), 1);
     leftLay->addWidget(m_table, 1);
     auto* overrideRow = new QHBoxLayout;
     auto* accept = new QPushButton(tr("Accept (A)"), left);

@@ -411,6 +411,21 @@ private slots:
         QCOMPARE(rows2, rows);
     }
 
+    // Seen in a real window at the default 1480 × 900: the verdict column sat behind the list's
+    // horizontal scrollbar, cut to "doubtf". It now follows the file name and is in view.
+    void verdictColumnIsInViewAtTheDefaultSize() {
+        MainWindow w;
+        QVERIFY(showDemo(w));
+        w.resize(1480, 900);
+        QVERIFY(QTest::qWaitFor([&] { return w.width() == 1480; }, 2000));
+        QTableView* t = w.footprint()->table();
+        const int x = t->columnViewportPosition(ShotTableModel::VerdictCol);
+        QVERIFY2(x >= 0 && x + t->columnWidth(ShotTableModel::VerdictCol) <= t->viewport()->width(),
+                 qPrintable(QString("verdict column at %1..%2 of a %3 px viewport")
+                                .arg(x).arg(x + t->columnWidth(ShotTableModel::VerdictCol)).arg(t->viewport()->width())));
+        QCOMPARE(t->horizontalHeader()->visualIndex(ShotTableModel::VerdictCol), 1);
+    }
+
     void longLoadShowsProgressAndCancel() {
         QCOMPARE(loaderThreadCount(), std::max(1, QThread::idealThreadCount() - 1));
         QCOMPARE(loaderPool()->maxThreadCount(), loaderThreadCount());
