@@ -138,13 +138,16 @@ bool momentStart(const std::vector<DomainPixel>& px, double S, Quad* q) {
 // Paper 000 eq. 8 residual at a given model: E_i = fn_i·ln(f_i / g_i), fn = f / Σf. At the
 // log-fit's own solution this equals ‖A − B·C‖²/N of eq. 8 exactly.
 // The domain pixels joined to the peak pixel (4-connected, within the domain) whose value is at
-// least `fraction` of the peak's height above the background, relative to (refX, refY); f > 0.
+// least `fraction` of the domain's brightest pixel above the background, relative to
+// (refX, refY); f > 0.
 std::vector<DomainPixel> domainCore(const float* img, int w, int h, const SpotDomain& domain, double background,
                                     double fraction, double refX, double refY) {
     std::vector<DomainPixel> out;
     if (domain.peakX < 0 || domain.peakY < 0 || domain.peakX >= w || domain.peakY >= h ||
         domain.mask.size() != size_t(w) * size_t(h))
         return out;
+    // The height of the domain's brightest pixel: the smoothed peak's lower value made a larger
+    // core that turned an empty strong-ground ROI of the golden set into a doubtful "spot".
     double top = 0;
     for (int p : domain.pixels) top = std::max(top, double(img[p]) - background);
     const double level = fraction * top;
@@ -500,7 +503,7 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     if (!peaked && params.coreFraction > 0) {
         // Ground brighter than the threshold next to the spot joins the domain through a neck
         // and makes its log-intensity a saddle. The spot's own core — the domain pixels joined
-        // to the peak at or above coreFraction of its height — leaves that ground beyond the
+        // to the peak at or above coreFraction of the brightest's height — leaves that ground beyond the
         // dip between them: its log fit is the spot's (the verdict keeps it doubtful).
         std::vector<DomainPixel> core = domainCore(img, w, h, domain, background, params.coreFraction, refX, refY);
         double coreS = 0;

@@ -47,7 +47,8 @@ struct GaussParams {
     double robustScale = 1.5;    ///< Cauchy scale in residual σ
     /// When the domain's log-intensity is not peaked (brighter ground joined the domain), the log
     /// fit is tried again on the spot's core: the domain pixels joined to the peak (4-connected)
-    /// at or above this fraction of its height above the background. 0 = straight to the moments.
+    /// at or above this fraction of the domain's brightest pixel above the background. 0 =
+    /// straight to the moments.
     double coreFraction = 0.3;
 };
 

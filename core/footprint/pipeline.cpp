@@ -97,7 +97,7 @@ const Schema<FootprintParams>& footprintSchema() {
         s.integer("gauss.lm_min_half_width", LWB_FIELD(F, gauss.lmMinHalfWidth), "px", {2, 200}, {2, 8}, "LM window half-width lower bound");
         s.real("gauss.core_fraction", LWB_FIELD(F, gauss.coreFraction), "", {0, 0.9}, {0, 0.8},
                "domain not peaked (brighter ground joined it): log fit again on the pixels joined to the peak above "
-               "this fraction of its height; 0 = moments at once");
+               "this fraction of the brightest domain pixel's height; 0 = moments at once");
         s.boolean("gauss.difference_fit", LWB_FIELD(F, gauss.differenceFit),
                   "textured ground: LM on neighbouring-pixel differences (whitens real ground's red spectrum)");
         s.real("gauss.lm_window_sigmas_difference", LWB_FIELD(F, gauss.lmWindowSigmasDifference), "sigma", {1, 20}, {1.5, 4},

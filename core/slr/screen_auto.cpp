@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <condition_variable>
+#include <exception>
 #include <limits>
 #include <map>
-#include <optional>
-#include <cmath>
-#include <exception>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <thread>
 
 #include "core/common/text.hpp"
