@@ -9,6 +9,7 @@
 #include "core/sim/footprint_eval.hpp"
 #include "core/sim/footprint_sim.hpp"
 #include "core/sim/rng.hpp"
+#include "core/sim/texture_bound.hpp"
 #include "core/sim/terrain_photo.hpp"
 #include "footprint_cases.hpp"
 #include "test_support.hpp"
@@ -65,9 +66,10 @@ private slots:
         QVERIFY(s && s->n == 2000);
         QVERIFY(s->fitted >= 0.99 * s->n);
         if (Scene(scene) == Scene::Night)
-            QEXPECT_FAIL("", "night on photo ground: 0.062 px (seed 1, 2000 shots; CRLB 0.020). The 10-40 DN "
-                             "texture, not photons, limits it; the difference fit, robust loss and window "
-                             "variants tried all stay at 0.062-0.067 px", Continue);
+            QEXPECT_FAIL("", "night on photo ground: 0.062 px (seed 1, 2000 shots; photon CRLB 0.020). The 10-40 DN "
+                             "texture, not photons, limits it: with the texture as Gaussian noise of the ground's "
+                             "autocorrelation the bound is 0.061 px (nightTargetIsBelowTheTextureBound) and the fit "
+                             "is at it; 0.05 px is 18 % below that bound", Continue);
         QVERIFY2(s->meanErr <= target, qPrintable(QString("mean radial error %1 px").arg(s->meanErr)));
     }
 
@@ -129,6 +131,38 @@ private slots:
         p.gauss.coreFraction = 0;
         const footprint::FootprintResult old = footprint::processRoi(roi, p);
         QVERIFY(!old.fit.ok || old.verdict == footprint::Verdict::Rejected);
+    }
+
+    void nightTargetIsBelowTheTextureBound() {
+        // Why night stays at 0.062 px: with the ground's texture counted as noise (a Gaussian
+        // field with the photo ground's ensemble autocorrelation, 1000 patches) the Cramér–Rao
+        // bound of the centre over the test's first 200 night shots is above the 0.05 px target,
+        // and the fit is within 10 % of it. (A bound for that model, not for every patch: real
+        // patches differ from the ensemble, and on those 200 shots the fit is 5 % below it.)
+        // Without the texture the same computation gives the photon bound of the eval table.
+        const GroundCorrelation rho = photoGroundCorrelation(1000, 23, 77);
+        QVERIFY2(rho.ok, rho.error.c_str());
+        QVERIFY(rho.at(1, 0) > 0.5 && rho.at(1, 0) < 1);  // real ground: strongly correlated neighbours
+        double bound = 0, white = 0;
+        int n = 0;
+        for (int i = 0; i < 200; ++i) {
+            FootprintSimParams sp;
+            sp.scene = Scene::Night;
+            const FootprintSimShot shot = simulateFootprint(sp, Rng::mix(1, uint64_t(Scene::Night) * 1000003ULL + i));
+            const TextureBound b = textureBound(shot.truth, shot.image.cols, shot.image.rows, sp.camera, rho);
+            QVERIFY(b.ok);
+            bound += b.radialPx;
+            white += b.whiteRadialPx;
+            ++n;
+        }
+        bound /= n;
+        white /= n;
+        const EvalStats* s = statsFor(m_normal, Scene::Night);
+        QVERIFY(s);
+        qInfo("night: bound with texture %.4f px, photons only %.4f px; the fit %.4f px", bound, white, s->meanErr);
+        QVERIFY2(white > 0.015 && white < 0.025, qPrintable(QString("photon bound %1 px").arg(white)));
+        QVERIFY2(bound > 0.05, qPrintable(QString("texture bound %1 px").arg(bound)));
+        QVERIFY2(s->meanErr <= 1.1 * bound, qPrintable(QString("fit %1 px, bound %2 px").arg(s->meanErr).arg(bound)));
     }
 
     void uncertaintyCoversTheTruthAtItsLevel() {
