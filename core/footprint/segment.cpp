@@ -189,13 +189,12 @@ SpotDomain segmentSpot(const cv::Mat& roi, double background, double noise, doub
     const double amp = maxV - background;
     d.peakSnr = amp / std::max(noise, 1e-9);
     // On ground with large bright and dark areas (fields, roofs) the ROI-wide σ holds their
-    // spread, and a plain spot can sit less than minPeakSnr of it above the median. A second
-    // look measures the peak against a ring around it instead (its median and robust σ); a peak
-    // that passes both looks at localSnrFloor·minPeakSnr is kept as a faint spot, which the
-    // verdict marks doubtful: a visible spot gets a position, an empty ROI is never called good.
-    // The ring's σ itself can hold a bright field and a dark one; against the ring's pixel-scale
-    // texture a spot stands out all the same, so a peak that stands textureSnr texture-σ above
-    // the ring's median passes the second look too.
+    // spread, and a plain spot can sit less than minPeakSnr of it above the median. A peak from
+    // localLookFrom·minPeakSnr up gets a second look against a ring around it: it passes when it
+    // stands localSnrFloor·minPeakSnr of the ring's robust σ above the ring's median, or — the
+    // ring's σ can itself hold a bright field and a dark one — textureSnr σ of the ring's
+    // pixel-scale texture. A peak that passes is kept as a faint spot, which the verdict marks
+    // doubtful: a visible spot gets a position, an empty ROI is never called good.
     if (amp > 0 && d.peakSnr < params.minPeakSnr && d.peakSnr >= params.localLookFrom * params.minPeakSnr) {
         const RingLook look = ringPeakSnr(roi.ptr<float>(), w, h, maxP.x, maxP.y, maxV, params.ringInnerPx,
                                           params.ringOuterPx);
