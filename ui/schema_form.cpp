@@ -1,13 +1,26 @@
 #include "ui/schema_form.hpp"
 
+#include <QHash>
 #include <QLabel>
+#include <QStringList>
 #include <QVBoxLayout>
 #include <cmath>
 
 namespace lwb::ui {
 
 QString defaultLabel(const core::FieldInfo& info) {
-    QString s = QString::fromStdString(info.label());
+    QStringList words = QString::fromStdString(info.label()).split(' ', Qt::SkipEmptyParts);
+    // A last word that repeats the unit shown beside the field ("ring inner px" … px) goes.
+    if (words.size() > 1 && !info.unit.empty() &&
+        words.last().compare(QString::fromStdString(info.unit), Qt::CaseInsensitive) == 0)
+        words.removeLast();
+    // Abbreviations as the docs write them ("texture snr" → "Texture SNR").
+    static const QHash<QString, QString> upper = {{"snr", "SNR"}, {"mse", "MSE"}, {"lm", "LM"},   {"rms", "RMS"},
+                                                  {"np", "NP"},   {"crd", "CRD"}, {"cpf", "CPF"}, {"gcm", "GCM"},
+                                                  {"tefm", "TEFM"}, {"dn", "DN"}, {"oc", "O-C"}};
+    for (QString& w : words)
+        if (const auto it = upper.constFind(w); it != upper.constEnd()) w = *it;
+    QString s = words.join(' ');
     if (!s.isEmpty()) s[0] = s[0].toUpper();
     return s;
 }

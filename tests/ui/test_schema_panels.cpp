@@ -156,6 +156,28 @@ class TestSchemaPanels : public QObject {
 private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
+    void defaultLabelsReadAsTheDocsWrite() {
+        // Seen in a real window: "Texture snr", "Ring inner px" beside its own "8 px" box.
+        lwb::core::FieldInfo f;
+        f.key = "segment.texture_snr";
+        QCOMPARE(defaultLabel(f), QString("Texture SNR"));
+        f.key = "segment.ring_inner_px";
+        f.unit = "px";
+        QCOMPARE(defaultLabel(f), QString("Ring inner"));
+        f.key = "roi.size_px";
+        f.unit = "";
+        QCOMPARE(defaultLabel(f), QString("Size px"));  // no unit shown: the word stays
+        f.key = "px";
+        f.unit = "px";
+        QCOMPARE(defaultLabel(f), QString("Px"));  // never an empty label
+        f.key = "camera.saturation_dn";
+        f.unit = "DN";
+        QCOMPARE(defaultLabel(f), QString("Saturation"));
+        f.key = "gauss.lm_window_sigmas";
+        f.unit = "sigma";
+        QCOMPARE(defaultLabel(f), QString("LM window sigmas"));
+    }
+
     
 
     void footprintPanelEveryField() {
