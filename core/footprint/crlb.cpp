@@ -24,33 +24,39 @@ CrlbResult crlbClosedForm(double amplitudeDn, double sigmaMajor, double sigmaMin
     return r;
 }
 
+double spotPixelDerivatives(const GaussModel& m, int x, int y, int supersample, double d[6]) {
+    const int s = std::max(1, supersample);
+    double mu = 0;
+    for (int k = 0; k < 6; ++k) d[k] = 0;
+    for (int j = 0; j < s; ++j)
+        for (int i = 0; i < s; ++i) {
+            const double dx = x - 0.5 + (i + 0.5) / s - m.x0, dy = y - 0.5 + (j + 0.5) / s - m.y0;
+            const double e = std::exp(-0.5 * (m.a * dx * dx + 2 * m.b * dx * dy + m.c * dy * dy));
+            const double gg = m.amplitude * e;
+            mu += gg;
+            d[0] += e;
+            d[1] += gg * (m.a * dx + m.b * dy);
+            d[2] += gg * (m.b * dx + m.c * dy);
+            d[3] += -0.5 * gg * dx * dx;
+            d[4] += -gg * dx * dy;
+            d[5] += -0.5 * gg * dy * dy;
+        }
+    const double inv = 1.0 / (s * s);
+    for (int k = 0; k < 6; ++k) d[k] *= inv;
+    return mu * inv;
+}
+
 CrlbResult crlbFisher(const GaussModel& m, int width, int height, const CameraParams& camera, int supersample) {
     CrlbResult r;
     using Vec7 = Eigen::Matrix<double, 7, 1>;
     Eigen::Matrix<double, 7, 7> F = Eigen::Matrix<double, 7, 7>::Zero();
     const double g = camera.gainEPerDn, rn2 = camera.readNoiseE * camera.readNoiseE;
-    const int s = std::max(1, supersample);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            Vec7 d = Vec7::Zero();
-            double mu = 0;
-            for (int j = 0; j < s; ++j)
-                for (int i = 0; i < s; ++i) {
-                    const double dx = x - 0.5 + (i + 0.5) / s - m.x0, dy = y - 0.5 + (j + 0.5) / s - m.y0;
-                    const double e = std::exp(-0.5 * (m.a * dx * dx + 2 * m.b * dx * dy + m.c * dy * dy));
-                    const double gg = m.amplitude * e;
-                    mu += gg;
-                    d(0) += e;
-                    d(1) += gg * (m.a * dx + m.b * dy);
-                    d(2) += gg * (m.b * dx + m.c * dy);
-                    d(3) += -0.5 * gg * dx * dx;
-                    d(4) += -gg * dx * dy;
-                    d(5) += -0.5 * gg * dy * dy;
-                }
-            const double inv = 1.0 / (s * s);
-            d *= inv;
-            d(6) = 1.0;
-            mu = mu * inv + m.bg0;
+            double dd[6];
+            const double mu = spotPixelDerivatives(m, x, y, supersample, dd) + m.bg0;
+            Vec7 d;
+            d << dd[0], dd[1], dd[2], dd[3], dd[4], dd[5], 1.0;
             F += (g * g / (g * std::max(mu, 0.0) + rn2)) * d * d.transpose();
         }
     const Eigen::Matrix<double, 7, 7> C = F.inverse();

@@ -19,6 +19,11 @@ struct CrlbResult {
 CrlbResult crlbClosedForm(double amplitudeDn, double sigmaMajor, double sigmaMinor, double backgroundDn,
                           const CameraParams& camera, bool pixelIntegrated);
 
+/// The spot part of pixel (x, y) of a model, integrated over the pixel with supersample²
+/// points: returns amplitude·(mean of exp) and fills d with its derivatives by amplitude, x0,
+/// y0, a, b, c (the background's are 1 and, for a plane, dx, dy). Shared by the Fisher bounds.
+double spotPixelDerivatives(const GaussModel& m, int x, int y, int supersample, double d[6]);
+
 /// Numerical bound: Fisher information I = Σ_k g²(∂μ_k/∂θ)(∂μ_k/∂θ)ᵀ/(g·μ_k + σr²) of a
 /// pixel-integrated rotated Gaussian on a flat background (parameters amplitude, x0, y0, a, b, c,
 /// background) over a width×height ROI; `supersample`² points per pixel for the integral.

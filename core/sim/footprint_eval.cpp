@@ -97,16 +97,7 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
                 shot.image.convertTo(roi, CV_32F);
                 const FootprintSimTruth& t = shot.truth;
                 if (t.hasSpot) {
-                    GaussModel gm;
-                    gm.amplitude = t.amplitude;
-                    gm.x0 = t.x;
-                    gm.y0 = t.y;
-                    const double c = std::cos(t.tiltRad), s = std::sin(t.tiltRad);
-                    const double i1 = 1 / (t.sigmaMajor * t.sigmaMajor), i2 = 1 / (t.sigmaMinor * t.sigmaMinor);
-                    gm.a = i1 * c * c + i2 * s * s;
-                    gm.b = (i1 - i2) * c * s;
-                    gm.c = i1 * s * s + i2 * c * c;
-                    gm.bg0 = t.groundMean;
+                    const GaussModel gm = truthModel(t);
                     const CrlbResult cr = crlbFisher(gm, roi.cols, roi.rows, sp.camera, 3);
                     if (cr.ok) crlb[i] = cr.radialPx;
                 }

@@ -171,6 +171,20 @@ std::string groundProblem(const FootprintSimParams& p) {
     return terrainPhotos().ok ? std::string() : terrainPhotos().error;
 }
 
+footprint::GaussModel truthModel(const FootprintSimTruth& t) {
+    footprint::GaussModel gm;
+    gm.amplitude = t.amplitude;
+    gm.x0 = t.x;
+    gm.y0 = t.y;
+    const double c = std::cos(t.tiltRad), s = std::sin(t.tiltRad);
+    const double i1 = 1 / (t.sigmaMajor * t.sigmaMajor), i2 = 1 / (t.sigmaMinor * t.sigmaMinor);
+    gm.a = i1 * c * c + i2 * s * s;
+    gm.b = (i1 - i2) * c * s;
+    gm.c = i1 * s * s + i2 * c * c;
+    gm.bg0 = t.groundMean;
+    return gm;
+}
+
 FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
     Rng rng(seed);
     FootprintSimShot shot;

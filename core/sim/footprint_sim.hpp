@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "core/footprint/gauss_fit.hpp"
 #include "core/footprint/spot.hpp"
 
 namespace lwb::core::sim {
@@ -76,6 +77,9 @@ struct FootprintSimShot {
     cv::Mat image;                 ///< CV_16UC1, 0..saturation
     FootprintSimTruth truth;
 };
+
+/// The truth's spot as a rotated Gaussian on its ground's mean level (no plane).
+footprint::GaussModel truthModel(const FootprintSimTruth& truth);
 
 /// Photo ground falls back to synthetic ground when no photographs are installed (the truth
 /// says so); callers that need photos check groundProblem() first.

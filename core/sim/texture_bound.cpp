@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/footprint/crlb.hpp"
 #include "core/sim/rng.hpp"
 #include "core/sim/terrain_photo.hpp"
 
@@ -65,9 +66,7 @@ TextureBound textureBound(const FootprintSimTruth& t, int width, int height, con
                           const GroundCorrelation& rho, int window) {
     TextureBound b;
     if (!rho.ok || !t.hasSpot || window < 3 || !(t.sigmaMajor > 0) || !(t.sigmaMinor > 0)) return b;
-    const double c = std::cos(t.tiltRad), s = std::sin(t.tiltRad);
-    const double i1 = 1 / (t.sigmaMajor * t.sigmaMajor), i2 = 1 / (t.sigmaMinor * t.sigmaMinor);
-    const double qa = i1 * c * c + i2 * s * s, qb = (i1 - i2) * c * s, qc = i1 * s * s + i2 * c * c;
+    const footprint::GaussModel m = truthModel(t);
     const int cx = static_cast<int>(std::lround(t.x)), cy = static_cast<int>(std::lround(t.y));
     const int xa = std::clamp(cx - window / 2, 0, std::max(0, width - window));
     const int ya = std::clamp(cy - window / 2, 0, std::max(0, height - window));
@@ -83,11 +82,11 @@ TextureBound textureBound(const FootprintSimTruth& t, int width, int height, con
     Eigen::MatrixXd J(n, 9);
     Eigen::VectorXd white(n);
     for (int k = 0; k < n; ++k) {
-        const double dx = px[k] - t.x, dy = py[k] - t.y;
-        const double e = std::exp(-0.5 * (qa * dx * dx + 2 * qb * dx * dy + qc * dy * dy)), G = t.amplitude * e;
-        J.row(k) << e, G * (qa * dx + qb * dy), G * (qb * dx + qc * dy), -0.5 * G * dx * dx, -G * dx * dy,
-            -0.5 * G * dy * dy, 1, dx, dy;
-        white(k) = std::max(t.groundMean + G, 0.0) / g + rn * rn;
+        // The pixel-integrated spot (3×3 points a pixel, as the eval's photon bound), + a plane.
+        double d[6];
+        const double spot = footprint::spotPixelDerivatives(m, px[k], py[k], 3, d);
+        J.row(k) << d[0], d[1], d[2], d[3], d[4], d[5], 1, px[k] - t.x, py[k] - t.y;
+        white(k) = std::max(t.groundMean + spot, 0.0) / g + rn * rn;
     }
     Eigen::MatrixXd S(n, n);
     const double tex2 = t.textureRms * t.textureRms;

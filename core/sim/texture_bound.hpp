@@ -29,7 +29,7 @@ struct TextureBound {
     double radialPx = 0;       ///< expected radial error of an unbiased estimator at the bound, texture + photons
     double whiteRadialPx = 0;  ///< the same with photon + read noise alone
 };
-/// The bound for the shot's true spot (sampled Gaussian + plane; 9 parameters) over a window
+/// The bound for the shot's true spot (pixel-integrated Gaussian + plane; 9 parameters) over a window
 /// of side `window` px around the truth inside a width × height ROI, the texture of RMS
 /// truth.textureRms with correlation rho. Radial error from the covariance C of (x, y):
 /// √(π·(Cxx + Cyy))/2, exact for a circular 2-D Gaussian error.
