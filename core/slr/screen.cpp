@@ -476,6 +476,11 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
     if (!std::is_sorted(t.begin(), t.end()))
         std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
     double score = wholePassScore(order, t, oc, res);
+    // A result that shows no track (score ≤ 0: everything, nothing or scattered noise selected)
+    // is not refined: a trend fitted to it flattens nothing. Inside a scale search these are the
+    // trials at scales far from the track's, a fifth to a third of them and the dearest (their
+    // screening selects most of the points); refining them cost a tenth of a sparse pass.
+    if (!(score > 0)) return;
     std::vector<double> shift(n, 0.0), flat(n);
     ScreenParams again = params;
     again.refineRounds = 0;
@@ -523,6 +528,7 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
             nextShift[i] += trend[i];
             flat[i] = oc[i] - nextShift[i];
         }
+        again.previousMagOc = res.magOc;
         ScreenResult r2 = screenSignal(t, flat, again, fb);
         if (!r2.ok) return;
         const double score2 = wholePassScore(order, t, flat, r2);

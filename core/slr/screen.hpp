@@ -67,6 +67,11 @@ struct ScreenParams {
                                    ///< it (automaticAreaLimit); (0, 0.5]
     int autoMaxPoints = 30000;     ///< automatic mode scores scales on at most this many points (three
                                    ///< time windows of the pass); 1000..1e7
+    /// The same for sparse passes (sparseRateBelow), 1000..1e7. Their search runs four ladders
+    /// and a refinement round in each trial, about four times the work per scoring point of a
+    /// dense pass: 20000 points kept the results of the 59 680-point passes with gaps (F1
+    /// within 0.0005) for a quarter less time; every other sparse pass measured is smaller.
+    int autoMaxPointsSparse = 20000;
     /// Automatic mode (automatic = true): after the screening, a smooth trend (Legendre
     /// polynomial, 3σ-clipped, held constant outside the accepted time span) is fitted to the
     /// accepted points and subtracted, and the flattened O-C is screened again; the second
@@ -96,6 +101,10 @@ struct ScreenParams {
     /// outside the track, the image's score cannot tell the track from a piece of it, and the
     /// screening kept 28 % of a clean 3577-point BLITS pass (checkNoiseFloor in screen_auto.hpp).
     bool acceptFloorless = true;
+    /// Internal (no schema row; the refinement sets it): the O-C magnification of the round
+    /// before, 0 = none. A search on an O-C flattened by that round's track starts its ladders
+    /// at O-C pixels at most 4× that round's pixel (screen_auto.cpp says why).
+    double previousMagOc = 0;
 };
 
 /// Empty when the parameters are valid, else what is wrong (names the parameter).
