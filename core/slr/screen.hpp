@@ -67,11 +67,6 @@ struct ScreenParams {
                                    ///< it (automaticAreaLimit); (0, 0.5]
     int autoMaxPoints = 30000;     ///< automatic mode scores scales on at most this many points (three
                                    ///< time windows of the pass); 1000..1e7
-    /// The same for sparse passes (sparseRateBelow), 1000..1e7. Their search runs four ladders
-    /// and a refinement round in each trial, about four times the work per scoring point of a
-    /// dense pass: 20000 points kept the results of the 59 680-point passes with gaps (F1
-    /// within 0.0005) for a quarter less time; every other sparse pass measured is smaller.
-    int autoMaxPointsSparse = 20000;
     /// Automatic mode (automatic = true): after the screening, a smooth trend (Legendre
     /// polynomial, 3σ-clipped, held constant outside the accepted time span) is fitted to the
     /// accepted points and subtracted, and the flattened O-C is screened again; the second

@@ -363,7 +363,7 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
 
     // Scoring windows: everything, or three runs of consecutive (time-ordered) points.
     const bool sparse = params.sparseRateBelow <= 0 || res.ratePerS < params.sparseRateBelow;
-    const size_t maxPts = static_cast<size_t>(sparse ? params.autoMaxPointsSparse : params.autoMaxPoints);
+    const size_t maxPts = static_cast<size_t>(params.autoMaxPoints);
     std::vector<std::pair<size_t, size_t>> win;  // [begin, end) in time order
     if (n <= maxPts) {
         win.push_back({0, n});

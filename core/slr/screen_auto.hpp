@@ -8,7 +8,7 @@
 // noise occupancy, which must stay well below percolation (≈ 0.4 for 8-connectivity) for noise
 // to stay in small regions, while a decides how fine the O-C scale is. The search runs the
 // whole extraction (steps 1–6, area limit by automaticAreaLimit()) on scoring windows — up to
-// autoMaxPoints points (autoMaxPointsSparse on sparse passes) in three time windows of the pass
+// autoMaxPoints points in three time windows of the pass
 // (local density and slope unchanged), each screened on its own — for a = 2^-k, k = 2, 3, …
 // (c = 0.1, and on sparse passes also 0.1/8, 0.1/64, 0.1/512, each ladder from the first k with
 // c·2^k ≥ 1/16, i.e. at least 1/16 of a point per time pixel, and on an O-C flattened by a

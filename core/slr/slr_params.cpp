@@ -48,8 +48,6 @@ const Schema<SlrParams>& slrSchema() {
             .uiLog = true;
         s.integer("screen.auto_max_points", LWB_FIELD(S, screen.autoMaxPoints), "", {1000, 10000000}, {10000, 100000},
                   "automatic mode scores scales on at most this many points");
-        s.integer("screen.auto_max_points_sparse", LWB_FIELD(S, screen.autoMaxPointsSparse), "", {1000, 10000000},
-                  {10000, 100000}, "the same for sparse passes (sparse_rate_below), whose search tries about four times as many scales");
         s.integer("screen.refine_rounds", LWB_FIELD(S, screen.refineRounds), "", {0, 3}, {0, 3},
                   "automatic mode: screening rounds on the O-C flattened by the accepted track's trend");
         s.real("screen.sparse_rate_below", LWB_FIELD(S, screen.sparseRateBelow), "1/s", {0, 1e7}, {0, 200},
