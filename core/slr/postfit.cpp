@@ -336,6 +336,18 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
     res.residuals.assign(n, NAN);
     const double k = p.rejectSigma;
     std::vector<double> basis(32);
+    // P_0..P_degree of every used point at its segment's scaled epoch, once: the fit–reject
+    // iterations take the normal equations and the Legendre residuals from them (the same values
+    // as computing them again each time, a tenth of a sparse pass's scale search). Not for
+    // passes so large that the table would pass 64 MB: those compute them as they go.
+    const size_t mAll = static_cast<size_t>(p.degree) + 1;
+    std::vector<double> pb;
+    if (ord.size() * mAll <= (size_t{8} << 20)) {
+        pb.resize(ord.size() * mAll);
+        for (const Seg& g : segs)
+            for (size_t q = g.a; q < g.b; ++q)
+                legendre((t[ord[q]] - g.trend.tCenter) / g.trend.tHalfSpan, p.degree, &pb[q * mAll]);
+    }
     bool warnedDegree = false;
     std::vector<int> frozen(segs.size(), INT32_MIN);
     for (int it = 1; it <= p.maxIterations; ++it) {
@@ -384,8 +396,10 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
             for (size_t q = g.a; q < g.b; ++q) {
                 const uint32_t i = ord[q];
                 if (!res.kept[i]) continue;
-                legendre((t[i] - g.trend.tCenter) / g.trend.tHalfSpan, dMax, basis.data());
-                for (int j = 0; j < m; ++j) B(j, fill) = basis[static_cast<size_t>(j)];
+                const double* bq = basis.data();
+                if (pb.empty()) legendre((t[i] - g.trend.tCenter) / g.trend.tHalfSpan, dMax, basis.data());
+                else bq = &pb[q * mAll];
+                for (int j = 0; j < m; ++j) B(j, fill) = bq[j];
                 y(fill) = oc[i] - y0;
                 yy += (oc[i] - y0) * (oc[i] - y0);
                 if (++fill == blockCols) flush();
@@ -467,9 +481,18 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
                 g.trend.knots = -code;
             }
             g.trend.coefficients.assign(c.data(), c.data() + c.size());
+            const bool table = !pb.empty() && g.trend.knots == 0;  // trendAt from the table
+            const size_t terms = g.trend.coefficients.size();
             for (size_t q = g.a; q < g.b; ++q) {
                 const uint32_t i = ord[q];
-                res.residuals[i] = oc[i] - segmentAt(g.trend, t[i]);
+                if (table) {
+                    const double* bq = &pb[q * mAll];
+                    double v = 0;
+                    for (size_t j = 0; j < terms; ++j) v += g.trend.coefficients[j] * bq[j];
+                    res.residuals[i] = oc[i] - v;
+                } else {
+                    res.residuals[i] = oc[i] - segmentAt(g.trend, t[i]);
+                }
                 if (res.kept[i]) ss += res.residuals[i] * res.residuals[i];
             }
             nkAll += nk;
