@@ -586,6 +586,75 @@ private slots:
         }
     }
 
+    void searchOnAFlattenedPassStartsNearThePreviousPixel() {
+        // The refinement's search starts its ladders at O-C pixels at most 4× the round
+        // before's (ScreenParams::previousMagOc). On this sparse pass the choice is the same
+        // as from the ladders' usual start, with fewer trials, and every trial run is one of
+        // the full search's with the same score.
+        sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Conventional);
+        sp.points = 6000;
+        sp.signalFraction = 0.05;
+        const sim::SlrSimPass pass = sim::simulateSlrPass(sp, 5);
+        ScreenParams p;
+        p.refineRounds = 0;  // as the refinement's own screening
+        const AutoScaleResult full = chooseScale(pass.epochS, pass.ocS, p);
+        QVERIFY2(full.ok, full.error.c_str());
+        ScreenParams q = p;
+        q.previousMagOc = full.magOc;
+        const AutoScaleResult near = chooseScale(pass.epochS, pass.ocS, q);
+        QVERIFY2(near.ok, near.error.c_str());
+        QCOMPARE(near.magT, full.magT);
+        QCOMPARE(near.magOc, full.magOc);
+        QCOMPARE(near.connectivity, full.connectivity);
+        QVERIFY2(near.trials.size() + 5 < full.trials.size(),
+                 qPrintable(QString("%1 trials vs %2").arg(near.trials.size()).arg(full.trials.size())));
+        for (const ScaleTrial& a : near.trials) {
+            bool found = false;
+            for (const ScaleTrial& b : full.trials)
+                found = found || (a.magT == b.magT && a.magOc == b.magOc && a.connectivity == b.connectivity && a.score == b.score);
+            QVERIFY2(found, qPrintable(QString("trial mag_T %1 mag_OC %2 not in the full search").arg(a.magT).arg(a.magOc)));
+        }
+        // Never coarser than 4× the previous pixel (the ladders' start), whatever the ladder.
+        for (const ScaleTrial& a : near.trials) QVERIFY(a.magOc >= full.magOc / 4 * (1 - 1e-12));
+    }
+
+    void postFitResidualsAreTheTrendsOwnValues() {
+        // The fit–reject iterations take the Legendre values from a table computed once: every
+        // residual must be exactly the O-C less the returned trend at that epoch (the value
+        // evaluateTrend computes from scratch), for a one-piece degree-8 fit and for the
+        // default model choice with segments split at a gap.
+        sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Conventional);
+        sp.points = 4000;
+        sp.signalFraction = 0.3;
+        const sim::SlrSimPass pass = sim::simulateSlrPass(sp, 12);
+        std::vector<double> t = pass.epochS, oc = pass.ocS;
+        std::vector<uint8_t> mask(pass.isSignal);
+        for (size_t i = 0; i < t.size(); ++i)
+            if (t[i] > t[0] + 200 && t[i] < t[0] + 260) mask[i] = 0;  // a 60 s gap in the accepted points
+        PostfitParams one;
+        one.degree = 8;
+        one.autoDegree = false;
+        one.splitGapS = -1;
+        one.normalPoints = false;
+        one.binLengthS = 1;
+        PostfitParams byBic;
+        byBic.normalPoints = false;
+        byBic.binLengthS = 15;
+        for (const PostfitParams& pp : {one, byBic}) {
+            const PostfitResult f = postfit(t, oc, mask, {}, pp);
+            QVERIFY2(f.ok, f.error.c_str());
+            QVERIFY(f.iterations >= 2);
+            size_t checked = 0;
+            for (size_t i = 0; i < t.size(); ++i) {
+                if (!mask[i]) continue;
+                const double want = oc[i] - evaluateTrend(f, t[i]);
+                QVERIFY2(f.residuals[i] == want, qPrintable(QString("point %1: %2 vs %3").arg(i).arg(f.residuals[i], 0, 'g', 17).arg(want, 0, 'g', 17)));
+                ++checked;
+            }
+            QVERIFY(checked > 1000);
+        }
+    }
+
     void cancelStopsTheScreening() {
         sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Diffuse);
         const sim::SlrSimPass pass = sim::simulateSlrPass(sp, 2);
