@@ -11,7 +11,8 @@
 // of a 4 KiB page costs about 11 µs, and a 59 680-point sparse pass touched 5 000 pages (55 ms
 // of a 0.31 s run), a 10^6-point kHz pass 45 000 (half of 1.55 s). The heap is therefore
 // advised for transparent huge pages (madvise; the kernel's default mode): faults fell to
-// about 1 300 on both, the runs to 0.27 s and 0.96 s, peak memory rose by 1.5 MB and 18 MB.
+// about 1 300 on both, the runs to 0.27 s and 0.8–1.0 s; peak memory rose by 1.5 MB and by
+// 20–27 MB (135–141 B/point).
 namespace lwb::core {
 /// Sets the thresholds above (glibc; does nothing elsewhere). Call once, early in main().
 void tuneAllocator();

@@ -362,7 +362,6 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
     res.ratePerS = static_cast<double>(n) / span;
 
     // Scoring windows: everything, or three runs of consecutive (time-ordered) points.
-    const bool sparse = params.sparseRateBelow <= 0 || res.ratePerS < params.sparseRateBelow;
     const size_t maxPts = static_cast<size_t>(params.autoMaxPoints);
     std::vector<std::pair<size_t, size_t>> win;  // [begin, end) in time order
     if (n <= maxPts) {
@@ -498,6 +497,7 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         // of a few seconds, i.e. far below 0.1 noise points per pixel. The ladders run side by
         // side (runLadders), a ladder's next trials ahead of its stopping rule when cores are
         // idle: the last ladder going, or the only one, no longer runs on one core.
+        const bool sparse = params.sparseRateBelow <= 0 || res.ratePerS < params.sparseRateBelow;
         const std::vector<double> ladderC = tAuto && sparse ? std::vector<double>{0.1, 0.1 / 8, 0.1 / 64, 0.1 / 512}
                                                             : std::vector<double>{0.1};
         // (A coarse-to-fine ladder — every other O-C scale, patience 2 — halves the time of a
@@ -514,7 +514,7 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         // at O-C pixels at most 4× that round's: flattening only narrows the track, so the
         // coarser pixels, which merge it with the noise, cannot win. Every result of the 54
         // simulated and 7 real passes was the same starting there, or at 2× or at 8×, as at the
-        // ladder's usual start; the second search of a sparse pass ran a third fewer trials.
+        // ladder's usual start; the second search of a sparse pass runs about half the trials.
         const int kFloor = params.previousMagOc > 0 && std::isfinite(params.previousMagOc)
                                ? static_cast<int>(std::clamp(std::floor(std::log2(gate * params.previousMagOc)) - 2, 2.0, 24.0))
                                : 2;
