@@ -10,6 +10,8 @@
 #include <QThreadPool>
 #include <QtConcurrent>
 
+#include "core/slr/pass_run.hpp"
+
 namespace lwb::ui {
 
 using namespace core::slr;
@@ -45,7 +47,9 @@ SlrController::SlrController(QObject* parent) : QObject(parent) {
                 for (size_t i = 0; i < run.accepted.size() && i < forced.size(); ++i)
                     if (forced[i] > 0) run.accepted[i] = 1;
                     else if (forced[i] < 0) run.accepted[i] = 0;
-                run.post = postfit(*t, *oc, run.accepted, *tof, params.postfit, &fb);
+                // As the CLI: without a bin length or an altitude (an O-C table) the trend fit
+                // and the rejection still run, without normal points.
+                run.post = postfit(*t, *oc, run.accepted, *tof, postfitForPass(params.postfit, &run.postNote), &fb);
                 return run;
             };
         },
@@ -405,8 +409,8 @@ bool SlrController::exportCrd(const QString& path, QString* error, bool wholeFil
 }
 
 bool SlrController::exportNormalPoints(const QString& path, QString* error) const {
-    if (!hasRun() || !m_run->post.ok) {
-        *error = tr("no normal points to export");
+    if (!hasRun() || !m_run->post.ok || m_run->post.normalPoints.empty()) {
+        *error = hasRun() && !m_run->postNote.empty() ? QString::fromStdString(m_run->postNote) : tr("no normal points to export");
         return false;
     }
     std::string err;

@@ -1035,8 +1035,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
         }
         const ResidualStats& st = run.post.stats;
         statsHtml += tr("<b>Accepted</b> %1 of %2 (signal %3, recovered %4), post-fit kept %5, rejected %6<br>"
-                        "<b>RMS</b> %7 ps (%8 mm one-way) · skew %9 · kurtosis %10 · peak−mean %11 ps<br>"
-                        "<b>Normal points</b> %12 (bins of %13 s)")
+                        "<b>RMS</b> %7 ps (%8 mm one-way) · skew %9 · kurtosis %10 · peak−mean %11 ps<br>")
                          .arg(run.post.used)
                          .arg(n)
                          .arg(s.signalPoints)
@@ -1047,9 +1046,14 @@ void SlrWorkspace::showRun(const SlrRun& run) {
                          .arg(st.rms * 1e12 * 0.149896229, 0, 'f', 2)
                          .arg(st.skew, 0, 'f', 2)
                          .arg(st.kurtosis, 0, 'f', 2)
-                         .arg(st.peakMinusMean * 1e12, 0, 'f', 1)
-                         .arg(run.post.normalPoints.size())
-                         .arg(run.post.binLengthS, 0, 'f', 0);
+                         .arg(st.peakMinusMean * 1e12, 0, 'f', 1);
+        if (run.postNote.empty()) {
+            statsHtml += tr("<b>Normal points</b> %1 (bins of %2 s)").arg(run.post.normalPoints.size()).arg(run.post.binLengthS, 0, 'f', 0);
+        } else {
+            QString why = QString::fromStdString(run.postNote);
+            if (why.startsWith("no normal points: ")) why = why.mid(18);
+            statsHtml += tr("<b>No normal points</b>: %1").arg(why.toHtmlEscaped());
+        }
     } else {
         statsHtml += tr("<b>Post-fit:</b> %1<br>").arg(QString::fromStdString(run.post.error).toHtmlEscaped());
     }

@@ -78,14 +78,19 @@ StationAgreement stationAgreement(const PassData& pass, const std::vector<uint8_
     return a;
 }
 
+PostfitParams postfitForPass(PostfitParams pp, std::string* note) {
+    if (pp.normalPoints && !(pp.binLengthS > 0) && !(pp.altitudeKm > 0)) {
+        pp.normalPoints = false;
+        if (note) *note = "no normal points: the satellite's altitude is unknown (give the bin length or the altitude)";
+    }
+    return pp;
+}
+
 PassRunResult runPass(const PassData& pass, SlrParams params, Feedback* fb) {
     PassRunResult r;
     const auto t0 = std::chrono::steady_clock::now();
-    PostfitParams& pp = params.postfit;
-    if (!(pp.binLengthS > 0) && !(pp.altitudeKm > 0)) {
-        pp.normalPoints = false;
-        r.postNote = "no normal points: the satellite's altitude is unknown (give the bin length or the altitude)";
-    }
+    params.postfit = postfitForPass(params.postfit, &r.postNote);
+    const PostfitParams& pp = params.postfit;
     r.screen = screenSignal(pass.t, pass.oc, params.screen, fb);
     if (!r.screen.ok) {
         r.error = "screening failed: " + r.screen.error;

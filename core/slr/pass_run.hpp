@@ -51,6 +51,11 @@ struct PassRunResult {
     double seconds = 0;                ///< wall time of screening + post-fit
 };
 
+/// The post-fit's parameters for a pass: with neither a normal-point bin length nor the
+/// satellite's altitude (an O-C table names none) no bins can be laid, so the trend fit and the
+/// rejection run without normal points, and *note (when given) says why.
+PostfitParams postfitForPass(PostfitParams pp, std::string* note);
+
 /// Screens the pass and, with at least two accepted points, fits the trend and forms the normal
 /// points. Normal points are switched off (with a note) when neither a bin length nor the
 /// satellite's altitude is known.

@@ -186,6 +186,49 @@ private slots:
         QCOMPARE(nonNoise, accepted);
     }
 
+    void ocTableWithoutAltitudeIsPostFittedWithoutNormalPoints() {
+        // Seen in a real window: an O-C table (no satellite, so no altitude and no bin length)
+        // showed "Post-fit: give the normal-point bin length or the satellite altitude" and no
+        // residuals, RMS or rejection, where the CLI fits the trend and only leaves out the
+        // normal points. Now the workspace does as the CLI, and says why there are none.
+        using namespace lwb::core::sim;
+        SlrSimParams sp = slrSimPreset(SlrKind::Conventional);
+        sp.points = 3000;
+        sp.signalFraction = 0.2;
+        const SlrSimPass pass = simulateSlrPass(sp, 17);
+        QVERIFY(pass.ok);
+        const QString csv = m_dir.path() + "/no_altitude.csv";
+        {
+            QFile f(csv);
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Text));
+            QTextStream o(&f);
+            o.setRealNumberPrecision(17);
+            o << "epoch_s,oc_s\n";
+            for (size_t i = 0; i < pass.epochS.size(); ++i) o << pass.epochS[i] << "," << pass.ocS[i] << "\n";
+        }
+        MainWindow w;
+        w.slr()->resize(1500, 950);
+        w.slr()->show();
+        QString err;
+        QVERIFY2(w.slr()->openPath(csv, 0, &err), qPrintable(err));
+        SlrController* c = w.slr()->controller();
+        QVERIFY(c->waitIdle(60000));
+        QCoreApplication::processEvents();
+        QVERIFY(c->hasRun());
+        const SlrRun& r = c->run();
+        QVERIFY2(r.post.ok, r.post.error.c_str());
+        QVERIFY(r.post.used > 500 && r.post.stats.rms > 0 && r.post.stats.rms < 1e-9);
+        QVERIFY(r.post.normalPoints.empty());
+        QVERIFY(QString::fromStdString(r.postNote).contains("altitude"));
+        bool shown = false;
+        for (QLabel* l : w.slr()->findChildren<QLabel*>())
+            shown = shown || (l->text().contains("RMS") && l->text().contains("No normal points") && l->text().contains("altitude"));
+        QVERIFY2(shown, "the statistics give the RMS and say why there are no normal points");
+        QVERIFY(!c->exportNormalPoints(m_dir.path() + "/none.npt", &err));
+        QVERIFY2(err.contains("altitude"), qPrintable(err));
+        QVERIFY(!QFileInfo::exists(m_dir.path() + "/none.npt"));
+    }
+
     void demoSessionRoundTrip() {
         const QString session = m_dir.path() + "/demo.lwb.json";
         QString err;
