@@ -30,15 +30,22 @@ int acceptedCount(const SlrRun& r) {
     for (uint8_t a : r.accepted) n += a;
     return n;
 }
+// A simulated pass of the given kind, size and signal fraction.
+lwb::core::sim::SlrSimPass simulated(lwb::core::sim::SlrKind kind, int points, double signal, uint64_t seed,
+                                     double* altitudeKm = nullptr) {
+    using namespace lwb::core::sim;
+    SlrSimParams p = slrSimPreset(kind);
+    p.points = points;
+    p.signalFraction = signal;
+    if (altitudeKm) *altitudeKm = p.altitudeKm;
+    return simulateSlrPass(p, seed);
+}
 // A sparse pass with a curved track, where the recovery step (and so C) matters.
 void openSparsePass(SlrController* c) {
-    using namespace lwb::core::sim;
-    SlrSimParams p = slrSimPreset(SlrKind::Diffuse);
-    p.points = 3000;
-    p.signalFraction = 0.3;
-    const SlrSimPass pass = simulateSlrPass(p, 7);
+    double altitude = 0;
+    const lwb::core::sim::SlrSimPass pass = simulated(lwb::core::sim::SlrKind::Diffuse, 3000, 0.3, 7, &altitude);
     QVERIFY(pass.ok);
-    c->setSimulatedPass(pass.epochS, pass.ocS, pass.tofS, pass.isSignal, "sparse", p.altitudeKm);
+    c->setSimulatedPass(pass.epochS, pass.ocS, pass.tofS, pass.isSignal, "sparse", altitude);
 }
 // A left-button drag from a to b on a widget (press, moves, release), as the mouse does it.
 void drag(QWidget* w, QPoint a, QPoint b) {
@@ -191,11 +198,7 @@ private slots:
         // showed "Post-fit: give the normal-point bin length or the satellite altitude" and no
         // residuals, RMS or rejection, where the CLI fits the trend and only leaves out the
         // normal points. Now the workspace does as the CLI, and says why there are none.
-        using namespace lwb::core::sim;
-        SlrSimParams sp = slrSimPreset(SlrKind::Conventional);
-        sp.points = 3000;
-        sp.signalFraction = 0.2;
-        const SlrSimPass pass = simulateSlrPass(sp, 17);
+        const lwb::core::sim::SlrSimPass pass = simulated(lwb::core::sim::SlrKind::Conventional, 3000, 0.2, 17);
         QVERIFY(pass.ok);
         const QString csv = m_dir.path() + "/no_altitude.csv";
         {
