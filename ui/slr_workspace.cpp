@@ -1050,8 +1050,9 @@ void SlrWorkspace::showRun(const SlrRun& run) {
         if (run.postNote.empty()) {
             statsHtml += tr("<b>Normal points</b> %1 (bins of %2 s)").arg(run.post.normalPoints.size()).arg(run.post.binLengthS, 0, 'f', 0);
         } else {
+            const QString prefix = QStringLiteral("no normal points: ");  // the heading says it already
             QString why = QString::fromStdString(run.postNote);
-            if (why.startsWith("no normal points: ")) why = why.mid(18);
+            if (why.startsWith(prefix)) why = why.mid(prefix.size());
             statsHtml += tr("<b>No normal points</b>: %1").arg(why.toHtmlEscaped());
         }
     } else {
