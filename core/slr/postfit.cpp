@@ -350,6 +350,15 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
     }
     bool warnedDegree = false;
     std::vector<int> frozen(segs.size(), INT32_MIN);
+    // PostfitParams::trendOnly: normal equations updated point by point (inFit: in the sums).
+    const bool incremental = p.trendOnly && !p.autoDegree && !pb.empty();
+    struct Incremental {
+        Eigen::MatrixXd sums;  // lower triangle of Σ P Pᵀ (all mAll terms)
+        Eigen::VectorXd rhs;   // Σ P·(oc − yRef)
+        double yRef = 0;
+    };
+    std::vector<Incremental> inc(incremental ? segs.size() : 0);
+    std::vector<uint8_t> inFit(incremental ? ord.size() : 0, 0);
     for (int it = 1; it <= p.maxIterations; ++it) {
         res.iterations = it;
         long long nkAll = 0;
@@ -383,9 +392,35 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
             Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m);
             Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
             double yy = 0;
+            if (incremental) {
+                // The sums of the points in the fit so far, on the O-C less the first round's mean,
+                // brought up to date with the points whose `kept` changed; then centred on this
+                // round's mean y0 (P_0 = 1, so column 0 holds Σ P_j): Σ P_j·(oc − y0) =
+                // Σ P_j·(oc − yRef) − (y0 − yRef)·Σ P_j.
+                Incremental& s = inc[gi];
+                if (s.sums.size() == 0) {
+                    s.yRef = y0;
+                    s.sums = Eigen::MatrixXd::Zero(static_cast<long>(mAll), static_cast<long>(mAll));
+                    s.rhs = Eigen::VectorXd::Zero(static_cast<long>(mAll));
+                }
+                for (size_t q = g.a; q < g.b; ++q) {
+                    const uint32_t i = ord[q];
+                    if (res.kept[i] == inFit[q]) continue;
+                    inFit[q] = res.kept[i];
+                    const double sign = res.kept[i] ? 1.0 : -1.0, d = sign * (oc[i] - s.yRef);
+                    const double* bq = &pb[q * mAll];
+                    for (size_t a = 0; a < mAll; ++a) {
+                        s.rhs(static_cast<long>(a)) += bq[a] * d;
+                        const double sa = sign * bq[a];
+                        for (size_t c = 0; c <= a; ++c) s.sums(static_cast<long>(a), static_cast<long>(c)) += sa * bq[c];
+                    }
+                }
+                M = s.sums.topLeftCorner(m, m);
+                rhs = s.rhs.head(m) - (y0 - s.yRef) * M.col(0);
+            }
             const int blockCols = 256;
-            Eigen::MatrixXd B(m, blockCols);
-            Eigen::VectorXd y(blockCols);
+            Eigen::MatrixXd B(m, incremental ? 0 : blockCols);
+            Eigen::VectorXd y(incremental ? 0 : blockCols);
             int fill = 0;
             auto flush = [&]() {
                 if (fill == 0) return;
@@ -393,7 +428,7 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
                 rhs.noalias() += B.leftCols(fill) * y.head(fill);
                 fill = 0;
             };
-            for (size_t q = g.a; q < g.b; ++q) {
+            for (size_t q = g.a; q < g.b && !incremental; ++q) {
                 const uint32_t i = ord[q];
                 if (!res.kept[i]) continue;
                 const double* bq = basis.data();
@@ -535,6 +570,15 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
     res.tCenter = segs[longest].trend.tCenter;
     res.tHalfSpan = segs[longest].trend.tHalfSpan;
     res.coefficients = segs[longest].trend.coefficients;
+    if (p.trendOnly) {
+        res.rejected = res.used - std::count(res.kept.begin(), res.kept.end(), uint8_t{1});
+        if (res.rejected == res.used) {
+            res.error = "the rejection removed every point";
+            return res;
+        }
+        res.ok = true;
+        return res;
+    }
     {
         std::vector<double> tu, yu;
         for (size_t i = 0; i < n; ++i)

@@ -53,6 +53,12 @@ struct PostfitParams {
     double dayStartMjd = NAN;     ///< Sun's elevation at the bin's epoch (6 or 3 points minimum)
     double fireRateHz = 0;        ///< laser fire rate for the return rate; 0 = unknown (rate NaN)
     bool normalPoints = true;     ///< form normal points (off: trend and statistics only)
+    /// Internal, no schema row (the screening's refinement sets it): the trend and `kept` only.
+    /// Residuals of the points outside `use` stay NaN, `stats` and normal points are not formed,
+    /// and the fit–reject iterations update the normal equations with the points that changed
+    /// instead of summing them all again (the same sums in another order: a trend equal to the
+    /// full sums' to rounding). Fixed degree only (autoDegree = false).
+    bool trendOnly = false;
 };
 
 /// Empty when valid, else what is wrong.

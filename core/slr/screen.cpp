@@ -501,6 +501,7 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
         pp.rejectSigma = 3;
         pp.normalPoints = false;
         pp.binLengthS = 1;  // unused (no normal points); keeps validate() content
+        pp.trendOnly = true;
         const PostfitResult f = postfit(t, flat, mask, {}, pp, fb);
         if (!f.ok) return;
         double lo = INFINITY, hi = -INFINITY;
