@@ -143,15 +143,27 @@ double medianOf(std::vector<double>& v) {
     return hi;
 }
 
-// Quantile q of a copy of (a sample of) the values.
-double quantileOf(const std::vector<double>& v, double q) {
+// Quantiles qs (ascending) of a copy of (a sample of) the values: the value of rank
+// round(q·(m − 1)) among the m sampled. One copy; each rank is selected in the part beyond the
+// one before (the same values as selecting each in a copy of its own).
+template <size_t K>
+std::array<double, K> quantilesOf(const std::vector<double>& v, const std::array<double, K>& qs) {
     const size_t step = std::max<size_t>(1, v.size() / 200000);
     std::vector<double> s;
     s.reserve(v.size() / step + 1);
     for (size_t i = 0; i < v.size(); i += step) s.push_back(v[i]);
-    const size_t k = std::min(s.size() - 1, static_cast<size_t>(q * static_cast<double>(s.size() - 1) + 0.5));
-    std::nth_element(s.begin(), s.begin() + static_cast<long>(k), s.end());
-    return s[k];
+    std::array<double, K> out{};
+    if (s.empty()) return out;
+    size_t from = 0;
+    for (size_t j = 0; j < K; ++j) {
+        const size_t k = std::min(s.size() - 1, static_cast<size_t>(qs[j] * static_cast<double>(s.size() - 1) + 0.5));
+        if (k >= from) {
+            std::nth_element(s.begin() + static_cast<long>(from), s.begin() + static_cast<long>(k), s.end());
+            from = k + 1;
+        }
+        out[j] = s[k];  // k < from: the rank before, already in place
+    }
+    return out;
 }
 
 }  // namespace
@@ -240,18 +252,22 @@ NoiseFloorCheck checkNoiseFloor(const std::vector<double>& t, const std::vector<
     if (n < 20) return c;
     std::vector<size_t> order(n);
     std::iota(order.begin(), order.end(), size_t{0});
-    if (!std::is_sorted(t.begin(), t.begin() + static_cast<long>(n)))  // passes come in time order: skip the sort
+    const bool inOrder = std::is_sorted(t.begin(), t.begin() + static_cast<long>(n));
+    if (!inOrder)  // passes come in time order: skip the sort
         std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return t[a] < t[b]; });
     const PiecewiseTrend tr = robustPiecewiseTrend(t.data(), oc.data(), order);
     c.residualS.resize(n);
-    for (size_t i = 0; i < n; ++i) c.residualS[i] = oc[i] - tr.at(t[i]);
+    // Points in time order walk the trend's pieces in order (the piece bisection would find).
+    const bool ascending = inOrder && std::is_sorted(tr.pieces.begin(), tr.pieces.end(),
+                                                     [](const auto& a, const auto& b) { return a.t0 < b.t0; });
+    size_t piece = 0;
+    for (size_t i = 0; i < n; ++i) c.residualS[i] = oc[i] - (ascending ? tr.atAscending(t[i], piece) : tr.at(t[i]));
     std::vector<double> tmp(c.residualS);
     const double med = medianOf(tmp);
     for (double& r : c.residualS) r -= med;
     for (size_t i = 0; i < n; ++i) tmp[i] = std::fabs(c.residualS[i]);
     c.sigmaS = 1.4826 * medianOf(tmp);
-    const double q025 = quantileOf(c.residualS, 0.025), q25 = quantileOf(c.residualS, 0.25),
-                 q75 = quantileOf(c.residualS, 0.75), q975 = quantileOf(c.residualS, 0.975);
+    const auto [q025, q25, q75, q975] = quantilesOf<4>(c.residualS, {0.025, 0.25, 0.75, 0.975});
     c.peakedness = q75 > q25 ? (q975 - q025) / (q75 - q25) : 0;
     size_t beyond = 0, central = 0;
     for (double r : c.residualS) {
@@ -349,7 +365,8 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         res.error = "all epochs are equal: no time span in which to find a track";
         return res;
     }
-    double gate = quantileOf(oc, 0.995) - quantileOf(oc, 0.005);
+    const auto [q005, q995] = quantilesOf<2>(oc, {0.005, 0.995});
+    double gate = q995 - q005;
     if (!(gate > 0)) {
         const auto mm = std::minmax_element(oc.begin(), oc.end());
         gate = *mm.second - *mm.first;

@@ -23,7 +23,7 @@ struct LocalFit {
     double t0 = 0, scale = 1;
     double c[3] = {0, 0, 0};
     double inv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-    double sigma = 0;  // robust σ of the residuals (s)
+    double sigma = 0;  // robust σ of the residuals (s), when asked for (fitLocal's wantSigma)
 
     double at(double t) const {
         const double x = (t - t0) / scale;
@@ -41,9 +41,10 @@ struct LocalFit {
     double curvature(double dt) const { return degree >= 2 ? std::fabs(c[2]) * (dt / scale) * (dt / scale) : 0; }
 };
 
-// Fits (T[i], O[i]) for the indices given; degree lowered to what the points allow.
+// Fits (T[i], O[i]) for the indices given; degree lowered to what the points allow. The robust
+// σ of the residuals (a median: most of a fit's cost) only with wantSigma; else sigma = 0.
 bool fitLocal(const std::vector<double>& T, const std::vector<double>& O, const uint32_t* idx, size_t n, double t0,
-              int maxDegree, LocalFit* f) {
+              int maxDegree, LocalFit* f, bool wantSigma = false) {
     if (n == 0) return false;
     double scale = 0;
     for (size_t k = 0; k < n; ++k) scale = std::max(scale, std::fabs(T[idx[k]] - t0));
@@ -98,9 +99,12 @@ bool fitLocal(const std::vector<double>& T, const std::vector<double>& O, const 
                 f->c[i] += M[i][m + j] * y[j];
             }
         }
-        std::vector<double> r(n);
-        for (size_t k = 0; k < n; ++k) r[k] = O[idx[k]] - f->at(T[idx[k]]);
-        f->sigma = robustSigma(r);
+        f->sigma = 0;
+        if (wantSigma) {
+            std::vector<double> r(n);
+            for (size_t k = 0; k < n; ++k) r[k] = O[idx[k]] - f->at(T[idx[k]]);
+            f->sigma = robustSigma(r);
+        }
         return true;
     }
     return false;
@@ -374,7 +378,7 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
             const size_t pos = static_cast<size_t>(std::lower_bound(tr.begin(), tr.end(), static_cast<uint32_t>(q)) - tr.begin());
             const size_t a = pos >= 10 ? pos - 10 : 0, b = std::min(tr.size(), pos + 10);
             if (b - a < 3) continue;
-            if (!fitLocal(T, O, tr.data() + a, b - a, T[q], 2, &lf)) continue;
+            if (!fitLocal(T, O, tr.data() + a, b - a, T[q], 2, &lf, true)) continue;
             if (std::fabs(O[q] - lf.at(T[q])) > p.dropSigma * std::max(lf.sigma, sigmaTrack)) {
                 A[q] = 0;
                 ++res.dropped;
