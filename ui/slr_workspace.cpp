@@ -43,6 +43,20 @@ const QColor kSignal(31, 119, 180), kRecovered(44, 160, 44), kNoise(150, 150, 15
 constexpr size_t kMaxShown = 40000;  // points per graph shown; more are thinned with a fixed stride
 constexpr double kMmPerPs = 0.149896229;  // 1 ps two-way = c / 2 · 1 ps of range, one-way
 
+// The legend under a plot in two columns when they fit across the plot, else one (the entries
+// cut off, as "rejected by post-fit (20)" was at 1024 px). True when the number changed.
+bool fitLegendColumns(QCustomPlot* p) {
+    QCPLegend* lg = p->legend;
+    const int before = lg->wrap();
+    lg->setWrap(2);
+    lg->setFillOrder(QCPLegend::foColumnsFirst, true);  // re-lays the entries out
+    if (lg->minimumOuterSizeHint().width() > p->width()) {
+        lg->setWrap(1);
+        lg->setFillOrder(QCPLegend::foColumnsFirst, true);
+    }
+    return lg->wrap() != before;
+}
+
 // Undo: the manual edits of the pass as a whole, before and after.
 class ForcedCommand : public QUndoCommand {
 public:
@@ -189,14 +203,18 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     m_ocPlot->plotLayout()->insertRow(0);
     m_ocPlot->plotLayout()->addElement(0, 0, new QCPTextElement(m_ocPlot, tr("O-C"), QFont(font().family(), 9)));
     m_ocPlot->yAxis2->setLabel(tr("mm, one-way"));
-    m_histPlot = newPlot(this, tr("Post-fit residual (ps, two-way; 1 ps = 0.15 mm one-way)"), tr("Points"));
+    // Short enough for the narrow plot of a 1024 px window; the summary beside it gives the RMS
+    // in mm one-way too.
+    m_histPlot = newPlot(this, tr("Post-fit residual (ps, two-way)"), tr("Points"));
+    m_histPlot->setToolTip(tr("Post-fit residuals of the kept points, ps two-way (1 ps = 0.15 mm one-way)"));
     m_histPlot->setMinimumHeight(140);
     for (QCustomPlot* p : {m_ocPlot, m_imagePlot}) {
         // Legend in a row under the axes, so it never hides the track.
         p->legend->setVisible(true);
         p->legend->setFont(QFont(font().family(), 8));
+        p->legend->setIconSize(20, 12);  // (32 × 18 by default) two columns then fit a 1024 px window
         p->legend->setFillOrder(QCPLegend::foColumnsFirst);
-        p->legend->setWrap(2);  // two columns: the plots stay narrow enough for a 1024 px window
+        p->legend->setWrap(2);  // two columns where they fit (fitLegendColumns)
         p->axisRect()->insetLayout()->take(p->legend);
         p->plotLayout()->addElement(2, 0, p->legend);
         p->plotLayout()->setRowStretchFactor(2, 0.001);
@@ -268,8 +286,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     bl->addWidget(m_histPlot, 2);
     m_stats = new QLabel(bottom);
     m_stats->setTextFormat(Qt::RichText);
-    m_stats->setWordWrap(true);
-    m_stats->setMinimumWidth(300);
+    m_stats->setWordWrap(true);  // as wide as the scroll area's viewport (a wider minimum cut it on the right)
     m_stats->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     // In a scroll area: the summary grows (refinement, no noise floor, station flags) and was
     // cut off at the bottom of a 900 px window.
@@ -800,6 +817,8 @@ void SlrWorkspace::resetView() {
 bool SlrWorkspace::eventFilter(QObject* watched, QEvent* event) {
     // Modifier + wheel zooms one axis about the mouse: Ctrl the time axis, Shift the value axis.
     auto* plot = qobject_cast<QCustomPlot*>(watched);
+    if (plot && event->type() == QEvent::Resize && (plot == m_ocPlot || plot == m_imagePlot) && fitLegendColumns(plot))
+        plot->replot(QCustomPlot::rpQueuedReplot);
     if (plot && event->type() == QEvent::Wheel) {
         auto* e = static_cast<QWheelEvent*>(event);
         const bool ctrl = e->modifiers() & Qt::ControlModifier, shift = e->modifiers() & Qt::ShiftModifier;
@@ -916,7 +935,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
     fill(keyed(scatter(m_ocPlot, tr("noise (%1)").arg(nx.size()), kNoise, QCPScatterStyle::ssDisc, 2.5), "noise"), nx, ny);
     fill(keyed(scatter(m_ocPlot, tr("signal (%1)").arg(sx.size()), kSignal, QCPScatterStyle::ssDisc, 3), "signal"), sx, sy);
     fill(keyed(scatter(m_ocPlot, tr("recovered (%1)").arg(rx.size()), kRecovered, QCPScatterStyle::ssDisc, 3.5), "recovered"), rx, ry);
-    fill(keyed(scatter(m_ocPlot, tr("rejected by post-fit (%1)").arg(jx.size()), kRejected, QCPScatterStyle::ssCross, 5), "rejected"), jx, jy);
+    fill(keyed(scatter(m_ocPlot, tr("rejected (%1)").arg(jx.size()), kRejected, QCPScatterStyle::ssCross, 5), "rejected"), jx, jy);
     if (!fx.isEmpty()) {
         QCPGraph* g = keyed(scatter(m_ocPlot, tr("manual (%1)").arg(fx.size()), kForced, QCPScatterStyle::ssSquare, 7), "manual");
         g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(kForced, 1.5), Qt::NoBrush, 7));
@@ -1097,6 +1116,8 @@ void SlrWorkspace::showRun(const SlrRun& run) {
     }
     for (const auto& w : s.warnings) statsHtml += "<br><i>" + QString::fromStdString(w).toHtmlEscaped() + "</i>";
     m_stats->setText(statsHtml);
+    fitLegendColumns(m_ocPlot);  // the entries' names (counts, degree) changed
+    fitLegendColumns(m_imagePlot);
     m_ocPlot->replot(QCustomPlot::rpQueuedReplot);
     m_imagePlot->replot(QCustomPlot::rpQueuedReplot);
     m_histPlot->replot(QCustomPlot::rpQueuedReplot);

@@ -41,6 +41,7 @@ public:
     QLabel* infoLabel() const { return m_info; }  ///< the pass line and the readers' warnings
     QComboBox* passCombo() const { return m_passCombo; }  ///< every pass, by time; item data = pass index
     QCustomPlot* histPlot() const { return m_histPlot; }
+    QLabel* statsLabel() const { return m_stats; }  ///< the run's summary beside the histogram
     QLabel* hoverLabel() const { return m_hover; }
 
     /// What a box drawn on the main plot does.

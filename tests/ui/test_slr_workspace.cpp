@@ -7,6 +7,7 @@
 #include <qcustomplot.h>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QtTest>
@@ -98,6 +99,43 @@ private slots:
         QVERIFY2(double(tp) / (tp + fp) >= 0.9 && double(tp) / (tp + fn) >= 0.9,
                  qPrintable(QString("tp %1 fp %2 fn %3").arg(tp).arg(fp).arg(fn)));
         QVERIFY(r.post.ok && !r.post.normalPoints.empty());
+    }
+
+    // Seen in a real window at 1024×700: the summary's "Scale" line cut on the right (the label
+    // was wider than its scroll area), the histogram's axis title cut at both ends, and the
+    // O-C legend's two columns overlapping ("rejected by post-fit (20)", "trend (degree").
+    void nothingCutAt1024x700() {
+        MainWindow w;
+        w.openDemo();
+        w.resize(1024, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.showWorkspace("slr");
+        QVERIFY(w.slr()->controller()->waitIdle(60000));
+        QTest::qWait(50);
+        QCoreApplication::processEvents();
+        SlrWorkspace* ws = w.slr();
+        for (QCustomPlot* p : {ws->ocPlot(), ws->imagePlot()}) {
+            p->replot();
+            QVERIFY2(p->legend->wrap() == 2, "the legend fell back to one column at 1024 px");
+            QVERIFY2(p->legend->minimumOuterSizeHint().width() <= p->width(),
+                     qPrintable(QString("legend needs %1 px, the plot is %2").arg(p->legend->minimumOuterSizeHint().width()).arg(p->width())));
+            for (int i = 0; i < p->legend->itemCount(); ++i) {
+                if (!p->legend->item(i)) continue;  // an empty cell of the grid
+                const QRect r = p->legend->item(i)->outerRect();
+                QVERIFY2(r.left() >= 0 && r.right() <= p->width(), qPrintable(QString("legend entry %1 at %2..%3 of %4 px").arg(i).arg(r.left()).arg(r.right()).arg(p->width())));
+            }
+        }
+        QCustomPlot* h = ws->histPlot();
+        h->replot();
+        const int title = QFontMetrics(h->xAxis->labelFont()).horizontalAdvance(h->xAxis->label());
+        QVERIFY2(title <= h->width(), qPrintable(QString("histogram title %1 px, plot %2 px").arg(title).arg(h->width())));
+        QLabel* stats = ws->statsLabel();
+        QVERIFY(stats->text().contains("Scale"));
+        auto* area = qobject_cast<QScrollArea*>(stats->parentWidget() ? stats->parentWidget()->parentWidget() : nullptr);
+        QVERIFY(area);
+        QVERIFY2(stats->width() <= area->viewport()->width(),
+                 qPrintable(QString("summary %1 px wide in a %2 px view").arg(stats->width()).arg(area->viewport()->width())));
     }
 
     void cosineSliderChangesTheAcceptedCount() {
