@@ -241,6 +241,15 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
         g2->setLineStyle(QCPGraph::lsNone);
         g2->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, color, color, 8));
     }
+    // Graph 3: points accepted in a region called noise — taken by the track following (or, on
+    // a pass without a noise floor, by its 5σ band) after the image was classified — so that
+    // the image shows every accepted point the O-C plot shows.
+    {
+        QCPGraph* g3 = m_imagePlot->addGraph();
+        g3->setLineStyle(QCPGraph::lsNone);
+        g3->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(kRecovered, 1.2), Qt::NoBrush, 6));
+        g3->removeFromLegend();
+    }
     // The plots' own tools: main plot, time axis, home, the hover readout.
     auto* tools = new QHBoxLayout;
     m_viewCombo = new QComboBox(this);
@@ -783,11 +792,11 @@ void SlrWorkspace::fitMainPlot() {
 }
 
 void SlrWorkspace::fitImagePlot() {
-    // The image in its own O-C frame: fitted to the signal and recovered pixels, so that the
+    // The image in its own O-C frame: fitted to the signal, recovered and followed pixels, so that the
     // axis shows the track in that frame (the noise pixels span the whole range gate).
     bool found = false;
     QCPRange vr;
-    for (int g : {1, 2}) {
+    for (int g : {1, 2, 3}) {
         bool f = false;
         const QCPRange r = m_imagePlot->graph(g)->getValueRange(f);
         if (!f) continue;
@@ -1018,6 +1027,17 @@ void SlrWorkspace::showRun(const SlrRun& run) {
         m_imagePlot->graph(1)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, kRecovered, kRecovered, 3));
         fill(m_imagePlot->graph(2), gx[1], gy[1]);
         m_imagePlot->graph(2)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, kSignal, kSignal, 3));
+        QVector<double> ox, oy;
+        for (size_t i = 0; i < n; ++i)
+            if (s.pointClass[i] != PointClass::Noise && s.regionClass[s.pointRegion[i]] == RegionClass::Noise) {
+                ox << std::llround(p.t[i] * s.magT) / s.magT;
+                oy << std::llround(imgOc[i] * s.magOc) / s.magOc * 1e9;
+            }
+        QCPGraph* off = m_imagePlot->graph(3);
+        off->setData(ox, oy);
+        off->setName(s.floorless ? tr("5σ band (%1)").arg(ox.size()) : tr("followed (%1)").arg(ox.size()));
+        if (ox.isEmpty()) off->removeFromLegend();
+        else off->addToLegend();
     }
     if (fresh || residual != m_ocPlot->property("residualShown").toBool()) {
         fitMainPlot();

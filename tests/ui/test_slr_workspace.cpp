@@ -343,6 +343,35 @@ private slots:
         QVERIFY2(c->exportCsv(csv, &err), qPrintable(err));
     }
 
+    // Seen in a real window: the points the track following accepts (JASON1: 24 of 61) lie in
+    // regions the image calls noise, so the binary image showed them as noise beside an O-C
+    // plot that shows them accepted. They are marked on the image now, and only then listed.
+    void imageMarksThePointsAcceptedOutsideTheRegions() {
+        const QString jason = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
+        if (!QFile::exists(jason)) QSKIP("shared data absent");
+        MainWindow w;
+        w.openDemo();
+        SlrWorkspace* ws = w.slr();
+        QVERIFY(ws->controller()->waitIdle(60000));
+        QCoreApplication::processEvents();
+        QCPGraph* off = ws->imagePlot()->graph(3);
+        QCOMPARE(off->dataCount(), 0);  // the dense demo pass: every accepted point in a region
+        QVERIFY(!ws->imagePlot()->legend->hasItemWithPlottable(off));
+        QString err;
+        QVERIFY2(ws->openPath(jason, -1, &err), qPrintable(err));
+        QVERIFY(ws->controller()->waitIdle(60000));
+        QCoreApplication::processEvents();
+        const lwb::core::slr::ScreenResult& s = ws->controller()->run().screen;
+        int outside = 0;
+        for (size_t i = 0; i < s.pointClass.size(); ++i)
+            outside += s.pointClass[i] != lwb::core::slr::PointClass::Noise &&
+                       s.regionClass[s.pointRegion[i]] == lwb::core::slr::RegionClass::Noise;
+        QVERIFY2(outside >= 10 && s.followedAdded > 0, qPrintable(QString("%1 outside, %2 followed").arg(outside).arg(s.followedAdded)));
+        QCOMPARE(off->dataCount(), outside);
+        QVERIFY(ws->imagePlot()->legend->hasItemWithPlottable(off));
+        QCOMPARE(off->name(), QString("followed (%1)").arg(outside));
+    }
+
     void crdPassWithFlagsRoundTrip() {
         const QString jason = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
         if (!QFile::exists(jason)) QSKIP("shared data absent");
