@@ -171,10 +171,10 @@ private slots:
     void regionAreasAgreeWithTheImage() {
         // regionAreas (the automatic area limit's null model) must find exactly the regions of
         // buildBinaryImage: random points at occupancies from sparse to percolating, in time
-        // order (the per-row path) and shuffled (the general path), both connectivities, and
-        // negative coordinates.
+        // order (rows of a few points: sorted row by row; rows of many: one radix sort) and
+        // shuffled (the general path), both connectivities, and negative coordinates.
         sim::Rng rng(77);
-        for (int round = 0; round < 12; ++round) {
+        for (int round = 0; round < 18; ++round) {
             const size_t n = 200 + static_cast<size_t>(rng.uniform() * 3000);
             std::vector<double> t(n), oc(n);
             for (size_t i = 0; i < n; ++i) {
@@ -182,7 +182,9 @@ private slots:
                 oc[i] = -1e-7 + 2e-7 * rng.uniform();
             }
             MappingParams mp;
-            mp.magT = 0.2 + rng.uniform() * 2;
+            // 0.2–2.2 px/s as before; then long time pixels (10–50 points a row) and short ones
+            // (at most 2 a row).
+            mp.magT = round < 12 ? 0.2 + rng.uniform() * 2 : round < 15 ? 0.02 + rng.uniform() * 0.06 : 16 + rng.uniform() * 20;
             mp.magOc = (0.05 + rng.uniform()) * 1e9;
             mp.connectivity = round % 2 ? 4 : 8;
             for (int shuffled = 0; shuffled < 2; ++shuffled) {

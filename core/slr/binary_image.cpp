@@ -308,14 +308,44 @@ std::vector<int64_t> regionAreas(const std::vector<double>& t, const std::vector
     // Not value-initialised: every element is written by the mapping.
     std::unique_ptr<int64_t[]> rows(new int64_t[n]), cols(new int64_t[n]);
     bool rowsInOrder = true;
+    size_t rowRuns = 0;
+    int64_t cMin = 0, cMax = 0;
     for (size_t i = 0; i < n; ++i) {
         if (!mapOne(t[i], oc[i], params.magT, params.magOc, &rows[i], &cols[i])) return areas;
         rowsInOrder = rowsInOrder && (i == 0 || rows[i] >= rows[i - 1]);
+        rowRuns += i == 0 || rows[i] != rows[i - 1];
+        cMin = i == 0 ? cols[i] : std::min(cMin, cols[i]);
+        cMax = i == 0 ? cols[i] : std::max(cMax, cols[i]);
     }
     // The distinct pixels in (row, col) order. Points in time order (the usual case) are in row
     // order already: only each row's columns are sorted (by insertion when a row holds few).
+    // Rows of more than 4 points on average are sorted all at once instead, by a radix sort of
+    // one 8-byte key per point: row by row (std::sort past 16 points) was a sixth of a sparse
+    // pass with many points, and the null model 20–45 % faster this way from 6 points a row up.
     size_t pixels = 0;
-    if (rowsInOrder) {
+    const double keySpan = (static_cast<double>(rows[n - 1]) - static_cast<double>(rows[0]) + 1) *
+                           (static_cast<double>(cMax) - static_cast<double>(cMin) + 1);
+    if (rowsInOrder && n > 4 * rowRuns && keySpan < 9.0e18) {
+        const uint64_t width = static_cast<uint64_t>(cMax - cMin) + 1;
+        std::unique_ptr<uint64_t[]> key(new uint64_t[n]), tmp(new uint64_t[n]);
+        for (size_t i = 0; i < n; ++i)
+            key[i] = static_cast<uint64_t>(rows[i] - rows[0]) * width + static_cast<uint64_t>(cols[i] - cMin);
+        const uint64_t maxKey = static_cast<uint64_t>(rows[n - 1] - rows[0]) * width + (width - 1);
+        std::vector<size_t> count(2049);
+        for (int shift = 0; shift < 64 && (maxKey >> shift) != 0; shift += 11) {
+            std::fill(count.begin(), count.end(), 0);
+            for (size_t i = 0; i < n; ++i) ++count[((key[i] >> shift) & 2047) + 1];
+            for (size_t d = 1; d < count.size(); ++d) count[d] += count[d - 1];
+            for (size_t i = 0; i < n; ++i) tmp[count[(key[i] >> shift) & 2047]++] = key[i];
+            key.swap(tmp);
+        }
+        const int64_t row0 = rows[0];
+        for (size_t i = 0; i < n; ++i)
+            if (i == 0 || key[i] != key[i - 1]) {
+                rows[pixels] = row0 + static_cast<int64_t>(key[i] / width);
+                cols[pixels++] = cMin + static_cast<int64_t>(key[i] % width);
+            }
+    } else if (rowsInOrder) {
         for (size_t a = 0; a < n;) {
             size_t b = a + 1;
             while (b < n && rows[b] == rows[a]) ++b;
