@@ -61,18 +61,27 @@ int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& 
         std::nth_element(ts.begin(), ts.begin() + static_cast<long>(b), ts.end());
         tHi = ts[b];
     }
-    std::vector<double> nt, no;
-    nt.reserve(std::min(n, maxPoints));
+    std::vector<double> window, no;  // the window's epochs (all of them: t itself, not copied)
     double oLo = 1e308, oHi = -1e308;
-    for (size_t i = 0; i < n; ++i)
-        if (t[i] >= tLo && t[i] <= tHi) {
-            nt.push_back(t[i]);
+    if (n <= maxPoints) {
+        for (size_t i = 0; i < n; ++i) {
             oLo = std::min(oLo, oc[i]);
             oHi = std::max(oHi, oc[i]);
         }
+    } else {
+        window.reserve(maxPoints);
+        for (size_t i = 0; i < n; ++i)
+            if (t[i] >= tLo && t[i] <= tHi) {
+                window.push_back(t[i]);
+                oLo = std::min(oLo, oc[i]);
+                oHi = std::max(oHi, oc[i]);
+            }
+    }
+    const std::vector<double>& nt = n <= maxPoints ? t : window;
+    const size_t m = n <= maxPoints ? n : window.size();
     // Null model: the same epochs with O-C uniform over the span (a fixed seed: deterministic).
-    sim::Rng rng(0x6e756c6cULL ^ static_cast<uint64_t>(nt.size()));
-    no.resize(nt.size());
+    sim::Rng rng(0x6e756c6cULL ^ static_cast<uint64_t>(m));
+    no.resize(m);
     for (double& v : no) v = oLo + (oHi - oLo) * rng.uniform();
     const std::vector<int64_t> areas = regionAreas(nt, no, mapping);
     if (areas.empty()) return 2;
