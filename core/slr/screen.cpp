@@ -86,7 +86,14 @@ int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& 
     const std::vector<int64_t> areas = regionAreas(nt, no, mapping);
     if (areas.empty()) return 2;
     std::vector<size_t> atLeast(66, 0);  // atLeast[a] = regions with area ≥ a (a ≤ 65)
-    for (int64_t area : areas) ++atLeast[static_cast<size_t>(std::min<int64_t>(area, 65))];
+    // Most noise regions are single pixels: counted in a register, not by incrementing one
+    // memory cell ten thousand times in a row (each increment waited for the one before).
+    size_t single = 0;
+    for (int64_t area : areas) {
+        if (area == 1) ++single;
+        else ++atLeast[static_cast<size_t>(std::min<int64_t>(area, 65))];
+    }
+    atLeast[1] += single;
     for (size_t a = 64; a >= 1; --a) atLeast[a] += atLeast[a + 1];
     const double allowed = std::max(1.0, tolerance * static_cast<double>(areas.size()));
     for (size_t a = 2; a <= 64; ++a)
