@@ -271,8 +271,11 @@ std::vector<Anchor> regionPieces(const BinaryImage& img, const std::vector<uint8
 }
 
 bool collinearAccept(double pRow, double pCol, double xRow, double xCol, double qRow, double qCol, double C) {
+    // Lengths as sqrt(x² + y²), not std::hypot (a library call guarding against overflow that
+    // pixel coordinates cannot reach; a sixtieth of a sparse pass's screening).
+    auto norm = [](double x, double y) { return std::sqrt(x * x + y * y); };
     const double ux = pRow - xRow, uy = pCol - xCol, vx = qRow - xRow, vy = qCol - xCol;
-    const double nu = std::hypot(ux, uy), nv = std::hypot(vx, vy);
+    const double nu = norm(ux, uy), nv = norm(vx, vy);
     const double eps = 1e-12;
     if (nu < eps) return true;   // X on the nearest anchor
     if (nv < eps) return false;  // cannot happen with P nearest, unless P = Q = X
@@ -282,7 +285,7 @@ bool collinearAccept(double pRow, double pCol, double xRow, double xCol, double 
     // Same side (paper case b): P, the nearer, must lie between X and Q, and X be at most one
     // step |PQ| beyond P.
     const double wx = xRow - pRow, wy = xCol - pCol, zx = qRow - pRow, zy = qCol - pCol;
-    const double nw = std::hypot(wx, wy), nz = std::hypot(zx, zy);
+    const double nw = norm(wx, wy), nz = norm(zx, zy);
     if (nz < eps || nw > nz) return false;
     const double cosP = (wx * zx + wy * zy) / (nw * nz);
     return cosP < -C;
