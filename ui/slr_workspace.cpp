@@ -43,18 +43,24 @@ const QColor kSignal(31, 119, 180), kRecovered(44, 160, 44), kNoise(150, 150, 15
 constexpr size_t kMaxShown = 40000;  // points per graph shown; more are thinned with a fixed stride
 constexpr double kMmPerPs = 0.149896229;  // 1 ps two-way = c / 2 · 1 ps of range, one-way
 
-// The legend under a plot in two columns when they fit across the plot, else one (the entries
-// cut off, as "rejected by post-fit (20)" was at 1024 px). True when the number changed.
+// The legend under a plot in two columns at 8 pt when they fit across the plot, else at 7 pt,
+// else in one column (entries cut off, as "rejected by post-fit (20)" was at 1024 px, or a
+// column of seven entries that leaves the plot a strip). True when the layout changed.
 bool fitLegendColumns(QCustomPlot* p) {
     QCPLegend* lg = p->legend;
-    const int before = lg->wrap();
-    lg->setWrap(2);
-    lg->setFillOrder(QCPLegend::foColumnsFirst, true);  // re-lays the entries out
-    if (lg->minimumOuterSizeHint().width() > p->width()) {
-        lg->setWrap(1);
-        lg->setFillOrder(QCPLegend::foColumnsFirst, true);
-    }
-    return lg->wrap() != before;
+    const int beforeWrap = lg->wrap(), beforeSize = lg->font().pointSize();
+    auto layOut = [&](int columns, int points) {
+        QFont f = lg->font();
+        f.setPointSize(points);
+        lg->setFont(f);
+        for (int i = 0; i < lg->itemCount(); ++i)
+            if (QCPAbstractLegendItem* it = lg->item(i)) it->setFont(f);
+        lg->setWrap(columns);
+        lg->setFillOrder(QCPLegend::foColumnsFirst, true);  // re-lays the entries out
+        return lg->minimumOuterSizeHint().width() <= p->width();
+    };
+    if (!layOut(2, 8) && !layOut(2, 7)) layOut(1, 8);
+    return lg->wrap() != beforeWrap || lg->font().pointSize() != beforeSize;
 }
 
 // Undo: the manual edits of the pass as a whole, before and after.
@@ -199,7 +205,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     m_ocPlot = newPlot(this, tr("Epoch (s since 0h UTC)"), tr("O-C (ns, two-way)"));
     m_imagePlot = newPlot(this, tr("Epoch (s since 0h UTC)"), tr("O-C (ns, two-way)"));
     m_imagePlot->plotLayout()->insertRow(0);
-    m_imagePlot->plotLayout()->addElement(0, 0, new QCPTextElement(m_imagePlot, tr("Binary image: occupied pixels by region class"), QFont(font().family(), 9)));
+    m_imagePlot->plotLayout()->addElement(0, 0, new QCPTextElement(m_imagePlot, tr("Binary image: pixels by region class"), QFont(font().family(), 9)));
     m_ocPlot->plotLayout()->insertRow(0);
     m_ocPlot->plotLayout()->addElement(0, 0, new QCPTextElement(m_ocPlot, tr("O-C"), QFont(font().family(), 9)));
     m_ocPlot->yAxis2->setLabel(tr("mm, one-way"));
@@ -936,7 +942,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
         // The station's own screening, for comparison: small outline marks drawn first, under the
         // classes and the edits, so that they stay visible.
         QCPGraph* g = keyed(m_ocPlot->addGraph(), "station");
-        g->setName(tr("station flag: data (%1)").arg(dx.size()));
+        g->setName(tr("station flag 2 (%1)").arg(dx.size()));
         g->setLineStyle(QCPGraph::lsNone);
         g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(QColor(150, 90, 200), 1), Qt::NoBrush, 6));
         fill(g, dx, dy);
@@ -989,7 +995,8 @@ void SlrWorkspace::showRun(const SlrRun& run) {
     std::vector<double> imgOc(p.oc);
     if (flattened)
         for (size_t i = 0; i < n; ++i) imgOc[i] -= s.flattenS[i];
-    m_imagePlot->yAxis->setLabel(flattened ? tr("O-C less the screening's track trend (ns, two-way)") : tr("O-C (ns, two-way)"));
+    // (Short enough for the plot's height in a 1024×700 window.)
+    m_imagePlot->yAxis->setLabel(flattened ? tr("O-C − track trend (ns)") : tr("O-C (ns, two-way)"));
     {
         long long r0 = LLONG_MAX, r1 = LLONG_MIN, c0 = LLONG_MAX, c1 = LLONG_MIN;
         for (size_t i = 0; i < n; ++i) {

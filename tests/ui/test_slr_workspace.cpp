@@ -115,17 +115,32 @@ private slots:
         QTest::qWait(50);
         QCoreApplication::processEvents();
         SlrWorkspace* ws = w.slr();
-        for (QCustomPlot* p : {ws->ocPlot(), ws->imagePlot()}) {
-            p->replot();
-            QVERIFY2(p->legend->wrap() == 2, "the legend fell back to one column at 1024 px");
-            QVERIFY2(p->legend->minimumOuterSizeHint().width() <= p->width(),
-                     qPrintable(QString("legend needs %1 px, the plot is %2").arg(p->legend->minimumOuterSizeHint().width()).arg(p->width())));
-            for (int i = 0; i < p->legend->itemCount(); ++i) {
-                if (!p->legend->item(i)) continue;  // an empty cell of the grid
-                const QRect r = p->legend->item(i)->outerRect();
-                QVERIFY2(r.left() >= 0 && r.right() <= p->width(), qPrintable(QString("legend entry %1 at %2..%3 of %4 px").arg(i).arg(r.left()).arg(r.right()).arg(p->width())));
+        // The legends in two columns, every entry inside its plot; the titles and the image's
+        // O-C axis label no longer than their room.
+        auto plotsFit = [ws](const QString& what) {
+            for (QCustomPlot* p : {ws->ocPlot(), ws->imagePlot()}) {
+                p->replot();
+                QVERIFY2(p->legend->wrap() == 2, qPrintable(what + ": a legend fell back to one column at 1024 px"));
+                QVERIFY2(p->legend->minimumOuterSizeHint().width() <= p->width(),
+                         qPrintable(QString("%1: legend needs %2 px, the plot is %3").arg(what).arg(p->legend->minimumOuterSizeHint().width()).arg(p->width())));
+                for (int i = 0; i < p->legend->itemCount(); ++i) {
+                    if (!p->legend->item(i)) continue;  // an empty cell of the grid
+                    const QRect r = p->legend->item(i)->outerRect();
+                    QVERIFY2(r.left() >= 0 && r.right() <= p->width(),
+                             qPrintable(QString("%1: legend entry %2 at %3..%4 of %5 px").arg(what).arg(i).arg(r.left()).arg(r.right()).arg(p->width())));
+                }
+                if (auto* title = qobject_cast<QCPTextElement*>(p->plotLayout()->element(0, 0))) {
+                    const int w = QFontMetrics(title->font()).horizontalAdvance(title->text());
+                    QVERIFY2(w <= p->width(), qPrintable(QString("%1: title '%2' %3 px, plot %4").arg(what, title->text()).arg(w).arg(p->width())));
+                }
+                // The vertical label is centred on its axis and drawn as far as the widget's edges.
+                const int label = QFontMetrics(p->yAxis->labelFont()).horizontalAdvance(p->yAxis->label());
+                const int mid = p->axisRect()->rect().center().y();
+                QVERIFY2(mid - label / 2 >= 0 && mid + label / 2 <= p->height(),
+                         qPrintable(QString("%1: axis label '%2' %3 px about y %4 in a %5 px plot").arg(what, p->yAxis->label()).arg(label).arg(mid).arg(p->height())));
             }
-        }
+        };
+        plotsFit("demo");
         QCustomPlot* h = ws->histPlot();
         h->replot();
         const int title = QFontMetrics(h->xAxis->labelFont()).horizontalAdvance(h->xAxis->label());
@@ -136,6 +151,16 @@ private slots:
         QVERIFY(area);
         QVERIFY2(stats->width() <= area->viewport()->width(),
                  qPrintable(QString("summary %1 px wide in a %2 px view").arg(stats->width()).arg(area->viewport()->width())));
+        // A real pass: seven O-C legend entries (the station's flags too), the image in the
+        // flattened frame with its followed points.
+        const QString jason = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
+        if (!QFile::exists(jason)) return;
+        QString err;
+        QVERIFY2(ws->openPath(jason, -1, &err), qPrintable(err));
+        QVERIFY(ws->controller()->waitIdle(60000));
+        QTest::qWait(50);
+        QCoreApplication::processEvents();
+        plotsFit("JASON1");
     }
 
     void cosineSliderChangesTheAcceptedCount() {
