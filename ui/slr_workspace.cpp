@@ -798,8 +798,8 @@ void SlrWorkspace::fitMainPlot() {
 }
 
 void SlrWorkspace::fitImagePlot() {
-    // The image in its own O-C frame: fitted to the signal, recovered and followed pixels, so that the
-    // axis shows the track in that frame (the noise pixels span the whole range gate).
+    // The image in its own O-C frame: fitted to the signal, recovered and followed pixels, so
+    // that the axis shows the track in that frame (the noise pixels span the whole range gate).
     bool found = false;
     QCPRange vr;
     for (int g : {1, 2, 3}) {
