@@ -71,6 +71,24 @@ inline int bitsFor(uint64_t v) {
     return b;
 }
 
+// LSD radix sort of a[0..n) on the low `bits` bits of keyOf(element), 11 bits a pass, stable
+// (ties keep their order). The result is left in a (tmp: scratch of n). False when cancelled
+// between passes.
+template <class T, class KeyOf>
+bool radixSort(std::unique_ptr<T[]>& a, size_t n, int bits, KeyOf keyOf, const Feedback* fb) {
+    std::unique_ptr<T[]> tmp(new T[n]);
+    std::vector<size_t> count(2049);
+    for (int shift = 0; shift < bits; shift += 11) {
+        std::fill(count.begin(), count.end(), 0);
+        for (size_t i = 0; i < n; ++i) ++count[((keyOf(a[i]) >> shift) & 2047) + 1];
+        for (size_t d = 1; d < count.size(); ++d) count[d] += count[d - 1];
+        for (size_t i = 0; i < n; ++i) tmp[count[(keyOf(a[i]) >> shift) & 2047]++] = a[i];
+        a.swap(tmp);
+        if (cancelled(fb)) return false;
+    }
+    return true;
+}
+
 // mapPoint, inlined into the image's two passes over the points.
 inline bool mapOne(double t, double oc, double magT, double magOc, int64_t* row, int64_t* col) {
     // |round(x)| > 2^61 exactly when |x| > 2^61 (the doubles there are whole); NaN and ±inf fail
@@ -223,18 +241,9 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
             a = b;
         }
     } else if (oneKey) {
-        // LSD radix sort on the 64-bit key, 11 bits a pass (stable: ties stay in index order).
-        const int bits = bitsFor((static_cast<uint64_t>(img.rows - 1) << colBits) | colMask);
-        std::unique_ptr<Item[]> tmp(new Item[n]);
-        std::vector<size_t> count(2049);
-        for (int shift = 0; shift < bits; shift += 11) {
-            std::fill(count.begin(), count.end(), 0);
-            for (size_t i = 0; i < n; ++i) ++count[((items[i].key >> shift) & 2047) + 1];
-            for (size_t d = 1; d < count.size(); ++d) count[d] += count[d - 1];
-            for (size_t i = 0; i < n; ++i) tmp[count[(items[i].key >> shift) & 2047]++] = items[i];
-            items.swap(tmp);
-            if (cancelled(fb)) break;
-        }
+        // Stable: ties stay in index order. (A cancellation is seen just below.)
+        radixSort(items, n, bitsFor((static_cast<uint64_t>(img.rows - 1) << colBits) | colMask),
+                  [](const Item& x) { return x.key; }, fb);
     } else {
         std::sort(items.get(), items.get() + n, [](const Item& a, const Item& b) {
             if (a.key != b.key) return a.key < b.key;
@@ -352,18 +361,11 @@ std::vector<int64_t> regionAreas(const std::vector<double>& t, const std::vector
     const int colBits = bitsFor(static_cast<uint64_t>(cMax - cMin));
     if (rowsInOrder && n > 2 * rowRuns && colBits + bitsFor(static_cast<uint64_t>(rows[n - 1] - rows[0])) <= 63) {
         const uint64_t colMask = (uint64_t{1} << colBits) - 1;
-        std::unique_ptr<uint64_t[]> key(new uint64_t[n]), tmp(new uint64_t[n]);
+        std::unique_ptr<uint64_t[]> key(new uint64_t[n]);
         for (size_t i = 0; i < n; ++i)
             key[i] = (static_cast<uint64_t>(rows[i] - rows[0]) << colBits) | static_cast<uint64_t>(cols[i] - cMin);
-        const uint64_t maxKey = (static_cast<uint64_t>(rows[n - 1] - rows[0]) << colBits) | colMask;
-        std::vector<size_t> count(2049);
-        for (int shift = 0; shift < 64 && (maxKey >> shift) != 0; shift += 11) {
-            std::fill(count.begin(), count.end(), 0);
-            for (size_t i = 0; i < n; ++i) ++count[((key[i] >> shift) & 2047) + 1];
-            for (size_t d = 1; d < count.size(); ++d) count[d] += count[d - 1];
-            for (size_t i = 0; i < n; ++i) tmp[count[(key[i] >> shift) & 2047]++] = key[i];
-            key.swap(tmp);
-        }
+        radixSort(key, n, bitsFor((static_cast<uint64_t>(rows[n - 1] - rows[0]) << colBits) | colMask),
+                  [](uint64_t x) { return x; }, nullptr);
         const int64_t row0 = rows[0];
         for (size_t i = 0; i < n; ++i)
             if (i == 0 || key[i] != key[i - 1]) {
