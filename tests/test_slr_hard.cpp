@@ -228,6 +228,34 @@ private slots:
         QCOMPARE(g.added, 0LL);
     }
 
+    /// Track following runs once, after the refinement, on the O-C as given. It also ran inside
+    /// the refinement's screening of the flattened O-C (following the kinks at the ends of the
+    /// subtracted trend, and scoring a followed round against an unfollowed one): the result then
+    /// differed from following the unfollowed screening (by 1 point on each of these passes).
+    void trackFollowingRunsOnceAfterTheRefinement_data() {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("seed");
+        QTest::newRow("leo day 3%") << "leo day 3%" << 3;
+        QTest::newRow("conventional gaps") << "conventional gaps 30/60/120 s" << 2;
+    }
+    void trackFollowingRunsOnceAfterTheRefinement() {
+        QFETCH(QString, name);
+        QFETCH(int, seed);
+        const sim::SlrSimPass pass = sim::simulateSlrPass(hardCase(name), static_cast<uint64_t>(seed));
+        QVERIFY2(pass.ok, pass.error.c_str());
+        ScreenParams p;
+        p.acceptFloorless = false;  // (judged on the input alone, after both)
+        const ScreenResult followed = screenSignal(pass.epochS, pass.ocS, p);
+        ScreenParams q = p;
+        q.followTrack = false;
+        const ScreenResult screened = screenSignal(pass.epochS, pass.ocS, q);
+        QVERIFY(followed.ok && screened.ok);
+        QVERIFY2(screened.refinedRounds >= 1, "the pass must be refined for this test to mean anything");
+        const FollowResult f = followTrack(pass.epochS, pass.ocS, acceptedMask(screened), FollowParams{});
+        QVERIFY(f.ok);
+        QVERIFY(acceptedMask(followed) == f.accepted);
+    }
+
     void poissonTailBound() {
         QCOMPARE(poissonTail(0, 3.0), 1.0);
         QCOMPARE(poissonTail(2, 5.0), 1.0);  // m ≤ mean: not improbable

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <memory>
+#include <thread>
 
 #include "core/common/text.hpp"
 #include "core/sim/rng.hpp"
@@ -396,16 +398,26 @@ void runFixed(const std::vector<double>& t, const std::vector<double>& oc, const
     mp.magT = res.magT;
     mp.magOc = res.magOc;
     mp.connectivity = res.connectivity;
+    // Step 3's null model reads only the input: on a long pass it is built beside the image (at
+    // 10⁵ points a third of this function; the scale search's windows, at most autoMaxPoints
+    // points and already side by side on the cores, are not split further).
+    constexpr size_t kNullAside = 50000;
+    std::future<int> nullLimit;
+    if (p.areaLimit <= 0 && t.size() >= kNullAside && std::thread::hardware_concurrency() > 1)
+        nullLimit = std::async(std::launch::async,
+                               [&t, &oc, mp, tol = p.areaTolerance] { return automaticAreaLimit(t, oc, mp, tol, 200000); });
     BinaryImage img = buildBinaryImage(t, oc, mp, fb);
     if (!img.ok) {
         res.error = img.error;
-        return;
+        return;  // (the future's destructor waits for the null model)
     }
     for (const auto& w : img.warnings) res.warnings.push_back(w);
     res.mapMs = msSince(t0);
     if (fb) fb->setProgress(0.6);
     // Step 3.
-    res.areaLimit = p.areaLimit > 0 ? p.areaLimit : automaticAreaLimit(t, oc, mp, p.areaTolerance, 200000);
+    res.areaLimit = p.areaLimit > 0       ? p.areaLimit
+                    : nullLimit.valid() ? nullLimit.get()
+                                        : automaticAreaLimit(t, oc, mp, p.areaTolerance, 200000);
     const std::vector<uint32_t> cand = splitByArea(img.regions, res.areaLimit);
     res.candidates = cand.size();
     // Step 4.
@@ -504,6 +516,10 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
     ScreenParams again = params;
     again.refineRounds = 0;
     again.acceptFloorless = false;  // judged once, on the whole result
+    // Track following runs once, after the refinement, on the O-C as given (screenSignal). Run
+    // here too, on the flattened O-C, it followed the kinks at the ends of the subtracted trend,
+    // and the round's score compared a followed result with an unfollowed one.
+    again.followTrack = false;
     for (int round = 0; round < params.refineRounds; ++round) {
         if (cancelled(fb)) return;
         const std::vector<uint8_t> mask = acceptedMask(res);
@@ -569,8 +585,7 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
 
 // acceptFloorless: on a pass with no noise floor, every point within 5σ of the robust trend is
 // accepted (screen.hpp says why).
-static void acceptIfFloorless(const std::vector<double>& t, const std::vector<double>& oc, ScreenResult& res) {
-    const NoiseFloorCheck c = checkNoiseFloor(t, oc);
+static void acceptIfFloorless(const NoiseFloorCheck& c, ScreenResult& res) {
     if (!c.checked) return;
     res.floorless = c.floorless;
     res.floorSigmaS = c.sigmaS;
@@ -635,7 +650,15 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
     if (res.ok && params.automatic && params.refineRounds > 0 && sparse) refine(t, oc, params, fb, res);
     // Track following for sparse passes (like the refinement): a dense pass's track forms
     // regions at any usable scale, and following 10⁵ returns costs a third of a 10⁶-point run.
-    if (res.ok && params.automatic && params.followTrack && sparse && !cancelled(fb)) {
+    const bool follow = res.ok && params.automatic && params.followTrack && sparse && !cancelled(fb);
+    const bool floor = res.ok && params.automatic && params.acceptFloorless;
+    // The noise-floor check reads only the input, so it runs beside the track following (on a
+    // dense pass, which is not followed, it runs alone as before: no second copy of its buffers
+    // beside a 10⁶-point screening).
+    std::future<NoiseFloorCheck> floorCheck;
+    if (follow && floor && std::thread::hardware_concurrency() > 1)
+        floorCheck = std::async(std::launch::async, [&t, &oc] { return checkNoiseFloor(t, oc); });
+    if (follow) {
         const auto tf = Clock::now();
         // On the O-C as given: smooth, whereas a refinement's flattened O-C has kinks at the
         // ends of the trend it subtracted (held constant beyond the accepted span).
@@ -659,7 +682,12 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
         }
         res.recoveryMs += msSince(tf);
     }
-    if (res.ok && params.automatic && params.acceptFloorless && !cancelled(fb)) acceptIfFloorless(t, oc, res);
+    if (floorCheck.valid()) {
+        const NoiseFloorCheck c = floorCheck.get();
+        if (!cancelled(fb)) acceptIfFloorless(c, res);
+    } else if (floor && !cancelled(fb)) {
+        acceptIfFloorless(checkNoiseFloor(t, oc), res);
+    }
     res.totalMs = msSince(t0);
     if (res.ok && fb) fb->setProgress(1.0);
     return res;
