@@ -517,6 +517,42 @@ private slots:
         QVERIFY(lwbtest::readAll(p("nofit.csv")).contains("\n2,2.000000000,3.000000e-09,signal,"));
     }
 
+    /// A long pass is formatted in blocks on the cores and written in order: the rows come out in
+    /// pass order, and the first point that does not fit is the one named, not a later block's.
+    void screenCsvWrittenInOrderAcrossBlocks() {
+        const size_t n = 40000;  // 5 blocks of 8192 rows
+        PassData pass;
+        for (size_t i = 0; i < n; ++i) {
+            pass.t.push_back(1000.0 + 0.5 * static_cast<double>(i));
+            pass.oc.push_back(1e-9 * static_cast<double>(i % 7));
+        }
+        ScreenResult screen;
+        screen.ok = true;
+        screen.pointClass.assign(n, PointClass::Noise);
+        std::vector<uint8_t> accepted(n, 0);
+        for (size_t i = 0; i < n; i += 3) accepted[i] = 1;
+        const std::string out = p("blocks.csv").toStdString();
+        std::string err;
+        pass.t[35000] = 1e300;
+        pass.t[20000] = 1e300;
+        QVERIFY(!writeScreenCsv(out, pass, screen, accepted, nullptr, &err));
+        QVERIFY2(err.find("point 20000 ") != std::string::npos, err.c_str());
+        QVERIFY(!QFile::exists(p("blocks.csv")));
+        noStrayFiles();
+        pass.t[35000] = 1000.0 + 0.5 * 35000;
+        pass.t[20000] = 1000.0 + 0.5 * 20000;
+        QVERIFY2(writeScreenCsv(out, pass, screen, accepted, nullptr, &err), err.c_str());
+        const QList<QByteArray> lines = lwbtest::readAll(p("blocks.csv")).split('\n');
+        QCOMPARE(lines.size(), static_cast<qsizetype>(n + 2));  // header, n rows, the empty piece after the last newline
+        for (size_t i = 0; i < n; ++i) {
+            const QByteArray want = QByteArray::number(static_cast<qulonglong>(i)) + "," +
+                                    QByteArray::number(1000.0 + 0.5 * static_cast<double>(i), 'f', 9) + ",";
+            if (!lines[static_cast<qsizetype>(i + 1)].startsWith(want) ||
+                lines[static_cast<qsizetype>(i + 1)].contains(i % 3 == 0 ? ",noise," : ",signal,"))
+                QFAIL(qPrintable("row " + QString::number(i) + ": " + lines[static_cast<qsizetype>(i + 1)]));
+        }
+    }
+
     /// Item 9: CRD told by its content, not its name.
     void crdRecognisedByContent_data() {
         QTest::addColumn<QString>("name");

@@ -626,6 +626,48 @@ private slots:
         QVERIFY(!validate(p).empty());
     }
 
+    /// A table past 1 MB is parsed in stretches on the cores: its rows, their line numbers
+    /// (comments and blank lines counted) and its first error in file order are those of one
+    /// pass through the file. Line numbers were counted per stretch in the first version.
+    void ocCsvLongTableInStretches() {
+        std::string text = "# a long table\nepoch_s,oc_s\n";
+        std::vector<long> lines;
+        long line = 2;
+        const size_t n = 60000;  // about 1.6 MB: 8 stretches
+        char buf[64];
+        for (size_t i = 0; i < n; ++i) {
+            if (i % 997 == 0) {
+                text += "# comment\n\n";
+                line += 2;
+            }
+            const int len = std::snprintf(buf, sizeof buf, "%zu.5,%zu.25e-9\r\n", i, i % 1000);
+            text.append(buf, static_cast<size_t>(len));
+            lines.push_back(++line);
+        }
+        QVERIFY(text.size() > (1u << 20));
+        OcCsvReadResult r = parseOcCsv(text, "long.csv");
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.table.epoch_s.size(), n);
+        QVERIFY(r.table.line == lines);
+        for (size_t i : {size_t(0), size_t(7499), size_t(7500), size_t(31234), n - 1}) {
+            QCOMPARE(r.table.epoch_s[i], static_cast<double>(i) + 0.5);
+            std::snprintf(buf, sizeof buf, "%zu.25e-9", i % 1000);
+            QCOMPARE(r.table.oc_s[i], std::strtod(buf, nullptr));
+        }
+        // Two bad rows far apart: the first in the file is reported, with its line.
+        auto rowAt = [&](size_t i) {
+            std::snprintf(buf, sizeof buf, "\n%zu.5,%zu.25e-9\r\n", i, i % 1000);
+            return text.find(buf) + 1;
+        };
+        std::string bad = text;
+        bad.replace(rowAt(52000), std::to_string(52000).size(), "x");
+        bad.replace(rowAt(41000), std::to_string(41000).size(), "y");
+        r = parseOcCsv(bad, "long.csv");
+        QVERIFY(!r.ok);
+        QVERIFY2(QString::fromStdString(r.error).startsWith(QString("long.csv:%1: epoch_s is not a finite number").arg(lines[41000])),
+                 r.error.c_str());
+    }
+
     /// 10^6 rows: read completely and correctly. The time is printed, not asserted (benchmarks belong
     /// elsewhere).
     void ocCsvMillionRows() {

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/parallel.hpp"
 #include "core/common/text.hpp"
 
 namespace lwb::core::slr {
@@ -77,6 +78,74 @@ void appendNumber(std::string* out, double v) {
     else *out += formatDouble(v, 17);  // not reached; never the buffer's old bytes
 }
 
+// The data rows of one stretch of the file (whole lines), parsed into a table of their own.
+// Line numbers are counted from 1 within the stretch; the caller adds the lines before it.
+struct RowChunk {
+    OcTable rows;        // epoch_s, oc_s, line (within the stretch), extra
+    long lines = 0;      // lines in the stretch
+    long errorLine = 0;  // line (within the stretch) of the first error; 0: none
+    std::string error;   // what was wrong there (without "FILE:LINE: ")
+};
+
+struct Columns {
+    size_t count = 0;
+    size_t epoch = 0, oc = 0;
+    std::vector<size_t> extra;
+    const std::vector<std::string>* extraNames = nullptr;
+};
+
+void parseRows(std::string_view text, const Columns& cols, RowChunk* out) {
+    std::vector<std::string_view> fields;
+    fields.reserve(16);
+    OcTable& t = out->rows;
+    t.extra.resize(cols.extra.size());
+    const size_t guess = std::min<size_t>(text.size() / 16 + 16, 50000000);  // rough row count: one allocation
+    t.epoch_s.reserve(guess);
+    t.oc_s.reserve(guess);
+    t.line.reserve(guess);
+    auto fail = [&](long lineNo, std::string what) {
+        out->errorLine = lineNo;
+        out->error = std::move(what);
+    };
+    size_t pos = 0;
+    long lineNo = 0;
+    while (pos < text.size()) {
+        const void* nl = std::memchr(text.data() + pos, '\n', text.size() - pos);
+        const size_t end = nl ? static_cast<size_t>(static_cast<const char*>(nl) - text.data()) : text.size();
+        std::string_view line = text.substr(pos, end - pos);
+        pos = end + 1;
+        out->lines = ++lineNo;
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        const std::string_view tl = trimBlanks(line);
+        if (tl.empty() || tl[0] == '#') continue;
+        if (std::memchr(line.data(), '\0', line.size())) return fail(lineNo, "binary data (NUL byte): not a CSV text file");
+        if (!splitLine(line, &fields)) return fail(lineNo, "unterminated quoted field");
+        if (fields.size() != cols.count)
+            return fail(lineNo, std::to_string(fields.size()) + " fields, the header has " + std::to_string(cols.count));
+        double e = 0, o = 0;
+        if (!parseNumber(fields[cols.epoch], &e))
+            return fail(lineNo, "epoch_s is not a finite number: \"" + excerpt(fields[cols.epoch]) + "\"");
+        if (!parseNumber(fields[cols.oc], &o))
+            return fail(lineNo, "oc_s is not a finite number: \"" + excerpt(fields[cols.oc]) + "\"");
+        if (!(std::fabs(e) <= kMaxOcEpochS))
+            return fail(lineNo, "epoch_s " + excerpt(fields[cols.epoch]) +
+                                    " is not a plausible epoch in seconds (|epoch_s| <= 1e10 s)");
+        if (!(std::fabs(o) <= kMaxOcS))
+            return fail(lineNo, "oc_s " + excerpt(fields[cols.oc]) +
+                                    " is not a plausible O-C in seconds of two-way time of flight (|oc_s| <= 3 s)");
+        for (size_t k = 0; k < cols.extra.size(); ++k) {
+            double v = NAN;
+            const std::string_view fv = fields[cols.extra[k]];
+            if (!trimBlanks(fv).empty() && !parseNumber(fv, &v))
+                return fail(lineNo, (*cols.extraNames)[k] + " is not a finite number: \"" + excerpt(fv) + "\"");
+            t.extra[k].push_back(v);
+        }
+        t.epoch_s.push_back(e);
+        t.oc_s.push_back(o);
+        t.line.push_back(lineNo);
+    }
+}
+
 }  // namespace
 
 std::string validate(const OcCsvParams& p) {
@@ -101,16 +170,11 @@ OcCsvReadResult parseOcCsv(std::string_view text, const std::string& source, con
             static_cast<unsigned char>(text[2]) == 0xBF)
             text.remove_prefix(3);
         std::vector<std::string_view> fields;
-        fields.reserve(16);
         size_t pos = 0;
         long lineNo = 0;
-        bool haveHeader = false;
-        size_t nCols = 0;
-        int cEpoch = -1, cOc = -1;
-        std::vector<int> cExtra;
         OcTable& t = res.table;
-        // Rough row estimate for one allocation.
-        const size_t guess = std::min<size_t>(text.size() / 16 + 16, 50000000);
+        Columns cols;
+        // The header: the first line that is neither blank nor a comment.
         while (pos < text.size()) {
             const void* nl = std::memchr(text.data() + pos, '\n', text.size() - pos);
             const size_t end = nl ? static_cast<size_t>(static_cast<const char*>(nl) - text.data()) : text.size();
@@ -128,87 +192,95 @@ OcCsvReadResult parseOcCsv(std::string_view text, const std::string& source, con
                 res.error = at(lineNo) + "unterminated quoted field";
                 return res;
             }
-            if (!haveHeader) {
-                haveHeader = true;
-                nCols = fields.size();
-                for (size_t i = 0; i < fields.size(); ++i) {
-                    const std::string name = lower(fields[i]);
-                    if (name == "epoch_s") {
-                        if (cEpoch >= 0) {
-                            res.error = at(lineNo) + "column epoch_s appears twice";
-                            return res;
-                        }
-                        cEpoch = static_cast<int>(i);
-                    } else if (name == "oc_s") {
-                        if (cOc >= 0) {
-                            res.error = at(lineNo) + "column oc_s appears twice";
-                            return res;
-                        }
-                        cOc = static_cast<int>(i);
-                    }
-                }
-                if (cEpoch < 0 || cOc < 0) {
-                    res.error = at(lineNo) + "header must name the columns epoch_s and oc_s (found \"" + excerpt(line, 60) +
-                                "\")";
-                    return res;
-                }
-                for (const auto& want : params.extraColumns) {
-                    int found = -1;
-                    for (size_t i = 0; i < fields.size(); ++i)
-                        if (lower(fields[i]) == toLower(want)) found = static_cast<int>(i);
-                    if (found < 0) {
-                        res.error = at(lineNo) + "header has no column \"" + want + "\"";
+            int cEpoch = -1, cOc = -1;
+            for (size_t i = 0; i < fields.size(); ++i) {
+                const std::string name = lower(fields[i]);
+                if (name == "epoch_s") {
+                    if (cEpoch >= 0) {
+                        res.error = at(lineNo) + "column epoch_s appears twice";
                         return res;
                     }
-                    cExtra.push_back(found);
-                    t.extraNames.push_back(want);
+                    cEpoch = static_cast<int>(i);
+                } else if (name == "oc_s") {
+                    if (cOc >= 0) {
+                        res.error = at(lineNo) + "column oc_s appears twice";
+                        return res;
+                    }
+                    cOc = static_cast<int>(i);
                 }
-                t.extra.resize(cExtra.size());
-                t.epoch_s.reserve(guess);
-                t.oc_s.reserve(guess);
-                t.line.reserve(guess);
-                continue;
             }
-            if (fields.size() != nCols) {
-                res.error = at(lineNo) + std::to_string(fields.size()) + " fields, the header has " + std::to_string(nCols);
+            if (cEpoch < 0 || cOc < 0) {
+                res.error = at(lineNo) + "header must name the columns epoch_s and oc_s (found \"" + excerpt(line, 60) + "\")";
                 return res;
             }
-            double e = 0, o = 0;
-            if (!parseNumber(fields[static_cast<size_t>(cEpoch)], &e)) {
-                res.error = at(lineNo) + "epoch_s is not a finite number: \"" + excerpt(fields[static_cast<size_t>(cEpoch)]) + "\"";
-                return res;
-            }
-            if (!parseNumber(fields[static_cast<size_t>(cOc)], &o)) {
-                res.error = at(lineNo) + "oc_s is not a finite number: \"" + excerpt(fields[static_cast<size_t>(cOc)]) + "\"";
-                return res;
-            }
-            if (!(std::fabs(e) <= kMaxOcEpochS)) {
-                res.error = at(lineNo) + "epoch_s " + excerpt(fields[static_cast<size_t>(cEpoch)]) +
-                            " is not a plausible epoch in seconds (|epoch_s| <= 1e10 s)";
-                return res;
-            }
-            if (!(std::fabs(o) <= kMaxOcS)) {
-                res.error = at(lineNo) + "oc_s " + excerpt(fields[static_cast<size_t>(cOc)]) +
-                            " is not a plausible O-C in seconds of two-way time of flight (|oc_s| <= 3 s)";
-                return res;
-            }
-            for (size_t k = 0; k < cExtra.size(); ++k) {
-                double v = NAN;
-                const std::string_view fv = fields[static_cast<size_t>(cExtra[k])];
-                if (!trimBlanks(fv).empty() && !parseNumber(fv, &v)) {
-                    res.error = at(lineNo) + t.extraNames[k] + " is not a finite number: \"" +
-                                excerpt(fields[static_cast<size_t>(cExtra[k])]) + "\"";
+            for (const auto& want : params.extraColumns) {
+                int found = -1;
+                for (size_t i = 0; i < fields.size(); ++i)
+                    if (lower(fields[i]) == toLower(want)) found = static_cast<int>(i);
+                if (found < 0) {
+                    res.error = at(lineNo) + "header has no column \"" + want + "\"";
                     return res;
                 }
-                t.extra[k].push_back(v);
+                cols.extra.push_back(static_cast<size_t>(found));
+                t.extraNames.push_back(want);
             }
-            t.epoch_s.push_back(e);
-            t.oc_s.push_back(o);
-            t.line.push_back(lineNo);
+            cols.count = fields.size();
+            cols.epoch = static_cast<size_t>(cEpoch);
+            cols.oc = static_cast<size_t>(cOc);
+            cols.extraNames = &t.extraNames;
+            break;
         }
-        if (!haveHeader) {
+        if (cols.count == 0) {
             res.error = src + ": empty file (no header line)";
             return res;
+        }
+        // The rows, in stretches of whole lines parsed side by side on the cores (a 10⁵-row
+        // table in about half the time on two); one stretch below 1 MB. The first error in
+        // file order is reported, with its line in the file.
+        const std::string_view body = pos < text.size() ? text.substr(pos) : std::string_view();
+        const size_t want = body.size() < (1u << 20) ? 1 : 8;
+        std::vector<size_t> cut{0};
+        for (size_t k = 1; k < want; ++k) {
+            const size_t at0 = std::max(cut.back(), body.size() * k / want);
+            const void* nl = at0 < body.size() ? std::memchr(body.data() + at0, '\n', body.size() - at0) : nullptr;
+            if (!nl) break;
+            cut.push_back(static_cast<size_t>(static_cast<const char*>(nl) - body.data()) + 1);
+        }
+        cut.push_back(body.size());
+        std::vector<RowChunk> chunks(cut.size() - 1);
+        parallelFor(chunks.size(), coresFor(0),
+                    [&](size_t k) { parseRows(body.substr(cut[k], cut[k + 1] - cut[k]), cols, &chunks[k]); });
+        const long headerLines = lineNo;
+        size_t total = 0;
+        for (const RowChunk& c : chunks) {
+            if (!c.error.empty()) {
+                res.error = at(lineNo + c.errorLine) + c.error;
+                return res;
+            }
+            total += c.rows.epoch_s.size();
+            lineNo += c.lines;
+        }
+        if (chunks.size() == 1) {
+            t.epoch_s = std::move(chunks[0].rows.epoch_s);
+            t.oc_s = std::move(chunks[0].rows.oc_s);
+            t.line = std::move(chunks[0].rows.line);
+            t.extra = std::move(chunks[0].rows.extra);
+            for (long& l : t.line) l += headerLines;
+        } else {
+            t.epoch_s.reserve(total);
+            t.oc_s.reserve(total);
+            t.line.reserve(total);
+            t.extra.resize(cols.extra.size());
+            long before = headerLines;
+            for (RowChunk& c : chunks) {
+                t.epoch_s.insert(t.epoch_s.end(), c.rows.epoch_s.begin(), c.rows.epoch_s.end());
+                t.oc_s.insert(t.oc_s.end(), c.rows.oc_s.begin(), c.rows.oc_s.end());
+                for (long l : c.rows.line) t.line.push_back(l + before);
+                for (size_t k = 0; k < t.extra.size(); ++k)
+                    t.extra[k].insert(t.extra[k].end(), c.rows.extra[k].begin(), c.rows.extra[k].end());
+                before += c.lines;
+                c = RowChunk();
+            }
         }
         if (t.epoch_s.empty()) {
             res.error = src + ": no data rows after the header";

@@ -13,6 +13,7 @@
 #include <optional>
 #include <thread>
 
+#include "core/common/parallel.hpp"
 #include "core/common/text.hpp"
 
 namespace lwb::core::slr {
@@ -21,35 +22,10 @@ namespace {
 
 std::atomic<int> gSearchThreads{0};
 
-// job(0) … job(n − 1) on up to min(n, threads) threads, the calling one included; returns when
-// all are done. An exception in a job is rethrown here, after every thread has joined.
+// The scale search's trials, side by side on the cores (setScaleSearchThreads).
 template <class Job>
 void runInParallel(size_t n, Job&& job) {
-    const int want = gSearchThreads.load();
-    const size_t cores = want > 0 ? static_cast<size_t>(want) : std::max(1u, std::thread::hardware_concurrency());
-    const size_t workers = std::min(n, cores);
-    if (workers <= 1) {
-        for (size_t i = 0; i < n; ++i) job(i);
-        return;
-    }
-    std::atomic<size_t> next{0};
-    std::exception_ptr failure;
-    std::mutex failureLock;
-    auto loop = [&] {
-        for (size_t i; (i = next.fetch_add(1)) < n;) {
-            try {
-                job(i);
-            } catch (...) {
-                const std::lock_guard<std::mutex> lock(failureLock);
-                if (!failure) failure = std::current_exception();
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (size_t w = 1; w < workers; ++w) pool.emplace_back(loop);
-    loop();
-    for (auto& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    parallelFor(n, coresFor(gSearchThreads.load()), std::forward<Job>(job));
 }
 
 // Ladders of trials. Trial `step` of ladder l is an independent computation, run(l, step)
@@ -122,8 +98,7 @@ void runLadders(size_t ladders, int ahead, Run&& run, Decide&& decide) {
             changed.notify_all();
         }
     };
-    const int want = gSearchThreads.load();
-    const size_t workers = want > 0 ? static_cast<size_t>(want) : std::max(1u, std::thread::hardware_concurrency());
+    const size_t workers = coresFor(gSearchThreads.load());
     std::vector<std::thread> pool;
     for (size_t w = 1; w < workers; ++w) pool.emplace_back(loop);
     loop();

@@ -1,0 +1,50 @@
+#pragma once
+// A parallel loop for the core's few data-parallel steps: job(0) … job(n − 1) on up to
+// `threads` threads, the calling one included, each thread taking the next index as it
+// finishes one (the two cores of a virtual machine can run at different speeds, so a fixed
+// split waits for the slower one). Returns when all are done. An exception in a job is rethrown
+// here, after every thread has joined. Jobs must not share written memory: a job's output in a
+// cache line of its own (alignas(64)) is not slowed by another's writes.
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace lwb::core {
+
+/// The cores to use: `want` when > 0, else every hardware thread (at least 1).
+inline size_t coresFor(int want) {
+    return want > 0 ? static_cast<size_t>(want) : std::max(1u, std::thread::hardware_concurrency());
+}
+
+template <class Job>
+void parallelFor(size_t n, size_t threads, Job&& job) {
+    const size_t workers = std::min(n, threads);
+    if (workers <= 1) {
+        for (size_t i = 0; i < n; ++i) job(i);
+        return;
+    }
+    std::atomic<size_t> next{0};
+    std::exception_ptr failure;
+    std::mutex failureLock;
+    auto loop = [&] {
+        for (size_t i; (i = next.fetch_add(1)) < n;) {
+            try {
+                job(i);
+            } catch (...) {
+                const std::lock_guard<std::mutex> lock(failureLock);
+                if (!failure) failure = std::current_exception();
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    for (size_t w = 1; w < workers; ++w) pool.emplace_back(loop);
+    loop();
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace lwb::core
