@@ -21,7 +21,6 @@ namespace {
 std::string fx(double v, int d) { return std::isfinite(v) ? core::formatFixed(v, d) : std::string(); }
 std::string outPath(const Args& a) { return a.has("-o") ? a.value("-o") : a.value("--output"); }
 bool quiet(const Args& a) { return a.has("-q") || a.has("--quiet"); }
-bool wantsHelp(const Args& a) { return a.has("--help") || a.has("-h"); }
 void warn(const std::string& cmd, const std::vector<std::string>& ws) {
     for (const auto& w : ws) std::cerr << "laserwb-cli " << cmd << ": warning: " << w << "\n";
 }
