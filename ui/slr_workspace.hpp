@@ -102,6 +102,7 @@ private:
     SlrController* m_controller;
     QCustomPlot *m_ocPlot, *m_imagePlot, *m_histPlot;
     QCPColorMap* m_imageMap;
+    QCPColorMap* m_imageBand;  ///< the track's band of O-C pixels unpooled, over m_imageMap (showRun)
     QComboBox* m_passCombo;
     SlrParamsPanel* m_params;
     QRadioButton *m_modeZoom, *m_modeIn, *m_modeOut;

@@ -11,6 +11,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QtTest>
+#include <set>
 
 #include "core/common/csv.hpp"
 #include "core/sim/slr_sim.hpp"
@@ -395,6 +396,51 @@ private slots:
         QCOMPARE(off->dataCount(), outside);
         QVERIFY(ws->imagePlot()->legend->hasItemWithPlottable(off));
         QCOMPARE(off->name(), QString("followed (%1)").arg(outside));
+    }
+
+    /// A gate thousands of O-C pixels tall is shown pooled (6 pixels a cell for a 1 µs gate at
+    /// 87 ps pixels). Seen in a real window on a 100 000-point pass: the pooled cell holding the
+    /// track drew it half a nanosecond tall and beside it. The track's band is drawn again
+    /// unpooled on top: every signal cell drawn there is a signal pixel, at its place.
+    void imageShowsTheTrackAtPixelResolution() {
+        MainWindow w;
+        SlrWorkspace* ws = w.slr();
+        double altitude = 0;
+        const lwb::core::sim::SlrSimPass pass = simulated(lwb::core::sim::SlrKind::Conventional, 20000, 0.1, 3, &altitude);
+        QVERIFY(pass.ok);
+        ws->controller()->setSimulatedPass(pass.epochS, pass.ocS, pass.tofS, pass.isSignal, "wide gate", altitude);
+        QVERIFY(ws->controller()->waitIdle(60000));
+        QCoreApplication::processEvents();
+        const lwb::core::slr::ScreenResult& s = ws->controller()->run().screen;
+        QVERIFY(s.ok);
+        QCPColorMap* band = nullptr;
+        for (int i = 0; i < ws->imagePlot()->plottableCount(); ++i)
+            if (auto* m = qobject_cast<QCPColorMap*>(ws->imagePlot()->plottable(i)); m && m->name() == "track band") band = m;
+        QVERIFY(band);
+        const double gatePixels = 1e-6 * s.magOc;
+        QVERIFY2(gatePixels > 2000, qPrintable(QString::number(gatePixels)));  // the whole image is pooled
+        QVERIFY(band->visible());
+        // The signal pixels (time row, O-C column), in the frame the image is drawn in.
+        const size_t n = pass.epochS.size();
+        std::set<std::pair<long long, long long>> signal;
+        for (size_t i = 0; i < n; ++i)
+            if (s.regionClass[s.pointRegion[i]] == lwb::core::slr::RegionClass::Signal) {
+                const double oc = pass.ocS[i] - (s.flattenS.size() == n ? s.flattenS[i] : 0.0);
+                signal.insert({std::llround(pass.epochS[i] * s.magT), std::llround(oc * s.magOc)});
+            }
+        QVERIFY(signal.size() > 100);
+        QCPColorMapData* d = band->data();
+        int cells = 0;
+        for (int x = 0; x < d->keySize(); ++x)
+            for (int y = 0; y < d->valueSize(); ++y) {
+                if (d->cell(x, y) != 3) continue;
+                double key = 0, value = 0;
+                d->cellToCoord(x, y, &key, &value);
+                const std::pair<long long, long long> px{std::llround(key * s.magT), std::llround(value * 1e-9 * s.magOc)};
+                QVERIFY2(signal.count(px), qPrintable(QString("cell at %1 s, %2 ns is no signal pixel").arg(key).arg(value)));
+                ++cells;
+            }
+        QCOMPARE(cells, static_cast<int>(signal.size()));  // each signal pixel drawn once, unpooled
     }
 
     void crdPassWithFlagsRoundTrip() {
