@@ -486,8 +486,8 @@ void runFixed(const std::vector<double>& t, const std::vector<double>& oc, const
 namespace {
 // The extraction score (screen_auto.hpp) of a result over the whole pass, on the O-C it was
 // screened on (`order`: the points in time order).
-double wholePassScore(const std::vector<uint32_t>& order, const std::vector<double>& t, const std::vector<double>& oc,
-                      const ScreenResult& r) {
+ExtractionScore wholePassScore(const std::vector<uint32_t>& order, const std::vector<double>& t, const std::vector<double>& oc,
+                               const ScreenResult& r) {
     std::vector<double> st(order.size()), so(order.size());
     std::vector<uint8_t> sel(order.size());
     for (size_t k = 0; k < order.size(); ++k) {
@@ -495,7 +495,7 @@ double wholePassScore(const std::vector<uint32_t>& order, const std::vector<doub
         so[k] = oc[order[k]];
         sel[k] = r.pointClass[order[k]] != PointClass::Noise;
     }
-    return scoreExtraction(st.data(), so.data(), sel.data(), st.size()).score;
+    return scoreExtraction(st.data(), so.data(), sel.data(), st.size());
 }
 
 // ScreenParams::refineRounds: screen again on the O-C less the trend of the accepted track.
@@ -504,9 +504,13 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
     const size_t n = t.size();
     std::vector<uint32_t> order(n);
     for (uint32_t i = 0; i < n; ++i) order[i] = i;
-    if (!std::is_sorted(t.begin(), t.end()))
-        std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
-    double score = wholePassScore(order, t, oc, res);
+    const bool inOrder = std::is_sorted(t.begin(), t.end());
+    if (!inOrder) std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
+    // The result's score on the O-C as given: kept with it unless a round replaces it (then the
+    // search scores the new result itself).
+    res.inputScore = wholePassScore(order, t, oc, res);
+    res.inputScoreKnown = inOrder;
+    double score = res.inputScore.score;
     // A result that shows no track (score ≤ 0: everything, nothing or scattered noise selected)
     // is not refined: a trend fitted to it flattens nothing. Inside a scale search these are the
     // trials at scales far from the track's, a fifth to a third of them and the dearest (their
@@ -567,7 +571,7 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
         again.previousMagOc = res.magOc;
         ScreenResult r2 = screenSignal(t, flat, again, fb);
         if (!r2.ok) return;
-        const double score2 = wholePassScore(order, t, flat, r2);
+        const double score2 = wholePassScore(order, t, flat, r2).score;
         if (!(score2 >= score)) return;
         r2.autoMs += res.autoMs;
         r2.mapMs += res.mapMs;

@@ -114,6 +114,15 @@ struct ScaleTrial {
     long long selected = 0;      ///< points the trial called signal (scoring windows only)
 };
 
+/// The extraction score of a selection (scoreExtraction, screen_auto.hpp), the automatic mode's
+/// measure of a trial.
+struct ExtractionScore {
+    double score = 0;          ///< tp − 2·fp (estimated)
+    double truePositives = 0;  ///< tp estimate
+    double bandSignal = 0;     ///< N_in − E: estimated signal points in the band
+    long long selected = 0;    ///< |S|
+};
+
 struct ScreenResult {
     bool ok = false;
     std::string error;
@@ -132,6 +141,11 @@ struct ScreenResult {
     long long floorlessAdded = 0;    ///< acceptFloorless: points within 5σ added as recovered
     std::vector<double> flattenS;    ///< when refinedRounds > 0: per point, the trend subtracted from the O-C
                                      ///< before the kept round (its image is of oc − flattenS); else empty
+    /// Internal (the scale search): this result's extraction score on the O-C as given, when the
+    /// refinement scored it and kept it (points in time order); the search's trial then uses it
+    /// instead of scoring the same selection again.
+    bool inputScoreKnown = false;
+    ExtractionScore inputScore;
     // Per point (same order as the input).
     std::vector<PointClass> pointClass;
     std::vector<uint32_t> pointRegion;   ///< region id of each point (index into regions)

@@ -434,9 +434,14 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
             const ScreenResult r = screenSignal(wt, wo, tp, nullptr);
             if (!r.ok) return out;
             area = std::max(area, r.areaLimit);
-            mask.resize(wt.size());
-            for (size_t i = 0; i < wt.size(); ++i) mask[i] = r.pointClass[i] != PointClass::Noise;
-            const ExtractionScore s = scoreExtraction(st.data() + b, so.data() + b, mask.data(), e - b);
+            // The refinement scored the result it kept on this window already (the same points,
+            // O-C and selection): that score, else the window's own.
+            ExtractionScore s = r.inputScore;
+            if (!r.inputScoreKnown) {
+                mask.resize(wt.size());
+                for (size_t i = 0; i < wt.size(); ++i) mask[i] = r.pointClass[i] != PointClass::Noise;
+                s = scoreExtraction(st.data() + b, so.data() + b, mask.data(), e - b);
+            }
             total.score += s.score;
             total.truePositives += s.truePositives;
             total.selected += s.selected;

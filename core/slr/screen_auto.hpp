@@ -61,13 +61,6 @@ void setScaleSearchThreads(int threads);
 AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
                             const Feedback* fb = nullptr);
 
-struct ExtractionScore {
-    double score = 0;          ///< tp − 2·fp (estimated)
-    double truePositives = 0;  ///< tp estimate
-    double bandSignal = 0;     ///< N_in − E: estimated signal points in the band
-    long long selected = 0;    ///< |S|
-};
-
 /// A robust piecewise-linear trend of points in time order: a line per time group of >= 8
 /// points (at most 24 groups), joined straight between groups, constant beyond the ends.
 struct PiecewiseTrend {
