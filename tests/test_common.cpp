@@ -1,9 +1,11 @@
 // Core utilities: JSON, CSV, strict numbers, atomic writes.
 #include <QtTest>
+#include <random>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/json.hpp"
+#include "core/common/select.hpp"
 #include "core/common/text.hpp"
 #include "test_support.hpp"
 
@@ -109,6 +111,38 @@ private slots:
         QVERIFY2(r.error.find("f.csv:line 2") != std::string::npos || r.error.find("f.csv:") == 0, r.error.c_str());
         r = parseCsv("", "e.csv");
         QVERIFY(!r.ok);
+    }
+
+    /// kthSmallest is exact: the value std::nth_element puts at k, on whole numbers in
+    /// [0, 65535] (its counting path: ties, one value, the ends of the range) and on anything
+    /// else (fractions, negatives, larger values: nth_element itself).
+    void kthSmallestIsExact() {
+        std::mt19937 rng(11);
+        auto check = [](std::vector<float> v, const char* what) {
+            for (size_t k : {size_t(0), v.size() / 4, v.size() / 2, v.size() - 1}) {
+                std::vector<float> a = v, b = v;
+                std::nth_element(b.begin(), b.begin() + static_cast<long>(k), b.end());
+                const float got = lwb::core::kthSmallest(a, k);
+                if (got != b[k]) QFAIL(qPrintable(QString("%1, k = %2: %3, not %4").arg(what).arg(k).arg(got).arg(b[k])));
+            }
+        };
+        for (int round = 0; round < 50; ++round) {
+            const size_t n = 1 + rng() % 2000;
+            std::vector<float> wide(n), narrow(n), frac(n), neg(n), big(n);
+            for (size_t i = 0; i < n; ++i) {
+                wide[i] = static_cast<float>(rng() % 65536);
+                narrow[i] = static_cast<float>(rng() % 7);  // many ties in one low byte
+                frac[i] = static_cast<float>(rng() % 1000) + (i == n / 2 ? 0.5f : 0.0f);
+                neg[i] = static_cast<float>(static_cast<int>(rng() % 200) - 100);
+                big[i] = static_cast<float>(rng() % 200000);
+            }
+            check(wide, "0..65535");
+            check(narrow, "0..6");
+            check(frac, "one fraction");
+            check(neg, "negatives");
+            check(big, "beyond 65535");
+            check(std::vector<float>(n, 65535.0f), "all 65535");
+        }
     }
 
     void atomicWriteLeavesNoHalfFile() {

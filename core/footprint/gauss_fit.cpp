@@ -1,4 +1,5 @@
 #include "core/footprint/gauss_fit.hpp"
+#include "core/common/select.hpp"
 
 #include "core/common/text.hpp"
 #include "core/footprint/gauss_kernel.hpp"
@@ -445,8 +446,7 @@ DifferenceVariances groundDifferenceVariances(const cv::Mat& roi, const GaussMod
                     d.push_back(std::fabs(img[i + step] - img[i]));
             }
         if (d.size() < 16) return 0.0;
-        std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
-        const double s = 1.4826 * d[d.size() / 2];
+        const double s = 1.4826 * kthSmallest(d, d.size() / 2);
         return s * s;
     };
     dv.x = robustVar(1);

@@ -1,4 +1,5 @@
 #include "core/footprint/segment.hpp"
+#include "core/common/select.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -128,14 +129,10 @@ RingLook ringPeakSnr(const float* img, int w, int h, int px, int py, double peak
     RingLook out;
     if (ring.size() < 24 || diff.size() < 24) return out;
     const size_t mid = ring.size() / 2;
-    std::nth_element(ring.begin(), ring.begin() + mid, ring.end());
-    const double median = ring[mid];
+    const double median = kthSmallest(ring, mid);
     for (float& v : ring) v = static_cast<float>(std::fabs(v - median));
-    std::nth_element(ring.begin(), ring.begin() + mid, ring.end());
-    out.ring = (peak - median) / std::max(1.4826 * ring[mid], 0.5);
-    const size_t dm = diff.size() / 2;
-    std::nth_element(diff.begin(), diff.begin() + dm, diff.end());
-    out.texture = (peak - median) / std::max(1.4826 * diff[dm] / std::sqrt(2.0), 0.5);
+    out.ring = (peak - median) / std::max(1.4826 * kthSmallest(ring, mid), 0.5);
+    out.texture = (peak - median) / std::max(1.4826 * kthSmallest(diff, diff.size() / 2) / std::sqrt(2.0), 0.5);
     return out;
 }
 
