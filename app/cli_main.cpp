@@ -131,6 +131,8 @@ int dispatch(int argc, char** argv) {
     if (cmd == "radiometry" && sub == "apply") return cmdRadiometryApply(argc, argv);
     if (cmd == "radiometry" && sub == "check") return cmdRadiometryCheck(argc, argv);
     if (cmd == "demo") return demo(argc, argv);
+    if (cmd == "slr" || ((cmd == "simulate" || cmd == "bench") && sub == "slr"))
+        return fail(cmd, "the SLR commands are run by laserwb-cli itself, not by laserwb-cli-imaging", kUsage);
 #endif
     if (cmd == "calib" || cmd == "radiometry") {
         const char* subs = cmd == "calib" ? "detector, waveform, pointing, stats" : "mosaic, gcp, fit, apply, check";
