@@ -1022,11 +1022,15 @@ void SlrWorkspace::showRun(const SlrRun& run) {
         m_imageMap->data()->setRange(QCPRange(r0 / s.magT, (r0 + (cols - 1) * fr) / s.magT),
                                      QCPRange(c0 / s.magOc * 1e9, (c0 + (rows - 1) * fc) / s.magOc * 1e9));
         m_imageMap->data()->fill(0);
-        for (size_t i = 0; i < n; ++i) {
-            const int x = int((std::llround(p.t[i] * s.magT) - r0) / fr), y = int((std::llround(imgOc[i] * s.magOc) - c0) / fc);
+        // A cell shows the strongest class of the points on it: 1 noise, 2 recovered, 3 signal.
+        auto markCell = [&s](QCPColorMap* map, int x, int y, size_t i) {
             const RegionClass rc = s.regionClass[s.pointRegion[i]];
             const double v = rc == RegionClass::Signal ? 3 : rc == RegionClass::Recovered ? 2 : 1;
-            if (m_imageMap->data()->cell(x, y) < v) m_imageMap->data()->setCell(x, y, v);
+            if (map->data()->cell(x, y) < v) map->data()->setCell(x, y, v);
+        };
+        for (size_t i = 0; i < n; ++i) {
+            const int x = int((std::llround(p.t[i] * s.magT) - r0) / fr), y = int((std::llround(imgOc[i] * s.magOc) - c0) / fc);
+            markCell(m_imageMap, x, y, i);
         }
         m_imageMap->setDataRange(QCPRange(0, 3));
         // Pooled O-C cells (a 1 µs gate at 87 ps pixels: 6 pixels a cell) drew the track's cell
@@ -1053,10 +1057,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
             for (size_t i = 0; i < n; ++i) {
                 const long long c = std::llround(imgOc[i] * s.magOc);
                 if (c < b0 || c > b1) continue;
-                const int x = int((std::llround(p.t[i] * s.magT) - r0) / fr), y = int((c - b0) / fb);
-                const RegionClass rc = s.regionClass[s.pointRegion[i]];
-                const double v = rc == RegionClass::Signal ? 3 : rc == RegionClass::Recovered ? 2 : 1;
-                if (m_imageBand->data()->cell(x, y) < v) m_imageBand->data()->setCell(x, y, v);
+                markCell(m_imageBand, int((std::llround(p.t[i] * s.magT) - r0) / fr), int((c - b0) / fb), i);
             }
             m_imageBand->setVisible(true);
         }

@@ -95,18 +95,20 @@ struct Columns {
     const std::vector<std::string>* extraNames = nullptr;
 };
 
-// Calls line(view) for each line of text (without its '\n' and a final '\r').
+// Calls line(view) for each line of text (without its '\n' and a final '\r') until it returns
+// false; returns the offset just after the last line it was given.
 template <class Line>
-void forEachLine(std::string_view text, Line&& line) {
+size_t forEachLine(std::string_view text, Line&& line) {
     size_t pos = 0;
     while (pos < text.size()) {
         const void* nl = std::memchr(text.data() + pos, '\n', text.size() - pos);
         const size_t end = nl ? static_cast<size_t>(static_cast<const char*>(nl) - text.data()) : text.size();
         std::string_view l = text.substr(pos, end - pos);
-        pos = end + 1;
+        pos = std::min(end + 1, text.size());
         if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
-        if (!line(l)) return;
+        if (!line(l)) break;
     }
+    return pos;
 }
 
 bool isDataLine(std::string_view line) {
@@ -170,6 +172,39 @@ void parseRows(const Columns& cols, size_t first, long lineNo, OcTable& t, RowCh
     });
 }
 
+// The header line: the columns of epoch_s, oc_s and the extra ones (their names into *names).
+// Empty, or what is wrong with it (without "FILE:LINE: ").
+std::string readHeader(std::string_view line, const OcCsvParams& params, Columns* cols, std::vector<std::string>* names) {
+    if (std::memchr(line.data(), '\0', line.size())) return "binary data (NUL byte): not a CSV text file";
+    std::vector<std::string_view> fields;
+    if (!splitLine(line, &fields)) return "unterminated quoted field";
+    int cEpoch = -1, cOc = -1;
+    for (size_t i = 0; i < fields.size(); ++i) {
+        const std::string name = lower(fields[i]);
+        if (name == "epoch_s") {
+            if (cEpoch >= 0) return "column epoch_s appears twice";
+            cEpoch = static_cast<int>(i);
+        } else if (name == "oc_s") {
+            if (cOc >= 0) return "column oc_s appears twice";
+            cOc = static_cast<int>(i);
+        }
+    }
+    if (cEpoch < 0 || cOc < 0) return "header must name the columns epoch_s and oc_s (found \"" + excerpt(line, 60) + "\")";
+    for (const auto& want : params.extraColumns) {
+        int found = -1;
+        for (size_t i = 0; i < fields.size(); ++i)
+            if (lower(fields[i]) == toLower(want)) found = static_cast<int>(i);
+        if (found < 0) return "header has no column \"" + want + "\"";
+        cols->extra.push_back(static_cast<size_t>(found));
+        names->push_back(want);
+    }
+    cols->count = fields.size();
+    cols->epoch = static_cast<size_t>(cEpoch);
+    cols->oc = static_cast<size_t>(cOc);
+    cols->extraNames = names;
+    return {};
+}
+
 }  // namespace
 
 std::string validate(const OcCsvParams& p) {
@@ -193,66 +228,20 @@ OcCsvReadResult parseOcCsv(std::string_view text, const std::string& source, con
         if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&
             static_cast<unsigned char>(text[2]) == 0xBF)
             text.remove_prefix(3);
-        std::vector<std::string_view> fields;
-        size_t pos = 0;
         long lineNo = 0;
         OcTable& t = res.table;
         Columns cols;
-        // The header: the first line that is neither blank nor a comment.
-        while (pos < text.size()) {
-            const void* nl = std::memchr(text.data() + pos, '\n', text.size() - pos);
-            const size_t end = nl ? static_cast<size_t>(static_cast<const char*>(nl) - text.data()) : text.size();
-            std::string_view line = text.substr(pos, end - pos);
-            pos = end + 1;
+        // The header: the first line that is neither blank nor a comment; the body follows it.
+        std::string headerError;
+        const size_t pos = forEachLine(text, [&](std::string_view line) {
             ++lineNo;
-            if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-            const std::string_view tl = trimBlanks(line);
-            if (tl.empty() || tl[0] == '#') continue;
-            if (std::memchr(line.data(), '\0', line.size())) {
-                res.error = at(lineNo) + "binary data (NUL byte): not a CSV text file";
-                return res;
-            }
-            if (!splitLine(line, &fields)) {
-                res.error = at(lineNo) + "unterminated quoted field";
-                return res;
-            }
-            int cEpoch = -1, cOc = -1;
-            for (size_t i = 0; i < fields.size(); ++i) {
-                const std::string name = lower(fields[i]);
-                if (name == "epoch_s") {
-                    if (cEpoch >= 0) {
-                        res.error = at(lineNo) + "column epoch_s appears twice";
-                        return res;
-                    }
-                    cEpoch = static_cast<int>(i);
-                } else if (name == "oc_s") {
-                    if (cOc >= 0) {
-                        res.error = at(lineNo) + "column oc_s appears twice";
-                        return res;
-                    }
-                    cOc = static_cast<int>(i);
-                }
-            }
-            if (cEpoch < 0 || cOc < 0) {
-                res.error = at(lineNo) + "header must name the columns epoch_s and oc_s (found \"" + excerpt(line, 60) + "\")";
-                return res;
-            }
-            for (const auto& want : params.extraColumns) {
-                int found = -1;
-                for (size_t i = 0; i < fields.size(); ++i)
-                    if (lower(fields[i]) == toLower(want)) found = static_cast<int>(i);
-                if (found < 0) {
-                    res.error = at(lineNo) + "header has no column \"" + want + "\"";
-                    return res;
-                }
-                cols.extra.push_back(static_cast<size_t>(found));
-                t.extraNames.push_back(want);
-            }
-            cols.count = fields.size();
-            cols.epoch = static_cast<size_t>(cEpoch);
-            cols.oc = static_cast<size_t>(cOc);
-            cols.extraNames = &t.extraNames;
-            break;
+            if (!isDataLine(line)) return true;
+            headerError = readHeader(line, params, &cols, &t.extraNames);
+            return false;
+        });
+        if (!headerError.empty()) {
+            res.error = at(lineNo) + headerError;
+            return res;
         }
         if (cols.count == 0) {
             res.error = src + ": empty file (no header line)";
