@@ -2,8 +2,10 @@
 // shape conventions, the CRLB, and each method on simulated shots.
 #include <QtTest>
 #include <cmath>
+#include <random>
 
 #include "core/footprint/crlb.hpp"
+#include "core/footprint/gauss_kernel.hpp"
 #include "core/footprint/pipeline.hpp"
 #include "core/sim/footprint_eval.hpp"
 #include "core/sim/footprint_sim.hpp"
@@ -184,6 +186,172 @@ private slots:
         const double frac = double(inside) / n;
         qInfo("uncertainty coverage P(|err| < u) = %.3f (Rayleigh: 0.632)", frac);
         QVERIFY2(frac > 0.50 && frac < 0.76, qPrintable(QString("coverage %1").arg(frac)));
+    }
+
+    /// The log fit's weighted moments (kernel::logMoments, vectorised, -ffast-math) equal the sums
+    /// taken one by one in long double, to 1e-12 of the sum of magnitudes.
+    void logMomentsMatchDirectSums() {
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> pos(-9, 9), wt(0, 2), ln(-8, 0);
+        for (int n : {7, 8, 33, 250}) {
+            std::vector<double> pix(static_cast<size_t>(4 * n)), w(static_cast<size_t>(n));
+            for (int i = 0; i < n; ++i) {
+                pix[size_t(4 * i)] = pos(rng);
+                pix[size_t(4 * i + 1)] = pos(rng);
+                pix[size_t(4 * i + 2)] = 1;
+                pix[size_t(4 * i + 3)] = ln(rng);
+                w[size_t(i)] = wt(rng);
+            }
+            double m[15], r[6];
+            kernel::logMoments(pix.data(), w.data(), n, m, r);
+            const int powers[15][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}, {3, 0}, {2, 1},
+                                       {1, 2}, {0, 3}, {4, 0}, {3, 1}, {2, 2}, {1, 3}, {0, 4}};
+            const int cols[6][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
+            auto check = [&](double got, auto term, const char* what, int k) {
+                long double sum = 0, mag = 0;
+                for (int i = 0; i < n; ++i) {
+                    const long double t = term(i);
+                    sum += t;
+                    mag += std::fabs(t);
+                }
+                if (std::fabs(got - double(sum)) > 1e-12 * double(mag) + 1e-300)
+                    QFAIL(qPrintable(QString("n %1, %2 %3: %4, not %5").arg(n).arg(what).arg(k).arg(got).arg(double(sum))));
+            };
+            for (int k = 0; k < 15; ++k)
+                check(m[k], [&](int i) {
+                    const long double u = pix[size_t(4 * i)], v = pix[size_t(4 * i + 1)], w2 = (long double)w[size_t(i)] * w[size_t(i)];
+                    return w2 * std::pow(u, powers[k][0]) * std::pow(v, powers[k][1]);
+                }, "moment", k);
+            for (int k = 0; k < 6; ++k)
+                check(r[k], [&](int i) {
+                    const long double u = pix[size_t(4 * i)], v = pix[size_t(4 * i + 1)], w2 = (long double)w[size_t(i)] * w[size_t(i)];
+                    return w2 * pix[size_t(4 * i + 3)] * std::pow(u, cols[k][0]) * std::pow(v, cols[k][1]);
+                }, "rhs", k);
+        }
+    }
+
+    /// The difference fit's Gram kernel (register-blocked, vectorised) equals the sums taken one
+    /// by one, for horizontal and vertical differences and for windows longer than its block.
+    void differenceGramMatchesDirectSums() {
+        std::mt19937 rng(6);
+        std::uniform_real_distribution<double> val(-50, 50), wt(0, 1);
+        constexpr int K = kernel::kGramColumns;
+        for (int n : {9, 400, 2500}) {
+            for (int step : {1, 7}) {
+                std::vector<double> P(static_cast<size_t>(K * n)), w(static_cast<size_t>(n)), r(static_cast<size_t>(n));
+                for (double& x : P) x = val(rng);
+                for (int i = 0; i < n; ++i) {
+                    w[size_t(i)] = wt(rng);
+                    r[size_t(i)] = val(rng);
+                }
+                double gram[K * K], rhs[K], wd[K], sw = 0, swr = 0;
+                kernel::differenceGram(P.data(), n, step, w.data(), r.data(), gram, rhs, wd, &sw, &swr);
+                const int m = n - step;
+                auto d = [&](int u, int i) { return (long double)P[size_t(u * n + i + step)] - P[size_t(u * n + i)]; };
+                auto near = [](double got, long double want, long double mag) {
+                    return std::fabs((long double)got - want) <= 1e-12L * mag + 1e-300L;
+                };
+                long double s0 = 0, s1 = 0, mag0 = 0, mag1 = 0;
+                for (int i = 0; i < m; ++i) {
+                    s0 += w[size_t(i)];
+                    s1 += w[size_t(i)] * (long double)r[size_t(i)];
+                    mag0 += w[size_t(i)];
+                    mag1 += std::fabs(w[size_t(i)] * (long double)r[size_t(i)]);
+                }
+                QVERIFY(near(sw, s0, mag0));
+                QVERIFY(near(swr, s1, mag1));
+                for (int u = 0; u < K; ++u) {
+                    long double g1 = 0, m1 = 0, g2 = 0, m2 = 0;
+                    for (int i = 0; i < m; ++i) {
+                        g1 += w[size_t(i)] * d(u, i) * r[size_t(i)];
+                        m1 += std::fabs(w[size_t(i)] * d(u, i) * r[size_t(i)]);
+                        g2 += w[size_t(i)] * d(u, i);
+                        m2 += std::fabs(w[size_t(i)] * d(u, i));
+                    }
+                    QVERIFY2(near(rhs[u], g1, m1), qPrintable(QString("rhs %1, n %2, step %3").arg(u).arg(n).arg(step)));
+                    QVERIFY2(near(wd[u], g2, m2), qPrintable(QString("wd %1, n %2, step %3").arg(u).arg(n).arg(step)));
+                    for (int v = 0; v <= u; ++v) {
+                        long double g = 0, mg = 0;
+                        for (int i = 0; i < m; ++i) {
+                            g += w[size_t(i)] * d(u, i) * d(v, i);
+                            mg += std::fabs(w[size_t(i)] * d(u, i) * d(v, i));
+                        }
+                        QVERIFY2(near(gram[u * K + v], g, mg),
+                                 qPrintable(QString("gram %1,%2, n %3, step %4").arg(u).arg(v).arg(n).arg(step)));
+                    }
+                }
+            }
+        }
+    }
+
+    /// LM stops once a step would move the centre less than lm_tolerance_fraction (0.1) of the
+    /// centre's uncertainty u, and takes that last step unevaluated. Against a fit run to
+    /// convergence (1e-6 px, up to 200 iterations) on textured ground, the centre differs by
+    /// 0.03–0.05 u on average and 0.2 u at most (the robust loss converges linearly, so the
+    /// distance left is of the order of the last step): bounds 0.06 u and 0.3 u. The error
+    /// against the truth stays within 1 % (it is u-sized: 0.05 u adds 0.1 % in quadrature), with
+    /// less than half the iterations.
+    void lmStopsAtAFractionOfTheUncertainty() {
+        const sim::Scene scenes[] = {sim::Scene::Weak, sim::Scene::Moderate, sim::Scene::Strong, sim::Scene::Night};
+        FootprintParams converged;
+        converged.gauss.lmToleranceFraction = 0;
+        converged.gauss.lmTolerancePx = 1e-6;
+        converged.gauss.lmMaxIterations = 200;
+        const FootprintParams byDefault;
+        QCOMPARE(byDefault.gauss.lmToleranceFraction, 0.1);
+        double worst = 0, sum = 0, errConverged = 0, errDefault = 0;
+        int n = 0, itConverged = 0, itDefault = 0;
+        for (int i = 0; i < 200; ++i) {
+            sim::FootprintSimParams sp;
+            sp.scene = scenes[i % 4];
+            const auto shot = sim::simulateFootprint(sp, sim::Rng::mix(91, i));
+            cv::Mat f;
+            shot.image.convertTo(f, CV_32F);
+            const FootprintResult a = processRoi(f, converged), b = processRoi(f, byDefault);
+            if (!a.fit.ok || !b.fit.ok || a.gaussStage != "lm" || b.gaussStage != "lm") continue;
+            const double rel = std::hypot(a.fit.x - b.fit.x, a.fit.y - b.fit.y) / a.fit.uncertaintyPx;
+            worst = std::max(worst, rel);
+            sum += rel;
+            ++n;
+            itConverged += a.fit.iterations;
+            itDefault += b.fit.iterations;
+            errConverged += std::hypot(a.fit.x - shot.truth.x, a.fit.y - shot.truth.y);
+            errDefault += std::hypot(b.fit.x - shot.truth.x, b.fit.y - shot.truth.y);
+        }
+        qInfo("%d shots: the default stop is %.3f u from convergence at most, %.4f u on average; mean error %.4f "
+              "-> %.4f px; iterations %d -> %d",
+              n, worst, sum / n, errConverged / n, errDefault / n, itConverged, itDefault);
+        QVERIFY(n >= 190);
+        QVERIFY2(worst <= 0.3, qPrintable(QString::number(worst)));
+        QVERIFY2(sum / n <= 0.06, qPrintable(QString::number(sum / n)));
+        QVERIFY2(std::fabs(errDefault / errConverged - 1) <= 0.01, qPrintable(QString::number(errDefault / errConverged)));
+        QVERIFY(2 * itDefault < itConverged);
+    }
+
+    /// The opening that cuts roads off the domain runs on 64-bit rows for ROIs up to 64 px wide
+    /// and pixel by pixel beyond: a road-crossed spot gives the same domain either way (the same
+    /// ROI padded with flat background to 80 px).
+    void openingIsTheSameOnWideRois() {
+        cv::Mat roi = exactSpot(32, 15.3, 16.6, 3000, 3.0, 2.5, 20, 1000);
+        for (int y = 0; y < 32; ++y)  // a 2 px bright road through the spot, and one beside it
+            for (int x : {14, 15, 24, 25}) roi.at<float>(y, x) += 900;
+        cv::Mat wide(40, 80, CV_32F, cv::Scalar(1000));
+        roi.copyTo(wide(cv::Rect(30, 4, 32, 32)));
+        SegmentParams sp;
+        QVERIFY(sp.openingRadius > 0);
+        const SpotDomain a = segmentSpot(roi, 1000, 20, 65535, sp), b = segmentSpot(wide, 1000, 20, 65535, sp);
+        QVERIFY(a.found && b.found);
+        std::vector<int> pa, pb;
+        for (int p : a.pixels) pa.push_back((p / 32 + 4) * 80 + p % 32 + 30);
+        pb = b.pixels;
+        std::sort(pa.begin(), pa.end());
+        std::sort(pb.begin(), pb.end());
+        QCOMPARE(pa.size(), pb.size());
+        QVERIFY(pa == pb);
+        // The road was cut: the domain is narrower than the road's full length through the ROI.
+        int rows = 0;
+        for (int y = 0; y < 32; ++y) rows += a.mask[size_t(y) * 32 + 24] != 0;
+        QCOMPARE(rows, 0);
     }
 
     void invalidParamsAreRefused() {

@@ -16,23 +16,37 @@ namespace lwb::core {
 
 inline float kthSmallest(std::vector<float>& v, size_t k) {
     const size_t n = v.size();
-    bool small = n > 0 && k < n;
-    for (float x : v) small &= x >= 0.0f && x <= 65535.0f && x == static_cast<float>(static_cast<int>(x));
+    // Whole numbers in [0, 65535]: (x + 2²³) − 2²³ rounds x to a whole number (the float spacing
+    // there is 1), so it equals x exactly when x is one. Comparisons only: vectorises; NaN fails. (Not
+    // for -ffast-math translation units, which may fold the sum away.)
+    int small = n > 0 && k < n;
+    for (size_t i = 0; i < n; ++i) {
+        const float x = v[i];
+        small &= (x >= 0.0f) & (x <= 65535.0f) & ((x + 8388608.0f) - 8388608.0f == x);
+    }
     if (!small) {
         std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
         return v[k];
     }
-    std::array<uint32_t, 256> hi{}, lo{};
-    for (float x : v) ++hi[static_cast<uint32_t>(x) >> 8];
+    // Four interleaved histograms per level: neighbouring values mostly share a bin, and one
+    // histogram would make each count wait for the previous one's store.
+    constexpr int kWays = 4;
+    std::array<std::array<uint32_t, 256>, kWays> hi{}, lo{};
+    for (size_t i = 0; i < n; ++i) ++hi[i % kWays][static_cast<uint32_t>(static_cast<int>(v[i])) >> 8];
+    auto count = [&](const std::array<std::array<uint32_t, 256>, kWays>& c, uint32_t b) {
+        uint32_t sum = 0;
+        for (int w = 0; w < kWays; ++w) sum += c[w][b];
+        return sum;
+    };
     uint32_t h = 0;
     size_t below = 0;
-    while (below + hi[h] <= k) below += hi[h++];
-    for (float x : v) {
-        const uint32_t u = static_cast<uint32_t>(x);
-        lo[u & 255] += (u >> 8) == h;
+    while (below + count(hi, h) <= k) below += count(hi, h++);
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t u = static_cast<uint32_t>(static_cast<int>(v[i]));
+        lo[i % kWays][u & 255] += (u >> 8) == h;
     }
     uint32_t l = 0;
-    while (below + lo[l] <= k) below += lo[l++];
+    while (below + count(lo, l) <= k) below += count(lo, l++);
     return static_cast<float>((h << 8) | l);
 }
 

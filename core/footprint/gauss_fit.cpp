@@ -32,26 +32,28 @@ bool positiveDefinite(double a, double b, double c) { return a > 0 && c > 0 && a
 // (qr = true). The Guo passes solve the same system through its 6×6 normal equations
 // (qr = false), which is several times cheaper and well conditioned in peak-centred
 // coordinates. Returns false when the quadratic form is not a peak.
-// The upper triangle of the weighted normal equations of the log fit (K columns: 1, u, v, u²,
-// then uv and v² or v² alone), with the column count fixed at compile time so the 21 (15)
-// multiply–adds per pixel are unrolled into registers.
-template <int K>
+// The weighted normal equations of the log fit (K columns: 1, u, v, u², then uv and v² or v²
+// alone): every entry Σ w²·col_a·col_b is one of 15 weighted moments of degree ≤ 4 (Σ w²u² is
+// both (1, u²) and (u, u)), taken in one vectorised pass (kernel::logMoments).
 void normalEquations(const std::vector<DomainPixel>& px, const std::vector<double>& w, bool xy,
                      Eigen::Matrix<double, 6, 6>& N, Eigen::Matrix<double, 6, 1>& r) {
-    double n[K][K] = {}, rr[K] = {};
-    for (size_t i = 0; i < px.size(); ++i) {
-        const double u = px[i].u, v = px[i].v, w2 = w[i] * w[i];
-        const double row[6] = {1, u, v, u * u, xy ? u * v : v * v, v * v};
-        double wr[K];
-        for (int a = 0; a < K; ++a) wr[a] = w2 * row[a];
-        for (int a = 0; a < K; ++a) {
-            rr[a] += wr[a] * px[i].lnfn;
-            for (int b = a; b < K; ++b) n[a][b] += wr[a] * row[b];
-        }
-    }
-    for (int a = 0; a < K; ++a) {
-        r(a) = rr[a];
-        for (int b = a; b < K; ++b) N(a, b) = n[a][b];
+    static_assert(sizeof(DomainPixel) == 4 * sizeof(double), "logMoments reads (u, v, f, ln fn) quadruples");
+    double m[15], rr[6];
+    kernel::logMoments(&px[0].u, w.data(), static_cast<int>(px.size()), m, rr);
+    // Moment index of u^i v^j (i + j ≤ 4), in logMoments' order.
+    auto M = [&](int i, int j) {
+        static const int first[5] = {0, 1, 3, 6, 10};  // first index of each degree
+        return m[first[i + j] + j];
+    };
+    // The columns as exponents (i, j) of u^i v^j.
+    const int cols6[6][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
+    const int cols5[5][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {0, 2}};
+    const int k = xy ? 6 : 5;
+    const int(*cols)[2] = xy ? cols6 : cols5;
+    const int rhsIndex6[6] = {0, 1, 2, 3, 4, 5}, rhsIndex5[5] = {0, 1, 2, 3, 5};
+    for (int a = 0; a < k; ++a) {
+        r(a) = rr[xy ? rhsIndex6[a] : rhsIndex5[a]];
+        for (int b = a; b < k; ++b) N(a, b) = M(cols[a][0] + cols[b][0], cols[a][1] + cols[b][1]);
     }
 }
 
@@ -81,8 +83,7 @@ bool logFit(const std::vector<DomainPixel>& px, const std::vector<double>& w, bo
     } else {
         Eigen::Matrix<double, 6, 6> N = Eigen::Matrix<double, 6, 6>::Zero();
         Eigen::Matrix<double, 6, 1> r = Eigen::Matrix<double, 6, 1>::Zero();
-        if (xy) normalEquations<6>(px, w, true, N, r);
-        else normalEquations<5>(px, w, false, N, r);
+        normalEquations(px, w, xy, N, r);
         C = N.topLeftCorner(k, k).selfadjointView<Eigen::Upper>().ldlt().solve(r.head(k));
     }
     if (!C.allFinite()) return false;
@@ -341,14 +342,10 @@ Cost accumulateDifferences(const FitWindow& fw, const Vec9& p, double cauchyC2, 
         if (!jtj) continue;
         // JᵀWJ and JᵀWr of the differences: the six spot columns in a vectorised kernel; the
         // plane's slope columns differ by exactly 1 (along their own axis) or 0 between neighbours.
-        constexpr int kSpot = 6;
-        double gram[kSpot * kSpot], rhs[kSpot], wd[kSpot];
-        kernel::differenceGram(P, n, kSpot, step, W, DR, gram, rhs, wd);
-        double sw = 0, swr = 0;
-        for (int i = 0; i < m; ++i) {
-            sw += W[i];
-            swr += W[i] * DR[i];
-        }
+        constexpr int kSpot = kernel::kGramColumns;
+        static_assert(kSpot == kCols, "the Gram kernel takes the six spot columns");
+        double gram[kSpot * kSpot], rhs[kSpot], wd[kSpot], sw = 0, swr = 0;
+        kernel::differenceGram(P, n, step, W, DR, gram, rhs, wd, &sw, &swr);
         const int slope = pass == 0 ? 7 : 8;  // bgX differs horizontally, bgY vertically
         for (int u = 0; u < kSpot; ++u) {
             (*jtr)(u) += rhs[u];
@@ -384,10 +381,12 @@ int levenbergMarquardt(const FitWindow& win, Vec9& p, double cauchyC2, int maxIt
             aug.diagonal() *= (1.0 + lambda);
             const Vec9 delta = aug.ldlt().solve(jtr);
             // At the minimum within precision: the (hardly damped) step from here would move the
-            // centre less than the tolerance. Its cost is not evaluated: one evaluation of the
-            // window less, the centre within the tolerance of where that step would take it.
+            // centre less than the tolerance. It is taken without evaluating its cost: one
+            // evaluation of the window less (jtj, jtr and cost stay those of the previous point).
             if (first && lambda <= 1e-2 && delta.allFinite() &&
                 std::max(std::fabs(delta(1)), std::fabs(delta(2))) < tolerance) {
+                const Vec9 last = p + delta;
+                if (last(0) > 0 && positiveDefinite(last(3), last(4), last(5))) p = last;
                 converged = true;
                 break;
             }
@@ -429,22 +428,31 @@ DifferenceVariances groundDifferenceVariances(const cv::Mat& roi, const GaussMod
     DifferenceVariances dv;
     const int w = roi.cols, h = roi.rows;
     const float* img = roi.ptr<float>();
-    thread_local std::vector<unsigned char> away;
+    // The start model's quadratic form at each pixel (a plain loop that vectorises); a pixel is
+    // away from the spot where it exceeds 9.
+    thread_local std::vector<double> quad;
     thread_local std::vector<float> d;
-    away.resize(size_t(w) * h);
-    for (int y = 0; y < h; ++y)
+    quad.resize(size_t(w) * h);
+    for (int y = 0; y < h; ++y) {
+        double* q = quad.data() + size_t(y) * w;
+        const double dy = y - m.y0;
         for (int x = 0; x < w; ++x) {
-            const double dx = x - m.x0, dy = y - m.y0;
-            away[size_t(y) * w + x] = m.a * dx * dx + 2 * m.b * dx * dy + m.c * dy * dy > 9.0;
+            const double dx = x - m.x0;
+            q[x] = m.a * dx * dx + 2 * m.b * dx * dy + m.c * dy * dy;
         }
+    }
     auto robustVar = [&](int step) {
-        d.clear();
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
+        // Every difference is written, the count advanced only for those away from the spot.
+        d.resize(size_t(w) * h);
+        size_t k = 0;
+        const int xEnd = step == 1 ? w - 1 : w, yEnd = step == 1 ? h : h - 1;
+        for (int y = 0; y < yEnd; ++y)
+            for (int x = 0; x < xEnd; ++x) {
                 const size_t i = size_t(y) * w + x;
-                if ((step == 1 ? x + 1 < w : y + 1 < h) && away[i] && away[i + step])
-                    d.push_back(std::fabs(img[i + step] - img[i]));
+                d[k] = std::fabs(img[i + step] - img[i]);
+                k += (quad[i] > 9.0) & (quad[i + step] > 9.0);
             }
+        d.resize(k);
         if (d.size() < 16) return 0.0;
         const double s = 1.4826 * kthSmallest(d, d.size() / 2);
         return s * s;
@@ -622,10 +630,13 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
         for (int pass = 0; pass < 2; ++pass) {
             const int step = pass == 0 ? 1 : fw.cols;
             const double groundVar = pass == 0 ? fw.diffVarX : fw.diffVarY;
-            fw.w0[pass].assign(size_t(std::max(0, n - step)), 0.0);
-            for (int i = 0; i + step < n; ++i)
-                if (step != 1 || (i + 1) % fw.cols != 0)
-                    fw.w0[pass][size_t(i)] = 1.0 / (groundVar + win[size_t(i)].weight + win[size_t(i + step)].weight);
+            std::vector<double>& w0 = fw.w0[pass];
+            w0.assign(size_t(std::max(0, n - step)), 0.0);
+            // Along a row (a horizontal difference stops at the row's end), row by row.
+            const int rowEnd = step == 1 ? fw.cols - 1 : fw.cols;
+            for (int row = 0; row * fw.cols + step < n; ++row)
+                for (int i = row * fw.cols; i < row * fw.cols + rowEnd && i + step < n; ++i)
+                    w0[size_t(i)] = 1.0 / (groundVar + win[size_t(i)].weight + win[size_t(i + step)].weight);
         }
     }
     Vec9 p;
@@ -635,8 +646,28 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     // Textured ground: Cauchy loss (robustScale in residual σ); photon-limited: least squares.
     const double cauchyC2 = textured && params.robustLoss ? params.robustScale * params.robustScale : 0.0;
     Cost cost = accumulate(fw, p, cauchyC2, &jtj, &jtr);
+    // Covariance of the parameters at p, scaled by the reduced χ².
+    const int nres = diff ? fw.rows * (fw.cols - 1) + (fw.rows - 1) * fw.cols : static_cast<int>(win.size());
+    const int dof = nres - (diff ? kP - 1 : kP);
+    auto covariance = [&] { return Mat9(jtj.ldlt().solve(Mat9::Identity()) * (dof > 0 ? cost.chi2 / dof : 1.0)); };
+    // The covariance treats the residuals as independent; ground texture is not, and moves the
+    // centre by about (texture difference σ)·σ_spot/A. That term, calibrated on the photo
+    // simulator (tuning seed 11; the tests check the coverage on seed 1), is added in quadrature:
+    // texture beyond (1 + deadband) of the photon + read part of a difference counts.
+    const double texDiffVar = std::max(0.0, 0.5 * (dv.x + dv.y) - 2 * photonVar * (1 + params.uncertaintyDeadband));
+    const double texScale = diff ? params.uncertaintyTextureScale : params.uncertaintyTextureScalePixelFit;
+    auto uncertainty = [&](const Mat9& cov, double amplitude) {
+        const double texShift = std::sqrt(texDiffVar) * sigmaMajor / std::max(amplitude, 1e-9);
+        return sqrtVariance(cov(1, 1) + cov(2, 2) + (dv.ok ? texScale * texScale * texShift * texShift : 0.0));
+    };
     if (params.lmRefine) {
-        iterations += levenbergMarquardt(fw, p, cauchyC2, params.lmMaxIterations, params.lmTolerancePx, jtj, jtr, cost);
+        // A step smaller than a fraction of the centre's uncertainty changes nothing that matters.
+        double tolerance = params.lmTolerancePx;
+        if (params.lmToleranceFraction > 0) {
+            const double u0 = uncertainty(covariance(), m.amplitude);
+            if (std::isfinite(u0)) tolerance = std::max(tolerance, params.lmToleranceFraction * u0);
+        }
+        iterations += levenbergMarquardt(fw, p, cauchyC2, params.lmMaxIterations, tolerance, jtj, jtr, cost);
         const double moved = std::hypot(p(1) + cx - m.x0, p(2) + cy - m.y0);
         const double pcx = p(1) + cx, pcy = p(2) + cy;
         // LM refines; it must not run off. A large move, or a shape far from the log fit's (a
@@ -668,10 +699,6 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
             m.bgY = p(8);
         }
     }
-    // Covariance of the parameters at the result, scaled by the reduced χ².
-    const int nres = diff ? fw.rows * (fw.cols - 1) + (fw.rows - 1) * fw.cols : static_cast<int>(win.size());
-    const int dof = nres - (diff ? kP - 1 : kP);
-    const Mat9 cov = jtj.ldlt().solve(Mat9::Identity()) * (dof > 0 ? cost.chi2 / dof : 1.0);
     fillFit(m, noise, &r.fit);
     if (r.fallbackStart) {
         // A moment start is only a spot when LM made a spot of it: kept, spot-sized (σ 1.5–6 px,
@@ -684,14 +711,7 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
             return r;
         }
     }
-    // The covariance treats the residuals as independent; ground texture is not, and moves the
-    // centre by about (texture difference σ)·σ_spot/A. That term, calibrated on the photo
-    // simulator (tuning seed 11; the tests check the coverage on seed 1), is added in quadrature:
-    // texture beyond (1 + deadband) of the photon + read part of a difference counts.
-    const double texDiffVar = std::max(0.0, 0.5 * (dv.x + dv.y) - 2 * photonVar * (1 + params.uncertaintyDeadband));
-    const double texShift = std::sqrt(texDiffVar) * sigmaMajor / std::max(m.amplitude, 1e-9);
-    const double texScale = diff ? params.uncertaintyTextureScale : params.uncertaintyTextureScalePixelFit;
-    r.fit.uncertaintyPx = sqrtVariance(cov(1, 1) + cov(2, 2) + (dv.ok ? texScale * texScale * texShift * texShift : 0.0));
+    r.fit.uncertaintyPx = uncertainty(covariance(), m.amplitude);
     // Paper 000's MSE at the reported model, over the domain pixels above the fitted background.
     std::vector<DomainPixel> dpx;
     std::vector<double> model;

@@ -21,6 +21,8 @@ struct GaussParams {
     bool lmRefine = true;        ///< Levenberg–Marquardt refinement (false = paper / Guo only)
     int lmMaxIterations = 20;    ///< LM iteration cap
     double lmTolerancePx = 1e-3; ///< LM stops when a step moves the centre less than this (px)
+    /// ... or less than this fraction of the centre's uncertainty (uncertainty_px at the start); 0 = off
+    double lmToleranceFraction = 0.1;
     double lmMaxMovePx = 3.0;    ///< LM results further than this from the log fit are not kept (px)
     double lmMaxShapeChange = 2.0; ///< nor those whose major σ or σ1·σ2 changed by more than this factor
     bool noiseWeights = true;    ///< LM weights 1/(photon + read + ground-texture variance)

@@ -14,11 +14,19 @@ double cauchyCostSum(const double* z2, int n, double c2);
 /// Σ z, or Σ c2·ln(1 + z/c2) (in single precision: it only ranks LM trial steps).
 double differenceWeights(const double* res, int m, int step, const double* w0, double c2, double* w, double* dr,
                          double* chi2);
+/// Weighted moments of the log fit's domain pixels, given as n quadruples (u, v, f, ln fn) at
+/// pix[4i..4i+3] with weights w[i]: m[k] = Σ w²·u^i·v^j for the 15 monomials of degree ≤ 4 in
+/// the order 1, u, v, u², uv, v², u³, u²v, uv², v³, u⁴, u³v, u²v², uv³, v⁴, and
+/// r[k] = Σ w²·ln fn·(1, u, v, u², uv, v²)[k].
+void logMoments(const double* pix, const double* w, int n, double* m, double* r);
+
+/// Columns of the difference fit's Gram kernel: the spot's six parameters.
+constexpr int kGramColumns = 6;
 /// Weighted Gram matrix of neighbour differences for the difference fit: with
-/// d_u[i] = P[u·n + i + step] − P[u·n + i], gram[u·k + v] = Σ_i w[i]·d_u[i]·d_v[i] (v ≤ u, lower
-/// triangle filled), rhs[u] = Σ_i w[i]·d_u[i]·r[i] and wd[u] = Σ_i w[i]·d_u[i], for i < n − step
-/// and u, v < k ≤ 8.
-void differenceGram(const double* P, int n, int k, int step, const double* w, const double* r, double* gram,
-                    double* rhs, double* wd);
+/// d_u[i] = P[u·n + i + step] − P[u·n + i], gram[u·6 + v] = Σ_i w[i]·d_u[i]·d_v[i] (v ≤ u, lower
+/// triangle filled), rhs[u] = Σ_i w[i]·d_u[i]·r[i], wd[u] = Σ_i w[i]·d_u[i], *sw = Σ_i w[i] and
+/// *swr = Σ_i w[i]·r[i], for i < n − step and u, v < 6.
+void differenceGram(const double* P, int n, int step, const double* w, const double* r, double* gram, double* rhs,
+                    double* wd, double* sw, double* swr);
 
 }  // namespace lwb::core::footprint::kernel

@@ -33,36 +33,44 @@ void flood(const unsigned char* in, int w, int h, bool eight, std::vector<int>& 
 }
 
 // Square min (erode) or max (dilate) filter of radius r on a 0/1 mask; outside counts as 0.
-// ROIs up to 64 px wide hold each row in one 64-bit word, so a filter pass is a few shifts.
-std::vector<unsigned char> morph(const std::vector<unsigned char>& m, int w, int h, int r, bool erode) {
-    std::vector<unsigned char> out(m.size());
-    if (w <= 64) {
-        const uint64_t full = w == 64 ? ~uint64_t(0) : (uint64_t(1) << w) - 1;
-        std::vector<uint64_t> rows(static_cast<size_t>(h)), horiz(static_cast<size_t>(h));
-        for (int y = 0; y < h; ++y) {
-            uint64_t bits = 0;
-            for (int x = 0; x < w; ++x) bits |= uint64_t(m[size_t(y) * w + x] != 0) << x;
-            rows[y] = bits;
-        }
-        for (int y = 0; y < h; ++y) {
-            uint64_t v = rows[y];
-            for (int k = 1; k <= r; ++k) {
-                const uint64_t left = (rows[y] >> k), right = (rows[y] << k) & full;
-                v = erode ? (v & left & right) : (v | left | right);
-            }
-            horiz[y] = v;
-        }
-        for (int y = 0; y < h; ++y) {
-            uint64_t v = horiz[y];
-            for (int k = 1; k <= r; ++k) {
-                const uint64_t up = y - k >= 0 ? horiz[y - k] : 0, down = y + k < h ? horiz[y + k] : 0;
-                v = erode ? (v & up & down) : (v | up | down);
-            }
-            for (int x = 0; x < w; ++x) out[size_t(y) * w + x] = (v >> x) & 1;
-        }
-        return out;
+// ROIs up to 64 px wide hold each row in one 64-bit word (bit x = column x), so a filter pass is
+// a few shifts per row; wider ones go pixel by pixel.
+using BitRows = std::vector<uint64_t>;
+
+BitRows toBits(const std::vector<unsigned char>& m, int w, int h) {
+    BitRows rows(static_cast<size_t>(h));
+    for (int y = 0; y < h; ++y) {
+        uint64_t bits = 0;
+        for (int x = 0; x < w; ++x) bits |= uint64_t(m[size_t(y) * w + x] != 0) << x;
+        rows[y] = bits;
     }
-    std::vector<unsigned char> rows(m.size());
+    return rows;
+}
+
+BitRows morphBits(const BitRows& rows, int w, int h, int r, bool erode) {
+    const uint64_t full = w == 64 ? ~uint64_t(0) : (uint64_t(1) << w) - 1;
+    BitRows horiz(static_cast<size_t>(h)), out(static_cast<size_t>(h));
+    for (int y = 0; y < h; ++y) {
+        uint64_t v = rows[y];
+        for (int k = 1; k <= r; ++k) {
+            const uint64_t left = (rows[y] >> k), right = (rows[y] << k) & full;
+            v = erode ? (v & left & right) : (v | left | right);
+        }
+        horiz[y] = v;
+    }
+    for (int y = 0; y < h; ++y) {
+        uint64_t v = horiz[y];
+        for (int k = 1; k <= r; ++k) {
+            const uint64_t up = y - k >= 0 ? horiz[y - k] : 0, down = y + k < h ? horiz[y + k] : 0;
+            v = erode ? (v & up & down) : (v | up | down);
+        }
+        out[y] = v;
+    }
+    return out;
+}
+
+std::vector<unsigned char> morph(const std::vector<unsigned char>& m, int w, int h, int r, bool erode) {
+    std::vector<unsigned char> rows(m.size()), out(m.size());
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             unsigned char v = erode ? 1 : 0;
@@ -91,18 +99,31 @@ std::vector<unsigned char> morph(const std::vector<unsigned char>& m, int w, int
 // 2r+1 px wide; the pixels of the original mask within r of what survives are kept. If the
 // peak itself does not survive (a spot thinner than the opening), the mask is left alone.
 void openAroundPeak(std::vector<unsigned char>& above, int w, int h, int r, int px, int py) {
-    const std::vector<unsigned char> eroded = morph(above, w, h, r, true);
-    if (!eroded[size_t(py) * w + px]) {
+    const bool bits = w <= 64;  // the whole opening on bit rows, converted once each way
+    BitRows erodedBits;
+    std::vector<unsigned char> eroded;
+    if (bits) erodedBits = morphBits(toBits(above, w, h), w, h, r, true);
+    else eroded = morph(above, w, h, r, true);
+    auto isEroded = [&](int x, int y) {
+        return bits ? ((erodedBits[y] >> x) & 1) != 0 : eroded[size_t(y) * w + x] != 0;
+    };
+    if (!isEroded(px, py)) {
         bool any = false;  // the peak may sit on a 1-px crest of the eroded core: look around it
         for (int dy = -r; dy <= r && !any; ++dy)
             for (int dx = -r; dx <= r && !any; ++dx) {
                 const int x = px + dx, y = py + dy;
-                any = x >= 0 && y >= 0 && x < w && y < h && eroded[size_t(y) * w + x];
+                any = x >= 0 && y >= 0 && x < w && y < h && isEroded(x, y);
             }
         if (!any) return;
     }
-    const std::vector<unsigned char> kept = morph(morph(eroded, w, h, r, false), w, h, 1, false);
-    for (size_t i = 0; i < above.size(); ++i) above[i] = above[i] && kept[i];
+    if (bits) {
+        const BitRows kept = morphBits(morphBits(erodedBits, w, h, r, false), w, h, 1, false);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) above[size_t(y) * w + x] &= static_cast<unsigned char>((kept[y] >> x) & 1);
+    } else {
+        const std::vector<unsigned char> kept = morph(morph(eroded, w, h, r, false), w, h, 1, false);
+        for (size_t i = 0; i < above.size(); ++i) above[i] = above[i] && kept[i];
+    }
     above[size_t(py) * w + px] = 1;
 }
 
@@ -139,16 +160,16 @@ RingLook ringPeakSnr(const float* img, int w, int h, int px, int py, double peak
 // Box mean over (2r+1)² with replicated borders.
 void boxSmooth(const float* src, int w, int h, int r, float* dst) {
     std::vector<float> rows(size_t(w) * h);
+    // Each sum is taken in the order k = −r..r; the loops over x (inner) vectorise.
+    const int xa = std::min(r, w), xb = std::max(xa, w - r);  // interior: x + k inside the row
     for (int y = 0; y < h; ++y) {
         const float* s = src + size_t(y) * w;
         float* o = rows.data() + size_t(y) * w;
-        for (int x = 0; x < w; ++x) {
-            float acc = 0;
-            if (x >= r && x < w - r)
-                for (int k = -r; k <= r; ++k) acc += s[x + k];
-            else
-                for (int k = -r; k <= r; ++k) acc += s[std::clamp(x + k, 0, w - 1)];
-            o[x] = acc;
+        for (int x = 0; x < w; ++x) o[x] = 0;
+        for (int k = -r; k <= r; ++k) {
+            for (int x = 0; x < xa; ++x) o[x] += s[std::clamp(x + k, 0, w - 1)];
+            for (int x = xa; x < xb; ++x) o[x] += s[x + k];
+            for (int x = xb; x < w; ++x) o[x] += s[std::clamp(x + k, 0, w - 1)];
         }
     }
     const float norm = 1.0f / float((2 * r + 1) * (2 * r + 1));
