@@ -12,6 +12,13 @@
 #include <cstdint>
 #include <vector>
 
+// The whole-number test below needs strict single-precision arithmetic.
+#if defined(__FAST_MATH__)
+#error "core/common/select.hpp must not be compiled with -ffast-math (kthSmallest's whole-number test)"
+#endif
+#include <cfloat>
+static_assert(FLT_EVAL_METHOD == 0, "kthSmallest's whole-number test needs float arithmetic in float");
+
 namespace lwb::core {
 
 inline float kthSmallest(std::vector<float>& v, size_t k) {

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace lwb::core::footprint {
@@ -37,7 +38,9 @@ bool positiveDefinite(double a, double b, double c) { return a > 0 && c > 0 && a
 // both (1, u²) and (u, u)), taken in one vectorised pass (kernel::logMoments).
 void normalEquations(const std::vector<DomainPixel>& px, const std::vector<double>& w, bool xy,
                      Eigen::Matrix<double, 6, 6>& N, Eigen::Matrix<double, 6, 1>& r) {
-    static_assert(sizeof(DomainPixel) == 4 * sizeof(double), "logMoments reads (u, v, f, ln fn) quadruples");
+    static_assert(sizeof(DomainPixel) == 4 * sizeof(double) && offsetof(DomainPixel, v) == sizeof(double) &&
+                      offsetof(DomainPixel, lnfn) == 3 * sizeof(double),
+                  "logMoments reads (u, v, f, ln fn) quadruples");
     double m[15], rr[6];
     kernel::logMoments(&px[0].u, w.data(), static_cast<int>(px.size()), m, rr);
     // Moment index of u^i v^j (i + j ≤ 4), in logMoments' order.
@@ -137,8 +140,16 @@ bool momentStart(const std::vector<DomainPixel>& px, double S, Quad* q) {
     return std::isfinite(q->x0) && std::isfinite(q->y0) && std::isfinite(q->lnScale);
 }
 
-// Paper 000 eq. 8 residual at a given model: E_i = fn_i·ln(f_i / g_i), fn = f / Σf. At the
-// log-fit's own solution this equals ‖A − B·C‖²/N of eq. 8 exactly.
+// lnfn = ln(f / S) of every pixel, through the vectorised log of the kernel.
+void logFractions(std::vector<DomainPixel>& px, double S) {
+    thread_local std::vector<double> f, ln;
+    f.resize(px.size());
+    ln.resize(px.size());
+    for (size_t i = 0; i < px.size(); ++i) f[i] = px[i].f;
+    kernel::logOfRatio(f.data(), S, ln.data(), static_cast<int>(px.size()));
+    for (size_t i = 0; i < px.size(); ++i) px[i].lnfn = ln[i];
+}
+
 // The domain pixels joined to the peak pixel (4-connected, within the domain) whose value is at
 // least `fraction` of the domain's brightest pixel above the background, relative to
 // (refX, refY); f > 0.
@@ -175,6 +186,8 @@ std::vector<DomainPixel> domainCore(const float* img, int w, int h, const SpotDo
     return out;
 }
 
+// Paper 000 eq. 8 residual at a given model: E_i = fn_i·ln(f_i / g_i), fn = f / Σf. At the
+// log-fit's own solution this equals ‖A − B·C‖²/N of eq. 8 exactly.
 double paperMse(const std::vector<DomainPixel>& px, const std::vector<double>& model) {
     double s = 0;
     for (const auto& p : px) s += p.f;
@@ -367,10 +380,21 @@ Cost accumulateDifferences(const FitWindow& fw, const Vec9& p, double cauchyC2, 
     return cost;
 }
 
+// A step that changes nothing that matters: it moves the centre less than `tolerance` (px), and
+// the amplitude and the shape (a, c, and b against √(ac)) by less than `shapeTolerance` of their
+// values, so that what the verdict reads (axes, tilt, amplitude) has settled too.
+bool smallStep(const Vec9& p, const Vec9& delta, double tolerance, double shapeTolerance) {
+    if (!(std::max(std::fabs(delta(1)), std::fabs(delta(2))) < tolerance)) return false;
+    const double scaleB = std::sqrt(std::fabs(p(3) * p(5)));
+    return std::fabs(delta(0)) <= shapeTolerance * std::fabs(p(0)) && std::fabs(delta(3)) <= shapeTolerance * std::fabs(p(3)) &&
+           std::fabs(delta(5)) <= shapeTolerance * std::fabs(p(5)) && std::fabs(delta(4)) <= shapeTolerance * scaleB;
+}
+
 // Levenberg–Marquardt from p on the (plain or Cauchy) cost; returns the iterations used.
-// jtj/jtr/cost hold the state at p on entry and on return.
-int levenbergMarquardt(const FitWindow& win, Vec9& p, double cauchyC2, int maxIterations,
-                       double tolerance, Mat9& jtj, Vec9& jtr, Cost& cost) {
+// jtj/jtr/cost hold the state at p on entry; on return, that of the last evaluated point (the
+// final small step, taken unevaluated, may have moved p from it by less than the tolerances).
+int levenbergMarquardt(const FitWindow& win, Vec9& p, double cauchyC2, int maxIterations, double tolerance,
+                       double shapeTolerance, Mat9& jtj, Vec9& jtr, Cost& cost) {
     double lambda = 1e-3;
     int it = 0;
     for (; it < maxIterations; ++it) {
@@ -383,8 +407,7 @@ int levenbergMarquardt(const FitWindow& win, Vec9& p, double cauchyC2, int maxIt
             // At the minimum within precision: the (hardly damped) step from here would move the
             // centre less than the tolerance. It is taken without evaluating its cost: one
             // evaluation of the window less (jtj, jtr and cost stay those of the previous point).
-            if (first && lambda <= 1e-2 && delta.allFinite() &&
-                std::max(std::fabs(delta(1)), std::fabs(delta(2))) < tolerance) {
+            if (first && lambda <= 1e-2 && delta.allFinite() && smallStep(p, delta, tolerance, shapeTolerance)) {
                 const Vec9 last = p + delta;
                 if (last(0) > 0 && positiveDefinite(last(3), last(4), last(5))) p = last;
                 converged = true;
@@ -400,7 +423,7 @@ int levenbergMarquardt(const FitWindow& win, Vec9& p, double cauchyC2, int maxIt
             Vec9 jtrTrial;
             const Cost costTrial = accumulate(win, trial, cauchyC2, &jtjTrial, &jtrTrial);
             if (costTrial.value <= cost.value) {
-                converged = std::max(std::fabs(delta(1)), std::fabs(delta(2))) < tolerance;
+                converged = smallStep(p, delta, tolerance, shapeTolerance);
                 p = trial;
                 cost = costTrial;
                 jtj = jtjTrial;
@@ -499,7 +522,7 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
         r.fit.error = "Gaussian fit: only " + std::to_string(px.size()) + " domain pixels above the background";
         return r;
     }
-    for (auto& p : px) p.lnfn = std::log(p.f / S);
+    logFractions(px, S);
     // Stage 1 (Wu): weights f (unit-sum normalised), QR.
     std::vector<double> wts(px.size());
     for (size_t i = 0; i < px.size(); ++i) wts[i] = px[i].f / S;
@@ -518,10 +541,8 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
         for (const auto& c : core) coreS += c.f;
         if (core.size() >= 7 && core.size() < px.size()) {
             std::vector<double> coreW(core.size());
-            for (size_t i = 0; i < core.size(); ++i) {
-                core[i].lnfn = std::log(core[i].f / coreS);
-                coreW[i] = core[i].f / coreS;
-            }
+            logFractions(core, coreS);
+            for (size_t i = 0; i < core.size(); ++i) coreW[i] = core[i].f / coreS;
             if (logFit(core, coreW, params.xyTerm, qr, &q)) {
                 px = std::move(core);
                 wts = std::move(coreW);
@@ -646,28 +667,39 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     // Textured ground: Cauchy loss (robustScale in residual σ); photon-limited: least squares.
     const double cauchyC2 = textured && params.robustLoss ? params.robustScale * params.robustScale : 0.0;
     Cost cost = accumulate(fw, p, cauchyC2, &jtj, &jtr);
-    // Covariance of the parameters at p, scaled by the reduced χ².
+    // Covariance of the parameters at p: (JᵀWJ)⁻¹ scaled by the reduced χ².
     const int nres = diff ? fw.rows * (fw.cols - 1) + (fw.rows - 1) * fw.cols : static_cast<int>(win.size());
     const int dof = nres - (diff ? kP - 1 : kP);
-    auto covariance = [&] { return Mat9(jtj.ldlt().solve(Mat9::Identity()) * (dof > 0 ? cost.chi2 / dof : 1.0)); };
+    // Only the centre's variances are read: the two columns of (JᵀWJ)⁻¹ for x0 and y0.
+    auto centreVariance = [&] {
+        Eigen::Matrix<double, kP, 2> unit = Eigen::Matrix<double, kP, 2>::Zero();
+        unit(1, 0) = unit(2, 1) = 1;
+        const Eigen::Matrix<double, kP, 2> cols = jtj.ldlt().solve(unit);
+        return (cols(1, 0) + cols(2, 1)) * (dof > 0 ? cost.chi2 / dof : 1.0);
+    };
     // The covariance treats the residuals as independent; ground texture is not, and moves the
     // centre by about (texture difference σ)·σ_spot/A. That term, calibrated on the photo
     // simulator (tuning seed 11; the tests check the coverage on seed 1), is added in quadrature:
     // texture beyond (1 + deadband) of the photon + read part of a difference counts.
     const double texDiffVar = std::max(0.0, 0.5 * (dv.x + dv.y) - 2 * photonVar * (1 + params.uncertaintyDeadband));
     const double texScale = diff ? params.uncertaintyTextureScale : params.uncertaintyTextureScalePixelFit;
-    auto uncertainty = [&](const Mat9& cov, double amplitude) {
+    auto uncertainty = [&](double centreVar, double amplitude) {
         const double texShift = std::sqrt(texDiffVar) * sigmaMajor / std::max(amplitude, 1e-9);
-        return sqrtVariance(cov(1, 1) + cov(2, 2) + (dv.ok ? texScale * texScale * texShift * texShift : 0.0));
+        return sqrtVariance(centreVar + (dv.ok ? texScale * texScale * texShift * texShift : 0.0));
     };
     if (params.lmRefine) {
         // A step smaller than a fraction of the centre's uncertainty changes nothing that matters.
+        // Not from a moment start (its χ², and so its uncertainty, is inflated by the poor start),
+        // and never looser than kMaxTolerancePx (a near-singular start could give any value).
+        constexpr double kMaxTolerancePx = 0.05;
         double tolerance = params.lmTolerancePx;
-        if (params.lmToleranceFraction > 0) {
-            const double u0 = uncertainty(covariance(), m.amplitude);
-            if (std::isfinite(u0)) tolerance = std::max(tolerance, params.lmToleranceFraction * u0);
+        if (params.lmToleranceFraction > 0 && !r.fallbackStart) {
+            const double u0 = uncertainty(centreVariance(), m.amplitude);
+            if (std::isfinite(u0))
+                tolerance = std::max(tolerance, std::min(params.lmToleranceFraction * u0, kMaxTolerancePx));
         }
-        iterations += levenbergMarquardt(fw, p, cauchyC2, params.lmMaxIterations, tolerance, jtj, jtr, cost);
+        iterations += levenbergMarquardt(fw, p, cauchyC2, params.lmMaxIterations, tolerance, params.lmToleranceShape, jtj,
+                                         jtr, cost);
         const double moved = std::hypot(p(1) + cx - m.x0, p(2) + cy - m.y0);
         const double pcx = p(1) + cx, pcy = p(2) + cy;
         // LM refines; it must not run off. A large move, or a shape far from the log fit's (a
@@ -711,7 +743,7 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
             return r;
         }
     }
-    r.fit.uncertaintyPx = uncertainty(covariance(), m.amplitude);
+    r.fit.uncertaintyPx = uncertainty(centreVariance(), m.amplitude);
     // Paper 000's MSE at the reported model, over the domain pixels above the fitted background.
     std::vector<DomainPixel> dpx;
     std::vector<double> model;

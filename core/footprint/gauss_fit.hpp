@@ -21,8 +21,12 @@ struct GaussParams {
     bool lmRefine = true;        ///< Levenberg–Marquardt refinement (false = paper / Guo only)
     int lmMaxIterations = 20;    ///< LM iteration cap
     double lmTolerancePx = 1e-3; ///< LM stops when a step moves the centre less than this (px)
-    /// ... or less than this fraction of the centre's uncertainty (uncertainty_px at the start); 0 = off
+    /// LM also stops when a step moves the centre less than this fraction of its uncertainty
+    /// (uncertainty_px at the start), and takes that step unevaluated; 0 = off
     double lmToleranceFraction = 0.1;
+    /// LM stops only when the step also changes the amplitude and the shape (a, c, and b against
+    /// √(ac)) by less than this fraction of their values
+    double lmToleranceShape = 0.01;
     double lmMaxMovePx = 3.0;    ///< LM results further than this from the log fit are not kept (px)
     double lmMaxShapeChange = 2.0; ///< nor those whose major σ or σ1·σ2 changed by more than this factor
     bool noiseWeights = true;    ///< LM weights 1/(photon + read + ground-texture variance)

@@ -11,6 +11,12 @@ void halfNegExp(const double* q, double* out, int n) {
 }
 
 __attribute__((target_clones("avx2", "default")))
+void logOfRatio(const double* f, double S, double* out, int n) {
+#pragma omp simd
+    for (int i = 0; i < n; ++i) out[i] = std::log(f[i] / S);
+}
+
+__attribute__((target_clones("avx2", "default")))
 double differenceWeights(const double* res, int m, int step, const double* w0, double c2, double* w, double* dr,
                          double* chi2) {
     double cost = 0, x2 = 0;

@@ -7,6 +7,8 @@ namespace lwb::core::footprint::kernel {
 
 /// out[i] = exp(−½ q[i]) for i < n.
 void halfNegExp(const double* q, double* out, int n);
+/// out[i] = ln(f[i] / S) for i < n.
+void logOfRatio(const double* f, double S, double* out, int n);
 /// Sum of the Cauchy costs c²·ln(1 + z2[i]/c²) for i < n.
 double cauchyCostSum(const double* z2, int n, double c2);
 /// Difference-fit weights: for i < m, dr[i] = res[i + step] − res[i], z = w0[i]·dr², w[i] = w0[i]

@@ -85,7 +85,9 @@ const Schema<FootprintParams>& footprintSchema() {
         s.real("gauss.lm_tolerance_px", LWB_FIELD(F, gauss.lmTolerancePx), "px", {0, 1, true, true}, {1e-4, 0.01},
                "LM stops when a step moves the centre less than this");
         s.real("gauss.lm_tolerance_fraction", LWB_FIELD(F, gauss.lmToleranceFraction), "", {0, 1}, {0, 0.5},
-               "... or less than this fraction of the centre's uncertainty (uncertainty_px at the start); 0 = off");
+               "LM also stops when a step moves the centre less than this fraction of its uncertainty (uncertainty_px at the start), and takes that step; 0 = off");
+        s.real("gauss.lm_tolerance_shape", LWB_FIELD(F, gauss.lmToleranceShape), "", {0, 1, true, false}, {1e-4, 0.05},
+               "LM stops only when the step also changes the amplitude and the shape by less than this fraction of their values");
         s.real("gauss.lm_max_move_px", LWB_FIELD(F, gauss.lmMaxMovePx), "px", {0, 100, true, false}, {0.5, 6},
                "LM results further than this from the log fit are not kept");
         s.real("gauss.lm_max_shape_change", LWB_FIELD(F, gauss.lmMaxShapeChange), "", {1, 100, true, false}, {1.2, 4},

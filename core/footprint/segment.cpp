@@ -157,6 +157,16 @@ RingLook ringPeakSnr(const float* img, int w, int h, int px, int py, double peak
     return out;
 }
 
+// std::max_element's index, in two passes without a data-dependent branch in the first (the
+// largest value; NaN is never taken, as there) and an early exit in the second.
+int firstMaxIndex(const float* v, int n) {
+    float m = v[0];
+    for (int i = 1; i < n; ++i) m = v[i] > m ? v[i] : m;
+    for (int i = 0; i < n; ++i)
+        if (v[i] == m) return i;
+    return 0;  // v[0] is NaN: max_element keeps the first element
+}
+
 // Box mean over (2r+1)² with replicated borders.
 void boxSmooth(const float* src, int w, int h, int r, float* dst) {
     std::vector<float> rows(size_t(w) * h);
@@ -198,7 +208,7 @@ SpotDomain segmentSpot(const cv::Mat& roi, double background, double noise, doub
     else
         roi.copyTo(smooth);
     const float* smp = smooth.ptr<float>();
-    const int maxIndex = static_cast<int>(std::max_element(smp, smp + w * h) - smp);
+    const int maxIndex = firstMaxIndex(smp, w * h);
     const double maxV = smp[maxIndex];
     const cv::Point maxP(maxIndex % w, maxIndex / w);
     d.peakX = maxP.x;
