@@ -186,17 +186,25 @@ std::vector<DomainPixel> domainCore(const float* img, int w, int h, const SpotDo
     return out;
 }
 
-// Paper 000 eq. 8 residual at a given model: E_i = fn_i·ln(f_i / g_i), fn = f / Σf. At the
-// log-fit's own solution this equals ‖A − B·C‖²/N of eq. 8 exactly.
-double paperMse(const std::vector<DomainPixel>& px, const std::vector<double>& model) {
+// Paper 000 eq. 8 residual at a given model: E_i = fn_i·ln(f_i / g_i), fn = f / Σf, with
+// ln g_i = ln A − q_i/2 (q_i the model's quadratic form at pixel i; g floored at 1e-300 as a
+// value would be). At the log-fit's own solution this equals ‖A − B·C‖²/N of eq. 8 exactly.
+// f holds the f_i (> 0), q the q_i.
+double paperMse(const std::vector<double>& f, const std::vector<double>& q, double amplitude) {
+    const int n = static_cast<int>(f.size());
+    if (n == 0) return NAN;
     double s = 0;
-    for (const auto& p : px) s += p.f;
+    for (double v : f) s += v;
+    thread_local std::vector<double> lnf;
+    lnf.resize(f.size());
+    kernel::logOfRatio(f.data(), 1.0, lnf.data(), n);
+    const double lnA = std::log(amplitude), lnFloor = std::log(1e-300);
     double e2 = 0;
-    for (size_t i = 0; i < px.size(); ++i) {
-        const double e = (px[i].f / s) * std::log(px[i].f / std::max(model[i], 1e-300));
+    for (int i = 0; i < n; ++i) {
+        const double e = (f[i] / s) * (lnf[i] - std::max(lnA - 0.5 * q[i], lnFloor));
         e2 += e * e;
     }
-    return px.empty() ? NAN : e2 / px.size();
+    return e2 / n;
 }
 
 struct WinPixel {
@@ -745,18 +753,17 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     }
     r.fit.uncertaintyPx = uncertainty(centreVariance(), m.amplitude);
     // Paper 000's MSE at the reported model, over the domain pixels above the fitted background.
-    std::vector<DomainPixel> dpx;
-    std::vector<double> model;
-    dpx.reserve(domain.pixels.size());
-    model.reserve(domain.pixels.size());
+    thread_local std::vector<double> mseF, mseQ;
+    mseF.clear();
+    mseQ.clear();
     for (int pi : domain.pixels) {
         const double x = pi % w, y = pi / w, dx = x - m.x0, dy = y - m.y0;
         const double f = img[pi] - (m.bg0 + m.bgX * dx + m.bgY * dy);
         if (f <= 0) continue;
-        dpx.push_back({x, y, f, 0});
-        model.push_back(m.amplitude * std::exp(-0.5 * (m.a * dx * dx + 2 * m.b * dx * dy + m.c * dy * dy)));
+        mseF.push_back(f);
+        mseQ.push_back(m.a * dx * dx + 2 * m.b * dx * dy + m.c * dy * dy);
     }
-    r.fit.mse = paperMse(dpx, model);
+    r.fit.mse = paperMse(mseF, mseQ, m.amplitude);
     r.fit.areaPx = static_cast<double>(domain.pixels.size());
     r.fit.iterations = iterations;
     r.model = m;
