@@ -187,8 +187,9 @@ std::vector<DomainPixel> domainCore(const float* img, int w, int h, const SpotDo
 }
 
 // Paper 000 eq. 8 residual at a given model: E_i = fn_i·ln(f_i / g_i), fn = f / Σf, with
-// ln g_i = ln A − q_i/2 (q_i the model's quadratic form at pixel i; g floored at 1e-300 as a
-// value would be). At the log-fit's own solution this equals ‖A − B·C‖²/N of eq. 8 exactly.
+// ln g_i = ln A − q_i/2 (q_i the model's quadratic form at pixel i), floored at ln 1e-300 so
+// that a far pixel's model never counts as below 1e-300. At the log-fit's own solution this
+// equals ‖A − B·C‖²/N of eq. 8 exactly.
 // f holds the f_i (> 0), q the q_i.
 double paperMse(const std::vector<double>& f, const std::vector<double>& q, double amplitude) {
     const int n = static_cast<int>(f.size());
@@ -413,8 +414,9 @@ int levenbergMarquardt(const FitWindow& win, Vec9& p, double cauchyC2, int maxIt
             aug.diagonal() *= (1.0 + lambda);
             const Vec9 delta = aug.ldlt().solve(jtr);
             // At the minimum within precision: the (hardly damped) step from here would move the
-            // centre less than the tolerance. It is taken without evaluating its cost: one
-            // evaluation of the window less (jtj, jtr and cost stay those of the previous point).
+            // centre, amplitude and shape less than their tolerances (smallStep). It is taken
+            // without evaluating its cost: one evaluation of the window less (jtj, jtr and cost
+            // stay those of the previous point).
             if (first && lambda <= 1e-2 && delta.allFinite() && smallStep(p, delta, tolerance, shapeTolerance)) {
                 const Vec9 last = p + delta;
                 if (last(0) > 0 && positiveDefinite(last(3), last(4), last(5))) p = last;

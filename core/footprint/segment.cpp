@@ -50,9 +50,11 @@ BitRows toBits(const std::vector<unsigned char>& m, int w, int h) {
 BitRows morphBits(const BitRows& rows, int w, int h, int r, bool erode) {
     const uint64_t full = w == 64 ? ~uint64_t(0) : (uint64_t(1) << w) - 1;
     BitRows horiz(static_cast<size_t>(h)), out(static_cast<size_t>(h));
+    // Shifts of 64 and more are undefined, and a row is at most 64 px: shifts up to 63 reach all of it.
+    const int rx = std::min(r, 63);
     for (int y = 0; y < h; ++y) {
         uint64_t v = rows[y];
-        for (int k = 1; k <= r; ++k) {
+        for (int k = 1; k <= rx; ++k) {
             const uint64_t left = (rows[y] >> k), right = (rows[y] << k) & full;
             v = erode ? (v & left & right) : (v | left | right);
         }
