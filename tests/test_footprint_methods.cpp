@@ -364,7 +364,7 @@ private slots:
 
     /// The opening that cuts roads off the domain runs on 64-bit rows for ROIs up to 64 px wide
     /// and pixel by pixel beyond: a road-crossed spot gives the same domain either way (the same
-    /// ROI padded with flat background to 80 px).
+    /// ROI padded with flat background to 64, 65 and 80 px), and the road through the spot is cut.
     void openingIsTheSameOnWideRois() {
         cv::Mat roi = exactSpot(32, 15.3, 16.6, 3000, 3.0, 2.5, 20, 1000);
         for (int y = 0; y < 32; ++y)  // a 2 px bright road through the spot, and one beside it
@@ -385,10 +385,18 @@ private slots:
             std::sort(pb.begin(), pb.end());
             QVERIFY2(pa == pb, qPrintable(QString("width %1: %2 vs %3 pixels").arg(width).arg(pb.size()).arg(pa.size())));
         }
-        // The road beside the spot (columns 24-25) was cut off the domain in every row.
-        int rows = 0;
-        for (int y = 0; y < 32; ++y) rows += a.mask[size_t(y) * 32 + 24] != 0;
-        QCOMPARE(rows, 0);
+        // The opening did its work: the road through the spot (columns 14-15) reaches the ROI's
+        // top and bottom rows in the domain without it, and not with it.
+        auto endRows = [](const SpotDomain& d) {
+            int n = 0;
+            for (int y : {0, 31})
+                for (int x : {14, 15}) n += d.mask[size_t(y) * 32 + x] != 0;
+            return n;
+        };
+        SegmentParams noOpening = sp;
+        noOpening.openingRadius = 0;
+        QCOMPARE(endRows(segmentSpot(roi, 1000, 20, 65535, noOpening)), 4);
+        QCOMPARE(endRows(a), 0);
     }
 
     void invalidParamsAreRefused() {
