@@ -28,6 +28,10 @@ void everyFieldThroughJson(const Schema<P>& schema) {
     const P def{};
     const Json written = schema.toJson(def);
     for (const auto& f : schema.fields()) {
+        // Its doc is the field's tooltip, shown alone: a sentence of its own, not the tail of
+        // the row before it (the GUI showed one that began "... or less than").
+        QVERIFY2(!f.doc.empty() && f.doc.rfind("...", 0) != 0 && f.doc.rfind("\u2026", 0) != 0,
+                 (schema.name() + "." + f.key + ": doc \"" + f.doc + "\" does not stand alone").c_str());
         // Always written, even at the default.
         const Json* v = &written;
         std::string path;
