@@ -10,6 +10,7 @@
 
 #include "cli_common.hpp"
 #include "cli_commands.hpp"
+#include "core/common/allocator.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/image_codecs.hpp"
 #include "core/common/text.hpp"
@@ -489,6 +490,7 @@ int cmdBenchFootprint(int argc, char** argv) {
     std::vector<std::thread> pool;
     for (unsigned t = 0; t < hw; ++t)
         pool.emplace_back([&, t]() {
+            core::adviseThreadHeap();
             size_t n = 0, s = 0;
             while (std::chrono::duration<double>(clock::now() - t0).count() < seconds)
                 for (int k = 0; k < 32; ++k, ++n) s += processRoi(rois[(n * hw + t) % rois.size()], def).ok;

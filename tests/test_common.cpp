@@ -1,10 +1,18 @@
 // Core utilities: JSON, CSV, strict numbers, atomic writes.
 #include <QtTest>
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
 #include <random>
+#include <thread>
 
+#include "core/common/allocator.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/json.hpp"
+#include "core/common/parallel.hpp"
 #include "core/common/select.hpp"
 #include "core/common/text.hpp"
 #include "test_support.hpp"
@@ -163,6 +171,61 @@ private slots:
         QVERIFY(err.find("missing") != std::string::npos);
         // A folder as target.
         QVERIFY(!writeFileAtomic(dir.path().toStdString(), "x", &err));
+    }
+
+    // allocator.hpp: after tuneAllocator, a worker thread of parallelFor allocates from an arena
+    // of its own (not the main heap, which the calling thread shares), and that arena's memory is
+    // advised for huge pages. With one arena for all threads the block lies in [heap]; without
+    // adviseThreadHeap its mapping has no "hg" flag.
+    void workerThreadsAllocateFromAnAdvisedArenaOfTheirOwn() {
+#if !defined(__GLIBC__) || !defined(__linux__)
+        QSKIP("glibc on Linux only");
+#else
+        tuneAllocator();
+        const std::thread::id mainThread = std::this_thread::get_id();
+        std::vector<uintptr_t> workerBlocks;
+        std::mutex lock;
+        std::vector<void*> held;
+        std::atomic<bool> workerRan{false};
+        parallelFor(8, 2, [&](size_t) {
+            if (std::this_thread::get_id() == mainThread) {
+                // Leave the worker a job: wait (at most 10 s) until it has run one.
+                for (int k = 0; k < 10000 && !workerRan; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                return;
+            }
+            workerRan = true;
+            void* p = std::malloc(4u << 20);
+            std::memset(p, 1, 4u << 20);
+            const std::lock_guard<std::mutex> g(lock);
+            workerBlocks.push_back(reinterpret_cast<uintptr_t>(p) + (2u << 20));  // inside the block's pages
+            held.push_back(p);
+        });
+        QVERIFY2(!workerBlocks.empty(), "no job ran on the worker thread");
+        // The mapping holding each worker block, from /proc/self/smaps.
+        QFile smaps("/proc/self/smaps");
+        QVERIFY(smaps.open(QIODevice::ReadOnly | QIODevice::Text));
+        const QStringList lines = QString::fromLatin1(smaps.readAll()).split('\n');
+        for (void* p : held) std::free(p);
+        for (uintptr_t a : workerBlocks) {
+            bool found = false;
+            for (int i = 0; i < lines.size() && !found; ++i) {
+                const QStringList f = lines[i].split(' ', Qt::SkipEmptyParts);
+                const QStringList range = f.isEmpty() ? QStringList() : f[0].split('-');
+                if (range.size() != 2) continue;
+                bool ok1 = false, ok2 = false;
+                const uintptr_t lo = range[0].toULongLong(&ok1, 16), hi = range[1].toULongLong(&ok2, 16);
+                if (!ok1 || !ok2 || a < lo || a >= hi) continue;
+                found = true;
+                QVERIFY2(!lines[i].contains("[heap]"), qPrintable("a worker's block lies in the main heap: " + lines[i]));
+                QString flags;
+                for (int j = i + 1; j < lines.size() && !lines[j].contains('-'); ++j)
+                    if (lines[j].startsWith("VmFlags:")) flags = lines[j];
+                QVERIFY2(flags.split(' ', Qt::SkipEmptyParts).contains("hg"),
+                         qPrintable("a worker's arena is not advised for huge pages: " + lines[i] + " " + flags));
+            }
+            QVERIFY2(found, "a worker's block is in no mapping of /proc/self/smaps");
+        }
+#endif
     }
 };
 

@@ -12,6 +12,7 @@
 #include <mutex>
 #include <thread>
 
+#include "core/common/allocator.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
@@ -43,6 +44,7 @@ struct IndexedJob {
         running = threads;
         for (int t = 0; t < threads; ++t)
             (void)QtConcurrent::run(loaderPool(), [this, work]() {
+                core::adviseThreadHeap();
                 for (size_t i = next++; i < total && !feedback.isCancelled(); i = next++) {
                     work(i);
                     std::lock_guard<std::mutex> lock(mutex);
@@ -155,6 +157,7 @@ namespace {
 void parallelFor(size_t n, core::Feedback& fb, const std::function<void(size_t)>& fn) {
     std::atomic<size_t> next{0}, done{0};
     auto worker = [&] {
+        core::adviseThreadHeap();
         for (size_t i = next++; i < n && !fb.isCancelled(); i = next++) {
             fn(i);
             const size_t d = ++done;

@@ -17,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/common/allocator.hpp"
 #include "core/common/feedback.hpp"
 
 namespace lwb::ui {
@@ -52,6 +53,7 @@ public:
             auto fb = newFeedback(gen);
             QPointer<LiveJob> self(this);
             track(QtConcurrent::run([self, task = std::move(task), deliver, fb, gen]() {
+                core::adviseThreadHeap();  // the pool thread's malloc arena (allocator.hpp)
                 R result = task(*fb);
                 if (fb->isCancelled()) return;
                 QMetaObject::invokeMethod(

@@ -1,5 +1,6 @@
 #include "core/common/allocator.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>  // defines __GLIBC__ on glibc
 
@@ -10,26 +11,56 @@
 #endif
 
 namespace lwb::core {
+namespace {
+std::atomic<bool> gTuned{false};
+constexpr uintptr_t kHuge = 2u << 20;
+
+// Advises [p, p + size) for transparent huge pages, from its first 2 MiB boundary.
+void adviseHuge(uintptr_t p, uintptr_t size) {
+#if defined(__GLIBC__)
+    const uintptr_t lo = (p + kHuge - 1) & ~(kHuge - 1), hi = (p + size) & ~uintptr_t(4095);
+    // A kernel without transparent huge pages refuses the advice: nothing else changes.
+    if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
+#else
+    (void)p;
+    (void)size;
+#endif
+}
+}  // namespace
+
 void tuneAllocator() {
 #if defined(__GLIBC__)
+    gTuned.store(true);
     mallopt(M_MMAP_THRESHOLD, 64 << 20);
-    // Huge pages for the heap (allocator.hpp says why). One arena, so that the worker threads
-    // allocate from the advised heap too; the heap is grown once by kHugeReserve (address space
-    // only: nothing is touched) and that range advised. It is given back to the system only
-    // when more than 1 GiB lies free at its top, so the advised range is never trimmed away.
+    // Huge pages for the heap (allocator.hpp says why): it is grown once by kHugeReserve
+    // (address space only: nothing is touched) and that range advised. It is given back to the
+    // system only when more than 1 GiB lies free at its top, so the advised range is never
+    // trimmed away. glibc's arenas per thread are kept (up to 8 per core): the worker threads'
+    // arenas get their huge pages from adviseThreadHeap.
     constexpr long kHugeReserve = 256L << 20;
-    constexpr uintptr_t kHuge = 2u << 20;
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
-    mallopt(M_ARENA_MAX, 1);
     mallopt(M_TOP_PAD, static_cast<int>(kHugeReserve));
     const uintptr_t before = reinterpret_cast<uintptr_t>(sbrk(0));
     void* volatile grow = malloc(1 << 20);  // volatile: the compiler may not drop the pair
     free(grow);
     const uintptr_t after = reinterpret_cast<uintptr_t>(sbrk(0));
     mallopt(M_TOP_PAD, 128 << 10);  // glibc's default from here on
-    const uintptr_t lo = (before + kHuge - 1) & ~(kHuge - 1);
-    // A kernel without transparent huge pages refuses the advice: nothing else changes.
-    if (before != uintptr_t(-1) && after > lo) madvise(reinterpret_cast<void*>(lo), after - lo, MADV_HUGEPAGE);
+    if (before != uintptr_t(-1) && after > before) adviseHuge(before, after - before);
+#endif
+}
+
+void adviseThreadHeap() {
+#if defined(__GLIBC__)
+    thread_local bool done = false;
+    if (done || !gTuned.load(std::memory_order_relaxed)) return;
+    done = true;
+    // A block of kReserve from the thread's arena, advised and freed: it returns to the arena's
+    // top, which stays mapped (the trim threshold above), so the arena's next kReserve bytes
+    // are in advised pages. Address space only: the block is not touched.
+    constexpr size_t kReserve = 32u << 20;
+    void* volatile block = malloc(kReserve);
+    if (block) adviseHuge(reinterpret_cast<uintptr_t>(block), kReserve);
+    free(block);
 #endif
 }
 }  // namespace lwb::core

@@ -13,7 +13,16 @@
 // advised for transparent huge pages (madvise; the kernel's default mode): faults fell to
 // about 1 300 on both, the runs to 0.27 s and 0.8–1.0 s; peak memory rose by 1.5 MB and by
 // 20–27 MB (135–141 B/point).
+// Worker threads allocate from arenas of their own (glibc's default). With one arena for every
+// thread, a block one core had just freed, still in that core's cache, was handed to the other
+// core's next allocation, and each of the scale search's trials allocates about 13 MB: the same
+// trials took 27 % more CPU time run on two threads than on one (170 → 216 ms for the ladders of
+// a 10^5-point sparse pass). Those arenas are not the advised heap, so each worker thread
+// advises a block of its own arena at its start (adviseThreadHeap).
 namespace lwb::core {
 /// Sets the thresholds above (glibc; does nothing elsewhere). Call once, early in main().
 void tuneAllocator();
+/// Gives the calling thread's malloc arena advised (huge) pages, once per thread; does nothing
+/// unless the executable called tuneAllocator. Called first by the core's worker threads.
+void adviseThreadHeap();
 }  // namespace lwb::core

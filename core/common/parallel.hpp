@@ -13,6 +13,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/common/allocator.hpp"
+
 namespace lwb::core {
 
 /// The cores to use: `want` when > 0, else every hardware thread (at least 1).
@@ -41,7 +43,10 @@ void parallelFor(size_t n, size_t threads, Job&& job) {
         }
     };
     std::vector<std::thread> pool;
-    for (size_t w = 1; w < workers; ++w) pool.emplace_back(loop);
+    for (size_t w = 1; w < workers; ++w) pool.emplace_back([&loop] {
+            adviseThreadHeap();
+            loop();
+        });
     loop();
     for (auto& t : pool) t.join();
     if (failure) std::rethrow_exception(failure);

@@ -5,6 +5,7 @@
 #include <mutex>
 #include <thread>
 
+#include "core/common/allocator.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/text.hpp"
@@ -19,6 +20,7 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
     std::mutex cbMutex;
     const size_t total = files.size();
     auto worker = [&]() {
+        adviseThreadHeap();
         while (true) {
             if (cancelled(fb)) return;
             const size_t i = next.fetch_add(1);

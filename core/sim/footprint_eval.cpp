@@ -5,6 +5,7 @@
 #include <cmath>
 #include <thread>
 
+#include "core/common/allocator.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/crlb.hpp"
 #include "core/sim/rng.hpp"
@@ -87,6 +88,7 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
         std::vector<double> crlb(n, NAN);
         std::atomic<int> next{0};
         auto worker = [&]() {
+            adviseThreadHeap();
             for (int i = next++; i < n && !cancelled(fb); i = next++) {
                 FootprintSimParams sp = params.sim;
                 sp.scene = scene;

@@ -9,6 +9,7 @@
 #include <memory>
 #include <thread>
 
+#include "core/common/allocator.hpp"
 #include "core/common/text.hpp"
 #include "core/sim/rng.hpp"
 #include "core/slr/kdtree2.hpp"
@@ -405,7 +406,10 @@ void runFixed(const std::vector<double>& t, const std::vector<double>& oc, const
     std::future<int> nullLimit;
     if (p.areaLimit <= 0 && t.size() >= kNullAside && std::thread::hardware_concurrency() > 1)
         nullLimit = std::async(std::launch::async,
-                               [&t, &oc, mp, tol = p.areaTolerance] { return automaticAreaLimit(t, oc, mp, tol, 200000); });
+                               [&t, &oc, mp, tol = p.areaTolerance] {
+                                   adviseThreadHeap();
+                                   return automaticAreaLimit(t, oc, mp, tol, 200000);
+                               });
     BinaryImage img = buildBinaryImage(t, oc, mp, fb);
     if (!img.ok) {
         res.error = img.error;
@@ -661,7 +665,10 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
     // beside a 10⁶-point screening).
     std::future<NoiseFloorCheck> floorCheck;
     if (follow && floor && std::thread::hardware_concurrency() > 1)
-        floorCheck = std::async(std::launch::async, [&t, &oc] { return checkNoiseFloor(t, oc); });
+        floorCheck = std::async(std::launch::async, [&t, &oc] {
+            adviseThreadHeap();
+            return checkNoiseFloor(t, oc);
+        });
     if (follow) {
         const auto tf = Clock::now();
         // On the O-C as given: smooth, whereas a refinement's flattened O-C has kinks at the

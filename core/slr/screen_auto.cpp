@@ -100,7 +100,10 @@ void runLadders(size_t ladders, int ahead, Run&& run, Decide&& decide) {
     };
     const size_t workers = coresFor(gSearchThreads.load());
     std::vector<std::thread> pool;
-    for (size_t w = 1; w < workers; ++w) pool.emplace_back(loop);
+    for (size_t w = 1; w < workers; ++w) pool.emplace_back([&loop] {
+            adviseThreadHeap();
+            loop();
+        });
     loop();
     for (auto& t : pool) t.join();
     if (failure) std::rethrow_exception(failure);
