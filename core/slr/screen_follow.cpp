@@ -29,12 +29,25 @@ struct LocalFit {
         const double x = (t - t0) / scale;
         return c[0] + c[1] * x + c[2] * x * x;
     }
-    // x·(XᵀX)⁻¹·xᵀ: the variance of the prediction in units of σ².
+    // x·(XᵀX)⁻¹·xᵀ: the variance of the prediction in units of σ². (The sum over i, j in row
+    // order; written out for the quadratic, the usual case.)
     double varFactor(double t) const {
         const double x = (t - t0) / scale, b[3] = {1, x, x * x};
         double v = 0;
-        for (int i = 0; i <= degree; ++i)
-            for (int j = 0; j <= degree; ++j) v += b[i] * inv[i][j] * b[j];
+        if (degree == 2) {
+            v += b[0] * inv[0][0] * b[0];
+            v += b[0] * inv[0][1] * b[1];
+            v += b[0] * inv[0][2] * b[2];
+            v += b[1] * inv[1][0] * b[0];
+            v += b[1] * inv[1][1] * b[1];
+            v += b[1] * inv[1][2] * b[2];
+            v += b[2] * inv[2][0] * b[0];
+            v += b[2] * inv[2][1] * b[1];
+            v += b[2] * inv[2][2] * b[2];
+        } else {
+            for (int i = 0; i <= degree; ++i)
+                for (int j = 0; j <= degree; ++j) v += b[i] * inv[i][j] * b[j];
+        }
         return std::max(0.0, v);
     }
     // The curvature term |c₂|·Δ² in seconds of O-C for Δ seconds past t0.
@@ -50,15 +63,26 @@ bool fitLocal(const std::vector<double>& T, const std::vector<double>& O, const 
     for (size_t k = 0; k < n; ++k) scale = std::max(scale, std::fabs(T[idx[k]] - t0));
     if (!(scale > 0)) scale = 1;
     int d = std::min<int>(maxDegree, n >= 6 ? 2 : n >= 3 ? 1 : 0);
+    // The normal equations' sums, once for every degree tried: A[i][j] = Σ xⁱ·xʲ depends on
+    // i + j only (Σ 1, x, x², x·x², x²·x²), y[i] = Σ xⁱ·O.
+    double S[5] = {0, 0, 0, 0, 0}, Y[3] = {0, 0, 0};
+    for (size_t k = 0; k < n; ++k) {
+        const double x = (T[idx[k]] - t0) / scale, x2 = x * x, o = O[idx[k]];
+        S[0] += 1;
+        S[1] += x;
+        S[2] += x2;
+        S[3] += x * x2;
+        S[4] += x2 * x2;
+        Y[0] += o;
+        Y[1] += x * o;
+        Y[2] += x2 * o;
+    }
     for (; d >= 0; --d) {
         const int m = d + 1;
         double A[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, y[3] = {0, 0, 0};
-        for (size_t k = 0; k < n; ++k) {
-            const double x = (T[idx[k]] - t0) / scale, b[3] = {1, x, x * x};
-            for (int i = 0; i < m; ++i) {
-                y[i] += b[i] * O[idx[k]];
-                for (int j = 0; j < m; ++j) A[i][j] += b[i] * b[j];
-            }
+        for (int i = 0; i < m; ++i) {
+            y[i] = Y[i];
+            for (int j = 0; j < m; ++j) A[i][j] = S[i + j];
         }
         // Gauss–Jordan inverse of the m×m normal matrix.
         double M[3][6] = {};
@@ -283,19 +307,23 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
                         pastEnd = false;
                         break;
                     }
+                    // The band is at most gate / 8 wide: a point farther from the fit is outside it
+                    // without computing the band there.
+                    const double off = std::fabs(O[q] - lf.at(T[q]));
                     if (inTrack[q]) {
-                        metTrack = std::fabs(O[q] - lf.at(T[q])) <= band(T[q]);
+                        metTrack = off <= gate / 8 && off <= band(T[q]);
                         if (metTrack) break;
                         continue;
                     }
-                    if (std::fabs(O[q] - lf.at(T[q])) <= band(T[q])) cand.push_back(static_cast<uint32_t>(q));
+                    if (off <= gate / 8 && off <= band(T[q])) cand.push_back(static_cast<uint32_t>(q));
                 }
                 // Expected noise in the search band over the window (trapezoid over 16 steps).
                 const double tEnd = tf + dir * L;
-                double area = 0;
+                double area = 0, bandA = band(tf);
                 for (int s = 0; s < 16; ++s) {
-                    const double a = tf + dir * L * s / 16.0, b = tf + dir * L * (s + 1) / 16.0;
-                    area += 0.5 * (band(a) + band(b)) * 2 * (L / 16.0);
+                    const double bandB = band(tf + dir * L * (s + 1) / 16.0);
+                    area += 0.5 * (bandA + bandB) * 2 * (L / 16.0);
+                    bandA = bandB;
                 }
                 const double rho = densityOver(tf, tEnd);
                 const double eWide = area * rho;
