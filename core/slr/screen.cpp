@@ -67,10 +67,21 @@ int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& 
     std::vector<double> window, no;  // the window's epochs (all of them: t itself, not copied)
     double oLo = 1e308, oHi = -1e308;
     if (n <= maxPoints) {
-        for (size_t i = 0; i < n; ++i) {
-            oLo = std::min(oLo, oc[i]);
-            oHi = std::max(oHi, oc[i]);
+        // Four running extremes (min and max are exact in any order): one chain through a
+        // single pair waited on each comparison before.
+        double lo[4] = {oLo, oLo, oLo, oLo}, hi[4] = {oHi, oHi, oHi, oHi};
+        size_t i = 0;
+        for (; i + 4 <= n; i += 4)
+            for (int k = 0; k < 4; ++k) {
+                lo[k] = std::min(lo[k], oc[i + k]);
+                hi[k] = std::max(hi[k], oc[i + k]);
+            }
+        for (; i < n; ++i) {
+            lo[0] = std::min(lo[0], oc[i]);
+            hi[0] = std::max(hi[0], oc[i]);
         }
+        oLo = std::min(std::min(lo[0], lo[1]), std::min(lo[2], lo[3]));
+        oHi = std::max(std::max(hi[0], hi[1]), std::max(hi[2], hi[3]));
     } else {
         window.reserve(maxPoints);
         for (size_t i = 0; i < n; ++i)
@@ -83,9 +94,18 @@ int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& 
     const std::vector<double>& nt = n <= maxPoints ? t : window;
     const size_t m = n <= maxPoints ? n : window.size();
     // Null model: the same epochs with O-C uniform over the span (a fixed seed: deterministic).
-    sim::Rng rng(0x6e756c6cULL ^ static_cast<uint64_t>(m));
+    // The seed depends on m only, so the uniform draws of the last m are kept for the next call
+    // (every trial of a scale search draws them again for the same window).
+    thread_local std::vector<double> uniforms;
+    thread_local size_t uniformsFor = 0;
+    if (uniformsFor != m || uniforms.size() != m) {
+        sim::Rng rng(0x6e756c6cULL ^ static_cast<uint64_t>(m));
+        uniforms.resize(m);
+        for (double& u : uniforms) u = rng.uniform();
+        uniformsFor = m;
+    }
     no.resize(m);
-    for (double& v : no) v = oLo + (oHi - oLo) * rng.uniform();
+    for (size_t i = 0; i < m; ++i) no[i] = oLo + (oHi - oLo) * uniforms[i];
     const std::vector<int64_t> areas = regionAreas(nt, no, mapping);
     if (areas.empty()) return 2;
     std::vector<size_t> atLeast(66, 0);  // atLeast[a] = regions with area ≥ a (a ≤ 65)

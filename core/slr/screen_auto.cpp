@@ -413,38 +413,57 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         int conn = 8;
         ScaleTrial rec;
     };
-    auto runTrial = [&](double k, double c, int conn) {
+    // A trial's screening parameters at scale (k, c, conn); false: the scale is unusable (too
+    // coarse in time for the windows, or absurd).
+    auto trialParams = [&](double k, double c, int conn, ScreenParams* tp) {
+        const double dt = dT(k, c), doc = dO(k);
+        if (!(dt > 0) || !(doc > 0) || dt > meanWinSpan / 8) return false;
+        *tp = base;
+        tp->magT = 1.0 / dt;
+        tp->magOc = 1.0 / doc;
+        tp->connectivity = conn;
+        return !(tp->magT > 1e15 || tp->magOc > 1e18);
+    };
+    // One window of a trial. Each window is screened on its own (as a short pass), so that
+    // windows far apart in time and slope do not share slope histograms.
+    struct WindowOut {
+        bool ok = false;
+        int area = 0;
+        ExtractionScore score;
+    };
+    auto runWindow = [&](const ScreenParams& tp, size_t w) {
+        WindowOut out;
+        const auto [b, e] = slices[w];
+        const std::vector<double> wt(st.begin() + static_cast<long>(b), st.begin() + static_cast<long>(e));
+        const std::vector<double> wo(so.begin() + static_cast<long>(b), so.begin() + static_cast<long>(e));
+        const ScreenResult r = screenSignal(wt, wo, tp, nullptr);
+        if (!r.ok) return out;
+        out.ok = true;
+        out.area = r.areaLimit;
+        // The refinement scored the result it kept on this window already (the same points,
+        // O-C and selection): that score, else the window's own.
+        out.score = r.inputScore;
+        if (!r.inputScoreKnown) {
+            std::vector<uint8_t> mask(wt.size());
+            for (size_t i = 0; i < wt.size(); ++i) mask[i] = r.pointClass[i] != PointClass::Noise;
+            out.score = scoreExtraction(st.data() + b, so.data() + b, mask.data(), e - b);
+        }
+        return out;
+    };
+    // The trial from its windows' results, in window order (the first window that failed makes
+    // the scale unusable).
+    auto combine = [&](double k, double c, int conn, const ScreenParams& tp, const WindowOut* wins) {
         Trial out;
         out.k = k;
         out.c = c;
         out.conn = conn;
-        const double dt = dT(k, c), doc = dO(k);
-        if (!(dt > 0) || !(doc > 0) || dt > meanWinSpan / 8) return out;
-        ScreenParams tp = base;
-        tp.magT = 1.0 / dt;
-        tp.magOc = 1.0 / doc;
-        tp.connectivity = conn;
-        if (tp.magT > 1e15 || tp.magOc > 1e18) return out;
-        // Each window is screened on its own (as a short pass), so that windows far apart in
-        // time and slope do not share slope histograms.
         ExtractionScore total;
         double bandSig = 0;
         int area = 0;
-        std::vector<uint8_t> mask;
-        for (const auto& [b, e] : slices) {
-            const std::vector<double> wt(st.begin() + static_cast<long>(b), st.begin() + static_cast<long>(e));
-            const std::vector<double> wo(so.begin() + static_cast<long>(b), so.begin() + static_cast<long>(e));
-            const ScreenResult r = screenSignal(wt, wo, tp, nullptr);
-            if (!r.ok) return out;
-            area = std::max(area, r.areaLimit);
-            // The refinement scored the result it kept on this window already (the same points,
-            // O-C and selection): that score, else the window's own.
-            ExtractionScore s = r.inputScore;
-            if (!r.inputScoreKnown) {
-                mask.resize(wt.size());
-                for (size_t i = 0; i < wt.size(); ++i) mask[i] = r.pointClass[i] != PointClass::Noise;
-                s = scoreExtraction(st.data() + b, so.data() + b, mask.data(), e - b);
-            }
+        for (size_t w = 0; w < slices.size(); ++w) {
+            if (!wins[w].ok) return out;
+            const ExtractionScore& s = wins[w].score;
+            area = std::max(area, wins[w].area);
             total.score += s.score;
             total.truePositives += s.truePositives;
             total.selected += s.selected;
@@ -461,6 +480,23 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         tr.precisionEst = total.selected > 0 ? total.truePositives / static_cast<double>(total.selected) : 0;
         tr.recallEst = bandSig > 0 ? std::min(1.0, total.truePositives / bandSig) : 0;
         return out;
+    };
+    // One trial: the extraction at scale (k, c, conn) on every window, scored. Touches nothing
+    // shared, so trials run side by side; their results are taken in a fixed order (take),
+    // which keeps the choice the same whatever the number of threads.
+    auto runTrial = [&](double k, double c, int conn) {
+        ScreenParams tp;
+        if (!trialParams(k, c, conn, &tp)) {
+            Trial out;
+            out.k = k;
+            out.c = c;
+            out.conn = conn;
+            return out;
+        }
+        std::vector<WindowOut> wins(slices.size());
+        for (size_t w = 0; w < slices.size(); ++w)
+            if (!(wins[w] = runWindow(tp, w)).ok) break;
+        return combine(k, c, conn, tp, wins.data());
     };
     struct Best {
         double score = -1e300;
@@ -479,12 +515,26 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
             best.conn = tr.conn;
         }
     };
-    // Independent trials at a list of scales (k, c, connectivity), side by side; in list order.
+    // Independent trials at a list of scales (k, c, connectivity), in list order; every window of
+    // every trial is a job of its own on the cores (a few trials of three windows each shared
+    // out whole left a core idle at the end).
     auto runTrials = [&](const std::vector<std::array<double, 3>>& scales) {
-        std::vector<Trial> out(scales.size());
-        runInParallel(scales.size(), [&](size_t i) {
-            if (!cancelled(fb)) out[i] = runTrial(scales[i][0], scales[i][1], static_cast<int>(scales[i][2]));
+        const size_t nw = slices.size();
+        std::vector<ScreenParams> tps(scales.size());
+        std::vector<uint8_t> usable(scales.size());
+        for (size_t i = 0; i < scales.size(); ++i)
+            usable[i] = trialParams(scales[i][0], scales[i][1], static_cast<int>(scales[i][2]), &tps[i]);
+        std::vector<WindowOut> wins(scales.size() * nw);
+        runInParallel(wins.size(), [&](size_t j) {
+            if (usable[j / nw] && !cancelled(fb)) wins[j] = runWindow(tps[j / nw], j % nw);
         });
+        std::vector<Trial> out(scales.size());
+        for (size_t i = 0; i < scales.size(); ++i) {
+            out[i].k = scales[i][0];
+            out[i].c = scales[i][1];
+            out[i].conn = static_cast<int>(scales[i][2]);
+            if (usable[i]) out[i] = combine(scales[i][0], scales[i][1], static_cast<int>(scales[i][2]), tps[i], &wins[i * nw]);
+        }
         return out;
     };
 
