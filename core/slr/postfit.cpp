@@ -453,17 +453,41 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
                 Eigen::MatrixXd S = Eigen::MatrixXd::Zero(mk, mk);
                 Eigen::VectorXd sr = Eigen::VectorXd::Zero(mk);
                 std::vector<int> perInterval(static_cast<size_t>(K), 0);
-                double w[4];
+                // The normal matrix is symmetric with 4 diagonals: S(a, a + o) summed in band[4a + o]
+                // (o = 0..3) and mirrored below. Each entry gets the same products in the same
+                // point order as summing every S(j + r, j + c) (w[r]·w[c] = w[c]·w[r]).
+                // The points come in time order, so a run of them shares an interval j: its 16
+                // band entries and 4 right-hand sides are held in locals over the run (loaded at
+                // its start, stored at its end), the same sums in the same order.
+                std::vector<double> band(static_cast<size_t>(4 * mk + 16), 0.0), rs(static_cast<size_t>(mk + 4), 0.0);
+                double w[4], lb[16], lr[4];
+                int cur = -1;
+                auto store = [&] {
+                    if (cur < 0) return;
+                    std::copy(lb, lb + 16, &band[static_cast<size_t>(4 * cur)]);
+                    std::copy(lr, lr + 4, &rs[static_cast<size_t>(cur)]);
+                };
                 for (size_t q = g.a; q < g.b; ++q) {
                     const uint32_t i = ord[q];
                     if (!res.kept[i]) continue;
                     const int j = splineBasis(g.trend.tStart, g.trend.tEnd, K, t[i], w);
                     ++perInterval[static_cast<size_t>(j)];
+                    if (j != cur) {
+                        store();
+                        cur = j;
+                        std::copy(&band[static_cast<size_t>(4 * j)], &band[static_cast<size_t>(4 * j)] + 16, lb);
+                        std::copy(&rs[static_cast<size_t>(j)], &rs[static_cast<size_t>(j)] + 4, lr);
+                    }
+                    const double d = oc[i] - y0;
                     for (int r = 0; r < 4; ++r) {
-                        sr(j + r) += w[r] * (oc[i] - y0);
-                        for (int c2 = 0; c2 < 4; ++c2) S(j + r, j + c2) += w[r] * w[c2];
+                        lr[r] += w[r] * d;
+                        for (int c2 = r; c2 < 4; ++c2) lb[4 * r + (c2 - r)] += w[r] * w[c2];
                     }
                 }
+                store();
+                for (int a = 0; a < mk; ++a) sr(a) = rs[static_cast<size_t>(a)];
+                for (int a = 0; a < mk; ++a)
+                    for (int o = 0; o < 4 && a + o < mk; ++o) S(a, a + o) = S(a + o, a) = band[static_cast<size_t>(4 * a + o)];
                 // Every interval must hold points (else coefficients are free); a tiny ridge keeps
                 // the solution bounded.
                 const bool covered = std::all_of(perInterval.begin(), perInterval.end(), [](int c) { return c >= 2; });
