@@ -124,6 +124,12 @@ bool linkPixels(const int64_t* row, const int64_t* col, size_t pixels, bool eigh
         if (p > rowStart && col[p - 1] == c - 1) uf.attach(static_cast<uint32_t>(p - 1), rootP);
         if (havePrev) {
             const int64_t lo = eight ? c - 1 : c, hi = eight ? c + 1 : c;
+            // The pointer advances by a data-dependent 0, 1, 2 … pixels: two steps without a
+            // branch (col[prevEnd] is this row's first pixel, so the read stays in the image),
+            // then the loop for the rest, which is seldom needed (a loop's varying trip count was
+            // mispredicted at most pixels).
+            j += static_cast<size_t>(j < prevEnd) & static_cast<size_t>(col[j] < lo);
+            j += static_cast<size_t>(j < prevEnd) & static_cast<size_t>(col[j] < lo);
             while (j < prevEnd && col[j] < lo) ++j;
             for (size_t k = j; k < prevEnd && col[k] <= hi; ++k) uf.attach(static_cast<uint32_t>(k), rootP);
         }
