@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 // The whole-number test below needs strict single-precision arithmetic.
@@ -55,6 +56,23 @@ inline float kthSmallest(std::vector<float>& v, size_t k) {
     uint32_t l = 0;
     while (below + count(lo, l) <= k) below += count(lo, l++);
     return static_cast<float>((h << 8) | l);
+}
+
+/// The smallest and largest of v[0..n), n ≥ 1, finite values. Four running pairs: one chain
+/// waited on each comparison (min and max give the same result in any order).
+inline std::pair<double, double> minMaxOf(const double* v, size_t n) {
+    double lo[4] = {v[0], v[0], v[0], v[0]}, hi[4] = {v[0], v[0], v[0], v[0]};
+    size_t i = 1;
+    for (; i + 4 <= n; i += 4)
+        for (int k = 0; k < 4; ++k) {
+            lo[k] = std::min(lo[k], v[i + k]);
+            hi[k] = std::max(hi[k], v[i + k]);
+        }
+    for (; i < n; ++i) {
+        lo[0] = std::min(lo[0], v[i]);
+        hi[0] = std::max(hi[0], v[i]);
+    }
+    return {std::min(std::min(lo[0], lo[1]), std::min(lo[2], lo[3])), std::max(std::max(hi[0], hi[1]), std::max(hi[2], hi[3]))};
 }
 
 }  // namespace lwb::core

@@ -8,8 +8,10 @@
 #include <future>
 #include <memory>
 #include <thread>
+#include <tuple>
 
 #include "core/common/allocator.hpp"
+#include "core/common/select.hpp"
 #include "core/common/text.hpp"
 #include "core/sim/rng.hpp"
 #include "core/slr/kdtree2.hpp"
@@ -67,21 +69,7 @@ int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& 
     std::vector<double> window, no;  // the window's epochs (all of them: t itself, not copied)
     double oLo = 1e308, oHi = -1e308;
     if (n <= maxPoints) {
-        // Four running extremes (min and max are exact in any order): one chain through a
-        // single pair waited on each comparison before.
-        double lo[4] = {oLo, oLo, oLo, oLo}, hi[4] = {oHi, oHi, oHi, oHi};
-        size_t i = 0;
-        for (; i + 4 <= n; i += 4)
-            for (int k = 0; k < 4; ++k) {
-                lo[k] = std::min(lo[k], oc[i + k]);
-                hi[k] = std::max(hi[k], oc[i + k]);
-            }
-        for (; i < n; ++i) {
-            lo[0] = std::min(lo[0], oc[i]);
-            hi[0] = std::max(hi[0], oc[i]);
-        }
-        oLo = std::min(std::min(lo[0], lo[1]), std::min(lo[2], lo[3]));
-        oHi = std::max(std::max(hi[0], hi[1]), std::max(hi[2], hi[3]));
+        std::tie(oLo, oHi) = minMaxOf(oc.data(), n);
     } else {
         window.reserve(maxPoints);
         for (size_t i = 0; i < n; ++i)

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "core/common/parallel.hpp"
+#include "core/common/select.hpp"
 #include "core/common/text.hpp"
 
 namespace lwb::core::slr {
@@ -291,11 +292,7 @@ ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t
     for (double& v : tmp) v = std::fabs(v - med);
     const double sigma = 1.4826 * medianOf(tmp);
     const double h = 5 * sigma;
-    double lo = oc[0], hi = oc[0];
-    for (size_t i = 1; i < n; ++i) {
-        lo = std::min(lo, oc[i]);
-        hi = std::max(hi, oc[i]);
-    }
+    const auto [lo, hi] = minMaxOf(oc, n);
     const double span = hi - lo;
     if (span <= 0) {  // every O-C equal: one flat line, all of it track
         s.truePositives = static_cast<double>(ns);
