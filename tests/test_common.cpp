@@ -178,9 +178,21 @@ private slots:
     // advised for huge pages. With one arena for all threads the block lies in [heap]; without
     // adviseThreadHeap its mapping has no "hg" flag.
     void workerThreadsAllocateFromAnAdvisedArenaOfTheirOwn() {
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
+#define LWB_TEST_OWN_MALLOC 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define LWB_TEST_OWN_MALLOC 1
+#endif
 #if !defined(__GLIBC__) || !defined(__linux__)
         QSKIP("glibc on Linux only");
+#elif defined(LWB_TEST_OWN_MALLOC)
+        QSKIP("a sanitizer replaces glibc's malloc and its arenas");
 #else
+        if (!QFile::exists("/sys/kernel/mm/transparent_hugepage/enabled"))
+            QSKIP("this kernel has no transparent huge pages to advise");
         tuneAllocator();
         const std::thread::id mainThread = std::this_thread::get_id();
         std::vector<uintptr_t> workerBlocks;
