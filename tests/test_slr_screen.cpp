@@ -378,14 +378,17 @@ private slots:
     }
 
     void piecewiseTrendInOrderEqualsBisection() {
-        // atAscending (points in time order walk the pieces) gives at()'s value bit for bit.
+        // atMany (points in time order, run by run) gives at()'s value bit for bit, including
+        // at the pieces' ends, just beside them, and before and after the whole trend.
         sim::Rng rng(99);
+        size_t inGaps = 0;
         for (int round = 0; round < 20; ++round) {
             const size_t n = 10 + static_cast<size_t>(rng.uniform() * 400);
             std::vector<double> t(n), oc(n);
             double x = 0;
             for (size_t i = 0; i < n; ++i) {
                 x += rng.uniform() < 0.05 ? 30 * rng.uniform() : rng.uniform();  // gaps between pieces
+                if (rng.uniform() < 0.05 && i > 0) x = t[i - 1];                  // equal epochs
                 t[i] = x;
                 oc[i] = 1e-6 * std::sin(x / 20) + 1e-9 * rng.uniform();
             }
@@ -393,12 +396,33 @@ private slots:
             for (size_t i = 0; i < n; ++i)
                 if (rng.uniform() < 0.7) sel.push_back(i);
             const PiecewiseTrend tr = robustPiecewiseTrend(t.data(), oc.data(), sel);
-            size_t piece = 0;
-            for (double q = -5; q < x + 5; q += 0.37 * rng.uniform()) {
-                const double a = tr.at(q), b = tr.atAscending(q, piece);
-                QVERIFY2(a == b || (std::isnan(a) && std::isnan(b)), qPrintable(QString("round %1 at %2").arg(round).arg(q)));
+            std::vector<double> q;
+            for (double v = -5; v < x + 5; v += 0.37 * rng.uniform()) q.push_back(v);
+            for (const auto& p : tr.pieces)
+                for (double e : {p.t0, p.t1}) {
+                    q.push_back(e);
+                    q.push_back(std::nextafter(e, -1e300));
+                    q.push_back(std::nextafter(e, 1e300));
+                }
+            std::sort(q.begin(), q.end());
+            std::vector<double> many(q.size());
+            tr.atMany(q.data(), q.size(), many.data());
+            for (size_t k = 0; k < q.size(); ++k) {
+                const double a = tr.at(q[k]);
+                QVERIFY2(a == many[k] || (std::isnan(a) && std::isnan(many[k])),
+                         qPrintable(QString("round %1 at %2: %3 vs %4").arg(round).arg(q[k], 0, 'g', 17).arg(a).arg(many[k])));
+                for (size_t g = 0; g + 1 < tr.pieces.size(); ++g)
+                    inGaps += q[k] > tr.pieces[g].t1 && q[k] < tr.pieces[g + 1].t0;
             }
         }
+        QVERIFY(inGaps > 100);  // the joins between pieces were tested, not only the pieces
+        // No pieces: 0 everywhere, as at().
+        const PiecewiseTrend none;
+        const double q[3] = {-1, 0, 1};
+        double out[3] = {9, 9, 9};
+        none.atMany(q, 3, out);
+        QCOMPARE(out[0], 0.0);
+        QCOMPARE(out[2], 0.0);
     }
 
     void imageIsTheSameWhateverThePointOrder() {

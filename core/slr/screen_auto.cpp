@@ -174,16 +174,31 @@ double PiecewiseTrend::at(double x) const {
     return interpolate(pieces, lo, x);
 }
 
-double PiecewiseTrend::atAscending(double x, size_t& piece) const {
-    if (pieces.empty()) return 0;
-    if (x <= pieces.front().t0) return pieces.front().at(pieces.front().t0);
-    if (x >= pieces.back().t1) return pieces.back().at(pieces.back().t1);
-    // The last piece starting at or before x (the bisection of at() finds the same one when the
-    // starts ascend), moving on from the previous call's.
-    size_t lo = piece < pieces.size() && pieces[piece].t0 <= x ? piece : 0;
-    while (lo + 1 < pieces.size() && pieces[lo + 1].t0 <= x) ++lo;
-    piece = lo;
-    return interpolate(pieces, lo, x);
+void PiecewiseTrend::atMany(const double* x, size_t n, double* out) const {
+    if (pieces.empty()) {
+        std::fill(out, out + n, 0.0);
+        return;
+    }
+    const Piece& first = pieces.front();
+    const Piece& last = pieces.back();
+    const double before = first.at(first.t0), after = last.at(last.t1);
+    size_t i = 0;
+    for (; i < n && x[i] <= first.t0; ++i) out[i] = before;
+    size_t lo = 0;
+    while (i < n && x[i] < last.t1) {
+        // at(): the last piece starting at or before x ...
+        while (lo + 1 < pieces.size() && pieces[lo + 1].t0 <= x[i]) ++lo;
+        const Piece& p = pieces[lo];
+        const double end = std::min(lo + 1 < pieces.size() ? pieces[lo + 1].t0 : last.t1, last.t1);
+        // ... its line up to its end (min(x, t1) = x there) ...
+        for (; i < n && x[i] < end && x[i] <= p.t1; ++i) out[i] = p.om + p.slope * (x[i] - p.tm);
+        if (lo + 1 == pieces.size()) continue;  // the last piece ends at last.t1: nothing beyond
+        // ... and the straight join to the next piece's start (interpolate()).
+        const Piece& q = pieces[lo + 1];
+        const double a = p.at(p.t1), b = q.at(q.t0), dt = q.t0 - p.t1, ba = b - a;
+        for (; i < n && x[i] < end; ++i) out[i] = dt > 0 ? a + ba * (x[i] - p.t1) / dt : b;
+    }
+    for (; i < n; ++i) out[i] = after;
 }
 
 PiecewiseTrend robustPiecewiseTrend(const double* t, const double* oc, const std::vector<size_t>& sel) {
@@ -239,8 +254,12 @@ NoiseFloorCheck checkNoiseFloor(const std::vector<double>& t, const std::vector<
     // Points in time order walk the trend's pieces in order (the piece bisection would find).
     const bool ascending = inOrder && std::is_sorted(tr.pieces.begin(), tr.pieces.end(),
                                                      [](const auto& a, const auto& b) { return a.t0 < b.t0; });
-    size_t piece = 0;
-    for (size_t i = 0; i < n; ++i) c.residualS[i] = oc[i] - (ascending ? tr.atAscending(t[i], piece) : tr.at(t[i]));
+    if (ascending) {
+        tr.atMany(t.data(), n, c.residualS.data());
+        for (size_t i = 0; i < n; ++i) c.residualS[i] = oc[i] - c.residualS[i];
+    } else {
+        for (size_t i = 0; i < n; ++i) c.residualS[i] = oc[i] - tr.at(t[i]);
+    }
     std::vector<double> tmp(c.residualS);
     const double med = medianOf(tmp);
     for (double& r : c.residualS) r -= med;
@@ -282,11 +301,16 @@ ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t
     const bool ascending = std::is_sorted(t, t + n) &&
                            std::is_sorted(trendModel.pieces.begin(), trendModel.pieces.end(),
                                           [](const auto& a, const auto& b) { return a.t0 < b.t0; });
-    size_t piece = 0;
-    auto trend = [&](double x) { return ascending ? trendModel.atAscending(x, piece) : trendModel.at(x); };
+    // The trend at every point, once (the selected points' residuals and the band count below).
+    std::vector<double> trend(n);
+    if (ascending) {
+        trendModel.atMany(t, n, trend.data());
+    } else {
+        for (size_t i = 0; i < n; ++i) trend[i] = trendModel.at(t[i]);
+    }
     std::vector<double> rs;
     rs.reserve(ns);
-    for (size_t i : sel) rs.push_back(oc[i] - trend(t[i]));
+    for (size_t i : sel) rs.push_back(oc[i] - trend[i]);
     std::vector<double> tmp(rs);
     const double med = medianOf(tmp);
     for (double& v : tmp) v = std::fabs(v - med);
@@ -306,9 +330,8 @@ ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t
     }
     // Counted in integers without a branch (the same whole numbers as adding 1.0).
     size_t inBand = 0, selectedInBand = 0;
-    piece = 0;
     for (size_t i = 0; i < n; ++i) {
-        const size_t in = std::fabs(oc[i] - trend(t[i]) - med) <= h;
+        const size_t in = std::fabs(oc[i] - trend[i] - med) <= h;
         inBand += in;
         selectedInBand += in & static_cast<size_t>(selected[i] != 0);
     }

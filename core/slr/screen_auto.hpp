@@ -70,10 +70,10 @@ struct PiecewiseTrend {
     };
     std::vector<Piece> pieces;
     double at(double x) const;  ///< 0 when there are no pieces
-    /// at(x), the same value, for x visited in ascending order: `piece` (start at 0) carries the
-    /// piece found from one call to the next. Needs pieces in ascending t0 (as
+    /// out[i] = at(x[i]) for x ascending, the same values, run by run of the points that share
+    /// a piece or a gap between two (no search per point). Needs pieces in ascending t0 (as
     /// robustPiecewiseTrend makes them, from points in time order).
-    double atAscending(double x, size_t& piece) const;
+    void atMany(const double* x, size_t n, double* out) const;
 };
 /// The trend of the points sel (indices into t and oc, in ascending time).
 PiecewiseTrend robustPiecewiseTrend(const double* t, const double* oc, const std::vector<size_t>& sel);
