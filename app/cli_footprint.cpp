@@ -10,7 +10,7 @@
 
 #include "cli_common.hpp"
 #include "cli_commands.hpp"
-#include "core/common/allocator.hpp"
+#include "core/common/parallel.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/image_codecs.hpp"
 #include "core/common/text.hpp"
@@ -487,17 +487,13 @@ int cmdBenchFootprint(int argc, char** argv) {
     const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
     std::atomic<size_t> total{0};
     const auto t0 = clock::now();
-    std::vector<std::thread> pool;
-    for (unsigned t = 0; t < hw; ++t)
-        pool.emplace_back([&, t]() {
-            core::adviseThreadHeap();
+    core::runOnThreads(hw, [&](size_t t) {
             size_t n = 0, s = 0;
             while (std::chrono::duration<double>(clock::now() - t0).count() < seconds)
                 for (int k = 0; k < 32; ++k, ++n) s += processRoi(rois[(n * hw + t) % rois.size()], def).ok;
             total += n;
             (void)s;
         });
-    for (auto& t : pool) t.join();
     const double el = std::chrono::duration<double>(clock::now() - t0).count();
     std::cout << "| gauss, " << hw << " threads | " << core::formatFixed(total / el, 0) << " (all cores) | "
               << core::formatFixed(1e6 * el * hw / total, 1) << " per thread |\n";

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "core/common/allocator.hpp"
+#include "core/common/parallel.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
@@ -156,8 +157,7 @@ namespace {
 // Runs fn(i) for i in [0, n) on every core, stopping early when fb is cancelled.
 void parallelFor(size_t n, core::Feedback& fb, const std::function<void(size_t)>& fn) {
     std::atomic<size_t> next{0}, done{0};
-    auto worker = [&] {
-        core::adviseThreadHeap();
+    auto worker = [&](size_t) {
         for (size_t i = next++; i < n && !fb.isCancelled(); i = next++) {
             fn(i);
             const size_t d = ++done;
@@ -165,10 +165,7 @@ void parallelFor(size_t n, core::Feedback& fb, const std::function<void(size_t)>
         }
     };
     const int threads = std::max(1, std::min<int>(QThread::idealThreadCount(), int(n)));
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    core::runOnThreads(static_cast<size_t>(threads), worker);
 }
 }  // namespace
 

@@ -22,6 +22,22 @@ inline size_t coresFor(int want) {
     return want > 0 ? static_cast<size_t>(want) : std::max(1u, std::thread::hardware_concurrency());
 }
 
+/// loop(k) on `threads` threads at once, k = 0 on the calling thread and 1 … threads − 1 on new
+/// ones; returns when every one has returned. Each new thread first gives its malloc arena
+/// advised (huge) pages (adviseThreadHeap, allocator.hpp). loop must not throw out of a new
+/// thread (catch inside it, as parallelFor does).
+template <class Loop>
+void runOnThreads(size_t threads, Loop&& loop) {
+    std::vector<std::thread> pool;
+    for (size_t k = 1; k < threads; ++k)
+        pool.emplace_back([&loop, k] {
+            adviseThreadHeap();
+            loop(k);
+        });
+    loop(size_t{0});
+    for (auto& t : pool) t.join();
+}
+
 template <class Job>
 void parallelFor(size_t n, size_t threads, Job&& job) {
     const size_t workers = std::min(n, threads);
@@ -32,7 +48,7 @@ void parallelFor(size_t n, size_t threads, Job&& job) {
     std::atomic<size_t> next{0};
     std::exception_ptr failure;
     std::mutex failureLock;
-    auto loop = [&] {
+    runOnThreads(workers, [&](size_t) {
         for (size_t i; (i = next.fetch_add(1)) < n;) {
             try {
                 job(i);
@@ -41,14 +57,7 @@ void parallelFor(size_t n, size_t threads, Job&& job) {
                 if (!failure) failure = std::current_exception();
             }
         }
-    };
-    std::vector<std::thread> pool;
-    for (size_t w = 1; w < workers; ++w) pool.emplace_back([&loop] {
-            adviseThreadHeap();
-            loop();
-        });
-    loop();
-    for (auto& t : pool) t.join();
+    });
     if (failure) std::rethrow_exception(failure);
 }
 

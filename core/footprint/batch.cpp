@@ -5,9 +5,9 @@
 #include <mutex>
 #include <thread>
 
-#include "core/common/allocator.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
+#include "core/common/parallel.hpp"
 #include "core/common/text.hpp"
 
 namespace lwb::core::footprint {
@@ -19,8 +19,7 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
     std::atomic<size_t> next{0}, done{0};
     std::mutex cbMutex;
     const size_t total = files.size();
-    auto worker = [&]() {
-        adviseThreadHeap();
+    auto worker = [&](size_t) {
         while (true) {
             if (cancelled(fb)) return;
             const size_t i = next.fetch_add(1);
@@ -45,10 +44,7 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
     };
     int n = params.threads > 0 ? params.threads : static_cast<int>(std::thread::hardware_concurrency());
     n = std::max(1, std::min<int>(n, static_cast<int>(std::max<size_t>(total, 1))));
-    std::vector<std::thread> pool;
-    for (int t = 1; t < n; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    runOnThreads(static_cast<size_t>(n), worker);
     out.cancelled = cancelled(fb) && done < total;
     if (out.cancelled) out.items.resize(0);
     for (const auto& it : out.items)

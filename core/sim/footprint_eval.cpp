@@ -5,7 +5,7 @@
 #include <cmath>
 #include <thread>
 
-#include "core/common/allocator.hpp"
+#include "core/common/parallel.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/crlb.hpp"
 #include "core/sim/rng.hpp"
@@ -87,8 +87,7 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
         std::vector<ShotOutcome> outcomes(size_t(n) * nv);
         std::vector<double> crlb(n, NAN);
         std::atomic<int> next{0};
-        auto worker = [&]() {
-            adviseThreadHeap();
+        auto worker = [&](size_t) {
             for (int i = next++; i < n && !cancelled(fb); i = next++) {
                 FootprintSimParams sp = params.sim;
                 sp.scene = scene;
@@ -120,10 +119,7 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
         };
         int threads = params.threads > 0 ? params.threads : static_cast<int>(std::thread::hardware_concurrency());
         threads = std::max(1, threads);
-        std::vector<std::thread> pool;
-        for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-        worker();
-        for (auto& t : pool) t.join();
+        runOnThreads(static_cast<size_t>(threads), worker);
         for (size_t v = 0; v < nv; ++v) {
             EvalStats s;
             s.variant = variants[v].name;

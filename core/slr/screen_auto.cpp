@@ -99,14 +99,7 @@ void runLadders(size_t ladders, int ahead, Run&& run, Decide&& decide) {
             changed.notify_all();
         }
     };
-    const size_t workers = coresFor(gSearchThreads.load());
-    std::vector<std::thread> pool;
-    for (size_t w = 1; w < workers; ++w) pool.emplace_back([&loop] {
-            adviseThreadHeap();
-            loop();
-        });
-    loop();
-    for (auto& t : pool) t.join();
+    runOnThreads(coresFor(gSearchThreads.load()), [&](size_t) { loop(); });
     if (failure) std::rethrow_exception(failure);
 }
 
