@@ -8,8 +8,9 @@ FUZZ_SECONDS ?= 30
 FUZZ_TARGETS ?=
 SANITIZE_BUILD ?= build-sanitize
 SHARED_SLR ?= ../shared/data/slr
+PREFIX ?= /usr/local
 
-.PHONY: all deps configure build test test-sanitize run bench fuzz clean
+.PHONY: all deps configure build test test-sanitize run bench fuzz install deb clean
 
 all: build
 
@@ -62,6 +63,20 @@ test-sanitize:
 	  if ls sanitizer-reports/* >/dev/null 2>&1; then \
 	    echo "test-sanitize: sanitizer reports:"; cat sanitizer-reports/*; rc=1; fi; \
 	  [ $$rc -eq 0 ] && echo "test-sanitize: suite green under ASan + UBSan"; exit $$rc
+
+# Installs the programs, man pages, desktop entry, icon, metainfo, bash completion and docs under
+# PREFIX (default /usr/local; `make install PREFIX=$$HOME/.local` needs no root). Through sudo when
+# PREFIX is not writable and you are not root.
+install: build
+	@if [ -w "$(PREFIX)" ] || { [ ! -e "$(PREFIX)" ] && [ -w "$$(dirname "$(PREFIX)")" ]; } || [ "$$(id -u)" -eq 0 ]; then \
+	  cmake --install $(BUILD) --prefix "$(PREFIX)"; \
+	else \
+	  sudo cmake --install $(BUILD) --prefix "$(PREFIX)"; \
+	fi
+
+# The Debian package (build/laserwb_VERSION_ARCH.deb): install it with `sudo apt install ./build/laserwb_*.deb`.
+deb: build
+	cd $(BUILD) && cpack -G DEB
 
 bench: build
 	./$(BUILD)/bin/laserwb-cli bench footprint

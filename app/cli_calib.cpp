@@ -119,7 +119,8 @@ const char* kSimCalibUsage =
     "usage: laserwb-cli simulate calib OUTDIR [--seed S] [--passes N] [--single-beam]\n"
     "Writes simulated calibration inputs with exact truth: beams.json, control_points.csv and\n"
     "pointing_truth.csv; detectors.csv and detector_truth.csv; waveform.csv, features.csv and\n"
-    "waveform_truth.csv.\n"
+    "waveform_truth.csv; diffs.csv (validation elevation differences per beam, for calib stats) and\n"
+    "diffs_truth.csv.\n"
     "  --seed S        random seed (default 1)\n"
     "  --passes N      calibration passes (default 4)\n"
     "  --single-beam   only beam 1 fires\n"
@@ -402,7 +403,7 @@ int cmdSimulateCalib(int argc, char** argv) {
     if (!folder.ok()) return fail(cmd, dir + ": cannot create the folder");
     core::OutputSet outs;
     for (const char* f : {"beams.json", "control_points.csv", "pointing_truth.csv", "detectors.csv", "detector_truth.csv",
-                          "waveform.csv", "features.csv", "waveform_truth.csv"})
+                          "waveform.csv", "features.csv", "waveform_truth.csv", "diffs.csv", "diffs_truth.csv"})
         outs.addOutput(dir + "/" + f);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     auto staged = [&](const char* name) { return outs.stagingPath(dir + "/" + name); };
@@ -455,6 +456,18 @@ int cmdSimulateCalib(int argc, char** argv) {
     }
     const std::string wtruth = "height_m,delta_t_ns,feature\n" + fx(wp.heightM, 6) + "," + fx(ws.deltaTNs, 6) + ",F" +
                                std::to_string(truthIndex + 1) + "\n";
+    // Validation differences (laser minus reference elevation, m) of each beam after calibration,
+    // as paper 002 checks them on flat ground: 24 points a beam about a small residual bias.
+    sim::Rng drng(sim::Rng::mix(s0, 5));
+    std::string diffs = "beam,d\n", dtruthStats = "beam,mean_m,sd_m,n\n";
+    for (int beam = 1; beam <= 2; ++beam) {
+        const double bias = drng.uniform(-0.05, 0.05), sd = drng.uniform(0.08, 0.14);
+        for (int i = 0; i < 24; ++i) diffs += std::to_string(beam) + "," + fx(bias + sd * drng.normal(), 3) + "\n";
+        dtruthStats += std::to_string(beam) + "," + fx(bias, 4) + "," + fx(sd, 4) + ",24\n";
+    }
+    if (!core::writeFileAtomic(staged("diffs.csv"), diffs, &err) ||
+        !core::writeFileAtomic(staged("diffs_truth.csv"), dtruthStats, &err))
+        return fail(cmd, outs.unstaged(err));
     if (!core::writeFileAtomic(staged("beams.json"), beamsToJson(beams), &err) ||
         !writeControlPointCsv(staged("control_points.csv"), cs.points, &err) ||
         !core::writeFileAtomic(staged("pointing_truth.csv"), truth, &err) ||
@@ -466,7 +479,8 @@ int cmdSimulateCalib(int argc, char** argv) {
     if (int rc = commitOutputs(cmd, outs)) return rc;
     folder.keep();
     if (!quiet(a)) std::cerr << "simulate calib: wrote " << dir << "/{beams.json, control_points.csv, pointing_truth.csv, "
-                             << "detectors.csv, detector_truth.csv, waveform.csv, features.csv, waveform_truth.csv}\n";
+                             << "detectors.csv, detector_truth.csv, waveform.csv, features.csv, waveform_truth.csv, diffs.csv, "
+                             << "diffs_truth.csv}\n";
     return kOk;
 }
 

@@ -5,6 +5,7 @@ namespace lwb::cli {
 int cmdFootprint(int argc, char** argv);
 int cmdSimulateFootprint(int argc, char** argv);
 int cmdTrend(int argc, char** argv);
+int cmdSimulateTrend(int argc, char** argv);
 int cmdEvalFootprint(int argc, char** argv);
 int cmdBenchFootprint(int argc, char** argv);
 // Altimeter calibration (paper 002) and radiometry (paper 003): app/cli_calib.cpp, app/cli_radiometry.cpp
@@ -18,6 +19,7 @@ int cmdRadiometryGcp(int argc, char** argv);
 int cmdRadiometryFit(int argc, char** argv);
 int cmdRadiometryApply(int argc, char** argv);
 int cmdRadiometryCheck(int argc, char** argv);
+int cmdSimulateRadiometry(int argc, char** argv);
 // SLR signal extraction (paper 004): app/cli_slr.cpp, app/cli_slr_sim.cpp
 int cmdSlr(int argc, char** argv);
 int cmdSimulateSlr(int argc, char** argv);

@@ -143,8 +143,19 @@ FolderForOutputs::~FolderForOutputs() {
 }
 
 int checkOutputs(const std::string& command, core::OutputSet& outs) {
-    if (outs.check()) return kOk;
-    return fail(command, outs.error(), outs.namingProblem() ? kUsage : kFailed);
+    if (!outs.check()) return fail(command, outs.error(), outs.namingProblem() ? kUsage : kFailed);
+    // An output to standard output ("-o -"): the data alone goes there; everything the command
+    // would print on standard output (its summary) goes to standard error instead.
+    static bool moved = false;
+    if (outs.writesStandardOutput() && !moved) {
+        std::cout.flush();
+        std::fflush(stdout);
+        const int data = ::dup(1);
+        if (data < 0 || ::dup2(2, 1) < 0) return fail(command, "cannot set standard output aside for the data");
+        core::setStandardOutputFd(data);
+        moved = true;
+    }
+    return kOk;
 }
 
 int commitOutputs(const std::string& command, core::OutputSet& outs) {

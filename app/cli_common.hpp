@@ -106,11 +106,6 @@ public:
         a.option("--print-config", false);
         for (const auto& al : m_aliases) a.option(al.flag, true);
     }
-    static const char* help() {
-        return "  --config FILE.json   parameters (every key: --print-config); the options below override it\n"
-               "  --set KEY=VALUE      set one parameter (repeatable), e.g. --set screen.cosine_c=0.97\n"
-               "  --print-config       print the effective parameters as JSON and exit\n";
-    }
     /// Applies --config, then `afterConfig` (a command's own option that sets several fields,
     /// such as a preset), then the aliases, then each --set, over *p. 0 when fine, else the exit
     /// code after printing why: 1 for a bad config file, 2 for a bad option.

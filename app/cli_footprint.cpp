@@ -17,6 +17,7 @@
 #include "core/footprint/batch.hpp"
 #include "core/footprint/crlb.hpp"
 #include "core/footprint/trend.hpp"
+#include "core/sim/centroid_sim.hpp"
 #include "core/sim/footprint_eval.hpp"
 #include "core/sim/rng.hpp"
 
@@ -165,10 +166,12 @@ const char* kSimUsage =
     "                       mixed: two normal shots, then one of each doubtful case in turn)\n"
     "  --size N             ROI side (default 32)\n"
     "  --full-frame         550x550 frames with the spot near --center (default 122,262: LFI beam 1)\n"
-    "  --center X,Y         spot position in full frames\n"
+    "  --center X,Y         spot position in full frames (within 3 px); give it twice for a two-beam\n"
+    "                       frame (e.g. 60,311 and 228,158: paper 001's LSI beams; truth in x2,y2)\n"
     "  --format png|tif|pgm|raw   image format (default png)\n"
-    "  --ground photo|synthetic   ground: real aerial photographs (default; Debian's opencv-doc) or the\n"
-    "                       older synthetic texture with roads, field edges and buildings\n";
+    "  --ground photo|synthetic   ground: real aerial photographs (default; OpenCV's sample aerial\n"
+    "                       views, shipped with the workbench) or the older synthetic texture with\n"
+    "                       roads, field edges and buildings\n";
 
 // --ground photo|synthetic into *g; false with *err when the value is unknown or photos are missing.
 bool groundOption(const Args& a, sim::GroundSource* g, std::string* err) {
@@ -186,7 +189,7 @@ bool groundOption(const Args& a, sim::GroundSource* g, std::string* err) {
 int cmdSimulateFootprint(int argc, char** argv) {
     Args a("simulate footprint", kSimUsage);
     for (const char* o : {"--count", "--seed", "--scene", "--case", "--size", "--center", "--format", "--ground"})
-        a.option(o, true);
+        a.option(o, true, std::string(o) == "--center");
     for (const char* o : {"--full-frame", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail("simulate footprint", a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
@@ -235,8 +238,18 @@ int cmdSimulateFootprint(int argc, char** argv) {
     }
     if (a.has("--center")) {
         if (!a.has("--full-frame")) return fail("simulate footprint", "--center goes with --full-frame", kUsage);
-        if (!parsePoint(a.value("--center"), &sp.centerX, &sp.centerY))
-            return fail("simulate footprint", "--center must be X,Y", kUsage);
+        const std::vector<std::string> centres = a.values("--center");
+        if (centres.size() > 2) return fail("simulate footprint", "--center: one or two (the two beams of a frame)", kUsage);
+        double* xs[2] = {&sp.centerX, &sp.center2X};
+        double* ys[2] = {&sp.centerY, &sp.center2Y};
+        for (size_t k = 0; k < centres.size(); ++k)
+            if (!parsePoint(centres[k], xs[k], ys[k]) || !(*xs[k] >= 0 && *xs[k] <= 549 && *ys[k] >= 0 && *ys[k] <= 549))
+                return fail("simulate footprint", "--center must be X,Y inside the 550x550 frame, not \"" + centres[k] + "\"",
+                            kUsage);
+        sp.hasSecondBeam = centres.size() == 2;
+        if (sp.hasSecondBeam && caseArg != "normal")
+            return fail("simulate footprint", "a two-beam frame (--center twice) takes normal spots only (--case normal)",
+                        kUsage);
     }
     const FolderForOutputs folder(dir);
     if (!folder.ok()) return fail("simulate footprint", dir + ": cannot create the folder");
@@ -278,7 +291,7 @@ int cmdSimulateFootprint(int argc, char** argv) {
 }
 
 namespace {
-const char* kTrendUsage =
+const std::string kTrendUsage =
     "usage: laserwb-cli trend IN.csv -o OUT.csv [--arcsec-per-px A] [--reject-sigma K] [--min-shots N]\n"
     "Monthly mean spot centroid per camera and beam (paper 001 long-term monitoring).\n"
     "IN.csv: header time,beam,x,y[,camera]; time as ISO date/date-time, YYYY-MM, or Unix seconds.\n"
@@ -286,21 +299,78 @@ const char* kTrendUsage =
     "         pointing_change_arcsec,beam_distance_px,distance_change_px (changes from the first month).\n"
     "  --arcsec-per-px A    pointing change per pixel (default 0.31, paper 001's LFC) = --set arcsec_per_px=A\n"
     "  --reject-sigma K     k-sigma rejection of shots within a month (default 3; 0 = off) = --set reject_sigma=K\n"
-    "  --min-shots N        leave out months with fewer shots (default 1) = --set min_shots=N\n";
+    "  --min-shots N        leave out months with fewer shots (default 1) = --set min_shots=N\n"
+    "\n" + ParamOptions<TrendParams>::paramsHelp("trend", "reject_sigma=2.5");
+}
+
+namespace {
+const char* kSimTrendUsage =
+    "usage: laserwb-cli simulate trend OUT.csv [--months N] [--shots N] [--seed S] [--truth TRUTH.csv]\n"
+    "Writes a simulated spot-centroid table (time,beam,x,y,camera) of both beams of the LFI footprint\n"
+    "camera over N months, as `laserwb-cli trend` reads it: each beam's true centre drifts (a linear\n"
+    "trend and an annual cycle drawn from the seed), shots scatter about it by 0.15 px and 2 % of them\n"
+    "are outliers 1.5-4 px off. The exact monthly centres go to --truth.\n"
+    "  --months N           consecutive months from 2020-03 (default 12)\n"
+    "  --shots N            shots per beam and month (default 20)\n"
+    "  --seed S             random seed (default 1); the same seed gives the same table\n"
+    "  --truth TRUTH.csv    camera,beam,month,x_true,y_true\n"
+    "  -q, --quiet          no summary\n";
+}
+
+int cmdSimulateTrend(int argc, char** argv) {
+    const std::string cmd = "simulate trend";
+    Args a(cmd, kSimTrendUsage);
+    for (const char* o : {"--months", "--shots", "--seed", "--truth"}) a.option(o, true);
+    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << kSimTrendUsage;
+        return kOk;
+    }
+    sim::CentroidSimParams p;
+    long long months = p.months, shots = p.shotsPerMonth, seed = 1;
+    std::string err;
+    if (!a.getInt("--months", 1, 600, &months, &err) || !a.getInt("--shots", 1, 100000, &shots, &err) ||
+        !a.getInt("--seed", 0, 1LL << 62, &seed, &err))
+        return fail(cmd, err, kUsage);
+    if (a.positional().size() != 1) return fail(cmd, "give exactly one output file (OUT.csv)", kUsage);
+    p.months = static_cast<int>(months);
+    p.shotsPerMonth = static_cast<int>(shots);
+    const std::string out = a.positional()[0], truthOut = a.value("--truth");
+    core::OutputSet outs;
+    outs.addOutput(out);
+    if (a.has("--truth")) outs.addOutput(truthOut);
+    if (int rc = checkOutputs(cmd, outs)) return rc;
+    const sim::CentroidSimulation s = sim::simulateCentroids(p, static_cast<uint64_t>(seed));
+    if (!s.ok) return fail(cmd, s.error);
+    std::string table = "time,beam,x,y,camera\n";
+    size_t outliers = 0;
+    for (const auto& shot : s.shots) {
+        table += shot.time + "," + std::to_string(shot.beam) + "," + core::formatFixed(shot.x, 3) + "," +
+                 core::formatFixed(shot.y, 3) + "," + p.camera + "\n";
+        outliers += shot.outlier;
+    }
+    if (!core::writeFileAtomic(outs.stagingPath(out), table, &err)) return fail(cmd, outs.unstaged(err));
+    if (a.has("--truth")) {
+        std::string truth = "camera,beam,month,x_true,y_true\n";
+        for (const auto& t : s.truth)
+            truth += p.camera + "," + std::to_string(t.beam) + "," + t.month + "," + core::formatFixed(t.x, 4) + "," +
+                     core::formatFixed(t.y, 4) + "\n";
+        if (!core::writeFileAtomic(outs.stagingPath(truthOut), truth, &err)) return fail(cmd, outs.unstaged(err));
+    }
+    if (int rc = commitOutputs(cmd, outs)) return rc;
+    if (!(a.has("-q") || a.has("--quiet")))
+        std::cerr << cmd << ": " << s.shots.size() << " shots (" << outliers << " outliers), " << p.months
+                  << " months, 2 beams -> " << out << "\n";
+    return kOk;
 }
 
 int cmdTrend(int argc, char** argv) {
     Args a("trend", kTrendUsage);
     const ParamOptions<TrendParams> params(
         trendSchema(), {{"--arcsec-per-px", "arcsec_per_px"}, {"--reject-sigma", "reject_sigma"}, {"--min-shots", "min_shots"}});
-    params.declare(a);
     for (const char* o : {"-o", "--output"}) a.option(o, true);
-    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 2)) return fail("trend", a.error(), kUsage);
-    if (a.has("--help") || a.has("-h")) {
-        std::cout << kTrendUsage << ParamOptions<TrendParams>::help() << "Parameters:\n" << trendSchema().describe({});
-        return kOk;
-    }
+    if (int rc = params.parseWithHelp(a, argc, argv, 2, "trend"); rc >= 0) return rc;
     TrendParams tp;
     std::string err;
     if (int rc = params.apply("trend", a, &tp)) return rc;

@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "core/common/allocator.hpp"
+#include "core/common/install_paths.hpp"
+#include "lwb_version.hpp"
 #include "cli_commands.hpp"
 #include "cli_common.hpp"
 
@@ -26,6 +28,7 @@ const char* kMainUsage =
     "  footprint            spot centre + verdict for frames/ROIs -> CSV\n"
     "  trend                monthly centroid means, pointing change, beam distance -> CSV\n"
     "  simulate footprint   simulated shots with exact truth\n"
+    "  simulate trend       a simulated centroid table (both beams, months) with exact truth\n"
     "  eval footprint       accuracy experiment on the simulator (Markdown table)\n"
     "  bench footprint      ROIs per second per method\n"
     "\n"
@@ -48,6 +51,7 @@ const char* kMainUsage =
     "  radiometry fit       DN -> reflectance line from marked regions, with uncertainty\n"
     "  radiometry apply     reflectance image (32-bit float TIFF) and relative-error check\n"
     "  radiometry check     relative errors of simulated vs measured reflectance\n"
+    "  simulate radiometry  the frames of a row, grey panels, check surfaces and control points\n"
     "\n"
     "Other:\n"
     "  demo                 a short end-to-end run on simulated data\n"
@@ -61,26 +65,31 @@ int demo(int argc, char** argv);
 // The commands laserwb-cli-imaging runs.
 bool isImagingCommand(const std::string& cmd, const std::string& sub) {
     if (cmd == "footprint" || cmd == "trend" || cmd == "demo") return true;
-    if (cmd == "simulate" || cmd == "eval" || cmd == "bench") return sub == "footprint" || (cmd == "simulate" && sub == "calib");
+    if (cmd == "simulate" || cmd == "eval" || cmd == "bench")
+        return sub == "footprint" || (cmd == "simulate" && (sub == "calib" || sub == "trend" || sub == "radiometry"));
     if (cmd == "calib") return sub == "detector" || sub == "waveform" || sub == "pointing" || sub == "stats";
     if (cmd == "radiometry") return sub == "mosaic" || sub == "gcp" || sub == "fit" || sub == "apply" || sub == "check";
     return false;
 }
 
-// Runs laserwb-cli-imaging (beside this program) with the same arguments, in this process's
-// place; returns only when it cannot be started.
+// Runs laserwb-cli-imaging (beside this program in the build tree, in libexec/laserwb/ when
+// installed) with the same arguments, in this process's place; returns only when it cannot be
+// started.
 int runImaging(int argc, char** argv) {
-    char self[PATH_MAX];
-    const ssize_t len = readlink("/proc/self/exe", self, sizeof self - 1);
-    std::string dir = len > 0 ? std::string(self, static_cast<size_t>(len)) : std::string(argv[0]);
-    dir.erase(dir.find_last_of('/') == std::string::npos ? 0 : dir.find_last_of('/') + 1);
-    const std::string helper = dir + "laserwb-cli-imaging";
     std::vector<char*> args(argv, argv + argc);
     args.push_back(nullptr);
     std::cout.flush();
-    execv(helper.c_str(), args.data());
-    return lwb::cli::fail(argv[1], std::string("this command runs ") + helper + ", which could not be started: " +
-                                       std::strerror(errno) + " (it is built beside laserwb-cli)");
+    std::string tried;
+    for (const std::string& helper : lwb::core::helperCandidates("laserwb-cli-imaging")) {
+        if (access(helper.c_str(), X_OK) != 0) {
+            tried += (tried.empty() ? "" : ", ") + helper + " (" + std::strerror(errno) + ")";
+            continue;
+        }
+        execv(helper.c_str(), args.data());
+        tried += (tried.empty() ? "" : ", ") + helper + " (" + std::strerror(errno) + ")";
+    }
+    return lwb::cli::fail(argv[1], "this command runs laserwb-cli-imaging, which could not be started: tried " + tried +
+                                       " (it is built beside laserwb-cli and installed in libexec/laserwb/)");
 }
 #endif
 }  // namespace
@@ -125,6 +134,8 @@ int dispatch(int argc, char** argv) {
     if (cmd == "calib" && sub == "pointing") return cmdCalibPointing(argc, argv);
     if (cmd == "calib" && sub == "stats") return cmdCalibStats(argc, argv);
     if (cmd == "simulate" && sub == "calib") return cmdSimulateCalib(argc, argv);
+    if (cmd == "simulate" && sub == "trend") return cmdSimulateTrend(argc, argv);
+    if (cmd == "simulate" && sub == "radiometry") return cmdSimulateRadiometry(argc, argv);
     if (cmd == "radiometry" && sub == "mosaic") return cmdRadiometryMosaic(argc, argv);
     if (cmd == "radiometry" && sub == "gcp") return cmdRadiometryGcp(argc, argv);
     if (cmd == "radiometry" && sub == "fit") return cmdRadiometryFit(argc, argv);
@@ -143,11 +154,11 @@ int dispatch(int argc, char** argv) {
         return fail(cmd, (sub.empty() ? "which one? (" : "unknown kind \"" + sub + "\" (") + subs + ")", kUsage);
     }
     if (cmd == "version" || cmd == "--version") {
-        std::cout << "laserwb-cli 0.1.0\n";
+        std::cout << "laserwb-cli " LWB_VERSION "\n";
         return kOk;
     }
     if (cmd == "simulate" || cmd == "eval" || cmd == "bench") {
-        const char* kinds = cmd == "simulate" ? "footprint, slr, calib" : cmd == "bench" ? "footprint, slr" : "footprint";
+        const char* kinds = cmd == "simulate" ? "footprint, trend, slr, calib, radiometry" : cmd == "bench" ? "footprint, slr" : "footprint";
         if (sub == "--help" || sub == "-h") {
             std::cout << "usage: laserwb-cli " << cmd << " (" << kinds << ") [options]; each has --help\n";
             return kOk;
@@ -163,8 +174,20 @@ int dispatch(int argc, char** argv) {
 namespace {
 // Simulates a few shots into a temporary folder, runs the footprint command on them and
 // prints the report (a quick check of an installation without a display).
-int demo(int, char**) {
+int demo(int argc, char** argv) {
     using namespace lwb::cli;
+    Args a("demo",
+           "usage: laserwb-cli demo\n"
+           "Simulates 12 footprint shots (weak, moderate, strong and night ground) in a new temporary folder,\n"
+           "finds their spot centres with the default method and prints the truth beside the report: a quick\n"
+           "check of an installation without a display. Writes nothing outside that folder.\n");
+    for (const char* o : {"--help", "-h"}) a.option(o, false);
+    if (!a.parse(argc, argv, 2)) return fail("demo", a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << a.usage();
+        return kOk;
+    }
+    if (!a.positional().empty()) return fail("demo", "takes no arguments", kUsage);
     std::string dir = "/tmp/laserwb-demo-XXXXXX";
     if (!mkdtemp(dir.data())) return fail("demo", "cannot create a temporary folder");
     std::cout << "Simulating 12 footprint shots (weak, moderate, strong, night) in " << dir << " ...\n";

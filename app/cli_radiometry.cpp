@@ -11,6 +11,8 @@
 #include "core/radiometry/mosaic.hpp"
 #include "core/radiometry/radiometry_params.hpp"
 #include "core/radiometry/reflectance.hpp"
+#include "core/sim/demo_data.hpp"
+#include "core/sim/rng.hpp"
 
 namespace lwb::cli {
 
@@ -415,6 +417,95 @@ int cmdRadiometryCheck(int argc, char** argv) {
               << " %)\n";
     warn(cmd, r.warnings);
     return r.allWithinLimit ? kOk : kFailed;
+}
+
+namespace {
+const char* kSimRadiometryUsage =
+    "usage: laserwb-cli simulate radiometry OUTDIR\n"
+    "Writes the inputs of a zero stadia standard image (paper 003) with exact truth, the field of the\n"
+    "workbench's radiometry demo: a textured ground with six grey panels of known reflectance and four\n"
+    "check surfaces, photographed as six overlapping 16-bit frames of one row.\n"
+    "  OUTDIR/frame_1.png ... frame_6.png   the frames in scan order (radiometry mosaic)\n"
+    "  OUTDIR/regions.csv   the grey panels: name, reflectance (%), x, y, w, h on the row image that\n"
+    "                       `radiometry mosaic` makes of the frames with default settings (radiometry fit)\n"
+    "  OUTDIR/check.csv     the check surfaces, the same way (radiometry apply --check, radiometry check)\n"
+    "  OUTDIR/gcps.csv      six ground control points: id, x, y on the row image (picked to 0.3 px),\n"
+    "                       map_x, map_y in metres (1 cm ground pixels, Y up; surveyed to 2 mm)\n"
+    "                       (radiometry gcp)\n"
+    "  OUTDIR/truth.csv     the simulated line V_REF = k * V_DN + b (%)\n";
+}
+
+int cmdSimulateRadiometry(int argc, char** argv) {
+    const std::string cmd = "simulate radiometry";
+    Args a(cmd, kSimRadiometryUsage);
+    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << kSimRadiometryUsage;
+        return kOk;
+    }
+    if (a.positional().size() != 1) return fail(cmd, "give exactly one output folder", kUsage);
+    const std::string dir = a.positional()[0];
+    const FolderForOutputs folder(dir);
+    if (!folder.ok()) return fail(cmd, dir + ": cannot create the folder");
+    const core::sim::RadiometryDemoField field = core::sim::demoRadiometryField();
+    core::OutputSet outs;
+    std::vector<std::string> names;
+    for (size_t k = 0; k < field.frames.size(); ++k) {
+        names.push_back(dir + "/frame_" + std::to_string(k + 1) + ".png");
+        outs.addOutput(names.back());
+    }
+    for (const char* f : {"/regions.csv", "/check.csv", "/gcps.csv", "/truth.csv"}) outs.addOutput(dir + f);
+    if (int rc = checkOutputs(cmd, outs)) return rc;
+    // The regions as an analyst would mark them on the row image: scene pixels mapped through
+    // frame 1's transform in the mosaic of these frames with default settings.
+    const MosaicResult m = mosaicRow(field.frames, RadiometryParams{}.mosaic);
+    if (!m.ok) return fail(cmd, "internal error: the simulated frames do not mosaic: " + m.error);
+    const cv::Matx33d& t = m.frameToMosaic[0];
+    auto toRow = [&](double x, double y) {
+        const cv::Vec3d v = t * cv::Vec3d(x - field.frame0.x, y - field.frame0.y, 1);
+        return cv::Point2d(v[0] / v[2], v[1] / v[2]);
+    };
+    std::string regions = "name,reflectance,x,y,w,h\n", checks = regions;
+    for (const auto& r : field.regions) {
+        const cv::Point2d p0 = toRow(r.rect.x, r.rect.y), p1 = toRow(r.rect.x + r.rect.width, r.rect.y + r.rect.height);
+        const long x0 = std::lround(p0.x), y0 = std::lround(p0.y);
+        (r.check ? checks : regions) += r.name + "," + core::formatDouble(r.reflectance, 6) + "," + std::to_string(x0) + "," +
+                                        std::to_string(y0) + "," + std::to_string(std::lround(p1.x) - x0) + "," +
+                                        std::to_string(std::lround(p1.y) - y0) + "\n";
+    }
+    // Control points: marks on the ground at known scene positions, surveyed at 1 cm per scene
+    // pixel (map Y up) to 2 mm, found on the row image where the mosaic put them and picked there
+    // to 0.3 px (both errors Gaussian, 1 sigma, from a fixed seed).
+    std::string gcps = "id,x,y,map_x,map_y\n";
+    core::sim::Rng pick(20261127);
+    const int sceneH = field.frames[0].rows + 2 * field.frame0.y;
+    const double marks[][2] = {{60, 40}, {700, 50}, {1500, 45}, {80, 320}, {900, 330}, {1600, 310}};
+    int id = 0;
+    for (const auto& mk : marks) {
+        const double sx = field.frame0.x + mk[0], sy = field.frame0.y + mk[1];
+        const cv::Point2d q = toRow(sx, sy);
+        if (q.x < 0 || q.y < 0 || q.x > m.image.cols - 1 || q.y > m.image.rows - 1) continue;
+        const double px = q.x + 0.3 * pick.normal(), py = q.y + 0.3 * pick.normal();
+        const double mx = sx * 0.01 + 0.002 * pick.normal(), my = (sceneH - sy) * 0.01 + 0.002 * pick.normal();
+        gcps += "G" + std::to_string(++id) + "," + core::formatFixed(px, 2) + "," + core::formatFixed(py, 2) + "," +
+                core::formatFixed(mx, 4) + "," + core::formatFixed(my, 4) + "\n";
+    }
+    std::string err;
+    for (size_t k = 0; k < field.frames.size(); ++k)
+        if (!writeImage(outs.stagingPath(names[k]), field.frames[k], &err)) return fail(cmd, outs.unstaged(err));
+    const std::string truth = "k,b\n" + core::formatDouble(field.k, 12) + "," + core::formatDouble(field.b, 12) + "\n";
+    if (!core::writeFileAtomic(outs.stagingPath(dir + "/regions.csv"), regions, &err) ||
+        !core::writeFileAtomic(outs.stagingPath(dir + "/check.csv"), checks, &err) ||
+        !core::writeFileAtomic(outs.stagingPath(dir + "/gcps.csv"), gcps, &err) ||
+        !core::writeFileAtomic(outs.stagingPath(dir + "/truth.csv"), truth, &err))
+        return fail(cmd, outs.unstaged(err));
+    if (int rc = commitOutputs(cmd, outs)) return rc;
+    folder.keep();
+    if (!quiet(a))
+        std::cerr << cmd << ": " << field.frames.size() << " frames, 6 grey panels, 4 check surfaces, " << id
+                  << " control points -> " << dir << "\n";
+    return kOk;
 }
 
 }  // namespace lwb::cli

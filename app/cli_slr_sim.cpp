@@ -69,12 +69,15 @@ bool writePassCsv(const std::string& path, const sim::SlrSimPass& pass, bool ful
 const char* kSimUsage =
     "usage: laserwb-cli simulate slr [--kind khz|conventional|diffuse|leo] [--points N] [--duration S]\n"
     "                                [--signal-fraction F] [--day|--night] [--drift NS_PER_S]\n"
-    "                                [--curvature NS_PER_S2] [--gaps LIST] --seed S OUT.csv\n"
+    "                                [--curvature NS_PER_S2] [--gaps LIST] --seed S OUT.csv|OUT.frd\n"
     "Simulates one SLR pass with exact truth: O-C = b + (2/c)·rho'(t)·tau (range bias b, time bias tau,\n"
     "range rate of a straight-line flyby) + jitter, and noise uniform over the range gate.\n"
     "OUT.csv columns: epoch_s (s of day), oc_s (two-way O-C, s), truth (1 signal, 0 noise),\n"
     "track_oc_s (the exact model O-C at that epoch), tof_s (observed two-way time of flight, s).\n"
     "Readers of epoch_s,oc_s ignore the other columns. A summary of the pass goes to stderr.\n"
+    "OUT.frd (or .fr2, .crd): the pass as a CRD v2 full-rate file instead (epoch, time of flight; the\n"
+    "filter flag is the truth: 2 signal, 1 noise), of a simulated station ranging 'lageos1' (the\n"
+    "conventional kind) or 'simsat-KIND'.\n"
     "  --kind K              khz (2 kHz single-photon, LEO; default), conventional (10 Hz, LAGEOS),\n"
     "                        diffuse (20 Hz debris ranging), leo (10 Hz multi-photon, Jason-class\n"
     "                        satellite, low pass, noisy station)\n"
@@ -87,7 +90,8 @@ const char* kSimUsage =
     "  --gaps LIST           gaps in the track, comma-separated START:LENGTH[:SHIFT_NS][:nodata]\n"
     "                        (s from the first shot; no signal inside, noise goes on unless nodata;\n"
     "                        SHIFT_NS moves the track from the end of the gap on)\n"
-    "  --seed S              random seed; the same seed gives the same file\n";
+    "  --seed S              random seed; the same seed gives the same file\n"
+    "Example: laserwb-cli simulate slr --kind conventional --seed 3 pass.frd\n";
 
 }  // namespace
 
@@ -126,7 +130,12 @@ int cmdSimulateSlr(int argc, char** argv) {
     const sim::SlrSimPass pass = sim::simulateSlrPass(p, static_cast<uint64_t>(seed));
     if (!pass.ok) return fail(cmd, pass.error);
     const std::string out = a.positional()[0];
-    if (!writePassCsv(out, pass, true, &err)) return fail(cmd, err);
+    const std::string ext = core::inputExtension(out);
+    if (ext == "frd" || ext == "fr2" || ext == "crd") {
+        if (!core::writeFileAtomic(out, sim::slrPassCrd(p, pass), &err)) return fail(cmd, err);
+    } else if (!writePassCsv(out, pass, true, &err)) {
+        return fail(cmd, err);
+    }
     if (!(a.has("-q") || a.has("--quiet")))
         std::cerr << "simulate slr: " << sim::slrKindName(kind) << (p.daylight ? " day" : " night") << " pass, "
                   << pass.epochS.size() << " points (" << pass.signalCount << " signal, " << pass.noiseCount

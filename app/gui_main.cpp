@@ -1,6 +1,6 @@
 // laserwb: the workbench. With no arguments it opens the built-in demo.
-//   laserwb [SESSION]
-//   laserwb --screenshot OUT.png [--workspace footprint|slr] [--size WxH] [SESSION]
+//   laserwb [FILE...]   a session, or inputs opened where they belong (MainWindow::openPaths)
+//   laserwb --screenshot OUT.png [--workspace footprint|slr] [--size WxH] [FILE...]
 #include <cstdio>
 
 #include <QApplication>
@@ -9,6 +9,7 @@
 #include <QTimer>
 
 #include "core/common/allocator.hpp"
+#include "lwb_version.hpp"
 #include "ui/main_window.hpp"
 
 int main(int argc, char** argv) {
@@ -32,12 +33,17 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setApplicationName("laserwb");
     QApplication::setOrganizationName("LaserWorkbench");
-    QApplication::setApplicationVersion("0.1.0");
+    QApplication::setApplicationVersion(LWB_VERSION);
+    QGuiApplication::setDesktopFileName("io.github.laserwb.LaserWorkbench");  // resources/desktop/
     QCommandLineParser cli;
     cli.setApplicationDescription("Laser Workbench: footprint spot review, SLR pass screening, calibration.");
     cli.addHelpOption();
     cli.addVersionOption();
-    cli.addPositionalArgument("session", "A session file (.lwb.json) to open; none opens the built-in demo.");
+    cli.addPositionalArgument("FILE",
+                              "What to open, each where it belongs: a session (.json); a CRD pass (.frd .fr2 .crd, "
+                              "gzip too) or an O-C table with its CPF prediction and SINEX station file (SLR); "
+                              "footprint images, a folder of frames or a shot list (footprint). None: the built-in demo.",
+                              "[FILE...]");
     QCommandLineOption shot("screenshot", "Render the window to OUT.png and exit.", "OUT.png");
     QCommandLineOption ws("workspace",
                           "Workspace (and tab) to show: footprint, footprint:trend, slr, calibration, "
@@ -54,7 +60,7 @@ int main(int argc, char** argv) {
         w.openDemo();
     } else {
         QString err;
-        if (!w.openSession(args.first(), cli.isSet(shot), &err) && cli.isSet(shot)) {
+        if (!w.openPaths(args, &err) && cli.isSet(shot)) {
             fprintf(stderr, "laserwb: %s\n", qPrintable(err));
             return 1;
         }

@@ -718,7 +718,7 @@ private slots:
         QVERIFY(r.out.contains("  slr "));
         r = runCli({"simulate"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("which one? (footprint, slr, calib)"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("which one? (footprint, trend, slr, calib, radiometry)"), qPrintable(r.err));
         r = runCli({"bench", "lunar"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("unknown kind \"lunar\" (footprint, slr)"), qPrintable(r.err));

@@ -1,6 +1,8 @@
 #include <cmath>
 #include "ui/main_window.hpp"
 
+#include "core/common/atomic_file.hpp"
+
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
@@ -57,11 +59,14 @@ const QStringList kCrdSuffixes = {"frd", "fr2", "npt", "np2", "crd", "v2c", "qlk
 const QStringList kImageSuffixes = {"png", "tif", "tiff", "pgm", "raw", "bin"};
 
 // The first line that is not empty or a comment, lower-cased (for telling CSV kinds apart).
+// The first line that is not blank or a '#' comment, lower case: of the decompressed text when
+// the file is gzip-compressed. Only regular files are looked into (a FIFO would block).
 QString firstLine(const QString& path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) return QString();
-    for (int i = 0; i < 50 && !f.atEnd(); ++i) {
-        const QString line = QString::fromUtf8(f.readLine(4096)).trimmed().toLower();
+    std::string head, why;
+    if (!lwb::core::readFileHead(path.toStdString(), 65536, &head, &why)) return QString();
+    const QStringList lines = QString::fromUtf8(head.data(), int(head.size())).split('\n');
+    for (int i = 0; i < 50 && i < lines.size(); ++i) {
+        const QString line = lines[i].trimmed().toLower();
         if (!line.isEmpty() && !line.startsWith('#')) return line;
     }
     return QString();
@@ -242,9 +247,12 @@ void MainWindow::buildMenus() {
     help->addSeparator();
     help->addAction(tr("&About"), this, [this] {
         QMessageBox::about(this, tr("About Laser Workbench"),
-                           tr("<b>Laser Workbench</b> 0.1<br>Footprint spot centres, SLR signal extraction, "
+                           tr("<b>Laser Workbench</b> %1<br>Footprint spot centres, SLR signal extraction, "
                               "altimeter and radiometric calibration.<br>Every GUI action has a batch "
-                              "equivalent in <tt>laserwb-cli</tt>."));
+                              "equivalent in <tt>laserwb-cli</tt>.<br><br>Free software under the GNU General "
+                              "Public License, version 3 or later. The methods and their papers: "
+                              "docs/algorithms.md and docs/references.md.")
+                               .arg(QApplication::applicationVersion()));
     });
     rebuildRecentMenu();
     rebuildRecentInputsMenu();
@@ -409,11 +417,15 @@ void MainWindow::openInputs() {
 QString MainWindow::workspaceForPath(const QString& path) const {
     const QFileInfo fi(path);
     if (fi.isDir()) return "footprint";
-    const QString suffix = fi.suffix().toLower();
-    if (kImageSuffixes.contains(suffix))
+    const QString suffix = QString::fromStdString(lwb::core::inputExtension(path.toStdString()));  // (without .gz)
+    const bool gz = fi.suffix().toLower() == "gz";
+    if (kImageSuffixes.contains(suffix) && !gz)
         return m_tabs->currentWidget() == m_radiometry && suffix != "raw" && suffix != "bin" ? "radiometry" : "footprint";
-    if (kCrdSuffixes.contains(suffix)) return "slr";
     const QString head = firstLine(path);
+    // A prediction or station coordinates go with the SLR pass (by their first record or name).
+    if (head.startsWith("h1 cpf") || suffix == "cpf" || suffix == "hts") return "slr-cpf";
+    if (head.startsWith("%=snx") || suffix == "snx") return "slr-sinex";
+    if (kCrdSuffixes.contains(suffix)) return "slr";
     if (suffix == "json") return head.contains("{") || head.isEmpty() ? "session" : QString();
     if (suffix == "csv" || suffix == "txt") {
         if (head.contains("oc_s") || head.contains("epoch_s")) return "slr";
@@ -426,14 +438,18 @@ QString MainWindow::workspaceForPath(const QString& path) const {
 }
 
 bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
-    QStringList problems, footprint, radiometry;
+    QStringList problems, footprint, radiometry, cpf, sinex;
     for (const QString& p : paths) {
         if (!QFileInfo::exists(p)) {
             problems << tr("%1: no such file or folder").arg(p);
             continue;
         }
         const QString where = workspaceForPath(p);
-        if (where == "footprint") {
+        if (where == "slr-cpf") {
+            cpf << p;  // after the pass (given before or after it)
+        } else if (where == "slr-sinex") {
+            sinex << p;
+        } else if (where == "footprint") {
             footprint << p;
         } else if (where == "radiometry") {
             radiometry << p;
@@ -450,10 +466,21 @@ bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
             QString err;
             if (!openSession(p, true, &err)) problems << err;
         } else {
-            problems << tr("%1: not a file the workbench opens (CRD, O-C or shot-list CSV, images, a folder of frames, "
-                           "a session)")
+            problems << tr("%1: not a file the workbench opens (CRD, CPF, SINEX, O-C or shot-list CSV, images, a "
+                           "folder of frames, a session)")
                             .arg(p);
         }
+    }
+    for (const QStringList* list : {&sinex, &cpf}) {
+        if (list->size() > 1) {
+            problems << tr("%1 and %2: one %3 at a time").arg(list->at(0), list->at(1), list == &cpf ? tr("prediction") : tr("station file"));
+            continue;
+        }
+        if (list->isEmpty()) continue;
+        QString err;
+        const bool ok = list == &cpf ? m_slr->setCpf(list->first(), &err) : m_slr->setSinex(list->first(), &err);
+        if (!ok) problems << err;
+        else m_tabs->setCurrentWidget(m_slr);
     }
     if (!footprint.isEmpty()) {
         openFootprintInputs(footprint);

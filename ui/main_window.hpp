@@ -56,11 +56,13 @@ public:
     bool waitIdle(int timeoutMs);
 
     /// Opens files or folders where they belong (dropped on the window, recent inputs):
-    /// CRD (.frd .fr2 .npt .np2 .crd) and O-C tables → SLR; a session (.json) → the session;
+    /// CRD (.frd .fr2 .npt .np2 .crd) and O-C tables → SLR, and a CPF or SINEX file as its
+    /// prediction or station coordinates (gzip-compressed ones too); a session (.json) → the session;
     /// images and folders → footprint (radiometry when it is the current workspace); a shot list
     /// (.csv) → footprint. False with *error naming what could not be opened and why.
     bool openPaths(const QStringList& paths, QString* error = nullptr);
-    /// Which workspace a path opens in: "slr", "footprint", "radiometry", "session" or "" (none).
+    /// Which workspace a path opens in: "slr", "slr-cpf", "slr-sinex", "footprint", "radiometry",
+    /// "session" or "" (none).
     QString workspaceForPath(const QString& path) const;
     /// Ctrl+O / Ctrl+E: the current workspace's open and export.
     void openForCurrent();

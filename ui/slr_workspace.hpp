@@ -60,6 +60,8 @@ public:
     /// New CPF (a file or a folder) or SINEX; "" clears it. The open pass is read again.
     bool setCpf(const QString& path, QString* error);
     bool setSinex(const QString& path, QString* error);
+    QString cpfPath() const { return m_cpfPath; }
+    QString sinexPath() const { return m_snxPath; }
     /// Exports the pass as CRD full rate with the screening's flags: `wholeFile` = every pass of
     /// the file with this pass's flags set, else this pass alone. *message says what was written.
     bool exportCrd(const QString& path, bool wholeFile, QString* message);

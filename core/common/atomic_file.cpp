@@ -9,8 +9,13 @@
 #include <cstring>
 #include <random>
 #include <sstream>
+#include <fstream>
+#include <mutex>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
+
+#include "core/common/text.hpp"
 
 namespace lwb::core {
 
@@ -125,7 +130,137 @@ bool regularFileProblem(const std::string& path, std::string* error, long long* 
     return false;
 }
 
+namespace {
+bool isGzip(const std::string& s) {
+    return s.size() >= 2 && static_cast<unsigned char>(s[0]) == 0x1f && static_cast<unsigned char>(s[1]) == 0x8b;
+}
+
+// Standard input, read once for the whole process (see readFileText).
+struct StandardInput {
+    std::once_flag once;
+    bool ok = false;
+    std::string data, error;
+};
+StandardInput& standardInput() {
+    static StandardInput s;
+    return s;
+}
+
+const StandardInput& readStandardInput(long long maxBytes) {
+    StandardInput& s = standardInput();
+    std::call_once(s.once, [&] {
+        if (::isatty(0)) {
+            s.error = "-: standard input is a terminal; pipe a file into it (cat FILE | ...) or name the file";
+            return;
+        }
+        try {
+            char buf[1 << 16];
+            for (;;) {
+                const ssize_t n = ::read(0, buf, sizeof buf);
+                if (n < 0 && errno == EINTR) continue;
+                if (n < 0) {
+                    s.error = std::string("-: cannot read standard input: ") + std::strerror(errno);
+                    return;
+                }
+                if (n == 0) break;
+                s.data.append(buf, static_cast<size_t>(n));
+                if (maxBytes > 0 && static_cast<long long>(s.data.size()) > maxBytes) {
+                    s.error = "-: standard input is larger than the limit of " + std::to_string(maxBytes) +
+                              " bytes for a text input";
+                    s.data.clear();
+                    return;
+                }
+            }
+        } catch (const std::bad_alloc&) {
+            s.data.clear();
+            s.error = "-: out of memory reading standard input";
+            return;
+        }
+        s.ok = true;
+    });
+    return s;
+}
+}  // namespace
+
+bool gunzip(const char* data, size_t size, std::string* out, std::string* error, long long maxBytes, size_t stopAfter) {
+    out->clear();
+    if (size > UINT_MAX) {
+        *error = "a compressed input of more than 4 GiB is not read";
+        return false;
+    }
+    z_stream zs{};
+    if (inflateInit2(&zs, 15 + 32) != Z_OK) {  // 15 + 32: a gzip or a zlib header, told apart by zlib
+        *error = "cannot start the gzip decoder";
+        return false;
+    }
+    zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data));
+    zs.avail_in = static_cast<uInt>(size);
+    char buf[1 << 16];
+    bool ok = true;
+    try {
+        for (;;) {
+            zs.next_out = reinterpret_cast<Bytef*>(buf);
+            zs.avail_out = sizeof buf;
+            const int rc = inflate(&zs, Z_NO_FLUSH);
+            out->append(buf, sizeof buf - zs.avail_out);
+            if (maxBytes > 0 && static_cast<long long>(out->size()) > maxBytes) {
+                *error = "decompresses to more than the limit of " + std::to_string(maxBytes) + " bytes for a text input";
+                ok = false;
+                break;
+            }
+            if (stopAfter > 0 && out->size() >= stopAfter) break;
+            if (rc == Z_STREAM_END) {
+                if (zs.avail_in == 0) break;
+                // Another gzip member may follow (cat a.gz b.gz > c.gz); anything else is an error.
+                if (zs.avail_in >= 2 && zs.next_in[0] == 0x1f && zs.next_in[1] == 0x8b) {
+                    inflateReset(&zs);
+                    continue;
+                }
+                *error = "data after the end of the gzip stream";
+                ok = false;
+                break;
+            }
+            if (rc == Z_BUF_ERROR && zs.avail_in == 0) {
+                // A head (stopAfter) may be cut out of a longer stream: what came out is enough.
+                if (stopAfter > 0) break;
+                *error = "the gzip stream is truncated (it ends before its end marker)";
+                ok = false;
+                break;
+            }
+            if (rc != Z_OK && rc != Z_BUF_ERROR) {
+                *error = std::string("not a valid gzip stream: ") + (zs.msg ? zs.msg : "data error");
+                ok = false;
+                break;
+            }
+        }
+    } catch (const std::bad_alloc&) {
+        *error = "out of memory decompressing";
+        ok = false;
+    }
+    inflateEnd(&zs);
+    if (!ok) out->clear();
+    return ok;
+}
+
 bool readFileText(const std::string& path, std::string* content, std::string* error, long long maxBytes) {
+    std::string raw;
+    if (isStandardStream(path)) {
+        const StandardInput& in = readStandardInput(maxBytes);
+        if (!in.ok) {
+            if (error) *error = in.error;
+            return false;
+        }
+        if (!isGzip(in.data)) {
+            *content = in.data;
+            return true;
+        }
+        std::string why;
+        if (!gunzip(in.data.data(), in.data.size(), content, &why, maxBytes)) {
+            if (error) *error = path + ": " + why;
+            return false;
+        }
+        return true;
+    }
     long long size = 0;
     if (regularFileProblem(path, error, &size)) return false;
     if (maxBytes > 0 && size > maxBytes) {
@@ -151,7 +286,55 @@ bool readFileText(const std::string& path, std::string* content, std::string* er
         if (error) *error = path + ": out of memory reading " + std::to_string(size) + " bytes";
         return false;
     }
+    if (!isGzip(*content)) return true;
+    raw.swap(*content);
+    std::string why;
+    if (!gunzip(raw.data(), raw.size(), content, &why, maxBytes)) {
+        if (error) *error = path + ": " + why;
+        return false;
+    }
     return true;
+}
+
+bool readFileHead(const std::string& path, size_t n, std::string* head, std::string* error) {
+    std::string raw;
+    if (isStandardStream(path)) {
+        const StandardInput& in = readStandardInput(kMaxTextInputBytes);
+        if (!in.ok) {
+            if (error) *error = in.error;
+            return false;
+        }
+        raw = in.data.substr(0, std::max<size_t>(n, 1 << 16));
+    } else {
+        if (regularFileProblem(path, error)) return false;
+        std::ifstream in(path, std::ios::binary);
+        if (!in) {
+            if (error) *error = path + ": cannot open: " + std::strerror(errno);
+            return false;
+        }
+        raw.resize(std::max<size_t>(n, 1 << 16));
+        in.read(raw.data(), static_cast<std::streamsize>(raw.size()));
+        raw.resize(static_cast<size_t>(in.gcount()));
+    }
+    if (isGzip(raw)) {
+        std::string why;
+        if (!gunzip(raw.data(), raw.size(), head, &why, 0, n)) {
+            if (error) *error = path + ": " + why;
+            return false;
+        }
+    } else {
+        *head = std::move(raw);
+    }
+    if (head->size() > n) head->resize(n);
+    return true;
+}
+
+std::string inputExtension(const std::string& path) {
+    std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+    std::string low = toLower(name);
+    if (low.size() > 3 && low.compare(low.size() - 3, 3, ".gz") == 0) low.resize(low.size() - 3);
+    const size_t dot = low.find_last_of('.');
+    return dot == std::string::npos ? std::string() : low.substr(dot + 1);
 }
 
 }  // namespace lwb::core

@@ -42,7 +42,27 @@ bool regularFileProblem(const std::string& path, std::string* error, long long* 
 
 /// Reads a whole regular file of at most maxBytes (0 = no limit); false and *error
 /// ("FILE: reason") on failure, including out of memory.
+///  - "-" is standard input, read once and kept, so that a reader that looks at the start of an
+///    input first (isCrdFile) and then reads it whole sees the same bytes; a terminal on standard
+///    input is refused (it would wait for typing).
+///  - A gzip-compressed input (by its magic bytes 1f 8b, whatever its name; several members are
+///    read one after the other) is decompressed, and maxBytes applies to what it decompresses to.
 bool readFileText(const std::string& path, std::string* content, std::string* error,
                   long long maxBytes = kMaxTextInputBytes);
+
+/// "-": standard input (or output, for an output).
+inline bool isStandardStream(const std::string& path) { return path == "-"; }
+
+/// The first bytes (up to `n`) of a text input as readFileText would give them: decompressed
+/// when gzip, from the kept standard input for "-". False with *error when it cannot be read.
+bool readFileHead(const std::string& path, size_t n, std::string* head, std::string* error);
+
+/// The lower-case extension of an input's name without a trailing ".gz" ("pass.frd.gz" → "frd").
+std::string inputExtension(const std::string& path);
+
+/// Decompresses a gzip (or zlib) stream of `size` bytes into *out, at most maxBytes (0 = no
+/// limit) of it; stops early once `stopAfter` bytes are out (0 = never). False with *error ("why").
+bool gunzip(const char* data, size_t size, std::string* out, std::string* error, long long maxBytes,
+            size_t stopAfter = 0);
 
 }  // namespace lwb::core

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include "core/codecs_module/codec_api.hpp"
+#include "core/common/install_paths.hpp"
 
 #ifndef LWB_CODECS_BUILD_PATH
 #define LWB_CODECS_BUILD_PATH ""
@@ -13,15 +14,6 @@
 namespace lwb::core {
 namespace codecs {
 namespace {
-std::string exeDir() {
-    char buf[4096];
-    const ssize_t n = readlink("/proc/self/exe", buf, sizeof(buf) - 1);
-    if (n <= 0) return {};
-    const std::string p(buf, static_cast<size_t>(n));
-    const size_t slash = p.rfind('/');
-    return slash == std::string::npos ? std::string() : p.substr(0, slash);
-}
-
 struct Loaded {
     const CodecModule* module = nullptr;
     std::string why;
@@ -31,7 +23,7 @@ Loaded load() {
     Loaded l;
     std::vector<std::string> candidates;
     if (const char* env = std::getenv("LWB_CODECS"); env && *env) candidates.emplace_back(env);
-    if (const std::string d = exeDir(); !d.empty()) candidates.push_back(d + "/liblaserwb_codecs.so");
+    for (const std::string& c : helperCandidates("liblaserwb_codecs.so")) candidates.push_back(c);
     if (*LWB_CODECS_BUILD_PATH) candidates.emplace_back(LWB_CODECS_BUILD_PATH);
     for (const std::string& path : candidates) {
         if (access(path.c_str(), R_OK) != 0) {

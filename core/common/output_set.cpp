@@ -50,7 +50,41 @@ const char* kindOf(mode_t m) {
     return "not a regular file";
 }
 
+std::atomic<int> g_stdoutFd{1};
+
+// Copies a staged file to a file descriptor; false with *why.
+bool copyToFd(const std::string& path, int fd, std::string* why) {
+    FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) {
+        *why = std::strerror(errno);
+        return false;
+    }
+    char buf[1 << 16];
+    bool ok = true;
+    for (size_t n; ok && (n = std::fread(buf, 1, sizeof buf, f)) > 0;) {
+        for (size_t off = 0; off < n;) {
+            const ssize_t w = ::write(fd, buf + off, n - off);
+            if (w < 0 && errno == EINTR) continue;
+            if (w <= 0) {
+                *why = std::strerror(errno);
+                ok = false;
+                break;
+            }
+            off += static_cast<size_t>(w);
+        }
+    }
+    if (ok && std::ferror(f)) {
+        *why = "cannot read the staged output";
+        ok = false;
+    }
+    std::fclose(f);
+    return ok;
+}
+
 }  // namespace
+
+void setStandardOutputFd(int fd) { g_stdoutFd = fd; }
+int standardOutputFd() { return g_stdoutFd; }
 
 std::string faultInjectedName(const char* phase) {
     const char* v = std::getenv("LWB_FAULT_OUTPUT");
@@ -71,8 +105,14 @@ void OutputSet::addInput(const std::string& path) {
 }
 
 void OutputSet::addOutput(const std::string& path) {
-    m_items.push_back({path, {}, {}});
+    m_items.push_back({path == "-", path, {}, {}});
     m_checked = false;
+}
+
+bool OutputSet::writesStandardOutput() const {
+    for (const auto& it : m_items)
+        if (it.toStdout) return true;
+    return false;
 }
 
 bool OutputSet::check() {
@@ -90,11 +130,32 @@ bool OutputSet::check() {
     }
     std::vector<Identity> outputs;
     static std::atomic<int> counter{0};
+    bool stdoutTaken = false;
     for (auto& it : m_items) {
         const std::string& p = it.path;
         if (p.empty()) {
             m_error = "an output file name is empty";
             return false;
+        }
+        if (it.toStdout) {
+            if (stdoutTaken) {
+                m_error = "two outputs are standard output (-); give one of them a file name (nothing written)";
+                m_naming = true;
+                return false;
+            }
+            stdoutTaken = true;
+            const char* tmp = std::getenv("TMPDIR");
+            std::string stage = std::string(tmp && *tmp ? tmp : "/tmp") + "/.lwb-stdout-XXXXXX";
+            const int fd = ::mkstemp(stage.data());
+            if (fd < 0) {
+                m_error = "-: cannot stage standard output in " + stage.substr(0, stage.rfind('/')) + ": " +
+                          std::strerror(errno) + " (set TMPDIR; nothing written)";
+                return false;
+            }
+            ::close(fd);
+            it.staging = stage;
+            it.target = "-";
+            continue;
         }
         Identity id;
         struct stat st {}, lst {};
@@ -193,6 +254,7 @@ bool OutputSet::commit() {
     size_t done = 0;
     for (; done < m_items.size(); ++done) {
         const Item& it = m_items[done];
+        if (it.toStdout) continue;
         struct stat st {};
         if (::stat(it.target.c_str(), &st) == 0) {
             const std::string b = folderOf(it.target) + "/.lwb-backup-" + std::to_string(::getpid()) + "-" +
@@ -209,6 +271,7 @@ bool OutputSet::commit() {
     }
     if (done < m_items.size()) {
         for (size_t j = 0; j < done; ++j) {
+            if (m_items[j].toStdout) continue;
             if (!backups[j].empty()) std::rename(backups[j].c_str(), m_items[j].target.c_str());
             else std::remove(m_items[j].target.c_str());
         }
@@ -219,9 +282,21 @@ bool OutputSet::commit() {
     }
     for (const auto& b : backups)
         if (!b.empty()) std::remove(b.c_str());
+    // Standard output last: the files are in place; a reader that went away (a closed pipe)
+    // is reported, and the staged copy removed.
+    bool ok = true;
+    for (const auto& it : m_items) {
+        if (!it.toStdout) continue;
+        std::string why;
+        if (!copyToFd(it.staging, standardOutputFd(), &why)) {
+            m_error = "cannot write standard output: " + why;
+            ok = false;
+        }
+        std::remove(it.staging.c_str());
+    }
     m_items.clear();
     m_checked = false;
-    return true;
+    return ok;
 }
 
 void OutputSet::drop(const std::string& output) {

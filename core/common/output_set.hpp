@@ -19,8 +19,12 @@ public:
 
     /// A file the run reads: no output may replace it. Paths that do not exist are ignored.
     void addInput(const std::string& path);
-    /// A file the run writes. Checked by check().
+    /// A file the run writes. Checked by check(). "-" is standard output: written to a staging
+    /// file in the temporary folder like any output, and copied to standardOutputFd() at commit,
+    /// after every file of the run is in place. At most one output may be "-".
     void addOutput(const std::string& path);
+    /// True when an output is standard output ("-").
+    bool writesStandardOutput() const;
     /// Checks every output (see the file comment). Call before any computation. False with error().
     bool check();
     const std::string& error() const { return m_error; }
@@ -43,6 +47,7 @@ public:
 
 private:
     struct Item {
+        bool toStdout = false;  ///< "-"
         std::string path;     ///< as given
         std::string target;   ///< symbolic links resolved: the file that is replaced
         std::string staging;  ///< written by the run
@@ -52,6 +57,12 @@ private:
     std::string m_error;
     bool m_checked = false, m_naming = false;
 };
+
+/// Where an output "-" goes: file descriptor 1 unless a program moved its own messages off
+/// standard output (laserwb-cli does: its summary goes to standard error then) and says where
+/// the data must go instead.
+void setStandardOutputFd(int fd);
+int standardOutputFd();
 
 /// True when both paths exist and name the same file (same device and inode: "./x", "x", a
 /// symbolic or hard link).

@@ -273,6 +273,17 @@ FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
             addSpot(img, t.x2, t.y2, t.amplitude * rng.uniform(0.5, 1.0), t.sigmaMajor, t.sigmaMinor, t.tiltRad,
                     p.supersample);
     }
+    if (p.hasSecondBeam && p.spotCase == SpotCase::Normal) {
+        // (drawn after everything above, so a one-beam frame is the same with and without it)
+        t.x2 = p.center2X + rng.uniform(-p.centreJitterPx, p.centreJitterPx);
+        t.y2 = p.center2Y + rng.uniform(-p.centreJitterPx, p.centreJitterPx);
+        const double major = rng.uniform(p.sigmaMajorMin, p.sigmaMajorMax);
+        const double minor = major / rng.uniform(p.axisRatioMin, p.axisRatioMax);
+        const double tilt = rng.uniform(-p.tiltMaxDeg, p.tiltMaxDeg) * M_PI / 180;
+        const double amp = night ? rng.uniform(p.nightAmplitudeMin, p.nightAmplitudeMax)
+                                 : rng.uniform(p.dayAmplitudeMin, p.dayAmplitudeMax);
+        addSpot(img, t.x2, t.y2, amp, major, minor, tilt, p.supersample);
+    }
     if (!t.hasSpot) t.x = t.y = NAN;
     t.expectGood = p.spotCase == SpotCase::Normal;
     // Photon + read noise, quantisation, full-scale clipping.

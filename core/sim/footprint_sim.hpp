@@ -53,6 +53,10 @@ struct FootprintSimParams {
     double nightAmplitudeMin = 1100, nightAmplitudeMax = 1600;  ///< DN above the ground at night
     bool hasCenter = false;        ///< place the spot around (centerX, centerY) instead of the middle
     double centerX = 0, centerY = 0;
+    /// A second beam's spot around (center2X, center2Y) as well (a two-beam frame, e.g. paper 001's
+    /// LSI); its own shape and amplitude, the truth in x2, y2. Normal spots only.
+    bool hasSecondBeam = false;
+    double center2X = 0, center2Y = 0;
     int supersample = 5;           ///< sub-samples per pixel side for the pixel integral
 };
 
@@ -67,7 +71,7 @@ struct FootprintSimTruth {
     double textureRms = 0;         ///< DN, RMS of the ground texture (photo: after scaling)
     bool groundPhoto = false;      ///< the ground is a terrain photograph
     std::string groundNote;        ///< photo, band, zoom, angle, flip; or why no photo was used
-    double x2 = NAN, y2 = NAN;     ///< second spot centre (DoubleSpot)
+    double x2 = NAN, y2 = NAN;     ///< second spot centre (DoubleSpot, or the second beam's spot)
     Scene scene = Scene::Weak;
     SpotCase spotCase = SpotCase::Normal;
     bool expectGood = false;       ///< a normal spot inside the wu2021 criteria

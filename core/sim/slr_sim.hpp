@@ -82,6 +82,14 @@ struct SlrSimPass {
 /// Simulates one pass. Deterministic for (params, seed).
 SlrSimPass simulateSlrPass(const SlrSimParams& params, uint64_t seed);
 
+/// The pass as a CRD v2 full-rate file (type-10 records: epoch, two-way time of flight, filter
+/// flag) of a simulated station ranging a simulated satellite on `date` (YYYY, MM, DD): the
+/// filter flag is the truth (2 signal, 1 noise), as a station's own screening would mark it.
+/// The satellite is named after the kind ("lageos1", ILRS id 7603901, for the conventional
+/// kind, whose physics is LAGEOS's; "simsat-KIND", id 9999901, for the others); the station is
+/// "SIMU", pad 9999. An epoch past midnight rolls the date.
+std::string slrPassCrd(const SlrSimParams& p, const SlrSimPass& pass, int year = 2024, int month = 6, int day = 15);
+
 /// The model O-C (s) of a pass at epoch t (for truth comparisons): eq. 1 only, without the
 /// drift and the level shifts of the gaps (those are in SlrSimPass::trackOcS).
 double slrTrackOc(const SlrSimParams& p, double rangeBiasS, double timeBiasS, double tcaSod, double t);

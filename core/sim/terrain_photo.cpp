@@ -7,13 +7,19 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/image_codecs.hpp"
+#include "core/common/install_paths.hpp"
+
+#ifndef LWB_SOURCE_TERRAIN
+#define LWB_SOURCE_TERRAIN ""
+#endif
 
 namespace lwb::core::sim {
 
 std::vector<std::string> terrainPhotoDirs() {
     std::vector<std::string> dirs;
     if (const char* env = std::getenv("LWB_TERRAIN_PHOTOS"); env && *env) dirs.emplace_back(env);
-    dirs.emplace_back("/usr/share/doc/opencv-doc/examples/data");
+    for (const std::string& d : installedDataCandidates("terrain")) dirs.push_back(d);
+    if (*LWB_SOURCE_TERRAIN) dirs.emplace_back(LWB_SOURCE_TERRAIN);  // the build tree's programs and tests
     return dirs;
 }
 
@@ -62,7 +68,8 @@ TerrainPhotos loadPhotos() {
     }
     t.error = "no terrain photographs (aero1.jpg, aero3.jpg) in";
     for (const std::string& dir : terrainPhotoDirs()) t.error += " " + dir;
-    t.error += ": install Debian's opencv-doc (.ci/install-deps does) or set LWB_TERRAIN_PHOTOS to a folder holding them";
+    t.error += ": the photographs ship in resources/terrain/ and install to share/laserwb/terrain/; set LWB_TERRAIN_PHOTOS "
+               "to a folder holding them";
     return t;
 }
 }  // namespace

@@ -1,7 +1,8 @@
 #pragma once
 // Real terrain photographs as simulator ground. The photographs are the two aerial views of a
-// town, forest, roads and water that Debian's opencv-doc package ships (samples/data/aero1.jpg
-// and aero3.jpg, Apache-2.0 / BSD-3-Clause like the rest of OpenCV). A patch is cut at a random
+// town, forest, roads and water of OpenCV's sample data (samples/data/aero1.jpg and aero3.jpg,
+// Apache-2.0 / BSD-3-Clause like the rest of OpenCV), shipped in resources/terrain/ (its
+// README.md gives their source and licence) and installed to share/laserwb/terrain/. A patch is cut at a random
 // zoom, rotation and flip, anti-aliased to the ROI's pixels, and scaled to a ground level and
 // texture RMS. Structure at every scale and sharp edges come from the ground itself, not from a
 // model of it.
@@ -23,7 +24,8 @@ struct TerrainPhotos {
     std::vector<int> photoOfBand;      ///< index into names
 };
 
-/// Folders searched, in order: $LWB_TERRAIN_PHOTOS, then opencv-doc's example data folder.
+/// Folders searched, in order: $LWB_TERRAIN_PHOTOS, the installed share/laserwb/terrain, then the
+/// source tree's resources/terrain (programs and tests run from the build tree).
 std::vector<std::string> terrainPhotoDirs();
 /// The photographs, loaded once per process (thread-safe). ok=false names what is missing.
 const TerrainPhotos& terrainPhotos();

@@ -25,11 +25,7 @@ namespace {
 constexpr double kLight = 299792458.0;
 constexpr double kEarthRadiusKm = 6371.0;
 
-std::string extension(const std::string& path) {
-    const size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    return toLower(path.substr(dot + 1));
-}
+std::string extension(const std::string& path) { return inputExtension(path); }
 
 std::string timeText(int y, int mo, int d, int h, int mi, int s) {
     char buf[48];
@@ -149,14 +145,14 @@ std::string damagedRecords(const CrdPass& pass, const std::string& path, const s
 bool isCrdFile(const std::string& path) {
     const std::string e = extension(path);
     const bool crdName = e == "frd" || e == "fr2" || e == "npt" || e == "np2" || e == "crd";
-    // Only a regular file is looked into (a FIFO would block); the reader reports the others.
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return crdName;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return crdName;
-    std::string head(65536, '\0');
-    in.read(&head[0], std::streamsize(head.size()));
-    head.resize(size_t(in.gcount()));
+    // Only a regular file (or standard input) is looked into (a FIFO would block); the reader
+    // reports the others. A gzip-compressed file is looked into decompressed.
+    if (!isStandardStream(path)) {
+        struct stat st {};
+        if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return crdName;
+    }
+    std::string head, why;
+    if (!readFileHead(path, 65536, &head, &why)) return crdName;
     if (head.size() >= 3 && head.compare(0, 3, "\xEF\xBB\xBF") == 0) head.erase(0, 3);
     size_t pos = 0;
     while (pos < head.size()) {

@@ -258,6 +258,44 @@ private slots:
         QVERIFY(w.waitIdle(60000));
     }
 
+    // laserwb FILE...: a compressed pass, its prediction and station file (told by their first
+    // record, whatever their names), each where it belongs.
+    void passPredictionAndStationsOpenTogether() {
+        MainWindow w;
+        const QString d = m_dir.path();
+        QVERIFY(lwbtest::writeText(d + "/pred.txt", "H1 CPF  2  HTS 2012  6 26 12  6801 blits\n"));
+        QVERIFY(lwbtest::writeText(d + "/coords.txt", "%=SNX 2.02 IGN 20:119:00000 IGN 00:000:00000 00:000:00000 P 00000 0\n"));
+        QCOMPARE(w.workspaceForPath(d + "/pred.txt"), QString("slr-cpf"));
+        QCOMPARE(w.workspaceForPath(d + "/coords.txt"), QString("slr-sinex"));
+        QCOMPARE(w.workspaceForPath(d + "/x.snx"), QString("slr-sinex"));
+        // A gzip-compressed pass: by its decompressed first record.
+        const lwbtest::CliRun sim = lwbtest::runCli({"simulate", "slr", "--kind", "conventional", "--duration", "300", "--seed", "2", "-q",
+                                                     d + "/sim.frd"});
+        QCOMPARE(sim.exitCode, 0);
+        QProcess gz;
+        gz.start("gzip", {"-kf", d + "/sim.frd"});
+        QVERIFY(gz.waitForFinished() && gz.exitCode() == 0);
+        QVERIFY(QFile::copy(d + "/sim.frd.gz", d + "/sim-compressed"));
+        QCOMPARE(w.workspaceForPath(d + "/sim.frd.gz"), QString("slr"));
+        QCOMPARE(w.workspaceForPath(d + "/sim-compressed"), QString("slr"));
+        QString err;
+        QVERIFY2(w.openPaths({d + "/sim.frd.gz"}, &err), qPrintable(err));
+        QCOMPARE(w.tabs()->currentWidget(), static_cast<QWidget*>(w.slr()));
+        QVERIFY(!w.slr()->controller()->passes().empty());
+        QVERIFY(w.waitIdle(60000));
+        // The shared BLITS pass with its CPF and SINEX, given in any order.
+        const QString blits = lwbtest::sharedPath("slr/blits_201206.frd");
+        if (!QFile::exists(blits)) QSKIP("shared SLR data absent");
+        const QString cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"),
+                      snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
+        MainWindow w2;
+        QVERIFY2(w2.openPaths({cpf, blits, snx}, &err), qPrintable(err));
+        QCOMPARE(w2.slr()->cpfPath(), cpf);
+        QCOMPARE(w2.slr()->sinexPath(), snx);
+        QCOMPARE(w2.tabs()->currentWidget(), static_cast<QWidget*>(w2.slr()));
+        QVERIFY(w2.waitIdle(120000));
+    }
+
     void droppedCrdOpensInSlrAndIsARecentInput() {
         const QString jason = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
         if (!QFile::exists(jason)) QSKIP("shared SLR data absent");

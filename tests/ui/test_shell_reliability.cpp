@@ -7,6 +7,7 @@
 #include <QStandardPaths>
 #include <QtTest>
 
+#include "lwb_version.hpp"
 #include "test_support.hpp"
 #include "ui/footprint_controller.hpp"
 #include "ui/footprint_workspace.hpp"
@@ -141,7 +142,7 @@ private slots:
         r = runGuiWithoutDisplay({"--version"});
         QVERIFY(!r.crashed);
         QCOMPARE(r.exitCode, 0);
-        QVERIFY2(r.out.contains("0.1.0"), qPrintable(r.out));
+        QVERIFY2(r.out.contains(LWB_VERSION), qPrintable(r.out));  // the one version (top CMakeLists.txt)
         r = runGuiWithoutDisplay({});
         QVERIFY(!r.crashed);
         QCOMPARE(r.exitCode, 1);
