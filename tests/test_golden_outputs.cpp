@@ -117,7 +117,12 @@ class TestGoldenOutputs : public QObject {
     Tolerance toleranceFor(const QString& name, const QString& output) const {
         Tolerance t;
         Q_UNUSED(name);
-        if (isImage(output)) t.rel = 1e-6;  // means of rounded pixels: a pixel or two flipped by one DN
+        // Images: row and column means within 1e-4 (2 DN on a 20 000 DN row). OpenCV's warps
+        // quantise source coordinates to 1/32 px, so a transform a few ulps apart on another CPU
+        // moves some pixels across a quantisation step: tens of DN at 0.06 % of the pixels of a
+        // mosaic (measured with glibc's and OpenCV's dispatch held to SSE4: worst column mean
+        // 3.5e-5 relative). The same mosaic shifted by 0.05 px moves column means by up to 7e-3.
+        if (isImage(output)) t.rel = 1e-4;
         return t;
     }
 
