@@ -156,7 +156,7 @@ int cmdCalibDetector(int argc, char** argv) {
                                                            {"--outlier-sigma", "detector.outlier_sigma"}});
     for (const char* o : {"--fixed-background", "-o", "--output", "--detectors"}) a.option(o, true);
     for (const char* o : {"--scale-chi2", "--no-censoring"}) a.option(o, false);
-    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    if (int rc = params.parseWithHelp(a, argc, argv, 3); rc >= 0) return rc;
     CalibParams cp;
     std::string err;
     if (int rc = params.load(cmd, a, &cp, check, [&](CalibParams* q) {
@@ -220,7 +220,7 @@ int cmdCalibWaveform(int argc, char** argv) {
                                                            {"--incidence", "waveform.incidence_deg"},
                                                            {"--thred-h", "waveform.thred_h"}});
     for (const char* o : {"--height", "--features", "-o", "--output", "--model"}) a.option(o, true);
-    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    if (int rc = params.parseWithHelp(a, argc, argv, 3); rc >= 0) return rc;
     CalibParams cp;
     std::string err;
     double height = NAN;
@@ -291,7 +291,7 @@ int cmdCalibPointing(int argc, char** argv) {
     for (const char* o : {"--beams", "-o", "--output", "--params", "--residuals", "--iterations", "--beams-out"})
         a.option(o, true);
     for (const char* o : {"--no-range", "--fix-relative", "--scale-chi2"}) a.option(o, false);
-    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    if (int rc = params.parseWithHelp(a, argc, argv, 3); rc >= 0) return rc;
     CalibParams cp;
     std::string err;
     if (int rc = params.load(cmd, a, &cp, check, [&](CalibParams* q) {
@@ -355,7 +355,7 @@ int cmdCalibStats(int argc, char** argv) {
     Args a(cmd, usage);
     const ParamOptions<CalibParams> params(calibSchema());  // none of its own: accepted for one config everywhere
     for (const char* o : {"--group", "-o", "--output"}) a.option(o, true);
-    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    if (int rc = params.parseWithHelp(a, argc, argv, 3); rc >= 0) return rc;
     CalibParams cp;
     if (int rc = params.load(cmd, a, &cp, check); rc >= 0) return rc;
     if (a.positional().size() != 1) return fail(cmd, "give exactly one CSV of differences", kUsage);

@@ -60,6 +60,16 @@ bool Args::parse(int argc, char** argv, int first) {
     return true;
 }
 
+int Args::parseWithHelp(int argc, char** argv, int first) {
+    for (const char* o : {"--help", "-h", "-q", "--quiet"}) option(o, false);
+    if (!parse(argc, argv, first)) return fail(m_command, m_error, kUsage);
+    if (has("--help") || has("-h")) {
+        std::cout << m_usage;
+        return kOk;
+    }
+    return -1;
+}
+
 std::string Args::value(const std::string& name, const std::string& fallback) const {
     const auto it = m_values.find(name);
     return it == m_values.end() ? fallback : it->second;

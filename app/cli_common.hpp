@@ -23,6 +23,10 @@ public:
     void option(const std::string& name, bool takesValue, bool repeatable = false);
     /// Parses argv[first..]; false with error() on an unknown option or a missing value.
     bool parse(int argc, char** argv, int first);
+    /// Declares --help, -h, -q and --quiet, parses argv[first..] and answers --help with the
+    /// usage: -1 to go on, else the exit code (after printing the usage or the parse error).
+    int parseWithHelp(int argc, char** argv, int first);
+    bool quiet() const { return has("-q") || has("--quiet"); }
     const std::string& error() const { return m_error; }
     const std::string& usage() const { return m_usage; }
 
@@ -141,14 +145,10 @@ public:
     }
     /// Declares these options with --help, -h, -q, --quiet and --help-params, parses argv[first..]
     /// and answers --help (the usage) and --help-params (the table). -1 to go on, else the exit code.
-    int parseWithHelp(Args& a, int argc, char** argv, int first, const std::string& cmd) const {
+    int parseWithHelp(Args& a, int argc, char** argv, int first) const {
         declare(a);
-        for (const char* o : {"--help", "-h", "-q", "--quiet", "--help-params"}) a.option(o, false);
-        if (!a.parse(argc, argv, first)) return fail(cmd, a.error(), kUsage);
-        if (a.has("--help") || a.has("-h")) {
-            std::cout << a.usage();
-            return kOk;
-        }
+        a.option("--help-params", false);
+        if (int rc = a.parseWithHelp(argc, argv, first); rc >= 0) return rc;
         if (a.has("--help-params")) {
             std::cout << m_schema.name() << " parameters (key = default unit  valid range):\n" << m_schema.describe(P{});
             return kOk;

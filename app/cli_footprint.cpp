@@ -321,12 +321,7 @@ int cmdSimulateTrend(int argc, char** argv) {
     const std::string cmd = "simulate trend";
     Args a(cmd, kSimTrendUsage);
     for (const char* o : {"--months", "--shots", "--seed", "--truth"}) a.option(o, true);
-    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (a.has("--help") || a.has("-h")) {
-        std::cout << kSimTrendUsage;
-        return kOk;
-    }
+    if (int rc = a.parseWithHelp(argc, argv, 3); rc >= 0) return rc;
     sim::CentroidSimParams p;
     long long months = p.months, shots = p.shotsPerMonth, seed = 1;
     std::string err;
@@ -359,7 +354,7 @@ int cmdSimulateTrend(int argc, char** argv) {
         if (!core::writeFileAtomic(outs.stagingPath(truthOut), truth, &err)) return fail(cmd, outs.unstaged(err));
     }
     if (int rc = commitOutputs(cmd, outs)) return rc;
-    if (!(a.has("-q") || a.has("--quiet")))
+    if (!a.quiet())
         std::cerr << cmd << ": " << s.shots.size() << " shots (" << outliers << " outliers), " << p.months
                   << " months, 2 beams -> " << out << "\n";
     return kOk;
@@ -370,7 +365,7 @@ int cmdTrend(int argc, char** argv) {
     const ParamOptions<TrendParams> params(
         trendSchema(), {{"--arcsec-per-px", "arcsec_per_px"}, {"--reject-sigma", "reject_sigma"}, {"--min-shots", "min_shots"}});
     for (const char* o : {"-o", "--output"}) a.option(o, true);
-    if (int rc = params.parseWithHelp(a, argc, argv, 2, "trend"); rc >= 0) return rc;
+    if (int rc = params.parseWithHelp(a, argc, argv, 2); rc >= 0) return rc;
     TrendParams tp;
     std::string err;
     if (int rc = params.apply("trend", a, &tp)) return rc;

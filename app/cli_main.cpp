@@ -181,12 +181,7 @@ int demo(int argc, char** argv) {
            "Simulates 12 footprint shots (weak, moderate, strong and night ground) in a new temporary folder,\n"
            "finds their spot centres with the default method and prints the truth beside the report: a quick\n"
            "check of an installation without a display. Writes nothing outside that folder.\n");
-    for (const char* o : {"--help", "-h"}) a.option(o, false);
-    if (!a.parse(argc, argv, 2)) return fail("demo", a.error(), kUsage);
-    if (a.has("--help") || a.has("-h")) {
-        std::cout << a.usage();
-        return kOk;
-    }
+    if (int rc = a.parseWithHelp(argc, argv, 2); rc >= 0) return rc;
     if (!a.positional().empty()) return fail("demo", "takes no arguments", kUsage);
     std::string dir = "/tmp/laserwb-demo-XXXXXX";
     if (!mkdtemp(dir.data())) return fail("demo", "cannot create a temporary folder");

@@ -141,7 +141,7 @@ int cmdRadiometryMosaic(int argc, char** argv) {
                                                                      {"--ransac-px", "mosaic.ransac_px"},
                                                                      {"--min-inliers", "mosaic.min_inliers"}});
     for (const char* o : {"-o", "--output", "--coverage", "--pairs", "--max-pixels"}) a.option(o, true);
-    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    if (int rc = params.parseWithHelp(a, argc, argv, 3); rc >= 0) return rc;
     RadiometryParams rp;
     std::string err;
     if (int rc = params.load(cmd, a, &rp, check); rc >= 0) return rc;
@@ -193,7 +193,7 @@ int cmdRadiometryGcp(int argc, char** argv) {
                                                 {{"--model", "gcp.model"}, {"--pixel-size", "gcp.pixel_size_m"}});
     for (const char* o : {"--gcps", "--residuals", "--valid", "-o", "--output", "--max-pixels", "--crs"}) a.option(o, true);
     a.option("--plain-tiff", false);
-    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    if (int rc = params.parseWithHelp(a, argc, argv, 3); rc >= 0) return rc;
     RadiometryParams rp;
     std::string err;
     if (int rc = params.load(cmd, a, &rp, check); rc >= 0) return rc;
@@ -250,7 +250,7 @@ int cmdRadiometryFit(int argc, char** argv) {
                                                                      {"--min-region-fraction", "min_region_fraction"}});
     for (const char* o : {"--image", "-o", "--output", "--regions", "--max-pixels"}) a.option(o, true);
     for (const char* o : {"--exclude-out-of-range", "--no-pixel-mask"}) a.option(o, false);
-    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    if (int rc = params.parseWithHelp(a, argc, argv, 3); rc >= 0) return rc;
     RadiometryParams rp;
     std::string err;
     if (int rc = params.load(cmd, a, &rp, check, [&](RadiometryParams* q) {
@@ -311,7 +311,7 @@ int cmdRadiometryApply(int argc, char** argv) {
     for (const char* o : {"--fit", "--k", "--b", "--uncertainty", "--check", "--table", "-o", "--output", "--max-pixels"})
         a.option(o, true);
     for (const char* o : {"--nan-out-of-range", "--plain-tiff"}) a.option(o, false);
-    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    if (int rc = params.parseWithHelp(a, argc, argv, 3); rc >= 0) return rc;
     RadiometryParams rp;
     std::string err;
     ReflectanceFit fit;
@@ -388,7 +388,7 @@ int cmdRadiometryCheck(int argc, char** argv) {
     Args a(cmd, usage);
     const ParamOptions<RadiometryParams> params(radiometrySchema(), {{"--limit", "limit_pct"}});
     for (const char* o : {"--image", "-o", "--output", "--max-pixels"}) a.option(o, true);
-    if (int rc = params.parseWithHelp(a, argc, argv, 3, cmd); rc >= 0) return rc;
+    if (int rc = params.parseWithHelp(a, argc, argv, 3); rc >= 0) return rc;
     RadiometryParams rp;
     std::string err;
     if (int rc = params.load(cmd, a, &rp, check); rc >= 0) return rc;
@@ -438,12 +438,7 @@ const char* kSimRadiometryUsage =
 int cmdSimulateRadiometry(int argc, char** argv) {
     const std::string cmd = "simulate radiometry";
     Args a(cmd, kSimRadiometryUsage);
-    for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
-    if (a.has("--help") || a.has("-h")) {
-        std::cout << kSimRadiometryUsage;
-        return kOk;
-    }
+    if (int rc = a.parseWithHelp(argc, argv, 3); rc >= 0) return rc;
     if (a.positional().size() != 1) return fail(cmd, "give exactly one output folder", kUsage);
     const std::string dir = a.positional()[0];
     const FolderForOutputs folder(dir);

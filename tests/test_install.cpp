@@ -12,30 +12,15 @@ using namespace lwbtest;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QString out, err;
-};
+using Run = CliRun;
 
 Run run(const QString& program, const QStringList& args, const QStringList& env = {}, const QString& cwd = {},
         int timeoutMs = 300000) {
-    QProcess p;
-    QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
-    for (const QString& kv : env) e.insert(kv.section('=', 0, 0), kv.section('=', 1));
-    p.setProcessEnvironment(e);
-    if (!cwd.isEmpty()) p.setWorkingDirectory(cwd);
-    p.start(program, args);
-    Run r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = "timeout";
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    RunOptions o;
+    o.env = env;
+    o.cwd = cwd;
+    o.timeoutMs = timeoutMs;
+    return runProgram(program, args, o);
 }
 
 // Every command of laserwb-cli, as it is typed.

@@ -21,18 +21,29 @@ struct CliRun {
     QString out, err;
 };
 
-/// Runs laserwb-cli with args; waits up to timeoutMs. `env` entries ("NAME=value") are added
-/// to the child's environment.
-inline CliRun runCli(const QStringList& args, int timeoutMs = 120000, const QStringList& env = {}) {
+/// How runProgram runs a program: extra environment ("NAME=value"), working folder, what goes
+/// to its standard input (closed after), how long to wait.
+struct RunOptions {
+    QStringList env;
+    QString cwd;
+    QByteArray input;
+    int timeoutMs = 120000;
+};
+
+/// Runs a program and waits for it; a crash is exitCode -2, a timeout -1 with err "timeout".
+inline CliRun runProgram(const QString& program, const QStringList& args, const RunOptions& o = {}) {
     QProcess p;
-    if (!env.isEmpty()) {
+    if (!o.env.isEmpty()) {
         QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
-        for (const QString& kv : env) e.insert(kv.section('=', 0, 0), kv.section('=', 1));
+        for (const QString& kv : o.env) e.insert(kv.section('=', 0, 0), kv.section('=', 1));
         p.setProcessEnvironment(e);
     }
-    p.start(QString(LWB_CLI), args);
+    if (!o.cwd.isEmpty()) p.setWorkingDirectory(o.cwd);
+    p.start(program, args);
+    if (!o.input.isEmpty()) p.write(o.input);
+    p.closeWriteChannel();
     CliRun r;
-    if (!p.waitForFinished(timeoutMs)) {
+    if (!p.waitForFinished(o.timeoutMs)) {
         p.kill();
         p.waitForFinished();
         r.err = "timeout";
@@ -42,6 +53,15 @@ inline CliRun runCli(const QStringList& args, int timeoutMs = 120000, const QStr
     r.out = QString::fromUtf8(p.readAllStandardOutput());
     r.err = QString::fromUtf8(p.readAllStandardError());
     return r;
+}
+
+/// Runs laserwb-cli with args; waits up to timeoutMs. `env` entries ("NAME=value") are added
+/// to the child's environment.
+inline CliRun runCli(const QStringList& args, int timeoutMs = 120000, const QStringList& env = {}) {
+    RunOptions o;
+    o.env = env;
+    o.timeoutMs = timeoutMs;
+    return runProgram(QString(LWB_CLI), args, o);
 }
 
 inline std::string str(const QString& s) { return s.toStdString(); }

@@ -17,22 +17,11 @@ struct Piped {
 };
 
 // laserwb-cli with `input` on its standard input.
-Piped pipeCli(const QStringList& args, const QByteArray& input, const QString& cwd = {}) {
-    QProcess p;
-    if (!cwd.isEmpty()) p.setWorkingDirectory(cwd);
-    p.start(QString(LWB_CLI), args);
-    p.write(input);
-    p.closeWriteChannel();
-    Piped r;
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        p.waitForFinished();
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
+Piped pipeCli(const QStringList& args, const QByteArray& input) {
+    RunOptions o;
+    o.input = input;
+    const CliRun r = runProgram(QString(LWB_CLI), args, o);
+    return {r.exitCode, r.out.toUtf8(), r.err.toUtf8()};
 }
 
 QByteArray gzipped(const QByteArray& data) {
@@ -98,6 +87,23 @@ private slots:
         const Piped e = pipeCli({"slr", "-", "-o", p("none.csv")}, QByteArray());
         QCOMPARE(e.exitCode, 1);
         QVERIFY(!QFile::exists(p("none.csv")));
+    }
+
+    // An image on standard input: the footprint report of "-" is the file's report.
+    void footprintFrameOnStandardInput() {
+        QCOMPARE(runCli({"simulate", "footprint", "--count", "1", "--seed", "4", "-q", p("one")}).exitCode, 0);
+        QCOMPARE(runCli({"footprint", p("one/shot_000000.png"), "-o", p("one.csv"), "-q"}).exitCode, 0);
+        const Piped r = pipeCli({"footprint", "-", "-o", "-", "-q"}, readAll(p("one/shot_000000.png")));
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QList<QByteArray> file = readAll(p("one.csv")).split('\n'), piped = r.out.split('\n');
+        QCOMPARE(piped.size(), file.size());
+        QCOMPARE(piped[0], file[0]);
+        QCOMPARE(piped[1].mid(piped[1].indexOf(',')), file[1].mid(file[1].indexOf(',')));  // all but the file name
+        QVERIFY(piped[1].startsWith("-,"));
+        // Not an image: said so, nothing written.
+        const Piped bad = pipeCli({"footprint", "-", "-o", p("bad.csv")}, "hello\n");
+        QCOMPARE(bad.exitCode, 1);
+        QVERIFY(!QFile::exists(p("bad.csv")));
     }
 
     void gzipInputsAreRead() {

@@ -73,9 +73,11 @@ ImageReadResult readFrame(const std::string& path, const ImageReadParams& params
     std::string err;
     long long size = 0;
     struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) return fail(path, "no such file");
-    if (regularFileProblem(path, &err, &size)) return fail(path, err.substr(std::min(err.size(), path.size() + 2)));
-    if (size == 0) return fail(path, "empty file");
+    if (!isStandardStream(path)) {  // ("-": one frame on standard input, told by its content)
+        if (::stat(path.c_str(), &st) != 0) return fail(path, "no such file");
+        if (regularFileProblem(path, &err, &size)) return fail(path, err.substr(std::min(err.size(), path.size() + 2)));
+        if (size == 0) return fail(path, "empty file");
+    }
     const std::string ext = extensionOf(path);
     ImageReadResult r;
     if (isRaw(ext)) {
@@ -128,6 +130,14 @@ ImageReadResult readFrame(const std::string& path, const ImageReadParams& params
 bool expandInputs(const std::vector<std::string>& inputs, std::vector<std::string>* files,
                   std::string* error) {
     for (const auto& in : inputs) {
+        if (isStandardStream(in)) {  // one frame on standard input
+            if (std::count(files->begin(), files->end(), in)) {
+                *error = "-: standard input given twice";
+                return false;
+            }
+            files->push_back(in);
+            continue;
+        }
         struct stat st {};
         if (::stat(in.c_str(), &st) != 0) {
             *error = in + ": no such file or folder";
