@@ -169,7 +169,7 @@ int checkOutputs(const std::string& command, core::OutputSet& outs) {
 }
 
 int commitOutputs(const std::string& command, core::OutputSet& outs) {
-    return outs.commit() ? kOk : fail(command, outs.error());
+    return outs.commit() ? kOk : fail(command, outs.error(), outs.namingProblem() ? kUsage : kFailed);
 }
 
 bool parsePoint(const std::string& s, double* x, double* y) {

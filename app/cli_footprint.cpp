@@ -261,6 +261,9 @@ int cmdSimulateFootprint(int argc, char** argv) {
     };
     for (long long i = 0; i < count; ++i) outs.addOutput(dir + "/" + shotName(i));
     outs.addOutput(dir + "/truth.csv");
+    // truth.csv lists the set: written last, and an earlier run's shots go (a run killed half-way
+    // leaves no truth.csv beside a mix of old and new shots).
+    outs.setManifest(dir + "/truth.csv", dir, {"shot_[0-9]*.png", "shot_[0-9]*.tif", "shot_[0-9]*.pgm", "shot_[0-9]*.raw"});
     if (int rc = checkOutputs("simulate footprint", outs)) return rc;
     std::string truth =
         "file,scene,case,x,y,sigma_major,sigma_minor,tilt_deg,amplitude_dn,ground_mean_dn,texture_rms_dn,expect_good,x2,y2,"

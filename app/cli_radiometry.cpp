@@ -451,6 +451,7 @@ int cmdSimulateRadiometry(int argc, char** argv) {
         outs.addOutput(names.back());
     }
     for (const char* f : {"/regions.csv", "/check.csv", "/gcps.csv", "/truth.csv"}) outs.addOutput(dir + f);
+    outs.setManifest(dir + "/truth.csv", dir, {"frame_[0-9]*.png"});
     if (int rc = checkOutputs(cmd, outs)) return rc;
     // The regions as an analyst would mark them on the row image: scene pixels mapped through
     // frame 1's transform in the mosaic of these frames with default settings.

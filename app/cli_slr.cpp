@@ -213,6 +213,8 @@ int screenAllPasses(const std::string& cmd, const std::string& input, const slr:
     }
     const std::string summaryPath = dir + "/summary.csv";
     outs.addOutput(summaryPath);
+    // summary.csv lists the set: written last; an earlier run's pass files go.
+    outs.setManifest(summaryPath, dir, {"pass[0-9][0-9][0-9]*.csv"});
     if (int rc = checkOutputs(cmd, outs)) return rc;
     std::string summary =
         "pass,station,satellite,ilrs_id,start_utc,duration_s,points,accepted,rms_ps,rms_mm,normal_points,"

@@ -6,9 +6,12 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
+#include <QFileInfo>
+#include <QThreadPool>
 #include <QTimer>
 
 #include "core/common/allocator.hpp"
+#include "core/common/output_set.hpp"
 #include "lwb_version.hpp"
 #include "ui/main_window.hpp"
 
@@ -54,16 +57,38 @@ int main(int argc, char** argv) {
     cli.addOptions({shot, ws, size});
     cli.process(app);
 
-    lwb::ui::MainWindow w;
+    // The screenshot is an output like any other (core/common/output_set.hpp): checked before
+    // anything is opened (not a folder, device or one of the files given), written to a staging
+    // file and renamed into place, so a full disk or a crash never leaves a half PNG, and no input
+    // read on the way (a session's pass, its CPF) is ever replaced.
     const QStringList args = cli.positionalArguments();
+    lwb::core::OutputSet outs;
+    const std::string shotPath = cli.value(shot).toStdString();
+    if (cli.isSet(shot)) {
+        outs.addOutput(shotPath);
+        for (const QString& a : args) outs.addInput(a.toStdString());
+        if (!outs.check()) {
+            fprintf(stderr, "laserwb: --screenshot %s\n", outs.error().c_str());
+            return outs.namingProblem() ? 2 : 1;
+        }
+    }
+    // No worker thread may outlive the window (a job still loading the codec module while the
+    // program exits crashed it): every pooled job is waited for before main returns.
+    struct JoinPool {
+        ~JoinPool() { QThreadPool::globalInstance()->waitForDone(); }
+    } joinPool;
+    lwb::ui::MainWindow w;
     if (args.isEmpty()) {
         w.openDemo();
-    } else {
+    } else if (cli.isSet(shot)) {
         QString err;
-        if (!w.openPaths(args, &err) && cli.isSet(shot)) {
+        if (!w.openPaths(args, &err)) {
             fprintf(stderr, "laserwb: %s\n", qPrintable(err));
             return 1;
         }
+    } else {
+        // In a window: shown first, so that a file that cannot be opened is reported over it.
+        QTimer::singleShot(0, &w, [&w, args] { w.openPaths(args); });
     }
     if (cli.isSet(ws) || args.isEmpty()) w.showWorkspace(cli.value(ws));  // a session names its own workspace
     if (cli.isSet(shot)) {
@@ -71,10 +96,16 @@ int main(int argc, char** argv) {
         if (wh.size() == 2) w.resize(wh[0].toInt(), wh[1].toInt());
         w.show();
         w.waitIdle(60000);
-        const QString out = cli.value(shot);
-        if (!w.grab().save(out)) {
-            fprintf(stderr, "laserwb: cannot write %s\n", qPrintable(out));
+        const QString staged = QString::fromStdString(outs.stagingPath(shotPath));
+        const QByteArray format = QFileInfo(cli.value(shot)).suffix().toLower().toLatin1();
+        if (!w.grab().save(staged, format.isEmpty() ? "png" : format.constData())) {
+            fprintf(stderr, "laserwb: cannot write %s (nothing written)\n", shotPath.c_str());
+            outs.abandon();
             return 1;
+        }
+        if (!outs.commit()) {
+            fprintf(stderr, "laserwb: %s\n", outs.error().c_str());
+            return outs.namingProblem() ? 2 : 1;
         }
         return 0;
     }

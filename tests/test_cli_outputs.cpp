@@ -6,6 +6,7 @@
 // link, a hard link), a device or a FIFO is refused with the input unchanged.
 #include <QtTest>
 #include <opencv2/imgcodecs.hpp>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -37,7 +38,7 @@ class TestCliOutputs : public QObject {
     }
     void noStagingFiles() const {
         for (const QString& f : filesIn(m_dir.path()))
-            QVERIFY2(!f.contains(".lwb-stage-") && !f.contains(".lwb-backup-") && !f.contains(".tmp-"), qPrintable(f));
+            QVERIFY2(!f.contains(".lwb-stage-") && !f.contains(".lwb-backup-") && !f.contains(".tmp-") && !f.contains(".lwb-tmp-"), qPrintable(f));
     }
 
     // The commands with two or more outputs, each with its inputs prepared in the folder.
@@ -214,8 +215,36 @@ private slots:
         QTest::newRow("radiometry fit regions") << QStringList{"radiometry", "fit", "@regions.csv", "-o", "@fx.csv",
                                                                "--regions", "@regions_link.csv"}
                                                 << "regions.csv";
+        // Auxiliary inputs (issue 27): a config, a beams file, control points, a preset.
+        QTest::newRow("trend --config") << QStringList{"trend", "@cent.csv", "--config", "@cfg.json", "-o", "./cfg.json"} << "cfg.json";
+        QTest::newRow("footprint --config") << QStringList{"footprint", "@shot.png", "--config", "@fcfg.json", "-o", "@fcfg.json"}
+                                            << "fcfg.json";
+        QTest::newRow("calib pointing --params over --beams")
+            << QStringList{"calib", "pointing", "@calib/control_points.csv", "--beams", "@calib/beams.json", "-o", "@pp.csv",
+                           "--params", "./calib/beams.json"}
+            << "calib/beams.json";
+        QTest::newRow("radiometry gcp --residuals over --gcps")
+            << QStringList{"radiometry", "gcp", "@img.png", "--gcps", "@gcps.csv", "-o", "@m.tif", "--residuals", "./gcps.csv"}
+            << "gcps.csv";
+        QTest::newRow("radiometry apply --table over --fit")
+            << QStringList{"radiometry", "apply", "@img.png", "--fit", "@fit_in.csv", "--check", "@check.csv", "-o", "@r2.tif",
+                           "--table", "@fit_in.csv"}
+            << "fit_in.csv";
+        QTest::newRow("slr --config") << QStringList{"slr", "@sim.frd", "--config", "@scfg.json", "-o", "@scfg.json"} << "scfg.json";
+        QTest::newRow("slr --preset") << QStringList{"slr", "@sim.frd", "--preset", "@presets.json", "-o", "./presets.json"}
+                                      << "presets.json";
+        QTest::newRow("slr --all-passes over --config in the folder")
+            << QStringList{"slr", "@sim.frd", "--all-passes", "--out-dir", "@day", "--config", "@day/summary.csv"} << "day/summary.csv";
         const QString slrIn = sharedPath("slr/7080_STELLA_crd_071220_2128_0.frd");
         if (QFile::exists(slrIn)) {
+            QTest::newRow("slr --stations over -o")
+                << QStringList{"slr", "@blits.frd", "--pass", "3", "--cpf", "@blits.hts", "--stations", "@stations.snx", "-o",
+                               "./stations.snx"}
+                << "stations.snx";
+            QTest::newRow("slr --cpf over --npt-out")
+                << QStringList{"slr", "@blits.frd", "--pass", "3", "--cpf", "@blits.hts", "--stations", "@stations.snx", "-o",
+                               "@bo.csv", "--npt-out", "@blits.hts"}
+                << "blits.hts";
             QTest::newRow("slr crd-out ./pass") << QStringList{"slr", "@pass.frd", "-o", "@o.csv", "--crd-out", "./pass.frd",
                                                                "--area-min", "1000000"}
                                                 << "pass.frd";
@@ -248,6 +277,27 @@ private slots:
             QVERIFY(QFile::copy(slrIn, p("pass.frd")));
             QVERIFY(QFile::link(p("pass.frd"), p("pass_link.frd")));
         }
+        // Auxiliary inputs.
+        CliRun cfg = runCli({"trend", "--print-config"});
+        QVERIFY(cfg.exitCode == 0 && writeText(p("cfg.json"), cfg.out.toUtf8()));
+        cfg = runCli({"footprint", "--print-config"});
+        QVERIFY(cfg.exitCode == 0 && writeText(p("fcfg.json"), cfg.out.toUtf8()));
+        if (!QFile::exists(p("sim.frd")))
+            QVERIFY(runCli({"simulate", "slr", "--kind", "conventional", "--duration", "300", "--seed", "3", "-q", p("sim.frd")}).exitCode == 0);
+        cfg = runCli({"slr", "--print-config"});
+        QVERIFY(cfg.exitCode == 0 && writeText(p("scfg.json"), cfg.out.toUtf8()));
+        QDir().mkpath(p("day"));
+        QVERIFY(writeText(p("day/summary.csv"), cfg.out.toUtf8()));  // a config that happens to bear an output's name
+        QVERIFY(writeText(p("presets.json"), "{\"format\": \"laserwb-slr-presets\", \"version\": 1, \"satellites\": "
+                                             "[{\"name\": \"lageos1\", \"postfit\": {\"reject_sigma\": 3}}]}\n"));
+        if (haveShared("slr/blits_201206.frd")) {
+            for (const auto& [from, to] : {std::pair<QString, QString>{"slr/blits_201206.frd", "blits.frd"},
+                                           {"slr/blits_cpf_120626_6801.hts", "blits.hts"},
+                                           {"slr/SLRF2014_POS+VEL_2030.0_200428.snx", "stations.snx"}}) {
+                QFile::remove(p(to));
+                QVERIFY(QFile::copy(sharedPath(from), p(to)));
+            }
+        }
         const QByteArray before = readAll(p(input));
         QVERIFY(!before.isEmpty());
         // Relative spellings are relative to the folder: run there.
@@ -256,7 +306,7 @@ private slots:
         const CliRun r = runCli(expand(args), kTimeoutMs);
         QDir::setCurrent(cwd);
         QVERIFY2(r.exitCode == 2, qPrintable(QString::number(r.exitCode) + ": " + r.err));
-        QVERIFY2(r.err.contains("overwrite the input"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("would overwrite") && r.err.contains("input"), qPrintable(r.err));
         QVERIFY2(readAll(p(input)) == before, "the input was changed");
         noStagingFiles();
     }
@@ -301,6 +351,92 @@ private slots:
     }
 
     // The core class itself: a missing folder, and commit restoring what it replaced.
+    // A set of files in one folder commits as a unit (issue 27): killed (SIGKILL) half-way
+    // through replacing an earlier run, the folder never holds a truth.csv that disagrees with its
+    // shots; the next run removes what the killed one left and the earlier, larger run's extra shots.
+    void killedMultiFileCommitLeavesNoMixedSet() {
+        const QString dir = p("killset");
+        QDir(dir).removeRecursively();
+        QVERIFY(runCli({"simulate", "footprint", "--count", "12", "--seed", "1", "-q", dir}).exitCode == 0);
+        // The set's invariant: truth.csv absent, or naming exactly the shots in the folder.
+        auto consistent = [&](QString* why) {
+            const QStringList shots = QDir(dir).entryList({"shot_*.png"}, QDir::Files, QDir::Name);
+            if (!QFile::exists(dir + "/truth.csv")) return true;
+            QStringList listed;
+            for (const QByteArray& l : readAll(dir + "/truth.csv").split('\n').mid(1))
+                if (!l.isEmpty()) listed << QString::fromUtf8(l.split(',').value(0));
+            *why = QString("truth.csv lists %1 shots, the folder holds %2").arg(listed.size()).arg(shots.size());
+            return listed == shots;
+        };
+        QString why;
+        QVERIFY(consistent(&why));
+        // Killed just before renaming a new shot, then just before the manifest.
+        for (const QString& at : {QString("shot_000003.png"), QString("truth.csv")}) {
+            const CliRun r = runCli({"simulate", "footprint", "--count", "6", "--seed", "2", "-q", dir}, kTimeoutMs,
+                                    {"LWB_FAULT_OUTPUT=kill:" + at});
+            QCOMPARE(r.exitCode, -2);  // killed
+            QVERIFY2(consistent(&why), qPrintable(at + ": " + why));
+            QVERIFY2(!QFile::exists(dir + "/truth.csv"), "the old manifest is gone while the set is being replaced");
+            bool leftovers = false;
+            for (const QString& f : filesIn(dir)) leftovers = leftovers || f.startsWith(".lwb-");
+            QVERIFY2(leftovers, "a killed run leaves its staging files (the next run removes them)");
+        }
+        // The next run: a whole, consistent set of 6, no leftovers, the earlier run's shots 6..11 gone.
+        QVERIFY(runCli({"simulate", "footprint", "--count", "6", "--seed", "2", "-q", dir}).exitCode == 0);
+        QVERIFY2(consistent(&why), qPrintable(why));
+        QCOMPARE(QDir(dir).entryList({"shot_*.png"}, QDir::Files).size(), 6);
+        for (const QString& f : filesIn(dir)) QVERIFY2(!f.startsWith(".lwb-"), qPrintable(f));
+        // Killed at random moments (real SIGKILL from outside, during writing or committing).
+        for (int k = 0; k < 6; ++k) {
+            QProcess run;
+            run.start(QString(LWB_CLI), {"simulate", "footprint", "--count", QString::number(200 + 100 * k), "--seed", "3", "-q", dir});
+            QVERIFY(run.waitForStarted());
+            QTest::qWait(80 + 90 * k);
+            ::kill(pid_t(run.processId()), SIGKILL);
+            run.waitForFinished();
+            QVERIFY2(consistent(&why), qPrintable(QString("killed after %1 ms: ").arg(80 + 90 * k) + why));
+        }
+        QVERIFY(runCli({"simulate", "footprint", "--count", "5", "--seed", "4", "-q", dir}).exitCode == 0);
+        QVERIFY2(consistent(&why), qPrintable(why));
+        QCOMPARE(QDir(dir).entryList({"shot_*.png"}, QDir::Files).size(), 5);
+        for (const QString& f : filesIn(dir)) QVERIFY2(!f.startsWith(".lwb-"), qPrintable(f));
+    }
+
+    // --all-passes into a folder of an earlier run: the earlier pass files go, summary.csv is the
+    // manifest; a file of the folder that is not an output of the kind stays.
+    void allPassesReplacesTheWholeSet() {
+        const QString frd = p("three.frd"), dir = p("passes");
+        QDir(dir).removeRecursively();
+        QVERIFY(QDir().mkpath(dir));
+        // Three passes in one file: the simulator's pass three times (each a valid pass).
+        const CliRun sim = runCli({"simulate", "slr", "--kind", "conventional", "--duration", "200", "--seed", "6", "-q", p("one.frd")});
+        QVERIFY(sim.exitCode == 0);
+        const QByteArray one = readAll(p("one.frd"));
+        QVERIFY(writeText(frd, one + one + one));
+        QVERIFY(writeText(dir + "/pass009.csv", "from an earlier run\n"));
+        QVERIFY(writeText(dir + "/notes.txt", "the analyst's notes\n"));
+        const CliRun r = runCli({"slr", frd, "--all-passes", "--out-dir", dir, "-q"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(QFile::exists(dir + "/pass001.csv") && QFile::exists(dir + "/pass003.csv") && QFile::exists(dir + "/summary.csv"));
+        QVERIFY2(!QFile::exists(dir + "/pass009.csv"), "an earlier run's pass file was left beside the new summary");
+        QCOMPARE(readAll(dir + "/notes.txt"), QByteArray("the analyst's notes\n"));
+    }
+
+    // Leftovers of a killed run are removed only when their process is gone.
+    void leftoversOfLiveProcessesStay() {
+        const QString dir = p("left");
+        QDir(dir).removeRecursively();
+        QVERIFY(QDir().mkpath(dir));
+        const QString mine = QString(".lwb-stage-%1-1-x.csv").arg(::getpid());
+        QVERIFY(writeText(dir + "/" + mine, "a live run's staging file"));
+        QVERIFY(writeText(dir + "/.lwb-tmp-999999999-ab-y.csv", "a dead run's"));
+        QVERIFY(writeText(dir + "/.lwb-backupx", "not ours: no pid"));
+        QCOMPARE(lwb::core::removeLeftovers(dir.toStdString()), 1);
+        QVERIFY(QFile::exists(dir + "/" + mine));
+        QVERIFY(QFile::exists(dir + "/.lwb-backupx"));
+        QVERIFY(!QFile::exists(dir + "/.lwb-tmp-999999999-ab-y.csv"));
+    }
+
     void outputSetUnit() {
         lwb::core::OutputSet none;
         none.addOutput(p("no/such/folder/x.csv").toStdString());

@@ -113,7 +113,7 @@ private slots:
         QVERIFY2(r.exitCode != 0, qPrintable(r.err));
         QVERIFY2(r.err.contains(message), qPrintable(r.err));
         QVERIFY(!QFile::exists(out));
-        for (const QString& f : lwbtest::filesIn(m_dir.path())) QVERIFY2(!f.contains(".tmp-"), qPrintable(f));
+        for (const QString& f : lwbtest::filesIn(m_dir.path())) QVERIFY2(!f.contains(".tmp-") && !f.contains(".lwb-tmp-"), qPrintable(f));
     }
 
     void keepGoingReportsUnreadableRows() {

@@ -153,7 +153,7 @@ class TestSlrCli : public QObject {
     /// Nothing but the expected files in the folder (no staged or temporary output left).
     void noStrayFiles() {
         for (const QString& f : lwbtest::filesIn(m_dir.path()))
-            QVERIFY2(!f.contains(".tmp-") && !f.contains(".lwb-stage-"), qPrintable(f));
+            QVERIFY2(!f.contains(".tmp-") && !f.contains(".lwb-tmp-") && !f.contains(".lwb-stage-"), qPrintable(f));
     }
 
 private slots:

@@ -499,7 +499,7 @@ bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
     }
     if (!problems.isEmpty()) {
         if (errorOut) *errorOut = problems.join("\n");
-        showError(tr("Cannot open everything dropped"), problems.join("\n"));
+        showError(tr("Cannot open everything given"), problems.join("\n"));
         return false;
     }
     return true;
@@ -702,9 +702,13 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
         if (errorOut) *errorOut = tr("%1: not opened (cancelled; the current changes are kept)").arg(path);
         return false;
     }
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) return fail(tr("%1: %2").arg(path, f.errorString()));
-    const QByteArray text = f.readAll();
+    // Through the core's reader, as the CLI reads its inputs: a regular file (a FIFO would block,
+    // a device never end) of at most kMaxSessionBytes, read once.
+    std::string raw, why;
+    if (!core::readFileText(path.toStdString(), &raw, &why, kMaxSessionBytes)) return fail(QString::fromStdString(why));
+    const QByteArray text = QByteArray::fromStdString(raw);
+    raw.clear();
+    raw.shrink_to_fit();
     // Parsed by the core's reader first: strict (duplicate keys refused), and its positions
     // give the parameter sections' messages their line and column.
     const core::JsonParseResult parsed = core::parseJson(text.toStdString(), path.toStdString());

@@ -37,6 +37,9 @@ public:
     /// Opens footprint frames, folders or a shot list, replacing the list (after the
     /// unsaved-changes prompt; false when cancelled).
     bool openFootprintInputs(const QStringList& paths);
+    /// Largest session file opened (bytes); larger ones are refused with their size (a session is
+    /// read whole and parsed twice: about 6 times its size in memory).
+    static constexpr long long kMaxSessionBytes = 128LL << 20;
     /// Opens a session file (after the unsaved-changes prompt); on error shows a dialog (unless
     /// quiet) and keeps the current state.
     bool openSession(const QString& path, bool quiet = false, QString* error = nullptr);

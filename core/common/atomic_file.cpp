@@ -20,10 +20,14 @@
 namespace lwb::core {
 
 namespace {
+// A hidden name beside the target: ".lwb-tmp-PID-HEX-NAME" (removeLeftovers() removes those of
+// killed runs).
 std::string tempNameFor(const std::string& path) {
     std::random_device rd;
+    const size_t slash = path.find_last_of('/');
     std::ostringstream s;
-    s << path << ".tmp-" << ::getpid() << '-' << std::hex << rd();
+    s << (slash == std::string::npos ? std::string() : path.substr(0, slash + 1)) << ".lwb-tmp-" << ::getpid() << '-'
+      << std::hex << rd() << '-' << (slash == std::string::npos ? path : path.substr(slash + 1));
     return s.str();
 }
 }  // namespace
@@ -263,6 +267,7 @@ bool readFileText(const std::string& path, std::string* content, std::string* er
     }
     long long size = 0;
     if (regularFileProblem(path, error, &size)) return false;
+    noteInputRead(path);  // (no output of this run may replace it)
     if (maxBytes > 0 && size > maxBytes) {
         if (error)
             *error = path + ": " + std::to_string(size) + " bytes is larger than the limit of " + std::to_string(maxBytes) +
@@ -307,6 +312,7 @@ bool readFileHead(const std::string& path, size_t n, std::string* head, std::str
         raw = in.data.substr(0, std::max<size_t>(n, 1 << 16));
     } else {
         if (regularFileProblem(path, error)) return false;
+        noteInputRead(path);
         std::ifstream in(path, std::ios::binary);
         if (!in) {
             if (error) *error = path + ": cannot open: " + std::strerror(errno);

@@ -6,6 +6,7 @@
 
 #include "core/codecs_module/codec_api.hpp"
 #include "core/common/install_paths.hpp"
+#include "core/common/output_set.hpp"
 
 #ifndef LWB_CODECS_BUILD_PATH
 #define LWB_CODECS_BUILD_PATH ""
@@ -76,6 +77,9 @@ bool imageEncode(const std::string& ext, const cv::Mat& image, std::vector<uchar
     return codecs::required().encode(ext, image, &buf, params);
 }
 
-cv::Mat imageRead(const std::string& path, int flags) { return codecs::required().read(path, flags); }
+cv::Mat imageRead(const std::string& path, int flags) {
+    noteInputRead(path);
+    return codecs::required().read(path, flags);
+}
 
 }  // namespace lwb::core

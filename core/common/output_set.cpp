@@ -1,8 +1,13 @@
 #include "core/common/output_set.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <climits>
+#include <dirent.h>
+#include <fnmatch.h>
+#include <mutex>
+#include <signal.h>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -52,6 +57,25 @@ const char* kindOf(mode_t m) {
 
 std::atomic<int> g_stdoutFd{1};
 
+struct InputRead {
+    dev_t dev;
+    ino_t ino;
+    std::string path;
+};
+std::mutex g_inputsMutex;
+std::vector<InputRead>& inputsRead() {
+    static std::vector<InputRead> v;
+    return v;
+}
+
+// The name of a noted input that is the file `st` describes, or "".
+std::string noted(const struct stat& st) {
+    std::lock_guard<std::mutex> lock(g_inputsMutex);
+    for (const InputRead& r : inputsRead())
+        if (r.dev == st.st_dev && r.ino == st.st_ino) return r.path;
+    return {};
+}
+
 // Copies a staged file to a file descriptor; false with *why.
 bool copyToFd(const std::string& path, int fd, std::string* why) {
     FILE* f = std::fopen(path.c_str(), "rb");
@@ -83,7 +107,47 @@ bool copyToFd(const std::string& path, int fd, std::string* why) {
 
 }  // namespace
 
+void noteInputRead(const std::string& path) {
+    struct stat st {};
+    if (path.empty() || path == "-" || ::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return;
+    std::lock_guard<std::mutex> lock(g_inputsMutex);
+    for (const InputRead& r : inputsRead())
+        if (r.dev == st.st_dev && r.ino == st.st_ino) return;
+    inputsRead().push_back({st.st_dev, st.st_ino, path});
+}
+
+std::string inputReadAs(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return {};
+    return noted(st);
+}
+
 void setStandardOutputFd(int fd) { g_stdoutFd = fd; }
+
+int removeLeftovers(const std::string& folder) {
+    DIR* d = ::opendir(folder.c_str());
+    if (!d) return 0;
+    int removed = 0;
+    std::vector<std::string> names;
+    while (const dirent* e = ::readdir(d)) names.emplace_back(e->d_name);
+    ::closedir(d);
+    for (const std::string& name : names) {
+        for (const char* prefix : {".lwb-stage-", ".lwb-backup-", ".lwb-tmp-", ".lwb-stdout-"}) {
+            const size_t n = std::strlen(prefix);
+            if (name.compare(0, n, prefix) != 0) continue;
+            char* end = nullptr;
+            const long pid = std::strtol(name.c_str() + n, &end, 10);
+            if (pid <= 0 || !end || *end != '-') break;
+            // A process that still runs (or one we may not signal: it exists) keeps its files.
+            if (pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM) break;
+            const std::string path = folder + "/" + name;
+            struct stat st {};
+            if (::lstat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && std::remove(path.c_str()) == 0) ++removed;
+            break;
+        }
+    }
+    return removed;
+}
 int standardOutputFd() { return g_stdoutFd; }
 
 std::string faultInjectedName(const char* phase) {
@@ -107,6 +171,12 @@ void OutputSet::addInput(const std::string& path) {
 void OutputSet::addOutput(const std::string& path) {
     m_items.push_back({path == "-", path, {}, {}});
     m_checked = false;
+}
+
+void OutputSet::setManifest(const std::string& manifest, const std::string& folder, std::vector<std::string> stalePatterns) {
+    m_manifest = manifest;
+    m_setFolder = folder;
+    m_stalePatterns = std::move(stalePatterns);
 }
 
 bool OutputSet::writesStandardOutput() const {
@@ -197,12 +267,25 @@ bool OutputSet::check() {
             m_error = p + ": cannot write in " + targetDir + ": " + std::strerror(errno) + " (nothing written)";
             return false;
         }
+        static std::vector<std::string> cleaned;  // (each folder once per process)
+        if (std::find(cleaned.begin(), cleaned.end(), targetDir) == cleaned.end()) {
+            removeLeftovers(targetDir);
+            cleaned.push_back(targetDir);
+        }
         for (const auto& in : inputs)
             if (id.same(in)) {
                 m_error = p + ": an output would overwrite the input (the same file); nothing written";
                 m_naming = true;
                 return false;
             }
+        if (id.exists) {
+            const std::string as = noted(st);
+            if (!as.empty()) {
+                m_error = p + ": an output would overwrite an input of this run (the same file as " + as + "); nothing written";
+                m_naming = true;
+                return false;
+            }
+        }
         for (size_t k = 0; k < outputs.size(); ++k)
             if (id.same(outputs[k])) {
                 m_error = "two outputs name the same file: " + m_items[k].path + " and " + p + " (nothing written)";
@@ -247,44 +330,104 @@ bool OutputSet::commit() {
             return false;
         }
     }
-    // Keep a hard link to each file about to be replaced, so that a failure half-way through
-    // can put the earlier ones back.
-    std::vector<std::string> backups(m_items.size());
-    const std::string faultName = faultInjectedName("rename");
-    size_t done = 0;
-    for (; done < m_items.size(); ++done) {
-        const Item& it = m_items[done];
+    // Inputs read since check() (a file picked from a folder, a config read late) are protected too.
+    for (const auto& it : m_items) {
         if (it.toStdout) continue;
-        struct stat st {};
-        if (::stat(it.target.c_str(), &st) == 0) {
-            const std::string b = folderOf(it.target) + "/.lwb-backup-" + std::to_string(::getpid()) + "-" +
-                                  std::to_string(done) + "-" + baseOf(it.target);
-            if (::link(it.target.c_str(), b.c_str()) == 0) backups[done] = b;
+        const std::string as = inputReadAs(it.target);
+        if (!as.empty()) {
+            m_error = it.path + ": an output would overwrite an input of this run (the same file as " + as +
+                      "); nothing written";
+            m_naming = true;
+            abandon();
+            return false;
         }
-        const bool injected = !faultName.empty() && it.target.size() >= faultName.size() &&
-                              it.target.compare(it.target.size() - faultName.size(), faultName.size(), faultName) == 0;
+    }
+    // Every file replaced or removed keeps a hard link (a backup) until the end, so that a failure
+    // half-way through can put it back; a new file is removed again. Order: the manifest's old
+    // file first, the new files, the stale files of the set, the manifest last.
+    const std::string faultName = faultInjectedName("rename"), killName = faultInjectedName("kill");
+    std::vector<std::pair<std::string, std::string>> restore;  // (backup, original)
+    std::vector<std::string> created;
+    int backupCount = 0;
+    auto setAside = [&](const std::string& target) {  // false when it cannot be kept
+        struct stat st {};
+        if (::lstat(target.c_str(), &st) != 0) return true;  // nothing there
+        const std::string b = folderOf(target) + "/.lwb-backup-" + std::to_string(::getpid()) + "-" +
+                              std::to_string(backupCount++) + "-" + baseOf(target);
+        if (::link(target.c_str(), b.c_str()) != 0) return false;
+        restore.emplace_back(b, target);
+        return true;
+    };
+    auto put = [&](const Item& it) {
+        const bool existed = ::access(it.target.c_str(), F_OK) == 0;
+        if (existed && !setAside(it.target)) {
+            m_error = "cannot write " + it.path + ": cannot keep the file it replaces: " + std::strerror(errno) +
+                      " (nothing written)";
+            return false;
+        }
+        auto endsWith = [&](const std::string& name) {
+            return !name.empty() && it.target.size() >= name.size() &&
+                   it.target.compare(it.target.size() - name.size(), name.size(), name) == 0;
+        };
+        if (endsWith(killName)) ::raise(SIGKILL);  // (tests: killed half-way through the commit)
+        const bool injected = endsWith(faultName);
         if (injected || std::rename(it.staging.c_str(), it.target.c_str()) != 0) {
             m_error = "cannot write " + it.path + ": " + (injected ? "injected fault" : std::strerror(errno)) +
                       " (nothing written; the files already replaced were restored)";
-            break;
+            return false;
+        }
+        if (!existed) created.push_back(it.target);
+        return true;
+    };
+    const Item* manifest = nullptr;
+    for (const auto& it : m_items)
+        if (!m_manifest.empty() && it.path == m_manifest) manifest = &it;
+    bool ok = true;
+    if (manifest && ::access(manifest->target.c_str(), F_OK) == 0) {
+        ok = setAside(manifest->target) && ::unlink(manifest->target.c_str()) == 0;
+        if (!ok) m_error = "cannot replace " + manifest->path + ": " + std::strerror(errno) + " (nothing written)";
+    }
+    for (size_t i = 0; ok && i < m_items.size(); ++i)
+        if (!m_items[i].toStdout && &m_items[i] != manifest) ok = put(m_items[i]);
+    if (ok && !m_setFolder.empty() && !m_stalePatterns.empty()) {
+        // Earlier outputs of the same kind that this run did not write again.
+        std::vector<std::string> names;
+        if (DIR* d = ::opendir(m_setFolder.c_str())) {
+            while (const dirent* e = ::readdir(d)) names.emplace_back(e->d_name);
+            ::closedir(d);
+        }
+        std::sort(names.begin(), names.end());
+        for (const std::string& name : names) {
+            bool match = false;
+            for (const std::string& pat : m_stalePatterns) match = match || ::fnmatch(pat.c_str(), name.c_str(), 0) == 0;
+            const std::string path = m_setFolder + "/" + name;
+            struct stat st {};
+            if (!match || ::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+            bool ours = false;
+            for (const auto& it : m_items) ours = ours || (!it.toStdout && sameFile(path, it.target));
+            if (ours || !inputReadAs(path).empty()) continue;
+            if (!setAside(path) || ::unlink(path.c_str()) != 0) {
+                m_error = "cannot remove the earlier output " + path + ": " + std::strerror(errno) + " (nothing written)";
+                ok = false;
+                break;
+            }
         }
     }
-    if (done < m_items.size()) {
-        for (size_t j = 0; j < done; ++j) {
-            if (m_items[j].toStdout) continue;
-            if (!backups[j].empty()) std::rename(backups[j].c_str(), m_items[j].target.c_str());
-            else std::remove(m_items[j].target.c_str());
+    if (ok && manifest) ok = put(*manifest);
+    if (!ok) {
+        for (const std::string& c : created) std::remove(c.c_str());
+        // (rename() of a hard link over the same file does nothing: a backup of a file never
+        // replaced is simply removed)
+        for (auto r = restore.rbegin(); r != restore.rend(); ++r) {
+            if (sameFile(r->first, r->second)) std::remove(r->first.c_str());
+            else std::rename(r->first.c_str(), r->second.c_str());
         }
-        for (size_t j = done; j < backups.size(); ++j)
-            if (!backups[j].empty()) std::remove(backups[j].c_str());
         abandon();
         return false;
     }
-    for (const auto& b : backups)
-        if (!b.empty()) std::remove(b.c_str());
+    for (const auto& r : restore) std::remove(r.first.c_str());
     // Standard output last: the files are in place; a reader that went away (a closed pipe)
     // is reported, and the staged copy removed.
-    bool ok = true;
     for (const auto& it : m_items) {
         if (!it.toStdout) continue;
         std::string why;

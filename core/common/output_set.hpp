@@ -25,10 +25,18 @@ public:
     void addOutput(const std::string& path);
     /// True when an output is standard output ("-").
     bool writesStandardOutput() const;
+    /// A run that writes a set of files into one folder (simulate footprint, slr --all-passes):
+    /// `manifest` (one of the outputs, e.g. truth.csv or summary.csv, that lists the set) is
+    /// removed first and renamed into place last, so a run killed half-way leaves no manifest
+    /// beside a mix of old and new files; files of `folder` whose names match one of
+    /// `stalePatterns` (fnmatch, e.g. "pass[0-9]*.csv"), are not outputs of this run and are not
+    /// inputs of it are earlier outputs of the same kind: removed before the manifest is renamed.
+    /// A failure restores every file replaced or removed.
+    void setManifest(const std::string& manifest, const std::string& folder, std::vector<std::string> stalePatterns);
     /// Checks every output (see the file comment). Call before any computation. False with error().
     bool check();
     const std::string& error() const { return m_error; }
-    /// True when check() failed because outputs name an input or each other (a usage error),
+    /// True when check() or commit() failed because outputs name an input or each other (a usage error),
     /// false for a file-system problem (missing folder, read-only file, device...).
     bool namingProblem() const { return m_naming; }
     /// `message` with every staging path replaced by the output it stands for.
@@ -54,9 +62,20 @@ private:
     };
     std::vector<std::string> m_inputs;
     std::vector<Item> m_items;
+    std::string m_manifest, m_setFolder;
+    std::vector<std::string> m_stalePatterns;
     std::string m_error;
     bool m_checked = false, m_naming = false;
 };
+
+/// Every file this process reads as an input is noted here (readFileText, readFileHead, image
+/// and GeoTIFF reads do it): its device and inode, and the name it was read under. No OutputSet
+/// replaces such a file: check() refuses an output that is one, and commit() checks again for the
+/// inputs read since (a --config read before the outputs were checked, a CPF picked from a
+/// folder during the run). Thread-safe. "-" and paths that are not regular files are ignored.
+void noteInputRead(const std::string& path);
+/// The name an input was read under when `path` is the same file as one (else "").
+std::string inputReadAs(const std::string& path);
 
 /// Where an output "-" goes: file descriptor 1 unless a program moved its own messages off
 /// standard output (laserwb-cli does: its summary goes to standard error then) and says where
@@ -64,13 +83,19 @@ private:
 void setStandardOutputFd(int fd);
 int standardOutputFd();
 
+/// Removes what killed runs left in `folder`: staging, backup and temporary files of this
+/// program (".lwb-stage-PID-…", ".lwb-backup-PID-…", ".lwb-tmp-PID-…") whose process PID no longer
+/// runs. OutputSet::check() does it for every folder it writes in. Returns how many were removed.
+int removeLeftovers(const std::string& folder);
+
 /// True when both paths exist and name the same file (same device and inode: "./x", "x", a
 /// symbolic or hard link).
 bool sameFile(const std::string& a, const std::string& b);
 
 /// Fault injection for tests: when the environment variable LWB_FAULT_OUTPUT is
 /// "write:NAME" or "rename:NAME", writing (AtomicFile) or renaming (OutputSet::commit) a file
-/// whose name ends with NAME fails as a full disk would. Returns the phase's NAME or "".
+/// whose name ends with NAME fails as a full disk would; "kill:NAME": the process kills itself
+/// (SIGKILL) just before renaming that file. Returns the phase's NAME or "".
 std::string faultInjectedName(const char* phase);
 
 }  // namespace lwb::core

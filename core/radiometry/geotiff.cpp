@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/codecs_module/codec_api.hpp"
+#include "core/common/output_set.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/image_codecs.hpp"
 #include "core/common/text.hpp"
@@ -47,12 +48,14 @@ bool writeGeoTiff(const std::string& path, const cv::Mat& image, const GeoRefere
 
 bool readGeoReference(const std::string& path, GeoReference* geo, std::string* error) {
     if (regularFileProblem(path, error)) return false;  // no FIFOs, devices, folders
+    noteInputRead(path);
     const codecs::CodecModule* m = codecs::codecModule(error);
     return m && m->readGeoReference(path, geo, error);
 }
 
 bool readGeoTiff(const std::string& path, cv::Mat* image, GeoReference* geo, std::string* error, long long maxPixels) {
     if (regularFileProblem(path, error)) return false;
+    noteInputRead(path);
     const codecs::CodecModule* m = codecs::codecModule(error);
     return m && m->readGeoTiff(path, image, geo, error, maxPixels);
 }
