@@ -26,7 +26,6 @@ namespace sim = core::sim;
 namespace {
 
 // calib detector: the outputs are written but the centre is doubtful (see kDetectorUsage).
-constexpr int kDoubtful = 3;
 
 std::string fx(double v, int d) { return std::isfinite(v) ? core::formatFixed(v, d) : std::string(); }
 std::string gx(double v) { return std::isfinite(v) ? core::formatDouble(v, 10) : std::string(); }
@@ -63,7 +62,7 @@ const char* kDetectorUsage =
     "  -o, --output CENTRE.csv      one row: centre, ellipses, lat/lon, height, surface, fit figures,\n"
     "                               noise model, doubtful (0/1) and the reasons\n"
     "  --detectors REPORT.csv       one row per detector: status, reason, model, residual, bound, sigma\n"
-    "  -q, --quiet                  no summary on stderr\n"
+
     "Exit codes: 0 a trusted centre; 3 the outputs are written but the centre is doubtful (reasons on\n"
     "stderr and in CENTRE.csv): chi2 improbable under a given noise model, the centre outside the\n"
     "detectors that see the footprint or the array by more than the footprint's 1/e2 radius, a 95 %\n"
@@ -82,7 +81,7 @@ const char* kWaveformUsage =
     "  --thred-h M          height threshold (default 0.1 m)\n"
     "  -o, --output OUT.csv candidates ranked: rank, id, h, delta_h, below_threshold, chosen\n"
     "  --model MODEL.csv    the fitted waveform: time_ns, amplitude, model\n"
-    "Exit code 1 also when no candidate lies within thred_h (the table is still written).\n";
+    "Exit code 3 when no candidate lies within thred_h (the table is written, the closest is named).\n";
 
 const char* kPointingUsage =
     "usage: laserwb-cli calib pointing CONTROL.csv --beams BEAMS.json [options] -o BEAMS_OUT.csv\n"
@@ -122,6 +121,7 @@ const char* kSimCalibUsage =
     "waveform_truth.csv; diffs.csv (validation elevation differences per beam, for calib stats) and\n"
     "diffs_truth.csv.\n"
     "  --seed S        random seed (default 1)\n"
+    "  -q, --quiet     no summary on stderr\n"
     "  --passes N      calibration passes (default 4)\n"
     "  --single-beam   only beam 1 fires\n"
     "  --geographic    detector positions as lat/lon\n"
@@ -270,7 +270,8 @@ int cmdCalibWaveform(int argc, char** argv) {
         if (!mr.found) {
             std::cout << "no candidate within thred_h " << core::formatDouble(mp.thresholdM, 4) << " m (closest: "
                       << cands[mr.best].id << ", dh " << fx(mr.bestDeltaHM, 3) << " m)\n";
-            return kFailed;
+            std::cerr << "laserwb-cli " << cmd << ": doubtful: no candidate feature within thred_h (exit 3)\n";
+            return kDoubtful;
         }
         std::cout << "footprint on feature " << cands[mr.best].id << " (h " << gx(cands[mr.best].heightM) << " m, dh "
                   << fx(mr.bestDeltaHM, 3) << " m)\n";

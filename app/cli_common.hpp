@@ -12,8 +12,10 @@
 
 namespace lwb::cli {
 
-/// Exit codes: 0 success, 1 bad input or failed run (nothing written), 2 usage error.
-enum Exit { kOk = 0, kFailed = 1, kUsage = 2 };
+/// Exit codes, kept by every command (README, "Command line"): 0 success; 1 bad input or failed
+/// run (nothing written); 2 usage error; 3 the outputs are written, but a result is doubtful or
+/// incomplete (the reasons on stderr, even with -q, and in the outputs).
+enum Exit { kOk = 0, kFailed = 1, kUsage = 2, kDoubtful = 3 };
 
 /// A small option parser: "--name value", "--name=value", flags, repeatable options, and
 /// positional arguments; unknown options are errors.
@@ -141,7 +143,8 @@ public:
                "  --config FILE.json   parameters (the " + what + " block of a workbench session); options override it\n"
                "  --set KEY=VALUE      set one parameter (repeatable), e.g. --set " + example + "\n"
                "  --print-config       print the effective parameters as JSON and exit\n"
-               "  --help-params        every parameter with its unit, range, default and meaning\n";
+               "  --help-params        every parameter with its unit, range, default and meaning\n"
+               "  -q, --quiet          no summary, progress or warnings on stderr (errors still)\n";
     }
     /// Declares these options with --help, -h, -q, --quiet and --help-params, parses argv[first..]
     /// and answers --help (the usage) and --help-params (the table). -1 to go on, else the exit code.

@@ -160,6 +160,7 @@ const char* kSimUsage =
     "usage: laserwb-cli simulate footprint --count N --seed S [options] OUTDIR\n"
     "Writes simulated footprint shots with exact truth (OUTDIR/truth.csv).\n"
     "  --count N            number of shots (default 100)\n"
+    "  -q, --quiet          no progress line\n"
     "  --seed S             random seed (default 1); the same seed gives the same files\n"
     "  --scene NAME         weak|moderate|strong|night|flat|mixed (default mixed: the first four in turn)\n"
     "  --case NAME          normal|no_spot|saturated|double_spot|edge|elongated|mixed (default normal;\n"
@@ -413,6 +414,7 @@ const char* kEvalUsage =
     "against the exact truth, verdict counts and the Cramer-Rao bound.\n"
     "Variants: gcm, tefm, gauss-paper, gauss-xy, gauss-guo, gauss (default: all).\n"
     "  --config FILE.json   add a variant \"config\": the defaults overridden by the file\n"
+    "  -q, --quiet          no progress line\n"
     "  --scenes a,b         scenes to run (weak,moderate,strong,night,flat)\n"
     "  --ground photo|synthetic   simulator ground (default photo: real aerial photographs)\n";
 }

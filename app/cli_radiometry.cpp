@@ -108,7 +108,8 @@ const char* kApplyUsage =
     "  --plain-tiff            write plain TIFF outputs even then\n"
     "  --check CHECK.csv       check regions (name, reflectance, x, y, w, h) -> relative errors\n"
     "  --table TABLE.csv       the relative-error table (with --check)\n"
-    "  --limit PCT             relative-error limit (default 5 %)\n"
+    "  --limit PCT             relative-error limit (default 5 %); a check region above it: exit 3\n"
+    "                          (the outputs are written)\n"
     "  --max-pixels N           largest image read, from its header (default 268435456 = 16384^2)\n";
 
 const char* kCheckUsage =
@@ -116,7 +117,7 @@ const char* kCheckUsage =
     "Relative error of simulated (image) against measured reflectance per check region (paper 003\n"
     "tables 5-7): |simulated - measured| / measured * 100.\n"
     "CHECK.csv: name, measured (or reflectance), and simulated or a rectangle x, y, w, h on --image.\n"
-    "Exit code 1 also when a region exceeds the limit (default 5 %); the table is still written.\n"
+    "Exit code 3 when a region exceeds the limit (default 5 %); the table is still written.\n"
     "  --max-pixels N           largest image read, from its header (default 268435456 = 16384^2)\n";
 
 // The radiometry parameters: one schema (core/radiometry/radiometry_params.hpp) for every
@@ -377,7 +378,11 @@ int cmdRadiometryApply(int argc, char** argv) {
                       << " %, relative error " << fx(row.relativeErrorPct, 3) << " %\n";
         std::cout << "max relative error " << fx(check.maxPct, 3) << " % (limit " << core::formatDouble(limit, 4) << " %)\n";
         warn(cmd, check.warnings);
-        if (!check.allWithinLimit) return kFailed;
+        if (!check.allWithinLimit) {
+            std::cerr << "laserwb-cli " << cmd << ": doubtful: a check region exceeds the " << core::formatDouble(limit, 4)
+                      << " % limit (outputs written; exit 3)\n";
+            return kDoubtful;
+        }
     }
     return kOk;
 }
@@ -416,7 +421,9 @@ int cmdRadiometryCheck(int argc, char** argv) {
     std::cout << "max " << fx(r.maxPct, 4) << " %, mean " << fx(r.meanPct, 4) << " % (limit " << core::formatDouble(limit, 4)
               << " %)\n";
     warn(cmd, r.warnings);
-    return r.allWithinLimit ? kOk : kFailed;
+    if (!r.allWithinLimit)
+        std::cerr << "laserwb-cli " << cmd << ": doubtful: a region exceeds the limit (table written; exit 3)\n";
+    return r.allWithinLimit ? kOk : kDoubtful;
 }
 
 namespace {
@@ -432,7 +439,8 @@ const char* kSimRadiometryUsage =
     "  OUTDIR/gcps.csv      six ground control points: id, x, y on the row image (picked to 0.3 px),\n"
     "                       map_x, map_y in metres (1 cm ground pixels, Y up; surveyed to 2 mm)\n"
     "                       (radiometry gcp)\n"
-    "  OUTDIR/truth.csv     the simulated line V_REF = k * V_DN + b (%)\n";
+    "  OUTDIR/truth.csv     the simulated line V_REF = k * V_DN + b (%)\n"
+    "  -q, --quiet          no summary on stderr\n";
 }
 
 int cmdSimulateRadiometry(int argc, char** argv) {

@@ -57,6 +57,7 @@ const char* kSlrUsage =
     "  --config FILE.json    parameters (as --print-config writes them)\n"
     "  --set KEY=VALUE       one parameter (repeatable), e.g. --set screen.cosine_c=0.97\n"
     "  --print-config        print the effective parameters as JSON and exit\n"
+    "  --help-params         every parameter with its unit, range, default and meaning\n"
     "  --mag-t X             pixels per second of epoch (paper table 1: 10 conventional, 1 diffuse)\n"
     "  --mag-oc Y            pixels per second of O-C (paper: 1e10 conventional, 1e7 diffuse)\n"
     "  --area-min N          area limit in pixels: regions at least this large are candidates\n"
@@ -85,7 +86,8 @@ const char* kSlrUsage =
     "  --npt-out FILE        the normal points as a CRD normal-point file (the pass's headers)\n"
     "                        (--crd-out and --npt-out need a CRD input)\n"
     "  -q, --quiet           no summary and no warnings on stderr (errors still)\n"
-    "Exit codes: 0 done, 1 bad input or failed run, 2 usage error.\n";
+    "Exit codes: 0 done, 1 bad input or failed run (nothing written), 2 usage error, 3 --all-passes\n"
+    "wrote the summary but some passes failed (their rows say why).\n";
 
 std::string passList(const std::vector<slr::PassSummary>& passes) {
     std::string s;
@@ -128,7 +130,14 @@ int settingsFor(const std::string& cmd, const slr::PassData& pass, const RunInpu
     std::string err;
     if (!slr::passSettings(pass, cliDefaults(), ri.havePresets ? &ri.presets : nullptr, ri.satellite, ri.stations, out, &err))
         return fail(cmd, ri.args->value("--preset") + ": " + err);
+    // What the pass tells (its altitude, fire rate, day or night) stays unless the options or a
+    // config give a value for it: a config's "unknown" (the 0 that --print-config writes for
+    // them) is not a value, so a printed config run again gives the same run.
+    const slr::PostfitParams fromPass = out->params.postfit;
     if (int rc = ri.options->apply(cmd, *ri.args, &out->params)) return rc;
+    slr::PostfitParams& pp = out->params.postfit;
+    if (!(pp.altitudeKm > 0)) pp.altitudeKm = fromPass.altitudeKm;
+    if (!(pp.fireRateHz > 0)) pp.fireRateHz = fromPass.fireRateHz;
     if (const std::string e = slr::validate(out->params.screen); !e.empty())
         return fail(cmd, (out->presetName.empty() ? std::string() : "preset " + out->presetName + ": ") + e, kUsage);
     return kOk;
@@ -171,7 +180,11 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
                       << core::formatDouble(post.binLengthS, 4) << " s, at least " << post.minPointsPerBin << " points"
                       << (post.dayBins + post.nightBins ? " (" + std::to_string(post.dayBins) + " day, " +
                                                               std::to_string(post.nightBins) + " night bins)"
-                                                        : std::string(pp.daylight ? " (day)" : " (night)"))
+                                                        : std::string(pp.dayNight == slr::PostfitParams::DayNight::Night
+                                                                          ? " (night)"
+                                                                          : pp.dayNight == slr::PostfitParams::DayNight::Day
+                                                                                ? " (day)"
+                                                                                : " (day: day or night unknown)"))
                       << (post.binsTooSmall ? ", " + std::to_string(post.binsTooSmall) + " bins too small" : "") << ")\n";
         for (const auto& note : settings.notes) std::cerr << "  " << note << "\n";
     }
@@ -276,7 +289,11 @@ int screenAllPasses(const std::string& cmd, const std::string& input, const slr:
     folder.keep();
     if (!quiet)
         std::cerr << "slr: " << input << ": " << okCount << " of " << n << " passes screened -> " << dir << "/ (summary.csv)\n";
-    return okCount > 0 ? kOk : kFailed;
+    if (okCount == n) return kOk;
+    // (said even with -q: a partial result is not a success)
+    std::cerr << "laserwb-cli slr: " << n - okCount << " of " << n << " passes failed (" << dir
+              << "/summary.csv says why); exit 3\n";
+    return kDoubtful;
 }
 
 }  // namespace

@@ -91,6 +91,7 @@ const char* kSimUsage =
     "                        (s from the first shot; no signal inside, noise goes on unless nodata;\n"
     "                        SHIFT_NS moves the track from the end of the gap on)\n"
     "  --seed S              random seed; the same seed gives the same file\n"
+    "  -q, --quiet           no summary of the pass on stderr\n"
     "Example: laserwb-cli simulate slr --kind conventional --seed 3 pass.frd\n";
 
 }  // namespace

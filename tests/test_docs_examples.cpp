@@ -113,7 +113,12 @@ private slots:
         QStringList failures, skipped;
         for (const QString& path : docFiles()) {
             const QList<Block> blocks = shellBlocks(path);
-            if (blocks.isEmpty()) continue;
+            if (std::none_of(blocks.begin(), blocks.end(), [](const Block& b) { return b.notRun.isEmpty(); }))
+                for (const Block& b : blocks) {  // (only blocks that are not run)
+                    ++notRun;
+                    skipped << QString("%1:%2 (%3)").arg(b.file).arg(b.line).arg(b.notRun);
+                }
+            if (std::none_of(blocks.begin(), blocks.end(), [](const Block& b) { return b.notRun.isEmpty(); })) continue;
             ++files;
             QTemporaryDir scratch;  // one per file: its blocks build on each other's outputs
             QVERIFY(scratch.isValid());
@@ -195,6 +200,29 @@ private slots:
         const QRegularExpressionMatch r = release.match(QString::fromUtf8(readAll(LWB_SOURCE_DIR "/CHANGELOG.md")));
         QVERIFY2(r.hasMatch(), "CHANGELOG.md has no release");
         QCOMPARE(r.captured(1), QString(LWB_VERSION));
+    }
+
+    // A flag a command takes is in its --help (the README used -q everywhere; most --help texts
+    // did not say it): -q, --quiet and --help-params for every command that accepts them.
+    void acceptedFlagsAreInTheHelp() {
+        const QList<QStringList> commands{{"footprint"}, {"trend"}, {"slr"}, {"simulate", "footprint"}, {"simulate", "trend"},
+                                          {"simulate", "slr"}, {"simulate", "calib"}, {"simulate", "radiometry"},
+                                          {"eval", "footprint"}, {"calib", "detector"}, {"calib", "waveform"},
+                                          {"calib", "pointing"}, {"calib", "stats"}, {"radiometry", "mosaic"},
+                                          {"radiometry", "gcp"}, {"radiometry", "fit"}, {"radiometry", "apply"},
+                                          {"radiometry", "check"}};
+        QStringList missing;
+        for (const QStringList& c : commands) {
+            const QString help = helpOf(c);
+            for (const QString& flag : {QString("-q"), QString("--help-params")}) {
+                // Accepted: `CMD FLAG --help` prints the help (an unknown flag is a usage error).
+                if (runCli(c + QStringList{flag, "--help"}).exitCode != 0) continue;
+                if (!help.contains(QRegularExpression("(^|[\\s,])" + QRegularExpression::escape(flag) + "([\\s,]|$)",
+                                                      QRegularExpression::MultilineOption)))
+                    missing << c.join(' ') + " takes " + flag + " but its --help does not say so";
+            }
+        }
+        QVERIFY2(missing.isEmpty(), qPrintable(missing.join("\n")));
     }
 
     void helpSetExamplesAreAccepted() {

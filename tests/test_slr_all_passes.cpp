@@ -27,8 +27,13 @@ private slots:
     void everyPassIsARow() {
         const QString in = sharedPath("slr/hy2c_202109.fr2");
         if (!QFile::exists(in)) QSKIP("shared SLR data absent");
+        // Three of its passes are too short to screen: the summary is written, exit 3 (issue 27's
+        // contract: written but incomplete), said on stderr even with -q.
+        const CliRun q = runCli({"slr", in, "--all-passes", "--out-dir", p("hy2c"), "-q"});
+        QCOMPARE(q.exitCode, 3);
+        QVERIFY2(q.err.contains("3 of 6 passes failed"), qPrintable(q.err));
         const CliRun r = runCli({"slr", in, "--all-passes", "--out-dir", p("hy2c")});
-        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(r.exitCode, 3);
         const CsvTable t = summary(p("hy2c/summary.csv"));
         // The file's six passes, in file order, each once.
         const auto passes = slr::summarisePasses(slr::readCrd(in.toStdString()).file);

@@ -799,6 +799,39 @@ private slots:
         QVERIFY(!QFile::exists(crd));
         noStrayFiles();
     }
+
+    // A printed config given back gives the same run (issue 27): the printed "unknown" altitude
+    // and fire rate (0) and day/night ("auto") keep what the pass tells. It exited 2 ("the
+    // satellite's altitude is unknown") and, with the day flag printed false, formed 6 normal
+    // points instead of 4 on STELLA.
+    void printedConfigRoundTrips_data() {
+        QTest::addColumn<QString>("pass");
+        QTest::newRow("simulated CRD") << "sim";
+        if (lwbtest::haveShared("slr/7080_STELLA_crd_071220_2128_0.frd")) QTest::newRow("STELLA") << lwbtest::sharedPath("slr/7080_STELLA_crd_071220_2128_0.frd");
+    }
+    void printedConfigRoundTrips() {
+        QFETCH(QString, pass);
+        if (pass == "sim") {
+            pass = p("roundtrip.frd");
+            QCOMPARE(runCli({"simulate", "slr", "--kind", "conventional", "--duration", "900", "--seed", "4", "-q", pass}).exitCode, 0);
+        }
+        const lwbtest::CliRun cfg = runCli({"slr", pass, "--print-config"});
+        QCOMPARE(cfg.exitCode, 0);
+        QVERIFY(lwbtest::writeText(p("rt.json"), cfg.out.toUtf8()));
+        QCOMPARE(runCli({"slr", pass, "-o", p("rt_a.csv"), "--npt-out", p("rt_a.npt"), "-q"}).exitCode, 0);
+        const lwbtest::CliRun again = runCli({"slr", pass, "--config", p("rt.json"), "-o", p("rt_b.csv"), "--npt-out", p("rt_b.npt"), "-q"});
+        QVERIFY2(again.exitCode == 0, qPrintable(again.err));
+        QCOMPARE(lwbtest::readAll(p("rt_b.csv")), lwbtest::readAll(p("rt_a.csv")));
+        QCOMPARE(lwbtest::readAll(p("rt_b.npt")), lwbtest::readAll(p("rt_a.npt")));
+        QVERIFY(lwbtest::readAll(p("rt_a.npt")).contains("\n11 "));
+        // A config written before day_night ("daylight": false) still reads (as "auto").
+        QByteArray old = cfg.out.toUtf8();
+        QVERIFY(old.contains("\"day_night\": \"auto\""));
+        old.replace("\"day_night\": \"auto\"", "\"daylight\": false");
+        QVERIFY(lwbtest::writeText(p("rt_old.json"), old));
+        QCOMPARE(runCli({"slr", pass, "--config", p("rt_old.json"), "-o", p("rt_c.csv"), "--npt-out", p("rt_c.npt"), "-q"}).exitCode, 0);
+        QCOMPARE(lwbtest::readAll(p("rt_c.npt")), lwbtest::readAll(p("rt_a.npt")));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSlrCli)

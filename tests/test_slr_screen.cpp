@@ -870,6 +870,7 @@ private slots:
         pp.altitudeKm = sp.altitudeKm;
         pp.fireRateHz = sp.fireRateHz;
         pp.rejectSigma = 3;
+        pp.dayNight = PostfitParams::DayNight::Night;  // a night pass (the simulator's default)
         const PostfitResult f = postfit(pass.epochS, pass.ocS, acceptedMask(s), pass.tofS, pp);
         QVERIFY2(f.ok, f.error.c_str());
         QCOMPARE(f.binLengthS, 120.0);
@@ -931,8 +932,12 @@ private slots:
         QCOMPARE(int(g.normalPoints.size()) + g.binsTooSmall, int(f.normalPoints.size()) + f.binsTooSmall);
         // Daylight: the ILRS minimum is 6.
         PostfitParams day = pp;
-        day.daylight = true;
+        day.dayNight = PostfitParams::DayNight::Day;
         QCOMPARE(postfit(pass.epochS, pass.ocS, acceptedMask(s), {}, day).minPointsPerBin, 6);
+        // Day or night not said and the station unknown: the day minimum, the safer one.
+        PostfitParams unknown = pp;
+        unknown.dayNight = PostfitParams::DayNight::Auto;
+        QCOMPARE(postfit(pass.epochS, pass.ocS, acceptedMask(s), {}, unknown).minPointsPerBin, 6);
         // Whole-pass statistics against truth: RMS within 10 % of the 80 ps jitter.
         QVERIFY2(std::fabs(f.stats.rms - sp.jitterS) < 0.1 * sp.jitterS, qPrintable(QString::number(f.stats.rms)));
     }

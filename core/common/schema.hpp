@@ -160,6 +160,10 @@ public:
     }
     /// A rule between fields ("weak_below must be below strong_above"): "" when it holds.
     /// `section` ("screen.") makes it part of that section's validation too.
+    /// An older spelling that files written before a rename still hold: `rewrite` turns a JSON
+    /// document that has it into today's keys before fromJson reads it (it is not an unknown key).
+    void legacy(std::function<void(Json&)> rewrite) { m_legacy.push_back(std::move(rewrite)); }
+
     void rule(std::function<std::string(const P&)> r, std::string section = {}) {
         m_rules.push_back({std::move(section), std::move(r)});
     }
@@ -189,8 +193,14 @@ public:
     /// Unknown keys, wrong types and invalid values are errors naming the key, with the file,
     /// line and column when `doc` (the parse result `j` came from) is given. *inout is left
     /// untouched on error.
-    bool fromJson(const Json& j, P* inout, std::string* error, const JsonParseResult* doc = nullptr,
+    bool fromJson(const Json& given, P* inout, std::string* error, const JsonParseResult* doc = nullptr,
                   const std::vector<std::string>& at = {}) const {
+        Json rewritten;
+        if (!m_legacy.empty() && given.is_object()) {
+            rewritten = given;
+            for (const auto& l : m_legacy) l(rewritten);
+        }
+        const Json& j = m_legacy.empty() || !given.is_object() ? given : rewritten;
         auto where = [&](const std::vector<std::string>& rel) {
             std::vector<std::string> path = at;
             path.insert(path.end(), rel.begin(), rel.end());
@@ -493,6 +503,7 @@ private:
         std::function<std::string(const P&)> check;
     };
     std::vector<Rule> m_rules;
+    std::vector<std::function<void(Json&)>> m_legacy;
 };
 
 }  // namespace lwb::core

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <unistd.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -27,6 +28,7 @@ namespace {
 // The photograph, or empty (absent or unreadable); *why says so when no decoder could be used at
 // all (the codec module not loaded), which the error must name instead of a missing package.
 cv::Mat readPhoto(const std::string& path, std::string* why) {
+    if (::access(path.c_str(), R_OK) != 0) return {};  // (a candidate folder without it: no decoder warning)
     try {
         return imageRead(path, cv::IMREAD_COLOR);
     } catch (const cv::Exception& e) {

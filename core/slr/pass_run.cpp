@@ -41,8 +41,7 @@ bool passSettings(const PassData& pass, const SlrParams& base, const std::vector
     }
     if (pass.hasCrd) {
         s.notes = fillNormalPointContext(pass.crd.passes[size_t(pass.passIndex)], pass.cdpPad, stations, &s.params.postfit);
-        // Day or night unknown: the day minimum (6), unless a preset says which.
-        if (!std::isfinite(s.params.postfit.stationLatDeg) && s.presetName.empty()) s.params.postfit.daylight = true;
+        // (day or night unknown: postfit.day_night auto takes the day minimum, 6)
     }
     *out = std::move(s);
     return true;

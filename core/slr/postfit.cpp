@@ -624,9 +624,14 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
 
     // Normal points.
     const bool stationKnown = std::isfinite(p.stationLatDeg) && std::isfinite(p.stationLonDeg) && std::isfinite(p.dayStartMjd);
-    res.minPointsPerBin = p.minPointsPerBin > 0 ? p.minPointsPerBin : (p.daylight ? 6 : 3);
+    // The ILRS minimum: day or night as given, else bin by bin from the Sun at a known station,
+    // else the day minimum (the safer one).
+    using DN = PostfitParams::DayNight;
+    const bool perBin = p.dayNight == DN::Auto && stationKnown;
+    const int fixedMinimum = p.dayNight == DN::Night ? 3 : 6;
+    res.minPointsPerBin = p.minPointsPerBin > 0 ? p.minPointsPerBin : fixedMinimum;
     if (p.normalPoints) {
-        if (stationKnown && p.minPointsPerBin == 0) res.minPointsPerBin = 3;
+        if (perBin && p.minPointsPerBin == 0) res.minPointsPerBin = 3;
         const double L = res.binLengthS;
         std::vector<uint32_t> idx;
         for (size_t i = 0; i < n; ++i)
@@ -640,14 +645,14 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
             while (b < idx.size() && binOf(t[idx[b]]) == bin) ++b;
             const int cnt = static_cast<int>(b - a);
             // The ILRS minimum: 6 by day, 3 by night (the Sun at the station at the bin's middle).
-            int minPts = p.minPointsPerBin > 0 ? p.minPointsPerBin : (p.daylight ? 6 : 3);
+            int minPts = p.minPointsPerBin > 0 ? p.minPointsPerBin : fixedMinimum;
             double sunEl = NAN;
             if (stationKnown) {
                 const double mid = p.dayStartS + (static_cast<double>(bin) + 0.5) * L;
                 sunEl = sunElevationDeg(p.dayStartMjd + (mid - p.dayStartS) / 86400.0, p.stationLatDeg, p.stationLonDeg);
                 const bool day = isDaylight(sunEl);
                 (day ? res.dayBins : res.nightBins)++;
-                if (p.minPointsPerBin == 0) {
+                if (p.minPointsPerBin == 0 && perBin) {
                     minPts = day ? 6 : 3;
                     res.minPointsPerBin = std::max(res.minPointsPerBin, minPts);
                 }

@@ -47,7 +47,11 @@ struct PostfitParams {
     double altitudeKm = 0;        ///< satellite altitude (km) when binLengthS = 0
     double dayStartS = 0;         ///< epoch of 0h UTC of the pass's day (s, same scale as the epochs)
     int minPointsPerBin = 0;      ///< 0 = ILRS minimum (6 by day, 3 by night); else 1..1e6
-    bool daylight = false;        ///< day pass (for the ILRS minimum) when the station is not given
+    /// Day or night for the ILRS minimum of points per bin (6 by day, 3 by night). Auto: from the
+    /// Sun at the station, bin by bin, when the station is known (stationLatDeg ...), else day
+    /// (the safer minimum). Day, Night: that minimum for every bin.
+    enum class DayNight { Auto, Day, Night };
+    DayNight dayNight = DayNight::Auto;
     double stationLatDeg = NAN;   ///< station geodetic latitude and east longitude (degrees) and the
     double stationLonDeg = NAN;   ///< MJD of dayStartS: with all three, day or night per bin from the
     double dayStartMjd = NAN;     ///< Sun's elevation at the bin's epoch (6 or 3 points minimum)

@@ -79,7 +79,17 @@ const Schema<SlrParams>& slrSchema() {
         s.integer("postfit.min_points", LWB_FIELD(S, postfit.minPointsPerBin), "", {1, 1000000}, {1, 20},
                   "points a bin needs for a normal point; 0 = ILRS minimum (6 by day, 3 by night)")
             .specials = {{0, "ILRS minimum"}};
-        s.boolean("postfit.daylight", LWB_FIELD(S, postfit.daylight), "day pass (for the ILRS minimum of points per bin)");
+        s.choice("postfit.day_night", LWB_FIELD(S, postfit.dayNight), {"auto", "day", "night"},
+                 "day or night for the ILRS minimum of points per normal-point bin (6 by day, 3 by night): auto = from "
+                 "the Sun at the station bin by bin when the station is known (SINEX), else the day minimum");
+        // Files written before day_night held a boolean "daylight", false unless set: true is a
+        // day pass, false was "not said" (the day minimum applied when the station was unknown).
+        s.legacy([](Json& j) {
+            if (!j.contains("postfit") || !j["postfit"].is_object() || !j["postfit"].contains("daylight")) return;
+            Json& pf = j["postfit"];
+            if (pf["daylight"].is_boolean() && !pf.contains("day_night")) pf["day_night"] = pf["daylight"].get<bool>() ? "day" : "auto";
+            if (pf["daylight"].is_boolean()) pf.erase("daylight");
+        });
         s.real("postfit.fire_rate_hz", LWB_FIELD(S, postfit.fireRateHz), "Hz", {0, 1e9, true, false}, {1, 10000},
                "laser fire rate for the normal points' return rate; 0 = unknown")
             .specials = {{0, "unknown"}};
