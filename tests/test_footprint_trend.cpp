@@ -113,6 +113,22 @@ private slots:
         QVERIFY(monthOf("1584230400", &m) && m == "2020-03");  // 2020-03-15 00:00 UTC
         QVERIFY(!monthOf("15/03/2020", &m));
         QVERIFY(!monthOf("2020-13-01", &m));
+        // Issue 27: dates that do not exist, garbage after the date, and offsets that change the month.
+        std::string why;
+        QVERIFY(!monthOf("2021-02-30", &m, &why));
+        QCOMPARE(why, std::string("February 2021 has 28 days"));
+        QVERIFY(monthOf("2024-02-29", &m) && m == "2024-02");
+        QVERIFY(!monthOf("2021-01-05Tgarbage", &m, &why));
+        QVERIFY2(why.find("hh:mm") != std::string::npos, why.c_str());
+        QVERIFY(!monthOf("2021-01-05T10:00:00 junk", &m));
+        QVERIFY(!monthOf("2021-01-05T24:00", &m));
+        QVERIFY(monthOf("2021-01-31T23:30-02:00", &m) && m == "2021-02");  // 01:30 UTC on 1 February
+        QVERIFY(monthOf("2021-03-01T00:30+01:00", &m) && m == "2021-02");
+        QVERIFY(monthOf("2021-03-01T00:30+0100", &m) && m == "2021-02");
+        QVERIFY(monthOf("2016-12-31T23:59:60Z", &m) && m == "2016-12");   // a leap second
+        QVERIFY(monthOf("2017-01-01T07:59:60+08:00", &m) && m == "2016-12");
+        QVERIFY(!monthOf("2016-12-31T12:00:60Z", &m, &why));
+        QVERIFY(monthOf("2020-03-15T10:22:01.25Z", &m) && m == "2020-03");
         QVERIFY(!monthOf("yesterday", &m));
     }
 

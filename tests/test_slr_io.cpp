@@ -12,6 +12,7 @@
 #include "core/slr/crd.hpp"
 #include "core/slr/sinex.hpp"
 #include "core/slr/slr_time.hpp"
+#include "core/common/csv.hpp"
 #include "test_support.hpp"
 
 using namespace lwb::core::slr;
@@ -391,6 +392,32 @@ private slots:
         const CrdReadResult a = readText(dir, "nofinal.fr2", text);
         QVERIFY2(a.ok, a.error.c_str());
         QCOMPARE(QByteArray::fromStdString(formatCrd(a.file)), kGoodCrd);
+    }
+
+    // A byte order mark or classic Mac line ends (CR alone) read as the same file (issue 27:
+    // "not a CRD record \xef\xbb\xbfH1" and "no H4 session header in 1 lines"); the same for a
+    // CSV table.
+    void byteOrderMarkAndCrOnlyLineEnds() {
+        const CrdReadResult plain = parseCrd(kGoodCrd.toStdString(), "plain.frd");
+        QVERIFY2(plain.ok, plain.error.c_str());
+        const CrdReadResult bom = parseCrd(("\xEF\xBB\xBF" + kGoodCrd).toStdString(), "bom.frd");
+        QVERIFY2(bom.ok, bom.error.c_str());
+        QCOMPARE(formatCrd(bom.file), formatCrd(plain.file));
+        QByteArray cr = kGoodCrd;
+        cr.replace('\n', '\r');
+        const CrdReadResult mac = parseCrd(cr.toStdString(), "mac.frd");
+        QVERIFY2(mac.ok, mac.error.c_str());
+        QCOMPARE(formatCrd(mac.file), formatCrd(plain.file));
+        QCOMPARE(mac.file.passes.front().ranges.size(), plain.file.passes.front().ranges.size());
+        const lwb::core::CsvReadResult csv = lwb::core::parseCsv("\xEF\xBB\xBF" "a,b\r1,2\r3,4\r", "mac.csv");
+        QVERIFY2(csv.ok, csv.error.c_str());
+        QCOMPARE(csv.table.header.front(), std::string("a"));
+        QCOMPARE(csv.table.rows.size(), size_t(2));
+        QCOMPARE(csv.table.lines.back(), 3L);
+        // A column named twice is refused (it was the first one, silently).
+        const lwb::core::CsvReadResult twice = lwb::core::parseCsv("time,beam,x,y,X\n2020-01,1,2,3,4\n", "twice.csv");
+        QVERIFY(!twice.ok);
+        QVERIFY2(QString::fromStdString(twice.error).startsWith("twice.csv:1: column \"x\" appears twice"), twice.error.c_str());
     }
 
     void setFilterFlagsChangesOnlyTheFlag() {
@@ -940,7 +967,12 @@ private slots:
         QTest::newRow("text in MJD") << head + "10 0 5610x4 0.0 0 1 0 0\n" + many + "99\n" << true << ":3:" << 1;
         QTest::newRow("corrupted X") << head + "10 0 56104 0.0 0 corrupted 0 0\n" + many + "99\n" << true
                                      << "p.cpf:3: type 10 record skipped: X, Y, Z must be finite numbers" << 1;
-        QTest::newRow("out of order") << head + many + "10 0 56104 100.0 0 7000000 0 0\n99\n" << true << "not after" << 1;
+        // Going back in time: the file is out of order (issue 27: a shuffled CPF ended in "a gap of
+        // 158160 s"); repeating the previous epoch: that record skipped.
+        QTest::newRow("out of order") << head + many + "10 0 56104 100.0 0 7000000 0 0\n99\n" << false
+                                      << "p.cpf:15: position record out of time order" << 0;
+        QTest::newRow("repeated epoch") << head + many + "10 0 56104 2640.0 0 7000000 0 0\n99\n" << true
+                                        << "p.cpf:15: epoch repeats the previous record's; skipped" << 1;
         // The format ends every file with a 99 record: a file without it was probably cut short.
         QTest::newRow("no 99 end record") << head + many << true << "p.cpf:14: the file ends without the 99" << 1;
         QTest::newRow("cut inside a record") << head + many + "10 0 56104 2880.0 0 70000" << true

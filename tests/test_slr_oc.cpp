@@ -228,6 +228,54 @@ private slots:
         QVERIFY2(shapiroM > 0.001 && shapiroM < 0.01, QByteArray::number(shapiroM).constData());
     }
 
+    // A damaged prediction is refused with the record's line (issue 27): every position at the
+    // Earth's centre, one record 1000 km (or 5 km) off the orbit, records out of time order. An
+    // undamaged LEO prediction at a 240 s step (neighbours' interpolation good to ~100 m) passes.
+    void damagedPredictionsAreRefused() {
+        SynthOrbit o;
+        o.tm = 40000.0;
+        o.radius = 7.2e6;  // a 830 km LEO, BLITS-like: the hardest case for the interpolation
+        o.rate = std::sqrt(kEarthGm / std::pow(o.radius, 3));
+        o.u = Eigen::Vector3d(1, 0, 0);
+        o.v = Eigen::Vector3d(0, 0.6, 0.8);
+        auto text = [&](double offsetAt, double offsetM, bool zero, bool swap) {
+            QByteArray cpf = "H1 CPF 2 TST 2012 6 28 0 1 1 synth\nH9\n";
+            QList<QByteArray> recs;
+            for (double t = 30000; t <= 50000; t += 240) {
+                Eigen::Vector3d x = SynthOrbit::toFixed(o.inertial(t), t);
+                if (t == offsetAt) x += offsetM * x.normalized();  // (outward: not into the Earth)
+                if (zero) x.setZero();
+                char line[160];
+                std::snprintf(line, sizeof line, "10 0 56106 %.6f 0 %.3f %.3f %.3f\n", t, x.x(), x.y(), x.z());
+                recs << line;
+            }
+            if (swap) std::swap(recs[40], recs[41]);
+            for (const auto& r : recs) cpf += r;
+            return (cpf + "99\n").toStdString();
+        };
+        CpfReadResult c = parseCpf(text(0, 0, false, false), "good.cpf");
+        QVERIFY2(c.ok, c.error.c_str());
+        QCOMPARE(QString::fromStdString(cpfPlausibilityProblem(c.file)), QString());
+        // Line of the record at t = 30000 + 40 * 240 = 39600: the 41st record, line 43.
+        for (double off : {1e6, 5e3}) {
+            c = parseCpf(text(39600, off, false, false), "off.cpf");
+            QVERIFY(c.ok);
+            const QString why = QString::fromStdString(cpfPlausibilityProblem(c.file));
+            QVERIFY2(why.startsWith("off.cpf:43:") && why.contains("off the orbit"), qPrintable(why));
+        }
+        // 500 m off is within what a real prediction's interpolation residual may be: not judged.
+        c = parseCpf(text(39600, 500, false, false), "small.cpf");
+        QCOMPARE(QString::fromStdString(cpfPlausibilityProblem(c.file)), QString());
+        c = parseCpf(text(0, 0, true, false), "zero.cpf");
+        QVERIFY(c.ok);
+        QVERIFY2(QString::fromStdString(cpfPlausibilityProblem(c.file)).contains("inside the Earth"),
+                 cpfPlausibilityProblem(c.file).c_str());
+        c = parseCpf(text(0, 0, false, true), "swapped.cpf");
+        QVERIFY(!c.ok);
+        QVERIFY2(QString::fromStdString(c.error).startsWith("swapped.cpf:44:") && QString::fromStdString(c.error).contains("out of time order"),
+                 c.error.c_str());
+    }
+
     void ocParamsValidate() {
         OcParams p;
         QVERIFY(validate(p).empty());

@@ -69,11 +69,10 @@ bool nextRecord(std::string_view text, size_t& pos, long& line, std::vector<std:
 }
 }  // namespace
 
-CsvReadResult parseCsv(std::string_view text, const std::string& source) {
+CsvReadResult parseCsv(std::string_view given, const std::string& source) {
     CsvReadResult r;
-    if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
-        static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF)
-        text.remove_prefix(3);  // UTF-8 byte order mark
+    std::string storage;
+    std::string_view text = plainText(given, &storage);  // (no byte order mark, LF line ends)
     size_t pos = 0;
     long line = 1;
     std::vector<std::string> fields;
@@ -89,6 +88,15 @@ CsvReadResult parseCsv(std::string_view text, const std::string& source) {
         if (!fields.empty() && !fields[0].empty() && trim(fields[0]).substr(0, 1) == "#") continue;
         if (!haveHeader) {
             for (auto& f : fields) f = std::string(trim(f));
+            // A name twice: which column is meant cannot be known (it was the first, silently).
+            for (size_t i = 0; i < fields.size(); ++i)
+                for (size_t k = i + 1; k < fields.size(); ++k)
+                    if (!fields[i].empty() && toLower(fields[i]) == toLower(fields[k])) {
+                        r.error = source + ":" + std::to_string(recLine) + ": column \"" + printableExcerpt(fields[i]) +
+                                  "\" appears twice in the header (columns " + std::to_string(i + 1) + " and " +
+                                  std::to_string(k + 1) + ")";
+                        return r;
+                    }
             r.table.header = fields;
             haveHeader = true;
             continue;

@@ -177,6 +177,16 @@ std::string textFileProblem(std::string_view text, const std::string& source, co
     return whereInFile(source, line) + "binary data (NUL byte): not a " + kind + " text file";
 }
 
+std::string_view plainText(std::string_view text, std::string* storage) {
+    if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&
+        static_cast<unsigned char>(text[2]) == 0xBF)
+        text.remove_prefix(3);
+    if (text.find('\n') != std::string_view::npos || text.find('\r') == std::string_view::npos) return text;
+    storage->assign(text.begin(), text.end());
+    std::replace(storage->begin(), storage->end(), '\r', '\n');
+    return *storage;
+}
+
 std::string formatFixed(double v, int decimals) {
     if (std::isnan(v)) return "nan";
     char buf[64];

@@ -37,6 +37,11 @@ std::string whereInFile(const std::string& source, long line);
 /// Why `text` cannot be a text file of kind `kind` ("CRD", "CPF", ...): empty, or binary (a NUL
 /// byte, with its line). Empty string when neither.
 std::string textFileProblem(std::string_view text, const std::string& source, const char* kind);
+/// A text file's lines as the readers take them: a UTF-8 byte order mark dropped, and a file
+/// whose lines end with CR alone (classic Mac OS) rewritten into *storage with LF (the readers
+/// split at LF; such a file read as one long line gave "no H4 session header in 1 lines").
+/// CRLF files are left as they are (the readers drop the CR). The view is of *storage or of text.
+std::string_view plainText(std::string_view text, std::string* storage);
 /// Fixed-point formatting with `decimals` digits after the point.
 std::string formatFixed(double v, int decimals);
 

@@ -11,29 +11,132 @@
 
 namespace lwb::core::footprint {
 
-bool monthOf(const std::string& time, std::string* month) {
+namespace {
+// Days from 1970-01-01 of a proleptic Gregorian date, and back (Howard Hinnant's algorithms).
+long long daysFromCivil(long long y, unsigned m, unsigned d) {
+    y -= m <= 2;
+    const long long era = (y >= 0 ? y : y - 399) / 400;
+    const unsigned yoe = static_cast<unsigned>(y - era * 400);
+    const unsigned doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
+    const unsigned doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    return era * 146097 + static_cast<long long>(doe) - 719468;
+}
+void civilFromDays(long long z, long long* y, unsigned* m, unsigned* d) {
+    z += 719468;
+    const long long era = (z >= 0 ? z : z - 146096) / 146097;
+    const unsigned doe = static_cast<unsigned>(z - era * 146097);
+    const unsigned yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    const unsigned doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    const unsigned mp = (5 * doy + 2) / 153;
+    *d = doy - (153 * mp + 2) / 5 + 1;
+    *m = mp < 10 ? mp + 3 : mp - 9;
+    *y = static_cast<long long>(yoe) + era * 400 + (*m <= 2);
+}
+int daysInMonth(long long y, unsigned m) {
+    static const int days[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    const bool leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
+    return m == 2 && leap ? 29 : days[m - 1];
+}
+const char* kMonthNames[] = {"January", "February", "March", "April", "May", "June", "July", "August", "September",
+                             "October", "November", "December"};
+// Exactly `n` digits at t[at..] into *v.
+bool digits(const std::string& t, size_t at, size_t n, int* v) {
+    if (at + n > t.size()) return false;
+    int x = 0;
+    for (size_t i = at; i < at + n; ++i) {
+        if (!std::isdigit(static_cast<unsigned char>(t[i]))) return false;
+        x = x * 10 + (t[i] - '0');
+    }
+    *v = x;
+    return true;
+}
+}  // namespace
+
+bool monthOf(const std::string& time, std::string* month, std::string* why) {
+    std::string dummy;
+    std::string& err = why ? *why : dummy;
     const std::string t(trim(time));
-    if (t.size() >= 7 && std::isdigit(static_cast<unsigned char>(t[0])) && (t[4] == '-' || t[4] == '/')) {
-        long long y = 0, m = 0;
-        if (!parseLong(t.substr(0, 4), &y) || !parseLong(t.substr(5, 2), &m) || m < 1 || m > 12) return false;
-        if (t.size() > 7) {
-            if (t[7] != t[4] || t.size() < 10) return false;
-            long long d = 0;
-            if (!parseLong(t.substr(8, 2), &d) || d < 1 || d > 31) return false;
-            if (t.size() > 10 && t[10] != 'T' && t[10] != ' ') return false;
+    auto bad = [&](const std::string& w) {
+        err = w;
+        return false;
+    };
+    int y = 0, mo = 0;
+    if (t.size() >= 7 && digits(t, 0, 4, &y) && (t[4] == '-' || t[4] == '/')) {
+        if (!digits(t, 5, 2, &mo) || mo < 1 || mo > 12) return bad("the month must be 01 to 12");
+        if (t.size() == 7) {
+            char buf[16];
+            std::snprintf(buf, sizeof buf, "%04d-%02d", y, mo);
+            *month = buf;
+            return true;
         }
-        char buf[16];
-        std::snprintf(buf, sizeof buf, "%04lld-%02lld", y, m);
+        int d = 0;
+        if (t.size() < 10 || t[7] != t[4] || !digits(t, 8, 2, &d)) return bad("expected YYYY-MM, YYYY-MM-DD or an ISO 8601 date and time");
+        if (d < 1 || d > daysInMonth(y, static_cast<unsigned>(mo)))
+            return bad(std::string(kMonthNames[mo - 1]) + " " + std::to_string(y) + " has " +
+                       std::to_string(daysInMonth(y, static_cast<unsigned>(mo))) + " days");
+        long long minutes = daysFromCivil(y, static_cast<unsigned>(mo), static_cast<unsigned>(d)) * 1440;
+        if (t.size() > 10) {
+            // [T or space] hh:mm[:ss[.frac]] [Z | +hh[:mm] | -hh[:mm]]
+            if (t[10] != 'T' && t[10] != ' ') return bad("expected T or a space between the date and the time");
+            int hh = 0, mm = 0, ss = 0;
+            size_t i = 11;
+            if (!digits(t, i, 2, &hh) || i + 2 >= t.size() || t[i + 2] != ':' || !digits(t, i + 3, 2, &mm))
+                return bad("expected hh:mm after the date");
+            i += 5;
+            if (i < t.size() && t[i] == ':') {
+                if (!digits(t, i + 1, 2, &ss)) return bad("expected hh:mm:ss");
+                i += 3;
+                if (i < t.size() && (t[i] == '.' || t[i] == ',')) {
+                    size_t j = i + 1;
+                    while (j < t.size() && std::isdigit(static_cast<unsigned char>(t[j]))) ++j;
+                    if (j == i + 1) return bad("expected digits after the decimal point of the seconds");
+                    i = j;
+                }
+            }
+            if (hh > 23 || mm > 59 || ss > 60) return bad("the time of day must be within 00:00:00 and 23:59:60");
+            int offset = 0;  // minutes east of UTC
+            if (i < t.size()) {
+                if (t[i] == 'Z' && i + 1 == t.size()) {
+                    ++i;
+                } else if (t[i] == '+' || t[i] == '-') {
+                    int oh = 0, om = 0;
+                    size_t j = i + 1;
+                    if (!digits(t, j, 2, &oh)) return bad("expected a UTC offset +hh, +hh:mm or +hhmm");
+                    j += 2;
+                    if (j < t.size() && t[j] == ':') ++j;
+                    if (j < t.size()) {
+                        if (!digits(t, j, 2, &om)) return bad("expected a UTC offset +hh, +hh:mm or +hhmm");
+                        j += 2;
+                    }
+                    if (j != t.size() || oh > 23 || om > 59) return bad("expected a UTC offset +hh, +hh:mm or +hhmm");
+                    offset = (t[i] == '-' ? -1 : 1) * (oh * 60 + om);
+                    i = j;
+                } else {
+                    return bad("unexpected text after the time");
+                }
+            }
+            minutes += hh * 60 + mm - offset;
+            // A leap second is 23:59:60 UTC (local time: that minus the offset).
+            if (ss == 60 && ((minutes % 1440) + 1440) % 1440 != 23 * 60 + 59)
+                return bad("second 60 exists only as 23:59:60 UTC (a leap second)");
+        }
+        long long yy = 0;
+        unsigned mm2 = 0, dd = 0;
+        const long long day = minutes >= 0 ? minutes / 1440 : (minutes - 1439) / 1440;
+        civilFromDays(day, &yy, &mm2, &dd);
+        char buf[24];
+        std::snprintf(buf, sizeof buf, "%04lld-%02u", yy, mm2);
         *month = buf;
         return true;
     }
     double secs = 0;
-    if (!parseDouble(t, &secs) || secs < 0 || secs > 4e10) return false;
-    const std::time_t tt = static_cast<std::time_t>(secs);
-    std::tm tm {};
-    if (!gmtime_r(&tt, &tm)) return false;
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%04d-%02d", tm.tm_year + 1900, tm.tm_mon + 1);
+    if (!parseDouble(t, &secs)) return bad("not a time: expected YYYY-MM, YYYY-MM-DD, an ISO 8601 date and time, or Unix seconds");
+    if (secs < 0 || secs > 4e10) return bad("Unix seconds out of range (0 .. 4e10)");
+    long long yy = 0;
+    unsigned mm2 = 0, dd = 0;
+    civilFromDays(static_cast<long long>(std::floor(secs / 86400)), &yy, &mm2, &dd);
+    char buf[24];
+    std::snprintf(buf, sizeof buf, "%04lld-%02u", yy, mm2);
     *month = buf;
     return true;
 }
@@ -62,8 +165,9 @@ bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, 
         const std::string where = whereInFile(path, t.lines[i]);
         CentroidRecord r;
         r.line = t.lines[i];
-        if (!monthOf(row[ct], &r.month)) {
-            *error = where + "unreadable time \"" + row[ct] + "\"";
+        std::string why;
+        if (!monthOf(row[ct], &r.month, &why)) {
+            *error = where + "time \"" + printableExcerpt(row[ct]) + "\": " + why;
             return false;
         }
         if (!parseDouble(row[cx], &r.x) || !parseDouble(row[cy], &r.y)) {

@@ -46,9 +46,12 @@ struct TrendResult {
     std::vector<TrendRow> rows;  ///< ordered by camera, beam, month
 };
 
-/// Parses a time into its "YYYY-MM" month: ISO dates / date-times ("2020-03-15",
-/// "2020-03-15T10:22:01Z", "2020/03/15 10:22"), "2020-03", or Unix seconds. False if unreadable.
-bool monthOf(const std::string& time, std::string* month);
+/// Parses a time into its UTC "YYYY-MM" month: "2020-03", ISO 8601 dates and date-times
+/// ("2020-03-15", "2020-03-15T10:22:01.5Z", "2020-03-31T23:30-02:00", "/" for "-" and a space for
+/// "T" too), or Unix seconds. Validated: the day exists in its month (2021-02-30 does not), the
+/// time of day is 00:00:00 .. 23:59:60 with second 60 only at 23:59:60 UTC, a UTC offset moves
+/// the time to UTC (and may change the month), nothing may follow. False with *why otherwise.
+bool monthOf(const std::string& time, std::string* month, std::string* why = nullptr);
 
 /// Reads per-shot centroids: CSV with header time,beam,x,y[,camera] (any order, extra columns
 /// ignored). Errors name the file and line.

@@ -39,8 +39,10 @@ std::string fmtSeconds(double s) {
 
 }  // namespace
 
-CpfReadResult parseCpf(std::string_view text, const std::string& source) {
+CpfReadResult parseCpf(std::string_view given, const std::string& source) {
     CpfReadResult res;
+    std::string storage;
+    const std::string_view text = plainText(given, &storage);
     const std::string src = source.empty() ? "cpf" : source;
     try {
         res.file.path = source;
@@ -196,19 +198,30 @@ CpfReadResult parseCpf(std::string_view text, const std::string& source) {
             res.error = src + ": no readable type 10 position record";
             return res;
         }
-        // Epochs must increase within each direction.
+        // Epochs must increase within each direction: a record repeating the previous epoch is
+        // skipped; one going back in time means the file is out of order (sorted by something
+        // else, joined from pieces, shuffled), which no interpolation can use: an error.
         std::vector<CpfPosition> kept;
         kept.reserve(res.file.positions.size());
         double last[3] = {-1e300, -1e300, -1e300};
+        long lastLine[3] = {0, 0, 0};
         size_t bad = 0;
         for (const auto& p : res.file.positions) {
             const double t = static_cast<double>(p.mjd) * kSecondsPerDay + p.sod;
-            if (t <= last[p.direction]) {
-                if (bad++ < 20)
-                    res.warnings.push_back(where(src, p.line) + "epoch not after the previous record's; skipped");
+            if (t < last[p.direction]) {
+                res.error = where(src, p.line) + "position record out of time order (MJD " + std::to_string(p.mjd) + " " +
+                            formatFixed(p.sod, 3) + " s comes after the record of line " + std::to_string(lastLine[p.direction]) +
+                            ", " + formatFixed(last[p.direction] - t, 0) +
+                            " s later): a prediction's records run forward in time; is the file sorted or joined?";
+                res.file.positions.clear();
+                return res;
+            }
+            if (t == last[p.direction]) {
+                if (bad++ < 20) res.warnings.push_back(where(src, p.line) + "epoch repeats the previous record's; skipped");
                 continue;
             }
             last[p.direction] = t;
+            lastLine[p.direction] = p.line;
             kept.push_back(p);
         }
         res.file.positions = std::move(kept);
@@ -218,6 +231,60 @@ CpfReadResult parseCpf(std::string_view text, const std::string& source) {
         res.error = src + ": internal error: " + e.what();
     }
     return res;
+}
+
+std::string cpfPlausibilityProblem(const CpfFile& cpf) {
+    const std::string src = cpf.path.empty() ? std::string("cpf") : cpf.path;
+    constexpr double kMinRadiusM = 6.3e6;
+    for (const auto& p : cpf.positions)
+        if (!(p.position.norm() >= kMinRadiusM))
+            return where(src, p.line) + "position (" + formatShortest(p.position.x()) + ", " + formatShortest(p.position.y()) +
+                   ", " + formatShortest(p.position.z()) + ") m is " + formatFixed(p.position.norm() / 1000, 1) +
+                   " km from the Earth's centre, inside the Earth: a damaged prediction";
+    for (int dir = 0; dir <= 2; ++dir) {
+        std::vector<const CpfPosition*> r;
+        for (const auto& p : cpf.positions)
+            if (p.direction == dir) r.push_back(&p);
+        const size_t n = r.size();
+        if (n < 8) continue;
+        std::vector<double> t(n), steps;
+        for (size_t i = 0; i < n; ++i) t[i] = static_cast<double>(r[i]->mjd) * kSecondsPerDay + r[i]->sod;
+        for (size_t i = 1; i < n; ++i) steps.push_back(t[i] - t[i - 1]);
+        std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+        const double step = steps[steps.size() / 2];
+        std::vector<double> res(n, NAN);
+        for (size_t i = 0; i < n; ++i) {
+            // The 6 nearest records (3 each side, shifted at the ends), none across a gap.
+            size_t lo = i >= 3 ? i - 3 : 0;
+            if (lo + 6 >= n) lo = n - 7;
+            bool gap = false;
+            for (size_t k = lo + 1; k <= lo + 6; ++k) gap = gap || t[k] - t[k - 1] > 2 * step;
+            if (gap) continue;
+            Eigen::Vector3d est = Eigen::Vector3d::Zero();
+            for (size_t k = lo; k <= lo + 6; ++k) {
+                if (k == i) continue;
+                double w = 1;
+                for (size_t m = lo; m <= lo + 6; ++m)
+                    if (m != i && m != k) w *= (t[i] - t[m]) / (t[k] - t[m]);
+                est += w * r[k]->position;
+            }
+            res[i] = (r[i]->position - est).norm();
+        }
+        std::vector<double> finite;
+        for (double v : res)
+            if (std::isfinite(v)) finite.push_back(v);
+        if (finite.size() < 4) continue;
+        std::nth_element(finite.begin(), finite.begin() + finite.size() / 2, finite.end());
+        const double median = finite[finite.size() / 2];
+        size_t worst = n;
+        for (size_t i = 0; i < n; ++i)
+            if (std::isfinite(res[i]) && (worst == n || res[i] > res[worst])) worst = i;
+        if (worst < n && res[worst] > 1000 && res[worst] > 20 * median)
+            return where(src, r[worst]->line) + "position record " + formatFixed(res[worst] / 1000, 1) +
+                   " km off the orbit through its neighbours (the records' median: " + formatFixed(median, 1) +
+                   " m): a damaged record; repair or remove it";
+    }
+    return {};
 }
 
 CpfReadResult readCpf(const std::string& path) {

@@ -60,6 +60,15 @@ struct CpfReadResult {
     CpfFile file;
 };
 
+/// Whether the positions can be the orbit of a satellite: "" when they can, else what is wrong,
+/// naming the record's line. Checked: every position at least 6 300 km from the Earth's centre
+/// (a record at (0, 0, 0) or below the surface is damaged), and every record on the smooth orbit
+/// through its six nearest neighbours of the same direction (Lagrange interpolation, which
+/// follows an orbit sampled at 1-5 min to metres): a record more than 1 km and more than 20 times
+/// the median of these residuals off is damaged. Records next to a gap wider than twice the
+/// usual step are not judged.
+std::string cpfPlausibilityProblem(const CpfFile& cpf);
+
 /// Parses CPF text; `source` names it in messages. Never throws.
 CpfReadResult parseCpf(std::string_view text, const std::string& source);
 /// Reads and parses a CPF file.

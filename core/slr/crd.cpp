@@ -767,9 +767,11 @@ std::string validate(const CrdReadParams& p) {
     return {};
 }
 
-CrdReadResult parseCrd(std::string_view text, const std::string& source, const CrdReadParams& params,
+CrdReadResult parseCrd(std::string_view given, const std::string& source, const CrdReadParams& params,
                        const Feedback* feedback) {
     CrdReadResult res;
+    std::string storage;
+    const std::string_view text = plainText(given, &storage);
     try {
         res.file.path = source;
         const std::string src = source.empty() ? "crd" : source;

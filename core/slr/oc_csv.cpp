@@ -193,7 +193,10 @@ std::string readHeader(std::string_view line, const OcCsvParams& params, Columns
     for (const auto& want : params.extraColumns) {
         int found = -1;
         for (size_t i = 0; i < fields.size(); ++i)
-            if (lower(fields[i]) == toLower(want)) found = static_cast<int>(i);
+            if (lower(fields[i]) == toLower(want)) {
+                if (found >= 0) return "column " + want + " appears twice";
+                found = static_cast<int>(i);
+            }
         if (found < 0) return "header has no column \"" + want + "\"";
         cols->extra.push_back(static_cast<size_t>(found));
         names->push_back(want);
@@ -225,9 +228,8 @@ OcCsvReadResult parseOcCsv(std::string_view text, const std::string& source, con
             res.error = e;
             return res;
         }
-        if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&
-            static_cast<unsigned char>(text[2]) == 0xBF)
-            text.remove_prefix(3);
+        std::string storage;
+        text = plainText(text, &storage);  // (no byte order mark, LF line ends)
         long lineNo = 0;
         OcTable& t = res.table;
         Columns cols;

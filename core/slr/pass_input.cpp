@@ -258,6 +258,13 @@ bool readPassSources(const PassInputParams& params, PassSources* out, std::strin
         }
         for (const auto& f : files) {
             CpfReadResult cpf = readCpf(f);
+            // A damaged prediction (a record inside the Earth, or off the orbit) is refused before
+            // any pass is screened with it; in a folder it is set aside with the reason.
+            if (cpf.ok)
+                if (std::string bad = cpfPlausibilityProblem(cpf.file); !bad.empty()) {
+                    cpf.ok = false;
+                    cpf.error = bad;
+                }
             if (!cpf.ok) {
                 if (!out->cpfFolder) {
                     *error = withWarnings(cpf.error, cpf.warnings);
@@ -416,6 +423,32 @@ PassInputResult passFromCrd(const CrdReadResult& crdIn, const std::string& path,
     }
     if (cpf) {
         oc = computeOc(pass, *cpf, sources.stations, params.oc, fb);
+        // The prediction must describe the ranges: a usable prediction leaves O-C of nanoseconds
+        // to microseconds (a time bias of 10 ms on a LEO pass: 0.5 us); a median |O-C| above
+        // 100 us (15 km one-way) is another satellite, a wrong epoch or a damaged file.
+        if (oc.ok && !oc.oc_s.empty()) {
+            std::vector<double> a;
+            a.reserve(oc.oc_s.size());
+            for (double v : oc.oc_s) a.push_back(std::fabs(v));
+            std::nth_element(a.begin(), a.begin() + static_cast<long>(a.size() / 2), a.end());
+            const double median = a[a.size() / 2];
+            if (!(median <= 1e-4)) {
+                const std::string bad = (cpf->path.empty() ? std::string("cpf") : cpf->path) +
+                                        ": the prediction does not describe this pass: its O-C is " +
+                                        formatFixed(median * 1e3, 3) + " ms (median |O-C|, " +
+                                        formatFixed(median * kLight / 2000, 0) +
+                                        " km one-way; a usable prediction leaves microseconds). Another satellite, a wrong "
+                                        "epoch or a damaged file?";
+                if (!params.cpfFallback && !sources.cpfFolder) {
+                    r.error = bad;
+                    return r;
+                }
+                cpf = nullptr;
+                why = bad;
+            }
+        }
+    }
+    if (cpf) {
         d.ocOrigin = "CPF prediction" + (sources.cpfFolder ? " " + cpf->path : std::string());
         double rmin = INFINITY;
         for (const auto& p : cpf->positions) rmin = std::min(rmin, p.position.norm());

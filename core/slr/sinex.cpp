@@ -30,8 +30,10 @@ struct Validity {
 
 }  // namespace
 
-SinexReadResult parseSinex(std::string_view text, const std::string& source) {
+SinexReadResult parseSinex(std::string_view given, const std::string& source) {
     SinexReadResult res;
+    std::string storage;
+    const std::string_view text = plainText(given, &storage);
     const std::string src = source.empty() ? "sinex" : source;
     try {
         res.file.path = source;
