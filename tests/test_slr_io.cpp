@@ -420,6 +420,39 @@ private slots:
         QVERIFY2(QString::fromStdString(twice.error).startsWith("twice.csv:1: column \"x\" appears twice"), twice.error.c_str());
     }
 
+    // 86 400 s and beyond is 23:59:60: a leap second only on a day that ends with one (issue 27:
+    // 86400.5 s on 2021-09-01 was taken as the next day, a residual of half an hour); a pass
+    // across a leap second is said to be one.
+    void leapSecondRecords() {
+        QByteArray text = kGoodCrd;
+        text.replace("10 74777.099340164496", "10 86400.500000000000");
+        CrdReadResult r = parseCrd(text.toStdString(), "noleap.fr2");
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.file.passes.front().ranges.size(), size_t(2));
+        QCOMPARE(r.file.passes.front().skippedLines, std::vector<long>{8});
+        bool said = false;
+        for (const auto& w : r.warnings) said = said || (w.find("noleap.fr2:8:") == 0 && w.find("2021-09-01 ends without one") != std::string::npos);
+        QVERIFY(said);
+        // 2016-12-31 ended with a leap second: kept; and a pass from before to after it is said to cross it.
+        QByteArray leap = text;
+        leap.replace("2021 9 1", "2016 12 31");
+        leap.replace("H1 CRD 2 2016 12 31 21", "H1 CRD 2 2016 12 31 23");
+        leap.replace("H4 0 2016 12 31 20 46 0", "H4 0 2016 12 31 23 59 50");
+        leap.replace("10 74760.420166021300", "10 86390.000000000000");
+        leap.replace("10 74776.082358022497", "10 5.000000000000");
+        r = parseCrd(leap.toStdString(), "leap.fr2");
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.file.passes.front().ranges.size(), size_t(3));
+        QVERIFY(r.file.passes.front().skippedLines.empty());
+        said = false;
+        for (const auto& w : r.warnings) said = said || w.find("crosses the leap second 2016-12-31 23:59:60") != std::string::npos;
+        QVERIFY(said);
+        QVERIFY(leapSecondAtEndOf(mjdFromDate(2016, 12, 31)));
+        QVERIFY(leapSecondAtEndOf(mjdFromDate(1972, 6, 30)));
+        QVERIFY(!leapSecondAtEndOf(mjdFromDate(2016, 12, 30)));
+        QVERIFY(!leapSecondAtEndOf(mjdFromDate(2020, 12, 31)));
+    }
+
     void setFilterFlagsChangesOnlyTheFlag() {
         if (!lwbtest::haveShared("slr/7080_JASON1_crd_071220_2033_0.frd")) QSKIP("shared SLR data absent");
         CrdReadResult a = readCrd(lwbtest::str(lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd")));

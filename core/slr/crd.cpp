@@ -519,6 +519,46 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
         *error = where(src, p->records.empty() ? 0 : p->records.front().line) + "pass without an H4 session header";
         return false;
     }
+    // 86 400 s and beyond is 23:59:60, a leap second: only on a day that ends with one. On another
+    // day such a record is damaged (86400.5 s was taken as 0.5 s into the next day: a residual of
+    // half an hour on a pass of the afternoon).
+    const long day = p->startMjd();
+    auto noLeap = [&](auto& list, const char* what) {
+        for (size_t k = 0; k < list.size();) {
+            const double sod = list[k].secOfDay;
+            const long recDay = sod < p->session.startHour * 3600.0 - 43200.0 ? day + 1 : day;
+            if (sod >= kSecondsPerDay && !leapSecondAtEndOf(recDay)) {
+                int y = 0, mo = 0, d = 0;
+                dateFromMjd(recDay, &y, &mo, &d);
+                char date[16];
+                std::snprintf(date, sizeof date, "%04d-%02d-%02d", y, mo, d);
+                sink->add(where(src, list[k].line) + what + " record skipped: seconds of day " + formatFixed(sod, 6) +
+                          " is 23:59:60, a leap second, but " + date + " ends without one");
+                p->skippedLines.push_back(list[k].line);
+                list.erase(list.begin() + static_cast<long>(k));
+                continue;
+            }
+            ++k;
+        }
+    };
+    noLeap(p->ranges, "type 10");
+    noLeap(p->normalPoints, "type 11");
+    // A pass across the end of a leap-second day: epochs are UTC labels, 23:59:60 is not
+    // counted, so in elapsed time the records after midnight are a second early.
+    if (leapSecondAtEndOf(day)) {
+        bool before = false, after = false;
+        for (const auto& r : p->ranges) (r.secOfDay < p->session.startHour * 3600.0 - 43200.0 ? after : before) = true;
+        if (before && after) {
+            int y = 0, mo = 0, d = 0;
+            dateFromMjd(day, &y, &mo, &d);
+            char date[16];
+            std::snprintf(date, sizeof date, "%04d-%02d-%02d", y, mo, d);
+            sink->add(where(src, p->records.empty() ? 0 : p->records.front().line) + "the pass crosses the leap second " +
+                      date + " 23:59:60: its epochs are UTC labels (as a CPF's), the records after midnight are 1 s "
+                      "later in elapsed time than their labels say; O-C against the pass's own TOF trend steps by its "
+                      "range rate x 1 s there (give a CPF prediction for this pass)");
+        }
+    }
     return true;
 }
 
@@ -750,6 +790,8 @@ long CrdPass::startMjd() const { return mjdFromDate(session.startYear, session.s
 
 double CrdPass::passSeconds(double secOfDay) const {
     const double start = session.startHour * 3600.0 + session.startMinute * 60.0 + session.startSecond;
+    // (UTC labels: 23:59:60 of a leap-second day is 86 400 s and the next day's 0h is 86 400 s
+    // too, as in a CPF's epochs; parsePassRecords warns about a pass that crosses one)
     return secOfDay < start - 43200.0 ? secOfDay + kSecondsPerDay : secOfDay;
 }
 

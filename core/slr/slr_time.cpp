@@ -52,4 +52,17 @@ bool parseSinexEpoch(std::string_view text, long* mjd, double* secondsOfDay) {
     return true;
 }
 
+bool leapSecondAtEndOf(long mjd) {
+    // The last day of each month that ended with a leap second (IERS Bulletin C).
+    static const int kDays[][3] = {{1972, 6, 30},  {1972, 12, 31}, {1973, 12, 31}, {1974, 12, 31}, {1975, 12, 31},
+                                   {1976, 12, 31}, {1977, 12, 31}, {1978, 12, 31}, {1979, 12, 31}, {1981, 6, 30},
+                                   {1982, 6, 30},  {1983, 6, 30},  {1985, 6, 30},  {1987, 12, 31}, {1989, 12, 31},
+                                   {1990, 12, 31}, {1992, 6, 30},  {1993, 6, 30},  {1994, 6, 30},  {1995, 12, 31},
+                                   {1997, 6, 30},  {1998, 12, 31}, {2005, 12, 31}, {2008, 12, 31}, {2012, 6, 30},
+                                   {2015, 6, 30},  {2016, 12, 31}};
+    for (const auto& d : kDays)
+        if (mjdFromDate(d[0], d[1], d[2]) == mjd) return true;
+    return false;
+}
+
 }  // namespace lwb::core::slr

@@ -1,7 +1,9 @@
 #pragma once
 // Calendar helpers shared by the SLR readers (CRD, CPF, SINEX) and the O-C computation:
 // Gregorian date <-> Modified Julian Date, and SINEX "YY:DOY:SSSSS" epochs.
-// Times are UTC throughout; leap seconds are not modelled (a day is 86 400 s).
+// Times are UTC throughout. A day is 86 400 s, except a day that ends with a leap second
+// (23:59:60 UTC; leapSecondAtEndOf): CRD records of such a day may be at 86400..86401 s, and a
+// pass that crosses its midnight is 86 401 s longer in elapsed time at the next day's 0h.
 #include <string_view>
 
 namespace lwb::core::slr {
@@ -14,6 +16,11 @@ bool validDate(int year, int month, int day);
 /// Modified Julian Date (days since 1858-11-17 0h) of a Gregorian date at 0h.
 /// Valid for any year >= 1 (proleptic Gregorian); callers check validDate first.
 long mjdFromDate(int year, int month, int day);
+
+/// True when the UTC day `mjd` ends with a positive leap second (23:59:60), from IERS Bulletin C:
+/// the 27 leap seconds from 1972-06-30 to 2016-12-31 (none since, to this writing: Bulletin C 70,
+/// July 2025, announced none for the end of 2025).
+bool leapSecondAtEndOf(long mjd);
 
 /// Inverse of mjdFromDate.
 void dateFromMjd(long mjd, int* year, int* month, int* day);
