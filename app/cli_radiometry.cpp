@@ -67,7 +67,10 @@ const char* kGcpUsage =
     "GCPS.csv: id, x, y (image px), map_x, map_y (map m, Y up).\n"
     "  --model affine|homography   (default affine)\n"
     "  --pixel-size M          map pixel size in metres (default: the image's own scale)\n"
-    "  --residuals RES.csv     per GCP: map and pixel residuals\n"
+    "  --residuals RES.csv     per GCP: map and pixel residuals, and whether it is an outlier: one the\n"
+    "                          transform of the others misses by more than a sound GCP would but\n"
+    "                          once in 1000 (gcp.outlier_p) and by 0.5 px\n"
+    "                          (then exit 3: the map is written but doubtful)\n"
     "  --valid MASK.png        255 where the map pixel came from inside the image\n"
     "  -o MAP.tif is a GeoTIFF (through GDAL): geotransform in the markers' map metres, so GIS tools\n"
     "  open it in place; MAP.png, or --plain-tiff, writes a plain image without georeferencing.\n"
@@ -222,7 +225,11 @@ int cmdRadiometryGcp(int argc, char** argv) {
     if (!readImageAnyDepth(a.positional()[0], &img, &err, maxPx)) return fail(cmd, err);
     const GcpFitResult fit = fitGcpTransform(gcps, p);
     if (!fit.ok) return fail(cmd, a.value("--gcps") + ": " + fit.error);
-    warn(cmd, fit.warnings);
+    if (fit.outliers.empty()) {
+        if (!quiet(a)) warn(cmd, fit.warnings);
+    } else {
+        warn(cmd, fit.warnings);  // (said even with -q: the map is doubtful, exit 3)
+    }
     const MapGrid grid = gridCovering(fit, img.size(), pixel > 0 ? pixel : fit.metresPerPixel);
     const WarpResult w = warpToMap(img, fit, grid);
     if (!w.ok) return fail(cmd, w.error);
@@ -237,6 +244,11 @@ int cmdRadiometryGcp(int argc, char** argv) {
                   << fx(fit.rmsMap, 4) << " m = " << fx(fit.rmsPx, 3) << " px; map grid " << grid.width << "x" << grid.height
                   << " at " << core::formatDouble(grid.pixelSize, 4) << " m, top-left centre (" << fx(grid.originX, 4)
                   << ", " << fx(grid.originY, 4) << ")" << (geo.valid && !plain && isTiff(out) ? ", GeoTIFF" : "") << "\n";
+    if (!fit.outliers.empty()) {
+        std::cerr << "laserwb-cli " << cmd << ": doubtful: " << fit.outliers.size()
+                  << " GCP(s) do not agree with the others (outlier column of --residuals); exit 3\n";
+        return kDoubtful;
+    }
     return kOk;
 }
 

@@ -146,6 +146,20 @@ private slots:
         // leaves residuals of about 0.3 x sqrt(2) x sqrt(1/2) px; a wrong map would be pixels off.
         qInfo("control points: residual RMS %.3f px", rms);
         QVERIFY2(rms > 0.02 && rms < 0.8, qPrintable(QString::number(rms)));
+        for (const auto& g : res) QCOMPARE(g["outlier"], QString("0"));
+        // One mark 1 km off (issue 27: no word of it): named, the map written, exit 3.
+        QByteArray gcps = readAll(p("field/gcps.csv"));
+        QList<QByteArray> lines = gcps.split('\n');
+        QList<QByteArray> g3 = lines[3].split(',');
+        g3[3] = QByteArray::number(g3[3].toDouble() + 1000, 'f', 4);
+        lines[3] = g3.join(',');
+        QVERIFY(writeText(p("gcps_off.csv"), lines.join('\n')));
+        r = runCli({"radiometry", "gcp", p("row.tif"), "--gcps", p("gcps_off.csv"), "-o", p("map_off.tif"), "--residuals",
+                    p("res_off.csv"), "-q"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains("G3 (line 4)") && r.err.contains("999.99"), qPrintable(r.err));  // (1000 m less its survey noise)
+        QVERIFY(QFile::exists(p("map_off.tif")));
+        for (const auto& g : csvRows(readAll(p("res_off.csv")))) QCOMPARE(g["outlier"], QString(g["id"] == "G3" ? "1" : "0"));
     }
 
     // A simulated CRD pass: the screening agrees with its filter flags (the truth).

@@ -82,7 +82,7 @@ bool readGcpCsv(const std::string& path, std::vector<Gcp>* out, std::string* err
 
 std::string validate(const GcpFitParams& p) {
     if (!(p.collinearTolerance >= 0 && p.collinearTolerance <= 0.5)) return "collinearity tolerance must be within 0..0.5";
-    if (!(p.outlierFactor >= 1 && p.outlierFactor < 1e6)) return "outlier factor must be >= 1";
+    if (!(p.outlierProbability > 0 && p.outlierProbability < 0.5)) return "outlier probability must be within 0..0.5";
     return {};
 }
 
@@ -234,10 +234,56 @@ GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& p
     res.dof = 2 * n - np;
     if (res.dof == 0)
         res.warnings.push_back("as many equations as parameters: the GCP residuals are zero and do not measure accuracy");
-    for (size_t i = 0; i < res.residuals.size(); ++i)
-        if (res.dof > 0 && res.residuals[i].pxNorm > params.outlierFactor * res.rmsPx && res.residuals[i].pxNorm > 1e-6)
-            res.warnings.push_back(gcpName(gcps[i], i) + ": residual " + formatFixed(res.residuals[i].pxNorm, 3) +
-                                   " px exceeds " + formatDouble(params.outlierFactor, 3) + " x RMS (misplaced marker?)");
+    // Each GCP against the transform of the others (when they still over-determine it): the
+    // miss of the left-out GCP, in standard deviations of such a miss. Its variance is the others'
+    // residual variance (per coordinate, over their degrees of freedom) over 1 - h_ii, the GCP's
+    // leverage among the GCPs judged (of the affine design [x y 1]; for a homography an
+    // approximation): a corner GCP is predicted by extrapolation and may miss by more. The worst
+    // GCP beyond the limit is named and set aside, and the rest judged again without it (an
+    // outlier among the others would make a sound GCP look wrong).
+    std::vector<int> active(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) active[static_cast<size_t>(i)] = i;
+    GcpFitParams inner = params;
+    inner.leaveOneOut = false;
+    while (params.leaveOneOut && 2 * (static_cast<int>(active.size()) - 1) - np >= 2) {
+        const int m = static_cast<int>(active.size());
+        Eigen::MatrixXd X(m, 3);
+        for (int a = 0; a < m; ++a) X.row(a) << img[active[a]].x(), img[active[a]].y(), 1.0;
+        const Eigen::Matrix3d XtXi = (X.transpose() * X).inverse();
+        int worst = -1;
+        double worstRatio = 1, worstMiss = 0, worstZ = 0, worstRms = 0, worstMapMiss = 0;
+        for (int a = 0; a < m; ++a) {
+            const int i = active[a];
+            std::vector<Gcp> others;
+            for (int k : active)
+                if (k != i) others.push_back(gcps[static_cast<size_t>(k)]);
+            const GcpFitResult o = fitGcpTransform(others, inner);
+            if (!o.ok || !(o.dof > 0)) continue;
+            const cv::Point2d pi = apply(o.mapToImage, map[i].x(), map[i].y());
+            const double miss = std::hypot(pi.x - img[i].x(), pi.y - img[i].y());
+            const double h = std::min(0.999, double(X.row(a) * XtXi * X.row(a).transpose()));
+            const double sigma = o.rmsPx * std::sqrt((m - 1.0) / o.dof);  // per coordinate
+            const double z = miss * std::sqrt(1 - h) / (std::sqrt(2.0) * std::max(sigma, 1e-12));
+            // P(F(2, nu) > f) = (1 + 2 f / nu)^(-nu / 2): the z that a sound GCP exceeds with the
+            // chosen probability (7.8 for nu = 4, 3.5 for nu = 20, at 0.001).
+            const double nu = o.dof;
+            const double zLimit = std::sqrt(nu / 2 * (std::pow(params.outlierProbability, -2 / nu) - 1));
+            if (miss > 0.5 && z / zLimit > worstRatio) {
+                const cv::Point2d pm = apply(o.imageToMap, img[i].x(), img[i].y());
+                worst = i, worstRatio = z / zLimit, worstMiss = miss, worstZ = z, worstRms = o.rmsPx;
+                worstMapMiss = std::hypot(pm.x - map[i].x(), pm.y - map[i].y());
+            }
+        }
+        if (worst < 0) break;
+        res.outliers.push_back(static_cast<size_t>(worst));
+        res.warnings.push_back(gcpName(gcps[static_cast<size_t>(worst)], static_cast<size_t>(worst)) +
+                               ": the transform of the other GCPs puts it " + formatFixed(worstMapMiss, 3) + " m (" +
+                               formatFixed(worstMiss, 2) + " px) away, " + formatFixed(worstZ, 1) +
+                               " standard deviations of such a miss (they fit each other within " + formatFixed(worstRms, 3) +
+                               " px RMS): a misplaced marker or a wrong coordinate?");
+        active.erase(std::find(active.begin(), active.end(), worst));
+    }
+    std::sort(res.outliers.begin(), res.outliers.end());
     {
         Eigen::Vector2d m = Eigen::Vector2d::Zero();
         for (const auto& v : img) m += v;
@@ -343,14 +389,15 @@ WarpResult mergeOnGrid(const std::vector<cv::Mat>& images, const std::vector<cv:
 
 bool writeGcpResidualCsv(const std::string& path, const std::vector<Gcp>& gcps, const GcpFitResult& fit,
                          std::string* error) {
-    std::string s = "id,x,y,map_x,map_y,d_map_x,d_map_y,d_map,d_px_x,d_px_y,d_px\n";
+    std::string s = "id,x,y,map_x,map_y,d_map_x,d_map_y,d_map,d_px_x,d_px_y,d_px,outlier\n";
     for (size_t i = 0; i < gcps.size() && i < fit.residuals.size(); ++i) {
+        const bool outlier = std::find(fit.outliers.begin(), fit.outliers.end(), i) != fit.outliers.end();
         const Gcp& g = gcps[i];
         const GcpResidual& r = fit.residuals[i];
         s += csvEscape(g.id) + "," + formatDouble(g.x, 10) + "," + formatDouble(g.y, 10) + "," + formatDouble(g.mapX, 10) +
              "," + formatDouble(g.mapY, 10) + "," + formatFixed(r.dMapX, 5) + "," + formatFixed(r.dMapY, 5) + "," +
              formatFixed(r.mapNorm, 5) + "," + formatFixed(r.dx, 4) + "," + formatFixed(r.dy, 4) + "," +
-             formatFixed(r.pxNorm, 4) + "\n";
+             formatFixed(r.pxNorm, 4) + "," + (outlier ? "1" : "0") + "\n";
     }
     return writeFileAtomic(path, s, error);
 }

@@ -52,8 +52,15 @@ const Schema<RadiometryParams>& radiometrySchema() {
         s.real("gcp.collinear_tolerance", LWB_FIELD(R, gcp.collinearTolerance), "", {0, 0.5}, {1e-5, 0.1},
                "GCPs count as collinear below this spread across / along their best line")
             .uiLog = true;
-        s.real("gcp.outlier_factor", LWB_FIELD(R, gcp.outlierFactor), "", {1, 1e6, false, true}, {1, 10},
-               "warn when a GCP's residual exceeds this times the RMS");
+        s.real("gcp.outlier_p", LWB_FIELD(R, gcp.outlierProbability), "", {0, 0.5, false, false}, {1e-6, 0.05},
+               "chance that a sound GCP is named an outlier: one the transform of the others misses by more than "
+               "this allows (and 0.5 px) is named, and the map doubtful")
+            .uiLog = true;
+        // Files written before gcp.outlier_p held gcp.outlier_factor (times the RMS), which has no
+        // counterpart: dropped (the default applies).
+        s.legacy([](Json& j) {
+            if (j.contains("gcp") && j["gcp"].is_object()) j["gcp"].erase("outlier_factor");
+        });
         s.real("gcp.pixel_size_m", LWB_FIELD(R, mapPixelSizeM), "m", {0, 1e9, true, true}, {0.001, 1},
                "map pixel size; 0 = the image's own scale")
             .specials = {{0, "auto"}};
