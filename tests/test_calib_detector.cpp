@@ -220,9 +220,22 @@ private slots:
         QVERIFY2(r.error.find("one line") != std::string::npos, r.error.c_str());
     }
 
+    // Also across the antimeridian (issue 27: an array at 179.9999 and -179.9999 averaged its
+    // longitudes to 0, and the centre came out 3 900 km off with a sigma of 0.14 m).
+    void geographicInputRoundTrips_data() {
+        QTest::addColumn<double>("lat");
+        QTest::addColumn<double>("lon");
+        QTest::newRow("Inner Mongolia") << 42.7 << 112.6;
+        QTest::newRow("across 180 (Fiji)") << -16.5 << 179.99995;
+        QTest::newRow("across 180, west side") << 0.0 << -179.99998;
+    }
     void geographicInputRoundTrips() {
+        QFETCH(double, lat);
+        QFETCH(double, lon);
         sim::DetectorSimParams sp;
         sp.geographic = true;
+        sp.originLatDeg = lat;
+        sp.originLonDeg = lon;
         const auto s = sim::simulateDetectorArray(sp, 77);
         const QString p = path("geo.csv");
         std::string err;

@@ -107,18 +107,22 @@ bool readDetectorCsv(const std::string& path, DetectorArray* out, std::string* e
         return false;
     }
     if (geographic) {
-        double la = 0, lo = 0, hs = 0;
+        // The origin: the mean latitude and the circular mean of the longitudes (an array across
+        // the antimeridian, at 179.9999 and -179.9999, averaged to 0: the local frame on the other
+        // side of the Earth, a centre 3 900 km off with a sigma of 0.14 m).
+        double la = 0, ls = 0, lc = 0, hs = 0;
         int nh = 0;
         for (size_t i = 0; i < lats.size(); ++i) {
             la += lats[i];
-            lo += lons[i];
+            ls += std::sin(lons[i] * kDeg);
+            lc += std::cos(lons[i] * kDeg);
             if (std::isfinite(arr.detectors[i].h)) {
                 hs += arr.detectors[i].h;
                 ++nh;
             }
         }
         arr.originLatDeg = la / lats.size();
-        arr.originLonDeg = lo / lons.size();
+        arr.originLonDeg = std::atan2(ls, lc) / kDeg;
         arr.originH = nh ? hs / nh : 0;
         const LocalFrame frame(arr.originLatDeg * kDeg, arr.originLonDeg * kDeg, arr.originH);
         for (size_t i = 0; i < lats.size(); ++i) {
