@@ -100,6 +100,24 @@ private slots:
         QVERIFY2(r.error.find("double-peak") != std::string::npos, r.error.c_str());
     }
 
+    // Noise only (issue 27: "returns at 46.6 and 92.2 ns, h 6.83 +- 215.7 m", and a feature
+    // ranked): no height, and why. 20 seeds of pure noise all refused; the simulated double
+    // returns (300 and 500 over a noise of 5: 60 and 100 sigma) all kept.
+    void noiseOnlyWaveformGivesNoHeight() {
+        for (uint64_t seed = 1; seed <= 20; ++seed) {
+            sim::WaveformSimParams p;
+            p.amplitudeTop = 0;
+            p.amplitudeGround = 0;
+            const auto s = sim::simulateWaveform(p, seed);
+            const WaveformResult r = decomposeWaveform(s.waveform);
+            QVERIFY2(!r.ok, qPrintable(QString("seed %1: h %2").arg(seed).arg(r.heightM)));
+            QVERIFY2(r.error.find("noise") != std::string::npos || r.error.find("double-peak") != std::string::npos,
+                     r.error.c_str());
+            const WaveformResult good = decomposeWaveform(sim::simulateWaveform(sim::WaveformSimParams{}, seed).waveform);
+            QVERIFY2(good.ok, good.error.c_str());
+        }
+    }
+
     void paperCasesMatch() {
         FeatureMatchParams mp;  // thred_h = 0.1 m as in the paper
         QCOMPARE(mp.thresholdM, 0.1);

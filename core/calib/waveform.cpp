@@ -249,6 +249,19 @@ WaveformResult decomposeWaveform(const Waveform& w, const WaveformParams& params
         res.warnings.push_back("a fitted return lies outside the sampled window");
     res.ok = std::isfinite(res.heightM);
     if (!res.ok) res.error = "the decomposition produced a non-finite height";
+    // A detection test: each return must stand at least kDetectSigma times the samples' noise
+    // (the residual RMS about the model) above the baseline. A noise-only waveform was
+    // "decomposed" into returns at 46.6 and 92.2 ns, h 6.83 +- 215.7 m, and matched a feature.
+    constexpr double kDetectSigma = 5;
+    const double noise = std::max(res.rmsResidual, 1e-300);
+    for (const GaussComponent* g : {&res.first, &res.second})
+        if (res.ok && !(g->amplitude >= kDetectSigma * noise)) {
+            res.ok = false;
+            res.error = std::string("no double return stands out of the noise: the ") +
+                        (g == &res.first ? "earlier" : "later") + " return at " + formatFixed(g->centreNs, 1) + " ns is " +
+                        formatFixed(g->amplitude / noise, 1) + " times the noise RMS (" + formatDouble(noise, 4) +
+                        "), a return needs " + formatFixed(kDetectSigma, 0) + ": no height from this waveform";
+        }
     return res;
 }
 
