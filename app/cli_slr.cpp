@@ -86,8 +86,9 @@ const char* kSlrUsage =
     "  --npt-out FILE        the normal points as a CRD normal-point file (the pass's headers)\n"
     "                        (--crd-out and --npt-out need a CRD input)\n"
     "  -q, --quiet           no summary and no warnings on stderr (errors still)\n"
-    "Exit codes: 0 done, 1 bad input or failed run (nothing written), 2 usage error, 3 --all-passes\n"
-    "wrote the summary but some passes failed (their rows say why).\n";
+    "Exit codes: 0 done, 1 bad input or failed run (nothing written), 2 usage error, 3 written but\n"
+    "doubtful: the accepted points cannot be told from noise, or two parallel tracks were merged (the\n"
+    "classes are written, no normal points), or --all-passes had passes that failed.\n";
 
 std::string passList(const std::vector<slr::PassSummary>& passes) {
     std::string s;
@@ -233,7 +234,7 @@ int screenAllPasses(const std::string& cmd, const std::string& input, const slr:
         "pass,station,satellite,ilrs_id,start_utc,duration_s,points,accepted,rms_ps,rms_mm,normal_points,"
         "station_precision,station_recall,oc_origin,status,reason,seconds,output\n";
     Progress progress("slr", n, quiet);
-    size_t done = 0, okCount = 0;
+    size_t done = 0, okCount = 0, doubtCount = 0;
     std::vector<bool> written(n, false);
     const std::vector<slr::PassSummary> passes = slr::summarisePasses(crd.file);
     for (size_t i = 0; i < n; ++i) {
@@ -270,14 +271,16 @@ int screenAllPasses(const std::string& cmd, const std::string& input, const slr:
             return fail(cmd, outs.unstaged(err));
         written[i] = true;
         ++okCount;
+        doubtCount += !r.doubt.empty();
         const double duration = p.pass.t.empty() ? 0 : p.pass.t.back() - p.pass.t.front();
         const double rms = r.postOk ? r.post.stats.rms : NAN;
         summary += row + core::formatFixed(duration, 1) + "," + std::to_string(p.pass.t.size()) + "," +
                    std::to_string(r.acceptedCount) + "," + (std::isfinite(rms) ? core::formatFixed(rms * 1e12, 1) : "") + "," +
                    (std::isfinite(rms) ? core::formatFixed(rms * 0.5 * 299792458.0 * 1e3, 2) : "") + "," +
                    (r.postOk ? std::to_string(r.post.normalPoints.size()) : "") + "," + f4(r.agreement.precision) + "," +
-                   f4(r.agreement.recall) + "," + core::csvEscape(p.pass.ocOrigin) + ",ok," +
-                   core::csvEscape(!p.pass.ocNote.empty() ? p.pass.ocNote : r.postNote) + "," + core::formatFixed(r.seconds, 3) +
+                   f4(r.agreement.recall) + "," + core::csvEscape(p.pass.ocOrigin) + (r.doubt.empty() ? ",ok," : ",doubtful,") +
+                   core::csvEscape(!r.doubt.empty() ? r.doubt : !p.pass.ocNote.empty() ? p.pass.ocNote : r.postNote) + "," +
+                   core::formatFixed(r.seconds, 3) +
                    "," + names[i].substr(dir.size() + 1) + "\n";
     }
     progress.finish();
@@ -289,10 +292,10 @@ int screenAllPasses(const std::string& cmd, const std::string& input, const slr:
     folder.keep();
     if (!quiet)
         std::cerr << "slr: " << input << ": " << okCount << " of " << n << " passes screened -> " << dir << "/ (summary.csv)\n";
-    if (okCount == n) return kOk;
-    // (said even with -q: a partial result is not a success)
-    std::cerr << "laserwb-cli slr: " << n - okCount << " of " << n << " passes failed (" << dir
-              << "/summary.csv says why); exit 3\n";
+    if (okCount == n && doubtCount == 0) return kOk;
+    // (said even with -q: a partial or doubtful result is not a success)
+    std::cerr << "laserwb-cli slr: " << n - okCount << " of " << n << " passes failed and " << doubtCount
+              << " are doubtful (" << dir << "/summary.csv says why); exit 3\n";
     return kDoubtful;
 }
 
@@ -462,7 +465,11 @@ int cmdSlr(int argc, char** argv) {
     const slr::PassRunResult r = slr::runPass(pass, run);
     const std::string what = csvInput ? input : input + " pass " + std::to_string(pass.passIndex + 1);
     if (!r.ok) return fail(cmd, what + ": " + r.error);
-    if (!nptOut.empty() && (!r.postOk || r.post.normalPoints.empty()))
+    // A result that cannot be trusted (noise that no scale tells from a track, two tracks merged):
+    // the points' classes are written, no normal points, exit 3 with the reason.
+    const bool doubtful = !r.doubt.empty();
+    if (doubtful && !nptOut.empty()) outs.drop(nptOut);
+    if (!doubtful && !nptOut.empty() && (!r.postOk || r.post.normalPoints.empty()))
         return fail(cmd, what + ": no normal points to write to " + nptOut +
                              (r.postOk ? " (no bin holds the minimum number of kept points)" : " (" + r.postNote + ")"));
 
@@ -471,12 +478,18 @@ int cmdSlr(int argc, char** argv) {
         return fail(cmd, named(out, outs.unstaged(err)));
     if (!crdOut.empty() && !slr::writeScreenedCrd(outs.stagingPath(crdOut), pass, r.accepted, &err))
         return fail(cmd, named(crdOut, outs.unstaged(err)));
-    if (!nptOut.empty() && !slr::writeNormalPointCrd(outs.stagingPath(nptOut), pass, r.post.normalPoints, &err))
+    if (!doubtful && !nptOut.empty() && !slr::writeNormalPointCrd(outs.stagingPath(nptOut), pass, r.post.normalPoints, &err))
         return fail(cmd, named(nptOut, outs.unstaged(err)));
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet) {
         printSummary(what, pass, settings, r);
-        std::cerr << "  -> " << out << (crdOut.empty() ? "" : ", " + crdOut) << (nptOut.empty() ? "" : ", " + nptOut) << "\n";
+        std::cerr << "  -> " << out << (crdOut.empty() ? "" : ", " + crdOut)
+                  << (nptOut.empty() || doubtful ? "" : ", " + nptOut) << "\n";
+    }
+    if (doubtful) {
+        std::cerr << "laserwb-cli slr: doubtful: " << r.doubt << (nptOut.empty() ? "" : "; " + nptOut + " not written")
+                  << " (exit 3)\n";
+        return kDoubtful;
     }
     return kOk;
 }

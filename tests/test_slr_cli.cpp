@@ -872,6 +872,41 @@ private slots:
         QVERIFY(summary.contains("does not describe this pass"));
         QVERIFY(!summary.contains("CPF prediction"));
     }
+
+    // No confident answer from noise (issue 27): a 0.2 %-signal pass (no scale shows a track) and
+    // a pass whose track is doubled 3 ns away (two tracks merged into one of 1.5 ns RMS) write the
+    // points' classes, form no normal points and exit 3 with the reason, even with -q.
+    void doubtfulPassesGiveNoNormalPoints() {
+        QCOMPARE(runCli({"simulate", "slr", "--kind", "khz", "--points", "100000", "--signal-fraction", "0.002", "--seed", "3",
+                         "-q", p("faint.csv")}).exitCode, 0);
+        lwbtest::CliRun r = runCli({"slr", p("faint.csv"), "-o", p("faint_out.csv"), "--np-bin", "5", "-q"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains("doubtful") && r.err.contains("cannot be told from noise"), qPrintable(r.err));
+        QVERIFY(QFile::exists(p("faint_out.csv")));
+        // The track doubled: every signal point again 3 ns later (and a microsecond later in time).
+        QCOMPARE(runCli({"simulate", "slr", "--kind", "conventional", "--duration", "600", "--seed", "9", "-q", p("one.csv")}).exitCode, 0);
+        const QList<QByteArray> lines = lwbtest::readAll(p("one.csv")).split('\n');
+        QList<QPair<double, QByteArray>> rows;
+        for (int i = 1; i < lines.size(); ++i) {
+            const QList<QByteArray> f = lines[i].split(',');
+            if (f.size() < 3) continue;
+            rows.append({f[0].toDouble(), f[0] + "," + f[1]});
+            if (f[2] == "1")
+                rows.append({f[0].toDouble() + 1e-6, QByteArray::number(f[0].toDouble() + 1e-6, 'g', 17) + "," +
+                                                          QByteArray::number(f[1].toDouble() + 3e-9, 'g', 17)});
+        }
+        std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        QByteArray two = "epoch_s,oc_s\n";
+        for (const auto& row : rows) two += row.second + "\n";
+        QVERIFY(lwbtest::writeText(p("two.csv"), two));
+        r = runCli({"slr", p("two.csv"), "-o", p("two_out.csv"), "--np-bin", "30", "-q"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains("two parallel tracks 2.99") || r.err.contains("two parallel tracks 3.00"), qPrintable(r.err));
+        // The pass as simulated (one track): exit 0, normal points.
+        r = runCli({"slr", p("one.csv"), "-o", p("one_out.csv"), "--np-bin", "30"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.contains("normal points: ") && !r.err.contains("doubtful"), qPrintable(r.err));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSlrCli)

@@ -85,6 +85,38 @@ PostfitParams postfitForPass(PostfitParams pp, std::string* note) {
     return pp;
 }
 
+std::string parallelTracks(const std::vector<double>& residuals) {
+    const size_t n = residuals.size();
+    if (n < 50) return {};
+    std::vector<double> r = residuals;
+    std::sort(r.begin(), r.end());
+    std::vector<double> s1(n + 1, 0), s2(n + 1, 0);  // prefix sums (about the median, for precision)
+    const double c = r[n / 2];
+    for (size_t i = 0; i < n; ++i) {
+        s1[i + 1] = s1[i] + (r[i] - c);
+        s2[i + 1] = s2[i] + (r[i] - c) * (r[i] - c);
+    }
+    auto sd = [&](size_t a, size_t b) {  // [a, b)
+        const double m = static_cast<double>(b - a), mean = (s1[b] - s1[a]) / m;
+        return std::sqrt(std::max(0.0, (s2[b] - s2[a]) / m - mean * mean));
+    };
+    const size_t lo = std::max<size_t>(5, n / 10);
+    double bestRatio = 0;
+    size_t at = 0;
+    for (size_t k = lo; k + lo <= n; ++k) {
+        const double gap = r[k] - r[k - 1];
+        const double spread = std::max(sd(0, k), sd(k, n));
+        const double ratio = spread > 0 ? gap / spread : (gap > 0 ? INFINITY : 0);
+        if (ratio > bestRatio) bestRatio = ratio, at = k;
+    }
+    if (!(bestRatio > 8)) return {};
+    const double sepNs = ((s1[n] - s1[at]) / static_cast<double>(n - at) - s1[at] / static_cast<double>(at)) * 1e9;
+    return "two parallel tracks " + formatFixed(sepNs, 3) + " ns apart (" + std::to_string(at) + " and " +
+           std::to_string(n - at) + " points, each " + formatFixed(std::max(sd(0, at), sd(at, n)) * 1e12, 0) +
+           " ps wide): another target or a double echo merged into one track; screen them apart (a box in the "
+           "workbench, or a narrower band) before forming normal points";
+}
+
 PassRunResult runPass(const PassData& pass, SlrParams params, Feedback* fb) {
     PassRunResult r;
     const auto t0 = std::chrono::steady_clock::now();
@@ -97,10 +129,22 @@ PassRunResult runPass(const PassData& pass, SlrParams params, Feedback* fb) {
     }
     r.accepted = acceptedMask(r.screen);
     for (uint8_t v : r.accepted) r.acceptedCount += v;
+    // (with nothing accepted the answer is "no signal found", not a doubtful track)
+    if (r.acceptedCount > 0) r.doubt = r.screen.doubt;
     if (r.acceptedCount >= 2) {
         r.post = postfit(pass.t, pass.oc, r.accepted, pass.tof, pp);
         r.postOk = r.post.ok;
         if (!r.post.ok) r.postNote = "post-fit not done: " + r.post.error;
+        if (r.postOk && r.doubt.empty()) {
+            std::vector<double> kept;
+            for (size_t i = 0; i < r.post.kept.size(); ++i)
+                if (r.post.kept[i]) kept.push_back(r.post.residuals[i]);
+            r.doubt = parallelTracks(kept);
+        }
+        if (r.postOk && !r.doubt.empty() && !r.post.normalPoints.empty()) {
+            r.post.normalPoints.clear();
+            r.postNote = "no normal points: " + r.doubt;
+        }
     } else {
         r.postNote = "post-fit not done: " + std::to_string(r.acceptedCount) + " point(s) accepted";
     }

@@ -46,10 +46,20 @@ struct PassRunResult {
     size_t acceptedCount = 0;
     bool postOk = false;
     std::string postNote;              ///< why there is no post-fit, or no normal points
+    /// Why the result cannot be trusted ("" when it can): the screening's doubt, or two parallel
+    /// tracks in the post-fit residuals (a second target or a double-pulse echo merged into one
+    /// track). No normal points are formed then (postNote says so).
+    std::string doubt;
     PostfitResult post;
     StationAgreement agreement;
     double seconds = 0;                ///< wall time of screening + post-fit
 };
+
+/// Two parallel tracks in a track's residuals: "" or what was found. The sorted residuals are
+/// cut at their widest gap with at least 10 % (and 5) of them on each side; two tracks when the
+/// gap is more than 8 times the larger of the two sides' standard deviations (one Gaussian track
+/// of 50 points or more stays below 2: test parallelTracksAreFound).
+std::string parallelTracks(const std::vector<double>& residuals);
 
 /// The post-fit's parameters for a pass: with neither a normal-point bin length nor the
 /// satellite's altitude (an O-C table names none) no bins can be laid, so the trend fit and the

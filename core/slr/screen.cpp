@@ -607,6 +607,12 @@ static void acceptIfFloorless(const NoiseFloorCheck& c, ScreenResult& res) {
     res.floorSigmaS = c.sigmaS;
     res.floorBeyond = c.beyondFraction;
     if (!c.floorless) return;
+    // No noise floor: the pass is a station's filtered ranges, and no scale could show a track
+    // against noise that is not there; that is no doubt about the result.
+    if (!res.doubt.empty()) {
+        res.warnings.erase(std::remove(res.warnings.begin(), res.warnings.end(), res.doubt), res.warnings.end());
+        res.doubt.clear();
+    }
     for (size_t i = 0; i < res.pointClass.size(); ++i) {
         if (res.pointClass[i] != PointClass::Noise || !(std::fabs(c.residualS[i]) <= 5 * c.sigmaS)) continue;
         res.pointClass[i] = PointClass::Recovered;
@@ -647,6 +653,7 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
         AutoScaleResult a = chooseScale(t, oc, params, fb);
         res.autoMs = msSince(ta);
         for (const auto& w : a.warnings) res.warnings.push_back(w);
+        res.doubt = a.doubt;
         if (!a.ok) {
             res.error = a.error;
             return res;

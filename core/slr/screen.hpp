@@ -135,6 +135,10 @@ struct ScreenResult {
     int refinedRounds = 0;           ///< screening rounds on a flattened O-C that were kept (refineRounds)
     long long followedAdded = 0;     ///< followTrack: points added as recovered
     long long followedDropped = 0;   ///< followTrack: accepted points returned to noise (off the followed track)
+    /// Why the result cannot be trusted ("" when it can): automatic mode with no scale showing a
+    /// clear track (the accepted points cannot be told from noise). The pass's run forms no
+    /// normal points then.
+    std::string doubt;
     bool floorless = false;          ///< acceptFloorless: the pass has no noise floor (filtered pass)
     double floorSigmaS = 0;          ///< acceptFloorless: robust σ of the O-C about its trend (s); 0 = not checked
     double floorBeyond = 0;          ///< acceptFloorless: share of points beyond 5σ of the trend

@@ -670,9 +670,11 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         res.error = "cancelled";
         return res;
     }
-    if (best.score <= 0)
-        res.warnings.push_back("automatic mode: no scale shows a clear track (best score " + formatFixed(best.score, 1) +
-                               " of " + std::to_string(res.trials.size()) + " trials); the result is doubtful");
+    if (best.score <= 0) {
+        res.doubt = "automatic mode: no scale shows a clear track (best score " + formatFixed(best.score, 1) + " of " +
+                    std::to_string(res.trials.size()) + " trials): the accepted points cannot be told from noise";
+        res.warnings.push_back(res.doubt);
+    }
     res.magT = 1.0 / dT(best.k, best.c);
     res.magOc = 1.0 / dO(best.k);
     res.connectivity = best.conn;

@@ -44,6 +44,7 @@ struct AutoScaleResult {
     bool ok = false;
     std::string error;
     std::vector<std::string> warnings;
+    std::string doubt;           ///< no scale shows a clear track ("" when one does)
     double magT = 0, magOc = 0;  ///< chosen (or the manual value when given)
     int connectivity = 8;        ///< chosen (or manual)
     std::vector<ScaleTrial> trials;
