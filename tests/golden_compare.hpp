@@ -17,7 +17,8 @@
 //                                             truth, 1e-17 on one CPU and 0 on another), and
 //      one unit in the last printed digit    (a value on a rounding boundary: 0.12345 written as
 //                                             0.1234 here and 0.1235 there).
-//    A column documented as less precise gets its own rel (Tolerance::columns).
+//    A column documented as less precise gets its own rel (Tolerance::columns) or an absolute
+//    allowance (Tolerance::columnsAbs; whole numbers too, such as an iteration count).
 //  - Line and field counts must match.
 //
 // A failure names the file, the line, the column (or field) and both values.
@@ -37,6 +38,9 @@ struct Tolerance {
     double colRel = 1e-12; ///< relative to the column's largest magnitude (CSV)
     /// Per-column relative tolerances that replace `rel` ("column name" → rel).
     QMap<QString, double> columns;
+    /// Per-column absolute tolerances added to the allowance ("column name" → abs), whole
+    /// numbers included (an iteration count).
+    QMap<QString, double> columnsAbs;
 };
 
 struct NumberToken {
@@ -180,9 +184,11 @@ inline QString compareNumbers(const QString& file, const QByteArray& golden, con
                     .arg(where, column, why, QString::fromUtf8(gf[c].left(300)), QString::fromUtf8(tf[c].left(300)));
             };
             if (a.size() != b.size()) return differ("not the same shape of text and numbers");
-            const double rel = tol.columns.value(QString::fromUtf8(header.value(c)), tol.rel);
+            const QString colName = QString::fromUtf8(header.value(c));
+            const double rel = tol.columns.value(colName, tol.rel);
+            const double abs = tol.columnsAbs.value(colName, 0.0);
             for (int k = 0; k < a.size(); ++k) {
-                if (a[k].isNumber != b[k].isNumber || !a[k].isNumber || (a[k].integral && b[k].integral)) {
+                if (a[k].isNumber != b[k].isNumber || !a[k].isNumber || (a[k].integral && b[k].integral && abs == 0)) {
                     if (a[k].text != b[k].text) return differ("\"" + QString::fromUtf8(b[k].text) + "\", golden \"" +
                                                              QString::fromUtf8(a[k].text) + "\"");
                     continue;
@@ -194,7 +200,9 @@ inline QString compareNumbers(const QString& file, const QByteArray& golden, con
                 }
                 const double allowed = std::max({rel * std::max(std::fabs(x), std::fabs(y)),
                                                  csv ? tol.colRel * colMax.value(c) : 0.0,
-                                                 std::max(a[k].lastDigit, b[k].lastDigit) * (1 + 1e-9)});
+                                                 (a[k].integral && b[k].integral) ? 0.0
+                                                                                  : std::max(a[k].lastDigit, b[k].lastDigit) * (1 + 1e-9),
+                                                 abs});
                 if (std::fabs(x - y) > allowed)
                     return differ(QString("%1 vs golden %2: differs by %3, more than the %4 allowed (relative %5)")
                                       .arg(QString::fromUtf8(b[k].text), QString::fromUtf8(a[k].text))

@@ -114,9 +114,25 @@ class TestGoldenOutputs : public QObject {
     }
 
     // Per-case tolerances that differ from golden_compare.hpp's defaults, with the reason.
+    // Measured against a build with -march=x86-64-v3 -ffp-contract=fast run with glibc's AVX-512
+    // code off (docs/testing.md): every difference it showed is within these, and none needs more.
     Tolerance toleranceFor(const QString& name, const QString& output) const {
         Tolerance t;
-        Q_UNUSED(name);
+        // SLR residual_s (s, two-way): O-C less a polynomial trend fitted to O-C values of 1e-7 s.
+        // Signal points' picosecond residuals move by a few 1e-18 s (5e-7 relative; 1e-15 s is
+        // 0.15 um one-way), a noise point's residual far from the track is the trend extrapolated
+        // (0.53 s moved by 1e-7 s: 2e-7 relative).
+        if (name.startsWith("slr_")) {
+            t.columns["residual_s"] = 1e-6;
+            t.columnsAbs["residual_s"] = 1e-15;
+        }
+        // calib detector: the fit's iteration count may end a step or two apart (47 and 48 seen);
+        // the centre and its figures then move by 1e-9 relative.
+        if (name == "calib_detector") t.columnsAbs["iterations"] = 3;
+        // calib pointing: the pointing and range parameters are strongly correlated (their normal
+        // equations ill-conditioned): the 8th digit moves (2e-7 relative seen, in an early
+        // iteration; the parameters' standard deviations are 1e4 to 1e6 times larger).
+        if (name == "calib_pointing") t.rel = 5e-7;
         // Images: row and column means within 1e-4 (2 DN on a 20 000 DN row). OpenCV's warps
         // quantise source coordinates to 1/32 px, so a transform a few ulps apart on another CPU
         // moves some pixels across a quantisation step: tens of DN at 0.06 % of the pixels of a
