@@ -43,7 +43,7 @@ const char* kFootprintUsage =
     "  --center X,Y              nominal spot centre in full-image px; repeat for the two beams of an\n"
     "                            LSI frame (one row per ROI). Without it, the brightest spot-like blob.\n"
     "  --raw-size WxH            size of .raw/.bin frames\n"
-    "  --max-pixels N            largest frame read, from its header (default 268435456 = 16384^2)\n"
+    "  --max-pixels N            largest frame read, from its header (default 16777216 = 4096^2)\n"
     "  --threads N               worker threads (default: all cores)\n"
     "  --keep-going              write unreadable files as rejected rows instead of stopping\n"
     "  -o, --output OUT.csv      report: file,x,y,verdict,reasons,method,noise_class,sigma_x,...\n"

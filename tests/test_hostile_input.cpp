@@ -182,6 +182,28 @@ private slots:
         QVERIFY2(QString::fromStdString(small.error).contains("1024 pixels"), small.error.c_str());
         r = runCli({"footprint", p("small.png"), "--max-pixels", "1000", "-o", p("fp.csv")});
         QCOMPARE(r.exitCode, 1);
+        // Issue 27: a 16384 x 16384 frame (0.5 MB as a PNG) took 4.2 GB in footprint; its frames
+        // are refused above 4096 x 4096 by default, and --max-pixels takes the limit higher.
+        QVERIFY(writeText(p("big.png"), pngClaiming(16384, 16384)));
+        r = runCli({"footprint", p("big.png"), "-o", p("fp.csv")});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("more than the limit of 16777216 pixels"), qPrintable(r.err));
+        QCOMPARE(footprint::ImageReadParams{}.maxPixels, 4096LL * 4096);
+    }
+
+    // ------------------------------------------------------------------ tables
+    // Issue 27: a CSV of 51 MB of empty fields took 1.65 GB (every field a std::string). Tables
+    // of more than kMaxCsvFields fields are refused with the line where the limit was passed.
+    void hugeCsvTablesRefused() {
+        QByteArray t = "time,beam,x,y\n";
+        const QByteArray row = ",,,\n";
+        t.reserve(int(t.size() + row.size() * 2500001));
+        for (int i = 0; i < 2500001; ++i) t += row;
+        QVERIFY(writeText(p("empty.csv"), t));
+        const CliRun r = runCli({"trend", p("empty.csv"), "-o", p("t.csv")});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("empty.csv:2500002: more than 10000000 fields"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(p("t.csv")));
     }
 
     // Header sizes of every format read, against images written by OpenCV.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <map>
 
 #include "core/calib/least_squares.hpp"
@@ -622,12 +623,17 @@ bool readBeamsJson(const std::string& path, std::vector<BeamDesign>* out, std::s
     }
     const Json& arr = root["beams"];
     std::vector<BeamDesign> v;
+    std::unordered_map<long long, size_t> seen;  // beam id -> index
     for (size_t i = 0; i < arr.size(); ++i) {
         const Json& b = arr[i];
-        const std::string at = "[" + std::to_string(i) + "]";
-        const std::string where = j.where({"beams", at}) + "beams" + at + ": ";
+        // (the position is looked up only for a message: finding it walks the text, and doing it
+        // for every beam made 20 000 beams take a minute)
+        auto where = [&] {
+            const std::string at = "[" + std::to_string(i) + "]";
+            return j.where({"beams", at}) + "beams" + at + ": ";
+        };
         if (!b.is_object()) {
-            *error = where + "not an object";
+            *error = where() + "not an object";
             return false;
         }
         BeamDesign d;
@@ -635,35 +641,34 @@ bool readBeamsJson(const std::string& path, std::vector<BeamDesign>* out, std::s
         std::string err;
         if (!jsonInt(b, "id", &d.id, &err) || !jsonNumber(b, "alpha_deg", &alpha, &err) ||
             !jsonNumber(b, "beta_deg", &beta, &err)) {
-            *error = where + err;
+            *error = where() + err;
             return false;
         }
         if (!b.contains("id") || !std::isfinite(alpha) || !std::isfinite(beta)) {
-            *error = where + "needs id, alpha_deg and beta_deg";
+            *error = where() + "needs id, alpha_deg and beta_deg";
             return false;
         }
         if (alpha < 0 || alpha > 90) {
-            *error = where + "alpha_deg must be within 0..90";
+            *error = where() + "alpha_deg must be within 0..90";
             return false;
         }
-        for (size_t k = 0; k < v.size(); ++k)
-            if (v[k].id == d.id) {
-                *error = where + "id " + std::to_string(d.id) + " is already used by beams[" + std::to_string(k) +
-                         "]; each beam is designed once";
-                return false;
-            }
+        if (const auto [it, fresh] = seen.emplace(d.id, i); !fresh) {
+            *error = where() + "id " + std::to_string(d.id) + " is already used by beams[" + std::to_string(it->second) +
+                     "]; each beam is designed once";
+            return false;
+        }
         d.alphaRad = alpha * kDeg;
         d.betaRad = beta * kDeg;
         auto vec = [&](const char* key, size_t n, double* dst) {
             if (!b.contains(key)) return true;
             const Json& a = b[key];
             if (!a.is_array() || a.size() != n) {
-                *error = where + key + " must be an array of " + std::to_string(n) + " numbers";
+                *error = where() + key + " must be an array of " + std::to_string(n) + " numbers";
                 return false;
             }
             for (size_t k = 0; k < n; ++k) {
                 if (!a[k].is_number() || !std::isfinite(a[k].get<double>())) {
-                    *error = where + key + " must hold finite numbers";
+                    *error = where() + key + " must hold finite numbers";
                     return false;
                 }
                 dst[k] = a[k].get<double>();
@@ -675,7 +680,7 @@ bool readBeamsJson(const std::string& path, std::vector<BeamDesign>* out, std::s
         d.offsetBodyM = Eigen::Vector3d(off[0], off[1], off[2]);
         d.laserToBody = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
         if (std::fabs(d.laserToBody.norm() - 1) > 1e-3) {
-            *error = where + "mounting_quat is not a unit quaternion";
+            *error = where() + "mounting_quat is not a unit quaternion";
             return false;
         }
         d.laserToBody.normalize();

@@ -77,6 +77,7 @@ CsvReadResult parseCsv(std::string_view given, const std::string& source) {
     long line = 1;
     std::vector<std::string> fields;
     bool haveHeader = false;
+    size_t fieldCount = 0;
     while (pos < text.size()) {
         const long recLine = line;
         std::string err;
@@ -100,6 +101,17 @@ CsvReadResult parseCsv(std::string_view given, const std::string& source) {
             r.table.header = fields;
             haveHeader = true;
             continue;
+        }
+        // Every field is a std::string (32 bytes before its text): a file of empty fields took 33
+        // times its size (51 MB -> 1.65 GB). The tables read here (calibration, radiometry,
+        // trend, shot lists) hold thousands of fields; beyond kMaxCsvFields it is refused.
+        fieldCount += fields.size();
+        if (fieldCount > kMaxCsvFields) {
+            r.error = source + ":" + std::to_string(recLine) + ": more than " + std::to_string(kMaxCsvFields) +
+                      " fields: larger than this reader takes (about " + std::to_string(kMaxCsvFields * 40 / 1000000) +
+                      " MB in memory); split the table";
+            r.table = CsvTable();
+            return r;
         }
         if (fields.size() != r.table.header.size()) {
             r.error = source + ":" + std::to_string(recLine) + ": " + std::to_string(fields.size()) +

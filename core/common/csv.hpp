@@ -24,6 +24,9 @@ struct CsvReadResult {
     CsvTable table;
 };
 
+/// Most data fields a table may hold (rows x columns): 10 million, about 400 MB in memory.
+constexpr size_t kMaxCsvFields = 10000000;
+
 /// Parses CSV text. `source` names the input in error messages.
 CsvReadResult parseCsv(std::string_view text, const std::string& source);
 /// Reads and parses a CSV file.

@@ -9,8 +9,13 @@
 
 namespace lwb::core {
 
-/// Largest image decoded by default (pixels): 2^28 = 16384 x 16384.
+/// Largest image decoded by default (pixels): 2^28 = 16384 x 16384 (radiometry frames and mosaics).
 constexpr long long kMaxImagePixels = 1LL << 28;
+/// Largest footprint frame decoded by default: 4096 x 4096 = 2^24 pixels. A frame takes about 16
+/// bytes per pixel through the footprint pipeline (its 16-bit and float copies and the ROI
+/// search): 270 MB at the limit, where a 0.5 MB PNG of 16384 x 16384 took 4.2 GB. GF-7 frames are
+/// 550 x 550; --max-pixels raises it.
+constexpr long long kMaxFootprintFramePixels = 1LL << 24;
 
 struct ImageHeader {
     bool recognised = false;  ///< a PNG, TIFF, BigTIFF, PNM or JPEG signature

@@ -13,7 +13,7 @@ struct ImageReadParams {
     int rawWidth = 0;       ///< width of .raw/.bin frames (px); required for them
     int rawHeight = 0;      ///< height of .raw/.bin frames (px)
     bool rawBigEndian = false;  ///< raw byte order (GF-7 products are little-endian)
-    long long maxPixels = kMaxImagePixels;  ///< larger images are refused before decoding (0 = no limit)
+    long long maxPixels = kMaxFootprintFramePixels;  ///< larger images are refused before decoding (0 = no limit)
 };
 
 struct ImageReadResult {
