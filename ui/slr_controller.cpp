@@ -28,7 +28,12 @@ SlrController::SlrController(QObject* parent) : QObject(parent) {
             const bool keepScale = m_screenDue && m_scaleValid && m_params.screen.automatic;
             const ScaleChoice scale = m_scale;
             auto t = m_t, oc = m_oc, tof = m_tof;
-            const SlrParams params = m_params;
+            SlrParams params = m_params;
+            // The pass's normal-point context, as the CLI gives it (core passNormalPointContext:
+            // the C1 fire rate, the station from the SINEX file), over what the parameters leave
+            // unknown: the same normal points in both (issue 28).
+            passNormalPointContext(m_pass, m_sources && m_sources->haveStations ? &m_sources->stations : nullptr,
+                                   &params.postfit);
             const std::vector<int8_t> forced = m_forced;
             return [=](core::Feedback& fb) {
                 SlrRun run;
@@ -50,6 +55,11 @@ SlrController::SlrController(QObject* parent) : QObject(parent) {
                 // As the CLI: without a bin length or an altitude (an O-C table) the trend fit
                 // and the rejection still run, without normal points.
                 run.post = postfit(*t, *oc, run.accepted, *tof, postfitForPass(params.postfit, &run.postNote), &fb);
+                // Judged as the CLI judges it (core judgeRun): noise no scale tells from a track,
+                // or two parallel tracks, form no normal points.
+                size_t acceptedCount = 0;
+                for (uint8_t v : run.accepted) acceptedCount += v;
+                run.doubt = judgeRun(run.screen, acceptedCount, run.post.ok ? &run.post : nullptr, &run.postNote);
                 return run;
             };
         },
@@ -90,11 +100,14 @@ void SlrController::passLoaded() {
 }
 
 namespace {
-// The CPF (file or folder) and SINEX of `in`, read once for the passes of a file (none unless both are given).
+// The CPF (file or folder) and SINEX of `in`, read once for the passes of a file (the CPF is
+// used with the SINEX only; the SINEX alone gives the station's position).
 bool readSources(const PassInputParams& in, std::shared_ptr<const PassSources>* out, QString* error) {
     auto sources = std::make_shared<PassSources>();
     std::string err;
-    if (!in.cpfPath.empty() && !in.sinexPath.empty() && !readPassSources(in, sources.get(), &err)) {
+    // The SINEX file alone still places the station (day or night per normal-point bin), as
+    // laserwb-cli slr --stations does.
+    if (!in.sinexPath.empty() && !readPassSources(in, sources.get(), &err)) {
         *error = QString::fromStdString(err);
         return false;
     }

@@ -29,6 +29,7 @@ struct SlrRun {
     std::vector<uint8_t> accepted;       ///< after manual edits
     core::slr::PostfitResult post;
     std::string postNote;                ///< why the post-fit formed no normal points ("" when it could)
+    std::string doubt;                   ///< why the result cannot be trusted (core judgeRun; "" when it can)
     bool scaleReused = false;            ///< screened at the scale an earlier run chose (C changed alone)
     bool screenReused = false;           ///< the screening of the previous run, only the post-fit ran
     double latencyMs = 0;                ///< parameter change → result delivered

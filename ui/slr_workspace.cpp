@@ -1140,7 +1140,10 @@ void SlrWorkspace::showRun(const SlrRun& run) {
             const QString prefix = QStringLiteral("no normal points: ");  // the heading says it already
             QString why = QString::fromStdString(run.postNote);
             if (why.startsWith(prefix)) why = why.mid(prefix.size());
-            statsHtml += tr("<b>No normal points</b>: %1").arg(why.toHtmlEscaped());
+            // A doubtful result (core judgeRun, as the CLI's exit 3) in the warning colour.
+            statsHtml += run.doubt.empty() ? tr("<b>No normal points</b>: %1").arg(why.toHtmlEscaped())
+                                           : tr("<b><span style='color:#c05000'>Doubtful, no normal points</span></b>: %1")
+                                                 .arg(why.toHtmlEscaped());
         }
     } else {
         statsHtml += tr("<b>Post-fit:</b> %1<br>").arg(QString::fromStdString(run.post.error).toHtmlEscaped());

@@ -117,6 +117,37 @@ std::string parallelTracks(const std::vector<double>& residuals) {
            "workbench, or a narrower band) before forming normal points";
 }
 
+std::string judgeRun(const ScreenResult& screen, size_t acceptedCount, PostfitResult* post, std::string* postNote) {
+    // (with nothing accepted the answer is "no signal found", not a doubtful track)
+    std::string doubt = acceptedCount > 0 ? screen.doubt : std::string();
+    if (doubt.empty() && post && post->ok) {
+        std::vector<double> kept;
+        for (size_t i = 0; i < post->kept.size(); ++i)
+            if (post->kept[i]) kept.push_back(post->residuals[i]);
+        doubt = parallelTracks(kept);
+    }
+    if (!doubt.empty() && post && !post->normalPoints.empty()) {
+        post->normalPoints.clear();
+        if (postNote) *postNote = "no normal points: " + doubt;
+    }
+    return doubt;
+}
+
+std::vector<std::string> passNormalPointContext(const PassData& pass, const SinexFile* stations, PostfitParams* pp) {
+    if (!pass.hasCrd || pass.passIndex < 0 || size_t(pass.passIndex) >= pass.crd.passes.size()) return {};
+    PostfitParams ctx = *pp;
+    ctx.fireRateHz = 0;
+    ctx.stationLatDeg = ctx.stationLonDeg = ctx.dayStartMjd = NAN;
+    std::vector<std::string> notes = fillNormalPointContext(pass.crd.passes[size_t(pass.passIndex)], pass.cdpPad, stations, &ctx);
+    if (!(pp->fireRateHz > 0)) pp->fireRateHz = ctx.fireRateHz;
+    if (!std::isfinite(pp->stationLatDeg)) {
+        pp->stationLatDeg = ctx.stationLatDeg;
+        pp->stationLonDeg = ctx.stationLonDeg;
+        pp->dayStartMjd = ctx.dayStartMjd;
+    }
+    return notes;
+}
+
 PassRunResult runPass(const PassData& pass, SlrParams params, Feedback* fb) {
     PassRunResult r;
     const auto t0 = std::chrono::steady_clock::now();
@@ -129,22 +160,11 @@ PassRunResult runPass(const PassData& pass, SlrParams params, Feedback* fb) {
     }
     r.accepted = acceptedMask(r.screen);
     for (uint8_t v : r.accepted) r.acceptedCount += v;
-    // (with nothing accepted the answer is "no signal found", not a doubtful track)
-    if (r.acceptedCount > 0) r.doubt = r.screen.doubt;
     if (r.acceptedCount >= 2) {
         r.post = postfit(pass.t, pass.oc, r.accepted, pass.tof, pp);
         r.postOk = r.post.ok;
         if (!r.post.ok) r.postNote = "post-fit not done: " + r.post.error;
-        if (r.postOk && r.doubt.empty()) {
-            std::vector<double> kept;
-            for (size_t i = 0; i < r.post.kept.size(); ++i)
-                if (r.post.kept[i]) kept.push_back(r.post.residuals[i]);
-            r.doubt = parallelTracks(kept);
-        }
-        if (r.postOk && !r.doubt.empty() && !r.post.normalPoints.empty()) {
-            r.post.normalPoints.clear();
-            r.postNote = "no normal points: " + r.doubt;
-        }
+        r.doubt = judgeRun(r.screen, r.acceptedCount, r.postOk ? &r.post : nullptr, &r.postNote);
     } else {
         r.postNote = "post-fit not done: " + std::to_string(r.acceptedCount) + " point(s) accepted";
     }

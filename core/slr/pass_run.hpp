@@ -61,6 +61,17 @@ struct PassRunResult {
 /// of 50 points or more stays below 2: test parallelTracksAreFound).
 std::string parallelTracks(const std::vector<double>& residuals);
 
+/// Whether a pass's result can be trusted, judged the same way wherever it is run (the CLI's
+/// runPass and the workbench's live run): the screening's doubt (when points were accepted), or
+/// two parallel tracks in the post-fit's kept residuals. A doubtful result loses its normal
+/// points (*postNote says why). Returns the doubt ("" when none).
+std::string judgeRun(const ScreenResult& screen, size_t acceptedCount, PostfitResult* post, std::string* postNote);
+
+/// The normal-point context of a CRD pass, as the CLI's passSettings gives it (the C1 fire rate,
+/// the station's position and day start from SINEX when given), written over the fields of *pp
+/// that the parameters leave unknown (fire rate 0, station position NaN). Notes for the summary.
+std::vector<std::string> passNormalPointContext(const PassData& pass, const SinexFile* stations, PostfitParams* pp);
+
 /// The post-fit's parameters for a pass: with neither a normal-point bin length nor the
 /// satellite's altitude (an O-C table names none) no bins can be laid, so the trend fit and the
 /// rejection run without normal points, and *note (when given) says why.

@@ -443,6 +443,58 @@ private slots:
         QCOMPARE(cells, static_cast<int>(signal.size()));  // each signal pixel drawn once, unpooled
     }
 
+    // GUI = CLI (issue 28): the same pass with the same (default) settings gives byte-identical
+    // screened points, flagged CRD and normal points in the workbench and in laserwb-cli. On
+    // STELLA the workbench exported 6 normal points (bins of 4 points, return rate -1) where the
+    // CLI wrote 4 (the day minimum of 6 when day or night is unknown, the C1 fire rate).
+    void workbenchAndCliWriteTheSameFiles_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("pass");
+        QTest::addColumn<int>("sources");  // 0 none, 1 the BLITS CPF and the SLRF2014 SINEX, 2 the SINEX alone
+        QTest::newRow("STELLA") << "slr/7080_STELLA_crd_071220_2128_0.frd" << 1 << 0;
+        QTest::newRow("STELLA, SINEX (day or night)") << "slr/7080_STELLA_crd_071220_2128_0.frd" << 1 << 2;
+        QTest::newRow("JASON1") << "slr/7080_JASON1_crd_071220_2033_0.frd" << 1 << 0;
+        QTest::newRow("Beacon-C 2007-05-11 pass 1") << "slr/beaconc_20070511.frd" << 1 << 0;
+        QTest::newRow("hy2c pass 6") << "slr/hy2c_202109.fr2" << 6 << 0;
+        QTest::newRow("BLITS pass 3, CPF and SINEX") << "slr/blits_201206.frd" << 3 << 1;
+    }
+    void workbenchAndCliWriteTheSameFiles() {
+        QFETCH(QString, file);
+        QFETCH(int, pass);
+        QFETCH(int, sources);
+        const QString in = lwbtest::sharedPath(file);
+        if (!QFile::exists(in)) QSKIP("shared data absent");
+        const QString d = m_dir.path() + "/same-" + QString::number(qHash(file));
+        QVERIFY(QDir().mkpath(d));
+        MainWindow w;
+        QString err;
+        const QString cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"),
+                      snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
+        QStringList options;
+        if (sources == 1) {
+            QVERIFY2(w.slr()->setCpf(cpf, &err) && w.slr()->setSinex(snx, &err), qPrintable(err));
+            options = {"--cpf", cpf, "--stations", snx};
+        } else if (sources == 2) {
+            QVERIFY2(w.slr()->setSinex(snx, &err), qPrintable(err));
+            options = {"--stations", snx};
+        }
+        QVERIFY2(w.slr()->openPath(in, pass - 1, &err), qPrintable(err));
+        SlrController* c = w.slr()->controller();
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY(c->hasRun());
+        QVERIFY2(c->exportCsv(d + "/gui.csv", &err), qPrintable(err));
+        QVERIFY2(c->exportCrd(d + "/gui.frd", &err), qPrintable(err));
+        const bool guiNpt = c->exportNormalPoints(d + "/gui.npt", &err);
+        const lwbtest::CliRun r = lwbtest::runCli(QStringList{"slr", in, "--pass", QString::number(pass), "-o", d + "/cli.csv",
+                                                              "--crd-out", d + "/cli.frd", "--npt-out", d + "/cli.npt", "-q"} +
+                                                  options);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(guiNpt, qPrintable(err));
+        QCOMPARE(lwbtest::readAll(d + "/gui.csv"), lwbtest::readAll(d + "/cli.csv"));
+        QCOMPARE(lwbtest::readAll(d + "/gui.frd"), lwbtest::readAll(d + "/cli.frd"));
+        QCOMPARE(lwbtest::readAll(d + "/gui.npt"), lwbtest::readAll(d + "/cli.npt"));
+    }
+
     void crdPassWithFlagsRoundTrip() {
         const QString jason = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
         if (!QFile::exists(jason)) QSKIP("shared data absent");
