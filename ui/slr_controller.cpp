@@ -23,7 +23,10 @@ SlrController::SlrController(QObject* parent) : QObject(parent) {
         [this]() -> std::function<SlrRun(core::Feedback&)> {
             if (!hasPass()) return {};
             // What this run reuses: the last screening (only the post-fit or the edits changed),
-            // or the scale the automatic mode chose (only C changed), or nothing.
+            // or, when reuseScaleForCosine is set (off by default), the scale the automatic mode
+            // chose while only C moved; else nothing. (A screening at a kept scale is not the one
+            // laserwb-cli makes at that C: "one answer everywhere" wins over the 0.15 s of a
+            // 10^5-point pass's scale search, docs/benchmarks.md.)
             std::shared_ptr<const SlrRun> previous = !m_screenDue && m_run->screen.ok ? m_run : nullptr;
             const bool keepScale = m_screenDue && m_scaleValid && m_params.screen.automatic;
             const ScaleChoice scale = m_scale;
@@ -343,15 +346,11 @@ bool SlrController::savePreset(QString* error) {
     SatellitePreset p;
     p.name = m_pass.satellite;
     p.ilrsId = m_pass.ilrsId;
+    // The settings as the analyst has them: the automatic mode stays on unless it was turned off
+    // (then the panel holds the scale it had chosen). Storing the chosen scale with the automatic
+    // mode off lost the refinement and the track following: STELLA reopened with 70 of 236
+    // points accepted instead of 150 (issue 28).
     p.screen = m_params.screen;
-    // Keep the scale the automatic mode chose, so the preset reproduces this screening.
-    if (hasRun() && m_params.screen.automatic) {
-        p.screen.automatic = false;
-        p.screen.magT = m_run->screen.magT;
-        p.screen.magOc = m_run->screen.magOc;
-        p.screen.areaLimit = m_run->screen.areaLimit;
-        p.screen.connectivity = m_run->screen.connectivity;
-    }
     p.postfit = m_params.postfit;
     bool replaced = false;
     for (auto& q : presets)

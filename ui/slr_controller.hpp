@@ -162,7 +162,7 @@ private:
     bool m_screenDue = true;
     bool m_scaleValid = false;
     core::slr::ScaleChoice m_scale;
-    bool m_reuseScaleForCosine = true;
+    bool m_reuseScaleForCosine = false;  ///< off: the CLI's screening at every C (tests/ui movingC...)
     int m_screenings = 0;
 };
 

@@ -591,6 +591,11 @@ void refine(const std::vector<double>& t, const std::vector<double>& oc, const S
         r2.recoveryMs += res.recoveryMs;
         r2.autoArea = res.autoArea;
         r2.refinedRounds = res.refinedRounds + 1;
+        // (the first round's scale, on the O-C as given, travels with the kept round)
+        r2.baseMagT = res.refinedRounds > 0 ? res.baseMagT : res.magT;
+        r2.baseMagOc = res.refinedRounds > 0 ? res.baseMagOc : res.magOc;
+        r2.baseAreaLimit = res.refinedRounds > 0 ? res.baseAreaLimit : res.areaLimit;
+        r2.baseConnectivity = res.refinedRounds > 0 ? res.baseConnectivity : res.connectivity;
         shift = nextShift;
         r2.flattenS = shift;
         res = std::move(r2);
@@ -720,6 +725,8 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
 }
 
 ScaleChoice scaleChoice(const ScreenResult& r) {
+    if (r.refinedRounds > 0 && r.baseMagT > 0)
+        return {r.baseMagT, r.baseMagOc, r.baseAreaLimit, r.baseConnectivity, r.autoMagT, r.autoMagOc, r.autoArea, r.autoConnectivity};
     return {r.magT, r.magOc, r.areaLimit, r.connectivity, r.autoMagT, r.autoMagOc, r.autoArea, r.autoConnectivity};
 }
 

@@ -133,6 +133,11 @@ struct ScreenResult {
     bool autoMagT = false, autoMagOc = false, autoArea = false, autoConnectivity = false;
     std::vector<ScaleTrial> trials;  ///< automatic mode: every scale tried, in order (of the kept round)
     int refinedRounds = 0;           ///< screening rounds on a flattened O-C that were kept (refineRounds)
+    /// The scale of the first round, on the O-C as given (magT ... above are the kept round's, on
+    /// the flattened O-C when refinedRounds > 0): the scale that screening the same O-C again
+    /// starts from (scaleChoice).
+    double baseMagT = 0, baseMagOc = 0;
+    int baseAreaLimit = 0, baseConnectivity = 0;
     long long followedAdded = 0;     ///< followTrack: points added as recovered
     long long followedDropped = 0;   ///< followTrack: accepted points returned to noise (off the followed track)
     /// Why the result cannot be trusted ("" when it can): automatic mode with no scale showing a
@@ -186,7 +191,10 @@ struct ScaleChoice {
     int areaLimit = 0, connectivity = 0;
     bool autoMagT = false, autoMagOc = false, autoArea = false, autoConnectivity = false;
 };
-/// The scale of a successful screening.
+/// The scale a successful screening used on the O-C as given: its first round's when the
+/// refinement kept rounds on a flattened O-C (that round's scale fits the flattened O-C only:
+/// reused on the O-C as given, JASON1 accepted nothing after a move of C, and turning the
+/// automatic mode off lost points).
 ScaleChoice scaleChoice(const ScreenResult& r);
 /// Steps 1–6 at a given scale: the parameters left at 0 (automatic) in `params` are taken from
 /// `scale` instead of being searched; the result reports them as automatic choices, as the run
