@@ -122,9 +122,11 @@ bool loadPart(Part part, const CalibInputs& in, CalibData* d, QString* error) {
                 d->trueHeightM = sim::kDemoFeatureHeightM;
                 return true;
             }
-            // The sample interval is a waveform parameter; files with a time column ignore it.
+            // The sample interval is a waveform parameter (files with a time column ignore it):
+            // read at 1 ns per sample here, the run puts waveform.sample_interval_ns on it
+            // (core withSampleInterval; it read a literal 0.5, which only the CLI's setting changed).
             Waveform w;
-            if (!readWaveformCsv(in.waveform.toStdString(), 0.5, &w, &err)) return fail(error, err);
+            if (!readWaveformCsv(in.waveform.toStdString(), 1.0, &w, &err)) return fail(error, err);
             d->waveform = std::move(w);
             return true;
         }

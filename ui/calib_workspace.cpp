@@ -886,7 +886,8 @@ void CalibWorkspace::showWaveform(const CalibRun& run) {
     p->clearPlottables();
     p->clearItems();
     m_rankTable->setRowCount(0);
-    const Waveform& w = run.data->waveform;
+    // (its times as the run used them: waveform.sample_interval_ns for a file without a time column)
+    const Waveform w = withSampleInterval(run.data->waveform, m_controller->params().waveform.sampleIntervalNs);
     if (w.amplitude.empty()) {
         m_waveSummary->setText(tr("No waveform: open a waveform CSV or the demo."));
         p->replot(QCustomPlot::rpQueuedReplot);

@@ -73,7 +73,7 @@ CalibRunResult runCalibration(const CalibInputData& d, const CalibParams& p) {
     double height = d.givenHeightM;
     if (!d.waveform.amplitude.empty()) {
         run.hasWaveform = true;
-        run.waveform = decomposeWaveform(d.waveform, p.waveform);
+        run.waveform = decomposeWaveform(withSampleInterval(d.waveform, p.waveform.sampleIntervalNs), p.waveform);
         height = run.waveform.ok ? run.waveform.heightM : NAN;
     }
     if (std::isfinite(height) && !d.features.empty()) {

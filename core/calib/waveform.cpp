@@ -10,6 +10,15 @@
 
 namespace lwb::core::calib {
 
+Waveform withSampleInterval(const Waveform& w, double sampleIntervalNs) {
+    if (!w.timesFromInterval || !(sampleIntervalNs > 0) || sampleIntervalNs == w.readIntervalNs || !(w.readIntervalNs > 0))
+        return w;
+    Waveform out = w;
+    for (double& t : out.timeNs) t = t / w.readIntervalNs * sampleIntervalNs;
+    out.readIntervalNs = sampleIntervalNs;
+    return out;
+}
+
 bool readWaveformCsv(const std::string& path, double dt, Waveform* out, std::string* error) {
     if (!(dt > 0 && std::isfinite(dt))) {
         *error = "sample interval must be > 0 ns";
@@ -58,6 +67,8 @@ bool readWaveformCsv(const std::string& path, double dt, Waveform* out, std::str
         w.timeNs.push_back(tt);
         w.amplitude.push_back(a);
     }
+    w.timesFromInterval = ct < 0;
+    w.readIntervalNs = dt;
     if (w.timeNs.size() < 10) {
         *error = path + ": only " + std::to_string(w.timeNs.size()) + " samples (a two-peak fit needs at least 10)";
         return false;

@@ -20,7 +20,16 @@ namespace lwb::core::calib {
 struct Waveform {
     std::vector<double> timeNs;     ///< sample times (ns), increasing
     std::vector<double> amplitude;  ///< samples (DN or volts)
+    /// Read without a time column: timeNs is sample index x the sample interval given to the
+    /// reader, and a run with another waveform.sample_interval_ns rescales it (withSampleInterval).
+    bool timesFromInterval = false;
+    double readIntervalNs = 0;      ///< the interval the times were made with (when timesFromInterval)
 };
+
+/// The waveform with its times made from `sampleIntervalNs` when they came from an interval (a
+/// file without a time column); unchanged otherwise. The CLI and the workbench both read a
+/// waveform through this, so waveform.sample_interval_ns means the same in both.
+Waveform withSampleInterval(const Waveform& w, double sampleIntervalNs);
 
 /// Reads a waveform CSV: columns time_ns and amplitude, or amplitude alone (times are then
 /// i · sampleIntervalNs), or sample,amplitude (sample index · sampleIntervalNs). Errors name

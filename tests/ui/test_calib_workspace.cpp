@@ -163,6 +163,38 @@ private slots:
         QVERIFY(shown);
     }
 
+    // waveform.sample_interval_ns means the same in the workbench as in the CLI (issue 28: the
+    // workbench read an amplitude-only waveform at a literal 0.5 ns): at 0.25 ns the same ranking
+    // file and half the height.
+    void waveformSampleIntervalAsTheCli() {
+        const QString dir = path("sim");
+        QByteArray amp = "amplitude\n";
+        const QList<QByteArray> lines = lwbtest::readAll(dir + "/waveform.csv").split('\n');
+        for (int i = 1; i < lines.size(); ++i)
+            if (!lines[i].isEmpty()) amp += lines[i].split(',').value(1) + "\n";
+        QVERIFY(lwbtest::writeText(path("amp_only.csv"), amp));
+        const auto cli = lwbtest::runCli({"calib", "waveform", path("amp_only.csv"), "--features", dir + "/features.csv",
+                                          "--set", "waveform.sample_interval_ns=0.25", "-o", path("rank_025.csv")});
+        QVERIFY2(cli.exitCode == 0 || cli.exitCode == 3, qPrintable(cli.err));
+        CalibWorkspace w;
+        CalibController* c = w.controller();
+        QString err;
+        CalibParams p = c->params();
+        p.waveform.sampleIntervalNs = 0.25;
+        QVERIFY2(c->setParams(p, &err), qPrintable(err));
+        QVERIFY2(c->openWaveform(path("amp_only.csv"), &err), qPrintable(err));
+        QVERIFY2(c->openFeatures(dir + "/features.csv", &err), qPrintable(err));
+        QVERIFY(c->waitIdle(30000));
+        QVERIFY2(c->run().waveform.ok, c->run().waveform.error.c_str());
+        const double h025 = c->run().waveform.heightM;
+        QVERIFY2(c->exportRanking(path("rank_gui_025.csv"), &err), qPrintable(err));
+        QCOMPARE(lwbtest::readAll(path("rank_gui_025.csv")), lwbtest::readAll(path("rank_025.csv")));
+        p.waveform.sampleIntervalNs = 0.5;
+        QVERIFY2(c->setParams(p, &err), qPrintable(err));
+        QVERIFY(c->waitIdle(30000));
+        QVERIFY(std::fabs(c->run().waveform.heightM - 2 * h025) < 1e-6 * h025);
+    }
+
     void filesGiveTheCliResults() {
         const QString dir = path("sim");
         const auto cli = lwbtest::runCli({"calib", "detector", dir + "/detectors.csv", "-o", path("centre.csv"), "-q"});
