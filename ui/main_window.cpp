@@ -359,6 +359,15 @@ void MainWindow::showError(const QString& what, const QString& detail) {
     QMessageBox::warning(this, what, detail);
 }
 
+void MainWindow::inputsOpened() {
+    // Other data than the session file describes: Save asks for a name (Ctrl+S replaced the
+    // restored session, its verdicts and notes, with the new data), and opening files is no
+    // unsaved work (issue 28). Unsaved changes were offered for saving before (maybeSave).
+    m_sessionPath.clear();
+    QMetaObject::invokeMethod(this, [this] { setModified(false); }, Qt::QueuedConnection);  // after the workspaces' own signals
+    setModified(false);
+}
+
 void MainWindow::setModified(bool m) {
     m_modified = m;
     const QString name = m_sessionPath.isEmpty() ? tr("untitled") : QFileInfo(m_sessionPath).fileName();
@@ -385,7 +394,7 @@ bool MainWindow::openDemo() {
 bool MainWindow::openFootprintInputs(const QStringList& paths) {
     if (paths.isEmpty() || !maybeSave()) return false;
     m_footprint->controller()->open(paths);
-    setModified(true);
+    inputsOpened();
     // One entry for a folder or a shot list; several frames are remembered by their folder.
     const QString first = paths.first();
     addRecentInput("footprint", paths.size() == 1 ? first : QFileInfo(first).absolutePath());
@@ -459,7 +468,7 @@ bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
             else {
                 m_tabs->setCurrentWidget(m_slr);
                 addRecentInput("slr", p, m_slr->controller()->pass().passIndex);
-                setModified(true);
+                inputsOpened();
             }
         } else if (where == "session") {
             if (!maybeSave()) continue;
@@ -494,7 +503,7 @@ bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
         if (!ok) problems << err;
         else {
             addRecentInput("radiometry", radiometry.size() == 1 ? radiometry.first() : QFileInfo(radiometry.first()).absolutePath());
-            setModified(true);
+            inputsOpened();
         }
     }
     if (!problems.isEmpty()) {

@@ -54,6 +54,9 @@ public:
     bool saveSession(const QString& path, QString* error);
     QJsonObject sessionState() const;
     bool isModified() const { return m_modified; }
+    /// The session file the window's state was read from or saved to ("" when none, or when other
+    /// inputs were opened since).
+    QString sessionPath() const { return m_sessionPath; }
     void showWorkspace(const QString& name);
     /// Waits until every workspace's background work is done (for screenshots and tests).
     bool waitIdle(int timeoutMs);
@@ -94,6 +97,8 @@ protected:
     void dropEvent(class QDropEvent* e) override;
 
 private:
+    /// Inputs were opened from the window (files, folders, drops, the command line): see main_window.cpp.
+    void inputsOpened();
     void buildMenus();
     void rebuildRecentInputsMenu();
     void workspaceStatus(QWidget* workspace, const QString& message, int timeoutMs);

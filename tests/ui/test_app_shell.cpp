@@ -296,6 +296,33 @@ private slots:
         QVERIFY(w2.waitIdle(120000));
     }
 
+    // Issue 28: Ctrl+S after opening another folder replaced the restored session (its manual
+    // verdicts and note) with the new data; merely opening inputs marked the session changed.
+    void openingInputsDetachesTheSession() {
+        const QString d = m_dir.path();
+        MainWindow w;
+        QVERIFY(w.waitIdle(60000));
+        QString err;
+        QVERIFY2(w.saveSession(d + "/kept.lwb.json", &err), qPrintable(err));
+        const QByteArray saved = lwbtest::readAll(d + "/kept.lwb.json");
+        QCOMPARE(w.sessionPath(), d + "/kept.lwb.json");
+        QVERIFY(!w.isModified());
+        QCOMPARE(lwbtest::simulateFootprintFolder(d + "/other").exitCode, 0);
+        QVERIFY(w.openPaths({d + "/other"}, &err));
+        QVERIFY(w.waitIdle(60000));
+        QTest::qWait(200);
+        QVERIFY2(!w.isModified(), "opening a folder is no unsaved work");
+        QCOMPARE(w.sessionPath(), QString());  // Save now asks for a name
+        QCOMPARE(lwbtest::readAll(d + "/kept.lwb.json"), saved);
+        const QString pass = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
+        if (QFile::exists(pass)) {
+            QVERIFY(w.openPaths({pass}, &err));
+            QVERIFY(w.waitIdle(60000));
+            QTest::qWait(200);
+            QVERIFY(!w.isModified());
+        }
+    }
+
     void droppedCrdOpensInSlrAndIsARecentInput() {
         const QString jason = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
         if (!QFile::exists(jason)) QSKIP("shared SLR data absent");
