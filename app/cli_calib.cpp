@@ -202,8 +202,8 @@ int cmdCalibDetector(int argc, char** argv) {
                   << " m; 1-sigma ellipse " << fx(e.semiMajor, 3) << " x " << fx(e.semiMinor, 3) << " m at "
                   << fx(e.orientationRad / kDeg, 1) << " deg (95 %: x" << fx(r.centreEllipse95Scale, 3) << ")";
         if (arr.geographic) std::cerr << "; lat " << fx(r.centreLatDeg, 8) << ", lon " << fx(r.centreLonDeg, 8);
-        std::cerr << "\n  noise " << r.noise.description << "; chi2/dof " << fx(r.chi2Exact / std::max(r.dof, 1), 3)
-                  << " on " << r.dof << " dof\n";
+        std::cerr << "\n  noise " << r.noise.description << "; chi2/dof " << fx(r.chi2Gof / std::max(r.gofDof, 1), 3)
+                  << " on " << r.gofDof << " dof\n";
     }
     if (r.doubtful) {
         for (const auto& d : r.doubts) std::cerr << "laserwb-cli " << cmd << ": doubtful: " << d << "\n";

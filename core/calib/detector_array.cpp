@@ -371,6 +371,24 @@ void estimateNoise(const std::vector<double>& u, const std::vector<double>& leve
     *rel = top > 0 ? std::sqrt(bestS2 * bestT) / top : 0;
 }
 
+// ln(1 − Φ(z)), accurate in both tails.
+double logUpperTail(double z) {
+    constexpr double kSqrtHalf = 0.7071067811865476;
+    if (z > 0) return z < 37 ? std::log(0.5 * std::erfc(z * kSqrtHalf)) : -0.5 * z * z - std::log(z * 2.5066282746310002);
+    return std::log1p(-0.5 * std::erfc(-z * kSqrtHalf));
+}
+
+// The normal score of a probability given by its upper tail: w with 1 − Φ(w) = exp(logTail), by
+// bisection (monotone, 80 halvings of [−40, 40] reach the double's resolution).
+double normalScoreOfUpperTail(double logTail) {
+    double lo = -40, hi = 40;
+    for (int i = 0; i < 80; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (logUpperTail(mid) > logTail ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
 // Upper tail P(χ²_ν ≥ x) by the Wilson–Hilferty cube-root normal approximation.
 double chi2UpperTail(double x, int nu) {
     if (nu <= 0 || !(x >= 0)) return NAN;
@@ -839,6 +857,59 @@ bool setAsideOutliers(const DetectorFitParams& params, int pass, int maxOutliers
     return removed;
 }
 
+// The noise scale k (σ → k·σ) that maximizes the whole likelihood at the model p: the
+// measurements' normal densities (their leverage-corrected squared residuals u, in the order of
+// the exact observations) and the censored detectors' probabilities Φ(±(m − bound)/kσ). The
+// measurements alone give k = 1 (the estimate above); untriggered detectors listed as "at most
+// the trigger level" hold σ down where the measurements alone would let it grow without bound
+// (a broad surface on a negative background that every bound is content with). 1 without bounds.
+double jointNoiseScale(const SurfaceFit& f, const Eigen::VectorXd& p, const std::vector<double>& u, double floor, double rel) {
+    bool anyBound = false;
+    for (const Obs& ob : f.obs) anyBound = anyBound || ob.kind != Kind::Exact;
+    if (!anyBound) return 1;
+    std::vector<double> sig, model;
+    for (const Obs& ob : f.obs) {
+        model.push_back(f.sp.model(p, ob.de, ob.dn));
+        sig.push_back(std::max(sigmaOf(floor, rel, model.back()), 1e-300));
+    }
+    auto logLikelihood = [&](double logk) {
+        const double k = std::exp(logk);
+        double l = 0;
+        size_t e = 0;
+        for (size_t i = 0; i < f.obs.size(); ++i) {
+            const Obs& ob = f.obs[i];
+            const double s = k * sig[i];
+            if (ob.kind == Kind::Exact) {
+                l += -std::log(s) - 0.5 * u[e++] / (s * s);
+            } else {
+                const double sign = ob.kind == Kind::AtLeast ? 1.0 : -1.0;
+                l += ob.count * logUpperTail(-sign * (model[i] - ob.value) / s);  // ln Φ(sign·(m − v)/s)
+            }
+        }
+        return l;
+    };
+    // Golden-section search over ln k in [ln 0.02, ln 50] (the likelihood is unimodal in k).
+    double a = std::log(0.02), b = std::log(50.0);
+    const double g = 0.6180339887498949;
+    double c = b - g * (b - a), d = a + g * (b - a), fc = logLikelihood(c), fd = logLikelihood(d);
+    for (int i = 0; i < 60; ++i) {
+        if (fc > fd) {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = logLikelihood(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = logLikelihood(d);
+        }
+    }
+    return std::exp(0.5 * (a + b));
+}
+
 // Stage 4. Noise model and outliers, iterated with refits: residuals → (floor, relative) →
 // weights, plain least squares from here on.
 void refineNoiseAndOutliers(const DetectorFitParams& params, int informative, SurfaceFit* f, DetectorFitResult* res) {
@@ -871,6 +942,11 @@ void refineNoiseAndOutliers(const DetectorFitParams& params, int informative, Su
         newFloor = std::max(newFloor, 1e-9 * A);
         const bool noiseSettled = pass > 0 && std::fabs(newFloor - f->floorN) <= 0.01 * f->floorN + 1e-12 * A &&
                                   std::fabs(newRel - f->relN) <= 0.01 * f->relN + 1e-6;
+        if (!weighted && f->noiseDof >= 1) {
+            const double k = jointNoiseScale(*f, p, u, newFloor, newRel);
+            newFloor *= k;
+            newRel *= k;
+        }
         f->floorN = newFloor;
         f->relN = newRel;
         for (Obs& ob : f->obs) ob.sigma = std::max(sigmaOf(f->floorN, f->relN, f->sp.model(p, ob.de, ob.dn)), 1e-300);
@@ -941,6 +1017,36 @@ void finalFigures(const DetectorFitParams& params, double fixedBg, SurfaceFit* f
     res->paramNames = L.elliptical ? std::vector<std::string>{"amplitude", "e0_m", "n0_m", "a_per_m2", "b_per_m2", "c_per_m2"}
                                    : std::vector<std::string>{"amplitude", "e0_m", "n0_m", "a_per_m2"};
     if (L.background) res->paramNames.push_back("background");
+}
+
+// Stage 5b. Goodness of fit that knows the trigger: a detector that recorded its energy only
+// because it exceeded the trigger level T holds a value drawn from the normal law above T, not
+// from the whole law; near T its plain residual is biased upward (a false trigger from the
+// background always stands ≥ T above it). Its normal score w = Φ⁻¹(P(y' ≤ y | y' > T)) is
+// standard normal under the model; Σw² over the measurements is the χ² judged against χ²_ν,
+// ν = scored measurements − parameters. Untruncated measurements (full reports) keep w = their
+// residual. With T estimated as the lowest triggered energy, the detector that defines it is
+// not scored.
+void truncationAwareFit(const DetectorArray& array, const DetectorFitParams& params, double triggerLevel, const SurfaceFit& f,
+                        DetectorFitResult* res) {
+    res->chi2Gof = 0;
+    int scored = 0;
+    for (size_t k = 0; k < f.obs.size(); ++k) {
+        const Obs& ob = f.obs[k];
+        if (ob.kind != Kind::Exact) continue;
+        const double z = -f.best.residuals(static_cast<int>(k));
+        const bool truncated =
+            std::isfinite(triggerLevel) && (params.triggerThreshold > 0 || array.detectors[ob.index].triggered == 1);
+        double w = z;
+        if (truncated) {
+            if (!(ob.value > triggerLevel)) continue;
+            const double m = ob.value + f.best.residuals(static_cast<int>(k)) * ob.sigma;
+            w = normalScoreOfUpperTail(logUpperTail(z) - logUpperTail((triggerLevel - m) / ob.sigma));
+        }
+        res->chi2Gof += w * w;
+        ++scored;
+    }
+    res->gofDof = scored - f.sp.L.count();
 }
 
 // σ of the noise model at the fitted background.
@@ -1082,10 +1188,10 @@ void judgeDoubts(const DetectorArray& array, const DetectorFitParams& params, co
     const P2 centre(s.e0, s.n0);
     res->centreOutsideSeeingM = distanceOutsideHull(seeingPts, centre);
     res->centreOutsideArrayM = distanceOutsideHull(arrayPts, centre);
-    if (givenWeights(params) && res->dof >= 1) {
-        res->chi2Probability = chi2UpperTail(res->chi2Exact, res->dof);
+    if (givenWeights(params) && res->gofDof >= 1) {
+        res->chi2Probability = chi2UpperTail(res->chi2Gof, res->gofDof);
         if (res->chi2Probability < 0.5 * params.chi2Probability || res->chi2Probability > 1 - 0.5 * params.chi2Probability)
-            doubt("chi2/dof " + formatDouble(res->chi2Exact / res->dof, 4) + " on " + std::to_string(res->dof) +
+            doubt("chi2/dof " + formatDouble(res->chi2Gof / res->gofDof, 4) + " on " + std::to_string(res->gofDof) +
                   " dof is far from 1 (P = " + formatDouble(res->chi2Probability, 3) +
                   "): the given noise model does not describe these detectors");
     }
@@ -1204,6 +1310,7 @@ DetectorFitResult fitDetectorArray(const DetectorArray& array, const DetectorFit
     refineNoiseAndOutliers(params, informative, &f, &res);
     // 5.–10. Figures, uncertainty, per-detector report, doubts, the centre's height and position.
     finalFigures(params, params.background, &f, &res);
+    truncationAwareFit(array, params, upperBound, f, &res);
     const std::vector<P2> seeingPts = seeingDetectors(array, &res);
     if (std::string e = covarianceAndEllipses(params, f, &res); !e.empty()) {
         res.error = std::move(e);
@@ -1248,7 +1355,7 @@ bool writeDetectorCentreCsv(const std::string& path, const DetectorFitResult& r,
         "centre_e_m,centre_n_m,sigma_e_m,sigma_n_m,cov_en_m2,ellipse_major_m,ellipse_minor_m,ellipse_deg,ellipse95_scale,"
         "ellipse95_major_m,ellipse95_minor_m,lat_deg,lon_deg,h_m,amplitude,amplitude_sd,sigma_major_m,sigma_major_sd_m,"
         "sigma_minor_m,sigma_minor_sd_m,orientation_deg,background,model,used,censored,outliers,seeing,dof,chi2,chi2_exact,"
-        "rms_residual,iterations,noise_source,noise_floor,noise_relative,noise_dof,doubtful,doubts\n" +
+        "chi2_gof,gof_dof,rms_residual,iterations,noise_source,noise_floor,noise_relative,noise_dof,doubtful,doubts\n" +
         fx(r.centreE, 4) + "," + fx(r.centreN, 4) + "," + fx(e.sigmaE, 4) + "," + fx(e.sigmaN, 4) + "," + gx(e.covEN) + "," +
         fx(e.semiMajor, 4) + "," + fx(e.semiMinor, 4) + "," + fx(e.orientationRad / kDeg, 3) + "," + fx(k, 4) + "," +
         fx(k * e.semiMajor, 4) + "," + fx(k * e.semiMinor, 4) + "," + fx(r.centreLatDeg, 9) + "," + fx(r.centreLonDeg, 9) + "," +
@@ -1257,7 +1364,7 @@ bool writeDetectorCentreCsv(const std::string& path, const DetectorFitResult& r,
         fx(s.orientationRad / kDeg, 3) + "," + gx(s.background) + "," + surfaceModelName(r.modelUsed) + "," +
         std::to_string(r.used) + "," + std::to_string(r.censored) + "," + std::to_string(r.outliers) + "," +
         std::to_string(r.seeing) + "," + std::to_string(r.dof) + "," + gx(r.chi2) + "," + gx(r.chi2Exact) + "," +
-        gx(r.rmsResidual) + "," + std::to_string(r.iterations) + "," +
+        gx(r.chi2Gof) + "," + std::to_string(r.gofDof) + "," + gx(r.rmsResidual) + "," + std::to_string(r.iterations) + "," +
         (r.noise.source == NoiseSource::Given ? "given" : "data") + "," + gx(r.noise.floor) + "," + gx(r.noise.relative) + "," +
         std::to_string(r.noise.dof) + "," + (r.doubtful ? "1" : "0") + "," + csvEscape(doubts) + "\n";
     return writeFileAtomic(path, csv, error);

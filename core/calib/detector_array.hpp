@@ -166,7 +166,12 @@ struct DetectorFitResult {
     int seeing = 0;                ///< detectors that see the footprint: energy above background by > 3 noise σ
                                    ///< (and > 1 % of the amplitude), or saturated
     double chi2Exact = NAN;        ///< χ² of the measurements alone (censored terms left out)
-    double chi2Probability = NAN;  ///< Given noise: P(χ²_dof ≥ chi2Exact) (Wilson–Hilferty)
+    /// The goodness of fit: Σ of the measurements' normal scores², each score taken in the normal
+    /// law above the trigger level for a detector that recorded because it triggered (the plain
+    /// residual otherwise; equal to chi2Exact on full reports), on gofDof degrees of freedom.
+    double chi2Gof = NAN;
+    int gofDof = 0;
+    double chi2Probability = NAN;  ///< Given noise: P(χ²_gofDof ≥ chi2Gof) (Wilson–Hilferty)
     double centreOutsideSeeingM = NAN;  ///< distance of the centre outside the hull of the seeing detectors (0 inside)
     double centreOutsideArrayM = NAN;   ///< … outside the hull of all detectors (0 inside)
     /// Doubtful: a centre was found but must not be trusted; `doubts` says why (each a sentence).
