@@ -205,7 +205,8 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
 // row of the summary with its reason; the others go on.
 int screenAllPasses(const std::string& cmd, const std::string& input, const slr::PassInputParams& in, const RunInputs& ri,
                     const std::string& dir, bool quiet) {
-    const slr::CrdReadResult crd = slr::readCrd(input);
+    const auto crdRead = std::make_shared<const slr::CrdReadResult>(slr::readCrd(input));
+    const slr::CrdReadResult& crd = *crdRead;
     if (!crd.ok) return fail(cmd, crd.error);
     slr::PassSources sources;
     std::string err;
@@ -245,7 +246,7 @@ int screenAllPasses(const std::string& cmd, const std::string& input, const slr:
             // duration empty, the points, accepted .. oc_origin empty, then status and reason.
             summary += row + "," + std::to_string(ps0.ranges) + ",,,,,,,,failed," + core::csvEscape(why) + ",,\n";
         };
-        const slr::PassInputResult p = slr::passFromCrd(crd, input, int(i), inFallback, sources);
+        const slr::PassInputResult p = slr::passFromCrd(crdRead, input, int(i), inFallback, sources);
         progress.update(++done);
         if (!p.ok) {
             failRow(p.error.substr(0, p.error.find('\n')));

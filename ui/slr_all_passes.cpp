@@ -109,7 +109,7 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
             const int index = order[size_t(r)];
             QStringList cells;
             bool ok = false;
-            const PassInputResult p = crd ? passFromCrd(*crd, path, index, input, *sources) : PassInputResult{};
+            const PassInputResult p = crd ? passFromCrd(crd, path, index, input, *sources) : PassInputResult{};
             std::string err;
             PassSettings settings;
             if (!crd) {

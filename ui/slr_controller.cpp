@@ -203,7 +203,7 @@ void SlrController::notePassError(int index, const QString& why) {
 }
 
 bool SlrController::loadSelected(QString* error) {
-    const PassInputResult r = passFromCrd(*m_crd, m_path.toStdString(), m_selected, m_input, *m_sources);
+    const PassInputResult r = passFromCrd(m_crd, m_path.toStdString(), m_selected, m_input, *m_sources);
     m_warnings = r.warnings;
     if (!r.ok) {
         // No pass open, the list stays: the reason is shown in place and against the pass.
@@ -406,10 +406,12 @@ bool SlrController::exportCrd(const QString& path, QString* error, bool wholeFil
     std::string err;
     PassData pass;
     const PassData* out = &m_pass;
-    if (!wholeFile && m_pass.hasCrd && m_pass.passIndex >= 0 && size_t(m_pass.passIndex) < m_pass.crd.passes.size()) {
+    if (!wholeFile && m_pass.hasCrd && m_pass.passIndex >= 0 && size_t(m_pass.passIndex) < m_pass.crd->passes.size()) {
         // This pass alone: its headers and records, the file's trailer (H9).
         pass = m_pass;
-        pass.crd.passes = {m_pass.crd.passes[size_t(m_pass.passIndex)]};
+        auto alone = std::make_shared<core::slr::CrdFile>(*m_pass.crd);
+        alone->passes = {m_pass.crd->passes[size_t(m_pass.passIndex)]};
+        pass.crd = alone;
         pass.passIndex = 0;
         out = &pass;
     }

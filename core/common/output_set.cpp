@@ -7,6 +7,7 @@
 #include <dirent.h>
 #include <fnmatch.h>
 #include <mutex>
+#include <set>
 #include <signal.h>
 #include <cstdio>
 #include <cstdlib>
@@ -397,15 +398,20 @@ bool OutputSet::commit() {
             ::closedir(d);
         }
         std::sort(names.begin(), names.end());
+        // This run's outputs by (device, inode), each stat'ed once: a folder of 20 000 pass files
+        // is one pass over the folder, not one per file and output.
+        std::set<std::pair<dev_t, ino_t>> ours;
+        for (const auto& it : m_items) {
+            struct stat st {};
+            if (!it.toStdout && ::stat(it.target.c_str(), &st) == 0) ours.emplace(st.st_dev, st.st_ino);
+        }
         for (const std::string& name : names) {
             bool match = false;
             for (const std::string& pat : m_stalePatterns) match = match || ::fnmatch(pat.c_str(), name.c_str(), 0) == 0;
             const std::string path = m_setFolder + "/" + name;
             struct stat st {};
             if (!match || ::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
-            bool ours = false;
-            for (const auto& it : m_items) ours = ours || (!it.toStdout && sameFile(path, it.target));
-            if (ours || !inputReadAs(path).empty()) continue;
+            if (ours.count({st.st_dev, st.st_ino}) || !inputReadAs(path).empty()) continue;
             if (!setAside(path) || ::unlink(path.c_str()) != 0) {
                 m_error = "cannot remove the earlier output " + path + ": " + std::strerror(errno) + " (nothing written)";
                 ok = false;

@@ -296,17 +296,19 @@ PassInputResult loadPass(const std::string& path, int passIndex, const PassInput
     PassInputResult r;
     r.pass.source = path;
     if (!isCrdFile(path)) return passFromOcTable(path);
-    const CrdReadResult crd = readCrd(path, {}, fb);
-    if (!crd.ok) {
-        r.error = withWarnings(crd.error, crd.warnings);
+    const auto crd = std::make_shared<const CrdReadResult>(readCrd(path, {}, fb));
+    if (!crd->ok) {
+        r.error = withWarnings(crd->error, crd->warnings);
         return r;
     }
     PassSources sources;
     if (!params.cpfPath.empty() && !params.sinexPath.empty() && !readPassSources(params, &sources, &r.error)) {
-        for (size_t i = 0; i < crd.file.passes.size(); ++i) r.passes.push_back(summarise(crd.file.passes[i], int(i)));
+        r.passes = summarisePasses(crd->file);
         return r;
     }
-    return passFromCrd(crd, path, passIndex, params, sources, fb);
+    PassInputResult p = passFromCrd(crd, path, passIndex, params, sources, fb);
+    if (p.passes.empty()) p.passes = summarisePasses(crd->file);
+    return p;
 }
 
 PassInputResult passFromOcTable(const std::string& path) {
@@ -339,14 +341,13 @@ std::vector<PassSummary> summarisePasses(const CrdFile& file) {
     return v;
 }
 
-PassInputResult passFromCrd(const CrdReadResult& crdIn, const std::string& path, int passIndex, const PassInputParams& params,
-                            const PassSources& sources, const Feedback* fb) {
+PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, const std::string& path, int passIndex,
+                            const PassInputParams& params, const PassSources& sources, const Feedback* fb) {
     PassInputResult r;
     PassData& d = r.pass;
     d.source = path;
-    const CrdReadResult& crd = crdIn;
+    const CrdReadResult& crd = *shared;
     r.warnings = crd.warnings;
-    r.passes = summarisePasses(crd.file);
     if (passIndex < 0) {
         for (size_t i = 0; i < crd.file.passes.size() && passIndex < 0; ++i)
             if (!crd.file.passes[i].ranges.empty()) passIndex = int(i);
@@ -365,10 +366,12 @@ PassInputResult passFromCrd(const CrdReadResult& crdIn, const std::string& path,
                           : std::string()) +
                       bad;
             r.error = withWarnings(r.error, r.warnings);
+            r.passes = summarisePasses(crd.file);
             return r;
         }
     }
     if (passIndex >= int(crd.file.passes.size())) {
+        r.passes = summarisePasses(crd.file);
         r.error = path + ": pass " + std::to_string(passIndex + 1) + " asked for, the file holds " +
                   std::to_string(crd.file.passes.size());
         return r;
@@ -484,7 +487,7 @@ PassInputResult passFromCrd(const CrdReadResult& crdIn, const std::string& path,
     }
     d.altitudeKm = altitudeKm;
     d.hasCrd = true;
-    d.crd = crd.file;
+    d.crd = std::shared_ptr<const CrdFile>(shared, &shared->file);
     r.ok = true;
     return r;
 }
@@ -607,7 +610,7 @@ bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::
         return false;
     }
     if (!writablePassOutput(path, pass, error)) return false;
-    CrdFile out = pass.crd;
+    CrdFile out = *pass.crd;
     CrdPass& p = out.passes[size_t(pass.passIndex)];
     // Records that were not screened (no O-C: outside the prediction, one-way events) keep the
     // station's own flag; only the screened ones get 2 (accepted) or 1 (noise).
@@ -626,7 +629,7 @@ bool writeNormalPointCrd(const std::string& path, const PassData& pass, const st
         return false;
     }
     if (!writablePassOutput(path, pass, error)) return false;
-    const CrdPass& full = pass.crd.passes[size_t(pass.passIndex)];
+    const CrdPass& full = pass.crd->passes[size_t(pass.passIndex)];
     std::vector<CrdNormalPoint> recs;
     for (const NormalPoint& np : nps) {
         CrdNormalPoint c;
@@ -652,11 +655,11 @@ bool writeNormalPointCrd(const std::string& path, const PassData& pass, const st
     }
     CrdFile out;
     out.path = path;
-    out.crlf = pass.crd.crlf;
+    out.crlf = pass.crd->crlf;
     CrdPass np;
     if (!makeNormalPointPass(full, recs, &np, error)) return false;
     out.passes.push_back(std::move(np));
-    out.trailer = pass.crd.trailer;
+    out.trailer = pass.crd->trailer;
     return writeCrd(path, out, error);
 }
 

@@ -5,6 +5,7 @@
 // (a warning says so); a plain O-C table (CSV, header epoch_s,oc_s) is used as it is. After
 // screening the pass is written back as CRD full rate with filter flags, its normal points as a
 // CRD normal-point file, and the per-point result as CSV.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -62,7 +63,9 @@ struct PassData {
     std::vector<size_t> rangeIndex;///< CrdPass::ranges index per point (CRD)
     double altitudeKm = 0;         ///< satellite altitude estimate for the normal-point bin (0 = unknown)
     bool hasCrd = false;
-    CrdFile crd;                   ///< the file as read (for writing back)
+    /// The file as read (for writing back), shared with every pass taken from the same reading:
+    /// a file of 20 000 passes is not copied once per pass.
+    std::shared_ptr<const CrdFile> crd;
     /// Non-empty when the reader skipped records of this pass as damaged: "FILE:LINE: why (N
     /// damaged record(s) ...)". The pass can be looked at, but its points are incomplete and the
     /// damaged lines would be written back as they are: every writer below refuses it.
@@ -90,8 +93,10 @@ bool readPassSources(const PassInputParams& params, PassSources* out, std::strin
 /// One pass of an already-read CRD file (passIndex −1: the first with full-rate records). O-C
 /// against the prediction of `sources` that fits the pass (satellite ids and time span; picked
 /// from a folder), else against the pass's own TOF trend (see PassInputParams::cpfFallback).
-PassInputResult passFromCrd(const CrdReadResult& crd, const std::string& path, int passIndex, const PassInputParams& params,
-                            const PassSources& sources, const Feedback* fb = nullptr);
+/// The pass shares `crd` (no copy); PassInputResult::passes is filled only when the pass cannot be
+/// taken (to list what the file holds): callers that show the file's passes call summarisePasses.
+PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& crd, const std::string& path, int passIndex,
+                            const PassInputParams& params, const PassSources& sources, const Feedback* fb = nullptr);
 /// An O-C table (CSV) as a pass.
 PassInputResult passFromOcTable(const std::string& path);
 /// One summary per pass of a CRD file.

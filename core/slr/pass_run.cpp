@@ -40,7 +40,7 @@ bool passSettings(const PassData& pass, const SlrParams& base, const std::vector
         if (!(s.params.postfit.altitudeKm > 0)) s.params.postfit.altitudeKm = alt;
     }
     if (pass.hasCrd) {
-        s.notes = fillNormalPointContext(pass.crd.passes[size_t(pass.passIndex)], pass.cdpPad, stations, &s.params.postfit);
+        s.notes = fillNormalPointContext(pass.crd->passes[size_t(pass.passIndex)], pass.cdpPad, stations, &s.params.postfit);
         // (day or night unknown: postfit.day_night auto takes the day minimum, 6)
     }
     *out = std::move(s);
@@ -134,11 +134,11 @@ std::string judgeRun(const ScreenResult& screen, size_t acceptedCount, PostfitRe
 }
 
 std::vector<std::string> passNormalPointContext(const PassData& pass, const SinexFile* stations, PostfitParams* pp) {
-    if (!pass.hasCrd || pass.passIndex < 0 || size_t(pass.passIndex) >= pass.crd.passes.size()) return {};
+    if (!pass.hasCrd || pass.passIndex < 0 || size_t(pass.passIndex) >= pass.crd->passes.size()) return {};
     PostfitParams ctx = *pp;
     ctx.fireRateHz = 0;
     ctx.stationLatDeg = ctx.stationLonDeg = ctx.dayStartMjd = NAN;
-    std::vector<std::string> notes = fillNormalPointContext(pass.crd.passes[size_t(pass.passIndex)], pass.cdpPad, stations, &ctx);
+    std::vector<std::string> notes = fillNormalPointContext(pass.crd->passes[size_t(pass.passIndex)], pass.cdpPad, stations, &ctx);
     if (!(pp->fireRateHz > 0)) pp->fireRateHz = ctx.fireRateHz;
     if (!std::isfinite(pp->stationLatDeg)) {
         pp->stationLatDeg = ctx.stationLatDeg;

@@ -13,11 +13,14 @@
 #include <vector>
 
 #include "core/calib/detector_array.hpp"
+#include "core/calib/calib_params.hpp"
 #include "core/calib/pointing.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/image_io.hpp"
 #include "core/footprint/pipeline.hpp"
+#include "core/footprint/trend.hpp"
+#include "core/radiometry/radiometry_params.hpp"
 #include "core/radiometry/reflectance.hpp"
 #include "core/sim/calib_sim.hpp"
 #include "core/sim/footprint_sim.hpp"
@@ -212,6 +215,12 @@ void jsonSeeds() {
     text("slr_config", "partial.json", "{\"screen\": {\"cosine_c\": 0.97, \"automatic\": true}}\n");
     text("slr_config", "set-cosine.txt", "screen.cosine_c=0.97");
     text("slr_config", "set-auto.txt", "screen.area_limit=auto");
+    text("calib_config", "defaults.json", calib::calibSchema().toJson(calib::CalibParams{}).dump(1));
+    text("calib_config", "set-trigger.txt", "detector.trigger=50");
+    text("calib_config", "partial.json", "{\"detector\": {\"noise\": \"given\", \"model\": \"circular\"}}\n");
+    text("radiometry_config", "defaults.json", radiometry::radiometrySchema().toJson(radiometry::RadiometryParams{}).dump(1));
+    text("radiometry_config", "set-model.txt", "gcp.model=affine");
+    text("trend_config", "defaults.json", footprint::trendSchema().toJson(footprint::TrendParams{}).dump(1));
     text("slr_presets", "minimal.json",
          "{\"format\": \"laserwb-slr-presets\", \"version\": 1, \"satellites\": [{\"ilrs_id\": \"1\"}]}");
     text("json", "presets.json", doc);

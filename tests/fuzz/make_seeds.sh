@@ -66,7 +66,7 @@ else
   fi
 fi
 for d in "$out"/*_csv "$out"/oc_csv; do cp "$d"/* "$out/csv/" 2>/dev/null || true; done
-for d in "$out"/footprint_config "$out"/slr_config "$out"/slr_presets "$out"/beams_json "$out"/session; do
+for d in "$out"/footprint_config "$out"/slr_config "$out"/calib_config "$out"/radiometry_config "$out"/trend_config "$out"/slr_presets "$out"/beams_json "$out"/session; do
   cp "$d"/* "$out/json/" 2>/dev/null || true
 done
 for d in "$out"/*/; do echo "make_seeds: $(basename "$d"): $(ls "$d" | wc -l) seeds"; done
