@@ -161,6 +161,7 @@ int cmdRadiometryMosaic(int argc, char** argv) {
     for (const char* o : {"--coverage", "--pairs"})
         if (a.has(o)) outs.addOutput(a.value(o));
     if (int rc = checkOutputs(cmd, outs)) return rc;
+    if (const std::string why = mosaicMemoryProblem(a.positional(), memoryBudgetBytes()); !why.empty()) return fail(cmd, why);
     std::vector<cv::Mat> frames;
     for (const auto& f : a.positional()) {
         cv::Mat m;

@@ -13,6 +13,7 @@
 #include "core/common/text.hpp"
 #include "core/footprint/background.hpp"
 #include "core/footprint/image_io.hpp"
+#include "core/radiometry/mosaic.hpp"
 #include "test_support.hpp"
 
 using namespace lwbtest;
@@ -189,6 +190,21 @@ private slots:
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("more than the limit of 16777216 pixels"), qPrintable(r.err));
         QCOMPARE(footprint::ImageReadParams{}.maxPixels, 4096LL * 4096);
+        // Issue 27: two 16384 x 16384 frames in `radiometry mosaic` took more than 6 GB (about
+        // 64 bytes per pixel of a pair: 34 GB). The mosaic's peak is estimated from the headers
+        // and refused above 3/4 of the machine's memory, before any pixel is decoded.
+        QVERIFY(writeText(p("big2.png"), pngClaiming(16384, 16384)));
+        r = runCli({"radiometry", "mosaic", p("big.png"), p("big2.png"), "-o", p("row.tif")});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("to mosaic, more than this machine's budget"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(p("row.tif")));
+        using radiometry::mosaicMemoryProblem;
+        const std::vector<std::string> bigPair = {p("big.png").toStdString(), p("big2.png").toStdString()};
+        // (70 MB + 64 B x 537 Mpx + 8 B x 537 Mpx = 38.7 GB)
+        QVERIFY(!mosaicMemoryProblem(bigPair, 18e9).empty());  // 3/4 of 24 GB: refused
+        QVERIFY(mosaicMemoryProblem(bigPair, 40e9).empty());   // 3/4 of a 54 GB machine: it runs
+        QVERIFY(mosaicMemoryProblem({p("small.png").toStdString(), p("small.png").toStdString()}, 1e8).empty());
+        QCOMPARE(radiometry::mosaicPeakBytes({1000000, 1000000, 500000}), 70e6 + 64 * 2e6 + 8 * 2.5e6);
     }
 
     // ------------------------------------------------------------------ tables

@@ -264,6 +264,10 @@ bool RadiometryController::openImage(const QString& path, QString* error) {
 
 bool RadiometryController::openFrames(const QStringList& paths, QString* error) {
     if (paths.size() < 2) return fail(error, tr("a row mosaic needs at least two frames, in scan order"));
+    std::vector<std::string> files;
+    for (const QString& p : paths) files.push_back(p.toStdString());
+    if (const std::string why = mosaicMemoryProblem(files, memoryBudgetBytes()); !why.empty())
+        return fail(error, QString::fromStdString(why));
     std::vector<cv::Mat> frames;
     for (const QString& p : paths) {
         cv::Mat m;

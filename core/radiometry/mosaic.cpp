@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/calib3d.hpp>
+#include <unistd.h>
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/image_header.hpp"
 #include "core/common/text.hpp"
 
 namespace lwb::core::radiometry {
@@ -366,6 +368,39 @@ bool writePairCsv(const std::string& path, const MosaicResult& r, std::string* e
              formatFixed(p.rmsPx, 4) + "," + formatFixed(p.shiftX, 3) + "," + formatFixed(p.shiftY, 3) + "," +
              formatFixed(p.rotationDeg, 4) + "," + formatFixed(p.scale, 6) + "\n";
     return writeFileAtomic(path, s, error);
+}
+
+double mosaicPeakBytes(const std::vector<long long>& framePixels) {
+    double total = 0, pair = 0;
+    for (size_t i = 0; i < framePixels.size(); ++i) {
+        total += double(framePixels[i]);
+        if (i > 0) pair = std::max(pair, double(framePixels[i - 1]) + double(framePixels[i]));
+    }
+    if (framePixels.size() == 1) pair = double(framePixels[0]);
+    return 70e6 + 64 * pair + 8 * total;
+}
+
+double memoryBudgetBytes() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), size = ::sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && size > 0 ? 0.75 * double(pages) * double(size) : 8e9;
+}
+
+std::string mosaicMemoryProblem(const std::vector<std::string>& paths, double budgetBytes) {
+    std::vector<long long> px;
+    for (const std::string& p : paths) {
+        std::string bytes, err;
+        if (!readFileText(p, &bytes, &err)) return {};  // the decoder says why
+        const ImageHeader h = readImageHeader(bytes);
+        if (!h.complete) return {};
+        px.push_back(h.width * h.height);
+    }
+    const double peak = mosaicPeakBytes(px);
+    if (peak <= budgetBytes) return {};
+    double total = 0;
+    for (long long n : px) total += double(n);
+    return "the " + std::to_string(paths.size()) + " frames (" + formatFixed(total / 1e6, 1) +
+           " Mpx together) would take about " + formatFixed(peak / 1e9, 1) + " GB to mosaic, more than this machine's budget of " +
+           formatFixed(budgetBytes / 1e9, 1) + " GB (3/4 of its memory): mosaic smaller or downsampled frames, or fewer at a time";
 }
 
 }  // namespace lwb::core::radiometry

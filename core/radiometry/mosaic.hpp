@@ -73,6 +73,20 @@ struct MosaicResult {
 MosaicResult mosaicRow(const std::vector<cv::Mat>& frames, const MosaicParams& params = {},
                        const Feedback* fb = nullptr);
 
+/// Peak memory of mosaicRow (bytes) for frames of these pixel counts, measured on 16-bit frames
+/// of 0.14–14 Mpx (docs/fuzzing.md, "Memory"): about 70 MB, plus 64 bytes per pixel of the
+/// largest consecutive pair (both frames' features, matching, warps in float), plus 8 per pixel
+/// of all frames (the frames themselves and the row).
+double mosaicPeakBytes(const std::vector<long long>& framePixels);
+
+/// The machine's memory budget for one run: three quarters of the physical memory (bytes).
+double memoryBudgetBytes();
+
+/// "" when the frames' headers announce a mosaic whose peak (mosaicPeakBytes) fits in
+/// budgetBytes; else why not, with the figures. Reads each file's header only (the pixels are
+/// not decoded); a file whose size cannot be read from its header is left to the decoder.
+std::string mosaicMemoryProblem(const std::vector<std::string>& paths, double budgetBytes);
+
 /// Writes the pair table (from, to, keypoints, matches, inliers, rms, shift, rotation, scale), atomically.
 bool writePairCsv(const std::string& path, const MosaicResult& r, std::string* error);
 
