@@ -4,8 +4,10 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QtTest>
+#include <random>
 #include <sys/stat.h>
 
 #include "lwb_version.hpp"
@@ -207,6 +209,78 @@ private slots:
             const lwbtest::CliRun r = lwbtest::runProgram(QString(LWB_GUI), {"--screenshot", d + "/exit.png", d + "/bad-pass.lwb.json"}, o);
             QVERIFY2(r.exitCode == 0 || r.exitCode == 1, qPrintable(QString("run %1: exit %2 %3").arg(i).arg(r.exitCode).arg(r.err)));
         }
+    }
+
+    // Issue 27: the GUI session parser fuzzed where libFuzzer cannot reach it (the workspaces'
+    // restoreState needs widgets): a session of every workspace with real inputs (a frame folder,
+    // a CRD pass, the calibration and radiometry demos), mutated 160 times by a seeded generator —
+    // bytes flipped, cut, deleted, repeated; numbers replaced by huge, tiny, non-numbers, arrays;
+    // strings by empty, a device, a folder, a missing file, 10 000 characters. Each mutant is
+    // opened in a fresh window: it opens (and its jobs finish), or it is refused with a message
+    // naming the file; nothing crashes or hangs, and a refused session leaves the window as it was.
+    void mutatedSessionsOpenOrAreRefused() {
+        const QString d = m_dir.path() + "/mut";
+        QVERIFY(QDir().mkpath(d));
+        QCOMPARE(lwbtest::simulateFootprintFolder(d + "/shots").exitCode, 0);
+        const QString base = d + "/base.lwb.json";
+        {
+            MainWindow w;
+            QVERIFY(w.openDemo());
+            QVERIFY(w.waitIdle(60000));
+            QString err;
+            QVERIFY(w.openPaths({d + "/shots"}, &err));
+            const QString pass = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
+            if (QFile::exists(pass)) QVERIFY2(w.openPaths({pass}, &err), qPrintable(err));
+            QVERIFY(w.waitIdle(60000));
+            QVERIFY2(w.saveSession(base, &err), qPrintable(err));
+        }
+        const QByteArray original = lwbtest::readAll(base);
+        QVERIFY(original.size() > 500);
+        std::mt19937 rng(27);
+        auto pick = [&](int n) { return int(std::uniform_int_distribution<int>(0, std::max(n - 1, 0))(rng)); };
+        const QList<QByteArray> numbers = {"1e400", "-1e400", "1e-400", "-0", "99999999999999999999", "\"x\"", "null",
+                                           "[]", "{}", "true", "-1", "0", "2147483648", "1.5"};
+        const QList<QByteArray> strings = {"\"\"", "\"/dev/zero\"", "\"" + d.toUtf8() + "\"", "\"/nonexistent/x.frd\"",
+                                           "\"" + QByteArray(10000, 'a') + "\"", "0", "null", "[\"a\"]"};
+        int opened = 0, refused = 0;
+        for (int i = 0; i < 160; ++i) {
+            QByteArray m = original;
+            const int at = pick(m.size());
+            switch (i % 7) {
+                case 0: m[at] = char(pick(256)); break;
+                case 1: m.truncate(at); break;
+                case 2: m.remove(at, 1 + pick(40)); break;
+                case 3: m.insert(at, m.mid(at, 1 + pick(60))); break;
+                case 4:
+                case 5: {  // a number (case 4) or a string value (case 5) replaced
+                    const QRegularExpression re(i % 7 == 4 ? "-?[0-9][0-9.eE+-]*" : ": *\"[^\"]*\"");
+                    QList<QRegularExpressionMatch> all;
+                    for (auto it = re.globalMatch(QString::fromUtf8(m)); it.hasNext();) all.push_back(it.next());
+                    if (all.isEmpty()) break;
+                    const QRegularExpressionMatch hit = all[pick(int(all.size()))];
+                    const QByteArray with = i % 7 == 4 ? numbers[pick(int(numbers.size()))] : ": " + strings[pick(int(strings.size()))];
+                    m = QString::fromUtf8(m).replace(hit.capturedStart(), hit.capturedLength(), QString::fromUtf8(with)).toUtf8();
+                    break;
+                }
+                default: m.insert(at, m.mid(pick(m.size()), 1 + pick(200))); break;  // a piece from elsewhere
+            }
+            const QString path = d + QString("/m%1.lwb.json").arg(i);
+            QVERIFY(lwbtest::writeText(path, m));
+            MainWindow w;
+            const QJsonObject before = w.footprint()->saveState();
+            QString err;
+            if (w.openSession(path, true, &err)) {
+                ++opened;
+                QVERIFY2(w.waitIdle(60000), qPrintable(QString("mutant %1: jobs did not finish").arg(i)));
+            } else {
+                ++refused;
+                QVERIFY2(err.contains(path), qPrintable(QString("mutant %1: %2").arg(i).arg(err)));
+                QCOMPARE(w.footprint()->saveState(), before);
+            }
+            QFile::remove(path);
+        }
+        qInfo("160 mutants: %d opened, %d refused", opened, refused);
+        QVERIFY(refused >= 40);  // cuts and flips of the structure must be refused
     }
 
     // `laserwb --help` without a display aborted (exit 134); without a display and without
