@@ -42,9 +42,14 @@ Quality quality(const ScreenResult& r, const std::vector<uint8_t>& truth) {
     return q;
 }
 
+// The paper's fixed procedure: the given scale, no refinement, no track following, no floorless
+// check.
 ScreenParams manual(double magT, double magOc, int area, int conn) {
     ScreenParams p;
     p.automatic = false;
+    p.refineRounds = 0;
+    p.followTrack = false;
+    p.acceptFloorless = false;
     p.magT = magT;
     p.magOc = magOc;
     p.areaLimit = area;

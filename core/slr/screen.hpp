@@ -41,7 +41,10 @@ const char* pointClassName(PointClass c);  ///< "noise", "signal", "recovered"
 struct ScreenParams {
     /// Automatic mode: every parameter left at 0 below is chosen from the data — mag_T, mag_OC
     /// and connectivity by the multi-scale search of screen_auto.hpp, the area limit by the null
-    /// model of automaticAreaLimit(). Off: all four must be given.
+    /// model of automaticAreaLimit(). Off: all four must be given. It chooses only these: the
+    /// refinement, the track following and the floorless check have their own switches
+    /// (refineRounds, followTrack, acceptFloorless); the paper's fixed procedure is automatic off
+    /// with those three off too.
     bool automatic = true;
     double magT = 0;        ///< pixels per second of epoch; 0 = automatic. Sensible 1e-3..1e4 (paper: 1–10)
     double magOc = 0;       ///< pixels per second of O-C; 0 = automatic. Sensible 1e6..1e12 (paper: 1e7–1e10)
@@ -67,13 +70,13 @@ struct ScreenParams {
                                    ///< it (automaticAreaLimit); (0, 0.5]
     int autoMaxPoints = 30000;     ///< automatic mode scores scales on at most this many points (three
                                    ///< time windows of the pass); 1000..1e7
-    /// Automatic mode (automatic = true): after the screening, a smooth trend (Legendre
+    /// After the screening, a smooth trend (Legendre
     /// polynomial, 3σ-clipped, held constant outside the accepted time span) is fitted to the
     /// accepted points and subtracted, and the flattened O-C is screened again; the second
     /// result is kept when its extraction score (scoreExtraction over the whole pass) is at least
     /// the first one's; a trend within one O-C pixel of a straight line ends it (nothing
-    /// to flatten). Up to this many rounds; 0 = off (always off with automatic = false, the
-    /// paper's fixed procedure). Why: an O-C without a prediction (fitted TOF trend) leaves the
+    /// to flatten). At a given scale the flattened O-C is screened at that scale, else the scale
+    /// is searched again. Up to this many rounds; 0 = off (the paper's fixed procedure). Why: an O-C without a prediction (fitted TOF trend) leaves the
     /// track curved and broken (arches of tens of ns, segments at different levels), which the
     /// slope step and the area split handle badly; the track of the first round flattens it.
     int refineRounds = 2;          ///< 0..3
@@ -82,12 +85,12 @@ struct ScreenParams {
     /// and the refinement rounds; dense passes (kHz) do not need them and skip their cost.
     /// 0 = always use them.
     double sparseRateBelow = 50;
-    /// Automatic mode, sparse passes (sparseRateBelow): follow the track from the accepted
+    /// Sparse passes (sparseRateBelow): follow the track from the accepted
     /// pieces through the pass afterwards (screen_follow.hpp): the sparse ends of the arc,
     /// stretches between pieces and pieces beyond gaps, with the density contrast along the
-    /// track as the test. Off with automatic = false (the paper's fixed procedure).
+    /// track as the test. Off in the paper's fixed procedure.
     bool followTrack = true;
-    /// Automatic mode: a pass with no noise floor — the O-C about its robust piecewise trend
+    /// A pass with no noise floor — the O-C about its robust piecewise trend
     /// has a robust σ of at most 1 ns, a peaked distribution ((q97.5 − q2.5)/(q75 − q25) ≥ 2.2;
     /// uniform noise gives 1.9, a Gaussian 2.9) and at most 2 % of the points (or 2 points)
     /// beyond 5σ — is

@@ -8,7 +8,7 @@ const Schema<SlrParams>& slrSchema() {
         Schema<S> s("slr");
         const SpecialValue autoValue{0, "auto"};
         s.boolean("screen.automatic", LWB_FIELD(S, screen.automatic),
-                  "automatic mode: parameters left at 0 (auto) are chosen from the data (multi-scale search)");
+                  "automatic mode: mag_t, mag_oc, area_limit and connectivity left at 0 (auto) are chosen from the data (multi-scale search)");
         auto& magT = s.real("screen.mag_t", LWB_FIELD(S, screen.magT), "px/s", {0, 1e15, true, false}, {1e-3, 1e4},
                             "pixels per second of epoch (paper: 10 conventional, 1 diffuse); 0 = auto");
         magT.specials = {autoValue};
@@ -49,13 +49,13 @@ const Schema<SlrParams>& slrSchema() {
         s.integer("screen.auto_max_points", LWB_FIELD(S, screen.autoMaxPoints), "", {1000, 10000000}, {10000, 100000},
                   "automatic mode scores scales on at most this many points");
         s.integer("screen.refine_rounds", LWB_FIELD(S, screen.refineRounds), "", {0, 3}, {0, 3},
-                  "automatic mode: screening rounds on the O-C flattened by the accepted track's trend");
+                  "screening rounds on the O-C flattened by the accepted track's trend (0 in the paper's fixed procedure)");
         s.real("screen.sparse_rate_below", LWB_FIELD(S, screen.sparseRateBelow), "1/s", {0, 1e7}, {0, 200},
                "passes with fewer returns per second get the sparse-pass ladders and refinement; 0 = always");
         s.boolean("screen.follow_track", LWB_FIELD(S, screen.followTrack),
-                  "automatic mode, sparse passes: follow the track from the accepted pieces (ends, gaps, pieces beyond gaps)");
+                  "sparse passes: follow the track from the accepted pieces (ends, gaps, pieces beyond gaps)");
         s.boolean("screen.accept_floorless", LWB_FIELD(S, screen.acceptFloorless),
-                  "automatic mode: a pass with no noise floor (filtered; robust sigma <= 1 ns, <= 2 % beyond 5 sigma) "
+                  "a pass with no noise floor (filtered; robust sigma <= 1 ns, <= 2 % beyond 5 sigma) "
                   "keeps every point within 5 sigma of its track");
         s.integer("postfit.degree", LWB_FIELD(S, postfit.degree), "", {0, 30}, {2, 15},
                   "trend polynomial degree (Legendre, per segment); the largest tried when auto_degree");

@@ -22,6 +22,7 @@
 #include "ui/app_undo.hpp"
 #include "ui/param_slider.hpp"
 #include "ui/slr_all_passes.hpp"
+#include "ui/slr_params_panel.hpp"
 #include "ui/slr_workspace.hpp"
 
 using namespace lwb::ui;
@@ -175,6 +176,11 @@ private slots:
         const double magOc = c->run().screen.magOc * 3;
         const int area = c->run().screen.areaLimit * 3;
         w.slr()->autoCheck()->setChecked(false);  // the sliders hold the automatic choice
+        // The paper's fixed procedure: no refinement, track following or floorless check (since
+        // issue 28 they have their own switches and stay on when Automatic is unticked).
+        for (const char* key : {"screen.follow_track", "screen.accept_floorless"})
+            qobject_cast<QCheckBox*>(w.slr()->paramsPanel()->form().widget(key))->setChecked(false);
+        w.slr()->paramsPanel()->slider("screen.refine_rounds")->field()->setValue(0);
         w.slr()->magOcSlider()->field()->setValue(magOc);
         w.slr()->areaSlider()->field()->setValue(area);
         QVERIFY(c->waitIdle(60000));
@@ -528,6 +534,39 @@ private slots:
             lwbtest::runCli({"slr", in, "--pass", QString::number(pass), "--cos-c", "0.91", "-o", d + "/cli.csv", "-q"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(lwbtest::readAll(d + "/gui.csv"), lwbtest::readAll(d + "/cli.csv"));
+    }
+
+    // Issue 28: unticking Automatic without changing a value lost the refinement, the track
+    // following and the floorless check (hy2c pass 6: 100 -> 83 accepted). The automatic mode
+    // chooses the scale only; off, the sliders hold the scale it chose and the other stages stay.
+    void untickingAutomaticKeepsTheScreening_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("pass");
+        QTest::newRow("hy2c pass 6") << "slr/hy2c_202109.fr2" << 6;
+        QTest::newRow("STELLA") << "slr/7080_STELLA_crd_071220_2128_0.frd" << 1;
+        QTest::newRow("JASON1") << "slr/7080_JASON1_crd_071220_2033_0.frd" << 1;
+    }
+    void untickingAutomaticKeepsTheScreening() {
+        QFETCH(QString, file);
+        QFETCH(int, pass);
+        const QString in = lwbtest::sharedPath(file);
+        if (!QFile::exists(in)) QSKIP("shared data absent");
+        MainWindow w;
+        QString err;
+        QVERIFY2(w.slr()->openPath(in, pass - 1, &err), qPrintable(err));
+        SlrController* c = w.slr()->controller();
+        QVERIFY(c->waitIdle(60000));
+        const int automatic = acceptedCount(c->run());
+        const int screenings = c->screenCount();
+        w.slr()->autoCheck()->setChecked(false);
+        QTRY_VERIFY_WITH_TIMEOUT(c->waitIdle(1000) && c->hasRun() && c->screenCount() > screenings, 60000);
+        QVERIFY(!c->screenParams().automatic);
+        QVERIFY(c->screenParams().magT > 0 && c->screenParams().magOc > 0);
+        const int fixed = acceptedCount(c->run());
+        qInfo("%s: automatic %d accepted, unticked %d (refined rounds %d)", qPrintable(file), automatic, fixed,
+              c->run().screen.refinedRounds);
+        QVERIFY2(std::abs(fixed - automatic) <= std::max(2, automatic / 50),
+                 qPrintable(QString("automatic %1, unticked %2").arg(automatic).arg(fixed)));
     }
 
     // Issue 28: saving STELLA's preset and opening the pass again gave 70 of 236 accepted instead
