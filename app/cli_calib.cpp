@@ -367,17 +367,20 @@ int cmdCalibStats(int argc, char** argv) {
     std::vector<DifferenceGroup> groups;
     std::string err;
     if (!readDifferencesCsv(a.positional()[0], a.value("--group"), &groups, &err)) return fail(cmd, err);
-    std::vector<std::pair<std::string, ElevationStats>> rows;
-    for (const auto& g : groups) {
-        const ElevationStatsResult r = elevationStats(g.d);
-        if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
-        const auto& t = r.stats;
-        rows.emplace_back(g.group, t);
-        std::cout << (g.group.empty() ? std::string("all") : a.value("--group") + " " + g.group) << ":\n";
+    // The statistics task the workbench runs (runCalibration on the differences alone).
+    CalibInputData in;
+    in.differences = std::move(groups);
+    in.differencesName = a.positional()[0];
+    in.groupColumn = a.value("--group");
+    const CalibRunResult run = runCalibration(in, cp);
+    for (const StatsGroup& g : run.stats) {
+        if (!g.stats.ok) return fail(cmd, a.positional()[0] + ": " + g.stats.error);
+        const auto& t = g.stats.stats;
+        std::cout << g.name << ":\n";
         for (const auto& lv : labelledStats(t))
             std::cout << "  " << lv.label << ": " << (lv.key == "n" ? std::to_string(t.n) : fx(lv.value, 4)) << "\n";
     }
-    if (!outPath(a).empty() && !writeTextOutput(outs.stagingPath(outPath(a)), statsCsv(rows), &err))
+    if (!outPath(a).empty() && !writeTextOutput(outs.stagingPath(outPath(a)), statsCsv(statsRows(run.stats)), &err))
         return fail(cmd, outs.unstaged(err));
     return commitOutputs(cmd, outs);
 }

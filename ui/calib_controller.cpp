@@ -179,7 +179,7 @@ CalibRun compute(std::shared_ptr<const CalibData> data, const CalibParams& p) {
     run.check = std::move(r.check);
     run.statsSource = QString::fromStdString(r.statsSource);
     run.statsError = QString::fromStdString(r.statsError);
-    for (auto& g : r.stats) run.stats.push_back({QString::fromStdString(g.name), std::move(g.d), std::move(g.stats)});
+    for (auto& g : r.stats) run.stats.push_back({QString::fromStdString(g.name), g.group, std::move(g.d), std::move(g.stats)});
     run.hasWaveform = r.hasWaveform;
     run.waveform = std::move(r.waveform);
     run.hasMatch = r.hasMatch;
@@ -373,10 +373,9 @@ bool CalibController::exportIterations(const QString& path, QString* error) cons
 
 bool CalibController::exportStats(const QString& path, QString* error) const {
     if (m_run.stats.empty()) return fail(error, "no validation statistics to export");
-    std::vector<std::pair<std::string, ElevationStats>> rows;
-    for (const StatsColumn& c : m_run.stats)
-        if (c.stats.ok) rows.emplace_back(c.name.toStdString(), c.stats.stats);
-    return writeText(path, statsCsv(rows), error);
+    std::vector<core::calib::StatsGroup> groups;
+    for (const StatsColumn& c : m_run.stats) groups.push_back({c.name.toStdString(), c.group, {}, c.stats});
+    return writeText(path, statsCsv(core::calib::statsRows(groups)), error);
 }
 
 bool CalibController::exportRanking(const QString& path, QString* error) const {

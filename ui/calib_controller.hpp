@@ -60,6 +60,7 @@ bool calibParamsFromJson(const QJsonObject& o, CalibParams* p, QString* error, c
 /// One group of elevation differences and its statistics.
 struct StatsColumn {
     QString name;
+    std::string group;  ///< core::calib::StatsGroup::group
     std::vector<double> d;
     core::calib::ElevationStatsResult stats;
 };

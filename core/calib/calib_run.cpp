@@ -11,9 +11,10 @@ std::string fileName(const std::string& path) {
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-void addGroup(CalibRunResult& run, const std::string& name, std::vector<double> d) {
+void addGroup(CalibRunResult& run, const std::string& name, const std::string& group, std::vector<double> d) {
     StatsGroup g;
     g.name = name;
+    g.group = group;
     g.d = std::move(d);
     g.stats = elevationStats(g.d);
     if (!g.stats.ok && run.statsError.empty()) run.statsError = name + ": " + g.stats.error;
@@ -25,7 +26,8 @@ void computeStats(const CalibInputData& d, CalibRunResult& run) {
     if (!d.differences.empty()) {
         run.statsSource = "Elevation differences from " + fileName(d.differencesName);
         for (const auto& g : d.differences)
-            addGroup(run, g.group.empty() ? std::string("all") : (d.groupColumn.empty() ? "" : d.groupColumn + " ") + g.group, g.d);
+            addGroup(run, g.group.empty() ? std::string("all") : (d.groupColumn.empty() ? "" : d.groupColumn + " ") + g.group,
+                     g.group, g.d);
         return;
     }
     if (!run.hasPointing || !run.pointing.ok) {
@@ -43,7 +45,7 @@ void computeStats(const CalibInputData& d, CalibRunResult& run) {
                           " independent check points, calibrated";
         for (const auto& b : d.beams) {
             std::vector<double> v = heightDifferences(run.check, b.id);
-            if (!v.empty()) addGroup(run, "beam " + std::to_string(b.id), std::move(v));
+            if (!v.empty()) addGroup(run, "beam " + std::to_string(b.id), std::to_string(b.id), std::move(v));
         }
         return;
     }
@@ -53,7 +55,7 @@ void computeStats(const CalibInputData& d, CalibRunResult& run) {
         std::vector<double> v;
         for (const auto& r : run.pointing.residuals)
             if (r.beam == b.id) v.push_back(r.after.u);
-        if (!v.empty()) addGroup(run, "beam " + std::to_string(b.id), std::move(v));
+        if (!v.empty()) addGroup(run, "beam " + std::to_string(b.id), std::to_string(b.id), std::move(v));
     }
 }
 
@@ -86,7 +88,7 @@ CalibRunResult runCalibration(const CalibInputData& d, const CalibParams& p) {
 std::vector<std::pair<std::string, ElevationStats>> statsRows(const std::vector<StatsGroup>& groups) {
     std::vector<std::pair<std::string, ElevationStats>> rows;
     for (const auto& g : groups)
-        if (g.stats.ok) rows.emplace_back(g.name, g.stats.stats);
+        if (g.stats.ok) rows.emplace_back(g.group, g.stats.stats);
     return rows;
 }
 

@@ -35,7 +35,8 @@ struct CalibInputData {
 
 /// One group of elevation differences and its statistics.
 struct StatsGroup {
-    std::string name;  ///< "beam 1", "beam 2", "all", or the group column and value
+    std::string name;   ///< "beam 1", "beam 2", "all", or the group column and value (for display)
+    std::string group;  ///< the `group` column of the statistics CSV: the group's value ("" for one group)
     std::vector<double> d;
     ElevationStatsResult stats;
 };
@@ -61,7 +62,8 @@ struct CalibRunResult {
 /// after calibration (not independent: the source says so).
 CalibRunResult runCalibration(const CalibInputData& in, const CalibParams& params);
 
-/// The statistics that succeeded, as rows for statsCsv.
+/// The statistics that succeeded, as rows for statsCsv (keyed by StatsGroup::group): what
+/// `calib stats -o` and the workbench's export write.
 std::vector<std::pair<std::string, ElevationStats>> statsRows(const std::vector<StatsGroup>& groups);
 
 }  // namespace lwb::core::calib

@@ -245,6 +245,48 @@ private slots:
         QCOMPARE(w.statsTable()->item(1, 1)->text(), QString("0.2000"));  // mean of 0.3 and 0.1
     }
 
+    // Issue 28, GUI = CLI: the workbench's exports of a calibration run are the files laserwb-cli
+    // writes for the same inputs and settings, byte for byte — centre and detector report
+    // (calib detector -o, --detectors), pointing parameters, beams and iterations (calib pointing
+    // --params, -o, --iterations; the beams export is the pointing CSV), waveform ranking, and
+    // the statistics of the differences grouped by beam (calib stats --group beam).
+    void workbenchAndCliWriteTheSameFiles() {
+        const QString dir = path("sim");
+        const QString out = path("same");
+        QVERIFY(QDir().mkpath(out));
+        auto cli = [](const QStringList& args) {
+            const auto r = lwbtest::runCli(args + QStringList{"-q"});
+            QVERIFY2(r.exitCode == 0, qPrintable(args.join(' ') + ": " + r.err));
+        };
+        cli({"calib", "detector", dir + "/detectors.csv", "-o", out + "/centre_cli.csv", "--detectors", out + "/report_cli.csv"});
+        cli({"calib", "pointing", dir + "/control_points.csv", "--beams", dir + "/beams.json", "-o", out + "/beams_cli.csv",
+             "--params", out + "/params_cli.csv", "--iterations", out + "/iter_cli.csv"});
+        cli({"calib", "waveform", dir + "/waveform.csv", "--features", dir + "/features.csv", "-o", out + "/rank_cli.csv"});
+        cli({"calib", "stats", dir + "/diffs.csv", "--group", "beam", "-o", out + "/stats_cli.csv"});
+
+        CalibWorkspace w;
+        CalibController* c = w.controller();
+        QString err;
+        QVERIFY2(c->openDetectors(dir + "/detectors.csv", &err), qPrintable(err));
+        QVERIFY2(c->openControlPoints(dir + "/control_points.csv", dir + "/beams.json", &err), qPrintable(err));
+        QVERIFY2(c->openWaveform(dir + "/waveform.csv", &err), qPrintable(err));
+        QVERIFY2(c->openFeatures(dir + "/features.csv", &err), qPrintable(err));
+        QVERIFY2(c->openDifferences(dir + "/diffs.csv", "beam", &err), qPrintable(err));
+        QVERIFY(c->waitIdle(30000));
+        QVERIFY2(c->exportCentre(out + "/centre_gui.csv", &err), qPrintable(err));
+        QVERIFY2(c->exportDetectorReport(out + "/report_gui.csv", &err), qPrintable(err));
+        QVERIFY2(c->exportPointing(out + "/params_gui.csv", &err), qPrintable(err));
+        QVERIFY2(c->exportIterations(out + "/iter_gui.csv", &err), qPrintable(err));
+        QVERIFY2(c->exportRanking(out + "/rank_gui.csv", &err), qPrintable(err));
+        QVERIFY2(c->exportStats(out + "/stats_gui.csv", &err), qPrintable(err));
+        for (const char* f : {"centre", "report", "params", "iter", "rank", "stats"}) {
+            const QByteArray gui = lwbtest::readAll(out + "/" + f + "_gui.csv"), cliFile = lwbtest::readAll(out + "/" + f + "_cli.csv");
+            QVERIFY2(!gui.isEmpty(), f);
+            QVERIFY2(gui == cliFile, qPrintable(QString("%1: the workbench's export differs from laserwb-cli's:\n%2\n---\n%3")
+                                                    .arg(f, QString::fromUtf8(gui.left(400)), QString::fromUtf8(cliFile.left(400)))));
+        }
+    }
+
     void exportsWriteTheExpectedRows() {
         CalibWorkspace w;
         CalibController* c = w.controller();
