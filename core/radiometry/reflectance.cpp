@@ -432,7 +432,10 @@ RelativeErrorResult relativeErrors(const std::vector<Region>& regions, const cv:
 }
 
 bool writeFitCsv(const std::string& path, const ReflectanceFit& f, std::string* error) {
-    auto g = [](double v) { return std::isfinite(v) ? formatDouble(v, 12) : std::string(); };
+    // Shortest text that reads back to the same double: `radiometry apply --fit` then converts
+    // with exactly the line the fit found, as the workbench does with the fit in memory (12
+    // digits moved the last bits of the reflectance image; issue 28).
+    auto g = [](double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); };
     const std::string s =
         "k,b,k_sd,b_sd,cov_kb,n,residual_sd,r2,mean_dn,vm_pct,paper_uncertainty_pct,uncertainty_at_mean_pct\n" + g(f.k) +
         "," + g(f.b) + "," + g(f.kSd) + "," + g(f.bSd) + "," + g(f.covKB) + "," + std::to_string(f.n) + "," +

@@ -51,6 +51,45 @@ class TestRadiometryWorkspace : public QObject {
 private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
+    // Issue 28, GUI = CLI: the workbench's radiometry of simulated frames writes the files
+    // laserwb-cli writes for the same inputs and defaults, byte for byte: the fit (radiometry fit
+    // on the CLI's mosaic), the reflectance image (radiometry apply) and the check table
+    // (radiometry check on that image).
+    void workbenchAndCliWriteTheSameFiles() {
+        const QString sim = path("same-sim"), out = path("same");
+        QVERIFY(QDir().mkpath(out));
+        auto cli = [](const QStringList& args) {
+            const auto r = lwbtest::runCli(args + QStringList{"-q"});
+            QVERIFY2(r.exitCode == 0, qPrintable(args.join(' ') + ": " + r.err));
+        };
+        cli({"simulate", "radiometry", sim});
+        QStringList frames;
+        for (int i = 1; i <= 6; ++i) frames << sim + QString("/frame_%1.png").arg(i);
+        cli(QStringList{"radiometry", "mosaic"} + frames + QStringList{"-o", out + "/row.tif"});
+        cli({"radiometry", "fit", sim + "/regions.csv", "--image", out + "/row.tif", "-o", out + "/fit_cli.csv"});
+        cli({"radiometry", "apply", out + "/row.tif", "--fit", out + "/fit_cli.csv", "-o", out + "/refl_cli.tif"});
+        cli({"radiometry", "check", sim + "/check.csv", "--image", out + "/refl_cli.tif", "-o", out + "/check_cli.csv"});
+
+        RadiometryWorkspace w;
+        RadiometryController* c = w.controller();
+        QString err;
+        QVERIFY2(c->openFrames(frames, &err), qPrintable(err));
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY2(c->openRegions(sim + "/regions.csv", RegionRole::Fit, &err), qPrintable(err));
+        QVERIFY2(c->openRegions(sim + "/check.csv", RegionRole::Check, &err), qPrintable(err));
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY2(c->exportFit(out + "/fit_gui.csv", &err), qPrintable(err));
+        QVERIFY2(c->exportReflectance(out + "/refl_gui.tif", &err), qPrintable(err));
+        QVERIFY2(c->exportRelativeErrors(out + "/check_gui.csv", &err), qPrintable(err));
+        for (const char* f : {"fit_%1.csv", "refl_%1.tif", "check_%1.csv"}) {
+            const QByteArray gui = lwbtest::readAll(out + "/" + QString(f).arg("gui")), cliFile = lwbtest::readAll(out + "/" + QString(f).arg("cli"));
+            QVERIFY2(!gui.isEmpty(), f);
+            QVERIFY2(gui == cliFile, qPrintable(QString("%1: the workbench's export differs from laserwb-cli's (%2 vs %3 bytes):\n%4\n---\n%5")
+                                                    .arg(QString(f).arg("*")).arg(gui.size()).arg(cliFile.size())
+                                                    .arg(QString::fromUtf8(gui.left(300)), QString::fromUtf8(cliFile.left(300)))));
+        }
+    }
+
     void demoFitsTheSimulatedLine() {
         RadiometryWorkspace w;
         RadiometryController* c = w.controller();
