@@ -27,6 +27,7 @@
 #include "core/common/json.hpp"
 #include "core/footprint/image_io.hpp"
 #include "ui/app_undo.hpp"
+#include "ui/params_command.hpp"
 #include "ui/color_maps.hpp"
 #include "ui/contact_sheet.hpp"
 #include "ui/demo.hpp"
@@ -274,14 +275,27 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
             m_table->selectRow(0);
         emit modified();
     });
-    connect(m_controller, &FootprintController::shotsAboutToReset, this, [] { appUndoStack().clear(); });
-    connect(&appUndoStack(), &QUndoStack::indexChanged, this, [this] {
-        if (appUndoStack().count() > 0) emit modified();
+    // (the controller, created before the stack, is the context: it goes first when the workspace
+    // is destroyed, so that the stack's clear() on its own destruction reaches nobody)
+    QUndoStack* undo = &undoStackOf(this);
+    connect(m_controller, &FootprintController::shotsAboutToReset, undo, &QUndoStack::clear);
+    connect(undo, &QUndoStack::indexChanged, m_controller, [this, undo] {
+        if (undo->count() > 0) emit modified();
     });
     connect(m_table->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this] { currentRowChanged(); });
+    // A parameter change is a step of the workspace's undo history (issue 28: a slider change was
+    // not, so Ctrl+Z after it took back a manual verdict on a shot that was not on screen).
     connect(m_panel, &FootprintParamsPanel::paramsChanged, this, [this](const FootprintParams& p) {
+        const FootprintParams before = m_controller->params();
         m_controller->setParams(p);
+        pushParamsChange<FootprintParams>(
+            this, footprintSchema(), before, p,
+            [this](const FootprintParams& q) {
+                m_panel->setParams(q);
+                m_controller->setParams(q);
+            },
+            tr("footprint parameters"));
         emit modified();
     });
     connect(m_controller, &FootprintController::currentDetailReady, this, &FootprintWorkspace::showDetail);
@@ -432,7 +446,7 @@ void FootprintWorkspace::showTab(const QString& name) {
 void FootprintWorkspace::commitNote() {
     const int row = currentSourceRow();
     const Shot* s = m_controller->shot(row);
-    if (s && s->note != m_note->text()) appUndoStack().push(new ShotNoteCommand(m_controller, row, m_note->text()));
+    if (s && s->note != m_note->text()) undoStackOf(this).push(new ShotNoteCommand(m_controller, row, m_note->text()));
 }
 
 void FootprintWorkspace::judgeCurrent(bool overridden, Verdict v) {
@@ -446,10 +460,10 @@ void FootprintWorkspace::judgeCurrent(bool overridden, Verdict v) {
         nextProxy < m_proxy->rowCount() ? m_proxy->mapToSource(m_proxy->index(nextProxy, 0)).row() : -1;
     const Shot* s = m_controller->shot(row);
     const bool noteChanged = s->note != m_note->text();
-    if (noteChanged) appUndoStack().beginMacro(tr("note and verdict on %1").arg(QFileInfo(s->file).fileName()));
-    if (noteChanged) appUndoStack().push(new ShotNoteCommand(m_controller, row, m_note->text()));
-    appUndoStack().push(new ShotVerdictCommand(m_controller, row, overridden, v));
-    if (noteChanged) appUndoStack().endMacro();
+    if (noteChanged) undoStackOf(this).beginMacro(tr("note and verdict on %1").arg(QFileInfo(s->file).fileName()));
+    if (noteChanged) undoStackOf(this).push(new ShotNoteCommand(m_controller, row, m_note->text()));
+    undoStackOf(this).push(new ShotVerdictCommand(m_controller, row, overridden, v));
+    if (noteChanged) undoStackOf(this).endMacro();
     emit modified();
     if (!overridden) return;  // "Auto" stays on the shot
     if (nextSource >= 0) {

@@ -3,7 +3,7 @@
 // them (DS9-like limits, stretch, histogram and colour bar), a contact sheet of the current
 // view, the parameter panel, and the trend plots. The review loop: filter, then A / R / N
 // (accept, reject, next unreviewed) and E (note) by keyboard; every verdict and note is an
-// undoable command on appUndoStack().
+// undoable command on the workspace's undo stack (undoStackOf).
 #include <QJsonObject>
 #include <QWidget>
 

@@ -28,10 +28,11 @@
 #include <QStatusBar>
 #include <QStyleFactory>
 #include <QTabWidget>
+#include <QUndoGroup>
+#include <QUndoStack>
 #include <QTableWidget>
 #include <QTextBrowser>
 #include <QToolButton>
-#include <QUndoStack>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
@@ -156,10 +157,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     connect(m_cancel, &QPushButton::clicked, fc, &FootprintController::cancelLoading);
     // New data: the undo history refers to the data it was made on.
-    connect(fc, &FootprintController::shotsReset, this, [] { appUndoStack().clear(); });
-    connect(m_slr->controller(), &SlrController::passChanged, this, [] { appUndoStack().clear(); });
-    connect(m_calib->controller(), &CalibController::inputsChanged, this, [] { appUndoStack().clear(); });
-    connect(m_radiometry->controller(), &RadiometryController::imageChanged, this, [] { appUndoStack().clear(); });
+    // Each workspace's own history: new data in one leaves the others' alone.
+    connect(fc, &FootprintController::shotsReset, this, [this] { undoStackOf(m_footprint).clear(); });
+    connect(m_slr->controller(), &SlrController::passChanged, this, [this] { undoStackOf(m_slr).clear(); });
+    connect(m_calib->controller(), &CalibController::inputsChanged, this, [this] { undoStackOf(m_calib).clear(); });
+    connect(m_radiometry->controller(), &RadiometryController::imageChanged, this, [this] { undoStackOf(m_radiometry).clear(); });
     setAcceptDrops(true);
     QSettings st;
     if (!restoreGeometry(st.value("window/geometry").toByteArray())) resize(1480, 900);
@@ -196,12 +198,14 @@ void MainWindow::buildMenus() {
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = appUndoStack().createUndoAction(this, tr("&Undo"));
+    // Edit ▸ Undo acts on the current workspace's history (the group's active stack).
+    QAction* undo = appUndoGroup().createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = appUndoStack().createRedoAction(this, tr("&Redo"));
+    QAction* redo = appUndoGroup().createRedoAction(this, tr("&Redo"));
     redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
     edit->addAction(undo);
     edit->addAction(redo);
+    appUndoGroup().setActiveStack(&undoStackOf(m_tabs->currentWidget()));
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     m_workspaceGroup = new QActionGroup(this);
@@ -215,6 +219,7 @@ void MainWindow::buildMenus() {
     connect(m_tabs, &QTabWidget::currentChanged, this, [this](int i) {
         const auto acts = m_workspaceGroup->actions();
         if (i >= 0 && i < acts.size()) acts[i]->setChecked(true);
+        if (QWidget* ws = m_tabs->widget(i)) appUndoGroup().setActiveStack(&undoStackOf(ws));
         statusBar()->clearMessage();
     });
     view->addSeparator();
@@ -386,7 +391,7 @@ bool MainWindow::openDemo() {
                                  .arg(m_footprint->controller()->count()),
                              8000);
     m_sessionPath.clear();
-    appUndoStack().clear();
+    clearUndoHistories();
     setModified(false);
     return true;
 }
@@ -755,7 +760,7 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
     }
     m_sessionPath = path;
     addRecent(path);
-    appUndoStack().clear();
+    clearUndoHistories();
     setModified(false);
     showWorkspace(o["workspace"].toString());
     statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
@@ -841,6 +846,12 @@ void MainWindow::rebuildRecentMenu() {
     for (const QString& p : recent)
         m_recentMenu->addAction(QFileInfo(p).fileName(), this, [this, p] { openSession(p); })->setToolTip(p);
     m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::clearUndoHistories() {
+    for (QWidget* ws : {static_cast<QWidget*>(m_footprint), static_cast<QWidget*>(m_slr), static_cast<QWidget*>(m_calib),
+                        static_cast<QWidget*>(m_radiometry)})
+        undoStackOf(ws).clear();
 }
 
 void MainWindow::showWorkspace(const QString& name) {

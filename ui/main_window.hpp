@@ -109,6 +109,8 @@ private:
     bool saveAs();
     void exportAccepted();
     void setModified(bool m);
+    /// Every workspace's undo history cleared (new data everywhere: the demo, a session).
+    void clearUndoHistories();
     void addRecent(const QString& path);
     void rebuildRecentMenu();
     void showError(const QString& what, const QString& detail);

@@ -1,5 +1,5 @@
 #pragma once
-// The footprint review's edits as undoable commands on appUndoStack(): a manual verdict (or its
+// The footprint review's edits as undoable commands on the footprint workspace's undo stack: a manual verdict (or its
 // removal) and a note on one shot. They refer to a row of the current list; loading a new list
 // clears the stack.
 #include <QPointer>

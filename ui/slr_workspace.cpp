@@ -27,6 +27,7 @@
 
 #include "core/sim/slr_sim.hpp"
 #include "ui/app_undo.hpp"
+#include "ui/params_command.hpp"
 #include "ui/param_slider.hpp"
 #include "ui/slr_all_passes.hpp"
 #include "ui/session_json.hpp"
@@ -80,42 +81,14 @@ private:
     std::vector<int8_t> m_before, m_after;
 };
 
-// Undo: a parameter change. The first redo (on push) is the change already made; successive
-// changes of the same single parameter (a slider drag) merge into one step.
-class ParamsCommand : public QUndoCommand {
-public:
-    ParamsCommand(SlrWorkspace* w, const SlrParams& before, const SlrParams& after)
-        : m_w(w), m_before(before), m_after(after), m_keys(slrSchema().changedKeys(before, after)) {
-        setText(QObject::tr("Change %1").arg(m_keys.size() == 1 ? QString::fromStdString(m_keys[0]) : QObject::tr("SLR parameters")));
-    }
-    int id() const override { return 0x511; }
-    bool mergeWith(const QUndoCommand* other) override {
-        const auto* o = dynamic_cast<const ParamsCommand*>(other);
-        if (!o || o->m_w != m_w || m_keys.size() != 1 || o->m_keys != m_keys) return false;
-        m_after = o->m_after;
-        return true;
-    }
-    void undo() override { apply(m_before); }
-    void redo() override {
-        if (m_first) m_first = false;
-        else apply(m_after);
-    }
-
-private:
-    void apply(const SlrParams& p) {
-        if (!m_w) return;
-        m_w->paramsPanel()->setParams(p);
-        m_w->controller()->setParams(p);
-    }
-    QPointer<SlrWorkspace> m_w;
-    SlrParams m_before, m_after;
-    std::vector<std::string> m_keys;
-    bool m_first = true;
-};
-
 void pushParams(SlrWorkspace* w, const SlrParams& before, const SlrParams& after) {
-    if (slrSchema().changedKeys(before, after).empty()) return;
-    appUndoStack().push(new ParamsCommand(w, before, after));
+    pushParamsChange<SlrParams>(
+        w, slrSchema(), before, after,
+        [w](const SlrParams& p) {
+            w->paramsPanel()->setParams(p);
+            w->controller()->setParams(p);
+        },
+        QObject::tr("SLR parameters"));
 }
 
 QCustomPlot* newPlot(QWidget* parent, const QString& x, const QString& y) {
@@ -379,8 +352,11 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
         for (int8_t f : m_controller->forced()) any = any || f;
         m_clearEdits->setEnabled(any);
     });
-    auto undoState = [this] { m_undo->setEnabled(appUndoStack().canUndo()); };
-    connect(&appUndoStack(), &QUndoStack::canUndoChanged, this, undoState);
+    // (the button is the context: created before the stack, it goes first when the workspace is
+    // destroyed, so that the stack's clear() on its own destruction reaches nobody)
+    QUndoStack* undo = &undoStackOf(this);
+    auto undoState = [this, undo] { m_undo->setEnabled(undo->canUndo()); };
+    connect(undo, &QUndoStack::canUndoChanged, m_undo, undoState);
     connect(m_controller, &SlrController::passChanged, this, &SlrWorkspace::showPass);
     connect(m_params, &SlrParamsPanel::paramsChanged, this, [this](const SlrParams& p) {
         const SlrParams before = m_controller->params();
@@ -426,7 +402,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     connect(home, &QPushButton::clicked, this, &SlrWorkspace::resetView);
     connect(m_viewCombo, qOverload<int>(&QComboBox::activated), this, [this](int i) { setResidualView(i == 1); });
     connect(m_sodCheck, &QCheckBox::toggled, this, &SlrWorkspace::setSecondsOfDay);
-    connect(m_undo, &QPushButton::clicked, this, [] { appUndoStack().undo(); });
+    connect(m_undo, &QPushButton::clicked, this, [this] { undoStackOf(this).undo(); });
     connect(m_clearEdits, &QPushButton::clicked, this, [this] {
         pushForced(std::vector<int8_t>(m_controller->forced().size(), 0), tr("Clear SLR edits"));
     });
@@ -510,7 +486,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     });
     connect(exNp, &QPushButton::clicked, this, [=] { exporter(tr("Export normal points"), tr("CRD (*.npt *.np2 *.crd)"), &SlrController::exportNormalPoints); });
     m_params->setParams(m_controller->params());
-    m_undo->setEnabled(appUndoStack().canUndo());
+    m_undo->setEnabled(undoStackOf(this).canUndo());
     m_clearEdits->setEnabled(false);
     m_cpfClear->setEnabled(false);
     m_snxClear->setEnabled(false);
@@ -617,7 +593,7 @@ void SlrWorkspace::fillPassList() {
 
 void SlrWorkspace::showPass() {
     fillPassList();
-    appUndoStack().clear();  // commands refer to the pass they were made on
+    undoStackOf(this).clear();  // commands refer to the pass they were made on
     m_params->setParams(m_controller->params());  // a satellite preset may have come with the pass
     const PassData& p = m_controller->pass();
     m_hover->clear();
@@ -718,7 +694,7 @@ void SlrWorkspace::boxSelected(const QRect& rect) {
 
 void SlrWorkspace::pushForced(const std::vector<int8_t>& after, const QString& text) {
     if (after == m_controller->forced()) return;
-    appUndoStack().push(new ForcedCommand(m_controller, m_controller->forced(), after, text));
+    undoStackOf(this).push(new ForcedCommand(m_controller, m_controller->forced(), after, text));
     emit modified();
 }
 

@@ -109,36 +109,60 @@ private slots:
         QCOMPARE(w.statusBar()->currentMessage(), QString("radiometry speaking"));
     }
 
-    void editMenuUndoRedoOnTheOneStackClearedByNewData() {
+    // Issue 28: one undo history per workspace (a QUndoGroup). Edit ▸ Undo acts on the current
+    // workspace's; new data in one workspace clears its history only (opening an SLR pass
+    // cleared the footprint review's; a footprint edit was undone from any workspace).
+    void editMenuUndoesTheCurrentWorkspacesHistory() {
         MainWindow w;
         QAction* undo = menuAction(w, "Edit", "Undo");
         QAction* redo = menuAction(w, "Edit", "Redo");
         QVERIFY(undo && redo);
         QCOMPARE(undo->shortcut(), QKeySequence(QKeySequence::Undo));
         QVERIFY(redo->shortcuts().contains(QKeySequence("Ctrl+Shift+Z")));
-        int value = 1;
-        appUndoStack().push(new SetInt(&value, 2));
-        QCOMPARE(value, 2);
+        w.showWorkspace("footprint");
+        int footprintValue = 1, slrValue = 10;
+        undoStackOf(w.footprint()).push(new SetInt(&footprintValue, 2));
+        undoStackOf(w.slr()).push(new SetInt(&slrValue, 20));
+        QCOMPARE(footprintValue, 2);
+        QCOMPARE(slrValue, 20);
         QVERIFY(undo->isEnabled());
-        undo->trigger();
-        QCOMPARE(value, 1);
+        undo->trigger();  // the footprint workspace is in front: its edit is undone, not the SLR one
+        QCOMPARE(footprintValue, 1);
+        QCOMPARE(slrValue, 20);
+        QVERIFY(!undo->isEnabled());  // nothing more in the footprint history
         redo->trigger();
-        QCOMPARE(value, 2);
-        // The shortcut reaches it from the window.
+        QCOMPARE(footprintValue, 2);
+        w.showWorkspace("slr");
+        QVERIFY(undo->isEnabled());
+        // The shortcut reaches the current workspace's history from the window.
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
-        QCOMPARE(value, 1);
+        QCOMPARE(slrValue, 10);
+        QCOMPARE(footprintValue, 2);
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
-        QCOMPARE(value, 2);
-        // New data: the history is of other data.
-        w.openDemo();
-        QCOMPARE(appUndoStack().count(), 0);
-        QVERIFY(!undo->isEnabled());
-        appUndoStack().push(new SetInt(&value, 3));
-        w.calib()->openDemo();  // new inputs in one workspace
-        QCOMPARE(appUndoStack().count(), 0);
+        QCOMPARE(slrValue, 20);
+        // New inputs in one workspace clear its history only.
+        w.calib()->openDemo();
         QVERIFY(w.waitIdle(120000));
+        QCOMPARE(undoStackOf(w.footprint()).count(), 1);
+        QCOMPARE(undoStackOf(w.slr()).count(), 1);
+        undoStackOf(w.calib()).push(new SetInt(&footprintValue, 5));
+        const QString pass = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
+        if (QFile::exists(pass)) {
+            QString err;
+            QVERIFY2(w.openPaths({pass}, &err), qPrintable(err));
+            QVERIFY(w.waitIdle(120000));
+            QCOMPARE(undoStackOf(w.slr()).count(), 0);
+            QCOMPARE(undoStackOf(w.footprint()).count(), 1);  // the footprint review's history stays
+            QCOMPARE(undoStackOf(w.calib()).count(), 1);
+        }
+        // The demo is new data everywhere.
+        w.openDemo();
+        QVERIFY(w.waitIdle(120000));
+        for (QWidget* ws : {static_cast<QWidget*>(w.footprint()), static_cast<QWidget*>(w.slr()),
+                            static_cast<QWidget*>(w.calib()), static_cast<QWidget*>(w.radiometry())})
+            QCOMPARE(undoStackOf(ws).count(), 0);
     }
 
     void viewMenuSwitchesWorkspacesPanelsAndTheme() {

@@ -28,6 +28,7 @@
 #include "core/common/display_stretch.hpp"
 #include "test_support.hpp"
 #include "ui/app_undo.hpp"
+#include "ui/footprint_params_panel.hpp"
 #include "ui/contact_sheet.hpp"
 #include "ui/display_controls.hpp"
 #include "ui/footprint_workspace.hpp"
@@ -37,6 +38,7 @@
 #include "ui/shot_table_model.hpp"
 
 using namespace lwb::ui;
+using lwb::core::footprint::FootprintParams;
 
 namespace {
 QComboBox* filterCombo(QWidget* w) {
@@ -302,6 +304,36 @@ private slots:
         bool folderAction = false;
         for (QAction* a : w.findChildren<QAction*>()) folderAction |= a->objectName() == "actionOpenFolder";
         QVERIFY(folderAction);
+    }
+
+    // Issue 28: a parameter change is a step of the footprint workspace's undo history. It was
+    // not, so Ctrl+Z after a slider change took back a manual verdict (on a shot that may not
+    // be on screen) and left the parameter as it was.
+    void parameterChangeIsUndoneBeforeAVerdict() {
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
+        fw->selectRow(0);
+        fw->rejectCurrent();
+        QCOMPARE(c->counts().overridden, 1);
+        const int roiBefore = c->params().roi.size;
+        FootprintParams p = c->params();
+        p.roi.size = roiBefore + 8;
+        emit fw->paramsPanel()->paramsChanged(p);  // as a slider move does
+        QCOMPARE(c->params().roi.size, roiBefore + 8);
+        QVERIFY(c->waitIdle(60000));
+        undoStackOf(fw).undo();  // the parameter change first
+        QCOMPARE(c->params().roi.size, roiBefore);
+        QCOMPARE(fw->paramsPanel()->params().roi.size, roiBefore);
+        QCOMPARE(c->counts().overridden, 1);  // the verdict stays
+        undoStackOf(fw).undo();  // then the verdict
+        QCOMPARE(c->counts().overridden, 0);
+        undoStackOf(fw).redo();
+        undoStackOf(fw).redo();
+        QCOMPARE(c->counts().overridden, 1);
+        QCOMPARE(c->params().roi.size, roiBefore + 8);
+        QVERIFY(c->waitIdle(60000));
     }
 
     // Item 6: the review table (every shot) and the accepted shots through the CLI's writer:
@@ -671,9 +703,9 @@ private slots:
         // Every verdict and note is one undo step: undo the last accept, redo it.
         const int last = secondPass.isEmpty() ? -1 : currentSource(fw);
         Q_UNUSED(last);
-        appUndoStack().undo();
+        undoStackOf(fw).undo();
         QCOMPARE(c->counts().overridden, 29);
-        appUndoStack().redo();
+        undoStackOf(fw).redo();
         QCOMPARE(c->counts().overridden, 30);
         // The exported review table: 200 rows, the 30 manual verdicts and the notes.
         const QString out = m_dir.path() + "/review200.csv";

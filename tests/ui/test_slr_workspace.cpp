@@ -858,34 +858,34 @@ private slots:
         SlrWorkspace ws;
         showWithSparsePass(&ws);
         SlrController* c = ws.controller();
-        appUndoStack().clear();
+        undoStackOf(&ws).clear();
         const std::vector<uint8_t> before = c->run().accepted;
         QVERIFY(acceptedCount(c->run()) > 0);
         QCustomPlot* p = ws.ocPlot();
         const QRect ar = p->axisRect()->rect();
         ws.setBoxMode(SlrWorkspace::BoxMode::ForceOut);
         drag(p, ar.topLeft() + QPoint(2, 2), ar.bottomRight() - QPoint(2, 2));  // every point in view
-        QCOMPARE(appUndoStack().count(), 1);
+        QCOMPARE(undoStackOf(&ws).count(), 1);
         QVERIFY(c->waitIdle(60000));
         QCOMPARE(acceptedCount(c->run()), 0);
-        appUndoStack().undo();
+        undoStackOf(&ws).undo();
         QVERIFY(c->waitIdle(60000));
         QVERIFY(c->run().accepted == before);
         for (int8_t f : c->forced()) QCOMPARE(int(f), 0);
-        appUndoStack().redo();
+        undoStackOf(&ws).redo();
         QVERIFY(c->waitIdle(60000));
         QCOMPARE(acceptedCount(c->run()), 0);
-        appUndoStack().undo();
+        undoStackOf(&ws).undo();
         QVERIFY(c->waitIdle(60000));
         // A parameter change: undone in the controller and in the panel.
         const double cos0 = c->screenParams().cosineC;
         ws.cosineSlider()->field()->setValue(0.93);
         QCOMPARE(c->screenParams().cosineC, 0.93);
-        QVERIFY(appUndoStack().canUndo());
-        appUndoStack().undo();
+        QVERIFY(undoStackOf(&ws).canUndo());
+        undoStackOf(&ws).undo();
         QCOMPARE(c->screenParams().cosineC, cos0);
         QCOMPARE(ws.cosineSlider()->field()->value(), cos0);
-        appUndoStack().redo();
+        undoStackOf(&ws).redo();
         QCOMPARE(c->screenParams().cosineC, 0.93);
         QVERIFY(c->waitIdle(60000));
     }
