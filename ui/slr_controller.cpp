@@ -99,7 +99,6 @@ void SlrController::passLoaded() {
     m_screenings = 0;
     m_run = std::make_shared<const SlrRun>();
     m_forced.assign(m_pass.t.size(), 0);
-    m_edits.clear();
 }
 
 namespace {
@@ -292,13 +291,7 @@ void SlrController::setParams(const SlrParams& p) {
 
 void SlrController::forcePoints(const std::vector<uint32_t>& indices, bool in) {
     if (indices.empty()) return;
-    Edit e;
-    e.indices = indices;
-    for (uint32_t i : indices) {
-        e.before.push_back(m_forced[i]);
-        m_forced[i] = in ? 1 : -1;
-    }
-    m_edits.push_back(std::move(e));
+    for (uint32_t i : indices) m_forced[i] = in ? 1 : -1;
     emit editsChanged();
     m_job.schedule();
 }
@@ -310,19 +303,8 @@ void SlrController::setForced(const std::vector<int8_t>& forced) {
     m_job.schedule();
 }
 
-bool SlrController::undoEdit() {
-    if (m_edits.empty()) return false;
-    const Edit e = m_edits.back();
-    m_edits.pop_back();
-    for (size_t k = 0; k < e.indices.size(); ++k) m_forced[e.indices[k]] = e.before[k];
-    emit editsChanged();
-    m_job.schedule();
-    return true;
-}
-
 void SlrController::clearEdits() {
     std::fill(m_forced.begin(), m_forced.end(), 0);
-    m_edits.clear();
     emit editsChanged();
     m_job.schedule();
 }

@@ -96,11 +96,10 @@ public:
     int screenCount() const { return m_screenings; }
     bool busy() const { return m_job.busy(); }
 
-    // Manual edits: points forced in (accepted) or out; undoable; kept across reruns.
+    // Manual edits: points forced in (accepted) or out; kept across reruns. Undone through the
+    // workspace's undo stack (ForcedCommand with setForced), the one history of the edits.
     void forcePoints(const std::vector<uint32_t>& indices, bool in);
-    bool undoEdit();
     void clearEdits();
-    int editCount() const { return int(m_edits.size()); }
     const std::vector<int8_t>& forced() const { return m_forced; }  ///< per point: +1 in, −1 out, 0 auto
 
     // Per-satellite presets (JSON file in the user's data folder unless set).
@@ -147,11 +146,6 @@ private:
     core::slr::PassInputParams m_input;
     core::slr::SlrParams m_params;
     std::vector<int8_t> m_forced;
-    struct Edit {
-        std::vector<uint32_t> indices;
-        std::vector<int8_t> before;
-    };
-    std::vector<Edit> m_edits;
     QString m_presetFile;
     std::shared_ptr<const SlrRun> m_run = std::make_shared<const SlrRun>();
     LiveJob m_job;
