@@ -62,4 +62,14 @@ void fuzzParams(const core::Schema<P>& schema, std::string_view bytes, FromJson 
     check(core::dumpJson(schema.toJson(r), -1) == text);
 }
 
+/// A target for a schema whose --config is read by Schema::fromJson itself (slr, calib,
+/// radiometry, trend): the whole LLVMFuzzerTestOneInput body.
+template <class P>
+int fuzzSchemaConfig(const core::Schema<P>& schema, const uint8_t* data, size_t size) {
+    fuzzParams(schema, asText(data, size), [&schema](const core::JsonParseResult& j, P* p, std::string* err) {
+        return schema.fromJson(j.value, p, err, &j);
+    });
+    return 0;
+}
+
 }  // namespace lwb::fuzz

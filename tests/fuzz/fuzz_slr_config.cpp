@@ -4,13 +4,6 @@
 #include "core/slr/slr_params.hpp"
 #include "tests/fuzz/fuzz_schema.hpp"
 
-using namespace lwb::core;
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const Schema<slr::SlrParams>& schema = slr::slrSchema();
-    lwb::fuzz::fuzzParams(schema, lwb::fuzz::asText(data, size),
-                          [&schema](const JsonParseResult& j, slr::SlrParams* p, std::string* err) {
-                              return schema.fromJson(j.value, p, err, &j);
-                          });
-    return 0;
+    return lwb::fuzz::fuzzSchemaConfig(lwb::core::slr::slrSchema(), data, size);
 }

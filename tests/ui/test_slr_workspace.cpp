@@ -502,6 +502,16 @@ private slots:
         QCOMPARE(lwbtest::readAll(d + "/gui.npt"), lwbtest::readAll(d + "/cli.npt"));
     }
 
+    // Opens pass `pass` (from 1) of a real file in the SLR workspace and waits for its screening.
+    static bool openAndWait(MainWindow& w, const QString& in, int pass) {
+        QString err;
+        if (!w.slr()->openPath(in, pass - 1, &err)) {
+            qWarning("%s", qPrintable(err));
+            return false;
+        }
+        return w.slr()->controller()->waitIdle(60000);
+    }
+
     // Moving C gives laserwb-cli's result at that C, byte for byte (issue 28). It reused the
     // automatic scale, which was the refined round's, on the flattened O-C: JASON1 accepted
     // nothing after C moved; even at the first round's scale the screening was not the CLI's.
@@ -540,23 +550,14 @@ private slots:
     // Issue 28: unticking Automatic without changing a value lost the refinement, the track
     // following and the floorless check (hy2c pass 6: 100 -> 83 accepted). The automatic mode
     // chooses the scale only; off, the sliders hold the scale it chose and the other stages stay.
-    void untickingAutomaticKeepsTheScreening_data() {
-        QTest::addColumn<QString>("file");
-        QTest::addColumn<int>("pass");
-        QTest::newRow("hy2c pass 6") << "slr/hy2c_202109.fr2" << 6;
-        QTest::newRow("STELLA") << "slr/7080_STELLA_crd_071220_2128_0.frd" << 1;
-        QTest::newRow("JASON1") << "slr/7080_JASON1_crd_071220_2033_0.frd" << 1;
-    }
+    void untickingAutomaticKeepsTheScreening_data() { movingCGivesTheCliResultAtThatC_data(); }
     void untickingAutomaticKeepsTheScreening() {
         QFETCH(QString, file);
         QFETCH(int, pass);
-        const QString in = lwbtest::sharedPath(file);
-        if (!QFile::exists(in)) QSKIP("shared data absent");
+        if (!lwbtest::haveShared(file)) QSKIP("shared data absent");
         MainWindow w;
-        QString err;
-        QVERIFY2(w.slr()->openPath(in, pass - 1, &err), qPrintable(err));
         SlrController* c = w.slr()->controller();
-        QVERIFY(c->waitIdle(60000));
+        QVERIFY(openAndWait(w, lwbtest::sharedPath(file), pass));
         const int automatic = acceptedCount(c->run());
         const int screenings = c->screenCount();
         w.slr()->autoCheck()->setChecked(false);
