@@ -1,4 +1,5 @@
 #include "core/calib/detector_array.hpp"
+#include "core/calib/calib_params.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -138,18 +139,12 @@ bool readDetectorCsv(const std::string& path, DetectorArray* out, std::string* e
 }
 
 std::string validate(const DetectorFitParams& p) {
-    if (!std::isfinite(p.background)) return "background must be finite";
-    if (!(p.triggerThreshold >= 0 && std::isfinite(p.triggerThreshold))) return "trigger threshold must be >= 0";
-    if (!(p.saturationLevel >= 0 && std::isfinite(p.saturationLevel))) return "saturation level must be >= 0 (0 = none)";
+    // The ranges of the schema's rows (calib_params.cpp), then the rule between two of them.
+    CalibParams c;
+    c.detector = p;
+    if (std::string e = calibSchema().validate(c, "detector."); !e.empty()) return e;
     if (p.saturationLevel > 0 && p.saturationLevel <= p.triggerThreshold)
         return "saturation level must exceed the trigger threshold";
-    if (!(p.relativeNoise >= 0 && p.relativeNoise <= 1)) return "relative noise must be within 0..1";
-    if (!(p.noiseFloor >= 0 && std::isfinite(p.noiseFloor))) return "noise floor must be >= 0";
-    if (p.recommendedDetectors < 0 || p.recommendedDetectors > 100000) return "recommended detectors must be 0..100000";
-    if (p.maxIterations < 1 || p.maxIterations > 10000) return "LM iterations must be within 1..10000";
-    if (!(p.outlierSigma == 0 || (p.outlierSigma >= 3 && p.outlierSigma <= 1e6))) return "outlier limit must be 0 (off) or within 3..1e6 sigma";
-    if (!(p.chi2Probability >= 0 && p.chi2Probability <= 0.5)) return "chi2 probability must be within 0..0.5";
-    if (!(p.maxAxisRatio >= 1 && p.maxAxisRatio <= 1e6)) return "largest plausible axis ratio must be within 1..1e6";
     return {};
 }
 

@@ -1,4 +1,5 @@
 #include "core/calib/pointing.hpp"
+#include "core/calib/calib_params.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -63,14 +64,9 @@ Eigen::Matrix3d dualBeamRotation(const BeamDesign& beam1, const BeamDesign& beam
 const char* calibModelName(CalibModel m) { return m == CalibModel::DualBeam ? "dual" : "single"; }
 
 std::string validate(const PointingCalibParams& p) {
-    if (!(p.sigmaHorizontalM > 0 && p.sigmaHorizontalM < 1e6)) return "horizontal control sigma must be > 0 m";
-    if (!(p.sigmaVerticalM > 0 && p.sigmaVerticalM < 1e6)) return "vertical control sigma must be > 0 m";
-    if (!(p.sigmaRangeM >= 0 && p.sigmaRangeM < 1e6)) return "range sigma must be >= 0 m";
-    if (!(p.sigmaAttitudeRad >= 0 && p.sigmaAttitudeRad < 0.1)) return "attitude sigma must be within 0..0.1 rad";
-    if (!(p.sigmaOrbitM >= 0 && p.sigmaOrbitM < 1e6)) return "orbit sigma must be >= 0 m";
-    if (p.maxIterations < 1 || p.maxIterations > 1000) return "iterations must be within 1..1000";
-    if (!(p.minRcond > 0 && p.minRcond < 1)) return "minimum reciprocal condition must be in (0, 1)";
-    return {};
+    CalibParams c;  // the ranges of the schema's rows (calib_params.cpp)
+    c.pointing = p;
+    return calibSchema().validate(c, "pointing.");
 }
 
 double GroundResidual::plan() const { return std::hypot(e, n); }

@@ -1,4 +1,5 @@
 #include "core/calib/waveform.hpp"
+#include "core/calib/calib_params.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -78,13 +79,9 @@ bool readWaveformCsv(const std::string& path, double dt, Waveform* out, std::str
 }
 
 std::string validate(const WaveformParams& p) {
-    if (!(p.sampleIntervalNs > 0 && p.sampleIntervalNs < 1e6)) return "sample interval must be > 0 ns";
-    if (!(p.smoothSigmaNs >= 0 && p.smoothSigmaNs < 1e6)) return "smoothing must be >= 0 ns";
-    if (!(p.minSeparationNs > 0 && p.minSeparationNs < 1e6)) return "minimum peak separation must be > 0 ns";
-    if (!(p.minSecondPeak > 0 && p.minSecondPeak <= 1)) return "second-peak fraction must be in (0, 1]";
-    if (!(p.incidenceDeg >= 0 && p.incidenceDeg <= 60)) return "incidence must be within 0..60 degrees";
-    if (p.maxIterations < 1 || p.maxIterations > 10000) return "LM iterations must be within 1..10000";
-    return {};
+    CalibParams c;  // the ranges of the schema's rows (calib_params.cpp)
+    c.waveform = p;
+    return calibSchema().validate(c, "waveform.");
 }
 
 double heightFromDelay(double deltaTNs, double incidenceRad) {
@@ -319,8 +316,9 @@ bool readFeatureCsv(const std::string& path, std::vector<FeatureCandidate>* out,
 }
 
 std::string validate(const FeatureMatchParams& p) {
-    if (!(p.thresholdM > 0 && std::isfinite(p.thresholdM))) return "the height threshold thred_h must be > 0 m";
-    return {};
+    CalibParams c;  // the range of the schema's row (calib_params.cpp)
+    c.match = p;
+    return calibSchema().validate(c, "waveform.thred_h");
 }
 
 FeatureMatchResult matchFeature(const std::vector<FeatureCandidate>& candidates, double hWaveform,

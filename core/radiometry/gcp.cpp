@@ -1,4 +1,5 @@
 #include "core/radiometry/gcp.hpp"
+#include "core/radiometry/radiometry_params.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -81,9 +82,9 @@ bool readGcpCsv(const std::string& path, std::vector<Gcp>* out, std::string* err
 }
 
 std::string validate(const GcpFitParams& p) {
-    if (!(p.collinearTolerance >= 0 && p.collinearTolerance <= 0.5)) return "collinearity tolerance must be within 0..0.5";
-    if (!(p.outlierProbability > 0 && p.outlierProbability < 0.5)) return "outlier probability must be within 0..0.5";
-    return {};
+    RadiometryParams r;  // the ranges of the schema's rows (radiometry_params.cpp)
+    r.gcp = p;
+    return radiometrySchema().validate(r, "gcp.");
 }
 
 GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& params) {

@@ -1,4 +1,5 @@
 #include "core/radiometry/mosaic.hpp"
+#include "core/radiometry/radiometry_params.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -52,14 +53,9 @@ bool parseBlendMode(const std::string& s, BlendMode* b) {
 }
 
 std::string validate(const MosaicParams& p) {
-    if (p.maxFeatures < 100 || p.maxFeatures > 100000) return "max features must be within 100..100000";
-    if (!(p.ratioTest > 0 && p.ratioTest < 1)) return "ratio test must be in (0, 1)";
-    if (!(p.ransacThresholdPx > 0 && p.ransacThresholdPx <= 1000)) return "RANSAC threshold must be in (0, 1000] px";
-    if (p.minInliers < 4 || p.minInliers > 100000) return "minimum inliers must be within 4..100000";
-    if (!(p.maxRotationDeg >= 0 && p.maxRotationDeg <= 180)) return "maximum rotation must be within 0..180 degrees";
-    if (!(p.maxScaleChange >= 0 && p.maxScaleChange < 10)) return "maximum scale change must be within 0..10";
-    if (!(p.maxCanvasPixels >= 1 && p.maxCanvasPixels <= 4e9)) return "maximum canvas pixels must be within 1..4e9";
-    return {};
+    RadiometryParams r;  // the ranges of the schema's rows (radiometry_params.cpp)
+    r.mosaic = p;
+    return radiometrySchema().validate(r, "mosaic.");
 }
 
 namespace {

@@ -1,0 +1,75 @@
+// Issue 28: the step functions' own checks (validate(DetectorFitParams), ...) take their ranges
+// from the schema rows, declared once, instead of restating them by hand (about 36 checks did).
+// A value outside a row's range is refused by the step itself, named by the row's key; the
+// defaults pass; the rule between two fields that no row holds stays with the step.
+#include <QtTest>
+
+#include "core/calib/calib_params.hpp"
+#include "core/calib/detector_array.hpp"
+#include "core/calib/pointing.hpp"
+#include "core/calib/waveform.hpp"
+#include "core/radiometry/gcp.hpp"
+#include "core/radiometry/mosaic.hpp"
+#include "core/radiometry/radiometry_params.hpp"
+
+using namespace lwb::core;
+
+class TestSchemaValidators : public QObject {
+    Q_OBJECT
+
+    static void refusedNaming(const std::string& error, const char* key) {
+        QVERIFY2(error.find(key) != std::string::npos, error.c_str());
+    }
+
+private slots:
+    void defaultsPass() {
+        QCOMPARE(calib::validate(calib::DetectorFitParams{}), std::string());
+        QCOMPARE(calib::validate(calib::PointingCalibParams{}), std::string());
+        QCOMPARE(calib::validate(calib::WaveformParams{}), std::string());
+        QCOMPARE(calib::validate(calib::FeatureMatchParams{}), std::string());
+        QCOMPARE(radiometry::validate(radiometry::MosaicParams{}), std::string());
+        QCOMPARE(radiometry::validate(radiometry::GcpFitParams{}), std::string());
+    }
+
+    void outOfRangeValuesAreRefusedByTheirKey() {
+        calib::DetectorFitParams d;
+        d.triggerThreshold = -1;
+        refusedNaming(calib::validate(d), "detector.trigger");
+        d = {};
+        d.outlierSigma = 2;  // 0 (off) or 3..1e6
+        refusedNaming(calib::validate(d), "detector.outlier_sigma");
+        d = {};
+        d.relativeNoise = NAN;
+        refusedNaming(calib::validate(d), "detector.rel_noise");
+        d = {};  // the rule between two fields stays with the step
+        d.triggerThreshold = 50;
+        d.saturationLevel = 40;
+        QVERIFY(calib::validate(d).find("exceed the trigger") != std::string::npos);
+        // Through the step function too: an error, no fit.
+        QVERIFY(!calib::fitDetectorArray({}, d).ok);
+
+        calib::PointingCalibParams p;
+        p.sigmaHorizontalM = 0;
+        refusedNaming(calib::validate(p), "pointing.sigma_h");
+        p = {};
+        p.sigmaAttitudeRad = 0.2;  // 2e5 µrad, above the row's 1e5
+        refusedNaming(calib::validate(p), "pointing.sigma_attitude_urad");
+
+        calib::WaveformParams w;
+        w.incidenceDeg = 61;
+        refusedNaming(calib::validate(w), "waveform.incidence_deg");
+        calib::FeatureMatchParams m;
+        m.thresholdM = 0;
+        refusedNaming(calib::validate(m), "waveform.thred_h");
+
+        radiometry::MosaicParams mo;
+        mo.minInliers = 3;
+        refusedNaming(radiometry::validate(mo), "mosaic.min_inliers");
+        radiometry::GcpFitParams g;
+        g.collinearTolerance = 0.6;
+        refusedNaming(radiometry::validate(g), "gcp.collinear_tolerance");
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSchemaValidators)
+#include "test_schema_validators.moc"
