@@ -713,8 +713,6 @@ private:
     CrdPass* open_ = nullptr;
 };
 
-// Stage 1: the text's lines through the splitter (progress: the first half). False with
-// res->error on a line that cannot be CRD, on cancel, or without any pass.
 // The number of lines from each line that starts an H4 record to the next such line (or the end).
 std::vector<size_t> countLinesAfterH4(std::string_view text) {
     std::vector<size_t> counts;
@@ -733,6 +731,8 @@ std::vector<size_t> countLinesAfterH4(std::string_view text) {
     return counts;
 }
 
+// Stage 1: the text's lines through the splitter (progress: the first half). False with
+// res->error on a line that cannot be CRD, on cancel, or without any pass.
 bool splitPasses(std::string_view text, const std::string& src, const Feedback* feedback, Sink* sink, CrdReadResult* res) {
     PassSplitter splitter(src, sink, &res->file);
     splitter.setCapacityHints(countLinesAfterH4(text));
