@@ -3,6 +3,7 @@
 // A value outside a row's range is refused by the step itself, named by the row's key; the
 // defaults pass; the rule between two fields that no row holds stays with the step.
 #include <QtTest>
+#include <functional>
 
 #include "core/calib/calib_params.hpp"
 #include "core/calib/detector_array.hpp"
@@ -48,26 +49,18 @@ private slots:
         // Through the step function too: an error, no fit.
         QVERIFY(!calib::fitDetectorArray({}, d).ok);
 
-        calib::PointingCalibParams p;
-        p.sigmaHorizontalM = 0;
-        refusedNaming(calib::validate(p), "pointing.sigma_h");
-        p = {};
-        p.sigmaAttitudeRad = 0.2;  // 2e5 µrad, above the row's 1e5
-        refusedNaming(calib::validate(p), "pointing.sigma_attitude_urad");
-
-        calib::WaveformParams w;
-        w.incidenceDeg = 61;
-        refusedNaming(calib::validate(w), "waveform.incidence_deg");
-        calib::FeatureMatchParams m;
-        m.thresholdM = 0;
-        refusedNaming(calib::validate(m), "waveform.thred_h");
-
-        radiometry::MosaicParams mo;
-        mo.minInliers = 3;
-        refusedNaming(radiometry::validate(mo), "mosaic.min_inliers");
-        radiometry::GcpFitParams g;
-        g.collinearTolerance = 0.6;
-        refusedNaming(radiometry::validate(g), "gcp.collinear_tolerance");
+        // One value outside its row's range per step, and the key the message must name.
+        const std::vector<std::pair<std::function<std::string()>, const char*>> cases = {
+            {[] { calib::PointingCalibParams p; p.sigmaHorizontalM = 0; return calib::validate(p); }, "pointing.sigma_h"},
+            {[] { calib::PointingCalibParams p; p.sigmaAttitudeRad = 0.2; return calib::validate(p); },  // 2e5 µrad > 1e5
+             "pointing.sigma_attitude_urad"},
+            {[] { calib::WaveformParams w; w.incidenceDeg = 61; return calib::validate(w); }, "waveform.incidence_deg"},
+            {[] { calib::FeatureMatchParams m; m.thresholdM = 0; return calib::validate(m); }, "waveform.thred_h"},
+            {[] { radiometry::MosaicParams m; m.minInliers = 3; return radiometry::validate(m); }, "mosaic.min_inliers"},
+            {[] { radiometry::GcpFitParams g; g.collinearTolerance = 0.6; return radiometry::validate(g); },
+             "gcp.collinear_tolerance"},
+        };
+        for (const auto& [error, key] : cases) refusedNaming(error(), key);
     }
 };
 
