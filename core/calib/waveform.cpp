@@ -88,68 +88,61 @@ double heightFromDelay(double deltaTNs, double incidenceRad) {
     return deltaTNs * 1e-9 * kSpeedOfLight / 2 / std::cos(incidenceRad);
 }
 
-WaveformResult decomposeWaveform(const Waveform& w, const WaveformParams& params) {
-    WaveformResult res;
-    if (const std::string e = validate(params); !e.empty()) {
-        res.error = e;
-        return res;
-    }
+// decomposeWaveform in named stages: the samples checked, a smoothed copy, the two peaks, the
+// two-Gaussian fit from them, then the figures and the detection test.
+namespace {
+
+// Stage 1. Samples: as many times as amplitudes, at least 10, finite, times increasing.
+std::string sampleProblem(const Waveform& w) {
     const size_t n = w.amplitude.size();
-    if (w.timeNs.size() != n) {
-        res.error = "waveform times and amplitudes differ in length";
-        return res;
-    }
-    if (n < 10) {
-        res.error = "only " + std::to_string(n) + " samples (a two-peak fit needs at least 10)";
-        return res;
-    }
+    if (w.timeNs.size() != n) return "waveform times and amplitudes differ in length";
+    if (n < 10) return "only " + std::to_string(n) + " samples (a two-peak fit needs at least 10)";
     for (size_t i = 0; i < n; ++i) {
-        if (!std::isfinite(w.amplitude[i]) || !std::isfinite(w.timeNs[i])) {
-            res.error = "sample " + std::to_string(i) + " is not finite";
-            return res;
-        }
-        if (i && !(w.timeNs[i] > w.timeNs[i - 1])) {
-            res.error = "sample times must increase (sample " + std::to_string(i) + ")";
-            return res;
-        }
+        if (!std::isfinite(w.amplitude[i]) || !std::isfinite(w.timeNs[i])) return "sample " + std::to_string(i) + " is not finite";
+        if (i && !(w.timeNs[i] > w.timeNs[i - 1])) return "sample times must increase (sample " + std::to_string(i) + ")";
     }
-    const double dt = (w.timeNs.back() - w.timeNs.front()) / (n - 1);
-    // Peak search on a smoothed copy.
-    std::vector<double> sm(n);
-    const double sg = params.smoothSigmaNs / dt;
-    if (sg < 0.3) {
-        sm = w.amplitude;
-    } else if (3 * sg >= static_cast<double>(n)) {
+    return {};
+}
+
+// Stage 2. The amplitudes smoothed by a Gaussian of sg samples (none below 0.3; a flat line when
+// wider than the record).
+std::vector<double> smoothed(const std::vector<double>& amp, double sg) {
+    const size_t n = amp.size();
+    if (sg < 0.3) return amp;
+    if (3 * sg >= static_cast<double>(n)) {
         // Smoothing wider than the record: a flat line.
         double mean = 0;
-        for (double a : w.amplitude) mean += a;
-        sm.assign(n, mean / static_cast<double>(n));
-    } else {
-        // At most the whole waveform each side: a smoothing wider than the record is a flat
-        // line anyway, and an uncapped width (tiny sample spacing) would be a hang.
-        const long half = static_cast<long>(std::min<double>(std::ceil(3 * sg), static_cast<double>(n)));
-        for (size_t i = 0; i < n; ++i) {
-            double s = 0, ws = 0;
-            for (long k = -half; k <= half; ++k) {
-                const long j = static_cast<long>(i) + k;
-                if (j < 0 || j >= static_cast<long>(n)) continue;
-                const double g = std::exp(-0.5 * k * k / (sg * sg));
-                s += g * w.amplitude[j];
-                ws += g;
-            }
-            sm[i] = s / ws;
-        }
+        for (double a : amp) mean += a;
+        return std::vector<double>(n, mean / static_cast<double>(n));
     }
-    std::vector<double> sorted = w.amplitude;
-    std::nth_element(sorted.begin(), sorted.begin() + n / 4, sorted.end());
-    const double base0 = sorted[n / 4];  // lower quartile: the baseline under sparse returns
+    // At most the whole waveform each side: a smoothing wider than the record is a flat
+    // line anyway, and an uncapped width (tiny sample spacing) would be a hang.
+    std::vector<double> sm(n);
+    const long half = static_cast<long>(std::min<double>(std::ceil(3 * sg), static_cast<double>(n)));
+    for (size_t i = 0; i < n; ++i) {
+        double s = 0, ws = 0;
+        for (long k = -half; k <= half; ++k) {
+            const long j = static_cast<long>(i) + k;
+            if (j < 0 || j >= static_cast<long>(n)) continue;
+            const double g = std::exp(-0.5 * k * k / (sg * sg));
+            s += g * amp[j];
+            ws += g;
+        }
+        sm[i] = s / ws;
+    }
+    return sm;
+}
+
+// Stage 3. The main peak of the smoothed copy above the baseline base0, and the highest second
+// peak at least minSeparationNs away that reaches minSecondPeak of it with a dip between them.
+// Their sample indices in time order, or the error.
+std::string twoPeaks(const Waveform& w, const std::vector<double>& sm, double base0, const WaveformParams& params, size_t* a,
+                     size_t* b) {
+    const size_t n = sm.size();
     std::vector<size_t> peaks;
     for (size_t i = 1; i + 1 < n; ++i)
         if (sm[i] > sm[i - 1] && sm[i] >= sm[i + 1] && sm[i] > base0) peaks.push_back(i);
-    if (peaks.empty()) {
-        res.error = "the waveform has no peak above its baseline";
-        return res;
-    }
+    if (peaks.empty()) return "the waveform has no peak above its baseline";
     size_t p1 = peaks[0];
     for (size_t p : peaks)
         if (sm[p] > sm[p1]) p1 = p;
@@ -165,11 +158,19 @@ WaveformResult decomposeWaveform(const Waveform& w, const WaveformParams& params
         if (dip > base0 + 0.9 * (std::min(sm[p], sm[p1]) - base0)) continue;
         if (p2 < 0 || sm[p] > sm[static_cast<size_t>(p2)]) p2 = static_cast<long>(p);
     }
-    if (p2 < 0) {
-        res.error = "not a double-peak waveform: no second return at least " + formatDouble(params.minSeparationNs, 4) +
-                    " ns from the main peak reaching " + formatDouble(100 * params.minSecondPeak, 3) + " % of it";
-        return res;
-    }
+    if (p2 < 0)
+        return "not a double-peak waveform: no second return at least " + formatDouble(params.minSeparationNs, 4) +
+               " ns from the main peak reaching " + formatDouble(100 * params.minSecondPeak, 3) + " % of it";
+    *a = std::min(p1, static_cast<size_t>(p2));
+    *b = std::max(p1, static_cast<size_t>(p2));
+    return {};
+}
+
+// Stage 4. Baseline + two Gaussians by Levenberg-Marquardt from the peaks (widths from their
+// half maxima, at most half the separation).
+LmOutcome fitTwoGaussians(const Waveform& w, const std::vector<double>& sm, double base0, double dt, size_t a, size_t b,
+                          int maxIterations) {
+    const size_t n = sm.size();
     auto halfWidth = [&](size_t p) {
         const double half = base0 + 0.5 * (sm[p] - base0);
         size_t l = p, r = p;
@@ -178,7 +179,6 @@ WaveformResult decomposeWaveform(const Waveform& w, const WaveformParams& params
         const double fwhm = w.timeNs[r] - w.timeNs[l];
         return std::max(fwhm / 2.3548, dt);
     };
-    size_t a = std::min(p1, static_cast<size_t>(p2)), b = std::max(p1, static_cast<size_t>(p2));
     const double sep = w.timeNs[b] - w.timeNs[a];
     Eigen::VectorXd p0(7);
     p0 << base0, sm[a] - base0, w.timeNs[a], std::min(halfWidth(a), sep / 2), sm[b] - base0, w.timeNs[b],
@@ -207,12 +207,56 @@ WaveformResult decomposeWaveform(const Waveform& w, const WaveformParams& params
         return true;
     };
     LmOptions opt;
-    opt.maxIterations = params.maxIterations;
-    const LmOutcome o = levenbergMarquardt(prob, p0, opt);
+    opt.maxIterations = maxIterations;
+    return levenbergMarquardt(prob, p0, opt);
+}
+
+// Stage 6. A detection test: each return must stand at least kDetectSigma times the samples'
+// noise (the residual RMS about the model) above the baseline. A noise-only waveform was
+// "decomposed" into returns at 46.6 and 92.2 ns, h 6.83 +- 215.7 m, and matched a feature.
+void detectionTest(WaveformResult* res) {
+    constexpr double kDetectSigma = 5;
+    const double noise = std::max(res->rmsResidual, 1e-300);
+    for (const GaussComponent* g : {&res->first, &res->second})
+        if (res->ok && !(g->amplitude >= kDetectSigma * noise)) {
+            res->ok = false;
+            res->error = std::string("no double return stands out of the noise: the ") +
+                         (g == &res->first ? "earlier" : "later") + " return at " + formatFixed(g->centreNs, 1) + " ns is " +
+                         formatFixed(g->amplitude / noise, 1) + " times the noise RMS (" + formatDouble(noise, 4) +
+                         "), a return needs " + formatFixed(kDetectSigma, 0) + ": no height from this waveform";
+        }
+}
+
+}  // namespace
+
+WaveformResult decomposeWaveform(const Waveform& w, const WaveformParams& params) {
+    WaveformResult res;
+    if (const std::string e = validate(params); !e.empty()) {
+        res.error = e;
+        return res;
+    }
+    if (std::string e = sampleProblem(w); !e.empty()) {
+        res.error = std::move(e);
+        return res;
+    }
+    const size_t n = w.amplitude.size();
+    const double dt = (w.timeNs.back() - w.timeNs.front()) / (n - 1);
+    // Peak search on a smoothed copy.
+    const std::vector<double> sm = smoothed(w.amplitude, params.smoothSigmaNs / dt);
+    std::vector<double> sorted = w.amplitude;
+    std::nth_element(sorted.begin(), sorted.begin() + n / 4, sorted.end());
+    const double base0 = sorted[n / 4];  // lower quartile: the baseline under sparse returns
+    size_t a = 0, b = 0;
+    if (std::string e = twoPeaks(w, sm, base0, params, &a, &b); !e.empty()) {
+        res.error = std::move(e);
+        return res;
+    }
+    const LmOutcome o = fitTwoGaussians(w, sm, base0, dt, a, b, params.maxIterations);
     if (!o.ok) {
         res.error = "waveform decomposition failed: " + o.error;
         return res;
     }
+    // Stage 5. The returns in time order with their σ, the delay, the height and the model.
     if (!o.converged) res.warnings.push_back("the decomposition stopped at the iteration limit before converging");
     Eigen::VectorXd p = o.params;
     Eigen::MatrixXd cov;
@@ -257,19 +301,7 @@ WaveformResult decomposeWaveform(const Waveform& w, const WaveformParams& params
         res.warnings.push_back("a fitted return lies outside the sampled window");
     res.ok = std::isfinite(res.heightM);
     if (!res.ok) res.error = "the decomposition produced a non-finite height";
-    // A detection test: each return must stand at least kDetectSigma times the samples' noise
-    // (the residual RMS about the model) above the baseline. A noise-only waveform was
-    // "decomposed" into returns at 46.6 and 92.2 ns, h 6.83 +- 215.7 m, and matched a feature.
-    constexpr double kDetectSigma = 5;
-    const double noise = std::max(res.rmsResidual, 1e-300);
-    for (const GaussComponent* g : {&res.first, &res.second})
-        if (res.ok && !(g->amplitude >= kDetectSigma * noise)) {
-            res.ok = false;
-            res.error = std::string("no double return stands out of the noise: the ") +
-                        (g == &res.first ? "earlier" : "later") + " return at " + formatFixed(g->centreNs, 1) + " ns is " +
-                        formatFixed(g->amplitude / noise, 1) + " times the noise RMS (" + formatDouble(noise, 4) +
-                        "), a return needs " + formatFixed(kDetectSigma, 0) + ": no height from this waveform";
-        }
+    detectionTest(&res);
     return res;
 }
 
