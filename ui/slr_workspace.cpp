@@ -506,7 +506,7 @@ bool SlrWorkspace::exportCrd(const QString& path, bool wholeFile, QString* messa
                               .arg(QString::fromStdString(p.satellite), QString::fromStdString(m_controller->passes().empty() ? std::string() : m_controller->passes()[size_t(p.passIndex)].start))
                               .arg(data)
                               .arg(p.t.size());
-    *message = wholeFile ? tr("Wrote %1: the whole file (%2 passes), %3; the other passes as read").arg(path).arg(p.crd->passes.size()).arg(flags)
+    *message = wholeFile ? tr("Wrote %1: the whole file (%2 passes), %3; the other passes as read").arg(path).arg(p.crd ? p.crd->passes.size() : size_t(0)).arg(flags)
                          : tr("Wrote %1: this pass only, %2").arg(path, flags);
     emit status(*message);
     return true;
