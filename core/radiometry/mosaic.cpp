@@ -384,9 +384,15 @@ double memoryBudgetBytes() {
 std::string mosaicMemoryProblem(const std::vector<std::string>& paths, double budgetBytes) {
     std::vector<long long> px;
     for (const std::string& p : paths) {
+        // The first 64 KiB hold the size of a PNG, PGM or JPEG and of most TIFFs; a TIFF whose
+        // first directory lies further on is read whole (the frames are read again to decode).
         std::string bytes, err;
-        if (!readFileText(p, &bytes, &err)) return {};  // the decoder says why
-        const ImageHeader h = readImageHeader(bytes);
+        if (!readFileHead(p, 1 << 16, &bytes, &err)) return {};  // the decoder says why
+        ImageHeader h = readImageHeader(bytes);
+        if (!h.complete && bytes.size() == (1u << 16)) {
+            if (!readFileText(p, &bytes, &err)) return {};
+            h = readImageHeader(bytes);
+        }
         if (!h.complete) return {};
         px.push_back(h.width * h.height);
     }
