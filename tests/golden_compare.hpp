@@ -28,6 +28,7 @@
 #include <QString>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <string>
 
@@ -200,8 +201,12 @@ inline QString compareNumbers(const QString& file, const QByteArray& golden, con
                 }
                 const double allowed = std::max({rel * std::max(std::fabs(x), std::fabs(y)),
                                                  csv ? tol.colRel * colMax.value(c) : 0.0,
-                                                 (a[k].integral && b[k].integral) ? 0.0
-                                                                                  : std::max(a[k].lastDigit, b[k].lastDigit) * (1 + 1e-9),
+                                                 // (the two decimals' difference in binary carries their
+                                                 // rounding: 48.420717 - 48.420716 is 1e-6 + 3e-14)
+                                                 (a[k].integral && b[k].integral)
+                                                     ? 0.0
+                                                     : std::max(a[k].lastDigit, b[k].lastDigit) +
+                                                           8 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(x), std::fabs(y)),
                                                  abs});
                 if (std::fabs(x - y) > allowed)
                     return differ(QString("%1 vs golden %2: differs by %3, more than the %4 allowed (relative %5)")

@@ -306,6 +306,11 @@ private slots:
                  QString());
         // A rounding boundary: 0.12345 printed 0.1234 here and 0.1235 there.
         QCOMPARE(compareNumbers("f.csv", g, QByteArray(g).replace("0.1235", "0.1234"), true), QString());
+        // A last-digit flip of a larger number (CI: -48.420716 vs -48.420717, whose difference in
+        // binary is a little more than 1e-6), but not two units.
+        const QByteArray m = "model\n-48.420717\n";
+        QCOMPARE(compareNumbers("m.csv", m, "model\n-48.420716\n", true), QString());
+        QVERIFY(!compareNumbers("m.csv", m, "model\n-48.420715\n", true).isEmpty());
         // Zero in truth, a few 1e-17 on another CPU: within the column's scale.
         QCOMPARE(compareNumbers("f.csv", g, QByteArray(g).replace(",0,3,", ",3e-17,3,"), true), QString());
         // A change of 1e-6 of the value fails, naming line, column and both values.
