@@ -202,74 +202,85 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
 
 // --all-passes: every pass of a CRD file screened with the same options, each pass's outputs
 // and a summary.csv in `dir`, written together at the end. A pass that cannot be processed is a
-// row of the summary with its reason; the others go on.
+// row of the summary with its reason; the others go on. The file is read pass by pass
+// (slr::streamCrd): one pass is held at a time, whatever the size of the file.
 int screenAllPasses(const std::string& cmd, const std::string& input, const slr::PassInputParams& in, const RunInputs& ri,
                     const std::string& dir, bool quiet) {
-    const auto crdRead = std::make_shared<const slr::CrdReadResult>(slr::readCrd(input));
-    const slr::CrdReadResult& crd = *crdRead;
-    if (!crd.ok) return fail(cmd, crd.error);
     slr::PassSources sources;
     std::string err;
     if (!in.cpfPath.empty() && !in.sinexPath.empty() && !slr::readPassSources(in, &sources, &err)) return fail(cmd, err);
     slr::PassInputParams inFallback = in;
     inFallback.cpfFallback = true;  // a pass the CPF does not fit is screened on its own TOF trend, with a note
-    const FolderForOutputs folder(dir);
-    if (!folder.ok()) return fail(cmd, dir + ": cannot create the folder");
-    const size_t n = crd.file.passes.size();
-    // The outputs' names first, so that every one is checked before any work.
-    std::vector<std::string> names(n);
+    std::unique_ptr<FolderForOutputs> folder;
+    size_t n = 0;
+    // The outputs' names, from the file's count of passes, so that every one is checked before any work.
+    std::vector<std::string> names;
     core::OutputSet outs;
-    outs.addInput(input);
-    for (size_t i = 0; i < n; ++i) {
-        char name[64];
-        std::snprintf(name, sizeof name, "pass%03zu.csv", i + 1);
-        names[i] = dir + "/" + name;
-        outs.addOutput(names[i]);
-    }
     const std::string summaryPath = dir + "/summary.csv";
-    outs.addOutput(summaryPath);
-    // summary.csv lists the set: written last; an earlier run's pass files go.
-    outs.setManifest(summaryPath, dir, {"pass[0-9][0-9][0-9]*.csv"});
-    if (int rc = checkOutputs(cmd, outs)) return rc;
+    int early = kOk;  // an exit code decided before the passes (the folder, the outputs' checks)
+    auto begin = [&](size_t count) {
+        n = count;
+        folder = std::make_unique<FolderForOutputs>(dir);
+        if (!folder->ok()) {
+            early = fail(cmd, dir + ": cannot create the folder");
+            return false;
+        }
+        outs.addInput(input);
+        for (size_t i = 0; i < n; ++i) {
+            char name[64];
+            std::snprintf(name, sizeof name, "pass%03zu.csv", i + 1);
+            names.push_back(dir + "/" + name);
+            outs.addOutput(names.back());
+        }
+        outs.addOutput(summaryPath);
+        // summary.csv lists the set: written last; an earlier run's pass files go.
+        outs.setManifest(summaryPath, dir, {"pass[0-9][0-9][0-9]*.csv"});
+        early = checkOutputs(cmd, outs);
+        return early == kOk;
+    };
     std::string summary =
         "pass,station,satellite,ilrs_id,start_utc,duration_s,points,accepted,rms_ps,rms_mm,normal_points,"
         "station_precision,station_recall,oc_origin,status,reason,seconds,output\n";
-    Progress progress("slr", n, quiet);
-    size_t done = 0, okCount = 0, doubtCount = 0;
-    std::vector<bool> written(n, false);
-    const std::vector<slr::PassSummary> passes = slr::summarisePasses(crd.file);
-    for (size_t i = 0; i < n; ++i) {
-        const slr::PassSummary& ps0 = passes[i];
+    std::unique_ptr<Progress> progress;
+    size_t done = 0, okCount = 0, doubtCount = 0, unreadable = 0;
+    std::string firstProblem;
+    std::vector<bool> written;
+    auto onPass = [&](slr::CrdPass&& crdPass) {
+        if (!progress) progress = std::make_unique<Progress>("slr", n, quiet);
+        if (written.size() != n) written.assign(n, false);
+        const size_t i = crdPass.ordinal - 1;
+        if (!crdPass.problem.empty()) {
+            if (firstProblem.empty()) firstProblem = crdPass.problem;
+            ++unreadable;
+        }
+        auto one = std::make_shared<slr::CrdReadResult>();
+        one->ok = true;
+        one->file.path = input;
+        one->file.passes.push_back(std::move(crdPass));
+        const slr::PassSummary ps0 = slr::summarisePasses(one->file).front();
         std::string row = std::to_string(i + 1) + "," + core::csvEscape(ps0.station) + "," + core::csvEscape(ps0.satellite) + "," +
                           core::csvEscape(ps0.ilrsId) + "," + ps0.start + ",";
         auto failRow = [&](const std::string& why) {
             // duration empty, the points, accepted .. oc_origin empty, then status and reason.
             summary += row + "," + std::to_string(ps0.ranges) + ",,,,,,,,failed," + core::csvEscape(why) + ",,\n";
+            return true;
         };
-        const slr::PassInputResult p = slr::passFromCrd(crdRead, input, int(i), inFallback, sources);
-        progress.update(++done);
-        if (!p.ok) {
-            failRow(p.error.substr(0, p.error.find('\n')));
-            continue;
-        }
-        if (!p.pass.damaged.empty()) {
-            failRow(p.pass.damaged);
-            continue;
-        }
+        const slr::PassInputResult p =
+            slr::passFromCrd(std::shared_ptr<const slr::CrdReadResult>(std::move(one)), input, 0, inFallback, sources);
+        progress->update(++done);
+        if (!p.ok) return failRow(p.error.substr(0, p.error.find('\n')));
+        if (!p.pass.damaged.empty()) return failRow(p.pass.damaged);
         slr::PassSettings settings;
         if (!slr::passSettings(p.pass, cliDefaults(), ri.havePresets ? &ri.presets : nullptr, ri.satellite, ri.stations,
-                               &settings, &err)) {
-            failRow(err);
-            continue;
-        }
-        if (int rc = ri.options->apply(cmd, *ri.args, &settings.params)) return rc;
+                               &settings, &err))
+            return failRow(err);
+        if ((early = ri.options->apply(cmd, *ri.args, &settings.params)) != kOk) return false;
         const slr::PassRunResult r = slr::runPass(p.pass, settings.params);
-        if (!r.ok) {
-            failRow(r.error);
-            continue;
+        if (!r.ok) return failRow(r.error);
+        if (!slr::writeScreenCsv(outs.stagingPath(names[i]), p.pass, r.screen, r.accepted, r.postOk ? &r.post : nullptr, &err)) {
+            early = fail(cmd, outs.unstaged(err));
+            return false;
         }
-        if (!slr::writeScreenCsv(outs.stagingPath(names[i]), p.pass, r.screen, r.accepted, r.postOk ? &r.post : nullptr, &err))
-            return fail(cmd, outs.unstaged(err));
         written[i] = true;
         ++okCount;
         doubtCount += !r.doubt.empty();
@@ -283,14 +294,24 @@ int screenAllPasses(const std::string& cmd, const std::string& input, const slr:
                    core::csvEscape(!r.doubt.empty() ? r.doubt : !p.pass.ocNote.empty() ? p.pass.ocNote : r.postNote) + "," +
                    core::formatFixed(r.seconds, 3) +
                    "," + names[i].substr(dir.size() + 1) + "\n";
-    }
-    progress.finish();
+        return true;
+    };
+    const slr::CrdStreamResult crd = slr::streamCrd(input, {}, nullptr, begin, onPass);
+    if (early != kOk) return early;
+    if (!crd.ok) return fail(cmd, crd.error);
+    if (unreadable == crd.passes)  // (as readCrd: a file none of whose blocks is a pass is an error)
+        return fail(cmd, firstProblem + (unreadable > 1 ? " (and the file's " + std::to_string(unreadable - 1) + " other pass" +
+                                                              (unreadable > 2 ? "es cannot" : " cannot") + " be used either)"
+                                                        : std::string()));
+    if (!progress) progress = std::make_unique<Progress>("slr", n, quiet);
+    written.resize(n, false);
+    progress->finish();
     // Passes with no result have no file.
     for (size_t i = 0; i < n; ++i)
         if (!written[i]) outs.drop(names[i]);
     if (!core::writeFileAtomic(outs.stagingPath(summaryPath), summary, &err)) return fail(cmd, outs.unstaged(err));
     if (int rc = commitOutputs(cmd, outs)) return rc;
-    folder.keep();
+    folder->keep();
     if (!quiet)
         std::cerr << "slr: " << input << ": " << okCount << " of " << n << " passes screened -> " << dir << "/ (summary.csv)\n";
     if (okCount == n && doubtCount == 0) return kOk;

@@ -86,6 +86,53 @@ CrdReadResult readText(const QTemporaryDir& dir, const QString& name, const QByt
     return readCrd(lwbtest::str(p));
 }
 
+/// Empty when streamCrd hands out, one by one, the passes readCrd reads at once (their place,
+/// records, parsed ranges and normal points, problems), or fails as readCrd does; else what
+/// differs. A file readCrd refuses because none of its blocks is a pass is read by streamCrd
+/// with every pass carrying its problem (the caller decides).
+QString streamDiff(const QString& path) {
+    const CrdReadResult r = readCrd(lwbtest::str(path));
+    std::vector<CrdPass> got;
+    size_t counted = 0;
+    const CrdStreamResult s = streamCrd(
+        lwbtest::str(path), {}, nullptr,
+        [&](size_t n) {
+            counted = n;
+            return true;
+        },
+        [&](CrdPass&& p) {
+            got.push_back(std::move(p));
+            return true;
+        });
+    if (!r.ok) {
+        if (!s.ok) return s.error == r.error ? QString() : QString("errors differ: %1 | %2").arg(s.error.c_str(), r.error.c_str());
+        for (const CrdPass& p : got)
+            if (p.problem.empty()) return "readCrd refused the file, streamCrd handed out a usable pass: " + QString(r.error.c_str());
+        return r.error.rfind(got.front().problem, 0) == 0 ? QString() : QString("first problem differs: ") + r.error.c_str();
+    }
+    if (!s.ok) return "streamCrd failed: " + QString::fromStdString(s.error);
+    if (counted != r.file.passes.size() || got.size() != counted || s.passes != counted)
+        return QString("passes: counted %1, handed out %2, read %3").arg(counted).arg(got.size()).arg(r.file.passes.size());
+    for (size_t i = 0; i < got.size(); ++i) {
+        const CrdPass &a = got[i], &b = r.file.passes[i];
+        const QString at = QString("pass %1: ").arg(i + 1);
+        if (a.ordinal != i + 1 || b.ordinal != i + 1) return at + "ordinal";
+        if (a.records.size() != b.records.size()) return at + "record count";
+        for (size_t k = 0; k < a.records.size(); ++k)
+            if (a.records[k].text != b.records[k].text || a.records[k].line != b.records[k].line || a.records[k].id != b.records[k].id)
+                return at + QString("record %1 (line %2)").arg(k).arg(b.records[k].line);
+        if (a.ranges.size() != b.ranges.size() || a.normalPoints.size() != b.normalPoints.size()) return at + "parsed counts";
+        for (size_t k = 0; k < a.ranges.size(); ++k)
+            if (a.ranges[k].secOfDay != b.ranges[k].secOfDay || a.ranges[k].tofS != b.ranges[k].tofS)
+                return at + QString("range %1").arg(k);
+        if (a.problem != b.problem) return at + "problem: " + a.problem.c_str() + " | " + b.problem.c_str();
+        if (a.inheritsHeaders != b.inheritsHeaders || a.endedWithH8 != b.endedWithH8) return at + "block flags";
+        if (a.station.name != b.station.name || a.target.name != b.target.name || a.session.line != b.session.line)
+            return at + "headers";
+    }
+    return {};
+}
+
 /// A sound small v2 pass: lines 1..10.
 const QByteArray kGoodCrd =
     "H1 CRD 2 2021 9 1 21\n"                                  // 1
@@ -121,6 +168,74 @@ QByteArray replaceLine(const QByteArray& text, int line, const QByteArray& with)
 class TestSlrIo : public QObject {
     Q_OBJECT
 private slots:
+    // ---- issue 27: the file read pass by pass (streamCrd) gives what readCrd gives ----------------
+    void streamedAsRead_data() {
+        QTest::addColumn<QString>("file");
+        for (const QString& f : kCrdFiles) QTest::newRow(f.toUtf8().constData()) << f;
+    }
+    void streamedAsRead() {
+        QFETCH(QString, file);
+        if (!lwbtest::haveShared("slr/" + file)) QSKIP("shared SLR data absent (../shared/data/slr)");
+        const QString why = streamDiff(lwbtest::sharedPath("slr/" + file));
+        QVERIFY2(why.isEmpty(), qPrintable(why));
+        // gzip-compressed (blits_201206.frd, 2.3 MB, crosses the reader's 1 MiB blocks both ways).
+        QTemporaryDir dir;
+        QCOMPARE(QProcess::execute("sh", {"-c", "gzip -c '" + lwbtest::sharedPath("slr/" + file) + "' > '" + dir.filePath("f.gz") + "'"}), 0);
+        const QString gz = streamDiff(dir.filePath("f.gz"));
+        QVERIFY2(gz.isEmpty(), qPrintable("gzip: " + gz));
+    }
+
+    // The same on the forms of text the whole-file reader accepts (CRLF, CR alone, a byte-order
+    // mark, no final line end, gzip in one or two members, blocks that are not passes) and its
+    // errors (truncated gzip, NUL, blank only, no H4, data before H1), with the same messages.
+    void streamedAsReadVariants() {
+        QTemporaryDir dir;
+        QByteArray crlf = kGoodCrd, cr = kGoodCrd, twoPasses = kGoodCrd;
+        crlf.replace("\n", "\r\n");
+        cr.replace('\n', '\r');
+        twoPasses.chop(3);
+        twoPasses += "H4 0 2021 9 1 20 50 0 2021 9 1 20 51 0 0 0 0 0 1 0 2 1\n10 75000.5 0.0131 sys1 2 2 0 0 0 na\n"
+                     "H4 1 2021 9 1 21 46 0 -1 -1 -1 -1 -1 -1 0 0 0 0 1 0 2 0\nH9\n";
+        const QList<QPair<QString, QByteArray>> texts = {
+            {"good.frd", kGoodCrd},
+            {"crlf.frd", crlf},
+            {"cr.frd", cr},
+            {"bom.frd", "\xEF\xBB\xBF" + kGoodCrd},
+            {"nofinal.frd", kGoodCrd.left(kGoodCrd.size() - 1)},
+            {"blocks.frd", twoPasses},
+            {"nul.frd", kGoodCrd + QByteArray("10 x\0y\n", 7)},
+            {"blank.frd", "\n  \n\r\n"},
+            {"noh4.frd", "H1 CRD 2 2021 9 1 21\nH2 GLSL 1824 81 1 4 EUROLAS\nH3 hy2c 2006601 2209 46469 0 1 1\nH9\n"},
+            {"csv.frd", "epoch_s,oc_s\n1,2\n"},
+            {"nodata.frd", replaceLine(replaceLine(replaceLine(kGoodCrd, 6, "00 gone"), 7, "00 gone"), 8, "00 gone")},
+        };
+        for (const auto& [name, text] : texts) {
+            QVERIFY(lwbtest::writeText(dir.filePath(name), text));
+            const QString why = streamDiff(dir.filePath(name));
+            QVERIFY2(why.isEmpty(), qPrintable(name + ": " + why));
+        }
+        // gzip: one member, two members (cat a.gz b.gz), and cut short.
+        QVERIFY(lwbtest::writeText(dir.filePath("a.frd"), twoPasses));
+        QCOMPARE(QProcess::execute("sh", {"-c", "cd '" + dir.path() + "' && gzip -c a.frd > a.frd.gz && "
+                                                 "head -c 200 a.frd | gzip -c > two.frd.gz && tail -c +201 a.frd | gzip -c >> two.frd.gz && "
+                                                 "head -c 60 a.frd.gz > cut.frd.gz"}),
+                 0);
+        for (const QString name : {"a.frd.gz", "two.frd.gz", "cut.frd.gz"}) {
+            const QString why = streamDiff(dir.filePath(name));
+            QVERIFY2(why.isEmpty(), qPrintable(name + ": " + why));
+        }
+        const CrdStreamResult cut = streamCrd(lwbtest::str(dir.filePath("cut.frd.gz")), {}, nullptr, {}, [](CrdPass&&) { return true; });
+        QVERIFY2(!cut.ok && cut.error.find("truncated") != std::string::npos, cut.error.c_str());
+        // A pass is handed out as soon as it closes, and a callback returning false stops the read.
+        size_t seen = 0;
+        const CrdStreamResult stop = streamCrd(lwbtest::str(dir.filePath("blocks.frd")), {}, nullptr, {}, [&](CrdPass&&) {
+            return ++seen < 2;
+        });
+        QVERIFY(!stop.ok);
+        QVERIFY2(stop.error.find("cancelled") != std::string::npos, stop.error.c_str());
+        QCOMPARE(seen, size_t(2));
+    }
+
     // ---- CRD: every shared file ---------------------------------------------------------------
     void everyCrdFileParses_data() {
         QTest::addColumn<QString>("file");

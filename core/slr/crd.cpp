@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/line_reader.hpp"
 #include "core/common/text.hpp"
 #include "core/slr/slr_time.hpp"
 
@@ -687,12 +688,26 @@ private:
         open_->records = std::move(pending_);
         pending_.clear();
         if (opened_ < linesAfterH4_.size()) open_->records.reserve(open_->records.size() + linesAfterH4_[opened_]);
-        ++opened_;
+        open_->ordinal = ++opened_;
         open_->records.push_back(std::move(rec));
         return true;
     }
 
 public:
+    /// The passes that have closed, moved out of the file (the open one stays): a reader that
+    /// hands passes out one by one holds one at a time.
+    std::vector<CrdPass> takeClosed() {
+        std::vector<CrdPass> out;
+        std::vector<CrdPass>& v = file_->passes;
+        const size_t closed = open_ ? v.size() - 1 : v.size();
+        if (closed == 0) return out;
+        out.reserve(closed);
+        for (size_t i = 0; i < closed; ++i) out.push_back(std::move(v[i]));
+        v.erase(v.begin(), v.begin() + static_cast<long>(closed));
+        if (open_) open_ = &v.back();
+        return out;
+    }
+
     /// Capacity hints: the lines from each H4 to the next (countLinesAfterH4), so that a pass's
     /// records are allocated once instead of doubling (a 3·10^6-record pass held 1.5 copies).
     void setCapacityHints(std::vector<size_t> linesAfterH4) { linesAfterH4_ = std::move(linesAfterH4); }
@@ -713,22 +728,39 @@ private:
     CrdPass* open_ = nullptr;
 };
 
+// Whether a line is an H4 record (the start of a pass).
+bool isH4Line(std::string_view line) {
+    size_t q = 0;
+    while (q < line.size() && (line[q] == ' ' || line[q] == '\t')) ++q;
+    return q + 1 < line.size() && (line[q] == 'h' || line[q] == 'H') && line[q + 1] == '4' &&
+           (q + 2 == line.size() || line[q + 2] == ' ' || line[q + 2] == '\t' || line[q + 2] == '\r');
+}
+
 // The number of lines from each line that starts an H4 record to the next such line (or the end).
 std::vector<size_t> countLinesAfterH4(std::string_view text) {
     std::vector<size_t> counts;
     size_t pos = 0;
     while (pos < text.size()) {
-        size_t q = pos;
-        while (q < text.size() && (text[q] == ' ' || text[q] == '\t')) ++q;
-        const bool h4 = q + 1 < text.size() && (text[q] == 'h' || text[q] == 'H') && text[q + 1] == '4' &&
-                        (q + 2 == text.size() || text[q + 2] == ' ' || text[q + 2] == '\t' || text[q + 2] == '\r' ||
-                         text[q + 2] == '\n');
-        if (h4) counts.push_back(0);
-        if (!counts.empty()) ++counts.back();
         const size_t end = text.find('\n', pos);
+        const std::string_view line = text.substr(pos, end == std::string_view::npos ? std::string_view::npos : end - pos);
+        if (isH4Line(line)) counts.push_back(0);
+        if (!counts.empty()) ++counts.back();
         pos = end == std::string_view::npos ? text.size() : end + 1;
     }
     return counts;
+}
+
+// One line of the text (without its LF) as a record through the splitter. Every trailing CR goes
+// (so a text never ends with one and LF/CRLF writing is unambiguous).
+bool feedLine(PassSplitter& splitter, std::string_view line, long lineNo, CrdReadResult* res) {
+    if (!line.empty() && line.back() == '\r' && lineNo == 1) res->file.crlf = true;
+    while (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    CrdRecord rec;
+    rec.text = std::string(line);
+    rec.line = lineNo;
+    const Fields fs(line);
+    rec.id = fs.n ? toLower(fs.f[0]) : std::string();
+    return splitter.add(std::move(rec), fs, &res->error);
 }
 
 // Stage 1: the text's lines through the splitter (progress: the first half). False with
@@ -749,18 +781,9 @@ bool splitPasses(std::string_view text, const std::string& src, const Feedback* 
         size_t end = text.find('\n', pos);
         const bool hadNewline = end != std::string_view::npos;
         if (!hadNewline) end = text.size();
-        std::string_view line = text.substr(pos, end - pos);
+        const std::string_view line = text.substr(pos, end - pos);
         pos = hadNewline ? end + 1 : end;
-        ++lineNo;
-        // Every trailing CR goes (so a text never ends with one and LF/CRLF writing is unambiguous).
-        if (!line.empty() && line.back() == '\r' && lineNo == 1) res->file.crlf = true;
-        while (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-        CrdRecord rec;
-        rec.text = std::string(line);
-        rec.line = lineNo;
-        const Fields fs(line);
-        rec.id = fs.n ? toLower(fs.f[0]) : std::string();
-        if (!splitter.add(std::move(rec), fs, &res->error)) return false;
+        if (!feedLine(splitter, line, ++lineNo, res)) return false;
     }
     splitter.finish(lineNo);
     if (res->file.passes.empty()) {
@@ -768,6 +791,18 @@ bool splitPasses(std::string_view text, const std::string& src, const Feedback* 
         return false;
     }
     return true;
+}
+
+// A pass's records parsed; a pass that cannot be read, or has no range record, gets its problem.
+void parseOnePass(CrdPass& p, size_t k, const std::string& src, Sink* sink) {
+    std::string err;
+    if (!parsePassRecords(&p, src, sink, &err)) {
+        p.problem = err;
+    } else if (p.ranges.empty() && p.normalPoints.empty()) {
+        p.problem = where(src, p.session.line) + "pass " + std::to_string(k + 1) + " (" + p.station.name + ", " +
+                    p.target.name + ") has no readable range record (type 10 or 11)";
+        clearParsed(&p);
+    }
 }
 
 // Stage 2: the records of each pass parsed; a pass that cannot be read, or has no range record,
@@ -779,15 +814,7 @@ bool parsePasses(const std::string& src, const Feedback* feedback, Sink* sink, C
             res->error = src + ": cancelled";
             return false;
         }
-        CrdPass& p = passes[k];
-        std::string err;
-        if (!parsePassRecords(&p, src, sink, &err)) {
-            p.problem = err;
-        } else if (p.ranges.empty() && p.normalPoints.empty()) {
-            p.problem = where(src, p.session.line) + "pass " + std::to_string(k + 1) + " (" + p.station.name + ", " +
-                        p.target.name + ") has no readable range record (type 10 or 11)";
-            clearParsed(&p);
-        }
+        parseOnePass(passes[k], k, src, sink);
         if (feedback) feedback->setProgress(0.5 + 0.5 * static_cast<double>(k + 1) / static_cast<double>(passes.size()));
     }
     return true;
@@ -902,6 +929,119 @@ CrdReadResult readCrd(const std::string& path, const CrdReadParams& params, cons
         return r;
     }
     return parseCrdText(text, &text, path, params, feedback);
+}
+
+CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, const Feedback* feedback,
+                          const std::function<bool(size_t passCount)>& begin,
+                          const std::function<bool(CrdPass&& pass)>& onPass) {
+    CrdStreamResult out;
+    const std::string src = path.empty() ? "crd" : path;
+    try {
+        if (std::string e = validate(params); !e.empty()) {
+            out.error = std::move(e);
+            return out;
+        }
+        // Read 1 (the first 10 % of the progress): the passes counted, the lines of each (capacity
+        // hints), and what makes the whole file unreadable found before any pass is handed out:
+        // binary data, nothing but blank lines.
+        std::vector<size_t> linesAfterH4;
+        {
+            core::LineReader lr;
+            if (!lr.open(path)) {
+                out.error = lr.error();
+                return out;
+            }
+            std::string_view line;
+            bool anyText = false;
+            while (lr.next(&line)) {
+                if (line.find('\0') != std::string_view::npos) {
+                    out.error = where(src, lr.lineNumber()) + "binary data (NUL byte): not a CRD text file";
+                    return out;
+                }
+                anyText = anyText || !core::trim(line).empty();
+                if (isH4Line(line)) linesAfterH4.push_back(0);
+                if (!linesAfterH4.empty()) ++linesAfterH4.back();
+                if ((lr.lineNumber() & 0x3fff) == 0 && feedback) {
+                    if (feedback->isCancelled()) {
+                        out.error = src + ": cancelled";
+                        return out;
+                    }
+                    feedback->setProgress(0.1 * lr.fraction());
+                }
+            }
+            if (!lr.error().empty()) {
+                out.error = lr.error();
+                return out;
+            }
+            if (!anyText) {
+                out.error = src + ": empty file";
+                return out;
+            }
+        }
+        if (begin && !begin(linesAfterH4.size())) {
+            out.error = src + ": cancelled";
+            return out;
+        }
+        // Read 2: the records through the splitter; each pass that closes is parsed and handed out.
+        CrdReadResult held;  // the splitter's file: the open pass (and the trailer) only
+        held.file.path = path;
+        Sink sink{&out.warnings, params.maxWarnings};
+        PassSplitter splitter(src, &sink, &held.file);
+        splitter.setCapacityHints(std::move(linesAfterH4));
+        auto handOut = [&]() {
+            for (CrdPass& p : splitter.takeClosed()) {
+                parseOnePass(p, p.ordinal - 1, src, &sink);
+                ++out.passes;
+                if (!onPass(std::move(p))) return false;
+            }
+            return true;
+        };
+        core::LineReader lr;
+        if (!lr.open(path)) {
+            out.error = lr.error();
+            return out;
+        }
+        std::string_view line;
+        while (lr.next(&line)) {
+            if ((lr.lineNumber() & 0x3fff) == 0 && feedback) {
+                if (feedback->isCancelled()) {
+                    out.error = src + ": cancelled";
+                    return out;
+                }
+                feedback->setProgress(0.1 + 0.9 * lr.fraction());
+            }
+            if (!feedLine(splitter, line, lr.lineNumber(), &held)) {
+                out.error = held.error;
+                return out;
+            }
+            if (!handOut()) {
+                out.error = src + ": cancelled";
+                return out;
+            }
+        }
+        if (!lr.error().empty()) {
+            out.error = lr.error();
+            return out;
+        }
+        splitter.finish(lr.lineNumber());
+        if (!handOut()) {
+            out.error = src + ": cancelled";
+            return out;
+        }
+        if (out.passes == 0) {
+            out.error = src + ": no CRD pass (no H4 session header) in " + std::to_string(lr.lineNumber()) + " lines";
+            return out;
+        }
+        sink.close();
+        out.ok = true;
+    } catch (const std::bad_alloc&) {
+        out = CrdStreamResult();
+        out.error = src + ": out of memory (one pass is held at a time: the largest pass does not fit)";
+    } catch (const std::exception& e) {
+        out = CrdStreamResult();
+        out.error = src + ": internal error: " + e.what();
+    }
+    return out;
 }
 
 // ---- writing ---------------------------------------------------------------------------------

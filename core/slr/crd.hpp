@@ -22,6 +22,7 @@
 // pass is unusable, binary data or an empty file stop the read with an error naming file and
 // line.
 #include <cmath>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -203,6 +204,7 @@ struct CrdPass {
     std::string predictionHeader;    ///< H5 text (v2), empty when absent
     bool inheritsHeaders = false;    ///< true when H1/H2/H3 came from an earlier block of the file
     bool endedWithH8 = false;        ///< false when the block was closed by a new H1/H4 or the end of file
+    size_t ordinal = 0;              ///< its place among the file's passes, 1-based (0: made, not read)
 
     /// Every line of the block in order: comments and H1..H3 before the H4, the H4, configs,
     /// data, 9x user records, the H8. Writing these back reproduces the block.
@@ -256,6 +258,25 @@ std::string validate(const CrdReadParams& p);
 /// Parses CRD text; `source` names it in messages. Never throws.
 CrdReadResult parseCrd(std::string_view text, const std::string& source, const CrdReadParams& params = {},
                        const Feedback* feedback = nullptr);
+/// A CRD file read pass by pass (streamCrd): what is known of the whole file at the end.
+struct CrdStreamResult {
+    bool ok = false;                 ///< the file was read to its end (some passes may have problems)
+    std::string error;               ///< "FILE:LINE: what is wrong", as readCrd's
+    std::vector<std::string> warnings;  ///< the reader's, for the whole file (passes' included)
+    size_t passes = 0;               ///< passes handed out
+};
+
+/// Reads a CRD file pass by pass, holding one pass at a time (the memory of the largest pass,
+/// not of the file: a station's daily or monthly file of many passes). First one read through
+/// the file counts its passes (H4 records) and calls begin(count); then each pass, parsed as
+/// readCrd parses it (its `problem` set when it cannot be used, `ordinal` its place), is moved
+/// to onPass as soon as it closes and dropped after. begin or onPass returning false stops the
+/// read (error "cancelled"). Gzip and "-" as readCrd (the standard input is held whole). Never
+/// throws.
+CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, const Feedback* feedback,
+                          const std::function<bool(size_t passCount)>& begin,
+                          const std::function<bool(CrdPass&& pass)>& onPass);
+
 /// Reads and parses a CRD file.
 CrdReadResult readCrd(const std::string& path, const CrdReadParams& params = {}, const Feedback* feedback = nullptr);
 

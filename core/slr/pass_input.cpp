@@ -377,13 +377,15 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
         return r;
     }
     const CrdPass& pass = crd.file.passes[size_t(passIndex)];
+    // (its place in the file it was read from: a pass read alone, by streamCrd, is index 0 here)
+    const size_t number = pass.ordinal ? pass.ordinal : size_t(passIndex) + 1;
     if (!pass.problem.empty()) {
-        r.error = withWarnings(path + ": pass " + std::to_string(passIndex + 1) + " cannot be used: " + pass.problem,
+        r.error = withWarnings(path + ": pass " + std::to_string(number) + " cannot be used: " + pass.problem,
                                r.warnings);
         return r;
     }
     if (pass.ranges.size() < 3) {
-        r.error = withWarnings(path + ": pass " + std::to_string(passIndex + 1) + " holds " +
+        r.error = withWarnings(path + ": pass " + std::to_string(number) + " holds " +
                                    std::to_string(pass.ranges.size()) + " full-rate records; screening needs at least 3",
                                r.warnings);
         return r;
