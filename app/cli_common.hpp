@@ -31,6 +31,7 @@ public:
     bool quiet() const { return has("-q") || has("--quiet"); }
     const std::string& error() const { return m_error; }
     const std::string& usage() const { return m_usage; }
+    void setUsage(std::string usage) { m_usage = std::move(usage); }
 
     bool has(const std::string& name) const { return m_values.count(name) > 0; }
     std::string value(const std::string& name, const std::string& fallback = "") const;
@@ -106,7 +107,9 @@ public:
     ParamOptions(const core::Schema<P>& schema, std::vector<ParamAlias> aliases = {})
         : m_schema(schema), m_aliases(std::move(aliases)) {}
 
+    /// Also fills the usage's "{default:KEY}" from the schema (Schema::fillDefaults).
     void declare(Args& a) const {
+        a.setUsage(m_schema.fillDefaults(a.usage(), P{}));
         a.option("--config", true);
         a.option("--set", true, true);
         a.option("--print-config", false);

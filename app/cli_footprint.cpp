@@ -37,9 +37,9 @@ const char* kFootprintUsage =
     "  --set KEY=VALUE           one parameter (repeatable), e.g. --set segment.threshold_factor=0.2\n"
     "  --print-config            print the effective parameters as JSON and exit\n"
     "  --help-params             every parameter with its unit, range, default and meaning\n"
-    "  --method gauss|tefm|gcm   centre method (default gauss: Wu f.lnf QR + tilt + Guo + LM) = --set method=...\n"
-    "  --preset wu2021|yao2021   verdict criteria (default wu2021)\n"
-    "  --roi N                   ROI side in px (default 32) = --set roi.size=N\n"
+    "  --method gauss|tefm|gcm   centre method (default {default:method}; gauss: Wu f.lnf QR + tilt + Guo + LM) = --set method=...\n"
+    "  --preset wu2021|yao2021   verdict criteria (default {default:preset})\n"
+    "  --roi N                   ROI side in px (default {default:roi.size}) = --set roi.size=N\n"
     "  --center X,Y              nominal spot centre in full-image px; repeat for the two beams of an\n"
     "                            LSI frame (one row per ROI). Without it, the brightest spot-like blob.\n"
     "  --raw-size WxH            size of .raw/.bin frames\n"
@@ -82,7 +82,7 @@ int cmdFootprint(int argc, char** argv) {
     for (const char* o : {"--keep-going", "--help-params", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail("footprint", a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
-        std::cout << kFootprintUsage;
+        std::cout << a.usage();  // (its defaults filled from the schema by declare)
         return kOk;
     }
     if (a.has("--help-params")) {
@@ -301,9 +301,9 @@ const std::string kTrendUsage =
     "IN.csv: header time,beam,x,y[,camera]; time as ISO date/date-time, YYYY-MM, or Unix seconds.\n"
     "OUT.csv: camera,beam,month,n,rejected,x_mean,y_mean,x_std,y_std,dx_px,dy_px,planar_change_px,\n"
     "         pointing_change_arcsec,beam_distance_px,distance_change_px (changes from the first month).\n"
-    "  --arcsec-per-px A    pointing change per pixel (default 0.31, paper 001's LFC) = --set arcsec_per_px=A\n"
-    "  --reject-sigma K     k-sigma rejection of shots within a month (default 3; 0 = off) = --set reject_sigma=K\n"
-    "  --min-shots N        leave out months with fewer shots (default 1) = --set min_shots=N\n"
+    "  --arcsec-per-px A    pointing change per pixel (default {default:arcsec_per_px}, paper 001's LFC) = --set arcsec_per_px=A\n"
+    "  --reject-sigma K     k-sigma rejection of shots within a month (default {default:reject_sigma}; 0 = off) = --set reject_sigma=K\n"
+    "  --min-shots N        leave out months with fewer shots (default {default:min_shots}) = --set min_shots=N\n"
     "\n" + ParamOptions<TrendParams>::paramsHelp("trend", "reject_sigma=2.5");
 }
 

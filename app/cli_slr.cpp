@@ -62,15 +62,15 @@ const char* kSlrUsage =
     "  --mag-oc Y            pixels per second of O-C (paper: 1e10 conventional, 1e7 diffuse)\n"
     "  --area-min N          area limit in pixels: regions at least this large are candidates\n"
     "  --connectivity 4|8    region connectivity (paper: 4 high echo rate, 8 low)\n"
-    "  --cos-c C             cosine constant of the recovery step, 0.5..1 exclusive (default 0.95)\n"
+    "  --cos-c C             cosine constant of the recovery step, 0.5..1 exclusive (default {default:screen.cosine_c})\n"
     "  --preset FILE         per-satellite presets (JSON, the workbench's format): the entry of the\n"
     "                        pass's satellite (CRD H3 name or ILRS id, or --satellite) is applied\n"
     "                        (screening and post-fit); options given here override it\n"
     "  --satellite NAME      look the preset up under NAME (a name or an ILRS id) instead of the\n"
     "                        pass's H3; needed for an O-C CSV, which names no satellite\n"
     "Post-fit:\n"
-    "  --reject K            k of the k-sigma rejection: 2.5 (single-photon) or 3 (multi-photon;\n"
-    "                        default); any value 1..10, 0 = off\n"
+    "  --reject K            k of the k-sigma rejection: 2.5 (single-photon) or 3 (multi-photon);\n"
+    "                        default {default:postfit.reject_sigma}; any value 1..10, 0 = off\n"
     "  --np-bin S            normal-point bin length in s (default: the ILRS length for the\n"
     "                        satellite's altitude; an O-C CSV has no altitude: no normal points\n"
     "                        unless --np-bin or a preset's altitude_km is given)\n"
@@ -413,7 +413,7 @@ int cmdSlr(int argc, char** argv) {
     for (const char* o : {"--quiet", "-q", "--help", "-h", "--help-params", "--all-passes"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail(cmd, a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
-        std::cout << kSlrUsage;
+        std::cout << a.usage();  // (its defaults filled from the schema by declare)
         return kOk;
     }
     if (a.has("--help-params")) {

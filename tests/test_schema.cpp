@@ -2,6 +2,9 @@
 // JSON (configs, --print-config), --set key=value, SLR presets, footprint config files — and a
 // field's accessor touches that field only. A field left out of any path fails here.
 #include <QtTest>
+#include <QDir>
+#include <QRegularExpression>
+#include <map>
 #include <set>
 
 #include "core/calib/calib_params.hpp"
@@ -229,6 +232,86 @@ private slots:
         QVERIFY2(fs.fromJson(j.value, &back, &err, &j), err.c_str());
         QCOMPARE(fs.valueText(*ar, back), std::string("1,5"));
         QCOMPARE(back.verdict.axisRatio.hi, 5.0);
+    }
+
+    // Issue 28: help text names no default by hand. (1) In the CLI's sources, a usage line of an
+    // option that is an alias of a schema key ({"--flag", "key"}) states no default of its own:
+    // a "default" followed by a value must be a {default:KEY} placeholder. (2) Every command's
+    // --help has its placeholders filled with the schema rows' values.
+    void helpDefaultsComeFromTheSchema() {
+        const QDir app(QString(LWB_SOURCE_DIR) + "/app");
+        const QRegularExpression alias(R"re(\{"(--[a-z0-9-]+)",\s*"([a-z_.0-9]+)"\})re");
+        const QRegularExpression handDefault(R"re(default[:]?\s+([-0-9a-z.]+))re");
+        // The values a key may take that are words (a choice's names): "default akaze" restates one.
+        auto choicesOf = [](const std::string& key) {
+            std::set<QString> words;
+            auto add = [&](const auto& schema) {
+                if (const auto* f = schema.find(key); f && f->kind == FieldKind::Choice)
+                    for (const auto& c : f->choices) words.insert(QString::fromStdString(c));
+            };
+            add(slr::slrSchema());
+            add(calib::calibSchema());
+            add(radiometry::radiometrySchema());
+            add(footprint::footprintSchema());
+            add(footprint::trendSchema());
+            return words;
+        };
+        int aliases = 0, checked = 0;
+        for (const QString& name : app.entryList({"cli_*.cpp"})) {
+            const QString text = QString::fromUtf8(lwbtest::readAll(app.filePath(name)));
+            std::map<QString, std::set<QString>> flags;  // flag → the word values of its key(s)
+            for (auto it = alias.globalMatch(text); it.hasNext();) {
+                const auto m = it.next();
+                const std::set<QString> w = choicesOf(m.captured(2).toStdString());
+                flags[m.captured(1)].insert(w.begin(), w.end());
+            }
+            aliases += int(flags.size());
+            for (const QString& line : text.split('\n')) {
+                const QString t = line.trimmed();
+                if (!t.startsWith("\"  --")) continue;
+                const QString flag = t.mid(3).section(QRegularExpression("[ ,=]"), 0, 0);
+                if (!flags.count(flag)) continue;
+                ++checked;
+                for (auto m = handDefault.globalMatch(t); m.hasNext();) {
+                    const auto match = m.next();
+                    const QString d = match.captured(0), v = match.captured(1);
+                    const bool number = v[0].isDigit() || (v.size() > 1 && v[0] == '-' && v[1].isDigit());
+                    if (!number && !flags[flag].count(v)) continue;  // "default: no threshold" describes, not restates
+                    QVERIFY2(false, qPrintable(name + ": " + flag + " states its default by hand (\"" + d +
+                                               "\"): write {default:KEY}\n  " + t));
+                }
+            }
+        }
+        QVERIFY2(aliases >= 30 && checked >= 25, qPrintable(QString("%1 aliases, %2 lines").arg(aliases).arg(checked)));
+        struct Help {
+            QStringList cmd;
+            QString shows;
+        };
+        slr::SlrParams sp;
+        calib::CalibParams cp;
+        radiometry::RadiometryParams rp;
+        footprint::TrendParams tp;
+        footprint::FootprintParams fp;
+        auto val = [](const auto& schema, const auto& p, const char* key) {
+            return QString::fromStdString(schema.valueText(*schema.find(key), p));
+        };
+        const QList<Help> helps = {
+            {{"slr"}, "(default " + val(slr::slrSchema(), sp, "screen.cosine_c") + ")"},
+            {{"footprint"}, "(default " + val(footprint::footprintSchema(), fp, "roi.size") + ")"},
+            {{"trend"}, "(default " + val(footprint::trendSchema(), tp, "min_shots") + ")"},
+            {{"calib", "detector"}, "(default " + val(calib::calibSchema(), cp, "detector.outlier_sigma") + ";"},
+            {{"calib", "waveform"}, "(default " + val(calib::calibSchema(), cp, "waveform.sample_interval_ns") + ")"},
+            {{"calib", "pointing"}, "(" + val(calib::calibSchema(), cp, "pointing.sigma_range") + " m)"},
+            {{"radiometry", "mosaic"}, "(default " + val(radiometry::radiometrySchema(), rp, "mosaic.min_inliers") + ")"},
+            {{"radiometry", "fit"}, "(default " + val(radiometry::radiometrySchema(), rp, "vm_pct") + " %)"},
+            {{"radiometry", "apply"}, "(default " + val(radiometry::radiometrySchema(), rp, "limit_pct") + " %)"},
+        };
+        for (const Help& h : helps) {
+            const lwbtest::CliRun r = lwbtest::runCli(h.cmd + QStringList{"--help"});
+            QCOMPARE(r.exitCode, 0);
+            QVERIFY2(!r.out.contains("{default:"), qPrintable(h.cmd.join(' ') + ": an unfilled placeholder\n" + r.out));
+            QVERIFY2(r.out.contains(h.shows), qPrintable(h.cmd.join(' ') + " --help lacks \"" + h.shows + "\""));
+        }
     }
 };
 

@@ -12,6 +12,7 @@
 #include "core/radiometry/gcp.hpp"
 #include "core/radiometry/mosaic.hpp"
 #include "core/radiometry/radiometry_params.hpp"
+#include "core/radiometry/reflectance.hpp"
 
 using namespace lwb::core;
 
@@ -30,6 +31,8 @@ private slots:
         QCOMPARE(calib::validate(calib::FeatureMatchParams{}), std::string());
         QCOMPARE(radiometry::validate(radiometry::MosaicParams{}), std::string());
         QCOMPARE(radiometry::validate(radiometry::GcpFitParams{}), std::string());
+        QCOMPARE(radiometry::validate(radiometry::ReflectanceFitParams{}), std::string());
+        QCOMPARE(radiometry::validate(radiometry::ApplyParams{}), std::string());
     }
 
     void outOfRangeValuesAreRefusedByTheirKey() {
@@ -59,8 +62,20 @@ private slots:
             {[] { radiometry::MosaicParams m; m.minInliers = 3; return radiometry::validate(m); }, "mosaic.min_inliers"},
             {[] { radiometry::GcpFitParams g; g.collinearTolerance = 0.6; return radiometry::validate(g); },
              "gcp.collinear_tolerance"},
+            {[] { radiometry::ReflectanceFitParams f; f.spectrometerPct = 100; return radiometry::validate(f); }, "vm_pct"},
+            {[] { radiometry::ReflectanceFitParams f; f.minRegionPixels = 0; return radiometry::validate(f); },
+             "min_region_pixels"},
+            {[] { radiometry::ReflectanceFitParams f; f.minRegionFraction = 1.5; return radiometry::validate(f); },
+             "min_region_fraction"},
+            {[] { radiometry::ReflectanceFitParams f; f.dnMin = NAN; return radiometry::validate(f); }, "dn_min"},
+            {[] { radiometry::ApplyParams a; a.dnMax = INFINITY; return radiometry::validate(a); }, "dn_max"},
         };
         for (const auto& [error, key] : cases) refusedNaming(error(), key);
+        // The reflectance steps' rule between two rows: the DN range's ends in order.
+        radiometry::ApplyParams a;
+        a.dnMin = 500;
+        a.dnMax = 400;
+        QVERIFY(radiometry::validate(a).find("min < max") != std::string::npos);
     }
 };
 

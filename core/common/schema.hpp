@@ -315,6 +315,24 @@ public:
         return keys;
     }
 
+    /// `text` with every "{default:KEY}" replaced by KEY's value in `defaults` (valueText): help
+    /// text that names a default takes it from the schema row, never restates it. An unknown key
+    /// stays as "{default:KEY?}" (test_schema looks for it in every command's help).
+    std::string fillDefaults(std::string text, const P& defaults) const {
+        static const std::string open = "{default:";
+        size_t at = text.find(open);
+        while (at != std::string::npos) {
+            const size_t close = text.find('}', at);
+            if (close == std::string::npos) break;
+            const std::string key = text.substr(at + open.size(), close - at - open.size());
+            const Field* f = find(key);
+            const std::string value = f ? valueText(*f, defaults) : "{default:" + key + "?}";
+            text.replace(at, close + 1 - at, value);
+            at = text.find(open, at + value.size());
+        }
+        return text;
+    }
+
     /// "key  unit  range  default  doc" lines for --help and docs.
     std::string describe(const P& defaults) const {
         std::string s;

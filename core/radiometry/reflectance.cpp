@@ -10,6 +10,7 @@
 #include "core/common/image_codecs.hpp"
 #include "core/common/image_header.hpp"
 #include "core/common/text.hpp"
+#include "core/radiometry/radiometry_params.hpp"
 
 namespace lwb::core::radiometry {
 
@@ -138,10 +139,12 @@ bool readRegionCsv(const std::string& path, std::vector<Region>* out, std::strin
 }
 
 std::string validate(const ReflectanceFitParams& p) {
-    if (!std::isfinite(p.dnMin) || !std::isfinite(p.dnMax) || !(p.dnMin < p.dnMax)) return "the DN range needs min < max";
-    if (!(p.spectrometerPct >= 0 && p.spectrometerPct < 100)) return "spectrometer uncertainty must be within 0..100 %";
-    if (p.minRegionPixels < 1 || p.minRegionPixels > 1000000000) return "minimum region pixels must be >= 1";
-    if (!(p.minRegionFraction >= 0 && p.minRegionFraction <= 1)) return "minimum region fraction must be within 0..1";
+    // The ranges of the schema's rows (radiometry_params.cpp: dn_min, dn_max, vm_pct,
+    // min_region_*), the other fields at their defaults; then the rule between two of them.
+    RadiometryParams r;
+    r.fit = p;
+    if (std::string e = radiometrySchema().validate(r); !e.empty()) return e;
+    if (!(p.dnMin < p.dnMax)) return "the DN range needs min < max";
     return {};
 }
 
@@ -297,8 +300,10 @@ ReflectanceFitResult fitReflectance(const std::vector<Region>& regions, const Re
 }
 
 std::string validate(const ApplyParams& p) {
-    if (!std::isfinite(p.dnMin) || !std::isfinite(p.dnMax) || !(p.dnMin < p.dnMax)) return "the DN range needs min < max";
-    return {};
+    ReflectanceFitParams f;  // (the DN range's rows; apply shares them with the fit)
+    f.dnMin = p.dnMin;
+    f.dnMax = p.dnMax;
+    return validate(f);
 }
 
 ApplyResult applyReflectance(const cv::Mat& dn, const ReflectanceFit& fit, const ApplyParams& params) {
