@@ -227,46 +227,46 @@ void evaluateTrendMany(const PostfitResult& r, const double* t, size_t n, double
     }
 }
 
-PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& use,
-                      const std::vector<double>& tof, const PostfitParams& p, const Feedback* fb) {
-    PostfitResult res;
+namespace {
+
+// A stretch of the used points without a long gap: [a, b) in the time order, and its trend.
+struct Seg {
+    size_t a, b;
+    TrendSegment trend;
+};
+
+// Stage 1: the inputs' lengths and values; *used the points to fit (all when `use` is empty).
+bool checkPostfitInputs(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& use,
+                        const std::vector<double>& tof, const PostfitParams& p, std::vector<uint8_t>* used,
+                        PostfitResult* res) {
     if (const std::string e = validate(p); !e.empty()) {
-        res.error = e;
-        return res;
+        res->error = e;
+        return false;
     }
     const size_t n = t.size();
     if (oc.size() != n || (!use.empty() && use.size() != n) || (!tof.empty() && tof.size() != n)) {
-        res.error = "epochs, O-C, mask and TOF differ in length";
-        return res;
+        res->error = "epochs, O-C, mask and TOF differ in length";
+        return false;
     }
-    std::vector<uint8_t> used(n, 1);
-    if (!use.empty()) used = use;
+    used->assign(n, 1);
+    if (!use.empty()) *used = use;
     for (size_t i = 0; i < n; ++i) {
-        if (!used[i]) continue;
+        if (!(*used)[i]) continue;
         if (!std::isfinite(t[i]) || !std::isfinite(oc[i]) || (!tof.empty() && !std::isfinite(tof[i]))) {
-            res.error = "point " + std::to_string(i) + " has a non-finite epoch, O-C or TOF";
-            return res;
+            res->error = "point " + std::to_string(i) + " has a non-finite epoch, O-C or TOF";
+            return false;
         }
     }
-    res.used = std::count(used.begin(), used.end(), uint8_t{1});
-    if (res.used < 2) {
-        res.error = "only " + std::to_string(res.used) + " accepted point(s): at least 2 are needed for a trend";
-        return res;
+    res->used = std::count(used->begin(), used->end(), uint8_t{1});
+    if (res->used < 2) {
+        res->error = "only " + std::to_string(res->used) + " accepted point(s): at least 2 are needed for a trend";
+        return false;
     }
-    res.binLengthS = p.binLengthS > 0 ? p.binLengthS : normalPointBinS(p.altitudeKm);
-    // Used points in time order.
-    std::vector<uint32_t> ord;
-    for (size_t i = 0; i < n; ++i)
-        if (used[i]) ord.push_back(static_cast<uint32_t>(i));
-    std::stable_sort(ord.begin(), ord.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
-    res.kept = used;
-    // Segments: split at gaps longer than splitGapS (automatic: 3 bins, at least 20 s).
-    double split = p.splitGapS;
-    if (split == 0) split = std::max(20.0, 3 * (std::isfinite(res.binLengthS) ? res.binLengthS : 0.0));
-    struct Seg {
-        size_t a, b;  // [a, b) in ord
-        TrendSegment trend;
-    };
+    return true;
+}
+
+// Stage 2: the used points (`ord`, in time order) split at gaps longer than `split` s.
+std::vector<Seg> splitAtGaps(const std::vector<double>& t, const std::vector<uint32_t>& ord, double split) {
     std::vector<Seg> segs;
     for (size_t k = 0; k < ord.size();) {
         size_t e = k + 1;
@@ -281,146 +281,221 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
         segs.push_back(g);
         k = e;
     }
-    // Gross outliers against the local track (leave-one-out quadratic through 4 + 4 neighbours
-    // of the same segment), with one robust σ for the pass. Only the worst point of a
-    // neighbourhood goes per round (an outlier also pulls its neighbours' fits), three rounds at
-    // most (the k·σ rejection takes what is left). Part of the rejection: off with rejectSigma = 0.
-    if (p.grossSigma > 0 && p.rejectSigma > 0 && ord.size() >= 9) {
-        double sig = -1;
-        for (int round = 0; round < 3; ++round) {
-            std::vector<uint32_t> live;
-            std::vector<size_t> segOf;
-            for (size_t gi = 0; gi < segs.size(); ++gi)
-                for (size_t q = segs[gi].a; q < segs[gi].b; ++q)
-                    if (res.kept[ord[q]]) {
-                        live.push_back(ord[q]);
-                        segOf.push_back(gi);
-                    }
-            std::vector<double> r(live.size(), NAN);
-            for (size_t a0 = 0; a0 < live.size();) {
-                size_t b0 = a0;
-                while (b0 < live.size() && segOf[b0] == segOf[a0]) ++b0;
-                if (b0 - a0 >= 5) {
-                    const std::vector<uint32_t> part(live.begin() + static_cast<long>(a0), live.begin() + static_cast<long>(b0));
-                    const std::vector<double> rp = localTrackResiduals(t, oc, part, 4);
-                    std::copy(rp.begin(), rp.end(), r.begin() + static_cast<long>(a0));
+    return segs;
+}
+
+// Stage 3: gross outliers against the local track (leave-one-out quadratic through 4 + 4
+// neighbours of the same segment), with one robust σ for the pass. Only the worst point of a
+// neighbourhood goes per round (an outlier also pulls its neighbours' fits), three rounds at
+// most (the k·σ rejection takes what is left). Part of the rejection: off with rejectSigma = 0.
+void rejectGrossOutliers(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint32_t>& ord,
+                         const std::vector<Seg>& segs, const PostfitParams& p, PostfitResult* res) {
+    if (!(p.grossSigma > 0 && p.rejectSigma > 0 && ord.size() >= 9)) return;
+    double sig = -1;
+    for (int round = 0; round < 3; ++round) {
+        std::vector<uint32_t> live;
+        std::vector<size_t> segOf;
+        for (size_t gi = 0; gi < segs.size(); ++gi)
+            for (size_t q = segs[gi].a; q < segs[gi].b; ++q)
+                if (res->kept[ord[q]]) {
+                    live.push_back(ord[q]);
+                    segOf.push_back(gi);
                 }
-                a0 = b0;
+        std::vector<double> r(live.size(), NAN);
+        for (size_t a0 = 0; a0 < live.size();) {
+            size_t b0 = a0;
+            while (b0 < live.size() && segOf[b0] == segOf[a0]) ++b0;
+            if (b0 - a0 >= 5) {
+                const std::vector<uint32_t> part(live.begin() + static_cast<long>(a0), live.begin() + static_cast<long>(b0));
+                const std::vector<double> rp = localTrackResiduals(t, oc, part, 4);
+                std::copy(rp.begin(), rp.end(), r.begin() + static_cast<long>(a0));
             }
-            if (sig < 0) {  // σ from the first round (all points): robust to the outliers themselves
-                std::vector<double> av;
-                for (double v : r)
-                    if (std::isfinite(v)) av.push_back(std::fabs(v));
-                if (av.size() < 5) break;
-                std::nth_element(av.begin(), av.begin() + static_cast<long>(av.size() / 2), av.end());
-                sig = 1.4826 * av[av.size() / 2];
-                if (!(sig > 0)) break;
-            }
-            bool any = false;
-            for (size_t q = 0; q < live.size(); ++q) {
-                if (!std::isfinite(r[q]) || std::fabs(r[q]) <= p.grossSigma * sig) continue;
-                bool worst = true;
-                for (size_t e = q >= 4 ? q - 4 : 0; e < std::min(live.size(), q + 5) && worst; ++e)
-                    if (e != q && segOf[e] == segOf[q] && std::isfinite(r[e]) && std::fabs(r[e]) > std::fabs(r[q])) worst = false;
-                if (!worst) continue;
-                res.kept[live[q]] = 0;
-                ++res.grossRejected;
-                any = true;
-            }
-            if (!any) break;
+            a0 = b0;
         }
+        if (sig < 0) {  // σ from the first round (all points): robust to the outliers themselves
+            std::vector<double> av;
+            for (double v : r)
+                if (std::isfinite(v)) av.push_back(std::fabs(v));
+            if (av.size() < 5) break;
+            std::nth_element(av.begin(), av.begin() + static_cast<long>(av.size() / 2), av.end());
+            sig = 1.4826 * av[av.size() / 2];
+            if (!(sig > 0)) break;
+        }
+        bool any = false;
+        for (size_t q = 0; q < live.size(); ++q) {
+            if (!std::isfinite(r[q]) || std::fabs(r[q]) <= p.grossSigma * sig) continue;
+            bool worst = true;
+            for (size_t e = q >= 4 ? q - 4 : 0; e < std::min(live.size(), q + 5) && worst; ++e)
+                if (e != q && segOf[e] == segOf[q] && std::isfinite(r[e]) && std::fabs(r[e]) > std::fabs(r[q])) worst = false;
+            if (!worst) continue;
+            res->kept[live[q]] = 0;
+            ++res->grossRejected;
+            any = true;
+        }
+        if (!any) break;
     }
-    // Segment-level degree limits and the k·σ iteration follow.
-    if (res.used > 0 && t[ord.front()] == t[ord.back()] && p.degree > 0)
-        res.warnings.push_back("all accepted epochs are equal: the trend is a constant");
-    res.residuals.assign(n, NAN);
-    const double k = p.rejectSigma;
-    std::vector<double> basis(32);
-    // P_0..P_degree of every used point at its segment's scaled epoch, once: the fit–reject
-    // iterations take the normal equations and the Legendre residuals from them (the same values
-    // as computing them again each time, a tenth of a sparse pass's scale search). Not for
-    // passes so large that the table would pass 64 MB: those compute them as they go.
-    const size_t mAll = static_cast<size_t>(p.degree) + 1;
-    std::vector<double> pb;
-    if (ord.size() * mAll <= (size_t{8} << 20)) {
-        pb.resize(ord.size() * mAll);
-        for (const Seg& g : segs)
-            for (size_t q = g.a; q < g.b; ++q)
-                legendre((t[ord[q]] - g.trend.tCenter) / g.trend.tHalfSpan, p.degree, &pb[q * mAll]);
+}
+
+// Stage 4: the trend of every segment fitted to the kept points, then the k·σ rejection, until
+// the kept points settle. The model of a segment is a Legendre polynomial of degree up to
+// p.degree, or with p.autoDegree the degree or cubic spline of the lowest BIC.
+class TrendIteration {
+public:
+    TrendIteration(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint32_t>& ord,
+                   std::vector<Seg>& segs, const PostfitParams& p, PostfitResult* res)
+        : t_(t), oc_(oc), ord_(ord), segs_(segs), p_(p), res_(res), mAll_(static_cast<size_t>(p.degree) + 1) {
+        // P_0..P_degree of every used point at its segment's scaled epoch, once: the fit–reject
+        // iterations take the normal equations and the Legendre residuals from them (the same
+        // values as computing them again each time, a tenth of a sparse pass's scale search).
+        // Not for passes so large that the table would pass 64 MB: those compute them as they go.
+        if (ord.size() * mAll_ <= (size_t{8} << 20)) {
+            pb_.resize(ord.size() * mAll_);
+            for (const Seg& g : segs)
+                for (size_t q = g.a; q < g.b; ++q)
+                    legendre((t[ord[q]] - g.trend.tCenter) / g.trend.tHalfSpan, p.degree, &pb_[q * mAll_]);
+        }
+        frozen_.assign(segs.size(), INT32_MIN);
+        // PostfitParams::trendOnly: normal equations updated point by point (inFit: in the sums).
+        incremental_ = p.trendOnly && !p.autoDegree && !pb_.empty();
+        inc_.resize(incremental_ ? segs.size() : 0);
+        inFit_.assign(incremental_ ? ord.size() : 0, 0);
     }
-    bool warnedDegree = false;
-    std::vector<int> frozen(segs.size(), INT32_MIN);
-    // PostfitParams::trendOnly: normal equations updated point by point (inFit: in the sums).
-    const bool incremental = p.trendOnly && !p.autoDegree && !pb.empty();
+
+    // False (res->error) when the rejection removed every point or on cancel.
+    bool run(const Feedback* fb) {
+        const double k = p_.rejectSigma;
+        for (int it = 1; it <= p_.maxIterations; ++it) {
+            res_->iterations = it;
+            long long nkAll = 0;
+            double ss = 0;
+            for (size_t gi = 0; gi < segs_.size(); ++gi) nkAll += fitSegment(gi, it, &ss);
+            if (nkAll < 1) {
+                res_->error = "the rejection removed every point";
+                return false;
+            }
+            res_->sigmaS = std::sqrt(ss / static_cast<double>(nkAll));
+            if (cancelled(fb)) {
+                res_->error = "cancelled";
+                return false;
+            }
+            if (k == 0) break;
+            if (!reject(k * res_->sigmaS)) break;
+            if (it == p_.maxIterations) {
+                res_->converged = false;
+                res_->warnings.push_back("the " + formatDouble(k, 3) + "-sigma rejection did not settle in " +
+                                         std::to_string(p_.maxIterations) + " iterations");
+            }
+        }
+        return true;
+    }
+
+private:
     struct Incremental {
         Eigen::MatrixXd sums;  // lower triangle of Σ P Pᵀ (all mAll terms)
         Eigen::VectorXd rhs;   // Σ P·(oc − yRef)
         double yRef = 0;
     };
-    std::vector<Incremental> inc(incremental ? segs.size() : 0);
-    std::vector<uint8_t> inFit(incremental ? ord.size() : 0, 0);
-    for (int it = 1; it <= p.maxIterations; ++it) {
-        res.iterations = it;
-        long long nkAll = 0;
-        double ss = 0;
-        for (size_t gi = 0; gi < segs.size(); ++gi) {
-            Seg& g = segs[gi];
-            long long nk = 0;
-            for (size_t q = g.a; q < g.b; ++q) nk += res.kept[ord[q]];
-            int dMax = g.trend.tEnd > g.trend.tStart ? p.degree : 0;
-            if (nk < 2 * (dMax + 1)) {
-                const int d = std::max(0, static_cast<int>(nk / 2) - 1);
-                if (d < dMax && !warnedDegree && (!p.autoDegree || segs.size() == 1)) {
-                    warnedDegree = true;
-                    res.warnings.push_back("only " + std::to_string(nk) + " points: trend degree lowered from " +
-                                           std::to_string(p.degree) + " to at most " + std::to_string(d));
-                }
-                dMax = std::min(dMax, d);
+    // A segment's normal equations up to degree m − 1 on the O-C less the kept points' mean y0.
+    struct Normal {
+        Eigen::MatrixXd Ms;  // full (symmetric)
+        Eigen::VectorXd rhs;
+        double y0 = 0, yy = 0;
+    };
+
+    // One segment fitted (its trend and the residuals of its points); the kept count, *ss += the
+    // kept points' squared residuals.
+    long long fitSegment(size_t gi, int it, double* ss) {
+        Seg& g = segs_[gi];
+        long long nk = 0;
+        for (size_t q = g.a; q < g.b; ++q) nk += res_->kept[ord_[q]];
+        int dMax = g.trend.tEnd > g.trend.tStart ? p_.degree : 0;
+        if (nk < 2 * (dMax + 1)) {
+            const int d = std::max(0, static_cast<int>(nk / 2) - 1);
+            if (d < dMax && !warnedDegree_ && (!p_.autoDegree || segs_.size() == 1)) {
+                warnedDegree_ = true;
+                res_->warnings.push_back("only " + std::to_string(nk) + " points: trend degree lowered from " +
+                                         std::to_string(p_.degree) + " to at most " + std::to_string(d));
             }
-            if (nk < 1) {  // every point of the segment rejected: keep its previous trend
-                if (g.trend.coefficients.empty()) g.trend.coefficients.assign(1, 0.0);
-                continue;
+            dMax = std::min(dMax, d);
+        }
+        if (nk < 1) {  // every point of the segment rejected: keep its previous trend
+            if (g.trend.coefficients.empty()) g.trend.coefficients.assign(1, 0.0);
+            return 0;
+        }
+        const Normal ne = normalEquations(gi, nk, dMax + 1);
+        const int code = chooseModel(gi, it, nk, dMax, ne);
+        Eigen::VectorXd c;
+        if (code >= 0) {
+            c = solve(ne, code);
+            c(0) += ne.y0;  // P_0 = 1: the mean goes back into the constant term
+            g.trend.degree = code;
+            g.trend.knots = 0;
+        } else {
+            double rss = 0;
+            c = splineFit(g, ne, -code, &rss);
+            c.array() += ne.y0;  // the B-spline basis sums to 1
+            g.trend.degree = 3;
+            g.trend.knots = -code;
+        }
+        g.trend.coefficients.assign(c.data(), c.data() + c.size());
+        const bool table = !pb_.empty() && g.trend.knots == 0;  // trendAt from the table
+        const size_t terms = g.trend.coefficients.size();
+        for (size_t q = g.a; q < g.b; ++q) {
+            const uint32_t i = ord_[q];
+            if (table) {
+                const double* bq = &pb_[q * mAll_];
+                double v = 0;
+                for (size_t j = 0; j < terms; ++j) v += g.trend.coefficients[j] * bq[j];
+                res_->residuals[i] = oc_[i] - v;
+            } else {
+                res_->residuals[i] = oc_[i] - segmentAt(g.trend, t_[i]);
             }
-            // Normal equations up to dMax (Legendre basis: the lower degrees are leading blocks), on
-            // the O-C less the segment's mean (so that yᵀy − cᵀ·rhs gives the residual sum exactly
-            // enough for the criterion).
-            double y0 = 0;
-            for (size_t q = g.a; q < g.b; ++q)
-                if (res.kept[ord[q]]) y0 += oc[ord[q]];
-            y0 /= static_cast<double>(nk);
-            const int m = dMax + 1;
-            Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m);
-            Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
-            double yy = 0;
-            if (incremental) {
-                // The sums of the points in the fit so far, on the O-C less the first round's mean,
-                // brought up to date with the points whose `kept` changed; then centred on this
-                // round's mean y0 (P_0 = 1, so column 0 holds Σ P_j): Σ P_j·(oc − y0) =
-                // Σ P_j·(oc − yRef) − (y0 − yRef)·Σ P_j.
-                Incremental& s = inc[gi];
-                if (s.sums.size() == 0) {
-                    s.yRef = y0;
-                    s.sums = Eigen::MatrixXd::Zero(static_cast<long>(mAll), static_cast<long>(mAll));
-                    s.rhs = Eigen::VectorXd::Zero(static_cast<long>(mAll));
-                }
-                for (size_t q = g.a; q < g.b; ++q) {
-                    const uint32_t i = ord[q];
-                    if (res.kept[i] == inFit[q]) continue;
-                    inFit[q] = res.kept[i];
-                    const double sign = res.kept[i] ? 1.0 : -1.0, d = sign * (oc[i] - s.yRef);
-                    const double* bq = &pb[q * mAll];
-                    for (size_t a = 0; a < mAll; ++a) {
-                        s.rhs(static_cast<long>(a)) += bq[a] * d;
-                        const double sa = sign * bq[a];
-                        for (size_t c = 0; c <= a; ++c) s.sums(static_cast<long>(a), static_cast<long>(c)) += sa * bq[c];
-                    }
-                }
-                M = s.sums.topLeftCorner(m, m);
-                rhs = s.rhs.head(m) - (y0 - s.yRef) * M.col(0);
+            if (res_->kept[i]) *ss += res_->residuals[i] * res_->residuals[i];
+        }
+        return nk;
+    }
+
+    // Normal equations up to degree m − 1 (Legendre basis: the lower degrees are leading
+    // blocks), on the O-C less the segment's mean (so that yᵀy − cᵀ·rhs gives the residual sum
+    // exactly enough for the criterion).
+    Normal normalEquations(size_t gi, long long nk, int m) {
+        const Seg& g = segs_[gi];
+        Normal ne;
+        for (size_t q = g.a; q < g.b; ++q)
+            if (res_->kept[ord_[q]]) ne.y0 += oc_[ord_[q]];
+        ne.y0 /= static_cast<double>(nk);
+        const double y0 = ne.y0;
+        Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m);
+        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
+        if (incremental_) {
+            // The sums of the points in the fit so far, on the O-C less the first round's mean,
+            // brought up to date with the points whose `kept` changed; then centred on this
+            // round's mean y0 (P_0 = 1, so column 0 holds Σ P_j): Σ P_j·(oc − y0) =
+            // Σ P_j·(oc − yRef) − (y0 − yRef)·Σ P_j.
+            Incremental& s = inc_[gi];
+            if (s.sums.size() == 0) {
+                s.yRef = y0;
+                s.sums = Eigen::MatrixXd::Zero(static_cast<long>(mAll_), static_cast<long>(mAll_));
+                s.rhs = Eigen::VectorXd::Zero(static_cast<long>(mAll_));
             }
+            for (size_t q = g.a; q < g.b; ++q) {
+                const uint32_t i = ord_[q];
+                if (res_->kept[i] == inFit_[q]) continue;
+                inFit_[q] = res_->kept[i];
+                const double sign = res_->kept[i] ? 1.0 : -1.0, d = sign * (oc_[i] - s.yRef);
+                const double* bq = &pb_[q * mAll_];
+                for (size_t a = 0; a < mAll_; ++a) {
+                    s.rhs(static_cast<long>(a)) += bq[a] * d;
+                    const double sa = sign * bq[a];
+                    for (size_t c = 0; c <= a; ++c) s.sums(static_cast<long>(a), static_cast<long>(c)) += sa * bq[c];
+                }
+            }
+            M = s.sums.topLeftCorner(m, m);
+            rhs = s.rhs.head(m) - (y0 - s.yRef) * M.col(0);
+        } else {
             const int blockCols = 256;
-            Eigen::MatrixXd B(m, incremental ? 0 : blockCols);
-            Eigen::VectorXd y(incremental ? 0 : blockCols);
+            Eigen::MatrixXd B(m, blockCols);
+            Eigen::VectorXd y(blockCols);
             int fill = 0;
             auto flush = [&]() {
                 if (fill == 0) return;
@@ -428,172 +503,286 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
                 rhs.noalias() += B.leftCols(fill) * y.head(fill);
                 fill = 0;
             };
-            for (size_t q = g.a; q < g.b && !incremental; ++q) {
-                const uint32_t i = ord[q];
-                if (!res.kept[i]) continue;
-                const double* bq = basis.data();
-                if (pb.empty()) legendre((t[i] - g.trend.tCenter) / g.trend.tHalfSpan, dMax, basis.data());
-                else bq = &pb[q * mAll];
+            for (size_t q = g.a; q < g.b; ++q) {
+                const uint32_t i = ord_[q];
+                if (!res_->kept[i]) continue;
+                const double* bq = basis_.data();
+                if (pb_.empty()) legendre((t_[i] - g.trend.tCenter) / g.trend.tHalfSpan, m - 1, basis_.data());
+                else bq = &pb_[q * mAll_];
                 for (int j = 0; j < m; ++j) B(j, fill) = bq[j];
-                y(fill) = oc[i] - y0;
-                yy += (oc[i] - y0) * (oc[i] - y0);
+                y(fill) = oc_[i] - y0;
+                ne.yy += (oc_[i] - y0) * (oc_[i] - y0);
                 if (++fill == blockCols) flush();
             }
             flush();
-            const Eigen::MatrixXd Ms = M.selfadjointView<Eigen::Lower>();
-            auto solve = [&](int d) {
-                const Eigen::MatrixXd Md = Ms.topLeftCorner(d + 1, d + 1);
-                Eigen::VectorXd c = Md.ldlt().solve(rhs.head(d + 1));
-                if (!c.allFinite()) c = Md.completeOrthogonalDecomposition().solve(rhs.head(d + 1));
-                return c;
-            };
-            // Cubic splines of K intervals (K + 3 coefficients) on the same centred O-C.
-            auto splineFit = [&](int K, double* rss) {
-                const int mk = K + 3;
-                Eigen::MatrixXd S = Eigen::MatrixXd::Zero(mk, mk);
-                Eigen::VectorXd sr = Eigen::VectorXd::Zero(mk);
-                std::vector<int> perInterval(static_cast<size_t>(K), 0);
-                // The normal matrix is symmetric with 4 diagonals: S(a, a + o) summed in band[4a + o]
-                // (o = 0..3) and mirrored below. Each entry gets the same products in the same
-                // point order as summing every S(j + r, j + c) (w[r]·w[c] = w[c]·w[r]).
-                // The points come in time order, so a run of them shares an interval j: its 16
-                // band entries and 4 right-hand sides are held in locals over the run (loaded at
-                // its start, stored at its end), the same sums in the same order.
-                std::vector<double> band(static_cast<size_t>(4 * mk + 16), 0.0), rs(static_cast<size_t>(mk + 4), 0.0);
-                double w[4], lb[16], lr[4];
-                int cur = -1;
-                auto store = [&] {
-                    if (cur < 0) return;
-                    std::copy(lb, lb + 16, &band[static_cast<size_t>(4 * cur)]);
-                    std::copy(lr, lr + 4, &rs[static_cast<size_t>(cur)]);
-                };
-                for (size_t q = g.a; q < g.b; ++q) {
-                    const uint32_t i = ord[q];
-                    if (!res.kept[i]) continue;
-                    const int j = splineBasis(g.trend.tStart, g.trend.tEnd, K, t[i], w);
-                    ++perInterval[static_cast<size_t>(j)];
-                    if (j != cur) {
-                        store();
-                        cur = j;
-                        std::copy(&band[static_cast<size_t>(4 * j)], &band[static_cast<size_t>(4 * j)] + 16, lb);
-                        std::copy(&rs[static_cast<size_t>(j)], &rs[static_cast<size_t>(j)] + 4, lr);
-                    }
-                    const double d = oc[i] - y0;
-                    for (int r = 0; r < 4; ++r) {
-                        lr[r] += w[r] * d;
-                        for (int c2 = r; c2 < 4; ++c2) lb[4 * r + (c2 - r)] += w[r] * w[c2];
-                    }
-                }
+        }
+        ne.Ms = M.selfadjointView<Eigen::Lower>();
+        ne.rhs = rhs;
+        return ne;
+    }
+
+    static Eigen::VectorXd solve(const Normal& ne, int d) {
+        const Eigen::MatrixXd Md = ne.Ms.topLeftCorner(d + 1, d + 1);
+        Eigen::VectorXd c = Md.ldlt().solve(ne.rhs.head(d + 1));
+        if (!c.allFinite()) c = Md.completeOrthogonalDecomposition().solve(ne.rhs.head(d + 1));
+        return c;
+    }
+
+    // Cubic splines of K intervals (K + 3 coefficients) on the same centred O-C.
+    Eigen::VectorXd splineFit(const Seg& g, const Normal& ne, int K, double* rss) const {
+        const int mk = K + 3;
+        Eigen::MatrixXd S = Eigen::MatrixXd::Zero(mk, mk);
+        Eigen::VectorXd sr = Eigen::VectorXd::Zero(mk);
+        std::vector<int> perInterval(static_cast<size_t>(K), 0);
+        // The normal matrix is symmetric with 4 diagonals: S(a, a + o) summed in band[4a + o]
+        // (o = 0..3) and mirrored below. Each entry gets the same products in the same point
+        // order as summing every S(j + r, j + c) (w[r]·w[c] = w[c]·w[r]). The points come in
+        // time order, so a run of them shares an interval j: its 16 band entries and 4
+        // right-hand sides are held in locals over the run (loaded at its start, stored at its
+        // end), the same sums in the same order.
+        std::vector<double> band(static_cast<size_t>(4 * mk + 16), 0.0), rs(static_cast<size_t>(mk + 4), 0.0);
+        double w[4], lb[16], lr[4];
+        int cur = -1;
+        auto store = [&] {
+            if (cur < 0) return;
+            std::copy(lb, lb + 16, &band[static_cast<size_t>(4 * cur)]);
+            std::copy(lr, lr + 4, &rs[static_cast<size_t>(cur)]);
+        };
+        for (size_t q = g.a; q < g.b; ++q) {
+            const uint32_t i = ord_[q];
+            if (!res_->kept[i]) continue;
+            const int j = splineBasis(g.trend.tStart, g.trend.tEnd, K, t_[i], w);
+            ++perInterval[static_cast<size_t>(j)];
+            if (j != cur) {
                 store();
-                for (int a = 0; a < mk; ++a) sr(a) = rs[static_cast<size_t>(a)];
-                for (int a = 0; a < mk; ++a)
-                    for (int o = 0; o < 4 && a + o < mk; ++o) S(a, a + o) = S(a + o, a) = band[static_cast<size_t>(4 * a + o)];
-                // Every interval must hold points (else coefficients are free); a tiny ridge keeps
-                // the solution bounded.
-                const bool covered = std::all_of(perInterval.begin(), perInterval.end(), [](int c) { return c >= 2; });
-                S.diagonal().array() += 1e-12 * S.trace() / mk;
-                Eigen::VectorXd c = S.ldlt().solve(sr);
-                if (!c.allFinite()) c = S.completeOrthogonalDecomposition().solve(sr);
-                *rss = covered ? std::max(yy - c.dot(sr), 1e-300 + 1e-15 * yy) : 1e308;
-                return c;
-            };
-            // The model: code ≥ 0 a Legendre degree, < 0 a spline of −code intervals.
-            int code = dMax;
-            if (p.autoDegree && frozen[gi] != INT32_MIN) {
-                code = frozen[gi] >= 0 ? std::min(frozen[gi], dMax) : frozen[gi];
-            } else if (p.autoDegree) {
-                double bestBic = 1e308;
-                const double nd = static_cast<double>(nk);
-                for (int d = 0; d <= dMax; ++d) {
-                    const Eigen::VectorXd c = solve(d);
-                    const double rss = std::max(yy - c.dot(rhs.head(d + 1)), 1e-300 + 1e-15 * yy);
-                    const double bic = nd * std::log(rss / nd) + (d + 1) * std::log(nd);
-                    if (bic < bestBic - 1e-9) {
-                        bestBic = bic;
-                        code = d;
-                    }
-                }
-                const double span = g.trend.tEnd - g.trend.tStart, L = std::isfinite(res.binLengthS) ? res.binLengthS : 0;
-                for (int K = 2; L > 0 && K * L <= span && nk >= 2 * (K + 3) && K <= 64; K *= 2) {
-                    double rss = 0;
-                    splineFit(K, &rss);
-                    if (!(rss < 1e307)) continue;
-                    const double bic = nd * std::log(rss / nd) + (K + 3) * std::log(nd);
-                    if (bic < bestBic - 1e-9) {
-                        bestBic = bic;
-                        code = -K;
-                    }
-                }
-                if (it >= 3) frozen[gi] = code;  // settle the model: the rejection then converges
+                cur = j;
+                std::copy(&band[static_cast<size_t>(4 * j)], &band[static_cast<size_t>(4 * j)] + 16, lb);
+                std::copy(&rs[static_cast<size_t>(j)], &rs[static_cast<size_t>(j)] + 4, lr);
             }
-            Eigen::VectorXd c;
-            if (code >= 0) {
-                c = solve(code);
-                c(0) += y0;  // P_0 = 1: the mean goes back into the constant term
-                g.trend.degree = code;
-                g.trend.knots = 0;
-            } else {
-                double rss = 0;
-                c = splineFit(-code, &rss);
-                c.array() += y0;  // the B-spline basis sums to 1
-                g.trend.degree = 3;
-                g.trend.knots = -code;
+            const double d = oc_[i] - ne.y0;
+            for (int r = 0; r < 4; ++r) {
+                lr[r] += w[r] * d;
+                for (int c2 = r; c2 < 4; ++c2) lb[4 * r + (c2 - r)] += w[r] * w[c2];
             }
-            g.trend.coefficients.assign(c.data(), c.data() + c.size());
-            const bool table = !pb.empty() && g.trend.knots == 0;  // trendAt from the table
-            const size_t terms = g.trend.coefficients.size();
-            for (size_t q = g.a; q < g.b; ++q) {
-                const uint32_t i = ord[q];
-                if (table) {
-                    const double* bq = &pb[q * mAll];
-                    double v = 0;
-                    for (size_t j = 0; j < terms; ++j) v += g.trend.coefficients[j] * bq[j];
-                    res.residuals[i] = oc[i] - v;
-                } else {
-                    res.residuals[i] = oc[i] - segmentAt(g.trend, t[i]);
-                }
-                if (res.kept[i]) ss += res.residuals[i] * res.residuals[i];
+        }
+        store();
+        for (int a = 0; a < mk; ++a) sr(a) = rs[static_cast<size_t>(a)];
+        for (int a = 0; a < mk; ++a)
+            for (int o = 0; o < 4 && a + o < mk; ++o) S(a, a + o) = S(a + o, a) = band[static_cast<size_t>(4 * a + o)];
+        // Every interval must hold points (else coefficients are free); a tiny ridge keeps the
+        // solution bounded.
+        const bool covered = std::all_of(perInterval.begin(), perInterval.end(), [](int c) { return c >= 2; });
+        S.diagonal().array() += 1e-12 * S.trace() / mk;
+        Eigen::VectorXd c = S.ldlt().solve(sr);
+        if (!c.allFinite()) c = S.completeOrthogonalDecomposition().solve(sr);
+        *rss = covered ? std::max(ne.yy - c.dot(sr), 1e-300 + 1e-15 * ne.yy) : 1e308;
+        return c;
+    }
+
+    // The model: code ≥ 0 a Legendre degree, < 0 a spline of −code intervals. With autoDegree
+    // the lowest BIC, settled from the third iteration on (the rejection then converges).
+    int chooseModel(size_t gi, int it, long long nk, int dMax, const Normal& ne) {
+        if (!p_.autoDegree) return dMax;
+        if (frozen_[gi] != INT32_MIN) return frozen_[gi] >= 0 ? std::min(frozen_[gi], dMax) : frozen_[gi];
+        const Seg& g = segs_[gi];
+        int code = dMax;
+        double bestBic = 1e308;
+        const double nd = static_cast<double>(nk);
+        for (int d = 0; d <= dMax; ++d) {
+            const Eigen::VectorXd c = solve(ne, d);
+            const double rss = std::max(ne.yy - c.dot(ne.rhs.head(d + 1)), 1e-300 + 1e-15 * ne.yy);
+            const double bic = nd * std::log(rss / nd) + (d + 1) * std::log(nd);
+            if (bic < bestBic - 1e-9) {
+                bestBic = bic;
+                code = d;
             }
-            nkAll += nk;
         }
-        if (nkAll < 1) {
-            res.error = "the rejection removed every point";
-            return res;
+        const double span = g.trend.tEnd - g.trend.tStart, L = std::isfinite(res_->binLengthS) ? res_->binLengthS : 0;
+        for (int K = 2; L > 0 && K * L <= span && nk >= 2 * (K + 3) && K <= 64; K *= 2) {
+            double rss = 0;
+            splineFit(g, ne, K, &rss);
+            if (!(rss < 1e307)) continue;
+            const double bic = nd * std::log(rss / nd) + (K + 3) * std::log(nd);
+            if (bic < bestBic - 1e-9) {
+                bestBic = bic;
+                code = -K;
+            }
         }
-        res.sigmaS = std::sqrt(ss / static_cast<double>(nkAll));
-        if (cancelled(fb)) {
-            res.error = "cancelled";
-            return res;
-        }
-        if (k == 0) break;
+        if (it >= 3) frozen_[gi] = code;
+        return code;
+    }
+
+    // The k·σ rejection over every used point; true when a point changed side.
+    bool reject(double lim) {
         bool changed = false;
-        const double lim = k * res.sigmaS;
-        for (const uint32_t i : ord) {
+        for (const uint32_t i : ord_) {
             // A gross outlier stays out (its residual is against the trend it never entered).
-            if (!res.kept[i] && std::fabs(res.residuals[i]) > p.grossSigma * res.sigmaS && p.grossSigma > 0) continue;
-            const uint8_t keep = std::fabs(res.residuals[i]) <= lim;
-            if (keep != res.kept[i]) {
-                res.kept[i] = keep;
+            if (!res_->kept[i] && std::fabs(res_->residuals[i]) > p_.grossSigma * res_->sigmaS && p_.grossSigma > 0) continue;
+            const uint8_t keep = std::fabs(res_->residuals[i]) <= lim;
+            if (keep != res_->kept[i]) {
+                res_->kept[i] = keep;
                 changed = true;
             }
         }
-        if (!changed) break;
-        if (it == p.maxIterations) {
-            res.converged = false;
-            res.warnings.push_back("the " + formatDouble(k, 3) + "-sigma rejection did not settle in " +
-                                   std::to_string(p.maxIterations) + " iterations");
-        }
+        return changed;
     }
-    res.degree = 0;
+
+    const std::vector<double>& t_;
+    const std::vector<double>& oc_;
+    const std::vector<uint32_t>& ord_;
+    std::vector<Seg>& segs_;
+    const PostfitParams& p_;
+    PostfitResult* res_;
+    const size_t mAll_;
+    std::vector<double> pb_, basis_ = std::vector<double>(32);
+    std::vector<int> frozen_;
+    bool warnedDegree_ = false, incremental_ = false;
+    std::vector<Incremental> inc_;
+    std::vector<uint8_t> inFit_;
+};
+
+// Stage 5: the segments' trends into the result; the longest segment's as the pass's trend.
+void collectTrend(const std::vector<Seg>& segs, PostfitResult* res) {
+    res->degree = 0;
     size_t longest = 0;
     for (size_t gi = 0; gi < segs.size(); ++gi) {
-        res.degree = std::max(res.degree, segs[gi].trend.degree);
+        res->degree = std::max(res->degree, segs[gi].trend.degree);
         if (segs[gi].b - segs[gi].a > segs[longest].b - segs[longest].a) longest = gi;
-        res.segments.push_back(segs[gi].trend);
+        res->segments.push_back(segs[gi].trend);
     }
-    res.tCenter = segs[longest].trend.tCenter;
-    res.tHalfSpan = segs[longest].trend.tHalfSpan;
-    res.coefficients = segs[longest].trend.coefficients;
+    res->tCenter = segs[longest].trend.tCenter;
+    res->tHalfSpan = segs[longest].trend.tHalfSpan;
+    res->coefficients = segs[longest].trend.coefficients;
+}
+
+// Stage 6: the residuals of the points not fitted (against the trend), the statistics of the
+// kept ones. False (res->error) when none is kept.
+bool finalResiduals(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& used,
+                    PostfitResult* res) {
+    const size_t n = t.size();
+    std::vector<double> tu, yu;
+    for (size_t i = 0; i < n; ++i)
+        if (!used[i]) tu.push_back(t[i]);
+    yu.resize(tu.size());
+    evaluateTrendMany(*res, tu.data(), tu.size(), yu.data());
+    for (size_t i = 0, k = 0; i < n; ++i)
+        if (!used[i]) res->residuals[i] = oc[i] - yu[k++];
+    std::vector<double> kr;
+    for (size_t i = 0; i < n; ++i)
+        if (res->kept[i]) kr.push_back(res->residuals[i]);
+    res->rejected = res->used - static_cast<long long>(kr.size());
+    if (kr.empty()) {
+        res->error = "the rejection removed every point";
+        return false;
+    }
+    res->stats = residualStats(kr);
+    return true;
+}
+
+// Stage 7: the normal points: the kept points binned from the start of the day, a bin with at
+// least the ILRS minimum of points gives one (at the kept epoch nearest the bin's mean epoch).
+void formNormalPoints(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<double>& tof,
+                      const PostfitParams& p, PostfitResult* res) {
+    const size_t n = t.size();
+    const bool stationKnown = std::isfinite(p.stationLatDeg) && std::isfinite(p.stationLonDeg) && std::isfinite(p.dayStartMjd);
+    // The ILRS minimum: day or night as given, else bin by bin from the Sun at a known station,
+    // else the day minimum (the safer one).
+    using DN = PostfitParams::DayNight;
+    const bool perBin = p.dayNight == DN::Auto && stationKnown;
+    const int fixedMinimum = p.dayNight == DN::Night ? 3 : 6;
+    res->minPointsPerBin = p.minPointsPerBin > 0 ? p.minPointsPerBin : fixedMinimum;
+    if (!p.normalPoints) return;
+    if (perBin && p.minPointsPerBin == 0) res->minPointsPerBin = 3;
+    const double L = res->binLengthS;
+    std::vector<uint32_t> idx;
+    for (size_t i = 0; i < n; ++i)
+        if (res->kept[i]) idx.push_back(static_cast<uint32_t>(i));
+    std::stable_sort(idx.begin(), idx.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
+    auto binOf = [&](double x) { return static_cast<long long>(std::floor((x - p.dayStartS) / L)); };
+    std::vector<double> br;
+    for (size_t a = 0; a < idx.size();) {
+        const long long bin = binOf(t[idx[a]]);
+        size_t b = a;
+        while (b < idx.size() && binOf(t[idx[b]]) == bin) ++b;
+        const int cnt = static_cast<int>(b - a);
+        // The ILRS minimum: 6 by day, 3 by night (the Sun at the station at the bin's middle).
+        int minPts = p.minPointsPerBin > 0 ? p.minPointsPerBin : fixedMinimum;
+        double sunEl = NAN;
+        if (stationKnown) {
+            const double mid = p.dayStartS + (static_cast<double>(bin) + 0.5) * L;
+            sunEl = sunElevationDeg(p.dayStartMjd + (mid - p.dayStartS) / 86400.0, p.stationLatDeg, p.stationLonDeg);
+            const bool day = isDaylight(sunEl);
+            (day ? res->dayBins : res->nightBins)++;
+            if (p.minPointsPerBin == 0 && perBin) {
+                minPts = day ? 6 : 3;
+                res->minPointsPerBin = std::max(res->minPointsPerBin, minPts);
+            }
+        }
+        if (cnt < minPts) {
+            ++res->binsTooSmall;
+            a = b;
+            continue;
+        }
+        double meanT = 0;
+        br.clear();
+        for (size_t j = a; j < b; ++j) {
+            meanT += t[idx[j]];
+            br.push_back(res->residuals[idx[j]]);
+        }
+        meanT /= cnt;
+        uint32_t ep = idx[a];
+        for (size_t j = a; j < b; ++j)
+            if (std::fabs(t[idx[j]] - meanT) < std::fabs(t[ep] - meanT)) ep = idx[j];
+        const ResidualStats bs = residualStats(br);
+        NormalPoint np;
+        np.epochS = t[ep];
+        np.secondsOfDay = t[ep] - p.dayStartS;
+        np.binStartS = p.dayStartS + static_cast<double>(bin) * L;
+        np.windowS = L;
+        np.points = cnt;
+        np.meanResidualS = bs.mean;
+        np.ocS = oc[ep] - res->residuals[ep] + bs.mean;  // trend(t_j) + mean residual
+        if (!tof.empty()) np.tofS = tof[ep] - res->residuals[ep] + bs.mean;
+        np.rmsPs = bs.rms * 1e12;
+        np.skew = bs.skew;
+        np.kurtosis = bs.kurtosis;
+        np.peakMinusMeanPs = bs.peakMinusMean * 1e12;
+        np.returnRatePct = p.fireRateHz > 0 ? 100.0 * cnt / (p.fireRateHz * L) : NAN;
+        np.pointIndex = ep;
+        np.minPoints = minPts;
+        np.sunElevationDeg = sunEl;
+        res->normalPoints.push_back(np);
+        a = b;
+    }
+    if (res->normalPoints.empty())
+        res->warnings.push_back("no bin reaches " + std::to_string(res->minPointsPerBin) + " points: no normal point");
+}
+
+}  // namespace
+
+PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& use,
+                      const std::vector<double>& tof, const PostfitParams& p, const Feedback* fb) {
+    PostfitResult res;
+    std::vector<uint8_t> used;
+    if (!checkPostfitInputs(t, oc, use, tof, p, &used, &res)) return res;
+    const size_t n = t.size();
+    res.binLengthS = p.binLengthS > 0 ? p.binLengthS : normalPointBinS(p.altitudeKm);
+    // Used points in time order.
+    std::vector<uint32_t> ord;
+    for (size_t i = 0; i < n; ++i)
+        if (used[i]) ord.push_back(static_cast<uint32_t>(i));
+    std::stable_sort(ord.begin(), ord.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
+    res.kept = used;
+    // Segments: split at gaps longer than splitGapS (automatic: 3 bins, at least 20 s).
+    double split = p.splitGapS;
+    if (split == 0) split = std::max(20.0, 3 * (std::isfinite(res.binLengthS) ? res.binLengthS : 0.0));
+    std::vector<Seg> segs = splitAtGaps(t, ord, split);
+    rejectGrossOutliers(t, oc, ord, segs, p, &res);
+    if (res.used > 0 && t[ord.front()] == t[ord.back()] && p.degree > 0)
+        res.warnings.push_back("all accepted epochs are equal: the trend is a constant");
+    res.residuals.assign(n, NAN);
+    if (!TrendIteration(t, oc, ord, segs, p, &res).run(fb)) return res;
+    collectTrend(segs, &res);
     if (p.trendOnly) {
         res.rejected = res.used - std::count(res.kept.begin(), res.kept.end(), uint8_t{1});
         if (res.rejected == res.used) {
@@ -603,99 +792,8 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
         res.ok = true;
         return res;
     }
-    {
-        std::vector<double> tu, yu;
-        for (size_t i = 0; i < n; ++i)
-            if (!used[i]) tu.push_back(t[i]);
-        yu.resize(tu.size());
-        evaluateTrendMany(res, tu.data(), tu.size(), yu.data());
-        for (size_t i = 0, k = 0; i < n; ++i)
-            if (!used[i]) res.residuals[i] = oc[i] - yu[k++];
-    }
-    std::vector<double> kr;
-    for (size_t i = 0; i < n; ++i)
-        if (res.kept[i]) kr.push_back(res.residuals[i]);
-    res.rejected = res.used - static_cast<long long>(kr.size());
-    if (kr.empty()) {
-        res.error = "the rejection removed every point";
-        return res;
-    }
-    res.stats = residualStats(kr);
-
-    // Normal points.
-    const bool stationKnown = std::isfinite(p.stationLatDeg) && std::isfinite(p.stationLonDeg) && std::isfinite(p.dayStartMjd);
-    // The ILRS minimum: day or night as given, else bin by bin from the Sun at a known station,
-    // else the day minimum (the safer one).
-    using DN = PostfitParams::DayNight;
-    const bool perBin = p.dayNight == DN::Auto && stationKnown;
-    const int fixedMinimum = p.dayNight == DN::Night ? 3 : 6;
-    res.minPointsPerBin = p.minPointsPerBin > 0 ? p.minPointsPerBin : fixedMinimum;
-    if (p.normalPoints) {
-        if (perBin && p.minPointsPerBin == 0) res.minPointsPerBin = 3;
-        const double L = res.binLengthS;
-        std::vector<uint32_t> idx;
-        for (size_t i = 0; i < n; ++i)
-            if (res.kept[i]) idx.push_back(static_cast<uint32_t>(i));
-        std::stable_sort(idx.begin(), idx.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
-        auto binOf = [&](double x) { return static_cast<long long>(std::floor((x - p.dayStartS) / L)); };
-        std::vector<double> br;
-        for (size_t a = 0; a < idx.size();) {
-            const long long bin = binOf(t[idx[a]]);
-            size_t b = a;
-            while (b < idx.size() && binOf(t[idx[b]]) == bin) ++b;
-            const int cnt = static_cast<int>(b - a);
-            // The ILRS minimum: 6 by day, 3 by night (the Sun at the station at the bin's middle).
-            int minPts = p.minPointsPerBin > 0 ? p.minPointsPerBin : fixedMinimum;
-            double sunEl = NAN;
-            if (stationKnown) {
-                const double mid = p.dayStartS + (static_cast<double>(bin) + 0.5) * L;
-                sunEl = sunElevationDeg(p.dayStartMjd + (mid - p.dayStartS) / 86400.0, p.stationLatDeg, p.stationLonDeg);
-                const bool day = isDaylight(sunEl);
-                (day ? res.dayBins : res.nightBins)++;
-                if (p.minPointsPerBin == 0 && perBin) {
-                    minPts = day ? 6 : 3;
-                    res.minPointsPerBin = std::max(res.minPointsPerBin, minPts);
-                }
-            }
-            if (cnt < minPts) {
-                ++res.binsTooSmall;
-                a = b;
-                continue;
-            }
-            double meanT = 0;
-            br.clear();
-            for (size_t j = a; j < b; ++j) {
-                meanT += t[idx[j]];
-                br.push_back(res.residuals[idx[j]]);
-            }
-            meanT /= cnt;
-            uint32_t ep = idx[a];
-            for (size_t j = a; j < b; ++j)
-                if (std::fabs(t[idx[j]] - meanT) < std::fabs(t[ep] - meanT)) ep = idx[j];
-            const ResidualStats bs = residualStats(br);
-            NormalPoint np;
-            np.epochS = t[ep];
-            np.secondsOfDay = t[ep] - p.dayStartS;
-            np.binStartS = p.dayStartS + static_cast<double>(bin) * L;
-            np.windowS = L;
-            np.points = cnt;
-            np.meanResidualS = bs.mean;
-            np.ocS = oc[ep] - res.residuals[ep] + bs.mean;  // trend(t_j) + mean residual
-            if (!tof.empty()) np.tofS = tof[ep] - res.residuals[ep] + bs.mean;
-            np.rmsPs = bs.rms * 1e12;
-            np.skew = bs.skew;
-            np.kurtosis = bs.kurtosis;
-            np.peakMinusMeanPs = bs.peakMinusMean * 1e12;
-            np.returnRatePct = p.fireRateHz > 0 ? 100.0 * cnt / (p.fireRateHz * L) : NAN;
-            np.pointIndex = ep;
-            np.minPoints = minPts;
-            np.sunElevationDeg = sunEl;
-            res.normalPoints.push_back(np);
-            a = b;
-        }
-        if (res.normalPoints.empty())
-            res.warnings.push_back("no bin reaches " + std::to_string(res.minPointsPerBin) + " points: no normal point");
-    }
+    if (!finalResiduals(t, oc, used, &res)) return res;
+    formNormalPoints(t, oc, tof, p, &res);
     res.ok = true;
     return res;
 }
