@@ -339,116 +339,179 @@ ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t
     return s;
 }
 
-AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
-                            const Feedback* fb) {
-    AutoScaleResult res;
-    const size_t n = t.size();
-    if (n < 3 || oc.size() != n) {
-        res.error = "the automatic mode needs at least 3 points";
-        return res;
+namespace {
+
+// One trial of the scale search: the extraction at scale (k, c, conn) on every window, scored.
+struct Trial {
+    bool usable = false;  // false: the scale is unusable (too coarse in time for the windows)
+    double k = 0, c = 0;
+    int conn = 8;
+    ScaleTrial rec;
+};
+
+// One window of a trial.
+struct WindowOut {
+    bool ok = false;
+    int area = 0;
+    ExtractionScore score;
+};
+
+// The automatic scale search of chooseScale, in stages: the pass prepared (time order, O-C
+// gate, scoring windows), the coarse search (ladders over the O-C scale, or over the time scale
+// alone, or the one manual scale), the refinement around the best, the answer. A scale (k, c):
+// O-C pixel Δo = G·2^-k (or manual), time pixel Δt = c/(r·a), a = Δo/G (or manual).
+class ScaleSearch {
+public:
+    ScaleSearch(const ScreenParams& params, const Feedback* fb, AutoScaleResult* res)
+        : params_(params), fb_(fb), res_(res), oAuto_(params.magOc == 0), tAuto_(params.magT == 0),
+          cAuto_(params.connectivity == 0), conn0_(cAuto_ ? 8 : params.connectivity) {}
+
+    // Stage 1: time order, the O-C gate, the scoring windows. False (res->error) when the pass
+    // cannot be searched.
+    bool prepare(const std::vector<double>& t, const std::vector<double>& oc) {
+        const size_t n = t.size();
+        if (n < 3 || oc.size() != n) {
+            res_->error = "the automatic mode needs at least 3 points";
+            return false;
+        }
+        std::vector<uint32_t> order(n);
+        std::iota(order.begin(), order.end(), 0u);
+        if (!std::is_sorted(t.begin(), t.end()))
+            std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
+        const double span = t[order.back()] - t[order.front()];
+        if (!(span > 0)) {
+            res_->error = "all epochs are equal: no time span in which to find a track";
+            return false;
+        }
+        const auto [q005, q995] = quantilesOf<2>(oc, {0.005, 0.995});
+        gate_ = q995 - q005;
+        if (!(gate_ > 0)) {
+            const auto mm = std::minmax_element(oc.begin(), oc.end());
+            gate_ = *mm.second - *mm.first;
+        }
+        if (!(gate_ > 0)) {
+            res_->warnings.push_back("all O-C values are equal: the scale is set for a 1 ps span");
+            gate_ = 1e-12;
+        }
+        res_->spanOcS = gate_;
+        res_->ratePerS = static_cast<double>(n) / span;
+        makeWindows(t, oc, order);
+        base_ = params_;
+        base_.automatic = true;
+        base_.followTrack = false;  // the trials score the image's own result
+        base_.acceptFloorless = false;
+        // The trials keep one refinement round: a sparse pass against a fitted-trend O-C is
+        // judged on its flattened O-C, which decides the scale of passes such as JASON1 7080
+        // (without it, recall 0.966 → 0.932 there). Dropping the second round inside the trials
+        // left the results of the real passes as they were (the 7 of docs/slr-detection.md, 13
+        // of the other 14 screenable passes of the shared files, the filtered station passes,
+        // the golden outputs: blits pass 8, a filtered pass, now keeps all 227 points, not 226)
+        // and changed three of 54 simulated passes by at most one point (F1 equal or better),
+        // for a fifth of the time of a sparse pass.
+        base_.refineRounds = std::min(base_.refineRounds, 1);
+        return true;
     }
-    // Time order.
-    std::vector<uint32_t> order(n);
-    std::iota(order.begin(), order.end(), 0u);
-    if (!std::is_sorted(t.begin(), t.end()))
-        std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
-    const double span = t[order.back()] - t[order.front()];
-    if (!(span > 0)) {
-        res.error = "all epochs are equal: no time span in which to find a track";
-        return res;
+
+    // Stage 2: the coarse search.
+    void coarse() {
+        if (oAuto_) ladders();
+        else if (tAuto_) timeLadder();
+        else take(runTrial(0, 0.1, conn0_));
     }
-    const auto [q005, q995] = quantilesOf<2>(oc, {0.005, 0.995});
-    double gate = q995 - q005;
-    if (!(gate > 0)) {
-        const auto mm = std::minmax_element(oc.begin(), oc.end());
-        gate = *mm.second - *mm.first;
+
+    // Stage 3: half steps around the best in the free dimensions, then the other connectivity at
+    // the best of those. The connectivity trial at the current best runs beside the half steps
+    // and is kept when they leave the best where it was (the usual case); otherwise it is run
+    // again at the new best. Either way the trials taken, and their order, are the same as
+    // running the two steps one after the other.
+    void refine() {
+        const double k0 = best_.k, c0 = best_.c;
+        const double otherConn = conn0_ == 8 ? 4.0 : 8.0;
+        std::vector<std::array<double, 3>> cand;
+        const std::vector<double> ks = oAuto_ ? std::vector<double>{k0 - 0.5, k0, k0 + 0.5} : std::vector<double>{k0};
+        std::vector<double> cs = {c0};
+        if (tAuto_)
+            cs = oAuto_ ? std::vector<double>{c0 / 2, c0, c0 * 2} : std::vector<double>{c0 / std::sqrt(2.0), c0, c0 * std::sqrt(2.0)};
+        for (double k : ks)
+            for (double c : cs)
+                if (!(k == k0 && c == c0)) cand.push_back({k, c, static_cast<double>(conn0_)});
+        const size_t halfSteps = cand.size();
+        if (cAuto_) cand.push_back({k0, c0, otherConn});
+        const std::vector<Trial> out = runTrials(cand);
+        for (size_t i = 0; i < halfSteps; ++i) take(out[i]);
+        if (cAuto_ && !cancelled(fb_)) {
+            if (best_.k == k0 && best_.c == c0) take(out[halfSteps]);
+            else take(runTrials({{best_.k, best_.c, otherConn}}).front());
+        }
     }
-    if (!(gate > 0)) {
-        res.warnings.push_back("all O-C values are equal: the scale is set for a 1 ps span");
-        gate = 1e-12;
+
+    bool found() const { return best_.any; }
+
+    // Stage 4: the chosen scale into the result; doubtful when no scale shows a clear track.
+    void answer() {
+        if (best_.score <= 0) {
+            res_->doubt = "automatic mode: no scale shows a clear track (best score " + formatFixed(best_.score, 1) + " of " +
+                          std::to_string(res_->trials.size()) + " trials): the accepted points cannot be told from noise";
+            res_->warnings.push_back(res_->doubt);
+        }
+        res_->magT = 1.0 / dT(best_.k, best_.c);
+        res_->magOc = 1.0 / dO(best_.k);
+        res_->connectivity = best_.conn;
+        res_->ok = true;
     }
-    res.spanOcS = gate;
-    res.ratePerS = static_cast<double>(n) / span;
+
+private:
+    double dO(double k) const { return oAuto_ ? gate_ * std::pow(2.0, -k) : 1.0 / params_.magOc; }
+    double dT(double k, double c) const { return tAuto_ ? c / (rate_ * dO(k) / gate_) : 1.0 / params_.magT; }
 
     // Scoring windows: everything, or three runs of consecutive (time-ordered) points.
-    const size_t maxPts = static_cast<size_t>(params.autoMaxPoints);
-    std::vector<std::pair<size_t, size_t>> win;  // [begin, end) in time order
-    if (n <= maxPts) {
-        win.push_back({0, n});
-    } else {
-        const size_t m = maxPts / 3;
-        for (double f : {1.0 / 6, 0.5, 5.0 / 6}) {
-            const size_t c = static_cast<size_t>(f * static_cast<double>(n));
-            const size_t b = std::min(n - m, c > m / 2 ? c - m / 2 : 0);
-            win.push_back({b, b + m});
+    void makeWindows(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint32_t>& order) {
+        const size_t n = t.size();
+        const size_t maxPts = static_cast<size_t>(params_.autoMaxPoints);
+        std::vector<std::pair<size_t, size_t>> win;  // [begin, end) in time order
+        if (n <= maxPts) {
+            win.push_back({0, n});
+        } else {
+            const size_t m = maxPts / 3;
+            for (double f : {1.0 / 6, 0.5, 5.0 / 6}) {
+                const size_t c = static_cast<size_t>(f * static_cast<double>(n));
+                const size_t b = std::min(n - m, c > m / 2 ? c - m / 2 : 0);
+                win.push_back({b, b + m});
+            }
         }
-    }
-    std::vector<double> st, so;
-    std::vector<std::pair<size_t, size_t>> slices;
-    double winSpan = 0;
-    for (const auto& [b, e] : win) {
-        slices.push_back({st.size(), st.size() + (e - b)});
-        for (size_t i = b; i < e; ++i) {
-            st.push_back(t[order[i]]);
-            so.push_back(oc[order[i]]);
+        double winSpan = 0;
+        for (const auto& [b, e] : win) {
+            slices_.push_back({st_.size(), st_.size() + (e - b)});
+            for (size_t i = b; i < e; ++i) {
+                st_.push_back(t[order[i]]);
+                so_.push_back(oc[order[i]]);
+            }
+            winSpan += t[order[e - 1]] - t[order[b]];
         }
-        winSpan += t[order[e - 1]] - t[order[b]];
+        rate_ = winSpan > 0 ? static_cast<double>(st_.size()) / winSpan : res_->ratePerS;
+        meanWinSpan_ = winSpan / static_cast<double>(win.size());
     }
-    const double rate = winSpan > 0 ? static_cast<double>(st.size()) / winSpan : res.ratePerS;
-    const double meanWinSpan = winSpan / static_cast<double>(win.size());
 
-    const bool oAuto = params.magOc == 0, tAuto = params.magT == 0, cAuto = params.connectivity == 0;
-    const int conn0 = cAuto ? 8 : params.connectivity;
-    // A scale (k, c): O-C pixel Δo = G·2^-k (or manual), time pixel Δt = c/(r·a), a = Δo/G (or manual).
-    auto dO = [&](double k) { return oAuto ? gate * std::pow(2.0, -k) : 1.0 / params.magOc; };
-    auto dT = [&](double k, double c) { return tAuto ? c / (rate * dO(k) / gate) : 1.0 / params.magT; };
-
-    ScreenParams base = params;
-    base.automatic = true;
-    base.followTrack = false;  // the trials score the image's own result
-    base.acceptFloorless = false;
-    // The trials keep one refinement round: a sparse pass against a fitted-trend O-C is judged
-    // on its flattened O-C, which decides the scale of passes such as JASON1 7080 (without it,
-    // recall 0.966 → 0.932 there). Dropping the second round inside the trials left the
-    // results of the real passes as they were (the 7 of docs/slr-detection.md, 13 of the other
-    // 14 screenable passes of the shared files, the filtered station passes, the golden outputs: blits
-    // pass 8, a filtered pass, now keeps all 227 points, not 226) and changed three of 54
-    // simulated passes by at most one point (F1 equal or better), for a fifth of the time of a
-    // sparse pass.
-    base.refineRounds = std::min(base.refineRounds, 1);
-
-    // One trial: the extraction at scale (k, c, conn) on every window, scored. Touches nothing
-    // shared, so trials run side by side (runInParallel); their results are taken in a fixed
-    // order (take), which keeps the choice the same whatever the number of threads.
-    struct Trial {
-        bool usable = false;  // false: the scale is unusable (too coarse in time for the windows)
-        double k = 0, c = 0;
-        int conn = 8;
-        ScaleTrial rec;
-    };
     // A trial's screening parameters at scale (k, c, conn); false: the scale is unusable (too
     // coarse in time for the windows, or absurd).
-    auto trialParams = [&](double k, double c, int conn, ScreenParams* tp) {
+    bool trialParams(double k, double c, int conn, ScreenParams* tp) const {
         const double dt = dT(k, c), doc = dO(k);
-        if (!(dt > 0) || !(doc > 0) || dt > meanWinSpan / 8) return false;
-        *tp = base;
+        if (!(dt > 0) || !(doc > 0) || dt > meanWinSpan_ / 8) return false;
+        *tp = base_;
         tp->magT = 1.0 / dt;
         tp->magOc = 1.0 / doc;
         tp->connectivity = conn;
         return !(tp->magT > 1e15 || tp->magOc > 1e18);
-    };
+    }
+
     // One window of a trial. Each window is screened on its own (as a short pass), so that
-    // windows far apart in time and slope do not share slope histograms.
-    struct WindowOut {
-        bool ok = false;
-        int area = 0;
-        ExtractionScore score;
-    };
-    auto runWindow = [&](const ScreenParams& tp, size_t w) {
+    // windows far apart in time and slope do not share slope histograms. Touches nothing
+    // shared: windows and trials run side by side.
+    WindowOut runWindow(const ScreenParams& tp, size_t w) const {
         WindowOut out;
-        const auto [b, e] = slices[w];
-        const std::vector<double> wt(st.begin() + static_cast<long>(b), st.begin() + static_cast<long>(e));
-        const std::vector<double> wo(so.begin() + static_cast<long>(b), so.begin() + static_cast<long>(e));
+        const auto [b, e] = slices_[w];
+        const std::vector<double> wt(st_.begin() + static_cast<long>(b), st_.begin() + static_cast<long>(e));
+        const std::vector<double> wo(so_.begin() + static_cast<long>(b), so_.begin() + static_cast<long>(e));
         const ScreenResult r = screenSignal(wt, wo, tp, nullptr);
         if (!r.ok) return out;
         out.ok = true;
@@ -459,13 +522,14 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         if (!r.inputScoreKnown) {
             std::vector<uint8_t> mask(wt.size());
             for (size_t i = 0; i < wt.size(); ++i) mask[i] = r.pointClass[i] != PointClass::Noise;
-            out.score = scoreExtraction(st.data() + b, so.data() + b, mask.data(), e - b);
+            out.score = scoreExtraction(st_.data() + b, so_.data() + b, mask.data(), e - b);
         }
         return out;
-    };
+    }
+
     // The trial from its windows' results, in window order (the first window that failed makes
     // the scale unusable).
-    auto combine = [&](double k, double c, int conn, const ScreenParams& tp, const WindowOut* wins) {
+    Trial combine(double k, double c, int conn, const ScreenParams& tp, const WindowOut* wins) const {
         Trial out;
         out.k = k;
         out.c = c;
@@ -473,7 +537,7 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         ExtractionScore total;
         double bandSig = 0;
         int area = 0;
-        for (size_t w = 0; w < slices.size(); ++w) {
+        for (size_t w = 0; w < slices_.size(); ++w) {
             if (!wins[w].ok) return out;
             const ExtractionScore& s = wins[w].score;
             area = std::max(area, wins[w].area);
@@ -493,11 +557,10 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         tr.precisionEst = total.selected > 0 ? total.truePositives / static_cast<double>(total.selected) : 0;
         tr.recallEst = bandSig > 0 ? std::min(1.0, total.truePositives / bandSig) : 0;
         return out;
-    };
-    // One trial: the extraction at scale (k, c, conn) on every window, scored. Touches nothing
-    // shared, so trials run side by side; their results are taken in a fixed order (take),
-    // which keeps the choice the same whatever the number of threads.
-    auto runTrial = [&](double k, double c, int conn) {
+    }
+
+    // One trial on every window, one after the other (a ladder's step).
+    Trial runTrial(double k, double c, int conn) const {
         ScreenParams tp;
         if (!trialParams(k, c, conn, &tp)) {
             Trial out;
@@ -506,40 +569,24 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
             out.conn = conn;
             return out;
         }
-        std::vector<WindowOut> wins(slices.size());
-        for (size_t w = 0; w < slices.size(); ++w)
+        std::vector<WindowOut> wins(slices_.size());
+        for (size_t w = 0; w < slices_.size(); ++w)
             if (!(wins[w] = runWindow(tp, w)).ok) break;
         return combine(k, c, conn, tp, wins.data());
-    };
-    struct Best {
-        double score = -1e300;
-        double k = 0, c = 0.1;
-        int conn = 8;
-        bool any = false;
-    } best;
-    auto take = [&](const Trial& tr) {
-        if (!tr.usable) return;
-        res.trials.push_back(tr.rec);
-        if (!best.any || tr.rec.score > best.score) {
-            best.any = true;
-            best.score = tr.rec.score;
-            best.k = tr.k;
-            best.c = tr.c;
-            best.conn = tr.conn;
-        }
-    };
-    // Independent trials at a list of scales (k, c, connectivity), in list order; every window of
-    // every trial is a job of its own on the cores (a few trials of three windows each shared
-    // out whole left a core idle at the end).
-    auto runTrials = [&](const std::vector<std::array<double, 3>>& scales) {
-        const size_t nw = slices.size();
+    }
+
+    // Independent trials at a list of scales (k, c, connectivity), in list order; every window
+    // of every trial is a job of its own on the cores (a few trials of three windows each
+    // shared out whole left a core idle at the end).
+    std::vector<Trial> runTrials(const std::vector<std::array<double, 3>>& scales) const {
+        const size_t nw = slices_.size();
         std::vector<ScreenParams> tps(scales.size());
         std::vector<uint8_t> usable(scales.size());
         for (size_t i = 0; i < scales.size(); ++i)
             usable[i] = trialParams(scales[i][0], scales[i][1], static_cast<int>(scales[i][2]), &tps[i]);
         std::vector<WindowOut> wins(scales.size() * nw);
         runInParallel(wins.size(), [&](size_t j) {
-            if (usable[j / nw] && !cancelled(fb)) wins[j] = runWindow(tps[j / nw], j % nw);
+            if (usable[j / nw] && !cancelled(fb_)) wins[j] = runWindow(tps[j / nw], j % nw);
         });
         std::vector<Trial> out(scales.size());
         for (size_t i = 0; i < scales.size(); ++i) {
@@ -549,21 +596,35 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
             if (usable[i]) out[i] = combine(scales[i][0], scales[i][1], static_cast<int>(scales[i][2]), tps[i], &wins[i * nw]);
         }
         return out;
-    };
+    }
 
-    if (oAuto) {
-        // Coarse ladders over the O-C scale, from coarse to fine; each stops when the time pixel
-        // gets too long for the windows or after 4 trials below its best. With the time pixel
-        // automatic, one ladder per noise occupancy c = 0.1, 0.1/8, 0.1/64, 0.1/512: the first
-        // suits dense passes (kHz, many returns per second), the sparse ones suit passes of a few
-        // returns per second with a sharp track in a wide gate (e.g. MLRS 10 Hz multi-photon
-        // passes: 0.1 ns jitter in a 10 µs gate), whose track only forms regions with time pixels
-        // of a few seconds, i.e. far below 0.1 noise points per pixel. The ladders run side by
-        // side (runLadders), a ladder's next trials ahead of its stopping rule when cores are
-        // idle: the last ladder going, or the only one, no longer runs on one core.
-        const bool sparse = params.sparseRateBelow <= 0 || res.ratePerS < params.sparseRateBelow;
-        const std::vector<double> ladderC = tAuto && sparse ? std::vector<double>{0.1, 0.1 / 8, 0.1 / 64, 0.1 / 512}
-                                                            : std::vector<double>{0.1};
+    // A trial's result recorded; the best so far kept. Trials are taken in a fixed order, which
+    // keeps the choice the same whatever the number of threads.
+    void take(const Trial& tr) {
+        if (!tr.usable) return;
+        res_->trials.push_back(tr.rec);
+        if (!best_.any || tr.rec.score > best_.score) {
+            best_.any = true;
+            best_.score = tr.rec.score;
+            best_.k = tr.k;
+            best_.c = tr.c;
+            best_.conn = tr.conn;
+        }
+    }
+
+    // Coarse ladders over the O-C scale, from coarse to fine; each stops when the time pixel gets
+    // too long for the windows or after 4 trials below its best. With the time pixel automatic,
+    // one ladder per noise occupancy c = 0.1, 0.1/8, 0.1/64, 0.1/512: the first suits dense
+    // passes (kHz, many returns per second), the sparse ones suit passes of a few returns per
+    // second with a sharp track in a wide gate (e.g. MLRS 10 Hz multi-photon passes: 0.1 ns
+    // jitter in a 10 µs gate), whose track only forms regions with time pixels of a few seconds,
+    // i.e. far below 0.1 noise points per pixel. The ladders run side by side (runLadders), a
+    // ladder's next trials ahead of its stopping rule when cores are idle: the last ladder
+    // going, or the only one, no longer runs on one core.
+    void ladders() {
+        const bool sparse = params_.sparseRateBelow <= 0 || res_->ratePerS < params_.sparseRateBelow;
+        const std::vector<double> ladderC = tAuto_ && sparse ? std::vector<double>{0.1, 0.1 / 8, 0.1 / 64, 0.1 / 512}
+                                                             : std::vector<double>{0.1};
         // (A coarse-to-fine ladder — every other O-C scale, patience 2 — halves the time of a
         // sparse pass but picks a scale on JASON1 7080 that finds only 70 % of its track: not used.)
         const int patience = 4;
@@ -579,11 +640,11 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
         // coarser pixels, which merge it with the noise, cannot win. Every result of the 54
         // simulated and 7 real passes was the same starting there, or at 2× or at 8×, as at the
         // ladder's usual start; the second search of a sparse pass runs about half the trials.
-        const int kFloor = params.previousMagOc > 0 && std::isfinite(params.previousMagOc)
-                               ? static_cast<int>(std::clamp(std::floor(std::log2(gate * params.previousMagOc)) - 2, 2.0, 24.0))
+        const int kFloor = params_.previousMagOc > 0 && std::isfinite(params_.previousMagOc)
+                               ? static_cast<int>(std::clamp(std::floor(std::log2(gate_ * params_.previousMagOc)) - 2, 2.0, 24.0))
                                : 2;
         auto kStart = [&](double c) {
-            const int k0 = tAuto ? std::max(2, static_cast<int>(std::ceil(std::log2(1.0 / (16 * c)) - 1e-9))) : 2;
+            const int k0 = tAuto_ ? std::max(2, static_cast<int>(std::ceil(std::log2(1.0 / (16 * c)) - 1e-9))) : 2;
             return std::max(k0, kFloor);
         };
         // A ladder stops after a trial too coarse in time for the windows, or after `patience`
@@ -593,21 +654,21 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
             double best = -1e300;
         };
         std::vector<LadderState> state(ladderC.size());
-        std::vector<std::vector<Trial>> ladders(ladderC.size());
+        std::vector<std::vector<Trial>> done(ladderC.size());
         runLadders<Trial>(
             ladderC.size(), 2,
             [&](size_t l, int step) -> std::optional<Trial> {
                 const int k = kStart(ladderC[l]) + step;
-                if (k > 24 || cancelled(fb)) return std::nullopt;
-                return runTrial(k, ladderC[l], conn0);
+                if (k > 24 || cancelled(fb_)) return std::nullopt;
+                return runTrial(k, ladderC[l], conn0_);
             },
             [&](size_t l, int step, Trial&& tr) {
                 const double c = ladderC[l];
                 const int k = kStart(c) + step;
                 LadderState& st = state[l];
-                ladders[l].push_back(std::move(tr));
-                const Trial& last = ladders[l].back();
-                if (!last.usable) return tAuto && dT(k, c) > meanWinSpan / 8;
+                done[l].push_back(std::move(tr));
+                const Trial& last = done[l].back();
+                if (!last.usable) return tAuto_ && dT(k, c) > meanWinSpan_ / 8;
                 if (last.rec.score > st.best) {
                     st.best = last.rec.score;
                     st.worse = 0;
@@ -615,70 +676,66 @@ AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<doub
                 }
                 return st.best > 0 && ++st.worse >= patience;
             });
-        for (const auto& ladder : ladders)
+        for (const auto& ladder : done)
             for (const Trial& tr : ladder) take(tr);
-    } else if (tAuto) {
+    }
+
+    // The O-C scale manual, the time scale automatic: one ladder over c = 2^-7 .. 2^3.
+    void timeLadder() {
         int worse = 0;
         for (int j = -7; j <= 3; ++j) {
-            if (cancelled(fb)) break;
+            if (cancelled(fb_)) break;
             const double c = std::pow(2.0, j);
-            const Trial tr = runTrial(0, c, conn0);
+            const Trial tr = runTrial(0, c, conn0_);
             take(tr);
             if (!tr.usable) {
-                if (dT(0, c) > meanWinSpan / 8) break;
+                if (dT(0, c) > meanWinSpan_ / 8) break;
                 continue;
             }
-            worse = (best.c == c || best.score <= 0) ? 0 : worse + 1;
+            worse = (best_.c == c || best_.score <= 0) ? 0 : worse + 1;
             if (worse >= 4) break;
         }
-    } else {
-        take(runTrial(0, 0.1, conn0));
     }
+
+    const ScreenParams& params_;
+    const Feedback* fb_;
+    AutoScaleResult* res_;
+    const bool oAuto_, tAuto_, cAuto_;
+    const int conn0_;
+    double gate_ = 0, rate_ = 0, meanWinSpan_ = 0;
+    std::vector<double> st_, so_;                     // the windows' points, window after window
+    std::vector<std::pair<size_t, size_t>> slices_;   // each window's [begin, end) in st_, so_
+    ScreenParams base_;
+    struct Best {
+        double score = -1e300;
+        double k = 0, c = 0.1;
+        int conn = 8;
+        bool any = false;
+    } best_;
+};
+
+}  // namespace
+
+AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
+                            const Feedback* fb) {
+    AutoScaleResult res;
+    ScaleSearch search(params, fb, &res);
+    if (!search.prepare(t, oc)) return res;
+    search.coarse();
     if (cancelled(fb)) {
         res.error = "cancelled";
         return res;
     }
-    if (!best.any) {
+    if (!search.found()) {
         res.error = "the automatic mode found no usable scale (the pass is too short or too sparse for a binary image)";
         return res;
     }
-    // Refinement around the best: half steps in the free dimensions, then the other connectivity
-    // at the best of those. The connectivity trial at the current best runs beside the half
-    // steps and is kept when they leave the best where it was (the usual case); otherwise it is
-    // run again at the new best. Either way the trials taken, and their order, are the same as
-    // running the two steps one after the other.
-    {
-        const double k0 = best.k, c0 = best.c;
-        const double otherConn = conn0 == 8 ? 4.0 : 8.0;
-        std::vector<std::array<double, 3>> cand;
-        const std::vector<double> ks = oAuto ? std::vector<double>{k0 - 0.5, k0, k0 + 0.5} : std::vector<double>{k0};
-        std::vector<double> cs = {c0};
-        if (tAuto) cs = oAuto ? std::vector<double>{c0 / 2, c0, c0 * 2} : std::vector<double>{c0 / std::sqrt(2.0), c0, c0 * std::sqrt(2.0)};
-        for (double k : ks)
-            for (double c : cs)
-                if (!(k == k0 && c == c0)) cand.push_back({k, c, static_cast<double>(conn0)});
-        const size_t halfSteps = cand.size();
-        if (cAuto) cand.push_back({k0, c0, otherConn});
-        const std::vector<Trial> out = runTrials(cand);
-        for (size_t i = 0; i < halfSteps; ++i) take(out[i]);
-        if (cAuto && !cancelled(fb)) {
-            if (best.k == k0 && best.c == c0) take(out[halfSteps]);
-            else take(runTrials({{best.k, best.c, otherConn}}).front());
-        }
-    }
+    search.refine();
     if (cancelled(fb)) {
         res.error = "cancelled";
         return res;
     }
-    if (best.score <= 0) {
-        res.doubt = "automatic mode: no scale shows a clear track (best score " + formatFixed(best.score, 1) + " of " +
-                    std::to_string(res.trials.size()) + " trials): the accepted points cannot be told from noise";
-        res.warnings.push_back(res.doubt);
-    }
-    res.magT = 1.0 / dT(best.k, best.c);
-    res.magOc = 1.0 / dO(best.k);
-    res.connectivity = best.conn;
-    res.ok = true;
+    search.answer();
     return res;
 }
 
