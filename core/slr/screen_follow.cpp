@@ -165,6 +165,317 @@ double poissonTail(long long m, double mean) {
     return std::min(1.0, std::exp(logTerm) / (1 - ratio));
 }
 
+namespace {
+
+// The track followed from the screening's accepted points, in stages: the pass prepared (time
+// order, the O-C gate, the noise density in time bins), the anchors (runs of accepted points
+// ranked by their quadratic fit's width) and the track width σ, the walk from each anchor
+// outwards, then the accepted points inside a followed stretch but far from the track dropped.
+class TrackFollower {
+public:
+    TrackFollower(const FollowParams& p, const Feedback* fb, FollowResult* res)
+        : p_(p), fb_(fb), res_(res), anchorN_(static_cast<size_t>(std::max(4, p.anchorPoints))),
+          fitN_(static_cast<size_t>(std::max(8, p.fitPoints))), k_(p.bandSigma) {}
+
+    // Time order, gate, noise density, anchors and σ; false when there is nothing to follow.
+    bool prepare(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& accepted) {
+        n_ = t.size();
+        order_.resize(n_);
+        std::iota(order_.begin(), order_.end(), 0u);
+        if (!std::is_sorted(t.begin(), t.end()))
+            std::stable_sort(order_.begin(), order_.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
+        T_.resize(n_);
+        O_.resize(n_);
+        A_.resize(n_);
+        for (size_t k = 0; k < n_; ++k) {
+            T_[k] = t[order_[k]];
+            O_[k] = oc[order_[k]];
+            A_[k] = accepted[order_[k]] != 0;
+        }
+        span_ = T_[n_ - 1] - T_[0];
+        if (!(span_ > 0) || !measureNoise()) return false;
+        maxGap_ = p_.maxGapS > 0 ? p_.maxGapS : std::clamp(0.25 * span_, 30.0, 300.0);
+        return findAnchors();
+    }
+
+    // Every anchor not yet on a track and shaped like a line, followed both ways.
+    void followAll() {
+        inTrack_.assign(n_, 0);
+        for (const Run& run : runs_) {
+            if (cancelled(fb_)) break;
+            // Skip anchors already followed through (any of their points on a track) or not a line.
+            bool taken = false;
+            for (size_t q = run.first; q < run.first + anchorN_; ++q) taken = taken || inTrack_[acc_[q]];
+            if (taken || run.sigma > 6 * sigmaTrack_) continue;
+            followAnchor(run);
+        }
+    }
+
+    // Accepted points inside a followed stretch but far from the track: noise.
+    void dropFarPoints() {
+        if (!(p_.dropSigma > 0)) return;
+        std::vector<uint32_t> tr;
+        for (size_t q = 0; q < n_; ++q)
+            if (inTrack_[q]) tr.push_back(static_cast<uint32_t>(q));
+        LocalFit lf;
+        for (size_t q = 0; q < n_ && !tr.empty(); ++q) {
+            if (!A_[q] || inTrack_[q]) continue;
+            bool inside = false;
+            for (const auto& [a, b] : stretches_) inside = inside || (T_[q] >= a && T_[q] <= b);
+            if (!inside) continue;
+            // The followed points nearest in time (up to 10 on each side).
+            const size_t pos = static_cast<size_t>(std::lower_bound(tr.begin(), tr.end(), static_cast<uint32_t>(q)) - tr.begin());
+            const size_t a = pos >= 10 ? pos - 10 : 0, b = std::min(tr.size(), pos + 10);
+            if (b - a < 3) continue;
+            if (!fitLocal(T_, O_, tr.data() + a, b - a, T_[q], 2, &lf, true)) continue;
+            if (std::fabs(O_[q] - lf.at(T_[q])) > p_.dropSigma * std::max(lf.sigma, sigmaTrack_)) {
+                A_[q] = 0;
+                ++res_->dropped;
+            }
+        }
+    }
+
+    // The mask back in input order.
+    void write() const {
+        for (size_t q = 0; q < n_; ++q) res_->accepted[order_[q]] = (A_[q] || inTrack_[q]) ? 1 : 0;
+    }
+
+private:
+    struct Run {
+        size_t first;  // index into acc_
+        double sigma;
+    };
+    // One step of a walk: the local fit at the front and the band it predicts.
+    struct Step {
+        double tf = 0, spacing = 0;
+        LocalFit lf;
+    };
+
+    // Robust O-C span (the gate) and the local noise rate from the points called noise.
+    bool measureNoise() {
+        std::vector<double> s;
+        const size_t step = std::max<size_t>(1, n_ / 100000);
+        for (size_t k = 0; k < n_; k += step) s.push_back(O_[k]);
+        const size_t lo = static_cast<size_t>(0.005 * static_cast<double>(s.size() - 1));
+        const size_t hi = static_cast<size_t>(0.995 * static_cast<double>(s.size() - 1) + 0.5);
+        std::nth_element(s.begin(), s.begin() + static_cast<long>(lo), s.end());
+        const double a = s[lo];
+        std::nth_element(s.begin(), s.begin() + static_cast<long>(hi), s.end());
+        gate_ = s[hi] - a;
+        if (!(gate_ > 0)) return false;
+        nBins_ = std::clamp<size_t>(static_cast<size_t>(span_ / 10.0), 1, 64);
+        binW_ = span_ / static_cast<double>(nBins_);
+        density_.assign(nBins_, 0.0);  // noise points per s per s of O-C
+        for (size_t k = 0; k < n_; ++k)
+            if (!A_[k]) density_[std::min(nBins_ - 1, static_cast<size_t>((T_[k] - T_[0]) / binW_))] += 1;
+        for (double& d : density_) d = std::max(d, 1.0) / (binW_ * gate_);  // at least one point per bin: never a zero density
+        return true;
+    }
+
+    double densityOver(double a, double b) const {
+        if (a > b) std::swap(a, b);
+        const size_t i0 = std::min(nBins_ - 1, static_cast<size_t>(std::max(0.0, (a - T_[0]) / binW_)));
+        const size_t i1 = std::min(nBins_ - 1, static_cast<size_t>(std::max(0.0, (b - T_[0]) / binW_)));
+        double m = 0;
+        for (size_t i = i0; i <= i1; ++i) m = std::max(m, density_[i]);
+        return m;
+    }
+
+    // Anchors: runs of anchorN consecutive accepted points, ranked by their quadratic fit's
+    // width; then the track width σ: leave-one-out residuals of the accepted points about a
+    // quadratic through their 4 + 4 accepted neighbours in time, robust σ over the pass
+    // (1.4826·MAD), less the prediction's own spread (a factor ≈ 1.2 for 8 neighbours).
+    bool findAnchors() {
+        for (size_t q = 0; q < n_; ++q)
+            if (A_[q]) acc_.push_back(static_cast<uint32_t>(q));
+        LocalFit lf;
+        for (size_t a = 0; a + anchorN_ <= acc_.size(); a += std::max<size_t>(1, anchorN_ / 2)) {
+            if (!fitLocal(T_, O_, acc_.data() + a, anchorN_, T_[acc_[a + anchorN_ / 2]], 2, &lf)) continue;
+            double worst = 0;
+            for (size_t q = a; q < a + anchorN_; ++q) worst = std::max(worst, std::fabs(O_[acc_[q]] - lf.at(T_[acc_[q]])));
+            runs_.push_back({a, worst});
+        }
+        if (runs_.empty()) return false;
+        std::sort(runs_.begin(), runs_.end(),
+                  [](const Run& x, const Run& y) { return x.sigma < y.sigma || (x.sigma == y.sigma && x.first < y.first); });
+        std::vector<double> r = localTrackResiduals(T_, O_, acc_, 4);
+        r.erase(std::remove_if(r.begin(), r.end(), [](double v) { return !std::isfinite(v); }), r.end());
+        sigmaTrack_ = robustSigma(r) / 1.2;
+        if (!(sigmaTrack_ > 0)) sigmaTrack_ = runs_.front().sigma / 1.5;
+        sigmaTrack_ = std::max(sigmaTrack_, 1e-15);
+        res_->sigmaS = sigmaTrack_;
+        return true;
+    }
+
+    // The walks of one anchor. Walks to do: (seed points in walk order, direction). A piece
+    // found beyond a gap becomes a seed of its own (followed back towards the gap, and onwards
+    // on its own fit).
+    void followAnchor(const Run& run) {
+        ++res_->pieces;
+        for (size_t q = run.first; q < run.first + anchorN_; ++q) inTrack_[acc_[q]] = 1;
+        double lo = T_[acc_[run.first]], hi = T_[acc_[run.first + anchorN_ - 1]];
+        std::vector<std::pair<std::vector<uint32_t>, int>> tasks;
+        for (int dir : {-1, +1}) {
+            std::vector<uint32_t> seed;
+            for (size_t q = 0; q < anchorN_; ++q) seed.push_back(acc_[dir > 0 ? run.first + q : run.first + anchorN_ - 1 - q]);
+            tasks.push_back({seed, dir});
+        }
+        while (!tasks.empty()) {
+            std::vector<uint32_t> walk = std::move(tasks.back().first);
+            const int dir = tasks.back().second;
+            tasks.pop_back();
+            walkOn(std::move(walk), dir, &tasks, &lo, &hi);
+        }
+        stretches_.push_back({lo, hi});
+    }
+
+    // The band half-width the fit predicts at tc: k·σ·sqrt(1 + v) plus the curvature's reach,
+    // at most gate / 8.
+    double band(const Step& s, double tc) const {
+        const double dt = std::fabs(tc - s.tf);
+        return std::min(gate_ / 8, k_ * sigmaTrack_ * std::sqrt(1 + s.lf.varFactor(tc)) + s.lf.curvature(dt));
+    }
+
+    // One walk: from the front of `walk`, a window of L s searched for points within the band;
+    // a consistent set that noise is unlikely to make is taken and the walk goes on; else the
+    // window doubles up to maxGap.
+    void walkOn(std::vector<uint32_t> walk, int dir, std::vector<std::pair<std::vector<uint32_t>, int>>* tasks, double* lo,
+                double* hi) {
+        double L = 0;
+        size_t sinceJump = 0;  // walk position of the first point beyond the last gap crossed
+        for (;;) {
+            const uint32_t front = walk.back();
+            Step s;
+            s.tf = T_[front];
+            // Local fit through the last fitN followed points (only those beyond the last gap
+            // crossed, once there are 6 of them: the track may change level or slope there).
+            size_t m = std::min(fitN_, walk.size());
+            if (walk.size() - sinceJump >= 6) m = std::min(m, walk.size() - sinceJump);
+            fitIdx_.assign(walk.end() - static_cast<long>(m), walk.end());
+            if (!fitLocal(T_, O_, fitIdx_.data(), m, s.tf, 2, &s.lf)) break;
+            // Window: a few typical spacings of the followed points, doubling up to maxGap.
+            s.spacing = std::max(1e-7, std::fabs(T_[walk.back()] - T_[walk[walk.size() - m]]) /
+                                           static_cast<double>(std::max<size_t>(1, m - 1)));
+            if (L == 0) L = 3 * s.spacing;
+            bool metTrack = false, pastEnd = true;
+            candidates(s, front, dir, L, &metTrack, &pastEnd);
+            // Expected noise in the search band over the window (trapezoid over 16 steps).
+            const double tEnd = s.tf + dir * L;
+            double area = 0, bandA = band(s, s.tf);
+            for (int q = 0; q < 16; ++q) {
+                const double bandB = band(s, s.tf + dir * L * (q + 1) / 16.0);
+                area += 0.5 * (bandA + bandB) * 2 * (L / 16.0);
+                bandA = bandB;
+            }
+            const double rho = densityOver(s.tf, tEnd);
+            const double eWide = area * rho;
+            // A band that noise fills (or too many candidates to sort out) is no prediction: the
+            // track is lost here.
+            if (cand_.size() > 64 || eWide > 5) break;
+            // Beyond a gap the candidates are judged among themselves (a fit across the gap
+            // would have to bend to both sides), when there are enough of them.
+            const bool jump = !cand_.empty() && dir * (T_[cand_.front()] - s.tf) > 4 * s.spacing;
+            consistentCandidates(walk, s.tf, jump);
+            bool took = false;
+            if (!keep_.empty()) {
+                // The density contrast: m consistent points where the narrow band (k·σ about the
+                // track over the window) expects eLine noise points, with the number of such
+                // bands the search band holds as the look-elsewhere factor.
+                const double eLine = std::max(1e-300, rho * 2 * k_ * sigmaTrack_ * L);
+                const double trials = std::max(1.0, eWide / eLine);
+                if (poissonTail(static_cast<long long>(keep_.size()), eLine) * trials < p_.alpha) {
+                    std::sort(keep_.begin(), keep_.end());
+                    if (dir < 0) std::reverse(keep_.begin(), keep_.end());
+                    for (uint32_t q : keep_) {
+                        inTrack_[q] = 1;
+                        walk.push_back(q);
+                        res_->added += !A_[q];
+                        *lo = std::min(*lo, T_[q]);
+                        *hi = std::max(*hi, T_[q]);
+                    }
+                    if (jump && keep_.size() >= 3) {
+                        // A piece beyond a gap: followed on its own fit, and back towards the gap.
+                        sinceJump = walk.size() - keep_.size();
+                        tasks->push_back({std::vector<uint32_t>(keep_.rbegin(), keep_.rend()), -dir});
+                    }
+                    took = true;
+                    L = 0;
+                }
+            }
+            if (metTrack) break;
+            if (!took) {
+                if (L >= maxGap_ || pastEnd) break;
+                L = std::min(2 * L, maxGap_);
+            }
+        }
+    }
+
+    // The points of the window within the band (cand_); *metTrack when the walk reached a point
+    // already on a track inside the band, *pastEnd when the window runs past the pass.
+    void candidates(const Step& s, uint32_t front, int dir, double L, bool* metTrack, bool* pastEnd) {
+        cand_.clear();
+        for (long q = static_cast<long>(front) + dir; q >= 0 && q < static_cast<long>(n_); q += dir) {
+            const double dt = dir * (T_[q] - s.tf);
+            if (dt > L) {
+                *pastEnd = false;
+                break;
+            }
+            // The band is at most gate / 8 wide: a point farther from the fit is outside it
+            // without computing the band there.
+            const double off = std::fabs(O_[q] - s.lf.at(T_[q]));
+            if (inTrack_[q]) {
+                *metTrack = off <= gate_ / 8 && off <= band(s, T_[q]);
+                if (*metTrack) break;
+                continue;
+            }
+            if (off <= gate_ / 8 && off <= band(s, T_[q])) cand_.push_back(static_cast<uint32_t>(q));
+        }
+    }
+
+    // Candidates consistent among themselves (keep_): each within k·σ·sqrt(1 + v) of a fit
+    // through the other candidates and the last followed points (leave one out, so that a noise
+    // point cannot pull the fit onto itself); the worst dropped while one is beyond.
+    void consistentCandidates(const std::vector<uint32_t>& walk, double tf, bool jump) {
+        keep_ = cand_;
+        while (!keep_.empty()) {
+            const size_t near = jump && keep_.size() >= 5 ? 0 : std::min<size_t>(walk.size(), 6);
+            size_t worst = 0;
+            double wr = -1;
+            for (size_t c = 0; c < keep_.size(); ++c) {
+                fitIdx_.assign(walk.end() - static_cast<long>(near), walk.end());
+                for (size_t e = 0; e < keep_.size(); ++e)
+                    if (e != c) fitIdx_.push_back(keep_[e]);
+                std::sort(fitIdx_.begin(), fitIdx_.end());
+                LocalFit cf;
+                if (!fitLocal(T_, O_, fitIdx_.data(), fitIdx_.size(), tf, 2, &cf)) continue;
+                const double r = std::fabs(O_[keep_[c]] - cf.at(T_[keep_[c]])) / std::sqrt(1 + cf.varFactor(T_[keep_[c]]));
+                if (r > wr) {
+                    wr = r;
+                    worst = c;
+                }
+            }
+            if (wr <= k_ * sigmaTrack_) break;
+            keep_.erase(keep_.begin() + static_cast<long>(worst));
+        }
+    }
+
+    const FollowParams& p_;
+    const Feedback* fb_;
+    FollowResult* res_;
+    const size_t anchorN_, fitN_;
+    const double k_;
+    size_t n_ = 0, nBins_ = 1;
+    double span_ = 0, gate_ = 0, binW_ = 1, maxGap_ = 0, sigmaTrack_ = 0;
+    std::vector<uint32_t> order_, acc_;
+    std::vector<double> T_, O_, density_;
+    std::vector<uint8_t> A_, inTrack_;
+    std::vector<Run> runs_;
+    std::vector<uint32_t> cand_, keep_, fitIdx_;
+    std::vector<std::pair<double, double>> stretches_;  // followed time spans
+};
+
+}  // namespace
+
 FollowResult followTrack(const std::vector<double>& t, const std::vector<double>& oc,
                          const std::vector<uint8_t>& accepted, const FollowParams& p, const Feedback* fb) {
     FollowResult res;
@@ -174,246 +485,12 @@ FollowResult followTrack(const std::vector<double>& t, const std::vector<double>
     res.ok = true;
     size_t nAcc = 0;
     for (uint8_t a : accepted) nAcc += a != 0;
-    const size_t anchorN = static_cast<size_t>(std::max(4, p.anchorPoints));
-    if (nAcc < anchorN || n < 3) return res;
-
-    // Time order.
-    std::vector<uint32_t> order(n);
-    std::iota(order.begin(), order.end(), 0u);
-    if (!std::is_sorted(t.begin(), t.end()))
-        std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return t[a] < t[b]; });
-    std::vector<double> T(n), O(n);
-    std::vector<uint8_t> A(n);
-    for (size_t k = 0; k < n; ++k) {
-        T[k] = t[order[k]];
-        O[k] = oc[order[k]];
-        A[k] = accepted[order[k]] != 0;
-    }
-    const double span = T[n - 1] - T[0];
-    if (!(span > 0)) return res;
-
-    // Robust O-C span (the gate) and the local noise rate from the points called noise.
-    double gate = 0;
-    {
-        std::vector<double> s;
-        const size_t step = std::max<size_t>(1, n / 100000);
-        for (size_t k = 0; k < n; k += step) s.push_back(O[k]);
-        const size_t lo = static_cast<size_t>(0.005 * static_cast<double>(s.size() - 1));
-        const size_t hi = static_cast<size_t>(0.995 * static_cast<double>(s.size() - 1) + 0.5);
-        std::nth_element(s.begin(), s.begin() + static_cast<long>(lo), s.end());
-        const double a = s[lo];
-        std::nth_element(s.begin(), s.begin() + static_cast<long>(hi), s.end());
-        gate = s[hi] - a;
-        if (!(gate > 0)) return res;
-    }
-    const size_t nBins = std::clamp<size_t>(static_cast<size_t>(span / 10.0), 1, 64);
-    const double binW = span / static_cast<double>(nBins);
-    std::vector<double> density(nBins, 0.0);  // noise points per s per s of O-C
-    for (size_t k = 0; k < n; ++k)
-        if (!A[k]) density[std::min(nBins - 1, static_cast<size_t>((T[k] - T[0]) / binW))] += 1;
-    for (double& d : density) d = std::max(d, 1.0) / (binW * gate);  // at least one point per bin: never a zero density
-    auto densityOver = [&](double a, double b) {
-        if (a > b) std::swap(a, b);
-        const size_t i0 = std::min(nBins - 1, static_cast<size_t>(std::max(0.0, (a - T[0]) / binW)));
-        const size_t i1 = std::min(nBins - 1, static_cast<size_t>(std::max(0.0, (b - T[0]) / binW)));
-        double m = 0;
-        for (size_t i = i0; i <= i1; ++i) m = std::max(m, density[i]);
-        return m;
-    };
-    const double maxGap = p.maxGapS > 0 ? p.maxGapS : std::clamp(0.25 * span, 30.0, 300.0);
-    const double k = p.bandSigma;
-
-    // Anchors: runs of anchorN consecutive accepted points, ranked by their quadratic fit's width.
-    std::vector<uint32_t> acc;
-    for (size_t q = 0; q < n; ++q)
-        if (A[q]) acc.push_back(static_cast<uint32_t>(q));
-    struct Run {
-        size_t first;  // index into acc
-        double sigma;
-    };
-    std::vector<Run> runs;
-    LocalFit lf;
-    for (size_t a = 0; a + anchorN <= acc.size(); a += std::max<size_t>(1, anchorN / 2)) {
-        if (!fitLocal(T, O, acc.data() + a, anchorN, T[acc[a + anchorN / 2]], 2, &lf)) continue;
-        double worst = 0;
-        for (size_t q = a; q < a + anchorN; ++q) worst = std::max(worst, std::fabs(O[acc[q]] - lf.at(T[acc[q]])));
-        runs.push_back({a, worst});
-    }
-    if (runs.empty()) return res;
-    std::sort(runs.begin(), runs.end(), [](const Run& x, const Run& y) { return x.sigma < y.sigma || (x.sigma == y.sigma && x.first < y.first); });
-    // The track width σ: leave-one-out residuals of the accepted points about a quadratic through
-    // their 4 + 4 accepted neighbours in time, robust σ over the pass (1.4826·MAD), less the
-    // prediction's own spread (a factor ≈ 1.2 for 8 neighbours).
-    double sigmaTrack = 0;
-    {
-        std::vector<double> r = localTrackResiduals(T, O, acc, 4);
-        r.erase(std::remove_if(r.begin(), r.end(), [](double v) { return !std::isfinite(v); }), r.end());
-        sigmaTrack = robustSigma(r) / 1.2;
-        if (!(sigmaTrack > 0)) sigmaTrack = runs.front().sigma / 1.5;
-        sigmaTrack = std::max(sigmaTrack, 1e-15);
-    }
-    res.sigmaS = sigmaTrack;
-
-    std::vector<uint8_t> inTrack(n, 0);
-    std::vector<uint32_t> walk, cand, keep, fitIdx;
-    std::vector<std::pair<double, double>> stretches;  // followed time spans
-    const size_t fitN = static_cast<size_t>(std::max(8, p.fitPoints));
-    for (const Run& run : runs) {
-        if (cancelled(fb)) break;
-        // Skip anchors already followed through (any of their points on a track) or not a line.
-        bool taken = false;
-        for (size_t q = run.first; q < run.first + anchorN; ++q) taken = taken || inTrack[acc[q]];
-        if (taken || run.sigma > 6 * sigmaTrack) continue;
-        ++res.pieces;
-        for (size_t q = run.first; q < run.first + anchorN; ++q) inTrack[acc[q]] = 1;
-        double lo = T[acc[run.first]], hi = T[acc[run.first + anchorN - 1]];
-        // Walks to do: (seed points in walk order, direction). A piece found beyond a gap becomes
-        // a seed of its own (followed back towards the gap, and onwards on its own fit).
-        std::vector<std::pair<std::vector<uint32_t>, int>> tasks;
-        for (int dir : {-1, +1}) {
-            std::vector<uint32_t> seed;
-            for (size_t q = 0; q < anchorN; ++q) seed.push_back(acc[dir > 0 ? run.first + q : run.first + anchorN - 1 - q]);
-            tasks.push_back({seed, dir});
-        }
-        while (!tasks.empty()) {
-            walk = std::move(tasks.back().first);
-            const int dir = tasks.back().second;
-            tasks.pop_back();
-            double L = 0;
-            size_t sinceJump = 0;  // walk position of the first point beyond the last gap crossed
-            for (;;) {
-                const uint32_t front = walk.back();
-                const double tf = T[front];
-                // Local fit through the last fitN followed points (only those beyond the last gap
-                // crossed, once there are 6 of them: the track may change level or slope there).
-                size_t m = std::min(fitN, walk.size());
-                if (walk.size() - sinceJump >= 6) m = std::min(m, walk.size() - sinceJump);
-                fitIdx.assign(walk.end() - static_cast<long>(m), walk.end());
-                if (!fitLocal(T, O, fitIdx.data(), m, tf, 2, &lf)) break;
-                const double sigma = sigmaTrack;
-                // Window: a few typical spacings of the followed points, doubling up to maxGap.
-                const double spacing = std::max(1e-7, std::fabs(T[walk.back()] - T[walk[walk.size() - m]]) /
-                                                          static_cast<double>(std::max<size_t>(1, m - 1)));
-                if (L == 0) L = 3 * spacing;
-                auto band = [&](double tc) {
-                    const double dt = std::fabs(tc - tf);
-                    return std::min(gate / 8, k * sigma * std::sqrt(1 + lf.varFactor(tc)) + lf.curvature(dt));
-                };
-                cand.clear();
-                bool metTrack = false, pastEnd = true;
-                for (long q = static_cast<long>(front) + dir; q >= 0 && q < static_cast<long>(n); q += dir) {
-                    const double dt = dir * (T[q] - tf);
-                    if (dt > L) {
-                        pastEnd = false;
-                        break;
-                    }
-                    // The band is at most gate / 8 wide: a point farther from the fit is outside it
-                    // without computing the band there.
-                    const double off = std::fabs(O[q] - lf.at(T[q]));
-                    if (inTrack[q]) {
-                        metTrack = off <= gate / 8 && off <= band(T[q]);
-                        if (metTrack) break;
-                        continue;
-                    }
-                    if (off <= gate / 8 && off <= band(T[q])) cand.push_back(static_cast<uint32_t>(q));
-                }
-                // Expected noise in the search band over the window (trapezoid over 16 steps).
-                const double tEnd = tf + dir * L;
-                double area = 0, bandA = band(tf);
-                for (int s = 0; s < 16; ++s) {
-                    const double bandB = band(tf + dir * L * (s + 1) / 16.0);
-                    area += 0.5 * (bandA + bandB) * 2 * (L / 16.0);
-                    bandA = bandB;
-                }
-                const double rho = densityOver(tf, tEnd);
-                const double eWide = area * rho;
-                // A band that noise fills (or too many candidates to sort out) is no prediction: the
-                // track is lost here.
-                if (cand.size() > 64 || eWide > 5) break;
-                // Candidates consistent among themselves: each within k·σ·sqrt(1 + v) of a fit through
-                // the other candidates and the last followed points (leave one out, so that a noise
-                // point cannot pull the fit onto itself); the worst dropped while one is beyond.
-                keep = cand;
-                // Beyond a gap the candidates are judged among themselves (a fit across the gap
-                // would have to bend to both sides), when there are enough of them.
-                const bool jump = !cand.empty() && dir * (T[cand.front()] - tf) > 4 * spacing;
-                while (!keep.empty()) {
-                    const size_t near = jump && keep.size() >= 5 ? 0 : std::min<size_t>(walk.size(), 6);
-                    size_t worst = 0;
-                    double wr = -1;
-                    for (size_t c = 0; c < keep.size(); ++c) {
-                        fitIdx.assign(walk.end() - static_cast<long>(near), walk.end());
-                        for (size_t e = 0; e < keep.size(); ++e)
-                            if (e != c) fitIdx.push_back(keep[e]);
-                        std::sort(fitIdx.begin(), fitIdx.end());
-                        LocalFit cf;
-                        if (!fitLocal(T, O, fitIdx.data(), fitIdx.size(), tf, 2, &cf)) continue;
-                        const double r = std::fabs(O[keep[c]] - cf.at(T[keep[c]])) / std::sqrt(1 + cf.varFactor(T[keep[c]]));
-                        if (r > wr) {
-                            wr = r;
-                            worst = c;
-                        }
-                    }
-                    if (wr <= k * sigma) break;
-                    keep.erase(keep.begin() + static_cast<long>(worst));
-                }
-                bool took = false;
-                if (!keep.empty()) {
-                    // The density contrast: m consistent points where the narrow band (k·σ about the
-                    // track over the window) expects eLine noise points, with the number of such
-                    // bands the search band holds as the look-elsewhere factor.
-                    const double eLine = std::max(1e-300, rho * 2 * k * sigma * L);
-                    const double trials = std::max(1.0, eWide / eLine);
-                    if (poissonTail(static_cast<long long>(keep.size()), eLine) * trials < p.alpha) {
-                        std::sort(keep.begin(), keep.end());
-                        if (dir < 0) std::reverse(keep.begin(), keep.end());
-                        for (uint32_t q : keep) {
-                            inTrack[q] = 1;
-                            walk.push_back(q);
-                            res.added += !A[q];
-                            lo = std::min(lo, T[q]);
-                            hi = std::max(hi, T[q]);
-                        }
-                        if (jump && keep.size() >= 3) {
-                            // A piece beyond a gap: followed on its own fit, and back towards the gap.
-                            sinceJump = walk.size() - keep.size();
-                            tasks.push_back({std::vector<uint32_t>(keep.rbegin(), keep.rend()), -dir});
-                        }
-                        took = true;
-                        L = 0;
-                    }
-                }
-                if (metTrack) break;
-                if (!took) {
-                    if (L >= maxGap || pastEnd) break;
-                    L = std::min(2 * L, maxGap);
-                }
-            }
-        }
-        stretches.push_back({lo, hi});
-    }
-    // Accepted points inside a followed stretch but far from the track: noise.
-    if (p.dropSigma > 0) {
-        std::vector<uint32_t> tr;
-        for (size_t q = 0; q < n; ++q)
-            if (inTrack[q]) tr.push_back(static_cast<uint32_t>(q));
-        for (size_t q = 0; q < n && !tr.empty(); ++q) {
-            if (!A[q] || inTrack[q]) continue;
-            bool inside = false;
-            for (const auto& [a, b] : stretches) inside = inside || (T[q] >= a && T[q] <= b);
-            if (!inside) continue;
-            // The followed points nearest in time (up to 10 on each side).
-            const size_t pos = static_cast<size_t>(std::lower_bound(tr.begin(), tr.end(), static_cast<uint32_t>(q)) - tr.begin());
-            const size_t a = pos >= 10 ? pos - 10 : 0, b = std::min(tr.size(), pos + 10);
-            if (b - a < 3) continue;
-            if (!fitLocal(T, O, tr.data() + a, b - a, T[q], 2, &lf, true)) continue;
-            if (std::fabs(O[q] - lf.at(T[q])) > p.dropSigma * std::max(lf.sigma, sigmaTrack)) {
-                A[q] = 0;
-                ++res.dropped;
-            }
-        }
-    }
-    for (size_t q = 0; q < n; ++q) res.accepted[order[q]] = (A[q] || inTrack[q]) ? 1 : 0;
+    if (nAcc < static_cast<size_t>(std::max(4, p.anchorPoints)) || n < 3) return res;
+    TrackFollower follower(p, fb, &res);
+    if (!follower.prepare(t, oc, accepted)) return res;
+    follower.followAll();
+    follower.dropFarPoints();
+    follower.write();
     return res;
 }
 
