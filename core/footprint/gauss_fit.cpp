@@ -507,19 +507,20 @@ void fillFit(const GaussModel& m, double noise, SpotFit* f) {
     f->snr = m.amplitude / std::max(noise, 1e-9);
 }
 
-}  // namespace
-
-GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double background, double noise,
-                     const GaussParams& params, const CameraParams& camera) {
-    GaussResult r;
-    if (!domain.found) {
-        r.fit.error = domain.why.empty() ? "no spot domain" : domain.why;
-        return r;
-    }
-    const int w = roi.cols, h = roi.rows;
-    const float* img = roi.ptr<float>();
-    const double refX = domain.peakX, refY = domain.peakY;
+// Stage 1 (Wu): the domain's pixels above the background, their log-intensity fitted by a
+// quadratic with weights f (unit-sum normalised); when it is not peaked, the spot's core, then
+// (for LM) the moments of the bright core. False (r->fit.error) when no start is found.
+struct LogStart {
     std::vector<DomainPixel> px;
+    std::vector<double> wts;
+    double S = 0;
+    Quad q;
+};
+
+bool logFitStart(const float* img, int w, int h, const SpotDomain& domain, double background, const GaussParams& params,
+                 LogStart* st, GaussResult* r) {
+    const double refX = domain.peakX, refY = domain.peakY;
+    std::vector<DomainPixel>& px = st->px;
     px.reserve(domain.pixels.size());
     double S = 0;
     for (int p : domain.pixels) {
@@ -529,14 +530,14 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
         S += f;
     }
     if (px.size() < 7) {
-        r.fit.error = "Gaussian fit: only " + std::to_string(px.size()) + " domain pixels above the background";
-        return r;
+        r->fit.error = "Gaussian fit: only " + std::to_string(px.size()) + " domain pixels above the background";
+        return false;
     }
     logFractions(px, S);
-    // Stage 1 (Wu): weights f (unit-sum normalised), QR.
-    std::vector<double> wts(px.size());
+    std::vector<double>& wts = st->wts;
+    wts.resize(px.size());
     for (size_t i = 0; i < px.size(); ++i) wts[i] = px[i].f / S;
-    Quad q;
+    Quad& q = st->q;
     // Paper 000 solves by QR; when Guo passes refine the result anyway, the 6×6 normal
     // equations give the same start for a fraction of the cost.
     const bool qr = params.guoIterations == 0;
@@ -558,28 +559,36 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
                 wts = std::move(coreW);
                 S = coreS;
                 peaked = true;
-                r.coreStart = true;
-                r.note = "the domain's log-intensity is not peaked (brighter ground joined it): fitted from the spot's "
-                         "core";
+                r->coreStart = true;
+                r->note = "the domain's log-intensity is not peaked (brighter ground joined it): fitted from the spot's "
+                          "core";
             }
         }
     }
+    st->S = S;
     if (!peaked) {
         // Ground brighter than the threshold around the spot can make the domain's log-intensity
         // a saddle. The spot is still there: start LM from the moments of the domain's bright
         // core (pixels above half the brightest), and say so (the verdict marks it doubtful).
         if (!params.lmRefine || !momentStart(px, S, &q)) {
-            r.fit.error = "Gaussian fit failed: the domain's log-intensity is not peaked (no closed spot)";
-            return r;
+            r->fit.error = "Gaussian fit failed: the domain's log-intensity is not peaked (no closed spot)";
+            return false;
         }
-        r.fallbackStart = true;
-        r.note = "log fit not peaked: LM started from the moments of the spot's bright core";
+        r->fallbackStart = true;
+        r->note = "log fit not peaked: LM started from the moments of the spot's bright core";
     }
-    r.stage = r.fallbackStart ? "moments" : "wu";
-    int iterations = 1;
-    // Stage 2 (Guo): weights from the model.
+    r->stage = r->fallbackStart ? "moments" : "wu";
+    return true;
+}
+
+// Stage 2 (Guo): the log fit again with weights from the model; a pass that loses the peak
+// keeps the one before. The iterations done are added to *iterations.
+void guoIterations(const GaussParams& params, LogStart* st, GaussResult* r, int* iterations) {
+    std::vector<DomainPixel>& px = st->px;
+    std::vector<double>& wts = st->wts;
+    Quad& q = st->q;
     std::vector<double> quad(px.size());
-    for (int it = 0; it < (r.fallbackStart ? 0 : params.guoIterations); ++it) {
+    for (int it = 0; it < (r->fallbackStart ? 0 : params.guoIterations); ++it) {
         for (size_t i = 0; i < px.size(); ++i) {
             const double dx = px[i].u - q.x0, dy = px[i].v - q.y0;
             quad[i] = q.a * dx * dx + 2 * q.b * dx * dy + q.c * dy * dy;
@@ -589,74 +598,120 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
         for (double& wt : wts) wt *= scale;
         Quad next;
         if (!logFit(px, wts, params.xyTerm, false, &next)) {
-            r.note = "Guo iteration " + std::to_string(it + 1) + " lost the peak; kept the previous pass";
+            r->note = "Guo iteration " + std::to_string(it + 1) + " lost the peak; kept the previous pass";
             break;
         }
         q = next;
-        r.stage = "guo";
-        ++iterations;
+        r->stage = "guo";
+        ++*iterations;
     }
-    GaussModel m;
-    m.amplitude = S * std::exp(q.lnScale);
-    m.x0 = q.x0 + refX;
-    m.y0 = q.y0 + refY;
-    m.a = q.a;
-    m.b = q.b;
-    m.c = q.c;
-    m.bg0 = background;
-    if (!(m.x0 > -0.5 && m.y0 > -0.5 && m.x0 < w - 0.5 && m.y0 < h - 0.5)) {
-        r.fit.error = "Gaussian fit failed: centre (" + std::to_string(m.x0) + ", " + std::to_string(m.y0) +
-                      ") outside the ROI";
-        return r;
-    }
-    const double det0 = m.a * m.c - m.b * m.b;
-    const double sigmaMajor = std::sqrt(0.5 * (m.a + m.c + std::sqrt((m.a - m.c) * (m.a - m.c) + 4 * m.b * m.b)) / det0);
-    // Is the ground textured (background σ well above the photon + read σ)?
-    const double g = camera.gainEPerDn, rn = camera.readNoiseE / camera.gainEPerDn;
-    const double photonVar = std::max(background, 0.0) / g + rn * rn;
-    const bool textured = noise * noise > params.texturedRatio * params.texturedRatio * photonVar;
-    const double texVar = std::max(0.0, noise * noise - photonVar);
-    // Window for LM (and for the covariance of every stage).
-    // Textured ground: fit neighbour differences (see accumulateDifferences).
-    // The ground's difference variances also size the texture term of the uncertainty.
-    const DifferenceVariances dv = groundDifferenceVariances(roi, m);
-    const bool diff = textured && params.differenceFit && dv.ok;
-    const double windowSigmas = textured ? (diff ? params.lmWindowSigmasDifference : params.lmWindowSigmasTextured)
-                                         : params.lmWindowSigmas;
-    const int hw = std::max(params.lmMinHalfWidth, static_cast<int>(std::ceil(windowSigmas * sigmaMajor)));
-    const int cx = static_cast<int>(std::lround(m.x0)), cy = static_cast<int>(std::lround(m.y0));
-    const int xa = std::max(0, cx - hw), xb = std::min(w - 1, cx + hw);
-    const int ya = std::max(0, cy - hw), yb = std::min(h - 1, cy + hw);
-    FitWindow fw;
-    fw.cols = xb - xa + 1;
-    fw.rows = yb - ya + 1;
-    fw.diff = diff;
-    fw.diffVarX = dv.x;
-    fw.diffVarY = dv.y;
-    std::vector<WinPixel>& win = fw.px;
-    win.reserve(size_t(fw.cols) * fw.rows);
-    for (int y = ya; y <= yb; ++y)
-        for (int x = xa; x <= xb; ++x) win.push_back({double(x - cx), double(y - cy), img[y * w + x], 1.0});
-    if (params.noiseWeights || diff) {
-        // 1/variance of each pixel under the start model: photon + read + ground texture; for the
-        // difference fit, the spot's own photon variance (the ground's is in fw.diffVar).
-        std::vector<double> qw(win.size()), ew(win.size());
-        const double ox = m.x0 - cx, oy = m.y0 - cy;
-        for (size_t i = 0; i < win.size(); ++i) {
-            const double ddx = win[i].dx - ox, ddy = win[i].dy - oy;
-            qw[i] = m.a * ddx * ddx + 2 * m.b * ddx * ddy + m.c * ddy * ddy;
-        }
-        kernel::halfNegExp(qw.data(), ew.data(), static_cast<int>(win.size()));
-        for (size_t i = 0; i < win.size(); ++i) {
-            if (diff) {
-                win[i].weight = std::max(m.amplitude * ew[i], 0.0) / g;  // the spot's photon variance
-            } else {
-                const double model = background + m.amplitude * ew[i];
-                win[i].weight = 1.0 / (std::max(model, 0.0) / g + rn * rn + texVar);
+}
+
+// Stage 3: the window and the weights of the LM fit and of every stage's covariance, from the
+// start model: the ground's texture (its σ against the photon and read noise), the window's
+// pixels (or, on textured ground, their neighbour differences), their variances, the χ² and
+// the centre's uncertainty with the texture term.
+class LmProblem {
+public:
+    LmProblem(const cv::Mat& roi, const GaussModel& m, double background, double noise, const GaussParams& params,
+              const CameraParams& camera) {
+        const int w = roi.cols, h = roi.rows;
+        const float* img = roi.ptr<float>();
+        det0 = m.a * m.c - m.b * m.b;
+        sigmaMajor = std::sqrt(0.5 * (m.a + m.c + std::sqrt((m.a - m.c) * (m.a - m.c) + 4 * m.b * m.b)) / det0);
+        // Is the ground textured (background σ well above the photon + read σ)?
+        const double g = camera.gainEPerDn, rn = camera.readNoiseE / camera.gainEPerDn;
+        const double photonVar = std::max(background, 0.0) / g + rn * rn;
+        textured = noise * noise > params.texturedRatio * params.texturedRatio * photonVar;
+        const double texVar = std::max(0.0, noise * noise - photonVar);
+        // Window for LM (and for the covariance of every stage).
+        // Textured ground: fit neighbour differences (see accumulateDifferences).
+        // The ground's difference variances also size the texture term of the uncertainty.
+        dv_ = groundDifferenceVariances(roi, m);
+        diff = textured && params.differenceFit && dv_.ok;
+        const double windowSigmas = textured ? (diff ? params.lmWindowSigmasDifference : params.lmWindowSigmasTextured)
+                                             : params.lmWindowSigmas;
+        const int hw = std::max(params.lmMinHalfWidth, static_cast<int>(std::ceil(windowSigmas * sigmaMajor)));
+        cx = static_cast<int>(std::lround(m.x0));
+        cy = static_cast<int>(std::lround(m.y0));
+        xa = std::max(0, cx - hw);
+        xb = std::min(w - 1, cx + hw);
+        ya = std::max(0, cy - hw);
+        yb = std::min(h - 1, cy + hw);
+        fw.cols = xb - xa + 1;
+        fw.rows = yb - ya + 1;
+        fw.diff = diff;
+        fw.diffVarX = dv_.x;
+        fw.diffVarY = dv_.y;
+        std::vector<WinPixel>& win = fw.px;
+        win.reserve(size_t(fw.cols) * fw.rows);
+        for (int y = ya; y <= yb; ++y)
+            for (int x = xa; x <= xb; ++x) win.push_back({double(x - cx), double(y - cy), img[y * w + x], 1.0});
+        if (params.noiseWeights || diff) {
+            // 1/variance of each pixel under the start model: photon + read + ground texture; for
+            // the difference fit, the spot's own photon variance (the ground's is in fw.diffVar).
+            std::vector<double> qw(win.size()), ew(win.size());
+            const double ox = m.x0 - cx, oy = m.y0 - cy;
+            for (size_t i = 0; i < win.size(); ++i) {
+                const double ddx = win[i].dx - ox, ddy = win[i].dy - oy;
+                qw[i] = m.a * ddx * ddx + 2 * m.b * ddx * ddy + m.c * ddy * ddy;
+            }
+            kernel::halfNegExp(qw.data(), ew.data(), static_cast<int>(win.size()));
+            for (size_t i = 0; i < win.size(); ++i) {
+                if (diff) {
+                    win[i].weight = std::max(m.amplitude * ew[i], 0.0) / g;  // the spot's photon variance
+                } else {
+                    const double model = background + m.amplitude * ew[i];
+                    win[i].weight = 1.0 / (std::max(model, 0.0) / g + rn * rn + texVar);
+                }
             }
         }
+        if (diff) differenceWeights();
+        // Textured ground: Cauchy loss (robustScale in residual σ); photon-limited: least squares.
+        cauchyC2 = textured && params.robustLoss ? params.robustScale * params.robustScale : 0.0;
+        // Covariance of the parameters at p: (JᵀWJ)⁻¹ scaled by the reduced χ².
+        const int nres = diff ? fw.rows * (fw.cols - 1) + (fw.rows - 1) * fw.cols : static_cast<int>(win.size());
+        dof_ = nres - (diff ? kP - 1 : kP);
+        // The covariance treats the residuals as independent; ground texture is not, and moves
+        // the centre by about (texture difference σ)·σ_spot/A. That term, calibrated on the photo
+        // simulator (tuning seed 11; the tests check the coverage on seed 1), is added in
+        // quadrature: texture beyond (1 + deadband) of the photon + read part of a difference counts.
+        texDiffVar_ = std::max(0.0, 0.5 * (dv_.x + dv_.y) - 2 * photonVar * (1 + params.uncertaintyDeadband));
+        texScale_ = diff ? params.uncertaintyTextureScale : params.uncertaintyTextureScalePixelFit;
+        setStart(m, background);
     }
-    if (diff) {
+
+    // p at the start model, and its cost.
+    void setStart(const GaussModel& m, double background) {
+        p << m.amplitude, m.x0 - cx, m.y0 - cy, m.a, m.b, m.c, background, 0, 0;
+        cost = accumulate(fw, p, cauchyC2, &jtj, &jtr);
+    }
+
+    // Only the centre's variances are read: the two columns of (JᵀWJ)⁻¹ for x0 and y0.
+    double centreVariance() const {
+        Eigen::Matrix<double, kP, 2> unit = Eigen::Matrix<double, kP, 2>::Zero();
+        unit(1, 0) = unit(2, 1) = 1;
+        const Eigen::Matrix<double, kP, 2> cols = jtj.ldlt().solve(unit);
+        return (cols(1, 0) + cols(2, 1)) * (dof_ > 0 ? cost.chi2 / dof_ : 1.0);
+    }
+
+    double uncertainty(double centreVar, double amplitude) const {
+        const double texShift = std::sqrt(texDiffVar_) * sigmaMajor / std::max(amplitude, 1e-9);
+        return sqrtVariance(centreVar + (dv_.ok ? texScale_ * texScale_ * texShift * texShift : 0.0));
+    }
+
+    FitWindow fw;
+    Vec9 p;
+    Mat9 jtj;
+    Vec9 jtr;
+    Cost cost;
+    double cauchyC2 = 0, det0 = 0, sigmaMajor = 0;
+    bool textured = false, diff = false;
+    int cx = 0, cy = 0, xa = 0, xb = 0, ya = 0, yb = 0;
+
+private:
+    void differenceWeights() {
+        const std::vector<WinPixel>& win = fw.px;
         const int n = static_cast<int>(win.size());
         for (int pass = 0; pass < 2; ++pass) {
             const int step = pass == 0 ? 1 : fw.cols;
@@ -670,91 +725,75 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
                     w0[size_t(i)] = 1.0 / (groundVar + win[size_t(i)].weight + win[size_t(i + step)].weight);
         }
     }
-    Vec9 p;
-    p << m.amplitude, m.x0 - cx, m.y0 - cy, m.a, m.b, m.c, background, 0, 0;
-    Mat9 jtj;
-    Vec9 jtr;
-    // Textured ground: Cauchy loss (robustScale in residual σ); photon-limited: least squares.
-    const double cauchyC2 = textured && params.robustLoss ? params.robustScale * params.robustScale : 0.0;
-    Cost cost = accumulate(fw, p, cauchyC2, &jtj, &jtr);
-    // Covariance of the parameters at p: (JᵀWJ)⁻¹ scaled by the reduced χ².
-    const int nres = diff ? fw.rows * (fw.cols - 1) + (fw.rows - 1) * fw.cols : static_cast<int>(win.size());
-    const int dof = nres - (diff ? kP - 1 : kP);
-    // Only the centre's variances are read: the two columns of (JᵀWJ)⁻¹ for x0 and y0.
-    auto centreVariance = [&] {
-        Eigen::Matrix<double, kP, 2> unit = Eigen::Matrix<double, kP, 2>::Zero();
-        unit(1, 0) = unit(2, 1) = 1;
-        const Eigen::Matrix<double, kP, 2> cols = jtj.ldlt().solve(unit);
-        return (cols(1, 0) + cols(2, 1)) * (dof > 0 ? cost.chi2 / dof : 1.0);
-    };
-    // The covariance treats the residuals as independent; ground texture is not, and moves the
-    // centre by about (texture difference σ)·σ_spot/A. That term, calibrated on the photo
-    // simulator (tuning seed 11; the tests check the coverage on seed 1), is added in quadrature:
-    // texture beyond (1 + deadband) of the photon + read part of a difference counts.
-    const double texDiffVar = std::max(0.0, 0.5 * (dv.x + dv.y) - 2 * photonVar * (1 + params.uncertaintyDeadband));
-    const double texScale = diff ? params.uncertaintyTextureScale : params.uncertaintyTextureScalePixelFit;
-    auto uncertainty = [&](double centreVar, double amplitude) {
-        const double texShift = std::sqrt(texDiffVar) * sigmaMajor / std::max(amplitude, 1e-9);
-        return sqrtVariance(centreVar + (dv.ok ? texScale * texScale * texShift * texShift : 0.0));
-    };
-    if (params.lmRefine) {
-        // A step smaller than a fraction of the centre's uncertainty changes nothing that matters.
-        // Not from a moment start (its χ², and so its uncertainty, is inflated by the poor start),
-        // and never looser than kMaxTolerancePx (a near-singular start could give any value).
-        constexpr double kMaxTolerancePx = 0.05;
-        double tolerance = params.lmTolerancePx;
-        if (params.lmToleranceFraction > 0 && !r.fallbackStart) {
-            const double u0 = uncertainty(centreVariance(), m.amplitude);
-            if (std::isfinite(u0))
-                tolerance = std::max(tolerance, std::min(params.lmToleranceFraction * u0, kMaxTolerancePx));
-        }
-        iterations += levenbergMarquardt(fw, p, cauchyC2, params.lmMaxIterations, tolerance, params.lmToleranceShape, jtj,
-                                         jtr, cost);
-        const double moved = std::hypot(p(1) + cx - m.x0, p(2) + cy - m.y0);
-        const double pcx = p(1) + cx, pcy = p(2) + cy;
-        // LM refines; it must not run off. A large move, or a shape far from the log fit's (a
-        // Gaussian stretched along a road), means it followed the ground: keep the log fit.
-        const double detLm = p(3) * p(5) - p(4) * p(4);
-        const double sigmaMajorLm =
-            std::sqrt(0.5 * (p(3) + p(5) + std::sqrt((p(3) - p(5)) * (p(3) - p(5)) + 4 * p(4) * p(4))) / detLm);
-        const double areaRatio = std::sqrt(det0 / detLm);  // σ1σ2 of LM over that of the log fit
-        // (A moment start's shape is rough: there only the spot-likeness check below applies.)
-        const bool shapeRunOff = !r.fallbackStart && (sigmaMajorLm > params.lmMaxShapeChange * sigmaMajor ||
-                                                      areaRatio > params.lmMaxShapeChange ||
-                                                      areaRatio < 1 / params.lmMaxShapeChange);
-        if (moved > params.lmMaxMovePx || shapeRunOff || pcx < xa - 0.5 ||
-            pcx > xb + 0.5 || pcy < ya - 0.5 || pcy > yb + 0.5) {
-            r.note = "LM moved the centre by " + std::to_string(moved).substr(0, 5) +
-                     " px or changed the shape too much; kept the log-fit result";
-            p << m.amplitude, m.x0 - cx, m.y0 - cy, m.a, m.b, m.c, background, 0, 0;
-            cost = accumulate(fw, p, cauchyC2, &jtj, &jtr);
-        } else {
-            r.stage = "lm";
-            m.amplitude = p(0);
-            m.x0 = pcx;
-            m.y0 = pcy;
-            m.a = p(3);
-            m.b = p(4);
-            m.c = p(5);
-            m.bg0 = p(6);
-            m.bgX = p(7);
-            m.bgY = p(8);
-        }
+
+    DifferenceVariances dv_;
+    int dof_ = 0;
+    double texDiffVar_ = 0, texScale_ = 0;
+};
+
+// Stage 4: LM from the start model. It refines; it must not run off: a large move, a shape far
+// from the log fit's (a Gaussian stretched along a road) or a centre outside the window means it
+// followed the ground, and the log fit is kept (*m unchanged, lp back at the start).
+void refineLm(const GaussParams& params, double background, LmProblem* lp, GaussModel* m, GaussResult* r, int* iterations) {
+    // A step smaller than a fraction of the centre's uncertainty changes nothing that matters.
+    // Not from a moment start (its χ², and so its uncertainty, is inflated by the poor start),
+    // and never looser than kMaxTolerancePx (a near-singular start could give any value).
+    constexpr double kMaxTolerancePx = 0.05;
+    double tolerance = params.lmTolerancePx;
+    if (params.lmToleranceFraction > 0 && !r->fallbackStart) {
+        const double u0 = lp->uncertainty(lp->centreVariance(), m->amplitude);
+        if (std::isfinite(u0)) tolerance = std::max(tolerance, std::min(params.lmToleranceFraction * u0, kMaxTolerancePx));
     }
-    fillFit(m, noise, &r.fit);
-    if (r.fallbackStart) {
+    Vec9& p = lp->p;
+    *iterations += levenbergMarquardt(lp->fw, p, lp->cauchyC2, params.lmMaxIterations, tolerance, params.lmToleranceShape,
+                                      lp->jtj, lp->jtr, lp->cost);
+    const double moved = std::hypot(p(1) + lp->cx - m->x0, p(2) + lp->cy - m->y0);
+    const double pcx = p(1) + lp->cx, pcy = p(2) + lp->cy;
+    const double detLm = p(3) * p(5) - p(4) * p(4);
+    const double sigmaMajorLm = std::sqrt(0.5 * (p(3) + p(5) + std::sqrt((p(3) - p(5)) * (p(3) - p(5)) + 4 * p(4) * p(4))) / detLm);
+    const double areaRatio = std::sqrt(lp->det0 / detLm);  // σ1σ2 of LM over that of the log fit
+    // (A moment start's shape is rough: there only the spot-likeness check of finishFit applies.)
+    const bool shapeRunOff = !r->fallbackStart && (sigmaMajorLm > params.lmMaxShapeChange * lp->sigmaMajor ||
+                                                   areaRatio > params.lmMaxShapeChange || areaRatio < 1 / params.lmMaxShapeChange);
+    if (moved > params.lmMaxMovePx || shapeRunOff || pcx < lp->xa - 0.5 || pcx > lp->xb + 0.5 || pcy < lp->ya - 0.5 ||
+        pcy > lp->yb + 0.5) {
+        r->note = "LM moved the centre by " + std::to_string(moved).substr(0, 5) +
+                  " px or changed the shape too much; kept the log-fit result";
+        lp->setStart(*m, background);
+        return;
+    }
+    r->stage = "lm";
+    m->amplitude = p(0);
+    m->x0 = pcx;
+    m->y0 = pcy;
+    m->a = p(3);
+    m->b = p(4);
+    m->c = p(5);
+    m->bg0 = p(6);
+    m->bgX = p(7);
+    m->bgY = p(8);
+}
+
+// Stage 5: the result: a moment start kept only when LM made a spot of it; the centre's
+// uncertainty; paper 000's MSE at the reported model over the domain pixels above the fitted
+// background. False (r->fit.error) when refused.
+bool finishFit(const cv::Mat& roi, const SpotDomain& domain, double noise, const LmProblem& lp, const GaussModel& m,
+               int iterations, GaussResult* r) {
+    fillFit(m, noise, &r->fit);
+    if (r->fallbackStart) {
         // A moment start is only a spot when LM made a spot of it: kept, spot-sized (σ 1.5–6 px,
         // axes within 1:2.5) and standing minPeakSnr-like above the ground (6 background σ).
-        const double big = std::max(r.fit.sigmaX, r.fit.sigmaY), small = std::min(r.fit.sigmaX, r.fit.sigmaY);
-        if (r.stage != "lm" || !(big >= 1.2 && big <= 6 && small * 2.5 >= big) || !(r.fit.snr >= 4.8)) {
-            r.fit = SpotFit{};
-            r.fit.error = "Gaussian fit failed: the domain's log-intensity is not peaked, and LM from its moments "
-                          "found no spot-like Gaussian";
-            return r;
+        const double big = std::max(r->fit.sigmaX, r->fit.sigmaY), small = std::min(r->fit.sigmaX, r->fit.sigmaY);
+        if (r->stage != "lm" || !(big >= 1.2 && big <= 6 && small * 2.5 >= big) || !(r->fit.snr >= 4.8)) {
+            r->fit = SpotFit{};
+            r->fit.error = "Gaussian fit failed: the domain's log-intensity is not peaked, and LM from its moments "
+                           "found no spot-like Gaussian";
+            return false;
         }
     }
-    r.fit.uncertaintyPx = uncertainty(centreVariance(), m.amplitude);
-    // Paper 000's MSE at the reported model, over the domain pixels above the fitted background.
+    r->fit.uncertaintyPx = lp.uncertainty(lp.centreVariance(), m.amplitude);
+    const int w = roi.cols;
+    const float* img = roi.ptr<float>();
     thread_local std::vector<double> mseF, mseQ;
     mseF.clear();
     mseQ.clear();
@@ -765,12 +804,46 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
         mseF.push_back(f);
         mseQ.push_back(m.a * dx * dx + 2 * m.b * dx * dy + m.c * dy * dy);
     }
-    r.fit.mse = paperMse(mseF, mseQ, m.amplitude);
-    r.fit.areaPx = static_cast<double>(domain.pixels.size());
-    r.fit.iterations = iterations;
-    r.model = m;
-    r.fit.ok = std::isfinite(r.fit.x) && std::isfinite(r.fit.y);
-    if (!r.fit.ok) r.fit.error = "Gaussian fit produced a non-finite centre";
+    r->fit.mse = paperMse(mseF, mseQ, m.amplitude);
+    r->fit.areaPx = static_cast<double>(domain.pixels.size());
+    r->fit.iterations = iterations;
+    r->model = m;
+    r->fit.ok = std::isfinite(r->fit.x) && std::isfinite(r->fit.y);
+    if (!r->fit.ok) r->fit.error = "Gaussian fit produced a non-finite centre";
+    return true;
+}
+
+}  // namespace
+
+GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double background, double noise,
+                     const GaussParams& params, const CameraParams& camera) {
+    GaussResult r;
+    if (!domain.found) {
+        r.fit.error = domain.why.empty() ? "no spot domain" : domain.why;
+        return r;
+    }
+    const int w = roi.cols, h = roi.rows;
+    LogStart st;
+    if (!logFitStart(roi.ptr<float>(), w, h, domain, background, params, &st, &r)) return r;
+    int iterations = 1;
+    guoIterations(params, &st, &r, &iterations);
+    const Quad& q = st.q;
+    GaussModel m;
+    m.amplitude = st.S * std::exp(q.lnScale);
+    m.x0 = q.x0 + domain.peakX;
+    m.y0 = q.y0 + domain.peakY;
+    m.a = q.a;
+    m.b = q.b;
+    m.c = q.c;
+    m.bg0 = background;
+    if (!(m.x0 > -0.5 && m.y0 > -0.5 && m.x0 < w - 0.5 && m.y0 < h - 0.5)) {
+        r.fit.error = "Gaussian fit failed: centre (" + std::to_string(m.x0) + ", " + std::to_string(m.y0) +
+                      ") outside the ROI";
+        return r;
+    }
+    LmProblem lp(roi, m, background, noise, params, camera);
+    if (params.lmRefine) refineLm(params, background, &lp, &m, &r, &iterations);
+    finishFit(roi, domain, noise, lp, m, iterations, &r);
     return r;
 }
 
