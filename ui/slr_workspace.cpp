@@ -130,8 +130,25 @@ void fill(QCPGraph* g, const QVector<double>& x, const QVector<double>& y) {
 
 SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     m_controller = new SlrController(this);
+    QHBoxLayout* top = buildInputRow();
+    m_info = new QLabel(this);
+    m_info->setWordWrap(true);
 
-    // Top: inputs.
+    buildPlots();
+    QWidget* vsplit = buildPlotArea();
+    QWidget* panel = buildPanel();
+    layoutWorkspace(this, wrapRow(top), m_info, vsplit, panel, 430, 1030);
+    wireController();
+    m_params->setParams(m_controller->params());
+    m_undo->setEnabled(undoStackOf(this).canUndo());
+    m_clearEdits->setEnabled(false);
+    m_cpfClear->setEnabled(false);
+    m_snxClear->setEnabled(false);
+    applyTimeAxis();
+}
+
+// Top: the inputs (pass file, CPF, CPF folder, SINEX) and their labels.
+QHBoxLayout* SlrWorkspace::buildInputRow() {
     auto* top = new QHBoxLayout;
     auto* open = new QPushButton(tr("Open CRD / O-C CSV…"), this);
     open->setToolTip(tr("Open an ILRS CRD full-rate file (every pass is listed) or an O-C table (CSV: epoch_s,oc_s)"));
@@ -151,17 +168,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     m_cpfLabel->setToolTip(tr("The prediction in use"));
     m_snxLabel = new QLabel(tr("no station file"), this);
     m_snxLabel->setToolTip(tr("The station coordinates in use"));
-    m_passCombo = new QComboBox(this);
-    m_passCombo->setMinimumWidth(280);
-    // The items are long (start, station, satellite, duration, points, status): the combo does
-    // not grow to the longest, its popup shows them whole.
-    m_passCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_passCombo->setMinimumContentsLength(28);
-    m_passCombo->view()->setMinimumWidth(720);
     for (QLabel* l : {m_cpfLabel, m_snxLabel}) l->setMaximumWidth(190);
-    m_passCombo->setToolTip(tr("Every pass of the file by start time: station, satellite, UTC start, duration, points, status"));
-    auto* all = new QPushButton(tr("Screen all passes…"), this);
-    all->setToolTip(tr("Screen every pass of the file in the background: a table of the results, any row opens its pass"));
     top->addWidget(open);
     top->addWidget(cpf);
     top->addWidget(cpfDir);
@@ -171,10 +178,42 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     top->addWidget(m_snxLabel);
     top->addWidget(m_snxClear);
     top->addStretch(1);
-    m_info = new QLabel(this);
-    m_info->setWordWrap(true);
+    connect(open, &QPushButton::clicked, this, [this] {
+        QSettings st;
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open a ranging pass"), st.value("paths/slr").toString(),
+                                                          tr("CRD and O-C tables (*.frd *.fr2 *.npt *.np2 *.crd *.csv);;All files (*)"));
+        if (path.isEmpty()) return;
+        st.setValue("paths/slr", QFileInfo(path).absolutePath());
+        QString err;
+        if (!openPath(path, -1, &err)) QMessageBox::warning(this, tr("Cannot open the file"), err);
+    });
+    auto choose = [this](bool folder, bool cpfFile) {
+        QSettings st;
+        const QString dir = st.value("paths/slrInputs", st.value("paths/slr")).toString();
+        const QString path = folder ? QFileDialog::getExistingDirectory(this, tr("Folder of CPF predictions"), dir)
+                             : cpfFile ? QFileDialog::getOpenFileName(this, tr("CPF prediction"), dir, tr("CPF (*.hts *.cpf *.sgf);;All files (*)"))
+                                       : QFileDialog::getOpenFileName(this, tr("SINEX station coordinates"), dir, tr("SINEX (*.snx *.SNX);;All files (*)"));
+        if (path.isEmpty()) return;
+        st.setValue("paths/slrInputs", folder ? path : QFileInfo(path).absolutePath());
+        QString err;
+        if (!(cpfFile || folder ? setCpf(path, &err) : setSinex(path, &err))) QMessageBox::warning(this, tr("Cannot use the file"), err);
+    };
+    connect(cpf, &QPushButton::clicked, this, [=] { choose(false, true); });
+    connect(cpfDir, &QPushButton::clicked, this, [=] { choose(true, true); });
+    connect(snx, &QPushButton::clicked, this, [=] { choose(false, false); });
+    connect(m_cpfClear, &QToolButton::clicked, this, [this] {
+        QString err;
+        if (!setCpf(QString(), &err)) QMessageBox::warning(this, tr("CPF"), err);
+    });
+    connect(m_snxClear, &QToolButton::clicked, this, [this] {
+        QString err;
+        if (!setSinex(QString(), &err)) QMessageBox::warning(this, tr("SINEX"), err);
+    });
+    return top;
+}
 
-    // Plots.
+// The plots: O-C, binary image (with its colour maps and legend entries), residual histogram.
+void SlrWorkspace::buildPlots() {
     m_ocPlot = newPlot(this, tr("Epoch (s since 0h UTC)"), tr("O-C (ns, two-way)"));
     m_imagePlot = newPlot(this, tr("Epoch (s since 0h UTC)"), tr("O-C (ns, two-way)"));
     m_imagePlot->plotLayout()->insertRow(0);
@@ -236,6 +275,21 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
         g3->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(kRecovered, 1.2), Qt::NoBrush, 6));
         g3->removeFromLegend();
     }
+}
+
+// The plots' area: the pass list and the plots' tools above them, the histogram and the
+// summary below.
+QWidget* SlrWorkspace::buildPlotArea() {
+    m_passCombo = new QComboBox(this);
+    m_passCombo->setMinimumWidth(280);
+    // The items are long (start, station, satellite, duration, points, status): the combo does
+    // not grow to the longest, its popup shows them whole.
+    m_passCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_passCombo->setMinimumContentsLength(28);
+    m_passCombo->view()->setMinimumWidth(720);
+    m_passCombo->setToolTip(tr("Every pass of the file by start time: station, satellite, UTC start, duration, points, status"));
+    auto* all = new QPushButton(tr("Screen all passes…"), this);
+    all->setToolTip(tr("Screen every pass of the file in the background: a table of the results, any row opens its pass"));
     // The plots' own tools: main plot, time axis, home, the hover readout.
     auto* tools = new QHBoxLayout;
     m_viewCombo = new QComboBox(this);
@@ -296,7 +350,22 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     vsplit->setStretchFactor(0, 3);
     vsplit->setStretchFactor(1, 1);
 
-    // Right: parameters.
+    connect(m_passCombo, &QComboBox::activated, this, [this](int i) {
+        if (m_loading || !m_controller->crd()) return;
+        m_controller->selectPass(m_passCombo->itemData(i).toInt(), nullptr);  // a failure is shown in place
+        emit modified();
+    });
+    connect(all, &QPushButton::clicked, this, [this] {
+        if (!screenAllPasses()) QMessageBox::information(this, tr("Screen all passes"), tr("Open a CRD file first."));
+    });
+    connect(home, &QPushButton::clicked, this, &SlrWorkspace::resetView);
+    connect(m_viewCombo, qOverload<int>(&QComboBox::activated), this, [this](int i) { setResidualView(i == 1); });
+    connect(m_sodCheck, &QCheckBox::toggled, this, &SlrWorkspace::setSecondsOfDay);
+    return vsplit;
+}
+
+// Right: parameters, the mouse's edit modes, presets and export.
+QWidget* SlrWorkspace::buildPanel() {
     auto* panel = new QWidget(this);
     auto* pl = new QVBoxLayout(panel);
     m_params = new SlrParamsPanel(panel);
@@ -339,111 +408,15 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     for (QPushButton* b : {savePreset, exCsv, exCrd, exNp}) xl->addWidget(b);
     pl->addWidget(xg);
     pl->addStretch(1);
-    layoutWorkspace(this, wrapRow(top), m_info, vsplit, panel, 430, 1030);
-
-    // Wiring.
-    connect(m_controller, &SlrController::runReady, this, &SlrWorkspace::showRun);
-    connect(m_controller, &SlrController::runFailed, this,
-            [this](const QString& m) { m_stats->setText(tr("<b>Screening failed:</b> %1").arg(m.toHtmlEscaped())); });
-    connect(m_controller, &SlrController::status, this, &SlrWorkspace::status);
-    connect(m_controller, &SlrController::passListChanged, this, &SlrWorkspace::fillPassList);
-    connect(m_controller, &SlrController::editsChanged, this, [this] {
-        bool any = false;
-        for (int8_t f : m_controller->forced()) any = any || f;
-        m_clearEdits->setEnabled(any);
-    });
-    // (the button is the context: created before the stack, it goes first when the workspace is
-    // destroyed, so that the stack's clear() on its own destruction reaches nobody)
-    QUndoStack* undo = &undoStackOf(this);
-    auto undoState = [this, undo] { m_undo->setEnabled(undo->canUndo()); };
-    connect(undo, &QUndoStack::canUndoChanged, m_undo, undoState);
-    connect(m_controller, &SlrController::passChanged, this, &SlrWorkspace::showPass);
-    connect(m_params, &SlrParamsPanel::paramsChanged, this, [this](const SlrParams& p) {
-        const SlrParams before = m_controller->params();
-        m_controller->setParams(p);
-        if (!m_applyingParams) pushParams(this, before, p);
-        emit modified();
-    });
-    connect(m_ocPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_ocPlot, m_imagePlot); });
-    connect(m_ocPlot->yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this](const QCPRange& r) {
-        m_ocPlot->yAxis2->setRange(r.lower * kMmPerPs, r.upper * kMmPerPs);  // mm one-way beside ps two-way
-        linkRanges(m_ocPlot, m_imagePlot);
-    });
-    connect(m_imagePlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_imagePlot, m_ocPlot); });
-    connect(m_imagePlot->yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_imagePlot, m_ocPlot); });
-    connect(m_ocPlot->selectionRect(), &QCPSelectionRect::accepted, this,
-            [this](const QRect& r, QMouseEvent*) { boxSelected(r); });
     for (QRadioButton* b : {m_modeZoom, m_modeBoxZoom, m_modeIn, m_modeOut})
         connect(b, &QRadioButton::toggled, this, [this] {
             m_ocPlot->setSelectionRectMode(m_modeZoom->isChecked()      ? QCP::srmNone
                                            : m_modeBoxZoom->isChecked() ? QCP::srmZoom
                                                                         : QCP::srmCustom);
         });
-    for (QCustomPlot* p : {m_ocPlot, m_imagePlot, m_histPlot}) {
-        p->installEventFilter(this);
-        connect(p, &QCustomPlot::mouseDoubleClick, this, [this] { resetView(); });
-        // A legend entry switches its series on and off.
-        connect(p, &QCustomPlot::legendClick, this, [this, p](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent*) {
-            auto* pi = qobject_cast<QCPPlottableLegendItem*>(item);
-            if (!pi) return;
-            const QString key = pi->plottable()->property("series").toString();
-            const bool hide = pi->plottable()->visible();
-            pi->plottable()->setVisible(!hide);
-            pi->setTextColor(hide ? QColor(160, 160, 160) : Qt::black);
-            if (!key.isEmpty()) {
-                if (hide) m_hidden.insert(key);
-                else m_hidden.remove(key);
-            }
-            p->replot(QCustomPlot::rpQueuedReplot);
-        });
-    }
-    m_ocPlot->setMouseTracking(true);  // the readout follows the mouse without a button held
-    connect(m_ocPlot, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { m_hover->setText(readoutAt(e->position())); });
-    connect(home, &QPushButton::clicked, this, &SlrWorkspace::resetView);
-    connect(m_viewCombo, qOverload<int>(&QComboBox::activated), this, [this](int i) { setResidualView(i == 1); });
-    connect(m_sodCheck, &QCheckBox::toggled, this, &SlrWorkspace::setSecondsOfDay);
     connect(m_undo, &QPushButton::clicked, this, [this] { undoStackOf(this).undo(); });
     connect(m_clearEdits, &QPushButton::clicked, this, [this] {
         pushForced(std::vector<int8_t>(m_controller->forced().size(), 0), tr("Clear SLR edits"));
-    });
-    connect(open, &QPushButton::clicked, this, [this] {
-        QSettings st;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open a ranging pass"), st.value("paths/slr").toString(),
-                                                          tr("CRD and O-C tables (*.frd *.fr2 *.npt *.np2 *.crd *.csv);;All files (*)"));
-        if (path.isEmpty()) return;
-        st.setValue("paths/slr", QFileInfo(path).absolutePath());
-        QString err;
-        if (!openPath(path, -1, &err)) QMessageBox::warning(this, tr("Cannot open the file"), err);
-    });
-    auto choose = [this](bool folder, bool cpfFile) {
-        QSettings st;
-        const QString dir = st.value("paths/slrInputs", st.value("paths/slr")).toString();
-        const QString path = folder ? QFileDialog::getExistingDirectory(this, tr("Folder of CPF predictions"), dir)
-                             : cpfFile ? QFileDialog::getOpenFileName(this, tr("CPF prediction"), dir, tr("CPF (*.hts *.cpf *.sgf);;All files (*)"))
-                                       : QFileDialog::getOpenFileName(this, tr("SINEX station coordinates"), dir, tr("SINEX (*.snx *.SNX);;All files (*)"));
-        if (path.isEmpty()) return;
-        st.setValue("paths/slrInputs", folder ? path : QFileInfo(path).absolutePath());
-        QString err;
-        if (!(cpfFile || folder ? setCpf(path, &err) : setSinex(path, &err))) QMessageBox::warning(this, tr("Cannot use the file"), err);
-    };
-    connect(cpf, &QPushButton::clicked, this, [=] { choose(false, true); });
-    connect(cpfDir, &QPushButton::clicked, this, [=] { choose(true, true); });
-    connect(snx, &QPushButton::clicked, this, [=] { choose(false, false); });
-    connect(m_cpfClear, &QToolButton::clicked, this, [this] {
-        QString err;
-        if (!setCpf(QString(), &err)) QMessageBox::warning(this, tr("CPF"), err);
-    });
-    connect(m_snxClear, &QToolButton::clicked, this, [this] {
-        QString err;
-        if (!setSinex(QString(), &err)) QMessageBox::warning(this, tr("SINEX"), err);
-    });
-    connect(m_passCombo, &QComboBox::activated, this, [this](int i) {
-        if (m_loading || !m_controller->crd()) return;
-        m_controller->selectPass(m_passCombo->itemData(i).toInt(), nullptr);  // a failure is shown in place
-        emit modified();
-    });
-    connect(all, &QPushButton::clicked, this, [this] {
-        if (!screenAllPasses()) QMessageBox::information(this, tr("Screen all passes"), tr("Open a CRD file first."));
     });
     connect(savePreset, &QPushButton::clicked, this, [this] {
         QString err;
@@ -485,12 +458,62 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
         if (!exportCrd(path, ask.clickedButton() == whole, &message)) QMessageBox::warning(this, title, message);
     });
     connect(exNp, &QPushButton::clicked, this, [=] { exporter(tr("Export normal points"), tr("CRD (*.npt *.np2 *.crd)"), &SlrController::exportNormalPoints); });
-    m_params->setParams(m_controller->params());
-    m_undo->setEnabled(undoStackOf(this).canUndo());
-    m_clearEdits->setEnabled(false);
-    m_cpfClear->setEnabled(false);
-    m_snxClear->setEnabled(false);
-    applyTimeAxis();
+    return panel;
+}
+
+// The controller's signals, the parameters panel, the plots' links, selection and legends.
+void SlrWorkspace::wireController() {
+    connect(m_controller, &SlrController::runReady, this, &SlrWorkspace::showRun);
+    connect(m_controller, &SlrController::runFailed, this,
+            [this](const QString& m) { m_stats->setText(tr("<b>Screening failed:</b> %1").arg(m.toHtmlEscaped())); });
+    connect(m_controller, &SlrController::status, this, &SlrWorkspace::status);
+    connect(m_controller, &SlrController::passListChanged, this, &SlrWorkspace::fillPassList);
+    connect(m_controller, &SlrController::editsChanged, this, [this] {
+        bool any = false;
+        for (int8_t f : m_controller->forced()) any = any || f;
+        m_clearEdits->setEnabled(any);
+    });
+    // (the button is the context: created before the stack, it goes first when the workspace is
+    // destroyed, so that the stack's clear() on its own destruction reaches nobody)
+    QUndoStack* undo = &undoStackOf(this);
+    auto undoState = [this, undo] { m_undo->setEnabled(undo->canUndo()); };
+    connect(undo, &QUndoStack::canUndoChanged, m_undo, undoState);
+    connect(m_controller, &SlrController::passChanged, this, &SlrWorkspace::showPass);
+    connect(m_params, &SlrParamsPanel::paramsChanged, this, [this](const SlrParams& p) {
+        const SlrParams before = m_controller->params();
+        m_controller->setParams(p);
+        if (!m_applyingParams) pushParams(this, before, p);
+        emit modified();
+    });
+    connect(m_ocPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_ocPlot, m_imagePlot); });
+    connect(m_ocPlot->yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this](const QCPRange& r) {
+        m_ocPlot->yAxis2->setRange(r.lower * kMmPerPs, r.upper * kMmPerPs);  // mm one-way beside ps two-way
+        linkRanges(m_ocPlot, m_imagePlot);
+    });
+    connect(m_imagePlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_imagePlot, m_ocPlot); });
+    connect(m_imagePlot->yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_imagePlot, m_ocPlot); });
+    connect(m_ocPlot->selectionRect(), &QCPSelectionRect::accepted, this,
+            [this](const QRect& r, QMouseEvent*) { boxSelected(r); });
+    for (QCustomPlot* p : {m_ocPlot, m_imagePlot, m_histPlot}) {
+        p->installEventFilter(this);
+        connect(p, &QCustomPlot::mouseDoubleClick, this, [this] { resetView(); });
+        // A legend entry switches its series on and off.
+        connect(p, &QCustomPlot::legendClick, this, [this, p](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent*) {
+            auto* pi = qobject_cast<QCPPlottableLegendItem*>(item);
+            if (!pi) return;
+            const QString key = pi->plottable()->property("series").toString();
+            const bool hide = pi->plottable()->visible();
+            pi->plottable()->setVisible(!hide);
+            pi->setTextColor(hide ? QColor(160, 160, 160) : Qt::black);
+            if (!key.isEmpty()) {
+                if (hide) m_hidden.insert(key);
+                else m_hidden.remove(key);
+            }
+            p->replot(QCustomPlot::rpQueuedReplot);
+        });
+    }
+    m_ocPlot->setMouseTracking(true);  // the readout follows the mouse without a button held
+    connect(m_ocPlot, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { m_hover->setText(readoutAt(e->position())); });
 }
 
 bool SlrWorkspace::exportCrd(const QString& path, bool wholeFile, QString* message) {

@@ -20,6 +20,8 @@ class QCustomPlot;
 class QCPRange;
 class QCPColorMap;
 
+class QHBoxLayout;
+
 namespace lwb::ui {
 
 class ParamSlider;
@@ -91,6 +93,13 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    // The constructor's parts.
+    QHBoxLayout* buildInputRow();
+    void buildPlots();
+    QWidget* buildPlotArea();
+    QWidget* buildPanel();
+    void wireController();
+
     void showRun(const SlrRun& run);
     void showPass();
     void fillPassList();
