@@ -896,13 +896,39 @@ QString SlrWorkspace::readoutAt(const QPointF& pixel) const {
 void SlrWorkspace::showRun(const SlrRun& run) {
     const PassData& p = m_controller->pass();
     if (p.t.empty() || run.accepted.size() != p.t.size()) return;
-    const ScreenResult& s = run.screen;
     // The scale used, on the fields left at auto.
-    m_params->showScale(scaleChoice(s));
+    m_params->showScale(scaleChoice(run.screen));
     const bool fresh = m_ocPlot->property("fresh").toBool();
     const QCPRange xr = m_ocPlot->xAxis->range(), yr = m_ocPlot->yAxis->range();
     // The main plot: O-C (ns) or the residual about the post-fit trend (ps two-way), by class.
     const bool residual = m_residual && run.post.ok;
+    drawMainPlot(run, residual);
+    drawImage(run);
+    if (fresh || residual != m_ocPlot->property("residualShown").toBool()) {
+        fitMainPlot();
+        if (!fresh) m_ocPlot->xAxis->setRange(xr);  // a switch of view keeps the time span
+        m_ocPlot->setProperty("fresh", false);
+        m_ocPlot->setProperty("residualShown", residual);
+    } else {
+        m_ocPlot->xAxis->setRange(xr);
+        m_ocPlot->yAxis->setRange(yr);
+    }
+    linkRanges(m_ocPlot, m_imagePlot);
+    if (m_imageFlattened || residual) fitImagePlot();
+    drawHistogram(run);
+    m_stats->setText(summaryHtml(run));
+    fitLegendColumns(m_ocPlot);  // the entries' names (counts, degree) changed
+    fitLegendColumns(m_imagePlot);
+    m_ocPlot->replot(QCustomPlot::rpQueuedReplot);
+    m_imagePlot->replot(QCustomPlot::rpQueuedReplot);
+    m_histPlot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+// The main plot's series: noise, signal, recovered, rejected, manual edits, the station's flags,
+// the trend per segment and the normal points; in O-C (ns) or as residuals (ps).
+void SlrWorkspace::drawMainPlot(const SlrRun& run, bool residual) {
+    const PassData& p = m_controller->pass();
+    const ScreenResult& s = run.screen;
     m_ocPlot->clearGraphs();
     const size_t n = p.t.size();
     const auto& forced = m_controller->forced();
@@ -993,11 +1019,17 @@ void SlrWorkspace::showRun(const SlrRun& run) {
         title->setText(residual ? tr("Residual about the post-fit trend")
                        : m_residual ? tr("O-C (no post-fit, so no residual view: %1)").arg(QString::fromStdString(run.post.error))
                                     : tr("O-C"));
-    // Binary image: the occupied pixels as a colour map in (epoch, O-C) units, so its axes can
-    // follow the O-C plot. Cells hold 0 empty, 1 noise, 2 recovered, 3 signal; an image larger
-    // than 2000 × 2000 cells is shown max-pooled (a cell shows the strongest class it covers).
-    // After a refinement round the kept image is of the O-C less the accepted track's trend
-    // (ScreenResult::flattenS); it is drawn in that frame, with only the time axis linked.
+}
+
+// Binary image: the occupied pixels as a colour map in (epoch, O-C) units, so its axes can
+// follow the O-C plot. Cells hold 0 empty, 1 noise, 2 recovered, 3 signal; an image larger than
+// 2000 × 2000 cells is shown max-pooled (a cell shows the strongest class it covers). After a
+// refinement round the kept image is of the O-C less the accepted track's trend
+// (ScreenResult::flattenS); it is drawn in that frame, with only the time axis linked.
+void SlrWorkspace::drawImage(const SlrRun& run) {
+    const PassData& p = m_controller->pass();
+    const ScreenResult& s = run.screen;
+    const size_t n = p.t.size();
     const bool flattened = s.flattenS.size() == n;
     m_imageFlattened = flattened;
     std::vector<double> imgOc(p.oc);
@@ -1086,39 +1118,42 @@ void SlrWorkspace::showRun(const SlrRun& run) {
         if (ox.isEmpty()) off->removeFromLegend();
         else off->addToLegend();
     }
-    if (fresh || residual != m_ocPlot->property("residualShown").toBool()) {
-        fitMainPlot();
-        if (!fresh) m_ocPlot->xAxis->setRange(xr);  // a switch of view keeps the time span
-        m_ocPlot->setProperty("fresh", false);
-        m_ocPlot->setProperty("residualShown", residual);
-    } else {
-        m_ocPlot->xAxis->setRange(xr);
-        m_ocPlot->yAxis->setRange(yr);
-    }
-    linkRanges(m_ocPlot, m_imagePlot);
-    if (m_imageFlattened || residual) fitImagePlot();
-    // Residual histogram of the kept points.
+}
+
+// Residual histogram of the kept points.
+void SlrWorkspace::drawHistogram(const SlrRun& run) {
     m_histPlot->clearPlottables();
+    if (!run.post.ok) return;
+    const size_t n = m_controller->pass().t.size();
+    std::vector<double> res;
+    for (size_t i = 0; i < n; ++i)
+        if (run.post.kept[i]) res.push_back(run.post.residuals[i] * 1e12);
+    if (!res.empty()) {
+        const auto [mn, mx] = std::minmax_element(res.begin(), res.end());
+        const int bins = std::clamp(int(std::sqrt(double(res.size()))), 10, 120);
+        const double w = (*mx - *mn) / bins + 1e-9;
+        QVector<double> keys(bins), vals(bins, 0);
+        for (int b = 0; b < bins; ++b) keys[b] = *mn + (b + 0.5) * w;
+        for (double v : res) vals[std::min(bins - 1, int((v - *mn) / w))] += 1;
+        auto* bars = new QCPBars(m_histPlot->xAxis, m_histPlot->yAxis);
+        bars->setWidth(w);
+        bars->setData(keys, vals, true);
+        bars->setPen(Qt::NoPen);
+        bars->setBrush(kSignal);
+        m_histPlot->rescaleAxes();
+        m_histPlot->yAxis->setRangeLower(0);
+    }
+}
+
+// The summary beside the histogram: accepted, RMS, normal points or why none, the scale, the
+// refinement, the regions, the agreement with the truth or the station's flags, the warnings.
+QString SlrWorkspace::summaryHtml(const SlrRun& run) const {
+    const PassData& p = m_controller->pass();
+    const ScreenResult& s = run.screen;
+    const size_t n = p.t.size();
+    const bool flattened = s.flattenS.size() == n;
     QString statsHtml;
     if (run.post.ok) {
-        std::vector<double> res;
-        for (size_t i = 0; i < n; ++i)
-            if (run.post.kept[i]) res.push_back(run.post.residuals[i] * 1e12);
-        if (!res.empty()) {
-            const auto [mn, mx] = std::minmax_element(res.begin(), res.end());
-            const int bins = std::clamp(int(std::sqrt(double(res.size()))), 10, 120);
-            const double w = (*mx - *mn) / bins + 1e-9;
-            QVector<double> keys(bins), vals(bins, 0);
-            for (int b = 0; b < bins; ++b) keys[b] = *mn + (b + 0.5) * w;
-            for (double v : res) vals[std::min(bins - 1, int((v - *mn) / w))] += 1;
-            auto* bars = new QCPBars(m_histPlot->xAxis, m_histPlot->yAxis);
-            bars->setWidth(w);
-            bars->setData(keys, vals, true);
-            bars->setPen(Qt::NoPen);
-            bars->setBrush(kSignal);
-            m_histPlot->rescaleAxes();
-            m_histPlot->yAxis->setRangeLower(0);
-        }
         const ResidualStats& st = run.post.stats;
         statsHtml += tr("<b>Accepted</b> %1 of %2 (signal %3, recovered %4), post-fit kept %5, rejected %6<br>"
                         "<b>RMS</b> %7 ps (%8 mm one-way) · skew %9 · kurtosis %10 · peak−mean %11 ps<br>")
@@ -1185,12 +1220,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
                          .arg(tp + fn ? double(tp) / (tp + fn) : 0, 0, 'f', 3);
     }
     for (const auto& w : s.warnings) statsHtml += "<br><i>" + QString::fromStdString(w).toHtmlEscaped() + "</i>";
-    m_stats->setText(statsHtml);
-    fitLegendColumns(m_ocPlot);  // the entries' names (counts, degree) changed
-    fitLegendColumns(m_imagePlot);
-    m_ocPlot->replot(QCustomPlot::rpQueuedReplot);
-    m_imagePlot->replot(QCustomPlot::rpQueuedReplot);
-    m_histPlot->replot(QCustomPlot::rpQueuedReplot);
+    return statsHtml;
 }
 
 QJsonObject SlrWorkspace::saveState() const {

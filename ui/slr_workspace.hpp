@@ -101,6 +101,10 @@ private:
     void wireController();
 
     void showRun(const SlrRun& run);
+    void drawMainPlot(const SlrRun& run, bool residual);
+    void drawImage(const SlrRun& run);
+    void drawHistogram(const SlrRun& run);
+    QString summaryHtml(const SlrRun& run) const;
     void showPass();
     void fillPassList();
     void applyTimeAxis();
