@@ -112,7 +112,34 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     m_proxy->setSourceModel(m_model);
     m_proxy->setSortRole(ShotTableModel::SortRole);
 
-    // Left: the shot list.
+    QWidget* left = buildShotList();
+    buildCentre();
+    // Right: parameters.
+    m_panel = new FootprintParamsPanel(this);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(m_panel);
+    scroll->setWidgetResizable(true);
+    fitPanelWidth(scroll);  // as wide as the panel needs: nothing cut off, no sideways scrolling
+
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(left);
+    split->addWidget(m_tabs);
+    split->addWidget(scroll);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 3);
+    split->setStretchFactor(2, 0);
+    split->setSizes({470, 620, 340});
+    auto* lay = new QHBoxLayout(this);
+    lay->setContentsMargins(4, 4, 4, 4);
+    lay->addWidget(split);
+
+    wireController();
+    setRoiOverlay();
+    updateCounts();
+}
+
+// Left: the shot list, its filter and counts, the review buttons and the note.
+QWidget* FootprintWorkspace::buildShotList() {
     auto* left = new QWidget(this);
     auto* leftLay = new QVBoxLayout(left);
     leftLay->setContentsMargins(0, 0, 0, 0);
@@ -175,7 +202,29 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     m_note->setToolTip(tr("Kept in the session and the review table export"));
     leftLay->addWidget(m_note);
 
-    // Centre: review and trend tabs.
+    connect(m_filter, &QComboBox::currentIndexChanged, this, [this](int i) {
+        const int keep = currentSourceRow();
+        m_proxy->setVerdictFilter(ShotFilterProxy::Filter(i));
+        // Stay on the current shot when it is in the new view, else start at the top.
+        const QModelIndex p = m_proxy->mapFromSource(m_model->index(keep, 0));
+        if (p.isValid())
+            m_table->selectRow(p.row());
+        else if (m_proxy->rowCount() > 0)
+            m_table->selectRow(0);
+        emit modified();
+    });
+    connect(accept, &QPushButton::clicked, this, &FootprintWorkspace::acceptCurrent);
+    connect(reject, &QPushButton::clicked, this, &FootprintWorkspace::rejectCurrent);
+    connect(next, &QPushButton::clicked, this, &FootprintWorkspace::nextUnreviewed);
+    connect(clearOv, &QPushButton::clicked, this, [this] { judgeCurrent(false, Verdict::Good); });
+    connect(m_note, &QLineEdit::editingFinished, this, &FootprintWorkspace::commitNote);
+    connect(m_note, &QLineEdit::returnPressed, this, [this] { m_table->setFocus(); });
+    return left;
+}
+
+// Centre: the review tab (ROI, frame, histogram, colour bar, readout, details), the contact
+// sheet and the trend tab.
+void FootprintWorkspace::buildCentre() {
     m_tabs = new QTabWidget(this);
     auto* review = new QWidget(m_tabs);
     auto* revLay = new QVBoxLayout(review);
@@ -244,37 +293,24 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     m_tabs->addTab(trend, tr("Trend"));
     m_trendTab = trend;
 
-    // Right: parameters.
-    m_panel = new FootprintParamsPanel(this);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(m_panel);
-    scroll->setWidgetResizable(true);
-    fitPanelWidth(scroll);  // as wide as the panel needs: nothing cut off, no sideways scrolling
-
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(left);
-    split->addWidget(m_tabs);
-    split->addWidget(scroll);
-    split->setStretchFactor(0, 2);
-    split->setStretchFactor(1, 3);
-    split->setStretchFactor(2, 0);
-    split->setSizes({470, 620, 340});
-    auto* lay = new QHBoxLayout(this);
-    lay->setContentsMargins(4, 4, 4, 4);
-    lay->addWidget(split);
-
-    // Wiring.
-    connect(m_filter, &QComboBox::currentIndexChanged, this, [this](int i) {
-        const int keep = currentSourceRow();
-        m_proxy->setVerdictFilter(ShotFilterProxy::Filter(i));
-        // Stay on the current shot when it is in the new view, else start at the top.
-        const QModelIndex p = m_proxy->mapFromSource(m_model->index(keep, 0));
-        if (p.isValid())
-            m_table->selectRow(p.row());
-        else if (m_proxy->rowCount() > 0)
-            m_table->selectRow(0);
-        emit modified();
+    connect(m_colorMap, &QComboBox::currentIndexChanged, this, [this] {
+        m_sheet->setColorMap(colorMapFromIndex(m_colorMap->currentIndex()));
+        showDetail(m_detail);
     });
+    connect(m_display, &DisplayControls::changed, this, [this] { showDetail(m_detail); });
+    for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres})
+        connect(c, &QCheckBox::toggled, this, [this] { m_roiView->update(); });
+    connect(m_roiView, &ImageView::pixelHovered, this, [this](double x, double y, double v) {
+        m_readout->setText(tr("Pixel (%1, %2): %3 DN").arg(x, 0, 'f', 0).arg(y, 0, 'f', 0).arg(v, 0, 'f', 0));
+    });
+    connect(m_frameView, &ImageView::pixelHovered, this, [this](double x, double y, double v) {
+        m_readout->setText(tr("Frame pixel (%1, %2): %3 DN").arg(x, 0, 'f', 0).arg(y, 0, 'f', 0).arg(v, 0, 'f', 0));
+    });
+}
+
+// The undo history, the table's selection, the parameters, the controller's signals, the review
+// keys and the contact sheet.
+void FootprintWorkspace::wireController() {
     // (the controller, created before the stack, is the context: it goes first when the workspace
     // is destroyed, so that the stack's clear() on its own destruction reaches nobody)
     QUndoStack* undo = &undoStackOf(this);
@@ -335,25 +371,6 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
         emit status(msg);
         refreshTrend();
     });
-    connect(m_colorMap, &QComboBox::currentIndexChanged, this, [this] {
-        m_sheet->setColorMap(colorMapFromIndex(m_colorMap->currentIndex()));
-        showDetail(m_detail);
-    });
-    connect(m_display, &DisplayControls::changed, this, [this] { showDetail(m_detail); });
-    for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres})
-        connect(c, &QCheckBox::toggled, this, [this] { m_roiView->update(); });
-    connect(m_roiView, &ImageView::pixelHovered, this, [this](double x, double y, double v) {
-        m_readout->setText(tr("Pixel (%1, %2): %3 DN").arg(x, 0, 'f', 0).arg(y, 0, 'f', 0).arg(v, 0, 'f', 0));
-    });
-    connect(m_frameView, &ImageView::pixelHovered, this, [this](double x, double y, double v) {
-        m_readout->setText(tr("Frame pixel (%1, %2): %3 DN").arg(x, 0, 'f', 0).arg(y, 0, 'f', 0).arg(v, 0, 'f', 0));
-    });
-    connect(accept, &QPushButton::clicked, this, &FootprintWorkspace::acceptCurrent);
-    connect(reject, &QPushButton::clicked, this, &FootprintWorkspace::rejectCurrent);
-    connect(next, &QPushButton::clicked, this, &FootprintWorkspace::nextUnreviewed);
-    connect(clearOv, &QPushButton::clicked, this, [this] { judgeCurrent(false, Verdict::Good); });
-    connect(m_note, &QLineEdit::editingFinished, this, &FootprintWorkspace::commitNote);
-    connect(m_note, &QLineEdit::returnPressed, this, [this] { m_table->setFocus(); });
     // Review keys on the table and on the contact sheet (the sheet follows the table's current).
     for (QWidget* target : {static_cast<QWidget*>(m_table), static_cast<QWidget*>(m_sheet)}) {
         auto key = [this, target](Qt::Key k, void (FootprintWorkspace::*fn)()) {
@@ -384,6 +401,11 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
         m_sheet->setFocus();  // arrows, A / R / N and Enter act on the sheet at once
     });
 
+}
+
+// What the ROI view draws over the image: the domain's outline, the Gaussian's 1/e² ellipse,
+// the TEFM ellipse and the centres.
+void FootprintWorkspace::setRoiOverlay() {
     m_roiView->setOverlay([this](QPainter& p, double scale) {
         const ShotDetail& d = m_detail;
         if (d.roi.empty()) return;
@@ -417,7 +439,6 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
             if (d.gauss.fit.ok) drawCross(p, {d.gauss.fit.x, d.gauss.fit.y}, s, QPen(kGaussColor, lw * 1.3), true);
         }
     });
-    updateCounts();
 }
 
 int FootprintWorkspace::currentSourceRow() const {

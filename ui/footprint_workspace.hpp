@@ -78,6 +78,12 @@ signals:
     void status(const QString& message);
 
 private:
+    // The constructor's parts.
+    QWidget* buildShotList();
+    void buildCentre();
+    void wireController();
+    void setRoiOverlay();
+
     void showDetail(const ShotDetail& d);
     void updateCounts();
     void refreshTrend();
