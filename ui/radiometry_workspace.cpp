@@ -138,60 +138,12 @@ enum RegionCol { ColName, ColRole, ColRefl, ColDn, ColPred, ColResid, ColNote, C
 
 RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
     m_controller = new RadiometryController(this);
-
-    // Top: inputs, picking mode, exports.
-    auto* top = new QHBoxLayout;
-    auto* demo = new QPushButton(tr("Demo"), this);
-    demo->setToolTip(tr("A simulated field: six overlapping frames mosaicked, six grey panels, four check surfaces"));
-    auto* openImg = new QPushButton(tr("DN image…"), this);
-    openImg->setToolTip(tr("A single-channel DN image or mosaic (TIFF, PNG, PGM; any depth)"));
-    auto* openFrames = new QPushButton(tr("Mosaic frames…"), this);
-    openFrames->setToolTip(tr("The overlapping frames of one row, in scan order: stitched as radiometry mosaic does"));
-    auto* openRegions = new QPushButton(tr("Regions…"), this);
-    openRegions->setToolTip(tr("Fit regions CSV: name, reflectance (%), x, y, w, h (or dn) [, role fit/check]"));
-    auto* openChecks = new QPushButton(tr("Check regions…"), this);
-    openChecks->setToolTip(tr("Check regions CSV: name, reflectance (%), x, y, w, h"));
-    m_modePan = new QRadioButton(tr("Pan / zoom"), this);
-    m_modeFit = new QRadioButton(tr("Draw fit region"), this);
-    m_modeCheck = new QRadioButton(tr("Draw check region"), this);
-    m_modePan->setChecked(true);
-    auto* modes = new QButtonGroup(this);
-    for (QRadioButton* b : {m_modePan, m_modeFit, m_modeCheck}) modes->addButton(b);
-    m_modeFit->setToolTip(tr("Drag a rectangle on the DN image over a grey panel, then type its measured reflectance"));
-    m_modeCheck->setToolTip(tr("Drag a rectangle over a check surface, then type its measured reflectance"));
-    auto* exportBtn = new QToolButton(this);
-    exportBtn->setText(tr("Export"));
-    exportBtn->setPopupMode(QToolButton::InstantPopup);
-    auto* exportMenu = new QMenu(exportBtn);
-    exportBtn->setMenu(exportMenu);
-    for (QWidget* w : std::initializer_list<QWidget*>{demo, openImg, openFrames, openRegions, openChecks}) top->addWidget(w);
-    top->addSpacing(16);
-    for (QWidget* w : std::initializer_list<QWidget*>{m_modePan, m_modeFit, m_modeCheck}) top->addWidget(w);
-    top->addStretch(1);
-    top->addWidget(exportBtn);
+    QHBoxLayout* top = buildInputRow();
     m_info = new QLabel(this);
     m_info->setTextFormat(Qt::RichText);
     m_info->setForegroundRole(QPalette::PlaceholderText);
 
-    // Images.
-    m_dnPlot = newPlot(this, tr("DN image with the picked regions"), tr("Column (px)"), tr("Row (px)"));
-    const ImageMap dn = addImageMap(m_dnPlot, tr("DN"), true);
-    m_dnMap = dn.map;
-    m_dnScale = dn.scale;
-    m_dnMap->setName(tr("DN"));
-    m_reflPlot = newPlot(this, tr("Reflectance image V_REF = K·V_DN + B"), tr("Column (px)"), tr("Row (px)"));
-    const ImageMap refl = addImageMap(m_reflPlot, tr("Reflectance (%)"), true);
-    m_reflMap = refl.map;
-    m_reflScale = refl.scale;
-    for (QCustomPlot* p : {m_dnPlot, m_reflPlot}) {
-        p->setMinimumHeight(170);
-        p->selectionRect()->setPen(QPen(kFitColor, 1.5, Qt::DashLine));
-        p->selectionRect()->setBrush(QColor(0, 215, 255, 40));
-        new ImageFit(p, [this, p] { fitImage(p); });
-    }
-    m_readout = new QLabel(readoutPrompt(), this);
-    m_readout->setObjectName("readout");
-
+    buildImages();
     // Fit plot and tables.
     m_fitPlot = newPlot(this, tr("Calibration line (paper 003 eq. 5)"), tr("Mean DN of the region, V_DN"),
                         tr("Measured reflectance V_REF (%)"));
@@ -200,65 +152,8 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
     m_fitSummary->setWordWrap(true);
     m_fitSummary->setTextFormat(Qt::RichText);
     m_fitSummary->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    auto* regCol = new QWidget(this);
-    auto* regLay = new QVBoxLayout(regCol);
-    regLay->setContentsMargins(0, 0, 0, 0);
-    auto* regTitle = new QLabel(tr("<b>Regions</b> — type the spectrometer reflectance; drag on the DN image to add"), regCol);
-    regTitle->setWordWrap(true);
-    m_regionTable = new QTableWidget(regCol);
-    m_regionTable->setColumnCount(ColCount);
-    m_regionTable->setHorizontalHeaderLabels({tr("Name"), tr("Role"), tr("Refl. %"), tr("Mean DN"), tr("Line %"),
-                                              tr("Resid. %"), tr("Note")});
-    m_regionTable->verticalHeader()->hide();
-    m_regionTable->verticalHeader()->setDefaultSectionSize(20);
-    m_regionTable->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_regionTable->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_regionTable->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
-                                   QAbstractItemView::AnyKeyPressed);
-    m_regionTable->horizontalHeader()->setMinimumSectionSize(36);
-    const int widths[] = {80, 46, 58, 56, 56, 58};
-    for (int c = 0; c < ColNote; ++c) m_regionTable->setColumnWidth(c, widths[c]);
-    m_regionTable->horizontalHeader()->setSectionResizeMode(ColNote, QHeaderView::Stretch);
-    m_regionTable->horizontalHeaderItem(ColRefl)->setToolTip(tr("Measured by the spectrometer (350–900 nm mean), %"));
-    m_regionTable->horizontalHeaderItem(ColDn)->setToolTip(tr("Mean DN over the rectangle (V_DN); hover for its σ"));
-    m_regionTable->horizontalHeaderItem(ColPred)->setToolTip(tr("The fitted line at the region's mean DN: K·V_DN + B (%)"));
-    m_regionTable->horizontalHeaderItem(ColResid)->setToolTip(tr("Measured − line (%), fit regions"));
-    m_regionTable->horizontalHeaderItem(ColName)->setToolTip(tr("Hover a name for its rectangle (image pixels)"));
-    auto* regButtons = new QHBoxLayout;
-    auto* remove = new QPushButton(tr("Remove region"), regCol);
-    auto* toggleRole = new QPushButton(tr("Fit ↔ check"), regCol);
-    regButtons->addWidget(remove);
-    regButtons->addWidget(toggleRole);
-    regButtons->addStretch(1);
-    regLay->addWidget(regTitle);
-    regLay->addWidget(m_regionTable, 1);
-    regLay->addLayout(regButtons);
-
-    auto* errCol = new QWidget(this);
-    auto* errLay = new QVBoxLayout(errCol);
-    errLay->setContentsMargins(0, 0, 0, 0);
-    auto* errTitle = new QLabel(tr("<b>Relative error of the check regions</b> (tables 5–7)"), errCol);
-    errTitle->setWordWrap(true);
-    m_errorTable = new QTableWidget(errCol);
-    m_errorTable->setColumnCount(5);
-    m_errorTable->setHorizontalHeaderLabels({tr("Region"), tr("Meas. %"), tr("Image %"), tr("Error %"), tr("OK")});
-    m_errorTable->horizontalHeaderItem(1)->setToolTip(tr("Measured by the spectrometer (%)"));
-    m_errorTable->horizontalHeaderItem(2)->setToolTip(tr("Mean of the reflectance image over the region (%)"));
-    m_errorTable->horizontalHeaderItem(3)->setToolTip(tr("|image − measured| / measured × 100"));
-    m_errorTable->horizontalHeaderItem(4)->setToolTip(tr("Relative error within the limit"));
-    m_errorTable->verticalHeader()->hide();
-    m_errorTable->verticalHeader()->setDefaultSectionSize(20);
-    m_errorTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_errorTable->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_errorTable->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
-    m_errorSummary = new QLabel(errCol);
-    m_errorSummary->setWordWrap(true);
-    m_errorSummary->setTextFormat(Qt::RichText);
-    errLay->addWidget(m_fitSummary);
-    errLay->addSpacing(4);
-    errLay->addWidget(errTitle);
-    errLay->addWidget(m_errorTable, 1);
-    errLay->addWidget(m_errorSummary);
+    QWidget* regCol = buildRegionTable();
+    QWidget* errCol = buildErrorColumn();
 
     auto* bottom = new QSplitter(Qt::Horizontal, this);
     bottom->addWidget(m_fitPlot);
@@ -300,6 +195,41 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
             [this](const QString& m) { showError(tr("Cannot mosaic the frames"), m); });
     connect(m_controller, &RadiometryController::mosaicProgress, this,
             [this](double f) { emit status(tr("Mosaicking… %1 %").arg(int(100 * f))); });
+    widgetsFromParams();
+    showImage();
+}
+
+// Top: inputs, picking mode, exports.
+QHBoxLayout* RadiometryWorkspace::buildInputRow() {
+    auto* top = new QHBoxLayout;
+    auto* demo = new QPushButton(tr("Demo"), this);
+    demo->setToolTip(tr("A simulated field: six overlapping frames mosaicked, six grey panels, four check surfaces"));
+    auto* openImg = new QPushButton(tr("DN image…"), this);
+    openImg->setToolTip(tr("A single-channel DN image or mosaic (TIFF, PNG, PGM; any depth)"));
+    auto* openFrames = new QPushButton(tr("Mosaic frames…"), this);
+    openFrames->setToolTip(tr("The overlapping frames of one row, in scan order: stitched as radiometry mosaic does"));
+    auto* openRegions = new QPushButton(tr("Regions…"), this);
+    openRegions->setToolTip(tr("Fit regions CSV: name, reflectance (%), x, y, w, h (or dn) [, role fit/check]"));
+    auto* openChecks = new QPushButton(tr("Check regions…"), this);
+    openChecks->setToolTip(tr("Check regions CSV: name, reflectance (%), x, y, w, h"));
+    m_modePan = new QRadioButton(tr("Pan / zoom"), this);
+    m_modeFit = new QRadioButton(tr("Draw fit region"), this);
+    m_modeCheck = new QRadioButton(tr("Draw check region"), this);
+    m_modePan->setChecked(true);
+    auto* modes = new QButtonGroup(this);
+    for (QRadioButton* b : {m_modePan, m_modeFit, m_modeCheck}) modes->addButton(b);
+    m_modeFit->setToolTip(tr("Drag a rectangle on the DN image over a grey panel, then type its measured reflectance"));
+    m_modeCheck->setToolTip(tr("Drag a rectangle over a check surface, then type its measured reflectance"));
+    auto* exportBtn = new QToolButton(this);
+    exportBtn->setText(tr("Export"));
+    exportBtn->setPopupMode(QToolButton::InstantPopup);
+    auto* exportMenu = new QMenu(exportBtn);
+    exportBtn->setMenu(exportMenu);
+    for (QWidget* w : std::initializer_list<QWidget*>{demo, openImg, openFrames, openRegions, openChecks}) top->addWidget(w);
+    top->addSpacing(16);
+    for (QWidget* w : std::initializer_list<QWidget*>{m_modePan, m_modeFit, m_modeCheck}) top->addWidget(w);
+    top->addStretch(1);
+    top->addWidget(exportBtn);
     for (QRadioButton* b : {m_modePan, m_modeFit, m_modeCheck})
         connect(b, &QRadioButton::toggled, this, [this] {
             const bool draw = !m_modePan->isChecked();
@@ -309,81 +239,6 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
             m_dnPlot->selectionRect()->setBrush(QColor(c.red(), c.green(), c.blue(), 40));
             m_dnPlot->setCursor(draw ? Qt::CrossCursor : Qt::ArrowCursor);
         });
-    connect(m_dnPlot->selectionRect(), &QCPSelectionRect::accepted, this, [this](const QRect& r, QMouseEvent*) {
-        const double x0 = m_dnPlot->xAxis->pixelToCoord(r.left()), x1 = m_dnPlot->xAxis->pixelToCoord(r.right());
-        const double y0 = m_dnPlot->yAxis->pixelToCoord(r.top()), y1 = m_dnPlot->yAxis->pixelToCoord(r.bottom());
-        regionDrawn(QRectF(QPointF(std::min(x0, x1), std::min(y0, y1)), QPointF(std::max(x0, x1), std::max(y0, y1))),
-                    m_modeCheck->isChecked() ? RegionRole::Check : RegionRole::Fit);
-    });
-    // Both images show the same pixels: their x ranges follow each other.
-    auto link = [this](QCustomPlot* from, QCustomPlot* to) {
-        connect(from->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this, from, to](const QCPRange& r) {
-            if (m_linking) return;
-            m_linking = true;
-            to->xAxis->setRange(r);
-            to->yAxis->setRange(from->yAxis->range().center(), to->yAxis->range().size(), Qt::AlignCenter);
-            to->yAxis->setScaleRatio(to->xAxis, 1.0);
-            to->setProperty("zoomed", from->property("zoomed"));
-            to->replot(QCustomPlot::rpQueuedReplot);
-            m_linking = false;
-        });
-    };
-    link(m_dnPlot, m_reflPlot);
-    link(m_reflPlot, m_dnPlot);
-    for (QCustomPlot* p : {m_dnPlot, m_reflPlot})
-        connect(p, &QCustomPlot::mouseMove, this, [this, p](QMouseEvent* e) {
-            if (!m_controller->hasImage()) return;
-            const int x = int(std::lround(p->xAxis->pixelToCoord(e->position().x())));
-            const int y = int(std::lround(p->yAxis->pixelToCoord(e->position().y())));
-            const cv::Mat& d = m_controller->image().display;
-            if (x < 0 || y < 0 || x >= d.cols || y >= d.rows) return;
-            QString t = tr("Pixel (%1, %2): %3 DN").arg(x).arg(y).arg(d.at<float>(y, x), 0, 'f', 0);
-            if (const GeoReference& geo = m_controller->image().geo; geo.valid) {
-                const cv::Point2d g = pixelCentreToMap(geo, x, y);
-                t += tr(" · ground E %1 m, N %2 m").arg(g.x, 0, 'f', 3).arg(g.y, 0, 'f', 3);
-            }
-            const ApplyResult& a = m_controller->run().apply;
-            if (a.ok && a.reflectance.size() == d.size()) {
-                t += tr(" · reflectance %1 %").arg(a.reflectance.at<float>(y, x), 0, 'f', 3);
-                if (!a.uncertainty.empty()) t += tr(" ± %1 %").arg(a.uncertainty.at<float>(y, x), 0, 'f', 3);
-            }
-            m_readout->setText(t);
-        });
-    connect(m_regionTable, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* it) {
-        if (m_tableUpdating) return;
-        const int row = it->row();
-        if (it->column() == ColName) {
-            m_controller->setRegionName(row, it->text().trimmed());
-            emit modified();
-        } else if (it->column() == ColRefl) {
-            const QString t = it->text().trimmed().remove('%').trimmed();
-            bool ok = false;
-            const double v = t.isEmpty() ? NAN : QLocale().toDouble(t, &ok);
-            const double v2 = ok || t.isEmpty() ? v : t.toDouble(&ok);
-            if (!t.isEmpty() && (!ok || !std::isfinite(v2))) {
-                emit status(tr("Reflectance of %1: \"%2\" is not a number").arg(m_controller->regions()[size_t(row)].name, t));
-                refreshRegionTable();
-                return;
-            }
-            m_controller->setRegionReflectance(row, v2);
-            emit modified();
-        }
-    });
-    connect(m_regionTable, &QTableWidget::itemSelectionChanged, this, [this] { showOverlays(); });
-    connect(remove, &QPushButton::clicked, this, [this] {
-        const int i = selectedRegion();
-        if (i < 0) return;
-        m_controller->removeRegion(i);
-        emit modified();
-    });
-    connect(toggleRole, &QPushButton::clicked, this, [this] {
-        const int i = selectedRegion();
-        if (i < 0) return;
-        const RegionRole r = m_controller->regions()[size_t(i)].role;
-        m_controller->setRegionRole(i, r == RegionRole::Fit ? RegionRole::Check : RegionRole::Fit);
-        m_regionTable->selectRow(i);
-        emit modified();
-    });
     connect(demo, &QPushButton::clicked, this, [this] {
         openDemo();
         emit modified();
@@ -438,8 +293,176 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
                           [=] { exportWith(tr("Export regions"), csvOut, &RadiometryController::exportRegions); });
     exportMenu->addAction(tr("Relative errors (CSV)…"), this,
                           [=] { exportWith(tr("Export relative errors"), csvOut, &RadiometryController::exportRelativeErrors); });
-    widgetsFromParams();
-    showImage();
+    return top;
+}
+
+// The DN and reflectance images, their linked views, the region drawn with the mouse and the
+// pixel readout.
+void RadiometryWorkspace::buildImages() {
+    m_dnPlot = newPlot(this, tr("DN image with the picked regions"), tr("Column (px)"), tr("Row (px)"));
+    const ImageMap dn = addImageMap(m_dnPlot, tr("DN"), true);
+    m_dnMap = dn.map;
+    m_dnScale = dn.scale;
+    m_dnMap->setName(tr("DN"));
+    m_reflPlot = newPlot(this, tr("Reflectance image V_REF = K·V_DN + B"), tr("Column (px)"), tr("Row (px)"));
+    const ImageMap refl = addImageMap(m_reflPlot, tr("Reflectance (%)"), true);
+    m_reflMap = refl.map;
+    m_reflScale = refl.scale;
+    for (QCustomPlot* p : {m_dnPlot, m_reflPlot}) {
+        p->setMinimumHeight(170);
+        p->selectionRect()->setPen(QPen(kFitColor, 1.5, Qt::DashLine));
+        p->selectionRect()->setBrush(QColor(0, 215, 255, 40));
+        new ImageFit(p, [this, p] { fitImage(p); });
+    }
+    m_readout = new QLabel(readoutPrompt(), this);
+    m_readout->setObjectName("readout");
+
+    connect(m_dnPlot->selectionRect(), &QCPSelectionRect::accepted, this, [this](const QRect& r, QMouseEvent*) {
+        const double x0 = m_dnPlot->xAxis->pixelToCoord(r.left()), x1 = m_dnPlot->xAxis->pixelToCoord(r.right());
+        const double y0 = m_dnPlot->yAxis->pixelToCoord(r.top()), y1 = m_dnPlot->yAxis->pixelToCoord(r.bottom());
+        regionDrawn(QRectF(QPointF(std::min(x0, x1), std::min(y0, y1)), QPointF(std::max(x0, x1), std::max(y0, y1))),
+                    m_modeCheck->isChecked() ? RegionRole::Check : RegionRole::Fit);
+    });
+    // Both images show the same pixels: their x ranges follow each other.
+    auto link = [this](QCustomPlot* from, QCustomPlot* to) {
+        connect(from->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this, from, to](const QCPRange& r) {
+            if (m_linking) return;
+            m_linking = true;
+            to->xAxis->setRange(r);
+            to->yAxis->setRange(from->yAxis->range().center(), to->yAxis->range().size(), Qt::AlignCenter);
+            to->yAxis->setScaleRatio(to->xAxis, 1.0);
+            to->setProperty("zoomed", from->property("zoomed"));
+            to->replot(QCustomPlot::rpQueuedReplot);
+            m_linking = false;
+        });
+    };
+    link(m_dnPlot, m_reflPlot);
+    link(m_reflPlot, m_dnPlot);
+    for (QCustomPlot* p : {m_dnPlot, m_reflPlot})
+        connect(p, &QCustomPlot::mouseMove, this, [this, p](QMouseEvent* e) {
+            if (!m_controller->hasImage()) return;
+            const int x = int(std::lround(p->xAxis->pixelToCoord(e->position().x())));
+            const int y = int(std::lround(p->yAxis->pixelToCoord(e->position().y())));
+            const cv::Mat& d = m_controller->image().display;
+            if (x < 0 || y < 0 || x >= d.cols || y >= d.rows) return;
+            QString t = tr("Pixel (%1, %2): %3 DN").arg(x).arg(y).arg(d.at<float>(y, x), 0, 'f', 0);
+            if (const GeoReference& geo = m_controller->image().geo; geo.valid) {
+                const cv::Point2d g = pixelCentreToMap(geo, x, y);
+                t += tr(" · ground E %1 m, N %2 m").arg(g.x, 0, 'f', 3).arg(g.y, 0, 'f', 3);
+            }
+            const ApplyResult& a = m_controller->run().apply;
+            if (a.ok && a.reflectance.size() == d.size()) {
+                t += tr(" · reflectance %1 %").arg(a.reflectance.at<float>(y, x), 0, 'f', 3);
+                if (!a.uncertainty.empty()) t += tr(" ± %1 %").arg(a.uncertainty.at<float>(y, x), 0, 'f', 3);
+            }
+            m_readout->setText(t);
+        });
+}
+
+// The regions: their table (name, role, reflectance typed in, mean DN, line, residual), remove
+// and fit ↔ check.
+QWidget* RadiometryWorkspace::buildRegionTable() {
+    auto* regCol = new QWidget(this);
+    auto* regLay = new QVBoxLayout(regCol);
+    regLay->setContentsMargins(0, 0, 0, 0);
+    auto* regTitle = new QLabel(tr("<b>Regions</b> — type the spectrometer reflectance; drag on the DN image to add"), regCol);
+    regTitle->setWordWrap(true);
+    m_regionTable = new QTableWidget(regCol);
+    m_regionTable->setColumnCount(ColCount);
+    m_regionTable->setHorizontalHeaderLabels({tr("Name"), tr("Role"), tr("Refl. %"), tr("Mean DN"), tr("Line %"),
+                                              tr("Resid. %"), tr("Note")});
+    m_regionTable->verticalHeader()->hide();
+    m_regionTable->verticalHeader()->setDefaultSectionSize(20);
+    m_regionTable->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_regionTable->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_regionTable->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                                   QAbstractItemView::AnyKeyPressed);
+    m_regionTable->horizontalHeader()->setMinimumSectionSize(36);
+    const int widths[] = {80, 46, 58, 56, 56, 58};
+    for (int c = 0; c < ColNote; ++c) m_regionTable->setColumnWidth(c, widths[c]);
+    m_regionTable->horizontalHeader()->setSectionResizeMode(ColNote, QHeaderView::Stretch);
+    m_regionTable->horizontalHeaderItem(ColRefl)->setToolTip(tr("Measured by the spectrometer (350–900 nm mean), %"));
+    m_regionTable->horizontalHeaderItem(ColDn)->setToolTip(tr("Mean DN over the rectangle (V_DN); hover for its σ"));
+    m_regionTable->horizontalHeaderItem(ColPred)->setToolTip(tr("The fitted line at the region's mean DN: K·V_DN + B (%)"));
+    m_regionTable->horizontalHeaderItem(ColResid)->setToolTip(tr("Measured − line (%), fit regions"));
+    m_regionTable->horizontalHeaderItem(ColName)->setToolTip(tr("Hover a name for its rectangle (image pixels)"));
+    auto* regButtons = new QHBoxLayout;
+    auto* remove = new QPushButton(tr("Remove region"), regCol);
+    auto* toggleRole = new QPushButton(tr("Fit ↔ check"), regCol);
+    regButtons->addWidget(remove);
+    regButtons->addWidget(toggleRole);
+    regButtons->addStretch(1);
+    regLay->addWidget(regTitle);
+    regLay->addWidget(m_regionTable, 1);
+    regLay->addLayout(regButtons);
+
+    connect(m_regionTable, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* it) {
+        if (m_tableUpdating) return;
+        const int row = it->row();
+        if (it->column() == ColName) {
+            m_controller->setRegionName(row, it->text().trimmed());
+            emit modified();
+        } else if (it->column() == ColRefl) {
+            const QString t = it->text().trimmed().remove('%').trimmed();
+            bool ok = false;
+            const double v = t.isEmpty() ? NAN : QLocale().toDouble(t, &ok);
+            const double v2 = ok || t.isEmpty() ? v : t.toDouble(&ok);
+            if (!t.isEmpty() && (!ok || !std::isfinite(v2))) {
+                emit status(tr("Reflectance of %1: \"%2\" is not a number").arg(m_controller->regions()[size_t(row)].name, t));
+                refreshRegionTable();
+                return;
+            }
+            m_controller->setRegionReflectance(row, v2);
+            emit modified();
+        }
+    });
+    connect(m_regionTable, &QTableWidget::itemSelectionChanged, this, [this] { showOverlays(); });
+    connect(remove, &QPushButton::clicked, this, [this] {
+        const int i = selectedRegion();
+        if (i < 0) return;
+        m_controller->removeRegion(i);
+        emit modified();
+    });
+    connect(toggleRole, &QPushButton::clicked, this, [this] {
+        const int i = selectedRegion();
+        if (i < 0) return;
+        const RegionRole r = m_controller->regions()[size_t(i)].role;
+        m_controller->setRegionRole(i, r == RegionRole::Fit ? RegionRole::Check : RegionRole::Fit);
+        m_regionTable->selectRow(i);
+        emit modified();
+    });
+    return regCol;
+}
+
+// The fit's summary and the relative errors of the check regions.
+QWidget* RadiometryWorkspace::buildErrorColumn() {
+    auto* errCol = new QWidget(this);
+    auto* errLay = new QVBoxLayout(errCol);
+    errLay->setContentsMargins(0, 0, 0, 0);
+    auto* errTitle = new QLabel(tr("<b>Relative error of the check regions</b> (tables 5–7)"), errCol);
+    errTitle->setWordWrap(true);
+    m_errorTable = new QTableWidget(errCol);
+    m_errorTable->setColumnCount(5);
+    m_errorTable->setHorizontalHeaderLabels({tr("Region"), tr("Meas. %"), tr("Image %"), tr("Error %"), tr("OK")});
+    m_errorTable->horizontalHeaderItem(1)->setToolTip(tr("Measured by the spectrometer (%)"));
+    m_errorTable->horizontalHeaderItem(2)->setToolTip(tr("Mean of the reflectance image over the region (%)"));
+    m_errorTable->horizontalHeaderItem(3)->setToolTip(tr("|image − measured| / measured × 100"));
+    m_errorTable->horizontalHeaderItem(4)->setToolTip(tr("Relative error within the limit"));
+    m_errorTable->verticalHeader()->hide();
+    m_errorTable->verticalHeader()->setDefaultSectionSize(20);
+    m_errorTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_errorTable->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_errorTable->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_errorSummary = new QLabel(errCol);
+    m_errorSummary->setWordWrap(true);
+    m_errorSummary->setTextFormat(Qt::RichText);
+    errLay->addWidget(m_fitSummary);
+    errLay->addSpacing(4);
+    errLay->addWidget(errTitle);
+    errLay->addWidget(m_errorTable, 1);
+    errLay->addWidget(m_errorSummary);
+
+    return errCol;
 }
 
 void RadiometryWorkspace::buildPanel(QWidget* panel) {

@@ -34,6 +34,8 @@ class QFormLayout;
 class QCPColorMap;
 class QCPColorScale;
 
+class QHBoxLayout;
+
 namespace lwb::ui {
 
 class RadiometryParamsPanel;
@@ -74,6 +76,12 @@ signals:
     void status(const QString& message);
 
 private:
+    // The constructor's parts.
+    QHBoxLayout* buildInputRow();
+    void buildImages();
+    QWidget* buildRegionTable();
+    QWidget* buildErrorColumn();
+
     void buildPanel(QWidget* panel);
     void showImage();
     QString readoutPrompt() const;
