@@ -187,8 +187,35 @@ Grid gridOf(const DetectorArray& a) {
 
 CalibWorkspace::CalibWorkspace(QWidget* parent) : QWidget(parent) {
     m_controller = new CalibController(this);
+    QHBoxLayout* top = buildInputRow();
+    m_inputs = new QLabel(this);
+    m_inputs->setWordWrap(true);
+    m_inputs->setTextFormat(Qt::RichText);
+    m_inputs->setForegroundRole(QPalette::PlaceholderText);
 
-    // Top: inputs and exports.
+    m_tabs = new QTabWidget(this);
+    m_tabs->addTab(buildArrayTab(), tr("Detector array, pointing and validation"));
+    m_tabs->addTab(buildWaveformTab(), tr("Waveform match"));
+
+    // Right: parameters.
+    auto* panel = new QWidget(this);
+    buildPanel(panel);
+    layoutWorkspace(this, top, m_inputs, m_tabs, panel, 350, 1100);
+
+    // Wiring.
+    connect(m_controller, &CalibController::runReady, this, &CalibWorkspace::showRun);
+    connect(m_controller, &CalibController::status, this, &CalibWorkspace::status);
+    connect(m_controller, &CalibController::inputsChanged, this, [this] {
+        m_fresh = true;
+        showInputs();
+    });
+    widgetsFromParams();
+    showInputs();
+}
+
+// Top: the inputs (demo, detectors, control and check points, differences, waveform,
+// candidates) and the exports.
+QHBoxLayout* CalibWorkspace::buildInputRow() {
     auto* top = new QHBoxLayout;
     auto* demo = new QPushButton(tr("Demo"), this);
     demo->setToolTip(tr("Simulated inputs with known truth: detector array, calibration passes, check passes, waveform"));
@@ -214,13 +241,60 @@ CalibWorkspace::CalibWorkspace(QWidget* parent) : QWidget(parent) {
         top->addWidget(w);
     top->addStretch(1);
     top->addWidget(exportBtn);
-    m_inputs = new QLabel(this);
-    m_inputs->setWordWrap(true);
-    m_inputs->setTextFormat(Qt::RichText);
-    m_inputs->setForegroundRole(QPalette::PlaceholderText);
+    connect(demo, &QPushButton::clicked, this, [this] {
+        openDemo();
+        emit modified();
+    });
+    auto opener = [this](QPushButton* b, const QString& title, const QString& filter, auto fn) {
+        connect(b, &QPushButton::clicked, this, [this, title, filter, fn] {
+            const QString path = openFile(title, filter);
+            if (path.isEmpty()) return;
+            QString err;
+            if (fn(path, &err)) emit modified();
+            else if (!err.isEmpty()) showError(tr("Cannot open %1").arg(QFileInfo(path).fileName()), err);
+        });
+    };
+    const QString csv = tr("CSV (*.csv *.txt);;All files (*)");
+    opener(openDet, tr("Detector array"), csv, [this](const QString& p, QString* e) { return m_controller->openDetectors(p, e); });
+    opener(openCp, tr("Control points"), csv, [this](const QString& p, QString* e) {
+        QString beams;
+        if (!QFileInfo::exists(QFileInfo(p).absolutePath() + "/beams.json")) {
+            beams = openFile(tr("Beam designs (JSON) for %1").arg(QFileInfo(p).fileName()), tr("JSON (*.json);;All files (*)"));
+            if (beams.isEmpty()) return false;  // cancelled: nothing to report
+        }
+        return m_controller->openControlPoints(p, beams, e);
+    });
+    opener(openCheck, tr("Check points"), csv, [this](const QString& p, QString* e) { return m_controller->openCheckPoints(p, e); });
+    opener(openDiff, tr("Elevation differences"), csv, [this](const QString& p, QString* e) {
+        bool ok = true;
+        QString group;
+        if (qApp->platformName() != "offscreen")
+            group = QInputDialog::getText(this, tr("Group column"),
+                                          tr("Column that splits the differences (e.g. beam); empty for one group:"),
+                                          QLineEdit::Normal, m_controller->inputs().groupColumn, &ok);
+        if (!ok) return false;  // cancelled: nothing to report
+        return m_controller->openDifferences(p, group.trimmed(), e);
+    });
+    opener(openWave, tr("Waveform"), csv, [this](const QString& p, QString* e) { return m_controller->openWaveform(p, e); });
+    opener(openFeat, tr("Candidate features"), csv, [this](const QString& p, QString* e) { return m_controller->openFeatures(p, e); });
+    const QString csvOut = tr("CSV (*.csv)");
+    exportMenu->addAction(tr("Detector report (per detector)…"), this,
+                          [=] { exportWith(tr("Export detector report"), csvOut, &CalibController::exportDetectorReport); });
+    exportMenu->addAction(tr("Footprint centre and surface…"), this,
+                          [=] { exportWith(tr("Export footprint centre"), csvOut, &CalibController::exportCentre); });
+    exportMenu->addAction(tr("Calibrated parameters…"), this,
+                          [=] { exportWith(tr("Export calibrated parameters"), csvOut, &CalibController::exportPointing); });
+    exportMenu->addAction(tr("Calibration iterations…"), this,
+                          [=] { exportWith(tr("Export iterations"), csvOut, &CalibController::exportIterations); });
+    exportMenu->addAction(tr("Validation statistics…"), this,
+                          [=] { exportWith(tr("Export statistics"), csvOut, &CalibController::exportStats); });
+    exportMenu->addAction(tr("Candidate ranking…"), this,
+                          [=] { exportWith(tr("Export candidate ranking"), csvOut, &CalibController::exportRanking); });
+    return top;
+}
 
-    // Tab 1: detector array, pointing, statistics.
-    m_tabs = new QTabWidget(this);
+// Tab 1: detector array, pointing, statistics.
+QWidget* CalibWorkspace::buildArrayTab() {
     auto* page = new QWidget(m_tabs);
     auto* pageLay = new QVBoxLayout(page);
     pageLay->setContentsMargins(2, 2, 2, 2);
@@ -329,9 +403,12 @@ CalibWorkspace::CalibWorkspace(QWidget* parent) : QWidget(parent) {
     vsplit->setStretchFactor(1, 9);
     vsplit->setSizes({440, 360});
     pageLay->addWidget(vsplit);
-    m_tabs->addTab(page, tr("Detector array, pointing and validation"));
 
-    // Tab 2: the waveform match.
+    return page;
+}
+
+// Tab 2: the waveform match.
+QWidget* CalibWorkspace::buildWaveformTab() {
     auto* wpage = new QWidget(m_tabs);
     auto* wLay = new QVBoxLayout(wpage);
     wLay->setContentsMargins(2, 2, 2, 2);
@@ -357,71 +434,8 @@ CalibWorkspace::CalibWorkspace(QWidget* parent) : QWidget(parent) {
     wsplit->addWidget(wBottom);
     wsplit->setSizes({580, 220});
     wLay->addWidget(wsplit);
-    m_tabs->addTab(wpage, tr("Waveform match"));
 
-    // Right: parameters.
-    auto* panel = new QWidget(this);
-    buildPanel(panel);
-    layoutWorkspace(this, top, m_inputs, m_tabs, panel, 350, 1100);
-
-    // Wiring.
-    connect(m_controller, &CalibController::runReady, this, &CalibWorkspace::showRun);
-    connect(m_controller, &CalibController::status, this, &CalibWorkspace::status);
-    connect(m_controller, &CalibController::inputsChanged, this, [this] {
-        m_fresh = true;
-        showInputs();
-    });
-    connect(demo, &QPushButton::clicked, this, [this] {
-        openDemo();
-        emit modified();
-    });
-    auto opener = [this](QPushButton* b, const QString& title, const QString& filter, auto fn) {
-        connect(b, &QPushButton::clicked, this, [this, title, filter, fn] {
-            const QString path = openFile(title, filter);
-            if (path.isEmpty()) return;
-            QString err;
-            if (fn(path, &err)) emit modified();
-            else if (!err.isEmpty()) showError(tr("Cannot open %1").arg(QFileInfo(path).fileName()), err);
-        });
-    };
-    const QString csv = tr("CSV (*.csv *.txt);;All files (*)");
-    opener(openDet, tr("Detector array"), csv, [this](const QString& p, QString* e) { return m_controller->openDetectors(p, e); });
-    opener(openCp, tr("Control points"), csv, [this](const QString& p, QString* e) {
-        QString beams;
-        if (!QFileInfo::exists(QFileInfo(p).absolutePath() + "/beams.json")) {
-            beams = openFile(tr("Beam designs (JSON) for %1").arg(QFileInfo(p).fileName()), tr("JSON (*.json);;All files (*)"));
-            if (beams.isEmpty()) return false;  // cancelled: nothing to report
-        }
-        return m_controller->openControlPoints(p, beams, e);
-    });
-    opener(openCheck, tr("Check points"), csv, [this](const QString& p, QString* e) { return m_controller->openCheckPoints(p, e); });
-    opener(openDiff, tr("Elevation differences"), csv, [this](const QString& p, QString* e) {
-        bool ok = true;
-        QString group;
-        if (qApp->platformName() != "offscreen")
-            group = QInputDialog::getText(this, tr("Group column"),
-                                          tr("Column that splits the differences (e.g. beam); empty for one group:"),
-                                          QLineEdit::Normal, m_controller->inputs().groupColumn, &ok);
-        if (!ok) return false;  // cancelled: nothing to report
-        return m_controller->openDifferences(p, group.trimmed(), e);
-    });
-    opener(openWave, tr("Waveform"), csv, [this](const QString& p, QString* e) { return m_controller->openWaveform(p, e); });
-    opener(openFeat, tr("Candidate features"), csv, [this](const QString& p, QString* e) { return m_controller->openFeatures(p, e); });
-    const QString csvOut = tr("CSV (*.csv)");
-    exportMenu->addAction(tr("Detector report (per detector)…"), this,
-                          [=] { exportWith(tr("Export detector report"), csvOut, &CalibController::exportDetectorReport); });
-    exportMenu->addAction(tr("Footprint centre and surface…"), this,
-                          [=] { exportWith(tr("Export footprint centre"), csvOut, &CalibController::exportCentre); });
-    exportMenu->addAction(tr("Calibrated parameters…"), this,
-                          [=] { exportWith(tr("Export calibrated parameters"), csvOut, &CalibController::exportPointing); });
-    exportMenu->addAction(tr("Calibration iterations…"), this,
-                          [=] { exportWith(tr("Export iterations"), csvOut, &CalibController::exportIterations); });
-    exportMenu->addAction(tr("Validation statistics…"), this,
-                          [=] { exportWith(tr("Export statistics"), csvOut, &CalibController::exportStats); });
-    exportMenu->addAction(tr("Candidate ranking…"), this,
-                          [=] { exportWith(tr("Export candidate ranking"), csvOut, &CalibController::exportRanking); });
-    widgetsFromParams();
-    showInputs();
+    return wpage;
 }
 
 void CalibWorkspace::buildPanel(QWidget* panel) {

@@ -37,6 +37,8 @@ class QCPColorScale;
 class QCPCurve;
 class QCPGraph;
 
+class QHBoxLayout;
+
 namespace lwb::ui {
 
 class CalibParamsPanel;
@@ -79,6 +81,11 @@ signals:
     void status(const QString& message);
 
 private:
+    // The constructor's parts.
+    QHBoxLayout* buildInputRow();
+    QWidget* buildArrayTab();
+    QWidget* buildWaveformTab();
+
     void buildPanel(QWidget* panel);
     void showRun(const CalibRun& run);
     void showDetector(const CalibRun& run);
