@@ -563,6 +563,28 @@ void CalibWorkspace::showDetector(const CalibRun& run) {
         for (QCustomPlot* q : {m_energyPlot, m_centrePlot, m_detConvPlot}) q->replot(QCustomPlot::rpQueuedReplot);
         return;
     }
+    drawEnergyMap(run, truth, grad);
+    // The centre's uncertainty, in cm about the fitted centre.
+    if (r.ok) {
+        drawCentrePlot(run, truth);
+        drawDetectorConvergence(run);
+        m_detSummary->setText(detectorSummary(run, truth));
+    } else {
+        m_detSummary->setText(tr("<span style='color:#c0392b'><b>Detector fit failed:</b> %1</span>")
+                                  .arg(QString::fromStdString(r.error).toHtmlEscaped()));
+    }
+    m_centrePlot->legend->setFillOrder(QCPLegend::foColumnsFirst, true);
+    m_detConvPlot->legend->setFillOrder(QCPLegend::foColumnsFirst, true);
+    m_centrePlot->replot(QCustomPlot::rpQueuedReplot);
+    m_detConvPlot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+// The detectors' energies (cells of the grid, or coloured markers for an irregular layout), the
+// untriggered, set-aside and bound detectors, the fitted footprint and centre (and the truth).
+void CalibWorkspace::drawEnergyMap(const CalibRun& run, bool truth, QCPColorGradient grad) {
+    QCustomPlot* p = m_energyPlot;
+    const DetectorArray& a = run.data->array;
+    const DetectorFitResult& r = run.detector;
     // Energies: cells of the detector grid, or coloured markers for an irregular layout.
     double emax = 0;
     for (const auto& d : a.detectors)
@@ -660,87 +682,94 @@ void CalibWorkspace::showDetector(const CalibRun& run) {
         fitEqual(p, e0 - pad, e1 + pad, n0 - pad, n1 + pad);
     }
     p->replot(QCustomPlot::rpQueuedReplot);
+}
 
-    // The centre's uncertainty, in cm about the fitted centre.
-    QString html;
-    if (r.ok) {
-        const UncertaintyEllipse& e = r.centreEllipse;
-        setEllipse(ellipseCurve(m_centrePlot, tr("1σ ellipse"), QPen(kBlue, 1.8)), 0, 0, 100 * e.semiMajor, 100 * e.semiMinor,
-                   e.orientationRad);
-        const double k95 = std::isfinite(r.centreEllipse95Scale) ? r.centreEllipse95Scale : 2.4477;
-        setEllipse(ellipseCurve(m_centrePlot, tr("95 % ellipse (×%1)").arg(num(k95, 3)), QPen(kBlue, 1.3, Qt::DashLine)), 0, 0,
-                   100 * k95 * e.semiMajor, 100 * k95 * e.semiMinor, e.orientationRad);
-        scatter(m_centrePlot, tr("fitted centre"), QCPScatterStyle(QCPScatterStyle::ssCrossCircle, QPen(kBlue, 1.8), Qt::NoBrush, 11))
-            ->setData({0.0}, {0.0});
-        double lim = k95 * 100 * e.semiMajor * 1.5;
-        if (truth) {
-            const double dx = 100 * (run.data->detectorTruth.e0 - r.centreE), dy = 100 * (run.data->detectorTruth.n0 - r.centreN);
-            scatter(m_centrePlot, tr("simulated centre"), QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(kGreen, 1.8), Qt::NoBrush, 10))
-                ->setData({dx}, {dy});
-            lim = std::max(lim, 1.3 * std::max(std::fabs(dx), std::fabs(dy)));
-        }
-        m_centrePlot->replot();
-        fitEqual(m_centrePlot, -lim, lim, -lim, lim);
-        html = tr("<b>Centre</b> E %1 m, N %2 m · σ<sub>E</sub> %3 m, σ<sub>N</sub> %4 m · 1σ ellipse %5 × %6 m at %7°")
-                   .arg(num(r.centreE, 3), num(r.centreN, 3), num(e.sigmaE, 3), num(e.sigmaN, 3), num(e.semiMajor, 3),
-                        num(e.semiMinor, 3), num(e.orientationRad * 180 / M_PI, 0));
-        if (std::isfinite(r.centreLatDeg))
-            html += tr("<br>lat %1°, lon %2°%3")
-                        .arg(num(r.centreLatDeg, 8), num(r.centreLonDeg, 8),
-                             std::isfinite(r.centreH) ? tr(", h %1 m").arg(num(r.centreH, 2)) : QString());
-        if (truth) {
-            const GaussSurface& t = run.data->detectorTruth;
-            const double de = r.centreE - t.e0, dn = r.centreN - t.n0;
-            // Mahalanobis distance of the truth from the fit under the centre covariance.
-            const double vE = e.sigmaE * e.sigmaE, vN = e.sigmaN * e.sigmaN, c = e.covEN, det = vE * vN - c * c;
-            const double m = det > 0 ? std::sqrt((vN * de * de - 2 * c * de * dn + vE * dn * dn) / det) : NAN;
-            html += tr("<br><span style='color:#2c8c2c'>Simulated centre E %1, N %2 m: fit − truth %3, %4 m = %5σ "
-                       "(Mahalanobis)</span>")
-                        .arg(num(t.e0, 3), num(t.n0, 3), num(de, 3), num(dn, 3), num(m, 2));
-        }
-        html += tr("<br><b>Footprint</b> σ %1 × %2 m at %3° · amplitude %4 ± %5 · background %6<br>"
-                   "<b>Fit</b> %7 of %8 detectors · %9 dof · χ² %10 · RMS residual %11 · %12 steps")
-                    .arg(num(r.surface.sigmaMajor, 2), num(r.surface.sigmaMinor, 2),
-                         num(r.surface.orientationRad * 180 / M_PI, 0), QString::number(r.surface.amplitude, 'g', 5),
-                         QString::number(r.amplitudeSd, 'g', 3), QString::number(r.surface.background, 'g', 3))
-                    .arg(r.used)
-                    .arg(a.detectors.size())
-                    .arg(r.dof)
-                    .arg(num(r.chi2, 1), QString::number(r.rmsResidual, 'g', 3))
-                    .arg(r.iterations);
-        html += tr("<br><b>Noise</b> %1").arg(QString::fromStdString(r.noise.description).toHtmlEscaped());
-        for (const auto& d : r.doubts)
-            html += "<br><b style='color:#c03030'>" + tr("Doubtful: %1").arg(QString::fromStdString(d).toHtmlEscaped()) + "</b>";
-        for (const auto& w : r.warnings) html += "<br><i>" + QString::fromStdString(w).toHtmlEscaped() + "</i>";
-        // Convergence of the detector fit.
-        QVector<double> x, y;
-        for (size_t i = 0; i < r.costPerIteration.size(); ++i) {
-            x << double(i);
-            y << std::max(r.costPerIteration[i], 1e-12);
-        }
-        QCPGraph* cg = m_detConvPlot->addGraph();
-        cg->setName(tr("χ² (best of 3 starts; 2 re-weightings)"));
-        cg->setPen(QPen(kPurple, 1.8));
-        cg->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, kPurple, Qt::white, 6));
-        cg->setData(x, y);
-        if (r.dof > 0) {
-            QCPGraph* dg = m_detConvPlot->addGraph();
-            dg->setName(tr("dof = %1 (expected χ²)").arg(r.dof));
-            dg->setPen(QPen(kGrey, 1.2, Qt::DashLine));
-            dg->setData({0.0, std::max(1.0, double(x.size() - 1))}, {double(r.dof), double(r.dof)});
-        }
-        m_detConvPlot->rescaleAxes();
-        m_detConvPlot->xAxis->setRange(-0.3, std::max(1.0, double(x.size() - 1)) + 0.3);
-        m_detConvPlot->yAxis->scaleRange(1.6, std::sqrt(m_detConvPlot->yAxis->range().lower * m_detConvPlot->yAxis->range().upper));
-    } else {
-        html = tr("<span style='color:#c0392b'><b>Detector fit failed:</b> %1</span>")
-                   .arg(QString::fromStdString(r.error).toHtmlEscaped());
+// The centre's 1σ and 95 % ellipses in cm about the fitted centre (and the truth).
+void CalibWorkspace::drawCentrePlot(const CalibRun& run, bool truth) {
+    const DetectorFitResult& r = run.detector;
+    const UncertaintyEllipse& e = r.centreEllipse;
+    setEllipse(ellipseCurve(m_centrePlot, tr("1σ ellipse"), QPen(kBlue, 1.8)), 0, 0, 100 * e.semiMajor, 100 * e.semiMinor,
+               e.orientationRad);
+    const double k95 = std::isfinite(r.centreEllipse95Scale) ? r.centreEllipse95Scale : 2.4477;
+    setEllipse(ellipseCurve(m_centrePlot, tr("95 % ellipse (×%1)").arg(num(k95, 3)), QPen(kBlue, 1.3, Qt::DashLine)), 0, 0,
+               100 * k95 * e.semiMajor, 100 * k95 * e.semiMinor, e.orientationRad);
+    scatter(m_centrePlot, tr("fitted centre"), QCPScatterStyle(QCPScatterStyle::ssCrossCircle, QPen(kBlue, 1.8), Qt::NoBrush, 11))
+        ->setData({0.0}, {0.0});
+    double lim = k95 * 100 * e.semiMajor * 1.5;
+    if (truth) {
+        const double dx = 100 * (run.data->detectorTruth.e0 - r.centreE), dy = 100 * (run.data->detectorTruth.n0 - r.centreN);
+        scatter(m_centrePlot, tr("simulated centre"), QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(kGreen, 1.8), Qt::NoBrush, 10))
+            ->setData({dx}, {dy});
+        lim = std::max(lim, 1.3 * std::max(std::fabs(dx), std::fabs(dy)));
     }
-    m_detSummary->setText(html);
-    m_centrePlot->legend->setFillOrder(QCPLegend::foColumnsFirst, true);
-    m_detConvPlot->legend->setFillOrder(QCPLegend::foColumnsFirst, true);
-    m_centrePlot->replot(QCustomPlot::rpQueuedReplot);
-    m_detConvPlot->replot(QCustomPlot::rpQueuedReplot);
+    m_centrePlot->replot();
+    fitEqual(m_centrePlot, -lim, lim, -lim, lim);
+}
+
+// The detector fit's χ² per accepted step, against its degrees of freedom.
+void CalibWorkspace::drawDetectorConvergence(const CalibRun& run) {
+    const DetectorFitResult& r = run.detector;
+    // Convergence of the detector fit.
+    QVector<double> x, y;
+    for (size_t i = 0; i < r.costPerIteration.size(); ++i) {
+        x << double(i);
+        y << std::max(r.costPerIteration[i], 1e-12);
+    }
+    QCPGraph* cg = m_detConvPlot->addGraph();
+    cg->setName(tr("χ² (best of 3 starts; 2 re-weightings)"));
+    cg->setPen(QPen(kPurple, 1.8));
+    cg->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, kPurple, Qt::white, 6));
+    cg->setData(x, y);
+    if (r.dof > 0) {
+        QCPGraph* dg = m_detConvPlot->addGraph();
+        dg->setName(tr("dof = %1 (expected χ²)").arg(r.dof));
+        dg->setPen(QPen(kGrey, 1.2, Qt::DashLine));
+        dg->setData({0.0, std::max(1.0, double(x.size() - 1))}, {double(r.dof), double(r.dof)});
+    }
+    m_detConvPlot->rescaleAxes();
+    m_detConvPlot->xAxis->setRange(-0.3, std::max(1.0, double(x.size() - 1)) + 0.3);
+    m_detConvPlot->yAxis->scaleRange(1.6, std::sqrt(m_detConvPlot->yAxis->range().lower * m_detConvPlot->yAxis->range().upper));
+}
+
+// The fit's figures: centre, σ, ellipse, geographic position, truth, footprint, χ², noise,
+// doubts and warnings.
+QString CalibWorkspace::detectorSummary(const CalibRun& run, bool truth) const {
+    const DetectorArray& a = run.data->array;
+    const DetectorFitResult& r = run.detector;
+    const UncertaintyEllipse& e = r.centreEllipse;
+    QString html;
+    html = tr("<b>Centre</b> E %1 m, N %2 m · σ<sub>E</sub> %3 m, σ<sub>N</sub> %4 m · 1σ ellipse %5 × %6 m at %7°")
+               .arg(num(r.centreE, 3), num(r.centreN, 3), num(e.sigmaE, 3), num(e.sigmaN, 3), num(e.semiMajor, 3),
+                    num(e.semiMinor, 3), num(e.orientationRad * 180 / M_PI, 0));
+    if (std::isfinite(r.centreLatDeg))
+        html += tr("<br>lat %1°, lon %2°%3")
+                    .arg(num(r.centreLatDeg, 8), num(r.centreLonDeg, 8),
+                         std::isfinite(r.centreH) ? tr(", h %1 m").arg(num(r.centreH, 2)) : QString());
+    if (truth) {
+        const GaussSurface& t = run.data->detectorTruth;
+        const double de = r.centreE - t.e0, dn = r.centreN - t.n0;
+        // Mahalanobis distance of the truth from the fit under the centre covariance.
+        const double vE = e.sigmaE * e.sigmaE, vN = e.sigmaN * e.sigmaN, c = e.covEN, det = vE * vN - c * c;
+        const double m = det > 0 ? std::sqrt((vN * de * de - 2 * c * de * dn + vE * dn * dn) / det) : NAN;
+        html += tr("<br><span style='color:#2c8c2c'>Simulated centre E %1, N %2 m: fit − truth %3, %4 m = %5σ "
+                   "(Mahalanobis)</span>")
+                    .arg(num(t.e0, 3), num(t.n0, 3), num(de, 3), num(dn, 3), num(m, 2));
+    }
+    html += tr("<br><b>Footprint</b> σ %1 × %2 m at %3° · amplitude %4 ± %5 · background %6<br>"
+               "<b>Fit</b> %7 of %8 detectors · %9 dof · χ² %10 · RMS residual %11 · %12 steps")
+                .arg(num(r.surface.sigmaMajor, 2), num(r.surface.sigmaMinor, 2),
+                     num(r.surface.orientationRad * 180 / M_PI, 0), QString::number(r.surface.amplitude, 'g', 5),
+                     QString::number(r.amplitudeSd, 'g', 3), QString::number(r.surface.background, 'g', 3))
+                .arg(r.used)
+                .arg(a.detectors.size())
+                .arg(r.dof)
+                .arg(num(r.chi2, 1), QString::number(r.rmsResidual, 'g', 3))
+                .arg(r.iterations);
+    html += tr("<br><b>Noise</b> %1").arg(QString::fromStdString(r.noise.description).toHtmlEscaped());
+    for (const auto& d : r.doubts)
+        html += "<br><b style='color:#c03030'>" + tr("Doubtful: %1").arg(QString::fromStdString(d).toHtmlEscaped()) + "</b>";
+    for (const auto& w : r.warnings) html += "<br><i>" + QString::fromStdString(w).toHtmlEscaped() + "</i>";
+    return html;
 }
 
 void CalibWorkspace::showPointing(const CalibRun& run) {

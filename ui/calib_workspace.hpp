@@ -39,6 +39,8 @@ class QCPGraph;
 
 class QHBoxLayout;
 
+class QCPColorGradient;
+
 namespace lwb::ui {
 
 class CalibParamsPanel;
@@ -85,6 +87,10 @@ private:
     QHBoxLayout* buildInputRow();
     QWidget* buildArrayTab();
     QWidget* buildWaveformTab();
+    void drawEnergyMap(const CalibRun& run, bool truth, QCPColorGradient grad);
+    void drawCentrePlot(const CalibRun& run, bool truth);
+    void drawDetectorConvergence(const CalibRun& run);
+    QString detectorSummary(const CalibRun& run, bool truth) const;
 
     void buildPanel(QWidget* panel);
     void showRun(const CalibRun& run);
