@@ -1,5 +1,6 @@
 #include "core/slr/cpf.hpp"
 
+#include <functional>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -35,6 +36,133 @@ std::string fmtSeconds(double s) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.3f", s);
     return buf;
+}
+
+}  // namespace
+
+namespace {
+
+using Warn = std::function<void(std::string)>;
+
+// H1: "CPF <version> <source> <date> <hour> <sequence> [<sub-daily>] <target> ...". False with
+// *error for a file that is no CPF (or a CRD).
+bool parseCpfH1(const std::vector<std::string_view>& f, long lineNo, const std::string& src, CpfHeader& h,
+                std::string* error) {
+    if (f.size() < 3 || toLower(f[1]) != "cpf") {
+        *error = where(src, lineNo) + "H1 must start with \"CPF <version>\"" +
+                 (f.size() >= 2 && toLower(f[1]) == "crd" ? std::string(": this H1 names CRD ranging data, not a CPF prediction")
+                                                          : std::string());
+        return false;
+    }
+    long v = 0;
+    if (!toInt(f[2], &v) || v < 1 || v > 9) {
+        *error = where(src, lineNo) + "H1 format version is not 1 or 2: \"" + excerpt(f[2]) + "\"";
+        return false;
+    }
+    h.version = static_cast<int>(v);
+    if (f.size() > 3) h.source = std::string(f[3]);
+    long y = 0, m = 0, d = 0, hh = 0;
+    if (f.size() > 7 && toInt(f[4], &y) && toInt(f[5], &m) && toInt(f[6], &d) && toInt(f[7], &hh)) {
+        h.year = static_cast<int>(y), h.month = static_cast<int>(m), h.day = static_cast<int>(d),
+        h.hour = static_cast<int>(hh);
+    }
+    size_t k = 8;
+    if (f.size() > k) h.sequence = std::string(f[k++]);
+    if (h.version >= 2 && f.size() > k) h.sequence += " " + std::string(f[k++]);
+    if (f.size() > k) h.targetName = std::string(f[k++]);
+    for (; k < f.size(); ++k) h.notes += (h.notes.empty() ? "" : " ") + std::string(f[k]);
+    return true;
+}
+
+// H2: ids, the prediction's span and step, target type, frame, centre of mass.
+void parseCpfH2(const std::vector<std::string_view>& f, long lineNo, const std::string& src, CpfHeader& h, const Warn& warn) {
+    if (f.size() < 17) {
+        warn(where(src, lineNo) + "H2 has " + std::to_string(f.size() - 1) + " fields (expected >= 16); ignored");
+        return;
+    }
+    h.ilrsId = std::string(f[1]);
+    long v[15];
+    bool good = true;
+    for (int i = 0; i < 15 && good; ++i) good = toInt(f[static_cast<size_t>(i + 2)], &v[i]);
+    if (!good || !validDate(static_cast<int>(v[2]), static_cast<int>(v[3]), static_cast<int>(v[4])) ||
+        !validDate(static_cast<int>(v[8]), static_cast<int>(v[9]), static_cast<int>(v[10]))) {
+        warn(where(src, lineNo) + "H2 ids, span or step unreadable; ignored");
+        return;
+    }
+    h.sic = v[0], h.norad = v[1];
+    h.startMjd = mjdFromDate(static_cast<int>(v[2]), static_cast<int>(v[3]), static_cast<int>(v[4]));
+    h.startSod = v[5] * 3600.0 + v[6] * 60.0 + v[7];
+    h.endMjd = mjdFromDate(static_cast<int>(v[8]), static_cast<int>(v[9]), static_cast<int>(v[10]));
+    h.endSod = v[11] * 3600.0 + v[12] * 60.0 + v[13];
+    h.stepS = static_cast<double>(v[14]);
+    long x = 0;
+    if (f.size() > 18 && toInt(f[18], &x)) h.targetType = static_cast<int>(x);
+    if (f.size() > 19 && toInt(f[19], &x)) h.referenceFrame = static_cast<int>(x);
+    if (f.size() > 21 && toInt(f[21], &x)) h.comApplied = static_cast<int>(x);
+}
+
+// Type 10: one position (direction, MJD, seconds of day, leap flag, X Y Z). False (a warning
+// said why) when the record cannot be used.
+bool parseCpfPosition(const std::vector<std::string_view>& f, long lineNo, const std::string& src, const Warn& warn,
+                      CpfPosition* out) {
+    CpfPosition p;
+    p.line = lineNo;
+    long dir = 0, mjd = 0, leap = 0;
+    double sod = 0, xyz[3];
+    std::string why;
+    if (f.size() < 8) why = "has " + std::to_string(f.size() - 1) + " fields (expected 7)";
+    else if (!toInt(f[1], &dir) || dir < 0 || dir > 2) why = "direction flag is not 0, 1 or 2";
+    else if (!toInt(f[2], &mjd) || mjd < 15000 || mjd > 100000) why = "MJD is not a day number in 15000..100000";
+    else if (!parseFortranDouble(f[3], &sod) || sod < 0 || sod >= 86401) why = "seconds of day not in 0..86400";
+    else if (!toInt(f[4], &leap)) why = "leap-second flag is not an integer";
+    else if (!parseFortranDouble(f[5], &xyz[0]) || !parseFortranDouble(f[6], &xyz[1]) || !parseFortranDouble(f[7], &xyz[2]))
+        why = "X, Y, Z must be finite numbers";
+    else if (std::fabs(xyz[0]) > 1e12 || std::fabs(xyz[1]) > 1e12 || std::fabs(xyz[2]) > 1e12)
+        why = "position beyond 1e12 m";
+    if (!why.empty()) {
+        warn(where(src, lineNo) + "type 10 record skipped: " + why);
+        return false;
+    }
+    p.direction = static_cast<int>(dir);
+    p.mjd = mjd;
+    p.sod = sod;
+    p.leapSecond = static_cast<int>(leap);
+    p.position = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
+    if (p.leapSecond != 0)
+        warn(where(src, lineNo) + "leap-second flag set: interpolation across the leap second is not corrected");
+    *out = p;
+    return true;
+}
+
+// Epochs must increase within each direction: a record repeating the previous epoch is skipped;
+// one going back in time means the file is out of order (sorted by something else, joined from
+// pieces, shuffled), which no interpolation can use: an error.
+bool keepTimeOrder(const std::string& src, CpfReadResult& res) {
+    std::vector<CpfPosition> kept;
+    kept.reserve(res.file.positions.size());
+    double last[3] = {-1e300, -1e300, -1e300};
+    long lastLine[3] = {0, 0, 0};
+    size_t bad = 0;
+    for (const auto& p : res.file.positions) {
+        const double t = static_cast<double>(p.mjd) * kSecondsPerDay + p.sod;
+        if (t < last[p.direction]) {
+            res.error = where(src, p.line) + "position record out of time order (MJD " + std::to_string(p.mjd) + " " +
+                        formatFixed(p.sod, 3) + " s comes after the record of line " + std::to_string(lastLine[p.direction]) +
+                        ", " + formatFixed(last[p.direction] - t, 0) +
+                        " s later): a prediction's records run forward in time; is the file sorted or joined?";
+            res.file.positions.clear();
+            return false;
+        }
+        if (t == last[p.direction]) {
+            if (bad++ < 20) res.warnings.push_back(where(src, p.line) + "epoch repeats the previous record's; skipped");
+            continue;
+        }
+        last[p.direction] = t;
+        lastLine[p.direction] = p.line;
+        kept.push_back(p);
+    }
+    res.file.positions = std::move(kept);
+    return true;
 }
 
 }  // namespace
@@ -84,55 +212,14 @@ CpfReadResult parseCpf(std::string_view given, const std::string& source) {
                     warn(where(src, lineNo) + "second H1; ignored");
                     continue;
                 }
-                if (f.size() < 3 || toLower(f[1]) != "cpf") {
-                    res.error = where(src, lineNo) + "H1 must start with \"CPF <version>\"" +
-                                (f.size() >= 2 && toLower(f[1]) == "crd"
-                                     ? std::string(": this H1 names CRD ranging data, not a CPF prediction")
-                                     : std::string());
+                std::string err;
+                if (!parseCpfH1(f, lineNo, src, h, &err)) {
+                    res.error = err;
                     return res;
                 }
-                long v = 0;
-                if (!toInt(f[2], &v) || v < 1 || v > 9) {
-                    res.error = where(src, lineNo) + "H1 format version is not 1 or 2: \"" + excerpt(f[2]) + "\"";
-                    return res;
-                }
-                h.version = static_cast<int>(v);
                 haveH1 = true;
-                if (f.size() > 3) h.source = std::string(f[3]);
-                long y = 0, m = 0, d = 0, hh = 0;
-                if (f.size() > 7 && toInt(f[4], &y) && toInt(f[5], &m) && toInt(f[6], &d) && toInt(f[7], &hh)) {
-                    h.year = static_cast<int>(y), h.month = static_cast<int>(m), h.day = static_cast<int>(d),
-                    h.hour = static_cast<int>(hh);
-                }
-                size_t k = 8;
-                if (f.size() > k) h.sequence = std::string(f[k++]);
-                if (h.version >= 2 && f.size() > k) h.sequence += " " + std::string(f[k++]);
-                if (f.size() > k) h.targetName = std::string(f[k++]);
-                for (; k < f.size(); ++k) h.notes += (h.notes.empty() ? "" : " ") + std::string(f[k]);
             } else if (id == "h2") {
-                if (f.size() < 17) {
-                    warn(where(src, lineNo) + "H2 has " + std::to_string(f.size() - 1) + " fields (expected >= 16); ignored");
-                    continue;
-                }
-                h.ilrsId = std::string(f[1]);
-                long v[15];
-                bool good = true;
-                for (int i = 0; i < 15 && good; ++i) good = toInt(f[static_cast<size_t>(i + 2)], &v[i]);
-                if (!good || !validDate(static_cast<int>(v[2]), static_cast<int>(v[3]), static_cast<int>(v[4])) ||
-                    !validDate(static_cast<int>(v[8]), static_cast<int>(v[9]), static_cast<int>(v[10]))) {
-                    warn(where(src, lineNo) + "H2 ids, span or step unreadable; ignored");
-                    continue;
-                }
-                h.sic = v[0], h.norad = v[1];
-                h.startMjd = mjdFromDate(static_cast<int>(v[2]), static_cast<int>(v[3]), static_cast<int>(v[4]));
-                h.startSod = v[5] * 3600.0 + v[6] * 60.0 + v[7];
-                h.endMjd = mjdFromDate(static_cast<int>(v[8]), static_cast<int>(v[9]), static_cast<int>(v[10]));
-                h.endSod = v[11] * 3600.0 + v[12] * 60.0 + v[13];
-                h.stepS = static_cast<double>(v[14]);
-                long x = 0;
-                if (f.size() > 18 && toInt(f[18], &x)) h.targetType = static_cast<int>(x);
-                if (f.size() > 19 && toInt(f[19], &x)) h.referenceFrame = static_cast<int>(x);
-                if (f.size() > 21 && toInt(f[21], &x)) h.comApplied = static_cast<int>(x);
+                parseCpfH2(f, lineNo, src, h, warn);
             } else if (id == "h5") {
                 double off = 0;
                 if (f.size() > 1 && parseFortranDouble(f[1], &off)) h.comOffsetM = off;
@@ -141,31 +228,7 @@ CpfReadResult parseCpf(std::string_view given, const std::string& source) {
                 continue;
             } else if (id == "10") {
                 CpfPosition p;
-                p.line = lineNo;
-                long dir = 0, mjd = 0, leap = 0;
-                double sod = 0, xyz[3];
-                std::string why;
-                if (f.size() < 8) why = "has " + std::to_string(f.size() - 1) + " fields (expected 7)";
-                else if (!toInt(f[1], &dir) || dir < 0 || dir > 2) why = "direction flag is not 0, 1 or 2";
-                else if (!toInt(f[2], &mjd) || mjd < 15000 || mjd > 100000) why = "MJD is not a day number in 15000..100000";
-                else if (!parseFortranDouble(f[3], &sod) || sod < 0 || sod >= 86401) why = "seconds of day not in 0..86400";
-                else if (!toInt(f[4], &leap)) why = "leap-second flag is not an integer";
-                else if (!parseFortranDouble(f[5], &xyz[0]) || !parseFortranDouble(f[6], &xyz[1]) || !parseFortranDouble(f[7], &xyz[2]))
-                    why = "X, Y, Z must be finite numbers";
-                else if (std::fabs(xyz[0]) > 1e12 || std::fabs(xyz[1]) > 1e12 || std::fabs(xyz[2]) > 1e12)
-                    why = "position beyond 1e12 m";
-                if (!why.empty()) {
-                    warn(where(src, lineNo) + "type 10 record skipped: " + why);
-                    continue;
-                }
-                p.direction = static_cast<int>(dir);
-                p.mjd = mjd;
-                p.sod = sod;
-                p.leapSecond = static_cast<int>(leap);
-                p.position = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
-                if (p.leapSecond != 0)
-                    warn(where(src, lineNo) + "leap-second flag set: interpolation across the leap second is not corrected");
-                res.file.positions.push_back(p);
+                if (parseCpfPosition(f, lineNo, src, warn, &p)) res.file.positions.push_back(p);
             } else if (id == "20") {
                 double v[3];
                 long dir = 0;
@@ -198,33 +261,7 @@ CpfReadResult parseCpf(std::string_view given, const std::string& source) {
             res.error = src + ": no readable type 10 position record";
             return res;
         }
-        // Epochs must increase within each direction: a record repeating the previous epoch is
-        // skipped; one going back in time means the file is out of order (sorted by something
-        // else, joined from pieces, shuffled), which no interpolation can use: an error.
-        std::vector<CpfPosition> kept;
-        kept.reserve(res.file.positions.size());
-        double last[3] = {-1e300, -1e300, -1e300};
-        long lastLine[3] = {0, 0, 0};
-        size_t bad = 0;
-        for (const auto& p : res.file.positions) {
-            const double t = static_cast<double>(p.mjd) * kSecondsPerDay + p.sod;
-            if (t < last[p.direction]) {
-                res.error = where(src, p.line) + "position record out of time order (MJD " + std::to_string(p.mjd) + " " +
-                            formatFixed(p.sod, 3) + " s comes after the record of line " + std::to_string(lastLine[p.direction]) +
-                            ", " + formatFixed(last[p.direction] - t, 0) +
-                            " s later): a prediction's records run forward in time; is the file sorted or joined?";
-                res.file.positions.clear();
-                return res;
-            }
-            if (t == last[p.direction]) {
-                if (bad++ < 20) res.warnings.push_back(where(src, p.line) + "epoch repeats the previous record's; skipped");
-                continue;
-            }
-            last[p.direction] = t;
-            lastLine[p.direction] = p.line;
-            kept.push_back(p);
-        }
-        res.file.positions = std::move(kept);
+        if (!keepTimeOrder(src, res)) return res;
         res.ok = true;
     } catch (const std::exception& e) {
         res = CpfReadResult();
