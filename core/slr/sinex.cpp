@@ -1,5 +1,6 @@
 #include "core/slr/sinex.hpp"
 
+#include <functional>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -27,6 +28,116 @@ std::string column(std::string_view line, size_t from, size_t len) {
 struct Validity {
     double from = NAN, to = NAN;
 };
+
+}  // namespace
+
+namespace {
+
+using Warn = std::function<void(std::string)>;
+
+// SITE/ID: code, point, DOMES, description, and the CDP SOD when the line ends with one.
+void parseSiteLine(std::string_view line, long lineNo, const std::string& src, const Warn& warn, SinexFile& file) {
+    const auto f = splitBlanks(line);
+    if (f.size() < 3) {
+        warn(where(src, lineNo) + "SITE/ID line too short; ignored");
+        return;
+    }
+    SinexSite s;
+    s.code = std::string(f[0]);
+    s.point = std::string(f[1]);
+    s.domes = f.size() > 2 ? std::string(f[2]) : std::string();
+    s.description = column(line, 21, 22);
+    const std::string_view last = f.back();
+    if (f.size() > 8 && last.size() == 8 &&
+        std::all_of(last.begin(), last.end(), [](char ch) { return ch >= '0' && ch <= '9'; }))
+        s.cdpSod = std::string(last);
+    s.line = lineNo;
+    file.sites.push_back(std::move(s));
+}
+
+// SOLUTION/EPOCHS: a solution's validity interval (an end of 00:000:00000 is open).
+void parseEpochsLine(std::string_view line, long lineNo, const std::string& src, const Warn& warn,
+                     std::map<std::string, Validity>& validity) {
+    const auto f = splitBlanks(line);
+    long m1 = 0, m2 = 0;
+    double s1 = 0, s2 = 0;
+    if (f.size() < 6 || !parseSinexEpoch(f[4], &m1, &s1) || !parseSinexEpoch(f[5], &m2, &s2)) {
+        warn(where(src, lineNo) + "SOLUTION/EPOCHS line unreadable; ignored");
+        return;
+    }
+    Validity v;
+    v.from = static_cast<double>(m1) + s1 / kSecondsPerDay;
+    v.to = f[5] == "00:000:00000" ? INFINITY : static_cast<double>(m2) + s2 / kSecondsPerDay;
+    validity[std::string(f[0]) + "|" + std::string(f[1]) + "|" + std::string(f[2])] = v;
+}
+
+// SOLUTION/ESTIMATE: STAX/STAY/STAZ and VELX/VELY/VELZ of a site's solution (other types ignored).
+void parseEstimateLine(std::string_view line, long lineNo, const std::string& src, const Warn& warn,
+                       std::map<std::string, size_t>& solIndex, SinexFile& file) {
+    const auto f = splitBlanks(line);
+    // INDEX TYPE CODE PT SOLN REF_EPOCH UNIT S VALUE STD
+    if (f.size() < 9) {
+        warn(where(src, lineNo) + "SOLUTION/ESTIMATE line has " + std::to_string(f.size()) +
+             " fields (expected 10); ignored");
+        return;
+    }
+    const std::string type(f[1]);
+    static const char* kTypes[6] = {"STAX", "STAY", "STAZ", "VELX", "VELY", "VELZ"};
+    int which = -1;
+    for (int i = 0; i < 6; ++i)
+        if (type == kTypes[i]) which = i;
+    if (which < 0) return;
+    long mjd = 0;
+    double sod = 0, value = 0, sigma = NAN;
+    if (!parseSinexEpoch(f[5], &mjd, &sod)) {
+        warn(where(src, lineNo) + "REF_EPOCH \"" + excerpt(f[5]) + "\" is not YY:DOY:SSSSS; ignored");
+        return;
+    }
+    if (!parseFortranDouble(f[8], &value)) {
+        warn(where(src, lineNo) + "estimated value \"" + excerpt(f[8]) + "\" is not a finite number; ignored");
+        return;
+    }
+    if (f.size() > 9 && !parseFortranDouble(f[9], &sigma)) sigma = NAN;
+    const std::string unit(f[6]);
+    if ((which < 3 && unit != "m") || (which >= 3 && unit != "m/y")) {
+        warn(where(src, lineNo) + type + " unit \"" + excerpt(unit) + "\" (expected " +
+             (which < 3 ? "m" : "m/y") + "); ignored");
+        return;
+    }
+    if (which < 3 && std::fabs(value) > 1e8) {
+        warn(where(src, lineNo) + type + " beyond 1e8 m; ignored");
+        return;
+    }
+    const std::string key = std::string(f[2]) + "|" + std::string(f[3]) + "|" + std::string(f[4]);
+    auto it = solIndex.find(key);
+    if (it == solIndex.end()) {
+        SinexSolution s;
+        s.code = std::string(f[2]);
+        s.point = std::string(f[3]);
+        s.soln = std::string(f[4]);
+        s.refMjd = mjd;
+        s.refSod = sod;
+        s.line = lineNo;
+        file.solutions.push_back(s);
+        it = solIndex.emplace(key, file.solutions.size() - 1).first;
+    }
+    SinexSolution& s = file.solutions[it->second];
+    if (which >= 3 && (s.haveMask & 0x38) == 0 && (s.haveMask & 7) != 0 && (mjd != s.refMjd || sod != s.refSod))
+        warn(where(src, lineNo) + "velocity REF_EPOCH differs from the position's; the position's is used");
+    if (s.haveMask & (1 << which)) warn(where(src, lineNo) + "second " + type + " for " + s.code + "; replaces the first");
+    if (which < 3) {
+        s.position[which] = value;
+        s.positionSigma[which] = sigma;
+        if ((s.haveMask & 7) == 0) {
+            s.refMjd = mjd;
+            s.refSod = sod;
+        }
+    } else {
+        s.velocity[which - 3] = value;
+        s.velocitySigma[which - 3] = sigma;
+    }
+    s.haveMask |= 1 << which;
+}
 
 }  // namespace
 
@@ -90,98 +201,11 @@ SinexReadResult parseSinex(std::string_view given, const std::string& source) {
                 continue;
             }
             if (block == "SITE/ID") {
-                const auto f = splitBlanks(line);
-                if (f.size() < 3) {
-                    warn(where(src, lineNo) + "SITE/ID line too short; ignored");
-                    continue;
-                }
-                SinexSite s;
-                s.code = std::string(f[0]);
-                s.point = std::string(f[1]);
-                s.domes = f.size() > 2 ? std::string(f[2]) : std::string();
-                s.description = column(line, 21, 22);
-                const std::string_view last = f.back();
-                if (f.size() > 8 && last.size() == 8 &&
-                    std::all_of(last.begin(), last.end(), [](char ch) { return ch >= '0' && ch <= '9'; }))
-                    s.cdpSod = std::string(last);
-                s.line = lineNo;
-                res.file.sites.push_back(std::move(s));
+                parseSiteLine(line, lineNo, src, warn, res.file);
             } else if (block == "SOLUTION/EPOCHS") {
-                const auto f = splitBlanks(line);
-                long m1 = 0, m2 = 0;
-                double s1 = 0, s2 = 0;
-                if (f.size() < 6 || !parseSinexEpoch(f[4], &m1, &s1) || !parseSinexEpoch(f[5], &m2, &s2)) {
-                    warn(where(src, lineNo) + "SOLUTION/EPOCHS line unreadable; ignored");
-                    continue;
-                }
-                Validity v;
-                v.from = static_cast<double>(m1) + s1 / kSecondsPerDay;
-                v.to = f[5] == "00:000:00000" ? INFINITY : static_cast<double>(m2) + s2 / kSecondsPerDay;
-                validity[std::string(f[0]) + "|" + std::string(f[1]) + "|" + std::string(f[2])] = v;
+                parseEpochsLine(line, lineNo, src, warn, validity);
             } else if (block == "SOLUTION/ESTIMATE") {
-                const auto f = splitBlanks(line);
-                // INDEX TYPE CODE PT SOLN REF_EPOCH UNIT S VALUE STD
-                if (f.size() < 9) {
-                    warn(where(src, lineNo) + "SOLUTION/ESTIMATE line has " + std::to_string(f.size()) +
-                         " fields (expected 10); ignored");
-                    continue;
-                }
-                const std::string type(f[1]);
-                static const char* kTypes[6] = {"STAX", "STAY", "STAZ", "VELX", "VELY", "VELZ"};
-                int which = -1;
-                for (int i = 0; i < 6; ++i)
-                    if (type == kTypes[i]) which = i;
-                if (which < 0) continue;
-                long mjd = 0;
-                double sod = 0, value = 0, sigma = NAN;
-                if (!parseSinexEpoch(f[5], &mjd, &sod)) {
-                    warn(where(src, lineNo) + "REF_EPOCH \"" + excerpt(f[5]) + "\" is not YY:DOY:SSSSS; ignored");
-                    continue;
-                }
-                if (!parseFortranDouble(f[8], &value)) {
-                    warn(where(src, lineNo) + "estimated value \"" + excerpt(f[8]) + "\" is not a finite number; ignored");
-                    continue;
-                }
-                if (f.size() > 9 && !parseFortranDouble(f[9], &sigma)) sigma = NAN;
-                const std::string unit(f[6]);
-                if ((which < 3 && unit != "m") || (which >= 3 && unit != "m/y")) {
-                    warn(where(src, lineNo) + type + " unit \"" + excerpt(unit) + "\" (expected " +
-                         (which < 3 ? "m" : "m/y") + "); ignored");
-                    continue;
-                }
-                if (which < 3 && std::fabs(value) > 1e8) {
-                    warn(where(src, lineNo) + type + " beyond 1e8 m; ignored");
-                    continue;
-                }
-                const std::string key = std::string(f[2]) + "|" + std::string(f[3]) + "|" + std::string(f[4]);
-                auto it = solIndex.find(key);
-                if (it == solIndex.end()) {
-                    SinexSolution s;
-                    s.code = std::string(f[2]);
-                    s.point = std::string(f[3]);
-                    s.soln = std::string(f[4]);
-                    s.refMjd = mjd;
-                    s.refSod = sod;
-                    s.line = lineNo;
-                    res.file.solutions.push_back(s);
-                    it = solIndex.emplace(key, res.file.solutions.size() - 1).first;
-                }
-                SinexSolution& s = res.file.solutions[it->second];
-                if (which >= 3 && (s.haveMask & 0x38) == 0 && (s.haveMask & 7) != 0 && (mjd != s.refMjd || sod != s.refSod))
-                    warn(where(src, lineNo) + "velocity REF_EPOCH differs from the position's; the position's is used");
-                if (s.haveMask & (1 << which)) warn(where(src, lineNo) + "second " + type + " for " + s.code + "; replaces the first");
-                if (which < 3) {
-                    s.position[which] = value;
-                    s.positionSigma[which] = sigma;
-                    if ((s.haveMask & 7) == 0) {
-                        s.refMjd = mjd;
-                        s.refSod = sod;
-                    }
-                } else {
-                    s.velocity[which - 3] = value;
-                    s.velocitySigma[which - 3] = sigma;
-                }
-                s.haveMask |= 1 << which;
+                parseEstimateLine(line, lineNo, src, warn, solIndex, res.file);
             }
         }
         if (!sawHeader) {
