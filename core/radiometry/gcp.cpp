@@ -87,37 +87,27 @@ std::string validate(const GcpFitParams& p) {
     return radiometrySchema().validate(r, "gcp.");
 }
 
-GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& params) {
-    GcpFitResult res;
-    res.model = params.model;
-    if (const std::string e = validate(params); !e.empty()) {
-        res.error = e;
-        return res;
-    }
+namespace {
+
+// The GCPs' image and map positions: finite, no position repeated, not collinear. False with
+// res->error.
+bool gcpPositions(const std::vector<Gcp>& gcps, const GcpFitParams& params, std::vector<Eigen::Vector2d>& img,
+                  std::vector<Eigen::Vector2d>& map, GcpFitResult* res) {
     const int n = static_cast<int>(gcps.size());
-    const bool homog = params.model == GeoModel::Homography;
-    const int np = homog ? 8 : 6;
-    const int need = homog ? 4 : 3;
-    if (n < need) {
-        res.error = "only " + std::to_string(n) + " GCP" + (n == 1 ? "" : "s") + ": the " + geoModelName(params.model) +
-                    " model needs at least " + std::to_string(need);
-        return res;
-    }
-    std::vector<Eigen::Vector2d> img, map;
     for (int i = 0; i < n; ++i) {
         const Gcp& g = gcps[i];
         if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.mapX) || !std::isfinite(g.mapY)) {
-            res.error = gcpName(g, i) + ": non-finite coordinates";
-            return res;
+            res->error = gcpName(g, i) + ": non-finite coordinates";
+            return false;
         }
         for (int j = 0; j < i; ++j) {
             if (gcps[j].x == g.x && gcps[j].y == g.y) {
-                res.error = gcpName(g, i) + " repeats the image position of " + gcpName(gcps[j], j);
-                return res;
+                res->error = gcpName(g, i) + " repeats the image position of " + gcpName(gcps[j], j);
+                return false;
             }
             if (gcps[j].mapX == g.mapX && gcps[j].mapY == g.mapY) {
-                res.error = gcpName(g, i) + " repeats the map position of " + gcpName(gcps[j], j);
-                return res;
+                res->error = gcpName(g, i) + " repeats the map position of " + gcpName(gcps[j], j);
+                return false;
             }
         }
         img.emplace_back(g.x, g.y);
@@ -125,54 +115,68 @@ GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& p
     }
     const double ri = lineRatio(img), rm = lineRatio(map);
     if (ri <= params.collinearTolerance || rm <= params.collinearTolerance) {
-        res.error = "the " + std::to_string(n) + " GCPs are collinear (" + (ri <= params.collinearTolerance ? "image" : "map") +
-                    " spread across their line is " + formatDouble(100 * std::min(ri, rm), 3) +
-                    " % of the spread along it): the transform is undetermined across the line";
-        return res;
+        res->error = "the " + std::to_string(n) + " GCPs are collinear (" + (ri <= params.collinearTolerance ? "image" : "map") +
+                     " spread across their line is " + formatDouble(100 * std::min(ri, rm), 3) +
+                     " % of the spread along it): the transform is undetermined across the line";
+        return false;
     }
-    if (homog) {
-        // No three of any four on a line when only four are given; the general case is caught by
-        // the rank of the normalised DLT system.
-        if (n == 4) {
-            for (int a = 0; a < 4; ++a) {
-                std::vector<Eigen::Vector2d> tri, trm;
-                for (int k = 0; k < 4; ++k)
-                    if (k != a) {
-                        tri.push_back(img[k]);
-                        trm.push_back(map[k]);
-                    }
-                if (lineRatio(tri) <= params.collinearTolerance || lineRatio(trm) <= params.collinearTolerance) {
-                    res.error = "three of the four GCPs lie on one line: the homography is degenerate";
-                    return res;
+    return true;
+}
+
+// A homography needs four GCPs no three of which are on a line (when only four are given), and
+// a normalised DLT system of rank 8. False with res->error.
+bool homographyDetermined(const std::vector<Eigen::Vector2d>& img, const std::vector<Eigen::Vector2d>& map,
+                          const GcpFitParams& params, GcpFitResult* res) {
+    const int n = static_cast<int>(img.size());
+    // No three of any four on a line when only four are given; the general case is caught by
+    // the rank of the normalised DLT system.
+    if (n == 4) {
+        for (int a = 0; a < 4; ++a) {
+            std::vector<Eigen::Vector2d> tri, trm;
+            for (int k = 0; k < 4; ++k)
+                if (k != a) {
+                    tri.push_back(img[k]);
+                    trm.push_back(map[k]);
                 }
+            if (lineRatio(tri) <= params.collinearTolerance || lineRatio(trm) <= params.collinearTolerance) {
+                res->error = "three of the four GCPs lie on one line: the homography is degenerate";
+                return false;
             }
         }
-        auto normaliser = [](const std::vector<Eigen::Vector2d>& p) {
-            Eigen::Vector2d m = Eigen::Vector2d::Zero();
-            for (const auto& v : p) m += v;
-            m /= static_cast<double>(p.size());
-            double d = 0;
-            for (const auto& v : p) d += (v - m).norm();
-            const double s = std::sqrt(2.0) / std::max(d / p.size(), 1e-300);
-            Eigen::Matrix3d t;
-            t << s, 0, -s * m.x(), 0, s, -s * m.y(), 0, 0, 1;
-            return t;
-        };
-        const Eigen::Matrix3d ti = normaliser(img), tm = normaliser(map);
-        Eigen::MatrixXd A(2 * n, 9);
-        for (int i = 0; i < n; ++i) {
-            const Eigen::Vector3d p = ti * Eigen::Vector3d(img[i].x(), img[i].y(), 1);
-            const Eigen::Vector3d q = tm * Eigen::Vector3d(map[i].x(), map[i].y(), 1);
-            A.row(2 * i) << p.x(), p.y(), 1, 0, 0, 0, -q.x() * p.x(), -q.x() * p.y(), -q.x();
-            A.row(2 * i + 1) << 0, 0, 0, p.x(), p.y(), 1, -q.y() * p.x(), -q.y() * p.y(), -q.y();
-        }
-        Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
-        const Eigen::VectorXd s = svd.singularValues();
-        if (s.size() < 9 || !(s(7) > 1e-8 * s(0))) {
-            res.error = "the GCPs do not determine a homography (degenerate configuration)";
-            return res;
-        }
     }
+    auto normaliser = [](const std::vector<Eigen::Vector2d>& p) {
+        Eigen::Vector2d m = Eigen::Vector2d::Zero();
+        for (const auto& v : p) m += v;
+        m /= static_cast<double>(p.size());
+        double d = 0;
+        for (const auto& v : p) d += (v - m).norm();
+        const double s = std::sqrt(2.0) / std::max(d / p.size(), 1e-300);
+        Eigen::Matrix3d t;
+        t << s, 0, -s * m.x(), 0, s, -s * m.y(), 0, 0, 1;
+        return t;
+    };
+    const Eigen::Matrix3d ti = normaliser(img), tm = normaliser(map);
+    Eigen::MatrixXd A(2 * n, 9);
+    for (int i = 0; i < n; ++i) {
+        const Eigen::Vector3d p = ti * Eigen::Vector3d(img[i].x(), img[i].y(), 1);
+        const Eigen::Vector3d q = tm * Eigen::Vector3d(map[i].x(), map[i].y(), 1);
+        A.row(2 * i) << p.x(), p.y(), 1, 0, 0, 0, -q.x() * p.x(), -q.x() * p.y(), -q.x();
+        A.row(2 * i + 1) << 0, 0, 0, p.x(), p.y(), 1, -q.y() * p.x(), -q.y() * p.y(), -q.y();
+    }
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
+    const Eigen::VectorXd s = svd.singularValues();
+    if (s.size() < 9 || !(s(7) > 1e-8 * s(0))) {
+        res->error = "the GCPs do not determine a homography (degenerate configuration)";
+        return false;
+    }
+    return true;
+}
+
+// The least-squares transform image → map: a homography (OpenCV), or an affine in centred
+// coordinates. False with res->error.
+bool fitTransform(const std::vector<Eigen::Vector2d>& img, const std::vector<Eigen::Vector2d>& map, bool homog,
+                  cv::Matx33d* out, GcpFitResult* res) {
+    const int n = static_cast<int>(img.size());
     cv::Matx33d h = cv::Matx33d::eye();
     try {
         std::vector<cv::Point2d> src, dst;
@@ -183,8 +187,8 @@ GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& p
         if (homog) {
             const cv::Mat H = cv::findHomography(src, dst, 0);
             if (H.empty()) {
-                res.error = "the homography fit failed (degenerate GCPs)";
-                return res;
+                res->error = "the homography fit failed (degenerate GCPs)";
+                return false;
             }
             h = cv::Matx33d(H);
         } else {
@@ -203,23 +207,23 @@ GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& p
                             0, 0, 1);
         }
     } catch (const cv::Exception& e) {
-        res.error = std::string("the transform fit failed: ") + e.what();
-        return res;
+        res->error = std::string("the transform fit failed: ") + e.what();
+        return false;
     }
-    bool invertible = false;
-    const cv::Matx33d inv = h.inv(cv::DECOMP_LU, &invertible);
-    if (!invertible || std::fabs(cv::determinant(h)) < 1e-300) {
-        res.error = "the fitted transform is singular";
-        return res;
-    }
-    res.imageToMap = h * (1.0 / h(2, 2));
-    res.mapToImage = inv * (1.0 / inv(2, 2));
+    *out = h;
+    return true;
+}
+
+// Each GCP's residual in map units and in pixels, and their RMS.
+void gcpResiduals(const std::vector<Gcp>& gcps, const std::vector<Eigen::Vector2d>& img,
+                  const std::vector<Eigen::Vector2d>& map, GcpFitResult* res) {
+    const int n = static_cast<int>(gcps.size());
     double sm = 0, sp = 0;
     for (int i = 0; i < n; ++i) {
         GcpResidual r;
         r.id = gcps[i].id.empty() ? std::to_string(i + 1) : gcps[i].id;
-        const cv::Point2d pm = apply(res.imageToMap, img[i].x(), img[i].y());
-        const cv::Point2d pi = apply(res.mapToImage, map[i].x(), map[i].y());
+        const cv::Point2d pm = apply(res->imageToMap, img[i].x(), img[i].y());
+        const cv::Point2d pi = apply(res->mapToImage, map[i].x(), map[i].y());
         r.dMapX = pm.x - map[i].x();
         r.dMapY = pm.y - map[i].y();
         r.dx = pi.x - img[i].x();
@@ -228,10 +232,57 @@ GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& p
         r.pxNorm = std::hypot(r.dx, r.dy);
         sm += r.mapNorm * r.mapNorm;
         sp += r.pxNorm * r.pxNorm;
-        res.residuals.push_back(r);
+        res->residuals.push_back(r);
     }
-    res.rmsMap = std::sqrt(sm / n);
-    res.rmsPx = std::sqrt(sp / n);
+    res->rmsMap = std::sqrt(sm / n);
+    res->rmsPx = std::sqrt(sp / n);
+}
+
+// The ground size of an image pixel at the GCPs' centre (the Jacobian's determinant).
+double metresPerPixelAt(const std::vector<Eigen::Vector2d>& img, const cv::Matx33d& imageToMap) {
+    const int n = static_cast<int>(img.size());
+    Eigen::Vector2d m = Eigen::Vector2d::Zero();
+    for (const auto& v : img) m += v;
+    m /= n;
+    const double e = 1e-3;
+    const cv::Point2d a = apply(imageToMap, m.x(), m.y()), bx = apply(imageToMap, m.x() + e, m.y()),
+                      by = apply(imageToMap, m.x(), m.y() + e);
+    const double det = ((bx.x - a.x) * (by.y - a.y) - (by.x - a.x) * (bx.y - a.y)) / (e * e);
+    return std::sqrt(std::fabs(det));
+}
+
+}  // namespace
+
+GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& params) {
+    GcpFitResult res;
+    res.model = params.model;
+    if (const std::string e = validate(params); !e.empty()) {
+        res.error = e;
+        return res;
+    }
+    const int n = static_cast<int>(gcps.size());
+    const bool homog = params.model == GeoModel::Homography;
+    const int np = homog ? 8 : 6;
+    const int need = homog ? 4 : 3;
+    if (n < need) {
+        res.error = "only " + std::to_string(n) + " GCP" + (n == 1 ? "" : "s") + ": the " + geoModelName(params.model) +
+                    " model needs at least " + std::to_string(need);
+        return res;
+    }
+    std::vector<Eigen::Vector2d> img, map;
+    if (!gcpPositions(gcps, params, img, map, &res)) return res;
+    if (homog && !homographyDetermined(img, map, params, &res)) return res;
+    cv::Matx33d h = cv::Matx33d::eye();
+    if (!fitTransform(img, map, homog, &h, &res)) return res;
+    bool invertible = false;
+    const cv::Matx33d inv = h.inv(cv::DECOMP_LU, &invertible);
+    if (!invertible || std::fabs(cv::determinant(h)) < 1e-300) {
+        res.error = "the fitted transform is singular";
+        return res;
+    }
+    res.imageToMap = h * (1.0 / h(2, 2));
+    res.mapToImage = inv * (1.0 / inv(2, 2));
+    gcpResiduals(gcps, img, map, &res);
     res.dof = 2 * n - np;
     if (res.dof == 0)
         res.warnings.push_back("as many equations as parameters: the GCP residuals are zero and do not measure accuracy");
@@ -285,16 +336,7 @@ GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& p
         active.erase(std::find(active.begin(), active.end(), worst));
     }
     std::sort(res.outliers.begin(), res.outliers.end());
-    {
-        Eigen::Vector2d m = Eigen::Vector2d::Zero();
-        for (const auto& v : img) m += v;
-        m /= n;
-        const double e = 1e-3;
-        const cv::Point2d a = apply(res.imageToMap, m.x(), m.y()), bx = apply(res.imageToMap, m.x() + e, m.y()),
-                          by = apply(res.imageToMap, m.x(), m.y() + e);
-        const double det = ((bx.x - a.x) * (by.y - a.y) - (by.x - a.x) * (bx.y - a.y)) / (e * e);
-        res.metresPerPixel = std::sqrt(std::fabs(det));
-    }
+    res.metresPerPixel = metresPerPixelAt(img, res.imageToMap);
     res.ok = true;
     return res;
 }
