@@ -143,52 +143,41 @@ bool mapPoint(double t, double oc, double magT, double magOc, int64_t* row, int6
     return mapOne(t, oc, magT, magOc, row, col);
 }
 
-BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params,
-                             const Feedback* fb) {
-    BinaryImage img;
-    img.params = params;
-    if (const std::string e = validate(params); !e.empty()) {
-        img.error = e;
-        return img;
-    }
-    if (t.size() != oc.size()) {
-        img.error = "epochs and O-C differ in length (" + std::to_string(t.size()) + " vs " + std::to_string(oc.size()) + ")";
-        return img;
-    }
-    const size_t n = t.size();
-    if (n > kMaxPoints) {
-        img.error = "too many points (" + std::to_string(n) + "); at most 4294967294";
-        return img;
-    }
-    if (n == 0) {
-        img.ok = true;
-        img.pixelPointStart.push_back(0);
-        return img;
-    }
-    // Pass 1: finiteness, the pixel of every point and the coordinate range. Each point's
-    // (row, col) is kept in its sort item (mapping twice cost a sixth of the image).
-    struct Item {
-        uint64_t key, key2;
-        uint32_t idx;
-    };
-    // Not value-initialised (every element is written below): zeroing them cost as much as
-    // the mapping on the many small images of a scale search.
-    std::unique_ptr<Item[]> items(new Item[n]);
+namespace {
+
+// A point in the sort: its pixel (row, col; or one key of both) and its index.
+struct SortItem {
+    uint64_t key, key2;
+    uint32_t idx;
+};
+
+// The pixels' extent, and whether the rows come in order (points in time order: the usual case).
+struct MapExtent {
     int64_t rMin = 0, rMax = 0, cMin = 0, cMax = 0;
-    bool rowsInOrder = true;  // points in time order (the usual case): rows never decrease
+    bool rowsInOrder = true;  // rows never decrease
     size_t rowRuns = 0;       // runs of equal rows in index order
+};
+
+// Pass 1: finiteness, the pixel of every point and the coordinate range. Each point's (row,
+// col) is kept in its sort item (mapping twice cost a sixth of the image). False with *error.
+bool mapPoints(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params, const Feedback* fb,
+               SortItem* items, MapExtent* ext, std::string* error) {
+    const size_t n = t.size();
+    int64_t rMin = 0, rMax = 0, cMin = 0, cMax = 0;
+    bool rowsInOrder = true;
+    size_t rowRuns = 0;
     for (size_t i = 0; i < n; ++i) {
         if (!std::isfinite(t[i]) || !std::isfinite(oc[i])) {
-            img.error = "point " + std::to_string(i) + " has a non-finite " + (std::isfinite(t[i]) ? "O-C" : "epoch");
-            return img;
+            *error = "point " + std::to_string(i) + " has a non-finite " + (std::isfinite(t[i]) ? "O-C" : "epoch");
+            return false;
         }
         int64_t r = 0, c = 0;
         if (!mapOne(t[i], oc[i], params.magT, params.magOc, &r, &c)) {
-            img.error = "magnification too large: point " + std::to_string(i) + " maps to a pixel coordinate beyond 2^61 (t*mag_T = " +
-                        formatDouble(t[i] * params.magT, 4) + ", O-C*mag_OC = " + formatDouble(oc[i] * params.magOc, 4) + ")";
-            return img;
+            *error = "magnification too large: point " + std::to_string(i) + " maps to a pixel coordinate beyond 2^61 (t*mag_T = " +
+                     formatDouble(t[i] * params.magT, 4) + ", O-C*mag_OC = " + formatDouble(oc[i] * params.magOc, 4) + ")";
+            return false;
         }
-        items[i] = Item{static_cast<uint64_t>(r), static_cast<uint64_t>(c), static_cast<uint32_t>(i)};
+        items[i] = SortItem{static_cast<uint64_t>(r), static_cast<uint64_t>(c), static_cast<uint32_t>(i)};
         // Without branches where the outcome is the data's (a new row every few points, a
         // noise column anywhere): these mispredicted about once a point.
         if (i == 0) {
@@ -204,22 +193,31 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
         cMin = std::min(cMin, c);
         cMax = std::max(cMax, c);
         if ((i & 0xFFFFF) == 0xFFFFF && cancelled(fb)) {
-            img.error = "cancelled";
-            return img;
+            *error = "cancelled";
+            return false;
         }
     }
-    img.rowOffset = rMin;
-    img.colOffset = cMin;
-    img.rows = rMax - rMin + 1;
-    img.cols = cMax - cMin + 1;
+    *ext = MapExtent{rMin, rMax, cMin, cMax, rowsInOrder, rowRuns};
+    return true;
+}
 
-    // Pass 2: sort the points by shifted (row, col), ties in index order. Points whose rows
-    // never decrease, at most 2 to a row on average, are sorted row by row on the column by
-    // insertion (from 2.5 a row up the radix sort below was faster, 15–20 % of the image at 5–7
-    // a row; the limit was 8). Otherwise one 64-bit key, row above the column's bits,
-    // when both fit (radix; the pixel back by a shift and a mask, not a 64-bit division), else a
-    // lexicographic pair compare (absurd magnifications: still O(n log n), never an image).
-    const bool byRow = rowsInOrder && n <= 2 * rowRuns;
+// How the sorted pixels are keyed: one 64-bit key (row above the column's bits) when both fit.
+struct PixelKeys {
+    bool oneKey = false;
+    int colBits = 0;
+    uint64_t colMask = 0;
+};
+
+// Pass 2: sort the points by shifted (row, col), ties in index order. Points whose rows never
+// decrease, at most 2 to a row on average, are sorted row by row on the column by insertion
+// (from 2.5 a row up the radix sort below was faster, 15–20 % of the image at 5–7 a row; the
+// limit was 8). Otherwise one 64-bit key, row above the column's bits, when both fit (radix; the
+// pixel back by a shift and a mask, not a 64-bit division), else a lexicographic pair compare
+// (absurd magnifications: still O(n log n), never an image). False on cancel.
+bool sortPoints(std::unique_ptr<SortItem[]>& items, size_t n, const MapExtent& ext, const BinaryImage& img, const Feedback* fb,
+                PixelKeys* keys) {
+    const int64_t rMin = ext.rMin, cMin = ext.cMin;
+    const bool byRow = ext.rowsInOrder && n <= 2 * ext.rowRuns;
     const int colBits = bitsFor(static_cast<uint64_t>(img.cols - 1));
     const bool oneKey = !byRow && colBits + bitsFor(static_cast<uint64_t>(img.rows - 1)) <= 63;
     const uint64_t colMask = colBits >= 64 ? ~uint64_t{0} : (uint64_t{1} << colBits) - 1;
@@ -234,13 +232,13 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
             while (b < n && items[b].key == items[a].key) ++b;
             if (b - a <= 16) {  // insertion sort: stable, so ties stay in index order
                 for (size_t i = a + 1; i < b; ++i) {
-                    const Item x = items[i];
+                    const SortItem x = items[i];
                     size_t j = i;
                     for (; j > a && items[j - 1].key2 > x.key2; --j) items[j] = items[j - 1];
                     items[j] = x;
                 }
             } else {
-                std::sort(items.get() + a, items.get() + b, [](const Item& u, const Item& v) {
+                std::sort(items.get() + a, items.get() + b, [](const SortItem& u, const SortItem& v) {
                     return u.key2 != v.key2 ? u.key2 < v.key2 : u.idx < v.idx;
                 });
             }
@@ -249,19 +247,24 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
     } else if (oneKey) {
         // Stable: ties stay in index order. (A cancellation is seen just below.)
         radixSort(items, n, bitsFor((static_cast<uint64_t>(img.rows - 1) << colBits) | colMask),
-                  [](const Item& x) { return x.key; }, fb);
+                  [](const SortItem& x) { return x.key; }, fb);
     } else {
-        std::sort(items.get(), items.get() + n, [](const Item& a, const Item& b) {
+        std::sort(items.get(), items.get() + n, [](const SortItem& a, const SortItem& b) {
             if (a.key != b.key) return a.key < b.key;
             if (a.key2 != b.key2) return a.key2 < b.key2;
             return a.idx < b.idx;
         });
     }
-    if (cancelled(fb)) {
-        img.error = "cancelled";
-        return img;
-    }
-    // Pixels and the index matrix (CSR).
+    *keys = PixelKeys{oneKey, colBits, colMask};
+    return !cancelled(fb);
+}
+
+// The pixels and the index matrix (CSR): each pixel's row, column and points, each point's pixel.
+// Returns the number of pixels.
+size_t buildPixels(const SortItem* items, size_t n, const PixelKeys& k, BinaryImage& img) {
+    const bool oneKey = k.oneKey;
+    const int colBits = k.colBits;
+    const uint64_t colMask = k.colMask;
     img.pixelPoints.resize(n);
     img.pointPixel.resize(n);
     size_t pixels = 0;
@@ -285,19 +288,16 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
         img.pointPixel[items[i].idx] = static_cast<uint32_t>(img.pixelRow.size() - 1);
     }
     img.pixelPointStart.push_back(static_cast<uint32_t>(n));
-    items.reset();
 
-    UnionFind uf(pixels);
-    if (!linkPixels(img.pixelRow.data(), img.pixelCol.data(), pixels, params.connectivity == 8, uf, fb)) {
-        img.error = "cancelled";
-        return img;
-    }
-    // Compact labels in order of each region's first pixel; per-region statistics. A root is
-    // the smallest pixel of its region (union by smaller index), so a pixel that is its own
-    // root starts a region and any other takes its root's label, given earlier. Every parent
-    // is a smaller pixel, so going up in pixel order the parent of each pixel before p already
-    // holds its root: one look-up finds p's. The centroid sums build up in row and col
-    // (divided by the area at the end).
+    return pixels;
+}
+
+// Compact labels in order of each region's first pixel; per-region statistics. A root is the
+// smallest pixel of its region (union by smaller index), so a pixel that is its own root starts
+// a region and any other takes its root's label, given earlier. Every parent is a smaller pixel,
+// so going up in pixel order the parent of each pixel before p already holds its root: one
+// look-up finds p's. The centroid sums build up in row and col (divided by the area at the end).
+void labelRegions(UnionFind& uf, size_t pixels, BinaryImage& img) {
     img.pixelRegion.resize(pixels);  // every element is written below
     uint32_t* parent = uf.parent.data();
     size_t roots = 0;
@@ -338,6 +338,54 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
         reg.row /= static_cast<double>(reg.area);
         reg.col /= static_cast<double>(reg.area);
     }
+}
+
+}  // namespace
+
+BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params,
+                             const Feedback* fb) {
+    BinaryImage img;
+    img.params = params;
+    if (const std::string e = validate(params); !e.empty()) {
+        img.error = e;
+        return img;
+    }
+    if (t.size() != oc.size()) {
+        img.error = "epochs and O-C differ in length (" + std::to_string(t.size()) + " vs " + std::to_string(oc.size()) + ")";
+        return img;
+    }
+    const size_t n = t.size();
+    if (n > kMaxPoints) {
+        img.error = "too many points (" + std::to_string(n) + "); at most 4294967294";
+        return img;
+    }
+    if (n == 0) {
+        img.ok = true;
+        img.pixelPointStart.push_back(0);
+        return img;
+    }
+    // Not value-initialised (every element is written by the mapping): zeroing them cost as much
+    // as the mapping on the many small images of a scale search.
+    std::unique_ptr<SortItem[]> items(new SortItem[n]);
+    MapExtent ext;
+    if (!mapPoints(t, oc, params, fb, items.get(), &ext, &img.error)) return img;
+    img.rowOffset = ext.rMin;
+    img.colOffset = ext.cMin;
+    img.rows = ext.rMax - ext.rMin + 1;
+    img.cols = ext.cMax - ext.cMin + 1;
+    PixelKeys keys;
+    if (!sortPoints(items, n, ext, img, fb, &keys)) {
+        img.error = "cancelled";
+        return img;
+    }
+    const size_t pixels = buildPixels(items.get(), n, keys, img);
+    items.reset();
+    UnionFind uf(pixels);
+    if (!linkPixels(img.pixelRow.data(), img.pixelCol.data(), pixels, params.connectivity == 8, uf, fb)) {
+        img.error = "cancelled";
+        return img;
+    }
+    labelRegions(uf, pixels, img);
     img.ok = true;
     return img;
 }
