@@ -341,13 +341,12 @@ std::vector<PassSummary> summarisePasses(const CrdFile& file) {
     return v;
 }
 
-PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, const std::string& path, int passIndex,
-                            const PassInputParams& params, const PassSources& sources, const Feedback* fb) {
-    PassInputResult r;
-    PassData& d = r.pass;
-    d.source = path;
-    const CrdReadResult& crd = *shared;
-    r.warnings = crd.warnings;
+namespace {
+
+// The pass to read: the one asked for, or the first with full-rate records; it must be usable
+// and hold at least 3 of them. -1 with r->error (and r->passes listing the file) when not.
+int choosePass(const CrdReadResult& crd, const std::string& path, int passIndex, PassInputResult* r) {
+    PassInputResult& res = *r;
     if (passIndex < 0) {
         for (size_t i = 0; i < crd.file.passes.size() && passIndex < 0; ++i)
             if (!crd.file.passes[i].ranges.empty()) passIndex = int(i);
@@ -360,36 +359,113 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
                 if (!q.problem.empty()) bad += "\n  pass " + std::to_string(i + 1) + " cannot be used: " + q.problem;
                 else np += !q.normalPoints.empty();
             }
-            r.error = path + ": no full-rate pass (no readable type-10 records) to screen" +
-                      (np ? "; the file holds " + std::to_string(np) + " normal-point pass" + (np > 1 ? "es" : "") +
-                                " (type 11), which cannot be screened"
-                          : std::string()) +
-                      bad;
-            r.error = withWarnings(r.error, r.warnings);
-            r.passes = summarisePasses(crd.file);
-            return r;
+            res.error = path + ": no full-rate pass (no readable type-10 records) to screen" +
+                        (np ? "; the file holds " + std::to_string(np) + " normal-point pass" + (np > 1 ? "es" : "") +
+                                  " (type 11), which cannot be screened"
+                            : std::string()) +
+                        bad;
+            res.error = withWarnings(res.error, res.warnings);
+            res.passes = summarisePasses(crd.file);
+            return -1;
         }
     }
     if (passIndex >= int(crd.file.passes.size())) {
-        r.passes = summarisePasses(crd.file);
-        r.error = path + ": pass " + std::to_string(passIndex + 1) + " asked for, the file holds " +
-                  std::to_string(crd.file.passes.size());
-        return r;
+        res.passes = summarisePasses(crd.file);
+        res.error = path + ": pass " + std::to_string(passIndex + 1) + " asked for, the file holds " +
+                    std::to_string(crd.file.passes.size());
+        return -1;
     }
     const CrdPass& pass = crd.file.passes[size_t(passIndex)];
     // (its place in the file it was read from: a pass read alone, by streamCrd, is index 0 here)
     const size_t number = pass.ordinal ? pass.ordinal : size_t(passIndex) + 1;
     if (!pass.problem.empty()) {
-        r.error = withWarnings(path + ": pass " + std::to_string(number) + " cannot be used: " + pass.problem,
-                               r.warnings);
-        return r;
+        res.error = withWarnings(path + ": pass " + std::to_string(number) + " cannot be used: " + pass.problem,
+                                 res.warnings);
+        return -1;
     }
     if (pass.ranges.size() < 3) {
-        r.error = withWarnings(path + ": pass " + std::to_string(number) + " holds " +
-                                   std::to_string(pass.ranges.size()) + " full-rate records; screening needs at least 3",
-                               r.warnings);
-        return r;
+        res.error = withWarnings(path + ": pass " + std::to_string(number) + " holds " +
+                                     std::to_string(pass.ranges.size()) + " full-rate records; screening needs at least 3",
+                                 res.warnings);
+        return -1;
     }
+    return passIndex;
+}
+
+// The prediction for this pass: the given CPF, or the one of a folder whose satellite and time
+// span fit, checked against the ranges (a median |O-C| above 100 us is another satellite, a
+// wrong epoch or a damaged file). Null with *why when none is used (the pass's own TOF trend
+// then); false with r->error when the run must stop.
+bool predictionFor(const CrdPass& pass, const std::string& path, const PassInputParams& params, const PassSources& sources,
+                   const Feedback* fb, const CpfFile** cpfOut, OcResult* oc, std::vector<std::string>* cpfWarnings,
+                   std::string* whyOut, PassInputResult* r) {
+    const CpfFile*& cpf = *cpfOut;
+    std::string& why = *whyOut;
+    // The prediction for this pass: the given CPF, or the one of a folder whose satellite and
+    // time span fit. When none fits: an error, or with cpfFallback (and always for a folder) the
+    // pass's own TOF trend with a note saying why.
+    if (!sources.cpfs.empty() && sources.haveStations) {
+        for (const auto& c : sources.cpfs) {
+            std::vector<std::string> w = c.warnings;
+            const std::string m = cpfMismatch(c.file, pass, path, &w);
+            if (m.empty()) {
+                cpf = &c.file;
+                *cpfWarnings = w;
+                break;
+            }
+            if (why.empty() || !sources.cpfFolder) why = m;
+        }
+        if (!cpf && sources.cpfFolder)
+            why = params.cpfPath + ": no prediction in the folder fits the pass (satellite " + pass.target.name +
+                  (idGiven(pass.target.ilrsId) ? ", ILRS id " + pass.target.ilrsId : std::string()) + ")" +
+                  (why.empty() ? std::string() : "; e.g. " + why);
+        if (!cpf && !sources.cpfFolder && !params.cpfFallback) {
+            r->error = withWarnings(why, sources.cpfs.front().warnings);
+            return false;
+        }
+    }
+    if (cpf) {
+        *oc = computeOc(pass, *cpf, sources.stations, params.oc, fb);
+        // The prediction must describe the ranges: a usable prediction leaves O-C of nanoseconds
+        // to microseconds (a time bias of 10 ms on a LEO pass: 0.5 us); a median |O-C| above
+        // 100 us (15 km one-way) is another satellite, a wrong epoch or a damaged file.
+        if (oc->ok && !oc->oc_s.empty()) {
+            std::vector<double> a;
+            a.reserve(oc->oc_s.size());
+            for (double v : oc->oc_s) a.push_back(std::fabs(v));
+            std::nth_element(a.begin(), a.begin() + static_cast<long>(a.size() / 2), a.end());
+            const double median = a[a.size() / 2];
+            if (!(median <= 1e-4)) {
+                const std::string bad = (cpf->path.empty() ? std::string("cpf") : cpf->path) +
+                                        ": the prediction does not describe this pass: its O-C is " +
+                                        formatFixed(median * 1e3, 3) + " ms (median |O-C|, " +
+                                        formatFixed(median * kLight / 2000, 0) +
+                                        " km one-way; a usable prediction leaves microseconds). Another satellite, a wrong "
+                                        "epoch or a damaged file?";
+                if (!params.cpfFallback && !sources.cpfFolder) {
+                    r->error = bad;
+                    return false;
+                }
+                cpf = nullptr;
+                why = bad;
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, const std::string& path, int passIndex,
+                            const PassInputParams& params, const PassSources& sources, const Feedback* fb) {
+    PassInputResult r;
+    PassData& d = r.pass;
+    d.source = path;
+    const CrdReadResult& crd = *shared;
+    r.warnings = crd.warnings;
+    passIndex = choosePass(crd, path, passIndex, &r);
+    if (passIndex < 0) return r;
+    const CrdPass& pass = crd.file.passes[size_t(passIndex)];
     d.passIndex = passIndex;
     d.satellite = pass.target.name;
     d.ilrsId = pass.target.ilrsId;
@@ -401,58 +477,9 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
         r.warnings.push_back("O-C from a prediction needs both the CPF and the SINEX file; using the fitted TOF trend");
     double altitudeKm = 0;
     std::vector<std::string> cpfWarnings;
-    // The prediction for this pass: the given CPF, or the one of a folder whose satellite and
-    // time span fit. When none fits: an error, or with cpfFallback (and always for a folder) the
-    // pass's own TOF trend with a note saying why.
     const CpfFile* cpf = nullptr;
     std::string why;
-    if (!sources.cpfs.empty() && sources.haveStations) {
-        for (const auto& c : sources.cpfs) {
-            std::vector<std::string> w = c.warnings;
-            const std::string m = cpfMismatch(c.file, pass, path, &w);
-            if (m.empty()) {
-                cpf = &c.file;
-                cpfWarnings = w;
-                break;
-            }
-            if (why.empty() || !sources.cpfFolder) why = m;
-        }
-        if (!cpf && sources.cpfFolder)
-            why = params.cpfPath + ": no prediction in the folder fits the pass (satellite " + pass.target.name +
-                  (idGiven(pass.target.ilrsId) ? ", ILRS id " + pass.target.ilrsId : std::string()) + ")" +
-                  (why.empty() ? std::string() : "; e.g. " + why);
-        if (!cpf && !sources.cpfFolder && !params.cpfFallback) {
-            r.error = withWarnings(why, sources.cpfs.front().warnings);
-            return r;
-        }
-    }
-    if (cpf) {
-        oc = computeOc(pass, *cpf, sources.stations, params.oc, fb);
-        // The prediction must describe the ranges: a usable prediction leaves O-C of nanoseconds
-        // to microseconds (a time bias of 10 ms on a LEO pass: 0.5 us); a median |O-C| above
-        // 100 us (15 km one-way) is another satellite, a wrong epoch or a damaged file.
-        if (oc.ok && !oc.oc_s.empty()) {
-            std::vector<double> a;
-            a.reserve(oc.oc_s.size());
-            for (double v : oc.oc_s) a.push_back(std::fabs(v));
-            std::nth_element(a.begin(), a.begin() + static_cast<long>(a.size() / 2), a.end());
-            const double median = a[a.size() / 2];
-            if (!(median <= 1e-4)) {
-                const std::string bad = (cpf->path.empty() ? std::string("cpf") : cpf->path) +
-                                        ": the prediction does not describe this pass: its O-C is " +
-                                        formatFixed(median * 1e3, 3) + " ms (median |O-C|, " +
-                                        formatFixed(median * kLight / 2000, 0) +
-                                        " km one-way; a usable prediction leaves microseconds). Another satellite, a wrong "
-                                        "epoch or a damaged file?";
-                if (!params.cpfFallback && !sources.cpfFolder) {
-                    r.error = bad;
-                    return r;
-                }
-                cpf = nullptr;
-                why = bad;
-            }
-        }
-    }
+    if (!predictionFor(pass, path, params, sources, fb, &cpf, &oc, &cpfWarnings, &why, &r)) return r;
     if (cpf) {
         d.ocOrigin = "CPF prediction" + (sources.cpfFolder ? " " + cpf->path : std::string());
         double rmin = INFINITY;
