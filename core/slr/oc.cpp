@@ -369,6 +369,88 @@ double medianOf(std::vector<double> v) {
 
 }  // namespace
 
+namespace {
+
+// The robust (Huber) fit of the squared time of flight by the Legendre basis `a`, iterated until
+// the residuals' scale settles: the residuals in ms into *resid, the robust scale (ms) into
+// *scale. 1 fitted, 0 not (degenerate), -1 cancelled.
+int robustTofTrend(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs, const Eigen::VectorXd& ysq,
+                   const TrendOcParams& params, const Feedback* feedback, Eigen::VectorXd* residOut, double* scaleOut) {
+    const Eigen::Index nn = tofMs.size();
+    // Weights in tof^2 space: d(tof^2) = 2 tof d(tof), so 1/(2 tof)^2 makes the fit least squares in tof.
+    Eigen::VectorXd base(nn), w = Eigen::VectorXd::Ones(nn), resid = Eigen::VectorXd::Zero(nn);
+    for (Eigen::Index i = 0; i < nn; ++i) base(i) = tofMs(i) > 0 ? 1.0 / (4.0 * tofMs(i) * tofMs(i)) : 0.0;
+    double scale = NAN;
+    bool fitted = false;
+    for (int it = 0; it < params.maxIterations; ++it) {
+        if (cancelled(feedback)) return -1;
+        const Eigen::VectorXd sw = w.cwiseProduct(base).cwiseSqrt();
+        const Eigen::MatrixXd aw = sw.asDiagonal() * a;
+        const Eigen::VectorXd coef = aw.colPivHouseholderQr().solve(sw.cwiseProduct(ysq));
+        if (!coef.allFinite()) break;
+        const Eigen::VectorXd fit = a * coef;
+        Eigen::VectorXd r(nn);
+        bool good = true;
+        for (Eigen::Index i = 0; i < nn && good; ++i) {
+            good = fit(i) > 0;
+            r(i) = good ? tofMs(i) - std::sqrt(fit(i)) : 0;
+        }
+        if (!good) break;  // a non-positive squared trend: keep the previous fit
+        resid = r;
+        fitted = true;
+        std::vector<double> absr(static_cast<size_t>(nn));
+        for (Eigen::Index i = 0; i < nn; ++i) absr[static_cast<size_t>(i)] = std::fabs(resid(i));
+        const double s = 1.4826 * medianOf(absr);
+        if (!(s > 0)) {
+            scale = 0;
+            break;
+        }
+        Eigen::VectorXd wn(nn);
+        for (Eigen::Index i = 0; i < nn; ++i) {
+            const double u = std::fabs(resid(i)) / (params.huberK * s);
+            wn(i) = u <= 1 ? 1.0 : 1.0 / u;  // Huber weights: bounded influence, not mode-seeking
+        }
+        const bool converged = std::isfinite(scale) && std::fabs(s - scale) <= 1e-6 * scale;
+        scale = s;
+        w = wn;
+        if (converged) break;
+    }
+    *residOut = resid;
+    *scaleOut = scale;
+    return fitted ? 1 : 0;
+}
+
+// Elevation and azimuth at a pass's epochs, interpolated in its pointing records (type 30);
+// NaN without them.
+class PointingAngles {
+public:
+    explicit PointingAngles(const CrdPass& pass) {
+        for (const auto& p : pass.pointing) pts.emplace_back(pass.passSeconds(p.secOfDay), &p);
+        std::stable_sort(pts.begin(), pts.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
+    }
+    void at(double tt, double* az, double* el) const {
+        *az = *el = NAN;
+        if (pts.empty()) return;
+        size_t k = static_cast<size_t>(std::upper_bound(pts.begin(), pts.end(), tt,
+                                                        [](double v, const auto& p) { return v < p.first; }) -
+                                       pts.begin());
+        const CrdPointing* a0 = pts[k == 0 ? 0 : k - 1].second;
+        const CrdPointing* a1 = pts[k >= pts.size() ? pts.size() - 1 : k].second;
+        const double ta = pts[k == 0 ? 0 : k - 1].first, tb = pts[k >= pts.size() ? pts.size() - 1 : k].first;
+        const double u = tb > ta ? (tt - ta) / (tb - ta) : 0;
+        *el = (a0->elevationDeg + u * (a1->elevationDeg - a0->elevationDeg)) * M_PI / 180;
+        double daz = a1->azimuthDeg - a0->azimuthDeg;
+        if (daz > 180) daz -= 360;
+        if (daz < -180) daz += 360;
+        *az = std::fmod(a0->azimuthDeg + u * daz + 360.0, 360.0) * M_PI / 180;
+    }
+
+private:
+    std::vector<std::pair<double, const CrdPointing*>> pts;
+};
+
+}  // namespace
+
 OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const Feedback* feedback) {
     OcResult res;
     res.method = OcMethod::FittedTrend;
@@ -413,48 +495,15 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             tofMs(i) = y[static_cast<size_t>(i)] * 1e3;
             ysq(i) = tofMs(i) * tofMs(i);
         }
-        // Weights in tof^2 space: d(tof^2) = 2 tof d(tof), so 1/(2 tof)^2 makes the fit least squares in tof.
-        Eigen::VectorXd base(nn), w = Eigen::VectorXd::Ones(nn), resid = Eigen::VectorXd::Zero(nn);
-        for (Eigen::Index i = 0; i < nn; ++i) base(i) = tofMs(i) > 0 ? 1.0 / (4.0 * tofMs(i) * tofMs(i)) : 0.0;
+        Eigen::VectorXd resid;
         double scale = NAN;
-        bool fitted = false;
-        for (int it = 0; it < params.maxIterations; ++it) {
-            if (cancelled(feedback)) {
-                res = OcResult();
-                res.error = "cancelled";
-                return res;
-            }
-            const Eigen::VectorXd sw = w.cwiseProduct(base).cwiseSqrt();
-            const Eigen::MatrixXd aw = sw.asDiagonal() * a;
-            const Eigen::VectorXd coef = aw.colPivHouseholderQr().solve(sw.cwiseProduct(ysq));
-            if (!coef.allFinite()) break;
-            const Eigen::VectorXd fit = a * coef;
-            Eigen::VectorXd r(nn);
-            bool good = true;
-            for (Eigen::Index i = 0; i < nn && good; ++i) {
-                good = fit(i) > 0;
-                r(i) = good ? tofMs(i) - std::sqrt(fit(i)) : 0;
-            }
-            if (!good) break;  // a non-positive squared trend: keep the previous fit
-            resid = r;
-            fitted = true;
-            std::vector<double> absr(static_cast<size_t>(nn));
-            for (Eigen::Index i = 0; i < nn; ++i) absr[static_cast<size_t>(i)] = std::fabs(resid(i));
-            const double s = 1.4826 * medianOf(absr);
-            if (!(s > 0)) {
-                scale = 0;
-                break;
-            }
-            Eigen::VectorXd wn(nn);
-            for (Eigen::Index i = 0; i < nn; ++i) {
-                const double u = std::fabs(resid(i)) / (params.huberK * s);
-                wn(i) = u <= 1 ? 1.0 : 1.0 / u;  // Huber weights: bounded influence, not mode-seeking
-            }
-            const bool converged = std::isfinite(scale) && std::fabs(s - scale) <= 1e-6 * scale;
-            scale = s;
-            w = wn;
-            if (converged) break;
+        const int fit = robustTofTrend(a, tofMs, ysq, params, feedback, &resid, &scale);
+        if (fit < 0) {
+            res = OcResult();
+            res.error = "cancelled";
+            return res;
         }
+        const bool fitted = fit > 0;
         if (!fitted) {
             res.error = name + ": the trend fit failed (degenerate epochs or times of flight)";
             return res;
@@ -463,29 +512,11 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         res.trendScaleS = std::isfinite(scale) ? scale * 1e-3 : NAN;
 
         // Elevation/azimuth from the pointing records (type 30), when there are some.
-        std::vector<std::pair<double, const CrdPointing*>> pts;
-        for (const auto& p : pass.pointing) pts.emplace_back(pass.passSeconds(p.secOfDay), &p);
-        std::stable_sort(pts.begin(), pts.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
-        auto angles = [&](double tt, double* az, double* el) {
-            *az = *el = NAN;
-            if (pts.empty()) return;
-            size_t k = static_cast<size_t>(std::upper_bound(pts.begin(), pts.end(), tt,
-                                                            [](double v, const auto& p) { return v < p.first; }) -
-                                           pts.begin());
-            const CrdPointing* a0 = pts[k == 0 ? 0 : k - 1].second;
-            const CrdPointing* a1 = pts[k >= pts.size() ? pts.size() - 1 : k].second;
-            const double ta = pts[k == 0 ? 0 : k - 1].first, tb = pts[k >= pts.size() ? pts.size() - 1 : k].first;
-            const double u = tb > ta ? (tt - ta) / (tb - ta) : 0;
-            *el = (a0->elevationDeg + u * (a1->elevationDeg - a0->elevationDeg)) * M_PI / 180;
-            double daz = a1->azimuthDeg - a0->azimuthDeg;
-            if (daz > 180) daz -= 360;
-            if (daz < -180) daz += 360;
-            *az = std::fmod(a0->azimuthDeg + u * daz + 360.0, 360.0) * M_PI / 180;
-        };
+        const PointingAngles angles(pass);
         for (size_t i = 0; i < t.size(); ++i) {
             const CrdRange& r = pass.ranges[idx[i]];
             double az = NAN, el = NAN;
-            angles(t[i], &az, &el);
+            angles.at(t[i], &az, &el);
             res.epoch_s.push_back(t[i]);
             res.oc_s.push_back(resid(static_cast<Eigen::Index>(i)) * 1e-3);
             res.tof_s.push_back(r.tofS);
