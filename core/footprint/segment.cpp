@@ -197,6 +197,85 @@ void boxSmooth(const float* src, int w, int h, int r, float* dst) {
 }
 }  // namespace
 
+namespace {
+
+// Holes: non-domain pixels that no 4-connected path of non-domain pixels joins to the outside,
+// added to the domain. Only the domain's bounding box (plus a 1 px margin) can hold any.
+void fillDomainHoles(int w, int h, std::vector<int>& stack, SpotDomain& d) {
+    int bx0 = w, by0 = h, bx1 = -1, by1 = -1;
+    for (int p : d.pixels) {
+        bx0 = std::min(bx0, p % w);
+        bx1 = std::max(bx1, p % w);
+        by0 = std::min(by0, p / w);
+        by1 = std::max(by1, p / w);
+    }
+    bx0 = std::max(0, bx0 - 1);
+    by0 = std::max(0, by0 - 1);
+    bx1 = std::min(w - 1, bx1 + 1);
+    by1 = std::min(h - 1, by1 + 1);
+    const int bw = bx1 - bx0 + 1, bh = by1 - by0 + 1;
+    std::vector<unsigned char> notDomain(size_t(bw) * bh), outside(size_t(bw) * bh, 0);
+    for (int y = 0; y < bh; ++y)
+        for (int x = 0; x < bw; ++x) notDomain[size_t(y) * bw + x] = !d.mask[size_t(y + by0) * w + x + bx0];
+    auto seed = [&](int x, int y) {
+        const int q = y * bw + x;
+        if (notDomain[q] && !outside[q]) {
+            outside[q] = 1;
+            stack.push_back(y << 16 | x);
+        }
+    };
+    for (int x = 0; x < bw; ++x) {
+        seed(x, 0);
+        seed(x, bh - 1);
+    }
+    for (int y = 0; y < bh; ++y) {
+        seed(0, y);
+        seed(bw - 1, y);
+    }
+    flood(notDomain.data(), bw, bh, false, stack, outside.data(), nullptr);
+    for (int y = 0; y < bh; ++y)
+        for (int x = 0; x < bw; ++x)
+            if (notDomain[size_t(y) * bw + x] && !outside[size_t(y) * bw + x]) {
+                const int i = (y + by0) * w + x + bx0;
+                d.mask[i] = 1;
+                d.pixels.push_back(i);
+            }
+}
+
+// Second spot: a local maximum of the smoothed image, away from the main peak, with a dip
+// between the two (a shoulder on the same spot has none). The highest such is kept.
+void findSecondSpot(const cv::Mat& smooth, double background, double amp, const SegmentParams& params, SpotDomain& d) {
+    const int w = smooth.cols, h = smooth.rows;
+    const float* sm = smooth.ptr<float>();
+    const double minSep2 = params.secondSpotMinSeparation * params.secondSpotMinSeparation;
+    float floorValue = static_cast<float>(background + 0.15 * amp);  // candidates must reach this
+    for (int y = 1; y < h - 1; ++y)
+        for (int x = 1; x < w - 1; ++x) {
+            const float v = sm[y * w + x];
+            if (v <= floorValue) continue;
+            const double ddx = x - d.peakX, ddy = y - d.peakY;
+            if (ddx * ddx + ddy * ddy < minSep2) continue;
+            const float* c = sm + y * w + x;
+            if (c[-w - 1] > v || c[-w] > v || c[-w + 1] > v || c[-1] > v || c[1] > v || c[w - 1] > v || c[w] > v ||
+                c[w + 1] > v)
+                continue;  // not a local maximum
+            const int steps = static_cast<int>(std::ceil(std::sqrt(ddx * ddx + ddy * ddy)));
+            double lowest = v;
+            for (int k = 1; k < steps; ++k) {
+                const int px = static_cast<int>(std::lround(d.peakX + ddx * k / steps));
+                const int py = static_cast<int>(std::lround(d.peakY + ddy * k / steps));
+                lowest = std::min<double>(lowest, sm[py * w + px]);
+            }
+            if (lowest - background > 0.8 * (v - background)) continue;  // no real dip
+            d.secondPeakFraction = (v - background) / amp;
+            d.secondPeakX = x;
+            d.secondPeakY = y;
+            floorValue = v;
+        }
+}
+
+}  // namespace
+
 SpotDomain segmentSpot(const cv::Mat& roi, double background, double noise, double saturationDn,
                        const SegmentParams& params) {
     SpotDomain d;
@@ -250,48 +329,7 @@ SpotDomain segmentSpot(const cv::Mat& roi, double background, double noise, doub
     d.mask[d.peakY * w + d.peakX] = 1;
     d.pixels.reserve(size_t(w) * h / 4);
     flood(above.data(), w, h, true, stack, d.mask.data(), &d.pixels);
-    if (params.fillHoles) {
-        // Holes: non-domain pixels that no 4-connected path of non-domain pixels joins to the
-        // outside. Only the domain's bounding box (plus a 1 px margin) can hold any.
-        int bx0 = w, by0 = h, bx1 = -1, by1 = -1;
-        for (int p : d.pixels) {
-            bx0 = std::min(bx0, p % w);
-            bx1 = std::max(bx1, p % w);
-            by0 = std::min(by0, p / w);
-            by1 = std::max(by1, p / w);
-        }
-        bx0 = std::max(0, bx0 - 1);
-        by0 = std::max(0, by0 - 1);
-        bx1 = std::min(w - 1, bx1 + 1);
-        by1 = std::min(h - 1, by1 + 1);
-        const int bw = bx1 - bx0 + 1, bh = by1 - by0 + 1;
-        std::vector<unsigned char> notDomain(size_t(bw) * bh), outside(size_t(bw) * bh, 0);
-        for (int y = 0; y < bh; ++y)
-            for (int x = 0; x < bw; ++x) notDomain[size_t(y) * bw + x] = !d.mask[size_t(y + by0) * w + x + bx0];
-        auto seed = [&](int x, int y) {
-            const int q = y * bw + x;
-            if (notDomain[q] && !outside[q]) {
-                outside[q] = 1;
-                stack.push_back(y << 16 | x);
-            }
-        };
-        for (int x = 0; x < bw; ++x) {
-            seed(x, 0);
-            seed(x, bh - 1);
-        }
-        for (int y = 0; y < bh; ++y) {
-            seed(0, y);
-            seed(bw - 1, y);
-        }
-        flood(notDomain.data(), bw, bh, false, stack, outside.data(), nullptr);
-        for (int y = 0; y < bh; ++y)
-            for (int x = 0; x < bw; ++x)
-                if (notDomain[size_t(y) * bw + x] && !outside[size_t(y) * bw + x]) {
-                    const int i = (y + by0) * w + x + bx0;
-                    d.mask[i] = 1;
-                    d.pixels.push_back(i);
-                }
-    }
+    if (params.fillHoles) fillDomainHoles(w, h, stack, d);
     if (static_cast<int>(d.pixels.size()) < params.minPixels) {
         d.why = "no spot: domain of only " + std::to_string(d.pixels.size()) + " px above the threshold";
         return d;
@@ -301,34 +339,7 @@ SpotDomain segmentSpot(const cv::Mat& roi, double background, double noise, doub
         if (x == 0 || y == 0 || x == w - 1 || y == h - 1) d.touchesBorder = true;
         if (img[p] >= saturationDn) ++d.saturatedPixels;
     }
-    // Second spot: a local maximum of the smoothed image, away from the main peak, with a
-    // dip between the two (a shoulder on the same spot has none).
-    const float* sm = smooth.ptr<float>();
-    const double minSep2 = params.secondSpotMinSeparation * params.secondSpotMinSeparation;
-    float floorValue = static_cast<float>(background + 0.15 * amp);  // candidates must reach this
-    for (int y = 1; y < h - 1; ++y)
-        for (int x = 1; x < w - 1; ++x) {
-            const float v = sm[y * w + x];
-            if (v <= floorValue) continue;
-            const double ddx = x - d.peakX, ddy = y - d.peakY;
-            if (ddx * ddx + ddy * ddy < minSep2) continue;
-            const float* c = sm + y * w + x;
-            if (c[-w - 1] > v || c[-w] > v || c[-w + 1] > v || c[-1] > v || c[1] > v || c[w - 1] > v || c[w] > v ||
-                c[w + 1] > v)
-                continue;  // not a local maximum
-            const int steps = static_cast<int>(std::ceil(std::sqrt(ddx * ddx + ddy * ddy)));
-            double lowest = v;
-            for (int k = 1; k < steps; ++k) {
-                const int px = static_cast<int>(std::lround(d.peakX + ddx * k / steps));
-                const int py = static_cast<int>(std::lround(d.peakY + ddy * k / steps));
-                lowest = std::min<double>(lowest, sm[py * w + px]);
-            }
-            if (lowest - background > 0.8 * (v - background)) continue;  // no real dip
-            d.secondPeakFraction = (v - background) / amp;
-            d.secondPeakX = x;
-            d.secondPeakY = y;
-            floorValue = v;
-        }
+    findSecondSpot(smooth, background, amp, params, d);
     d.found = true;
     return d;
 }
