@@ -348,6 +348,82 @@ BeamCalibration beamOutcome(size_t k, const std::vector<BeamDesign>& beams, int 
 
 }  // namespace
 
+namespace {
+
+// Each control point's beam design and whitening; counts per beam and equations. False with
+// res->error.
+bool prepareControlPoints(const std::vector<BeamDesign>& beams, const std::vector<ControlPoint>& points,
+                          const std::map<int, size_t>& byId, const PointingCalibParams& params, std::vector<PointPrep>& prep,
+                          std::vector<int>& count, PointingCalibResult* res) {
+    for (size_t i = 0; i < points.size(); ++i) {
+        const ControlPoint& c = points[i];
+        const auto it = byId.find(c.beam);
+        if (it == byId.end()) {
+            res->error = pointName(c, i) + ": beam " + std::to_string(c.beam) + " has no design";
+            return false;
+        }
+        PointPrep& pp = prep[i];
+        pp.design = it->second;
+        if (const std::string e = preparePoint(c, i, beams[pp.design], params, &pp); !e.empty()) {
+            res->error = e;
+            return false;
+        }
+        ++count[pp.design];
+        res->observations += c.useHeight ? 3 : 2;
+    }
+    return true;
+}
+
+// Geometry check at the start: is every parameter determined? False with res->error naming
+// the parameters the control points do not separate.
+bool geometryDetermined(const LmProblem& prob, const Eigen::VectorXd& p0, const Model& m, const PointingCalibParams& params,
+                        PointingCalibResult* res) {
+    const int np = static_cast<int>(m.names.size());
+    Eigen::VectorXd r;
+    Eigen::MatrixXd J, cov;
+    if (!prob.evaluate(p0, &r, &J)) {
+        res->error = "the model cannot be evaluated at the design values (non-finite geometry)";
+        return false;
+    }
+    Eigen::VectorXd weak;
+    if (!covarianceFromJacobian(J, params.minRcond, &cov, &res->rcond, &weak)) {
+        std::string which;
+        for (int j = 0; j < np; ++j)
+            if (std::fabs(weak(j)) > 0.3) which += (which.empty() ? "" : ", ") + m.names[j];
+        res->error = "singular calibration geometry (reciprocal condition " + formatDouble(res->rcond, 3) +
+                    "): the control points do not separate " + which +
+                    " (e.g. identical control points without heights, a beam pointing at nadir, or too few points)";
+        return false;
+    }
+    return true;
+}
+
+// The covariance at the solution (scaled by χ²/dof when asked), the parameters' standard
+// deviations and the warning when the residuals exceed the stated noise. False with res->error.
+bool solutionCovariance(const LmOutcome& o, const PointingCalibParams& params, int np, Eigen::MatrixXd* covOut,
+                        PointingCalibResult* res) {
+    Eigen::MatrixXd& cov = *covOut;
+    Eigen::VectorXd weak;
+    if (!covarianceFromJacobian(o.jacobian, params.minRcond, &cov, &res->rcond, &weak)) {
+        res->error = "singular calibration geometry at the solution (reciprocal condition " + formatDouble(res->rcond, 3) + ")";
+        return false;
+    }
+    if (params.scaleByChi2) {
+        if (res->dof > 0)
+            cov *= res->chi2 / res->dof;
+        else
+            res->warnings.push_back("no redundancy (as many equations as unknowns): covariance from the stated noise only");
+    }
+    res->covariance = cov;
+    for (int j = 0; j < np; ++j) res->paramSd.push_back(sqrtVariance(cov(j, j)));
+    if (res->dof > 0 && res->chi2 / res->dof > 4)
+        res->warnings.push_back("residuals exceed the stated noise (reduced chi-square " + formatDouble(res->chi2 / res->dof, 3) +
+                                "): check the sigmas or look for an outlier");
+    return true;
+}
+
+}  // namespace
+
 PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, const std::vector<ControlPoint>& points,
                                       const PointingCalibParams& params) {
     PointingCalibResult res;
@@ -371,22 +447,7 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
     }
     std::vector<int> count(beams.size(), 0);
     std::vector<PointPrep> prep(points.size());
-    for (size_t i = 0; i < points.size(); ++i) {
-        const ControlPoint& c = points[i];
-        const auto it = byId.find(c.beam);
-        if (it == byId.end()) {
-            res.error = pointName(c, i) + ": beam " + std::to_string(c.beam) + " has no design";
-            return res;
-        }
-        PointPrep& pp = prep[i];
-        pp.design = it->second;
-        if (const std::string e = preparePoint(c, i, beams[pp.design], params, &pp); !e.empty()) {
-            res.error = e;
-            return res;
-        }
-        ++count[pp.design];
-        res.observations += c.useHeight ? 3 : 2;
-    }
+    if (!prepareControlPoints(beams, points, byId, params, prep, count, &res)) return res;
     // Parameter layout.
     Model m;
     if (const std::string e = layoutParameters(beams, count, params, &m, &res.warnings); !e.empty()) {
@@ -422,24 +483,7 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
         return !J || numericJacobian(residuals, p, *r, steps, J, true);
     };
     const Eigen::VectorXd p0 = Eigen::VectorXd::Zero(np);
-    {  // Geometry check at the start: is every parameter determined?
-        Eigen::VectorXd r;
-        Eigen::MatrixXd J, cov;
-        if (!prob.evaluate(p0, &r, &J)) {
-            res.error = "the model cannot be evaluated at the design values (non-finite geometry)";
-            return res;
-        }
-        Eigen::VectorXd weak;
-        if (!covarianceFromJacobian(J, params.minRcond, &cov, &res.rcond, &weak)) {
-            std::string which;
-            for (int j = 0; j < np; ++j)
-                if (std::fabs(weak(j)) > 0.3) which += (which.empty() ? "" : ", ") + m.names[j];
-            res.error = "singular calibration geometry (reciprocal condition " + formatDouble(res.rcond, 3) +
-                        "): the control points do not separate " + which +
-                        " (e.g. identical control points without heights, a beam pointing at nadir, or too few points)";
-            return res;
-        }
-    }
+    if (!geometryDetermined(prob, p0, m, params, &res)) return res;
     LmOptions opt;
     opt.maxIterations = params.maxIterations;
     opt.lambda0 = 1e-6;  // nearly linear: start as Gauss–Newton
@@ -462,22 +506,7 @@ PointingCalibResult calibratePointing(const std::vector<BeamDesign>& beams, cons
         return res;
     }
     Eigen::MatrixXd cov;
-    Eigen::VectorXd weak;
-    if (!covarianceFromJacobian(o.jacobian, params.minRcond, &cov, &res.rcond, &weak)) {
-        res.error = "singular calibration geometry at the solution (reciprocal condition " + formatDouble(res.rcond, 3) + ")";
-        return res;
-    }
-    if (params.scaleByChi2) {
-        if (res.dof > 0)
-            cov *= res.chi2 / res.dof;
-        else
-            res.warnings.push_back("no redundancy (as many equations as unknowns): covariance from the stated noise only");
-    }
-    res.covariance = cov;
-    for (int j = 0; j < np; ++j) res.paramSd.push_back(sqrtVariance(cov(j, j)));
-    if (res.dof > 0 && res.chi2 / res.dof > 4)
-        res.warnings.push_back("residuals exceed the stated noise (reduced chi-square " + formatDouble(res.chi2 / res.dof, 3) +
-                               "): check the sigmas or look for an outlier");
+    if (!solutionCovariance(o, params, np, &cov, &res)) return res;
     // Stages of the outcome: iterations, per-point residuals, per-beam results.
     recordIterations(o.history, points, prep, m, res);
     recordResiduals(points, prep, m, p, res);
