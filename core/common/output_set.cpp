@@ -1,5 +1,6 @@
 #include "core/common/output_set.hpp"
 
+#include <functional>
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -317,7 +318,9 @@ std::string OutputSet::unstaged(std::string message) const {
     return message;
 }
 
-bool OutputSet::commit() {
+// Before anything is renamed: the set was checked, every output was staged, and no output is an
+// input read since check(). False with m_error, the set abandoned.
+bool OutputSet::readyToCommit() {
     if (!m_checked) {
         m_error = "internal error: outputs committed before they were checked";
         abandon();
@@ -343,6 +346,42 @@ bool OutputSet::commit() {
             return false;
         }
     }
+    return true;
+}
+
+// Earlier outputs of the same kind in the set's folder that this run did not write again: each
+// kept aside (setAside) and removed. False with m_error.
+bool OutputSet::removeStaleOutputs(const std::function<bool(const std::string&)>& setAside) {
+    std::vector<std::string> names;
+    if (DIR* d = ::opendir(m_setFolder.c_str())) {
+        while (const dirent* e = ::readdir(d)) names.emplace_back(e->d_name);
+        ::closedir(d);
+    }
+    std::sort(names.begin(), names.end());
+    // This run's outputs by (device, inode), each stat'ed once: a folder of 20 000 pass files
+    // is one pass over the folder, not one per file and output.
+    std::set<std::pair<dev_t, ino_t>> ours;
+    for (const auto& it : m_items) {
+        struct stat st {};
+        if (!it.toStdout && ::stat(it.target.c_str(), &st) == 0) ours.emplace(st.st_dev, st.st_ino);
+    }
+    for (const std::string& name : names) {
+        bool match = false;
+        for (const std::string& pat : m_stalePatterns) match = match || ::fnmatch(pat.c_str(), name.c_str(), 0) == 0;
+        const std::string path = m_setFolder + "/" + name;
+        struct stat st {};
+        if (!match || ::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+        if (ours.count({st.st_dev, st.st_ino}) || !inputReadAs(path).empty()) continue;
+        if (!setAside(path) || ::unlink(path.c_str()) != 0) {
+            m_error = "cannot remove the earlier output " + path + ": " + std::strerror(errno) + " (nothing written)";
+            return false;
+        }
+    }
+    return true;
+}
+
+bool OutputSet::commit() {
+    if (!readyToCommit()) return false;
     // Every file replaced or removed keeps a hard link (a backup) until the end, so that a failure
     // half-way through can put it back; a new file is removed again. Order: the manifest's old
     // file first, the new files, the stale files of the set, the manifest last.
@@ -390,35 +429,7 @@ bool OutputSet::commit() {
     }
     for (size_t i = 0; ok && i < m_items.size(); ++i)
         if (!m_items[i].toStdout && &m_items[i] != manifest) ok = put(m_items[i]);
-    if (ok && !m_setFolder.empty() && !m_stalePatterns.empty()) {
-        // Earlier outputs of the same kind that this run did not write again.
-        std::vector<std::string> names;
-        if (DIR* d = ::opendir(m_setFolder.c_str())) {
-            while (const dirent* e = ::readdir(d)) names.emplace_back(e->d_name);
-            ::closedir(d);
-        }
-        std::sort(names.begin(), names.end());
-        // This run's outputs by (device, inode), each stat'ed once: a folder of 20 000 pass files
-        // is one pass over the folder, not one per file and output.
-        std::set<std::pair<dev_t, ino_t>> ours;
-        for (const auto& it : m_items) {
-            struct stat st {};
-            if (!it.toStdout && ::stat(it.target.c_str(), &st) == 0) ours.emplace(st.st_dev, st.st_ino);
-        }
-        for (const std::string& name : names) {
-            bool match = false;
-            for (const std::string& pat : m_stalePatterns) match = match || ::fnmatch(pat.c_str(), name.c_str(), 0) == 0;
-            const std::string path = m_setFolder + "/" + name;
-            struct stat st {};
-            if (!match || ::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
-            if (ours.count({st.st_dev, st.st_ino}) || !inputReadAs(path).empty()) continue;
-            if (!setAside(path) || ::unlink(path.c_str()) != 0) {
-                m_error = "cannot remove the earlier output " + path + ": " + std::strerror(errno) + " (nothing written)";
-                ok = false;
-                break;
-            }
-        }
-    }
+    if (ok && !m_setFolder.empty() && !m_stalePatterns.empty()) ok = removeStaleOutputs(setAside);
     if (ok && manifest) ok = put(*manifest);
     if (!ok) {
         for (const std::string& c : created) std::remove(c.c_str());

@@ -5,6 +5,7 @@
 // or by canonical folder + name for files that do not exist yet), written under a staging name
 // beside its target, and renamed into place only when every output of the run is complete.
 // A failure at any point leaves every target as it was.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,8 @@ public:
     void abandon();
 
 private:
+    bool readyToCommit();
+    bool removeStaleOutputs(const std::function<bool(const std::string&)>& setAside);
     struct Item {
         bool toStdout = false;  ///< "-"
         std::string path;     ///< as given
