@@ -163,28 +163,34 @@ double slrTrackOc(const SlrSimParams& p, double rangeBiasS, double timeBiasS, do
     return rangeBiasS + 2.0 / kC * rangeRateMs(p, tcaSod, t) * timeBiasS;
 }
 
-SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
-    SlrSimPass out;
-    if (const std::string e = validate(p); !e.empty()) {
-        out.error = e;
-        return out;
-    }
-    Rng rng(seed);
-    // Gaps (seconds from the first shot): no signal inside; no noise either in a no-data gap.
-    auto gapAt = [&](double x, bool* noiseOk) {
-        for (const SlrSimGap& g : p.gaps)
-            if (x >= g.startS && x < g.startS + g.lengthS) {
-                *noiseOk = g.noise;
-                return true;
-            }
-        *noiseOk = true;
-        return false;
-    };
-    const double noiseRate = p.daylight ? p.noiseRateDayHz : p.noiseRateNightHz;
-    const double sigRate = p.fireRateHz * p.returnProbability;
-    // Counts and duration.
+namespace {
+
+// Gaps (seconds from the first shot): no signal inside; no noise either in a no-data gap.
+bool inGap(const SlrSimParams& p, double x, bool* noiseOk) {
+    for (const SlrSimGap& g : p.gaps)
+        if (x >= g.startS && x < g.startS + g.lengthS) {
+            *noiseOk = g.noise;
+            return true;
+        }
+    *noiseOk = true;
+    return false;
+}
+
+// How many shots, which of them return signal, how many noise points.
+struct ShotPlan {
     long long shots = 0, ns = 0, nn = 0;
     std::vector<long long> sigShots;
+};
+
+// The shot plan: exactly p.points points (the kind's pass length kept, the return probability
+// following), or the shots of the pass length with their return probability and the noise rate.
+// False with *error for a pass too large.
+bool planShots(const SlrSimParams& p, Rng& rng, ShotPlan* plan, std::string* error) {
+    auto gapAt = [&](double x, bool* noiseOk) { return inGap(p, x, noiseOk); };
+    long long &shots = plan->shots, &ns = plan->ns, &nn = plan->nn;
+    std::vector<long long>& sigShots = plan->sigShots;
+    const double noiseRate = p.daylight ? p.noiseRateDayHz : p.noiseRateNightHz;
+    const double sigRate = p.fireRateHz * p.returnProbability;
     if (p.points > 0) {
         const double f = p.signalFraction > 0 ? p.signalFraction : sigRate / (sigRate + noiseRate);
         ns = std::clamp<long long>(std::llround(f * static_cast<double>(p.points)), 1, p.points);
@@ -193,8 +199,8 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
         // lengthened only when even a return on every shot would not give ns signal points).
         shots = std::max<long long>(ns, std::llround(p.durationS * p.fireRateHz));
         if (shots > 1000000000LL) {
-            out.error = "too many shots (" + std::to_string(shots) + "): shorten the pass";
-            return out;
+            *error = "too many shots (" + std::to_string(shots) + "): shorten the pass";
+            return false;
         }
         // Exactly ns distinct signal shots among the shots outside the gaps (selection sampling,
         // ascending).
@@ -218,8 +224,8 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
     } else {
         shots = std::max<long long>(1, std::llround(p.durationS * p.fireRateHz));
         if (shots > 1000000000LL) {
-            out.error = "too many shots (" + std::to_string(shots) + "): shorten the pass";
-            return out;
+            *error = "too many shots (" + std::to_string(shots) + "): shorten the pass";
+            return false;
         }
         bool dummy = true;
         for (long long k = 0; k < shots; ++k)
@@ -231,10 +237,28 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
         else
             nn = static_cast<long long>(rng.poisson(noiseRate * static_cast<double>(shots) / p.fireRateHz));
         if (ns + nn > 50000000LL) {
-            out.error = "the pass would hold " + std::to_string(ns + nn) + " points (more than 5e7)";
-            return out;
+            *error = "the pass would hold " + std::to_string(ns + nn) + " points (more than 5e7)";
+            return false;
         }
     }
+    return true;
+}
+
+}  // namespace
+
+SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
+    SlrSimPass out;
+    if (const std::string e = validate(p); !e.empty()) {
+        out.error = e;
+        return out;
+    }
+    Rng rng(seed);
+    auto gapAt = [&](double x, bool* noiseOk) { return inGap(p, x, noiseOk); };
+    // Counts and duration.
+    ShotPlan plan;
+    if (!planShots(p, rng, &plan, &out.error)) return out;
+    const long long shots = plan.shots, ns = plan.ns, nn = plan.nn;
+    const std::vector<long long>& sigShots = plan.sigShots;
     const double duration = static_cast<double>(shots) / p.fireRateHz;
     // Track truth: biases, closest approach near the middle of the pass.
     out.rangeBiasS = rng.uniform(-p.rangeBiasMaxS, p.rangeBiasMaxS);
