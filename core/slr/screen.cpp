@@ -112,6 +112,52 @@ int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& 
     return 64;
 }
 
+namespace {
+
+// A block's range of line angles: the peak bin of its smoothed histogram, grown towards the
+// heavier side one bin at a time while the bins hold at least `fraction` of the peak (at most
+// maxWidth bins), then one bin of margin on each side. inRange marks its bins.
+struct SlopeRange {
+    size_t left = 0, right = 0, width = 1;
+};
+
+SlopeRange slopeRangeOf(const std::vector<double>& smooth, size_t maxWidth, double fraction, std::vector<uint8_t>& inRange) {
+    const size_t nb = smooth.size();
+    size_t peak = 0;
+    for (size_t q = 1; q < nb; ++q)
+        if (smooth[q] > smooth[peak]) peak = q;
+    std::fill(inRange.begin(), inRange.end(), 0);
+    inRange[peak] = 1;
+    const double floorW = fraction * smooth[peak];
+    size_t left = peak, right = peak, width = 1;
+    // Grow towards the heavier side first, one bin at a time, while the bins hold weight.
+    while (width < maxWidth) {
+        const size_t l = (left + nb - 1) % nb, r = (right + 1) % nb;
+        const bool okL = !inRange[l] && smooth[l] >= floorW, okR = !inRange[r] && smooth[r] >= floorW;
+        if (!okL && !okR) break;
+        if (okL && (!okR || smooth[l] >= smooth[r])) {
+            left = l;
+            inRange[l] = 1;
+        } else {
+            right = r;
+            inRange[r] = 1;
+        }
+        ++width;
+    }
+    // One bin of margin on each side.
+    for (size_t* e : {&left, &right}) {
+        const size_t q = e == &left ? (left + nb - 1) % nb : (right + 1) % nb;
+        if (width < nb && !inRange[q]) {
+            *e = q;
+            inRange[q] = 1;
+            ++width;
+        }
+    }
+    return SlopeRange{left, right, width};
+}
+
+}  // namespace
+
 LinearityResult findLinearRegions(const std::vector<Region>& regions, const std::vector<uint32_t>& candidates,
                                   const std::vector<Anchor>& piecesIn, const ScreenParams& p, const Feedback* fb) {
     LinearityResult res;
@@ -184,36 +230,8 @@ LinearityResult findLinearRegions(const std::vector<Region>& regions, const std:
             for (size_t j = 0; j < count[i]; ++j) hist[binOf(angle[i * k + j])] += weight[i * k + j];
         for (size_t q = 0; q < nb; ++q)
             smooth[q] = 0.25 * hist[(q + nb - 1) % nb] + 0.5 * hist[q] + 0.25 * hist[(q + 1) % nb];
-        size_t peak = 0;
-        for (size_t q = 1; q < nb; ++q)
-            if (smooth[q] > smooth[peak]) peak = q;
-        std::fill(inRange.begin(), inRange.end(), 0);
-        inRange[peak] = 1;
-        const double floorW = p.slopePeakFraction * smooth[peak];
-        size_t left = peak, right = peak, width = 1;
-        // Grow towards the heavier side first, one bin at a time, while the bins hold weight.
-        while (width < maxWidth) {
-            const size_t l = (left + nb - 1) % nb, r = (right + 1) % nb;
-            const bool okL = !inRange[l] && smooth[l] >= floorW, okR = !inRange[r] && smooth[r] >= floorW;
-            if (!okL && !okR) break;
-            if (okL && (!okR || smooth[l] >= smooth[r])) {
-                left = l;
-                inRange[l] = 1;
-            } else {
-                right = r;
-                inRange[r] = 1;
-            }
-            ++width;
-        }
-        // One bin of margin on each side.
-        for (size_t* e : {&left, &right}) {
-            const size_t q = e == &left ? (left + nb - 1) % nb : (right + 1) % nb;
-            if (width < nb && !inRange[q]) {
-                *e = q;
-                inRange[q] = 1;
-                ++width;
-            }
-        }
+        const SlopeRange sr = slopeRangeOf(smooth, maxWidth, p.slopePeakFraction, inRange);
+        const size_t left = sr.left, right = sr.right, width = sr.width;
         if (static_cast<double>(width) > widest) {
             widest = static_cast<double>(width);
             res.loDeg = -90.0 + static_cast<double>(left) * binDeg;
