@@ -177,7 +177,20 @@ private slots:
         // Exit 3: the unusable passes are failed rows.
         QCOMPARE(runMeasured({"slr", p("day.frd"), "--all-passes", "--out-dir", p("day"), "-q"}, &peakKb), 3);
         qInfo("%d passes, %.0f MB: peak resident %.1f MB", kPasses, megabytes, peakKb / 1024.0);
+#if defined(__SANITIZE_ADDRESS__)
+#define LWB_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define LWB_TEST_ASAN 1
+#endif
+#endif
+#ifndef LWB_TEST_ASAN
         QVERIFY2(peakKb < 90 * 1024, qPrintable(QString("peak %1 MB").arg(peakKb / 1024.0)));
+#else
+        // (AddressSanitizer's shadow memory and quarantine of freed blocks are part of the peak
+        // there, 97 MB: the bound is the release build's.)
+        qInfo("built with AddressSanitizer: the memory bound is not checked");
+#endif
         const CsvTable t = summary(p("day/summary.csv"));
         QCOMPARE(t.rows.size(), size_t(kPasses));
         const int cStatus = t.column("status"), cAcc = t.column("accepted"), cReason = t.column("reason");
