@@ -249,6 +249,10 @@ int screenAllPasses(const std::string& cmd, const std::string& input, const slr:
         if (!progress) progress = std::make_unique<Progress>("slr", n, quiet);
         if (written.size() != n) written.assign(n, false);
         const size_t i = crdPass.ordinal - 1;
+        if (i >= names.size()) {  // (the first read counted the passes: it cannot find fewer)
+            early = fail(cmd, input + ": the file changed while it was read (more passes than counted)");
+            return false;
+        }
         if (!crdPass.problem.empty()) {
             if (firstProblem.empty()) firstProblem = crdPass.problem;
             ++unreadable;

@@ -28,11 +28,7 @@ bool LineReader::open(const std::string& path) {
     path_ = path;
     if (isStandardStream(path)) {
         // The standard input cannot be read twice: readFileText keeps it (decompressed when gzip).
-        stdin_ = true;
-        auto* owned = new std::string;
-        std::unique_ptr<std::string> hold(owned);
-        if (!readFileText(path, owned, &error_)) return false;
-        buf_.swap(*owned);
+        if (!readFileText(path, &buf_, &error_)) return false;
         eofRaw_ = eofText_ = true;
         rawSize_ = rawRead_ = static_cast<long long>(buf_.size());
         return true;

@@ -43,9 +43,7 @@ private:
 
     std::string path_, error_;
     std::ifstream file_;
-    std::string_view kept_;  // the standard input (read whole by readFileText's rules)
-    size_t keptPos_ = 0;
-    bool stdin_ = false, gzip_ = false, eofRaw_ = false, eofText_ = false, started_ = false, crOnly_ = false;
+    bool gzip_ = false, eofRaw_ = false, eofText_ = false, started_ = false, crOnly_ = false;
     long long rawSize_ = 0, rawRead_ = 0;
     struct Inflate;
     std::unique_ptr<Inflate> z_;
