@@ -1,7 +1,7 @@
 // laserwb-cli slr: screen one SLR pass (paper 004 binary image, automatic mode by default),
 // post-fit with k-sigma rejection and ILRS normal points; per-point CSV, CRD full rate with
-// filter flags and CRD normal points. The loading and writing is core/slr/pass_input.hpp, the
-// layer the SLR workspace of the GUI uses too.
+// filter flags and CRD normal points. The loading is core/slr/pass_input.hpp, the writing
+// core/slr/pass_output.hpp: the layer the SLR workspace of the GUI uses too.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +19,7 @@
 #include "core/common/text.hpp"
 #include "core/slr/np_context.hpp"
 #include "core/slr/pass_input.hpp"
+#include "core/slr/pass_output.hpp"
 #include "core/slr/pass_run.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/presets.hpp"

@@ -20,6 +20,7 @@
 #include "core/common/csv.hpp"
 #include "core/slr/crd.hpp"
 #include "core/slr/pass_input.hpp"
+#include "core/slr/pass_output.hpp"
 #include "test_support.hpp"
 
 using lwbtest::runCli;

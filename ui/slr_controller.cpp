@@ -10,6 +10,7 @@
 #include <QThreadPool>
 #include <QtConcurrent>
 
+#include "core/slr/pass_output.hpp"
 #include "core/slr/pass_run.hpp"
 
 namespace lwb::ui {
