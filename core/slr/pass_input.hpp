@@ -2,9 +2,9 @@
 // From files to a pass ready for screening, and back: the layer the `slr` command and the SLR
 // workspace share. A CRD full-rate pass gets its O-C from the CPF prediction and the SINEX
 // station coordinates when both are given, else from a robust trend of its own time of flight
-// (a warning says so); a plain O-C table (CSV, header epoch_s,oc_s) is used as it is. After
-// screening the pass is written back as CRD full rate with filter flags, its normal points as a
-// CRD normal-point file, and the per-point result as CSV.
+// (a warning says so); a plain O-C table (CSV, header epoch_s,oc_s) is used as it is. The
+// writers of a screened pass (CRD full rate with filter flags, normal points, the per-point CSV)
+// are in pass_output.hpp.
 #include <memory>
 #include <string>
 #include <vector>
