@@ -238,6 +238,42 @@ private slots:
     // option that is an alias of a schema key ({"--flag", "key"}) states no default of its own:
     // a "default" followed by a value must be a {default:KEY} placeholder. (2) Every command's
     // --help has its placeholders filled with the schema rows' values.
+    // Stages are tags on the rows (issue 28), not key prefixes: what a change reruns.
+    void stagesComeFromTheRows() {
+        using slr::SlrParams;
+        const auto& ss = slr::slrSchema();
+        const SlrParams d;
+        for (const auto& f : ss.fields()) {  // every row has the stage of its part of the run
+            const int want = f.key == "screen.cosine_c"          ? slr::kStageRecovery
+                             : f.key.rfind("postfit.", 0) == 0 ? slr::kStagePostfit
+                                                                : slr::kStageScale;
+            QVERIFY2(f.stage == want, f.key.c_str());
+        }
+        QCOMPARE(ss.firstChangedStage(d, d), -1);
+        SlrParams p = d;
+        p.postfit.degree = 3;
+        QCOMPARE(ss.firstChangedStage(d, p), int(slr::kStagePostfit));
+        p.screen.cosineC = 0.97;
+        QCOMPARE(ss.firstChangedStage(d, p), int(slr::kStageRecovery));
+        p.screen.magT = 2;
+        QCOMPARE(ss.firstChangedStage(d, p), int(slr::kStageScale));
+
+        using footprint::FootprintParams;
+        const auto& fs = footprint::footprintSchema();
+        const FootprintParams f0;
+        FootprintParams f = f0;
+        f.preset = "other";
+        f.verdict.tiltDeg.hi = 20;
+        QCOMPARE(fs.firstChangedStage(f0, f), int(footprint::kStageVerdict));
+        QVERIFY(footprint::onlyVerdictDiffers(f0, f));
+        f.camera.gainEPerDn = 3;  // the camera weights the fit
+        QCOMPARE(fs.firstChangedStage(f0, f), int(footprint::kStageFit));
+        QVERIFY(!footprint::onlyVerdictDiffers(f0, f));
+        for (const auto& row : fs.fields())
+            QVERIFY2((row.stage == footprint::kStageVerdict) == (row.key.rfind("verdict.", 0) == 0 || row.key == "preset"),
+                     row.key.c_str());
+    }
+
     void helpDefaultsComeFromTheSchema() {
         const QDir app(QString(LWB_SOURCE_DIR) + "/app");
         const QRegularExpression alias(R"re(\{"(--[a-z0-9-]+)",\s*"([a-z_.0-9]+)"\})re");

@@ -479,6 +479,70 @@ private slots:
         }
     }
 
+    // ---------------------------------------------------------------- the pass task (issue 28)
+    // PassTask::run with what an earlier run gives (the workbench's live job) computes what it
+    // computes from scratch (the CLI): the reused screening after a post-fit change, the edits.
+    void passTaskReuseGivesTheFreshAnswer() {
+        sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Diffuse);
+        sp.signalFraction = 0.3;
+        const sim::SlrSimPass sim = sim::simulateSlrPass(sp, 21);
+        QVERIFY2(sim.ok, sim.error.c_str());
+        auto pass = std::make_shared<PassData>();
+        pass->t = sim.epochS;
+        pass->oc = sim.ocS;
+        pass->tof = sim.tofS;
+        pass->altitudeKm = 1500;
+        SlrParams params;
+        const PassTask::Inputs in{pass, {}};
+        const PassRunResult full = runTask<PassTask>(in, params);
+        QVERIFY2(full.ok && full.postOk, full.error.c_str());
+        QVERIFY(!full.screenReused && !full.scaleReused);
+        QVERIFY(full.acceptedCount > 100);
+
+        // A post-fit row changed: its stage is after the screening's, which is reused.
+        SlrParams changed = params;
+        changed.postfit.rejectSigma = 2.5;
+        QCOMPARE(slrSchema().firstChangedStage(params, changed), int(kStagePostfit));
+        PassTask::Reuse reuse;
+        reuse.screen = std::make_shared<const ScreenResult>(full.screen);
+        const PassRunResult reused = PassTask::run(in, changed, reuse, nullptr);
+        const PassRunResult fresh = runTask<PassTask>(in, changed);
+        QVERIFY(reused.screenReused);
+        QVERIFY(reused.accepted == fresh.accepted);
+        QVERIFY(reused.post.kept == fresh.post.kept);
+        QVERIFY(reused.post.kept != full.post.kept);  // the change did something
+        QCOMPARE(reused.post.normalPoints.size(), fresh.post.normalPoints.size());
+        for (size_t k = 0; k < fresh.post.normalPoints.size(); ++k)
+            QCOMPARE(reused.post.normalPoints[k].ocS, fresh.post.normalPoints[k].ocS);
+
+        // Edits: a point forced out and a rejected one forced in, over the same screening.
+        size_t in1 = 0, out1 = 0;
+        while (!full.accepted[in1]) ++in1;
+        while (full.accepted[out1]) ++out1;
+        PassTask::Inputs edited = in;
+        edited.forced.assign(pass->t.size(), 0);
+        edited.forced[in1] = -1;
+        edited.forced[out1] = 1;
+        const PassRunResult e = PassTask::run(edited, params, reuse, nullptr);
+        QCOMPARE(int(e.accepted[in1]), 0);
+        QCOMPARE(int(e.accepted[out1]), 1);
+        QCOMPARE(e.acceptedCount, full.acceptedCount);
+
+        // A cosine change alone touches the recovery stage; the scales may be kept (opt-in).
+        SlrParams cos = params;
+        cos.screen.cosineC = 0.97;
+        QCOMPARE(slrSchema().firstChangedStage(params, cos), int(kStageRecovery));
+        PassTask::Reuse scale;
+        scale.scale = scaleChoice(full.screen);
+        const PassRunResult s = PassTask::run(in, cos, scale, nullptr);
+        QVERIFY(s.ok && s.scaleReused && !s.screenReused);
+        QCOMPARE(s.screen.baseMagT, full.screen.baseMagT);  // the first round: the scale kept
+
+        // No pass: an error in the outputs, not a crash.
+        const PassRunResult none = runTask<PassTask>({}, params);
+        QVERIFY(!none.ok && !none.error.empty());
+    }
+
     // ---------------------------------------------------------------- step 6 and the whole
     void inverseMappingCoversEveryPointOnce() {
         sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Diffuse);

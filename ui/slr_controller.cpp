@@ -20,54 +20,31 @@ using namespace core::slr;
 SlrController::SlrController(QObject* parent) : QObject(parent) {
     qRegisterMetaType<lwb::ui::SlrRun>();
     m_presetFile = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/slr-presets.json";
-    m_job.setWork<SlrRun>(
-        [this]() -> std::function<SlrRun(core::Feedback&)> {
-            if (!hasPass()) return {};
+    m_job.bind(
+        [this](TaskJob<PassTask>::Run* r) {
+            if (!hasPass()) return false;
+            auto in = std::make_shared<PassTask::Inputs>();
+            in->pass = m_passData;
+            in->forced = m_forced;
+            r->inputs = std::move(in);
+            r->params = m_params;
+            // The pass's normal-point context, as the CLI gives it (core passNormalPointContext:
+            // the C1 fire rate, the station from the SINEX file), over what the parameters leave
+            // unknown: the same normal points in both (issue 28).
+            passNormalPointContext(m_pass, m_sources && m_sources->haveStations ? &m_sources->stations : nullptr,
+                                   &r->params.postfit);
             // What this run reuses: the last screening (only the post-fit or the edits changed),
             // or, when reuseScaleForCosine is set (off by default), the scale the automatic mode
             // chose while only C moved; else nothing. (A screening at a kept scale is not the one
             // laserwb-cli makes at that C: "one answer everywhere" wins over the 0.15 s of a
             // 10^5-point pass's scale search, docs/benchmarks.md.)
-            std::shared_ptr<const SlrRun> previous = !m_screenDue && m_run->screen.ok ? m_run : nullptr;
-            const bool keepScale = m_screenDue && m_scaleValid && m_params.screen.automatic;
-            const ScaleChoice scale = m_scale;
-            auto t = m_t, oc = m_oc, tof = m_tof;
-            SlrParams params = m_params;
-            // The pass's normal-point context, as the CLI gives it (core passNormalPointContext:
-            // the C1 fire rate, the station from the SINEX file), over what the parameters leave
-            // unknown: the same normal points in both (issue 28).
-            passNormalPointContext(m_pass, m_sources && m_sources->haveStations ? &m_sources->stations : nullptr,
-                                   &params.postfit);
-            const std::vector<int8_t> forced = m_forced;
-            return [=](core::Feedback& fb) {
-                SlrRun run;
-                if (previous) {
-                    run.screen = previous->screen;
-                    run.screenReused = true;
-                    run.scaleReused = previous->scaleReused;
-                } else if (keepScale) {
-                    run.screen = screenSignal(*t, *oc, params.screen, scale, &fb);
-                    run.scaleReused = true;
-                } else {
-                    run.screen = screenSignal(*t, *oc, params.screen, &fb);
-                }
-                if (fb.isCancelled() || !run.screen.ok) return run;
-                run.accepted = acceptedMask(run.screen);
-                for (size_t i = 0; i < run.accepted.size() && i < forced.size(); ++i)
-                    if (forced[i] > 0) run.accepted[i] = 1;
-                    else if (forced[i] < 0) run.accepted[i] = 0;
-                // As the CLI: without a bin length or an altitude (an O-C table) the trend fit
-                // and the rejection still run, without normal points.
-                run.post = postfit(*t, *oc, run.accepted, *tof, postfitForPass(params.postfit, &run.postNote), &fb);
-                // Judged as the CLI judges it (core judgeRun): noise no scale tells from a track,
-                // or two parallel tracks, form no normal points.
-                size_t acceptedCount = 0;
-                for (uint8_t v : run.accepted) acceptedCount += v;
-                run.doubt = judgeRun(run.screen, acceptedCount, run.post.ok ? &run.post : nullptr, &run.postNote);
-                return run;
-            };
+            if (!m_screenDue && m_run->screen.ok) r->reuse.screen = std::shared_ptr<const ScreenResult>(m_run, &m_run->screen);
+            else if (m_screenDue && m_scaleValid && m_params.screen.automatic) r->reuse.scale = m_scale;
+            return true;
         },
-        [this](SlrRun run) {
+        [this](PassRunResult result) {
+            SlrRun run;
+            static_cast<PassRunResult&>(run) = std::move(result);
             run.generation = m_job.generation();
             run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - m_job.changedAt());
             if (!run.screen.ok) {
@@ -92,9 +69,7 @@ SlrController::SlrController(QObject* parent) : QObject(parent) {
 SlrController::~SlrController() { m_job.cancel(); }
 
 void SlrController::passLoaded() {
-    m_t = std::make_shared<const std::vector<double>>(m_pass.t);
-    m_oc = std::make_shared<const std::vector<double>>(m_pass.oc);
-    m_tof = std::make_shared<const std::vector<double>>(m_pass.tof);
+    m_passData = std::make_shared<const PassData>(m_pass);
     m_screenDue = true;
     m_scaleValid = false;
     m_screenings = 0;
@@ -274,18 +249,13 @@ void SlrController::setSimulatedPass(const std::vector<double>& t, const std::ve
 }
 
 void SlrController::setParams(const SlrParams& p) {
-    const std::vector<std::string> keys = slrSchema().changedKeys(m_params, p);
+    // The earliest stage the change touches, from the schema rows' stage tags.
+    const int stage = slrSchema().firstChangedStage(m_params, p);
     m_params = p;
-    if (keys.empty()) return;
-    bool screen = false, onlyCosine = true;
-    for (const std::string& k : keys)
-        if (k.rfind("screen.", 0) == 0) {
-            screen = true;
-            onlyCosine = onlyCosine && k == "screen.cosine_c";
-        }
-    if (screen) {
+    if (stage < 0) return;
+    if (stage <= kStageRecovery) {
         m_screenDue = true;
-        if (!onlyCosine || !m_reuseScaleForCosine) m_scaleValid = false;
+        if (stage == kStageScale || !m_reuseScaleForCosine) m_scaleValid = false;
     }
     m_job.schedule();
 }

@@ -1,10 +1,11 @@
 #pragma once
 // The SLR workspace's controller: the pass, the screening and post-fit parameters, manual
 // edits (forced in / out, undoable, kept across reruns), per-satellite presets, and the
-// background rerun on every change (a LiveJob: debounce, cancel, generation tag). A run reruns
-// only the stages a change affects: the post-fit alone after a post-fit setting or a manual
-// edit; the screening at the scale the automatic mode chose (core::slr::ScaleChoice, passed
-// in) after a change of C alone; everything after any other change.
+// background rerun on every change (TaskJob<core::slr::PassTask>: the CLI's task, debounced,
+// cancelled, generation-tagged). A run reruns only the stages a change affects (the schema rows'
+// stage tags): the post-fit alone after a post-fit setting or a manual edit; the screening at
+// the scale the automatic mode chose (core::slr::ScaleChoice, passed in) after a change of C
+// alone when reuseScaleForCosine is on; everything after any other change.
 #include <QHash>
 #include <QObject>
 #include <QSet>
@@ -14,24 +15,18 @@
 
 #include "core/common/feedback.hpp"
 #include "core/slr/pass_input.hpp"
+#include "core/slr/pass_run.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/presets.hpp"
 #include "core/slr/screen.hpp"
 #include "core/slr/slr_params.hpp"
-#include "ui/live_job.hpp"
+#include "ui/task_job.hpp"
 
 namespace lwb::ui {
 
-/// One screening run and what follows from it.
-struct SlrRun {
+/// One run of the pass task (accepted: after manual edits) and when it was delivered.
+struct SlrRun : core::slr::PassRunResult {
     quint64 generation = 0;
-    core::slr::ScreenResult screen;
-    std::vector<uint8_t> accepted;       ///< after manual edits
-    core::slr::PostfitResult post;
-    std::string postNote;                ///< why the post-fit formed no normal points ("" when it could)
-    std::string doubt;                   ///< why the result cannot be trusted (core judgeRun; "" when it can)
-    bool scaleReused = false;            ///< screened at the scale an earlier run chose (C changed alone)
-    bool screenReused = false;           ///< the screening of the previous run, only the post-fit ran
     double latencyMs = 0;                ///< parameter change → result delivered
 };
 
@@ -148,9 +143,9 @@ private:
     std::vector<int8_t> m_forced;
     QString m_presetFile;
     std::shared_ptr<const SlrRun> m_run = std::make_shared<const SlrRun>();
-    LiveJob m_job;
+    TaskJob<core::slr::PassTask> m_job;
     // The pass for the workers, shared read-only.
-    std::shared_ptr<const std::vector<double>> m_t, m_oc, m_tof;
+    std::shared_ptr<const core::slr::PassData> m_passData;
     // Stages: the screening is due again (a screening parameter or the pass changed); the
     // scale the automatic mode chose may be passed in (only C changed since it was chosen).
     bool m_screenDue = true;

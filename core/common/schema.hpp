@@ -64,6 +64,9 @@ struct FieldInfo {
     std::string doc;       ///< one line
     std::vector<SpecialValue> specials;
     std::vector<std::string> choices;  ///< Choice: the names, stored as the enum's index
+    /// The first stage of its task that reads this field (the task's own enum; 0 = the first):
+    /// a change reruns from the earliest stage it touches and reuses what comes before.
+    int stage = 0;
     std::string label() const;         ///< key's last part with spaces: "threshold factor"
     std::string rangeText() const;     ///< "[0.5, 1) (0 = automatic)"
     /// A value of this field is acceptable (finite and in range, or a special).
@@ -298,22 +301,23 @@ public:
     /// order: what a change touched, for running again only the stages it affects.
     std::vector<std::string> changedKeys(const P& a, const P& b) const {
         std::vector<std::string> keys;
-        auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
-        for (const auto& f : m_fields) {
-            bool eq = true;
-            switch (f.kind) {
-                case FieldKind::Text: eq = f.getText(a) == f.getText(b); break;
-                case FieldKind::Range: {
-                    const RangeValue x = f.getRange(a), y = f.getRange(b);
-                    eq = x.enabled == y.enabled && same(x.lo, y.lo) && same(x.hi, y.hi);
-                    break;
-                }
-                default: eq = same(f.get(a), f.get(b));
-            }
-            if (!eq) keys.push_back(f.key);
-        }
+        for (const auto& f : m_fields)
+            if (differs(f, a, b)) keys.push_back(f.key);
         return keys;
     }
+
+    /// The earliest stage (FieldInfo::stage, from the rows' tags) whose fields differ between a
+    /// and b; -1 when none differs. A task reruns from there and reuses the stages before it.
+    int firstChangedStage(const P& a, const P& b) const {
+        int first = -1;
+        for (const auto& f : m_fields)
+            if ((first < 0 || f.stage < first) && differs(f, a, b)) first = f.stage;
+        return first;
+    }
+
+    /// Rows declared from now on belong to `stage` (until the next call): the tag of
+    /// FieldInfo::stage, set once where the rows are declared.
+    void beginStage(int stage) { m_stage = stage; }
 
     /// `text` with every "{default:KEY}" replaced by KEY's value in `defaults` (valueText): help
     /// text that names a default takes it from the schema row, never restates it. An unknown key
@@ -345,9 +349,22 @@ public:
     }
 
 private:
+    static bool differs(const Field& f, const P& a, const P& b) {
+        auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+        switch (f.kind) {
+            case FieldKind::Text: return f.getText(a) != f.getText(b);
+            case FieldKind::Range: {
+                const RangeValue x = f.getRange(a), y = f.getRange(b);
+                return !(x.enabled == y.enabled && same(x.lo, y.lo) && same(x.hi, y.hi));
+            }
+            default: return !same(f.get(a), f.get(b));
+        }
+    }
+
     Field& add(std::string key, FieldKind kind, std::string unit, Interval valid, std::pair<double, double> ui, std::string doc) {
         Field f;
         f.key = std::move(key);
+        f.stage = m_stage;
         f.kind = kind;
         f.unit = std::move(unit);
         f.valid = valid;
@@ -515,6 +532,7 @@ private:
     }
 
     std::string m_name;
+    int m_stage = 0;
     std::vector<Field> m_fields;
     struct Rule {
         std::string section;

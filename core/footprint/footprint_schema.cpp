@@ -33,7 +33,8 @@ void addMethodAndRoi(Schema<FootprintParams>& s) {
     using F = FootprintParams;
     s.choice("method", LWB_FIELD(F, method), {"gcm", "tefm", "gauss"},
              "centre method: gray centroid, TEFM (paper 001) or the Gaussian fit (paper 000 + Guo + LM)");
-    s.text("preset", LWB_FIELD(F, preset), "name of the verdict criteria the verdict values came from (wu2021, yao2021)");
+    s.text("preset", LWB_FIELD(F, preset), "name of the verdict criteria the verdict values came from (wu2021, yao2021)")
+        .stage = kStageVerdict;  // a name only: changing it alone refits nothing
     s.integer("roi.size", LWB_FIELD(F, roi.size), "px", {4, 1024}, {16, 64}, "ROI side N cut around the spot");
     s.real("roi.blob_sigma", LWB_FIELD(F, roi.blobSigma), "px", {0.3, 50, true, true}, {1, 6},
            "spot scale of the blob search's matched filter (frames without --center)");
@@ -137,6 +138,7 @@ void addGauss(Schema<FootprintParams>& s) {
 // The verdict criteria and the camera.
 void addVerdictAndCamera(Schema<FootprintParams>& s) {
     using F = FootprintParams;
+    s.beginStage(kStageVerdict);
     s.range("verdict.axis_ratio", LWB_FIELD(F, verdict.axisRatio.enabled), LWB_FIELD(F, verdict.axisRatio.lo),
             LWB_FIELD(F, verdict.axisRatio.hi), "", {0, 1000}, {1, 3},
             "good spots have C = sigma_x / sigma_y in this range (paper 000: (1, 1.5)); null = not checked");
@@ -164,6 +166,7 @@ void addVerdictAndCamera(Schema<FootprintParams>& s) {
     s.boolean("verdict.check_second_spot", LWB_FIELD(F, verdict.checkSecondSpot), "a second separate peak makes a shot doubtful");
     s.real("verdict.second_spot_fraction", LWB_FIELD(F, verdict.secondSpotFraction), "", {0, 10, true, false}, {0.1, 1},
            "a separate peak this strong (of the main amplitude): doubtful");
+    s.beginStage(kStageFit);  // the camera weights the fit
     s.real("camera.gain_e_per_dn", LWB_FIELD(F, camera.gainEPerDn), "e-/DN", {0, 1e4, true, true}, {0.5, 10},
            "camera gain, for photon noise weights and the Cramer-Rao bound");
     s.real("camera.read_noise_e", LWB_FIELD(F, camera.readNoiseE), "e-", {0, 1e5, false, true}, {0, 100}, "read noise (rms)");

@@ -89,9 +89,7 @@ void judgeResult(FootprintResult* r, int roiWidth, int roiHeight, const VerdictP
 }
 
 bool onlyVerdictDiffers(const FootprintParams& a, const FootprintParams& b) {
-    for (const std::string& key : footprintSchema().changedKeys(a, b))
-        if (key.rfind("verdict.", 0) != 0 && key != "preset") return false;
-    return true;
+    return footprintSchema().firstChangedStage(a, b) != kStageFit;
 }
 
 std::vector<FrameRoiResult> processFrame(const cv::Mat& image, const FootprintParams& params,

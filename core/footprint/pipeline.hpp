@@ -34,10 +34,15 @@ struct FootprintParams {
     CameraParams camera;
 };
 
-/// Empty when every parameter is valid, else what is wrong.
 /// The parameter table (core/common/schema.hpp): every field's key, unit, range, UI range and
 /// doc, declared once. JSON configs, sessions, the CLI's --set and the GUI panel use it.
 const Schema<FootprintParams>& footprintSchema();
+
+/// The stages of a shot's run that the schema rows are tagged with (FieldInfo::stage): the fit
+/// (ROI, background, segmentation, centre method, camera) and the verdict on the fit.
+enum FootprintStage : int { kStageFit = 0, kStageVerdict = 1 };
+
+/// Empty when every parameter is valid, else what is wrong.
 std::string validate(const FootprintParams& p);
 /// Loads the named verdict preset into p (and records the name). False when unknown.
 bool applyPreset(const std::string& name, FootprintParams* p);
@@ -73,7 +78,7 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params);
 void judgeResult(FootprintResult* r, int roiWidth, int roiHeight, const VerdictParams& verdict);
 /// True when results under `a` hold under `b` but for the verdict: only verdict criteria (and
 /// the informational preset name) differ, so judgeResult() replaces processRoi(). The stages
-/// are told apart by the schema's keys ("verdict." is the verdict stage).
+/// come from the schema rows' tags (FootprintStage).
 bool onlyVerdictDiffers(const FootprintParams& a, const FootprintParams& b);
 
 struct FrameRoiResult {

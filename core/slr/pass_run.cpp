@@ -148,30 +148,60 @@ std::vector<std::string> passNormalPointContext(const PassData& pass, const Sine
     return notes;
 }
 
-PassRunResult runPass(const PassData& pass, SlrParams params, Feedback* fb) {
+namespace {
+// The screening of a run: the earlier one, or at the scales it chose, or a fresh search.
+ScreenResult screenStage(const PassData& pass, const ScreenParams& params, const PassTask::Reuse& reuse, PassRunResult* r,
+                         Feedback* fb) {
+    if (reuse.screen) {
+        r->screenReused = true;
+        return *reuse.screen;
+    }
+    if (reuse.scale) {
+        r->scaleReused = true;
+        return screenSignal(pass.t, pass.oc, params, *reuse.scale, fb);
+    }
+    return screenSignal(pass.t, pass.oc, params, fb);
+}
+}  // namespace
+
+PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reuse& reuse, Feedback* fb) {
     PassRunResult r;
+    if (!in.pass) {
+        r.error = "no pass";
+        return r;
+    }
+    const PassData& pass = *in.pass;
     const auto t0 = std::chrono::steady_clock::now();
-    params.postfit = postfitForPass(params.postfit, &r.postNote);
-    const PostfitParams& pp = params.postfit;
-    r.screen = screenSignal(pass.t, pass.oc, params.screen, fb);
+    const PostfitParams pp = postfitForPass(params.postfit, &r.postNote);
+    r.screen = screenStage(pass, params.screen, reuse, &r, fb);
+    if (cancelled(fb)) return r;
     if (!r.screen.ok) {
         r.error = "screening failed: " + r.screen.error;
         return r;
     }
     r.accepted = acceptedMask(r.screen);
+    for (size_t i = 0; i < r.accepted.size() && i < in.forced.size(); ++i)
+        if (in.forced[i] != 0) r.accepted[i] = in.forced[i] > 0 ? 1 : 0;
     for (uint8_t v : r.accepted) r.acceptedCount += v;
     if (r.acceptedCount >= 2) {
-        r.post = postfit(pass.t, pass.oc, r.accepted, pass.tof, pp);
+        r.post = postfit(pass.t, pass.oc, r.accepted, pass.tof, pp, fb);
+        if (cancelled(fb)) return r;
         r.postOk = r.post.ok;
         if (!r.post.ok) r.postNote = "post-fit not done: " + r.post.error;
-        r.doubt = judgeRun(r.screen, r.acceptedCount, r.postOk ? &r.post : nullptr, &r.postNote);
     } else {
-        r.postNote = "post-fit not done: " + std::to_string(r.acceptedCount) + " point(s) accepted";
+        r.post.error = std::to_string(r.acceptedCount) + " point(s) accepted";
+        r.postNote = "post-fit not done: " + r.post.error;
     }
+    r.doubt = judgeRun(r.screen, r.acceptedCount, r.postOk ? &r.post : nullptr, &r.postNote);
     r.agreement = stationAgreement(pass, r.accepted, r.postOk ? &r.post : nullptr);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.ok = true;
     return r;
+}
+
+PassRunResult runPass(const PassData& pass, const SlrParams& params, Feedback* fb) {
+    // The pass is borrowed for the call (an aliasing pointer that owns nothing).
+    return runTask<PassTask>({std::shared_ptr<const PassData>(std::shared_ptr<const void>(), &pass), {}}, params, fb);
 }
 
 }  // namespace lwb::core::slr

@@ -3,10 +3,13 @@
 // context), the screening (paper 004), the post-fit with normal points, and the agreement with
 // the station's own filter flags — shared by `laserwb-cli slr` (one pass or --all-passes) and
 // the workbench's SLR workspace.
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/common/feedback.hpp"
+#include "core/common/task.hpp"
 #include "core/slr/pass_input.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/presets.hpp"
@@ -53,6 +56,8 @@ struct PassRunResult {
     PostfitResult post;
     StationAgreement agreement;
     double seconds = 0;                ///< wall time of screening + post-fit
+    bool screenReused = false;         ///< the earlier run's screening was reused (only post-fit or edits changed)
+    bool scaleReused = false;          ///< screened at the scales an earlier run chose (only C changed)
 };
 
 /// Two parallel tracks in a track's residuals: "" or what was found. The sorted residuals are
@@ -77,9 +82,34 @@ std::vector<std::string> passNormalPointContext(const PassData& pass, const Sine
 /// rejection run without normal points, and *note (when given) says why.
 PostfitParams postfitForPass(PostfitParams pp, std::string* note);
 
-/// Screens the pass and, with at least two accepted points, fits the trend and forms the normal
-/// points. Normal points are switched off (with a note) when neither a bin length nor the
-/// satellite's altitude is known.
-PassRunResult runPass(const PassData& pass, SlrParams params, Feedback* fb = nullptr);
+/// The SLR pass task (core/common/task.hpp), run by `laserwb-cli slr` (one pass and
+/// --all-passes) and by the workbench's SLR workspace (TaskJob<PassTask>): screens the pass,
+/// applies the analyst's edits, and with at least two accepted points fits the trend and forms
+/// the normal points, judged by judgeRun. Normal points are switched off (with a note) when
+/// neither a bin length nor the satellite's altitude is known. The parameters come from
+/// passSettings (preset, normal-point context) before the user's own.
+struct PassTask {
+    static constexpr const char* kName = "slr pass";
+    using Params = SlrParams;
+    static const Schema<SlrParams>& schema() { return slrSchema(); }
+    struct Inputs {
+        std::shared_ptr<const PassData> pass;
+        /// Manual edits per point (+1 accepted, -1 rejected, 0 as screened); empty = none.
+        std::vector<int8_t> forced;
+    };
+    /// What an earlier run of the same pass gives: its screening, when only kStagePostfit rows
+    /// or the edits changed; or the scales its automatic mode chose, when only kStageRecovery
+    /// rows changed (the workbench's opt-in: a screening at a kept scale is not the one the CLI
+    /// makes at that C).
+    struct Reuse {
+        std::shared_ptr<const ScreenResult> screen;
+        std::optional<ScaleChoice> scale;
+    };
+    using Outputs = PassRunResult;
+    static PassRunResult run(const Inputs& in, const SlrParams& params, const Reuse& reuse, Feedback* fb);
+};
+
+/// PassTask from scratch on `pass` (no edits, nothing reused).
+PassRunResult runPass(const PassData& pass, const SlrParams& params, Feedback* fb = nullptr);
 
 }  // namespace lwb::core::slr

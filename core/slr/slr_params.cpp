@@ -26,6 +26,7 @@ const Schema<SlrParams>& slrSchema() {
         auto& c = s.real("screen.cosine_c", LWB_FIELD(S, screen.cosineC), "", {0.5, 1, false, true}, {0.9, 0.999},
                          "cosine constant C of the recovery step (paper 004 eq. 3: 0.9 < C < 1; smaller lets noise in)");
         c.decimals = 4;
+        c.stage = kStageRecovery;
         s.integer("screen.slope_neighbours", LWB_FIELD(S, screen.slopeNeighbours), "", {2, 64}, {4, 16},
                   "step 4: slopes from each candidate piece to its k nearest pieces");
         s.real("screen.slope_bin_deg", LWB_FIELD(S, screen.slopeBinDeg), "deg", {0.25, 30}, {0.5, 5},
@@ -57,6 +58,7 @@ const Schema<SlrParams>& slrSchema() {
         s.boolean("screen.accept_floorless", LWB_FIELD(S, screen.acceptFloorless),
                   "a pass with no noise floor (filtered; robust sigma <= 1 ns, <= 2 % beyond 5 sigma) "
                   "keeps every point within 5 sigma of its track");
+        s.beginStage(kStagePostfit);
         s.integer("postfit.degree", LWB_FIELD(S, postfit.degree), "", {0, 30}, {2, 15},
                   "trend polynomial degree (Legendre, per segment); the largest tried when auto_degree");
         s.boolean("postfit.auto_degree", LWB_FIELD(S, postfit.autoDegree),
