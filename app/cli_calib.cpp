@@ -188,7 +188,7 @@ int cmdCalibDetector(int argc, char** argv) {
     CalibInputData in;
     const DetectorArray& arr = in.array;
     if (!readDetectorCsv(a.positional()[0], &in.array, &err)) return fail(cmd, err);
-    const CalibRunResult run = runCalibration(in, cp);
+    const CalibRunResult run = core::runTask<CalibTask>(in, cp);
     const DetectorFitResult& r = run.detector;
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
     warn(cmd, r.warnings);
@@ -247,7 +247,7 @@ int cmdCalibWaveform(int argc, char** argv) {
     in.givenHeightM = height;
     if (!a.has("--height") && !readWaveformCsv(a.positional()[0], wp.sampleIntervalNs, &in.waveform, &err)) return fail(cmd, err);
     if (a.has("--features") && !readFeatureCsv(a.value("--features"), &in.features, &err)) return fail(cmd, err);
-    const CalibRunResult run = runCalibration(in, cp);
+    const CalibRunResult run = core::runTask<CalibTask>(in, cp);
     const Waveform& w = in.waveform;
     const WaveformResult& wr = run.waveform;
     if (run.hasWaveform) {
@@ -322,7 +322,7 @@ int cmdCalibPointing(int argc, char** argv) {
     if (!readBeamsJson(a.value("--beams"), &in.beams, &err)) return fail(cmd, err);
     if (!readControlPointCsv(a.positional()[0], &in.points, &err)) return fail(cmd, err);
     if (in.points.empty()) return fail(cmd, a.positional()[0] + ": no control points");
-    const CalibRunResult run = runCalibration(in, cp);
+    const CalibRunResult run = core::runTask<CalibTask>(in, cp);
     const PointingCalibResult& r = run.pointing;
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
     warn(cmd, r.warnings);
@@ -369,12 +369,12 @@ int cmdCalibStats(int argc, char** argv) {
     std::vector<DifferenceGroup> groups;
     std::string err;
     if (!readDifferencesCsv(a.positional()[0], a.value("--group"), &groups, &err)) return fail(cmd, err);
-    // The statistics task the workbench runs (runCalibration on the differences alone).
+    // The task the workbench runs (CalibTask), on the differences alone.
     CalibInputData in;
     in.differences = std::move(groups);
     in.differencesName = a.positional()[0];
     in.groupColumn = a.value("--group");
-    const CalibRunResult run = runCalibration(in, cp);
+    const CalibRunResult run = core::runTask<CalibTask>(in, cp);
     for (const StatsGroup& g : run.stats) {
         if (!g.stats.ok) return fail(cmd, a.positional()[0] + ": " + g.stats.error);
         const auto& t = g.stats.stats;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "core/footprint/batch.hpp"
 #include "core/footprint/crlb.hpp"
 #include "core/footprint/gauss_kernel.hpp"
 #include "core/footprint/pipeline.hpp"
@@ -40,6 +41,38 @@ FootprintParams paperExact() {
 class TestFootprintMethods : public QObject {
     Q_OBJECT
 private slots:
+    // The shots task (issue 28): the workbench's list and the CLI's per-ROI stage. Reused fits
+    // judged under a new verdict give what fitting again gives; an unreadable shot stays empty.
+    void shotsTaskReusesFitsForAVerdictChange() {
+        ShotsTask::Inputs in;
+        for (int i = 0; i < 24; ++i) {
+            sim::FootprintSimParams sp;
+            sp.scene = sim::Scene::Flat;
+            cv::Mat f;
+            sim::simulateFootprint(sp, sim::Rng::mix(5, i)).image.convertTo(f, CV_32F);
+            in.rois.push_back(f);
+        }
+        in.rois.push_back(cv::Mat());
+        const FootprintParams p0;
+        const auto fits = std::make_shared<const std::vector<FootprintResult>>(runTask<ShotsTask>(in, p0));
+        QCOMPARE(fits->size(), in.rois.size());
+        QVERIFY(!fits->back().ok);
+        FootprintParams p1 = p0;
+        p1.verdict.axisRatio = {true, 1.0, 1.05};  // stricter: some good shots turn doubtful
+        QCOMPARE(footprintSchema().firstChangedStage(p0, p1), int(kStageVerdict));
+        ShotsTask::Reuse reuse{fits};
+        const auto judged = ShotsTask::run(in, p1, reuse, nullptr);
+        const auto fresh = runTask<ShotsTask>(in, p1);
+        int changed = 0;
+        for (size_t i = 0; i + 1 < in.rois.size(); ++i) {
+            QCOMPARE(judged[i].verdict, fresh[i].verdict);
+            QVERIFY(judged[i].reasons == fresh[i].reasons);
+            QCOMPARE(judged[i].fit.x, fresh[i].fit.x);
+            changed += judged[i].verdict != (*fits)[i].verdict;
+        }
+        QVERIFY(changed > 0);
+    }
+
     void paperSystemIsExactOnANoiseFreeAxisAlignedSpot() {
         // Wu's f·ln f system is exact for an untilted Gaussian: the centre and σ come back to
         // rounding, and the paper's MSE (eq. 8) is ~0.

@@ -165,11 +165,10 @@ bool loadChanged(const CalibInputs& in, const CalibData* have, CalibData* d, QSt
     return true;
 }
 
-// One run of the core run layer, with the strings the views show.
-CalibRun compute(std::shared_ptr<const CalibData> data, const CalibParams& p) {
-    core::calib::CalibRunResult r = core::calib::runCalibration(*data, p);
+// The task's outputs with the strings the views show, and what they were computed from.
+CalibRun viewRun(core::calib::CalibRunResult r, std::shared_ptr<const CalibData> data, const CalibParams& p) {
     CalibRun run;
-    run.data = data;
+    run.data = std::move(data);
     run.params = p;
     run.hasDetector = r.hasDetector;
     run.detector = std::move(r.detector);
@@ -212,13 +211,14 @@ bool calibParamsFromJson(const QJsonObject& o, CalibParams* out, QString* error,
 
 CalibController::CalibController(QObject* parent) : QObject(parent), m_data(std::make_shared<CalibData>()) {
     qRegisterMetaType<lwb::ui::CalibRun>();
-    m_job.setWork<CalibRun>(
-        [this]() -> std::function<CalibRun(core::Feedback&)> {
-            const std::shared_ptr<const CalibData> data = m_data;
-            const CalibParams params = m_params;
-            return [data, params](core::Feedback&) { return compute(data, params); };
+    m_job.bind(
+        [this](TaskJob<CalibTask>::Run* r) {
+            r->inputs = m_runData = m_data;  // the latest snapshot is the only run delivered
+            r->params = m_runParams = m_params;
+            return true;
         },
-        [this](CalibRun run) {
+        [this](core::calib::CalibRunResult r) {
+            CalibRun run = viewRun(std::move(r), m_runData, m_runParams);
             run.generation = m_job.generation();
             run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - m_job.changedAt());
             m_run = std::move(run);

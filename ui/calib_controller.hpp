@@ -22,7 +22,7 @@
 #include "core/calib/validation_stats.hpp"
 #include "core/calib/waveform.hpp"
 
-#include "ui/live_job.hpp"
+#include "ui/task_job.hpp"
 
 namespace lwb::ui {
 
@@ -65,7 +65,7 @@ struct StatsColumn {
     core::calib::ElevationStatsResult stats;
 };
 
-/// One run of the whole chain (core::calib::runCalibration) and what it ran on.
+/// One run of the whole chain (core::calib::CalibTask) and what it ran on.
 struct CalibRun {
     quint64 generation = 0;
     std::shared_ptr<const CalibData> data;    ///< the inputs this run used
@@ -140,7 +140,9 @@ private:
     std::shared_ptr<const CalibData> m_data;
     CalibParams m_params;
     CalibRun m_run;
-    LiveJob m_job;  // the live rerun (debounce, cancel, generation tag)
+    TaskJob<core::calib::CalibTask> m_job;  // the live rerun of the CLI's task (debounce, cancel, generation tag)
+    std::shared_ptr<const CalibData> m_runData;  // what the run last started was given
+    CalibParams m_runParams;
 };
 
 }  // namespace lwb::ui

@@ -153,22 +153,6 @@ struct LoadState : IndexedJob {
     size_t appended = 0;
 };
 
-namespace {
-// Runs fn(i) for i in [0, n) on every core, stopping early when fb is cancelled.
-void parallelFor(size_t n, core::Feedback& fb, const std::function<void(size_t)>& fn) {
-    std::atomic<size_t> next{0}, done{0};
-    auto worker = [&](size_t) {
-        for (size_t i = next++; i < n && !fb.isCancelled(); i = next++) {
-            fn(i);
-            const size_t d = ++done;
-            if (d % 64 == 0) fb.setProgress(double(d) / double(n));
-        }
-    };
-    const int threads = std::max(1, std::min<int>(QThread::idealThreadCount(), int(n)));
-    core::runOnThreads(static_cast<size_t>(threads), worker);
-}
-}  // namespace
-
 FootprintController::FootprintController(QObject* parent) : QObject(parent) {
     qRegisterMetaType<lwb::ui::ShotDetail>();
     // The current shot: each method's fit, for the overlays.
@@ -217,29 +201,23 @@ FootprintController::FootprintController(QObject* parent) : QObject(parent) {
             emit currentDetailReady(d);
         });
     // The whole list, refitted in the background after the current shot.
-    m_listJob.setWork<std::shared_ptr<std::vector<FootprintResult>>>(
-        [this]() -> std::function<std::shared_ptr<std::vector<FootprintResult>>(core::Feedback&)> {
-            if (m_loading || m_shots.empty()) return {};  // the loader refits when it is done
-            std::vector<cv::Mat> rois;
-            rois.reserve(m_shots.size());
-            for (const Shot& s : m_shots) rois.push_back(s.roi);
-            const FootprintParams params = m_params;
-            auto fits = m_fits;
-            return [rois, params, fits](core::Feedback& fb) {
-                auto out = std::make_shared<std::vector<FootprintResult>>(rois.size());
-                parallelFor(rois.size(), fb, [&](size_t i) {
-                    if (rois[i].empty()) return;
-                    (*out)[i] = processRoi(rois[i], params);
-                    ++*fits;
-                });
-                return out;
-            };
+    m_listJob.bind(
+        [this](TaskJob<ShotsTask>::Run* r) {
+            if (m_loading || m_shots.empty()) return false;  // the loader refits when it is done
+            auto in = std::make_shared<ShotsTask::Inputs>();
+            in->rois.reserve(m_shots.size());
+            for (const Shot& s : m_shots) in->rois.push_back(s.roi);
+            r->inputs = std::move(in);
+            r->params = m_params;
+            return true;
         },
-        [this](std::shared_ptr<std::vector<FootprintResult>> results) {
-            if (results->size() != m_shots.size()) return;  // the list changed meanwhile
+        [this](std::vector<FootprintResult> results) {
+            if (results.size() != m_shots.size()) return;  // the list changed meanwhile
             for (size_t i = 0; i < m_shots.size(); ++i) {
                 if (m_shots[i].roi.empty()) continue;
-                FootprintResult& r = (*results)[i];
+                ++*m_fits;
+                FootprintResult& r = results[i];
+                // Judged with the criteria of now (they may have moved while the fit ran).
                 judgeResult(&r, m_shots[i].roi.cols, m_shots[i].roi.rows, m_params.verdict);
                 applyResult(m_shots[i], r);
             }

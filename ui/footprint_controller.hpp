@@ -15,9 +15,10 @@
 #include <vector>
 
 #include "core/common/feedback.hpp"
+#include "core/footprint/batch.hpp"
 #include "core/footprint/pipeline.hpp"
 #include "core/footprint/trend.hpp"
-#include "ui/live_job.hpp"
+#include "ui/task_job.hpp"
 
 namespace lwb::ui {
 
@@ -147,7 +148,8 @@ private:
     core::footprint::FootprintParams m_params;
     int m_current = -1;
     ShotDetail m_detail;             // the current shot's last result (re-judged in place)
-    LiveJob m_currentJob, m_listJob;
+    LiveJob m_currentJob;                             // the shot in view, every method (ShotDetail)
+    TaskJob<core::footprint::ShotsTask> m_listJob;    // the whole list: the core task, as the CLI's per-ROI stage
     quint64 m_fitGeneration = 0;     // bumps on every change that needs a refit
     quint64 m_listGeneration = 0;    // bumps when the list is replaced
     std::shared_ptr<core::Feedback> m_loadFeedback;

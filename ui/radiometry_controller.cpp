@@ -65,10 +65,8 @@ RadiometryRunResult runResultOf(const RadiometryRun& run) {
     return r;
 }
 
-// One run of the core run layer (measure -> fit -> apply -> check), with the strings the views show.
-RadiometryRun compute(std::shared_ptr<const RadiometryImage> img, const std::vector<PickedRegion>& regions,
-                      const RadiometryParams& p) {
-    RadiometryRunResult r = runRadiometry(img ? img->dn : cv::Mat(), corePicks(regions), p);
+// The task's outputs with the strings the views show, for the regions they were computed from.
+RadiometryRun viewRun(RadiometryRunResult r, const std::vector<PickedRegion>& regions) {
     RadiometryRun run;
     run.regions = regions;
     run.measured = std::move(r.measured);
@@ -114,15 +112,19 @@ bool radiometryParamsFromJson(const QJsonObject& o, RadiometryParams* out, QStri
 RadiometryController::RadiometryController(QObject* parent)
     : QObject(parent), m_image(std::make_shared<RadiometryImage>()) {
     qRegisterMetaType<lwb::ui::RadiometryRun>();
-    m_job.setWork<RadiometryRun>(
-        [this]() -> std::function<RadiometryRun(core::Feedback&)> {
-            if (m_mosaicRunning) return {};  // the new image schedules a run when it arrives
-            const std::shared_ptr<const RadiometryImage> img = m_image;
-            const std::vector<PickedRegion> regions = m_regions;
-            const RadiometryParams params = m_params;
-            return [img, regions, params](core::Feedback&) { return compute(img, regions, params); };
+    m_job.bind(
+        [this](TaskJob<RadiometryTask>::Run* r) {
+            if (m_mosaicRunning) return false;  // the new image schedules a run when it arrives
+            auto in = std::make_shared<RadiometryTask::Inputs>();
+            if (m_image) in->dn = m_image->dn;  // shared, never written after (RadiometryImage)
+            in->regions = corePicks(m_regions);
+            r->inputs = std::move(in);
+            r->params = m_params;
+            m_runRegions = m_regions;  // the latest snapshot is the only run delivered
+            return true;
         },
-        [this](RadiometryRun run) {
+        [this](RadiometryRunResult r) {
+            RadiometryRun run = viewRun(std::move(r), m_runRegions);
             run.generation = m_job.generation();
             run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - m_job.changedAt());
             m_run = std::move(run);

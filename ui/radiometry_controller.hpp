@@ -21,7 +21,7 @@
 #include "core/radiometry/radiometry_run.hpp"
 #include "core/radiometry/reflectance.hpp"
 
-#include "ui/live_job.hpp"
+#include "ui/task_job.hpp"
 
 namespace lwb::ui {
 
@@ -150,7 +150,8 @@ private:
     std::vector<PickedRegion> m_regions;
     RadiometryParams m_params;
     RadiometryRun m_run;
-    LiveJob m_job;  // the live rerun (debounce, cancel, generation tag)
+    TaskJob<core::radiometry::RadiometryTask> m_job;  // the live rerun of the core task (debounce, cancel, generation tag)
+    std::vector<PickedRegion> m_runRegions;            // the regions of the run last started
     quint64 m_imageGeneration = 0;
     std::shared_ptr<core::Feedback> m_mosaicFeedback;
     bool m_mosaicRunning = false;

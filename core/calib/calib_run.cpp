@@ -21,7 +21,7 @@ void addGroup(CalibRunResult& run, const std::string& name, const std::string& g
     run.stats.push_back(std::move(g));
 }
 
-// The validation statistics (see runCalibration).
+// The validation statistics (see CalibTask).
 void computeStats(const CalibInputData& d, CalibRunResult& run) {
     if (!d.differences.empty()) {
         run.statsSource = "Elevation differences from " + fileName(d.differencesName);
@@ -61,7 +61,7 @@ void computeStats(const CalibInputData& d, CalibRunResult& run) {
 
 }  // namespace
 
-CalibRunResult runCalibration(const CalibInputData& d, const CalibParams& p) {
+CalibRunResult CalibTask::run(const CalibInputData& d, const CalibParams& p, const NoReuse&, Feedback*) {
     CalibRunResult run;
     if (!d.array.detectors.empty()) {
         run.hasDetector = true;

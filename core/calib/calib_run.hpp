@@ -2,7 +2,7 @@
 // The calibration run layer (paper 002), like SLR's pass_input / pass_run: the loaded inputs and
 // the parameters -> one run of every step that has its inputs (detector fit, pointing
 // calibration, validation statistics, waveform decomposition and feature match). The workbench's
-// controller and the CLI's calib commands call runCalibration, and write its results with the
+// controller and the CLI's calib commands run CalibTask, and write its results with the
 // writers of core/calib/calib_csv.hpp.
 #include <string>
 #include <vector>
@@ -10,6 +10,7 @@
 #include "core/calib/calib_check.hpp"
 #include "core/calib/calib_params.hpp"
 #include "core/calib/validation_stats.hpp"
+#include "core/common/task.hpp"
 
 namespace lwb::core::calib {
 
@@ -57,10 +58,21 @@ struct CalibRunResult {
     FeatureMatchResult match;
 };
 
-/// Every step that has its inputs. The statistics are those of the differences when given, else
-/// of the check points after calibration, else of the control points' own height residuals
-/// after calibration (not independent: the source says so).
-CalibRunResult runCalibration(const CalibInputData& in, const CalibParams& params);
+/// The calibration task (core/common/task.hpp): every step that has its inputs. The statistics
+/// are those of the differences when given, else of the check points after calibration, else of
+/// the control points' own height residuals after calibration (not independent: the source says
+/// so). The CLI's calib commands run it on the inputs they are given (detector, pointing, stats,
+/// waveform); the workbench's calibration workspace runs it live (TaskJob<CalibTask>).
+struct CalibTask {
+    static constexpr const char* kName = "calibration";
+    using Params = CalibParams;
+    static const Schema<CalibParams>& schema() { return calibSchema(); }
+    using Inputs = CalibInputData;
+    using Reuse = NoReuse;  // every step takes well under 100 ms (docs/benchmarks.md)
+    using Outputs = CalibRunResult;
+    static CalibRunResult run(const CalibInputData& in, const CalibParams& params, const NoReuse&, Feedback* fb);
+};
+
 
 /// The statistics that succeeded, as rows for statsCsv (keyed by StatsGroup::group): what
 /// `calib stats -o` and the workbench's export write.

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/common/allocator.hpp"
+#include "core/common/feedback.hpp"
 
 namespace lwb::core {
 
@@ -59,6 +60,22 @@ void parallelFor(size_t n, size_t threads, Job&& job) {
         }
     });
     if (failure) std::rethrow_exception(failure);
+}
+
+/// job(i) for i in [0, n) on `threads` threads (0 = every core), stopping early when fb is
+/// cancelled, with progress every 64 items and at the end; returns how many items ran. job must
+/// not throw (it handles its own failures: one bad item is that item's result).
+template <class Job>
+size_t parallelForEach(size_t n, int threads, Feedback* fb, Job&& job) {
+    std::atomic<size_t> next{0}, done{0};
+    runOnThreads(std::max<size_t>(1, std::min(coresFor(threads), n)), [&](size_t) {
+        for (size_t i; !cancelled(fb) && (i = next.fetch_add(1)) < n;) {
+            job(i);
+            const size_t d = ++done;
+            if (fb && (d == n || d % 64 == 0)) fb->setProgress(static_cast<double>(d) / static_cast<double>(n));
+        }
+    });
+    return done;
 }
 
 }  // namespace lwb::core

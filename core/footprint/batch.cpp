@@ -16,39 +16,44 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
                               const BatchItemFn& onItem) {
     BatchResult out;
     out.items.resize(files.size());
-    std::atomic<size_t> next{0}, done{0};
     std::mutex cbMutex;
     const size_t total = files.size();
-    auto worker = [&](size_t) {
-        while (true) {
-            if (cancelled(fb)) return;
-            const size_t i = next.fetch_add(1);
-            if (i >= total) return;
-            BatchItem& item = out.items[i];
-            item.file = files[i];
-            try {
-                const ImageReadResult img = readFrame(files[i], params.read);
-                if (!img.ok)
-                    item.readError = img.error;
-                else
-                    item.rois = processFrame(img.image, params.footprint, params.centres);
-            } catch (const std::exception& e) {  // e.g. out of memory on a huge frame: this item only
-                item.rois.clear();
-                item.readError = files[i] + ": " + e.what();
-            }
-            const size_t d = ++done;
-            std::lock_guard<std::mutex> lock(cbMutex);
-            if (onItem) onItem(i, item);
-            if (fb && (d == total || d % 64 == 0)) fb->setProgress(static_cast<double>(d) / total);
+    const size_t done = parallelForEach(total, params.threads, fb, [&](size_t i) {
+        BatchItem& item = out.items[i];
+        item.file = files[i];
+        try {
+            const ImageReadResult img = readFrame(files[i], params.read);
+            if (!img.ok)
+                item.readError = img.error;
+            else
+                item.rois = processFrame(img.image, params.footprint, params.centres);
+        } catch (const std::exception& e) {  // e.g. out of memory on a huge frame: this item only
+            item.rois.clear();
+            item.readError = files[i] + ": " + e.what();
         }
-    };
-    int n = params.threads > 0 ? params.threads : static_cast<int>(std::thread::hardware_concurrency());
-    n = std::max(1, std::min<int>(n, static_cast<int>(std::max<size_t>(total, 1))));
-    runOnThreads(static_cast<size_t>(n), worker);
+        std::lock_guard<std::mutex> lock(cbMutex);
+        if (onItem) onItem(i, item);
+    });
     out.cancelled = cancelled(fb) && done < total;
     if (out.cancelled) out.items.resize(0);
     for (const auto& it : out.items)
         if (!it.readError.empty()) ++out.readErrors;
+    return out;
+}
+
+std::vector<FootprintResult> ShotsTask::run(const Inputs& in, const FootprintParams& params, const Reuse& reuse, Feedback* fb) {
+    std::vector<FootprintResult> out(in.rois.size());
+    const bool judgeOnly = reuse.fits && reuse.fits->size() == in.rois.size();
+    parallelForEach(in.rois.size(), 0, fb, [&](size_t i) {
+        const cv::Mat& roi = in.rois[i];
+        if (roi.empty()) return;  // a shot that could not be read
+        if (judgeOnly) {
+            out[i] = (*reuse.fits)[i];
+            judgeResult(&out[i], roi.cols, roi.rows, params.verdict);
+        } else {
+            out[i] = processRoi(roi, params);
+        }
+    });
     return out;
 }
 

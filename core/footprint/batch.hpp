@@ -2,10 +2,12 @@
 // Batch processing of many frames on all cores, results in input order, with progress,
 // cancellation and a per-item callback as results arrive; and the CSV report.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/common/feedback.hpp"
+#include "core/common/task.hpp"
 #include "core/footprint/image_io.hpp"
 #include "core/footprint/pipeline.hpp"
 
@@ -52,6 +54,26 @@ using BatchItemFn = std::function<void(size_t index, const BatchItem& item)>;
 /// Reads and processes every file. Long runs poll fb for cancellation and report progress.
 BatchResult runFootprintBatch(const std::vector<std::string>& files, const BatchParams& params,
                               Feedback* fb = nullptr, const BatchItemFn& onItem = {});
+
+/// The footprint shots task (core/common/task.hpp): every shot's ROI through processRoi on all
+/// cores (the per-ROI stage of runFootprintBatch, which reads the frames and cuts the ROIs
+/// itself), results in input order. The workbench's shot list runs it live
+/// (TaskJob<ShotsTask>).
+struct ShotsTask {
+    static constexpr const char* kName = "footprint shots";
+    using Params = FootprintParams;
+    static const Schema<FootprintParams>& schema() { return footprintSchema(); }
+    struct Inputs {
+        std::vector<cv::Mat> rois;  ///< one per shot; empty = unreadable (its result stays empty)
+    };
+    /// Fits made under parameters that differ only in kStageVerdict rows: judged again with
+    /// the verdict of now, not fitted again.
+    struct Reuse {
+        std::shared_ptr<const std::vector<FootprintResult>> fits;
+    };
+    using Outputs = std::vector<FootprintResult>;
+    static Outputs run(const Inputs& in, const FootprintParams& params, const Reuse& reuse, Feedback* fb);
+};
 
 /// The CSV header of footprint reports.
 std::string footprintCsvHeader(const FootprintCsvOptions& options = {});

@@ -99,7 +99,9 @@ void checkStage(const std::vector<RegionPick>& regions, const RadiometryParams& 
 
 }  // namespace
 
-RadiometryRunResult runRadiometry(const cv::Mat& dn, const std::vector<RegionPick>& regions, const RadiometryParams& p) {
+RadiometryRunResult RadiometryTask::run(const Inputs& in, const RadiometryParams& p, const NoReuse&, Feedback*) {
+    const cv::Mat& dn = in.dn;
+    const std::vector<RegionPick>& regions = in.regions;
     RadiometryRunResult run;
     run.notes.assign(regions.size(), std::string());
     run.measured.resize(regions.size());

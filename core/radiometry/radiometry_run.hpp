@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/task.hpp"
 #include "core/radiometry/radiometry_params.hpp"
 
 namespace lwb::core::radiometry {
@@ -33,11 +34,24 @@ struct RadiometryRunResult {
     std::vector<std::string> notes;    ///< per region: why it is not in the fit, or doubts
 };
 
-/// Measures every rectangle inside the image, fits V_REF = K V_DN + B over the fit regions that
-/// have a reflectance and a DN, converts the image (when there is one) and takes the relative
-/// errors of the check regions (on the reflectance image, or K DN + B for regions given by
-/// their DN alone). Regions that cannot take part get a note, never an error of the run.
-RadiometryRunResult runRadiometry(const cv::Mat& dn, const std::vector<RegionPick>& regions, const RadiometryParams& p);
+/// The radiometry task (core/common/task.hpp): measures every rectangle inside the image, fits
+/// V_REF = K V_DN + B over the fit regions that have a reflectance and a DN, converts the image
+/// (when there is one) and takes the relative errors of the check regions (on the reflectance
+/// image, or K DN + B for regions given by their DN alone). Regions that cannot take part get a
+/// note, never an error of the run. The workbench's radiometry workspace runs it live
+/// (TaskJob<RadiometryTask>); the CLI's radiometry commands run its steps one at a time.
+struct RadiometryTask {
+    static constexpr const char* kName = "radiometry";
+    using Params = RadiometryParams;
+    static const Schema<RadiometryParams>& schema() { return radiometrySchema(); }
+    struct Inputs {
+        cv::Mat dn;                      ///< the mosaic's DN image (empty: regions given by DN only)
+        std::vector<RegionPick> regions;
+    };
+    using Reuse = NoReuse;
+    using Outputs = RadiometryRunResult;
+    static RadiometryRunResult run(const Inputs& in, const RadiometryParams& p, const NoReuse&, Feedback* fb);
+};
 
 /// The regions with their results (re-readable as a regions file): name, role, reflectance,
 /// x, y, w, h, dn, dn_sd, pixels, predicted, residual, used, note.
