@@ -14,8 +14,9 @@ namespace lwb::cli {
 
 /// Exit codes, kept by every command (README, "Command line"): 0 success; 1 bad input or failed
 /// run (nothing written); 2 usage error; 3 the outputs are written, but a result is doubtful or
-/// incomplete (the reasons on stderr, even with -q, and in the outputs).
-enum Exit { kOk = 0, kFailed = 1, kUsage = 2, kDoubtful = 3 };
+/// incomplete (the reasons on stderr, even with -q, and in the outputs); 4 (slr --all-passes)
+/// the outputs are written, but some passes failed (summary.csv says why).
+enum Exit { kOk = 0, kFailed = 1, kUsage = 2, kDoubtful = 3, kSomeFailed = 4 };
 
 /// A small option parser: "--name value", "--name=value", flags, repeatable options, and
 /// positional arguments; unknown options are errors.

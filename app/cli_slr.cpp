@@ -116,6 +116,17 @@ slr::SlrParams cliDefaults() {
 
 std::string ps(double s) { return core::formatFixed(s * 1e12, 1) + " ps"; }
 std::string f4(double v) { return std::isfinite(v) ? core::formatFixed(v, 4) : std::string(); }
+// Why a pass has no normal point, for the NPT written in their place and the summary.
+std::string noNormalPointReason(const slr::PassRunResult& r) {
+    if (!r.doubt.empty()) return "doubtful: " + r.doubt;
+    if (r.acceptedCount == 0) return "no signal found";
+    if (!r.postOk) return r.postNote.empty() ? "no post-fit" : r.postNote;
+    if (!r.postNote.empty()) return r.postNote;
+    return "no bin holds the minimum number of kept points";
+}
+
+// A precision of nothing accepted is 0/0: said so, not printed as 0 (summary.csv leaves it empty).
+std::string precisionText(double v) { return std::isfinite(v) ? f4(v) : "undefined (nothing accepted)"; }
 
 // What every pass of a run shares: the presets, the station file and the options.
 struct RunInputs {
@@ -193,137 +204,230 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
     const slr::StationAgreement& g = r.agreement;
     if (g.available) {
         std::cerr << "  against the station's filter flags (" << g.data << " data, " << g.noise << " noise): screening precision "
-                  << f4(g.precision) << ", recall " << f4(g.recall);
-        if (r.postOk) std::cerr << "; after post-fit precision " << f4(g.keptPrecision) << ", recall " << f4(g.keptRecall);
+                  << precisionText(g.precision) << ", recall " << f4(g.recall);
+        if (r.postOk) std::cerr << "; after post-fit precision " << precisionText(g.keptPrecision) << ", recall " << f4(g.keptRecall);
         std::cerr << "\n";
     } else if (g.data > 0) {
         std::cerr << "  the station's filter flags are incomplete (some 0 = unknown): no comparison\n";
     }
 }
 
-// --all-passes: every pass of a CRD file screened with the same options, each pass's outputs
-// and a summary.csv in `dir`, written together at the end. A pass that cannot be processed is a
-// row of the summary with its reason; the others go on. The file is read pass by pass
-// (slr::streamCrd): one pass is held at a time, whatever the size of the file.
-int screenAllPasses(const std::string& cmd, const std::string& input, const slr::PassInputParams& in, const RunInputs& ri,
-                    const std::string& dir, bool quiet) {
-    slr::PassSources sources;
-    std::string err;
-    if (!in.cpfPath.empty() && !in.sinexPath.empty() && !slr::readPassSources(in, &sources, &err)) return fail(cmd, err);
-    slr::PassInputParams inFallback = in;
-    inFallback.cpfFallback = true;  // a pass the CPF does not fit is screened on its own TOF trend, with a note
-    std::unique_ptr<FolderForOutputs> folder;
-    size_t n = 0;
-    // The outputs' names, from the file's count of passes, so that every one is checked before any work.
-    std::vector<std::string> names;
-    core::OutputSet outs;
-    const std::string summaryPath = dir + "/summary.csv";
-    int early = kOk;  // an exit code decided before the passes (the folder, the outputs' checks)
-    auto begin = [&](size_t count) {
-        n = count;
-        folder = std::make_unique<FolderForOutputs>(dir);
-        if (!folder->ok()) {
-            early = fail(cmd, dir + ": cannot create the folder");
-            return false;
-        }
-        outs.addInput(input);
-        for (size_t i = 0; i < n; ++i) {
-            char name[64];
-            std::snprintf(name, sizeof name, "pass%03zu.csv", i + 1);
-            names.push_back(dir + "/" + name);
-            outs.addOutput(names.back());
-        }
-        outs.addOutput(summaryPath);
-        // summary.csv lists the set: written last; an earlier run's pass files go.
-        outs.setManifest(summaryPath, dir, {"pass[0-9][0-9][0-9]*.csv"});
-        early = checkOutputs(cmd, outs);
-        return early == kOk;
-    };
-    std::string summary =
+// --all-passes: a station's file of passes (a day's, say) in, the products a station delivers
+// out, in `dir`: per pass passNNN.csv (as -o), passNNN.frd (the full-rate block with the filter
+// flags: 2 kept by the post-fit, 1 noise or rejected) and passNNN.npt (its normal points, or the
+// reason there are none); normal_points.npt (every pass's normal-point block, the file a
+// station sends); summary.csv (one row per block, its status and reason). All are written
+// together at the end. The blocks that are not passes to screen are rows too: the station's
+// own normal points ("station normal points"), sampled engineering data and blocks with fewer
+// than kMinPassPoints full-rate records ("skipped"). A pass that cannot be processed is
+// "failed" with its reason; the others go on. The file is read pass by pass (slr::streamCrd):
+// one pass is held at a time, whatever the size of the file.
+class AllPasses {
+public:
+    AllPasses(std::string cmd, std::string input, const slr::PassInputParams& in, const RunInputs& ri, std::string dir,
+              bool quiet)
+        : m_cmd(std::move(cmd)), m_input(std::move(input)), m_in(in), m_ri(ri), m_dir(std::move(dir)), m_quiet(quiet) {
+        m_in.cpfFallback = true;  // a pass the CPF does not fit is screened on its own TOF trend, with a note
+    }
+
+    int run() {
+        std::string err;
+        if (!m_in.cpfPath.empty() && !m_in.sinexPath.empty() && !slr::readPassSources(m_in, &m_sources, &err))
+            return fail(m_cmd, err);
+        const slr::CrdStreamResult crd = slr::streamCrd(
+            m_input, {}, nullptr, [this](size_t count) { return begin(count); },
+            [this](slr::CrdPass&& p) { return onPass(std::move(p)); });
+        if (m_early != kOk) return m_early;
+        if (!crd.ok) return fail(m_cmd, crd.error);
+        if (m_unreadable == crd.passes)  // (as readCrd: a file none of whose blocks is a pass is an error)
+            return fail(m_cmd, m_firstProblem + (m_unreadable > 1 ? " (and the file's " + std::to_string(m_unreadable - 1) +
+                                                                       " other pass" + (m_unreadable > 2 ? "es cannot" : " cannot") +
+                                                                       " be used either)"
+                                                                 : std::string()));
+        return finish();
+    }
+
+private:
+    static constexpr const char* kHeader =
         "pass,station,satellite,ilrs_id,start_utc,duration_s,points,accepted,rms_ps,rms_mm,normal_points,"
         "station_precision,station_recall,oc_origin,status,reason,seconds,output\n";
-    std::unique_ptr<Progress> progress;
-    size_t done = 0, okCount = 0, doubtCount = 0, unreadable = 0;
-    std::string firstProblem;
-    std::vector<bool> written;
-    auto onPass = [&](slr::CrdPass&& crdPass) {
-        if (!progress) progress = std::make_unique<Progress>("slr", n, quiet);
-        if (written.size() != n) written.assign(n, false);
+
+    // The outputs' names, from the file's count of passes, so that every one is checked before any work.
+    bool begin(size_t count) {
+        m_n = count;
+        m_folder = std::make_unique<FolderForOutputs>(m_dir);
+        if (!m_folder->ok()) {
+            m_early = fail(m_cmd, m_dir + ": cannot create the folder");
+            return false;
+        }
+        m_outs.addInput(m_input);
+        for (size_t i = 0; i < m_n; ++i) {
+            char name[32];
+            std::snprintf(name, sizeof name, "pass%03zu", i + 1);
+            m_names.push_back(name);
+            for (const char* ext : {".csv", ".frd", ".npt"}) m_outs.addOutput(m_dir + "/" + name + ext);
+        }
+        m_outs.addOutput(nptPath());
+        m_outs.addOutput(summaryPath());
+        // summary.csv lists the set: written last; an earlier run's pass files go.
+        m_outs.setManifest(summaryPath(), m_dir, {"pass[0-9][0-9][0-9]*.csv", "pass[0-9][0-9][0-9]*.frd", "pass[0-9][0-9][0-9]*.npt"});
+        m_early = checkOutputs(m_cmd, m_outs);
+        m_written.assign(m_n, false);
+        m_progress = std::make_unique<Progress>("slr", m_n, m_quiet);
+        return m_early == kOk;
+    }
+
+    std::string summaryPath() const { return m_dir + "/summary.csv"; }
+    std::string nptPath() const { return m_dir + "/normal_points.npt"; }
+    std::string out(size_t i, const char* ext) const { return m_dir + "/" + m_names[i] + ext; }
+
+    void row(const slr::PassSummary& s, size_t i, const std::string& status, const std::string& reason) {
+        // duration empty, the records, accepted .. oc_origin empty, then status and reason.
+        m_summary += std::to_string(i + 1) + "," + core::csvEscape(s.station) + "," + core::csvEscape(s.satellite) + "," +
+                     core::csvEscape(s.ilrsId) + "," + s.start + ",," + std::to_string(s.ranges ? s.ranges : s.normalPoints) +
+                     ",,,,,,,," + status + "," + core::csvEscape(reason) + ",,\n";
+    }
+
+    bool onPass(slr::CrdPass&& crdPass) {
         const size_t i = crdPass.ordinal - 1;
-        if (i >= names.size()) {  // (the first read counted the passes: it cannot find fewer)
-            early = fail(cmd, input + ": the file changed while it was read (more passes than counted)");
+        if (i >= m_names.size()) {  // (the first read counted the passes: it cannot find fewer)
+            m_early = fail(m_cmd, m_input + ": the file changed while it was read (more passes than counted)");
             return false;
         }
         if (!crdPass.problem.empty()) {
-            if (firstProblem.empty()) firstProblem = crdPass.problem;
-            ++unreadable;
+            if (m_firstProblem.empty()) m_firstProblem = crdPass.problem;
+            ++m_unreadable;
         }
         auto one = std::make_shared<slr::CrdReadResult>();
         one->ok = true;
-        one->file.path = input;
+        one->file.path = m_input;
         one->file.passes.push_back(std::move(crdPass));
-        const slr::PassSummary ps0 = slr::summarisePasses(one->file).front();
-        std::string row = std::to_string(i + 1) + "," + core::csvEscape(ps0.station) + "," + core::csvEscape(ps0.satellite) + "," +
-                          core::csvEscape(ps0.ilrsId) + "," + ps0.start + ",";
-        auto failRow = [&](const std::string& why) {
-            // duration empty, the points, accepted .. oc_origin empty, then status and reason.
-            summary += row + "," + std::to_string(ps0.ranges) + ",,,,,,,,failed," + core::csvEscape(why) + ",,\n";
+        // The block is written back as a file of its own (passNNN.frd, .npt): it ends with an H9.
+        one->file.trailer.push_back(slr::CrdRecord{"H9", "h9", 0});
+        const slr::PassSummary ps = slr::summarisePasses(one->file).front();
+        m_progress->update(++m_done);
+        if (const slr::BlockStatus b = slr::blockStatus(ps); !b.status.empty()) {
+            row(ps, i, b.status, b.reason);
+            ++(b.status == "skipped" ? m_skipped : m_stationNps);
+            return true;
+        }
+        const slr::PassInputResult p =
+            slr::passFromCrd(std::shared_ptr<const slr::CrdReadResult>(std::move(one)), m_input, 0, m_in, m_sources);
+        auto failed = [&](const std::string& why) {
+            row(ps, i, "failed", why.substr(0, why.find('\n')));
+            ++m_failed;
             return true;
         };
-        const slr::PassInputResult p =
-            slr::passFromCrd(std::shared_ptr<const slr::CrdReadResult>(std::move(one)), input, 0, inFallback, sources);
-        progress->update(++done);
-        if (!p.ok) return failRow(p.error.substr(0, p.error.find('\n')));
-        if (!p.pass.damaged.empty()) return failRow(p.pass.damaged);
+        if (!p.ok) return failed(p.error);
+        if (!p.pass.damaged.empty()) return failed(p.pass.damaged);
         slr::PassSettings settings;
-        if (!slr::passSettings(p.pass, cliDefaults(), ri.havePresets ? &ri.presets : nullptr, ri.satellite, ri.stations,
-                               &settings, &err))
-            return failRow(err);
-        if ((early = ri.options->apply(cmd, *ri.args, &settings.params)) != kOk) return false;
+        std::string err;
+        if (!slr::passSettings(p.pass, cliDefaults(), m_ri.havePresets ? &m_ri.presets : nullptr, m_ri.satellite,
+                               m_ri.stations, &settings, &err))
+            return failed(err);
+        if ((m_early = m_ri.options->apply(m_cmd, *m_ri.args, &settings.params)) != kOk) return false;
         const slr::PassRunResult r = slr::runPass(p.pass, settings.params);
-        if (!r.ok) return failRow(r.error);
-        if (!slr::writeScreenCsv(outs.stagingPath(names[i]), p.pass, r.screen, r.accepted, r.postOk ? &r.post : nullptr, &err)) {
-            early = fail(cmd, outs.unstaged(err));
+        if (!r.ok) return failed(r.error);
+        if (!writePass(i, p.pass, r)) return false;
+        screenedRow(i, ps, p.pass, r);
+        return true;
+    }
+
+    // The pass's CSV, flagged full-rate block and normal points; its normal-point block is kept
+    // for the file of the day.
+    bool writePass(size_t i, const slr::PassData& pass, const slr::PassRunResult& r) {
+        std::string err;
+        const bool doubtful = !r.doubt.empty();
+        const std::vector<slr::NormalPoint> none;
+        const std::vector<slr::NormalPoint>& nps = !doubtful && r.postOk ? r.post.normalPoints : none;
+        const std::string noneReason = nps.empty() ? noNormalPointReason(r) : std::string();
+        // The station's flags: what the post-fit kept (its rejects are excluded), else the screening's.
+        const std::vector<uint8_t>& flags = r.postOk ? r.post.kept : r.accepted;
+        slr::CrdPass npBlock;
+        const bool ok = slr::writeScreenCsv(m_outs.stagingPath(out(i, ".csv")), pass, r.screen, r.accepted,
+                                            r.postOk ? &r.post : nullptr, &err) &&
+                        slr::writeScreenedCrd(m_outs.stagingPath(out(i, ".frd")), pass, flags, &err) &&
+                        slr::normalPointPass(pass, nps, noneReason, &npBlock, &err) &&
+                        slr::writeNormalPointFile(m_outs.stagingPath(out(i, ".npt")), {npBlock}, *pass.crd, &err);
+        if (!ok) {
+            m_early = fail(m_cmd, m_outs.unstaged(err));
             return false;
         }
-        written[i] = true;
-        ++okCount;
-        doubtCount += !r.doubt.empty();
-        const double duration = p.pass.t.empty() ? 0 : p.pass.t.back() - p.pass.t.front();
-        const double rms = r.postOk ? r.post.stats.rms : NAN;
-        summary += row + core::formatFixed(duration, 1) + "," + std::to_string(p.pass.t.size()) + "," +
-                   std::to_string(r.acceptedCount) + "," + (std::isfinite(rms) ? core::formatFixed(rms * 1e12, 1) : "") + "," +
-                   (std::isfinite(rms) ? core::formatFixed(rms * 0.5 * 299792458.0 * 1e3, 2) : "") + "," +
-                   (r.postOk ? std::to_string(r.post.normalPoints.size()) : "") + "," + f4(r.agreement.precision) + "," +
-                   f4(r.agreement.recall) + "," + core::csvEscape(p.pass.ocOrigin) + (r.doubt.empty() ? ",ok," : ",doubtful,") +
-                   core::csvEscape(!r.doubt.empty() ? r.doubt : !p.pass.ocNote.empty() ? p.pass.ocNote : r.postNote) + "," +
-                   core::formatFixed(r.seconds, 3) +
-                   "," + names[i].substr(dir.size() + 1) + "\n";
+        if (!nps.empty()) m_dayNps.push_back(std::move(npBlock));
+        if (!m_like) m_like = pass.crd;
+        m_written[i] = true;
         return true;
-    };
-    const slr::CrdStreamResult crd = slr::streamCrd(input, {}, nullptr, begin, onPass);
-    if (early != kOk) return early;
-    if (!crd.ok) return fail(cmd, crd.error);
-    if (unreadable == crd.passes)  // (as readCrd: a file none of whose blocks is a pass is an error)
-        return fail(cmd, firstProblem + (unreadable > 1 ? " (and the file's " + std::to_string(unreadable - 1) + " other pass" +
-                                                              (unreadable > 2 ? "es cannot" : " cannot") + " be used either)"
-                                                        : std::string()));
-    if (!progress) progress = std::make_unique<Progress>("slr", n, quiet);
-    written.resize(n, false);
-    progress->finish();
-    // Passes with no result have no file.
-    for (size_t i = 0; i < n; ++i)
-        if (!written[i]) outs.drop(names[i]);
-    if (!core::writeFileAtomic(outs.stagingPath(summaryPath), summary, &err)) return fail(cmd, outs.unstaged(err));
-    if (int rc = commitOutputs(cmd, outs)) return rc;
-    folder->keep();
-    if (!quiet)
-        std::cerr << "slr: " << input << ": " << okCount << " of " << n << " passes screened -> " << dir << "/ (summary.csv)\n";
-    if (okCount == n && doubtCount == 0) return kOk;
-    // (said even with -q: a partial or doubtful result is not a success)
-    std::cerr << "laserwb-cli slr: " << n - okCount << " of " << n << " passes failed and " << doubtCount
-              << " are doubtful (" << dir << "/summary.csv says why); exit 3\n";
-    return kDoubtful;
+    }
+
+    void screenedRow(size_t i, const slr::PassSummary& ps, const slr::PassData& pass, const slr::PassRunResult& r) {
+        const bool doubtful = !r.doubt.empty();
+        ++(doubtful ? m_doubtful : m_screened);
+        const double duration = pass.t.empty() ? 0 : pass.t.back() - pass.t.front();
+        const double rms = r.postOk ? r.post.stats.rms : NAN;
+        const slr::BlockStatus st = slr::runStatus(pass, r);
+        m_summary += std::to_string(i + 1) + "," + core::csvEscape(ps.station) + "," + core::csvEscape(ps.satellite) + "," +
+                     core::csvEscape(ps.ilrsId) + "," + ps.start + "," + core::formatFixed(duration, 1) + "," +
+                     std::to_string(pass.t.size()) + "," + std::to_string(r.acceptedCount) + "," +
+                     (std::isfinite(rms) ? core::formatFixed(rms * 1e12, 1) : "") + "," +
+                     (std::isfinite(rms) ? core::formatFixed(rms * 0.5 * 299792458.0 * 1e3, 2) : "") + "," +
+                     (r.postOk && !doubtful ? std::to_string(r.post.normalPoints.size()) : "0") + "," +
+                     f4(r.agreement.precision) + "," + f4(r.agreement.recall) + "," + core::csvEscape(pass.ocOrigin) + "," +
+                     st.status + "," + core::csvEscape(st.reason) + "," + core::formatFixed(r.seconds, 3) + "," + m_names[i] +
+                     ".csv\n";
+    }
+
+    int finish() {
+        m_progress->finish();
+        std::string err;
+        for (size_t i = 0; i < m_n; ++i)  // passes with no result have no files
+            if (!m_written[i])
+                for (const char* ext : {".csv", ".frd", ".npt"}) m_outs.drop(out(i, ext));
+        const bool dayNpt = m_like && !m_dayNps.empty();
+        if (dayNpt) {
+            if (!slr::writeNormalPointFile(m_outs.stagingPath(nptPath()), std::move(m_dayNps), *m_like, &err))
+                return fail(m_cmd, m_outs.unstaged(err));
+        } else {
+            m_outs.drop(nptPath());  // (no pass formed a normal point: summary.csv says why)
+        }
+        if (!core::writeFileAtomic(m_outs.stagingPath(summaryPath()), kHeader + m_summary, &err))
+            return fail(m_cmd, m_outs.unstaged(err));
+        if (int rc = commitOutputs(m_cmd, m_outs)) return rc;
+        m_folder->keep();
+        if (!m_quiet)
+            std::cerr << "slr: " << m_input << ": " << m_n << " blocks: " << m_screened << " screened, " << m_doubtful
+                      << " doubtful, " << m_failed << " failed, " << m_stationNps << " station normal points, " << m_skipped
+                      << " skipped -> " << m_dir << "/ (summary.csv"
+                      << (dayNpt ? ", normal_points.npt" : "") << ")\n";
+        if (m_failed == 0 && m_doubtful == 0) return kOk;
+        // (said even with -q: a partial or doubtful result is not a success)
+        std::cerr << "laserwb-cli slr: " << m_failed << " of " << m_n << " passes failed and " << m_doubtful
+                  << " are doubtful (" << m_dir << "/summary.csv says why); exit "
+                  << (m_failed ? kSomeFailed : kDoubtful) << "\n";
+        return m_failed ? kSomeFailed : kDoubtful;
+    }
+
+    std::string m_cmd, m_input;
+    slr::PassInputParams m_in;
+    const RunInputs& m_ri;
+    std::string m_dir;
+    bool m_quiet;
+    slr::PassSources m_sources;
+    std::unique_ptr<FolderForOutputs> m_folder;
+    core::OutputSet m_outs;
+    std::vector<std::string> m_names;
+    std::vector<bool> m_written;
+    std::unique_ptr<Progress> m_progress;
+    std::string m_summary, m_firstProblem;
+    std::vector<slr::CrdPass> m_dayNps;
+    std::shared_ptr<const slr::CrdFile> m_like;
+    size_t m_n = 0, m_done = 0, m_unreadable = 0;
+    size_t m_screened = 0, m_doubtful = 0, m_failed = 0, m_skipped = 0, m_stationNps = 0;
+    int m_early = kOk;
+};
+
+int screenAllPasses(const std::string& cmd, const std::string& input, const slr::PassInputParams& in, const RunInputs& ri,
+                    const std::string& dir, bool quiet) {
+    return AllPasses(cmd, input, in, ri, dir, quiet).run();
 }
 
 }  // namespace
@@ -359,9 +463,10 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
     }
     pl->out = a.has("-o") ? a.value("-o") : a.value("--output");
     const std::string& out = pl->out;
-    if (out.empty() && !allPasses) return fail(cmd, "no output file: give -o OUT.csv", kUsage);
     pl->crdOut = a.value("--crd-out");
     pl->nptOut = a.value("--npt-out");
+    if (out.empty() && pl->crdOut.empty() && pl->nptOut.empty() && !allPasses)
+        return fail(cmd, "no output file: give -o OUT.csv, --crd-out FILE or --npt-out FILE", kUsage);
     const std::string &crdOut = pl->crdOut, &nptOut = pl->nptOut;
     // Every output is checked before anything is computed or written: none may replace an
     // input or another output (same device and inode, whatever the spelling), devices and
@@ -495,27 +600,33 @@ int cmdSlr(int argc, char** argv) {
     // A result that cannot be trusted (noise that no scale tells from a track, two tracks merged):
     // the points' classes are written, no normal points, exit 3 with the reason.
     const bool doubtful = !r.doubt.empty();
-    if (doubtful && !nptOut.empty()) outs.drop(nptOut);
-    if (!doubtful && !nptOut.empty() && (!r.postOk || r.post.normalPoints.empty()))
-        return fail(cmd, what + ": no normal points to write to " + nptOut +
-                             (r.postOk ? " (no bin holds the minimum number of kept points)" : " (" + r.postNote + ")"));
+    // No normal point is a result, not a failure (no signal found, no bin full enough, a
+    // doubtful pass): every requested output is written, the NPT with the reason in place of
+    // its records, and the exit code says which (0, or 3 when doubtful).
+    const std::vector<slr::NormalPoint> noPoints;
+    const std::vector<slr::NormalPoint>& nps = !doubtful && r.postOk ? r.post.normalPoints : noPoints;
+    const std::string noneReason = nps.empty() ? noNormalPointReason(r) : std::string();
 
     // ---- outputs: all or nothing ----
-    if (!slr::writeScreenCsv(outs.stagingPath(out), pass, r.screen, r.accepted, r.postOk ? &r.post : nullptr, &err))
+    if (!out.empty() &&
+        !slr::writeScreenCsv(outs.stagingPath(out), pass, r.screen, r.accepted, r.postOk ? &r.post : nullptr, &err))
         return fail(cmd, named(out, outs.unstaged(err)));
     if (!crdOut.empty() && !slr::writeScreenedCrd(outs.stagingPath(crdOut), pass, r.accepted, &err))
         return fail(cmd, named(crdOut, outs.unstaged(err)));
-    if (!doubtful && !nptOut.empty() && !slr::writeNormalPointCrd(outs.stagingPath(nptOut), pass, r.post.normalPoints, &err))
+    if (!nptOut.empty() && !slr::writeNormalPointCrd(outs.stagingPath(nptOut), pass, nps, &err, noneReason))
         return fail(cmd, named(nptOut, outs.unstaged(err)));
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet) {
         printSummary(what, pass, settings, r);
-        std::cerr << "  -> " << out << (crdOut.empty() ? "" : ", " + crdOut)
-                  << (nptOut.empty() || doubtful ? "" : ", " + nptOut) << "\n";
+        std::string written;
+        for (const std::string* o : {&out, &crdOut, &nptOut})
+            if (!o->empty()) written += (written.empty() ? "" : ", ") + *o;
+        std::cerr << "  -> " << written
+                  << (nptOut.empty() || !nps.empty() ? "" : " (" + nptOut + ": no normal points: " + noneReason + ")")
+                  << "\n";
     }
     if (doubtful) {
-        std::cerr << "laserwb-cli slr: doubtful: " << r.doubt << (nptOut.empty() ? "" : "; " + nptOut + " not written")
-                  << " (exit 3)\n";
+        std::cerr << "laserwb-cli slr: doubtful: " << r.doubt << " (exit 3)\n";
         return kDoubtful;
     }
     return kOk;

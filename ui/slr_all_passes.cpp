@@ -1,6 +1,7 @@
 #include "ui/slr_all_passes.hpp"
 
 #include <QDateTime>
+#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -14,6 +15,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/common/atomic_file.hpp"
+#include "core/common/csv.hpp"
 #include "core/slr/pass_run.hpp"
 #include "ui/slr_controller.hpp"
 
@@ -52,6 +55,8 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
     m_progress->setToolTip(tr("Passes screened so far"));
     m_cancelButton = new QPushButton(tr("Cancel"), this);
     m_cancelButton->setToolTip(tr("Stop after the pass under way; the passes not reached are marked cancelled"));
+    m_exportButton = new QPushButton(tr("Export CSV…"), this);
+    m_exportButton->setToolTip(tr("Write the table as it stands to a CSV file (one row per pass, the columns shown)"));
     m_openButton = new QPushButton(tr("Open pass"), this);
     m_openButton->setToolTip(tr("Open the selected pass in the SLR workspace"));
     auto* close = new QPushButton(tr("Close"), this);
@@ -59,6 +64,7 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
     row->addWidget(m_label, 1);
     row->addWidget(m_progress, 1);
     row->addWidget(m_cancelButton);
+    row->addWidget(m_exportButton);
     row->addWidget(m_openButton);
     row->addWidget(close);
     l->addLayout(row);
@@ -95,6 +101,12 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
     });
     connect(this, &QDialog::rejected, this, &SlrAllPassesDialog::cancel);
 
+    connect(m_exportButton, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export the table"), QString(), tr("CSV (*.csv)"));
+        QString err;
+        if (!path.isEmpty() && !exportCsv(path, &err)) m_label->setText(err);
+    });
+
     // The worker: the file, the sources and the settings shared read-only.
     const auto crd = controller->crd();
     const auto sources = controller->sources();
@@ -109,6 +121,18 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
             const int index = order[size_t(r)];
             QStringList cells;
             bool ok = false;
+            // Not a pass to screen (the station's own normal points, engineering data, too few
+            // records): listed as laserwb-cli slr --all-passes lists it (core blockStatus).
+            if (const BlockStatus b = blockStatus(passes[size_t(index)]); !b.status.empty()) {
+                cells << QString() << QString() << QString() << QString() << QString()
+                      << QString::fromStdString(b.status + ": " + b.reason);
+                QMetaObject::invokeMethod(
+                    qApp, [self, r, cells] {
+                        if (self) self->rowDone(r, cells, true);
+                    },
+                    Qt::QueuedConnection);
+                continue;
+            }
             const PassInputResult p = crd ? passFromCrd(crd, path, index, input, *sources) : PassInputResult{};
             std::string err;
             PassSettings settings;
@@ -133,11 +157,13 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
                           << (run.postOk ? QString::number(run.post.normalPoints.size()) : QString())
                           << (a.available ? QString("%1 / %2").arg(fixed(a.precision, 3), fixed(a.recall, 3)) : QString())
                           << fixed(run.seconds, 2);
-                    // A pass screened without error may still keep nothing: said, not "ok".
-                    QString status = (run.acceptedCount ? tr("ok, O-C from %1") : tr("nothing accepted, O-C from %1"))
-                                         .arg(QString::fromStdString(p.pass.ocOrigin));
-                    if (!p.pass.ocNote.empty()) status += " — " + QString::fromStdString(p.pass.ocNote);
-                    else if (!run.postNote.empty()) status += " — " + QString::fromStdString(run.postNote);
+                    // The CLI's status (core runStatus): ok, no signal or doubtful, with its reason.
+                    const BlockStatus st = runStatus(p.pass, run);
+                    QString status = st.status == "doubtful"
+                                         ? QString::fromStdString("doubtful: " + st.reason)
+                                         : tr("%1, O-C from %2").arg(QString::fromStdString(st.status), QString::fromStdString(p.pass.ocOrigin));
+                    if (st.status != "doubtful" && !st.reason.empty() && st.reason != "no signal found")
+                        status += " — " + QString::fromStdString(st.reason);
                     cells << status;
                 }
             }
@@ -168,6 +194,21 @@ void SlrAllPassesDialog::cancel() {
     m_finished = true;
     m_label->setText(tr("Cancelled: %1 of %2 passes screened (%3 failed)").arg(m_done).arg(m_total).arg(m_failed));
     emit allDone();
+}
+
+bool SlrAllPassesDialog::exportCsv(const QString& path, QString* error) const {
+    std::string text;
+    for (int c = 0; c < ColCount; ++c)
+        text += (c ? "," : "") + core::csvEscape(m_table->horizontalHeaderItem(c)->text().toStdString());
+    text += "\n";
+    for (int r = 0; r < m_table->rowCount(); ++r) {
+        for (int c = 0; c < ColCount; ++c) text += (c ? "," : "") + core::csvEscape(m_table->item(r, c)->text().toStdString());
+        text += "\n";
+    }
+    std::string err;
+    if (core::writeFileAtomic(path.toStdString(), text, &err)) return true;
+    if (error) *error = QString::fromStdString(err);
+    return false;
 }
 
 int SlrAllPassesDialog::passOfRow(int row) const {

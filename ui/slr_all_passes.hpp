@@ -35,6 +35,9 @@ public:
     bool finished() const { return m_finished; }
     /// Stops after the pass under way; the rows not reached say "cancelled".
     void cancel();
+    /// The table as it stands, as CSV (the columns shown, one row per block), written whole or
+    /// not at all. False with *error.
+    bool exportCsv(const QString& path, QString* error) const;
     /// The pass (0-based index in the file) of a table row.
     int passOfRow(int row) const;
 
@@ -48,7 +51,7 @@ private:
     QTableWidget* m_table;
     QProgressBar* m_progress;
     QLabel* m_label;
-    QPushButton *m_cancelButton, *m_openButton;
+    QPushButton *m_cancelButton, *m_exportButton, *m_openButton;
     std::shared_ptr<std::atomic<bool>> m_cancel = std::make_shared<std::atomic<bool>>(false);
     QFuture<void> m_future;
     int m_total = 0, m_done = 0, m_failed = 0;

@@ -1216,7 +1216,7 @@ QString SlrWorkspace::summaryHtml(const SlrRun& run) const {
         }
         statsHtml += tr("<br><b>vs %1</b>: precision %2, recall %3")
                          .arg(haveTruth ? tr("simulation truth") : tr("station filter flags"))
-                         .arg(tp + fp ? double(tp) / (tp + fp) : 0, 0, 'f', 3)
+                         .arg(tp + fp ? QString::number(double(tp) / (tp + fp), 'f', 3) : tr("undefined (nothing accepted)"))
                          .arg(tp + fn ? double(tp) / (tp + fn) : 0, 0, 'f', 3);
     }
     for (const auto& w : s.warnings) statsHtml += "<br><i>" + QString::fromStdString(w).toHtmlEscaped() + "</i>";

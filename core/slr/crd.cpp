@@ -1190,9 +1190,13 @@ bool setNormalPoints(CrdPass* pass, const std::vector<CrdNormalPoint>& nps, Norm
 }
 
 bool makeNormalPointPass(const CrdPass& fullRate, const std::vector<CrdNormalPoint>& nps, CrdPass* out,
-                         std::string* error) {
+                         std::string* error, const std::string& noneReason) {
     try {
         if (!checkNormalPoints(nps, error)) return false;
+        if (nps.empty() && noneReason.empty()) {
+            *error = "makeNormalPointPass: no normal points and no reason to write in their place";
+            return false;
+        }
         CrdPass p;
         p.format = fullRate.format;
         p.station = fullRate.station;
@@ -1222,6 +1226,12 @@ bool makeNormalPointPass(const CrdPass& fullRate, const std::vector<CrdNormalPoi
         }
         std::vector<CrdRecord> add;
         for (const auto& n : nps) add.push_back(CrdRecord{formatNormalPointRecord(n, p.format.version), "11", 0});
+        if (nps.empty()) {  // one line, printable: the reason with line breaks and controls as blanks
+            std::string why = "00 no normal points: " + noneReason;
+            for (char& ch : why)
+                if (static_cast<unsigned char>(ch) < 0x20) ch = ' ';
+            add.push_back(CrdRecord{why, "00", 0});
+        }
         const size_t at = h8 == std::string::npos ? p.records.size() : h8;
         p.records.insert(p.records.begin() + static_cast<long>(at), add.begin(), add.end());
         if (h8 == std::string::npos) p.records.push_back(CrdRecord{"H8", "h8", 0});

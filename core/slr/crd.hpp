@@ -301,8 +301,10 @@ bool setNormalPoints(CrdPass* pass, const std::vector<CrdNormalPoint>& nps, Norm
 
 /// A normal-point pass made from a full-rate one: same headers (H4 data type set to 1),
 /// configurations, met and calibration records, comments; no 10/12/30/42/9x records; the
-/// given normal points before the H8. Inherited H1..H3 are written into the new pass.
+/// given normal points before the H8. Inherited H1..H3 are written into the new pass. With no
+/// normal points, `noneReason` (required then) goes before the H8 as a "00" comment record: a
+/// pass that forms none still has its file, saying why.
 bool makeNormalPointPass(const CrdPass& fullRate, const std::vector<CrdNormalPoint>& nps, CrdPass* out,
-                         std::string* error);
+                         std::string* error, const std::string& noneReason = {});
 
 }  // namespace lwb::core::slr

@@ -479,7 +479,10 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             res.error = name + ": all records share one epoch; no trend can be fitted";
             return res;
         }
-        const int degree = std::max(1, std::min(params.degree, static_cast<int>(t.size() - 1) / 4));
+        // (n-1)/4 keeps 4 records per coefficient; a short pass still gets a quadratic (a LEO
+        // pass's range is not a line over a minute), with 2 degrees of freedom left at 5 records.
+        const int n = static_cast<int>(t.size());
+        const int degree = std::max(1, std::min(params.degree, std::max((n - 1) / 4, std::min(2, n - 3))));
         if (degree < params.degree)
             res.warnings.push_back(name + ": trend degree lowered to " + std::to_string(degree) + " for " +
                                    std::to_string(t.size()) + " records");

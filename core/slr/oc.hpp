@@ -92,10 +92,10 @@ OcResult computeOc(const CrdPass& pass, const CpfFile& cpf, const SinexFile& sin
 
 struct TrendOcParams {
     int degree = 4;           ///< degree of the polynomial for the squared time of flight (normalised time; 1..20);
-                              ///< lowered to (records-1)/4 for short passes
+                              ///< lowered to max((records-1)/4, 2) for short passes (5 records: 2)
     double huberK = 1.345;    ///< Huber constant, in robust standard deviations (MAD x 1.4826) (0.5..10)
     int maxIterations = 50;   ///< reweighting iterations (1..500)
-    int minPoints = 10;       ///< fewer usable records: error (>= 3)
+    int minPoints = 5;        ///< fewer usable records: error (>= 3; kMinPassPoints of pass_input.hpp)
 };
 std::string validate(const TrendOcParams& p);
 

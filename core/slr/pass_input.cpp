@@ -323,8 +323,9 @@ PassInputResult passFromOcTable(const std::string& path) {
     PassSummary s;
     s.ranges = d.t.size();
     r.passes.push_back(s);
-    if (d.t.size() < 3) {
-        r.error = path + ": the O-C table holds " + std::to_string(d.t.size()) + " points; screening needs at least 3";
+    if (d.t.size() < kMinPassPoints) {
+        r.error = path + ": the O-C table holds " + std::to_string(d.t.size()) + " points; a pass needs at least " +
+                  std::to_string(kMinPassPoints);
         return r;
     }
     r.ok = true;
@@ -340,7 +341,7 @@ std::vector<PassSummary> summarisePasses(const CrdFile& file) {
 namespace {
 
 // The pass to read: the one asked for, or the first with full-rate records; it must be usable
-// and hold at least 3 of them. -1 with r->error (and r->passes listing the file) when not.
+// and hold at least kMinPassPoints of them. -1 with r->error (and r->passes listing the file) when not.
 int choosePass(const CrdReadResult& crd, const std::string& path, int passIndex, PassInputResult* r) {
     PassInputResult& res = *r;
     if (passIndex < 0) {
@@ -379,9 +380,10 @@ int choosePass(const CrdReadResult& crd, const std::string& path, int passIndex,
                                  res.warnings);
         return -1;
     }
-    if (pass.ranges.size() < 3) {
+    if (pass.ranges.size() < kMinPassPoints) {
         res.error = withWarnings(path + ": pass " + std::to_string(number) + " holds " +
-                                     std::to_string(pass.ranges.size()) + " full-rate records; screening needs at least 3",
+                                     std::to_string(pass.ranges.size()) + " full-rate records; a pass needs at least " +
+                                     std::to_string(kMinPassPoints),
                                  res.warnings);
         return -1;
     }

@@ -49,6 +49,12 @@ struct PassSummary {
     std::string problem;           ///< why the block cannot be used as a pass (CrdPass::problem), else empty
 };
 
+/// The fewest points a pass is screened with, in every mode (an O-C table, a CRD pass with a
+/// CPF, a CRD pass on its own TOF trend, one pass or --all-passes): 5. Fewer is not a pass to
+/// judge (a trend of the TOF needs 2 degrees of freedom beyond its 3 coefficients); such a block
+/// is listed and skipped, not failed.
+inline constexpr size_t kMinPassPoints = 5;
+
 struct PassData {
     std::string source;            ///< file the pass came from
     int passIndex = 0;

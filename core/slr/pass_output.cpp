@@ -146,13 +146,12 @@ bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::
     return writeCrd(path, out, error);
 }
 
-bool writeNormalPointCrd(const std::string& path, const PassData& pass, const std::vector<NormalPoint>& nps,
-                         std::string* error) {
+bool normalPointPass(const PassData& pass, const std::vector<NormalPoint>& nps, const std::string& noneReason, CrdPass* out,
+                     std::string* error) {
     if (!pass.hasCrd) {
         *error = "normal points as CRD need the pass's CRD headers (open the CRD file, not an O-C table)";
         return false;
     }
-    if (!writablePassOutput(path, pass, error)) return false;
     const CrdPass& full = pass.crd->passes[size_t(pass.passIndex)];
     std::vector<CrdNormalPoint> recs;
     for (const NormalPoint& np : nps) {
@@ -177,13 +176,24 @@ bool writeNormalPointCrd(const std::string& path, const PassData& pass, const st
         c.returnRatePct = np.returnRatePct;
         recs.push_back(c);
     }
+    return makeNormalPointPass(full, recs, out, error, noneReason);
+}
+
+bool writeNormalPointCrd(const std::string& path, const PassData& pass, const std::vector<NormalPoint>& nps,
+                         std::string* error, const std::string& noneReason) {
+    if (!pass.hasCrd) return normalPointPass(pass, nps, noneReason, nullptr, error);  // (says why)
+    if (!writablePassOutput(path, pass, error)) return false;
+    CrdPass np;
+    if (!normalPointPass(pass, nps, noneReason, &np, error)) return false;
+    return writeNormalPointFile(path, {std::move(np)}, *pass.crd, error);
+}
+
+bool writeNormalPointFile(const std::string& path, std::vector<CrdPass> passes, const CrdFile& like, std::string* error) {
     CrdFile out;
     out.path = path;
-    out.crlf = pass.crd->crlf;
-    CrdPass np;
-    if (!makeNormalPointPass(full, recs, &np, error)) return false;
-    out.passes.push_back(std::move(np));
-    out.trailer = pass.crd->trailer;
+    out.crlf = like.crlf;
+    out.passes = std::move(passes);
+    out.trailer = like.trailer;
     return writeCrd(path, out, error);
 }
 

@@ -23,8 +23,17 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
 /// records without an O-C keep their flag; other passes unchanged.
 bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::vector<uint8_t>& accepted,
                       std::string* error);
-/// The normal points as a CRD normal-point file (headers of the pass, data type 1).
+/// The normal points as a CRD normal-point file (headers of the pass, data type 1). With none
+/// (no signal, no bin full enough, a doubtful pass), `noneReason` is written in their place as
+/// a "00" comment record: "00 no normal points: REASON".
 bool writeNormalPointCrd(const std::string& path, const PassData& pass, const std::vector<NormalPoint>& nps,
-                         std::string* error);
+                         std::string* error, const std::string& noneReason = {});
+
+/// The normal-point block of writeNormalPointCrd, to be written with others (a station's
+/// normal-point file of a day: writeNormalPointFile).
+bool normalPointPass(const PassData& pass, const std::vector<NormalPoint>& nps, const std::string& noneReason, CrdPass* out,
+                     std::string* error);
+/// Normal-point blocks as one CRD file (line ends and trailer like `like`, the file they came from).
+bool writeNormalPointFile(const std::string& path, std::vector<CrdPass> passes, const CrdFile& like, std::string* error);
 
 }  // namespace lwb::core::slr

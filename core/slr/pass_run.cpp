@@ -68,10 +68,10 @@ StationAgreement stationAgreement(const PassData& pass, const std::vector<uint8_
             keptFp += post->kept[i] && !sig;
         }
     }
-    a.precision = tp + fp ? double(tp) / double(tp + fp) : 0;
+    a.precision = tp + fp ? double(tp) / double(tp + fp) : NAN;  // 0/0: nothing accepted, undefined
     a.recall = double(tp) / double(a.data);
     if (kept) {
-        a.keptPrecision = keptTp + keptFp ? double(keptTp) / double(keptTp + keptFp) : 0;
+        a.keptPrecision = keptTp + keptFp ? double(keptTp) / double(keptTp + keptFp) : NAN;
         a.keptRecall = double(keptTp) / double(a.data);
     }
     return a;
@@ -117,9 +117,45 @@ std::string parallelTracks(const std::vector<double>& residuals) {
            "workbench, or a narrower band) before forming normal points";
 }
 
+double trackSeparation(const PostfitResult& post) {
+    const double sigma = post.stats.rms;
+    if (!(sigma > 0) || post.residuals.empty()) return NAN;
+    double lo = INFINITY, hi = -INFINITY;
+    size_t in = 0, out = 0;
+    for (double r : post.residuals) {
+        if (!std::isfinite(r)) continue;
+        lo = std::min(lo, r);
+        hi = std::max(hi, r);
+        (std::fabs(r) <= 3 * sigma ? in : out)++;
+    }
+    if (out == 0) return INFINITY;  // nothing beside the band: no noise to mistake it for
+    const double band = 6 * sigma, rest = std::max(hi - lo - band, band);
+    return static_cast<double>(in) / (static_cast<double>(out) * band / rest);
+}
+
 std::string judgeRun(const ScreenResult& screen, size_t acceptedCount, PostfitResult* post, std::string* postNote) {
-    // (with nothing accepted the answer is "no signal found", not a doubtful track)
-    std::string doubt = acceptedCount > 0 ? screen.doubt : std::string();
+    std::string doubt;
+    if (acceptedCount > 0) {
+        doubt = screen.doubt;
+        // A track resting on a handful of image points with more recovered around them: the
+        // recovery followed noise (a 2 %-signal lunar-like pass: 4 image points, 30 recovered,
+        // 59 % of them noise, one normal point of 378 ps). A filtered pass (no noise floor) is
+        // recovered whole by design and is not judged so.
+        if (doubt.empty() && !screen.floorless && screen.signalPoints < kMinImagePoints &&
+            screen.recoveredPoints > screen.signalPoints) {
+            const double sep = post && post->ok ? trackSeparation(*post) : NAN;
+            if (!(sep >= kMinTrackSeparation))
+                doubt = "the track rests on " + std::to_string(screen.signalPoints) + " point(s) the image found, with " +
+                        std::to_string(screen.recoveredPoints) + " recovered around them, and stands " +
+                        (std::isfinite(sep) ? formatFixed(sep, 1) + " times" : std::string("not")) +
+                        " above the noise's density (at least " + formatFixed(kMinTrackSeparation, 0) +
+                        " needed): it cannot be told from noise";
+        }
+    } else if (!screen.doubt.empty()) {
+        // Nothing accepted and no scale showed a track: not "no signal", but a signal (if any)
+        // that this method cannot see.
+        doubt = "no scale shows a clear track: a signal in this pass, if any, cannot be told from the noise";
+    }
     if (doubt.empty() && post && post->ok) {
         std::vector<double> kept;
         for (size_t i = 0; i < post->kept.size(); ++i)
@@ -193,6 +229,10 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
         r.postNote = "post-fit not done: " + r.post.error;
     }
     r.doubt = judgeRun(r.screen, r.acceptedCount, r.postOk ? &r.post : nullptr, &r.postNote);
+    if (r.acceptedCount == 0 && pass.tof.size() == pass.t.size() && pass.t.size() < kMinOwnTrendPoints &&
+        pass.ocOrigin.rfind("fitted TOF trend", 0) == 0)
+        r.doubt = std::to_string(pass.t.size()) + " points on the pass's own TOF trend (no prediction): too few to tell "
+                  "a track from the trend's misfit; give a CPF (--cpf) to judge this pass";
     r.agreement = stationAgreement(pass, r.accepted, r.postOk ? &r.post : nullptr);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.ok = true;
@@ -202,6 +242,21 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
 PassRunResult runPass(const PassData& pass, const SlrParams& params, Feedback* fb) {
     // The pass is borrowed for the call (an aliasing pointer that owns nothing).
     return runTask<PassTask>({std::shared_ptr<const PassData>(std::shared_ptr<const void>(), &pass), {}}, params, fb);
+}
+
+BlockStatus blockStatus(const PassSummary& s) {
+    if (s.dataType == 1 || (s.ranges == 0 && s.normalPoints > 0))
+        return {"station normal points", std::to_string(s.normalPoints) + " normal-point records of the station's own"};
+    if (s.dataType == 2) return {"skipped", "sampled engineering data (H4 data type 2)"};
+    if (s.problem.empty() && s.ranges < kMinPassPoints)
+        return {"skipped", std::to_string(s.ranges) + " full-rate records; a pass needs at least " + std::to_string(kMinPassPoints)};
+    return {};
+}
+
+BlockStatus runStatus(const PassData& pass, const PassRunResult& r) {
+    if (!r.doubt.empty()) return {"doubtful", r.doubt};
+    if (r.acceptedCount == 0) return {"no signal", "no signal found"};
+    return {"ok", !pass.ocNote.empty() ? pass.ocNote : r.postNote};
 }
 
 }  // namespace lwb::core::slr

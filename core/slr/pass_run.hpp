@@ -18,6 +18,11 @@
 
 namespace lwb::core::slr {
 
+/// Below this many points, a pass without a prediction (O-C against its own TOF trend) that
+/// screens to nothing is doubtful, not "no signal": a quadratic over a minute of a LEO pass
+/// misses its range by tens of ns (hy2c_202109 pass 1: 5 points, ±36 ns, all data).
+inline constexpr size_t kMinOwnTrendPoints = 10;
+
 struct PassSettings {
     SlrParams params;
     std::string presetName;          ///< the preset applied ("" when none)
@@ -36,7 +41,7 @@ bool passSettings(const PassData& pass, const SlrParams& base, const std::vector
 struct StationAgreement {
     bool available = false;
     long long data = 0, noise = 0;        ///< station flags 2 and 1
-    double precision = NAN, recall = NAN; ///< of the screening
+    double precision = NAN, recall = NAN; ///< of the screening; precision NaN (0/0) when nothing is accepted
     double keptPrecision = NAN, keptRecall = NAN;  ///< after the post-fit (NaN without one)
 };
 StationAgreement stationAgreement(const PassData& pass, const std::vector<uint8_t>& accepted, const PostfitResult* post);
@@ -66,10 +71,25 @@ struct PassRunResult {
 /// of 50 points or more stays below 2: test parallelTracksAreFound).
 std::string parallelTracks(const std::vector<double>& residuals);
 
-/// Whether a pass's result can be trusted, judged the same way wherever it is run (the CLI's
-/// runPass and the workbench's live run): the screening's doubt (when points were accepted), or
-/// two parallel tracks in the post-fit's kept residuals. A doubtful result loses its normal
-/// points (*postNote says why). Returns the doubt ("" when none).
+/// The fewest points the binary image must find on a track that recovers more points than it
+/// found, unless the track stands kMinTrackSeparation times above the noise (judgeRun).
+inline constexpr size_t kMinImagePoints = 10;
+inline constexpr double kMinTrackSeparation = 20;
+
+/// How far a post-fit track stands above the noise: the points within ±3σ of the trend (σ the
+/// kept residuals' RMS), divided by the number the noise beside the band would put there if it
+/// were as dense inside (uniform over the residuals' range). Infinite with no point beside the
+/// band; NaN without residuals. Measured: true tracks of 2 %-signal lunar-like passes 49–82,
+/// 5 % 110–125; a track the recovery followed through noise 8.4 (docs/slr-detection.md).
+double trackSeparation(const PostfitResult& post);
+
+/// Whether a pass's result can be trusted, judged the same way wherever it is run (PassTask):
+/// - points accepted: the screening's doubt (no scale showed a clear track), or a track resting
+///   on fewer than kMinImagePoints image points with more recovered around them that does not
+///   stand kMinTrackSeparation above the noise (not on a filtered pass), or two parallel tracks in the post-fit's kept residuals;
+/// - nothing accepted: doubtful when no scale showed a clear track (a signal too sparse for the
+///   method), else "no signal found" is the answer and not a doubt.
+/// A doubtful result loses its normal points (*postNote says why). Returns the doubt ("" when none).
 std::string judgeRun(const ScreenResult& screen, size_t acceptedCount, PostfitResult* post, std::string* postNote);
 
 /// The normal-point context of a CRD pass, as the CLI's passSettings gives it (the C1 fire rate,
@@ -111,5 +131,19 @@ struct PassTask {
 
 /// PassTask from scratch on `pass` (no edits, nothing reused).
 PassRunResult runPass(const PassData& pass, const SlrParams& params, Feedback* fb = nullptr);
+
+/// What a block of a CRD file is called when a file's passes are screened (laserwb-cli slr
+/// --all-passes and the workbench's "Screen all passes" table alike).
+struct BlockStatus {
+    std::string status;  ///< "" (a pass to screen), "station normal points", "skipped", "ok", "no signal", "doubtful"
+    std::string reason;
+};
+/// Before screening: the station's own normal points (H4 data type 1, or only type-11 records),
+/// sampled engineering data (data type 2) and blocks of fewer than kMinPassPoints full-rate
+/// records are not passes to screen; anything else is ({"", ""}).
+BlockStatus blockStatus(const PassSummary& s);
+/// After screening: "doubtful" (r.doubt), "no signal" (nothing accepted) or "ok" (the O-C note
+/// or the post-fit's note as the reason).
+BlockStatus runStatus(const PassData& pass, const PassRunResult& r);
 
 }  // namespace lwb::core::slr

@@ -643,6 +643,11 @@ static void acceptIfFloorless(const NoiseFloorCheck& c, ScreenResult& res) {
         --res.noisePoints;
         ++res.floorlessAdded;
     }
+    // The image found nothing, but the track is there (a short filtered pass): not "no signal".
+    if (res.floorlessAdded > 0)
+        res.warnings.erase(std::remove_if(res.warnings.begin(), res.warnings.end(),
+                                          [](const std::string& w) { return w.find("no signal found") != std::string::npos; }),
+                           res.warnings.end());
 }
 
 ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,

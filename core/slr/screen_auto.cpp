@@ -236,7 +236,7 @@ NoiseFloorCheck checkNoiseFloor(const std::vector<double>& t, const std::vector<
                                 double maxBeyond) {
     NoiseFloorCheck c;
     const size_t n = std::min(t.size(), oc.size());
-    if (n < 20) return c;
+    if (n < 5) return c;  // kMinPassPoints: fewer is not a pass
     std::vector<size_t> order(n);
     std::iota(order.begin(), order.end(), size_t{0});
     const bool inOrder = std::is_sorted(t.begin(), t.begin() + static_cast<long>(n));
@@ -273,6 +273,21 @@ NoiseFloorCheck checkNoiseFloor(const std::vector<double>& t, const std::vector<
     // The central share tells a track over noise in a gate a few ns wide (a spike: 35 % within
     // ±σ/4 at 30 % signal) from a filtered track (20 % for a Gaussian, 25–33 % for the
     // station passes measured, with their tails).
+    if (n < kFloorShapePoints) {
+        // 5 to 49 points (a short LEO pass): too few for the shape of the distribution (a
+        // quantile ratio of 14 points is one or two points) or for a MAD (8 points of 60 ps
+        // jitter gave 32 ps, and a point at 5.2 of it). The plain standard deviation decides: a
+        // track within 1 ns (a noise point in the gate inflates it past that), at most one point
+        // in ten beyond 5 sigma.
+        double ss = 0;
+        for (double r : c.residualS) ss += r * r;
+        c.sigmaS = std::sqrt(ss / static_cast<double>(n - 1));
+        size_t out = 0;
+        for (double r : c.residualS) out += std::fabs(r) > 5 * c.sigmaS;
+        c.beyondFraction = static_cast<double>(out) / static_cast<double>(n);
+        c.floorless = c.sigmaS > 0 && c.sigmaS <= maxSigmaS && out <= n / 10;
+        return c;
+    }
     c.floorless = c.sigmaS > 0 && c.sigmaS <= maxSigmaS && c.peakedness >= 2.2 && c.centralFraction <= 0.34 &&
                   (c.beyondFraction <= maxBeyond || beyond <= 2);
     return c;

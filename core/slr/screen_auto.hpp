@@ -84,13 +84,17 @@ PiecewiseTrend robustPiecewiseTrend(const double* t, const double* oc, const std
 /// points within ±σ/4 (central) and beyond 5σ. Floorless when σ ≤ maxSigmaS, peakedness ≥ 2.2
 /// (uniform noise: 1.9), central ≤ 0.34 (Gaussian 0.20; a track over noise in a gate a few ns
 /// wide is a spike, 0.35) and the share beyond ≤ maxBeyond (or at most 2 points), with at
-/// least 20 points. residualS holds each point's O-C minus the trend (input order).
+/// least kFloorShapePoints points; from 5 to 49 points, σ is the plain standard deviation, ≤
+/// maxSigmaS, with at most one point in ten beyond 5σ. residualS holds each point's O-C minus the trend (input order).
 /// Limits, measured on simulated passes: a track with an ns-level jitter (diffuse debris
 /// ranging, σ ≈ 2 ns) is never called floorless (the paper's screening runs as before); noise
 /// confined within about 3 ns of the track (a gate that narrow, with most points noise) cannot
 /// be told from a filtered track's tails.
+/// Below this many points the noise-floor check judges the spread and the outliers only (the
+/// shape tests need more points than a short LEO pass has).
+inline constexpr size_t kFloorShapePoints = 50;
 struct NoiseFloorCheck {
-    bool checked = false;  ///< false with fewer than 20 points
+    bool checked = false;  ///< false with fewer than 5 points
     bool floorless = false;
     double sigmaS = 0, peakedness = 0, centralFraction = 0, beyondFraction = 0;
     std::vector<double> residualS;
