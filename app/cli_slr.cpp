@@ -33,7 +33,7 @@ namespace slr = core::slr;
 namespace {
 
 const char* kSlrUsage =
-    "usage: laserwb-cli slr INPUT [options] -o OUT.csv [--crd-out FILE] [--npt-out FILE]\n"
+    "usage: laserwb-cli slr INPUT [options] [-o OUT.csv] [--crd-out FILE] [--npt-out FILE] (at least one)\n"
     "Screens one SLR pass: signal extraction by binary image (paper 004; automatic scale by default),\n"
     "then a trend fit with k-sigma rejection and ILRS normal points. A summary goes to stderr.\n"
     "INPUT: a CRD file (v1 or v2; recognised by its H1 record, whatever the name) or an O-C CSV\n"
@@ -46,11 +46,17 @@ const char* kSlrUsage =
     "                        night); without it a CRD pass gets the day minimum of 6\n"
     "  --pass K              pass number in the CRD file, 1-based (1 = the first pass of the file);\n"
     "                        default: the first pass with full-rate (type 10) records\n"
-    "  --all-passes --out-dir DIR   every pass of the CRD file with the same options: DIR/passNNN.csv\n"
-    "                        (as -o) for each pass screened and DIR/summary.csv (one row per pass:\n"
-    "                        station, satellite, UTC start, duration, points, accepted, RMS, normal\n"
-    "                        points, agreement with the station's flags, status and reason); a pass\n"
-    "                        that cannot be processed is a failed row, the others go on. --cpf may\n"
+    "  --all-passes --out-dir DIR   a station's file of passes (a day's): every block of the CRD\n"
+    "                        file with the same options. Per screened pass DIR/passNNN.csv (as -o),\n"
+    "                        passNNN.frd (its full-rate block, flags 2 kept by the post-fit, 1 noise\n"
+    "                        or rejected) and passNNN.npt (its normal points, or the reason there are\n"
+    "                        none); DIR/normal_points.npt (every pass's normal points: the file a\n"
+    "                        station sends) and DIR/summary.csv (one row per block: station,\n"
+    "                        satellite, UTC start, duration, points, accepted, RMS, normal points,\n"
+    "                        agreement with the station's flags, status and reason). Status: ok,\n"
+    "                        no signal, doubtful, failed (the others go on), station normal points\n"
+    "                        (the station's own type-11 block), skipped (sampled engineering data, or\n"
+    "                        fewer than 5 records: the least a pass has, in every mode). --cpf may\n"
     "                        then be a folder: the CPF that fits each pass (satellite ids and time\n"
     "                        span) is picked; a pass no CPF fits is screened on its own TOF trend\n"
     "Parameters (automatic screening by default; each option replaces only its own parameter; every\n"
@@ -75,7 +81,7 @@ const char* kSlrUsage =
     "  --np-bin S            normal-point bin length in s (default: the ILRS length for the\n"
     "                        satellite's altitude; an O-C CSV has no altitude: no normal points\n"
     "                        unless --np-bin or a preset's altitude_km is given)\n"
-    "Outputs (each written whole or not at all; nothing is written when the run fails):\n"
+    "Outputs (at least one; each written whole or not at all; nothing is written when the run fails):\n"
     "  -o, --output OUT.csv  one row per input point, in input order:\n"
     "                        index,epoch_s,oc_s,class,region,residual_s,kept,station_flag\n"
     "                        index: 0-based row of the O-C CSV, or type-10 record of the CRD pass;\n"
@@ -84,12 +90,16 @@ const char* kSlrUsage =
     "                        filter flag (0 unknown, 1 noise, 2 data), empty for a CSV\n"
     "  --crd-out FILE        the CRD file with this pass's filter flags set: 2 accepted by the\n"
     "                        screening (signal or recovered), 1 noise; other passes unchanged\n"
-    "  --npt-out FILE        the normal points as a CRD normal-point file (the pass's headers)\n"
+    "  --npt-out FILE        the normal points as a CRD normal-point file (the pass's headers); with\n"
+    "                        none (no signal, no bin full enough, a doubtful pass) the file holds the\n"
+    "                        reason as a comment record '00 no normal points: ...' in their place\n"
     "                        (--crd-out and --npt-out need a CRD input)\n"
     "  -q, --quiet           no summary and no warnings on stderr (errors still)\n"
-    "Exit codes: 0 done, 1 bad input or failed run (nothing written), 2 usage error, 3 written but\n"
-    "doubtful: the accepted points cannot be told from noise, or two parallel tracks were merged (the\n"
-    "classes are written, no normal points), or --all-passes had passes that failed.\n";
+    "Exit codes: 0 done (\"no signal found\" is a result), 1 bad input or failed run (nothing\n"
+    "written), 2 usage error, 3 written but doubtful: the accepted points cannot be told from noise,\n"
+    "no scale shows a track, or two parallel tracks were merged (the classes are written, no normal\n"
+    "points; --all-passes: some pass is doubtful), 4 --all-passes wrote its outputs but some passes\n"
+    "failed (summary.csv says why).\n";
 
 std::string passList(const std::vector<slr::PassSummary>& passes) {
     std::string s;

@@ -160,6 +160,33 @@ class TestSlrCli : public QObject {
 private slots:
     void initTestCase() { QVERIFY(m_dir.isValid()); }
 
+    // ---------------------------------------------------------------- no normal point is a result (issue 29)
+    // --npt-out alone is enough; a pass that forms no normal point still has its file, with the
+    // reason in place of the records, and the exit code says which: 0 for "no signal found"
+    // (a fixed scale at which no region reaches the area limit), 3 for a doubtful pass
+    // (hy2c pass 1: 5 records on its own TOF trend). Never 1, and every output is there.
+    void noNormalPointIsAResult() {
+        if (!have() || !lwbtest::haveShared("slr/hy2c_202109.fr2")) QSKIP("shared SLR data absent");
+        const auto none = runCli({"slr", slr("7080_STELLA_crd_071220_2128_0.frd"), "--set", "screen.automatic=false", "--mag-t", "1",
+                                  "--mag-oc", "1e7", "--area-min", "1000", "--connectivity", "8", "--npt-out", p("none.npt")},
+                                 kTimeoutMs);
+        QVERIFY2(none.exitCode == 0, qPrintable(none.err));
+        QVERIFY(lwbtest::readAll(p("none.npt")).contains("\n00 no normal points: no signal found"));
+        QVERIFY2(none.err.contains("screening precision undefined (nothing accepted)"), qPrintable(none.err));
+        const auto doubtful = runCli({"slr", slr("hy2c_202109.fr2"), "--pass", "1", "--npt-out", p("d.npt"), "--crd-out", p("d.frd"),
+                                      "-o", p("d.csv")},
+                                     kTimeoutMs);
+        QCOMPARE(doubtful.exitCode, 3);
+        QVERIFY(QFile::exists(p("d.csv")) && QFile::exists(p("d.frd")));
+        const QByteArray npt = lwbtest::readAll(p("d.npt"));
+        QVERIFY2(npt.contains("\n00 no normal points: doubtful: 5 points on the pass's own TOF trend"), npt.constData());
+        QVERIFY(!npt.contains("\n11 "));
+        QVERIFY(npt.endsWith("H8\nH9\n"));
+        // No output at all is still a usage error.
+        QCOMPARE(runCli({"slr", slr("hy2c_202109.fr2")}).exitCode, 2);
+        noStrayFiles();
+    }
+
     // ---------------------------------------------------------------- end to end, CRD input
     void crdEndToEnd() {
         if (!have()) QSKIP("shared SLR data absent (../shared/data/slr)");
