@@ -11,10 +11,12 @@
 #include <QtTest>
 #include <Eigen/Dense>
 #include <cmath>
+#include <set>
 
 #include "core/sim/rng.hpp"
 #include "core/sim/slr_sim.hpp"
 #include "core/slr/crd.hpp"
+#include "core/slr/ilrs_tables.hpp"
 #include "core/slr/np_context.hpp"
 #include "core/slr/pass_input.hpp"
 #include "core/slr/pass_run.hpp"
@@ -105,6 +107,50 @@ sim::SlrSimParams hardCase(const QString& name) {
 class TestSlrHard : public QObject {
     Q_OBJECT
 private slots:
+    // ---------------------------------------------------------------- ILRS tables (issue 29)
+    // The shipped tables parse, and a pass takes its normal-point bin from the missions table
+    // and its station's day or night from the stations table: without a SINEX file, hy2c pass 6
+    // (GLSL, a night pass) forms the normal points it forms with the SLRF2014 SINEX given.
+    void ilrsTablesGiveBinAndStation() {
+        const auto& missions = slr::ilrsMissions();
+        QVERIFY(missions.size() >= 12);
+        std::set<std::string> ids;
+        for (const auto& m : missions) {
+            QVERIFY2(m.npBinS > 0 && m.altitudeKm > 0 && !m.source.empty(), m.name.c_str());
+            QVERIFY2(ids.insert(m.ilrsId).second, m.ilrsId.c_str());
+            // A bin from the altitude class agrees with the class of the nominal altitude.
+            if (m.source == "class") QCOMPARE(m.npBinS, slr::normalPointBinS(m.altitudeKm));
+        }
+        const slr::IlrsMission* j = slr::findMission("JASON1", "0105501");
+        QVERIFY(j && j->npBinS == 15);
+        QCOMPARE(slr::findMission("jason1", "105501"), j);  // the CRD v2 samples' spelling
+        QCOMPARE(slr::findMission("", "", 4378), j);        // by SIC
+        QCOMPARE(slr::findMission("no such satellite", "9999999"), static_cast<const slr::IlrsMission*>(nullptr));
+        QVERIFY(slr::ilrsStations().size() >= 150);
+        const slr::IlrsStation* mlrs = slr::findStation(7080);
+        QVERIFY(mlrs && std::fabs(mlrs->latDeg - 30.680) < 0.01 && std::fabs(mlrs->lonDeg + 104.015) < 0.01);
+        QCOMPARE(slr::findStation(1), static_cast<const slr::IlrsStation*>(nullptr));
+
+        if (!lwbtest::haveShared("slr/hy2c_202109.fr2")) QSKIP("shared data not found");
+        const slr::PassInputResult in = slr::loadPass(lwbtest::sharedPath("slr/hy2c_202109.fr2").toStdString(), 5, {});
+        QVERIFY2(in.ok, in.error.c_str());
+        const slr::SinexReadResult snx =
+            slr::readSinex(lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx").toStdString());
+        QVERIFY2(snx.ok, snx.error.c_str());
+        slr::PassSettings without, with;
+        std::string err;
+        QVERIFY(slr::passSettings(in.pass, slr::SlrParams{}, nullptr, "", nullptr, &without, &err));
+        QVERIFY(slr::passSettings(in.pass, slr::SlrParams{}, nullptr, "", &snx.file, &with, &err));
+        QCOMPARE(without.params.postfit.binLengthS, 30.0);  // HY-2C, 957 km: the 800-2000 km class
+        QVERIFY(std::fabs(without.params.postfit.stationLatDeg - with.params.postfit.stationLatDeg) < 0.01);
+        const slr::PassRunResult a = slr::runPass(in.pass, without.params), b = slr::runPass(in.pass, with.params);
+        QVERIFY(a.postOk && b.postOk);
+        QCOMPARE(a.post.normalPoints.size(), b.post.normalPoints.size());
+        QCOMPARE(a.post.normalPoints.size(), size_t(6));  // 3 points a bin by night (5 with the day minimum)
+        for (size_t k = 0; k < a.post.normalPoints.size(); ++k)
+            QVERIFY(std::fabs(a.post.normalPoints[k].ocS - b.post.normalPoints[k].ocS) < 1e-15);
+    }
+
     // ---------------------------------------------------------------- small passes (issue 29)
     // Short LEO passes of 10 to 20 filtered points are screened on their merits: a station's
     // pass of 10 points within ±0.9 ns (hy2c_202109 pass 2) once accepted nothing. The station

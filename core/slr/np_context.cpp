@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/common/text.hpp"
+#include "core/slr/ilrs_tables.hpp"
 #include "core/slr/solar.hpp"
 
 namespace lwb::core::slr {
@@ -29,8 +30,33 @@ std::vector<std::string> fillNormalPointContext(const CrdPass& pass, int cdpPad,
             notes.push_back("no C1 fire rate: return rate unknown");
         }
     }
+    // The normal-point bin: the ILRS missions table when the satellite is listed and the
+    // parameters leave the bin to the altitude (0).
+    if (!(p->binLengthS > 0)) {
+        const CrdTarget& t = pass.target;
+        const IlrsMission* m = findMission(t.name, t.ilrsId, t.sic == kCrdAbsent ? -1 : t.sic, t.norad == kCrdAbsent ? -1 : t.norad);
+        if (m && m->npBinS > 0) {
+            p->binLengthS = m->npBinS;
+            notes.push_back("normal-point bin " + formatDouble(m->npBinS, 6) + " s for " + m->name + " (ILRS missions table: " +
+                            m->source + ")");
+        } else {
+            notes.push_back("satellite not in the ILRS missions table (resources/ilrs/missions.csv): normal-point bin from "
+                            "its altitude");
+        }
+    }
     if (!sinex) {
-        notes.push_back("station position unknown (no SINEX): day or night not judged");
+        // The station's position from the shipped ILRS stations table (SLRF2014 SITE/ID).
+        const IlrsStation* st = findStation(cdpPad);
+        if (!st) {
+            notes.push_back("station " + std::to_string(cdpPad) +
+                            " not in the ILRS stations table and no SINEX: day or night not judged");
+            return notes;
+        }
+        p->stationLatDeg = st->latDeg;
+        p->stationLonDeg = st->lonDeg;
+        p->dayStartMjd = static_cast<double>(pass.startMjd());
+        notes.push_back("station " + std::to_string(cdpPad) + " (" + st->description + ") at " + formatFixed(st->latDeg, 3) +
+                        "°, " + formatFixed(st->lonDeg, 3) + "° (ILRS stations table): day or night from the Sun's elevation");
         return notes;
     }
     const long mjd = pass.startMjd();

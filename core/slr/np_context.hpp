@@ -15,10 +15,12 @@ namespace lwb::core::slr {
 /// field 6, "c1 0 ID TYPE WAVELENGTH FIRE_RATE ..."); the first C1 with a rate > 0. NaN when none.
 double crdFireRateHz(const CrdPass& pass);
 
-/// Fills params.fireRateHz (from C1, when the params have none), the station's geodetic latitude
-/// and longitude (SINEX position of the pass's CDP pad at its start) and the MJD of the day
-/// start, so that postfit() judges day or night per bin. Returns notes for the summary (what
-/// was found or why not); `sinex` may be null (the station is then unknown).
+/// Fills params.fireRateHz (from C1, when the params have none), the normal-point bin length
+/// (the ILRS missions table, when the params leave it at 0 and the satellite is listed), the
+/// station's geodetic latitude and longitude (SINEX position of the pass's CDP pad at its
+/// start; without a SINEX, the ILRS stations table) and the MJD of the day start, so that
+/// postfit() judges day or night per bin. Returns notes for the summary (what was found or why
+/// not); `sinex` may be null.
 std::vector<std::string> fillNormalPointContext(const CrdPass& pass, int cdpPad, const SinexFile* sinex,
                                                 PostfitParams* params);
 

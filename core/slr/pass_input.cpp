@@ -510,7 +510,8 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
         for (double v : d.tof) tmin = std::min(tmin, v);
         if (std::isfinite(tmin)) altitudeKm = 0.5 * tmin * kLight / 1000.0;
         r.warnings.push_back("satellite altitude estimated from the shortest range of the pass (" +
-                             formatFixed(altitudeKm, 0) + " km) for the normal-point bin");
+                             formatFixed(altitudeKm, 0) + " km), for the normal-point bin of a satellite the ILRS "
+                             "missions table does not list");
     }
     d.altitudeKm = altitudeKm;
     d.hasCrd = true;

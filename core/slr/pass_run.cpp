@@ -176,6 +176,7 @@ std::vector<std::string> passNormalPointContext(const PassData& pass, const Sine
     ctx.stationLatDeg = ctx.stationLonDeg = ctx.dayStartMjd = NAN;
     std::vector<std::string> notes = fillNormalPointContext(pass.crd->passes[size_t(pass.passIndex)], pass.cdpPad, stations, &ctx);
     if (!(pp->fireRateHz > 0)) pp->fireRateHz = ctx.fireRateHz;
+    if (!(pp->binLengthS > 0)) pp->binLengthS = ctx.binLengthS;
     if (!std::isfinite(pp->stationLatDeg)) {
         pp->stationLatDeg = ctx.stationLatDeg;
         pp->stationLonDeg = ctx.stationLonDeg;

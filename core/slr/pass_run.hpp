@@ -93,8 +93,9 @@ double trackSeparation(const PostfitResult& post);
 std::string judgeRun(const ScreenResult& screen, size_t acceptedCount, PostfitResult* post, std::string* postNote);
 
 /// The normal-point context of a CRD pass, as the CLI's passSettings gives it (the C1 fire rate,
-/// the station's position and day start from SINEX when given), written over the fields of *pp
-/// that the parameters leave unknown (fire rate 0, station position NaN). Notes for the summary.
+/// the ILRS missions table's bin length, the station's position and day start from SINEX when
+/// given, else from the ILRS stations table), written over the fields of *pp that the
+/// parameters leave unknown (fire rate 0, bin length 0, station position NaN). Notes for the summary.
 std::vector<std::string> passNormalPointContext(const PassData& pass, const SinexFile* stations, PostfitParams* pp);
 
 /// The post-fit's parameters for a pass: with neither a normal-point bin length nor the
