@@ -357,7 +357,8 @@ private:
         const bool ok = slr::writeScreenCsv(m_outs.stagingPath(out(i, ".csv")), pass, r.screen, r.accepted,
                                             r.postOk ? &r.post : nullptr, &err) &&
                         slr::writeScreenedCrd(m_outs.stagingPath(out(i, ".frd")), pass, flags, &err) &&
-                        slr::normalPointPass(pass, nps, noneReason, &npBlock, &err) &&
+                        slr::normalPointPass(pass, nps, slr::normalPointProduct(r.postOk ? &r.post : nullptr, &r.screen, noneReason),
+                                             &npBlock, &err) &&
                         slr::writeNormalPointFile(m_outs.stagingPath(out(i, ".npt")), {npBlock}, *pass.crd, &err);
         if (!ok) {
             m_early = fail(m_cmd, m_outs.unstaged(err));
@@ -623,7 +624,8 @@ int cmdSlr(int argc, char** argv) {
         return fail(cmd, named(out, outs.unstaged(err)));
     if (!crdOut.empty() && !slr::writeScreenedCrd(outs.stagingPath(crdOut), pass, r.accepted, &err))
         return fail(cmd, named(crdOut, outs.unstaged(err)));
-    if (!nptOut.empty() && !slr::writeNormalPointCrd(outs.stagingPath(nptOut), pass, nps, &err, noneReason))
+    if (!nptOut.empty() && !slr::writeNormalPointCrd(outs.stagingPath(nptOut), pass, nps, &err,
+                                                     slr::normalPointProduct(r.postOk ? &r.post : nullptr, &r.screen, noneReason)))
         return fail(cmd, named(nptOut, outs.unstaged(err)));
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet) {

@@ -212,8 +212,8 @@ class TestGoldenOutputs : public QObject {
                 if (l.startsWith("10 ")) flags += l.simplified().split(' ').value(5);
             out = "type-10 filter flags: " + flags + "\n";
         } else {
-            for (const QByteArray& l : lines)
-                if (l.startsWith("11 ")) out += l + "\n";
+            for (const QByteArray& l : lines)  // the normal points and the session statistics (record 50)
+                if (l.startsWith("11 ") || l.startsWith("50 ")) out += l + "\n";
         }
         return out;
     }

@@ -21,6 +21,7 @@
 #include "core/slr/crd.hpp"
 #include "core/slr/pass_input.hpp"
 #include "core/slr/pass_output.hpp"
+#include "lwb_version.hpp"
 #include "test_support.hpp"
 
 using lwbtest::runCli;
@@ -185,6 +186,34 @@ private slots:
         // No output at all is still a usage error.
         QCOMPARE(runCli({"slr", slr("hy2c_202109.fr2")}).exitCode, 2);
         noStrayFiles();
+    }
+
+    // The normal points are a station's product (issue 29): a fresh H1 production date
+    // (SOURCE_DATE_EPOCH 1700000000 = 2023-11-14 22:13 UTC), a C5 software record (CRD v2) and
+    // a record 50 with the pass's post-fit statistics (hy2c pass 6: RMS as the summary says,
+    // quality 1: at most 10 % noise).
+    void normalPointFileIsAStationProduct() {
+        if (!lwbtest::haveShared("slr/hy2c_202109.fr2")) QSKIP("shared SLR data absent");
+        const auto r = runCli({"slr", slr("hy2c_202109.fr2"), "--pass", "6", "--npt-out", p("h6.npt")}, kTimeoutMs,
+                              {"SOURCE_DATE_EPOCH=1700000000"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QList<QByteArray> lines = lwbtest::readAll(p("h6.npt")).split('\n');
+        QCOMPARE(lines.value(0).simplified(), QByteArray("H1 CRD 02 2023 11 14 22"));
+        QVERIFY(lines.contains(QByteArray("C5 0 lwbsw na na laserwb " LWB_VERSION)));
+        QByteArray rec50;
+        for (const QByteArray& l : lines)
+            if (l.startsWith("50 ")) rec50 = l;
+        const QList<QByteArray> f = rec50.split(' ');
+        QCOMPARE(f.size(), 7);
+        const QRegularExpression rms("RMS ([0-9.]+) ps");
+        const auto m = rms.match(r.err);
+        QVERIFY2(m.hasMatch(), qPrintable(r.err));
+        QCOMPARE(f[2].toDouble(), m.captured(1).toDouble());
+        QCOMPARE(f[6], QByteArray("1"));
+        const lwb::core::slr::CrdReadResult back = lwb::core::slr::readCrd(p("h6.npt").toStdString());
+        QVERIFY2(back.ok, back.error.c_str());
+        QVERIFY2(back.warnings.empty(), back.warnings.empty() ? "" : back.warnings.front().c_str());
+        QCOMPARE(back.file.passes.at(0).normalPoints.size(), size_t(6));
     }
 
     // ---------------------------------------------------------------- end to end, CRD input

@@ -381,7 +381,8 @@ bool SlrController::exportNormalPoints(const QString& path, QString* error) cons
         return false;
     }
     std::string err;
-    if (!writeNormalPointCrd(path.toStdString(), m_pass, m_run->post.normalPoints, &err)) {
+    if (!writeNormalPointCrd(path.toStdString(), m_pass, m_run->post.normalPoints, &err,
+                             normalPointProduct(&m_run->post, &m_run->screen, std::string()))) {
         *error = QString::fromStdString(err);
         return false;
     }

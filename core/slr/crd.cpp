@@ -1116,6 +1116,30 @@ std::string formatNormalPointRecord(const CrdNormalPoint& np, int version) {
 }
 
 namespace {
+// Record 50, session statistics: "50 CONFIG RMS SKEW KURTOSIS PEAK-MEAN QUALITY".
+std::string sessionRecord(const NormalPointProduct& p, const std::string& configId, int version) {
+    const bool v2 = version >= 2;
+    auto num = [&](double v, int decimals) { return std::isfinite(v) ? formatFixed(v, decimals) : std::string(v2 ? "na" : "-1"); };
+    return "50 " + (configId.empty() ? std::string("std") : configId) + " " + num(p.rmsPs, 1) + " " + num(p.skew, 3) + " " +
+           num(p.kurtosis, 3) + " " + num(p.peakMinusMeanPs, 1) + " " + std::to_string(p.quality);
+}
+
+// The H1's production date, and (v2) a C5 software record after the last configuration record.
+void stampProduct(const NormalPointProduct& product, CrdPass* p) {
+    for (CrdRecord& r : p->records) {
+        if (r.id != "h1" || product.year <= 0) continue;
+        const int v[4] = {product.year, product.month, product.day, product.hour};
+        for (size_t k = 0; k < 4; ++k) replaceToken(&r.text, 3 + k, std::to_string(v[k]));
+    }
+    if (product.softwareVersion.empty() || p->format.version < 2) return;
+    size_t lastC = std::string::npos;
+    for (size_t i = 0; i < p->records.size(); ++i)
+        if (p->records[i].id.size() == 2 && p->records[i].id[0] == 'c') lastC = i;
+    if (lastC == std::string::npos) return;
+    const CrdRecord c5{"C5 0 lwbsw na na laserwb " + product.softwareVersion, "c5", 0};
+    p->records.insert(p->records.begin() + static_cast<long>(lastC + 1), c5);
+}
+
 bool checkNormalPoints(const std::vector<CrdNormalPoint>& nps, std::string* error) {
     for (size_t i = 0; i < nps.size(); ++i) {
         const CrdNormalPoint& n = nps[i];
@@ -1190,7 +1214,8 @@ bool setNormalPoints(CrdPass* pass, const std::vector<CrdNormalPoint>& nps, Norm
 }
 
 bool makeNormalPointPass(const CrdPass& fullRate, const std::vector<CrdNormalPoint>& nps, CrdPass* out,
-                         std::string* error, const std::string& noneReason) {
+                         std::string* error, const NormalPointProduct& product) {
+    const std::string& noneReason = product.noneReason;
     try {
         if (!checkNormalPoints(nps, error)) return false;
         if (nps.empty() && noneReason.empty()) {
@@ -1232,8 +1257,10 @@ bool makeNormalPointPass(const CrdPass& fullRate, const std::vector<CrdNormalPoi
                 if (static_cast<unsigned char>(ch) < 0x20) ch = ' ';
             add.push_back(CrdRecord{why, "00", 0});
         }
+        if (product.session && !nps.empty()) add.push_back(CrdRecord{sessionRecord(product, nps.front().configId, p.format.version), "50", 0});
         const size_t at = h8 == std::string::npos ? p.records.size() : h8;
         p.records.insert(p.records.begin() + static_cast<long>(at), add.begin(), add.end());
+        stampProduct(product, &p);
         if (h8 == std::string::npos) p.records.push_back(CrdRecord{"H8", "h8", 0});
         p.endedWithH8 = true;
         if (!reparse(&p, error)) return false;

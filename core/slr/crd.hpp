@@ -302,9 +302,22 @@ bool setNormalPoints(CrdPass* pass, const std::vector<CrdNormalPoint>& nps, Norm
 /// A normal-point pass made from a full-rate one: same headers (H4 data type set to 1),
 /// configurations, met and calibration records, comments; no 10/12/30/42/9x records; the
 /// given normal points before the H8. Inherited H1..H3 are written into the new pass. With no
-/// normal points, `noneReason` (required then) goes before the H8 as a "00" comment record: a
-/// pass that forms none still has its file, saying why.
+/// normal points, `product.noneReason` (required then) goes before the H8 as a "00" comment
+/// record: a pass that forms none still has its file, saying why.
+struct NormalPointProduct {
+    std::string noneReason;
+    /// A record 50 (session statistics) after the normal points: RMS (ps) of the residuals about
+    /// the trend, skew, excess kurtosis, peak - mean (ps), data quality (0 undefined, 1 clear
+    /// data with little noise, 2 clear with much noise, 3 unclear).
+    bool session = false;
+    double rmsPs = NAN, skew = NAN, kurtosis = NAN, peakMinusMeanPs = NAN;
+    int quality = 0;
+    /// The H1's production date (year > 0): the file is a new product, not the station's.
+    int year = 0, month = 0, day = 0, hour = 0;
+    /// CRD v2: a C5 software record "C5 0 ID na na laserwb VERSION" after the last C record.
+    std::string softwareVersion;
+};
 bool makeNormalPointPass(const CrdPass& fullRate, const std::vector<CrdNormalPoint>& nps, CrdPass* out,
-                         std::string* error, const std::string& noneReason = {});
+                         std::string* error, const NormalPointProduct& product = {});
 
 }  // namespace lwb::core::slr

@@ -4,12 +4,15 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <ctime>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/output_set.hpp"
 #include "core/common/parallel.hpp"
 #include "core/common/text.hpp"
+#include "lwb_version.hpp"
 
 // The writers of a screened pass, beside the outputs they write (the loaders are in
 // pass_input.cpp): the per-point CSV, the CRD full rate with filter flags, the normal points.
@@ -146,7 +149,38 @@ bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::
     return writeCrd(path, out, error);
 }
 
-bool normalPointPass(const PassData& pass, const std::vector<NormalPoint>& nps, const std::string& noneReason, CrdPass* out,
+NormalPointProduct normalPointProduct(const PostfitResult* post, const ScreenResult* screen, const std::string& noneReason) {
+    NormalPointProduct p;
+    p.noneReason = noneReason;
+    if (post && post->ok && post->stats.n > 1) {
+        p.session = true;
+        p.rmsPs = post->stats.rms * 1e12;
+        p.skew = post->stats.skew;
+        p.kurtosis = post->stats.kurtosis;
+        p.peakMinusMeanPs = post->stats.peakMinusMean * 1e12;
+        const size_t all = screen ? screen->pointClass.size() : 0;
+        // 1: clear, little noise (at most 10 % of the points); 2: clear, much noise.
+        p.quality = all == 0 ? 0 : screen->noisePoints * 10 <= all ? 1 : 2;
+    }
+    // The production date: SOURCE_DATE_EPOCH when set (a reproducible file, the reproducible-
+    // builds convention), else now; UTC.
+    std::time_t now = std::time(nullptr);
+    if (const char* e = std::getenv("SOURCE_DATE_EPOCH")) {
+        long long v = 0;
+        if (parseLong(e, &v) && v >= 0) now = static_cast<std::time_t>(v);
+    }
+    std::tm tm{};
+    if (gmtime_r(&now, &tm)) {
+        p.year = tm.tm_year + 1900;
+        p.month = tm.tm_mon + 1;
+        p.day = tm.tm_mday;
+        p.hour = tm.tm_hour;
+    }
+    p.softwareVersion = LWB_VERSION;
+    return p;
+}
+
+bool normalPointPass(const PassData& pass, const std::vector<NormalPoint>& nps, const NormalPointProduct& product, CrdPass* out,
                      std::string* error) {
     if (!pass.hasCrd) {
         *error = "normal points as CRD need the pass's CRD headers (open the CRD file, not an O-C table)";
@@ -176,15 +210,15 @@ bool normalPointPass(const PassData& pass, const std::vector<NormalPoint>& nps, 
         c.returnRatePct = np.returnRatePct;
         recs.push_back(c);
     }
-    return makeNormalPointPass(full, recs, out, error, noneReason);
+    return makeNormalPointPass(full, recs, out, error, product);
 }
 
 bool writeNormalPointCrd(const std::string& path, const PassData& pass, const std::vector<NormalPoint>& nps,
-                         std::string* error, const std::string& noneReason) {
-    if (!pass.hasCrd) return normalPointPass(pass, nps, noneReason, nullptr, error);  // (says why)
+                         std::string* error, const NormalPointProduct& product) {
+    if (!pass.hasCrd) return normalPointPass(pass, nps, product, nullptr, error);  // (says why)
     if (!writablePassOutput(path, pass, error)) return false;
     CrdPass np;
-    if (!normalPointPass(pass, nps, noneReason, &np, error)) return false;
+    if (!normalPointPass(pass, nps, product, &np, error)) return false;
     return writeNormalPointFile(path, {std::move(np)}, *pass.crd, error);
 }
 

@@ -23,15 +23,21 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
 /// records without an O-C keep their flag; other passes unchanged.
 bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::vector<uint8_t>& accepted,
                       std::string* error);
-/// The normal points as a CRD normal-point file (headers of the pass, data type 1). With none
-/// (no signal, no bin full enough, a doubtful pass), `noneReason` is written in their place as
-/// a "00" comment record: "00 no normal points: REASON".
+/// What a normal-point file of ours says beyond its records (crd.hpp NormalPointProduct): why
+/// there are none ("" when there are), the post-fit's session statistics (record 50; quality 1
+/// when at most 10 % of the points are noise, else 2), the H1's production date
+/// (SOURCE_DATE_EPOCH when set, else now, UTC) and this program's C5 software record (v2).
+NormalPointProduct normalPointProduct(const PostfitResult* post, const ScreenResult* screen, const std::string& noneReason);
+
+/// The normal points as a CRD normal-point file (headers of the pass, data type 1), with
+/// `product`'s records. With none (no signal, no bin full enough, a doubtful pass), its
+/// noneReason is written in their place as a "00" comment record: "00 no normal points: REASON".
 bool writeNormalPointCrd(const std::string& path, const PassData& pass, const std::vector<NormalPoint>& nps,
-                         std::string* error, const std::string& noneReason = {});
+                         std::string* error, const NormalPointProduct& product = {});
 
 /// The normal-point block of writeNormalPointCrd, to be written with others (a station's
 /// normal-point file of a day: writeNormalPointFile).
-bool normalPointPass(const PassData& pass, const std::vector<NormalPoint>& nps, const std::string& noneReason, CrdPass* out,
+bool normalPointPass(const PassData& pass, const std::vector<NormalPoint>& nps, const NormalPointProduct& product, CrdPass* out,
                      std::string* error);
 /// Normal-point blocks as one CRD file (line ends and trailer like `like`, the file they came from).
 bool writeNormalPointFile(const std::string& path, std::vector<CrdPass> passes, const CrdFile& like, std::string* error);
