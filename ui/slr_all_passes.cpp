@@ -155,7 +155,11 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
                     const StationAgreement& a = run.agreement;
                     cells << QString::number(run.acceptedCount) << fixed(rms * 0.5 * 299792458.0 * 1e3, 2)
                           << (run.postOk ? QString::number(run.post.normalPoints.size()) : QString())
-                          << (a.available ? QString("%1 / %2").arg(fixed(a.precision, 3), fixed(a.recall, 3)) : QString())
+                          // (a precision of nothing accepted is 0/0: a dash, not a blank before the slash)
+                          << (a.available ? QString("%1 / %2").arg(std::isfinite(a.precision) ? fixed(a.precision, 3)
+                                                                                              : QString::fromUtf8("—"),
+                                                                   fixed(a.recall, 3))
+                                          : QString())
                           << fixed(run.seconds, 2);
                     // The CLI's status (core runStatus): ok, no signal or doubtful, with its reason.
                     const BlockStatus st = runStatus(p.pass, run);

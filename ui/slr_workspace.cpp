@@ -1180,6 +1180,11 @@ QString SlrWorkspace::summaryHtml(const SlrRun& run) const {
                                                  .arg(why.toHtmlEscaped());
         }
     } else {
+        // A doubtful pass with no post-fit (nothing accepted, or too few points on its own TOF
+        // trend) says so first, as the CLI's exit 3 does.
+        if (!run.doubt.empty())
+            statsHtml += tr("<b><span style='color:#c05000'>Doubtful, no normal points</span></b>: %1<br>")
+                             .arg(QString::fromStdString(run.doubt).toHtmlEscaped());
         statsHtml += tr("<b>Post-fit:</b> %1<br>").arg(QString::fromStdString(run.post.error).toHtmlEscaped());
     }
     statsHtml += tr("<br><b>Scale</b> mag_T %1 px/s, mag_OC %2 px/s, area ≥ %3 px, %4-connectivity%5 · C %6")

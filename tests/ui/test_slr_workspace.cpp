@@ -664,6 +664,10 @@ private slots:
         QVERIFY(c->hasPass());
         QVERIFY(c->waitIdle(60000));
         QVERIFY2(QString::fromStdString(c->run().doubt).contains("own TOF trend"), c->run().doubt.c_str());
+        // ... and the summary says it first (it showed only "Post-fit: 0 point(s) accepted").
+        QVERIFY2(ws->statsLabel()->text().contains("Doubtful, no normal points") &&
+                     ws->statsLabel()->text().contains("own TOF trend"),
+                 qPrintable(ws->statsLabel()->text()));
         emit list->activated(list->findData(3));
         QCOMPARE(c->selectedPass(), 3);
         QVERIFY(!c->hasPass());
@@ -714,6 +718,8 @@ private slots:
             } else if (status.startsWith("doubtful")) {
                 ++doubtful;
                 QCOMPARE(all->passOfRow(r), 0);
+                // Nothing accepted: precision 0/0 is a dash (it was a blank: " / 0.000").
+                QCOMPARE(t->item(r, SlrAllPassesDialog::ColAgreement)->text(), QString::fromUtf8("— / 0.000"));
             } else {
                 ++ok;
                 QVERIFY2(status.startsWith("ok"), qPrintable(status));
