@@ -102,6 +102,16 @@ sim::SlrSimParams hardCase(const QString& name) {
     return p;
 }
 
+// A simulated pass as the screening takes it (epochs, O-C as simulated, times of flight).
+slr::PassData passOf(const sim::SlrSimPass& s, double altitudeKm) {
+    slr::PassData pass;
+    pass.t = s.epochS;
+    pass.oc = s.ocS;
+    pass.tof = s.tofS;
+    pass.altitudeKm = altitudeKm;
+    return pass;
+}
+
 }  // namespace
 
 class TestSlrHard : public QObject {
@@ -191,12 +201,7 @@ private slots:
                 sp.jitterS = 60e-12;
                 const sim::SlrSimPass s = sim::simulateSlrPass(sp, seed);
                 QVERIFY2(s.ok, s.error.c_str());
-                slr::PassData pass;
-                pass.t = s.epochS;
-                pass.oc = s.ocS;
-                pass.tof = s.tofS;
-                pass.altitudeKm = sp.altitudeKm;
-                const slr::PassRunResult r = slr::runPass(pass, slr::SlrParams{});
+                const slr::PassRunResult r = slr::runPass(passOf(s, sp.altitudeKm), slr::SlrParams{});
                 QVERIFY2(r.ok, r.error.c_str());
                 QVERIFY2(r.acceptedCount == size_t(n),
                          qPrintable(QString("%1 points, seed %2: %3 accepted").arg(n).arg(seed).arg(r.acceptedCount)));
@@ -217,13 +222,8 @@ private slots:
             sp.signalFraction = 0.02;
             sp.gateS = 200e-9;
             const sim::SlrSimPass s = sim::simulateSlrPass(sp, seed);
-            slr::PassData pass;
-            pass.t = s.epochS;
-            pass.oc = s.ocS;
-            pass.tof = s.tofS;
-            pass.altitudeKm = sp.altitudeKm;
             *truth = s.isSignal;
-            return slr::runPass(pass, slr::SlrParams{});
+            return slr::runPass(passOf(s, sp.altitudeKm), slr::SlrParams{});
         };
         for (uint64_t seed = 1; seed <= 6; ++seed) {
             std::vector<uint8_t> truth;
