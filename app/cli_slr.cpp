@@ -280,7 +280,8 @@ private:
         m_outs.addOutput(nptPath());
         m_outs.addOutput(summaryPath());
         // summary.csv lists the set: written last; an earlier run's pass files go.
-        m_outs.setManifest(summaryPath(), m_dir, {"pass[0-9][0-9][0-9]*.csv", "pass[0-9][0-9][0-9]*.frd", "pass[0-9][0-9][0-9]*.npt"});
+        m_outs.setManifest(summaryPath(), m_dir,
+                           {"pass[0-9][0-9][0-9]*.csv", "pass[0-9][0-9][0-9]*.frd", "pass[0-9][0-9][0-9]*.npt", "normal_points.npt"});
         m_early = checkOutputs(m_cmd, m_outs);
         m_written.assign(m_n, false);
         m_progress = std::make_unique<Progress>("slr", m_n, m_quiet);
@@ -388,7 +389,7 @@ private:
     }
 
     int finish() {
-        m_progress->finish();
+        if (m_progress) m_progress->finish();
         std::string err;
         for (size_t i = 0; i < m_n; ++i)  // passes with no result have no files
             if (!m_written[i])

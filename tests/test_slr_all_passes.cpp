@@ -122,8 +122,12 @@ private slots:
     void blocksThatAreNotPassesAreListed() {
         const QString in = sharedPath("slr/crd201_all_samples.crd");
         if (!QFile::exists(in)) QSKIP("shared SLR data absent");
+        // An earlier run's products in the folder are not this run's: they go.
+        QVERIFY(QDir().mkpath(p("samples")));
+        QVERIFY(writeText(p("samples/normal_points.npt"), "H1 old\n") && writeText(p("samples/pass007.frd"), "old\n"));
         const CliRun r = runCli({"slr", in, "--all-passes", "--out-dir", p("samples")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(!QFile::exists(p("samples/pass007.frd")));
         QVERIFY2(r.err.contains("9 blocks: 0 screened, 0 doubtful, 0 failed, 6 station normal points, 3 skipped"), qPrintable(r.err));
         const CsvTable t = summary(p("samples/summary.csv"));
         QCOMPARE(t.rows.size(), size_t(9));
