@@ -53,7 +53,8 @@ const char* kSlrUsage =
     "                        none); DIR/normal_points.npt (every pass's normal points: the file a\n"
     "                        station sends) and DIR/summary.csv (one row per block: station,\n"
     "                        satellite, UTC start, duration, points, accepted, RMS, normal points,\n"
-    "                        agreement with the station's flags, status and reason). Status: ok,\n"
+    "                        agreement with the station's flags, status and reason; with a CPF the\n"
+    "                        range and time bias fitted to the kept O-C, with sigmas). Status: ok,\n"
     "                        no signal, doubtful, failed (the others go on), station normal points\n"
     "                        (the station's own type-11 block), skipped (sampled engineering data, or\n"
     "                        fewer than 5 records: the least a pass has, in every mode). --cpf may\n"
@@ -211,6 +212,7 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
                       << (post.binsTooSmall ? ", " + std::to_string(post.binsTooSmall) + " bins too small" : "") << ")\n";
         for (const auto& note : settings.notes) std::cerr << "  " << note << "\n";
     }
+    if (r.bias.ok) std::cerr << "  against the prediction: " << slr::describeBias(r.bias) << "\n";
     const slr::StationAgreement& g = r.agreement;
     if (g.available) {
         std::cerr << "  against the station's filter flags (" << g.data << " data, " << g.noise << " noise): screening precision "
@@ -260,7 +262,8 @@ public:
 private:
     static constexpr const char* kHeader =
         "pass,station,satellite,ilrs_id,start_utc,duration_s,points,accepted,rms_ps,rms_mm,normal_points,"
-        "station_precision,station_recall,oc_origin,status,reason,seconds,output\n";
+        "station_precision,station_recall,oc_origin,status,reason,seconds,output,range_bias_mm,range_bias_sigma_mm,"
+        "time_bias_us,time_bias_sigma_us\n";
 
     // The outputs' names, from the file's count of passes, so that every one is checked before any work.
     bool begin(size_t count) {
@@ -292,11 +295,19 @@ private:
     std::string nptPath() const { return m_dir + "/normal_points.npt"; }
     std::string out(size_t i, const char* ext) const { return m_dir + "/" + m_names[i] + ext; }
 
+    // range_bias_mm .. time_bias_sigma_us: the station's check against the prediction (CPF O-C only).
+    static std::string biasCells(const slr::PassBias& b) {
+        if (!b.ok) return ",,,";
+        const double mm = 0.5 * 299792458.0 * 1e3;
+        return core::formatFixed(b.rangeBiasS * mm, 2) + "," + core::formatFixed(b.rangeBiasSigmaS * mm, 2) + "," +
+               core::formatFixed(b.timeBiasS * 1e6, 3) + "," + core::formatFixed(b.timeBiasSigmaS * 1e6, 3);
+    }
+
     void row(const slr::PassSummary& s, size_t i, const std::string& status, const std::string& reason) {
         // duration empty, the records, accepted .. oc_origin empty, then status and reason.
         m_summary += std::to_string(i + 1) + "," + core::csvEscape(s.station) + "," + core::csvEscape(s.satellite) + "," +
                      core::csvEscape(s.ilrsId) + "," + s.start + ",," + std::to_string(s.ranges ? s.ranges : s.normalPoints) +
-                     ",,,,,,,," + status + "," + core::csvEscape(reason) + ",,\n";
+                     ",,,,,,,," + status + "," + core::csvEscape(reason) + ",,,,,,\n";
     }
 
     bool onPass(slr::CrdPass&& crdPass) {
@@ -385,7 +396,7 @@ private:
                      (r.postOk && !doubtful ? std::to_string(r.post.normalPoints.size()) : "0") + "," +
                      f4(r.agreement.precision) + "," + f4(r.agreement.recall) + "," + core::csvEscape(pass.ocOrigin) + "," +
                      st.status + "," + core::csvEscape(st.reason) + "," + core::formatFixed(r.seconds, 3) + "," + m_names[i] +
-                     ".csv\n";
+                     ".csv," + biasCells(r.bias) + "\n";
     }
 
     int finish() {

@@ -1187,6 +1187,8 @@ QString SlrWorkspace::summaryHtml(const SlrRun& run) const {
                              .arg(QString::fromStdString(run.doubt).toHtmlEscaped());
         statsHtml += tr("<b>Post-fit:</b> %1<br>").arg(QString::fromStdString(run.post.error).toHtmlEscaped());
     }
+    if (run.bias.ok)  // the station's check against the prediction (core passBias, as the CLI prints it)
+        statsHtml += tr("<br><b>Against the prediction</b>: %1").arg(QString::fromStdString(describeBias(run.bias)).toHtmlEscaped());
     statsHtml += tr("<br><b>Scale</b> mag_T %1 px/s, mag_OC %2 px/s, area ≥ %3 px, %4-connectivity%5 · C %6")
                      .arg(s.magT, 0, 'g', 4)
                      .arg(s.magOc, 0, 'g', 4)

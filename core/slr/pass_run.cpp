@@ -117,6 +117,63 @@ std::string parallelTracks(const std::vector<double>& residuals) {
            "workbench, or a narrower band) before forming normal points";
 }
 
+PassBias passBias(const PassData& pass, const std::vector<uint8_t>& kept) {
+    PassBias b;
+    const size_t n = pass.t.size();
+    if (pass.ocOrigin.rfind("CPF prediction", 0) != 0) {
+        b.why = "no prediction: the O-C is not against a CPF";
+        return b;
+    }
+    if (pass.tof.size() != n || pass.oc.size() != n || kept.size() != n || n < 3) {
+        b.why = "no times of flight";
+        return b;
+    }
+    std::vector<size_t> order(n);
+    for (size_t i = 0; i < n; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t c) { return pass.t[a] < pass.t[c]; });
+    // Normal equations of O-C = b + τ·rate over the kept points (rate in s/s of predicted TOF).
+    double s1 = 0, sx = 0, sxx = 0, sy = 0, sxy = 0;
+    std::vector<std::pair<double, double>> xy;
+    for (size_t k = 0; k < n; ++k) {
+        const size_t i = order[k];
+        if (!kept[i]) continue;
+        const size_t a = order[k == 0 ? 0 : k - 1], c = order[k + 1 == n ? n - 1 : k + 1];
+        const double dt = pass.t[c] - pass.t[a];
+        if (!(dt > 0)) continue;
+        const double rate = ((pass.tof[c] - pass.oc[c]) - (pass.tof[a] - pass.oc[a])) / dt;
+        if (!std::isfinite(rate)) continue;
+        xy.emplace_back(rate, pass.oc[i]);
+        s1 += 1;
+        sx += rate;
+        sxx += rate * rate;
+        sy += pass.oc[i];
+        sxy += rate * pass.oc[i];
+    }
+    const double det = s1 * sxx - sx * sx;
+    if (xy.size() < 3 || !(det > 0) || !(det > 1e-12 * s1 * sxx)) {
+        b.why = "too few kept points, or no change of the range rate to tell a time bias by";
+        return b;
+    }
+    b.timeBiasS = (s1 * sxy - sx * sy) / det;
+    b.rangeBiasS = (sy - b.timeBiasS * sx) / s1;
+    double rss = 0;
+    for (const auto& [x, y] : xy) rss += (y - b.rangeBiasS - b.timeBiasS * x) * (y - b.rangeBiasS - b.timeBiasS * x);
+    const double s2 = rss / static_cast<double>(xy.size() - 2);
+    b.rangeBiasSigmaS = std::sqrt(s2 * sxx / det);
+    b.timeBiasSigmaS = std::sqrt(s2 * s1 / det);
+    b.points = static_cast<long long>(xy.size());
+    b.ok = true;
+    return b;
+}
+
+std::string describeBias(const PassBias& b) {
+    if (!b.ok) return "no range or time bias: " + b.why;
+    const double mm = 0.5 * 299792458.0 * 1e3;  // two-way s -> one-way mm
+    return "range bias " + formatFixed(b.rangeBiasS * mm, 1) + " ± " + formatFixed(b.rangeBiasSigmaS * mm, 1) +
+           " mm (one-way), time bias " + formatFixed(b.timeBiasS * 1e6, 2) + " ± " + formatFixed(b.timeBiasSigmaS * 1e6, 2) +
+           " µs (" + std::to_string(b.points) + " points)";
+}
+
 double trackSeparation(const PostfitResult& post) {
     const double sigma = post.stats.rms;
     if (!(sigma > 0) || post.residuals.empty()) return NAN;
@@ -235,6 +292,7 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
         r.doubt = std::to_string(pass.t.size()) + " points on the pass's own TOF trend (no prediction): too few to tell "
                   "a track from the trend's misfit; give a CPF (--cpf) to judge this pass";
     r.agreement = stationAgreement(pass, r.accepted, r.postOk ? &r.post : nullptr);
+    if (r.postOk && r.doubt.empty()) r.bias = passBias(pass, r.post.kept);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.ok = true;
     return r;

@@ -46,6 +46,21 @@ struct StationAgreement {
 };
 StationAgreement stationAgreement(const PassData& pass, const std::vector<uint8_t>& accepted, const PostfitResult* post);
 
+/// The station's quality check against a prediction: a range bias b and a time bias τ fitted to
+/// the kept points' O-C by least squares, O-C = b + τ · d(TOF_predicted)/dt (TOF_predicted =
+/// TOF − O-C, its rate by central differences in time), with 1-sigma errors from the residual
+/// scatter. Only when the O-C comes from a CPF prediction (ok false otherwise, with why).
+struct PassBias {
+    bool ok = false;
+    std::string why;                       ///< why there is none
+    double rangeBiasS = NAN, rangeBiasSigmaS = NAN;  ///< two-way
+    double timeBiasS = NAN, timeBiasSigmaS = NAN;
+    long long points = 0;
+};
+PassBias passBias(const PassData& pass, const std::vector<uint8_t>& kept);
+/// "range bias 12.3 ± 0.4 mm (one-way), time bias 5.1 ± 0.8 µs (150 points)", or why none.
+std::string describeBias(const PassBias& b);
+
 struct PassRunResult {
     bool ok = false;
     std::string error;                 ///< the screening failed
@@ -63,6 +78,7 @@ struct PassRunResult {
     double seconds = 0;                ///< wall time of screening + post-fit
     bool screenReused = false;         ///< the earlier run's screening was reused (only post-fit or edits changed)
     bool scaleReused = false;          ///< screened at the scales an earlier run chose (only C changed)
+    PassBias bias;                     ///< range and time bias against the prediction (CPF O-C only)
 };
 
 /// Two parallel tracks in a track's residuals: "" or what was found. The sorted residuals are
