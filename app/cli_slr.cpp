@@ -16,6 +16,7 @@
 #include "cli_common.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
+#include "core/common/parallel.hpp"
 #include "core/common/text.hpp"
 #include "core/slr/np_context.hpp"
 #include "core/slr/pass_input.hpp"
@@ -25,6 +26,7 @@
 #include "core/slr/presets.hpp"
 #include "core/slr/slr_params.hpp"
 #include "core/slr/screen.hpp"
+#include "core/slr/screen_auto.hpp"
 
 namespace lwb::cli {
 
@@ -60,6 +62,8 @@ const char* kSlrUsage =
     "                        fewer than 5 records: the least a pass has, in every mode). --cpf may\n"
     "                        then be a folder: the CPF that fits each pass (satellite ids and time\n"
     "                        span) is picked; a pass no CPF fits is screened on its own TOF trend\n"
+"  --threads N           with --all-passes: passes screened side by side on N threads (default 0:\n"
+"                        every core); the products are the same for any N\n"
     "Parameters (automatic screening by default; each option replaces only its own parameter; every\n"
     "parameter with its range and meaning: --help-params):\n"
     "  --config FILE.json    parameters (as --print-config writes them)\n"
@@ -234,11 +238,20 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
 // than kMinPassPoints full-rate records ("skipped"). A pass that cannot be processed is
 // "failed" with its reason; the others go on. The file is read pass by pass (slr::streamCrd):
 // one pass is held at a time, whatever the size of the file.
+// The scale search's threads set for a scope (every core again after it).
+struct SearchThreads {
+    explicit SearchThreads(int n) { slr::setScaleSearchThreads(n); }
+    ~SearchThreads() { slr::setScaleSearchThreads(0); }
+    SearchThreads(const SearchThreads&) = delete;
+    SearchThreads& operator=(const SearchThreads&) = delete;
+};
+
 class AllPasses {
 public:
     AllPasses(std::string cmd, std::string input, const slr::PassInputParams& in, const RunInputs& ri, std::string dir,
-              bool quiet)
-        : m_cmd(std::move(cmd)), m_input(std::move(input)), m_in(in), m_ri(ri), m_dir(std::move(dir)), m_quiet(quiet) {
+              int threads, bool quiet)
+        : m_cmd(std::move(cmd)), m_input(std::move(input)), m_in(in), m_ri(ri), m_dir(std::move(dir)), m_threads(threads),
+          m_quiet(quiet) {
         m_in.cpfFallback = true;  // a pass the CPF does not fit is screened on its own TOF trend, with a note
     }
 
@@ -287,7 +300,13 @@ private:
                            {"pass[0-9][0-9][0-9]*.csv", "pass[0-9][0-9][0-9]*.frd", "pass[0-9][0-9][0-9]*.npt", "normal_points.npt"});
         m_early = checkOutputs(m_cmd, m_outs);
         m_written.assign(m_n, false);
+        m_rows.assign(m_n, std::string());
         m_progress = std::make_unique<Progress>("slr", m_n, m_quiet);
+        const size_t cores = core::coresFor(m_threads);
+        // The passes fill the cores; each pass's scale search on one (the same trials and choice
+        // on any number: test_slr_screen scaleSearchIsTheSameOnOneThreadAndMany).
+        if (cores > 1 && m_n > 1) m_searchOnOne = std::make_unique<SearchThreads>(1);
+        m_workers = std::make_unique<core::OrderedWorkers<Job>>(cores, 4 * cores, [this](Job& j) { work(j); });
         return m_early == kOk;
     }
 
@@ -305,7 +324,7 @@ private:
 
     void row(const slr::PassSummary& s, size_t i, const std::string& status, const std::string& reason) {
         // duration empty, the records, accepted .. oc_origin empty, then status and reason.
-        m_summary += std::to_string(i + 1) + "," + core::csvEscape(s.station) + "," + core::csvEscape(s.satellite) + "," +
+        m_rows[i] = std::to_string(i + 1) + "," + core::csvEscape(s.station) + "," + core::csvEscape(s.satellite) + "," +
                      core::csvEscape(s.ilrsId) + "," + s.start + ",," + std::to_string(s.ranges ? s.ranges : s.normalPoints) +
                      ",,,,,,,," + status + "," + core::csvEscape(reason) + ",,,,,,\n";
     }
@@ -327,17 +346,17 @@ private:
         // The block is written back as a file of its own (passNNN.frd, .npt): it ends with an H9.
         one->file.trailer.push_back(slr::CrdRecord{"H9", "h9", 0});
         const slr::PassSummary ps = slr::summarisePasses(one->file).front();
-        m_progress->update(++m_done);
         if (const slr::BlockStatus b = slr::blockStatus(ps); !b.status.empty()) {
+            m_progress->update(++m_done);
             row(ps, i, b.status, b.reason);
             ++(b.status == "skipped" ? m_skipped : m_stationNps);
             return true;
         }
-        const slr::PassInputResult p =
+        slr::PassInputResult p =
             slr::passFromCrd(std::shared_ptr<const slr::CrdReadResult>(std::move(one)), m_input, 0, m_in, m_sources);
         auto failed = [&](const std::string& why) {
-            row(ps, i, "failed", why.substr(0, why.find('\n')));
-            ++m_failed;
+            m_progress->update(++m_done);
+            failedRow(ps, i, why);
             return true;
         };
         if (!p.ok) return failed(p.error);
@@ -348,38 +367,80 @@ private:
                                m_ri.stations, &settings, &err))
             return failed(err);
         if ((m_early = m_ri.options->apply(m_cmd, *m_ri.args, &settings.params)) != kOk) return false;
-        const slr::PassRunResult r = slr::runPass(p.pass, settings.params);
-        if (!r.ok) return failed(r.error);
-        if (!writePass(i, p.pass, r)) return false;
-        screenedRow(i, ps, p.pass, r);
+        Job job;
+        job.i = i;
+        job.ps = ps;
+        job.pass = std::move(p.pass);
+        job.params = std::move(settings.params);
+        m_workers->submit(std::move(job));
+        return gather(m_workers->takeReady());
+    }
+
+    void failedRow(const slr::PassSummary& ps, size_t i, const std::string& why) {
+        row(ps, i, "failed", why.substr(0, why.find('\n')));
+        ++m_failed;
+    }
+
+    // A pass read and set up, waiting for its screening; then its result and the error of
+    // writing its files ("" when written).
+    struct Job {
+        size_t i;
+        slr::PassSummary ps;
+        slr::PassData pass;
+        slr::SlrParams params;
+        slr::PassRunResult r;
+        std::string writeError;
+        slr::CrdPass npBlock;  ///< its normal points as a CRD block
+        bool npsFormed = false;
+    };
+
+    // Screening and writing a pass, on a worker thread.
+    void work(Job& j) const {
+        j.r = slr::runPass(j.pass, j.params);
+        if (j.r.ok) writePass(j);
+    }
+
+    // The passes screened so far, in the file's order: their rows.
+    bool gather(std::vector<Job> finished) {
+        for (Job& j : finished) {
+            m_progress->update(++m_done);
+            if (!j.r.ok) {
+                failedRow(j.ps, j.i, j.r.error);
+                continue;
+            }
+            if (!j.writeError.empty()) {
+                m_early = fail(m_cmd, m_outs.unstaged(j.writeError));
+                return false;
+            }
+            m_written[j.i] = true;
+            if (!m_like) m_like = j.pass.crd;
+            if (j.npsFormed) m_dayNps.push_back(std::move(j.npBlock));
+            screenedRow(j.i, j.ps, j.pass, j.r);
+        }
         return true;
     }
 
-    // The pass's CSV, flagged full-rate block and normal points; its normal-point block is kept
-    // for the file of the day.
-    bool writePass(size_t i, const slr::PassData& pass, const slr::PassRunResult& r) {
-        std::string err;
+    // The pass's CSV, flagged full-rate block and normal points (on a worker thread: it writes
+    // only its own staging files and its own job); its normal-point block is kept for the file of
+    // the day.
+    void writePass(Job& j) const {
+        const slr::PassData& pass = j.pass;
+        const slr::PassRunResult& r = j.r;
         const bool doubtful = !r.doubt.empty();
         const std::vector<slr::NormalPoint> none;
         const std::vector<slr::NormalPoint>& nps = !doubtful && r.postOk ? r.post.normalPoints : none;
         const std::string noneReason = nps.empty() ? noNormalPointReason(r) : std::string();
         // The station's flags: what the post-fit kept (its rejects are excluded), else the screening's.
         const std::vector<uint8_t>& flags = r.postOk ? r.post.kept : r.accepted;
-        slr::CrdPass npBlock;
-        const bool ok = slr::writeScreenCsv(m_outs.stagingPath(out(i, ".csv")), pass, r.screen, r.accepted,
+        std::string& err = j.writeError;
+        const bool ok = slr::writeScreenCsv(m_outs.stagingPath(out(j.i, ".csv")), pass, r.screen, r.accepted,
                                             r.postOk ? &r.post : nullptr, &err) &&
-                        slr::writeScreenedCrd(m_outs.stagingPath(out(i, ".frd")), pass, flags, &err) &&
+                        slr::writeScreenedCrd(m_outs.stagingPath(out(j.i, ".frd")), pass, flags, &err) &&
                         slr::normalPointPass(pass, nps, slr::normalPointProduct(r.postOk ? &r.post : nullptr, &r.screen, noneReason),
-                                             &npBlock, &err) &&
-                        slr::writeNormalPointFile(m_outs.stagingPath(out(i, ".npt")), {npBlock}, *pass.crd, &err);
-        if (!ok) {
-            m_early = fail(m_cmd, m_outs.unstaged(err));
-            return false;
-        }
-        if (!nps.empty()) m_dayNps.push_back(std::move(npBlock));
-        if (!m_like) m_like = pass.crd;
-        m_written[i] = true;
-        return true;
+                                             &j.npBlock, &err) &&
+                        slr::writeNormalPointFile(m_outs.stagingPath(out(j.i, ".npt")), {j.npBlock}, *pass.crd, &err);
+        j.npsFormed = ok && !nps.empty();  // (only passes with normal points go in the day's file)
+        if (!ok && err.empty()) err = out(j.i, ".npt") + ": not written";
     }
 
     void screenedRow(size_t i, const slr::PassSummary& ps, const slr::PassData& pass, const slr::PassRunResult& r) {
@@ -388,7 +449,7 @@ private:
         const double duration = pass.t.empty() ? 0 : pass.t.back() - pass.t.front();
         const double rms = r.postOk ? r.post.stats.rms : NAN;
         const slr::BlockStatus st = slr::runStatus(pass, r);
-        m_summary += std::to_string(i + 1) + "," + core::csvEscape(ps.station) + "," + core::csvEscape(ps.satellite) + "," +
+        m_rows[i] = std::to_string(i + 1) + "," + core::csvEscape(ps.station) + "," + core::csvEscape(ps.satellite) + "," +
                      core::csvEscape(ps.ilrsId) + "," + ps.start + "," + core::formatFixed(duration, 1) + "," +
                      std::to_string(pass.t.size()) + "," + std::to_string(r.acceptedCount) + "," +
                      (std::isfinite(rms) ? core::formatFixed(rms * 1e12, 1) : "") + "," +
@@ -400,6 +461,7 @@ private:
     }
 
     int finish() {
+        if (m_workers && !gather(m_workers->drain())) return m_early;
         if (m_progress) m_progress->finish();
         std::string err;
         for (size_t i = 0; i < m_n; ++i)  // passes with no result have no files
@@ -412,7 +474,9 @@ private:
         } else {
             m_outs.drop(nptPath());  // (no pass formed a normal point: summary.csv says why)
         }
-        if (!core::writeFileAtomic(m_outs.stagingPath(summaryPath()), kHeader + m_summary, &err))
+        std::string summary = kHeader;
+        for (const std::string& r : m_rows) summary += r;
+        if (!core::writeFileAtomic(m_outs.stagingPath(summaryPath()), summary, &err))
             return fail(m_cmd, m_outs.unstaged(err));
         if (int rc = commitOutputs(m_cmd, m_outs)) return rc;
         m_folder->keep();
@@ -433,6 +497,7 @@ private:
     slr::PassInputParams m_in;
     const RunInputs& m_ri;
     std::string m_dir;
+    int m_threads;  ///< --threads, 0 = every core
     bool m_quiet;
     slr::PassSources m_sources;
     std::unique_ptr<FolderForOutputs> m_folder;
@@ -440,17 +505,24 @@ private:
     std::vector<std::string> m_names;
     std::vector<bool> m_written;
     std::unique_ptr<Progress> m_progress;
-    std::string m_summary, m_firstProblem;
+    std::vector<std::string> m_rows;  ///< summary.csv's rows, one per block in the file's order
+    std::string m_firstProblem;
     std::vector<slr::CrdPass> m_dayNps;
     std::shared_ptr<const slr::CrdFile> m_like;
     size_t m_n = 0, m_done = 0, m_unreadable = 0;
     size_t m_screened = 0, m_doubtful = 0, m_failed = 0, m_skipped = 0, m_stationNps = 0;
     int m_early = kOk;
+    // Passes screened side by side while the file is read (a station's day is many passes, most
+    // too small to fill the cores alone); the products do not depend on the number of cores:
+    // each pass is screened alone and what is gathered is gathered in the file's order. At most
+    // four passes per core are held. (Last: its threads stop before the rest goes.)
+    std::unique_ptr<SearchThreads> m_searchOnOne;
+    std::unique_ptr<core::OrderedWorkers<Job>> m_workers;
 };
 
 int screenAllPasses(const std::string& cmd, const std::string& input, const slr::PassInputParams& in, const RunInputs& ri,
-                    const std::string& dir, bool quiet) {
-    return AllPasses(cmd, input, in, ri, dir, quiet).run();
+                    const std::string& dir, int threads, bool quiet) {
+    return AllPasses(cmd, input, in, ri, dir, threads, quiet).run();
 }
 
 }  // namespace
@@ -460,6 +532,7 @@ struct SlrPlan {
     std::string input, out, crdOut, nptOut, outDir;
     bool allPasses = false, csvInput = false;
     long long passK = 0;  ///< --pass K (1-based), 0 when not given
+    long long threads = 0;  ///< --threads (--all-passes), 0 = every core
 };
 
 // The usage checks of cmdSlr (exit 2, nothing read or written): the input and outputs, the
@@ -481,9 +554,10 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
         if (outDir.empty()) return fail(cmd, "--all-passes needs --out-dir DIR (each pass's CSV and summary.csv go there)", kUsage);
         for (const char* o : {"-o", "--output", "--crd-out", "--npt-out", "--pass"})
             if (a.has(o)) return fail(cmd, std::string(o) + " is for one pass; --all-passes writes DIR/passNNN.csv and DIR/summary.csv", kUsage);
-    } else if (!outDir.empty()) {
-        return fail(cmd, "--out-dir goes with --all-passes", kUsage);
+    } else if (!outDir.empty() || a.has("--threads")) {
+        return fail(cmd, std::string(outDir.empty() ? "--threads" : "--out-dir") + " goes with --all-passes", kUsage);
     }
+
     pl->out = a.has("-o") ? a.value("-o") : a.value("--output");
     const std::string& out = pl->out;
     pl->crdOut = a.value("--crd-out");
@@ -505,7 +579,8 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
     if (a.has("--satellite") && !a.has("--preset"))
         return fail(cmd, "--satellite selects a preset entry; give --preset FILE with it", kUsage);
     std::string err;
-    if (!a.getInt("--pass", 1, 1000000, &pl->passK, &err)) return fail(cmd, err, kUsage);
+    if (!a.getInt("--pass", 1, 1000000, &pl->passK, &err) || !a.getInt("--threads", 0, 256, &pl->threads, &err))
+        return fail(cmd, err, kUsage);
     {  // Bad options and config are usage errors before anything is read.
         slr::SlrParams probe = cliDefaults();
         if (int rc = params.apply(cmd, a, &probe)) return rc;
@@ -541,7 +616,7 @@ int cmdSlr(int argc, char** argv) {
                                                                  {"--np-bin", "postfit.bin_length_s"}});
     params.declare(a);
     for (const char* o : {"--cpf", "--stations", "--satellite", "--preset", "--pass", "-o", "--output", "--crd-out", "--npt-out",
-                          "--out-dir"})
+                          "--out-dir", "--threads"})
         a.option(o, true);
     for (const char* o : {"--quiet", "-q", "--help", "-h", "--help-params", "--all-passes"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail(cmd, a.error(), kUsage);
@@ -586,7 +661,7 @@ int cmdSlr(int argc, char** argv) {
         if (!snx.ok) return fail(cmd, named(a.value("--stations"), snx.error));
     }
     const RunInputs ri{presets, a.has("--preset"), a.value("--satellite"), snx.ok ? &snx.file : nullptr, &params, &a};
-    if (allPasses) return screenAllPasses(cmd, input, in, ri, plan.outDir, quiet);
+    if (allPasses) return screenAllPasses(cmd, input, in, ri, plan.outDir, static_cast<int>(plan.threads), quiet);
 
     // ---- the pass ----
     const int passIndex = a.has("--pass") ? static_cast<int>(passK - 1) : -1;

@@ -13,6 +13,8 @@
 #include "cli_commands.hpp"
 #include "cli_common.hpp"
 #include "core/common/atomic_file.hpp"
+#include "core/common/csv.hpp"
+#include "core/common/parallel.hpp"
 #include "core/common/text.hpp"
 #include "core/sim/slr_sim.hpp"
 #include "core/slr/oc_csv.hpp"
@@ -158,7 +160,11 @@ const char* kBenchUsage =
     "End-to-end SLR screening benchmark: for 10^4, 10^5 and 10^6 points (or N), a simulated pass is\n"
     "written to a temporary CSV (epoch_s,oc_s,truth); a fresh process then parses it, screens it\n"
     "(automatic mode) and runs the post-fit with normal points, and reports the times and its peak\n"
-    "resident memory (getrusage). Prints a Markdown table. Defaults: kind khz, signal fraction 0.1.\n";
+    "resident memory (getrusage). Prints a Markdown table. Defaults: kind khz, signal fraction 0.1.\n"
+    "  --day N    instead: a station's day of N simulated passes (khz, leo and conventional in turn,\n"
+    "             --points each, default 20000) in one CRD file, screened by 'slr --all-passes' in a\n"
+    "             fresh process on 1 thread and on every core: wall and CPU time, peak memory, and\n"
+    "             whether the products are the same.\n";
 
 struct BenchRow {
     double parse = 0, screen = 0, autoScale = 0, postfit = 0, total = 0;
@@ -221,12 +227,115 @@ bool inChild(Fn fn, BenchRow* row) {
     return true;
 }
 
+
+// One CRD file of several simulated passes: the first file's H1 and H2, each pass's H3 .. H8, one H9.
+std::string dayFile(const std::vector<std::string>& passes) {
+    std::string day;
+    for (size_t k = 0; k < passes.size(); ++k) {
+        const std::string& text = passes[k];
+        const size_t h3 = text.find("\nH3");
+        const size_t h9 = text.find("\nH9");
+        if (h3 == std::string::npos || h9 == std::string::npos) return {};
+        if (k == 0) day += text.substr(0, h3 + 1);
+        day += text.substr(h3 + 1, h9 - h3);
+    }
+    return day + "H9\n";
+}
+
+struct DayRun {
+    double wall = 0, cpu = 0, peakMb = 0;
+    int exitCode = -1;
+};
+
+// laserwb-cli slr DAY --all-passes --out-dir DIR --threads T in a child process.
+DayRun runDay(const std::string& day, const std::string& dir, int threads) {
+    DayRun r;
+    const std::string t = std::to_string(threads);
+    const auto t0 = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) return r;
+    if (pid == 0) {
+        execl("/proc/self/exe", "laserwb-cli", "slr", day.c_str(), "--all-passes", "--out-dir", dir.c_str(), "--threads",
+              t.c_str(), "-q", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    int status = 0;
+    struct rusage ru {};
+    if (wait4(pid, &status, 0, &ru) != pid) return r;
+    r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.cpu = static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) + 1e-6 * static_cast<double>(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+    r.peakMb = static_cast<double>(ru.ru_maxrss) / 1024.0;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+// The products of two runs, byte for byte (summary.csv without its seconds column).
+bool sameProducts(const std::string& a, const std::string& b, size_t passes) {
+    auto read = [](const std::string& path) {
+        std::ifstream f(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(f), {});
+    };
+    auto withoutSeconds = [](const std::string& path) {  // (the table, its seconds column out)
+        core::CsvReadResult t = core::readCsv(path);
+        const int col = t.table.column("seconds");
+        if (!t.ok || col < 0) return std::vector<std::vector<std::string>>{};
+        for (auto& row : t.table.rows) row.erase(row.begin() + col);
+        return t.table.rows;
+    };
+    const auto rows = withoutSeconds(a + "/summary.csv");
+    if (rows.empty() || rows != withoutSeconds(b + "/summary.csv")) return false;
+    std::vector<std::string> names = {"normal_points.npt"};
+    for (size_t i = 1; i <= passes; ++i) {
+        char n[16];
+        std::snprintf(n, sizeof n, "pass%03zu", i);
+        for (const char* ext : {".csv", ".frd", ".npt"}) names.push_back(n + std::string(ext));
+    }
+    for (const std::string& n : names)
+        if (read(a + "/" + n) != read(b + "/" + n)) return false;
+    return true;
+}
+
+// bench slr --day N: a day of N passes on one thread and on every core.
+int benchDay(const std::string& cmd, long long passes, long long points, long long seed) {
+    std::string dir = "/tmp/laserwb-bench-day-XXXXXX";
+    if (!mkdtemp(dir.data())) return fail(cmd, "cannot create a temporary folder");
+    const sim::SlrKind kinds[] = {sim::SlrKind::Khz, sim::SlrKind::Leo, sim::SlrKind::Conventional};
+    std::vector<std::string> texts;
+    for (long long k = 0; k < passes; ++k) {
+        sim::SlrSimParams p = sim::slrSimPreset(kinds[k % 3]);
+        p.points = points;
+        const sim::SlrSimPass pass = sim::simulateSlrPass(p, static_cast<uint64_t>(seed + k));
+        if (!pass.ok) return fail(cmd, pass.error);
+        texts.push_back(sim::slrPassCrd(p, pass));
+    }
+    const std::string day = dir + "/day.frd", one = dir + "/one", all = dir + "/all";
+    std::string err;
+    const std::string text = dayFile(texts);
+    texts.clear();
+    if (text.empty() || !core::writeFileAtomic(day, text, &err)) return fail(cmd, err.empty() ? "cannot build the day file" : err);
+    const DayRun r1 = runDay(day, one, 1), rn = runDay(day, all, 0);
+    const bool same = sameProducts(one, all, static_cast<size_t>(passes));
+    std::cout << "A station's day: " << passes << " simulated passes of " << points << " points (khz, leo, conventional in turn), "
+              << core::formatFixed(static_cast<double>(text.size()) / 1e6, 1) << " MB of CRD; 'slr --all-passes' on "
+              << core::coresFor(0) << " cores.\n\n"
+              << "| passes | wall (s) | CPU (s) | cores busy | peak RSS (MB) | exit |\n|---|---|---|---|---|---|\n";
+    for (const auto& [label, r] : {std::pair<std::string, DayRun>{"one at a time (--threads 1; its scale search on every core)", r1},
+                                   {"side by side (default; each search on one core)", rn}})
+        std::cout << "| " << label << " | " << core::formatFixed(r.wall, 3) << " | " << core::formatFixed(r.cpu, 3) << " | "
+                  << core::formatFixed(r.cpu / r.wall, 2) << " | " << core::formatFixed(r.peakMb, 1) << " | " << r.exitCode << " |\n";
+    std::cout << "\nspeed-up " << core::formatFixed(r1.wall / rn.wall, 2) << "x; products "
+              << (same ? "identical" : "DIFFERENT") << "\n";
+    const int rc = std::system(("rm -rf '" + dir + "'").c_str());
+    (void)rc;
+    if (r1.exitCode != 0 || rn.exitCode != 0) return fail(cmd, "a run of the day failed (exit " + std::to_string(r1.exitCode) + ", " + std::to_string(rn.exitCode) + ")");
+    return same ? kOk : fail(cmd, "the products on 1 thread and on every core differ");
+}
 }  // namespace
 
 int cmdBenchSlr(int argc, char** argv) {
     const std::string cmd = "bench slr";
     Args a(cmd, kBenchUsage);
-    for (const char* o : {"--points", "--kind", "--signal-fraction", "--seed"}) a.option(o, true);
+    for (const char* o : {"--points", "--kind", "--signal-fraction", "--seed", "--day"}) a.option(o, true);
     for (const char* o : {"--help", "-h"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
@@ -243,6 +352,9 @@ int cmdBenchSlr(int argc, char** argv) {
         !a.getDouble("--signal-fraction", 0.001, 1, &fraction, &err))
         return fail(cmd, err, kUsage);
     if (!a.positional().empty()) return fail(cmd, "no positional arguments expected", kUsage);
+    long long day = 0;
+    if (!a.getInt("--day", 1, 10000, &day, &err)) return fail(cmd, err, kUsage);
+    if (day > 0) return benchDay(cmd, day, points > 0 ? points : 20000, seed);
     std::vector<long long> sizes = {10000, 100000, 1000000};
     if (points > 0) sizes = {points};
     std::string dir = "/tmp/laserwb-bench-slr-XXXXXX";

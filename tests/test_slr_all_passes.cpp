@@ -254,6 +254,31 @@ private slots:
         QVERIFY(!QFile::exists(p("day/pass2000.csv")));
     }
 
+    // Issue 29: passes are screened side by side while the file is read, and gathered in the
+    // file's order. The products of a real day of 54 passes (one doubtful) must be the same on
+    // one thread and on three (more than this machine's cores, so that passes finish out of
+    // order): every pass file byte for byte, summary.csv cell for cell but its wall-time column.
+    void passesSideBySideGiveTheSameProducts() {
+        const QString in = sharedPath("slr/blits_201206.frd");
+        if (!QFile::exists(in)) QSKIP("shared SLR data absent");
+        QCOMPARE(runCli({"slr", in, "--all-passes", "--out-dir", p("t1"), "--threads", "1", "-q"}).exitCode, 3);
+        QCOMPARE(runCli({"slr", in, "--all-passes", "--out-dir", p("t3"), "--threads", "3", "-q"}).exitCode, 3);
+        const QStringList files = QDir(p("t1")).entryList(QDir::Files, QDir::Name);
+        QCOMPARE(QDir(p("t3")).entryList(QDir::Files, QDir::Name), files);
+        QVERIFY2(files.size() == 3 * 54 + 2, qPrintable(files.join(' ')));  // passNNN.csv/.frd/.npt, the day's NPT, summary
+        for (const QString& f : files) {
+            if (f == "summary.csv") continue;
+            QVERIFY2(readAll(p("t1/" + f)) == readAll(p("t3/" + f)), qPrintable(f));
+        }
+        CsvTable a = summary(p("t1/summary.csv")), b = summary(p("t3/summary.csv"));
+        const int sec = a.column("seconds");
+        QVERIFY(sec >= 0 && a.rows.size() == 54);
+        for (CsvTable* t : {&a, &b})
+            for (auto& row : t->rows) row.erase(row.begin() + sec);
+        QCOMPARE(b.rows, a.rows);
+        for (size_t i = 0; i < a.rows.size(); ++i) QCOMPARE(a.rows[i][0], std::to_string(i + 1));  // the file's order
+    }
+
     void usage() {
         const QString in = sharedPath("slr/hy2c_202109.fr2");
         if (!QFile::exists(in)) QSKIP("shared SLR data absent");
@@ -263,6 +288,11 @@ private slots:
         r = runCli({"slr", in, "--all-passes", "--out-dir", p("x"), "--pass", "2"});
         QCOMPARE(r.exitCode, 2);
         r = runCli({"slr", in, "--out-dir", p("x"), "-o", p("x.csv")});
+        QCOMPARE(r.exitCode, 2);
+        r = runCli({"slr", in, "-o", p("x.csv"), "--threads", "2"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("--threads goes with --all-passes"));
+        r = runCli({"slr", in, "--all-passes", "--out-dir", p("x"), "--threads", "-1"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY(!QFileInfo::exists(p("x")));
     }

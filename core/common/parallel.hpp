@@ -7,8 +7,11 @@
 // cache line of its own (alignas(64)) is not slowed by another's writes.
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
+#include <deque>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -77,5 +80,102 @@ size_t parallelForEach(size_t n, int threads, Feedback* fb, Job&& job) {
     });
     return done;
 }
+
+
+/// Items of a stream worked on side by side while the stream is still being read, and handed
+/// back in the order they came: the reader submit()s each item, work(item) runs on one of
+/// `threads` worker threads, and takeReady() returns the finished items at the head of the order
+/// (drain() waits for all). At most `window` items are held: submit waits, when the window is
+/// full, until the oldest is finished (the reader then takes it). work must not throw (an item
+/// records its own failure). The destructor stops the workers after their current item; items
+/// not started are dropped.
+template <class Item>
+class OrderedWorkers {
+public:
+    template <class Work>
+    OrderedWorkers(size_t threads, size_t window, Work work)
+        : m_window(std::max<size_t>(1, window)), m_work(std::move(work)) {
+        for (size_t k = 0; k < std::max<size_t>(1, threads); ++k)
+            m_threads.emplace_back([this] {
+                adviseThreadHeap();
+                loop();
+            });
+    }
+    ~OrderedWorkers() {
+        {
+            const std::lock_guard<std::mutex> lock(m_lock);
+            m_stop = true;
+        }
+        m_wake.notify_all();
+        for (auto& t : m_threads) t.join();
+    }
+    OrderedWorkers(const OrderedWorkers&) = delete;
+    OrderedWorkers& operator=(const OrderedWorkers&) = delete;
+
+    void submit(Item item) {
+        std::unique_lock<std::mutex> lock(m_lock);
+        m_done.wait(lock, [this] { return m_slots.size() < m_window || m_slots.front().finished; });
+        m_slots.push_back(Slot{std::move(item), false, false});
+        m_wake.notify_one();
+    }
+
+    std::vector<Item> takeReady() {
+        const std::lock_guard<std::mutex> lock(m_lock);
+        return popFinished();
+    }
+
+    std::vector<Item> drain() {
+        std::unique_lock<std::mutex> lock(m_lock);
+        m_done.wait(lock, [this] {
+            return std::all_of(m_slots.begin(), m_slots.end(), [](const Slot& s) { return s.finished; });
+        });
+        return popFinished();
+    }
+
+private:
+    struct Slot {
+        Item item;
+        bool started, finished;
+    };
+
+    std::vector<Item> popFinished() {
+        std::vector<Item> out;
+        while (!m_slots.empty() && m_slots.front().finished) {
+            out.push_back(std::move(m_slots.front().item));
+            m_slots.pop_front();  // (a deque keeps the other slots where they are)
+        }
+        return out;
+    }
+
+    void loop() {
+        std::unique_lock<std::mutex> lock(m_lock);
+        for (;;) {
+            Slot* next = nullptr;
+            m_wake.wait(lock, [&] {
+                for (Slot& s : m_slots)
+                    if (!s.started) {
+                        next = &s;
+                        return true;
+                    }
+                return m_stop;
+            });
+            if (m_stop) return;
+            next->started = true;
+            lock.unlock();
+            m_work(next->item);
+            lock.lock();
+            next->finished = true;
+            m_done.notify_all();
+        }
+    }
+
+    size_t m_window;
+    std::function<void(Item&)> m_work;
+    std::mutex m_lock;
+    std::condition_variable m_wake, m_done;
+    std::deque<Slot> m_slots;
+    bool m_stop = false;
+    std::vector<std::thread> m_threads;  // (last: they start once the rest is built)
+};
 
 }  // namespace lwb::core
