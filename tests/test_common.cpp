@@ -239,6 +239,44 @@ private slots:
         }
 #endif
     }
+
+    // parallel.hpp OrderedWorkers (slr --all-passes): items come back in the order they were
+    // submitted however their work finishes (the early ones here take longest), never more than
+    // the window is held, and a destructor with items not started returns.
+    void orderedWorkersKeepTheOrder() {
+        struct Item {
+            int index = 0, result = 0;
+        };
+        std::atomic<int> running{0}, mostRunning{0};
+        std::vector<int> gathered;
+        {
+            OrderedWorkers<Item> w(3, 4, [&](Item& it) {
+                const int now = ++running;
+                for (int m = mostRunning; now > m && !mostRunning.compare_exchange_weak(m, now);) {
+                }
+                std::this_thread::sleep_for(std::chrono::milliseconds(it.index % 4 == 0 ? 12 : 1));
+                it.result = it.index * it.index;
+                --running;
+            });
+            for (int k = 0; k < 40; ++k) {
+                w.submit(Item{k, 0});
+                for (const Item& it : w.takeReady()) {
+                    QCOMPARE(it.result, it.index * it.index);
+                    gathered.push_back(it.index);
+                }
+                QVERIFY(k + 1 - int(gathered.size()) <= 5);  // the window (4), and the one submitted
+            }
+            for (const Item& it : w.drain()) gathered.push_back(it.index);
+        }
+        QCOMPARE(int(gathered.size()), 40);
+        for (int k = 0; k < 40; ++k) QCOMPARE(gathered[size_t(k)], k);
+        QVERIFY(mostRunning.load() >= 2);  // side by side
+        QVERIFY(mostRunning.load() <= 3);
+        {  // stopped with items waiting: returns after the ones under way
+            OrderedWorkers<Item> w(1, 8, [](Item&) { std::this_thread::sleep_for(std::chrono::milliseconds(5)); });
+            for (int k = 0; k < 8; ++k) w.submit(Item{k, 0});
+        }
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCommon)
