@@ -1,4 +1,5 @@
 #include "ui/slr_all_passes.hpp"
+#include "ui/table_csv.hpp"
 
 #include <QDateTime>
 #include <QFileDialog>
@@ -201,18 +202,7 @@ void SlrAllPassesDialog::cancel() {
 }
 
 bool SlrAllPassesDialog::exportCsv(const QString& path, QString* error) const {
-    std::string text;
-    for (int c = 0; c < ColCount; ++c)
-        text += (c ? "," : "") + core::csvEscape(m_table->horizontalHeaderItem(c)->text().toStdString());
-    text += "\n";
-    for (int r = 0; r < m_table->rowCount(); ++r) {
-        for (int c = 0; c < ColCount; ++c) text += (c ? "," : "") + core::csvEscape(m_table->item(r, c)->text().toStdString());
-        text += "\n";
-    }
-    std::string err;
-    if (core::writeFileAtomic(path.toStdString(), text, &err)) return true;
-    if (error) *error = QString::fromStdString(err);
-    return false;
+    return writeTableCsv(m_table, path, error);
 }
 
 int SlrAllPassesDialog::passOfRow(int row) const {

@@ -18,6 +18,7 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -30,6 +31,7 @@
 #include "ui/params_command.hpp"
 #include "ui/param_slider.hpp"
 #include "ui/slr_all_passes.hpp"
+#include "ui/slr_station_nps.hpp"
 #include "ui/session_json.hpp"
 #include "ui/slr_params_panel.hpp"
 #include "ui/workspace_layout.hpp"
@@ -40,7 +42,7 @@ using namespace core::slr;
 
 namespace {
 const QColor kSignal(31, 119, 180), kRecovered(44, 160, 44), kNoise(150, 150, 150), kRejected(214, 39, 40),
-    kNormalPoint(0, 0, 0), kForced(255, 127, 14);
+    kNormalPoint(0, 0, 0), kForced(255, 127, 14), kStationNp(0, 160, 160);
 constexpr size_t kMaxShown = 40000;  // points per graph shown; more are thinned with a fixed stride
 constexpr double kMmPerPs = 0.149896229;  // 1 ps two-way = c / 2 · 1 ps of range, one-way
 
@@ -332,7 +334,13 @@ QWidget* SlrWorkspace::buildPlotArea() {
     auto* bottom = new QWidget(this);
     auto* bl = new QHBoxLayout(bottom);
     bl->setContentsMargins(0, 0, 0, 0);
-    bl->addWidget(m_histPlot, 2);
+    // The residual histogram, and the station's normal points beside ours when a file is open.
+    m_bottomTabs = new QTabWidget(bottom);
+    m_bottomTabs->addTab(m_histPlot, tr("Residual histogram"));
+    m_stationNps = new SlrStationNpPanel(bottom);
+    m_bottomTabs->addTab(m_stationNps, tr("Station normal points"));
+    m_bottomTabs->setTabToolTip(1, tr("Open the station's CRD normal points of the pass: drawn over ours, differences bin by bin"));
+    bl->addWidget(m_bottomTabs, 2);
     m_stats = new QLabel(bottom);
     m_stats->setTextFormat(Qt::RichText);
     m_stats->setWordWrap(true);  // as wide as the scroll area's viewport (a wider minimum cut it on the right)
@@ -357,6 +365,20 @@ QWidget* SlrWorkspace::buildPlotArea() {
     });
     connect(all, &QPushButton::clicked, this, [this] {
         if (!screenAllPasses()) QMessageBox::information(this, tr("Screen all passes"), tr("Open a CRD file first."));
+    });
+    connect(m_stationNps, &SlrStationNpPanel::openRequested, this, [this] {
+        QSettings st;
+        const QString path = QFileDialog::getOpenFileName(this, tr("The station's normal points"),
+                                                          st.value("paths/slrInputs", st.value("paths/slr")).toString(),
+                                                          tr("CRD normal points (*.npt *.np2 *.crd);;All files (*)"));
+        if (path.isEmpty()) return;
+        st.setValue("paths/slrInputs", QFileInfo(path).absolutePath());
+        QString err;
+        if (!setStationNormalPoints(path, &err)) QMessageBox::warning(this, tr("Cannot use the file"), err);
+    });
+    connect(m_stationNps, &SlrStationNpPanel::changed, this, [this] {
+        if (m_controller->hasRun()) showRun(m_controller->run());
+        emit modified();
     });
     connect(home, &QPushButton::clicked, this, &SlrWorkspace::resetView);
     connect(m_viewCombo, qOverload<int>(&QComboBox::activated), this, [this](int i) { setResidualView(i == 1); });
@@ -902,6 +924,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
     const QCPRange xr = m_ocPlot->xAxis->range(), yr = m_ocPlot->yAxis->range();
     // The main plot: O-C (ns) or the residual about the post-fit trend (ps two-way), by class.
     const bool residual = m_residual && run.post.ok;
+    if (m_stationNps->hasFile()) m_stationNps->update(p, run.post.ok ? &run.post : nullptr);
     drawMainPlot(run, residual);
     drawImage(run);
     if (fresh || residual != m_ocPlot->property("residualShown").toBool()) {
@@ -1012,6 +1035,22 @@ void SlrWorkspace::drawMainPlot(const SlrRun& run, bool residual) {
             py << (residual ? np.meanResidualS * 1e12 : np.ocS * 1e9);
         }
         fill(keyed(scatter(m_ocPlot, tr("normal points (%1)").arg(px.size()), kNormalPoint, QCPScatterStyle::ssDiamond, 8), "np"), px, py);
+        // The station's normal points over ours: hollow, larger, another colour.
+        const NpComparison& cmp = m_stationNps->comparison();
+        if (cmp.ok) {
+            QVector<double> qx, qy;
+            for (const NpDifference& d : cmp.rows) {
+                const double y = residual ? d.stationResidualS * 1e12 : d.stationOcS * 1e9;
+                if (d.match == NpDifference::Match::OursOnly || !std::isfinite(y)) continue;
+                qx << d.stationT;
+                qy << y;
+            }
+            QCPGraph* g = keyed(m_ocPlot->addGraph(), "stationnp");
+            g->setName(tr("station normal points (%1)").arg(qx.size()));
+            g->setLineStyle(QCPGraph::lsNone);
+            g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(kStationNp, 2), Qt::NoBrush, 12));
+            fill(g, qx, qy);
+        }
     }
     m_ocPlot->yAxis->setLabel(residual ? tr("O-C − trend (ps, two-way)") : tr("O-C (ns, two-way)"));
     m_ocPlot->yAxis2->setVisible(residual);
@@ -1238,6 +1277,7 @@ QJsonObject SlrWorkspace::saveState() const {
     o["pass"] = m_controller->pass().passIndex;
     o["demo"] = m_path.isEmpty() && m_controller->hasPass();
     o["main_plot"] = m_residual ? "residual" : "oc";
+    if (m_stationNps->hasFile()) o["station_npt"] = m_stationNps->path();
     // The schema's JSON: its two sections, every field.
     const QJsonObject params = toQtJson(slrSchema().toJson(m_controller->params()));
     for (auto it = params.begin(); it != params.end(); ++it) o[it.key()] = it.value();
@@ -1251,7 +1291,8 @@ QJsonObject SlrWorkspace::saveState() const {
 
 bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
                                 const std::vector<std::string>& at) {
-    if (!checkSessionKeys(o, {"path", "cpf", "sinex", "pass", "demo", "forced", "screen", "postfit", "main_plot"}, "slr", error, doc, at))
+    if (!checkSessionKeys(o, {"path", "cpf", "sinex", "pass", "demo", "forced", "screen", "postfit", "main_plot", "station_npt"}, "slr",
+                          error, doc, at))
         return false;
     // Every parameter from the session over the defaults (the sections the schema writes).
     core::Json j = core::Json::object();
@@ -1298,6 +1339,21 @@ bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core
     m_controller->forcePoints(in, true);
     m_controller->forcePoints(out, false);
     m_params->setParams(m_controller->params());
+    if (const QString npt = o["station_npt"].toString(); npt != m_stationNps->path() && !setStationNormalPoints(npt, error))
+        return false;
+    return true;
+}
+
+bool SlrWorkspace::setStationNormalPoints(const QString& path, QString* error) {
+    if (path.isEmpty()) {
+        m_stationNps->clear();
+    } else {
+        if (!m_stationNps->load(path, error)) return false;
+        m_bottomTabs->setCurrentWidget(m_stationNps);
+    }
+    if (m_controller->hasRun()) showRun(m_controller->run());
+    else m_stationNps->update(m_controller->pass(), nullptr);
+    emit modified();
     return true;
 }
 

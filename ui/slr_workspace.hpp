@@ -21,12 +21,14 @@ class QCPRange;
 class QCPColorMap;
 
 class QHBoxLayout;
+class QTabWidget;
 
 namespace lwb::ui {
 
 class ParamSlider;
 class SlrParamsPanel;
 class SlrAllPassesDialog;
+class SlrStationNpPanel;
 
 class SlrWorkspace : public QWidget {
     Q_OBJECT
@@ -45,6 +47,12 @@ public:
     QCustomPlot* histPlot() const { return m_histPlot; }
     QLabel* statsLabel() const { return m_stats; }  ///< the run's summary beside the histogram
     QLabel* hoverLabel() const { return m_hover; }
+    /// The station's normal points beside ours: the table under the plots (a tab beside the
+    /// histogram) and the overlay on the main plot.
+    SlrStationNpPanel* stationNpPanel() const { return m_stationNps; }
+    /// Opens a station's CRD normal-point file to compare with; "" stops comparing. False with
+    /// *error (the file in use kept).
+    bool setStationNormalPoints(const QString& path, QString* error);
 
     /// What a box drawn on the main plot does.
     enum class BoxMode { Pan, Zoom, ForceIn, ForceOut };
@@ -137,6 +145,8 @@ private:
     QVector<double> m_y;           ///< per point: the main plot's value (ns, or ps in the residual view)
     QVector<const char*> m_class;  ///< per point: its class in the last run
     QPointer<SlrAllPassesDialog> m_all;
+    SlrStationNpPanel* m_stationNps;
+    QTabWidget* m_bottomTabs;
 };
 
 }  // namespace lwb::ui

@@ -85,6 +85,10 @@ const std::vector<IlrsStation>& ilrsStations() {
     return stations;
 }
 
+const IlrsMission* findMission(const CrdTarget& t) {
+    return findMission(t.name, t.ilrsId, t.sic == kCrdAbsent ? -1 : t.sic, t.norad == kCrdAbsent ? -1 : t.norad);
+}
+
 const IlrsMission* findMission(const std::string& name, const std::string& ilrsId, long sic, long norad) {
     const auto& all = ilrsMissions();
     const long id = idNumber(ilrsId);

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/slr/crd.hpp"
+
 namespace lwb::core::slr {
 
 struct IlrsMission {
@@ -29,6 +31,8 @@ const std::vector<IlrsStation>& ilrsStations();
 /// else NORAD, else name (letters and digits only, any case: "JASON1" is "Jason-1"). Null when
 /// none; ids that are empty or not numbers are not compared.
 const IlrsMission* findMission(const std::string& name, const std::string& ilrsId, long sic = -1, long norad = -1);
+/// The same for a CRD H3 record (its absent SIC and NORAD not compared).
+const IlrsMission* findMission(const CrdTarget& target);
 /// The station of a CDP pad id; null when not listed.
 const IlrsStation* findStation(int pad);
 

@@ -33,8 +33,7 @@ std::vector<std::string> fillNormalPointContext(const CrdPass& pass, int cdpPad,
     // The normal-point bin: the ILRS missions table when the satellite is listed and the
     // parameters leave the bin to the altitude (0).
     if (!(p->binLengthS > 0)) {
-        const CrdTarget& t = pass.target;
-        const IlrsMission* m = findMission(t.name, t.ilrsId, t.sic == kCrdAbsent ? -1 : t.sic, t.norad == kCrdAbsent ? -1 : t.norad);
+        const IlrsMission* m = findMission(pass.target);
         if (m && m->npBinS > 0) {
             p->binLengthS = m->npBinS;
             notes.push_back("normal-point bin " + formatDouble(m->npBinS, 6) + " s for " + m->name + " (ILRS missions table: " +

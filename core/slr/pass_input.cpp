@@ -1,5 +1,7 @@
 #include "core/slr/pass_input.hpp"
 
+#include "core/slr/ilrs_tables.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +13,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
 #include "core/slr/cpf.hpp"
+#include "core/slr/ilrs_tables.hpp"
 #include "core/slr/oc_csv.hpp"
 #include "core/slr/sinex.hpp"
 #include "core/slr/slr_time.hpp"
@@ -509,7 +512,9 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
         double tmin = INFINITY;
         for (double v : d.tof) tmin = std::min(tmin, v);
         if (std::isfinite(tmin)) altitudeKm = 0.5 * tmin * kLight / 1000.0;
-        r.warnings.push_back("satellite altitude estimated from the shortest range of the pass (" +
+        // (said only when it matters: the missions table's bin wins for a satellite it lists)
+        if (!findMission(pass.target))
+            r.warnings.push_back("satellite altitude estimated from the shortest range of the pass (" +
                              formatFixed(altitudeKm, 0) + " km), for the normal-point bin of a satellite the ILRS "
                              "missions table does not list");
     }

@@ -23,6 +23,7 @@
 #include "ui/param_slider.hpp"
 #include "ui/slr_all_passes.hpp"
 #include "ui/slr_params_panel.hpp"
+#include "ui/slr_station_nps.hpp"
 #include "ui/slr_workspace.hpp"
 
 using namespace lwb::ui;
@@ -634,6 +635,87 @@ private slots:
         QVERIFY(c->screenParams().automatic);
         QTRY_VERIFY_WITH_TIMEOUT(c->waitIdle(1000) && c->hasRun() && acceptedCount(c->run()) > 0, 60000);
         QCOMPARE(acceptedCount(c->run()), shown);
+    }
+
+    /// Issue 29: the station's normal points opened beside the pass: the block of the open pass
+    /// is compared (beaconc_20070511: 13 station NPs in pass 1, 11 of ours in the same bins, the
+    /// two others of 5 ranges below the day minimum of 6), drawn over the O-C, listed, exported;
+    /// the comparison follows the pass and the parameters, survives a session, and a wrong file
+    /// is refused with the reason or says why it cannot be compared.
+    void stationNormalPointsBesideOurs() {
+        const QString frd = lwbtest::sharedPath("slr/beaconc_20070511.frd"), npt = lwbtest::sharedPath("slr/beaconc_20070511.npt");
+        const QString stella = lwbtest::sharedPath("slr/7080_STELLA_crd_071220_2128_0.npt");
+        if (!QFile::exists(frd) || !QFile::exists(npt) || !QFile::exists(stella)) QSKIP("shared data absent");
+        MainWindow w;
+        SlrWorkspace* ws = w.slr();
+        SlrController* c = ws->controller();
+        QString err;
+        QVERIFY2(ws->openPath(frd, 0, &err), qPrintable(err));
+        QVERIFY(c->waitIdle(60000) && c->hasRun());
+        SlrStationNpPanel* panel = ws->stationNpPanel();
+        QVERIFY(!panel->hasFile());
+        // Not a normal-point file: refused, nothing changed.
+        QVERIFY(!ws->setStationNormalPoints(frd, &err));
+        QVERIFY2(err.contains("no normal-point records"), qPrintable(err));
+        QVERIFY(!panel->hasFile());
+        QVERIFY(ws->setStationNormalPoints(npt, &err));
+        const auto& cmp = panel->comparison();
+        QVERIFY2(cmp.ok, cmp.error.c_str());
+        QCOMPARE(cmp.block, size_t(0));
+        QCOMPARE(cmp.matched, size_t(11));
+        QCOMPARE(cmp.stationOnly, size_t(2));
+        QCOMPARE(cmp.oursOnly, size_t(0));
+        QVERIFY2(std::fabs(cmp.meanAbsMm) < 2.0, cmp.describe().c_str());  // (test_slr_hard: 0.75 mm)
+        QCOMPARE(panel->table()->rowCount(), 13);
+        QVERIFY(panel->summaryLabel()->text().contains("11 in the same bins"));
+        // Drawn over ours: every station point of the pass on the O-C plot, at its epoch.
+        auto stationGraph = [ws]() -> QCPGraph* {
+            for (int g = 0; g < ws->ocPlot()->graphCount(); ++g)
+                if (ws->ocPlot()->graph(g)->property("series").toString() == "stationnp") return ws->ocPlot()->graph(g);
+            return nullptr;
+        };
+        QVERIFY(stationGraph());
+        QCOMPARE(stationGraph()->dataCount(), 13);
+        QCOMPARE(stationGraph()->data()->at(0)->key, cmp.rows.front().stationT);
+        // Exported as shown.
+        const QString csv = m_dir.path() + "/np_diff.csv";
+        QVERIFY2(panel->exportCsv(csv, &err), qPrintable(err));
+        const auto table = lwb::core::readCsv(csv.toStdString());
+        QVERIFY2(table.ok, table.error.c_str());
+        QCOMPARE(table.table.rows.size(), size_t(13));
+        QVERIFY(table.table.column("Δ (mm)") >= 0);
+        // A session keeps it.
+        const QJsonObject state = ws->saveState();
+        QCOMPARE(state["station_npt"].toString(), npt);
+        // The parameters: a tighter rejection drops more points, and the table follows the run.
+        const long long rejectedBefore = c->run().post.rejected;
+        auto pp = c->postfitParams();
+        pp.rejectSigma = 1.5;
+        c->setPostfitParams(pp);
+        QTRY_VERIFY_WITH_TIMEOUT(c->waitIdle(1000) && c->hasRun() && c->run().post.rejected > rejectedBefore, 60000);
+        QCOMPARE(panel->comparison().matched + panel->comparison().oursOnly, c->run().post.normalPoints.size());
+        pp.rejectSigma = 3;
+        c->setPostfitParams(pp);
+        // The next pass: its own block of the file.
+        QVERIFY(c->selectPass(1, &err));
+        QTRY_VERIFY_WITH_TIMEOUT(c->waitIdle(1000) && c->hasRun() && panel->comparison().block == 1, 60000);
+        QVERIFY2(panel->comparison().matched >= 4, panel->comparison().describe().c_str());  // (test_slr_hard: 4 of 5)
+        // Another satellite's file: said, nothing drawn.
+        QVERIFY(ws->setStationNormalPoints(stella, &err));
+        QVERIFY(!panel->comparison().ok);
+        QVERIFY2(panel->summaryLabel()->text().contains("no normal points of Beacon-C"), qPrintable(panel->summaryLabel()->text()));
+        QVERIFY(!stationGraph());
+        QCOMPARE(panel->table()->rowCount(), 0);
+        // Cleared.
+        QVERIFY(ws->setStationNormalPoints(QString(), &err));
+        QVERIFY(!panel->hasFile());
+        QVERIFY(!ws->saveState().contains("station_npt"));
+        // Restored from the session.
+        MainWindow w2;
+        QVERIFY2(w2.slr()->restoreState(state, &err), qPrintable(err));
+        QVERIFY(w2.slr()->controller()->waitIdle(60000));
+        QTRY_VERIFY_WITH_TIMEOUT(w2.slr()->stationNpPanel()->comparison().ok, 10000);
+        QCOMPARE(w2.slr()->stationNpPanel()->comparison().matched, size_t(11));
     }
 
     /// Issue 11: a multi-pass file whose first pass cannot be processed opens; every pass is
