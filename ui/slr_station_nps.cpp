@@ -13,6 +13,7 @@
 
 #include "core/slr/crd.hpp"
 #include "ui/table_csv.hpp"
+#include "ui/workspace_layout.hpp"
 
 namespace lwb::ui {
 
@@ -52,7 +53,7 @@ SlrStationNpPanel::SlrStationNpPanel(QWidget* parent) : QWidget(parent) {
     row->addWidget(m_fileLabel, 1);
     row->addWidget(m_clear);
     row->addWidget(m_export);
-    v->addLayout(row);
+    v->addLayout(wrapRow(row));  // (wraps under the plots of a 1024-pixel window)
     m_summary = new QLabel(this);
     m_summary->setWordWrap(true);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);

@@ -841,7 +841,11 @@ void SlrWorkspace::fitImagePlot() {
     }
     m_linking = true;
     if (found) {
-        const double pad = std::max(0.25 * vr.size(), 1e-3);
+        // At least a few pixels each side: a flattened track can lie on one pixel row (seen on
+        // beaconc_20070511 pass 3, 0.28 ns pixels: the axis spanned ±0.001 ns, the pixel a wall).
+        const double magOc = m_controller->hasRun() ? m_controller->run().screen.magOc : 0;
+        const double pixelNs = magOc > 0 ? 1e9 / magOc : 0;
+        const double pad = std::max({0.25 * vr.size(), 5 * pixelNs, 1e-3});
         m_imagePlot->yAxis->setRange(vr.lower - pad, vr.upper + pad);
     } else {
         m_imagePlot->yAxis->rescale();

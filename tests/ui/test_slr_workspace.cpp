@@ -637,6 +637,23 @@ private slots:
         QCOMPARE(acceptedCount(c->run()), shown);
     }
 
+    /// Seen in a real window (issue 29): beaconc_20070511 pass 3 is refined, and its flattened
+    /// track lies on one pixel row (0.28 ns): the image's axis was fitted to ±0.001 ns, the row
+    /// shown as a wall. The fitted axis spans the track and at least 5 pixels each side.
+    void imageOfATrackOnOnePixelRowIsVisible() {
+        const QString frd = lwbtest::sharedPath("slr/beaconc_20070511.frd");
+        if (!QFile::exists(frd)) QSKIP("shared data absent");
+        MainWindow w;
+        QString err;
+        QVERIFY2(w.slr()->openPath(frd, 2, &err), qPrintable(err));
+        SlrController* c = w.slr()->controller();
+        QVERIFY(c->waitIdle(60000) && c->hasRun());
+        QCoreApplication::processEvents();
+        const double pixelNs = 1e9 / c->run().screen.magOc;
+        const QCPRange r = w.slr()->imagePlot()->yAxis->range();
+        QVERIFY2(r.size() >= 10 * pixelNs, qPrintable(QString("axis %1 .. %2 ns, pixel %3 ns").arg(r.lower).arg(r.upper).arg(pixelNs)));
+    }
+
     /// Issue 29: the station's normal points opened beside the pass: the block of the open pass
     /// is compared (beaconc_20070511: 13 station NPs in pass 1, 11 of ours in the same bins, the
     /// two others of 5 ranges below the day minimum of 6), drawn over the O-C, listed, exported;
