@@ -1,6 +1,6 @@
 // laserwb: the workbench. With no arguments it opens the built-in demo.
 //   laserwb [FILE...]   a session, or inputs opened where they belong (MainWindow::openPaths)
-//   laserwb --screenshot OUT.png [--workspace footprint|slr] [--size WxH] [FILE...]
+//   laserwb --screenshot OUT.png [--workspace footprint|slr] [--size WxH|screen] [FILE...]
 #include <cstdio>
 
 #include <QApplication>
@@ -53,7 +53,10 @@ int main(int argc, char** argv) {
                           "calibration:waveform, radiometry.",
                           "name",
                           "footprint");
-    QCommandLineOption size("size", "Window size for --screenshot, WxH.", "WxH", "1480x900");
+    QCommandLineOption size("size",
+                            "Window size for --screenshot, WxH, or 'screen': the size the window first opens at on "
+                            "this screen (fitted to its available area).",
+                            "WxH|screen", "1480x900");
     cli.addOptions({shot, ws, size});
     cli.process(app);
 
@@ -93,7 +96,14 @@ int main(int argc, char** argv) {
     if (cli.isSet(ws) || args.isEmpty()) w.showWorkspace(cli.value(ws));  // a session names its own workspace
     if (cli.isSet(shot)) {
         const QStringList wh = cli.value(size).split('x');
-        if (wh.size() == 2) w.resize(wh[0].toInt(), wh[1].toInt());
+        if (cli.value(size) == "screen") {
+            // (as constructed: fitted to the screen)
+        } else if (wh.size() == 2 && wh[0].toInt() > 0 && wh[1].toInt() > 0) {
+            w.resize(wh[0].toInt(), wh[1].toInt());
+        } else {
+            fprintf(stderr, "laserwb: --size %s: give WIDTHxHEIGHT (e.g. 1280x800) or 'screen'\n", qPrintable(cli.value(size)));
+            return 2;
+        }
         w.show();
         w.waitIdle(60000);
         const QString staged = QString::fromStdString(outs.stagingPath(shotPath));

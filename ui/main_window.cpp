@@ -23,6 +23,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -39,6 +40,7 @@
 #include "core/common/json.hpp"
 #include "ui/app_undo.hpp"
 #include "ui/demo.hpp"
+#include "ui/workspace_layout.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/footprint_workspace.hpp"
 #include "ui/slr_controller.hpp"
@@ -164,7 +166,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_radiometry->controller(), &RadiometryController::imageChanged, this, [this] { undoStackOf(m_radiometry).clear(); });
     setAcceptDrops(true);
     QSettings st;
+    // The last geometry, else 1480 × 900; either fitted to the screen's available area (a
+    // 1024 × 700 screen, or 1920 × 1080 at 150 %: 1280 × 720 logical, had the panel and the
+    // status bar off-screen).
     if (!restoreGeometry(st.value("window/geometry").toByteArray())) resize(1480, 900);
+    if (!isMaximized() && !isFullScreen())
+        if (const QScreen* sc = screen() ? screen() : QGuiApplication::primaryScreen())
+            setGeometry(fitWindowToScreen(geometry(), minimumSizeHint(), sc->availableGeometry(), QMargins(0, 30, 0, 0)));
     setDarkTheme(st.value("view/theme").toString() == "dark");
     statusBar()->showMessage(tr("Ready"));
     setModified(false);

@@ -1,5 +1,7 @@
 #include "ui/workspace_layout.hpp"
 
+#include <algorithm>
+
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QScrollArea>
@@ -143,6 +145,17 @@ int FlowLayout::place(const QRect& rect, bool apply) const {
         line = std::max(line, s.height());
     }
     return y + line - rect.y() + m.bottom();
+}
+
+QRect fitWindowToScreen(const QRect& wanted, const QSize& minimum, const QRect& available, const QMargins& frame) {
+    const QRect inside = available.marginsRemoved(frame);
+    const QSize size = wanted.size().boundedTo(inside.size()).expandedTo(minimum);
+    // Keep the top-left corner when the window fits where it was, else slide it in (a window
+    // larger than the screen even at its least size starts at the top left, its title bar shown).
+    QPoint at = wanted.topLeft();
+    at.setX(std::max(inside.left(), std::min(at.x(), inside.right() + 1 - size.width())));
+    at.setY(std::max(inside.top(), std::min(at.y(), inside.bottom() + 1 - size.height())));
+    return QRect(at, size);
 }
 
 }  // namespace lwb::ui

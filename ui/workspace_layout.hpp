@@ -10,6 +10,8 @@
 // "parameterPanel").
 #include <QLayout>
 #include <QList>
+#include <QMargins>
+#include <QRect>
 
 class QScrollArea;
 class QWidget;
@@ -25,6 +27,13 @@ QLayout* wrapRow(QLayout* row);
 /// Keeps a parameter panel's scroll area as wide as the panel's widest row plus the scroll bar
 /// (nothing cut off, no sideways scrolling), following the panel as it changes.
 void fitPanelWidth(QScrollArea* scroll);
+
+/// Where a top-level window goes on a screen: `wanted` (a saved geometry, or the default size
+/// at the origin) shrunk to the screen's available area `available` (never below `minimum`,
+/// the window's own least size) and moved into it, so that the title bar, the parameter panel
+/// and the status bar are on the screen. A frame of `frame` pixels (title bar, borders) is kept
+/// for the window manager's decoration.
+QRect fitWindowToScreen(const QRect& wanted, const QSize& minimum, const QRect& available, const QMargins& frame);
 
 /// Lays its widgets out left to right and wraps onto the next line when the width runs out.
 class FlowLayout : public QLayout {

@@ -26,6 +26,7 @@
 #include "ui/plot_kit.hpp"
 #include "ui/radiometry_workspace.hpp"
 #include "ui/slr_workspace.hpp"
+#include "ui/workspace_layout.hpp"
 
 using namespace lwb::ui;
 
@@ -418,6 +419,63 @@ private slots:
                                         .arg(a->widget()->minimumSizeHint().width())));
             }
         }
+    }
+
+    /// Issue 30: the first window ignored the screen (1480 × 900 on a 1024 × 700 screen, 2220 ×
+    /// 1350 at 150 % on 1920 × 1080): the panel and the status bar were off-screen. The window
+    /// goes inside the available area, at its least size where the screen is smaller still.
+    void windowGeometryFitsTheScreen() {
+        const QMargins frame(0, 30, 0, 0);
+        const QSize least(1000, 680);
+        // Default size on a small screen: shrunk to it, below the title bar.
+        QCOMPARE(fitWindowToScreen(QRect(0, 0, 1480, 900), least, QRect(0, 0, 1024, 700), frame), QRect(0, 30, 1024, 680));
+        // A geometry saved on a larger screen (or another monitor): shrunk and moved in.
+        QCOMPARE(fitWindowToScreen(QRect(1500, 400, 1480, 900), least, QRect(0, 0, 1280, 720), frame), QRect(0, 30, 1280, 690));
+        // A window that fits stays where it was.
+        QCOMPARE(fitWindowToScreen(QRect(100, 80, 1200, 800), least, QRect(0, 0, 1920, 1080), frame), QRect(100, 80, 1200, 800));
+        // Never below the window's least size: at the top left, its title bar on the screen.
+        QCOMPARE(fitWindowToScreen(QRect(50, 50, 1480, 900), least, QRect(0, 0, 800, 600), frame), QRect(0, 30, 1000, 680));
+        // A second screen to the right: within that one.
+        QCOMPARE(fitWindowToScreen(QRect(2000, 0, 1480, 900), least, QRect(1920, 0, 1280, 1024), frame), QRect(1920, 30, 1280, 900));
+    }
+
+    /// The same through the program on screens of 1024 × 700, 1280 × 800, 1920 × 1080 and 1920 ×
+    /// 1080 at 150 % (1280 × 720 logical): the offscreen platform given each screen, the window
+    /// grabbed as it first opens (no saved geometry).
+    void firstWindowFitsTheScreen_data() {
+        QTest::addColumn<int>("width");
+        QTest::addColumn<int>("height");
+        QTest::addColumn<double>("dpr");
+        QTest::newRow("1024x700") << 1024 << 700 << 1.0;
+        QTest::newRow("1280x800") << 1280 << 800 << 1.0;
+        QTest::newRow("1920x1080") << 1920 << 1080 << 1.0;
+        QTest::newRow("1920x1080 at 150%") << 1920 << 1080 << 1.5;
+    }
+    void firstWindowFitsTheScreen() {
+        QFETCH(int, width);
+        QFETCH(int, height);
+        QFETCH(double, dpr);
+        QTemporaryDir dir;
+        const QString config = dir.path() + "/screen.json", png = dir.path() + "/w.png";
+        // (the offscreen platform's screen: logical size = pixels / device pixel ratio)
+        QVERIFY(lwbtest::writeText(config, QString("{\"screens\": [{\"name\": \"test\", \"x\": 0, \"y\": 0, \"width\": %1, "
+                                                   "\"height\": %2, \"logicalDpi\": 96, \"dpr\": %3}]}")
+                                                   .arg(int(width / dpr))
+                                                   .arg(int(height / dpr))
+                                                   .arg(dpr)
+                                                   .toUtf8()));
+        lwbtest::RunOptions o;
+        o.env = {"QT_QPA_PLATFORM=offscreen:configfile=" + config, "XDG_CONFIG_HOME=" + dir.path() + "/config",
+                 "HOME=" + dir.path()};
+        o.timeoutMs = 120000;
+        const auto r = lwbtest::runProgram(LWB_GUI, {"--screenshot", png, "--size", "screen"}, o);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QImage shot(png);
+        QVERIFY(!shot.isNull());
+        const QSize logical(qRound(shot.width() / dpr), qRound(shot.height() / dpr));
+        QVERIFY2(logical.width() <= int(width / dpr) && logical.height() <= int(height / dpr) - 30,
+                 qPrintable(QString("window %1×%2 on a screen of %3×%4").arg(logical.width()).arg(logical.height())
+                                .arg(int(width / dpr)).arg(int(height / dpr))));
     }
 };
 
