@@ -368,11 +368,18 @@ QCPAxis* PlotKit::axisAt(const QPoint& pos) const {
     return nullptr;
 }
 
+// A series is known by its "series" property when the workspace sets one (a name with a count
+// in it, "signal (121)", changes at each run), else by its name.
+QString PlotKit::seriesKey(const QCPAbstractPlottable* pl) {
+    const QString key = pl->property("series").toString();
+    return key.isEmpty() ? pl->name() : key;
+}
+
 void PlotKit::setSeriesHidden(const QString& name, bool hidden) {
     if (hidden) m_hidden.insert(name);
     else m_hidden.remove(name);
     for (int i = 0; i < m_plot->plottableCount(); ++i)
-        if (m_plot->plottable(i)->name() == name) m_plot->plottable(i)->setVisible(!hidden);
+        if (seriesKey(m_plot->plottable(i)) == name) m_plot->plottable(i)->setVisible(!hidden);
     applyTheme();
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
@@ -380,7 +387,7 @@ void PlotKit::setSeriesHidden(const QString& name, bool hidden) {
 void PlotKit::legendClicked(QCPAbstractLegendItem* item) {
     auto* pli = qobject_cast<QCPPlottableLegendItem*>(item);
     if (!pli) return;
-    const QString name = pli->plottable()->name();
+    const QString name = seriesKey(pli->plottable());
     setSeriesHidden(name, !m_hidden.contains(name));
 }
 
@@ -414,7 +421,8 @@ void PlotKit::applyTheme() {
     // Series: the hidden ones (by name, so a rebuild keeps them hidden), black ink swapped.
     for (int i = 0; i < p->plottableCount(); ++i) {
         QCPAbstractPlottable* pl = p->plottable(i);
-        if (!pl->name().isEmpty() && m_hidden.contains(pl->name())) pl->setVisible(false);
+        const QString key = seriesKey(pl);
+        if (!key.isEmpty() && m_hidden.contains(key)) pl->setVisible(false);
         pl->setPen(inked(pl->pen()));
         if (auto* g = qobject_cast<QCPGraph*>(pl)) {
             QCPScatterStyle ss = g->scatterStyle();
@@ -424,7 +432,7 @@ void PlotKit::applyTheme() {
             }
         }
         if (QCPPlottableLegendItem* li = p->legend->itemWithPlottable(pl))
-            li->setTextColor(m_hidden.contains(pl->name()) ? t.hiddenText : t.text);
+            li->setTextColor(m_hidden.contains(key) ? t.hiddenText : t.text);
     }
     // Labels drawn on the plot.
     for (int i = 0; i < p->itemCount(); ++i)

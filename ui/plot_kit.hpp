@@ -32,6 +32,7 @@
 class QCustomPlot;
 class QCPAxis;
 class QCPAbstractLegendItem;
+class QCPAbstractPlottable;
 class QRubberBand;
 class QCPColorMap;
 class QCPColorScale;
@@ -115,7 +116,10 @@ public:
     bool back();
     int historyDepth() const { return int(m_history.size()); }
 
-    /// Hides or shows the plottables named `name` (as a legend click does).
+    /// A plottable's series key: its "series" property when set (a name that stays when the
+    /// counts in the legend text change), else its name.
+    static QString seriesKey(const QCPAbstractPlottable* plottable);
+    /// Hides or shows the plottables whose series key is `name` (as a legend click does).
     void setSeriesHidden(const QString& name, bool hidden);
     bool isSeriesHidden(const QString& name) const { return m_hidden.contains(name); }
 

@@ -30,6 +30,7 @@
 #include "ui/app_undo.hpp"
 #include "ui/params_command.hpp"
 #include "ui/param_slider.hpp"
+#include "ui/plot_kit.hpp"
 #include "ui/slr_all_passes.hpp"
 #include "ui/slr_station_nps.hpp"
 #include "ui/session_json.hpp"
@@ -228,6 +229,20 @@ void SlrWorkspace::buildPlots() {
     m_histPlot = newPlot(this, tr("Post-fit residual (ps, two-way)"), tr("Points"));
     m_histPlot->setToolTip(tr("Post-fit residuals of the kept points, ps two-way (1 ps = 0.15 mm one-way)"));
     m_histPlot->setMinimumHeight(140);
+    // The shared plot tools (ui/plot_kit.hpp): right-click menu (export PNG/SVG/PDF, copy),
+    // box zoom on a right drag, Shift/Ctrl + wheel for one axis, Backspace back, Home, the
+    // theme; Home and a double-click are the workspace's own fit of every plot.
+    const std::pair<QCustomPlot*, const char*> kits[] = {{m_ocPlot, "slr-oc"}, {m_imagePlot, "slr-binary-image"},
+                                                         {m_histPlot, "slr-residuals"}};
+    for (const auto& [plot, name] : kits) {
+        PlotKitOptions o;
+        o.home = [this] { resetView(); };
+        o.exportName = name;
+        o.legendToggle = true;
+        installPlotKit(plot, o);
+    }
+    // A useful height whatever the messages above (the legend under each plot takes 4 rows).
+    for (QCustomPlot* p : {m_ocPlot, m_imagePlot}) p->setMinimumHeight(250);
     for (QCustomPlot* p : {m_ocPlot, m_imagePlot}) {
         // Legend in a row under the axes, so it never hides the track.
         p->legend->setVisible(true);
@@ -395,7 +410,8 @@ QWidget* SlrWorkspace::buildPanel() {
     auto* eg = new QGroupBox(tr("Mouse on the main plot"), panel);
     auto* el = new QVBoxLayout(eg);
     m_modeZoom = new QRadioButton(tr("Pan / zoom"), eg);
-    m_modeZoom->setToolTip(tr("Drag pans, the wheel zooms both axes; Ctrl+wheel zooms time only, Shift+wheel O-C only"));
+    m_modeZoom->setToolTip(tr("Drag pans, the wheel zooms both axes; Shift+wheel zooms time only, Ctrl+wheel O-C only; "
+                              "right-drag zooms to a box, Backspace steps back"));
     m_modeBoxZoom = new QRadioButton(tr("Box zoom"), eg);
     m_modeBoxZoom->setToolTip(tr("Drag a box to zoom to it (the linked binary image follows); Home or double-click resets"));
     m_modeIn = new QRadioButton(tr("Box forces points in"), eg);
@@ -516,24 +532,9 @@ void SlrWorkspace::wireController() {
     connect(m_imagePlot->yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this] { linkRanges(m_imagePlot, m_ocPlot); });
     connect(m_ocPlot->selectionRect(), &QCPSelectionRect::accepted, this,
             [this](const QRect& r, QMouseEvent*) { boxSelected(r); });
-    for (QCustomPlot* p : {m_ocPlot, m_imagePlot, m_histPlot}) {
-        p->installEventFilter(this);
-        connect(p, &QCustomPlot::mouseDoubleClick, this, [this] { resetView(); });
-        // A legend entry switches its series on and off.
-        connect(p, &QCustomPlot::legendClick, this, [this, p](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent*) {
-            auto* pi = qobject_cast<QCPPlottableLegendItem*>(item);
-            if (!pi) return;
-            const QString key = pi->plottable()->property("series").toString();
-            const bool hide = pi->plottable()->visible();
-            pi->plottable()->setVisible(!hide);
-            pi->setTextColor(hide ? QColor(160, 160, 160) : Qt::black);
-            if (!key.isEmpty()) {
-                if (hide) m_hidden.insert(key);
-                else m_hidden.remove(key);
-            }
-            p->replot(QCustomPlot::rpQueuedReplot);
-        });
-    }
+    // The plot kit (buildPlots) zooms, pans, resets on a double-click, exports, and switches a
+    // series on and off from its legend entry (by its "series" key, kept across runs).
+    for (QCustomPlot* p : {m_ocPlot, m_imagePlot, m_histPlot}) p->installEventFilter(this);
     m_ocPlot->setMouseTracking(true);  // the readout follows the mouse without a button held
     connect(m_ocPlot, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { m_hover->setText(readoutAt(e->position())); });
 }
@@ -864,23 +865,10 @@ void SlrWorkspace::resetView() {
 }
 
 bool SlrWorkspace::eventFilter(QObject* watched, QEvent* event) {
-    // Modifier + wheel zooms one axis about the mouse: Ctrl the time axis, Shift the value axis.
+    // The legends follow the plots' widths (the plot kit does the zooming).
     auto* plot = qobject_cast<QCustomPlot*>(watched);
     if (plot && event->type() == QEvent::Resize && (plot == m_ocPlot || plot == m_imagePlot) && fitLegendColumns(plot))
         plot->replot(QCustomPlot::rpQueuedReplot);
-    if (plot && event->type() == QEvent::Wheel) {
-        auto* e = static_cast<QWheelEvent*>(event);
-        const bool ctrl = e->modifiers() & Qt::ControlModifier, shift = e->modifiers() & Qt::ShiftModifier;
-        if (ctrl != shift) {
-            const int delta = e->angleDelta().y() ? e->angleDelta().y() : e->angleDelta().x();
-            const double factor = std::pow(0.85, delta / 120.0);
-            QCPAxis* axis = ctrl ? plot->xAxis : plot->yAxis;
-            const QPointF pos = e->position();
-            axis->scaleRange(factor, axis->pixelToCoord(ctrl ? pos.x() : pos.y()));
-            plot->replot(QCustomPlot::rpQueuedReplot);
-            return true;
-        }
-    }
     return QWidget::eventFilter(watched, event);
 }
 
@@ -991,12 +979,8 @@ void SlrWorkspace::drawMainPlot(const SlrRun& run, bool residual) {
             dy << y;
         }
     }
-    auto keyed = [this](QCPGraph* g, const QString& key) {
-        g->setProperty("series", key);
-        if (m_hidden.contains(key)) {
-            g->setVisible(false);
-            if (auto* li = m_ocPlot->legend->itemWithPlottable(g)) li->setTextColor(QColor(160, 160, 160));
-        }
+    auto keyed = [](QCPGraph* g, const QString& key) {
+        g->setProperty("series", key);  // (the plot kit hides it before the replot when switched off)
         return g;
     };
     if (p.stationFlag.size() == n) {

@@ -141,7 +141,6 @@ private:
     QCheckBox* m_sodCheck;
     QToolButton *m_cpfClear, *m_snxClear;
     QLabel* m_hover;
-    QSet<QString> m_hidden;        ///< series switched off in the legend (by key)
     QVector<double> m_y;           ///< per point: the main plot's value (ns, or ps in the residual view)
     QVector<const char*> m_class;  ///< per point: its class in the last run
     QPointer<SlrAllPassesDialog> m_all;

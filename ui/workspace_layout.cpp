@@ -1,6 +1,7 @@
 #include "ui/workspace_layout.hpp"
 
 #include <algorithm>
+#include <QFrame>
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -45,6 +46,47 @@ private:
 
 }  // namespace
 
+namespace {
+
+// A scroll area as tall as its text up to `lines` lines, then scrolling: a message above the
+// plots (a pass's warnings: seven lines on a BLITS pass with a CPF and a SINEX) must not squeeze
+// them (the O-C plot was left 25 px tall in a 1024 × 700 window).
+class BoundedText : public QScrollArea {
+public:
+    BoundedText(QWidget* text, int lines, QWidget* parent) : QScrollArea(parent), m_lines(lines) {
+        setWidget(text);
+        setWidgetResizable(true);
+        setFrameShape(QFrame::NoFrame);
+        setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
+        viewport()->installEventFilter(this);
+        setObjectName("boundedText");
+    }
+    QSize sizeHint() const override {
+        const QWidget* w = widget();
+        const int width = viewport()->width() > 50 ? viewport()->width() : w->sizeHint().width();
+        const int h = w->hasHeightForWidth() ? w->heightForWidth(width) : w->sizeHint().height();
+        return {QScrollArea::sizeHint().width(), std::min(h, maxHeight())};
+    }
+    QSize minimumSizeHint() const override { return {0, std::min(sizeHint().height(), fontMetrics().lineSpacing() + 4)}; }
+
+protected:
+    bool eventFilter(QObject* o, QEvent* e) override {
+        // The text changed (its label asks its parent, the viewport, for a new layout) or the
+        // width did: a new height.
+        if (o == viewport() && (e->type() == QEvent::LayoutRequest || e->type() == QEvent::Resize)) updateGeometry();
+        return QScrollArea::eventFilter(o, e);
+    }
+
+private:
+    int maxHeight() const { return m_lines * fontMetrics().lineSpacing() + 6; }
+    int m_lines;
+};
+
+}  // namespace
+
+QWidget* boundedText(QWidget* text, int lines) { return new BoundedText(text, lines, text->parentWidget()); }
+
 void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* body, QWidget* panel,
                      int panelMinWidth, int centreWidth) {
     auto* scroll = new QScrollArea(workspace);
@@ -56,7 +98,7 @@ void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* b
     auto* cl = new QVBoxLayout(centre);
     cl->setContentsMargins(0, 0, 0, 0);
     cl->addLayout(wrapRow(top));
-    cl->addWidget(info);
+    cl->addWidget(boundedText(info, 4));
     cl->addWidget(body, 1);
     auto* split = new QSplitter(Qt::Horizontal, workspace);
     split->addWidget(centre);

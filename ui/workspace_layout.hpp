@@ -21,6 +21,10 @@ namespace lwb::ui {
 void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* body, QWidget* panel,
                      int panelMinWidth, int centreWidth);
 
+/// `text` (a label of messages) in a scroll area as tall as the text up to `lines` lines, then
+/// scrolling (layoutWorkspace puts the information line in one).
+QWidget* boundedText(QWidget* text, int lines);
+
 /// A row of controls (a QHBoxLayout not yet installed) as a FlowLayout that wraps: the same
 /// widgets in the same order; spacers and stretches are dropped. `row` is deleted.
 QLayout* wrapRow(QLayout* row);
