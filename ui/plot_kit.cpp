@@ -63,12 +63,24 @@ protected:
         return utcClock(tick, decimals);
     }
     double getTickStep(const QCPRange& range) override {
-        const double ideal = range.size() / double(mTickCount + 1e-10);
+        // (the clock's steps are coarse: a step a little below range / count still fits, as the
+        // count leaves a gap of two characters per label; 150 s on 2 labels' width takes 60 s
+        // steps, two labels, where 75 s rounded up to 120 s left one)
+        const double ideal = range.size() / (mTickCount + 0.5);
         if (ideal >= 1) {
-            const double steps[] = {1, 2, 5, 10, 15, 20, 30, 60, 120, 300, 600, 900, 1200, 1800, 3600, 7200, 10800, 21600, 43200, 86400};
-            for (double s : steps)
-                if (s >= ideal) return m_step = s;
-            return m_step = 86400 * std::ceil(ideal / 86400);
+            const double steps[] = {1, 2, 5, 10, 15, 20, 30, 60, 120, 180, 240, 300, 600, 900, 1200, 1800, 3600, 7200, 10800, 21600, 43200, 86400};
+            // The first step at least the ideal one; but never a single label where two fit:
+            // then the largest step that puts two ticks in the range.
+            double chosen = 86400 * std::ceil(ideal / 86400), below = 0;
+            for (double s : steps) {
+                if (s <= range.size() / 2) below = s;
+                if (s >= ideal) {
+                    chosen = s;
+                    break;
+                }
+            }
+            if (mTickCount >= 2 && range.size() / chosen < 2 && below > 0) chosen = below;
+            return m_step = chosen;
         }
         const double mag = std::pow(10.0, std::floor(std::log10(ideal)));
         const double m = ideal / mag;
@@ -275,7 +287,11 @@ PlotKit::PlotKit(QCustomPlot* plot, const PlotKitOptions& options) : QObject(plo
     connect(plot, &QCustomPlot::legendClick, this, [this](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent* e) {
         if (m_options.legendToggle && item && e->button() == Qt::LeftButton) legendClicked(item);
     });
-    connect(plot, &QCustomPlot::beforeReplot, this, &PlotKit::applyTheme);
+    connect(plot, &QCustomPlot::beforeReplot, this, [this] {
+        fitTickCounts();
+        applyTheme();
+    });
+    connect(plot, &QCustomPlot::afterReplot, this, [this] { m_laidOut = m_plot->viewport().size(); });
     applyTheme();
 }
 
@@ -389,6 +405,30 @@ void PlotKit::legendClicked(QCPAbstractLegendItem* item) {
     if (!pli) return;
     const QString name = seriesKey(pli->plottable());
     setSeriesHidden(name, !m_hidden.contains(name));
+}
+
+void PlotKit::fitTickCounts() {
+    // As many ticks as their labels fit: a fixed count crowded "20:19:20:19:20" together on a
+    // narrow plot and left a single label on a wide one. The widest label of the last layout
+    // (at least a clock's "00:00:00") plus a gap per tick across, two text lines per tick up.
+    // This runs before the layout of the replot: a resize has changed the viewport but not yet
+    // the axis rects, whose sizes are taken as the new viewport less the last layout's margins
+    // (m_laidOut: the viewport of the last replot).
+    const QSize last = m_laidOut.isValid() ? m_laidOut : m_plot->viewport().size(), now = m_plot->viewport().size();
+    for (QCPAxisRect* r : m_plot->axisRects())
+        for (QCPAxis* a : r->axes()) {
+            if (!a->ticker() || !a->visible()) continue;
+            const QFontMetrics fm(a->tickLabelFont());
+            int count;
+            if (a->orientation() == Qt::Horizontal) {
+                int widest = fm.horizontalAdvance(QStringLiteral("00:00:00"));
+                for (const QString& label : a->tickVectorLabels()) widest = std::max(widest, fm.horizontalAdvance(label));
+                count = (r->width() + now.width() - last.width()) / (widest + 2 * fm.averageCharWidth() + 8);
+            } else {
+                count = (r->height() + now.height() - last.height()) / (3 * fm.height());
+            }
+            a->ticker()->setTickCount(std::clamp(count, 2, 8));
+        }
 }
 
 void PlotKit::applyTheme() {

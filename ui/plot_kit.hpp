@@ -22,6 +22,7 @@
 #include <QObject>
 #include <QPair>
 #include <QSet>
+#include <QSize>
 #include <QString>
 #include <QVector>
 #include <functional>
@@ -130,6 +131,8 @@ public:
 
     /// Applies the theme's colours (called before every replot).
     void applyTheme();
+    /// Sets each axis's tick count to what its labels fit (called before every replot).
+    void fitTickCounts();
 
 protected:
     bool eventFilter(QObject* o, QEvent* e) override;
@@ -160,6 +163,7 @@ private:
     double m_dragLower = 0, m_dragUpper = 0;
     QRubberBand* m_band = nullptr;
     qint64 m_lastWheelMs = -1000000;
+    QSize m_laidOut;  ///< the viewport of the last replot (fitTickCounts)
 };
 
 }  // namespace lwb::ui

@@ -228,7 +228,7 @@ void SlrWorkspace::buildPlots() {
     // in mm one-way too.
     m_histPlot = newPlot(this, tr("Post-fit residual (ps, two-way)"), tr("Points"));
     m_histPlot->setToolTip(tr("Post-fit residuals of the kept points, ps two-way (1 ps = 0.15 mm one-way)"));
-    m_histPlot->setMinimumHeight(140);
+    m_histPlot->setMinimumHeight(110);
     // The shared plot tools (ui/plot_kit.hpp): right-click menu (export PNG/SVG/PDF, copy),
     // box zoom on a right drag, Shift/Ctrl + wheel for one axis, Backspace back, Home, the
     // theme; Home and a double-click are the workspace's own fit of every plot.
@@ -242,7 +242,7 @@ void SlrWorkspace::buildPlots() {
         installPlotKit(plot, o);
     }
     // A useful height whatever the messages above (the legend under each plot takes 4 rows).
-    for (QCustomPlot* p : {m_ocPlot, m_imagePlot}) p->setMinimumHeight(250);
+    for (QCustomPlot* p : {m_ocPlot, m_imagePlot}) p->setMinimumHeight(270);
     for (QCustomPlot* p : {m_ocPlot, m_imagePlot}) {
         // Legend in a row under the axes, so it never hides the track.
         p->legend->setVisible(true);
@@ -320,15 +320,20 @@ QWidget* SlrWorkspace::buildPlotArea() {
     m_hover = new QLabel(this);
     m_hover->setToolTip(tr("The point nearest the mouse on the main plot: UTC epoch, O-C, residual, class, record index"));
     m_hover->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Two fixed rows, not a row that wraps: a wrapped row's second line is not in the layout's
+    // least height, and in a 1024 × 700 window it took the plots' legends (seen under Xvfb).
+    // Row 1: the pass; row 2: the view, and the hover readout in the rest of the line (its
+    // length changes with the point, the layout must not).
     tools->addWidget(new QLabel(tr("Pass:"), this));
     tools->addWidget(m_passCombo, 1);
     tools->addWidget(all);
-    tools->addSpacing(12);
-    tools->addWidget(new QLabel(tr("Main plot:"), this));
-    tools->addWidget(m_viewCombo);
-    tools->addWidget(m_sodCheck);
-    tools->addWidget(home);
-    // The readout in its own line: its length changes with the point, the layout must not.
+    auto* view = new QHBoxLayout;
+    view->addWidget(new QLabel(tr("Main plot:"), this));
+    view->addWidget(m_viewCombo);
+    view->addWidget(m_sodCheck);
+    view->addWidget(home);
+    view->addSpacing(8);
+    view->addWidget(m_hover, 1);
     m_hover->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_hover->setMinimumHeight(m_hover->fontMetrics().height() + 2);
     m_ocPlot->setToolTip(QString());
@@ -342,8 +347,8 @@ QWidget* SlrWorkspace::buildPlotArea() {
     auto* plotBox = new QWidget(this);
     auto* pbl = new QVBoxLayout(plotBox);
     pbl->setContentsMargins(0, 0, 0, 0);
-    pbl->addLayout(wrapRow(tools));  // wraps in a narrow window (usable at 1024 px)
-    pbl->addWidget(m_hover);
+    pbl->addLayout(tools);
+    pbl->addLayout(view);
     pbl->addWidget(plots, 1);
     vsplit->addWidget(plotBox);
     auto* bottom = new QWidget(this);
@@ -763,7 +768,8 @@ void SlrWorkspace::setSecondsOfDay(bool on) {
 
 void SlrWorkspace::applyTimeAxis() {
     // UTC hh:mm:ss with the date in the title for a CRD pass (epochs are seconds since 0h UTC
-    // of the pass day; a pass past midnight reads 24:.. on); seconds as given otherwise.
+    // of the pass day; past midnight the clock starts again at 00:00:00); seconds as given
+    // otherwise.
     const PassData& p = m_controller->pass();
     const int sel = m_controller->selectedPass();
     const QString date = p.hasCrd && sel >= 0 && size_t(sel) < m_controller->passes().size()
@@ -772,17 +778,10 @@ void SlrWorkspace::applyTimeAxis() {
     const bool utc = !date.isEmpty() && !m_secondsOfDay;
     QString label = !p.hasCrd ? tr("Epoch (s)") : utc ? tr("UTC on %1 (hh:mm:ss)").arg(date) : tr("Seconds of day (UTC %1)").arg(date);
     for (QCustomPlot* plot : {m_ocPlot, m_imagePlot}) {
-        if (utc) {
-            QSharedPointer<QCPAxisTickerTime> t(new QCPAxisTickerTime);
-            t->setTimeFormat("%h:%m:%s");
-            t->setFieldWidth(QCPAxisTickerTime::tuHours, 2);
-            plot->xAxis->setTicker(t);
-        } else {
-            plot->xAxis->setTicker(QSharedPointer<QCPAxisTicker>(new QCPAxisTicker));
-        }
-        // About one tick label per 70 px (110 for hh:mm:ss): five-digit epochs and clock labels ran into each
-        // other on a 1024 px window (seen in a screenshot).
-        plot->xAxis->ticker()->setTickCount(std::clamp(plot->width() / (utc ? 110 : 70), 2, 8));
+        // (the plot kit's UTC ticker: fractions of a second when zoomed in; the kit sets the
+        // tick count the plot's width fits before each replot)
+        if (utc) setUtcTimeAxis(plot->xAxis, QDate::fromString(date, Qt::ISODate));
+        else plot->xAxis->setTicker(QSharedPointer<QCPAxisTicker>(new QCPAxisTicker));
         plot->xAxis->setLabel(label);
         plot->replot(QCustomPlot::rpQueuedReplot);
     }

@@ -79,7 +79,9 @@ protected:
     }
 
 private:
-    int maxHeight() const { return m_lines * fontMetrics().lineSpacing() + 6; }
+    // (half a line more: the lines of rich text are a little taller than the font's spacing,
+    // and a cut line shows there is more to scroll to)
+    int maxHeight() const { return (2 * m_lines + 1) * fontMetrics().lineSpacing() / 2 + 6; }
     int m_lines;
 };
 
@@ -98,7 +100,7 @@ void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* b
     auto* cl = new QVBoxLayout(centre);
     cl->setContentsMargins(0, 0, 0, 0);
     cl->addLayout(wrapRow(top));
-    cl->addWidget(boundedText(info, 4));
+    cl->addWidget(boundedText(info, 3));
     cl->addWidget(body, 1);
     auto* split = new QSplitter(Qt::Horizontal, workspace);
     split->addWidget(centre);

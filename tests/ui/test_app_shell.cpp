@@ -477,6 +477,44 @@ private slots:
                  qPrintable(QString("window %1×%2 on a screen of %3×%4").arg(logical.width()).arg(logical.height())
                                 .arg(int(width / dpr)).arg(int(height / dpr))));
     }
+
+    /// Issue 30: on a 1024 × 700 screen (a window 670 px tall under its title bar) a BLITS pass
+    /// with a CPF and a SINEX has seven lines of messages above the plots; they left the O-C plot
+    /// 25 px tall and its legend clipped. The window's least height stays within 670 px with
+    /// those messages, the plots keep their least height, their legends inside them.
+    void slrPlotsKeepTheirHeightOnAShortScreen() {
+        const QString frd = lwbtest::sharedPath("slr/blits_201206.frd"), cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"),
+                      snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
+        if (!QFile::exists(frd) || !QFile::exists(cpf) || !QFile::exists(snx)) QSKIP("shared data absent");
+        MainWindow w;
+        w.resize(1024, 670);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.showWorkspace("slr");
+        QString err;
+        SlrWorkspace* ws = w.slr();
+        QVERIFY2(ws->setSinex(snx, &err), qPrintable(err));
+        QVERIFY2(ws->setCpf(cpf, &err), qPrintable(err));
+        QVERIFY2(ws->openPath(frd, 0, &err), qPrintable(err));
+        QVERIFY(w.waitIdle(60000));
+        QTest::qWait(50);
+        QApplication::processEvents();
+        QVERIFY2(ws->infoLabel()->text().count("<br") + 1 >= 3 || ws->infoLabel()->text().size() > 300,
+                 qPrintable(ws->infoLabel()->text()));  // (the long messages are there)
+        const int least = w.minimumSizeHint().expandedTo(w.minimumSize()).height();
+        qInfo("least height %d", least);
+        QVERIFY2(least <= 670, qPrintable(QString("the window needs %1 px").arg(least)));
+        QCOMPARE(w.height(), 670);
+        for (QCustomPlot* p : {ws->ocPlot(), ws->imagePlot()}) {
+            QVERIFY2(p->height() >= p->minimumHeight(), qPrintable(QString("plot %1 px, least %2").arg(p->height()).arg(p->minimumHeight())));
+            p->replot();
+            QVERIFY2(p->legend->outerRect().bottom() <= p->height(),
+                     qPrintable(QString("legend to %1 px of %2").arg(p->legend->outerRect().bottom()).arg(p->height())));
+            QVERIFY2(p->axisRect()->height() >= 100, qPrintable(QString("axes %1 px tall").arg(p->axisRect()->height())));
+        }
+        const QString out = widgetOutside(&w);
+        QVERIFY2(out.isEmpty(), qPrintable(out));
+    }
 };
 
 QTEST_MAIN(TestAppShell)

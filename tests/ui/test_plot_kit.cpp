@@ -271,6 +271,44 @@ private slots:
         QVERIFY(p->xAxis->label().contains("seconds of day"));
     }
 
+    /// Issue 30: time labels ran into each other on narrow plots ("20:19:20:19:20") and a wide
+    /// one showed a single label ("18:25:00"). At every width the labels are at least 3 and
+    /// never overlap, zoomed out or to fractions of a second.
+    void timeTickLabelsFitTheWidth_data() {
+        QTest::addColumn<int>("width");
+        QTest::addColumn<double>("span");
+        for (int w : {230, 260, 420, 700, 1400})
+            for (double span : {300.0, 150.0, 2.0}) QTest::newRow(qPrintable(QString("%1 px, %2 s").arg(w).arg(span))) << w << span;
+    }
+    void timeTickLabelsFitTheWidth() {
+        QFETCH(int, width);
+        QFETCH(double, span);
+        m_host->resize(1500, 300);
+        QCustomPlot* p = makePlot(m_host);
+        p->show();
+        setUtcTimeAxis(p->xAxis, QDate(2012, 6, 22));
+        p->xAxis->setRange(73140, 73140 + span);
+        p->replot();
+        // Resized after a replot, as a window is (the resize replots once: that replot must fit
+        // the new width, not the last one).
+        p->resize(width, 260);
+        QApplication::processEvents();
+        const QVector<double> ticks = p->xAxis->tickVector();
+        const QVector<QString> labels = p->xAxis->tickVectorLabels();
+        const QFontMetrics fm(p->xAxis->tickLabelFont());
+        int shown = 0;
+        double lastRight = -1e9;
+        for (int i = 0; i < ticks.size(); ++i) {
+            const double x = p->xAxis->coordToPixel(ticks[i]);
+            if (x < p->axisRect()->left() - 1 || x > p->axisRect()->right() + 1) continue;
+            const double half = fm.horizontalAdvance(labels[i]) / 2.0;
+            QVERIFY2(x - half > lastRight, qPrintable(QString("label %1 at %2 px overlaps the one before").arg(labels[i]).arg(x)));
+            lastRight = x + half;
+            ++shown;
+        }
+        QVERIFY2(shown >= (width >= 400 ? 3 : 2), qPrintable(QString("%1 labels on %2 px").arg(shown).arg(p->axisRect()->width())));
+    }
+
     void plotsFollowTheTheme() {
         QCustomPlot* p = makePlot(m_host);
         p->graph(0)->setPen(QPen(Qt::black));
