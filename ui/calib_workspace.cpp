@@ -27,6 +27,7 @@
 #include <map>
 #include <qcustomplot.h>
 
+#include "ui/save_path.hpp"
 #include "ui/calib_params_panel.hpp"
 #include "ui/color_maps.hpp"
 #include "ui/param_slider.hpp"
@@ -486,10 +487,8 @@ QString CalibWorkspace::openFile(const QString& title, const QString& filter) {
 
 void CalibWorkspace::exportWith(const QString& title, const QString& filter,
                                 bool (CalibController::*fn)(const QString&, QString*) const) {
-    QSettings st;
-    const QString path = QFileDialog::getSaveFileName(this, title, st.value("paths/calibExport").toString(), filter);
+    const QString path = askSavePath(this, title, "paths/calibExport", QString(), filter);
     if (path.isEmpty()) return;
-    st.setValue("paths/calibExport", QFileInfo(path).absolutePath());
     QString err;
     if (!(m_controller->*fn)(path, &err)) showError(title, err);
     else emit status(tr("Wrote %1").arg(path));

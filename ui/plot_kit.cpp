@@ -1,10 +1,16 @@
 #include "ui/plot_kit.hpp"
+#include "ui/save_path.hpp"
 
 #include <QApplication>
 #include <QClipboard>
 #include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QFormLayout>
+#include <QDialogButtonBox>
+#include <QDialog>
 #include <QFileInfo>
 #include <QKeyEvent>
 #include <QMenu>
@@ -193,7 +199,7 @@ ImageMap addImageMap(QCustomPlot* p, const QString& label, bool yDown) {
 
 // ---------------------------------------------------------------------------------------------
 
-bool exportPlot(QCustomPlot* plot, const QString& path, QString* error, int width, int height) {
+bool exportPlot(QCustomPlot* plot, const QString& path, QString* error, int width, int height, double dpi) {
     const QString suffix = QFileInfo(path).suffix().toLower();
     const int w = width > 0 ? width : std::max(plot->width(), 100);
     const int h = height > 0 ? height : std::max(plot->height(), 80);
@@ -208,8 +214,15 @@ bool exportPlot(QCustomPlot* plot, const QString& path, QString* error, int widt
     if (!f.open(QIODevice::WriteOnly)) return fail(f.errorString());
     plot->replot(QCustomPlot::rpImmediateRefresh);  // lays out with the current data
     if (suffix == "png") {
-        const QPixmap pm = plot->toPixmap(w, h, 1.0);
-        if (pm.isNull() || !pm.save(&f, "PNG")) return fail(QObject::tr("cannot render the plot as PNG"));
+        // Laid out at w × h, drawn at dpi / 96 pixels per layout pixel, with the DPI in the file
+        // (a 1600 × 1000 layout at 300 dpi: 5000 × 3125 pixels, 13.3 × 8.3 cm when placed).
+        const double scale = dpi > 0 ? dpi / 96.0 : 1.0;
+        QImage img = plot->toPixmap(w, h, scale).toImage();
+        if (img.isNull()) return fail(QObject::tr("cannot render the plot as PNG"));
+        const int dpm = qRound((dpi > 0 ? dpi : 96.0) / 0.0254);
+        img.setDotsPerMeterX(dpm);
+        img.setDotsPerMeterY(dpm);
+        if (!img.save(&f, "PNG")) return fail(QObject::tr("cannot render the plot as PNG"));
     } else if (suffix == "svg") {
         QSvgGenerator gen;
         gen.setOutputDevice(&f);
@@ -493,19 +506,61 @@ QString PlotKit::defaultName() const {
     return QStringLiteral("plot");
 }
 
+// The size of an exported plot: its layout in pixels (points for SVG and PDF) and, for PNG,
+// the resolution; remembered between exports. False when cancelled.
+static bool askExportSize(QWidget* parent, PlotFormat format, QSize shown, QSize* size, double* dpi) {
+    QSettings st;
+    QDialog dlg(parent);
+    dlg.setWindowTitle(QObject::tr("Plot size"));
+    auto* form = new QFormLayout(&dlg);
+    auto* w = new QSpinBox(&dlg);
+    auto* h = new QSpinBox(&dlg);
+    for (QSpinBox* b : {w, h}) {
+        b->setRange(100, 10000);
+        b->setSuffix(format == PlotFormat::Png ? QObject::tr(" px") : QObject::tr(" pt"));
+    }
+    w->setValue(st.value("plotExport/width", std::max(shown.width(), 800)).toInt());
+    h->setValue(st.value("plotExport/height", std::max(shown.height(), 500)).toInt());
+    auto* asShown = new QPushButton(QObject::tr("As shown (%1 × %2)").arg(shown.width()).arg(shown.height()), &dlg);
+    QObject::connect(asShown, &QPushButton::clicked, &dlg, [=] {
+        w->setValue(shown.width());
+        h->setValue(shown.height());
+    });
+    form->addRow(QObject::tr("Width"), w);
+    form->addRow(QObject::tr("Height"), h);
+    form->addRow(QString(), asShown);
+    auto* res = new QSpinBox(&dlg);
+    res->setRange(72, 1200);
+    res->setSuffix(QObject::tr(" dpi"));
+    res->setValue(st.value("plotExport/dpi", 192).toInt());
+    res->setToolTip(QObject::tr("Pixels per inch of the image: the layout above is drawn at dpi / 96 pixels per pixel "
+                                "(96: as on screen; 300: print)"));
+    if (format == PlotFormat::Png) form->addRow(QObject::tr("Resolution"), res);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dlg);
+    QObject::connect(buttons, &QDialogButtonBox::accepted, &dlg, &QDialog::accept);
+    QObject::connect(buttons, &QDialogButtonBox::rejected, &dlg, &QDialog::reject);
+    form->addRow(buttons);
+    if (dlg.exec() != QDialog::Accepted) return false;
+    *size = QSize(w->value(), h->value());
+    *dpi = format == PlotFormat::Png ? res->value() : 0;
+    st.setValue("plotExport/width", size->width());
+    st.setValue("plotExport/height", size->height());
+    if (format == PlotFormat::Png) st.setValue("plotExport/dpi", res->value());
+    return true;
+}
+
 void PlotKit::exportDialog(PlotFormat format) {
     const QString ext = format == PlotFormat::Png ? "png" : format == PlotFormat::Svg ? "svg" : "pdf";
     const QString filter = format == PlotFormat::Png   ? tr("PNG image (*.png)")
                            : format == PlotFormat::Svg ? tr("SVG drawing (*.svg)")
                                                        : tr("PDF document (*.pdf)");
-    QSettings st;
-    const QString dir = st.value("paths/plotExport").toString();
-    QString path = QFileDialog::getSaveFileName(m_plot, tr("Export the plot"), QDir(dir).filePath(defaultName() + "." + ext), filter);
+    QSize size;
+    double dpi = 0;
+    if (!askExportSize(m_plot, format, m_plot->size(), &size, &dpi)) return;
+    const QString path = askSavePath(m_plot, tr("Export the plot"), "paths/plotExport", defaultName() + "." + ext, filter);
     if (path.isEmpty()) return;
-    if (QFileInfo(path).suffix().toLower() != ext) path += "." + ext;
-    st.setValue("paths/plotExport", QFileInfo(path).absolutePath());
     QString err;
-    if (!exportPlot(m_plot, path, &err)) QMessageBox::warning(m_plot, tr("Cannot export the plot"), err);
+    if (!exportPlot(m_plot, path, &err, size.width(), size.height(), dpi)) QMessageBox::warning(m_plot, tr("Cannot export the plot"), err);
 }
 
 void PlotKit::showMenu(const QPoint& globalPos) {

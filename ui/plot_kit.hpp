@@ -63,8 +63,9 @@ PlotKit* plotKit(const QCustomPlot* plot);
 
 enum class PlotFormat { Png, Svg, Pdf };
 /// Writes the plot as PNG, SVG or PDF (by the path's suffix; width/height 0: the widget's size)
-/// through a temporary file renamed into place. False with *error naming the path and the cause.
-bool exportPlot(QCustomPlot* plot, const QString& path, QString* error, int width = 0, int height = 0);
+/// through a temporary file renamed into place. PNG: drawn at dpi / 96 image pixels per layout
+/// pixel with the dpi in the file (0: 96). False with *error naming the path and the cause.
+bool exportPlot(QCustomPlot* plot, const QString& path, QString* error, int width = 0, int height = 0, double dpi = 0);
 /// The plot as an image on the clipboard.
 void copyPlotToClipboard(QCustomPlot* plot);
 
@@ -105,6 +106,8 @@ public:
     PlotKit(QCustomPlot* plot, const PlotKitOptions& options);
     QCustomPlot* plot() const { return m_plot; }
     void setOptions(const PlotKitOptions& options) { m_options = options; }
+    /// The file name stem the export dialogs offer (a workspace names its plots by their data).
+    void setExportName(const QString& stem) { m_options.exportName = stem; }
 
     /// Zooms the main axis rect to a rectangle in widget pixels (x axes to its width, y axes to
     /// its height). Pushes the view before it on the history.

@@ -28,6 +28,7 @@
 #include <opencv2/imgproc.hpp>
 #include <qcustomplot.h>
 
+#include "ui/save_path.hpp"
 #include "ui/calib_params_panel.hpp"
 #include "ui/color_maps.hpp"
 #include "ui/plot_kit.hpp"
@@ -519,10 +520,8 @@ void RadiometryWorkspace::showError(const QString& title, const QString& message
 
 void RadiometryWorkspace::exportWith(const QString& title, const QString& filter,
                                      bool (RadiometryController::*fn)(const QString&, QString*) const) {
-    QSettings st;
-    QString path = QFileDialog::getSaveFileName(this, title, st.value("paths/radiometryExport").toString(), filter);
+    const QString path = askSavePath(this, title, "paths/radiometryExport", QString(), filter);
     if (path.isEmpty()) return;
-    st.setValue("paths/radiometryExport", QFileInfo(path).absolutePath());
     QString err;
     if (!(m_controller->*fn)(path, &err)) showError(title, err);
     else emit status(tr("Wrote %1").arg(path));

@@ -1,4 +1,5 @@
 #include "ui/slr_all_passes.hpp"
+#include "ui/save_path.hpp"
 #include "ui/table_csv.hpp"
 
 #include <QDateTime>
@@ -103,7 +104,7 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
     connect(this, &QDialog::rejected, this, &SlrAllPassesDialog::cancel);
 
     connect(m_exportButton, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export the table"), QString(), tr("CSV (*.csv)"));
+        const QString path = askSavePath(this, tr("Export the table"), "paths/slrExport", "all_passes.csv", tr("CSV (*.csv)"));
         QString err;
         if (!path.isEmpty() && !exportCsv(path, &err)) m_label->setText(err);
     });

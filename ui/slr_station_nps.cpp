@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "core/slr/crd.hpp"
+#include "ui/save_path.hpp"
 #include "ui/table_csv.hpp"
 #include "ui/workspace_layout.hpp"
 
@@ -79,7 +80,8 @@ SlrStationNpPanel::SlrStationNpPanel(QWidget* parent) : QWidget(parent) {
         emit changed();
     });
     connect(m_export, &QToolButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export the differences"), QString(), tr("CSV (*.csv)"));
+        const QString path =
+            askSavePath(this, tr("Export the differences"), "paths/slrExport", "station_np_differences.csv", tr("CSV (*.csv)"));
         QString err;
         if (!path.isEmpty() && !exportCsv(path, &err)) m_summary->setText(err);
     });

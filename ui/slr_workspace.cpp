@@ -17,6 +17,7 @@
 #include <QRadioButton>
 #include <QScrollArea>
 #include <QSettings>
+#include <QRegularExpression>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QToolButton>
@@ -27,6 +28,7 @@
 #include <climits>
 
 #include "core/sim/slr_sim.hpp"
+#include "ui/save_path.hpp"
 #include "ui/app_undo.hpp"
 #include "ui/params_command.hpp"
 #include "ui/param_slider.hpp"
@@ -471,10 +473,7 @@ QWidget* SlrWorkspace::buildPanel() {
             QMessageBox::warning(this, title, QString::fromStdString(damaged));
             return {};
         }
-        QSettings st;
-        const QString path = QFileDialog::getSaveFileName(this, title, st.value("paths/slrExport").toString(), filter);
-        if (!path.isEmpty()) st.setValue("paths/slrExport", QFileInfo(path).absolutePath());
-        return path;
+        return askSavePath(this, title, "paths/slrExport", passFileStem(), filter);
     };
     auto exporter = [=](const QString& title, const QString& filter, auto fn) {
         const QString path = savePath(title, filter);
@@ -642,8 +641,25 @@ void SlrWorkspace::fillPassList() {
     m_loading = false;
 }
 
+// "blits_20120622_2019": the open pass's satellite and UTC start, for the names offered by
+// exports (the plots', the points', the CRD files'); "slr_pass" for an O-C table or the demo.
+QString SlrWorkspace::passFileStem() const {
+    const PassData& p = m_controller->pass();
+    const int sel = m_controller->selectedPass();
+    QString stem = QString::fromStdString(p.satellite).toLower();
+    stem.replace(QRegularExpression("[^a-z0-9]+"), "-");
+    if (p.hasCrd && sel >= 0 && size_t(sel) < m_controller->passes().size()) {
+        const QString start = QString::fromStdString(m_controller->passes()[size_t(sel)].start);  // yyyy-MM-dd hh:mm:ss
+        stem += "_" + QString(start).remove(QRegularExpression("[^0-9]")).left(12).insert(8, '_');
+    }
+    return stem.isEmpty() || stem == "_" ? QStringLiteral("slr_pass") : stem;
+}
+
 void SlrWorkspace::showPass() {
     fillPassList();
+    const QString stem = passFileStem();
+    for (auto [plot, what] : {std::pair{m_ocPlot, "oc"}, std::pair{m_imagePlot, "binary-image"}, std::pair{m_histPlot, "residuals"}})
+        if (PlotKit* kit = plotKit(plot)) kit->setExportName(stem + "_" + what);
     undoStackOf(this).clear();  // commands refer to the pass they were made on
     m_params->setParams(m_controller->params());  // a satellite preset may have come with the pass
     const PassData& p = m_controller->pass();

@@ -114,6 +114,7 @@ private:
     void drawHistogram(const SlrRun& run);
     QString summaryHtml(const SlrRun& run) const;
     void showPass();
+    QString passFileStem() const;
     void fillPassList();
     void applyTimeAxis();
     void fitMainPlot();

@@ -12,6 +12,7 @@
 #include "test_support.hpp"
 #include "ui/calib_workspace.hpp"
 #include "ui/plot_kit.hpp"
+#include "ui/save_path.hpp"
 #include "ui/radiometry_workspace.hpp"
 
 using namespace lwb::ui;
@@ -212,6 +213,27 @@ private slots:
         // An unwritable place: an error, no crash.
         QVERIFY(!exportPlot(p, m_dir.filePath("no/such/dir/plot.png"), &err));
         QVERIFY(err.contains("plot.png"));
+    }
+
+    /// Issue 30: plot exports were the widget's size (a 323 × 161 PNG), named plot.png, with no
+    /// size or resolution; CSV exports got no suffix. A size and a DPI now: the PNG has the
+    /// layout's size times dpi / 96 pixels and the DPI in its header; names get their suffix.
+    void exportsHaveTheSizeAndResolutionAsked() {
+        QCustomPlot* p = makePlot(m_host);
+        QString err;
+        const QString png = m_dir.filePath("sized.png"), pdf = m_dir.filePath("sized.pdf");
+        QVERIFY2(exportPlot(p, png, &err, 1600, 1000, 300), qPrintable(err));
+        const QImage img(png);
+        QCOMPARE(img.size(), QSize(5000, 3125));
+        QVERIFY(std::abs(img.dotsPerMeterX() * 0.0254 - 300) < 1);
+        QVERIFY2(exportPlot(p, pdf, &err, 800, 500), qPrintable(err));
+        QVERIFY(lwbtest::readAll(pdf).contains("/MediaBox [0 0 800.000000 500.000000]"));  // (points)
+        // The filter's suffix added when the name has none of its suffixes.
+        QCOMPARE(withFilterSuffix("/tmp/table", "CSV (*.csv)"), QString("/tmp/table.csv"));
+        QCOMPARE(withFilterSuffix("/tmp/table.CSV", "CSV (*.csv)"), QString("/tmp/table.CSV"));
+        QCOMPARE(withFilterSuffix("/tmp/np", "CRD (*.npt *.np2 *.crd)"), QString("/tmp/np.npt"));
+        QCOMPARE(withFilterSuffix("/tmp/np.np2", "CRD (*.npt *.np2 *.crd)"), QString("/tmp/np.np2"));
+        QCOMPARE(withFilterSuffix("/tmp/v1.2", "PNG image (*.png)"), QString("/tmp/v1.2.png"));
     }
 
     void legendClickHidesAndShowsItsSeries() {
