@@ -10,6 +10,8 @@
 #include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
+#include <QGuiApplication>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent>
@@ -33,7 +35,9 @@ QString fixed(double v, int decimals) { return std::isfinite(v) ? QString::numbe
 SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const SlrParams& base, QWidget* parent)
     : QDialog(parent) {
     setWindowTitle(tr("All passes of %1").arg(QFileInfo(controller->path()).fileName()));
-    resize(1100, 560);
+    // As wide as the table wants, within the screen (1100 px put Close off a 1024 px screen).
+    const QRect avail = (parent && parent->screen() ? parent->screen() : QGuiApplication::primaryScreen())->availableGeometry();
+    resize(std::min(1100, avail.width() - 40), std::min(560, avail.height() - 80));
     auto* l = new QVBoxLayout(this);
     m_table = new QTableWidget(this);
     m_table->setColumnCount(ColCount);

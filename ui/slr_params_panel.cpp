@@ -32,7 +32,9 @@ SlrParamsPanel::SlrParamsPanel(QWidget* parent)
     auto* pg = new QGroupBox(tr("Post-fit and normal points"), this);
     auto* pf = new QFormLayout(pg);
     form.place(pf, "postfit.reject_sigma", tr("Rejection (k σ)"));
-    form.place(pf, "postfit.degree", tr("Trend degree"));
+    // (the largest degree tried when the degree is chosen per segment, the default: the legend
+    // gives the one chosen, "trend (deg 5, max 10)")
+    form.place(pf, "postfit.degree", tr("Trend degree ≤"));
     top->addWidget(pg);
     m_advanced = new CollapsibleSection(tr("Advanced (every other parameter)"), this);
     form.addRemaining(m_advanced->form());

@@ -485,6 +485,16 @@ QWidget* SlrWorkspace::buildPanel() {
     connect(exCsv, &QPushButton::clicked, this, [=] { exporter(tr("Export points"), tr("CSV (*.csv)"), &SlrController::exportCsv); });
     connect(exCrd, &QPushButton::clicked, this, [=] {
         const QString title = tr("Export CRD full rate");
+        // (a simulation or an O-C table has no CRD records to flag: the question read "Pass 0 of
+        // 0 passes")
+        if (!m_controller->pass().hasCrd) {
+            QMessageBox::information(this, title,
+                                     tr("This pass is not from a CRD file (%1): there are no CRD records to flag. Export its "
+                                        "points as CSV, or its normal points as CRD.")
+                                         .arg(m_controller->pass().ocOrigin.empty() ? tr("a simulation")
+                                                                                    : QString::fromStdString(m_controller->pass().ocOrigin)));
+            return;
+        }
         QMessageBox ask(QMessageBox::Question, title, tr("Write which records?"), QMessageBox::Cancel, this);
         ask.setInformativeText(tr("Pass %1 of %2 passes in %3. Its records get filter flag 2 (accepted) or 1 (noise).")
                                    .arg(m_controller->selectedPass() + 1)
@@ -623,19 +633,24 @@ void SlrWorkspace::fillPassList() {
                         t1 = QDateTime::fromString(QString::fromStdString(s.end), "yyyy-MM-dd hh:mm:ss");
         const qint64 d = t0.isValid() && t1.isValid() ? t0.secsTo(t1) : -1;
         const QString why = m_controller->passError(s.index);
-        QString status = !why.isEmpty() ? tr("cannot be processed: %1").arg(why)
-                         : s.ranges == 0 ? (s.normalPoints ? tr("normal points only") : tr("no ranges"))
-                                         : tr("ok");
-        const QString text = tr("%1. %2 · %3 · %4 · %5 · %6 pts · %7")
-                                 .arg(s.index + 1)
-                                 .arg(QString::fromStdString(s.start), QString::fromStdString(s.station), QString::fromStdString(s.satellite))
-                                 .arg(d >= 0 ? QString("%1:%2").arg(d / 60).arg(d % 60, 2, 10, QChar('0')) : QString("?"))
-                                 .arg(s.ranges)
-                                 .arg(status.size() > 70 ? status.left(69) + "…" : status);
+        // What is known before screening, as laserwb-cli slr --all-passes lists it (core
+        // blockStatus): the station's normal points, engineering data, too few records; nothing
+        // for a pass to screen (issue 30: passes of 3 and 4 records were listed "ok").
+        const BlockStatus b = blockStatus(s);
+        const QString status = !why.isEmpty()     ? tr("cannot be processed: %1").arg(why)
+                               : !b.status.empty() ? QString::fromStdString(b.status + (b.reason.empty() ? "" : ": " + b.reason))
+                                                   : QString();
+        QString text = tr("%1. %2 · %3 · %4 · %5 · %6 pts")
+                           .arg(s.index + 1)
+                           .arg(QString::fromStdString(s.start), QString::fromStdString(s.station), QString::fromStdString(s.satellite))
+                           .arg(d >= 0 ? QString("%1:%2").arg(d / 60).arg(d % 60, 2, 10, QChar('0')) : QString("?"))
+                           .arg(s.ranges);
+        if (!status.isEmpty()) text += " · " + (status.size() > 70 ? status.left(69) + "…" : status);
         m_passCombo->addItem(text, s.index);
         const int i = m_passCombo->count() - 1;
         m_passCombo->setItemData(i, status, Qt::ToolTipRole);
         if (!why.isEmpty()) m_passCombo->setItemData(i, QColor(170, 0, 0), Qt::ForegroundRole);
+        else if (!b.status.empty()) m_passCombo->setItemData(i, QColor(120, 120, 120), Qt::ForegroundRole);
     }
     m_passCombo->setCurrentIndex(m_passCombo->findData(m_controller->selectedPass()));
     m_loading = false;
@@ -695,7 +710,10 @@ void SlrWorkspace::showPass() {
     if (!p.damaged.empty())
         text += tr("<br><b style=\"color:#b00000\">Damaged records: exports are refused.</b> %1")
                     .arg(QString::fromStdString(p.damaged).toHtmlEscaped());
-    const auto& warnings = m_controller->warnings();
+    // (the prediction's note is said above: not again among the readers' warnings)
+    std::vector<std::string> warnings;
+    for (const std::string& w : m_controller->warnings())
+        if (p.ocNote.empty() || w != p.ocNote) warnings.push_back(w);
     const size_t shown = std::min<size_t>(warnings.size(), 5);
     if (!warnings.empty()) text += tr("<br><b>%n warning(s) reading the files:</b>", nullptr, int(warnings.size()));
     for (size_t i = 0; i < shown; ++i) text += "<br>" + QString::fromStdString(warnings[i]).toHtmlEscaped();
@@ -1030,7 +1048,10 @@ void SlrWorkspace::drawMainPlot(const SlrRun& run, bool residual) {
             ty << qQNaN();
         }
         QCPGraph* trend = keyed(m_ocPlot->addGraph(), "trend");
-        trend->setName(residual ? tr("trend (zero)") : tr("trend (degree %1)").arg(run.post.degree));
+        const PostfitParams& pp = m_controller->postfitParams();
+        trend->setName(residual           ? tr("trend (zero)")
+                       : pp.autoDegree ? tr("trend (deg %1, max %2)").arg(run.post.degree).arg(pp.degree)
+                                       : tr("trend (degree %1)").arg(run.post.degree));
         trend->setPen(QPen(QColor(60, 60, 60), 1.2));
         trend->setData(tx, ty, true);
         for (const NormalPoint& np : run.post.normalPoints) {

@@ -474,8 +474,9 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
     d.cdpPad = pass.station.cdpPadId;
     d.damaged = damagedRecords(pass, path, r.warnings);
     OcResult oc;
-    if (!params.cpfPath.empty() != !params.sinexPath.empty())
-        r.warnings.push_back("O-C from a prediction needs both the CPF and the SINEX file; using the fitted TOF trend");
+    // (a SINEX file alone is no half of anything: it gives the station for day or night)
+    if (!params.cpfPath.empty() && params.sinexPath.empty())
+        r.warnings.push_back("O-C from a prediction needs the SINEX file too (the station's position); using the fitted TOF trend");
     double altitudeKm = 0;
     std::vector<std::string> cpfWarnings;
     const CpfFile* cpf = nullptr;
