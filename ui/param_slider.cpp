@@ -38,8 +38,10 @@ double roundSignificant(double v, int digits) {
     return std::round(v * scale) / scale;
 }
 
-// The numeric field: accepts what the schema row accepts, shows the value exactly (shortest
-// text that reads back as the same double), and never rounds what it is given.
+// The numeric field: accepts what the schema row accepts and never rounds what it is given;
+// it shows the value with the digits its row asks for (issue 30: 0.1353352, 4.329739712682504
+// and 11,482,396,630.7232 were shown whole and clipped), the exact value in its tooltip, and
+// keeps the exact value when the text shown is left as it is.
 class ValueField : public QDoubleSpinBox {
 public:
     ValueField(const core::FieldInfo& info, QWidget* parent) : QDoubleSpinBox(parent), m_info(info) {
@@ -53,14 +55,24 @@ public:
         setMinimumWidth(86);
         setMaximumWidth(150);
         if (!info.unit.empty()) setSuffix(" " + QString::fromStdString(info.unit));
+        QLocale plain = locale();
+        plain.setNumberOptions(plain.numberOptions() | QLocale::OmitGroupSeparator);  // "11482396630", not "11,482,…"
+        setLocale(plain);
     }
     QString textFromValue(double v) const override {
         if (m_info.kind == core::FieldKind::Integer) return locale().toString(qlonglong(std::llround(v)));
-        // Whole numbers as such (60000, not the shortest form 6e+04); others in their shortest form.
-        if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 1e9) return locale().toString(qlonglong(v));
-        return locale().toString(v, 'g', QLocale::FloatingPointShortest);
+        // Whole numbers as such (60000, not 6e+04); others with the row's digits, at least 4
+        // significant ones (0.1353, 4.33, 1.148e+10, 0.03945).
+        if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 1e6) return locale().toString(qlonglong(v));
+        return locale().toString(v, 'g', std::max(4, m_info.decimals));
     }
-    double valueFromText(const QString& text) const override { return parse(text, nullptr); }
+    double valueFromText(const QString& text) const override {
+        // The text as shown (rounded) stands for the exact value: leaving the field must not
+        // round the parameter.
+        QString shown = textFromValue(value());
+        if (text.trimmed() == shown || text.trimmed() == shown + suffix()) return value();
+        return parse(text, nullptr);
+    }
     QValidator::State validate(QString& text, int&) const override {
         bool ok = false;
         const double v = parse(text, &ok);
@@ -210,6 +222,7 @@ void ParamSlider::show() {
     if (std::isfinite(shown)) {
         m_slider->setValue(toSlider(shown));
         m_field->setValue(shown);
+        showExactValue();
     }
     m_slider->setEnabled(sp < 0);
     m_field->setEnabled(sp < 0);
@@ -238,9 +251,17 @@ void ParamSlider::userValue(double v) {
 }
 
 void ParamSlider::setToolTipText(const QString& tip) {
+    m_tip = tip;
     m_label->setToolTip(tip);
     m_slider->setToolTip(tip);
-    m_field->setToolTip(tip);
+    showExactValue();
+}
+
+// The field shows the value rounded to its row's digits; its tooltip gives it exactly.
+void ParamSlider::showExactValue() {
+    const double v = m_field->value();
+    m_field->setToolTip(m_tip + (m_tip.isEmpty() ? "" : "<br>") +
+                        tr("Value: %1").arg(QLocale().toString(v, 'g', QLocale::FloatingPointShortest)));
 }
 
 int ParamSlider::toSlider(double v) const {

@@ -59,6 +59,7 @@ private:
     int toSlider(double v) const;
     double fromSlider(int s) const;
     int specialIndex(double v) const;
+    void showExactValue();
 
     core::FieldInfo m_info;
     QSlider* m_slider = nullptr;
@@ -70,6 +71,7 @@ private:
     double m_hint = NAN;
     bool m_intSlider = false;    ///< the slider's positions are the integers of the UI range
     bool m_updating = false;
+    QString m_tip;               ///< the row's tooltip (the exact value is added to it)
 };
 
 }  // namespace lwb::ui

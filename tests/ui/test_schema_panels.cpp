@@ -8,6 +8,7 @@
 #include <QJsonArray>
 #include <QLineEdit>
 #include <QScrollArea>
+#include <QSignalSpy>
 #include <QWheelEvent>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -227,6 +228,35 @@ private slots:
         QCOMPARE(QString::fromStdString(joined(calib::calibSchema().changedKeys(before, panel->params()))),
                  QString("waveform.min_separation_ns"));
     }
+    /// Issue 30: fields showed every digit (4.329739712682504, 0.1353352) and group separators
+    /// (11,482,396,630.7232), clipped. They show the row's digits (at least 4 significant), the
+    /// exact value in the tooltip, and leaving a field untouched keeps the exact value.
+    void fieldsShowTheirDigitsAndKeepTheExactValue() {
+        const auto* magT = slr::slrSchema().find("screen.mag_t");
+        QVERIFY(magT);
+        ParamSlider s(*magT);
+        QSignalSpy changed(&s, &ParamSlider::valueChanged);
+        for (const auto& [v, text] : {std::pair{4.329739712682504, QString("4.33")}, std::pair{0.0394462123, QString("0.03945")},
+                                      std::pair{11482396630.7232, QString("1.148e+10")}, std::pair{60000.0, QString("60000")}}) {
+            s.setValue(v);
+            QCOMPARE(s.field()->cleanText(), text);
+            QVERIFY2(s.field()->toolTip().contains(QLocale().toString(v, 'g', QLocale::FloatingPointShortest)),
+                     qPrintable(s.field()->toolTip()));
+            // The field left as shown (focus out / Enter): the value stays exact, nothing emitted.
+            s.field()->interpretText();
+            QCOMPARE(s.value(), v);
+            QCOMPARE(s.field()->value(), v);
+        }
+        QCOMPARE(changed.count(), 0);
+        // Typed: taken as typed.
+        QLineEdit* edit = s.field()->findChild<QLineEdit*>();
+        QVERIFY(edit);
+        edit->setText("7.5 px/s");
+        s.field()->interpretText();
+        QCOMPARE(s.value(), 7.5);
+        QCOMPARE(changed.count(), 1);
+    }
+
     // Leaving the dual model releases the rigid beams (a rule between fields the form keeps).
     void calibPanelDualModelRule() {
         CalibParamsPanel panel;
