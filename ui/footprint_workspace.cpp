@@ -166,6 +166,10 @@ QWidget* FootprintWorkspace::buildShotList() {
     m_table->sortByColumn(-1, Qt::AscendingOrder);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    // Tab leaves the table for the next widget, as everywhere else in the window. A table moves
+    // from cell to cell on Tab by default, and past the last column to the next row: the shot
+    // changed under the reviewer's hands (issue 30). The shots are browsed with the arrow keys.
+    m_table->setTabKeyNavigation(false);
     m_table->verticalHeader()->setDefaultSectionSize(20);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);

@@ -303,7 +303,10 @@ QStringList MainWindow::shortcutList() const {
     };
     walk(menuBar()->actions(), QString());
     out << tr("↑ / ↓\tFootprint ▸ previous / next shot") << tr("A\tFootprint ▸ accept the shot and move on")
-        << tr("R\tFootprint ▸ reject the shot and move on");
+        << tr("R\tFootprint ▸ reject the shot and move on")
+        << tr("N\tFootprint ▸ next shot of the view without a manual verdict")
+        << tr("E\tFootprint ▸ note on the shot (Enter keeps it and returns to the table)")
+        << tr("Tab, Shift+Tab\tFootprint ▸ leave the shot table (the shot stays)");
     out << tr("Wheel\tPlot ▸ zoom both axes about the cursor") << tr("Shift+Wheel\tPlot ▸ zoom x only")
         << tr("Ctrl+Wheel\tPlot ▸ zoom y only") << tr("Wheel / drag over an axis\tPlot ▸ zoom / pan that axis only")
         << tr("Drag\tPlot ▸ pan") << tr("Right-drag, Shift+drag\tPlot ▸ box zoom")

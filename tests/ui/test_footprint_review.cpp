@@ -740,6 +740,42 @@ private slots:
         QCOMPARE(noted, notes.size());
         QVERIFY(noted >= 5);
     }
+
+    // Issue 30, item 1 (found in a real window): Tab was trapped in the shot table, moving from
+    // cell to cell and, past the last column, to the next shot. Tab and Shift+Tab now leave the
+    // table for the next (previous) widget and the current shot stays; ↑ / ↓ still move.
+    void tabLeavesTheShotTable() {
+        MainWindow w;
+        QVERIFY(showDemo(w));
+        FootprintWorkspace* fw = w.footprint();
+        fw->filterBox()->setCurrentIndex(0);
+        fw->selectRow(3);
+        fw->table()->setFocus();
+        QVERIFY(QTest::qWaitFor([&] { return fw->table()->hasFocus(); }, 2000));
+        // As many Tabs as there are columns: each one leaves the table (and is sent back to it),
+        // so a Tab that wrapped to the next row would show.
+        for (int k = 0; k < fw->proxy()->columnCount(); ++k) {
+            QTest::keyClick(fw->table(), Qt::Key_Tab);
+            QVERIFY2(!fw->table()->hasFocus(), qPrintable(QString("Tab %1 stayed in the table").arg(k + 1)));
+            QCOMPARE(currentSource(fw), 3);
+            QCOMPARE(fw->controller()->current(), 3);
+            QWidget* next = QApplication::focusWidget();
+            QVERIFY(next);
+            QTest::keyClick(next, Qt::Key_Backtab);
+            QVERIFY2(fw->table()->hasFocus(), "Shift+Tab does not come back to the table");
+            QCOMPARE(currentSource(fw), 3);
+        }
+        QTest::keyClick(fw->table(), Qt::Key_Down);
+        QCOMPARE(currentSource(fw), 4);
+        QTest::keyClick(fw->table(), Qt::Key_Up);
+        QCOMPARE(currentSource(fw), 3);
+        // Help ▸ Keyboard shortcuts says so, with the other review keys.
+        QStringList listed;
+        for (const QString& k : w.shortcutList())
+            if (k.contains("Footprint ▸")) listed << k.section('\t', 0, 0);
+        for (const QString& key : {"↑ / ↓", "A", "R", "N", "E", "Tab, Shift+Tab"})
+            QVERIFY2(listed.contains(key), qPrintable(key + " is not in the shortcut list: " + listed.join(" | ")));
+    }
 };
 
 QTEST_MAIN(TestFootprintReview)
