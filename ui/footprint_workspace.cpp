@@ -590,6 +590,11 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
     if (s->overridden) badge += tr(" (manual; computed: %1)").arg(verdictLabel(s->verdict));
     for (const auto& reason : r.reasons) badge += "\n• " + QString::fromStdString(reason);
     m_roiView->setBadge(badge, verdictColor(v));
+    // The badge must not hide the spot: it keeps clear of every centre marker drawn.
+    QVector<QPointF> centres;
+    for (const FootprintResult* m : {&d.gauss, &d.tefm, &d.gcm})
+        if (m->fit.ok) centres << QPointF(m->fit.x, m->fit.y);
+    m_roiView->setKeepClear(centres);
     // Full-frame context.
     if (s->fullFrame) {
         if (m_frameFile != s->file) {
@@ -615,6 +620,9 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
                               QPen(kGaussColor, 1.5 / scale), true);
             });
             m_frameView->setBadge(tr("Frame around the ROI"), QColor(60, 60, 60));
+            QVector<QPointF> spot;
+            if (r.fit.ok) spot << QPointF(r.fit.x + d.origin.x() - win.x, r.fit.y + d.origin.y() - win.y);
+            m_frameView->setKeepClear(spot);
         }
     } else {
         m_frame.release();

@@ -3,9 +3,21 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 
 namespace lwb::ui {
+
+QRect placeBadge(const QRect& area, QSize size, int margin, const QVector<QPointF>& keepClear, double clearance) {
+    const int left = area.left() + margin, right = area.right() + 1 - margin - size.width();
+    const int top = area.top() + margin, bottom = area.bottom() + 1 - margin - size.height();
+    for (const QPoint corner : {QPoint(left, top), QPoint(right, top), QPoint(left, bottom), QPoint(right, bottom)}) {
+        const QRectF zone = QRectF(corner, size).adjusted(-clearance, -clearance, clearance, clearance);
+        if (std::none_of(keepClear.begin(), keepClear.end(), [&](const QPointF& p) { return zone.contains(p); }))
+            return QRect(corner, size);
+    }
+    return {};
+}
 
 ImageView::ImageView(QWidget* parent) : QWidget(parent) {
     setMouseTracking(true);
@@ -27,6 +39,7 @@ void ImageView::clear() {
     m_data.release();
     m_image = QImage();
     m_badge.clear();
+    m_keepClear.clear();
     update();
 }
 
@@ -41,6 +54,11 @@ void ImageView::setBadge(const QString& text, const QColor& color) {
     update();
 }
 
+void ImageView::setKeepClear(const QVector<QPointF>& points) {
+    m_keepClear = points;
+    update();
+}
+
 void ImageView::fitToWindow() {
     m_fit = true;
     if (m_image.isNull()) return;
@@ -50,6 +68,37 @@ void ImageView::fitToWindow() {
 }
 
 QPointF ImageView::toImage(QPointF w) const { return (w - m_offset) / m_zoom - QPointF(0.5, 0.5); }
+
+QPointF ImageView::toWidget(QPointF image) const { return m_offset + (image + QPointF(0.5, 0.5)) * m_zoom; }
+
+QRectF ImageView::visibleImageRect() const {
+    return QRectF(toImage(QPointF(0, 0)), toImage(QPointF(width(), height()))) & QRectF(-0.5, -0.5, m_image.width(), m_image.height());
+}
+
+// The badge in the top left corner hid a spot near the ROI's top edge and its centre marker
+// (issue 30): it goes to the first corner where it leaves the markers in view, and when the
+// whole badge (the verdict and every failed criterion) fits in none, its first line does (the
+// criteria are in the table's Reasons column). The layout follows the zoom and the pan.
+ImageView::BadgeLayout ImageView::layoutBadge() const {
+    if (m_badge.isEmpty() || m_image.isNull()) return {};
+    QFont f = font();
+    f.setBold(true);
+    const QFontMetrics fm(f);
+    QVector<QPointF> keep;
+    for (const QPointF& p : m_keepClear) keep << toWidget(p);
+    // The markers are drawn 0.6 image px about the centre (ui/footprint_workspace): their arms
+    // are kept in view up to a size, and always the centre with a few pixels around it.
+    const double clearance = std::min(0.6 * m_zoom, 24.0) + 4;
+    const QString first = m_badge.section('\n', 0, 0);
+    const QStringList texts = first == m_badge ? QStringList{m_badge} : QStringList{m_badge, first + QStringLiteral(" …")};
+    QSize size;
+    for (const QString& text : texts) {
+        size = fm.boundingRect(QRect(0, 0, std::max(40, width() - 16), 2000), Qt::TextWordWrap, text).size() + QSize(12, 8);
+        const QRect box = placeBadge(rect(), size, 8, keep, clearance);
+        if (!box.isEmpty()) return {box, text};
+    }
+    return {QRect(QPoint(8, 8), size), texts.last()};  // a view too small for any clear corner
+}
 
 void ImageView::paintEvent(QPaintEvent*) {
     QPainter p(this);
@@ -67,17 +116,16 @@ void ImageView::paintEvent(QPaintEvent*) {
     p.setRenderHint(QPainter::Antialiasing, true);
     if (m_overlay) m_overlay(p, m_zoom);
     p.restore();
-    if (!m_badge.isEmpty()) {
+    const BadgeLayout badge = layoutBadge();
+    if (!badge.box.isEmpty()) {
         QFont f = font();
         f.setBold(true);
         p.setFont(f);
-        const QRect text = p.fontMetrics().boundingRect(QRect(0, 0, width() - 16, 200), Qt::TextWordWrap, m_badge);
-        const QRect box(8, 8, text.width() + 12, text.height() + 8);
         p.setPen(Qt::NoPen);
         p.setBrush(QColor(m_badgeColor.red(), m_badgeColor.green(), m_badgeColor.blue(), 215));
-        p.drawRoundedRect(box, 5, 5);
+        p.drawRoundedRect(badge.box, 5, 5);
         p.setPen(Qt::white);
-        p.drawText(box.adjusted(6, 4, -6, -4), Qt::TextWordWrap, m_badge);
+        p.drawText(badge.box.adjusted(6, 4, -6, -4), Qt::TextWordWrap, badge.text);
     }
 }
 

@@ -3,11 +3,18 @@
 // y = row, pixel centres at integers) and a pixel readout under the cursor.
 #include <QImage>
 #include <QPointF>
+#include <QRect>
+#include <QVector>
 #include <QWidget>
 #include <functional>
 #include <opencv2/core.hpp>
 
 namespace lwb::ui {
+
+/// Where a badge of `size` goes in `area`: the first corner (top left, top right, bottom left,
+/// bottom right), `margin` px in from the edges, whose box stays at least `clearance` px from
+/// every point of `keepClear`. An empty rect when no corner does.
+QRect placeBadge(const QRect& area, QSize size, int margin, const QVector<QPointF>& keepClear, double clearance);
 
 class ImageView : public QWidget {
     Q_OBJECT
@@ -26,8 +33,20 @@ public:
     bool hasOverlay() const { return bool(m_overlay); }
     bool hasImage() const { return !m_image.isNull(); }
     void setBadge(const QString& text, const QColor& color);
+    /// Image points (data coordinates, as the overlay's) the badge must leave in view: the spot's
+    /// centre markers. The badge takes the first corner clear of them; when the whole badge fits
+    /// in none, its first line (the verdict) does. Dropped with the image (clear()).
+    void setKeepClear(const QVector<QPointF>& points);
     void fitToWindow();
     double zoom() const { return m_zoom; }
+    /// Widget position of an image point (data coordinates, as the overlay's).
+    QPointF toWidget(QPointF image) const;
+    /// The part of the image in view (data coordinates, pixel edges at ±0.5).
+    QRectF visibleImageRect() const;
+    /// Where the badge is drawn (widget pixels; empty without a badge or an image).
+    QRect badgeRect() const { return layoutBadge().box; }
+    /// What the view says in place of an image.
+    QString placeholderText() const { return tr("No image"); }
 
 signals:
     /// Cursor moved over pixel (x, y) of the data (full-image coordinates) holding value.
@@ -44,6 +63,11 @@ protected:
     QSize sizeHint() const override { return {360, 360}; }
 
 private:
+    struct BadgeLayout {
+        QRect box;
+        QString text;
+    };
+    BadgeLayout layoutBadge() const;
     QPointF toImage(QPointF widget) const;
     cv::Mat m_data;
     QImage m_image;
@@ -51,6 +75,7 @@ private:
     OverlayFn m_overlay;
     QString m_badge;
     QColor m_badgeColor;
+    QVector<QPointF> m_keepClear;
     double m_zoom = 1;
     QPointF m_offset;  // widget position of image point (−0.5, −0.5)
     bool m_fit = true;

@@ -19,9 +19,13 @@
 #include <QTableView>
 #include <QThread>
 #include <QThreadPool>
+#include <QTimer>
+#include <QMenu>
+#include <QWheelEvent>
 #include <QUndoStack>
 #include <QtTest>
 #include <map>
+#include <opencv2/imgcodecs.hpp>
 #include <qcustomplot.h>
 
 #include "core/common/csv.hpp"
@@ -75,6 +79,41 @@ bool showShot(FootprintWorkspace* fw, int row) {
     if (fw->controller()->current() != row) return false;
     fw->controller()->setCurrent(row);
     return !detail.isEmpty() || detail.wait(10000);  // an unreadable shot's detail comes at once
+}
+
+// A 32 × 32 ROI (taken whole by the loader) with one Gaussian spot centred at (x, y).
+bool writeSpot(const QString& path, double x, double y) {
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    cv::Mat img(32, 32, CV_16UC1);
+    for (int r = 0; r < img.rows; ++r)
+        for (int c = 0; c < img.cols; ++c) {
+            const double d2 = (c - x) * (c - x) + (r - y) * (r - y);
+            img.at<ushort>(r, c) = cv::saturate_cast<ushort>(800 + 30 * ((r * 7 + c * 13) % 5) + 30000 * std::exp(-d2 / 8.0));
+        }
+    return cv::imwrite(path.toStdString(), img);
+}
+
+// A mouse drag with `button` held (events sent directly, so the moves carry the button).
+void drag(QWidget* w, Qt::MouseButton button, Qt::KeyboardModifiers mods, QPointF from, QPointF to) {
+    auto send = [&](QEvent::Type t, QPointF pos, Qt::MouseButton b, Qt::MouseButtons held) {
+        QMouseEvent e(t, pos, w->mapToGlobal(pos), b, held, mods);
+        QApplication::sendEvent(w, &e);
+    };
+    send(QEvent::MouseButtonPress, from, button, button);
+    for (int k = 1; k <= 5; ++k) send(QEvent::MouseMove, from + (to - from) * (k / 5.0), Qt::NoButton, button);
+    send(QEvent::MouseButtonRelease, to, button, Qt::NoButton);
+}
+
+// Pixels within `radius` of `at` whose colour is within `tol` of `c` in every channel.
+int pixelsNear(const QImage& img, QPointF at, int radius, QColor c, int tol) {
+    int n = 0;
+    for (int y = int(at.y()) - radius; y <= int(at.y()) + radius; ++y)
+        for (int x = int(at.x()) - radius; x <= int(at.x()) + radius; ++x) {
+            if (!img.valid(x, y)) continue;
+            const QColor p = img.pixelColor(x, y);
+            n += std::abs(p.red() - c.red()) <= tol && std::abs(p.green() - c.green()) <= tol && std::abs(p.blue() - c.blue()) <= tol;
+        }
+    return n;
 }
 }  // namespace
 
@@ -741,6 +780,56 @@ private slots:
         QVERIFY(noted >= 5);
     }
 
+    // Issue 30, item 2 (found in a real window): the verdict badge, always in the top left
+    // corner, hid a spot near the top edge and its centre marker, in the ROI view and on the
+    // contact sheet. The badge now takes a corner that leaves the spot's centre in view.
+    void verdictBadgeLeavesTheSpotCentreInView() {
+        const QString file = m_dir.path() + "/corner/spot_top_left.png";
+        QVERIFY(writeSpot(file, 4.0, 2.0));
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {file}));
+        QCOMPARE(c->count(), 1);
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(showShot(fw, 0));
+        const lwb::core::footprint::SpotFit fit = c->shot(0)->fit;
+        QVERIFY2(fit.ok && std::abs(fit.x - 4) < 0.5 && std::abs(fit.y - 2) < 0.5,
+                 qPrintable(QString("fit (%1, %2)").arg(fit.x).arg(fit.y)));
+        ImageView* v = fw->roiView();
+        QVERIFY(v->hasImage());
+        const QPointF centre = v->toWidget(QPointF(fit.x, fit.y));
+        QVERIFY(v->rect().contains(centre.toPoint()));
+        QVERIFY(!v->badgeRect().isEmpty());
+        QVERIFY2(!v->badgeRect().adjusted(-4, -4, 4, 4).contains(centre.toPoint()),
+                 qPrintable(QString("badge (%1, %2, %3 x %4) over the centre (%5, %6)")
+                                .arg(v->badgeRect().x()).arg(v->badgeRect().y()).arg(v->badgeRect().width())
+                                .arg(v->badgeRect().height()).arg(centre.x()).arg(centre.y())));
+        // The Gaussian centre's × is drawn in its own colour there, not under the badge.
+        QVERIFY(pixelsNear(v->grab().toImage(), centre, 5, QColor(0, 220, 255), 40) >= 4);
+        // Panned so that the spot sits in another corner, the badge moves again.
+        for (QPointF corner : {QPointF(v->width() - 24, 20), QPointF(24, v->height() - 20), QPointF(v->width() - 24, v->height() - 20)}) {
+            drag(v, Qt::LeftButton, {}, v->toWidget(QPointF(fit.x, fit.y)), corner);
+            const QPointF at = v->toWidget(QPointF(fit.x, fit.y));
+            QVERIFY(std::abs(at.x() - corner.x()) < 1 && std::abs(at.y() - corner.y()) < 1);
+            QVERIFY2(!v->badgeRect().isEmpty() && !v->badgeRect().adjusted(-4, -4, 4, 4).contains(at.toPoint()),
+                     qPrintable(QString("spot at (%1, %2)").arg(at.x()).arg(at.y())));
+        }
+        // The contact sheet: the thumbnail's pixel at the spot's centre is shown as it is.
+        fw->showTab("sheet");
+        ContactSheet* sheet = fw->contactSheet();
+        QVERIFY(QTest::qWaitForWindowExposed(sheet));
+        const QImage thumb = sheet->thumbnail(0);
+        QCOMPARE(thumb.size(), QSize(ContactSheet::kThumb, ContactSheet::kThumb));
+        const QImage shown = sheet->viewport()->grab().toImage();
+        const double k = ContactSheet::kThumb / 32.0;
+        const QPoint inThumb(int((fit.x + 0.5) * k), int((fit.y + 0.5) * k));
+        const QPoint inView = sheet->visualRect(sheet->model()->index(0, 0)).topLeft() + QPoint(6, 6) + inThumb;
+        QCOMPARE(shown.pixelColor(inView), thumb.pixelColor(inThumb));
+    }
+
     // Issue 30, item 1 (found in a real window): Tab was trapped in the shot table, moving from
     // cell to cell and, past the last column, to the next shot. Tab and Shift+Tab now leave the
     // table for the next (previous) widget and the current shot stays; ↑ / ↓ still move.
@@ -773,8 +862,9 @@ private slots:
         QStringList listed;
         for (const QString& k : w.shortcutList())
             if (k.contains("Footprint ▸")) listed << k.section('\t', 0, 0);
-        for (const QString& key : {"↑ / ↓", "A", "R", "N", "E", "Tab, Shift+Tab"})
-            QVERIFY2(listed.contains(key), qPrintable(key + " is not in the shortcut list: " + listed.join(" | ")));
+        for (const char* key : {"↑ / ↓", "A", "R", "N", "E", "Tab, Shift+Tab"})
+            QVERIFY2(listed.contains(QString::fromUtf8(key)),
+                     qPrintable(QString::fromUtf8(key) + " is not in the shortcut list: " + listed.join(" | ")));
     }
 };
 
