@@ -134,6 +134,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     lay->addWidget(split);
 
     wireController();
+    wireZoomKeys();
     setRoiOverlay();
     updateCounts();
 }
@@ -405,6 +406,18 @@ void FootprintWorkspace::wireController() {
         m_sheet->setFocus();  // arrows, A / R / N and Enter act on the sheet at once
     });
 
+}
+
+// The image views' zoom steps from the shot table, where the keyboard is during a review (a
+// click in a view leaves it there): 2, 4 and 8 magnify both the ROI and the frame about their
+// centres, 1 fits them again. Each view has the same keys when it has the focus.
+void FootprintWorkspace::wireZoomKeys() {
+    for (int step : {1, 2, 4, 8}) {
+        auto* sc = new QShortcut(QKeySequence(Qt::Key_0 + step), m_table, nullptr, nullptr, Qt::WidgetShortcut);
+        connect(sc, &QShortcut::activated, this, [this, step] {
+            for (ImageView* v : {m_roiView, m_frameView}) v->setZoomStep(step);
+        });
+    }
 }
 
 // What the ROI view draws over the image: the domain's outline, the Gaussian's 1/e² ellipse,

@@ -1,6 +1,9 @@
 #pragma once
 // A zoomable, pannable image view with overlays drawn in image coordinates (x = column,
-// y = row, pixel centres at integers) and a pixel readout under the cursor.
+// y = row, pixel centres at integers) and a pixel readout under the cursor. The wheel zooms
+// about the cursor and a drag pans; a right-drag or Shift+drag zooms to the box (as the plots
+// do, ui/plot_kit); the zoom steps 2×, 4× and 8× magnify the fitted view about its centre
+// (keys 2, 4, 8, or the right-click menu), and 1, Home or a double-click fit it again.
 #include <QImage>
 #include <QPointF>
 #include <QRect>
@@ -8,6 +11,8 @@
 #include <QWidget>
 #include <functional>
 #include <opencv2/core.hpp>
+
+class QRubberBand;
 
 namespace lwb::ui {
 
@@ -38,7 +43,14 @@ public:
     /// in none, its first line (the verdict) does. Dropped with the image (clear()).
     void setKeepClear(const QVector<QPointF>& points);
     void fitToWindow();
+    /// Screen pixels per image pixel.
     double zoom() const { return m_zoom; }
+    /// The zoom at which the whole image fits the view.
+    double fitZoom() const;
+    /// The zoom steps: `magnification` times the fit (1: the fit itself), about the view's centre.
+    void setZoomStep(double magnification);
+    /// Zooms so that a box of widget pixels fills the view, the box's centre at the view's.
+    void zoomToBox(const QRectF& widgetBox);
     /// Widget position of an image point (data coordinates, as the overlay's).
     QPointF toWidget(QPointF image) const;
     /// The part of the image in view (data coordinates, pixel edges at ±0.5).
@@ -59,6 +71,7 @@ protected:
     void mouseMoveEvent(class QMouseEvent*) override;
     void mouseReleaseEvent(class QMouseEvent*) override;
     void mouseDoubleClickEvent(class QMouseEvent*) override;
+    void keyPressEvent(class QKeyEvent*) override;
     void resizeEvent(class QResizeEvent*) override;
     QSize sizeHint() const override { return {360, 360}; }
 
@@ -69,6 +82,9 @@ private:
     };
     BadgeLayout layoutBadge() const;
     QPointF toImage(QPointF widget) const;
+    /// Sets the zoom keeping the image point under widgetPos where it is.
+    void zoomAbout(QPointF widgetPos, double zoom);
+    void showMenu(const QPoint& globalPos);
     cv::Mat m_data;
     QImage m_image;
     QPointF m_origin;
@@ -79,8 +95,11 @@ private:
     double m_zoom = 1;
     QPointF m_offset;  // widget position of image point (−0.5, −0.5)
     bool m_fit = true;
-    bool m_dragging = false;
+    // Mouse gestures: a left drag pans, a right drag (or Shift + left) draws a zoom box.
+    enum class Drag { None, Pan, Box } m_drag = Drag::None;
+    bool m_rightPress = false;
     QPointF m_dragStart, m_offsetStart;
+    QRubberBand* m_band = nullptr;
 };
 
 }  // namespace lwb::ui

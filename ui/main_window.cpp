@@ -306,7 +306,11 @@ QStringList MainWindow::shortcutList() const {
         << tr("R\tFootprint ▸ reject the shot and move on")
         << tr("N\tFootprint ▸ next shot of the view without a manual verdict")
         << tr("E\tFootprint ▸ note on the shot (Enter keeps it and returns to the table)")
-        << tr("Tab, Shift+Tab\tFootprint ▸ leave the shot table (the shot stays)");
+        << tr("Tab, Shift+Tab\tFootprint ▸ leave the shot table (the shot stays)")
+        << tr("2 / 4 / 8\tFootprint ▸ zoom the ROI and frame views 2×, 4×, 8× the fit")
+        << tr("1\tFootprint ▸ fit the ROI and frame views again");
+    out << tr("Right-drag, Shift+drag\tImage view ▸ box zoom") << tr("Home, double-click\tImage view ▸ fit")
+        << tr("Right-click\tImage view ▸ zoom steps");
     out << tr("Wheel\tPlot ▸ zoom both axes about the cursor") << tr("Shift+Wheel\tPlot ▸ zoom x only")
         << tr("Ctrl+Wheel\tPlot ▸ zoom y only") << tr("Wheel / drag over an axis\tPlot ▸ zoom / pan that axis only")
         << tr("Drag\tPlot ▸ pan") << tr("Right-drag, Shift+drag\tPlot ▸ box zoom")

@@ -830,6 +830,92 @@ private slots:
         QCOMPARE(shown.pixelColor(inView), thumb.pixelColor(inThumb));
     }
 
+    // Issue 30, item 3: box zoom (right-drag or Shift+drag) and the zoom steps 1× (the fit), 2×,
+    // 4× and 8× on the ROI view and the frame view; the wheel, the drag and the double-click
+    // keep working.
+    void imageViewsBoxZoomAndZoomSteps() {
+        const auto sim = lwbtest::runCli({"simulate", "footprint", "--count", "2", "--seed", "5", "--full-frame", "-q",
+                                          m_dir.path() + "/zoomframes"});
+        QVERIFY2(sim.exitCode == 0, qPrintable(sim.err));
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/zoomframes"}));
+        w.resize(1400, 900);
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(showShot(fw, 0));
+        ImageView* roi = fw->roiView();
+        ImageView* frame = fw->frameView();
+        QVERIFY(roi->hasImage() && frame->hasImage() && frame->isVisible());
+        const double roiFit = roi->zoom(), frameFit = frame->zoom();
+        const QPointF roiCentre = roi->visibleImageRect().center();
+        // The steps from the table, where the review keys are: both views, about their centres.
+        fw->table()->setFocus();
+        QTest::keyClick(fw->table(), Qt::Key_4);
+        QCOMPARE(roi->zoom(), 4 * roiFit);
+        QCOMPARE(frame->zoom(), 4 * frameFit);
+        QVERIFY(std::abs(roi->visibleImageRect().center().x() - roiCentre.x()) < 0.05);
+        QVERIFY(std::abs(roi->visibleImageRect().center().y() - roiCentre.y()) < 0.05);
+        QTest::keyClick(fw->table(), Qt::Key_8);
+        QCOMPARE(roi->zoom(), 8 * roiFit);
+        QTest::keyClick(fw->table(), Qt::Key_2);
+        QCOMPARE(roi->zoom(), 2 * roiFit);
+        QTest::keyClick(fw->table(), Qt::Key_1);
+        QCOMPARE(roi->zoom(), roiFit);
+        QCOMPARE(frame->zoom(), frameFit);
+        QVERIFY(fw->table()->hasFocus());  // the review keys still act on the table
+        QCOMPARE(currentSource(fw), 0);
+        // Right-drag a box over the ROI: the box fills the view.
+        const QRectF box(9.5, 10.5, 8, 8);
+        drag(roi, Qt::RightButton, {}, roi->toWidget(box.topLeft()), roi->toWidget(box.bottomRight()));
+        QRectF seen = roi->visibleImageRect();
+        QVERIFY2(seen.contains(box.adjusted(0.05, 0.05, -0.05, -0.05)) && std::min(seen.width(), seen.height()) < box.width() + 0.1,
+                 qPrintable(QString("box zoom shows %1 x %2 from (%3, %4)").arg(seen.width()).arg(seen.height()).arg(seen.x()).arg(seen.y())));
+        // Home (with the view's focus) or a double-click fits again.
+        roi->setFocus();
+        QTest::keyClick(roi, Qt::Key_Home);
+        QCOMPARE(roi->zoom(), roiFit);
+        // Shift + left drag on the frame view.
+        const QRectF fbox(40.5, 30.5, 30, 20);
+        drag(frame, Qt::LeftButton, Qt::ShiftModifier, frame->toWidget(fbox.topLeft()), frame->toWidget(fbox.bottomRight()));
+        seen = frame->visibleImageRect();
+        QVERIFY2(seen.contains(fbox.adjusted(0.05, 0.05, -0.05, -0.05)) && (seen.width() < 30.1 || seen.height() < 20.1),
+                 qPrintable(QString("shift-drag zoom shows %1 x %2").arg(seen.width()).arg(seen.height())));
+        QTest::mouseDClick(frame, Qt::LeftButton, {}, frame->rect().center());
+        QCOMPARE(frame->zoom(), frameFit);
+        // A plain drag still pans; the wheel still zooms about the cursor.
+        const QPointF before = roi->toWidget(QPointF(16, 16));
+        drag(roi, Qt::LeftButton, {}, roi->rect().center(), roi->rect().center() + QPointF(30, 20));
+        QCOMPARE(roi->zoom(), roiFit);
+        QCOMPARE(roi->toWidget(QPointF(16, 16)), before + QPointF(30, 20));
+        const QPointF under = roi->toWidget(QPointF(12, 12));
+        QWheelEvent wheel(under, roi->mapToGlobal(under), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(roi, &wheel);
+        QVERIFY(roi->zoom() > roiFit);
+        QVERIFY((roi->toWidget(QPointF(12, 12)) - under).manhattanLength() < 0.01);
+        // A right click without a drag offers the steps in a menu.
+        QString offered;
+        QTimer::singleShot(100, [&] {
+            auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+            if (!menu) return;
+            for (QAction* a : menu->actions()) offered += a->text() + ";";
+            for (QAction* a : menu->actions())
+                if (a->text().startsWith("4×")) a->trigger();
+            menu->close();
+        });
+        const QPoint at = roi->rect().center();
+        QTest::mouseClick(roi, Qt::RightButton, {}, at);
+        QVERIFY2(offered.contains("1× (fit)") && offered.contains("2×") && offered.contains("8×"), qPrintable(offered));
+        QCOMPARE(roi->zoom(), 4 * roiFit);
+        // Help ▸ Keyboard shortcuts lists the steps.
+        QStringList keys;
+        for (const QString& k : w.shortcutList()) keys << k.section('\t', 0, 0);
+        QVERIFY(keys.contains("2 / 4 / 8") && keys.contains("1") && keys.contains("Right-drag, Shift+drag"));
+    }
+
     // Issue 30, item 1 (found in a real window): Tab was trapped in the shot table, moving from
     // cell to cell and, past the last column, to the next shot. Tab and Shift+Tab now leave the
     // table for the next (previous) widget and the current shot stays; ↑ / ↓ still move.
