@@ -208,6 +208,11 @@ void ColorBar::setScale(ColorMap map, StretchKind k, double lo, double hi) {
     update();
 }
 
+void ColorBar::clear() {
+    m_valid = false;
+    update();
+}
+
 std::vector<double> ColorBar::ticks() const {
     std::vector<double> t;
     if (!m_valid) return t;

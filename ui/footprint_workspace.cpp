@@ -584,9 +584,16 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
     m_detail = d;
     const Shot* s = m_controller->shot(d.index);
     if (!s || d.roi.empty()) {
-        m_roiView->clear();
+        // Nothing of the previous shot stays on display: its colour bar stayed, and read as this
+        // shot's scale (issue 30). The ROI view says why there is no image.
+        const QString why = !s                         ? QString()
+                            : !s->loadError.isEmpty() ? tr("Unreadable: %1").arg(s->loadError)
+                                                      : tr("Not loaded yet");
+        m_roiView->clear(why);
         m_frameView->clear();
+        m_frameView->setVisible(false);
         m_histogram->clear();
+        m_colorBar->clear();
         m_details->setText(s ? tr("<b>%1</b><br>%2").arg(s->file.toHtmlEscaped(), s->loadError.toHtmlEscaped()) : QString());
         return;
     }

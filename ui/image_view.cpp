@@ -44,12 +44,14 @@ void ImageView::setImage(const cv::Mat& data, const QImage& rendered, QPointF or
     const bool sizeChanged = rendered.size() != m_image.size();
     m_data = data;
     m_image = rendered;
+    m_message.clear();
     m_origin = origin;
     if (sizeChanged || m_fit) fitToWindow();
     update();
 }
 
-void ImageView::clear() {
+void ImageView::clear(const QString& message) {
+    m_message = message;
     m_data.release();
     m_image = QImage();
     m_badge.clear();
@@ -162,7 +164,7 @@ void ImageView::paintEvent(QPaintEvent*) {
     QPainter p(this);
     if (m_image.isNull()) {
         p.setPen(palette().color(QPalette::BrightText));
-        p.drawText(rect(), Qt::AlignCenter, tr("No image"));
+        p.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignCenter | Qt::TextWordWrap, placeholderText());
         return;
     }
     p.save();

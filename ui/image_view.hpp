@@ -30,7 +30,8 @@ public:
     /// the data's pixel (0,0), shown in the readout.
     void setImage(const cv::Mat& data, const QImage& rendered, QPointF origin = {});
     /// Drops the image and the badge; the overlay function stays (it draws the next image).
-    void clear();
+    /// message: what the view says in the image's place (why there is none); empty: "No image".
+    void clear(const QString& message = QString());
     /// Painter callback for overlays; the painter is already transformed to image coordinates
     /// (one unit = one pixel; pixel (x, y) covers x−0.5..x+0.5). pxScale: screen px per image px.
     using OverlayFn = std::function<void(class QPainter&, double pxScale)>;
@@ -58,7 +59,7 @@ public:
     /// Where the badge is drawn (widget pixels; empty without a badge or an image).
     QRect badgeRect() const { return layoutBadge().box; }
     /// What the view says in place of an image.
-    QString placeholderText() const { return tr("No image"); }
+    QString placeholderText() const { return m_message.isEmpty() ? tr("No image") : m_message; }
 
 signals:
     /// Cursor moved over pixel (x, y) of the data (full-image coordinates) holding value.
@@ -92,6 +93,7 @@ private:
     QString m_badge;
     QColor m_badgeColor;
     QVector<QPointF> m_keepClear;
+    QString m_message;  // said in place of the image
     double m_zoom = 1;
     QPointF m_offset;  // widget position of image point (−0.5, −0.5)
     bool m_fit = true;

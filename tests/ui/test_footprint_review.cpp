@@ -916,6 +916,42 @@ private slots:
         QVERIFY(keys.contains("2 / 4 / 8") && keys.contains("1") && keys.contains("Right-drag, Shift+drag"));
     }
 
+    // Issue 30, item 4 (found in a real window): an unreadable shot left the previous shot's
+    // colour bar on display, and said nothing where the image was. Its image, histogram and
+    // colour bar are cleared and the ROI view says why it cannot be read.
+    void unreadableShotClearsTheDisplayAndSaysWhy() {
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/shots/shot_000000.png", m_dir.path() + "/junk/broken.png"}));
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(showShot(fw, 0));
+        QVERIFY(fw->roiView()->hasImage());
+        QVERIFY(!fw->colorBar()->ticks().empty());
+        QVERIFY(!fw->histogram()->bins().empty());
+        QVERIFY(showShot(fw, 1));
+        const QString why = c->shot(1)->loadError;
+        QVERIFY(!why.isEmpty());
+        QVERIFY(!fw->roiView()->hasImage());
+        QVERIFY(fw->histogram()->bins().empty());
+        QVERIFY2(fw->colorBar()->ticks().empty(), "the previous shot's colour bar is still on display");
+        // Nothing but the background is painted in the bar's place.
+        const QImage bar = fw->colorBar()->grab().toImage();
+        const QColor bg = bar.pixelColor(0, 0);
+        int painted = 0;
+        for (int y = 0; y < bar.height(); ++y)
+            for (int x = 0; x < bar.width(); ++x) painted += bar.pixelColor(x, y) != bg;
+        QCOMPARE(painted, 0);
+        const QString said = fw->roiView()->placeholderText();
+        QVERIFY2(said.contains("unreadable", Qt::CaseInsensitive) && said.contains(why), qPrintable(said));
+        // The next readable shot brings everything back.
+        QVERIFY(showShot(fw, 0));
+        QVERIFY(fw->roiView()->hasImage());
+        QVERIFY(!fw->colorBar()->ticks().empty());
+    }
+
     // Issue 30, item 1 (found in a real window): Tab was trapped in the shot table, moving from
     // cell to cell and, past the last column, to the next shot. Tab and Shift+Tab now leave the
     // table for the next (previous) widget and the current shot stays; ↑ / ↓ still move.
