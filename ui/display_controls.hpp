@@ -86,6 +86,9 @@ public:
     std::vector<double> ticks() const;
     double lo() const { return m_lo; }
     double hi() const { return m_hi; }
+    /// Where the colour bar and its unit ("DN") are drawn, in widget pixels.
+    QRect barRect() const;
+    QRect unitRect() const;
 
 protected:
     void paintEvent(class QPaintEvent*) override;

@@ -952,6 +952,38 @@ private slots:
         QVERIFY(!fw->colorBar()->ticks().empty());
     }
 
+    // Issue 30, item 5 (found in a real window): the colour bar's unit "DN" was drawn over the
+    // bar's right end. It now sits beside the bar, which shows the colour map alone.
+    void colourBarUnitDoesNotCoverTheBar() {
+        MainWindow w;
+        QVERIFY(showDemo(w));
+        FootprintWorkspace* fw = w.footprint();
+        QVERIFY(showShot(fw, 7));
+        ColorBar* bar = fw->colorBar();
+        QVERIFY(bar->isVisible());
+        // Gray, linear: the bar's middle row must rise from black to white, left to right.
+        bar->setScale(ColorMap::Gray, lwb::core::StretchKind::Linear, 0, 1000);
+        const QRect b = bar->barRect(), u = bar->unitRect();
+        QVERIFY(!b.isEmpty() && !u.isEmpty());
+        QVERIFY2(!b.intersects(u), qPrintable(QString("unit (%1..%2) over the bar (%3..%4)").arg(u.left()).arg(u.right()).arg(b.left()).arg(b.right())));
+        QVERIFY(bar->rect().contains(u));
+        QVERIFY(b.width() > bar->width() / 2);
+        const QImage img = bar->grab().toImage();
+        int prev = -1;
+        for (int x = b.left() + 1; x < b.right(); ++x) {
+            const int g = qGray(img.pixel(x, b.center().y()));
+            QVERIFY2(g >= prev - 1, qPrintable(QString("the bar darkens at x = %1 (%2 after %3)").arg(x).arg(g).arg(prev)));
+            prev = g;
+        }
+        QVERIFY(prev > 240);
+        // The unit is drawn where unitRect says.
+        const QColor bg = img.pixelColor(u.right() + 1 < img.width() ? u.right() + 1 : u.left() - 1, u.bottom());
+        int ink = 0;
+        for (int y = u.top(); y <= u.bottom(); ++y)
+            for (int x = u.left(); x <= u.right(); ++x) ink += img.pixelColor(x, y) != bg;
+        QVERIFY(ink > 5);
+    }
+
     // Issue 30, item 1 (found in a real window): Tab was trapped in the shot table, moving from
     // cell to cell and, past the last column, to the next shot. Tab and Shift+Tab now leave the
     // table for the next (previous) widget and the current shot stays; ↑ / ↓ still move.
