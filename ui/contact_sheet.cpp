@@ -6,6 +6,7 @@
 
 #include "ui/display_controls.hpp"
 #include "ui/footprint_controller.hpp"
+#include "ui/image_view.hpp"
 #include "ui/shot_table_model.hpp"
 
 namespace lwb::ui {
@@ -46,8 +47,15 @@ public:
         f.setPointSizeF(std::max(6.0, f.pointSizeF() * 0.85));
         p->setFont(f);
         const QString badge = shotStateLabel(st) + (s->overridden ? QObject::tr(" ✎") : QString());
-        const QRect badgeRect(img.left() + 2, img.top() + 2, p->fontMetrics().horizontalAdvance(badge) + 8,
-                              p->fontMetrics().height() + 2);
+        const QSize badgeSize(p->fontMetrics().horizontalAdvance(badge) + 8, p->fontMetrics().height() + 2);
+        // In a corner that leaves the spot's centre in view (in the top left one it hid a spot
+        // near the ROI's top edge, issue 30); the thumbnail is the ROI stretched over `img`.
+        QVector<QPointF> spot;
+        if (s->fit.ok && !s->roi.empty())
+            spot << QPointF(img.left() + (s->fit.x + 0.5) * img.width() / s->roi.cols,
+                            img.top() + (s->fit.y + 0.5) * img.height() / s->roi.rows);
+        QRect badgeRect = placeBadge(img, badgeSize, 2, spot, 4);
+        if (badgeRect.isEmpty()) badgeRect = QRect(img.topLeft() + QPoint(2, 2), badgeSize);
         p->setPen(Qt::NoPen);
         p->setBrush(QColor(colour.red(), colour.green(), colour.blue(), 225));
         p->drawRoundedRect(badgeRect, 3, 3);

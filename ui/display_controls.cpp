@@ -208,6 +208,11 @@ void ColorBar::setScale(ColorMap map, StretchKind k, double lo, double hi) {
     update();
 }
 
+void ColorBar::clear() {
+    m_valid = false;
+    update();
+}
+
 std::vector<double> ColorBar::ticks() const {
     std::vector<double> t;
     if (!m_valid) return t;
@@ -216,18 +221,33 @@ std::vector<double> ColorBar::ticks() const {
     return t;
 }
 
+// The unit sits beside the bar's right end, level with it: drawn inside the bar (on a dark
+// box) it hid the top of the scale and read as part of it (issue 30). The bar gives up the
+// unit's width; the tick labels stay under the bar.
+QRect ColorBar::barRect() const {
+    const QFontMetrics fm = fontMetrics();
+    const int unitW = fm.horizontalAdvance(tr("DN"));
+    return QRect(4, 2, std::max(8, width() - 8 - unitW - 6), std::max(8, height() - fm.height() - 6));
+}
+
+QRect ColorBar::unitRect() const {
+    const QRect bar = barRect();
+    return QRect(bar.right() + 7, bar.top(), fontMetrics().horizontalAdvance(tr("DN")), bar.height());
+}
+
 void ColorBar::paintEvent(QPaintEvent*) {
     QPainter p(this);
     if (!m_valid) return;
     const int textH = p.fontMetrics().height();
-    const int left = 4, right = width() - 4, barH = std::max(8, height() - textH - 6);
+    const QRect bar = barRect();
+    const int left = bar.left(), right = bar.right() + 1, barH = bar.height() - 1;
     for (int x = left; x < right; ++x) {
         const double t = double(x - left) / std::max(1, right - left - 1);
         p.setPen(QColor::fromRgb(mapColor(m_map, core::applyStretch(m_stretch, t))));
-        p.drawLine(x, 2, x, 2 + barH);
+        p.drawLine(x, bar.top(), x, bar.top() + barH);
     }
     p.setPen(palette().color(QPalette::Text));
-    p.drawRect(left, 2, right - left - 1, barH);
+    p.drawRect(left, bar.top(), right - left - 1, barH);
     const std::vector<double> ts = ticks();
     const double step = ts.size() > 1 ? ts[1] - ts[0] : 1;
     const int decimals = step >= 1 ? 0 : int(std::ceil(-std::log10(step)));
@@ -236,15 +256,10 @@ void ColorBar::paintEvent(QPaintEvent*) {
         p.drawLine(QPointF(x, 2 + barH), QPointF(x, 5 + barH));
         const QString label = QString::number(v, 'f', decimals);
         const double w = p.fontMetrics().horizontalAdvance(label);
-        const double lx = std::clamp(x - w / 2, double(left), double(right) - w);
+        const double lx = std::clamp(x - w / 2, double(left), double(width() - 4) - w);
         p.drawText(QPointF(lx, 4 + barH + textH - p.fontMetrics().descent()), label);
     }
-    // The unit, at the bar's right end inside the bar.
-    const QString unit = tr("DN");
-    const QRectF unitBox(right - p.fontMetrics().horizontalAdvance(unit) - 8, 2, p.fontMetrics().horizontalAdvance(unit) + 6, barH);
-    p.fillRect(unitBox, QColor(0, 0, 0, 140));
-    p.setPen(Qt::white);
-    p.drawText(unitBox, Qt::AlignCenter, unit);
+    p.drawText(unitRect(), Qt::AlignLeft | Qt::AlignVCenter, tr("DN"));
 }
 
 }  // namespace lwb::ui

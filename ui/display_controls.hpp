@@ -80,10 +80,15 @@ class ColorBar : public QWidget {
 public:
     explicit ColorBar(QWidget* parent = nullptr);
     void setScale(ColorMap map, core::StretchKind k, double lo, double hi);
+    /// No scale (nothing drawn, no ticks): there is no image to read it against.
+    void clear();
     /// Tick values (DN) of the current scale, left to right.
     std::vector<double> ticks() const;
     double lo() const { return m_lo; }
     double hi() const { return m_hi; }
+    /// Where the colour bar and its unit ("DN") are drawn, in widget pixels.
+    QRect barRect() const;
+    QRect unitRect() const;
 
 protected:
     void paintEvent(class QPaintEvent*) override;

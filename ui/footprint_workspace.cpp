@@ -134,6 +134,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     lay->addWidget(split);
 
     wireController();
+    wireZoomKeys();
     setRoiOverlay();
     updateCounts();
 }
@@ -166,6 +167,10 @@ QWidget* FootprintWorkspace::buildShotList() {
     m_table->sortByColumn(-1, Qt::AscendingOrder);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    // Tab leaves the table for the next widget, as everywhere else in the window. A table moves
+    // from cell to cell on Tab by default, and past the last column to the next row: the shot
+    // changed under the reviewer's hands (issue 30). The shots are browsed with the arrow keys.
+    m_table->setTabKeyNavigation(false);
     m_table->verticalHeader()->setDefaultSectionSize(20);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
@@ -403,6 +408,18 @@ void FootprintWorkspace::wireController() {
 
 }
 
+// The image views' zoom steps from the shot table, where the keyboard is during a review (a
+// click in a view leaves it there): 2, 4 and 8 magnify both the ROI and the frame about their
+// centres, 1 fits them again. Each view has the same keys when it has the focus.
+void FootprintWorkspace::wireZoomKeys() {
+    for (int step : {1, 2, 4, 8}) {
+        auto* sc = new QShortcut(QKeySequence(Qt::Key_0 + step), m_table, nullptr, nullptr, Qt::WidgetShortcut);
+        connect(sc, &QShortcut::activated, this, [this, step] {
+            for (ImageView* v : {m_roiView, m_frameView}) v->setZoomStep(step);
+        });
+    }
+}
+
 // What the ROI view draws over the image: the domain's outline, the Gaussian's 1/e² ellipse,
 // the TEFM ellipse and the centres.
 void FootprintWorkspace::setRoiOverlay() {
@@ -567,9 +584,16 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
     m_detail = d;
     const Shot* s = m_controller->shot(d.index);
     if (!s || d.roi.empty()) {
-        m_roiView->clear();
+        // Nothing of the previous shot stays on display: its colour bar stayed, and read as this
+        // shot's scale (issue 30). The ROI view says why there is no image.
+        const QString why = !s                         ? QString()
+                            : !s->loadError.isEmpty() ? tr("Unreadable: %1").arg(s->loadError)
+                                                      : tr("Not loaded yet");
+        m_roiView->clear(why);
         m_frameView->clear();
+        m_frameView->setVisible(false);
         m_histogram->clear();
+        m_colorBar->clear();
         m_details->setText(s ? tr("<b>%1</b><br>%2").arg(s->file.toHtmlEscaped(), s->loadError.toHtmlEscaped()) : QString());
         return;
     }
@@ -586,6 +610,11 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
     if (s->overridden) badge += tr(" (manual; computed: %1)").arg(verdictLabel(s->verdict));
     for (const auto& reason : r.reasons) badge += "\n• " + QString::fromStdString(reason);
     m_roiView->setBadge(badge, verdictColor(v));
+    // The badge must not hide the spot: it keeps clear of every centre marker drawn.
+    QVector<QPointF> centres;
+    for (const FootprintResult* m : {&d.gauss, &d.tefm, &d.gcm})
+        if (m->fit.ok) centres << QPointF(m->fit.x, m->fit.y);
+    m_roiView->setKeepClear(centres);
     // Full-frame context.
     if (s->fullFrame) {
         if (m_frameFile != s->file) {
@@ -611,6 +640,9 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
                               QPen(kGaussColor, 1.5 / scale), true);
             });
             m_frameView->setBadge(tr("Frame around the ROI"), QColor(60, 60, 60));
+            QVector<QPointF> spot;
+            if (r.fit.ok) spot << QPointF(r.fit.x + d.origin.x() - win.x, r.fit.y + d.origin.y() - win.y);
+            m_frameView->setKeepClear(spot);
         }
     } else {
         m_frame.release();

@@ -38,6 +38,8 @@ public:
     QTableView* table() const { return m_table; }
     ShotFilterProxy* proxy() const { return m_proxy; }
     ImageView* roiView() const { return m_roiView; }
+    /// The full frame around the ROI (shown for shots cut from a full frame).
+    ImageView* frameView() const { return m_frameView; }
     ContactSheet* contactSheet() const { return m_sheet; }
     DisplayControls* displayControls() const { return m_display; }
     HistogramView* histogram() const { return m_histogram; }
@@ -82,6 +84,7 @@ private:
     QWidget* buildShotList();
     void buildCentre();
     void wireController();
+    void wireZoomKeys();
     void setRoiOverlay();
 
     void showDetail(const ShotDetail& d);

@@ -1,13 +1,25 @@
 #pragma once
 // A zoomable, pannable image view with overlays drawn in image coordinates (x = column,
-// y = row, pixel centres at integers) and a pixel readout under the cursor.
+// y = row, pixel centres at integers) and a pixel readout under the cursor. The wheel zooms
+// about the cursor and a drag pans; a right-drag or Shift+drag zooms to the box (as the plots
+// do, ui/plot_kit); the zoom steps 2×, 4× and 8× magnify the fitted view about its centre
+// (keys 2, 4, 8, or the right-click menu), and 1, Home or a double-click fit it again.
 #include <QImage>
 #include <QPointF>
+#include <QRect>
+#include <QVector>
 #include <QWidget>
 #include <functional>
 #include <opencv2/core.hpp>
 
+class QRubberBand;
+
 namespace lwb::ui {
+
+/// Where a badge of `size` goes in `area`: the first corner (top left, top right, bottom left,
+/// bottom right), `margin` px in from the edges, whose box stays at least `clearance` px from
+/// every point of `keepClear`. An empty rect when no corner does.
+QRect placeBadge(const QRect& area, QSize size, int margin, const QVector<QPointF>& keepClear, double clearance);
 
 class ImageView : public QWidget {
     Q_OBJECT
@@ -18,7 +30,8 @@ public:
     /// the data's pixel (0,0), shown in the readout.
     void setImage(const cv::Mat& data, const QImage& rendered, QPointF origin = {});
     /// Drops the image and the badge; the overlay function stays (it draws the next image).
-    void clear();
+    /// message: what the view says in the image's place (why there is none); empty: "No image".
+    void clear(const QString& message = QString());
     /// Painter callback for overlays; the painter is already transformed to image coordinates
     /// (one unit = one pixel; pixel (x, y) covers x−0.5..x+0.5). pxScale: screen px per image px.
     using OverlayFn = std::function<void(class QPainter&, double pxScale)>;
@@ -26,8 +39,27 @@ public:
     bool hasOverlay() const { return bool(m_overlay); }
     bool hasImage() const { return !m_image.isNull(); }
     void setBadge(const QString& text, const QColor& color);
+    /// Image points (data coordinates, as the overlay's) the badge must leave in view: the spot's
+    /// centre markers. The badge takes the first corner clear of them; when the whole badge fits
+    /// in none, its first line (the verdict) does. Dropped with the image (clear()).
+    void setKeepClear(const QVector<QPointF>& points);
     void fitToWindow();
+    /// Screen pixels per image pixel.
     double zoom() const { return m_zoom; }
+    /// The zoom at which the whole image fits the view.
+    double fitZoom() const;
+    /// The zoom steps: `magnification` times the fit (1: the fit itself), about the view's centre.
+    void setZoomStep(double magnification);
+    /// Zooms so that a box of widget pixels fills the view, the box's centre at the view's.
+    void zoomToBox(const QRectF& widgetBox);
+    /// Widget position of an image point (data coordinates, as the overlay's).
+    QPointF toWidget(QPointF image) const;
+    /// The part of the image in view (data coordinates, pixel edges at ±0.5).
+    QRectF visibleImageRect() const;
+    /// Where the badge is drawn (widget pixels; empty without a badge or an image).
+    QRect badgeRect() const { return layoutBadge().box; }
+    /// What the view says in place of an image.
+    QString placeholderText() const { return m_message.isEmpty() ? tr("No image") : m_message; }
 
 signals:
     /// Cursor moved over pixel (x, y) of the data (full-image coordinates) holding value.
@@ -40,22 +72,36 @@ protected:
     void mouseMoveEvent(class QMouseEvent*) override;
     void mouseReleaseEvent(class QMouseEvent*) override;
     void mouseDoubleClickEvent(class QMouseEvent*) override;
+    void keyPressEvent(class QKeyEvent*) override;
     void resizeEvent(class QResizeEvent*) override;
     QSize sizeHint() const override { return {360, 360}; }
 
 private:
+    struct BadgeLayout {
+        QRect box;
+        QString text;
+    };
+    BadgeLayout layoutBadge() const;
     QPointF toImage(QPointF widget) const;
+    /// Sets the zoom keeping the image point under widgetPos where it is.
+    void zoomAbout(QPointF widgetPos, double zoom);
+    void showMenu(const QPoint& globalPos);
     cv::Mat m_data;
     QImage m_image;
     QPointF m_origin;
     OverlayFn m_overlay;
     QString m_badge;
     QColor m_badgeColor;
+    QVector<QPointF> m_keepClear;
+    QString m_message;  // said in place of the image
     double m_zoom = 1;
     QPointF m_offset;  // widget position of image point (−0.5, −0.5)
     bool m_fit = true;
-    bool m_dragging = false;
+    // Mouse gestures: a left drag pans, a right drag (or Shift + left) draws a zoom box.
+    enum class Drag { None, Pan, Box } m_drag = Drag::None;
+    bool m_rightPress = false;
     QPointF m_dragStart, m_offsetStart;
+    QRubberBand* m_band = nullptr;
 };
 
 }  // namespace lwb::ui

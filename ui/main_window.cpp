@@ -20,7 +20,9 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPainter>
 #include <QProgressBar>
+#include <QProxyStyle>
 #include <QPushButton>
 #include <QSaveFile>
 #include <QScreen>
@@ -74,6 +76,44 @@ QString firstLine(const QString& path) {
     }
     return QString();
 }
+
+// Fusion draws a checked radio button as a 4 px grey dot (the text colour, darkened and half
+// transparent) on a disc of the base colour, in a ring of the window colour darkened: in the
+// dark palette neither the ring nor the dot stands out, and which mode was on could hardly be
+// told (issue 30). In a dark palette this style draws the ring in a light grey and a checked
+// button as a disc of the accent colour around a white dot; a light palette keeps Fusion's.
+class WorkbenchStyle : public QProxyStyle {
+public:
+    WorkbenchStyle() : QProxyStyle(QStyleFactory::create("Fusion")) {}
+
+    void drawPrimitive(PrimitiveElement pe, const QStyleOption* o, QPainter* p, const QWidget* w) const override {
+        if (pe != PE_IndicatorRadioButton || o->palette.color(QPalette::Base).lightness() >= 128) {
+            QProxyStyle::drawPrimitive(pe, o, p, w);
+            return;
+        }
+        const bool on = o->state & State_On, enabled = o->state & State_Enabled;
+        const QColor accent = o->palette.color(enabled ? QPalette::Active : QPalette::Disabled, QPalette::Highlight);
+        QColor ring = o->palette.color(enabled ? QPalette::Active : QPalette::Disabled, QPalette::Text);
+        ring.setAlpha(on ? 255 : 170);
+        if (on) ring = accent.lighter(135);
+        if ((o->state & State_HasFocus) && (o->state & State_KeyboardFocusChange)) ring = accent.lighter(170);
+        QColor fill = on ? accent : o->palette.color(QPalette::Base);
+        if (o->state & State_Sunken) fill = fill.lighter(140);
+        const QRectF r(o->rect);
+        const double radius = std::min(r.width(), r.height()) / 2 - 0.75;
+        p->save();
+        p->setRenderHint(QPainter::Antialiasing, true);
+        p->setPen(QPen(ring, 1.5));
+        p->setBrush(fill);
+        p->drawEllipse(r.center(), radius, radius);
+        if (on) {
+            p->setPen(Qt::NoPen);
+            p->setBrush(o->palette.color(QPalette::HighlightedText));
+            p->drawEllipse(r.center(), radius * 0.4, radius * 0.4);
+        }
+        p->restore();
+    }
+};
 
 QPalette darkPalette() {
     QPalette p;
@@ -273,7 +313,7 @@ void MainWindow::buildMenus() {
 
 void MainWindow::setDarkTheme(bool dark) {
     m_dark = dark;
-    if (auto* fusion = QStyleFactory::create("Fusion")) QApplication::setStyle(fusion);
+    QApplication::setStyle(new WorkbenchStyle);  // Fusion, with radio buttons readable in the dark palette
     QApplication::setPalette(dark ? darkPalette() : QApplication::style()->standardPalette());
     setPlotTheme(dark);
     if (m_darkAction) (dark ? m_darkAction : m_lightAction)->setChecked(true);
@@ -311,7 +351,14 @@ QStringList MainWindow::shortcutList() const {
     };
     walk(menuBar()->actions(), QString());
     out << tr("↑ / ↓\tFootprint ▸ previous / next shot") << tr("A\tFootprint ▸ accept the shot and move on")
-        << tr("R\tFootprint ▸ reject the shot and move on");
+        << tr("R\tFootprint ▸ reject the shot and move on")
+        << tr("N\tFootprint ▸ next shot of the view without a manual verdict")
+        << tr("E\tFootprint ▸ note on the shot (Enter keeps it and returns to the table)")
+        << tr("Tab, Shift+Tab\tFootprint ▸ leave the shot table (the shot stays)")
+        << tr("2 / 4 / 8\tFootprint ▸ zoom the ROI and frame views 2×, 4×, 8× the fit")
+        << tr("1\tFootprint ▸ fit the ROI and frame views again");
+    out << tr("Right-drag, Shift+drag\tImage view ▸ box zoom") << tr("Home, double-click\tImage view ▸ fit")
+        << tr("Right-click\tImage view ▸ zoom steps");
     out << tr("Wheel\tPlot ▸ zoom both axes about the cursor") << tr("Shift+Wheel\tPlot ▸ zoom x only")
         << tr("Ctrl+Wheel\tPlot ▸ zoom y only") << tr("Wheel / drag over an axis\tPlot ▸ zoom / pan that axis only")
         << tr("Drag\tPlot ▸ pan") << tr("Right-drag, Shift+drag\tPlot ▸ box zoom")

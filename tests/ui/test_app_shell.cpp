@@ -7,6 +7,9 @@
 #include <QAbstractScrollArea>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QRadioButton>
+#include <QVBoxLayout>
+#include <QStyleOptionButton>
 #include <QScrollArea>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -203,6 +206,50 @@ private slots:
             QVERIFY(QApplication::palette().color(QPalette::Window).lightness() > 150);
             QCOMPARE(QSettings().value("view/theme").toString(), QString("light"));
         }
+    }
+
+    // Issue 30, item 6 (found in a real window): in the dark theme Fusion drew a checked radio
+    // button as a 4 px grey dot on a dark disc whose ring had the window's colour, so which mode
+    // was on could hardly be seen. The checked state now changes a large part of the indicator,
+    // and the ring stands out from the window.
+    void darkThemeShowsWhichRadioButtonIsChecked() {
+        MainWindow w;
+        w.setDarkTheme(true);
+        QWidget box;
+        auto* lay = new QVBoxLayout(&box);
+        // Each in its own parent: radio buttons with one parent are exclusive.
+        auto* onHolder = new QWidget(&box);
+        auto* offHolder = new QWidget(&box);
+        auto* on = new QRadioButton("Box zoom", onHolder);
+        auto* off = new QRadioButton("Pan / zoom", offHolder);
+        on->setChecked(true);
+        lay->addWidget(onHolder);
+        lay->addWidget(offHolder);
+        box.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&box));
+        auto indicator = [](QRadioButton* b) {
+            QStyleOptionButton o;
+            o.initFrom(b);
+            const QRect r = b->style()->subElementRect(QStyle::SE_RadioButtonIndicator, &o, b);
+            return b->grab().toImage().copy(r);
+        };
+        const QImage a = indicator(on), b = indicator(off);
+        QCOMPARE(a.size(), b.size());
+        QVERIFY(a.width() >= 10);
+        auto apart = [](QColor x, QColor y, int d) {
+            return std::max({std::abs(x.red() - y.red()), std::abs(x.green() - y.green()), std::abs(x.blue() - y.blue())}) >= d;
+        };
+        const QColor window = QApplication::palette().color(QPalette::Window);
+        int changed = 0, ring = 0;
+        for (int y = 0; y < a.height(); ++y)
+            for (int x = 0; x < a.width(); ++x) {
+                changed += apart(a.pixelColor(x, y), b.pixelColor(x, y), 60);
+                ring += apart(b.pixelColor(x, y), window, 60);
+            }
+        const int area = a.width() * a.height();
+        QVERIFY2(changed >= area * 3 / 10, qPrintable(QString("checking changes %1 of the indicator's %2 pixels").arg(changed).arg(area)));
+        QVERIFY2(ring >= a.width(), qPrintable(QString("%1 pixels of the unchecked indicator stand out from the window").arg(ring)));
+        w.setDarkTheme(false);
     }
 
     void helpShowsTheBundledGuideAndTheShortcuts() {

@@ -19,9 +19,13 @@
 #include <QTableView>
 #include <QThread>
 #include <QThreadPool>
+#include <QTimer>
+#include <QMenu>
+#include <QWheelEvent>
 #include <QUndoStack>
 #include <QtTest>
 #include <map>
+#include <opencv2/imgcodecs.hpp>
 #include <qcustomplot.h>
 
 #include "core/common/csv.hpp"
@@ -75,6 +79,41 @@ bool showShot(FootprintWorkspace* fw, int row) {
     if (fw->controller()->current() != row) return false;
     fw->controller()->setCurrent(row);
     return !detail.isEmpty() || detail.wait(10000);  // an unreadable shot's detail comes at once
+}
+
+// A 32 × 32 ROI (taken whole by the loader) with one Gaussian spot centred at (x, y).
+bool writeSpot(const QString& path, double x, double y) {
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    cv::Mat img(32, 32, CV_16UC1);
+    for (int r = 0; r < img.rows; ++r)
+        for (int c = 0; c < img.cols; ++c) {
+            const double d2 = (c - x) * (c - x) + (r - y) * (r - y);
+            img.at<ushort>(r, c) = cv::saturate_cast<ushort>(800 + 30 * ((r * 7 + c * 13) % 5) + 30000 * std::exp(-d2 / 8.0));
+        }
+    return cv::imwrite(path.toStdString(), img);
+}
+
+// A mouse drag with `button` held (events sent directly, so the moves carry the button).
+void drag(QWidget* w, Qt::MouseButton button, Qt::KeyboardModifiers mods, QPointF from, QPointF to) {
+    auto send = [&](QEvent::Type t, QPointF pos, Qt::MouseButton b, Qt::MouseButtons held) {
+        QMouseEvent e(t, pos, w->mapToGlobal(pos), b, held, mods);
+        QApplication::sendEvent(w, &e);
+    };
+    send(QEvent::MouseButtonPress, from, button, button);
+    for (int k = 1; k <= 5; ++k) send(QEvent::MouseMove, from + (to - from) * (k / 5.0), Qt::NoButton, button);
+    send(QEvent::MouseButtonRelease, to, button, Qt::NoButton);
+}
+
+// Pixels within `radius` of `at` whose colour is within `tol` of `c` in every channel.
+int pixelsNear(const QImage& img, QPointF at, int radius, QColor c, int tol) {
+    int n = 0;
+    for (int y = int(at.y()) - radius; y <= int(at.y()) + radius; ++y)
+        for (int x = int(at.x()) - radius; x <= int(at.x()) + radius; ++x) {
+            if (!img.valid(x, y)) continue;
+            const QColor p = img.pixelColor(x, y);
+            n += std::abs(p.red() - c.red()) <= tol && std::abs(p.green() - c.green()) <= tol && std::abs(p.blue() - c.blue()) <= tol;
+        }
+    return n;
 }
 }  // namespace
 
@@ -739,6 +778,247 @@ private slots:
         QCOMPARE(manual, 30);
         QCOMPARE(noted, notes.size());
         QVERIFY(noted >= 5);
+    }
+
+    // Issue 30, item 2 (found in a real window): the verdict badge, always in the top left
+    // corner, hid a spot near the top edge and its centre marker, in the ROI view and on the
+    // contact sheet. The badge now takes a corner that leaves the spot's centre in view.
+    void verdictBadgeLeavesTheSpotCentreInView() {
+        const QString file = m_dir.path() + "/corner/spot_top_left.png";
+        QVERIFY(writeSpot(file, 4.0, 2.0));
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {file}));
+        QCOMPARE(c->count(), 1);
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(showShot(fw, 0));
+        const lwb::core::footprint::SpotFit fit = c->shot(0)->fit;
+        QVERIFY2(fit.ok && std::abs(fit.x - 4) < 0.5 && std::abs(fit.y - 2) < 0.5,
+                 qPrintable(QString("fit (%1, %2)").arg(fit.x).arg(fit.y)));
+        ImageView* v = fw->roiView();
+        QVERIFY(v->hasImage());
+        const QPointF centre = v->toWidget(QPointF(fit.x, fit.y));
+        QVERIFY(v->rect().contains(centre.toPoint()));
+        QVERIFY(!v->badgeRect().isEmpty());
+        QVERIFY2(!v->badgeRect().adjusted(-4, -4, 4, 4).contains(centre.toPoint()),
+                 qPrintable(QString("badge (%1, %2, %3 x %4) over the centre (%5, %6)")
+                                .arg(v->badgeRect().x()).arg(v->badgeRect().y()).arg(v->badgeRect().width())
+                                .arg(v->badgeRect().height()).arg(centre.x()).arg(centre.y())));
+        // The Gaussian centre's × is drawn in its own colour there, not under the badge.
+        QVERIFY(pixelsNear(v->grab().toImage(), centre, 5, QColor(0, 220, 255), 40) >= 4);
+        // Panned so that the spot sits in another corner, the badge moves again.
+        for (QPointF corner : {QPointF(v->width() - 24, 20), QPointF(24, v->height() - 20), QPointF(v->width() - 24, v->height() - 20)}) {
+            drag(v, Qt::LeftButton, {}, v->toWidget(QPointF(fit.x, fit.y)), corner);
+            const QPointF at = v->toWidget(QPointF(fit.x, fit.y));
+            QVERIFY(std::abs(at.x() - corner.x()) < 1 && std::abs(at.y() - corner.y()) < 1);
+            QVERIFY2(!v->badgeRect().isEmpty() && !v->badgeRect().adjusted(-4, -4, 4, 4).contains(at.toPoint()),
+                     qPrintable(QString("spot at (%1, %2)").arg(at.x()).arg(at.y())));
+        }
+        // The contact sheet: the thumbnail's pixel at the spot's centre is shown as it is.
+        fw->showTab("sheet");
+        ContactSheet* sheet = fw->contactSheet();
+        QVERIFY(QTest::qWaitForWindowExposed(sheet));
+        const QImage thumb = sheet->thumbnail(0);
+        QCOMPARE(thumb.size(), QSize(ContactSheet::kThumb, ContactSheet::kThumb));
+        const QImage shown = sheet->viewport()->grab().toImage();
+        const double k = ContactSheet::kThumb / 32.0;
+        const QPoint inThumb(int((fit.x + 0.5) * k), int((fit.y + 0.5) * k));
+        const QPoint inView = sheet->visualRect(sheet->model()->index(0, 0)).topLeft() + QPoint(6, 6) + inThumb;
+        QCOMPARE(shown.pixelColor(inView), thumb.pixelColor(inThumb));
+    }
+
+    // Issue 30, item 3: box zoom (right-drag or Shift+drag) and the zoom steps 1× (the fit), 2×,
+    // 4× and 8× on the ROI view and the frame view; the wheel, the drag and the double-click
+    // keep working.
+    void imageViewsBoxZoomAndZoomSteps() {
+        const auto sim = lwbtest::runCli({"simulate", "footprint", "--count", "2", "--seed", "5", "--full-frame", "-q",
+                                          m_dir.path() + "/zoomframes"});
+        QVERIFY2(sim.exitCode == 0, qPrintable(sim.err));
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/zoomframes"}));
+        w.resize(1400, 900);
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(showShot(fw, 0));
+        ImageView* roi = fw->roiView();
+        ImageView* frame = fw->frameView();
+        QVERIFY(roi->hasImage() && frame->hasImage() && frame->isVisible());
+        const double roiFit = roi->zoom(), frameFit = frame->zoom();
+        const QPointF roiCentre = roi->visibleImageRect().center();
+        // The steps from the table, where the review keys are: both views, about their centres.
+        fw->table()->setFocus();
+        QTest::keyClick(fw->table(), Qt::Key_4);
+        QCOMPARE(roi->zoom(), 4 * roiFit);
+        QCOMPARE(frame->zoom(), 4 * frameFit);
+        QVERIFY(std::abs(roi->visibleImageRect().center().x() - roiCentre.x()) < 0.05);
+        QVERIFY(std::abs(roi->visibleImageRect().center().y() - roiCentre.y()) < 0.05);
+        QTest::keyClick(fw->table(), Qt::Key_8);
+        QCOMPARE(roi->zoom(), 8 * roiFit);
+        QTest::keyClick(fw->table(), Qt::Key_2);
+        QCOMPARE(roi->zoom(), 2 * roiFit);
+        QTest::keyClick(fw->table(), Qt::Key_1);
+        QCOMPARE(roi->zoom(), roiFit);
+        QCOMPARE(frame->zoom(), frameFit);
+        QVERIFY(fw->table()->hasFocus());  // the review keys still act on the table
+        QCOMPARE(currentSource(fw), 0);
+        // Right-drag a box over the ROI: the box fills the view.
+        const QRectF box(9.5, 10.5, 8, 8);
+        drag(roi, Qt::RightButton, {}, roi->toWidget(box.topLeft()), roi->toWidget(box.bottomRight()));
+        QRectF seen = roi->visibleImageRect();
+        QVERIFY2(seen.contains(box.adjusted(0.05, 0.05, -0.05, -0.05)) && std::min(seen.width(), seen.height()) < box.width() + 0.1,
+                 qPrintable(QString("box zoom shows %1 x %2 from (%3, %4)").arg(seen.width()).arg(seen.height()).arg(seen.x()).arg(seen.y())));
+        // Home (with the view's focus) or a double-click fits again.
+        roi->setFocus();
+        QTest::keyClick(roi, Qt::Key_Home);
+        QCOMPARE(roi->zoom(), roiFit);
+        // Shift + left drag on the frame view.
+        const QRectF fbox(40.5, 30.5, 30, 20);
+        drag(frame, Qt::LeftButton, Qt::ShiftModifier, frame->toWidget(fbox.topLeft()), frame->toWidget(fbox.bottomRight()));
+        seen = frame->visibleImageRect();
+        QVERIFY2(seen.contains(fbox.adjusted(0.05, 0.05, -0.05, -0.05)) && (seen.width() < 30.1 || seen.height() < 20.1),
+                 qPrintable(QString("shift-drag zoom shows %1 x %2").arg(seen.width()).arg(seen.height())));
+        QTest::mouseDClick(frame, Qt::LeftButton, {}, frame->rect().center());
+        QCOMPARE(frame->zoom(), frameFit);
+        // A plain drag still pans; the wheel still zooms about the cursor.
+        const QPointF before = roi->toWidget(QPointF(16, 16));
+        drag(roi, Qt::LeftButton, {}, roi->rect().center(), roi->rect().center() + QPointF(30, 20));
+        QCOMPARE(roi->zoom(), roiFit);
+        QCOMPARE(roi->toWidget(QPointF(16, 16)), before + QPointF(30, 20));
+        const QPointF under = roi->toWidget(QPointF(12, 12));
+        QWheelEvent wheel(under, roi->mapToGlobal(under), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(roi, &wheel);
+        QVERIFY(roi->zoom() > roiFit);
+        QVERIFY((roi->toWidget(QPointF(12, 12)) - under).manhattanLength() < 0.01);
+        // A right click without a drag offers the steps in a menu.
+        QString offered;
+        QTimer::singleShot(100, [&] {
+            auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+            if (!menu) return;
+            for (QAction* a : menu->actions()) offered += a->text() + ";";
+            for (QAction* a : menu->actions())
+                if (a->text().startsWith("4×")) a->trigger();
+            menu->close();
+        });
+        const QPoint at = roi->rect().center();
+        QTest::mouseClick(roi, Qt::RightButton, {}, at);
+        QVERIFY2(offered.contains("1× (fit)") && offered.contains("2×") && offered.contains("8×"), qPrintable(offered));
+        QCOMPARE(roi->zoom(), 4 * roiFit);
+        // Help ▸ Keyboard shortcuts lists the steps.
+        QStringList keys;
+        for (const QString& k : w.shortcutList()) keys << k.section('\t', 0, 0);
+        QVERIFY(keys.contains("2 / 4 / 8") && keys.contains("1") && keys.contains("Right-drag, Shift+drag"));
+    }
+
+    // Issue 30, item 4 (found in a real window): an unreadable shot left the previous shot's
+    // colour bar on display, and said nothing where the image was. Its image, histogram and
+    // colour bar are cleared and the ROI view says why it cannot be read.
+    void unreadableShotClearsTheDisplayAndSaysWhy() {
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/shots/shot_000000.png", m_dir.path() + "/junk/broken.png"}));
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(showShot(fw, 0));
+        QVERIFY(fw->roiView()->hasImage());
+        QVERIFY(!fw->colorBar()->ticks().empty());
+        QVERIFY(!fw->histogram()->bins().empty());
+        QVERIFY(showShot(fw, 1));
+        const QString why = c->shot(1)->loadError;
+        QVERIFY(!why.isEmpty());
+        QVERIFY(!fw->roiView()->hasImage());
+        QVERIFY(fw->histogram()->bins().empty());
+        QVERIFY2(fw->colorBar()->ticks().empty(), "the previous shot's colour bar is still on display");
+        // Nothing but the background is painted in the bar's place.
+        const QImage bar = fw->colorBar()->grab().toImage();
+        const QColor bg = bar.pixelColor(0, 0);
+        int painted = 0;
+        for (int y = 0; y < bar.height(); ++y)
+            for (int x = 0; x < bar.width(); ++x) painted += bar.pixelColor(x, y) != bg;
+        QCOMPARE(painted, 0);
+        const QString said = fw->roiView()->placeholderText();
+        QVERIFY2(said.contains("unreadable", Qt::CaseInsensitive) && said.contains(why), qPrintable(said));
+        // The next readable shot brings everything back.
+        QVERIFY(showShot(fw, 0));
+        QVERIFY(fw->roiView()->hasImage());
+        QVERIFY(!fw->colorBar()->ticks().empty());
+    }
+
+    // Issue 30, item 5 (found in a real window): the colour bar's unit "DN" was drawn over the
+    // bar's right end. It now sits beside the bar, which shows the colour map alone.
+    void colourBarUnitDoesNotCoverTheBar() {
+        MainWindow w;
+        QVERIFY(showDemo(w));
+        FootprintWorkspace* fw = w.footprint();
+        QVERIFY(showShot(fw, 7));
+        ColorBar* bar = fw->colorBar();
+        QVERIFY(bar->isVisible());
+        // Gray, linear: the bar's middle row must rise from black to white, left to right.
+        bar->setScale(ColorMap::Gray, lwb::core::StretchKind::Linear, 0, 1000);
+        const QRect b = bar->barRect(), u = bar->unitRect();
+        QVERIFY(!b.isEmpty() && !u.isEmpty());
+        QVERIFY2(!b.intersects(u), qPrintable(QString("unit (%1..%2) over the bar (%3..%4)").arg(u.left()).arg(u.right()).arg(b.left()).arg(b.right())));
+        QVERIFY(bar->rect().contains(u));
+        QVERIFY(b.width() > bar->width() / 2);
+        const QImage img = bar->grab().toImage();
+        int prev = -1;
+        for (int x = b.left() + 1; x < b.right(); ++x) {
+            const int g = qGray(img.pixel(x, b.center().y()));
+            QVERIFY2(g >= prev - 1, qPrintable(QString("the bar darkens at x = %1 (%2 after %3)").arg(x).arg(g).arg(prev)));
+            prev = g;
+        }
+        QVERIFY(prev > 240);
+        // The unit is drawn where unitRect says.
+        const QColor bg = img.pixelColor(u.right() + 1 < img.width() ? u.right() + 1 : u.left() - 1, u.bottom());
+        int ink = 0;
+        for (int y = u.top(); y <= u.bottom(); ++y)
+            for (int x = u.left(); x <= u.right(); ++x) ink += img.pixelColor(x, y) != bg;
+        QVERIFY(ink > 5);
+    }
+
+    // Issue 30, item 1 (found in a real window): Tab was trapped in the shot table, moving from
+    // cell to cell and, past the last column, to the next shot. Tab and Shift+Tab now leave the
+    // table for the next (previous) widget and the current shot stays; ↑ / ↓ still move.
+    void tabLeavesTheShotTable() {
+        MainWindow w;
+        QVERIFY(showDemo(w));
+        FootprintWorkspace* fw = w.footprint();
+        fw->filterBox()->setCurrentIndex(0);
+        fw->selectRow(3);
+        fw->table()->setFocus();
+        QVERIFY(QTest::qWaitFor([&] { return fw->table()->hasFocus(); }, 2000));
+        // As many Tabs as there are columns: each one leaves the table (and is sent back to it),
+        // so a Tab that wrapped to the next row would show.
+        for (int k = 0; k < fw->proxy()->columnCount(); ++k) {
+            QTest::keyClick(fw->table(), Qt::Key_Tab);
+            QVERIFY2(!fw->table()->hasFocus(), qPrintable(QString("Tab %1 stayed in the table").arg(k + 1)));
+            QCOMPARE(currentSource(fw), 3);
+            QCOMPARE(fw->controller()->current(), 3);
+            QWidget* next = QApplication::focusWidget();
+            QVERIFY(next);
+            QTest::keyClick(next, Qt::Key_Backtab);
+            QVERIFY2(fw->table()->hasFocus(), "Shift+Tab does not come back to the table");
+            QCOMPARE(currentSource(fw), 3);
+        }
+        QTest::keyClick(fw->table(), Qt::Key_Down);
+        QCOMPARE(currentSource(fw), 4);
+        QTest::keyClick(fw->table(), Qt::Key_Up);
+        QCOMPARE(currentSource(fw), 3);
+        // Help ▸ Keyboard shortcuts says so, with the other review keys.
+        QStringList listed;
+        for (const QString& k : w.shortcutList())
+            if (k.contains("Footprint ▸")) listed << k.section('\t', 0, 0);
+        for (const char* key : {"↑ / ↓", "A", "R", "N", "E", "Tab, Shift+Tab"})
+            QVERIFY2(listed.contains(QString::fromUtf8(key)),
+                     qPrintable(QString::fromUtf8(key) + " is not in the shortcut list: " + listed.join(" | ")));
     }
 };
 
