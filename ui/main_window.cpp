@@ -35,6 +35,10 @@
 #include <QUndoStack>
 #include <QTableWidget>
 #include <QTextBrowser>
+#include <QRegularExpression>
+#include <QTextDocument>
+#include <QTextCursor>
+#include <QTextBlock>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
@@ -401,13 +405,41 @@ void MainWindow::showUserGuide() {
     auto* b = new QTextBrowser(dlg);
     b->setObjectName("userGuide");
     b->setOpenExternalLinks(true);
-    b->setSource(QUrl("qrc:/docs/user-guide.md"), QTextDocument::MarkdownResource);
+    // The guide as the program shows it: without the paragraphs for developers (between
+    // <!-- developer --> and <!-- /developer -->: building, rendering the screenshots), and its
+    // pictures no wider than the window (issue 30: shown at their full 1480 px, and "make run").
+    QFile f(QStringLiteral(":/docs/user-guide.md"));
+    QString text = f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : tr("The user guide is missing.");
+    text.remove(QRegularExpression(QStringLiteral("<!-- developer -->.*?<!-- /developer -->"),
+                                   QRegularExpression::DotMatchesEverythingOption));
+    b->document()->setBaseUrl(QUrl(QStringLiteral("qrc:/docs/")));
+    b->setMarkdown(text);
     lay->addWidget(b);
     auto* bb = new QDialogButtonBox(QDialogButtonBox::Close, dlg);
     connect(bb, &QDialogButtonBox::rejected, dlg, &QDialog::close);
     lay->addWidget(bb);
     dlg->resize(std::min(900, width()), std::min(760, height()));
+    fitGuideImages(b, dlg->width() - 60);
     dlg->show();
+}
+
+// Every picture of a text browser at most `width` pixels wide (its height in proportion).
+void MainWindow::fitGuideImages(QTextBrowser* browser, int width) {
+    QTextDocument* doc = browser->document();
+    for (QTextBlock block = doc->begin(); block.isValid(); block = block.next())
+        for (auto it = block.begin(); !it.atEnd(); ++it) {
+            const QTextFragment frag = it.fragment();
+            QTextImageFormat img = frag.charFormat().toImageFormat();
+            if (!img.isValid()) continue;
+            const QImage picture(":/docs/" + img.name());
+            if (picture.isNull() || picture.width() <= width) continue;
+            img.setWidth(width);
+            img.setHeight(double(width) * picture.height() / picture.width());
+            QTextCursor c(doc);
+            c.setPosition(frag.position());
+            c.setPosition(frag.position() + frag.length(), QTextCursor::KeepAnchor);
+            c.setCharFormat(img);
+        }
 }
 
 void MainWindow::showError(const QString& what, const QString& detail) {

@@ -13,6 +13,8 @@ class QActionGroup;
 class QProgressBar;
 class QPushButton;
 
+class QTextBrowser;
+
 namespace lwb::ui {
 
 class FootprintWorkspace;
@@ -100,6 +102,7 @@ private:
     /// Inputs were opened from the window (files, folders, drops, the command line): see main_window.cpp.
     void inputsOpened();
     void buildMenus();
+    static void fitGuideImages(QTextBrowser* browser, int width);
     void rebuildRecentInputsMenu();
     void workspaceStatus(QWidget* workspace, const QString& message, int timeoutMs);
     void openInputs();

@@ -16,6 +16,8 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTextBrowser>
+#include <QTextBlock>
+#include <QTextDocument>
 #include <QUndoCommand>
 #include <QUndoStack>
 #include <QtTest>
@@ -262,6 +264,20 @@ private slots:
         QVERIFY(browser);
         QVERIFY(browser->toPlainText().contains("Footprint review"));
         QVERIFY(browser->toPlainText().contains("SLR pass screening"));
+        // Issue 30: the guide in the program had developer text and pictures at full size.
+        QVERIFY2(!browser->toPlainText().contains("make run"), "developer text in the built-in guide");
+        QVERIFY(!browser->toPlainText().contains("--screenshot"));
+        int pictures = 0;
+        for (QTextBlock b = browser->document()->begin(); b.isValid(); b = b.next())
+            for (auto it = b.begin(); !it.atEnd(); ++it) {
+                const QTextImageFormat img = it.fragment().charFormat().toImageFormat();
+                if (!img.isValid()) continue;
+                ++pictures;
+                QVERIFY2(QFile::exists(":/docs/" + img.name()), qPrintable(img.name() + " is not bundled"));
+                QVERIFY2(img.width() > 0 && img.width() <= browser->window()->width(),
+                         qPrintable(QString("%1 shown %2 px wide in a %3 px dialog").arg(img.name()).arg(img.width()).arg(browser->window()->width())));
+            }
+        QVERIFY(pictures >= 5);
         const QStringList keys = w.shortcutList();
         auto has = [&](const QString& key, const QString& what) {
             for (const QString& k : keys)
