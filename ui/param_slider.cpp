@@ -53,7 +53,7 @@ public:
         setSingleStep(integer ? 1 : span > 0 ? std::pow(10.0, std::floor(std::log10(span / 100))) : 0.01);
         setKeyboardTracking(false);
         setMinimumWidth(86);
-        setMaximumWidth(150);
+        setMaximumWidth(130);  // (four significant digits and the unit: "1.148e+10 px/s")
         if (!info.unit.empty()) setSuffix(" " + QString::fromStdString(info.unit));
         QLocale plain = locale();
         plain.setNumberOptions(plain.numberOptions() | QLocale::OmitGroupSeparator);  // "11482396630", not "11,482,…"
@@ -150,7 +150,10 @@ void ParamSlider::build(const QString& label) {
     m_slider = new QSlider(Qt::Horizontal, this);
     if (m_intSlider) m_slider->setRange(int(std::ceil(f.uiLo)), int(std::floor(f.uiHi)));
     else m_slider->setRange(0, kSteps);
-    m_slider->setMinimumWidth(48);
+    // A logarithmic slider gets at least 14 px a decade: mag_T's seven decades in 48 px moved
+    // 4.33 → 3680 px/s in a 20 px drag (issue 30).
+    const double decades = f.uiLog && f.uiLo > 0 && f.uiHi > f.uiLo ? std::log10(f.uiHi / f.uiLo) : 0;
+    m_slider->setMinimumWidth(std::max(48, int(std::ceil(14 * decades))));
     m_field = new ValueField(f, this);
     lay->addWidget(m_label);
     lay->addWidget(m_slider, 1);

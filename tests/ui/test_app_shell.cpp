@@ -28,6 +28,7 @@
 #include "ui/calib_workspace.hpp"
 #include "ui/footprint_workspace.hpp"
 #include "ui/main_window.hpp"
+#include "ui/param_slider.hpp"
 #include "ui/plot_kit.hpp"
 #include "ui/radiometry_workspace.hpp"
 #include "ui/slr_workspace.hpp"
@@ -577,6 +578,10 @@ private slots:
                      qPrintable(QString("legend to %1 px of %2").arg(p->legend->outerRect().bottom()).arg(p->height())));
             QVERIFY2(p->axisRect()->height() >= 100, qPrintable(QString("axes %1 px tall").arg(p->axisRect()->height())));
         }
+        // mag_OC's slider spans six decades: at least 14 px a decade (issue 30: mag_T's seven
+        // decades in 48 px moved it 4.33 → 3680 px/s in a 20 px drag).
+        QVERIFY2(ws->magOcSlider()->slider()->width() >= 6 * 14,
+                 qPrintable(QString("mag_OC slider %1 px").arg(ws->magOcSlider()->slider()->width())));
         const QString out = widgetOutside(&w);
         QVERIFY2(out.isEmpty(), qPrintable(out));
     }
