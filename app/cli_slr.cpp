@@ -9,6 +9,7 @@
 #include <set>
 #include <cerrno>
 #include <cstring>
+#include <exception>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -394,10 +395,16 @@ private:
         bool npsFormed = false;
     };
 
-    // Screening and writing a pass, on a worker thread.
+    // Screening and writing a pass, on a worker thread. Nothing may leave it: a failure (memory
+    // running out while a pass's files are written) is that pass's, as the CLI reports any other.
     void work(Job& j) const {
-        j.r = slr::runPass(j.pass, j.params);
-        if (j.r.ok) writePass(j);
+        try {
+            j.r = slr::runPass(j.pass, j.params);
+            if (j.r.ok) writePass(j);
+        } catch (const std::exception& e) {
+            j.r.ok = false;
+            j.r.error = std::string("out of resources while screening the pass: ") + e.what();
+        }
     }
 
     // The passes screened so far, in the file's order: their rows.

@@ -679,6 +679,9 @@ void SlrWorkspace::showPass() {
     m_params->setParams(m_controller->params());  // a satellite preset may have come with the pass
     const PassData& p = m_controller->pass();
     m_hover->clear();
+    // The station's comparison belongs to the pass shown: until the new pass's first run it
+    // says there is nothing of ours yet (it kept the last pass's table).
+    if (m_stationNps->hasFile()) m_stationNps->update(p, nullptr);
     if (!m_controller->hasPass()) {
         // A pass that cannot be processed: its reason in place, the plots empty, the list usable.
         for (QCustomPlot* plot : {m_ocPlot, m_histPlot}) plot->clearPlottables();
