@@ -1264,7 +1264,17 @@ QString SlrWorkspace::summaryHtml(const SlrRun& run) const {
                               ? (m_controller->scaleReused() ? tr(" (automatic, kept while C moves)") : tr(" (automatic)"))
                               : QString())
                      .arg(m_controller->screenParams().cosineC, 0, 'f', 3);
-    if (flattened) statsHtml += tr("<br>Refined: screened again on the O-C less the accepted track's trend (%1 round(s))").arg(s.refinedRounds);
+    if (flattened) {
+        // The panel's greyed fields show the search's scale (where unticking Automatic starts);
+        // the line above is the last round's: both said, so that the two numbers do not differ
+        // unexplained (0.0764 in the field, 0.054 here on STELLA).
+        const ScaleChoice base = scaleChoice(s);
+        statsHtml += tr("<br>Refined: screened again on the O-C less the accepted track's trend (%1 round(s); the "
+                        "search's scale, in the panel: mag_T %2 px/s, mag_OC %3 px/s)")
+                         .arg(s.refinedRounds)
+                         .arg(base.magT, 0, 'g', 4)
+                         .arg(base.magOc, 0, 'g', 4);
+    }
     statsHtml += tr("<br>%1 regions, %2 candidates, %3 on the line, %4 recovered · %5 ms")
                      .arg(s.regions.size())
                      .arg(s.candidates)

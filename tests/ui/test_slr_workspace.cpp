@@ -724,6 +724,10 @@ private slots:
         const auto& cmp = panel->comparison();
         QVERIFY2(cmp.ok, cmp.error.c_str());
         QCOMPARE(cmp.block, size_t(0));
+        // (a refined pass: the summary names the search's scale the panel's greyed fields show)
+        if (c->run().screen.refinedRounds > 0)
+            QVERIFY2(ws->statsLabel()->text().contains(QString("in the panel: mag_T %1 px/s").arg(scaleChoice(c->run().screen).magT, 0, 'g', 4)),
+                     qPrintable(ws->statsLabel()->text()));
         QCOMPARE(cmp.matched, size_t(11));
         QCOMPARE(cmp.stationOnly, size_t(2));
         QCOMPARE(cmp.oursOnly, size_t(0));
