@@ -26,6 +26,7 @@
 
 #include "core/common/json.hpp"
 #include "core/footprint/image_io.hpp"
+#include "ui/save_path.hpp"
 #include "ui/app_undo.hpp"
 #include "ui/params_command.hpp"
 #include "ui/color_maps.hpp"
@@ -544,12 +545,9 @@ bool FootprintWorkspace::exportTable(const QString& path, bool acceptedOnly, QSt
 }
 
 void FootprintWorkspace::exportDialog(bool acceptedOnly) {
-    QSettings st;
-    const QString path = QFileDialog::getSaveFileName(
-        this, acceptedOnly ? tr("Export accepted shots") : tr("Export the review table"),
-        st.value("paths/lastExport").toString(), tr("CSV (*.csv)"));
+    const QString path = askSavePath(this, acceptedOnly ? tr("Export accepted shots") : tr("Export the review table"),
+                                     "paths/lastExport", acceptedOnly ? "accepted_shots.csv" : "review.csv", tr("CSV (*.csv)"));
     if (path.isEmpty()) return;
-    st.setValue("paths/lastExport", QFileInfo(path).absolutePath());
     QString err;
     int rows = 0;
     if (!exportTable(path, acceptedOnly, &err, &rows)) {

@@ -46,6 +46,7 @@
 #include "core/common/json.hpp"
 #include "ui/app_undo.hpp"
 #include "ui/demo.hpp"
+#include "ui/save_path.hpp"
 #include "ui/workspace_layout.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/footprint_workspace.hpp"
@@ -903,11 +904,8 @@ bool MainWindow::maybeSave() {
 }
 
 void MainWindow::exportAccepted() {
-    QSettings st;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export accepted shots"), st.value("paths/lastExport").toString(),
-                                                      tr("CSV (*.csv)"));
+    const QString path = askSavePath(this, tr("Export accepted shots"), "paths/lastExport", "accepted_shots.csv", tr("CSV (*.csv)"));
     if (path.isEmpty()) return;
-    st.setValue("paths/lastExport", QFileInfo(path).absolutePath());
     QString err;
     int rows = 0;
     if (!m_footprint->controller()->exportAccepted(path, &err, &rows))
