@@ -16,6 +16,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QMouseEvent>
+#include <QPainter>
 #include <QPdfWriter>
 #include <QPointer>
 #include <QRegularExpression>
@@ -96,6 +97,79 @@ protected:
 private:
     double m_step = 1;
 };
+
+// The cursor over a plot: a transparent widget the size of the plot, above it, drawing the
+// kit's PlotCursor with the axes' current mapping (so a zoom moves it with the data).
+class CursorOverlay : public QWidget {
+public:
+    CursorOverlay(QCustomPlot* plot, const PlotCursor* cursor) : QWidget(plot), m_plot(plot), m_cursor(cursor) {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setAttribute(Qt::WA_NoSystemBackground);
+        setGeometry(plot->rect());
+        show();
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        const PlotCursor& c = *m_cursor;
+        if (c.isEmpty()) return;
+        QPainter g(this);
+        const QRect area = m_plot->axisRect()->rect();
+        g.setClipRect(area);
+        const bool dark = plotThemeDark();
+        const QColor ink = dark ? QColor(230, 230, 230, 190) : QColor(40, 40, 40, 170);
+        g.setPen(QPen(ink, 1, Qt::DashLine));
+        const QCPAxis *xa = m_plot->xAxis, *ya = m_plot->yAxis;
+        if (c.hasX) {
+            const double px = xa->coordToPixel(c.x);
+            if (std::isfinite(px)) g.drawLine(QPointF(px, area.top()), QPointF(px, area.bottom()));
+        }
+        if (c.hasY) {
+            const double py = ya->coordToPixel(c.y);
+            if (std::isfinite(py)) g.drawLine(QPointF(area.left(), py), QPointF(area.right(), py));
+        }
+        g.setRenderHint(QPainter::Antialiasing);
+        for (const QPointF& m : c.marks) {
+            const QPointF px(xa->coordToPixel(m.x()), ya->coordToPixel(m.y()));
+            if (!std::isfinite(px.x()) || !std::isfinite(px.y())) continue;
+            g.setPen(QPen(dark ? QColor(255, 235, 80) : QColor(0, 0, 0), 2));
+            g.setBrush(Qt::NoBrush);
+            g.drawEllipse(px, 6, 6);
+        }
+        if (!c.text.isEmpty()) {
+            QFont f = font();
+            f.setPointSizeF(std::max(7.0, f.pointSizeF() - 1));
+            g.setFont(f);
+            const QFontMetrics fm(f);
+            const QRect box = fm.boundingRect(area.adjusted(4, 4, -4, -4), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, c.text)
+                                  .adjusted(-3, -2, 3, 2);
+            g.setPen(Qt::NoPen);
+            g.setBrush(dark ? QColor(30, 30, 30, 215) : QColor(255, 255, 255, 215));
+            g.drawRect(box);
+            g.setPen(dark ? QColor(235, 235, 235) : QColor(20, 20, 20));
+            g.drawText(box.adjusted(3, 2, -3, -2), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, c.text);
+        }
+    }
+
+private:
+    QCustomPlot* m_plot;
+    const PlotCursor* m_cursor;
+};
+
+// A coordinate as its axis shows it: the clock on a UTC axis, else the digits one pixel needs.
+QString axisValue(const QCPAxis* a, double v) {
+    if (!std::isfinite(v)) return QString();
+    const int pixels = std::max(1, a->orientation() == Qt::Horizontal ? a->axisRect()->width() : a->axisRect()->height());
+    const double perPixel = std::fabs(a->range().size()) / pixels;
+    if (dynamic_cast<UtcTicker*>(a->ticker().data())) {
+        const int decimals = perPixel >= 1 ? 0 : std::min(6, int(std::ceil(-std::log10(perPixel))));
+        return utcClock(v, decimals);
+    }
+    if (a->scaleType() == QCPAxis::stLogarithmic) return QString::number(v, 'g', 4);
+    if (perPixel <= 0 || std::fabs(v) >= 1e7 || (v != 0 && std::fabs(v) < 1e-4)) return QString::number(v, 'g', 6);
+    const int decimals = std::clamp(int(std::ceil(-std::log10(perPixel))), 0, 9);
+    return QString::number(v, 'f', decimals);
+}
 
 }  // namespace
 
@@ -304,8 +378,60 @@ PlotKit::PlotKit(QCustomPlot* plot, const PlotKitOptions& options) : QObject(plo
         fitTickCounts();
         applyTheme();
     });
-    connect(plot, &QCustomPlot::afterReplot, this, [this] { m_laidOut = m_plot->viewport().size(); });
+    connect(plot, &QCustomPlot::afterReplot, this, [this] {
+        m_laidOut = m_plot->viewport().size();
+        if (m_overlay && !m_cursor.isEmpty()) m_overlay->update();  // the cursor moves with the data
+    });
+    plot->setMouseTracking(true);  // the cursor follows the mouse with no button held
+    m_overlay = new CursorOverlay(plot, &m_cursor);
     applyTheme();
+}
+
+void PlotKit::setCursor(const PlotCursor& cursor) {
+    if (cursor.isEmpty() && m_cursor.isEmpty()) return;
+    m_cursor = cursor;
+    m_overlay->raise();
+    m_overlay->update();
+}
+
+QString PlotKit::axisText(const QCPAxis* axis, double value) { return axisValue(axis, value); }
+
+QString PlotKit::readoutAt(double x, double y) const {
+    if (m_options.readout) return m_options.readout(x, y);
+    QString text = QStringLiteral("%1, %2").arg(axisValue(m_plot->xAxis, x), axisValue(m_plot->yAxis, y));
+    // The value under the cursor of a colour map on the main axes (the top one that has a cell there).
+    for (int i = m_plot->plottableCount() - 1; i >= 0; --i) {
+        auto* map = qobject_cast<QCPColorMap*>(m_plot->plottable(i));
+        if (!map || !map->visible() || map->keyAxis() != m_plot->xAxis) continue;
+        int kx = 0, ky = 0;
+        map->data()->coordToCell(x, y, &kx, &ky);
+        if (kx < 0 || ky < 0 || kx >= map->data()->keySize() || ky >= map->data()->valueSize()) continue;
+        if (!map->data()->keyRange().contains(x) && map->data()->keySize() > 1) continue;
+        const double v = map->data()->cell(kx, ky);
+        if (std::isfinite(v)) text += QStringLiteral(" = %1").arg(QString::number(v, 'g', 5));
+        break;
+    }
+    return text;
+}
+
+void PlotKit::hover(const QPoint& pos) {
+    if (m_options.cursor == CursorMode::Off) return;
+    if (m_drag != Drag::None || !m_plot->axisRect()->rect().contains(pos)) {
+        if (m_options.cursor == CursorMode::External) emit hoverLeft();
+        else clearCursor();
+        return;
+    }
+    const QPointF c(m_plot->xAxis->pixelToCoord(pos.x()), m_plot->yAxis->pixelToCoord(pos.y()));
+    if (m_options.cursor == CursorMode::External) {
+        emit hovered(c, pos);
+        return;
+    }
+    PlotCursor k;
+    k.hasX = k.hasY = true;
+    k.x = c.x();
+    k.y = c.y();
+    k.text = readoutAt(c.x(), c.y());
+    setCursor(k);
 }
 
 PlotKit::Snapshot PlotKit::snapshot() const {
@@ -653,8 +779,16 @@ bool PlotKit::eventFilter(QObject* o, QEvent* e) {
             m_plot->replot(QCustomPlot::rpQueuedReplot);
             return true;
         }
+        if (!(me->buttons() & (Qt::LeftButton | Qt::RightButton))) hover(pos);
+        else if (!m_cursor.isEmpty() || m_options.cursor == CursorMode::External) hover(QPoint(-1, -1));  // hidden while dragging
         return false;
     }
+    case QEvent::Leave:
+        hover(QPoint(-1, -1));
+        return false;
+    case QEvent::Resize:
+        m_overlay->setGeometry(m_plot->rect());
+        return false;
     case QEvent::MouseButtonRelease: {
         auto* me = static_cast<QMouseEvent*>(e);
         const QPoint pos = me->position().toPoint();

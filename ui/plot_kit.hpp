@@ -21,6 +21,7 @@
 #include <QDate>
 #include <QObject>
 #include <QPair>
+#include <QPointF>
 #include <QSet>
 #include <QSize>
 #include <QString>
@@ -45,6 +46,22 @@ class QPoint;
 
 namespace lwb::ui {
 
+/// What the kit's cursor overlay shows over a plot: a vertical line at key `x`, a horizontal line
+/// at value `y` (main axes), rings on points, and a readout in the axis rect's top-left corner.
+/// Drawn on a transparent widget over the plot: moving it needs no replot, exports leave it out.
+struct PlotCursor {
+    bool hasX = false, hasY = false;
+    double x = 0, y = 0;
+    QVector<QPointF> marks;  ///< points ringed, in the main axes' coordinates
+    QString text;            ///< the readout
+    bool isEmpty() const { return !hasX && !hasY && marks.isEmpty() && text.isEmpty(); }
+};
+
+/// Who draws the cursor: the kit (a crosshair at the mouse with its coordinates), the workspace
+/// (the kit emits hovered() and hoverLeft(); the workspace calls setCursor, e.g. on every plot of
+/// a pass at once), or nobody.
+enum class CursorMode { Crosshair, External, Off };
+
 struct PlotKitOptions {
     /// What reset / home does; empty: back to the view the workspace last set.
     std::function<void()> home;
@@ -52,6 +69,11 @@ struct PlotKitOptions {
     QString exportName;
     /// Legend entries toggle their series on a click.
     bool legendToggle = true;
+    /// The cursor (a crosshair with its readout by default).
+    CursorMode cursor = CursorMode::Crosshair;
+    /// The crosshair's readout for main-axes coordinates; empty: the axes' own formats
+    /// (hh:mm:ss.sss on a UTC axis, digits to the pixel elsewhere, a colour map's cell value).
+    std::function<QString(double x, double y)> readout;
 };
 
 class PlotKit;
@@ -132,10 +154,27 @@ public:
     /// Asks for a file and exports to it (PNG, SVG or PDF by the chosen filter).
     void exportDialog(PlotFormat format);
 
+    /// The cursor drawn over the plot (setCursor replaces it; an empty cursor hides it).
+    void setCursor(const PlotCursor& cursor);
+    void clearCursor() { setCursor(PlotCursor{}); }
+    const PlotCursor& cursor() const { return m_cursor; }
+    /// The crosshair's readout at main-axes coordinates (the option's, else the axes' formats).
+    QString readoutAt(double x, double y) const;
+    /// A coordinate as its axis shows it: hh:mm:ss.sss on a UTC axis, else the digits a pixel
+    /// of the axis needs.
+    static QString axisText(const QCPAxis* axis, double value);
+
     /// Applies the theme's colours (called before every replot).
     void applyTheme();
     /// Sets each axis's tick count to what its labels fit (called before every replot).
     void fitTickCounts();
+
+signals:
+    /// The mouse moved over the axis rect with no button held (main-axes coordinates and the
+    /// widget pixel); CursorMode::External draws nothing itself.
+    void hovered(QPointF coords, QPoint pixel);
+    /// The mouse left the axis rect (or a drag began).
+    void hoverLeft();
 
 protected:
     bool eventFilter(QObject* o, QEvent* e) override;
@@ -167,6 +206,9 @@ private:
     QRubberBand* m_band = nullptr;
     qint64 m_lastWheelMs = -1000000;
     QSize m_laidOut;  ///< the viewport of the last replot (fitTickCounts)
+    PlotCursor m_cursor;
+    QWidget* m_overlay = nullptr;  ///< draws m_cursor over the plot
+    void hover(const QPoint& pos);
 };
 
 }  // namespace lwb::ui

@@ -241,7 +241,10 @@ void SlrWorkspace::buildPlots() {
         o.home = [this] { resetView(); };
         o.exportName = name;
         o.legendToggle = true;
-        installPlotKit(plot, o);
+        o.cursor = CursorMode::External;  // one time cursor for the pass (showTimeCursor)
+        PlotKit* kit = installPlotKit(plot, o);
+        connect(kit, &PlotKit::hovered, this, [this, plot](QPointF c, QPoint px) { showTimeCursor(plot, c, px); });
+        connect(kit, &PlotKit::hoverLeft, this, [this] { clearTimeCursor(); });
     }
     // A useful height whatever the messages above (the legend under each plot takes 4 rows).
     for (QCustomPlot* p : {m_ocPlot, m_imagePlot}) p->setMinimumHeight(270);
@@ -549,8 +552,7 @@ void SlrWorkspace::wireController() {
     // The plot kit (buildPlots) zooms, pans, resets on a double-click, exports, and switches a
     // series on and off from its legend entry (by its "series" key, kept across runs).
     for (QCustomPlot* p : {m_ocPlot, m_imagePlot, m_histPlot}) p->installEventFilter(this);
-    m_ocPlot->setMouseTracking(true);  // the readout follows the mouse without a button held
-    connect(m_ocPlot, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { m_hover->setText(readoutAt(e->position())); });
+    // (the hover readout and the time cursor: the plot kit's hovered signal, buildPlots)
 }
 
 bool SlrWorkspace::exportCrd(const QString& path, bool wholeFile, QString* message) {
@@ -691,6 +693,9 @@ void SlrWorkspace::showPass() {
         m_imageBand->setVisible(false);
         m_y.clear();
         m_class.clear();
+        m_imgX.clear();
+        m_imgY.clear();
+        clearTimeCursor();
         m_stats->clear();
         m_info->setText(m_controller->passProblem().isEmpty()
                             ? QString()
@@ -908,22 +913,87 @@ bool SlrWorkspace::eventFilter(QObject* watched, QEvent* event) {
     return QWidget::eventFilter(watched, event);
 }
 
-QString SlrWorkspace::readoutAt(const QPointF& pixel) const {
+int SlrWorkspace::pointNear(const QCustomPlot* plot, const QPointF& pixel) const {
     const PassData& p = m_controller->pass();
-    if (!m_controller->hasRun() || m_y.size() != int(p.t.size())) return {};
+    if (!m_controller->hasRun() || m_y.size() != int(p.t.size())) return -1;
+    const bool image = plot == m_imagePlot;
+    if (image && m_imgX.size() != m_y.size()) return -1;
     // The nearest point within 10 px.
     double best = 100;
     int k = -1;
     for (int i = 0; i < m_y.size(); ++i) {
-        const double dx = m_ocPlot->xAxis->coordToPixel(p.t[size_t(i)]) - pixel.x();
+        const double dx = plot->xAxis->coordToPixel(image ? m_imgX[i] : p.t[size_t(i)]) - pixel.x();
         if (std::fabs(dx) > 10) continue;
-        const double dy = m_ocPlot->yAxis->coordToPixel(m_y[i]) - pixel.y();
+        const double dy = plot->yAxis->coordToPixel(image ? m_imgY[i] : m_y[i]) - pixel.y();
         if (dx * dx + dy * dy < best) {
             best = dx * dx + dy * dy;
             k = i;
         }
     }
-    if (k < 0) return {};
+    return k;
+}
+
+void SlrWorkspace::clearTimeCursor() {
+    for (QCustomPlot* plot : {m_ocPlot, m_imagePlot, m_histPlot}) plotKit(plot)->clearCursor();
+    m_hover->clear();
+}
+
+void SlrWorkspace::showTimeCursor(QCustomPlot* source, const QPointF& coords, const QPoint& pixel) {
+    const PassData& p = m_controller->pass();
+    PlotCursor oc, image, hist;
+    if (source == m_histPlot) {
+        // No time on the histogram: its own crosshair only.
+        hist.hasX = hist.hasY = true;
+        hist.x = coords.x();
+        hist.y = coords.y();
+        hist.text = plotKit(m_histPlot)->readoutAt(coords.x(), coords.y());
+        plotKit(m_ocPlot)->clearCursor();
+        plotKit(m_imagePlot)->clearCursor();
+        plotKit(m_histPlot)->setCursor(hist);
+        m_hover->clear();
+        return;
+    }
+    const int k = pointNear(source, pixel);
+    // The epoch: the hovered point's, else the mouse's.
+    const double t = k >= 0 ? p.t[size_t(k)] : coords.x();
+    oc.hasX = image.hasX = true;
+    oc.x = image.x = t;
+    PlotCursor& own = source == m_ocPlot ? oc : image;
+    own.hasY = true;
+    own.y = coords.y();
+    if (k >= 0) {
+        oc.marks = {QPointF(t, m_y[k])};
+        if (m_imgX.size() == m_y.size()) image.marks = {QPointF(m_imgX[k], m_imgY[k])};
+        const SlrRun& run = m_controller->run();
+        if (run.post.ok && size_t(k) < run.post.residuals.size()) {
+            hist.hasX = true;
+            hist.x = run.post.residuals[size_t(k)] * 1e12;  // the histogram's axis: ps two-way
+        }
+        // Two short lines over the plot (the hover line above the plots has the rest).
+        const double y = source == m_ocPlot ? m_y[k] : m_imgY[k];
+        const bool ps = source == m_ocPlot && m_ocPlot->yAxis2->visible();
+        own.text = tr("%1 · %2 %3 %4\n%5")
+                       .arg(PlotKit::axisText(source->xAxis, t), ps ? tr("residual") : source == m_ocPlot ? tr("O-C") : tr("image"),
+                            PlotKit::axisText(source->yAxis, y), ps ? tr("ps") : tr("ns"), QString::fromLatin1(m_class[k]));
+    } else {
+        own.text = plotKit(source)->readoutAt(coords.x(), coords.y());
+    }
+    plotKit(m_ocPlot)->setCursor(oc);
+    plotKit(m_imagePlot)->setCursor(image);
+    plotKit(m_histPlot)->setCursor(hist);
+    // Elided to the line's width; the whole of it in the tooltip.
+    const QString full = k >= 0 ? pointText(k) : QString();
+    m_hover->setText(m_hover->fontMetrics().elidedText(full, Qt::ElideRight, std::max(40, m_hover->width())));
+    m_hover->setToolTip(full.isEmpty() ? tr("The point nearest the mouse on the O-C plot or the binary image: UTC epoch, O-C, residual, class, record index") : full);
+}
+
+QString SlrWorkspace::readoutAt(const QPointF& pixel) const {
+    const int k = pointNear(m_ocPlot, pixel);
+    return k < 0 ? QString() : pointText(k);
+}
+
+QString SlrWorkspace::pointText(int k) const {
+    const PassData& p = m_controller->pass();
     const SlrRun& run = m_controller->run();
     const double t = p.t[size_t(k)];
     const double sod = std::fmod(t, 86400.0);
@@ -948,6 +1018,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
     if (p.t.empty() || run.accepted.size() != p.t.size()) return;
     // The scale used, on the fields left at auto.
     m_params->showScale(scaleChoice(run.screen));
+    clearTimeCursor();  // its point may be another one now
     const bool fresh = m_ocPlot->property("fresh").toBool();
     const QCPRange xr = m_ocPlot->xAxis->range(), yr = m_ocPlot->yAxis->range();
     // The main plot: O-C (ns) or the residual about the post-fit trend (ps two-way), by class.
@@ -1101,6 +1172,13 @@ void SlrWorkspace::drawImage(const SlrRun& run) {
     std::vector<double> imgOc(p.oc);
     if (flattened)
         for (size_t i = 0; i < n; ++i) imgOc[i] -= s.flattenS[i];
+    // Each point's pixel centre (the time cursor rings it).
+    m_imgX.resize(int(n));
+    m_imgY.resize(int(n));
+    for (size_t i = 0; i < n; ++i) {
+        m_imgX[int(i)] = std::llround(p.t[i] * s.magT) / s.magT;
+        m_imgY[int(i)] = std::llround(imgOc[i] * s.magOc) / s.magOc * 1e9;
+    }
     // (Short enough for the plot's height in a 1024×700 window.)
     m_imagePlot->yAxis->setLabel(flattened ? tr("O-C − track trend (ns)") : tr("O-C (ns, two-way)"));
     {

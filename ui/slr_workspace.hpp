@@ -67,6 +67,16 @@ public:
     void resetView();
     /// The hover readout for a pixel of the main plot ("" when no point is near).
     QString readoutAt(const QPointF& pixel) const;
+    /// The point nearest a pixel of the main plot (`m_ocPlot`) or of the binary image, within
+    /// 10 px; -1 when none.
+    int pointNear(const QCustomPlot* plot, const QPointF& pixel) const;
+    /// The one time cursor of the pass (the mouse over `source`, at `pixel`): a line at the
+    /// hovered epoch on the O-C plot and the image, the hovered point ringed in each, its
+    /// residual marked on the histogram, the readout in the hover line. clearTimeCursor hides it.
+    void showTimeCursor(QCustomPlot* source, const QPointF& coords, const QPoint& pixel);
+    void clearTimeCursor();
+    /// The hover line's text for point k.
+    QString pointText(int k) const;
     /// New CPF (a file or a folder) or SINEX; "" clears it. The open pass is read again.
     bool setCpf(const QString& path, QString* error);
     bool setSinex(const QString& path, QString* error);
@@ -144,6 +154,7 @@ private:
     QLabel* m_hover;
     QVector<double> m_y;           ///< per point: the main plot's value (ns, or ps in the residual view)
     QVector<const char*> m_class;  ///< per point: its class in the last run
+    QVector<double> m_imgX, m_imgY;  ///< per point: its pixel's centre on the binary image (s, ns)
     QPointer<SlrAllPassesDialog> m_all;
     SlrStationNpPanel* m_stationNps;
     QTabWidget* m_bottomTabs;

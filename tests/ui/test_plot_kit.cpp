@@ -293,6 +293,74 @@ private slots:
         QVERIFY(p->xAxis->label().contains("seconds of day"));
     }
 
+    /// Issue 30: every plot has a crosshair with a readout: lines at the mouse, the coordinates
+    /// in the axes' own formats (the clock on a UTC axis, to the pixel's digits elsewhere, the
+    /// cell's value on a colour map), gone when the mouse leaves or a drag begins; drawn over the
+    /// plot, never into an export.
+    void crosshairFollowsTheMouseWithAReadout() {
+        QCustomPlot* p = makePlot(m_host);
+        PlotKit* kit = plotKit(p);
+        QVERIFY(kit->cursor().isEmpty());
+        const QImage before = p->grab().toImage();
+        QTest::mouseMove(p, pixel(p, 25, 2.5));
+        PlotCursor c = kit->cursor();
+        QVERIFY(c.hasX && c.hasY);
+        const double px = 100.0 / p->axisRect()->width(), py = 10.0 / p->axisRect()->height();
+        QVERIFY(std::fabs(c.x - 25) <= px && std::fabs(c.y - 2.5) <= py);
+        // x spans 100 over ~500 px: one decimal; y spans 10 over ~300 px: two.
+        QVERIFY2(QRegularExpression("^2[45]\\.\\d, 2\\.\\d\\d$").match(c.text).hasMatch(), qPrintable(c.text));
+        QCoreApplication::processEvents();
+        QVERIFY(p->grab().toImage() != before);  // drawn
+        // An export has no cursor in it.
+        const QString png = m_dir.filePath("cursor.png");
+        QString err;
+        QVERIFY2(exportPlot(p, png, &err), qPrintable(err));
+        QImage exported(png);
+        kit->clearCursor();
+        const QString png2 = m_dir.filePath("nocursor.png");
+        QVERIFY2(exportPlot(p, png2, &err), qPrintable(err));
+        QCOMPARE(exported, QImage(png2));
+        // A UTC axis reads the clock.
+        QTest::mouseMove(p, pixel(p, 30, 5));
+        setUtcTimeAxis(p->xAxis, QDate(2021, 9, 5));
+        p->xAxis->setRange(42500, 42560);
+        p->replot();
+        QTest::mouseMove(p, pixel(p, 42530, 5));
+        QVERIFY2(QRegularExpression("^11:48:[45]\\d\\.\\d, ").match(kit->cursor().text).hasMatch(), qPrintable(kit->cursor().text));
+        // Leaving the plot, or a drag, hides it.
+        QEvent leave(QEvent::Leave);
+        QApplication::sendEvent(p, &leave);
+        QVERIFY(kit->cursor().isEmpty());
+        QTest::mouseMove(p, pixel(p, 42531, 5));
+        QVERIFY(!kit->cursor().isEmpty());
+        QTest::mousePress(p, Qt::LeftButton, Qt::NoModifier, pixel(p, 42530, 5));
+        QMouseEvent drag(QEvent::MouseMove, QPointF(pixel(p, 42540, 6)), QPointF(p->mapToGlobal(pixel(p, 42540, 6))), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(p, &drag);
+        QVERIFY(kit->cursor().isEmpty());
+        QTest::mouseRelease(p, Qt::LeftButton, Qt::NoModifier, pixel(p, 42540, 6));
+        // A colour map: the readout ends with the cell's value.
+        QCustomPlot* m = newPlot(m_host, "Map", "x", "y");
+        m->resize(400, 300);
+        const ImageMap im = addImageMap(m, "DN", false);
+        im.map->data()->setSize(4, 3);
+        im.map->data()->setRange(QCPRange(0, 3), QCPRange(0, 2));
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 3; ++j) im.map->data()->setCell(i, j, 10 * i + j);
+        m->rescaleAxes();
+        m->show();
+        QApplication::processEvents();
+        m->replot();
+        QTest::mouseMove(m, QPoint(int(m->xAxis->coordToPixel(2)), int(m->yAxis->coordToPixel(1))));
+        QVERIFY2(plotKit(m)->cursor().text.endsWith(" = 21"), qPrintable(plotKit(m)->cursor().text));
+        // Off: no cursor.
+        PlotKitOptions off;
+        off.cursor = CursorMode::Off;
+        installPlotKit(m, off);
+        plotKit(m)->clearCursor();
+        QTest::mouseMove(m, QPoint(int(m->xAxis->coordToPixel(1)), int(m->yAxis->coordToPixel(1))));
+        QVERIFY(plotKit(m)->cursor().isEmpty());
+    }
+
     /// Issue 30: time labels ran into each other on narrow plots ("20:19:20:19:20") and a wide
     /// one showed a single label ("18:25:00"). At every width the labels are at least 3 and
     /// never overlap, zoomed out or to fractions of a second.

@@ -1044,6 +1044,81 @@ private slots:
         QVERIFY2(readout.contains("residual") && readout.contains("O-C") && readout.contains("row "), qPrintable(readout));
     }
 
+    /// Issue 30: one time cursor for the pass. Hovering a point of the O-C plot puts a line at
+    /// its epoch on the O-C plot and the binary image, rings the point in both (on the image:
+    /// its pixel), marks its residual on the histogram; hovering the image does the same back;
+    /// leaving clears every plot's cursor. Drawn over the plot without changing it.
+    void timeCursorIsSharedByThePassPlots() {
+        using namespace lwb::core::slr;
+        SlrWorkspace ws;
+        showWithSparsePass(&ws);
+        QCustomPlot *oc = ws.ocPlot(), *img = ws.imagePlot(), *hist = ws.histPlot();
+        img->replot();
+        hist->replot();
+        const SlrRun& run = ws.controller()->run();
+        const PassData& pass = ws.controller()->pass();
+        const ScreenResult& s = run.screen;
+        QVERIFY(run.post.ok);
+        // A signal point (kept by the post-fit) inside the O-C plot's axis rect.
+        int k = -1;
+        QPoint at;
+        for (size_t i = 0; i < pass.t.size() && k < 0; ++i) {
+            if (s.pointClass[i] != PointClass::Signal || !run.post.kept[i]) continue;
+            at = QPoint(int(std::lround(oc->xAxis->coordToPixel(pass.t[i]))), int(std::lround(oc->yAxis->coordToPixel(pass.oc[i] * 1e9))));
+            if (oc->axisRect()->rect().adjusted(8, 8, -8, -8).contains(at)) k = int(i);
+        }
+        QVERIFY(k >= 0);
+        const QImage before = oc->grab().toImage();
+        QTest::mouseMove(oc, at);
+        const PlotCursor co = plotKit(oc)->cursor(), ci = plotKit(img)->cursor(), ch = plotKit(hist)->cursor();
+        // (the nearest point to the pixel may be a neighbour within a pixel: compare by epoch,
+        // to the pixel's time width)
+        const double pxT = std::fabs(oc->xAxis->pixelToCoord(1) - oc->xAxis->pixelToCoord(0));
+        QVERIFY(co.hasX && std::fabs(co.x - pass.t[size_t(k)]) <= 1.5 * pxT);
+        QVERIFY(co.hasY);  // the hovered plot's own horizontal line
+        QCOMPARE(co.marks.size(), 1);
+        QVERIFY(!co.text.isEmpty());
+        QVERIFY2(ci.hasX && ci.x == co.x && !ci.hasY, "the image shows the same epoch, without the O-C plot's value line");
+        QCOMPARE(ci.marks.size(), 1);
+        // The ring on the image is on the point's pixel: its epoch rounded to the image's rows
+        // (1 / mag_T) and a signal pixel drawn there (graph 2: signal pixels).
+        QVERIFY(std::fabs(ci.marks[0].x() - co.x) <= 0.5 / s.magT + 1e-12);
+        bool onSignalPixel = false;
+        for (auto it = img->graph(2)->data()->constBegin(); it != img->graph(2)->data()->constEnd(); ++it)
+            if (it->key == ci.marks[0].x() && it->value == ci.marks[0].y()) onSignalPixel = true;
+        QVERIFY2(onSignalPixel, qPrintable(QString("ring at %1, %2").arg(ci.marks[0].x(), 0, 'f', 6).arg(ci.marks[0].y())));
+        // The histogram marks the same point's residual (ps two-way).
+        const double tk = co.x;
+        size_t kk = 0;
+        while (kk < pass.t.size() && !(pass.t[kk] == tk && pass.oc[kk] * 1e9 == co.marks[0].y())) ++kk;  // (epochs repeat)
+        QVERIFY(kk < pass.t.size());
+        QVERIFY2(ch.hasX && std::fabs(ch.x - run.post.residuals[kk] * 1e12) < 1e-6, qPrintable(QString("histogram cursor %1 at %2 ps, the point %3 ps").arg(ch.hasX).arg(ch.x).arg(run.post.residuals[kk] * 1e12)));
+        QVERIFY(ws.hoverLabel()->text().contains("O-C") && ws.hoverLabel()->toolTip().contains("residual") && ws.hoverLabel()->toolTip().contains("row "));
+        // Drawn: the plot's picture changed where the ring is (and nowhere did the plot replot
+        // its data: the cursor is an overlay).
+        QCoreApplication::processEvents();
+        const QImage after = oc->grab().toImage();
+        QVERIFY(before != after);
+        // Hovering the image's ring puts the cursor back on the O-C plot's point.
+        const QPoint atImg(int(std::lround(img->xAxis->coordToPixel(ci.marks[0].x()))), int(std::lround(img->yAxis->coordToPixel(ci.marks[0].y()))));
+        QVERIFY(img->axisRect()->rect().contains(atImg));
+        QTest::mouseMove(img, atImg);
+        const PlotCursor co2 = plotKit(oc)->cursor(), ci2 = plotKit(img)->cursor();
+        QVERIFY(ci2.hasY && !co2.hasY);
+        QCOMPARE(co2.marks.size(), 1);
+        QVERIFY(std::fabs(co2.x - tk) <= 0.5 / s.magT + 1e-12);  // a point of that pixel
+        // Leaving the plots clears every cursor and the readout.
+        QEvent leave(QEvent::Leave);
+        QCoreApplication::sendEvent(img, &leave);
+        QVERIFY(plotKit(oc)->cursor().isEmpty() && plotKit(img)->cursor().isEmpty() && plotKit(hist)->cursor().isEmpty());
+        QVERIFY(ws.hoverLabel()->text().isEmpty());
+        // A new run clears it too (the hovered point may be another one then).
+        QTest::mouseMove(oc, at);
+        QVERIFY(!plotKit(oc)->cursor().isEmpty());
+        ws.cosineSlider()->field()->setValue(ws.cosineSlider()->field()->value() > 0.95 ? 0.93 : 0.97);
+        QTRY_VERIFY_WITH_TIMEOUT(plotKit(oc)->cursor().isEmpty(), 60000);
+    }
+
     /// Issue 11: a box edit and a parameter change go on the workbench's undo history; undo
     /// restores them, redo applies them again.
     void undoRestoresABoxEdit() {
