@@ -316,12 +316,14 @@ QWidget* CalibWorkspace::buildArrayTab() {
     m_detSummary->setTextFormat(Qt::RichText);
     m_detSummary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_detSummary->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    m_detSummary->setMinimumHeight(60);
+    // The plot keeps room for its axes and legend; the summary (8 lines and more) scrolls
+    // below it (issue 30: it covered the legend at 1024 × 700).
+    m_centrePlot->setMinimumHeight(175);
     auto* centreCol = new QWidget(page);
     auto* centreLay = new QVBoxLayout(centreCol);
     centreLay->setContentsMargins(0, 0, 0, 0);
     centreLay->addWidget(m_centrePlot, 1);
-    centreLay->addWidget(m_detSummary);
+    centreLay->addWidget(boundedText(m_detSummary, 5));
 
     auto* topRow = new QSplitter(Qt::Horizontal, page);
     topRow->addWidget(m_energyPlot);
@@ -330,14 +332,17 @@ QWidget* CalibWorkspace::buildArrayTab() {
     topRow->setStretchFactor(1, 2);
     topRow->setSizes({640, 460});
 
-    m_convPlot = newPlot(page, tr("Pointing & range calibration: convergence"), tr("Iteration (0 = design values)"),
-                         tr("χ² of the whitened residuals"));
+    // (Titles and labels short enough for half of the area left of the panel in a 1024 px
+    // window; the tooltips say the rest.)
+    m_convPlot = newPlot(page, tr("Pointing & range fit: convergence"), tr("Iteration (0 = design)"), tr("χ²"));
+    m_convPlot->setToolTip(tr("Pointing & range calibration (eq. 2–5): χ² of the whitened residuals (left) and the RMS "
+                              "residuals in metres (right) per iteration; iteration 0 is the design values"));
     m_convPlot->yAxis->setScaleType(QCPAxis::stLogarithmic);
     m_convPlot->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
     m_convPlot->yAxis->setNumberFormat("eb");
     m_convPlot->yAxis->setNumberPrecision(0);
     m_convPlot->yAxis2->setVisible(true);
-    m_convPlot->yAxis2->setLabel(tr("RMS residual (m)"));
+    m_convPlot->yAxis2->setLabel(tr("RMS (m)"));
     m_convPlot->yAxis2->setScaleType(QCPAxis::stLogarithmic);
     m_convPlot->yAxis2->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
     m_convPlot->yAxis2->setNumberFormat("gb");
@@ -347,8 +352,9 @@ QWidget* CalibWorkspace::buildArrayTab() {
     m_convPlot->xAxis->setTicker(intTicker);
     legendBelow(m_convPlot, 2);
 
-    m_detConvPlot = newPlot(page, tr("Detector surface fit: convergence"), tr("Accepted Levenberg–Marquardt step"),
-                            tr("χ² of the weighted energies"));
+    m_detConvPlot = newPlot(page, tr("Detector fit: convergence"), tr("Accepted LM step"), tr("χ²"));
+    m_detConvPlot->setToolTip(tr("Detector surface fit (paper 002 §3.2.3): χ² of the weighted energies after each "
+                                 "accepted Levenberg–Marquardt step"));
     m_detConvPlot->yAxis->setScaleType(QCPAxis::stLogarithmic);
     m_detConvPlot->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
     m_detConvPlot->yAxis->setNumberFormat("eb");
@@ -389,20 +395,20 @@ QWidget* CalibWorkspace::buildArrayTab() {
     paramLay->addWidget(m_paramTable, 1);
     tables->addTab(paramPage, tr("Calibrated parameters"));
 
-    auto* bottomRow = new QSplitter(Qt::Horizontal, page);
-    bottomRow->addWidget(m_convPlot);
-    bottomRow->addWidget(m_detConvPlot);
-    bottomRow->addWidget(tables);
-    bottomRow->setStretchFactor(0, 1);
-    bottomRow->setStretchFactor(1, 1);
-    bottomRow->setStretchFactor(2, 1);
-    bottomRow->setSizes({360, 330, 420});
+    // The convergence plots in a third tab, side by side: three across left each a third of
+    // 650 px at 1024 × 700, titles cut and legends squeezed (issue 30).
+    auto* convergence = new QSplitter(Qt::Horizontal, tables);
+    convergence->addWidget(m_convPlot);
+    convergence->addWidget(m_detConvPlot);
+    convergence->setChildrenCollapsible(false);
+    tables->addTab(convergence, tr("Convergence"));
+    m_bottomTabs = tables;
     auto* vsplit = new QSplitter(Qt::Vertical, page);
     vsplit->addWidget(topRow);
-    vsplit->addWidget(bottomRow);
-    vsplit->setStretchFactor(0, 11);
-    vsplit->setStretchFactor(1, 9);
-    vsplit->setSizes({440, 360});
+    vsplit->addWidget(tables);
+    vsplit->setStretchFactor(0, 3);
+    vsplit->setStretchFactor(1, 2);
+    vsplit->setSizes({480, 320});
     pageLay->addWidget(vsplit);
 
     return page;

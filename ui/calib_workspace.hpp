@@ -73,6 +73,8 @@ public:
     QCustomPlot* pointingConvergencePlot() const { return m_convPlot; }
     QCustomPlot* detectorConvergencePlot() const { return m_detConvPlot; }
     QCustomPlot* waveformPlot() const { return m_wavePlot; }
+    /// Under the plots: validation statistics, calibrated parameters, convergence plots.
+    QTabWidget* resultTabs() const { return m_bottomTabs; }
     QTableWidget* statsTable() const { return m_statsTable; }
     QTableWidget* paramTable() const { return m_paramTable; }
     QTableWidget* rankingTable() const { return m_rankTable; }
@@ -107,6 +109,7 @@ private:
 
     CalibController* m_controller;
     QTabWidget* m_tabs;
+    QTabWidget* m_bottomTabs = nullptr;  ///< validation statistics, calibrated parameters, convergence
     QLabel *m_inputs, *m_detSummary, *m_statsSource, *m_waveSummary, *m_pointingSummary;
     QCustomPlot *m_energyPlot, *m_centrePlot, *m_convPlot, *m_detConvPlot, *m_wavePlot;
     QCPColorMap* m_energyMap;

@@ -224,6 +224,59 @@ void legendBelow(QCustomPlot* p, int columns) {
     p->legend->setBorderPen(Qt::NoPen);
     p->legend->setBrush(Qt::NoBrush);
     p->setProperty("lwbLegendBelow", true);
+    p->setProperty("lwbLegendColumns", std::max(1, columns));
+    p->setProperty("lwbLegendPoints", p->legend->font().pointSize());
+    p->setProperty("lwbLegendFitKey", QVariant());  // fitted again at the next replot
+}
+
+bool fitLegendBelow(QCustomPlot* p) {
+    if (!p->property("lwbLegendBelow").toBool() || !p->legend || p->legend->itemCount() == 0) return false;
+    QCPLegend* lg = p->legend;
+    // Only when the width or the entries changed since the last fit (it runs before every replot).
+    QString key = QString::number(p->width());
+    for (int i = 0; i < lg->itemCount(); ++i)
+        if (auto* it = qobject_cast<QCPPlottableLegendItem*>(lg->item(i))) key += '|' + it->plottable()->name();
+        else key += "|?";
+    if (p->property("lwbLegendFitKey").toString() == key) return false;
+    p->setProperty("lwbLegendFitKey", key);
+    const int maxColumns = std::max(1, p->property("lwbLegendColumns").toInt());
+    const int base = p->property("lwbLegendPoints").toInt() > 0 ? p->property("lwbLegendPoints").toInt() : lg->font().pointSize();
+    const int beforeWrap = lg->wrap(), beforeSize = lg->font().pointSize();
+    // The legend's room: the plot's width less the other columns of its layout row (an image's
+    // colour bar beside the axes).
+    int room = p->width() - p->plotLayout()->margins().left() - p->plotLayout()->margins().right();
+    QCPLayoutGrid* grid = p->plotLayout();
+    int legendCol = -1;
+    for (int i = 0; i < grid->elementCount(); ++i)
+        if (grid->elementAt(i) == lg) {
+            int r = 0;
+            grid->indexToRowCol(i, r, legendCol);
+        }
+    for (int c = 0; legendCol >= 0 && c < grid->columnCount(); ++c) {
+        if (c == legendCol) continue;
+        int w = 0;
+        for (int r = 0; r < grid->rowCount(); ++r)
+            if (grid->hasElement(r, c)) {
+                // (as wide as it was laid out last; its least width before the first layout)
+                const QCPLayoutElement* e = grid->element(r, c);
+                w = std::max({w, e->minimumOuterSizeHint().width(), e->outerRect().width()});
+            }
+        room -= w + grid->columnSpacing();
+    }
+    auto layOut = [&](int columns, int points) {
+        QFont f = lg->font();
+        f.setPointSize(points);
+        lg->setFont(f);
+        for (int i = 0; i < lg->itemCount(); ++i)
+            if (QCPAbstractLegendItem* it = lg->item(i)) it->setFont(f);
+        lg->setWrap(columns);
+        lg->setFillOrder(QCPLegend::foColumnsFirst, true);  // re-lays the entries out
+        return lg->minimumOuterSizeHint().width() <= room;
+    };
+    bool fits = false;
+    for (int c = maxColumns; c >= 1 && !fits; --c) fits = layOut(c, base) || layOut(c, base - 1);
+    if (!fits) layOut(1, base - 1);
+    return lg->wrap() != beforeWrap || lg->font().pointSize() != beforeSize;
 }
 
 QCustomPlot* newPlot(QWidget* parent, const QString& title, const QString& x, const QString& y, const PlotKitOptions& options) {
@@ -375,6 +428,7 @@ PlotKit::PlotKit(QCustomPlot* plot, const PlotKitOptions& options) : QObject(plo
         if (m_options.legendToggle && item && e->button() == Qt::LeftButton) legendClicked(item);
     });
     connect(plot, &QCustomPlot::beforeReplot, this, [this] {
+        fitLegendBelow(m_plot);
         fitTickCounts();
         applyTheme();
     });

@@ -109,8 +109,12 @@ QString utcClock(double secondsOfDay, int decimals = 0);
 /// A plot with a bold title row (if any), axis labels, drag and wheel, the legend style, the kit.
 QCustomPlot* newPlot(QWidget* parent, const QString& title, const QString& xLabel, const QString& yLabel,
                      const PlotKitOptions& options = {});
-/// The one legend style: a row of `columns` entries under the axis rect, no frame.
+/// The one legend style: entries in rows under the axis rect, no frame, in at most `columns`
+/// columns: as many as fit across the plot (at the legend's font or a point smaller), refitted by
+/// the kit before a replot when the width or the entries changed (fitLegendBelow).
 void legendBelow(QCustomPlot* plot, int columns);
+/// Lays a legendBelow legend out for the plot's width; true when its layout changed.
+bool fitLegendBelow(QCustomPlot* plot);
 
 /// An image plot: a colour map on the main axes and its colour bar on the right with `label`.
 /// yDown: row 0 on top (image pixels). The axis rect's background shows where there is no data.

@@ -146,8 +146,15 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
 
     buildImages();
     // Fit plot and tables.
-    m_fitPlot = newPlot(this, tr("Calibration line (paper 003 eq. 5)"), tr("Mean DN of the region, V_DN"),
-                        tr("Measured reflectance V_REF (%)"));
+    // (Short labels and legend entries: in a 1024 × 700 window the plot is about 240 × 190 px,
+    // and the long ones took the axes' room, 1 entry a row.)
+    m_fitPlot = newPlot(this, tr("Calibration line (eq. 5)"), tr("Region mean V_DN"), tr("V_REF (%)"));
+    m_fitPlot->setToolTip(tr("Paper 003 eq. 5: the measured reflectance V_REF (%) of each region against its mean "
+                             "DN V_DN, the fitted line V_REF = K·V_DN + B and its 1σ band"));
+    m_fitPlot->setMinimumWidth(240);
+    m_fitPlot->legend->setFont(QFont(font().family(), 8));
+    m_fitPlot->legend->setIconSize(16, 8);
+    m_fitPlot->legend->setRowSpacing(0);
     legendBelow(m_fitPlot, 2);
     m_fitSummary = new QLabel(this);
     m_fitSummary->setWordWrap(true);
@@ -798,7 +805,7 @@ void RadiometryWorkspace::showFit(const RadiometryRun& run) {
             lo << y - u;
         }
         QCPGraph* band = p->addGraph();
-        band->setName(tr("±1σ of the line, incl. V_M"));
+        band->setName(tr("±1σ (incl. V_M)"));
         band->setPen(QPen(QColor(120, 120, 120), 1, Qt::DashLine));
         band->setData(lx, hi);
         QCPGraph* band2 = p->addGraph();
@@ -808,7 +815,7 @@ void RadiometryWorkspace::showFit(const RadiometryRun& run) {
         band->setBrush(QColor(120, 120, 120, 35));
         band->setChannelFillGraph(band2);
         QCPGraph* line = p->addGraph();
-        line->setName(tr("V_REF = K·V_DN + B"));
+        line->setName(tr("K·V_DN + B"));
         line->setPen(QPen(Qt::black, 1.6));
         line->setData(lx, ly);
     }
@@ -827,14 +834,14 @@ void RadiometryWorkspace::showFit(const RadiometryRun& run) {
     }
     if (!ox.isEmpty()) {
         QCPGraph* out = p->addGraph();
-        out->setName(tr("left out (outside the range)"));
+        out->setName(tr("left out (range)"));
         out->setLineStyle(QCPGraph::lsNone);
         out->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(kRed, 1.5), Qt::NoBrush, 8));
         out->setData(ox, oy);
     }
     if (!cx.isEmpty()) {
         QCPGraph* chk = p->addGraph();
-        chk->setName(tr("check regions (not fitted)"));
+        chk->setName(tr("check (not fitted)"));
         chk->setLineStyle(QCPGraph::lsNone);
         chk->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(kCheckColor.darker(115), 1.6), Qt::NoBrush, 9));
         chk->setData(cx, cy);

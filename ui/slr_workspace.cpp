@@ -49,26 +49,6 @@ const QColor kSignal(31, 119, 180), kRecovered(44, 160, 44), kNoise(150, 150, 15
 constexpr size_t kMaxShown = 40000;  // points per graph shown; more are thinned with a fixed stride
 constexpr double kMmPerPs = 0.149896229;  // 1 ps two-way = c / 2 · 1 ps of range, one-way
 
-// The legend under a plot in two columns at 8 pt when they fit across the plot, else at 7 pt,
-// else in one column (entries cut off, as "rejected by post-fit (20)" was at 1024 px, or a
-// column of seven entries that leaves the plot a strip). True when the layout changed.
-bool fitLegendColumns(QCustomPlot* p) {
-    QCPLegend* lg = p->legend;
-    const int beforeWrap = lg->wrap(), beforeSize = lg->font().pointSize();
-    auto layOut = [&](int columns, int points) {
-        QFont f = lg->font();
-        f.setPointSize(points);
-        lg->setFont(f);
-        for (int i = 0; i < lg->itemCount(); ++i)
-            if (QCPAbstractLegendItem* it = lg->item(i)) it->setFont(f);
-        lg->setWrap(columns);
-        lg->setFillOrder(QCPLegend::foColumnsFirst, true);  // re-lays the entries out
-        return lg->minimumOuterSizeHint().width() <= p->width();
-    };
-    if (!layOut(2, 8) && !layOut(2, 7)) layOut(1, 8);
-    return lg->wrap() != beforeWrap || lg->font().pointSize() != beforeSize;
-}
-
 // Undo: the manual edits of the pass as a whole, before and after.
 class ForcedCommand : public QUndoCommand {
 public:
@@ -254,11 +234,15 @@ void SlrWorkspace::buildPlots() {
         p->legend->setFont(QFont(font().family(), 8));
         p->legend->setIconSize(20, 12);  // (32 × 18 by default) two columns then fit a 1024 px window
         p->legend->setFillOrder(QCPLegend::foColumnsFirst);
-        p->legend->setWrap(2);  // two columns where they fit (fitLegendColumns)
+        p->legend->setWrap(2);
         p->axisRect()->insetLayout()->take(p->legend);
         p->plotLayout()->addElement(2, 0, p->legend);
         p->plotLayout()->setRowStretchFactor(2, 0.001);
         p->legend->setBorderPen(Qt::NoPen);
+        // Two columns where they fit, at 8 pt or 7, else one (the plot kit's fitLegendBelow).
+        p->setProperty("lwbLegendBelow", true);
+        p->setProperty("lwbLegendColumns", 2);
+        p->setProperty("lwbLegendPoints", 8);
     }
     m_imageMap = new QCPColorMap(m_imagePlot->xAxis, m_imagePlot->yAxis);
     m_imageMap->setName(tr("empty"));
@@ -551,7 +535,6 @@ void SlrWorkspace::wireController() {
             [this](const QRect& r, QMouseEvent*) { boxSelected(r); });
     // The plot kit (buildPlots) zooms, pans, resets on a double-click, exports, and switches a
     // series on and off from its legend entry (by its "series" key, kept across runs).
-    for (QCustomPlot* p : {m_ocPlot, m_imagePlot, m_histPlot}) p->installEventFilter(this);
     // (the hover readout and the time cursor: the plot kit's hovered signal, buildPlots)
 }
 
@@ -905,14 +888,6 @@ void SlrWorkspace::resetView() {
     m_histPlot->replot(QCustomPlot::rpQueuedReplot);
 }
 
-bool SlrWorkspace::eventFilter(QObject* watched, QEvent* event) {
-    // The legends follow the plots' widths (the plot kit does the zooming).
-    auto* plot = qobject_cast<QCustomPlot*>(watched);
-    if (plot && event->type() == QEvent::Resize && (plot == m_ocPlot || plot == m_imagePlot) && fitLegendColumns(plot))
-        plot->replot(QCustomPlot::rpQueuedReplot);
-    return QWidget::eventFilter(watched, event);
-}
-
 int SlrWorkspace::pointNear(const QCustomPlot* plot, const QPointF& pixel) const {
     const PassData& p = m_controller->pass();
     if (!m_controller->hasRun() || m_y.size() != int(p.t.size())) return -1;
@@ -1039,8 +1014,6 @@ void SlrWorkspace::showRun(const SlrRun& run) {
     if (m_imageFlattened || residual) fitImagePlot();
     drawHistogram(run);
     m_stats->setText(summaryHtml(run));
-    fitLegendColumns(m_ocPlot);  // the entries' names (counts, degree) changed
-    fitLegendColumns(m_imagePlot);
     m_ocPlot->replot(QCustomPlot::rpQueuedReplot);
     m_imagePlot->replot(QCustomPlot::rpQueuedReplot);
     m_histPlot->replot(QCustomPlot::rpQueuedReplot);

@@ -107,9 +107,6 @@ signals:
     void modified();
     void status(const QString& message);
 
-protected:
-    bool eventFilter(QObject* watched, QEvent* event) override;
-
 private:
     // The constructor's parts.
     QHBoxLayout* buildInputRow();

@@ -83,6 +83,51 @@ QString widgetOutside(QWidget* window) {
     return QString();
 }
 
+// What a plot shows clipped or crowded, at its current size: a title wider than its row, an
+// axis label longer than the plot's side, tick labels that run into each other, a legend outside
+// the plot or with its entries squeezed. Empty when all fits.
+QString plotTextProblems(QCustomPlot* p) {
+    QStringList out;
+    p->replot();
+    for (QCPLayoutElement* e : p->plotLayout()->elements(true)) {
+        auto* te = qobject_cast<QCPTextElement*>(e);
+        if (!te || !te->visible() || te->text().isEmpty()) continue;
+        const int need = QFontMetrics(te->font()).horizontalAdvance(te->text());
+        if (need > te->outerRect().width())
+            out << QString("title \"%1\" needs %2 px, has %3").arg(te->text()).arg(need).arg(te->outerRect().width());
+    }
+    for (QCPAxis* a : p->axisRect()->axes()) {
+        if (!a->visible()) continue;
+        const bool h = a->orientation() == Qt::Horizontal;
+        if (!a->label().isEmpty()) {
+            const int need = QFontMetrics(a->labelFont()).horizontalAdvance(a->label());
+            const int room = h ? p->axisRect()->width() + 40 : p->axisRect()->height() + 40;
+            if (need > room) out << QString("axis label \"%1\" needs %2 px, has %3").arg(a->label()).arg(need).arg(room);
+        }
+        if (!a->tickLabels() || !h) continue;
+        const QVector<double> ticks = a->tickVector();
+        const QVector<QString> labels = a->tickVectorLabels();
+        const QFontMetrics fm(a->tickLabelFont());
+        for (int i = 1; i < ticks.size() && i < labels.size(); ++i) {
+            const double gap = std::fabs(a->coordToPixel(ticks[i]) - a->coordToPixel(ticks[i - 1]));
+            const double need = (fm.horizontalAdvance(labels[i]) + fm.horizontalAdvance(labels[i - 1])) / 2.0 + 2;
+            if (gap < need) out << QString("tick labels \"%1\" and \"%2\" overlap (%3 px apart)").arg(labels[i - 1], labels[i]).arg(gap);
+        }
+    }
+    if (p->legend && p->legend->visible() && p->legend->itemCount() > 0) {
+        const QRect lr = p->legend->outerRect();
+        if (!p->rect().contains(lr))
+            out << QString("legend at %1,%2 %3×%4 outside the plot's %5×%6").arg(lr.x()).arg(lr.y()).arg(lr.width()).arg(lr.height()).arg(p->width()).arg(p->height());
+        for (int i = 0; i < p->legend->itemCount(); ++i) {
+            QCPAbstractLegendItem* it = p->legend->item(i);
+            if (!it || !it->visible()) continue;
+            if (it->outerRect().width() + 1 < it->minimumOuterSizeHint().width())
+                out << QString("legend entry %1 squeezed (%2 of %3 px)").arg(i).arg(it->outerRect().width()).arg(it->minimumOuterSizeHint().width());
+        }
+    }
+    return out.join("; ");
+}
+
 }  // namespace
 
 class TestAppShell : public QObject {
@@ -540,6 +585,41 @@ private slots:
         QVERIFY2(logical.width() <= int(width / dpr) && logical.height() <= int(height / dpr) - 30,
                  qPrintable(QString("window %1×%2 on a screen of %3×%4").arg(logical.width()).arg(logical.height())
                                 .arg(int(width / dpr)).arg(int(height / dpr))));
+    }
+
+    /// Issue 30: at 1024 × 700 the calibration plots' titles collided ("ing & range calibration:
+    /// converg"), "Pointing change (arc…" was clipped, text covered the uncertainty legend. Every
+    /// plot of the calibration, radiometry and SLR workspaces (each tab) fits its text in a 1024 ×
+    /// 670 window with the demo loaded: titles, axis labels, tick labels, legends.
+    void plotTextFitsAtTheSmallestWindow() {
+        MainWindow w;
+        w.resize(1024, 670);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.openDemo();
+        QVERIFY(w.waitIdle(120000));
+        QStringList problems;
+        auto check = [&](const QString& where) {
+            QTest::qWait(30);
+            QApplication::processEvents();
+            for (QCustomPlot* p : w.findChildren<QCustomPlot*>()) {
+                if (!p->isVisible()) continue;
+                const QString t = plotTextProblems(p);
+                if (!t.isEmpty()) problems << QString("%1, plot %2×%3 \"%4\": %5").arg(where).arg(p->width()).arg(p->height()).arg(p->objectName(), t);
+            }
+        };
+        w.showWorkspace("calibration");
+        check("calibration");
+        w.calib()->resultTabs()->setCurrentIndex(w.calib()->resultTabs()->count() - 1);  // convergence
+        check("calibration, convergence");
+        w.showWorkspace("calibration:waveform");
+        check("calibration waveform");
+        w.showWorkspace("radiometry");
+        check("radiometry");
+        w.showWorkspace("slr");
+        check("slr");
+        for (const QString& pr : problems) qWarning("%s", qPrintable(pr));
+        QVERIFY2(problems.isEmpty(), qPrintable(QString("%1 problems, the first: %2").arg(problems.size()).arg(problems.value(0))));
     }
 
     /// Issue 30: on a 1024 × 700 screen (a window 670 px tall under its title bar) a BLITS pass
