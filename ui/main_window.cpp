@@ -369,7 +369,9 @@ QStringList MainWindow::shortcutList() const {
         << tr("Drag\tPlot ▸ pan") << tr("Right-drag, Shift+drag\tPlot ▸ box zoom")
         << tr("Double-click, Home\tPlot ▸ reset to the home view") << tr("Backspace\tPlot ▸ back in the zoom history")
         << tr("Right-click\tPlot ▸ export PNG / SVG / PDF, copy to the clipboard")
-        << tr("Click a legend entry\tPlot ▸ hide / show its series");
+        << tr("Click a legend entry\tPlot ▸ hide / show its series")
+        << tr("Hover\tPlot ▸ crosshair with the coordinates (a colour map's value too)")
+        << tr("Hover\tSLR ▸ one time cursor on the O-C plot, the binary image and the histogram");
     return out;
 }
 

@@ -336,6 +336,43 @@ private slots:
         QVERIFY(has("Shift+Wheel", "x only"));
     }
 
+    /// Issue 30: the shortcut list (Help ▸ Keyboard shortcuts: the menus' own shortcuts and the
+    /// keys and gestures the views handle) and the user guide's table of them are the same rows,
+    /// both ways. On a mismatch the test prints the table the guide should have.
+    void userGuideListsTheShortcutsTheProgramHas() {
+        MainWindow w;
+        QFile f(LWB_SOURCE_DIR "/docs/user-guide.md");
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString guide = QString::fromUtf8(f.readAll());
+        const int a = guide.indexOf("<!-- shortcuts -->"), b = guide.indexOf("<!-- /shortcuts -->");
+        QVERIFY2(a >= 0 && b > a, "the guide has no <!-- shortcuts --> table");
+        QStringList inGuide;
+        for (QString line : guide.mid(a, b - a).split('\n')) {
+            line = line.trimmed();
+            if (!line.startsWith("| ") || line.startsWith("| Keys") ) continue;
+            line.replace("\\|", QChar(0x1f));
+            const QStringList cells = line.split('|');
+            if (cells.size() < 4) continue;
+            auto cell = [](QString c) { return c.replace(QChar(0x1f), '|').trimmed().remove('`'); };
+            inGuide << cell(cells[1]) + "\t" + cell(cells[2]);
+        }
+        const QStringList inProgram = w.shortcutList();
+        QStringList missing, extra;
+        for (const QString& r : inProgram)
+            if (!inGuide.contains(r)) missing << r;
+        for (const QString& r : inGuide)
+            if (!inProgram.contains(r)) extra << r;
+        if (!missing.isEmpty() || !extra.isEmpty()) {
+            QString table = "| Keys | What |\n|---|---|\n";
+            for (const QString& r : inProgram)
+                table += "| `" + r.section('\t', 0, 0).replace("|", "\\|") + "` | " + r.section('\t', 1).replace("|", "\\|") + " |\n";
+            qWarning("the guide's table should read:\n%s", qPrintable(table));
+        }
+        QVERIFY2(missing.isEmpty(), qPrintable("not in the user guide: " + missing.join(" · ")));
+        QVERIFY2(extra.isEmpty(), qPrintable("in the user guide, not in the program: " + extra.join(" · ")));
+        QVERIFY(inProgram.size() >= 30);
+    }
+
     void ctrlOAndCtrlEActOnTheCurrentWorkspace() {
         MainWindow w;
         QAction* open = menuAction(w, "File", "Open… (current");
