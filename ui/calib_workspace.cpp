@@ -201,7 +201,7 @@ CalibWorkspace::CalibWorkspace(QWidget* parent) : QWidget(parent) {
     // Right: parameters.
     auto* panel = new QWidget(this);
     buildPanel(panel);
-    layoutWorkspace(this, top, m_inputs, m_tabs, panel, 350, 1100);
+    layoutWorkspace(this, QStringLiteral("calibration"), top, m_inputs, m_tabs, panel, 350, 1100);
 
     // Wiring.
     connect(m_controller, &CalibController::runReady, this, &CalibWorkspace::showRun);

@@ -122,17 +122,19 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : QWidget(parent) {
     scroll->setWidgetResizable(true);
     fitPanelWidth(scroll);  // as wide as the panel needs: nothing cut off, no sideways scrolling
 
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(left);
-    split->addWidget(m_tabs);
-    split->addWidget(scroll);
-    split->setStretchFactor(0, 2);
-    split->setStretchFactor(1, 3);
-    split->setStretchFactor(2, 0);
-    split->setSizes({470, 620, 340});
-    auto* lay = new QHBoxLayout(this);
-    lay->setContentsMargins(4, 4, 4, 4);
-    lay->addWidget(split);
+    // The shot list and the parameters in docks either side of the views (ui/workspace_layout).
+    DockPanel shots, params;
+    shots.widget = left;
+    shots.id = "shots";
+    shots.title = tr("Shots");
+    shots.area = Qt::LeftDockWidgetArea;
+    shots.width = 470;
+    params.widget = scroll;
+    params.id = "parameters";
+    params.title = tr("Parameters");
+    params.area = Qt::RightDockWidgetArea;
+    params.width = 340;
+    dockPanels(this, QStringLiteral("footprint"), m_tabs, {shots, params});
 
     wireController();
     wireZoomKeys();

@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDialog>
+#include <QDockWidget>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDragEnterEvent>
@@ -218,6 +219,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     if (!isMaximized() && !isFullScreen())
         if (const QScreen* sc = screen() ? screen() : QGuiApplication::primaryScreen())
             setGeometry(fitWindowToScreen(geometry(), minimumSizeHint(), sc->availableGeometry(), QMargins(0, 30, 0, 0)));
+    restoreDockLayouts(this);  // each workspace's panels as they were left
     setDarkTheme(st.value("view/theme").toString() == "dark");
     statusBar()->showMessage(tr("Ready"));
     setModified(false);
@@ -280,6 +282,21 @@ void MainWindow::buildMenus() {
     m_panelsAction->setCheckable(true);
     m_panelsAction->setChecked(true);
     m_panelsAction->setShortcut(QKeySequence(tr("Ctrl+Shift+P")));
+    // Every workspace's docks (shown, hidden) and the arrangement back as it first was.
+    QMenu* panelsMenu = view->addMenu(tr("P&anels"));
+    for (QDockWidget* d : workspaceDocks(this)) {
+        QAction* t = d->toggleViewAction();
+        QString ws;
+        for (int i = 0; i < m_tabs->count(); ++i)
+            if (m_tabs->widget(i)->isAncestorOf(d)) ws = m_tabs->tabText(i).remove('&');
+        t->setText(QStringLiteral("%1: %2").arg(ws, d->windowTitle()));
+        panelsMenu->addAction(t);
+    }
+    panelsMenu->addSeparator();
+    panelsMenu->addAction(tr("&Reset panel layout"), this, [this] {
+        resetDockLayouts(this);
+        if (m_panelsAction) m_panelsAction->setChecked(true);
+    });
     QAction* sb = view->addAction(tr("&Status bar"), this, [this](bool on) { statusBar()->setVisible(on); });
     sb->setCheckable(true);
     sb->setChecked(true);
@@ -326,14 +343,9 @@ void MainWindow::setDarkTheme(bool dark) {
 }
 
 void MainWindow::setPanelsVisible(bool visible) {
-    // The parameter panels sit in scroll areas named "parameterPanel" (ui/workspace_layout); the
-    // footprint workspace's panel is found from its widget.
-    QList<QWidget*> panels;
-    for (QScrollArea* a : findChildren<QScrollArea*>("parameterPanel")) panels << a;
-    QWidget* fp = m_footprint->paramsPanel();
-    while (fp && fp->parentWidget() && fp->parentWidget() != m_footprint && !qobject_cast<QScrollArea*>(fp)) fp = fp->parentWidget();
-    if (fp && !panels.contains(fp)) panels << fp;
-    for (QWidget* w : panels) w->setVisible(visible);
+    // The parameter panels: every workspace's dock "<workspace>.parameters" (ui/workspace_layout).
+    for (QDockWidget* d : workspaceDocks(this))
+        if (d->objectName().endsWith(".parameters")) d->setVisible(visible);
     if (m_panelsAction) m_panelsAction->setChecked(visible);
 }
 
@@ -984,6 +996,7 @@ void MainWindow::closeEvent(QCloseEvent* e) {
         return;
     }
     QSettings().setValue("window/geometry", saveGeometry());
+    saveDockLayouts(this);
     e->accept();
 }
 

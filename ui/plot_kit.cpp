@@ -26,6 +26,7 @@
 #include <QSvgGenerator>
 #include <QWheelEvent>
 #include <cmath>
+#include <typeinfo>
 #include <qcustomplot.h>
 
 namespace lwb::ui {
@@ -96,6 +97,23 @@ protected:
 
 private:
     double m_step = 1;
+};
+
+// QCustomPlot's plain ticker with one rule more: at least two ticks in the range (its nice steps
+// left a 60 s pass one label, "36200", on a narrow plot).
+class SpanTicker : public QCPAxisTicker {
+protected:
+    double getTickStep(const QCPRange& range) override {
+        double step = QCPAxisTicker::getTickStep(range);
+        auto ticksIn = [&](double st) { return std::floor(range.upper / st) - std::ceil(range.lower / st) + 1; };
+        for (int i = 0; i < 12 && step > 0 && std::isfinite(step) && ticksIn(step) < 2; ++i) {
+            // The next smaller of 1, 2, 2.5, 5 × 10^k.
+            const double mag = std::pow(10.0, std::floor(std::log10(step) - 1e-12));
+            const double m = step / mag;
+            step = (m > 5 + 1e-9 ? 5 : m > 2.5 + 1e-9 ? 2.5 : m > 2 + 1e-9 ? 2 : m > 1 + 1e-9 ? 1 : 0.5) * mag;
+        }
+        return step;
+    }
 };
 
 // The cursor over a plot: a transparent widget the size of the plot, above it, drawing the
@@ -611,6 +629,13 @@ void PlotKit::fitTickCounts() {
     for (QCPAxisRect* r : m_plot->axisRects())
         for (QCPAxis* a : r->axes()) {
             if (!a->ticker() || !a->visible()) continue;
+            // A plain ticker becomes the kit's (two ticks at least), with its settings.
+            if (typeid(*a->ticker()) == typeid(QCPAxisTicker)) {
+                auto span = QSharedPointer<SpanTicker>(new SpanTicker);
+                span->setTickStepStrategy(a->ticker()->tickStepStrategy());
+                span->setTickOrigin(a->ticker()->tickOrigin());
+                a->setTicker(span);
+            }
             const QFontMetrics fm(a->tickLabelFont());
             int count;
             if (a->orientation() == Qt::Horizontal) {

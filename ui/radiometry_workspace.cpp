@@ -189,7 +189,7 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : QWidget(parent) {
     // Right: parameters.
     auto* panel = new QWidget(this);
     buildPanel(panel);
-    layoutWorkspace(this, top, m_info, vsplit, panel, 300, 1150);
+    layoutWorkspace(this, QStringLiteral("radiometry"), top, m_info, vsplit, panel, 300, 1150);
 
     // Wiring.
     connect(m_controller, &RadiometryController::imageChanged, this, &RadiometryWorkspace::showImage);

@@ -122,7 +122,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : QWidget(parent) {
     buildPlots();
     QWidget* vsplit = buildPlotArea();
     QWidget* panel = buildPanel();
-    layoutWorkspace(this, wrapRow(top), m_info, vsplit, panel, 430, 1030);
+    layoutWorkspace(this, QStringLiteral("slr"), wrapRow(top), m_info, vsplit, panel, 430, 1030);
     wireController();
     m_params->setParams(m_controller->params());
     m_undo->setEnabled(undoStackOf(this).canUndo());

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <QFrame>
 
+#include <QDockWidget>
 #include <QEvent>
 #include <QHBoxLayout>
+#include <QMainWindow>
+#include <QSettings>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSplitter>
@@ -89,8 +92,8 @@ private:
 
 QWidget* boundedText(QWidget* text, int lines) { return new BoundedText(text, lines, text->parentWidget()); }
 
-void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* body, QWidget* panel,
-                     int panelMinWidth, int centreWidth) {
+void layoutWorkspace(QWidget* workspace, const QString& name, QLayout* top, QWidget* info, QWidget* body,
+                     QWidget* panel, int panelMinWidth, int centreWidth) {
     auto* scroll = new QScrollArea(workspace);
     scroll->setObjectName("parameterPanel");
     scroll->setWidget(panel);
@@ -102,17 +105,114 @@ void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* b
     cl->addLayout(wrapRow(top));
     cl->addWidget(boundedText(info, 3));
     cl->addWidget(body, 1);
-    auto* split = new QSplitter(Qt::Horizontal, workspace);
-    split->addWidget(centre);
-    split->addWidget(scroll);
-    split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 0);
-    split->setCollapsible(0, false);
-    split->setCollapsible(1, true);
-    split->setSizes({centreWidth, std::max(panelMinWidth, scroll->minimumSizeHint().width()) + 10});
+    (void)centreWidth;  // (the centre takes what the docks leave)
+    DockPanel p;
+    p.widget = scroll;
+    p.id = "parameters";
+    p.title = QObject::tr("Parameters");
+    p.area = Qt::RightDockWidgetArea;
+    p.width = std::max(panelMinWidth, scroll->minimumSizeHint().width()) + 10;
+    dockPanels(workspace, name, centre, {p});
+}
+
+namespace {
+
+// The first time the host is shown: the docks at their first widths (resizeDocks needs the
+// host laid out), unless a saved layout was restored.
+class DockFirstShow : public QObject {
+public:
+    explicit DockFirstShow(QMainWindow* host) : QObject(host), m_host(host) { host->installEventFilter(this); }
+
+protected:
+    bool eventFilter(QObject* o, QEvent* e) override {
+        if (o == m_host && e->type() == QEvent::Show && !m_done) {
+            m_done = true;
+            if (!m_host->property("lwbRestored").toBool()) applyWidths(m_host);
+        }
+        return false;
+    }
+
+public:
+    static void applyWidths(QMainWindow* host) {
+        QList<QDockWidget*> docks;
+        QList<int> widths;
+        for (QDockWidget* d : host->findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly)) {
+            docks << d;
+            widths << d->property("lwbWidth").toInt();
+        }
+        if (!docks.isEmpty()) host->resizeDocks(docks, widths, Qt::Horizontal);
+    }
+
+private:
+    QMainWindow* m_host;
+    bool m_done = false;
+};
+
+QList<QMainWindow*> dockHosts(QWidget* root) {
+    QList<QMainWindow*> out;
+    for (QMainWindow* h : root->findChildren<QMainWindow*>("dockHost"))
+        if (!h->property("lwbWorkspace").toString().isEmpty()) out << h;
+    return out;
+}
+
+constexpr int kDockLayoutVersion = 1;
+
+}  // namespace
+
+QMainWindow* dockPanels(QWidget* workspace, const QString& name, QWidget* centre, const std::vector<DockPanel>& panels) {
+    auto* host = new QMainWindow(workspace);
+    host->setWindowFlags(Qt::Widget);  // (QMainWindow makes itself a window whatever the flags given)
+    host->setObjectName("dockHost");
+    host->setProperty("lwbWorkspace", name);
+    host->setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+    centre->setParent(host);
+    host->setCentralWidget(centre);
+    for (const DockPanel& p : panels) {
+        auto* dock = new QDockWidget(p.title, host);
+        dock->setObjectName(name + "." + p.id);
+        dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable | QDockWidget::DockWidgetClosable);
+        dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
+        dock->setWidget(p.widget);
+        dock->setProperty("lwbArea", p.area);
+        dock->setProperty("lwbWidth", p.width);
+        host->addDockWidget(Qt::DockWidgetArea(p.area), dock);
+    }
+    new DockFirstShow(host);
     auto* lay = new QHBoxLayout(workspace);
     lay->setContentsMargins(4, 4, 4, 4);
-    lay->addWidget(split);
+    lay->addWidget(host);
+    return host;
+}
+
+void saveDockLayouts(QWidget* root) {
+    QSettings st;
+    for (QMainWindow* h : dockHosts(root))
+        st.setValue("layout/" + h->property("lwbWorkspace").toString(), h->saveState(kDockLayoutVersion));
+}
+
+void restoreDockLayouts(QWidget* root) {
+    QSettings st;
+    for (QMainWindow* h : dockHosts(root)) {
+        const QByteArray state = st.value("layout/" + h->property("lwbWorkspace").toString()).toByteArray();
+        if (!state.isEmpty() && h->restoreState(state, kDockLayoutVersion)) h->setProperty("lwbRestored", true);
+    }
+}
+
+void resetDockLayouts(QWidget* root) {
+    for (QMainWindow* h : dockHosts(root)) {
+        for (QDockWidget* d : h->findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly)) {
+            d->setFloating(false);
+            h->addDockWidget(Qt::DockWidgetArea(d->property("lwbArea").toInt()), d);
+            d->show();
+        }
+        DockFirstShow::applyWidths(h);
+    }
+}
+
+QList<QDockWidget*> workspaceDocks(QWidget* root) {
+    QList<QDockWidget*> out;
+    for (QMainWindow* h : dockHosts(root)) out += h->findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly);
+    return out;
 }
 
 void fitPanelWidth(QScrollArea* scroll) { new PanelWidth(scroll); }

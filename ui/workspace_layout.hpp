@@ -1,25 +1,54 @@
 #pragma once
 // The layout the SLR, calibration and radiometry workspaces share: a centre column (a row of
 // inputs, an information line, the body) and the parameter panel on the right in a scroll area,
-// side by side in a splitter.
+// in a dock beside it (dockPanels).
+//
+// Dockable panels (every workspace): each workspace is an inner main window ("dockHost") whose
+// centre is its views and whose panels (parameters; the footprint's shot list) are docks — moved
+// to another side, floated as their own window, closed and brought back from View ▸ Panels. The
+// arrangement is saved per workspace when the program closes and restored when it starts
+// (saveDockLayouts / restoreDockLayouts); View ▸ Reset panel layout puts every panel back.
 //
 // Small windows (1024×700, or 150 % scaling on 1920×1080): the row of inputs wraps onto more
 // lines instead of widening the window (FlowLayout); the parameter panel scrolls vertically, is
 // as wide as its widest row (never cut off, never scrolled sideways), and can be collapsed by
-// dragging the splitter or with View ▸ Parameter panels (the scroll area is named
-// "parameterPanel").
+// closing its dock or with View ▸ Parameter panels (the scroll area is named "parameterPanel").
 #include <QLayout>
 #include <QList>
+#include <QString>
+#include <vector>
 #include <QMargins>
 #include <QRect>
 
+class QDockWidget;
+class QMainWindow;
 class QScrollArea;
 class QWidget;
 
 namespace lwb::ui {
 
-void layoutWorkspace(QWidget* workspace, QLayout* top, QWidget* info, QWidget* body, QWidget* panel,
-                     int panelMinWidth, int centreWidth);
+/// `name`: the workspace's key for its saved panel layout ("slr", "calibration", …).
+void layoutWorkspace(QWidget* workspace, const QString& name, QLayout* top, QWidget* info, QWidget* body,
+                     QWidget* panel, int panelMinWidth, int centreWidth);
+
+/// A panel of a workspace, docked at `area` (Qt::LeftDockWidgetArea or Qt::RightDockWidgetArea)
+/// `width` px wide at first; `id` names the dock in the saved layout ("parameters", "shots").
+struct DockPanel {
+    QWidget* widget = nullptr;
+    QString id, title;
+    int area = 0x2;  ///< Qt::RightDockWidgetArea
+    int width = 340;
+};
+/// Fills `workspace` with an inner main window: `centre` in the middle, each panel in a dock.
+/// The dock of panel `id` is named "<name>.<id>".
+QMainWindow* dockPanels(QWidget* workspace, const QString& name, QWidget* centre, const std::vector<DockPanel>& panels);
+/// Every workspace's dock arrangement under `root`, to the settings (layout/<name>) and back;
+/// resetDockLayouts puts every panel back where dockPanels first put it.
+void saveDockLayouts(QWidget* root);
+void restoreDockLayouts(QWidget* root);
+void resetDockLayouts(QWidget* root);
+/// The docks under `root` (in workspace order).
+QList<QDockWidget*> workspaceDocks(QWidget* root);
 
 /// `text` (a label of messages) in a scroll area as tall as the text up to `lines` lines, then
 /// scrolling (layoutWorkspace puts the information line in one).

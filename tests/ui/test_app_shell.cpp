@@ -5,6 +5,9 @@
 // right workspace; at start-up the status bar does not show another workspace's message; the
 // window is usable at 1024×700.
 #include <QAbstractScrollArea>
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QSettings>
 #include <QMenuBar>
 #include <QMimeData>
 #include <QRadioButton>
@@ -21,6 +24,7 @@
 #include <QUndoCommand>
 #include <QUndoStack>
 #include <QtTest>
+#include <functional>
 #include <qcustomplot.h>
 
 #include "test_support.hpp"
@@ -50,10 +54,18 @@ private:
 };
 
 QAction* menuAction(QMainWindow& w, const QString& menu, const QString& startsWith) {
+    // (in the menu or one of its submenus)
+    std::function<QAction*(QMenu*)> find = [&](QMenu* m) -> QAction* {
+        for (QAction* a : m->actions()) {
+            if (a->text().remove('&').startsWith(startsWith)) return a;
+            if (a->menu())
+                if (QAction* inner = find(a->menu())) return inner;
+        }
+        return nullptr;
+    };
     for (QAction* m : w.menuBar()->actions())
         if (m->menu() && m->text().remove('&') == menu)
-            for (QAction* a : m->menu()->actions())
-                if (a->text().remove('&').startsWith(startsWith)) return a;
+            if (QAction* a = find(m->menu())) return a;
     return nullptr;
 }
 
@@ -104,9 +116,13 @@ QString plotTextProblems(QCustomPlot* p) {
             const int room = h ? p->axisRect()->width() + 40 : p->axisRect()->height() + 40;
             if (need > room) out << QString("axis label \"%1\" needs %2 px, has %3").arg(a->label()).arg(need).arg(room);
         }
-        if (!a->tickLabels() || !h) continue;
+        if (!a->tickLabels()) continue;
         const QVector<double> ticks = a->tickVector();
         const QVector<QString> labels = a->tickVectorLabels();
+        // (a linear axis with one label says nothing of its scale: "36200" on a pass's time axis)
+        if (a->scaleType() == QCPAxis::stLinear && labels.size() < 2 && a->range().size() > 0)
+            out << QString("one tick label (\"%1\") on the %2 axis").arg(labels.value(0), a->label());
+        if (!h) continue;
         const QFontMetrics fm(a->tickLabelFont());
         for (int i = 1; i < ticks.size() && i < labels.size(); ++i) {
             const double gap = std::fabs(a->coordToPixel(ticks[i]) - a->coordToPixel(ticks[i - 1]));
@@ -371,6 +387,76 @@ private slots:
         QVERIFY2(missing.isEmpty(), qPrintable("not in the user guide: " + missing.join(" · ")));
         QVERIFY2(extra.isEmpty(), qPrintable("in the user guide, not in the program: " + extra.join(" · ")));
         QVERIFY(inProgram.size() >= 30);
+    }
+
+    /// Issue 30: dockable panels with a saved layout per workspace. Every workspace's parameter
+    /// panel (and the footprint's shot list) is a dock; moved, floated or closed, it comes back
+    /// so in the next window (the layout saved when the window closes); View ▸ Panels lists them
+    /// and Reset panel layout puts them back; View ▸ Parameter panels hides and shows them.
+    void panelsDockAndKeepTheirLayout() {
+        QSettings().remove("layout");
+        auto dockNamed = [](QWidget* root, const QString& name) -> QDockWidget* {
+            for (QDockWidget* d : workspaceDocks(root))
+                if (d->objectName() == name) return d;
+            return nullptr;
+        };
+        auto hostOf = [](QDockWidget* d) { return qobject_cast<QMainWindow*>(d->parentWidget()); };
+        {
+            MainWindow w;
+            w.resize(1280, 800);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QStringList names;
+            for (QDockWidget* d : workspaceDocks(&w)) names << d->objectName();
+            for (const char* n : {"footprint.shots", "footprint.parameters", "slr.parameters", "calibration.parameters", "radiometry.parameters"})
+                QVERIFY2(names.contains(n), qPrintable(names.join(", ")));
+            QDockWidget* slr = dockNamed(&w, "slr.parameters");
+            QDockWidget* shots = dockNamed(&w, "footprint.shots");
+            QDockWidget* radio = dockNamed(&w, "radiometry.parameters");
+            QCOMPARE(hostOf(slr)->dockWidgetArea(slr), Qt::RightDockWidgetArea);
+            QCOMPARE(hostOf(shots)->dockWidgetArea(shots), Qt::LeftDockWidgetArea);
+            // The parameter panel is in its dock, as wide as it needs.
+            QVERIFY(slr->isAncestorOf(w.slr()->findChild<QScrollArea*>("parameterPanel")));
+            // View ▸ Panels: a toggle per dock, and the reset.
+            QAction* toggle = menuAction(w, "View", "SLR pass screening: Parameters");
+            QVERIFY(toggle);
+            QVERIFY(menuAction(w, "View", "Reset panel layout"));
+            // Move the SLR panel left (in front, as a user would), close the shot list, float
+            // the radiometry panel.
+            w.showWorkspace("slr");
+            hostOf(slr)->addDockWidget(Qt::LeftDockWidgetArea, slr);
+            shots->close();
+            radio->setFloating(true);
+            QVERIFY(toggle->isChecked());
+            QVERIFY(!menuAction(w, "View", "Footprint review: Shots")->isChecked());
+            // View ▸ Parameter panels hides and shows them all (the closed shot list stays closed).
+            w.setPanelsVisible(false);
+            QVERIFY(slr->isHidden() && dockNamed(&w, "calibration.parameters")->isHidden());
+            w.setPanelsVisible(true);
+            QVERIFY(!slr->isHidden() && shots->isHidden());
+            QVERIFY(w.close());  // saves the layout
+        }
+        {
+            MainWindow w;
+            w.resize(1280, 800);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QDockWidget* slr = dockNamed(&w, "slr.parameters");
+            QDockWidget* shots = dockNamed(&w, "footprint.shots");
+            QDockWidget* radio = dockNamed(&w, "radiometry.parameters");
+            QCOMPARE(hostOf(slr)->dockWidgetArea(slr), Qt::LeftDockWidgetArea);
+            QVERIFY(shots->isHidden());
+            QVERIFY(radio->isFloating());
+            QCOMPARE(hostOf(dockNamed(&w, "calibration.parameters"))->dockWidgetArea(dockNamed(&w, "calibration.parameters")),
+                     Qt::RightDockWidgetArea);
+            // Reset: every panel back where it started, shown, docked.
+            menuAction(w, "View", "Reset panel layout")->trigger();
+            QCOMPARE(hostOf(slr)->dockWidgetArea(slr), Qt::RightDockWidgetArea);
+            QVERIFY(!shots->isHidden());
+            QCOMPARE(hostOf(shots)->dockWidgetArea(shots), Qt::LeftDockWidgetArea);
+            QVERIFY(!radio->isFloating());
+        }
+        QSettings().remove("layout");
     }
 
     void ctrlOAndCtrlEActOnTheCurrentWorkspace() {
