@@ -10,7 +10,7 @@ SANITIZE_BUILD ?= build-sanitize
 SHARED_SLR ?= ../shared/data/slr
 PREFIX ?= /usr/local
 
-.PHONY: all deps configure build test test-sanitize run bench fuzz install deb clean
+.PHONY: all deps configure build test test-sanitize run bench fuzz install deb clean screenshots
 
 all: build
 
@@ -83,3 +83,15 @@ bench: build
 
 clean:
 	rm -rf $(BUILD)
+
+# The small-screen screenshots of docs/screens.md: every workspace on the built-in demo in a
+# 1024x700 window and at 150 % scaling on 1920x1080 (1280x720 logical), each with fresh settings.
+SCREENS := footprint footprint:trend slr calibration calibration:waveform radiometry
+screenshots: build
+	@mkdir -p docs/img/screens
+	@for ws in $(SCREENS); do n=$$(echo $$ws | tr : -); cfg=$$(mktemp -d); \
+	  QT_QPA_PLATFORM=offscreen XDG_CONFIG_HOME=$$cfg ./$(BUILD)/bin/laserwb --workspace $$ws \
+	    --size 1024x700 --screenshot docs/img/screens/$$n-1024x700.png 2>/dev/null && \
+	  QT_QPA_PLATFORM=offscreen QT_SCALE_FACTOR=1.5 XDG_CONFIG_HOME=$$cfg ./$(BUILD)/bin/laserwb --workspace $$ws \
+	    --size 1280x720 --screenshot docs/img/screens/$$n-150pct.png 2>/dev/null && \
+	  rm -rf $$cfg && echo "screenshots: $$n"; done
