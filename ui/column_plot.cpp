@@ -75,12 +75,11 @@ ColumnPlot::ColumnPlot(FootprintController* c, ShotFilterProxy* view, QWidget* p
     m_info = new QLabel(this);
     m_info->setWordWrap(true);
     lay->addWidget(m_info);
-    setColumns("dx", "dy");
-
     m_timer = new QTimer(this);
     m_timer->setSingleShot(true);
     m_timer->setInterval(100);
     connect(m_timer, &QTimer::timeout, this, &ColumnPlot::refresh);
+    setColumns("dx", "dy");
     for (QComboBox* b : {m_x, m_y})
         connect(b, &QComboBox::currentIndexChanged, this, [this] {
             refresh();

@@ -57,7 +57,7 @@ private:
     QComboBox *m_x, *m_y;
     QCustomPlot* m_plot;
     QLabel* m_info;
-    QTimer* m_timer;
+    QTimer* m_timer = nullptr;
     std::vector<Point> m_points;
     int m_current = -1;
     double m_xOffset = 0;  // seconds subtracted from a time shown as seconds of day

@@ -82,21 +82,30 @@ void drawCross(QPainter& p, QPointF c, double size, const QPen& pen, bool diagon
     }
 }
 
-QCustomPlot* makePlot(const QString& yLabel, QWidget* parent) {
+// A trend plot. At 1024x700 each of the three is about 170 px high: the y label is short (the
+// long one, "Pointing change (arcsec)", was longer than the axis and clipped), the month label is
+// on the bottom plot only (monthLabel), and the legend is one row (one entry per camera and beam,
+// toggling its shots and its mean together). `what` is the tooltip and the export name.
+QCustomPlot* makePlot(const QString& yLabel, const QString& what, const QString& exportName, bool monthLabel,
+                      QWidget* parent) {
     auto* plot = new QCustomPlot(parent);
     plot->setMinimumHeight(150);
     auto ticker = QSharedPointer<QCPAxisTickerDateTime>(new QCPAxisTickerDateTime);
     ticker->setDateTimeFormat("yyyy-MM");
     ticker->setDateTimeSpec(Qt::UTC);
     plot->xAxis->setTicker(ticker);
-    plot->xAxis->setLabel(QObject::tr("Month (UTC)"));
+    if (monthLabel) plot->xAxis->setLabel(QObject::tr("Month (UTC)"));
     plot->yAxis->setLabel(yLabel);
+    plot->setToolTip(what);
     // The one legend style (plot kit): a row under the axis rect, so it never covers the first
     // months; two columns, so the window stays usable at 1024 px (four made the page 1294 px wide).
     plot->legend->setFont(QFont(plot->font().family(), 8));
     legendBelow(plot, 2);
     plot->legend->setRowSpacing(0);
-    installPlotKit(plot);  // box/axis zoom, reset, export, legend toggle
+    plot->legend->setMargins(QMargins(4, 0, 4, 0));  // one short row: the axis keeps the height
+    PlotKitOptions o;
+    o.exportName = exportName;
+    installPlotKit(plot, o);  // box/axis zoom, reset, export, legend toggle
     return plot;
 }
 
@@ -166,7 +175,7 @@ QWidget* FootprintWorkspace::buildShotList() {
     for (const ShotColumn& c : shotColumns()) words << QLatin1String(c.name);
     words << "and" << "or" << "not" << "abs" << "sqrt";
     m_where = new FilterField(shotFilterHelp(), words, left);
-    m_where->setPlaceholderText(tr("e.g. snr < 10 and beam == 2 (hover for the columns)"));
+    m_where->setPlaceholderText(tr("e.g. snr < 10 and beam == 2"));
     auto* whereLabel = new QLabel(tr("F&ilter:"), left);
     whereLabel->setBuddy(m_where);
     auto* whereRow = new QHBoxLayout;
@@ -704,9 +713,14 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
 QWidget* FootprintWorkspace::buildTrendTab() {
     auto* trend = new QWidget(m_tabs);
     auto* trendLay = new QVBoxLayout(trend);
-    m_plotX = makePlot(tr("ΔX from 1st month (px)"), trend);
-    m_plotY = makePlot(tr("ΔY from 1st month (px)"), trend);
-    m_plotPointing = makePlot(tr("Pointing change (arcsec)"), trend);
+    m_plotX = makePlot(tr("ΔX (px)"), tr("Change of the spot centre's x from the first month's mean (px): each shot "
+                                         "(dots) and the monthly mean (line)"),
+                       "trend_dx", false, trend);
+    m_plotY = makePlot(tr("ΔY (px)"), tr("Change of the spot centre's y from the first month's mean (px): each shot "
+                                         "(dots) and the monthly mean (line)"),
+                       "trend_dy", false, trend);
+    m_plotPointing = makePlot(tr("Pointing (″)"), tr("Planar pointing change from the first month (arcsec)"),
+                              "trend_pointing", true, trend);
     m_trendSummary = new QLabel(trend);
     m_trendSummary->setWordWrap(true);
     trendLay->addWidget(m_plotX, 1);
@@ -783,12 +797,17 @@ void FootprintWorkspace::refreshTrend() {
         const int k = int(series.size());
         series[key] = k;
         for (QCustomPlot* p : {m_plotX, m_plotY}) {
+            // The shots and the monthly mean are one legend entry (its series key): a click on it
+            // hides both (four entries did not fit at 1024 px and were cut to "monthly mea").
             QCPGraph* g = p->addGraph();
             g->setName(key + tr(" shots"));
+            g->setProperty("series", key);
             g->setLineStyle(QCPGraph::lsNone);
             g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, colors[k % 4].lighter(150), 3));
+            g->removeFromLegend();
             QCPGraph* m = p->addGraph();
-            m->setName(key + tr(" monthly mean"));
+            m->setName(key);
+            m->setProperty("series", key);
             m->setPen(QPen(colors[k % 4], 2));
             m->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, colors[k % 4], 6));
         }
@@ -834,7 +853,8 @@ void FootprintWorkspace::refreshTrend() {
                         : m_filter->currentIndex() == 0 ? m_proxy->expression()
                                                         : m_filter->currentText() + ", " + m_proxy->expression());
     }
-    m_trendSummary->setText(view + tr("Accepted shots only; 3σ rejection within each month; 0.31″ per px. ") + summary);
+    m_trendSummary->setText(view + tr("Change from the first month: shots (dots) and monthly means (lines) of the "
+                                      "accepted shots; 3σ rejection within each month; 0.31″ per px. ") + summary);
     for (QCustomPlot* p : {m_plotX, m_plotY, m_plotPointing}) {
         p->rescaleAxes();
         p->xAxis->scaleRange(1.08);
