@@ -2,6 +2,7 @@
 
 #include <QComboBox>
 #include <QDateTime>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMouseEvent>
@@ -69,7 +70,16 @@ ColumnPlot::ColumnPlot(FootprintController* c, ShotFilterProxy* view, QWidget* p
     row->addWidget(m_y);
     row->addStretch(1);
     lay->addLayout(wrapRow(row));
-    m_plot = newPlot(this, QString(), QString(), QString());
+    PlotKitOptions opts;
+    opts.exportName = "shot_columns";
+    // The crosshair names the shot under the cursor.
+    opts.readout = [this](double x, double y) {
+        const QPoint px(qRound(m_plot->xAxis->coordToPixel(x)), qRound(m_plot->yAxis->coordToPixel(y)));
+        const QString at = PlotKit::axisText(m_plot->xAxis, x) + ", " + PlotKit::axisText(m_plot->yAxis, y);
+        const Shot* s = m_c->shot(rowAt(px));
+        return s ? QFileInfo(s->file).fileName() + " — " + at : at;
+    };
+    m_plot = newPlot(this, QString(), QString(), QString(), opts);
     legendBelow(m_plot, 5);
     lay->addWidget(m_plot, 1);
     m_info = new QLabel(this);
@@ -193,8 +203,7 @@ void ColumnPlot::refresh() {
             .arg(m_points.size())
             .arg(inView)
             .arg(xColumn(), yColumn())
-            .arg(m_view->isFiltered() ? tr(" (the table's filter applies: %1 of %2 shots)").arg(inView).arg(m_c->count())
-                                      : QString()));
+            .arg(m_view->isFiltered() ? tr(" (the table's filter applies; %1 shots in all)").arg(m_c->count()) : QString()));
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 

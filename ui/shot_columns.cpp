@@ -164,20 +164,21 @@ double shotNumber(const Shot& s, int roiIndex, int col) {
 }
 
 QString shotFilterHelp() {
-    QString cols;
+    // Compact (the tooltip of a field near the top of the window): the names in one paragraph,
+    // text columns in italics, the meaning of the ones that are not in the report.
+    QStringList names;
     for (const ShotColumn& c : shotColumns())
-        cols += QString("<br><b>%1</b>%2 — %3")
-                    .arg(QLatin1String(c.name),
-                         c.kind == ShotColumnKind::Number ? QString() : QObject::tr(" (text)"),
-                         QObject::tr(c.doc).toHtmlEscaped());
+        names << (c.kind == ShotColumnKind::Number ? QString("<b>%1</b>") : QString("<i>%1</i>")).arg(QLatin1String(c.name));
     return QObject::tr("<p>Shows the shots for which the expression holds, with the verdict choice beside it "
                        "(Alt+I). For example <code>snr &lt; 10 and beam == 2</code>, "
                        "<code>verdict == \"doubtful\" or note != \"\"</code>, <code>abs(dx) &gt; 0.5</code>, "
                        "<code>not (roi == 1)</code>.</p><p>&lt; &lt;= &gt; &gt;= == !=, and / or / not, "
                        "( ), numbers, \"text\", + - * /, abs() and sqrt(). Names and text compare without regard "
                        "to case. A missing number (a rejected shot's x) makes every comparison with it false.</p>"
-                       "<p>Columns:%1</p>")
-        .arg(cols);
+                       "<p>Columns (<i>text</i>): %1.</p><p>dx, dy: the centre less the nominal centre (the ROI's "
+                       "middle when none is given); verdict: as shown (manual where set); computed: the "
+                       "pipeline's; manual: 1 or 0; roi: the ROI's index in its frame.</p>")
+        .arg(names.join(", "));
 }
 
 }  // namespace lwb::ui
