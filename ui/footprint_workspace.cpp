@@ -170,7 +170,7 @@ QWidget* FootprintWorkspace::buildShotList() {
     filterRow->addWidget(m_filter);
     filterRow->addWidget(m_counts, 1);
     leftLay->addLayout(filterRow);
-    // The filter expression (issue 30), with the verdict choice above: both make the view.
+    // The filter expression (issue 30), with the verdict choice: both make the view.
     QStringList words;
     for (const ShotColumn& c : shotColumns()) words << QLatin1String(c.name);
     words << "and" << "or" << "not" << "abs" << "sqrt";
@@ -181,7 +181,9 @@ QWidget* FootprintWorkspace::buildShotList() {
     auto* whereRow = new QHBoxLayout;
     whereRow->addWidget(whereLabel);
     whereRow->addWidget(m_where, 1);
-    leftLay->addLayout(whereRow);
+    // Above the verdict choice: Alt+O, D, Tab still lands in the table (the documented review
+    // by keyboard), and Tab from the expression goes to the choice.
+    leftLay->insertLayout(0, whereRow);
     m_reviewed = new QLabel(left);
     m_reviewed->setToolTip(tr("Shots the pipeline judged doubtful that have a manual verdict. "
                               "N goes to the next shot of the view without one"));
@@ -213,6 +215,8 @@ QWidget* FootprintWorkspace::buildShotList() {
     // cut to "doubtf", after the time, beam and position columns). Only the view's order moves.
     m_table->horizontalHeader()->moveSection(m_table->horizontalHeader()->visualIndex(ShotTableModel::VerdictCol), 1);
     leftLay->addWidget(m_table, 1);
+    setTabOrder(m_where, m_filter);
+    setTabOrder(m_filter, m_table);
     auto* overrideRow = new QHBoxLayout;
     auto* accept = new QPushButton(tr("Accept (A)"), left);
     auto* reject = new QPushButton(tr("Reject (R)"), left);
