@@ -12,6 +12,8 @@
 #include "cli_commands.hpp"
 #include "core/common/parallel.hpp"
 #include "core/common/atomic_file.hpp"
+#include "core/common/csv.hpp"
+#include "core/common/row_filter.hpp"
 #include "core/common/image_codecs.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
@@ -46,6 +48,8 @@ const char* kFootprintUsage =
     "  --max-pixels N            largest frame read, from its header (default 16777216 = 4096^2)\n"
     "  --threads N               worker threads (default: all cores)\n"
     "  --keep-going              write unreadable files as rejected rows instead of stopping\n"
+    "  --where EXPR              only the report rows for which EXPR holds, e.g. 'snr < 10 and roi == 1'\n"
+    "                            (the workbench's filter language over the report's columns)\n"
     "  -o, --output OUT.csv      report: file,x,y,verdict,reasons,method,noise_class,sigma_x,...\n"
     "  -q, --quiet               no progress line\n";
 
@@ -77,7 +81,8 @@ int cmdFootprint(int argc, char** argv) {
     Args a("footprint", kFootprintUsage);
     const FootprintOptions params;
     params.declare(a);
-    for (const char* o : {"--preset", "--raw-size", "--threads", "-o", "--output", "--max-pixels"}) a.option(o, true);
+    for (const char* o : {"--preset", "--raw-size", "--threads", "-o", "--output", "--max-pixels", "--where"})
+        a.option(o, true);
     a.option("--center", true, true);
     for (const char* o : {"--keep-going", "--help-params", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail("footprint", a.error(), kUsage);
@@ -107,6 +112,22 @@ int cmdFootprint(int argc, char** argv) {
     if (!a.getInt("--threads", 0, 256, &threads, &err) || !a.getInt("--max-pixels", 1, 1LL << 40, &bp.read.maxPixels, &err))
         return fail("footprint", err, kUsage);
     bp.threads = static_cast<int>(threads);
+    // --where: compiled before any work, against the report's columns.
+    std::shared_ptr<const core::RowFilter> where;
+    std::vector<std::string> reportColumns;
+    if (a.has("--where")) {
+        const std::string header = footprintCsvHeader();
+        size_t from = 0;
+        for (size_t to; (to = header.find_first_of(",\n", from)) != std::string::npos; from = to + 1)
+            reportColumns.push_back(header.substr(from, to - from));
+        if (from < header.size()) reportColumns.push_back(header.substr(from));
+        core::RowFilterParams wp;
+        wp.text = a.value("--where");
+        wp.columns = reportColumns;
+        const core::RowFilterResult w = core::compileRowFilter(wp);
+        if (!w.ok) return fail("footprint", "--where: " + w.error, kUsage);
+        where = w.filter;
+    }
     const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
     if (out.empty()) return fail("footprint", "no output file: give -o OUT.csv", kUsage);
     if (a.positional().empty()) return fail("footprint", "no input files or folders", kUsage);
@@ -137,8 +158,31 @@ int cmdFootprint(int argc, char** argv) {
     });
     progress.finish();
     if (!firstError.empty()) return fail("footprint", firstError + " (nothing written; --keep-going reports it as a rejected row)");
-    if (!writeFootprintCsv(outs.stagingPath(out), res.items, bp.footprint.method, &err))
-        return fail("footprint", outs.unstaged(err));
+    size_t kept = 0, rows = 0;
+    if (!where) {
+        if (!writeFootprintCsv(outs.stagingPath(out), res.items, bp.footprint.method, &err))
+            return fail("footprint", outs.unstaged(err));
+    } else {
+        // The report's rows as written, then only those the expression selects (every field a
+        // text cell: a number field compares as its number, an empty one is missing).
+        std::string text = footprintCsvHeader();
+        for (const auto& it : res.items) text += footprintCsvRows(it, bp.footprint.method);
+        const core::CsvReadResult table = core::parseCsv(text, "report");
+        if (!table.ok) return fail("footprint", "--where: " + table.error);
+        core::AtomicFile f(outs.stagingPath(out));
+        if (!f.ok()) return fail("footprint", outs.unstaged(f.error()));
+        f.stream() << footprintCsvHeader();
+        std::vector<core::FilterCell> cells(reportColumns.size());
+        for (const auto& row : table.table.rows) {
+            ++rows;
+            for (size_t c = 0; c < cells.size(); ++c) cells[c] = core::FilterCell::str(c < row.size() ? row[c] : "");
+            if (!where->matches(cells)) continue;
+            ++kept;
+            for (size_t c = 0; c < row.size(); ++c) f.stream() << (c ? "," : "") << core::csvEscape(row[c]);
+            f.stream() << "\n";
+        }
+        if (!f.commit()) return fail("footprint", outs.unstaged(f.error()));
+    }
     if (int rc = commitOutputs("footprint", outs)) return rc;
     size_t good = 0, doubtful = 0, rejected = 0;
     for (const auto& it : res.items) {
@@ -151,7 +195,9 @@ int cmdFootprint(int argc, char** argv) {
     if (!(a.has("-q") || a.has("--quiet")))
         std::cerr << "footprint: " << files.size() << " files -> " << out << ": " << good << " good, " << doubtful
                   << " doubtful, " << rejected << " rejected"
-                  << (res.readErrors ? " (" + std::to_string(res.readErrors) + " unreadable)" : "") << "\n";
+                  << (res.readErrors ? " (" + std::to_string(res.readErrors) + " unreadable)" : "")
+                  << (where ? "; --where kept " + std::to_string(kept) + " of " + std::to_string(rows) + " rows" : "")
+                  << "\n";
     return kOk;
 }
 

@@ -36,6 +36,32 @@ private slots:
         QVERIFY(t.column("x") >= 0 && t.column("expect_good") >= 0);
     }
 
+    // --where keeps the report's rows for which the expression holds, as the workbench's filter.
+    void whereFiltersTheReportRows() {
+        const auto all = runCli({"footprint", p("shots"), "-o", p("where_all.csv"), "-q"});
+        QVERIFY2(all.exitCode == 0, qPrintable(all.err));
+        const auto t = readTable(p("where_all.csv"));
+        size_t expect = 0;
+        for (const auto& row : t.rows) {
+            const std::string v = row[t.column("verdict")], snr = row[t.column("snr")];
+            expect += v != "rejected" && !snr.empty() && std::stod(snr) < 40;
+        }
+        QVERIFY(expect > 0 && expect < t.rows.size());
+        const auto r = runCli({"footprint", p("shots"), "--where", "SNR < 40 and verdict != \"Rejected\"", "-o",
+                               p("where.csv")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.err.contains(QString("--where kept %1 of %2 rows").arg(expect).arg(t.rows.size())), qPrintable(r.err));
+        const auto w = readTable(p("where.csv"));
+        QCOMPARE(w.header, t.header);
+        QCOMPARE(w.rows.size(), expect);
+        for (const auto& row : w.rows) QVERIFY(std::stod(row[w.column("snr")]) < 40);
+        // A bad expression is a usage error naming where, before any work; nothing is written.
+        const auto bad = runCli({"footprint", p("shots"), "--where", "snr < 40 and nosuch == 1", "-o", p("bad.csv")});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("--where: column 'nosuch' unknown at 14; columns: file, x, y, verdict"), qPrintable(bad.err));
+        QVERIFY(!QFile::exists(p("bad.csv")));
+    }
+
     void footprintReportsEveryShot() {
         const auto r = runCli({"footprint", p("shots"), "-o", p("report.csv")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));

@@ -488,9 +488,11 @@ QString FootprintController::acceptedExportMessage(int rows, const QString& path
     return msg;
 }
 
-TrendResult FootprintController::trend(const TrendParams& tp) const {
+TrendResult FootprintController::trend(const TrendParams& tp, const std::function<bool(int)>& include) const {
     std::vector<CentroidRecord> recs;
-    for (const Shot& s : m_shots) {
+    for (size_t i = 0; i < m_shots.size(); ++i) {
+        const Shot& s = m_shots[i];
+        if (include && !include(int(i))) continue;
         if (s.time.isEmpty() || s.beam.isEmpty() || s.effectiveVerdict() != Verdict::Good || !s.fit.ok) continue;
         CentroidRecord r;
         if (!monthOf(s.time.toStdString(), &r.month)) continue;
@@ -502,7 +504,8 @@ TrendResult FootprintController::trend(const TrendParams& tp) const {
     }
     if (recs.empty()) {
         TrendResult r;
-        r.error = "no accepted shots with a time and a beam";
+        r.error = include ? "no accepted shots with a time and a beam in the filtered view"
+                          : "no accepted shots with a time and a beam";
         return r;
     }
     return computeTrend(recs, tp);

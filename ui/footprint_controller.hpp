@@ -114,8 +114,10 @@ public:
     /// The status line after exporting `rows` accepted shots to `path`: says how many accepted
     /// shots have no position (accepted by hand, their fit failed) and were left out.
     QString acceptedExportMessage(int rows, const QString& path) const;
-    /// Monthly trend of the accepted shots that have a time and a beam.
-    core::footprint::TrendResult trend(const core::footprint::TrendParams& tp) const;
+    /// Monthly trend of the accepted shots that have a time and a beam (and, when `include` is
+    /// given, for which include(row) holds: the shot list's filter).
+    core::footprint::TrendResult trend(const core::footprint::TrendParams& tp,
+                                       const std::function<bool(int)>& include = {}) const;
 
     /// Inputs as given to open() (for the session).
     const QStringList& inputs() const { return m_inputs; }

@@ -30,6 +30,9 @@
 #include "ui/app_undo.hpp"
 #include "ui/params_command.hpp"
 #include "ui/color_maps.hpp"
+#include "ui/column_plot.hpp"
+#include "ui/filter_field.hpp"
+#include "ui/shot_columns.hpp"
 #include "ui/contact_sheet.hpp"
 #include "ui/demo.hpp"
 #include "ui/display_controls.hpp"
@@ -79,21 +82,30 @@ void drawCross(QPainter& p, QPointF c, double size, const QPen& pen, bool diagon
     }
 }
 
-QCustomPlot* makePlot(const QString& yLabel, QWidget* parent) {
+// A trend plot. At 1024x700 each of the three is about 170 px high: the y label is short (the
+// long one, "Pointing change (arcsec)", was longer than the axis and clipped), the month label is
+// on the bottom plot only (monthLabel), and the legend is one row (one entry per camera and beam,
+// toggling its shots and its mean together). `what` is the tooltip and the export name.
+QCustomPlot* makePlot(const QString& yLabel, const QString& what, const QString& exportName, bool monthLabel,
+                      QWidget* parent) {
     auto* plot = new QCustomPlot(parent);
     plot->setMinimumHeight(150);
     auto ticker = QSharedPointer<QCPAxisTickerDateTime>(new QCPAxisTickerDateTime);
     ticker->setDateTimeFormat("yyyy-MM");
     ticker->setDateTimeSpec(Qt::UTC);
     plot->xAxis->setTicker(ticker);
-    plot->xAxis->setLabel(QObject::tr("Month (UTC)"));
+    if (monthLabel) plot->xAxis->setLabel(QObject::tr("Month (UTC)"));
     plot->yAxis->setLabel(yLabel);
+    plot->setToolTip(what);
     // The one legend style (plot kit): a row under the axis rect, so it never covers the first
     // months; two columns, so the window stays usable at 1024 px (four made the page 1294 px wide).
     plot->legend->setFont(QFont(plot->font().family(), 8));
     legendBelow(plot, 2);
     plot->legend->setRowSpacing(0);
-    installPlotKit(plot);  // box/axis zoom, reset, export, legend toggle
+    plot->legend->setMargins(QMargins(4, 0, 4, 0));  // one short row: the axis keeps the height
+    PlotKitOptions o;
+    o.exportName = exportName;
+    installPlotKit(plot, o);  // box/axis zoom, reset, export, legend toggle
     return plot;
 }
 
@@ -160,6 +172,20 @@ QWidget* FootprintWorkspace::buildShotList() {
     filterRow->addWidget(m_filter);
     filterRow->addWidget(m_counts, 1);
     leftLay->addLayout(filterRow);
+    // The filter expression (issue 30), with the verdict choice: both make the view.
+    QStringList words;
+    for (const ShotColumn& c : shotColumns()) words << QLatin1String(c.name);
+    words << "and" << "or" << "not" << "abs" << "sqrt";
+    m_where = new FilterField(shotFilterHelp(), words, left);
+    m_where->setPlaceholderText(tr("e.g. snr < 10 and beam == 2"));
+    auto* whereLabel = new QLabel(tr("F&ilter:"), left);
+    whereLabel->setBuddy(m_where);
+    auto* whereRow = new QHBoxLayout;
+    whereRow->addWidget(whereLabel);
+    whereRow->addWidget(m_where, 1);
+    // Above the verdict choice: Alt+O, D, Tab still lands in the table (the documented review
+    // by keyboard), and Tab from the expression goes to the choice.
+    leftLay->insertLayout(0, whereRow);
     m_reviewed = new QLabel(left);
     m_reviewed->setToolTip(tr("Shots the pipeline judged doubtful that have a manual verdict. "
                               "N goes to the next shot of the view without one"));
@@ -191,6 +217,8 @@ QWidget* FootprintWorkspace::buildShotList() {
     // cut to "doubtf", after the time, beam and position columns). Only the view's order moves.
     m_table->horizontalHeader()->moveSection(m_table->horizontalHeader()->visualIndex(ShotTableModel::VerdictCol), 1);
     leftLay->addWidget(m_table, 1);
+    setTabOrder(m_where, m_filter);
+    setTabOrder(m_filter, m_table);
     auto* overrideRow = new QHBoxLayout;
     auto* accept = new QPushButton(tr("Accept (A)"), left);
     auto* reject = new QPushButton(tr("Reject (R)"), left);
@@ -219,8 +247,10 @@ QWidget* FootprintWorkspace::buildShotList() {
             m_table->selectRow(p.row());
         else if (m_proxy->rowCount() > 0)
             m_table->selectRow(0);
+        viewChanged();
         emit modified();
     });
+    connect(m_where, &QLineEdit::textChanged, this, &FootprintWorkspace::applyWhere);
     connect(accept, &QPushButton::clicked, this, &FootprintWorkspace::acceptCurrent);
     connect(reject, &QPushButton::clicked, this, &FootprintWorkspace::rejectCurrent);
     connect(next, &QPushButton::clicked, this, &FootprintWorkspace::nextUnreviewed);
@@ -287,19 +317,11 @@ void FootprintWorkspace::buildCentre() {
     m_sheet = new ContactSheet(m_controller, m_proxy, m_tabs);
     m_tabs->addTab(m_sheet, tr("Contact sheet"));
 
-    auto* trend = new QWidget(m_tabs);
-    auto* trendLay = new QVBoxLayout(trend);
-    m_plotX = makePlot(tr("ΔX from 1st month (px)"), trend);
-    m_plotY = makePlot(tr("ΔY from 1st month (px)"), trend);
-    m_plotPointing = makePlot(tr("Pointing change (arcsec)"), trend);
-    m_trendSummary = new QLabel(trend);
-    m_trendSummary->setWordWrap(true);
-    trendLay->addWidget(m_plotX, 1);
-    trendLay->addWidget(m_plotY, 1);
-    trendLay->addWidget(m_plotPointing, 1);
-    trendLay->addWidget(m_trendSummary);
-    m_tabs->addTab(trend, tr("Trend"));
-    m_trendTab = trend;
+    m_trendTab = buildTrendTab();
+    m_tabs->addTab(m_trendTab, tr("Trend"));
+    m_columnPlot = new ColumnPlot(m_controller, m_proxy, m_tabs);
+    m_tabs->addTab(m_columnPlot, tr("Plot"));
+    connect(m_columnPlot, &ColumnPlot::shotClicked, this, [this](int row) { selectRow(row); });
 
     connect(m_colorMap, &QComboBox::currentIndexChanged, this, [this] {
         m_sheet->setColorMap(colorMapFromIndex(m_colorMap->currentIndex()));
@@ -474,6 +496,7 @@ void FootprintWorkspace::selectRow(int sourceRow) {
 void FootprintWorkspace::currentRowChanged() {
     const int row = currentSourceRow();
     m_controller->setCurrent(row);
+    m_columnPlot->setCurrentRow(row);
     const Shot* s = m_controller->shot(row);
     m_note->setText(s ? s->note : QString());
     m_readout->setText(tr(kReadoutHint));  // the value under the cursor belonged to the last shot
@@ -481,7 +504,10 @@ void FootprintWorkspace::currentRowChanged() {
 }
 
 void FootprintWorkspace::showTab(const QString& name) {
-    m_tabs->setCurrentWidget(name == "trend" ? m_trendTab : name == "sheet" ? static_cast<QWidget*>(m_sheet) : m_reviewTab);
+    m_tabs->setCurrentWidget(name == "trend"  ? m_trendTab
+                             : name == "plot" ? static_cast<QWidget*>(m_columnPlot)
+                             : name == "sheet" ? static_cast<QWidget*>(m_sheet)
+                                               : m_reviewTab);
 }
 
 void FootprintWorkspace::commitNote() {
@@ -570,6 +596,7 @@ void FootprintWorkspace::updateCounts() {
     if (c.unreadable) t += tr(" · <span style='color:#6e6e78'>%1 unreadable</span>").arg(c.unreadable);
     if (c.pending) t += tr(" · %1 pending").arg(c.pending);
     if (c.overridden) t += tr(" · %1 manual").arg(c.overridden);
+    if (m_proxy->isFiltered()) t += tr(" · <b>%1 of %2 shown</b>").arg(m_proxy->rowCount()).arg(m_controller->count());
     m_counts->setText(t);
     int doubtful = 0, reviewed = 0;
     for (const Shot& s : m_controller->shots()) {
@@ -689,9 +716,61 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
     m_details->setText(html);
 }
 
+QWidget* FootprintWorkspace::buildTrendTab() {
+    auto* trend = new QWidget(m_tabs);
+    auto* trendLay = new QVBoxLayout(trend);
+    m_plotX = makePlot(tr("ΔX (px)"), tr("Change of the spot centre's x from the first month's mean (px): each shot "
+                                         "(dots) and the monthly mean (line)"),
+                       "trend_dx", false, trend);
+    m_plotY = makePlot(tr("ΔY (px)"), tr("Change of the spot centre's y from the first month's mean (px): each shot "
+                                         "(dots) and the monthly mean (line)"),
+                       "trend_dy", false, trend);
+    m_plotPointing = makePlot(tr("Pointing (″)"), tr("Planar pointing change from the first month (arcsec)"),
+                              "trend_pointing", true, trend);
+    m_trendSummary = new QLabel(trend);
+    m_trendSummary->setWordWrap(true);
+    trendLay->addWidget(m_plotX, 1);
+    trendLay->addWidget(m_plotY, 1);
+    trendLay->addWidget(m_plotPointing, 1);
+    trendLay->addWidget(m_trendSummary);
+    return trend;
+}
+
+QList<QCustomPlot*> FootprintWorkspace::trendPlots() const { return {m_plotX, m_plotY, m_plotPointing}; }
+
+// The filter expression: applied when valid; an invalid text is marked and the filter in force stays.
+void FootprintWorkspace::applyWhere() {
+    QString err;
+    const int keep = currentSourceRow();
+    if (!m_proxy->setExpression(m_where->text(), &err)) {
+        m_where->setError(err);
+        emit status(tr("Filter: %1 (the previous filter stays)").arg(err));
+        return;
+    }
+    m_where->setError(QString());
+    const QModelIndex p = m_proxy->mapFromSource(m_model->index(keep, 0));
+    if (p.isValid())
+        m_table->selectRow(p.row());
+    else if (m_proxy->rowCount() > 0)
+        m_table->selectRow(0);
+    viewChanged();
+    emit status(m_proxy->expression().isEmpty() ? tr("Filter cleared")
+                                                : tr("Filter: %1 of %2 shots").arg(m_proxy->rowCount()).arg(m_controller->count()));
+    emit modified();
+}
+
+// The view (verdict choice and filter) changed: the trend and the column plot follow it.
+void FootprintWorkspace::viewChanged() {
+    refreshTrend();
+    m_columnPlot->refresh();
+    updateCounts();
+}
+
 void FootprintWorkspace::refreshTrend() {
     TrendParams tp;
-    const TrendResult tr_ = m_controller->trend(tp);
+    const bool filtered = m_proxy->isFiltered();
+    const TrendResult tr_ =
+        filtered ? m_controller->trend(tp, [this](int row) { return m_proxy->acceptsSourceRow(row); }) : m_controller->trend(tp);
     for (QCustomPlot* p : {m_plotX, m_plotY, m_plotPointing}) p->clearGraphs();
     if (!tr_.ok) {
         // No empty legend boxes or axes left from an earlier list: the plots go, the reason stays.
@@ -724,12 +803,17 @@ void FootprintWorkspace::refreshTrend() {
         const int k = int(series.size());
         series[key] = k;
         for (QCustomPlot* p : {m_plotX, m_plotY}) {
+            // The shots and the monthly mean are one legend entry (its series key): a click on it
+            // hides both (four entries did not fit at 1024 px and were cut to "monthly mea").
             QCPGraph* g = p->addGraph();
             g->setName(key + tr(" shots"));
+            g->setProperty("series", key);
             g->setLineStyle(QCPGraph::lsNone);
             g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, colors[k % 4].lighter(150), 3));
+            g->removeFromLegend();
             QCPGraph* m = p->addGraph();
-            m->setName(key + tr(" monthly mean"));
+            m->setName(key);
+            m->setProperty("series", key);
             m->setPen(QPen(colors[k % 4], 2));
             m->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, colors[k % 4], 6));
         }
@@ -739,7 +823,9 @@ void FootprintWorkspace::refreshTrend() {
         pg->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, colors[k % 4], 6));
         return k;
     };
-    for (const Shot& s : m_controller->shots()) {
+    for (int i = 0; i < m_controller->count(); ++i) {
+        const Shot& s = *m_controller->shot(i);
+        if (filtered && !m_proxy->acceptsSourceRow(i)) continue;
         if (s.time.isEmpty() || s.beam.isEmpty() || s.effectiveVerdict() != Verdict::Good || !s.fit.ok) continue;
         const QString key = keyOf(s.camera.toStdString(), s.beam.toStdString());
         if (!first.count(key)) continue;
@@ -762,7 +848,19 @@ void FootprintWorkspace::refreshTrend() {
         if (data->isEmpty()) continue;
         summary += tr("%1: %2″ planar pointing change by the last month. ").arg(key).arg((data->constEnd() - 1)->value, 0, 'f', 3);
     }
-    m_trendSummary->setText(tr("Accepted shots only; 3σ rejection within each month; 0.31″ per px. ") + summary);
+    QString view;
+    if (filtered) {
+        int shown = 0;
+        for (int i = 0; i < m_controller->count(); ++i) shown += m_proxy->acceptsSourceRow(i);
+        view = tr("Filter applied: the trend of the %1 of %2 shots in view (%3). ")
+                   .arg(shown)
+                   .arg(m_controller->count())
+                   .arg(m_proxy->expression().isEmpty() ? m_filter->currentText()
+                        : m_filter->currentIndex() == 0 ? m_proxy->expression()
+                                                        : m_filter->currentText() + ", " + m_proxy->expression());
+    }
+    m_trendSummary->setText(view + tr("Change from the first month: shots (dots) and monthly means (lines) of the "
+                                      "accepted shots; 3σ rejection within each month; 0.31″ per px. ") + summary);
     for (QCustomPlot* p : {m_plotX, m_plotY, m_plotPointing}) {
         p->rescaleAxes();
         p->xAxis->scaleRange(1.08);
@@ -791,6 +889,12 @@ QJsonObject FootprintWorkspace::saveState() const {
     o["current"] = m_controller->current();
     if (const Shot* cur = m_controller->shot(currentSourceRow())) o["current_key"] = overrideKey(*cur);
     o["filter"] = ShotFilterProxy::filterKeys().value(m_filter->currentIndex());
+    // The text as typed (an invalid one too: it comes back marked, as it was left).
+    if (!m_where->text().trimmed().isEmpty()) o["where"] = m_where->text();
+    QJsonObject plot;
+    plot["x"] = m_columnPlot->xColumn();
+    plot["y"] = m_columnPlot->yColumn();
+    o["plot"] = plot;
     const DisplaySettings ds = m_display->settings();
     QJsonObject disp;
     disp["limits"] = int(ds.limits);
@@ -804,7 +908,7 @@ QJsonObject FootprintWorkspace::saveState() const {
 
 bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
                                       const std::vector<std::string>& at) {
-    if (!checkSessionKeys(state, {"inputs", "demo", "params", "overrides", "current", "current_key", "filter", "display"},
+    if (!checkSessionKeys(state, {"inputs", "demo", "params", "overrides", "current", "current_key", "filter", "where", "plot", "display"},
                           "footprint", error, doc, at))
         return false;
     // Every parameter from the session over the defaults.
@@ -836,6 +940,9 @@ bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, 
     m_panel->setParams(p);
     m_controller->setParams(p);
     m_filter->setCurrentIndex(filterIndex);
+    m_where->setText(state["where"].toString());
+    if (state.contains("plot"))
+        m_columnPlot->setColumns(state["plot"].toObject()["x"].toString("dx"), state["plot"].toObject()["y"].toString("dy"));
     if (state.contains("display")) {
         const QJsonObject disp = state["display"].toObject();
         DisplaySettings ds;

@@ -28,6 +28,8 @@ class ContactSheet;
 class DisplayControls;
 class HistogramView;
 class ColorBar;
+class FilterField;
+class ColumnPlot;
 
 class FootprintWorkspace : public QWidget {
     Q_OBJECT
@@ -45,6 +47,13 @@ public:
     HistogramView* histogram() const { return m_histogram; }
     ColorBar* colorBar() const { return m_colorBar; }
     QComboBox* filterBox() const { return m_filter; }
+    /// The filter expression field (shot_columns.hpp: the columns; core/common/row_filter: the language).
+    FilterField* whereField() const { return m_where; }
+    /// The "Plot" tab: any column against any other over the view's shots.
+    ColumnPlot* columnPlot() const { return m_columnPlot; }
+    /// The trend plots (x, y, pointing) and their summary line.
+    QList<QCustomPlot*> trendPlots() const;
+    QLabel* trendSummary() const { return m_trendSummary; }
     QLineEdit* noteField() const { return m_note; }
     QLabel* readout() const { return m_readout; }
     /// "reviewed 12 of 30 doubtful": shots judged doubtful by the pipeline that have a manual verdict.
@@ -61,7 +70,7 @@ public:
     bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
                       const std::vector<std::string>& at = {"footprint"});
 
-    /// "review", "sheet" (contact sheet) or "trend".
+    /// "review", "sheet" (contact sheet), "trend" or "plot".
     void showTab(const QString& name);
     void acceptCurrent();
     void rejectCurrent();
@@ -90,6 +99,9 @@ private:
     void showDetail(const ShotDetail& d);
     void updateCounts();
     void refreshTrend();
+    void applyWhere();
+    void viewChanged();
+    QWidget* buildTrendTab();
     void currentRowChanged();
     int currentSourceRow() const;
     void judgeCurrent(bool overridden, Verdict v);
@@ -117,6 +129,8 @@ private:
     FootprintParamsPanel* m_panel;
     QTabWidget* m_tabs;
     QWidget *m_reviewTab, *m_trendTab;
+    FilterField* m_where;
+    ColumnPlot* m_columnPlot;
     QCustomPlot *m_plotX, *m_plotY, *m_plotPointing;
     QLabel* m_trendSummary;
     ShotDetail m_detail;

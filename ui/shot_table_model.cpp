@@ -4,6 +4,8 @@
 #include <QFileInfo>
 #include <cmath>
 
+#include "ui/shot_columns.hpp"
+
 namespace lwb::ui {
 
 QString verdictLabel(Verdict v) { return QString::fromLatin1(core::footprint::verdictName(v)); }
@@ -107,7 +109,34 @@ void ShotFilterProxy::setVerdictFilter(Filter f) {
     invalidateFilter();
 }
 
+bool ShotFilterProxy::setExpression(const QString& text, QString* error) {
+    core::RowFilterParams p;
+    p.text = text.toStdString();
+    p.columns = shotColumnNames();
+    const core::RowFilterResult r = core::compileRowFilter(p);
+    if (!r.ok) {
+        if (error) *error = QString::fromStdString(r.error);
+        return false;
+    }
+    m_where = r.filter;
+    m_expression = r.empty ? QString() : text.trimmed();
+    invalidateFilter();
+    return true;
+}
+
 bool ShotFilterProxy::filterAcceptsRow(int row, const QModelIndex& parent) const {
+    if (!verdictAccepts(row, parent)) return false;
+    if (!m_where) return true;
+    const auto* model = qobject_cast<const ShotTableModel*>(sourceModel());
+    const Shot* s = model ? model->controller()->shot(row) : nullptr;
+    if (!s) return false;
+    const int roi = shotRoiIndex(*model->controller(), row);
+    std::vector<core::FilterCell> cells(shotColumnNames().size());
+    for (int c : m_where->usedColumns()) cells[size_t(c)] = shotCell(*s, roi, c);
+    return m_where->matches(cells);
+}
+
+bool ShotFilterProxy::verdictAccepts(int row, const QModelIndex& parent) const {
     if (m_filter == All) return true;
     const QModelIndex i = sourceModel()->index(row, 0, parent);
     const ShotState s = ShotState(sourceModel()->data(i, ShotTableModel::StateRole).toInt());

@@ -1,8 +1,12 @@
 #pragma once
 // Table model of the footprint shot list (reads the controller's shots) and a proxy that
-// filters by verdict and sorts numerically.
+// filters by verdict and by an expression over the columns (core/common/row_filter), and sorts
+// numerically.
 #include <QAbstractTableModel>
 #include <QSortFilterProxyModel>
+#include <memory>
+
+#include "core/common/row_filter.hpp"
 
 #include "ui/footprint_controller.hpp"
 
@@ -21,6 +25,7 @@ public:
     int columnCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role) const override;
     QVariant headerData(int section, Qt::Orientation o, int role) const override;
+    FootprintController* controller() const { return m_c; }
 
 private:
     FootprintController* m_c;
@@ -35,12 +40,25 @@ public:
     using QSortFilterProxyModel::QSortFilterProxyModel;
     void setVerdictFilter(Filter f);
     Filter verdictFilter() const { return m_filter; }
+    /// The expression filter (shot_columns.hpp names the columns). A blank text shows every
+    /// shot. An invalid text leaves the filter as it was: false with *error (position and what
+    /// was expected).
+    bool setExpression(const QString& text, QString* error);
+    /// The expression in force (the last valid one).
+    QString expression() const { return m_expression; }
+    /// True when a verdict choice or an expression hides shots.
+    bool isFiltered() const { return m_filter != All || m_where; }
+    /// Whether a source row passes both filters (the trend and the column plot use the view's shots).
+    bool acceptsSourceRow(int row) const { return filterAcceptsRow(row, {}); }
 
 protected:
     bool filterAcceptsRow(int row, const QModelIndex& parent) const override;
 
 private:
+    bool verdictAccepts(int row, const QModelIndex& parent) const;
     Filter m_filter = All;
+    QString m_expression;
+    std::shared_ptr<const core::RowFilter> m_where;
 };
 
 QString verdictLabel(Verdict v);

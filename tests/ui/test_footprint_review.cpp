@@ -281,7 +281,7 @@ private slots:
         w.show();
         fw->showTab("trend");
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        const QList<QCustomPlot*> plots = fw->findChildren<QCustomPlot*>();
+        const QList<QCustomPlot*> plots = fw->trendPlots();  // (the Plot tab has a plot of its own)
         QCOMPARE(plots.size(), 3);
         for (QCustomPlot* p : plots) {
             p->replot();
