@@ -712,7 +712,7 @@ private slots:
 
     /// Issue 30: at 1024 × 700 the calibration plots' titles collided ("ing & range calibration:
     /// converg"), "Pointing change (arc…" was clipped, text covered the uncertainty legend. Every
-    /// plot of the calibration, radiometry and SLR workspaces (each tab) fits its text in a 1024 ×
+    /// plot of the calibration, radiometry, SLR and footprint trend views fits its text in a 1024 ×
     /// 670 window with the demo loaded: titles, axis labels, tick labels, legends.
     void plotTextFitsAtTheSmallestWindow() {
         MainWindow w;
@@ -741,6 +741,8 @@ private slots:
         check("radiometry");
         w.showWorkspace("slr");
         check("slr");
+        w.showWorkspace("footprint:trend");
+        check("footprint trend");
         for (const QString& pr : problems) qWarning("%s", qPrintable(pr));
         QVERIFY2(problems.isEmpty(), qPrintable(QString("%1 problems, the first: %2").arg(problems.size()).arg(problems.value(0))));
     }
