@@ -6,6 +6,7 @@
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QPainter>
 #include <algorithm>
 #include <cmath>
@@ -69,6 +70,13 @@ QImage renderStretched(const cv::Mat& img, ColorMap map, StretchKind k, double l
     return out;
 }
 
+core::DisplayLimits contrastBiasLimits(double lo, double hi, double dxFraction, double dyFraction) {
+    const double bias = 0.5 + dxFraction;
+    const double contrast = std::pow(10.0, std::clamp(dyFraction, -4.0, 4.0));
+    const double centre = lo + bias * (hi - lo), half = (hi - lo) / contrast / 2;
+    return {true, centre - half, centre + half};
+}
+
 DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     auto* lay = new QHBoxLayout;  // becomes a wrapping row below (the window stays usable at 1024 px)
     m_limits = new QComboBox(this);
@@ -104,13 +112,46 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     sync();
     connect(m_limits, &QComboBox::currentIndexChanged, this, [this, sync] {
         sync();
+        m_cbBaseSet = false;  // limits chosen by hand: a reset has nothing to go back to
         emit changed();
     });
     connect(m_stretch, &QComboBox::currentIndexChanged, this, &DisplayControls::changed);
     for (QDoubleSpinBox* b : {m_lo, m_hi})
         connect(b, &QDoubleSpinBox::valueChanged, this, [this] {
-            if (m_limits->currentIndex() == int(LimitsMode::Manual)) emit changed();
+            if (m_limits->currentIndex() != int(LimitsMode::Manual)) return;
+            m_cbBaseSet = false;
+            emit changed();
         });
+}
+
+double DisplayControls::low() const { return m_lo->value(); }
+double DisplayControls::high() const { return m_hi->value(); }
+
+void DisplayControls::beginContrastBias() {
+    if (!m_cbBaseSet) {
+        m_cbBase = settings();
+        m_cbBaseSet = true;
+    }
+    m_cbLo = m_lo->value();
+    m_cbHi = m_hi->value();
+}
+
+void DisplayControls::dragContrastBias(double dxFraction, double dyFraction) {
+    const core::DisplayLimits l = contrastBiasLimits(m_cbLo, m_cbHi, dxFraction, dyFraction);
+    const QSignalBlocker b1(m_limits), b2(m_lo), b3(m_hi);
+    m_limits->setCurrentIndex(int(LimitsMode::Manual));
+    m_lo->setReadOnly(false);
+    m_hi->setReadOnly(false);
+    m_lo->setValue(l.lo);
+    m_hi->setValue(std::max(l.hi, m_lo->value() + 1));  // the fields keep whole DN: never an empty window
+    emit changed();
+}
+
+void DisplayControls::resetContrastBias() {
+    if (!m_cbBaseSet) return;
+    const DisplaySettings base = m_cbBase;
+    m_cbBaseSet = false;
+    setSettings(base);
 }
 
 DisplaySettings DisplayControls::settings() const {
@@ -196,7 +237,9 @@ void HistogramView::paintEvent(QPaintEvent*) {
 
 ColorBar::ColorBar(QWidget* parent) : QWidget(parent) {
     setMinimumSize(140, 38);
-    setToolTip(tr("Colour scale between the display limits (DN)"));
+    setToolTip(tr("Colour scale between the display limits (DN). Drag: bias (left/right) and contrast (up/down), "
+                  "as DS9; double-click: reset"));
+    setCursor(Qt::SizeAllCursor);
 }
 
 void ColorBar::setScale(ColorMap map, StretchKind k, double lo, double hi) {
@@ -233,6 +276,26 @@ QRect ColorBar::barRect() const {
 QRect ColorBar::unitRect() const {
     const QRect bar = barRect();
     return QRect(bar.right() + 7, bar.top(), fontMetrics().horizontalAdvance(tr("DN")), bar.height());
+}
+
+void ColorBar::mousePressEvent(QMouseEvent* e) {
+    if (!m_valid) return;
+    m_dragging = true;
+    m_dragStart = e->position();
+    emit contrastBiasStarted();
+}
+
+void ColorBar::mouseMoveEvent(QMouseEvent* e) {
+    if (!m_dragging) return;
+    const QPointF d = e->position() - m_dragStart;
+    emit contrastBiasDragged(d.x() / std::max(1, barRect().width()), d.y() / 150.0);
+}
+
+void ColorBar::mouseReleaseEvent(QMouseEvent*) { m_dragging = false; }
+
+void ColorBar::mouseDoubleClickEvent(QMouseEvent*) {
+    m_dragging = false;
+    emit contrastBiasResetRequested();
 }
 
 void ColorBar::paintEvent(QPaintEvent*) {

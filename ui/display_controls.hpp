@@ -29,6 +29,14 @@ core::DisplayLimits displayLimits(const cv::Mat& img, const DisplaySettings& s);
 /// Renders a CV_32FC1 image between lo and hi through the stretch and the colour map.
 QImage renderStretched(const cv::Mat& img, ColorMap map, core::StretchKind k, double lo, double hi);
 
+/// SAOImage DS9's contrast and bias as display limits. DS9 maps a value v (0..1 between the
+/// limits) to the colour at (v − bias)·contrast + ½; here the limits move instead, so that the
+/// low and high fields say what is shown: the middle colour goes to lo + bias·(hi − lo) and the
+/// width becomes (hi − lo) / contrast. A drag sets them as DS9's right-drag does: x the bias
+/// (right: the window moves up, the image darkens), y the contrast (down: more contrast, ×10 for
+/// a drag of the full height `dyFraction` = 1; up: less). dxFraction = dy... = 0 leaves them.
+core::DisplayLimits contrastBiasLimits(double lo, double hi, double dxFraction, double dyFraction);
+
 /// The limits and stretch selectors and the low / high fields (editable in manual mode; they
 /// show the computed limits otherwise).
 class DisplayControls : public QWidget {
@@ -41,6 +49,18 @@ public:
     void showLimits(double lo, double hi);
     QComboBox* limitsBox() const { return m_limits; }
     QComboBox* stretchBox() const { return m_stretch; }
+    /// The limits in the fields (those in use, or the manual ones).
+    double low() const;
+    double high() const;
+
+    /// A contrast / bias drag (on an image view or the colour bar): begin() takes the limits in
+    /// use; drag() sets Manual with contrastBiasLimits() of them (one changed()). The settings
+    /// before the first drag are kept for reset(), which goes back to them (a change of the
+    /// limits by hand forgets them).
+    void beginContrastBias();
+    void dragContrastBias(double dxFraction, double dyFraction);
+    void resetContrastBias();
+    bool contrastBiasChanged() const { return m_cbBaseSet; }
 
 signals:
     void changed();
@@ -48,6 +68,9 @@ signals:
 private:
     QComboBox *m_limits, *m_stretch;
     QDoubleSpinBox *m_lo, *m_hi;
+    double m_cbLo = 0, m_cbHi = 1;  // the limits when the drag began
+    DisplaySettings m_cbBase;       // the settings before the first drag
+    bool m_cbBaseSet = false;
 };
 
 /// Histogram of the ROI's values (log counts) over their range, with the display limits drawn.
@@ -90,8 +113,19 @@ public:
     QRect barRect() const;
     QRect unitRect() const;
 
+signals:
+    /// A drag on the bar (any button): DS9's contrast (vertical, per 150 px) and bias
+    /// (horizontal, per the bar's width), as ImageView's; a double-click resets.
+    void contrastBiasStarted();
+    void contrastBiasDragged(double dxFraction, double dyFraction);
+    void contrastBiasResetRequested();
+
 protected:
     void paintEvent(class QPaintEvent*) override;
+    void mousePressEvent(class QMouseEvent*) override;
+    void mouseMoveEvent(class QMouseEvent*) override;
+    void mouseReleaseEvent(class QMouseEvent*) override;
+    void mouseDoubleClickEvent(class QMouseEvent*) override;
     QSize sizeHint() const override { return {260, 44}; }
 
 private:
@@ -99,6 +133,8 @@ private:
     core::StretchKind m_stretch = core::StretchKind::Linear;
     double m_lo = 0, m_hi = 1;
     bool m_valid = false;
+    bool m_dragging = false;
+    QPointF m_dragStart;
 };
 
 }  // namespace lwb::ui

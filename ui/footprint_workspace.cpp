@@ -28,6 +28,9 @@
 #include "core/footprint/image_io.hpp"
 #include "ui/save_path.hpp"
 #include "ui/app_undo.hpp"
+#include "ui/blink_view.hpp"
+#include "ui/contrast_bias.hpp"
+#include "ui/image_regions.hpp"
 #include "ui/params_command.hpp"
 #include "ui/color_maps.hpp"
 #include "ui/column_plot.hpp"
@@ -195,7 +198,8 @@ QWidget* FootprintWorkspace::buildShotList() {
     m_table->setSortingEnabled(true);
     m_table->sortByColumn(-1, Qt::AscendingOrder);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    // Several shots (Ctrl+click, Shift+click, Shift+arrows) for Blink / tile; the review keys act on the current one.
+    m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
     // Tab leaves the table for the next widget, as everywhere else in the window. A table moves
     // from cell to cell on Tab by default, and past the last column to the next row: the shot
     // changed under the reviewer's hands (issue 30). The shots are browsed with the arrow keys.
@@ -232,6 +236,10 @@ QWidget* FootprintWorkspace::buildShotList() {
     overrideRow->addWidget(reject);
     overrideRow->addWidget(next);
     overrideRow->addWidget(clearOv);
+    auto* blink = new QPushButton(tr("Blink / tile (B)"), left);
+    blink->setToolTip(tr("The selected shots (Ctrl+click, Shift+click) in a grid or blinking, zoom and display locked (B)"));
+    overrideRow->addWidget(blink);
+    connect(blink, &QPushButton::clicked, this, [this] { openBlinkView(); });
     leftLay->addLayout(wrapRow(overrideRow));  // wraps in a narrow window
     m_note = new QLineEdit(left);
     m_note->setPlaceholderText(tr("Note on this shot (E; Enter keeps it and goes back to the list)"));
@@ -307,6 +315,11 @@ void FootprintWorkspace::buildCentre() {
     revLay->addLayout(scaleRow);
     m_readout = new QLabel(tr(kReadoutHint), review);
     revLay->addWidget(m_readout);
+    m_regionStats = new QLabel(review);  // the regions' statistics (right-click a view: box / circle regions)
+    m_regionStats->setObjectName("regionStats");
+    m_regionStats->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_regionStats->setVisible(false);
+    revLay->addWidget(m_regionStats);
     m_details = new QLabel(review);
     m_details->setTextFormat(Qt::RichText);
     m_details->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -328,6 +341,15 @@ void FootprintWorkspace::buildCentre() {
         showDetail(m_detail);
     });
     connect(m_display, &DisplayControls::changed, this, [this] { showDetail(m_detail); });
+    wireContrastBias(m_display, {m_roiView, m_frameView}, m_colorBar);
+    for (ImageView* v : {m_roiView, m_frameView}) {
+        connect(v, &ImageView::regionsChanged, this, [this] {
+            const QString text = regionsSummary({{tr("ROI"), m_roiView}, {tr("Frame"), m_frameView}});
+            m_regionStats->setText(text);
+            m_regionStats->setVisible(!text.isEmpty());
+        });
+        connect(v, &ImageView::status, this, &FootprintWorkspace::status);
+    }
     for (QCheckBox* c : {m_showGauss, m_showTefm, m_showDomain, m_showCentres})
         connect(c, &QCheckBox::toggled, this, [this] { m_roiView->update(); });
     connect(m_roiView, &ImageView::pixelHovered, this, [this](double x, double y, double v) {
@@ -410,6 +432,8 @@ void FootprintWorkspace::wireController() {
         key(Qt::Key_A, &FootprintWorkspace::acceptCurrent);
         key(Qt::Key_R, &FootprintWorkspace::rejectCurrent);
         key(Qt::Key_N, &FootprintWorkspace::nextUnreviewed);
+        auto* b = new QShortcut(QKeySequence(Qt::Key_B), target, nullptr, nullptr, Qt::WidgetShortcut);
+        connect(b, &QShortcut::activated, this, [this] { openBlinkView(); });
         auto* e = new QShortcut(QKeySequence(Qt::Key_E), target, nullptr, nullptr, Qt::WidgetShortcut);
         connect(e, &QShortcut::activated, this, [this] {
             m_note->setFocus();
@@ -586,6 +610,29 @@ void FootprintWorkspace::exportDialog(bool acceptedOnly) {
                              : tr("Exported the review table (%1 shots) to %2").arg(m_controller->count()).arg(path));
 }
 
+BlinkView* FootprintWorkspace::openBlinkView() {
+    QList<int> rows;  // source rows in the table's order
+    for (const QModelIndex& i : m_table->selectionModel()->selectedRows()) rows << i.row();
+    std::sort(rows.begin(), rows.end());
+    if (rows.size() < 2) {
+        rows.clear();  // fewer than two selected: the view's first shots
+        for (int p = 0; p < m_proxy->rowCount() && rows.size() < 9; ++p) rows << p;
+    }
+    std::vector<BlinkFrame> frames;
+    for (int p : rows) {
+        const Shot* s = m_controller->shot(m_proxy->mapToSource(m_proxy->index(p, 0)).row());
+        if (!s || s->roi.empty()) continue;
+        frames.push_back({QFileInfo(s->file).fileName(), s->roi, QPointF(s->origin), s->fit.ok, QPointF(s->fit.x, s->fit.y)});
+    }
+    if (frames.size() < 2) {
+        emit status(tr("Blink / tile needs two shots with an image: select them in the table (Ctrl+click, Shift+click)"));
+        return nullptr;
+    }
+    auto* v = new BlinkView(std::move(frames), colorMapFromIndex(m_colorMap->currentIndex()), m_display->settings(), this);
+    v->show();
+    return v;
+}
+
 void FootprintWorkspace::updateCounts() {
     const auto c = m_controller->counts();
     QString t = tr("<span style='color:#2e8b57'>%1 good</span> · <span style='color:#d68910'>%2 doubtful</span> · "
@@ -629,6 +676,8 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
     const core::DisplayLimits lim = displayLimits(d.roi, ds);
     m_display->showLimits(lim.lo, lim.hi);
     m_roiView->setImage(d.roi, renderStretched(d.roi, cm, ds.stretch, lim.lo, lim.hi), QPointF(d.origin));
+    m_roiView->setExportName(QFileInfo(s->file).completeBaseName() + "_roi");
+    m_frameView->setExportName(QFileInfo(s->file).completeBaseName() + "_frame");
     m_histogram->setData(d.roi, lim.lo, lim.hi);
     m_colorBar->setScale(cm, ds.stretch, lim.lo, lim.hi);
     const FootprintResult& r = d.selected;

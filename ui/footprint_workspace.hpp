@@ -83,6 +83,11 @@ public:
     bool exportTable(const QString& path, bool acceptedOnly, QString* error, int* rows = nullptr);
     /// Asks for a file and exports (status message or error).
     void exportDialog(bool acceptedOnly);
+    /// Blink / tile window of the shots selected in the table (two or more with an image; the
+    /// current view's first shots when fewer are selected). Null when there are not two.
+    class BlinkView* openBlinkView();
+    /// The line under the views with the regions' statistics.
+    QLabel* regionStatsLabel() const { return m_regionStats; }
 
 signals:
     void modified();               ///< something a session would save changed
@@ -122,6 +127,7 @@ private:
     HistogramView* m_histogram;
     ColorBar* m_colorBar;
     QLabel *m_counts, *m_reviewed, *m_readout, *m_details;
+    QLabel* m_regionStats = nullptr;
     QCheckBox *m_showGauss, *m_showTefm, *m_showDomain, *m_showCentres;
     ImageView *m_roiView, *m_frameView;
     ContactSheet* m_sheet;

@@ -1,13 +1,22 @@
 #include "ui/image_view.hpp"
 
+#include <QActionGroup>
+#include <QFileInfo>
+#include <QInputDialog>
 #include <QKeyEvent>
 #include <QMenu>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QPdfWriter>
 #include <QRubberBand>
+#include <QSaveFile>
+#include <QSvgGenerator>
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
+
+#include "ui/image_regions.hpp"
+#include "ui/save_path.hpp"
 
 namespace lwb::ui {
 
@@ -37,7 +46,8 @@ ImageView::ImageView(QWidget* parent) : QWidget(parent) {
     // Right-button presses and releases come here (box zoom, the menu) on every platform.
     setContextMenuPolicy(Qt::PreventContextMenu);
     setToolTip(tr("Wheel: zoom · drag: pan · right-drag or Shift+drag: zoom to the box · "
-                  "2, 4, 8: zoom steps · 1, Home or double-click: fit · right-click: menu"));
+                  "middle-drag or Ctrl+drag: contrast (up/down) and bias (left/right) · "
+                  "2, 4, 8: zoom steps · 1, Home or double-click: fit · right-click: menu (regions, export)"));
 }
 
 void ImageView::setImage(const cv::Mat& data, const QImage& rendered, QPointF origin) {
@@ -48,6 +58,7 @@ void ImageView::setImage(const cv::Mat& data, const QImage& rendered, QPointF or
     m_origin = origin;
     if (sizeChanged || m_fit) fitToWindow();
     update();
+    if (!m_regions.isEmpty()) emit regionsChanged();  // their statistics are of the new data
 }
 
 void ImageView::clear(const QString& message) {
@@ -57,6 +68,7 @@ void ImageView::clear(const QString& message) {
     m_badge.clear();
     m_keepClear.clear();
     update();
+    if (!m_regions.isEmpty()) emit regionsChanged();
 }
 
 void ImageView::setOverlay(OverlayFn fn) {
@@ -86,6 +98,32 @@ void ImageView::fitToWindow() {
     m_zoom = fitZoom();
     m_offset = QPointF((width() - m_zoom * m_image.width()) / 2, (height() - m_zoom * m_image.height()) / 2);
     update();
+    emitViewChanged();
+}
+
+void ImageView::emitViewChanged() {
+    if (!m_applyingState) emit viewChanged();
+}
+
+ImageView::ViewState ImageView::viewState() const {
+    ViewState s;
+    s.fit = m_fit;
+    s.magnification = m_zoom / fitZoom();
+    s.centre = toImage(QPointF(width(), height()) / 2);
+    return s;
+}
+
+void ImageView::setViewState(const ViewState& s) {
+    m_applyingState = true;
+    if (s.fit || m_image.isNull()) {
+        fitToWindow();
+    } else {
+        m_zoom = std::clamp(fitZoom() * s.magnification, kMinZoom, kMaxZoom);
+        m_offset = QPointF(width(), height()) / 2 - (s.centre + QPointF(0.5, 0.5)) * m_zoom;
+        m_fit = false;
+        update();
+    }
+    m_applyingState = false;
 }
 
 void ImageView::zoomAbout(QPointF widgetPos, double zoom) {
@@ -94,6 +132,7 @@ void ImageView::zoomAbout(QPointF widgetPos, double zoom) {
     m_offset = widgetPos - (at + QPointF(0.5, 0.5)) * m_zoom;
     m_fit = false;
     update();
+    emitViewChanged();
 }
 
 // The steps are relative to the fit rather than screen pixels per image pixel: a 32 px ROI
@@ -115,6 +154,7 @@ void ImageView::zoomToBox(const QRectF& widgetBox) {
     m_offset = QPointF(width(), height()) / 2 - (centre + QPointF(0.5, 0.5)) * m_zoom;
     m_fit = false;
     update();
+    emitViewChanged();
 }
 
 void ImageView::showMenu(const QPoint& globalPos) {
@@ -124,6 +164,26 @@ void ImageView::showMenu(const QPoint& globalPos) {
     for (int step : {2, 4, 8}) menu.addAction(tr("%1×\t%1").arg(step), this, [this, step] { setZoomStep(step); });
     menu.addSeparator();
     menu.addAction(tr("Box zoom: right-drag or Shift+drag"))->setEnabled(false);
+    menu.addSeparator();
+    auto* modes = new QActionGroup(&menu);
+    const std::pair<MouseMode, QString> choices[] = {{MouseMode::Pan, tr("Mouse: pan")},
+                                                     {MouseMode::BoxRegion, tr("Mouse: box regions")},
+                                                     {MouseMode::CircleRegion, tr("Mouse: circle regions")}};
+    for (const auto& [mode, text] : choices) {
+        QAction* a = menu.addAction(text, this, [this, m = mode] { setMouseMode(m); });
+        a->setCheckable(true);
+        a->setChecked(m_mode == mode);
+        modes->addAction(a);
+    }
+    const int under = regionAt(mapFromGlobal(globalPos));
+    const int target = under >= 0 ? under : m_selected;
+    menu.addAction(tr("Delete region\tDelete"), this, [this, target] { deleteRegion(target); })->setEnabled(target >= 0);
+    menu.addAction(tr("Delete all regions"), this, [this] { setRegions({}); })->setEnabled(!m_regions.isEmpty());
+    menu.addSeparator();
+    menu.addAction(tr("Reset contrast and bias"), this, &ImageView::contrastBiasResetRequested);
+    menu.addAction(tr("Contrast / bias: middle-drag or Ctrl+drag"))->setEnabled(false);
+    menu.addSeparator();
+    menu.addAction(tr("Export view (PNG, SVG, PDF)…"), this, [this] { exportDialog(); });
     menu.exec(globalPos);
 }
 
@@ -139,7 +199,7 @@ QRectF ImageView::visibleImageRect() const {
 // (issue 30): it goes to the first corner where it leaves the markers in view, and when the
 // whole badge (the verdict and every failed criterion) fits in none, its first line does (the
 // criteria are in the table's Reasons column). The layout follows the zoom and the pan.
-ImageView::BadgeLayout ImageView::layoutBadge() const {
+ImageView::BadgeLayout ImageView::layoutBadge(const QRect& area) const {
     if (m_badge.isEmpty() || m_image.isNull()) return {};
     QFont f = font();
     f.setBold(true);
@@ -153,11 +213,11 @@ ImageView::BadgeLayout ImageView::layoutBadge() const {
     const QStringList texts = first == m_badge ? QStringList{m_badge} : QStringList{m_badge, first + QStringLiteral(" …")};
     QSize size;
     for (const QString& text : texts) {
-        size = fm.boundingRect(QRect(0, 0, std::max(40, width() - 16), 2000), Qt::TextWordWrap, text).size() + QSize(12, 8);
-        const QRect box = placeBadge(rect(), size, 8, keep, clearance);
+        size = fm.boundingRect(QRect(0, 0, std::max(40, area.width() - 16), 2000), Qt::TextWordWrap, text).size() + QSize(12, 8);
+        const QRect box = placeBadge(area, size, 8, keep, clearance);
         if (!box.isEmpty()) return {box, text};
     }
-    return {QRect(QPoint(8, 8), size), texts.last()};  // a view too small for any clear corner
+    return {QRect(area.topLeft() + QPoint(8, 8), size), texts.last()};  // a view too small for any clear corner
 }
 
 void ImageView::paintEvent(QPaintEvent*) {
@@ -167,6 +227,15 @@ void ImageView::paintEvent(QPaintEvent*) {
         p.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignCenter | Qt::TextWordWrap, placeholderText());
         return;
     }
+    paintContent(p, rect());
+    if (hasFocus()) {  // reached by Tab: the zoom keys act here
+        p.setPen(QPen(palette().color(QPalette::Highlight), 2));
+        p.setBrush(Qt::NoBrush);
+        p.drawRect(QRectF(rect()).adjusted(1, 1, -1, -1));
+    }
+}
+
+void ImageView::paintContent(QPainter& p, const QRect& area) const {
     p.save();
     p.translate(m_offset);
     p.scale(m_zoom, m_zoom);
@@ -175,8 +244,10 @@ void ImageView::paintEvent(QPaintEvent*) {
     p.translate(0.5, 0.5);  // now pixel centres are at integer coordinates
     p.setRenderHint(QPainter::Antialiasing, true);
     if (m_overlay) m_overlay(p, m_zoom);
+    paintRegions(p);
     p.restore();
-    const BadgeLayout badge = layoutBadge();
+    for (int i = 0; i < m_regions.size(); ++i) drawRegionLabel(p, m_regions[i], i, [this](QPointF q) { return toWidget(q); });
+    const BadgeLayout badge = layoutBadge(area);
     if (!badge.box.isEmpty()) {
         QFont f = font();
         f.setBold(true);
@@ -187,11 +258,10 @@ void ImageView::paintEvent(QPaintEvent*) {
         p.setPen(Qt::white);
         p.drawText(badge.box.adjusted(6, 4, -6, -4), Qt::TextWordWrap, badge.text);
     }
-    if (hasFocus()) {  // reached by Tab: the zoom keys act here
-        p.setPen(QPen(palette().color(QPalette::Highlight), 2));
-        p.setBrush(Qt::NoBrush);
-        p.drawRect(QRectF(rect()).adjusted(1, 1, -1, -1));
-    }
+}
+
+void ImageView::paintRegions(QPainter& p) const {
+    for (int i = 0; i < m_regions.size(); ++i) drawRegion(p, m_regions[i], m_zoom, i == m_selected);
 }
 
 void ImageView::wheelEvent(QWheelEvent* e) {
@@ -201,13 +271,63 @@ void ImageView::wheelEvent(QWheelEvent* e) {
 
 void ImageView::mousePressEvent(QMouseEvent* e) {
     m_dragStart = e->position();
+    m_rightPress = false;
+    const bool ctrl = e->modifiers() & Qt::ControlModifier;
+    if (e->button() == Qt::MiddleButton || (ctrl && (e->button() == Qt::LeftButton || e->button() == Qt::RightButton))) {
+        if (m_image.isNull()) return;
+        m_drag = Drag::Contrast;  // DS9: x sets the bias, y the contrast
+        emit contrastBiasStarted();
+        return;
+    }
     m_rightPress = e->button() == Qt::RightButton;
     if (m_rightPress || (e->button() == Qt::LeftButton && (e->modifiers() & Qt::ShiftModifier))) {
         m_drag = Drag::Box;
+    } else if (e->button() == Qt::LeftButton && m_mode != MouseMode::Pan && !m_image.isNull()) {
+        regionPress(e->position());
     } else if (e->button() == Qt::LeftButton) {
         m_drag = Drag::Pan;
         m_offsetStart = m_offset;
     }
+}
+
+void ImageView::regionPress(QPointF pos) {
+    const int hit = regionAt(pos);
+    if (hit >= 0) {
+        m_drag = Drag::MoveRegion;
+        m_selected = hit;
+        m_regionStart = m_regions[hit];
+    } else {
+        m_drag = Drag::DrawRegion;
+        core::RegionStatsParams r;
+        r.shape = m_mode == MouseMode::CircleRegion ? core::RegionShape::Circle : core::RegionShape::Box;
+        const QPointF at = toImage(pos);
+        r.centerX = at.x();
+        r.centerY = at.y();
+        m_regions << r;
+        m_selected = int(m_regions.size()) - 1;
+    }
+    update();
+}
+
+void ImageView::regionMove(QPointF pos) {
+    if (m_selected < 0 || m_selected >= m_regions.size()) return;
+    core::RegionStatsParams& r = m_regions[m_selected];
+    const QPointF a = toImage(m_dragStart), b = toImage(pos);
+    if (m_drag == Drag::MoveRegion) {
+        r.centerX = m_regionStart.centerX + (b.x() - a.x());
+        r.centerY = m_regionStart.centerY + (b.y() - a.y());
+    } else if (r.shape == core::RegionShape::Circle) {  // from the centre out, as DS9 draws
+        r.centerX = a.x();
+        r.centerY = a.y();
+        r.radius = std::hypot(b.x() - a.x(), b.y() - a.y());
+    } else {  // corner to corner
+        r.centerX = (a.x() + b.x()) / 2;
+        r.centerY = (a.y() + b.y()) / 2;
+        r.width = std::abs(b.x() - a.x());
+        r.height = std::abs(b.y() - a.y());
+    }
+    update();
+    emit regionsChanged();
 }
 
 void ImageView::mouseMoveEvent(QMouseEvent* e) {
@@ -215,6 +335,12 @@ void ImageView::mouseMoveEvent(QMouseEvent* e) {
         m_offset = m_offsetStart + (e->position() - m_dragStart);
         m_fit = false;
         update();
+        emitViewChanged();
+    } else if (m_drag == Drag::Contrast) {
+        const QPointF d = e->position() - m_dragStart;
+        emit contrastBiasDragged(d.x() / std::max(1, width()), d.y() / std::max(1, height()));
+    } else if (m_drag == Drag::DrawRegion || m_drag == Drag::MoveRegion) {
+        regionMove(e->position());
     } else if (m_drag == Drag::Box && (m_band || (e->position() - m_dragStart).manhattanLength() >= 5)) {
         if (!m_band) m_band = new QRubberBand(QRubberBand::Rectangle, this);
         m_band->setGeometry(QRectF(m_dragStart, e->position()).normalized().toRect());
@@ -232,6 +358,17 @@ void ImageView::mouseReleaseEvent(QMouseEvent* e) {
     const bool rightClick = m_rightPress;
     m_drag = Drag::None;
     m_rightPress = false;
+    if (drag == Drag::DrawRegion) {
+        // A click (no drag) draws nothing: it selects the region under it, if any.
+        if ((e->position() - m_dragStart).manhattanLength() < 4 && m_selected >= 0) {
+            m_regions.remove(m_selected);
+            m_selected = regionAt(e->position());
+            update();
+            return;
+        }
+        emit regionsChanged();
+        return;
+    }
     if (drag != Drag::Box) return;
     const bool boxDrawn = m_band && m_band->isVisible();
     if (m_band) m_band->hide();
@@ -250,12 +387,156 @@ void ImageView::keyPressEvent(QKeyEvent* e) {
         case Qt::Key_2: setZoomStep(2); break;
         case Qt::Key_4: setZoomStep(4); break;
         case Qt::Key_8: setZoomStep(8); break;
+        case Qt::Key_Delete:
+        case Qt::Key_Backspace:
+            if (m_selected >= 0) deleteRegion(m_selected);
+            else QWidget::keyPressEvent(e);
+            break;
         default: QWidget::keyPressEvent(e);
     }
 }
 
-void ImageView::resizeEvent(QResizeEvent*) {
-    if (m_fit) fitToWindow();
+// A zoomed view keeps its zoom and the image point at its centre (blink tiles change size).
+void ImageView::resizeEvent(QResizeEvent* e) {
+    if (m_fit) {
+        fitToWindow();
+        return;
+    }
+    const QSize old = e->oldSize();
+    if (!old.isValid()) return;
+    const QPointF centre = toImage(QPointF(old.width(), old.height()) / 2);
+    m_offset = QPointF(width(), height()) / 2 - (centre + QPointF(0.5, 0.5)) * m_zoom;
+}
+
+void ImageView::setMouseMode(MouseMode m) {
+    m_mode = m;
+    setCursor(m == MouseMode::Pan ? Qt::ArrowCursor : Qt::CrossCursor);
+}
+
+void ImageView::setRegions(const QVector<core::RegionStatsParams>& regions) {
+    m_regions = regions;
+    m_selected = -1;
+    update();
+    emit regionsChanged();
+}
+
+void ImageView::deleteRegion(int index) {
+    if (index < 0 || index >= m_regions.size()) return;
+    m_regions.remove(index);
+    m_selected = -1;
+    update();
+    emit regionsChanged();
+}
+
+QVector<core::RegionStatsResult> ImageView::regionStats() const {
+    QVector<core::RegionStatsResult> out;
+    for (const core::RegionStatsParams& r : m_regions) {
+        if (m_data.empty()) {
+            core::RegionStatsResult none;
+            none.error = "no image";
+            out << none;
+        } else {
+            out << core::regionStats(m_data, r);
+        }
+    }
+    return out;
+}
+
+// The last region drawn is on top: it is the one a press takes.
+int ImageView::regionAt(QPointF widgetPos) const {
+    const QPointF at = toImage(widgetPos);
+    const double slack = 3 / m_zoom;  // a few screen pixels around the outline
+    for (int i = int(m_regions.size()) - 1; i >= 0; --i)
+        if (regionContains(m_regions[i], at, slack)) return i;
+    return -1;
+}
+
+QRect ImageView::shownImageRect() const {
+    const QRectF img(toWidget(QPointF(-0.5, -0.5)), toWidget(QPointF(m_image.width() - 0.5, m_image.height() - 0.5)));
+    return (img & QRectF(rect())).toAlignedRect() & rect();
+}
+
+int ImageView::exportHeight(int width) const {
+    const QRect area = shownImageRect();
+    if (area.isEmpty()) return 0;
+    return std::max(1, int(std::lround(double(width) * area.height() / area.width())));
+}
+
+QImage ImageView::renderView(int width) const {
+    const QRect area = shownImageRect();
+    if (m_image.isNull() || area.isEmpty() || width < 1) return {};
+    QImage out(width, exportHeight(width), QImage::Format_ARGB32);
+    out.fill(Qt::black);
+    QPainter p(&out);
+    const double s = double(width) / area.width();
+    p.scale(s, s);
+    p.translate(-area.topLeft());
+    paintContent(p, area);
+    return out;
+}
+
+bool ImageView::exportView(const QString& path, int width, QString* error) const {
+    const QRect area = shownImageRect();
+    if (m_image.isNull() || area.isEmpty()) {
+        *error = tr("no image to export");
+        return false;
+    }
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    const QSize size(width, exportHeight(width));
+    auto draw = [&](QPaintDevice* dev, double s) {
+        QPainter p(dev);
+        p.scale(s, s);
+        p.translate(-area.topLeft());
+        paintContent(p, area);
+        return p.isActive();
+    };
+    QSaveFile f(path);  // written whole, then renamed into place
+    if (!f.open(QIODevice::WriteOnly)) {
+        *error = f.errorString();
+        return false;
+    }
+    bool drawn = false;
+    if (suffix == "svg") {
+        QSvgGenerator svg;
+        svg.setOutputDevice(&f);
+        svg.setSize(size);
+        svg.setViewBox(QRect(QPoint(0, 0), size));
+        svg.setTitle(m_exportName);
+        drawn = draw(&svg, double(width) / area.width());
+    } else if (suffix == "pdf") {
+        QPdfWriter pdf(&f);
+        pdf.setResolution(96);
+        pdf.setPageSize(QPageSize(QSizeF(size), QPageSize::Point));  // 1 px = 1 pt
+        pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+        drawn = draw(&pdf, double(pdf.width()) / area.width());
+    } else {
+        const QImage img = renderView(width);
+        drawn = !img.isNull() && img.save(&f, "PNG");
+    }
+    if (!drawn || !f.commit()) {
+        *error = drawn ? f.errorString() : tr("cannot draw the view into %1").arg(path);
+        return false;
+    }
+    return true;
+}
+
+bool ImageView::exportDialog() {
+    if (m_image.isNull()) return false;
+    bool ok = false;
+    const int width = QInputDialog::getInt(this, tr("Export view"), tr("Width in pixels (the height follows the view):"),
+                                           std::max(1024, shownImageRect().width()), 16, 16000, 1, &ok);
+    if (!ok) return false;
+    const QString name = (m_exportName.isEmpty() ? QStringLiteral("view") : m_exportName);
+    const QString path = askSavePath(this, tr("Export view"), "paths/lastViewExport", name + ".png",
+                                     tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)"));
+    if (path.isEmpty()) return false;
+    QString err;
+    if (!exportView(path, width, &err)) {
+        emit status(tr("Cannot export the view: %1").arg(err));
+        return false;
+    }
+    emit status(tr("Exported the view (%1 × %2 px) to %3").arg(width).arg(exportHeight(width)).arg(path));
+    return true;
 }
 
 }  // namespace lwb::ui

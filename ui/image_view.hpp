@@ -4,13 +4,23 @@
 // about the cursor and a drag pans; a right-drag or Shift+drag zooms to the box (as the plots
 // do, ui/plot_kit); the zoom steps 2×, 4× and 8× magnify the fitted view about its centre
 // (keys 2, 4, 8, or the right-click menu), and 1, Home or a double-click fit it again.
+// DS9's other gestures: a middle-drag or Ctrl+drag asks for contrast (up/down) and bias
+// (left/right) of the display mapping (contrastBias* signals: the owner of the display limits
+// applies them, ui/contrast_bias.hpp); in a region mode (right-click menu) a drag draws a box or
+// circle region, a drag on a region moves it, Delete removes the selected one, and the regions'
+// pixel statistics come from the core (core/common/region_stats.hpp). The view as shown, with
+// its overlays, regions and badge, exports to PNG, SVG or PDF at a chosen size.
 #include <QImage>
 #include <QPointF>
 #include <QRect>
 #include <QVector>
 #include <QWidget>
+
+class QPainter;
 #include <functional>
 #include <opencv2/core.hpp>
+
+#include "core/common/region_stats.hpp"
 
 class QRubberBand;
 
@@ -25,6 +35,43 @@ class ImageView : public QWidget {
     Q_OBJECT
 public:
     explicit ImageView(QWidget* parent = nullptr);
+
+    /// What a left drag does: pan, or draw box / circle regions (a drag on a region moves it).
+    enum class MouseMode { Pan, BoxRegion, CircleRegion };
+    void setMouseMode(MouseMode m);
+    MouseMode mouseMode() const { return m_mode; }
+
+    /// Regions in data coordinates (as the overlay's); they stay when the image changes.
+    const QVector<core::RegionStatsParams>& regions() const { return m_regions; }
+    void setRegions(const QVector<core::RegionStatsParams>& regions);
+    int selectedRegion() const { return m_selected; }
+    void deleteRegion(int index);
+    /// Statistics of every region on the current data (data coordinates; add origin() for the
+    /// full image's).
+    QVector<core::RegionStatsResult> regionStats() const;
+    QPointF origin() const { return m_origin; }
+
+    /// Zoom and centre, relative to the fit (so that views of different sizes can share them).
+    struct ViewState {
+        bool fit = true;
+        double magnification = 1;  ///< zoom / fitZoom()
+        QPointF centre;            ///< image point at the view's centre
+    };
+    ViewState viewState() const;
+    /// Applies a state without emitting viewChanged().
+    void setViewState(const ViewState& s);
+
+    /// The image part of the view as shown (overlays, regions, badge; no focus frame) scaled to
+    /// `width` pixels wide (the height follows the shown part's aspect). Null without an image.
+    QImage renderView(int width) const;
+    /// Height of the export for a width (the shown part's aspect).
+    int exportHeight(int width) const;
+    /// Writes renderView(width) as PNG, or the same drawing as SVG or PDF, chosen by the suffix.
+    bool exportView(const QString& path, int width, QString* error) const;
+    /// The name the export dialog offers (without suffix): the shot's file stem and the view.
+    void setExportName(const QString& name) { m_exportName = name; }
+    /// Asks for a width and a file (ui/save_path), then exports; false when cancelled or failed.
+    bool exportDialog();
 
     /// The data (CV_32FC1, for the readout) and its rendering. origin: full-image coordinates of
     /// the data's pixel (0,0), shown in the readout.
@@ -64,6 +111,17 @@ public:
 signals:
     /// Cursor moved over pixel (x, y) of the data (full-image coordinates) holding value.
     void pixelHovered(double x, double y, double value);
+    /// The user zoomed or panned (not setViewState).
+    void viewChanged();
+    /// A contrast / bias drag (middle or Ctrl+drag) started; then moved by dx, dy as fractions of
+    /// the view's width and height (right, down positive) from where it started.
+    void contrastBiasStarted();
+    void contrastBiasDragged(double dxFraction, double dyFraction);
+    void contrastBiasResetRequested();
+    /// A region was drawn, moved or deleted, or the data under them changed.
+    void regionsChanged();
+    /// A status line (an export written or refused).
+    void status(const QString& message);
 
 protected:
     void paintEvent(QPaintEvent*) override;
@@ -81,7 +139,17 @@ private:
         QRect box;
         QString text;
     };
-    BadgeLayout layoutBadge() const;
+    BadgeLayout layoutBadge() const { return layoutBadge(rect()); }
+    BadgeLayout layoutBadge(const QRect& area) const;
+    /// Draws the image, the overlay, the regions and the badge (placed in `area`, widget px).
+    void paintContent(QPainter& p, const QRect& area) const;
+    void paintRegions(QPainter& p) const;
+    /// The image's part of the widget (widget px).
+    QRect shownImageRect() const;
+    int regionAt(QPointF widgetPos) const;
+    void emitViewChanged();
+    void regionPress(QPointF pos);
+    void regionMove(QPointF pos);
     QPointF toImage(QPointF widget) const;
     /// Sets the zoom keeping the image point under widgetPos where it is.
     void zoomAbout(QPointF widgetPos, double zoom);
@@ -97,8 +165,15 @@ private:
     double m_zoom = 1;
     QPointF m_offset;  // widget position of image point (−0.5, −0.5)
     bool m_fit = true;
-    // Mouse gestures: a left drag pans, a right drag (or Shift + left) draws a zoom box.
-    enum class Drag { None, Pan, Box } m_drag = Drag::None;
+    // Mouse gestures: a left drag pans, a right drag (or Shift + left) draws a zoom box, a
+    // middle or Ctrl+drag sets contrast and bias; in a region mode a left drag draws or moves.
+    enum class Drag { None, Pan, Box, Contrast, DrawRegion, MoveRegion } m_drag = Drag::None;
+    MouseMode m_mode = MouseMode::Pan;
+    QVector<core::RegionStatsParams> m_regions;
+    int m_selected = -1;
+    core::RegionStatsParams m_regionStart;
+    bool m_applyingState = false;
+    QString m_exportName;
     bool m_rightPress = false;
     QPointF m_dragStart, m_offsetStart;
     QRubberBand* m_band = nullptr;

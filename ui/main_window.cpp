@@ -373,9 +373,15 @@ QStringList MainWindow::shortcutList() const {
         << tr("E\tFootprint ▸ note on the shot (Enter keeps it and returns to the table)")
         << tr("Tab, Shift+Tab\tFootprint ▸ leave the shot table (the shot stays)")
         << tr("2 / 4 / 8\tFootprint ▸ zoom the ROI and frame views 2×, 4×, 8× the fit")
-        << tr("1\tFootprint ▸ fit the ROI and frame views again");
+        << tr("1\tFootprint ▸ fit the ROI and frame views again")
+        << tr("B\tFootprint ▸ blink / tile the selected shots (Ctrl+click, Shift+click select several)");
     out << tr("Right-drag, Shift+drag\tImage view ▸ box zoom") << tr("Home, double-click\tImage view ▸ fit")
-        << tr("Right-click\tImage view ▸ zoom steps");
+        << tr("Right-click\tImage view ▸ menu: zoom steps, mouse mode (pan, box or circle regions), reset contrast and bias, export the view")
+        << tr("Middle-drag, Ctrl+drag\tImage view ▸ contrast (up / down) and bias (left / right), as DS9's right-drag")
+        << tr("Drag on the colour bar\tImage view ▸ contrast and bias; a double-click on the bar resets them")
+        << tr("Drag (region mode)\tImage view ▸ draw a box or circle region; drag a region to move it")
+        << tr("Delete\tImage view ▸ delete the selected region (the view reached by Tab)")
+        << tr("Space, ← / →, T / B\tBlink / tile ▸ play or pause, step, tile or blink");
     out << tr("Wheel\tPlot ▸ zoom both axes about the cursor") << tr("Shift+Wheel\tPlot ▸ zoom x only")
         << tr("Ctrl+Wheel\tPlot ▸ zoom y only") << tr("Wheel / drag over an axis\tPlot ▸ zoom / pan that axis only")
         << tr("Drag\tPlot ▸ pan") << tr("Right-drag, Shift+drag\tPlot ▸ box zoom")
