@@ -641,7 +641,25 @@ void PlotKit::fitTickCounts() {
             if (a->orientation() == Qt::Horizontal) {
                 int widest = fm.horizontalAdvance(QStringLiteral("00:00:00"));
                 for (const QString& label : a->tickVectorLabels()) widest = std::max(widest, fm.horizontalAdvance(label));
-                count = (r->width() + now.width() - last.width()) / (widest + 2 * fm.averageCharWidth() + 8);
+                const int width = r->width() + now.width() - last.width();
+                count = std::clamp(width / (widest + 2 * fm.averageCharWidth() + 8), 2, 8);
+                // The tickers round the step to nice values (a date axis to whole months), which
+                // can put labels closer than the count meant: try the ticks that count gives and
+                // take fewer while two labels come within 4 px of each other.
+                const QCPRange range = a->range();
+                const double perPx = width > 0 ? range.size() / width : 0;
+                for (; count > 2 && perPx > 0 && a->scaleType() == QCPAxis::stLinear; --count) {
+                    a->ticker()->setTickCount(count);
+                    QVector<double> ticks;
+                    QVector<QString> labels;
+                    a->ticker()->generate(range, m_plot->locale(), a->numberFormat().isEmpty() ? QLatin1Char('g') : a->numberFormat().at(0),
+                                          a->numberPrecision(), ticks, nullptr, &labels);
+                    bool apart = true;
+                    for (int i = 1; i < ticks.size() && i < labels.size() && apart; ++i)
+                        apart = std::fabs(ticks[i] - ticks[i - 1]) / perPx >=
+                                (fm.horizontalAdvance(labels[i]) + fm.horizontalAdvance(labels[i - 1])) / 2.0 + 4;
+                    if (apart) break;
+                }
             } else {
                 count = (r->height() + now.height() - last.height()) / (3 * fm.height());
             }
