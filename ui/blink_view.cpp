@@ -8,6 +8,7 @@
 #include <QPushButton>
 #include <QShortcut>
 #include <QSpinBox>
+#include <QEvent>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <cmath>
@@ -56,6 +57,7 @@ BlinkView::BlinkView(std::vector<BlinkFrame> frames, ColorMap map, const Display
                 p.drawLine(c + QPointF(-s, s), c + QPointF(s, -s));
             });
         connect(view, &ImageView::viewChanged, this, [this, i] { syncViews(i); });
+        view->installEventFilter(this);
     }
     lay->addWidget(gridHost, 1);
     m_bar = new ColorBar(this);
@@ -170,6 +172,22 @@ void BlinkView::render() {
         m_tileLimits[i] = m_limits;
     }
     m_bar->setScale(m_map, ds.stretch, m_limits.lo, m_limits.hi);
+}
+
+// A tile shown alone (Blink) or back in the grid changes size: it takes the locked state again,
+// relative to its new fit (a hidden widget's resize comes at show time, with no usable old size).
+bool BlinkView::eventFilter(QObject* o, QEvent* e) {
+    if (e->type() == QEvent::Resize || e->type() == QEvent::Show) {
+        auto* v = qobject_cast<ImageView*>(o);
+        if (v && m_tiles.contains(v))
+            QTimer::singleShot(0, v, [this, v] {
+                const bool was = m_syncing;
+                m_syncing = true;
+                v->setViewState(m_state);
+                m_syncing = was;
+            });
+    }
+    return QWidget::eventFilter(o, e);
 }
 
 void BlinkView::syncViews(int from) {

@@ -58,6 +58,9 @@ public:
     /// The limits tile i was last drawn with (tests: all the same).
     core::DisplayLimits tileLimits(int i) const { return m_tileLimits.value(i); }
 
+protected:
+    bool eventFilter(QObject* o, QEvent* e) override;
+
 private:
     QWidget* buildControls();
     void render();

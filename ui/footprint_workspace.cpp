@@ -318,7 +318,11 @@ void FootprintWorkspace::buildCentre() {
     m_regionStats = new QLabel(review);  // the regions' statistics (right-click a view: box / circle regions)
     m_regionStats->setObjectName("regionStats");
     m_regionStats->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_regionStats->setVisible(false);
+    // A fixed height: a label that appeared or grew in the middle of a drag resized the views
+    // under the mouse (the region being drawn jumped by a pixel row). Every line is in the tooltip.
+    m_regionStats->setFixedHeight(3 * m_regionStats->fontMetrics().lineSpacing() + 4);
+    m_regionStats->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    m_regionStats->setText(tr("Regions: right-click a view ▸ Mouse: box / circle regions"));
     revLay->addWidget(m_regionStats);
     m_details = new QLabel(review);
     m_details->setTextFormat(Qt::RichText);
@@ -345,8 +349,8 @@ void FootprintWorkspace::buildCentre() {
     for (ImageView* v : {m_roiView, m_frameView}) {
         connect(v, &ImageView::regionsChanged, this, [this] {
             const QString text = regionsSummary({{tr("ROI"), m_roiView}, {tr("Frame"), m_frameView}});
-            m_regionStats->setText(text);
-            m_regionStats->setVisible(!text.isEmpty());
+            m_regionStats->setText(text.isEmpty() ? tr("Regions: right-click a view ▸ Mouse: box / circle regions") : text);
+            m_regionStats->setToolTip(text);
         });
         connect(v, &ImageView::status, this, &FootprintWorkspace::status);
     }

@@ -396,15 +396,18 @@ void ImageView::keyPressEvent(QKeyEvent* e) {
     }
 }
 
-// A zoomed view keeps its zoom and the image point at its centre (blink tiles change size).
+// A zoomed view keeps its magnification of the fit (as the zoom steps are) and the image point
+// at its centre: a blink tile shown alone, or a window made larger, shows the same part.
 void ImageView::resizeEvent(QResizeEvent* e) {
     if (m_fit) {
         fitToWindow();
         return;
     }
     const QSize old = e->oldSize();
-    if (!old.isValid()) return;
+    if (!old.isValid() || m_image.isNull() || old.isEmpty()) return;
     const QPointF centre = toImage(QPointF(old.width(), old.height()) / 2);
+    const double oldFit = std::max(kMinZoom, std::min(old.width() / double(m_image.width()), old.height() / double(m_image.height())));
+    m_zoom = std::clamp(m_zoom / oldFit * fitZoom(), kMinZoom, kMaxZoom);
     m_offset = QPointF(width(), height()) / 2 - (centre + QPointF(0.5, 0.5)) * m_zoom;
 }
 
