@@ -249,12 +249,7 @@ QWidget* FootprintWorkspace::buildShotList() {
     connect(m_filter, &QComboBox::currentIndexChanged, this, [this](int i) {
         const int keep = currentSourceRow();
         m_proxy->setVerdictFilter(ShotFilterProxy::Filter(i));
-        // Stay on the current shot when it is in the new view, else start at the top.
-        const QModelIndex p = m_proxy->mapFromSource(m_model->index(keep, 0));
-        if (p.isValid())
-            m_table->selectRow(p.row());
-        else if (m_proxy->rowCount() > 0)
-            m_table->selectRow(0);
+        selectInView(keep);
         viewChanged();
         emit modified();
     });
@@ -509,6 +504,15 @@ void FootprintWorkspace::setRoiOverlay() {
             if (d.gauss.fit.ok) drawCross(p, {d.gauss.fit.x, d.gauss.fit.y}, s, QPen(kGaussColor, lw * 1.3), true);
         }
     });
+}
+
+void FootprintWorkspace::selectInView(int sourceRow) {
+    // Stay on the shot when it is in the new view, else start at the top.
+    const QModelIndex p = m_proxy->mapFromSource(m_model->index(sourceRow, 0));
+    if (p.isValid())
+        m_table->selectRow(p.row());
+    else if (m_proxy->rowCount() > 0)
+        m_table->selectRow(0);
 }
 
 int FootprintWorkspace::currentSourceRow() const {
@@ -801,11 +805,7 @@ void FootprintWorkspace::applyWhere() {
         return;
     }
     m_where->setError(QString());
-    const QModelIndex p = m_proxy->mapFromSource(m_model->index(keep, 0));
-    if (p.isValid())
-        m_table->selectRow(p.row());
-    else if (m_proxy->rowCount() > 0)
-        m_table->selectRow(0);
+    selectInView(keep);
     viewChanged();
     emit status(m_proxy->expression().isEmpty() ? tr("Filter cleared")
                                                 : tr("Filter: %1 of %2 shots").arg(m_proxy->rowCount()).arg(m_controller->count()));

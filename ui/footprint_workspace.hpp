@@ -109,6 +109,8 @@ private:
     QWidget* buildTrendTab();
     void currentRowChanged();
     int currentSourceRow() const;
+    /// After the view changed: `sourceRow` current again if it is in the view, else the first row.
+    void selectInView(int sourceRow);
     void judgeCurrent(bool overridden, Verdict v);
     void commitNote();
 
