@@ -19,6 +19,7 @@
 
 #include "core/common/region_stats.hpp"
 #include "test_support.hpp"
+#include "ui_support.hpp"
 #include "ui/blink_view.hpp"
 #include "ui/display_controls.hpp"
 #include "ui/footprint_workspace.hpp"
@@ -43,15 +44,9 @@ bool showShot(FootprintWorkspace* fw, int row) {
     return !detail.isEmpty() || detail.wait(10000);
 }
 
-// A drag with `button` held (events sent directly, so that the moves carry the button).
+// (the shared drag helper: tests/ui_support.hpp)
 void drag(QWidget* w, Qt::MouseButton button, Qt::KeyboardModifiers mods, QPointF from, QPointF to) {
-    auto send = [&](QEvent::Type t, QPointF pos, Qt::MouseButton b, Qt::MouseButtons held) {
-        QMouseEvent e(t, pos, w->mapToGlobal(pos), b, held, mods);
-        QApplication::sendEvent(w, &e);
-    };
-    send(QEvent::MouseButtonPress, from, button, button);
-    for (int k = 1; k <= 5; ++k) send(QEvent::MouseMove, from + (to - from) * (k / 5.0), Qt::NoButton, button);
-    send(QEvent::MouseButtonRelease, to, button, Qt::NoButton);
+    lwbtest::mouseDrag(w, button, mods, from, to);
 }
 
 int countColour(const QImage& img, QColor c, int tol) {

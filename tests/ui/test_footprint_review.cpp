@@ -31,6 +31,7 @@
 #include "core/common/csv.hpp"
 #include "core/common/display_stretch.hpp"
 #include "test_support.hpp"
+#include "ui_support.hpp"
 #include "ui/app_undo.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/contact_sheet.hpp"
@@ -93,15 +94,9 @@ bool writeSpot(const QString& path, double x, double y) {
     return cv::imwrite(path.toStdString(), img);
 }
 
-// A mouse drag with `button` held (events sent directly, so the moves carry the button).
+// (the shared drag helper: tests/ui_support.hpp)
 void drag(QWidget* w, Qt::MouseButton button, Qt::KeyboardModifiers mods, QPointF from, QPointF to) {
-    auto send = [&](QEvent::Type t, QPointF pos, Qt::MouseButton b, Qt::MouseButtons held) {
-        QMouseEvent e(t, pos, w->mapToGlobal(pos), b, held, mods);
-        QApplication::sendEvent(w, &e);
-    };
-    send(QEvent::MouseButtonPress, from, button, button);
-    for (int k = 1; k <= 5; ++k) send(QEvent::MouseMove, from + (to - from) * (k / 5.0), Qt::NoButton, button);
-    send(QEvent::MouseButtonRelease, to, button, Qt::NoButton);
+    lwbtest::mouseDrag(w, button, mods, from, to);
 }
 
 // Pixels within `radius` of `at` whose colour is within `tol` of `c` in every channel.
