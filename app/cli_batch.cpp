@@ -1,6 +1,8 @@
 #include "cli_batch.hpp"
 
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <iostream>
 #include <unistd.h>
@@ -141,7 +143,10 @@ bool outputsComplete(const core::Provenance& p, const std::vector<std::string>& 
     std::string dummy;
     std::string& w = why ? *why : dummy;
     if (::access(sidecar.c_str(), F_OK) != 0) return w = sidecar + " does not exist", false;
-    const core::JsonParseResult j = core::readJsonFile(sidecar);
+    // (read directly, not as an input of the run: the run may write it again)
+    std::ifstream f(sidecar, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    const core::JsonParseResult j = core::parseJson(text, sidecar);
     if (!j.ok || !j.value.is_object()) return w = sidecar + ": not a provenance file", false;
     const core::Json& v = j.value;
     if (v.value("command", std::string()) != p.command || !v.contains("parameters") || v["parameters"] != p.parameters ||
