@@ -149,19 +149,22 @@ bool outputsComplete(const core::Provenance& p, const std::vector<std::string>& 
     const core::JsonParseResult j = core::parseJson(text, sidecar);
     if (!j.ok || !j.value.is_object()) return w = sidecar + ": not a provenance file", false;
     const core::Json& v = j.value;
-    if (v.value("command", std::string()) != p.command || !v.contains("parameters") || v["parameters"] != p.parameters ||
-        !v.contains("settings") || v["settings"] != p.settings)
+    if (v.value("command", std::string()) != p.command || !v.contains("parameters") ||
+        core::dumpJson(v["parameters"]) != core::dumpJson(p.parameters) || !v.contains("settings") ||
+        core::dumpJson(v["settings"]) != core::dumpJson(p.settings))
         return w = sidecar + ": made with other parameters or settings", false;
     const auto it = v.find("outputs");
-    if (it == v.end() || !it->is_array() || it->size() != outputs.size())
+    if (it == v.end() || !it->is_array() || it->empty() || (!outputs.empty() && it->size() != outputs.size()))
         return w = sidecar + ": lists other outputs", false;
-    for (size_t i = 0; i < outputs.size(); ++i) {
+    for (size_t i = 0; i < it->size(); ++i) {
         const core::Json& e = (*it)[i];
-        if (!e.is_object() || e.value("path", std::string()) != outputs[i])
+        if (!e.is_object() || !e.contains("path") || !e["path"].is_string() ||
+            (!outputs.empty() && e["path"].get<std::string>() != outputs[i]))
             return w = sidecar + ": lists other outputs", false;
+        const std::string out = e["path"].get<std::string>();
         std::string hex, err;
-        if (!core::sha256File(outputs[i], &hex, &err)) return w = err, false;
-        if (e.value("sha256", std::string()) != hex) return w = outputs[i] + ": changed since it was written", false;
+        if (!core::sha256File(out, &hex, &err)) return w = err, false;
+        if (e.value("sha256", std::string()) != hex) return w = out + ": changed since it was written", false;
     }
     return true;
 }

@@ -76,7 +76,8 @@ bool stageProvenance(core::OutputSet& outs, const core::Provenance& p, const std
                      const std::string& sidecar, std::string* error);
 
 /// --skip-existing: true when `sidecar` exists, records the same command, parameters and
-/// settings as `p`, and lists exactly `outputs`, each with the SHA-256 its file has now. Every
+/// settings as `p`, and lists exactly `outputs` (empty: whatever it lists, at least one), each
+/// with the SHA-256 its file has now. Every
 /// output is renamed into place whole (core::OutputSet) and the sidecar last, so a file that
 /// exists is complete; the checksums also catch a set that a killed or later run left mixed.
 /// *why (when given) says what differs.

@@ -264,8 +264,10 @@ int runFootprint(const Args& a, const BatchParams& bp, const BatchOptions& bo, R
             (v == Verdict::Good ? good : v == Verdict::Doubtful ? doubtful : rejected)++;
         }
     }
+    bool fromLists = false;
+    for (const auto& s : shots) fromLists |= !s.source.empty();
     if (!quiet)
-        std::cerr << "footprint: " << shots.size() << " shots"
+        std::cerr << "footprint: " << shots.size() << (fromLists ? " shots" : " files")
                   << (bo.shard.given ? " (shard " + bo.shard.text() + " of " + std::to_string(all.size()) + ")" : "")
                   << " -> " << out << ": " << good << " good, " << doubtful << " doubtful, " << rejected << " rejected"
                   << (res.readErrors ? " (" + std::to_string(res.readErrors) + " unreadable)" : "")

@@ -1,6 +1,7 @@
 #include "core/common/provenance.hpp"
 
 #include <set>
+#include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/sha256.hpp"
@@ -19,8 +20,9 @@ bool provenanceText(const Provenance& p, const std::vector<std::string>& outputs
     auto listed = [&](const std::string& name, const std::string& file) -> Json {
         Json e = Json::object();
         e["path"] = name;
-        if (isStandardStream(file)) {
-            e["sha256"] = nullptr;
+        struct stat st {};
+        if (isStandardStream(file) || (::stat(file.c_str(), &st) == 0 && S_ISDIR(st.st_mode))) {
+            e["sha256"] = nullptr;  // (standard input, read once; a folder, such as a CPF folder)
             return e;
         }
         std::string hex;

@@ -29,8 +29,8 @@ inline std::string provenancePathFor(const std::string& output) { return output 
 
 /// The sidecar's JSON text: software, version, command, parameters, settings, inputs with their
 /// SHA-256, and outputs (`outputs`: the names to record, `files`: where their bytes are now,
-/// e.g. the staged copies; the same size) with theirs. Standard input ("-") is listed without a
-/// checksum. False with *error when a file cannot be read.
+/// e.g. the staged copies; the same size) with theirs. Standard input ("-") and folders are
+/// listed without a checksum (null). False with *error when a file cannot be read.
 bool provenanceText(const Provenance& p, const std::vector<std::string>& outputs, const std::vector<std::string>& files,
                     std::string* text, std::string* error);
 
