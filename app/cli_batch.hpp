@@ -71,7 +71,8 @@ private:
 };
 
 /// Stages the provenance sidecar `sidecar` of the run's outputs `outputs` (already staged in
-/// `outs`; `sidecar` added to it before check()). False with *error.
+/// `outs`; `sidecar` added to it before check()). An output in the sidecar's folder is named
+/// by its file name (the folder can be moved whole), another as given. False with *error.
 bool stageProvenance(core::OutputSet& outs, const core::Provenance& p, const std::vector<std::string>& outputs,
                      const std::string& sidecar, std::string* error);
 
