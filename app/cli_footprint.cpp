@@ -473,6 +473,8 @@ const std::string kTrendUsage =
     "  --arcsec-per-px A    pointing change per pixel (default {default:arcsec_per_px}, paper 001's LFC) = --set arcsec_per_px=A\n"
     "  --reject-sigma K     k-sigma rejection of shots within a month (default {default:reject_sigma}; 0 = off) = --set reject_sigma=K\n"
     "  --min-shots N        leave out months with fewer shots (default {default:min_shots}) = --set min_shots=N\n"
+    "  -o, --output OUT.csv the table; beside it OUT.csv.provenance.json (version, parameters, SHA-256\n"
+    "                       of the input and the output)\n"
     "\n" + ParamOptions<TrendParams>::paramsHelp("trend", "reject_sigma=2.5");
 }
 
@@ -552,6 +554,9 @@ int cmdTrend(int argc, char** argv) {
     core::OutputSet outs;
     outs.addInput(a.positional()[0]);
     outs.addOutput(out);
+    const bool toStdout = core::isStandardStream(out);
+    const std::string sidecar = core::provenancePathFor(out);
+    if (!toStdout) outs.addOutput(sidecar);
     if (int rc = checkOutputs("trend", outs)) return rc;
     std::vector<CentroidRecord> recs;
     std::string note;
@@ -561,6 +566,11 @@ int cmdTrend(int argc, char** argv) {
     if (!tr.ok) return fail("trend", tr.error);
     for (const auto& w : tr.warnings) std::cerr << "laserwb-cli trend: warning: " << w << "\n";
     if (!writeTrendCsv(outs.stagingPath(out), tr.rows, &err)) return fail("trend", outs.unstaged(err));
+    core::Provenance prov;
+    prov.command = "trend";
+    prov.parameters = trendSchema().toJson(tp);
+    prov.inputs = {a.positional()[0], a.value("--config")};
+    if (!toStdout && !stageProvenance(outs, prov, {out}, sidecar, &err)) return fail("trend", err);
     if (int rc = commitOutputs("trend", outs)) return rc;
     if (!(a.has("-q") || a.has("--quiet"))) {
         // Summary: first → last month change per camera/beam.
