@@ -114,8 +114,18 @@ int RunSummary::finish(int exitCode) {
     j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
     j["outputs"] = m_outputs;
     j["inputs"] = m_inputs;
+    // Never over an input of the run or one of its outputs.
+    const std::string& path = m_options.summaryJson;
+    std::string clash = core::inputReadAs(path);
+    for (const auto& o : m_outputs)
+        if (clash.empty() && (o == path || core::sameFile(o, path))) clash = o;
+    if (!clash.empty()) {
+        std::cerr << "laserwb-cli " << m_command << ": --summary-json " << path << " is " << clash
+                  << ", a file of this run; no summary written\n";
+        return exitCode == kOk ? kUsage : exitCode;
+    }
     std::string err;
-    if (!core::writeFileAtomic(m_options.summaryJson, core::dumpJson(j), &err)) {
+    if (!core::writeFileAtomic(path, core::dumpJson(j), &err)) {
         std::cerr << "laserwb-cli " << m_command << ": --summary-json: " << err << "\n";
         return exitCode == kOk ? kFailed : exitCode;
     }
