@@ -1,5 +1,6 @@
 #include "cli_batch.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -22,9 +23,10 @@ const char* const kBatchOptionsHelp =
     "                        given (folders sorted, shot lists row by row), cut into N contiguous\n"
     "                        blocks; block K is floor((K-1)n/N) .. floor(Kn/N)-1 of the n inputs. The N\n"
     "                        shards' outputs, one after the other, are the unsharded run's\n"
-    "  --skip-existing       do nothing for an input whose outputs are complete: its provenance\n"
-    "                        sidecar exists, has the same parameters and settings, and lists every\n"
-    "                        output with the SHA-256 the file has now\n"
+    "  --skip-existing       do nothing for an input whose outputs are complete and up to date: its\n"
+    "                        provenance sidecar exists, has the same parameters and settings, the\n"
+    "                        same inputs with the SHA-256 they have now, and every output with the\n"
+    "                        SHA-256 the file has now\n"
     "  --summary-json FILE   a JSON account of the run, written (atomically) however it ends: per\n"
     "                        input its status, outputs and seconds; the outputs; the exit code and\n"
     "                        its meaning\n";
@@ -183,6 +185,21 @@ bool outputsComplete(const core::Provenance& p, const std::vector<std::string>& 
         core::dumpJson(v["parameters"]) != core::dumpJson(p.parameters) || !v.contains("settings") ||
         core::dumpJson(v["settings"]) != core::dumpJson(p.settings))
         return w = sidecar + ": made with other parameters or settings", false;
+    // The same inputs, unchanged: their names in order and the checksums they have now.
+    std::vector<std::string> inputs;
+    for (const auto& f : p.inputs)
+        if (!f.empty() && std::find(inputs.begin(), inputs.end(), f) == inputs.end()) inputs.push_back(f);
+    const auto ins = v.find("inputs");
+    if (ins == v.end() || !ins->is_array() || ins->size() != inputs.size())
+        return w = sidecar + ": made from other inputs", false;
+    for (size_t i = 0; i < inputs.size(); ++i) {
+        const core::Json& e = (*ins)[i];
+        if (!e.is_object() || e.value("path", std::string()) != inputs[i]) return w = sidecar + ": made from other inputs", false;
+        if (!e.contains("sha256") || !e["sha256"].is_string()) continue;  // (standard input, a folder)
+        std::string hex, err;
+        if (!core::sha256File(inputs[i], &hex, &err)) return w = err, false;
+        if (e["sha256"].get<std::string>() != hex) return w = inputs[i] + ": changed since the outputs were made", false;
+    }
     const auto it = v.find("outputs");
     if (it == v.end() || !it->is_array() || it->empty() || (!outputs.empty() && it->size() != outputs.size()))
         return w = sidecar + ": lists other outputs", false;

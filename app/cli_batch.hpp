@@ -76,9 +76,9 @@ private:
 bool stageProvenance(core::OutputSet& outs, const core::Provenance& p, const std::vector<std::string>& outputs,
                      const std::string& sidecar, std::string* error);
 
-/// --skip-existing: true when `sidecar` exists, records the same command, parameters and
-/// settings as `p`, and lists exactly `outputs` (empty: whatever it lists, at least one), each
-/// with the SHA-256 its file has now. Every
+/// --skip-existing: true when `sidecar` exists, records the same command, parameters, settings
+/// and inputs as `p` (each input with the SHA-256 it has now), and lists exactly `outputs`
+/// (empty: whatever it lists, at least one), each with the SHA-256 its file has now. Every
 /// output is renamed into place whole (core::OutputSet) and the sidecar last, so a file that
 /// exists is complete; the checksums also catch a set that a killed or later run left mixed.
 /// *why (when given) says what differs.

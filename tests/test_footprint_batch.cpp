@@ -256,6 +256,16 @@ private slots:
         QVERIFY2(redo.err.contains("changed since it was written"), qPrintable(redo.err));
         QCOMPARE(lwbtest::readAll(p("skip.csv")), made);
         QCOMPARE(statusCounts().value("skipped", 0), 0);
+        // A frame replaced since: made again.
+        const QString frame = p("frames/month2/shot_000001.png");
+        const QByteArray original = lwbtest::readAll(frame);
+        QVERIFY(lwbtest::writeText(frame, lwbtest::readAll(p("frames/month2/shot_000002.png"))));
+        const auto changed = runCli(base);
+        QCOMPARE(changed.exitCode, 0);
+        QVERIFY2(changed.err.contains("shot_000001.png: changed since the outputs were made"), qPrintable(changed.err));
+        QVERIFY(lwbtest::writeText(frame, original));
+        QCOMPARE(runCli(base).exitCode, 0);  // (made again from the original)
+        QCOMPARE(lwbtest::readAll(p("skip.csv")), made);
         // Other parameters: made again.
         const auto other = runCli(base + QStringList{"--method", "gcm"});
         QCOMPARE(other.exitCode, 0);
