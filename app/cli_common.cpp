@@ -106,7 +106,14 @@ bool Args::getDouble(const std::string& name, double lo, double hi, double* out,
     return true;
 }
 
+namespace {
+std::string g_lastFailure;
+}
+
+const std::string& lastFailure() { return g_lastFailure; }
+
 int fail(const std::string& command, const std::string& message, int code) {
+    g_lastFailure = message;
     std::cerr << "laserwb-cli " << command << ": " << message << "\n";
     if (code == kUsage) std::cerr << "Run 'laserwb-cli " << command << " --help' for usage.\n";
     return code;

@@ -52,6 +52,8 @@ private:
 
 /// Prints "laserwb-cli COMMAND: message" on stderr and returns code.
 int fail(const std::string& command, const std::string& message, int code = kFailed);
+/// The message of the last fail() (run summaries say why a run failed).
+const std::string& lastFailure();
 
 /// Throttled progress on stderr: a rewritten line on a terminal, a line per 10 % otherwise.
 class Progress {

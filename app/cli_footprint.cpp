@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <iostream>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include "cli_batch.hpp"
 #include "cli_common.hpp"
 #include "cli_commands.hpp"
 #include "core/common/parallel.hpp"
@@ -18,6 +20,7 @@
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
 #include "core/footprint/crlb.hpp"
+#include "core/footprint/shot_list.hpp"
 #include "core/footprint/trend.hpp"
 #include "core/sim/centroid_sim.hpp"
 #include "core/sim/footprint_eval.hpp"
@@ -29,11 +32,15 @@ using namespace core::footprint;
 namespace sim = core::sim;
 
 namespace {
-const char* kFootprintUsage =
-    "usage: laserwb-cli footprint [options] INPUT... -o OUT.csv\n"
+const std::string kFootprintUsage =
+    std::string("usage: laserwb-cli footprint [options] INPUT... -o OUT.csv\n"
     "Finds the laser spot centre in footprint-camera frames or ROIs and judges each shot.\n"
-    "INPUT: image files (16-bit PNG/TIFF/PGM, or raw little-endian 16-bit with --raw-size) or folders\n"
-    "(every image inside, sorted by name).\n"
+    "INPUT: image files (16-bit PNG/TIFF/PGM, or raw little-endian 16-bit with --raw-size), folders\n"
+    "(every image inside, sorted by name), or shot lists: a .csv with a header holding 'file' and\n"
+    "optionally time, beam, camera, center_x, center_y (the workbench's shot list; one row per shot,\n"
+    "a two-beam frame twice with each beam's centre; a relative file is relative to the list's\n"
+    "folder; time as ISO date/date-time, YYYY-MM or Unix seconds). A list's time, beam and camera\n"
+    "go into the report, so that `laserwb-cli trend OUT.csv` follows.\n"
     "Parameters (every one: --print-config; ranges and docs: --help-params):\n"
     "  --config FILE.json        parameters; the options below override it\n"
     "  --set KEY=VALUE           one parameter (repeatable), e.g. --set segment.threshold_factor=0.2\n"
@@ -44,14 +51,25 @@ const char* kFootprintUsage =
     "  --roi N                   ROI side in px (default {default:roi.size}) = --set roi.size=N\n"
     "  --center X,Y              nominal spot centre in full-image px; repeat for the two beams of an\n"
     "                            LSI frame (one row per ROI). Without it, the brightest spot-like blob.\n"
+    "                            A shot's own center_x,center_y (shot list, --metadata) replaces it\n"
+    "  --metadata FILE.csv       frame metadata: a table in the shot-list format whose rows give the\n"
+    "                            time, beam, camera (and centre) of frames chosen otherwise (folders,\n"
+    "                            --files-from, a shard); a frame is found by its path (the table's\n"
+    "                            relative to its folder) or else by its file name when only one row\n"
+    "                            has it; a shot list's own values win. Frames no row describes are\n"
+    "                            counted on stderr\n"
     "  --raw-size WxH            size of .raw/.bin frames\n"
     "  --max-pixels N            largest frame read, from its header (default 16777216 = 4096^2)\n"
     "  --threads N               worker threads (default: all cores)\n"
     "  --keep-going              write unreadable files as rejected rows instead of stopping\n"
     "  --where EXPR              only the report rows for which EXPR holds, e.g. 'snr < 10 and roi == 1'\n"
     "                            (the workbench's filter language over the report's columns)\n"
-    "  -o, --output OUT.csv      report: file,x,y,verdict,reasons,method,noise_class,sigma_x,...\n"
-    "  -q, --quiet               no progress line\n";
+    "  -o, --output OUT.csv      report: file,x,y,verdict,reasons,method,noise_class,sigma_x,...,\n"
+    "                            roi_x0,roi_y0,time,beam,camera; beside it OUT.csv.provenance.json\n"
+    "                            (version, parameters, settings, SHA-256 of every input and output)\n"
+    "  -q, --quiet               no progress line\n") +
+    kBatchOptionsHelp +
+    "Exit codes: 0 done, 1 bad input (nothing written), 2 usage error.\n";
 
 // The footprint parameters: config file (a "preset" in it applied first), --preset, the
 // aliases and --set, all through the footprint schema.
@@ -77,41 +95,66 @@ struct FootprintOptions : ParamOptions<FootprintParams> {
 };
 }  // namespace
 
-int cmdFootprint(int argc, char** argv) {
-    Args a("footprint", kFootprintUsage);
-    const FootprintOptions params;
-    params.declare(a);
-    for (const char* o : {"--preset", "--raw-size", "--threads", "-o", "--output", "--max-pixels", "--where"})
-        a.option(o, true);
-    a.option("--center", true, true);
-    for (const char* o : {"--keep-going", "--help-params", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
-    if (!a.parse(argc, argv, 2)) return fail("footprint", a.error(), kUsage);
-    if (a.has("--help") || a.has("-h")) {
-        std::cout << a.usage();  // (its defaults filled from the schema by declare)
-        return kOk;
+namespace {
+// The report, filtered by --where when given (every field a text cell: a number field compares
+// as its number, an empty one is missing), staged at `path`. *rows and *kept count the rows.
+bool writeReport(const std::string& path, const BatchResult& res, Method method, const core::RowFilter* where,
+                 const std::vector<std::string>& columns, size_t* rows, size_t* kept, std::string* err) {
+    if (!where) return writeFootprintCsv(path, res.items, method, err);
+    std::string text = footprintCsvHeader();
+    for (const auto& it : res.items) text += footprintCsvRows(it, method);
+    const core::CsvReadResult table = core::parseCsv(text, "report");
+    if (!table.ok) {
+        *err = "--where: " + table.error;
+        return false;
     }
-    if (a.has("--help-params")) {
-        std::cout << "footprint parameters (key = default unit  valid range):\n" << footprintSchema().describe(FootprintParams{});
-        return kOk;
+    core::AtomicFile f(path);
+    if (!f.ok()) {
+        *err = f.error();
+        return false;
     }
-    BatchParams bp;
+    f.stream() << footprintCsvHeader();
+    std::vector<core::FilterCell> cells(columns.size());
+    for (const auto& row : table.table.rows) {
+        ++*rows;
+        for (size_t c = 0; c < cells.size(); ++c) cells[c] = core::FilterCell::str(c < row.size() ? row[c] : "");
+        if (!where->matches(cells)) continue;
+        ++*kept;
+        for (size_t c = 0; c < row.size(); ++c) f.stream() << (c ? "," : "") << core::csvEscape(row[c]);
+        f.stream() << "\n";
+    }
+    if (!f.commit()) {
+        *err = f.error();
+        return false;
+    }
+    return true;
+}
+
+// A shot's entry in the run summary.
+core::Json shotEntry(const ShotSpec& shot, const BatchItem* item, const std::string& out, const char* status = nullptr) {
+    core::Json e = core::Json::object();
+    e["input"] = shot.file;
+    if (!shot.source.empty()) e["listed_at"] = shot.source + ":" + std::to_string(shot.line);
+    if (status) {
+        e["status"] = status;
+    } else if (!item->readError.empty()) {
+        e["status"] = "unreadable";
+        e["error"] = item->readError;
+    } else {
+        std::string v;
+        for (const auto& r : item->rois) v += (v.empty() ? "" : ",") + std::string(verdictName(r.result.ok ? r.result.verdict : Verdict::Rejected));
+        e["status"] = v.empty() ? "rejected" : v;
+        e["rois"] = item->rois.size();
+    }
+    e["outputs"] = core::Json::array({out});
+    if (item) e["seconds"] = item->seconds;
+    return e;
+}
+
+// The run of cmdFootprint once the options are read: the shots, the share, the report.
+int runFootprint(const Args& a, const BatchParams& bp, const BatchOptions& bo, RunSummary& summary) {
+    const bool quiet = a.has("-q") || a.has("--quiet");
     std::string err;
-    if (int rc = params.load("footprint", a, &bp.footprint)) return rc;
-    if (params.printRequested(a)) {
-        std::cout << params.json(bp.footprint);
-        return kOk;
-    }
-    for (const auto& c : a.values("--center")) {
-        double x = 0, y = 0;
-        if (!parsePoint(c, &x, &y)) return fail("footprint", "--center must be X,Y (numbers), not \"" + c + "\"", kUsage);
-        bp.centres.emplace_back(x, y);
-    }
-    if (a.has("--raw-size") && !parseSize(a.value("--raw-size"), &bp.read.rawWidth, &bp.read.rawHeight))
-        return fail("footprint", "--raw-size must be WxH, e.g. 550x550", kUsage);
-    long long threads = 0;
-    if (!a.getInt("--threads", 0, 256, &threads, &err) || !a.getInt("--max-pixels", 1, 1LL << 40, &bp.read.maxPixels, &err))
-        return fail("footprint", err, kUsage);
-    bp.threads = static_cast<int>(threads);
     // --where: compiled before any work, against the report's columns.
     std::shared_ptr<const core::RowFilter> where;
     std::vector<std::string> reportColumns;
@@ -130,23 +173,70 @@ int cmdFootprint(int argc, char** argv) {
     }
     const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
     if (out.empty()) return fail("footprint", "no output file: give -o OUT.csv", kUsage);
-    if (a.positional().empty()) return fail("footprint", "no input files or folders", kUsage);
-    std::vector<std::string> files;
-    if (!expandInputs(a.positional(), &files, &err)) return fail("footprint", err);
-    if (files.empty()) return fail("footprint", "the inputs hold no image files (png, tif, tiff, pgm, raw, bin)");
+    std::vector<std::string> inputs = a.positional();
+    inputs.insert(inputs.end(), bo.listed.begin(), bo.listed.end());
+    if (inputs.empty()) return fail("footprint", "no input files, folders or shot lists", kUsage);
+    // ---- the shots: frames, folders and shot lists, then the frame metadata, then the share ----
+    std::vector<ShotSpec> all;
+    if (!expandShots(inputs, &all, &err)) return fail("footprint", err);
+    if (all.empty()) return fail("footprint", "the inputs hold no image files (png, tif, tiff, pgm, raw, bin)");
+    if (a.has("--metadata")) {
+        const ShotListResult md = readShotList(a.value("--metadata"));
+        if (!md.ok) return fail("footprint", "--metadata: " + md.error);
+        size_t unmatched = 0;
+        if (!applyFrameMetadata(md, &all, &unmatched, &err)) return fail("footprint", "--metadata: " + err);
+        if (unmatched && !quiet)
+            std::cerr << "laserwb-cli footprint: warning: " << unmatched << " of " << all.size() << " shots have no row in "
+                      << a.value("--metadata") << " (their time, beam and camera stay empty)\n";
+    }
+    summary.setInputsTotal(all.size());
+    const auto [first, last] = bo.shard.range(all.size());
+    const std::vector<ShotSpec> shots(all.begin() + long(first), all.begin() + long(last));
+    // ---- provenance: what the report is made of ----
+    core::Provenance prov;
+    prov.command = "footprint";
+    prov.parameters = footprintSchema().toJson(bp.footprint);
+    core::Json centres = core::Json::array();
+    for (const auto& c : bp.centres) centres.push_back({c.x, c.y});
+    prov.settings = {{"center", centres},
+                     {"raw_size", a.value("--raw-size")},
+                     {"max_pixels", bp.read.maxPixels},
+                     {"keep_going", a.has("--keep-going")},
+                     {"where", a.value("--where")},
+                     {"metadata", a.value("--metadata")},
+                     {"shard", bo.shard.text()},
+                     {"shots_total", all.size()}};
+    prov.inputs = {a.value("--config"), bo.filesFrom == "-" ? std::string() : bo.filesFrom, a.value("--metadata")};
+    for (const auto& in : inputs)
+        if (isShotListFile(in)) prov.inputs.push_back(in);
+    for (const auto& s : shots) prov.inputs.push_back(s.file);
+    const bool toStdout = core::isStandardStream(out);
+    const std::string sidecar = core::provenancePathFor(out);
+    summary.addOutput(out);
+    if (!toStdout) summary.addOutput(sidecar);
+    if (bo.skipExisting && !toStdout) {
+        std::string why;
+        if (outputsComplete(prov, {out}, sidecar, &why)) {
+            for (const auto& s : shots) summary.addInput(shotEntry(s, nullptr, out, "skipped"));
+            if (!quiet) std::cerr << "footprint: " << out << " is complete (" << sidecar << "): skipped\n";
+            return kOk;
+        }
+        if (!quiet && ::access(out.c_str(), F_OK) == 0) std::cerr << "footprint: running again: " << why << "\n";
+    }
     core::OutputSet outs;
-    for (const auto& f : files) outs.addInput(f);
+    for (const auto& in : prov.inputs) outs.addInput(in);
     outs.addOutput(out);
+    if (!toStdout) outs.addOutput(sidecar);
     if (int rc = checkOutputs("footprint", outs)) return rc;
-    Progress progress("footprint", files.size(), a.has("-q") || a.has("--quiet"));
+    // ---- the shots processed ----
+    Progress progress("footprint", shots.size(), quiet);
     size_t done = 0;
     core::Feedback fb;
     const bool keepGoing = a.has("--keep-going");
     std::string firstError;
-    const bool quietRun = a.has("-q") || a.has("--quiet");
-    const BatchResult res = runFootprintBatch(files, bp, &fb, [&](size_t, const BatchItem& item) {
+    const BatchResult res = runFootprintBatch(shots, bp, &fb, [&](size_t, const BatchItem& item) {
         progress.update(++done);
-        if (!quietRun)
+        if (!quiet)
             for (const auto& r : item.rois)
                 for (const auto& w : r.warnings) std::cerr << "laserwb-cli footprint: warning: " << item.file << ": " << w << "\n";
         if (!keepGoing && firstError.empty()) {
@@ -158,47 +248,78 @@ int cmdFootprint(int argc, char** argv) {
     });
     progress.finish();
     if (!firstError.empty()) return fail("footprint", firstError + " (nothing written; --keep-going reports it as a rejected row)");
+    // ---- the report and its provenance, all or nothing ----
     size_t kept = 0, rows = 0;
-    if (!where) {
-        if (!writeFootprintCsv(outs.stagingPath(out), res.items, bp.footprint.method, &err))
-            return fail("footprint", outs.unstaged(err));
-    } else {
-        // The report's rows as written, then only those the expression selects (every field a
-        // text cell: a number field compares as its number, an empty one is missing).
-        std::string text = footprintCsvHeader();
-        for (const auto& it : res.items) text += footprintCsvRows(it, bp.footprint.method);
-        const core::CsvReadResult table = core::parseCsv(text, "report");
-        if (!table.ok) return fail("footprint", "--where: " + table.error);
-        core::AtomicFile f(outs.stagingPath(out));
-        if (!f.ok()) return fail("footprint", outs.unstaged(f.error()));
-        f.stream() << footprintCsvHeader();
-        std::vector<core::FilterCell> cells(reportColumns.size());
-        for (const auto& row : table.table.rows) {
-            ++rows;
-            for (size_t c = 0; c < cells.size(); ++c) cells[c] = core::FilterCell::str(c < row.size() ? row[c] : "");
-            if (!where->matches(cells)) continue;
-            ++kept;
-            for (size_t c = 0; c < row.size(); ++c) f.stream() << (c ? "," : "") << core::csvEscape(row[c]);
-            f.stream() << "\n";
-        }
-        if (!f.commit()) return fail("footprint", outs.unstaged(f.error()));
-    }
+    if (!writeReport(outs.stagingPath(out), res, bp.footprint.method, where.get(), reportColumns, &rows, &kept, &err))
+        return fail("footprint", outs.unstaged(err));
+    if (!toStdout && !stageProvenance(outs, prov, {out}, sidecar, &err)) return fail("footprint", err);
     if (int rc = commitOutputs("footprint", outs)) return rc;
     size_t good = 0, doubtful = 0, rejected = 0;
-    for (const auto& it : res.items) {
+    for (size_t i = 0; i < res.items.size(); ++i) {
+        const BatchItem& it = res.items[i];
+        summary.addInput(shotEntry(shots[i], &it, out));
         if (!it.readError.empty()) ++rejected;
         for (const auto& r : it.rois) {
             const Verdict v = r.result.ok ? r.result.verdict : Verdict::Rejected;
             (v == Verdict::Good ? good : v == Verdict::Doubtful ? doubtful : rejected)++;
         }
     }
-    if (!(a.has("-q") || a.has("--quiet")))
-        std::cerr << "footprint: " << files.size() << " files -> " << out << ": " << good << " good, " << doubtful
-                  << " doubtful, " << rejected << " rejected"
+    bool fromLists = false;
+    for (const auto& s : shots) fromLists |= !s.source.empty();
+    if (!quiet)
+        std::cerr << "footprint: " << shots.size() << (fromLists ? " shots" : " files")
+                  << (bo.shard.given ? " (shard " + bo.shard.text() + " of " + std::to_string(all.size()) + ")" : "")
+                  << " -> " << out << ": " << good << " good, " << doubtful << " doubtful, " << rejected << " rejected"
                   << (res.readErrors ? " (" + std::to_string(res.readErrors) + " unreadable)" : "")
                   << (where ? "; --where kept " + std::to_string(kept) + " of " + std::to_string(rows) + " rows" : "")
                   << "\n";
     return kOk;
+}
+}  // namespace
+
+int cmdFootprint(int argc, char** argv) {
+    Args a("footprint", kFootprintUsage);
+    const FootprintOptions params;
+    params.declare(a);
+    declareBatchOptions(a);
+    for (const char* o : {"--preset", "--raw-size", "--threads", "-o", "--output", "--max-pixels", "--where", "--metadata"})
+        a.option(o, true);
+    a.option("--center", true, true);
+    for (const char* o : {"--keep-going", "--help-params", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
+    if (!a.parse(argc, argv, 2)) return fail("footprint", a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << a.usage();  // (its defaults filled from the schema by declare)
+        return kOk;
+    }
+    if (a.has("--help-params")) {
+        std::cout << "footprint parameters (key = default unit  valid range):\n" << footprintSchema().describe(FootprintParams{});
+        return kOk;
+    }
+    BatchParams bp;
+    std::string err;
+    if (params.printRequested(a)) {
+        if (int rc = params.load("footprint", a, &bp.footprint)) return rc;
+        std::cout << params.json(bp.footprint);
+        return kOk;
+    }
+    BatchOptions bo;
+    const int loaded = loadBatchOptions("footprint", a, &bo);
+    RunSummary summary("footprint", bo);
+    if (loaded) return summary.finish(loaded);
+    if (int rc = params.load("footprint", a, &bp.footprint)) return summary.finish(rc);
+    for (const auto& c : a.values("--center")) {
+        double x = 0, y = 0;
+        if (!parsePoint(c, &x, &y))
+            return summary.finish(fail("footprint", "--center must be X,Y (numbers), not \"" + c + "\"", kUsage));
+        bp.centres.emplace_back(x, y);
+    }
+    if (a.has("--raw-size") && !parseSize(a.value("--raw-size"), &bp.read.rawWidth, &bp.read.rawHeight))
+        return summary.finish(fail("footprint", "--raw-size must be WxH, e.g. 550x550", kUsage));
+    long long threads = 0;
+    if (!a.getInt("--threads", 0, 256, &threads, &err) || !a.getInt("--max-pixels", 1, 1LL << 40, &bp.read.maxPixels, &err))
+        return summary.finish(fail("footprint", err, kUsage));
+    bp.threads = static_cast<int>(threads);
+    return summary.finish(runFootprint(a, bp, bo, summary));
 }
 
 namespace {
@@ -345,11 +466,15 @@ const std::string kTrendUsage =
     "usage: laserwb-cli trend IN.csv -o OUT.csv [--arcsec-per-px A] [--reject-sigma K] [--min-shots N]\n"
     "Monthly mean spot centroid per camera and beam (paper 001 long-term monitoring).\n"
     "IN.csv: header time,beam,x,y[,camera]; time as ISO date/date-time, YYYY-MM, or Unix seconds.\n"
+    "        A footprint report (laserwb-cli footprint -o report.csv, the workbench's review export) is\n"
+    "        read directly: its shots judged good with a time and a beam (the others are counted).\n"
     "OUT.csv: camera,beam,month,n,rejected,x_mean,y_mean,x_std,y_std,dx_px,dy_px,planar_change_px,\n"
     "         pointing_change_arcsec,beam_distance_px,distance_change_px (changes from the first month).\n"
     "  --arcsec-per-px A    pointing change per pixel (default {default:arcsec_per_px}, paper 001's LFC) = --set arcsec_per_px=A\n"
     "  --reject-sigma K     k-sigma rejection of shots within a month (default {default:reject_sigma}; 0 = off) = --set reject_sigma=K\n"
     "  --min-shots N        leave out months with fewer shots (default {default:min_shots}) = --set min_shots=N\n"
+    "  -o, --output OUT.csv the table; beside it OUT.csv.provenance.json (version, parameters, SHA-256\n"
+    "                       of the input and the output)\n"
     "\n" + ParamOptions<TrendParams>::paramsHelp("trend", "reject_sigma=2.5");
 }
 
@@ -429,13 +554,23 @@ int cmdTrend(int argc, char** argv) {
     core::OutputSet outs;
     outs.addInput(a.positional()[0]);
     outs.addOutput(out);
+    const bool toStdout = core::isStandardStream(out);
+    const std::string sidecar = core::provenancePathFor(out);
+    if (!toStdout) outs.addOutput(sidecar);
     if (int rc = checkOutputs("trend", outs)) return rc;
     std::vector<CentroidRecord> recs;
-    if (!readCentroidCsv(a.positional()[0], &recs, &err)) return fail("trend", err);
+    std::string note;
+    if (!readCentroidCsv(a.positional()[0], &recs, &err, &note)) return fail("trend", err);
+    if (!note.empty() && !a.quiet()) std::cerr << "trend: " << a.positional()[0] << ": " << note << "\n";
     const TrendResult tr = computeTrend(recs, tp);
     if (!tr.ok) return fail("trend", tr.error);
     for (const auto& w : tr.warnings) std::cerr << "laserwb-cli trend: warning: " << w << "\n";
     if (!writeTrendCsv(outs.stagingPath(out), tr.rows, &err)) return fail("trend", outs.unstaged(err));
+    core::Provenance prov;
+    prov.command = "trend";
+    prov.parameters = trendSchema().toJson(tp);
+    prov.inputs = {a.positional()[0], a.value("--config")};
+    if (!toStdout && !stageProvenance(outs, prov, {out}, sidecar, &err)) return fail("trend", err);
     if (int rc = commitOutputs("trend", outs)) return rc;
     if (!(a.has("-q") || a.has("--quiet"))) {
         // Summary: first → last month change per camera/beam.

@@ -3,6 +3,8 @@
 // filter flags and CRD normal points. The loading is core/slr/pass_input.hpp, the writing
 // core/slr/pass_output.hpp: the layer the SLR workspace of the GUI uses too.
 #include <algorithm>
+#include <chrono>
+#include <map>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -13,6 +15,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "cli_batch.hpp"
 #include "cli_commands.hpp"
 #include "cli_common.hpp"
 #include "core/common/atomic_file.hpp"
@@ -35,8 +38,9 @@ namespace slr = core::slr;
 
 namespace {
 
-const char* kSlrUsage =
+const std::string kSlrUsage = std::string(
     "usage: laserwb-cli slr INPUT [options] [-o OUT.csv] [--crd-out FILE] [--npt-out FILE] (at least one)\n"
+    "       laserwb-cli slr --all-passes --out-dir DIR [options] CRD...\n"
     "Screens one SLR pass: signal extraction by binary image (paper 004; automatic scale by default),\n"
     "then a trend fit with k-sigma rejection and ILRS normal points. A summary goes to stderr.\n"
     "INPUT: a CRD file (v1 or v2; recognised by its H1 record, whatever the name) or an O-C CSV\n"
@@ -62,7 +66,10 @@ const char* kSlrUsage =
     "                        (the station's own type-11 block), skipped (sampled engineering data, or\n"
     "                        fewer than 5 records: the least a pass has, in every mode). --cpf may\n"
     "                        then be a folder: the CPF that fits each pass (satellite ids and time\n"
-    "                        span) is picked; a pass no CPF fits is screened on its own TOF trend\n"
+    "                        span) is picked; a pass no CPF fits is screened on its own TOF trend.\n"
+    "                        Many CRD files (named, or --files-from): each file's products go to\n"
+    "                        DIR/NAME/ (NAME: the file name without .gz and its extension); a file\n"
+    "                        that fails does not stop the others\n"
 "  --threads N           with --all-passes: passes screened side by side on N threads (default 0:\n"
 "                        every core); the products are the same for any N\n"
     "Parameters (automatic screening by default; each option replaces only its own parameter; every\n"
@@ -100,12 +107,17 @@ const char* kSlrUsage =
     "                        none (no signal, no bin full enough, a doubtful pass) the file holds the\n"
     "                        reason as a comment record '00 no normal points: ...' in their place\n"
     "                        (--crd-out and --npt-out need a CRD input)\n"
-    "  -q, --quiet           no summary and no warnings on stderr (errors still)\n"
+    "  Provenance: each output file F gets F.provenance.json beside it, and --out-dir DIR gets\n"
+    "                        DIR/provenance.json: version, parameters, settings, SHA-256 of every\n"
+    "                        input and output\n"
+    "  -q, --quiet           no summary and no warnings on stderr (errors still)\n") +
+    kBatchOptionsHelp + "  (--shard with --all-passes: a share of the files)\n"
     "Exit codes: 0 done (\"no signal found\" is a result), 1 bad input or failed run (nothing\n"
     "written), 2 usage error, 3 written but doubtful: the accepted points cannot be told from noise,\n"
     "no scale shows a track, or two parallel tracks were merged (the classes are written, no normal\n"
     "points; --all-passes: some pass is doubtful), 4 --all-passes wrote its outputs but some passes\n"
-    "failed (summary.csv says why).\n";
+    "failed (summary.csv says why); with many files: 4 when some files failed or had passes that\n"
+    "failed, 1 when all failed.\n";
 
 std::string passList(const std::vector<slr::PassSummary>& passes) {
     std::string s;
@@ -250,9 +262,9 @@ struct SearchThreads {
 class AllPasses {
 public:
     AllPasses(std::string cmd, std::string input, const slr::PassInputParams& in, const RunInputs& ri, std::string dir,
-              int threads, bool quiet)
+              int threads, bool quiet, const core::Provenance& prov)
         : m_cmd(std::move(cmd)), m_input(std::move(input)), m_in(in), m_ri(ri), m_dir(std::move(dir)), m_threads(threads),
-          m_quiet(quiet) {
+          m_quiet(quiet), m_prov(prov) {
         m_in.cpfFallback = true;  // a pass the CPF does not fit is screened on its own TOF trend, with a note
     }
 
@@ -295,6 +307,7 @@ private:
             for (const char* ext : {".csv", ".frd", ".npt"}) m_outs.addOutput(m_dir + "/" + name + ext);
         }
         m_outs.addOutput(nptPath());
+        m_outs.addOutput(provenancePath());
         m_outs.addOutput(summaryPath());
         // summary.csv lists the set: written last; an earlier run's pass files go.
         m_outs.setManifest(summaryPath(), m_dir,
@@ -312,6 +325,7 @@ private:
     }
 
     std::string summaryPath() const { return m_dir + "/summary.csv"; }
+    std::string provenancePath() const { return m_dir + "/provenance.json"; }
     std::string nptPath() const { return m_dir + "/normal_points.npt"; }
     std::string out(size_t i, const char* ext) const { return m_dir + "/" + m_names[i] + ext; }
 
@@ -485,6 +499,14 @@ private:
         for (const std::string& r : m_rows) summary += r;
         if (!core::writeFileAtomic(m_outs.stagingPath(summaryPath()), summary, &err))
             return fail(m_cmd, m_outs.unstaged(err));
+        // The folder's provenance: every file of the set with its checksum.
+        std::vector<std::string> written;
+        for (size_t i = 0; i < m_n; ++i)
+            if (m_written[i])
+                for (const char* ext : {".csv", ".frd", ".npt"}) written.push_back(out(i, ext));
+        if (dayNpt) written.push_back(nptPath());
+        written.push_back(summaryPath());
+        if (!stageProvenance(m_outs, m_prov, written, provenancePath(), &err)) return fail(m_cmd, err);
         if (int rc = commitOutputs(m_cmd, m_outs)) return rc;
         m_folder->keep();
         if (!m_quiet)
@@ -506,6 +528,7 @@ private:
     std::string m_dir;
     int m_threads;  ///< --threads, 0 = every core
     bool m_quiet;
+    const core::Provenance& m_prov;
     slr::PassSources m_sources;
     std::unique_ptr<FolderForOutputs> m_folder;
     core::OutputSet m_outs;
@@ -528,14 +551,15 @@ private:
 };
 
 int screenAllPasses(const std::string& cmd, const std::string& input, const slr::PassInputParams& in, const RunInputs& ri,
-                    const std::string& dir, int threads, bool quiet) {
-    return AllPasses(cmd, input, in, ri, dir, threads, quiet).run();
+                    const std::string& dir, int threads, bool quiet, const core::Provenance& prov) {
+    return AllPasses(cmd, input, in, ri, dir, threads, quiet, prov).run();
 }
 
 }  // namespace
 
 // What one slr run reads and writes, from its options (cmdSlr's first stage).
 struct SlrPlan {
+    std::vector<std::string> inputs;  ///< the files named and listed (--files-from)
     std::string input, out, crdOut, nptOut, outDir;
     bool allPasses = false, csvInput = false;
     long long passK = 0;  ///< --pass K (1-based), 0 when not given
@@ -548,13 +572,15 @@ struct SlrPlan {
 int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrParams>& params, SlrPlan* pl,
                core::OutputSet* outs) {
     // ---- usage checks (exit 2, nothing read or written) ----
-    if (a.positional().size() != 1)
-        return fail(cmd, a.positional().empty() ? "no input file" : "give exactly one input file", kUsage);
-    pl->input = a.positional()[0];
-    const std::string& input = pl->input;
-    if (a.has("-o") && a.has("--output")) return fail(cmd, "give -o or --output, not both", kUsage);
     pl->allPasses = a.has("--all-passes");
     const bool allPasses = pl->allPasses;
+    if (pl->inputs.empty()) return fail(cmd, "no input file", kUsage);
+    if (pl->inputs.size() != 1 && !allPasses)
+        return fail(cmd, "give exactly one input file (many files: --all-passes --out-dir DIR)", kUsage);
+    if (a.has("--shard") && !allPasses) return fail(cmd, "--shard goes with --all-passes (a share of many files)", kUsage);
+    pl->input = pl->inputs[0];
+    const std::string& input = pl->input;
+    if (a.has("-o") && a.has("--output")) return fail(cmd, "give -o or --output, not both", kUsage);
     pl->outDir = a.value("--out-dir");
     const std::string& outDir = pl->outDir;
     if (allPasses) {
@@ -579,6 +605,8 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
     outs->addInput(input);
     for (const std::string* p : {&out, &crdOut, &nptOut})
         if (!p->empty()) outs->addOutput(*p);
+    for (const std::string* p : {&out, &crdOut, &nptOut})  // each file's provenance beside it
+        if (!p->empty() && !core::isStandardStream(*p)) outs->addOutput(core::provenancePathFor(*p));
     if (!allPasses)
         if (int rc = checkOutputs(cmd, *outs)) return rc;
     if (a.has("--cpf") && !a.has("--stations"))
@@ -592,6 +620,7 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
         slr::SlrParams probe = cliDefaults();
         if (int rc = params.apply(cmd, a, &probe)) return rc;
     }
+    if (pl->inputs.size() > 1) return -1;  // (each file is looked at when its turn comes)
     pl->csvInput = !slr::isCrdFile(input);
     const bool csvInput = pl->csvInput;
     if (csvInput && (!crdOut.empty() || !nptOut.empty()))
@@ -609,6 +638,9 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
     return -1;
 }
 
+int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrParams>& params, const BatchOptions& bo,
+           RunSummary& summary);
+
 int cmdSlr(int argc, char** argv) {
     const std::string cmd = "slr";
     Args a(cmd, kSlrUsage);
@@ -625,6 +657,7 @@ int cmdSlr(int argc, char** argv) {
     for (const char* o : {"--cpf", "--stations", "--satellite", "--preset", "--pass", "-o", "--output", "--crd-out", "--npt-out",
                           "--out-dir", "--threads"})
         a.option(o, true);
+    declareBatchOptions(a);
     for (const char* o : {"--quiet", "-q", "--help", "-h", "--help-params", "--all-passes"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail(cmd, a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
@@ -641,8 +674,87 @@ int cmdSlr(int argc, char** argv) {
         std::cout << params.json(p);
         return kOk;
     }
+    BatchOptions bo;
+    const int loaded = loadBatchOptions(cmd, a, &bo);
+    RunSummary summary(cmd, bo);
+    if (loaded) return summary.finish(loaded);
+    return summary.finish(runSlr(cmd, a, params, bo, summary));
+}
+
+namespace {
+// An --all-passes input's folder name when there are many: its file name without ".gz" and
+// without its last extension ("7810_lageos1_crd_20240101_00_00.frd.gz" -> "..._00_00").
+std::string stemOf(const std::string& path) {
+    std::string n = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+    if (n.size() > 3 && n.compare(n.size() - 3, 3, ".gz") == 0) n.resize(n.size() - 3);
+    if (const size_t dot = n.find_last_of('.'); dot != std::string::npos && dot > 0) n.resize(dot);
+    return n;
+}
+
+// --all-passes over the inputs of this shard: one file's products in --out-dir, or with many
+// files each file's in DIR/<its name>/; a file that fails does not stop the others.
+int allPassFiles(const std::string& cmd, const SlrPlan& plan, const slr::PassInputParams& in, const RunInputs& ri,
+                 const core::Provenance& prov, const BatchOptions& bo, RunSummary& summary, bool quiet) {
+    const std::vector<std::string>& inputs = plan.inputs;
+    const bool many = inputs.size() > 1;
+    std::vector<std::string> dirs;
+    std::map<std::string, std::string> seen;
+    for (const auto& f : inputs) {
+        if (!many) {
+            dirs.push_back(plan.outDir);
+            continue;
+        }
+        const std::string name = stemOf(f);
+        if (auto [it, fresh] = seen.emplace(name, f); !fresh)
+            return fail(cmd, f + " and " + it->second + " would both write " + plan.outDir + "/" + name + "/ (rename one)", kUsage);
+        dirs.push_back(plan.outDir + "/" + name);
+    }
+    summary.setInputsTotal(inputs.size());
+    const auto [first, last] = bo.shard.range(inputs.size());
+    if (many && first < last) ::mkdir(plan.outDir.c_str(), 0777);  // (each file's folder is made by its run)
+    size_t failed = 0, partial = 0, doubtful = 0, run = 0;
+    for (size_t i = first; i < last; ++i) {
+        core::Json e = core::Json::object();
+        e["input"] = inputs[i];
+        e["outputs"] = core::Json::array({dirs[i]});
+        core::Provenance p = prov;
+        p.inputs.front() = inputs[i];
+        std::string why;
+        if (bo.skipExisting && outputsComplete(p, {}, dirs[i] + "/provenance.json", &why)) {
+            e["status"] = "skipped";
+            summary.addInput(e);
+            if (!quiet) std::cerr << "slr: " << inputs[i] << ": " << dirs[i] << "/ is complete: skipped\n";
+            continue;
+        }
+        const auto t0 = std::chrono::steady_clock::now();
+        const int rc = !slr::isCrdFile(inputs[i])
+                           ? fail(cmd, inputs[i] + ": cannot be read or is not a CRD file (--all-passes reads CRD files)")
+                           : screenAllPasses(cmd, inputs[i], in, ri, dirs[i], static_cast<int>(plan.threads), quiet, p);
+        ++run;
+        e["status"] = rc == kOk ? "ok" : rc == kDoubtful ? "doubtful" : rc == kSomeFailed ? "some passes failed" : "failed";
+        e["exit_code"] = rc;
+        if (rc != kOk && rc != kDoubtful) e["error"] = lastFailure();
+        e["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        summary.addInput(e);
+        if (!many) return rc;
+        (rc == kDoubtful ? doubtful : rc == kSomeFailed ? partial : rc != kOk ? failed : run)++;
+    }
+    if (!many) return kOk;  // (the one file is another shard's)
+    if (failed || partial) {
+        std::cerr << "laserwb-cli slr: " << failed << " of " << (last - first) << " files failed, " << partial
+                  << " had passes that failed (--summary-json, each folder's summary.csv say why)\n";
+        return failed == last - first ? kFailed : kSomeFailed;
+    }
+    return doubtful ? kDoubtful : kOk;
+}
+}  // namespace
+
+int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrParams>& params, const BatchOptions& bo,
+           RunSummary& summary) {
     const bool quiet = a.has("--quiet") || a.has("-q");
     SlrPlan plan;
+    plan.inputs = a.positional();
+    plan.inputs.insert(plan.inputs.end(), bo.listed.begin(), bo.listed.end());
     core::OutputSet outs;
     if (int rc = planSlrRun(cmd, a, params, &plan, &outs); rc >= 0) return rc;
     const std::string &input = plan.input, &out = plan.out, &crdOut = plan.crdOut, &nptOut = plan.nptOut;
@@ -668,7 +780,19 @@ int cmdSlr(int argc, char** argv) {
         if (!snx.ok) return fail(cmd, named(a.value("--stations"), snx.error));
     }
     const RunInputs ri{presets, a.has("--preset"), a.value("--satellite"), snx.ok ? &snx.file : nullptr, &params, &a};
-    if (allPasses) return screenAllPasses(cmd, input, in, ri, plan.outDir, static_cast<int>(plan.threads), quiet);
+    // Provenance: the parameters (--all-passes: before each pass's preset; the presets file is
+    // an input), what else shapes the outputs, and the inputs.
+    core::Provenance prov;
+    prov.command = allPasses ? "slr --all-passes" : "slr";
+    {
+        slr::SlrParams base = cliDefaults();
+        if (int rc = params.apply(cmd, a, &base)) return rc;
+        prov.parameters = slr::slrSchema().toJson(base);
+    }
+    prov.settings = {{"pass", passK},          {"cpf", a.value("--cpf")}, {"stations", a.value("--stations")},
+                     {"preset", a.value("--preset")}, {"satellite", a.value("--satellite")}};
+    prov.inputs = {input, a.value("--config"), a.value("--cpf"), a.value("--stations"), a.value("--preset")};
+    if (allPasses) return allPassFiles(cmd, plan, in, ri, prov, bo, summary, quiet);
 
     // ---- the pass ----
     const int passIndex = a.has("--pass") ? static_cast<int>(passK - 1) : -1;
@@ -697,6 +821,28 @@ int cmdSlr(int argc, char** argv) {
     if (!nptOut.empty() && !(run.postfit.binLengthS > 0) && !(run.postfit.altitudeKm > 0))
         return fail(cmd, "no normal points: the satellite's altitude is unknown (give --np-bin S or a preset with altitude_km)",
                     kUsage);
+    // The pass's own parameters (its preset and context applied) in the provenance; with
+    // --skip-existing, outputs whose sidecars say they are complete are not made again.
+    prov.parameters = slr::slrSchema().toJson(run);
+    std::vector<std::string> products;
+    for (const std::string* o : {&out, &crdOut, &nptOut})
+        if (!o->empty() && !core::isStandardStream(*o)) products.push_back(*o);
+    core::Json entry = core::Json::object();
+    entry["input"] = input;
+    entry["outputs"] = products;
+    for (const auto& n : products) summary.addOutput(n), summary.addOutput(core::provenancePathFor(n));
+    summary.setInputsTotal(1);
+    if (bo.skipExisting && !products.empty()) {
+        bool complete = true;
+        for (const auto& n : products) complete = complete && outputsComplete(prov, products, core::provenancePathFor(n));
+        if (complete) {
+            entry["status"] = "skipped";
+            summary.addInput(entry);
+            if (!quiet) std::cerr << "slr: " << products.front() << " is complete: skipped\n";
+            return kOk;
+        }
+    }
+    const auto t0 = std::chrono::steady_clock::now();
 
     // ---- screening and post-fit ----
     const slr::PassRunResult r = slr::runPass(pass, run);
@@ -721,7 +867,12 @@ int cmdSlr(int argc, char** argv) {
     if (!nptOut.empty() && !slr::writeNormalPointCrd(outs.stagingPath(nptOut), pass, nps, &err,
                                                      slr::normalPointProduct(r.postOk ? &r.post : nullptr, &r.screen, noneReason)))
         return fail(cmd, named(nptOut, outs.unstaged(err)));
+    for (const auto& n : products)
+        if (!stageProvenance(outs, prov, products, core::provenancePathFor(n), &err)) return fail(cmd, err);
     if (int rc = commitOutputs(cmd, outs)) return rc;
+    entry["status"] = doubtful ? "doubtful" : "ok";
+    entry["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    summary.addInput(entry);
     if (!quiet) {
         printSummary(what, pass, settings, r);
         std::string written;

@@ -1,6 +1,7 @@
 // laserwb-cli slr --all-passes (issue 11): a day of passes in one go. Every pass of the file is a
 // row of summary.csv; a pass that cannot be processed is a failed row with its reason and the
 // others go on; --cpf may be a folder, from which each pass gets the prediction that fits it.
+#include <QCryptographicHash>
 #include <QtTest>
 
 #include <unistd.h>
@@ -8,6 +9,7 @@
 #include <sys/wait.h>
 
 #include "core/common/csv.hpp"
+#include "core/common/json.hpp"
 #include "core/common/text.hpp"
 #include "core/slr/pass_input.hpp"
 #include "test_support.hpp"
@@ -267,9 +269,10 @@ private slots:
         QCOMPARE(runCli({"slr", in, "--all-passes", "--out-dir", p("t3"), "--threads", "3", "-q"}, 600000).exitCode, 3);
         const QStringList files = QDir(p("t1")).entryList(QDir::Files, QDir::Name);
         QCOMPARE(QDir(p("t3")).entryList(QDir::Files, QDir::Name), files);
-        QVERIFY2(files.size() == 3 * 54 + 2, qPrintable(files.join(' ')));  // passNNN.csv/.frd/.npt, the day's NPT, summary
+        // passNNN.csv/.frd/.npt, the day's NPT, summary, provenance
+        QVERIFY2(files.size() == 3 * 54 + 3, qPrintable(files.join(' ')));
         for (const QString& f : files) {
-            if (f == "summary.csv") continue;
+            if (f == "summary.csv" || f == "provenance.json") continue;  // (the latter has the former's checksum)
             QVERIFY2(readAll(p("t1/" + f)) == readAll(p("t3/" + f)), qPrintable(f));
         }
         CsvTable a = summary(p("t1/summary.csv")), b = summary(p("t3/summary.csv"));
@@ -279,6 +282,82 @@ private slots:
             for (auto& row : t->rows) row.erase(row.begin() + sec);
         QCOMPARE(b.rows, a.rows);
         for (size_t i = 0; i < a.rows.size(); ++i) QCOMPARE(a.rows[i][0], std::to_string(i + 1));  // the file's order
+    }
+
+    // Many files (issue 31): each file's products in DIR/NAME/; --shard K/N splits the files and
+    // the shards' folders are the unsharded run's (summary.csv but for its seconds column, which
+    // is a measured time); --skip-existing leaves complete folders alone; a file that fails does
+    // not stop the others (exit 4); --summary-json says per file what happened; each folder's
+    // provenance.json holds the inputs' SHA-256.
+    void manyFilesShardsAndSkips() {
+        const QStringList files = {sharedPath("slr/7080_Beacon-C_crd_071220_1715_0.frd"),
+                                   sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd"),
+                                   sharedPath("slr/7080_STELLA_crd_071220_2128_0.frd")};
+        for (const QString& f : files)
+            if (!QFile::exists(f)) QSKIP("shared SLR data absent");
+        const QStringList env = {"SOURCE_DATE_EPOCH=1700000000"};
+        const auto whole = runCli(QStringList{"slr", "--all-passes", "--out-dir", p("many"), "-q"} + files, 120000, env);
+        QVERIFY2(whole.exitCode == 0, qPrintable(whole.err));
+        // Shards 1/2 and 2/2 from a list on a file.
+        QVERIFY(writeText(p("crd_list.txt"), (files.join("\n") + "\n").toUtf8()));
+        for (const QString k : {"1/2", "2/2"}) {
+            const auto r = runCli({"slr", "--all-passes", "--out-dir", p("sharded"), "--files-from", p("crd_list.txt"), "--shard",
+                                   k, "-q", "--summary-json", p("shard.json")},
+                                  120000, env);
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            const auto j = readJsonFile(p("shard.json").toStdString());
+            QVERIFY(j.ok);
+            QCOMPARE(int(j.value["inputs"].size()), k == "1/2" ? 1 : 2);  // files 0 | 1, 2
+        }
+        auto withoutSeconds = [](const QString& path) {
+            CsvTable t = summary(path);
+            const int c = t.column("seconds");
+            for (auto& row : t.rows) row[size_t(c)].clear();
+            return t.rows;
+        };
+        int compared = 0;
+        for (const QString& f : files) {
+            const QString name = QFileInfo(f).completeBaseName();
+            const QString a = p("many/" + name), b = p("sharded/" + name);
+            QCOMPARE(filesIn(b), filesIn(a));
+            for (const QString& out : filesIn(a)) {
+                if (out == "summary.csv" || out == "provenance.json") continue;
+                QVERIFY2(readAll(a + "/" + out) == readAll(b + "/" + out), qPrintable(name + "/" + out));
+                ++compared;
+            }
+            QCOMPARE(withoutSeconds(b + "/summary.csv"), withoutSeconds(a + "/summary.csv"));
+            // The provenance: the CRD file's SHA-256, the folder's files by name.
+            const auto j = readJsonFile((a + "/provenance.json").toStdString());
+            QVERIFY(j.ok);
+            QCOMPARE(j.value["inputs"][0]["path"].get<std::string>(), f.toStdString());
+            QCOMPARE(j.value["inputs"][0]["sha256"].get<std::string>(),
+                     QCryptographicHash::hash(readAll(f), QCryptographicHash::Sha256).toHex().toStdString());
+            QCOMPARE(j.value["outputs"][0]["path"].get<std::string>(), std::string("pass001.csv"));
+        }
+        QVERIFY(compared >= 3 * 4);
+        // --skip-existing: nothing is screened again.
+        const auto skip = runCli(QStringList{"slr", "--all-passes", "--out-dir", p("many"), "--skip-existing", "--summary-json",
+                                             p("skip.json")} + files, 120000, env);
+        QCOMPARE(skip.exitCode, 0);
+        QCOMPARE(skip.err.count("is complete: skipped"), 3);
+        const auto sj = readJsonFile(p("skip.json").toStdString());
+        QVERIFY(sj.ok);
+        QCOMPARE(sj.value["status_counts"]["skipped"].get<int>(), 3);
+        // A file that is not there: the others are written, exit 4, the summary names it.
+        const auto part = runCli({"slr", "--all-passes", "--out-dir", p("part"), files[0], p("nosuch.frd"), "-q",
+                                  "--summary-json", p("part.json")},
+                                 120000, env);
+        QCOMPARE(part.exitCode, 4);
+        QVERIFY(QFile::exists(p("part/7080_Beacon-C_crd_071220_1715_0/summary.csv")));
+        const auto pj = readJsonFile(p("part.json").toStdString());
+        QVERIFY(pj.ok);
+        QCOMPARE(pj.value["exit_code"].get<int>(), 4);
+        QCOMPARE(pj.value["inputs"][1]["status"].get<std::string>(), std::string("failed"));
+        QVERIFY(QString::fromStdString(pj.value["inputs"][1]["error"].get<std::string>()).contains("nosuch.frd"));
+        // Two files of one name would share a folder: refused before any work.
+        const auto same = runCli({"slr", "--all-passes", "--out-dir", p("same"), files[0], p("crd_list.txt"), files[0]});
+        QCOMPARE(same.exitCode, 2);
+        QVERIFY2(same.err.contains("would both write"), qPrintable(same.err));
     }
 
     void usage() {

@@ -18,6 +18,7 @@
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
 #include "core/footprint/image_io.hpp"
+#include "core/footprint/shot_list.hpp"
 #include "ui/footprint_export.hpp"
 #include "ui/frame_loader.hpp"
 
@@ -76,36 +77,20 @@ bool expandSpecs(const QStringList& inputs, std::vector<Spec>* out, QStringList*
                 continue;
             }
         }
-        if (csvList && !anyImage) {
-            const core::CsvReadResult csv = core::readCsv(in.toStdString());
-            if (!csv.ok) {
-                *error = QString::fromStdString(csv.error);
+        if (csvList && !anyImage) {  // a shot list (core/footprint/shot_list.hpp: the CLI's reader)
+            const ShotListResult list = readShotList(in.toStdString());
+            if (!list.ok) {
+                *error = QString::fromStdString(list.error);
                 return false;
             }
-            const auto& t = csv.table;
-            const int cf = t.column("file"), ct = t.column("time"), cb = t.column("beam"), cc = t.column("camera"),
-                      cx = t.column("center_x"), cy = t.column("center_y");
-            if (cf < 0) {
-                *error = in + ":1: a shot list needs a 'file' column (optional: time, beam, camera, center_x, center_y)";
-                return false;
-            }
-            const QString base = QFileInfo(in).absolutePath();
-            for (size_t r = 0; r < t.rows.size(); ++r) {
+            for (const ShotSpec& l : list.shots) {
                 Spec s;
-                const QString f = QString::fromStdString(t.rows[r][cf]);
-                s.file = QFileInfo(f).isAbsolute() ? f : base + "/" + f;
-                if (ct >= 0) s.time = QString::fromStdString(t.rows[r][ct]);
-                if (cb >= 0) s.beam = QString::fromStdString(t.rows[r][cb]);
-                if (cc >= 0) s.camera = QString::fromStdString(t.rows[r][cc]);
-                if (cx >= 0 && cy >= 0 && !t.rows[r][cx].empty()) {
-                    double x = 0, y = 0;
-                    if (!core::parseDouble(t.rows[r][cx], &x) || !core::parseDouble(t.rows[r][cy], &y)) {
-                        *error = QString("%1:%2: center_x/center_y must be numbers").arg(in).arg(t.lines[r]);
-                        return false;
-                    }
-                    s.hasCenter = true;
-                    s.center = {x, y};
-                }
+                s.file = QString::fromStdString(l.file);
+                s.time = QString::fromStdString(l.time);
+                s.beam = QString::fromStdString(l.beam);
+                s.camera = QString::fromStdString(l.camera);
+                s.hasCenter = l.hasCenter;
+                s.center = {l.centerX, l.centerY};
                 out->push_back(s);
             }
             continue;

@@ -13,12 +13,12 @@ bool writeFootprintReview(const std::vector<Shot>& shots, Method method, const Q
     for (const Shot& s : shots) {
         BatchItem it;
         it.file = s.file.toStdString();
+        it.time = s.time.toStdString();
+        it.beam = s.beam.toStdString();
+        it.camera = s.camera.toStdString();
         RoiReview rv;
         rv.overridden = s.overridden;
         rv.verdict = s.overrideVerdict;
-        rv.time = s.time.toStdString();
-        rv.beam = s.beam.toStdString();
-        rv.camera = s.camera.toStdString();
         rv.note = s.note.toStdString();
         it.reviews.push_back(rv);
         if (!s.loadError.isEmpty()) {

@@ -1,6 +1,7 @@
 #include "core/footprint/batch.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -14,23 +15,38 @@ namespace lwb::core::footprint {
 
 BatchResult runFootprintBatch(const std::vector<std::string>& files, const BatchParams& params, Feedback* fb,
                               const BatchItemFn& onItem) {
+    std::vector<ShotSpec> shots(files.size());
+    for (size_t i = 0; i < files.size(); ++i) shots[i].file = files[i];
+    return runFootprintBatch(shots, params, fb, onItem);
+}
+
+BatchResult runFootprintBatch(const std::vector<ShotSpec>& shots, const BatchParams& params, Feedback* fb,
+                              const BatchItemFn& onItem) {
     BatchResult out;
-    out.items.resize(files.size());
+    out.items.resize(shots.size());
     std::mutex cbMutex;
-    const size_t total = files.size();
+    const size_t total = shots.size();
     const size_t done = parallelForEach(total, params.threads, fb, [&](size_t i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const ShotSpec& shot = shots[i];
         BatchItem& item = out.items[i];
-        item.file = files[i];
+        item.file = shot.file;
+        item.time = shot.time;
+        item.beam = shot.beam;
+        item.camera = shot.camera;
         try {
-            const ImageReadResult img = readFrame(files[i], params.read);
+            const ImageReadResult img = readFrame(shot.file, params.read);
             if (!img.ok)
                 item.readError = img.error;
+            else if (shot.hasCenter)
+                item.rois = processFrame(img.image, params.footprint, {cv::Point2d(shot.centerX, shot.centerY)});
             else
                 item.rois = processFrame(img.image, params.footprint, params.centres);
         } catch (const std::exception& e) {  // e.g. out of memory on a huge frame: this item only
             item.rois.clear();
-            item.readError = files[i] + ": " + e.what();
+            item.readError = shot.file + ": " + e.what();
         }
+        item.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         std::lock_guard<std::mutex> lock(cbMutex);
         if (onItem) onItem(i, item);
     });
@@ -60,8 +76,8 @@ std::vector<FootprintResult> ShotsTask::run(const Inputs& in, const FootprintPar
 std::string footprintCsvHeader(const FootprintCsvOptions& o) {
     std::string h =
         "file,x,y,verdict,reasons,method,noise_class,sigma_x,sigma_y,axis_ratio,tilt_deg,major_axis_px,"
-        "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0";
-    if (o.review) h += ",time,beam,camera,auto_verdict,override,note";
+        "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0,time,beam,camera";
+    if (o.review) h += ",auto_verdict,override,note";
     return h + "\n";
 }
 
@@ -73,11 +89,14 @@ std::string joinReasons(const std::vector<std::string>& r) {
     for (size_t i = 0; i < r.size(); ++i) s += (i ? "; " : "") + r[i];
     return s;
 }
-// The review columns of ROI k (empty fields when the item carries no review for it).
+// The shot's columns (time, beam, camera), and the review columns of ROI k (empty fields when
+// the item carries no review for it).
+std::string shotColumns(const BatchItem& item) {
+    return "," + csvEscape(item.time) + "," + csvEscape(item.beam) + "," + csvEscape(item.camera);
+}
 std::string reviewColumns(const BatchItem& item, size_t k, Verdict computed) {
     const RoiReview rv = k < item.reviews.size() ? item.reviews[k] : RoiReview{};
-    return "," + csvEscape(rv.time) + "," + csvEscape(rv.beam) + "," + csvEscape(rv.camera) + "," +
-           verdictName(computed) + "," + (rv.overridden ? "manual" : "") + "," + csvEscape(rv.note);
+    return "," + std::string(verdictName(computed)) + "," + (rv.overridden ? "manual" : "") + "," + csvEscape(rv.note);
 }
 }  // namespace
 
@@ -88,7 +107,8 @@ std::string footprintCsvRows(const BatchItem& item, Method method, const Footpri
     // Unreadable frames and failed fits are rejected rows, whatever the review says.
     auto failedRow = [&](const std::string& reason, size_t k, const std::string& roi) {
         if (o.acceptedOnly) return;
-        out += file + ",,,rejected," + csvEscape(reason) + "," + methodName(method) + ",,,,,,,,,," + roi + ",,,,,,,";
+        out += file + ",,,rejected," + csvEscape(reason) + "," + methodName(method) + ",,,,,,,,,," + roi + ",,,,,,," +
+               shotColumns(item);
         if (o.review) out += reviewColumns(item, k, Verdict::Rejected);
         out += "\n";
         ++count;
@@ -127,7 +147,7 @@ std::string footprintCsvRows(const BatchItem& item, Method method, const Footpri
                    num(f.amplitude, 1) + "," + num(f.background, 1);
         else
             out += ",,,," + num(r.background.level, 1);
-        out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY);
+        out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY) + shotColumns(item);
         if (o.review) out += reviewColumns(item, k, r.verdict);
         out += "\n";
         ++count;

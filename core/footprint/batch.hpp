@@ -10,6 +10,7 @@
 #include "core/common/task.hpp"
 #include "core/footprint/image_io.hpp"
 #include "core/footprint/pipeline.hpp"
+#include "core/footprint/shot_list.hpp"
 
 namespace lwb::core::footprint {
 
@@ -17,6 +18,7 @@ struct BatchParams {
     FootprintParams footprint;
     ImageReadParams read;
     std::vector<cv::Point2d> centres;  ///< nominal centres (full-image px); empty: search / whole ROI
+                                       ///< (a shot with a centre of its own uses that one alone)
     int threads = 0;                   ///< worker threads; 0 = all cores
 };
 
@@ -24,11 +26,13 @@ struct BatchParams {
 struct RoiReview {
     bool overridden = false;            ///< a manual verdict replaces the computed one
     Verdict verdict = Verdict::Good;    ///< the manual verdict (when overridden)
-    std::string time, beam, camera, note;
+    std::string note;
 };
 
 struct BatchItem {
     std::string file;
+    std::string time, beam, camera;     ///< the shot's, from a shot list or frame metadata ("" unknown)
+    double seconds = 0;                 ///< reading and processing time (run summaries; not in the report)
     std::string readError;              ///< the frame could not be read (then rois is empty)
     std::vector<FrameRoiResult> rois;   ///< one per centre (or one)
     std::vector<RoiReview> reviews;     ///< review tables only: one per ROI (one when unreadable)
@@ -36,8 +40,8 @@ struct BatchItem {
 
 /// What a footprint report holds beyond the CLI's columns.
 struct FootprintCsvOptions {
-    /// Adds time,beam,camera,auto_verdict,override,note; `verdict` is then the effective one (the
-    /// manual verdict where there is one) and auto_verdict the computed one.
+    /// Adds auto_verdict,override,note; `verdict` is then the effective one (the manual verdict
+    /// where there is one) and auto_verdict the computed one.
     bool review = false;
     bool acceptedOnly = false;          ///< only rows whose (effective) verdict is good, with a fit
 };
@@ -54,6 +58,11 @@ using BatchItemFn = std::function<void(size_t index, const BatchItem& item)>;
 /// Reads and processes every file. Long runs poll fb for cancellation and report progress.
 BatchResult runFootprintBatch(const std::vector<std::string>& files, const BatchParams& params,
                               Feedback* fb = nullptr, const BatchItemFn& onItem = {});
+/// The same over shots (core/footprint/shot_list.hpp): each item carries its shot's time, beam
+/// and camera, and a shot with a centre of its own is cut there (one ROI) instead of at
+/// params.centres.
+BatchResult runFootprintBatch(const std::vector<ShotSpec>& shots, const BatchParams& params, Feedback* fb = nullptr,
+                              const BatchItemFn& onItem = {});
 
 /// The footprint shots task (core/common/task.hpp): every shot's ROI through processRoi on all
 /// cores (the per-ROI stage of runFootprintBatch, which reads the frames and cuts the ROIs
@@ -75,7 +84,8 @@ struct ShotsTask {
     static Outputs run(const Inputs& in, const FootprintParams& params, const Reuse& reuse, Feedback* fb);
 };
 
-/// The CSV header of footprint reports.
+/// The CSV header of footprint reports: file,x,y,verdict,...,roi_x0,roi_y0,time,beam,camera (the
+/// shot's, empty when unknown), then the review's columns.
 std::string footprintCsvHeader(const FootprintCsvOptions& options = {});
 /// One CSV row per ROI of the item (coordinates in full-image px), each ending in '\n'; adds the
 /// number of rows to *rows when given.

@@ -147,7 +147,7 @@ namespace {
 constexpr double kMaxCentroidPx = 1e6;
 }  // namespace
 
-bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, std::string* error) {
+bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, std::string* error, std::string* note) {
     const CsvReadResult csv = readCsv(path);
     if (!csv.ok) {
         *error = csv.error;
@@ -155,13 +155,23 @@ bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, 
     }
     const CsvTable& t = csv.table;
     const int ct = t.column("time"), cb = t.column("beam"), cx = t.column("x"), cy = t.column("y"),
-              cc = t.column("camera");
+              cc = t.column("camera"), cv = t.column("verdict");
     if (ct < 0 || cb < 0 || cx < 0 || cy < 0) {
         *error = path + ":1: header needs the columns time, beam, x, y (camera optional)";
         return false;
     }
+    // A footprint report: the good shots with a position, a time and a beam.
+    size_t notGood = 0, noPosition = 0, noTimeOrBeam = 0;
+    auto leftOut = [&](const std::vector<std::string>& row) {
+        if (cv < 0) return false;
+        if (trim(row[size_t(cv)]) != "good") return ++notGood, true;
+        if (trim(row[size_t(cx)]).empty() || trim(row[size_t(cy)]).empty()) return ++noPosition, true;
+        if (trim(row[size_t(ct)]).empty() || trim(row[size_t(cb)]).empty()) return ++noTimeOrBeam, true;
+        return false;
+    };
     for (size_t i = 0; i < t.rows.size(); ++i) {
         const auto& row = t.rows[i];
+        if (leftOut(row)) continue;
         const std::string where = whereInFile(path, t.lines[i]);
         CentroidRecord r;
         r.line = t.lines[i];
@@ -188,8 +198,20 @@ bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, 
         if (cc >= 0) r.camera = std::string(trim(row[cc]));
         out->push_back(std::move(r));
     }
+    std::string why;
+    if (cv >= 0) {
+        auto part = [&](size_t n, const char* what) {
+            if (n) why += (why.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+        };
+        part(notGood, "not judged good");
+        part(noPosition, "good without a position");
+        part(noTimeOrBeam, "good without a time or a beam");
+        if (!why.empty()) why = "a footprint report: " + why + " left out of " + std::to_string(t.rows.size()) + " rows";
+    }
+    if (note) *note = why;
     if (out->empty()) {
-        *error = path + ": no centroid rows";
+        *error = path + ": no centroid rows" + (why.empty() ? "" : " (" + why + ")") +
+                 (noTimeOrBeam ? "; give the frames' times and beams with a shot list or --metadata" : "");
         return false;
     }
     return true;

@@ -54,8 +54,12 @@ struct TrendResult {
 bool monthOf(const std::string& time, std::string* month, std::string* why = nullptr);
 
 /// Reads per-shot centroids: CSV with header time,beam,x,y[,camera] (any order, extra columns
-/// ignored). Errors name the file and line.
-bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, std::string* error);
+/// ignored). Errors name the file and line. A footprint report (`laserwb-cli footprint`'s
+/// report.csv or the workbench's review export: a `verdict` column) is read as the workbench
+/// makes its trend: only the shots judged good that have a position, a time and a beam; the
+/// others are left out and *note (when given) says how many and why.
+bool readCentroidCsv(const std::string& path, std::vector<CentroidRecord>* out, std::string* error,
+                     std::string* note = nullptr);
 
 TrendResult computeTrend(const std::vector<CentroidRecord>& records, const TrendParams& params);
 std::string validate(const TrendParams& p);

@@ -135,6 +135,10 @@ void footprintSeeds() {
          "time,beam,x,y,camera\n2020-03-02,1,57.18,313.10,LSI\n2020-03-15T10:22:01Z,2,228.01,156.67,LSI\n"
          "2020/04/15 10:22,1,57.3,313.0,LFI\n2020-05,2,228.1,156.5,LFI\n1593561600,1,57.2,313.2,LSI\n");
     text("centroid_csv", "nocamera.csv", "beam,time,y,x,note\n1,2021-01-01,20,10,a\n1,2021-02-01,20.5,10.1,\"b,c\"\n");
+    text("shot_list", "gui.csv",
+         "file,time,beam,camera,center_x,center_y\nm0/shot_000000.png,2021-03-10,1,LSI,60,311\n"
+         "m0/shot_000000.png,2021-03-10T08:30:00Z,2,LSI,228,158\n/abs/f.tif,2021-04-01T12:00:00+02:00,1,LFI,,\n");
+    text("shot_list", "plain.csv", "# file,time,beam\nfile,time,beam\r\na.png,1593561600,1\r\n\"b,c.png\",2020-05,2\r\n");
     const footprint::FootprintParams fp;
     text("footprint_config", "defaults.json", footprint::footprintParamsToJson(fp).dump());
     text("footprint_config", "partial.json", "{\"method\": \"gcm\", \"roi\": {\"size\": 40}}\n");

@@ -1,0 +1,53 @@
+#include "core/common/provenance.hpp"
+
+#include <set>
+#include <sys/stat.h>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/sha256.hpp"
+#include "lwb_version.hpp"
+
+namespace lwb::core {
+
+bool provenanceText(const Provenance& p, const std::vector<std::string>& outputs, const std::vector<std::string>& files,
+                    std::string* text, std::string* error) {
+    Json j = Json::object();
+    j["software"] = "laserwb";
+    j["version"] = LWB_VERSION;
+    j["command"] = p.command;
+    j["parameters"] = p.parameters;
+    j["settings"] = p.settings;
+    auto listed = [&](const std::string& name, const std::string& file) -> Json {
+        Json e = Json::object();
+        e["path"] = name;
+        struct stat st {};
+        if (isStandardStream(file) || (::stat(file.c_str(), &st) == 0 && S_ISDIR(st.st_mode))) {
+            e["sha256"] = nullptr;  // (standard input, read once; a folder, such as a CPF folder)
+            return e;
+        }
+        std::string hex;
+        if (!sha256File(file, &hex, error)) return Json();
+        e["sha256"] = hex;
+        return e;
+    };
+    Json in = Json::array();
+    std::set<std::string> seen;
+    for (const std::string& f : p.inputs) {
+        if (f.empty() || !seen.insert(f).second) continue;
+        Json e = listed(f, f);
+        if (e.is_null()) return false;
+        in.push_back(std::move(e));
+    }
+    j["inputs"] = std::move(in);
+    Json out = Json::array();
+    for (size_t i = 0; i < outputs.size() && i < files.size(); ++i) {
+        Json e = listed(outputs[i], files[i]);
+        if (e.is_null()) return false;
+        out.push_back(std::move(e));
+    }
+    j["outputs"] = std::move(out);
+    *text = dumpJson(j);
+    return true;
+}
+
+}  // namespace lwb::core

@@ -1,0 +1,37 @@
+#pragma once
+// Provenance of a command's outputs: which program and version wrote them, with which
+// parameters (the schema's JSON, as --print-config writes it) and other settings, from which
+// inputs (SHA-256 of each), and the SHA-256 of every output written. It is written beside the
+// outputs as a sidecar, OUT.provenance.json for an output file named on the command line and
+// DIR/provenance.json for an output folder, in the same OutputSet (all or nothing with them).
+// A sidecar rather than a comment header: the project's CSV reader skips '#' lines, but
+// spreadsheets, pandas' read_csv and most other readers do not, and a CRD's records have no room
+// for a parameter set (its C5 software record names the program and version, and ours write it).
+// Reproducible: no clock, no host or user names; the same command on the same inputs writes the
+// same bytes.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/common/json.hpp"
+
+namespace lwb::core {
+
+struct Provenance {
+    std::string command;                   ///< e.g. "footprint", "slr --all-passes"
+    Json parameters = Json::object();      ///< the schema's JSON of the parameters used
+    Json settings = Json::object();        ///< other settings that shape the outputs (centres, shard, ...)
+    std::vector<std::string> inputs;       ///< the files read, as named (duplicates dropped)
+};
+
+/// The sidecar of an output file.
+inline std::string provenancePathFor(const std::string& output) { return output + ".provenance.json"; }
+
+/// The sidecar's JSON text: software, version, command, parameters, settings, inputs with their
+/// SHA-256, and outputs (`outputs`: the names to record, `files`: where their bytes are now,
+/// e.g. the staged copies; the same size) with theirs. Standard input ("-") and folders are
+/// listed without a checksum (null). False with *error when a file cannot be read.
+bool provenanceText(const Provenance& p, const std::vector<std::string>& outputs, const std::vector<std::string>& files,
+                    std::string* text, std::string* error);
+
+}  // namespace lwb::core

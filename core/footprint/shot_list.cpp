@@ -1,0 +1,164 @@
+#include "core/footprint/shot_list.hpp"
+
+#include <climits>
+#include <cstdlib>
+#include <map>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/common/csv.hpp"
+#include "core/common/text.hpp"
+#include "core/footprint/image_io.hpp"
+#include "core/footprint/trend.hpp"
+
+namespace lwb::core::footprint {
+
+namespace {
+std::string folderOf(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+std::string nameOf(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+// An absolute, symlink-free spelling when the file exists, else the path made absolute.
+std::string absolute(const std::string& path) {
+    if (char* r = ::realpath(path.c_str(), nullptr)) {
+        std::string s(r);
+        std::free(r);
+        return s;
+    }
+    if (!path.empty() && path[0] == '/') return path;
+    char cwd[PATH_MAX];
+    return ::getcwd(cwd, sizeof cwd) ? std::string(cwd) + "/" + path : path;
+}
+}  // namespace
+
+bool isShotListFile(const std::string& path) {
+    if (path.size() < 4 || toLower(path.substr(path.size() - 4)) != ".csv") return false;
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+ShotListResult readShotList(const std::string& path) {
+    ShotListResult res;
+    const CsvReadResult csv = readCsv(path);
+    if (!csv.ok) {
+        res.error = csv.error;
+        return res;
+    }
+    const CsvTable& t = csv.table;
+    const int cf = t.column("file"), ct = t.column("time"), cb = t.column("beam"), cc = t.column("camera"),
+              cx = t.column("center_x"), cy = t.column("center_y");
+    if (cf < 0) {
+        res.error = path + ":1: a shot list needs a 'file' column (optional: time, beam, camera, center_x, center_y)";
+        return res;
+    }
+    if ((cx < 0) != (cy < 0)) {
+        res.error = path + ":1: center_x and center_y go together (the list has only " +
+                    std::string(cx < 0 ? "center_y" : "center_x") + ")";
+        return res;
+    }
+    const std::string base = folderOf(path);
+    for (size_t r = 0; r < t.rows.size(); ++r) {
+        const auto& row = t.rows[r];
+        const std::string where = whereInFile(path, t.lines[r]);
+        ShotSpec s;
+        s.source = path;
+        s.line = t.lines[r];
+        const std::string f(trim(row[size_t(cf)]));
+        if (f.empty()) {
+            res.error = where + "empty file";
+            return res;
+        }
+        s.file = f[0] == '/' ? f : base + f;
+        if (ct >= 0) s.time = std::string(trim(row[size_t(ct)]));
+        if (cb >= 0) s.beam = std::string(trim(row[size_t(cb)]));
+        if (cc >= 0) s.camera = std::string(trim(row[size_t(cc)]));
+        std::string month, why;
+        if (!s.time.empty() && !monthOf(s.time, &month, &why)) {
+            res.error = where + "time \"" + printableExcerpt(s.time) + "\": " + why;
+            return res;
+        }
+        if (cx >= 0) {
+            const std::string x(trim(row[size_t(cx)])), y(trim(row[size_t(cy)]));
+            if (x.empty() != y.empty()) {
+                res.error = where + "center_x and center_y go together (one of them is empty)";
+                return res;
+            }
+            if (!x.empty()) {
+                if (!parseDouble(x, &s.centerX) || !parseDouble(y, &s.centerY)) {
+                    res.error = where + "center_x/center_y must be numbers, not \"" + printableExcerpt(x) + "\", \"" +
+                                printableExcerpt(y) + "\"";
+                    return res;
+                }
+                s.hasCenter = true;
+            }
+        }
+        res.shots.push_back(std::move(s));
+    }
+    res.ok = true;
+    return res;
+}
+
+bool expandShots(const std::vector<std::string>& inputs, std::vector<ShotSpec>* out, std::string* error) {
+    for (const std::string& in : inputs) {
+        if (isShotListFile(in)) {
+            ShotListResult l = readShotList(in);
+            if (!l.ok) {
+                *error = l.error;
+                return false;
+            }
+            for (auto& s : l.shots) out->push_back(std::move(s));
+            continue;
+        }
+        std::vector<std::string> files;
+        if (!expandInputs({in}, &files, error)) return false;
+        for (auto& f : files) {
+            ShotSpec s;
+            s.file = std::move(f);
+            out->push_back(std::move(s));
+        }
+    }
+    return true;
+}
+
+bool applyFrameMetadata(const ShotListResult& metadata, std::vector<ShotSpec>* shots, size_t* unmatched,
+                        std::string* error) {
+    std::map<std::string, const ShotSpec*> byPath;
+    std::map<std::string, std::vector<const ShotSpec*>> byName;
+    for (const ShotSpec& m : metadata.shots) {
+        const std::string key = absolute(m.file);
+        if (auto [it, fresh] = byPath.emplace(key, &m); !fresh) {
+            *error = whereInFile(m.source, m.line) + m.file + " is described already at line " +
+                     std::to_string(it->second->line) +
+                     " (frame metadata: one row per frame; a frame with two beams is two rows of a shot list)";
+            return false;
+        }
+        byName[nameOf(m.file)].push_back(&m);
+    }
+    *unmatched = 0;
+    for (ShotSpec& s : *shots) {
+        const ShotSpec* m = nullptr;
+        if (auto it = byPath.find(absolute(s.file)); it != byPath.end())
+            m = it->second;
+        else if (auto n = byName.find(nameOf(s.file)); n != byName.end() && n->second.size() == 1)
+            m = n->second.front();
+        if (!m) {
+            ++*unmatched;
+            continue;
+        }
+        if (s.time.empty()) s.time = m->time;
+        if (s.beam.empty()) s.beam = m->beam;
+        if (s.camera.empty()) s.camera = m->camera;
+        if (!s.hasCenter && m->hasCenter) {
+            s.hasCenter = true;
+            s.centerX = m->centerX;
+            s.centerY = m->centerY;
+        }
+    }
+    return true;
+}
+
+}  // namespace lwb::core::footprint
