@@ -12,24 +12,23 @@
 
 namespace lwb::core::footprint {
 
-BatchResult runFootprintBatch(const std::vector<std::string>& files, const BatchParams& params, Feedback* fb,
-                              const BatchItemFn& onItem) {
+namespace {
+// Every item through `one` (which fills item.rois or item.readError) on all cores, with the
+// callback serialised; the stage runFootprintBatch and runFootprintFrames share.
+BatchResult runItems(const std::vector<std::string>& names, int threads, Feedback* fb, const BatchItemFn& onItem,
+                     const std::function<void(size_t, BatchItem&)>& one) {
     BatchResult out;
-    out.items.resize(files.size());
+    out.items.resize(names.size());
     std::mutex cbMutex;
-    const size_t total = files.size();
-    const size_t done = parallelForEach(total, params.threads, fb, [&](size_t i) {
+    const size_t total = names.size();
+    const size_t done = parallelForEach(total, threads, fb, [&](size_t i) {
         BatchItem& item = out.items[i];
-        item.file = files[i];
+        item.file = names[i];
         try {
-            const ImageReadResult img = readFrame(files[i], params.read);
-            if (!img.ok)
-                item.readError = img.error;
-            else
-                item.rois = processFrame(img.image, params.footprint, params.centres);
+            one(i, item);
         } catch (const std::exception& e) {  // e.g. out of memory on a huge frame: this item only
             item.rois.clear();
-            item.readError = files[i] + ": " + e.what();
+            item.readError = names[i] + ": " + e.what();
         }
         std::lock_guard<std::mutex> lock(cbMutex);
         if (onItem) onItem(i, item);
@@ -39,6 +38,28 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
     for (const auto& it : out.items)
         if (!it.readError.empty()) ++out.readErrors;
     return out;
+}
+}  // namespace
+
+BatchResult runFootprintBatch(const std::vector<std::string>& files, const BatchParams& params, Feedback* fb,
+                              const BatchItemFn& onItem) {
+    return runItems(files, params.threads, fb, onItem, [&](size_t i, BatchItem& item) {
+        const ImageReadResult img = readFrame(files[i], params.read);
+        if (!img.ok)
+            item.readError = img.error;
+        else
+            item.rois = processFrame(img.image, params.footprint, params.centres);
+    });
+}
+
+BatchResult runFootprintFrames(const std::vector<cv::Mat>& frames, const std::vector<std::string>& names,
+                               const BatchParams& params, Feedback* fb, const BatchItemFn& onItem) {
+    return runItems(names, params.threads, fb, onItem, [&](size_t i, BatchItem& item) {
+        if (i >= frames.size() || frames[i].empty() || frames[i].type() != CV_32FC1)
+            item.readError = names[i] + ": not a single-channel float32 frame";
+        else
+            item.rois = processFrame(frames[i], params.footprint, params.centres);
+    });
 }
 
 std::vector<FootprintResult> ShotsTask::run(const Inputs& in, const FootprintParams& params, const Reuse& reuse, Feedback* fb) {
