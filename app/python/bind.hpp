@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "core/common/schema.hpp"
 
 namespace lwb::py {
@@ -71,6 +73,9 @@ template <class T>
 py::array_t<T> viewOf(const std::vector<T>& v, py::handle owner) {
     return py::array_t<T>({static_cast<py::ssize_t>(v.size())}, {static_cast<py::ssize_t>(sizeof(T))}, v.data(), owner);
 }
+
+/// A float32 numpy array that owns `image` (CV_32FC1; no copy of its pixels).
+py::array_t<float> ownedArray(cv::Mat image);
 
 /// The rows of a CSV text (header first) as {column: numpy array}: numbers as float64 (empty
 /// cells NaN), columns in `textColumns` as arrays of str, `intColumns` as int64.

@@ -170,10 +170,7 @@ void bindFootprint(py::module_& top) {
             r = fp::readFrame(path, rp);
         }
         check(r.ok, r.error);
-        auto* keep = new cv::Mat(r.image);  // the array owns the decoded frame (no copy)
-        py::capsule owner(keep, [](void* p) { delete static_cast<cv::Mat*>(p); });
-        return py::array_t<float>({keep->rows, keep->cols}, {static_cast<py::ssize_t>(keep->step[0]), static_cast<py::ssize_t>(sizeof(float))},
-                                  keep->ptr<float>(), owner);
+        return ownedArray(r.image);  // (the array owns the decoded frame: no copy)
     }, py::arg("path"), py::arg("raw_size") = py::none(), py::arg("max_pixels") = 0,
        "One frame or ROI as the CLI reads it (16-bit PNG/TIFF/PGM, raw with raw_size=(w, h)): a float32 array of DN.");
 

@@ -214,25 +214,14 @@ void bindTrendCalibRadiometry(py::module_& top) {
         }, py::arg("path"), "As laserwb-cli radiometry fit --regions.");
     r.def("read_image", [](const py::object& path, long long maxPixels) {
         const std::string file = fsPath(path);
-        auto* img = new cv::Mat;
+        cv::Mat img;
         std::string err;
-        bool ok = false;
         {
             py::gil_scoped_release nogil;
-            ok = rad::readImageAnyDepth(file, img, &err, maxPixels > 0 ? maxPixels : core::kMaxImagePixels);
-            if (ok && img->type() != CV_32FC1) {
-                cv::Mat f;
-                img->convertTo(f, CV_32F);
-                *img = f;
-            }
+            check(rad::readImageAnyDepth(file, &img, &err, maxPixels > 0 ? maxPixels : core::kMaxImagePixels), err);
+            if (img.type() != CV_32FC1) img.convertTo(img, CV_32F);
         }
-        if (!ok) {
-            delete img;
-            throw Error(err);
-        }
-        py::capsule owner(img, [](void* p) { delete static_cast<cv::Mat*>(p); });
-        return py::array_t<float>({img->rows, img->cols}, {static_cast<py::ssize_t>(img->step[0]), static_cast<py::ssize_t>(sizeof(float))},
-                                  img->ptr<float>(), owner);
+        return ownedArray(std::move(img));
     }, py::arg("path"), py::arg("max_pixels") = 0, "An image as the radiometry commands read it, as float32.");
     r.def("fit", [](const py::object& regions, const py::object& image, const py::object& params) {
         const rad::RadiometryParams p = paramsFrom(params, kRadiometry);

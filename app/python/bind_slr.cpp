@@ -231,6 +231,22 @@ void bindSlr(py::module_& top) {
         .def_property_readonly("oc_origin", [](const Pass& p) { return p.data->ocOrigin; })
         .def_property_readonly("oc_note", [](const Pass& p) { return p.data->ocNote; })
         .def_property_readonly("warnings", [](const Pass& p) { return p.warnings; })
+        .def_static("from_arrays", [](const py::array_t<double, py::array::forcecast>& t, const py::array_t<double, py::array::forcecast>& oc,
+                                      const std::string& name) {
+            if (t.ndim() != 1 || oc.ndim() != 1) throw py::value_error("t and oc must be 1-D arrays");
+            std::vector<double> tv(t.data(), t.data() + t.size()), ov(oc.data(), oc.data() + oc.size());
+            slr::PassInputResult r;
+            {
+                py::gil_scoped_release nogil;
+                r = slr::passFromOc(std::move(tv), std::move(ov), name);
+            }
+            check(r.ok, r.error);
+            Pass p;
+            p.data = std::make_shared<const slr::PassData>(std::move(r.pass));
+            p.warnings = r.warnings;
+            return p;
+        }, py::arg("t"), py::arg("oc"), py::arg("name") = "arrays",
+           "A pass from epochs and O-C (s, two-way), as an O-C table's columns: run() screens it, write(csv=) writes its table.")
         .def("__len__", [](const Pass& p) { return p.data->t.size(); })
         .def("__repr__", [](const Pass& p) {
             return "<laserwb.slr.Pass " + p.data->source + " pass " + std::to_string(p.data->passIndex + 1) + ": " +

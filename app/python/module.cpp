@@ -32,6 +32,14 @@ std::string valueText(const py::handle& v) {
     return py::str(v);
 }
 
+py::array_t<float> ownedArray(cv::Mat image) {
+    auto* keep = new cv::Mat(std::move(image));
+    py::capsule owner(keep, [](void* p) { delete static_cast<cv::Mat*>(p); });
+    return py::array_t<float>({keep->rows, keep->cols},
+                              {static_cast<py::ssize_t>(keep->step[0]), static_cast<py::ssize_t>(sizeof(float))},
+                              keep->ptr<float>(), owner);
+}
+
 py::dict csvColumns(const std::string& csv, const std::vector<std::string>& textColumns,
                     const std::vector<std::string>& intColumns) {
     const core::CsvReadResult r = core::parseCsv(csv, "report");

@@ -194,6 +194,15 @@ def test_slr_oc_table(data, tmp_path):
     with pytest.raises(laserwb.ParameterError):
         r.write(npt=str(tmp_path / "x.npt"))  # an O-C table has no CRD headers
     assert not os.path.exists(tmp_path / "x.npt")
+    # the same table given as numpy arrays: the same screening and file
+    cols = np.genfromtxt(src, delimiter=",", names=True)
+    p = laserwb.slr.Pass.from_arrays(cols["epoch_s"], cols["oc_s"], name=src)
+    a = laserwb.slr.run(p)
+    a.write(csv=str(tmp_path / "arrays.csv"))
+    same_bytes(tmp_path / "cli.csv", tmp_path / "arrays.csv")
+    assert a.accepted_count == r.accepted_count > 0
+    with pytest.raises(laserwb.Error):
+        laserwb.slr.Pass.from_arrays([0.0, 1, 2], [0.0, 1, float("nan")])
 
 
 @pytest.mark.skipif(not os.path.isdir(os.path.join(SHARED, "data", "slr")), reason="no ../shared/data (real ILRS files)")
