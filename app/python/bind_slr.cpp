@@ -231,7 +231,8 @@ void bindSlr(py::module_& top) {
         .def_property_readonly("oc_origin", [](const Pass& p) { return p.data->ocOrigin; })
         .def_property_readonly("oc_note", [](const Pass& p) { return p.data->ocNote; })
         .def_property_readonly("warnings", [](const Pass& p) { return p.warnings; })
-        .def_static("from_arrays", [](const py::array_t<double, py::array::forcecast>& t, const py::array_t<double, py::array::forcecast>& oc,
+        .def_static("from_arrays", [](const py::array_t<double, py::array::c_style | py::array::forcecast>& t,
+                                      const py::array_t<double, py::array::c_style | py::array::forcecast>& oc,
                                       const std::string& name) {
             if (t.ndim() != 1 || oc.ndim() != 1) throw py::value_error("t and oc must be 1-D arrays");
             std::vector<double> tv(t.data(), t.data() + t.size()), ov(oc.data(), oc.data() + oc.size());
