@@ -64,13 +64,16 @@ def main():
     wall = time.perf_counter() - t0
     for r in results:
         print(f"{os.path.basename(r['input'])}: {r['status']} {r.get('accepted', '')} {r['reason']}")
-    print(f"{len(passes)} passes in {wall:.2f} s: {len(passes) / wall:.2f} passes/s")
+    busy = sum(r["seconds"] for r in results)  # time inside the tasks, over all workers
+    print(f"{len(passes)} passes in {wall:.2f} s: {len(passes) / wall:.2f} passes/s; "
+          f"per worker busy {len(passes) / busy:.2f} passes/s")
 
     # One task per batch of frames
     t0 = time.perf_counter()
-    lwd.reprocess_frames(client, shots, os.path.join(args.work, "footprint.csv"), batch=args.batch)
+    busy = sum(lwd.reprocess_frames(client, shots, os.path.join(args.work, "footprint.csv"), batch=args.batch))
     wall = time.perf_counter() - t0
-    print(f"{len(shots)} frames in {wall:.2f} s: {len(shots) / wall:.1f} frames/s")
+    print(f"{len(shots)} frames in {wall:.2f} s: {len(shots) / wall:.1f} frames/s; "
+          f"per worker busy {len(shots) / busy:.1f} frames/s")
     client.close()
 
 

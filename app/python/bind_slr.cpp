@@ -13,6 +13,7 @@
 #include "core/slr/pass_output.hpp"
 #include "core/slr/pass_run.hpp"
 #include "core/slr/presets.hpp"
+#include "core/slr/screen_auto.hpp"
 #include "core/slr/sinex.hpp"
 #include "core/slr/slr_params.hpp"
 
@@ -304,6 +305,9 @@ void bindSlr(py::module_& top) {
           "laserwb-cli slr makes: its defaults, the preset file's entry for the satellite (preset,\n"
           "satellite), the normal-point context (stations: SINEX for day or night), then params (a\n"
           "SlrParams as --config, or {key: value} as --set). The GIL is released while it runs.");
+    m.def("set_search_threads", [](int n) { slr::setScaleSearchThreads(n); }, py::arg("n"),
+          "Threads of the automatic scale search (0: every core, the default). The answer is the same\n"
+          "for any number; a Dask worker running one pass per task sets 1 (as slr --all-passes does).");
     m.def("default_params", [] { return slr::commandDefaults(); }, "The defaults of laserwb-cli slr.");
 }
 

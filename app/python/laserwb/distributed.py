@@ -13,13 +13,37 @@ through this module, so the products are the bytes ``laserwb-cli`` writes for th
 The client may be a ``LocalCluster``'s or one of a multi-node cluster (docs/scale.md): the workers
 need ``laserwb`` importable and the same file system paths.
 """
+import ctypes
 import os
 import time
+
+_tuned = False
+
+
+def _undo_nanny_malloc_trim():
+    """Dask's nanny starts its workers with MALLOC_TRIM_THRESHOLD_=65536 (the config key
+    distributed.nanny.pre-spawn-environ). A fixed trim threshold also switches off glibc's
+    dynamic mmap threshold, so every large temporary array of a pass is a fresh mmap: a pass took
+    4 times as long in a worker (0.67 against 2.8 passes/s, docs/scale.md). In such a process the
+    two thresholds are set as glibc's dynamic ones would grow (256 MiB trim, 32 MiB mmap); nothing
+    changes where the variable is not set."""
+    global _tuned
+    if _tuned or not os.environ.get("MALLOC_TRIM_THRESHOLD_"):
+        return
+    try:
+        libc = ctypes.CDLL("libc.so.6")
+        libc.mallopt(-1, 256 << 20)  # M_TRIM_THRESHOLD
+        libc.mallopt(-3, 32 << 20)  # M_MMAP_THRESHOLD
+    except (OSError, AttributeError):  # not glibc: nothing to undo
+        pass
+    _tuned = True
 
 
 def _pass_task(path, out_dir, params, preset, satellite, cpf, stations):
     import laserwb  # (imported on the worker)
 
+    _undo_nanny_malloc_trim()
+    laserwb.slr.set_search_threads(1)  # one core per task: the cluster's workers are the parallelism
     stem = os.path.splitext(os.path.basename(path))[0]
     outs = {k: os.path.join(out_dir, stem + ext) for k, ext in (("csv", ".csv"), ("crd", ".flagged.frd"), ("npt", ".npt"))}
     t0 = time.perf_counter()
@@ -43,6 +67,7 @@ def reprocess_passes(client, crd_files, out_dir, params=None, preset=None, satel
 def _frames_task(files, params, preset, method, centres):
     import laserwb
 
+    _undo_nanny_malloc_trim()
     t0 = time.perf_counter()
     # One thread per task: the cluster's workers are the parallelism.
     rep = laserwb.footprint.fit_batch(files, params=params, preset=preset, method=method, centres=centres, threads=1)
