@@ -39,6 +39,18 @@ const ParamsBinding<rad::RadiometryParams> kRadiometry{
 
 std::string fsPath(const py::object& o) { return py::str(py::module_::import("os").attr("fspath")(o)); }
 
+// A method that writes the object with a core writer (path, object, &error): the path as
+// os.fspath gives it, the GIL released while it writes, a failure raised with the core's message.
+template <class T, class W>
+auto writer(W write) {
+    return [write](const T& obj, const py::object& path) {
+        const std::string p = fsPath(path);
+        std::string err;
+        py::gil_scoped_release nogil;
+        check(write(p, obj, &err), err);
+    };
+}
+
 struct Trend {
     fp::TrendResult r;
 };
@@ -93,12 +105,11 @@ void bindTrendCalibRadiometry(py::module_& top) {
                             "beam_distance_px"_a = col([](const auto& r) { return r.beamDistancePx; }),
                             "distance_change_px"_a = col([](const auto& r) { return r.distanceChangePx; }));
         }, "{column: numpy array} of the monthly table (full precision)")
-        .def("write_csv", [](const Trend& x, const py::object& path) {
-            const std::string p = fsPath(path);
-            std::string err;
-            py::gil_scoped_release nogil;
-            check(fp::writeTrendCsv(p, x.r.rows, &err), err);
-        }, py::arg("path"), "Writes the table with the CLI's writer (writeTrendCsv).");
+        .def("write_csv",
+             writer<Trend>([](const std::string& p, const Trend& x, std::string* e) {
+                 return fp::writeTrendCsv(p, x.r.rows, e);
+             }),
+             py::arg("path"), "Writes the table with the CLI's writer (writeTrendCsv).");
     t.def("compute", [](const py::object& path, const py::object& params) {
         const fp::TrendParams p = paramsFrom(params, kTrend);
         const std::string file = fsPath(path);
@@ -127,18 +138,16 @@ void bindTrendCalibRadiometry(py::module_& top) {
         })
         .def_property_readonly("doubts", [](const Detector& d) { return d.run.detector.doubts; })
         .def_property_readonly("warnings", [](const Detector& d) { return d.run.detector.warnings; })
-        .def("write_centre", [](const Detector& d, const py::object& path) {
-            const std::string p = fsPath(path);
-            std::string err;
-            py::gil_scoped_release nogil;
-            check(cal::writeDetectorCentreCsv(p, d.run.detector, &err), err);
-        }, py::arg("path"), "As laserwb-cli calib detector -o.")
-        .def("write_report", [](const Detector& d, const py::object& path) {
-            const std::string p = fsPath(path);
-            std::string err;
-            py::gil_scoped_release nogil;
-            check(cal::writeDetectorReportCsv(p, d.array, d.run.detector, &err), err);
-        }, py::arg("path"), "As laserwb-cli calib detector --detectors.");
+        .def("write_centre",
+             writer<Detector>([](const std::string& p, const Detector& d, std::string* e) {
+                 return cal::writeDetectorCentreCsv(p, d.run.detector, e);
+             }),
+             py::arg("path"), "As laserwb-cli calib detector -o.")
+        .def("write_report",
+             writer<Detector>([](const std::string& p, const Detector& d, std::string* e) {
+                 return cal::writeDetectorReportCsv(p, d.array, d.run.detector, e);
+             }),
+             py::arg("path"), "As laserwb-cli calib detector --detectors.");
     c.def("detector", [](const py::object& path, const py::object& params) {
         const cal::CalibParams p = paramsFrom(params, kCalib);
         const std::string file = fsPath(path);
@@ -165,12 +174,11 @@ void bindTrendCalibRadiometry(py::module_& top) {
             }
             return out;
         }, "{group name: {statistic: value}}")
-        .def("write_csv", [](const Stats& s, const py::object& path) {
-            const std::string p = fsPath(path);
-            std::string err;
-            py::gil_scoped_release nogil;
-            check(cal::writeTextOutput(p, cal::statsCsv(cal::statsRows(s.run.stats)), &err), err);
-        }, py::arg("path"), "As laserwb-cli calib stats -o.");
+        .def("write_csv",
+             writer<Stats>([](const std::string& p, const Stats& s, std::string* e) {
+                 return cal::writeTextOutput(p, cal::statsCsv(cal::statsRows(s.run.stats)), e);
+             }),
+             py::arg("path"), "As laserwb-cli calib stats -o.");
     c.def("stats", [](const py::object& path, const std::string& group, const py::object& params) {
         const cal::CalibParams p = paramsFrom(params, kCalib);
         const std::string file = fsPath(path);
@@ -200,18 +208,16 @@ void bindTrendCalibRadiometry(py::module_& top) {
                             "uncertainty_at_mean_pct"_a = x.uncertaintyAtMeanPct);
         })
         .def_property_readonly("warnings", [](const RadiometryFit& f) { return f.r.warnings; })
-        .def("write_csv", [](const RadiometryFit& f, const py::object& path) {
-            const std::string p = fsPath(path);
-            std::string err;
-            py::gil_scoped_release nogil;
-            check(rad::writeFitCsv(p, f.r.fit, &err), err);
-        }, py::arg("path"), "As laserwb-cli radiometry fit -o.")
-        .def("write_regions", [](const RadiometryFit& f, const py::object& path) {
-            const std::string p = fsPath(path);
-            std::string err;
-            py::gil_scoped_release nogil;
-            check(rad::writeRegionFitCsv(p, f.regions, f.r, &err), err);
-        }, py::arg("path"), "As laserwb-cli radiometry fit --regions.");
+        .def("write_csv",
+             writer<RadiometryFit>([](const std::string& p, const RadiometryFit& f, std::string* e) {
+                 return rad::writeFitCsv(p, f.r.fit, e);
+             }),
+             py::arg("path"), "As laserwb-cli radiometry fit -o.")
+        .def("write_regions",
+             writer<RadiometryFit>([](const std::string& p, const RadiometryFit& f, std::string* e) {
+                 return rad::writeRegionFitCsv(p, f.regions, f.r, e);
+             }),
+             py::arg("path"), "As laserwb-cli radiometry fit --regions.");
     r.def("read_image", [](const py::object& path, long long maxPixels) {
         const std::string file = fsPath(path);
         cv::Mat img;

@@ -49,6 +49,18 @@ struct PassRun {
     slr::PassRunResult r;
 };
 
+// A reader's result for `file`, read with the GIL released; raises with the core's message.
+template <class R, class F>
+R readReleased(const std::string& file, F read) {
+    R r;
+    {
+        py::gil_scoped_release nogil;
+        r = read(file);
+    }
+    check(r.ok, named(file, r.error));
+    return r;
+}
+
 py::dict summaryDict(const slr::PassSummary& s) {
     return py::dict("pass_number"_a = s.index + 1, "satellite"_a = s.satellite, "ilrs_id"_a = s.ilrsId, "station"_a = s.station,
                     "start"_a = s.start, "end"_a = s.end, "ranges"_a = s.ranges, "normal_points"_a = s.normalPoints,
@@ -184,34 +196,19 @@ void bindSlr(py::module_& top) {
 
     m.def("read_crd", [](const py::object& path) {
         const std::string file = fsPath(path);
-        slr::CrdReadResult r;
-        {
-            py::gil_scoped_release nogil;
-            r = slr::readCrd(file);
-        }
-        check(r.ok, named(file, r.error));
+        const auto r = readReleased<slr::CrdReadResult>(file, [](const std::string& f) { return slr::readCrd(f); });
         py::list out;
         for (const auto& s : slr::summarisePasses(r.file)) out.append(summaryDict(s));
         return out;
     }, py::arg("path"), "The passes of a CRD file (v1 or v2, gzip too): one dict per pass (pass_number from 1, satellite, station, start, end, ranges, ...).");
     m.def("read_cpf", [](const py::object& path) {
         const std::string file = fsPath(path);
-        slr::CpfReadResult r;
-        {
-            py::gil_scoped_release nogil;
-            r = slr::readCpf(file);
-        }
-        check(r.ok, named(file, r.error));
+        const auto r = readReleased<slr::CpfReadResult>(file, [](const std::string& f) { return slr::readCpf(f); });
         return py::dict("path"_a = file, "warnings"_a = r.warnings);
     }, py::arg("path"), "Reads and checks a CPF prediction (raises laserwb.Error with FILE:LINE when it is not one).");
     m.def("read_sinex", [](const py::object& path) {
         const std::string file = fsPath(path);
-        slr::SinexReadResult r;
-        {
-            py::gil_scoped_release nogil;
-            r = slr::readSinex(file);
-        }
-        check(r.ok, named(file, r.error));
+        const auto r = readReleased<slr::SinexReadResult>(file, [](const std::string& f) { return slr::readSinex(f); });
         std::vector<std::string> codes;
         for (const auto& s : r.file.sites) codes.push_back(s.code);
         return py::dict("path"_a = file, "sites"_a = codes, "solutions"_a = r.file.solutions.size(), "warnings"_a = r.warnings);
