@@ -7,6 +7,7 @@
 #include "core/calib/calib_params.hpp"
 #include "core/calib/calib_run.hpp"
 #include "core/calib/detector_array.hpp"
+#include "core/calib/pointing.hpp"
 #include "core/calib/validation_stats.hpp"
 #include "core/footprint/trend.hpp"
 #include "core/radiometry/radiometry_params.hpp"
@@ -56,6 +57,9 @@ struct Trend {
 };
 struct Detector {
     cal::DetectorArray array;
+    cal::CalibRunResult run;
+};
+struct Pointing {
     cal::CalibRunResult run;
 };
 struct Stats {
@@ -163,6 +167,53 @@ void bindTrendCalibRadiometry(py::module_& top) {
         check(d.run.detector.ok, file + ": " + d.run.detector.error);
         return d;
     }, py::arg("path"), py::arg("params") = py::none(), "Fits the footprint centre of a detector CSV (CalibTask), as laserwb-cli calib detector.");
+    py::class_<Pointing>(c, "PointingFit", "Pointing corrections and range biases from control points (CalibTask's pointing step).")
+        .def_property_readonly("beams", [](const Pointing& x) {
+            py::list out;
+            for (const auto& b : x.run.pointing.beams)
+                out.append(py::dict("id"_a = b.id, "solved"_a = b.solved, "d_alpha_rad"_a = b.dAlphaRad,
+                                    "d_alpha_sd_rad"_a = b.dAlphaSdRad, "d_beta_rad"_a = b.dBetaRad, "d_beta_sd_rad"_a = b.dBetaSdRad,
+                                    "d_rho_m"_a = b.dRhoM, "d_rho_sd_m"_a = b.dRhoSdM));
+            return out;
+        })
+        .def_property_readonly("warnings", [](const Pointing& x) { return x.run.pointing.warnings; })
+        .def("write_beams",
+             writer<Pointing>([](const std::string& p, const Pointing& x, std::string* e) {
+                 return cal::writeTextOutput(p, cal::pointingBeamsCsv(x.run.pointing), e);
+             }),
+             py::arg("path"), "As laserwb-cli calib pointing -o.")
+        .def("write_params",
+             writer<Pointing>([](const std::string& p, const Pointing& x, std::string* e) {
+                 return cal::writeTextOutput(p, cal::pointingParamsCsv(x.run.pointing), e);
+             }),
+             py::arg("path"), "As --params.")
+        .def("write_residuals",
+             writer<Pointing>([](const std::string& p, const Pointing& x, std::string* e) {
+                 return cal::writeTextOutput(p, cal::pointingResidualsCsv(x.run.pointing), e);
+             }),
+             py::arg("path"), "As --residuals.")
+        .def("write_iterations",
+             writer<Pointing>([](const std::string& p, const Pointing& x, std::string* e) {
+                 return cal::writeTextOutput(p, cal::pointingIterationsCsv(x.run.pointing), e);
+             }),
+             py::arg("path"), "As --iterations.");
+    c.def("pointing", [](const py::object& points, const py::object& beams, const py::object& params) {
+        const cal::CalibParams p = paramsFrom(params, kCalib);
+        const std::string file = fsPath(points), beamFile = fsPath(beams);
+        Pointing x;
+        {
+            py::gil_scoped_release nogil;
+            cal::CalibInputData in;
+            std::string err;
+            check(cal::readBeamsJson(beamFile, &in.beams, &err), err);
+            check(cal::readControlPointCsv(file, &in.points, &err), err);
+            check(!in.points.empty(), file + ": no control points");
+            x.run = core::runTask<cal::CalibTask>(in, p);
+        }
+        check(x.run.pointing.ok, file + ": " + x.run.pointing.error);
+        return x;
+    }, py::arg("points"), py::arg("beams"), py::arg("params") = py::none(),
+       "Pointing calibration from a control-point CSV and the beam designs (JSON), as laserwb-cli calib pointing.");
     py::class_<Stats>(c, "Stats", "Validation statistics of elevation differences (CalibTask's statistics).")
         .def("groups", [](const Stats& s) {
             py::dict out;

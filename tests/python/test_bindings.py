@@ -270,6 +270,19 @@ def test_calib_detector_and_stats_are_the_cli_files(data, tmp_path):
     assert all(g["n"] > 0 for g in s.groups().values())
 
 
+def test_calib_pointing_is_the_cli_files(data, tmp_path):
+    pts, beams = str(data / "calib" / "control_points.csv"), str(data / "calib" / "beams.json")
+    cli("calib", "pointing", pts, "--beams", beams, "--model", "dual", "-o", tmp_path / "cli_beams.csv",
+        "--iterations", tmp_path / "cli_iter.csv", "--params", tmp_path / "cli_params.csv", "-q")
+    x = laserwb.calib.pointing(pts, beams, params={"pointing.model": "dual"})
+    x.write_beams(str(tmp_path / "py_beams.csv"))
+    x.write_iterations(str(tmp_path / "py_iter.csv"))
+    x.write_params(str(tmp_path / "py_params.csv"))
+    for f in ("beams", "iter", "params"):
+        same_bytes(tmp_path / f"cli_{f}.csv", tmp_path / f"py_{f}.csv")
+    assert any(b["solved"] for b in x.beams)
+
+
 def test_radiometry_fit_is_the_cli_fit(tmp_path):
     cli("simulate", "radiometry", "-q", tmp_path / "field")
     regions = tmp_path / "field" / "regions.csv"

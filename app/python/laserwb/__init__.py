@@ -9,7 +9,7 @@ Families (each a submodule, with its parameter class built from the family's sch
   ``fit_batch``, ``read_frame``, ``FootprintParams``)
 - ``laserwb.slr``: SLR passes (``read_crd``, ``load_pass``, ``run``, ``process``, ``SlrParams``)
 - ``laserwb.trend``: monthly centroid trend (``compute``, ``TrendParams``)
-- ``laserwb.calib``: altimeter calibration (``detector``, ``stats``, ``CalibParams``)
+- ``laserwb.calib``: altimeter calibration (``detector``, ``pointing``, ``stats``, ``CalibParams``)
 - ``laserwb.radiometry``: DN to reflectance (``fit``, ``read_image``, ``RadiometryParams``)
 - ``laserwb.distributed``: folders of passes and frames on a Dask cluster
 
