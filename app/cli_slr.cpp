@@ -135,23 +135,11 @@ std::string named(const std::string& path, const std::string& msg) {
     return path + ": " + msg;
 }
 
-// The command's defaults: the core's, with the multi-photon rejection of 3 sigma.
-slr::SlrParams cliDefaults() {
-    slr::SlrParams p;
-    p.postfit.rejectSigma = 3;
-    return p;
-}
+// The command's defaults (the core's, with the multi-photon rejection of 3 sigma): Python's too.
+slr::SlrParams cliDefaults() { return slr::commandDefaults(); }
 
 std::string ps(double s) { return core::formatFixed(s * 1e12, 1) + " ps"; }
 std::string f4(double v) { return std::isfinite(v) ? core::formatFixed(v, 4) : std::string(); }
-// Why a pass has no normal point, for the NPT written in their place and the summary.
-std::string noNormalPointReason(const slr::PassRunResult& r) {
-    if (!r.doubt.empty()) return "doubtful: " + r.doubt;
-    if (r.acceptedCount == 0) return "no signal found";
-    if (!r.postOk) return r.postNote.empty() ? "no post-fit" : r.postNote;
-    if (!r.postNote.empty()) return r.postNote;
-    return "no bin holds the minimum number of kept points";
-}
 
 // A precision of nothing accepted is 0/0: said so, not printed as 0 (summary.csv leaves it empty).
 std::string precisionText(double v) { return std::isfinite(v) ? f4(v) : "undefined (nothing accepted)"; }
@@ -176,9 +164,7 @@ int settingsFor(const std::string& cmd, const slr::PassData& pass, const RunInpu
     // them) is not a value, so a printed config run again gives the same run.
     const slr::PostfitParams fromPass = out->params.postfit;
     if (int rc = ri.options->apply(cmd, *ri.args, &out->params)) return rc;
-    slr::PostfitParams& pp = out->params.postfit;
-    if (!(pp.altitudeKm > 0)) pp.altitudeKm = fromPass.altitudeKm;
-    if (!(pp.fireRateHz > 0)) pp.fireRateHz = fromPass.fireRateHz;
+    slr::keepPassContext(fromPass, &out->params.postfit);
     if (const std::string e = slr::validate(out->params.screen); !e.empty())
         return fail(cmd, (out->presetName.empty() ? std::string() : "preset " + out->presetName + ": ") + e, kUsage);
     return kOk;
@@ -447,10 +433,9 @@ private:
     void writePass(Job& j) const {
         const slr::PassData& pass = j.pass;
         const slr::PassRunResult& r = j.r;
-        const bool doubtful = !r.doubt.empty();
-        const std::vector<slr::NormalPoint> none;
-        const std::vector<slr::NormalPoint>& nps = !doubtful && r.postOk ? r.post.normalPoints : none;
-        const std::string noneReason = nps.empty() ? noNormalPointReason(r) : std::string();
+        const slr::DeliveredNormalPoints delivered = slr::deliveredNormalPoints(r);
+        const std::vector<slr::NormalPoint>& nps = delivered.points;
+        const std::string& noneReason = delivered.noneReason;
         // The station's flags: what the post-fit kept (its rejects are excluded), else the screening's.
         const std::vector<uint8_t>& flags = r.postOk ? r.post.kept : r.accepted;
         std::string& err = j.writeError;
@@ -854,9 +839,9 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
     // No normal point is a result, not a failure (no signal found, no bin full enough, a
     // doubtful pass): every requested output is written, the NPT with the reason in place of
     // its records, and the exit code says which (0, or 3 when doubtful).
-    const std::vector<slr::NormalPoint> noPoints;
-    const std::vector<slr::NormalPoint>& nps = !doubtful && r.postOk ? r.post.normalPoints : noPoints;
-    const std::string noneReason = nps.empty() ? noNormalPointReason(r) : std::string();
+    const slr::DeliveredNormalPoints delivered = slr::deliveredNormalPoints(r);
+    const std::vector<slr::NormalPoint>& nps = delivered.points;
+    const std::string& noneReason = delivered.noneReason;
 
     // ---- outputs: all or nothing ----
     if (!out.empty() &&

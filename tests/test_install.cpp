@@ -119,6 +119,43 @@ private slots:
         QCOMPARE(readAll(work.path() + "/report.csv").count('\n'), 3);
     }
 
+#ifdef LWB_PYTHON
+    void pythonModuleImportsFromThePrefix() {
+        // The installed package, with the build tree's out of PYTHONPATH: imported from the
+        // prefix, reads frames through the installed codec module (LD_DEBUG), and writes the
+        // installed CLI's report byte for byte.
+        QTemporaryDir work;
+        const QString site = m_prefix + "/" LWB_PYTHON_INSTALL_DIR;
+        QVERIFY2(QFile::exists(site + "/laserwb/__init__.py"), qPrintable(site));
+        Run r = run(cli(), {"simulate", "footprint", "--count", "3", "--seed", "2", "-q", work.path() + "/shots"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = run(cli(), {"footprint", work.path() + "/shots", "-o", work.path() + "/cli.csv", "-q"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString script =
+            "import sys, laserwb\n"
+            "print(laserwb.__file__)\n"
+            "rep = laserwb.footprint.fit_batch(sys.argv[1])\n"
+            "rep.write_csv(sys.argv[2])\n"
+            "p = laserwb.slr.SlrParams()\n"
+            "try:\n"
+            "    p['screen.cosine_c'] = 2\n"
+            "except ValueError as e:\n"
+            "    print('refused:', e)\n";
+        r = run(QStringLiteral(LWB_PYTHON), {"-c", script, work.path() + "/shots", work.path() + "/py.csv"},
+                {"PYTHONPATH=" + site, "LD_DEBUG=files", "LD_DEBUG_OUTPUT=" + work.path() + "/ld"}, work.path());
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.out.startsWith(site + "/laserwb/__init__.py"), qPrintable(r.out));
+        QVERIFY2(r.out.contains("refused: slr.screen.cosine_c = 2: must be in [0.5, 1)"), qPrintable(r.out));
+        QString loaded;
+        for (const QString& f : QDir(work.path()).entryList({"ld.*"}, QDir::Files)) loaded += readAll(work.path() + "/" + f);
+        QVERIFY2(loaded.contains("/libexec/laserwb/liblaserwb_codecs.so"), "the installed codec module was not loaded");
+        QVERIFY(!loaded.contains(QStringLiteral(LWB_BUILD_DIR "/bin/liblaserwb_codecs.so")));
+        QVERIFY(!loaded.contains(QStringLiteral(LWB_BUILD_DIR "/python/")));
+        QCOMPARE(readAll(work.path() + "/py.csv"), readAll(work.path() + "/cli.csv"));
+        QCOMPARE(readAll(work.path() + "/py.csv").count('\n'), 4);
+    }
+#endif
+
     void manPagesAndDesktopFilesAreValid() {
         // A man page renders (man -l), with its name and the command's options.
         Run r = run("sh", {"-c", "zcat '" + m_prefix + "/share/man/man1/laserwb-cli-slr.1.gz'"});
@@ -182,6 +219,9 @@ private slots:
                                  "./usr/share/man/man1/laserwb-cli-slr.1.gz", "./usr/share/applications/io.github.laserwb.LaserWorkbench.desktop",
                                  "./usr/share/laserwb/terrain/aero1.jpg"})
             QVERIFY2(c.out.contains(f), qPrintable(QString(f) + " not in the package:\n" + c.out));
+#ifdef LWB_PYTHON
+        QVERIFY2(c.out.contains("./usr/" LWB_PYTHON_INSTALL_DIR "/laserwb/__init__.py"), qPrintable(c.out));
+#endif
         const Run info = run("dpkg-deb", {"-f", deb, "Version", "Depends", "Section"});
         QVERIFY2(info.out.contains("Version: " LWB_VERSION), qPrintable(info.out));
         QVERIFY2(info.out.contains("libqt6") && info.out.contains("libopencv") && info.out.contains("libgdal"),

@@ -13,20 +13,16 @@
 
 namespace lwb::core::footprint {
 
-BatchResult runFootprintBatch(const std::vector<std::string>& files, const BatchParams& params, Feedback* fb,
-                              const BatchItemFn& onItem) {
-    std::vector<ShotSpec> shots(files.size());
-    for (size_t i = 0; i < files.size(); ++i) shots[i].file = files[i];
-    return runFootprintBatch(shots, params, fb, onItem);
-}
-
-BatchResult runFootprintBatch(const std::vector<ShotSpec>& shots, const BatchParams& params, Feedback* fb,
-                              const BatchItemFn& onItem) {
+namespace {
+// Every shot through `one` (which fills item.rois or item.readError) on all cores, with the
+// callback serialised; the stage runFootprintBatch and runFootprintFrames share.
+BatchResult runItems(const std::vector<ShotSpec>& shots, int threads, Feedback* fb, const BatchItemFn& onItem,
+                     const std::function<void(size_t, BatchItem&)>& one) {
     BatchResult out;
     out.items.resize(shots.size());
     std::mutex cbMutex;
     const size_t total = shots.size();
-    const size_t done = parallelForEach(total, params.threads, fb, [&](size_t i) {
+    const size_t done = parallelForEach(total, threads, fb, [&](size_t i) {
         const auto t0 = std::chrono::steady_clock::now();
         const ShotSpec& shot = shots[i];
         BatchItem& item = out.items[i];
@@ -35,13 +31,7 @@ BatchResult runFootprintBatch(const std::vector<ShotSpec>& shots, const BatchPar
         item.beam = shot.beam;
         item.camera = shot.camera;
         try {
-            const ImageReadResult img = readFrame(shot.file, params.read);
-            if (!img.ok)
-                item.readError = img.error;
-            else if (shot.hasCenter)
-                item.rois = processFrame(img.image, params.footprint, {cv::Point2d(shot.centerX, shot.centerY)});
-            else
-                item.rois = processFrame(img.image, params.footprint, params.centres);
+            one(i, item);
         } catch (const std::exception& e) {  // e.g. out of memory on a huge frame: this item only
             item.rois.clear();
             item.readError = shot.file + ": " + e.what();
@@ -55,6 +45,42 @@ BatchResult runFootprintBatch(const std::vector<ShotSpec>& shots, const BatchPar
     for (const auto& it : out.items)
         if (!it.readError.empty()) ++out.readErrors;
     return out;
+}
+
+std::vector<ShotSpec> shotsOf(const std::vector<std::string>& files) {
+    std::vector<ShotSpec> shots(files.size());
+    for (size_t i = 0; i < files.size(); ++i) shots[i].file = files[i];
+    return shots;
+}
+}  // namespace
+
+BatchResult runFootprintBatch(const std::vector<std::string>& files, const BatchParams& params, Feedback* fb,
+                              const BatchItemFn& onItem) {
+    return runFootprintBatch(shotsOf(files), params, fb, onItem);
+}
+
+BatchResult runFootprintBatch(const std::vector<ShotSpec>& shots, const BatchParams& params, Feedback* fb,
+                              const BatchItemFn& onItem) {
+    return runItems(shots, params.threads, fb, onItem, [&](size_t i, BatchItem& item) {
+        const ShotSpec& shot = shots[i];
+        const ImageReadResult img = readFrame(shot.file, params.read);
+        if (!img.ok)
+            item.readError = img.error;
+        else if (shot.hasCenter)
+            item.rois = processFrame(img.image, params.footprint, {cv::Point2d(shot.centerX, shot.centerY)});
+        else
+            item.rois = processFrame(img.image, params.footprint, params.centres);
+    });
+}
+
+BatchResult runFootprintFrames(const std::vector<cv::Mat>& frames, const std::vector<std::string>& names,
+                               const BatchParams& params, Feedback* fb, const BatchItemFn& onItem) {
+    return runItems(shotsOf(names), params.threads, fb, onItem, [&](size_t i, BatchItem& item) {
+        if (i >= frames.size() || frames[i].empty() || frames[i].type() != CV_32FC1)
+            item.readError = names[i] + ": not a single-channel float32 frame";
+        else
+            item.rois = processFrame(frames[i], params.footprint, params.centres);
+    });
 }
 
 std::vector<FootprintResult> ShotsTask::run(const Inputs& in, const FootprintParams& params, const Reuse& reuse, Feedback* fb) {

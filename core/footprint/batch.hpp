@@ -64,6 +64,12 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
 BatchResult runFootprintBatch(const std::vector<ShotSpec>& shots, const BatchParams& params, Feedback* fb = nullptr,
                               const BatchItemFn& onItem = {});
 
+/// Frames already in memory (CV_32FC1, DN; e.g. numpy arrays viewed by the Python module), each
+/// named for the report's file column: the stage runFootprintBatch runs after reading a file
+/// (processFrame with params.centres), so the same frames give the same report.
+BatchResult runFootprintFrames(const std::vector<cv::Mat>& frames, const std::vector<std::string>& names,
+                               const BatchParams& params, Feedback* fb = nullptr, const BatchItemFn& onItem = {});
+
 /// The footprint shots task (core/common/task.hpp): every shot's ROI through processRoi on all
 /// cores (the per-ROI stage of runFootprintBatch, which reads the frames and cuts the ROIs
 /// itself), results in input order. The workbench's shot list runs it live

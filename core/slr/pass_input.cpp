@@ -319,15 +319,32 @@ PassInputResult passFromOcTable(const std::string& path) {
         r.error = csv.error;
         return r;
     }
-    r.warnings = std::move(csv.warnings);
-    d.t = std::move(csv.table.epoch_s);
-    d.oc = std::move(csv.table.oc_s);
+    PassInputResult p = passFromOc(std::move(csv.table.epoch_s), std::move(csv.table.oc_s), path);
+    p.warnings.insert(p.warnings.begin(), csv.warnings.begin(), csv.warnings.end());
+    return p;
+}
+
+PassInputResult passFromOc(std::vector<double> t, std::vector<double> oc, const std::string& source) {
+    PassInputResult r;
+    PassData& d = r.pass;
+    d.source = source;
+    if (t.size() != oc.size()) {
+        r.error = source + ": " + std::to_string(t.size()) + " epochs and " + std::to_string(oc.size()) + " O-C values";
+        return r;
+    }
+    for (size_t i = 0; i < t.size(); ++i)
+        if (!std::isfinite(t[i]) || !std::isfinite(oc[i])) {
+            r.error = source + ": point " + std::to_string(i) + " is not finite";
+            return r;
+        }
+    d.t = std::move(t);
+    d.oc = std::move(oc);
     d.ocOrigin = "O-C table";
     PassSummary s;
     s.ranges = d.t.size();
     r.passes.push_back(s);
     if (d.t.size() < kMinPassPoints) {
-        r.error = path + ": the O-C table holds " + std::to_string(d.t.size()) + " points; a pass needs at least " +
+        r.error = source + ": the O-C table holds " + std::to_string(d.t.size()) + " points; a pass needs at least " +
                   std::to_string(kMinPassPoints);
         return r;
     }

@@ -105,6 +105,10 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& crd, con
                             const PassInputParams& params, const PassSources& sources, const Feedback* fb = nullptr);
 /// An O-C table (CSV) as a pass.
 PassInputResult passFromOcTable(const std::string& path);
+/// Epochs and O-C (s) as a pass, as an O-C table's columns are (`source` names it in messages
+/// and writers; Python's laserwb.slr.Pass.from_arrays): every value finite, at least
+/// kMinPassPoints points.
+PassInputResult passFromOc(std::vector<double> t, std::vector<double> oc, const std::string& source);
 /// One summary per pass of a CRD file.
 std::vector<PassSummary> summarisePasses(const CrdFile& file);
 

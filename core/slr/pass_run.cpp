@@ -9,6 +9,29 @@
 
 namespace lwb::core::slr {
 
+SlrParams commandDefaults() {
+    SlrParams p;
+    p.postfit.rejectSigma = 3;
+    return p;
+}
+
+void keepPassContext(const PostfitParams& fromPass, PostfitParams* pp) {
+    if (!(pp->altitudeKm > 0)) pp->altitudeKm = fromPass.altitudeKm;
+    if (!(pp->fireRateHz > 0)) pp->fireRateHz = fromPass.fireRateHz;
+}
+
+DeliveredNormalPoints deliveredNormalPoints(const PassRunResult& r) {
+    DeliveredNormalPoints d;
+    if (r.doubt.empty() && r.postOk) d.points = r.post.normalPoints;
+    if (!d.points.empty()) return d;
+    if (!r.doubt.empty()) d.noneReason = "doubtful: " + r.doubt;
+    else if (r.acceptedCount == 0) d.noneReason = "no signal found";
+    else if (!r.postOk) d.noneReason = r.postNote.empty() ? "no post-fit" : r.postNote;
+    else if (!r.postNote.empty()) d.noneReason = r.postNote;
+    else d.noneReason = "no bin holds the minimum number of kept points";
+    return d;
+}
+
 bool passSettings(const PassData& pass, const SlrParams& base, const std::vector<SatellitePreset>* presets,
                   const std::string& satellite, const SinexFile* stations, PassSettings* out, std::string* error) {
     PassSettings s;

@@ -37,6 +37,15 @@ struct PassSettings {
 bool passSettings(const PassData& pass, const SlrParams& base, const std::vector<SatellitePreset>* presets,
                   const std::string& satellite, const SinexFile* stations, PassSettings* out, std::string* error);
 
+/// The parameters `laserwb-cli slr` and Python's laserwb.slr start from: the core's, with the
+/// multi-photon rejection of 3 sigma.
+SlrParams commandDefaults();
+
+/// What passSettings took from the pass (its altitude, the fire rate) stays where the analyst's
+/// own settings (a config, --set) leave it unknown: a config's 0 (what --print-config writes
+/// for them) is not a value, so a printed config run again gives the same run.
+void keepPassContext(const PostfitParams& fromPass, PostfitParams* pp);
+
 /// The screening against the station's filter flags (2 data, 1 noise), when every point has one.
 struct StationAgreement {
     bool available = false;
@@ -148,6 +157,14 @@ struct PassTask {
 
 /// PassTask from scratch on `pass` (no edits, nothing reused).
 PassRunResult runPass(const PassData& pass, const SlrParams& params, Feedback* fb = nullptr);
+
+/// The normal points a run delivers (none when it is doubtful or has no post-fit) and, when there
+/// are none, why: what the normal-point file says in their place (the CLI and Python write it).
+struct DeliveredNormalPoints {
+    std::vector<NormalPoint> points;
+    std::string noneReason;  ///< "" when there are points
+};
+DeliveredNormalPoints deliveredNormalPoints(const PassRunResult& r);
 
 /// What a block of a CRD file is called when a file's passes are screened (laserwb-cli slr
 /// --all-passes and the workbench's "Screen all passes" table alike).

@@ -1,0 +1,91 @@
+#pragma once
+// The laserwb Python module (pybind11): what the binding files share. The module binds the core's
+// tasks, readers and writers (core/common/task.hpp, docs/architecture.md "Tasks"); it computes
+// nothing of its own. Failures of the core (its Result's `error`) become Python exceptions with
+// the core's message: laserwb.ParameterError (also a ValueError) for a parameter the schema
+// refuses, laserwb.Error for everything else (a bad file: "FILE:LINE: ...").
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "core/common/schema.hpp"
+
+namespace lwb::py {
+
+namespace py = pybind11;
+
+/// A parameter the schema (or a family's rule) refuses: laserwb.ParameterError.
+struct ParameterError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+/// Any other failure of the core (unreadable input, a failed run, an output not written): laserwb.Error.
+struct Error : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// Throws Error(message) when !ok.
+inline void check(bool ok, const std::string& message) {
+    if (!ok) throw Error(message);
+}
+
+/// A Python value as the text `--set KEY=VALUE` takes: True/False, None ("null": a special, or a
+/// range switched off), a number (its shortest round-trip repr), (lo, hi) for a range, a string.
+std::string valueText(const py::handle& v);
+/// A schema field's value of p as a Python object (a Choice as its name, a Range as (lo, hi) or None).
+template <class P>
+py::object fieldValue(const core::Schema<P>& s, const typename core::Schema<P>::Field& f, const P& p);
+
+/// Binds P as a Python class NAME: p[key], p[key] = value (--set's rules and messages),
+/// keys(), to_dict(), to_json(), update(dict), load(path) (a --config file), validate(),
+/// describe(key); the class docstring is the schema's table (every key, unit, range, default
+/// and doc). `defaults`: what P() gives (the CLI command's defaults); `familyCheck`: the
+/// family's validate() (rules between fields); `fromJson`: how a config file is read.
+template <class P>
+struct ParamsBinding {
+    const char* name;
+    const char* summary;
+    const core::Schema<P>& (*schema)();
+    P (*defaults)();
+    std::string (*familyCheck)(const P&);
+    bool (*fromJson)(const core::JsonParseResult&, P*, std::string*) = nullptr;
+    void (*afterSet)(P*, const std::string& key) = nullptr;
+};
+template <class P>
+py::class_<P> bindParams(py::module_& m, const ParamsBinding<P>& b);
+
+/// `params` as the family's P: None (defaults), a P, or a dict {key: value} over the defaults.
+template <class P>
+P paramsFrom(const py::object& params, const ParamsBinding<P>& b);
+
+/// Applies a dict {key: value} over *p, as --set does, one key at a time: ParameterError with the
+/// schema's message ("slr.screen.cosine_c = 1.2: must be in [0.5, 1)").
+template <class P>
+void applyDict(const core::Schema<P>& s, const py::dict& d, P* p, void (*afterSet)(P*, const std::string&) = nullptr);
+
+/// A numpy view of `v`'s data kept alive by `owner` (no copy).
+template <class T>
+py::array_t<T> viewOf(const std::vector<T>& v, py::handle owner) {
+    return py::array_t<T>({static_cast<py::ssize_t>(v.size())}, {static_cast<py::ssize_t>(sizeof(T))}, v.data(), owner);
+}
+
+/// A float32 numpy array that owns `image` (CV_32FC1; no copy of its pixels).
+py::array_t<float> ownedArray(cv::Mat image);
+
+/// The rows of a CSV text (header first) as {column: numpy array}: numbers as float64 (empty
+/// cells NaN), columns in `textColumns` as arrays of str, `intColumns` as int64.
+py::dict csvColumns(const std::string& csv, const std::vector<std::string>& textColumns,
+                    const std::vector<std::string>& intColumns);
+
+void bindFootprint(py::module_& m);
+void bindSlr(py::module_& m);
+void bindTrendCalibRadiometry(py::module_& m);
+
+}  // namespace lwb::py
+
+#include "bind_params.inl"

@@ -1,0 +1,227 @@
+// laserwb.footprint: the footprint shots (core/footprint/batch.hpp: runFootprintBatch for files,
+// runFootprintFrames for frames already in numpy arrays — the same processFrame per frame) and
+// the report's writer (writeFootprintCsv, footprintCsvRows), as `laserwb-cli footprint` runs them.
+#include <cstring>
+
+#include "bind.hpp"
+#include "core/footprint/batch.hpp"
+#include "core/footprint/image_io.hpp"
+
+namespace lwb::py {
+
+namespace fp = core::footprint;
+using namespace pybind11::literals;
+
+namespace {
+
+fp::FootprintParams defaults() { return {}; }
+std::string familyCheck(const fp::FootprintParams& p) { return fp::validate(p); }
+bool fromJson(const core::JsonParseResult& j, fp::FootprintParams* p, std::string* err) {
+    return fp::footprintParamsFromJson(j.value, p, err, &j);
+}
+// An ROI size set by the analyst: a frame smaller than it is an error (as --roi / --set roi.size).
+void afterSet(fp::FootprintParams* p, const std::string& key) {
+    if (key == "roi.size") p->roi.sizeExplicit = true;
+}
+const ParamsBinding<fp::FootprintParams> kParams{
+    "FootprintParams", "Parameters of the footprint shots (laserwb-cli footprint; core/footprint/pipeline.hpp).",
+    fp::footprintSchema, defaults, familyCheck, fromJson, afterSet};
+
+// The report's columns that are text and whole numbers (the rest are float64, empty = NaN).
+const std::vector<std::string> kText = {"file", "verdict", "reasons", "method", "noise_class"};
+const std::vector<std::string> kInt = {"roi", "roi_x0", "roi_y0"};
+
+/// A run's items and its method: the report's rows.
+struct Report {
+    fp::BatchResult result;
+    fp::Method method = fp::Method::Gauss;
+    std::string rows() const {
+        std::string s;
+        for (const auto& it : result.items) s += fp::footprintCsvRows(it, method);
+        return s;
+    }
+};
+
+// The parameters as the CLI makes them: a FootprintParams (its --config), the preset, the method
+// (its alias), then a dict's keys (its --set options), then the family's rules.
+fp::FootprintParams runParams(const py::object& params, const py::object& preset, const py::object& method) {
+    fp::FootprintParams p = py::isinstance<fp::FootprintParams>(params) ? params.cast<fp::FootprintParams>() : defaults();
+    if (!params.is_none() && !py::isinstance<fp::FootprintParams>(params) && !py::isinstance<py::dict>(params))
+        throw py::type_error("params must be None, a dict {key: value} or laserwb.FootprintParams");
+    if (!preset.is_none()) {
+        const std::string name = py::str(preset);
+        if (!fp::applyPreset(name, &p)) throw ParameterError("preset must be wu2021 or yao2021, not \"" + name + "\"");
+    }
+    std::string err;
+    if (!method.is_none() && !fp::footprintSchema().setFromText(&p, "method", py::str(method), &err)) throw ParameterError(err);
+    if (py::isinstance<py::dict>(params)) applyDict(fp::footprintSchema(), params.cast<py::dict>(), &p, afterSet);
+    if (const std::string e = fp::validate(p); !e.empty()) throw ParameterError(e);
+    return p;
+}
+
+// The first failure of a run in input order, as the CLI reports it without --keep-going.
+std::string firstFailure(const fp::BatchResult& r) {
+    for (const auto& it : r.items) {
+        if (!it.readError.empty()) return it.readError;
+        for (const auto& roi : it.rois)
+            if (!roi.result.ok) return it.file + ": " + roi.result.error;
+    }
+    return {};
+}
+
+using Frame = py::array_t<float, py::array::c_style | py::array::forcecast>;
+
+Report fitBatch(const py::object& inputs, const py::object& params, const py::object& preset, const py::object& method,
+                const py::object& centres, const py::object& rawSize, long long maxPixels, int threads,
+                const py::object& names, bool keepGoing) {
+    fp::BatchParams bp;
+    bp.footprint = runParams(params, preset, method);
+    bp.threads = threads;
+    if (maxPixels > 0) bp.read.maxPixels = maxPixels;
+    if (!rawSize.is_none()) {
+        const auto wh = rawSize.cast<std::pair<int, int>>();
+        bp.read.rawWidth = wh.first;
+        bp.read.rawHeight = wh.second;
+    }
+    if (!centres.is_none())
+        for (const auto& c : centres.cast<std::vector<std::pair<double, double>>>()) bp.centres.emplace_back(c.first, c.second);
+    Report rep;
+    rep.method = bp.footprint.method;
+    // Frames in memory: float32 C-contiguous arrays are viewed in place (no copy); other dtypes are
+    // converted once. A 3-D array is a stack of frames.
+    std::vector<Frame> held;
+    std::vector<cv::Mat> frames;
+    const bool isArray = py::isinstance<py::array>(inputs);
+    bool isFrames = isArray;
+    if (!isArray && py::isinstance<py::sequence>(inputs) && !py::isinstance<py::str>(inputs)) {
+        const py::sequence s = inputs.cast<py::sequence>();
+        isFrames = s.size() > 0 && py::isinstance<py::array>(s[0]);
+    }
+    if (isFrames) {
+        std::vector<py::object> parts;
+        if (isArray) {
+            Frame a = Frame::ensure(inputs);
+            if (!a) throw py::type_error("frames must be numbers");
+            if (a.ndim() == 2) parts.push_back(a);
+            else if (a.ndim() == 3) held.push_back(a);
+            else throw py::value_error("frames must be a 2-D array (one frame) or a 3-D array (a stack of frames)");
+        } else {
+            for (const auto& o : inputs.cast<py::sequence>()) parts.push_back(py::reinterpret_borrow<py::object>(o));
+        }
+        for (const auto& o : parts) {
+            Frame a = Frame::ensure(o);
+            if (!a || a.ndim() != 2) throw py::value_error("every frame must be a 2-D array of numbers");
+            held.push_back(a);
+        }
+        for (const Frame& a : held) {
+            if (a.ndim() == 3) {
+                const int n = static_cast<int>(a.shape(0)), h = static_cast<int>(a.shape(1)), w = static_cast<int>(a.shape(2));
+                for (int i = 0; i < n; ++i)
+                    frames.emplace_back(h, w, CV_32FC1, const_cast<float*>(a.data()) + static_cast<size_t>(i) * h * w);
+            } else {
+                frames.emplace_back(static_cast<int>(a.shape(0)), static_cast<int>(a.shape(1)), CV_32FC1,
+                                    const_cast<float*>(a.data()));
+            }
+        }
+        std::vector<std::string> frameNames;
+        if (!names.is_none()) frameNames = names.cast<std::vector<std::string>>();
+        else
+            for (size_t i = 0; i < frames.size(); ++i) frameNames.push_back(std::to_string(i));
+        if (frameNames.size() != frames.size())
+            throw py::value_error("names: " + std::to_string(frameNames.size()) + " for " + std::to_string(frames.size()) + " frames");
+        py::gil_scoped_release nogil;
+        rep.result = fp::runFootprintFrames(frames, frameNames, bp);
+    } else {
+        std::vector<std::string> given;
+        if (py::isinstance<py::str>(inputs) || py::hasattr(inputs, "__fspath__"))
+            given.push_back(py::str(py::module_::import("os").attr("fspath")(inputs)));
+        else
+            for (const auto& o : inputs.cast<py::sequence>()) given.push_back(py::str(py::module_::import("os").attr("fspath")(o)));
+        std::vector<std::string> files;
+        std::string err;
+        check(fp::expandInputs(given, &files, &err), err);
+        check(!files.empty(), "the inputs hold no image files (png, tif, tiff, pgm, raw, bin)");
+        py::gil_scoped_release nogil;
+        rep.result = fp::runFootprintBatch(files, bp);
+    }
+    if (!keepGoing)
+        if (const std::string e = firstFailure(rep.result); !e.empty())
+            throw Error(e + " (keep_going=True reports it as a rejected row)");
+    return rep;
+}
+
+}  // namespace
+
+void bindFootprint(py::module_& top) {
+    py::module_ m = top.def_submodule("footprint", "Footprint-camera shots: spot centre, verdict and the report (paper 000/001).");
+    bindParams(m, kParams);
+
+    m.def("read_frame", [](const std::string& path, const py::object& rawSize, long long maxPixels) {
+        fp::ImageReadParams rp;
+        if (maxPixels > 0) rp.maxPixels = maxPixels;
+        if (!rawSize.is_none()) {
+            const auto wh = rawSize.cast<std::pair<int, int>>();
+            rp.rawWidth = wh.first;
+            rp.rawHeight = wh.second;
+        }
+        fp::ImageReadResult r;
+        {
+            py::gil_scoped_release nogil;
+            r = fp::readFrame(path, rp);
+        }
+        check(r.ok, r.error);
+        return ownedArray(r.image);  // (the array owns the decoded frame: no copy)
+    }, py::arg("path"), py::arg("raw_size") = py::none(), py::arg("max_pixels") = 0,
+       "One frame or ROI as the CLI reads it (16-bit PNG/TIFF/PGM, raw with raw_size=(w, h)): a float32 array of DN.");
+
+    py::class_<Report>(m, "Report", "The footprint report of a run: one row per ROI, the columns of laserwb-cli footprint -o.")
+        .def("__len__", [](const Report& r) {
+            size_t n = 0;
+            for (const auto& it : r.result.items) fp::footprintCsvRows(it, r.method, {}, &n);
+            return n;
+        })
+        .def_property_readonly("files", [](const Report& r) {
+            std::vector<std::string> f;
+            for (const auto& it : r.result.items) f.push_back(it.file);
+            return f;
+        })
+        .def_property_readonly("read_errors", [](const Report& r) {
+            std::vector<std::string> e;
+            for (const auto& it : r.result.items)
+                if (!it.readError.empty()) e.push_back(it.readError);
+            return e;
+        })
+        .def_property_readonly("warnings", [](const Report& r) {
+            std::vector<std::string> w;
+            for (const auto& it : r.result.items)
+                for (const auto& roi : it.rois)
+                    for (const auto& s : roi.warnings) w.push_back(it.file + ": " + s);
+            return w;
+        })
+        .def("csv_rows", &Report::rows, "The report's data rows as text (what write_csv writes after the header).")
+        .def("columns", [](const Report& r) { return csvColumns(fp::footprintCsvHeader() + r.rows(), kText, kInt); },
+             "{column: numpy array} of the report (numbers as written in the report; empty cells NaN).")
+        .def("write_csv", [](const Report& r, const std::string& path) {
+            std::string err;
+            py::gil_scoped_release nogil;
+            check(fp::writeFootprintCsv(path, r.result.items, r.method, &err), err);
+        }, py::arg("path"), "Writes the report with the CLI's writer (writeFootprintCsv): the same bytes as laserwb-cli footprint -o.");
+
+    m.def("csv_header", [] { return fp::footprintCsvHeader(); }, "The report's header line.");
+    m.def("fit_batch", &fitBatch, py::arg("inputs"), py::arg("params") = py::none(), py::arg("preset") = py::none(),
+          py::arg("method") = py::none(), py::arg("centres") = py::none(), py::arg("raw_size") = py::none(),
+          py::arg("max_pixels") = 0, py::arg("threads") = 0, py::arg("names") = py::none(), py::arg("keep_going") = false,
+          "Runs the footprint shots as `laserwb-cli footprint` does, on\n"
+          "  inputs: image files and folders (a path or a list), or frames in memory: a 2-D array,\n"
+          "          a 3-D array (a stack of frames, viewed without a copy when float32 and\n"
+          "          C-contiguous) or a list of 2-D arrays; `names` fills their report's file column\n"
+          "          (default '0', '1', ...);\n"
+          "  params: None (the defaults), a FootprintParams (as --config) or {key: value} (as --set);\n"
+          "  preset: 'wu2021' or 'yao2021' (--preset); method: 'gauss', 'tefm' or 'gcm' (--method);\n"
+          "  centres: [(x, y), ...] nominal spot centres (--center), raw_size: (w, h) of raw frames,\n"
+          "  threads: worker threads (0: every core). The GIL is released while it runs.\n"
+          "A frame that cannot be read or fitted raises laserwb.Error unless keep_going=True (then it\n"
+          "is a rejected row). Returns a Report (columns(), write_csv()).");
+}
+
+}  // namespace lwb::py

@@ -1,0 +1,119 @@
+// The laserwb Python module's entry: exceptions, the shared conversions, and the families'
+// submodules (bind_footprint.cpp, bind_slr.cpp, bind_more.cpp). See bind.hpp.
+#include <algorithm>
+#include <cmath>
+
+#include "bind.hpp"
+#include "core/common/atomic_file.hpp"
+#include "core/common/csv.hpp"
+#include "core/common/text.hpp"
+#include "lwb_version.hpp"
+
+namespace lwb::py {
+
+using namespace pybind11::literals;
+
+std::string valueText(const py::handle& v) {
+    if (v.is_none()) return "null";
+    if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "true" : "false";
+    if (py::isinstance<py::int_>(v)) return py::str(v);
+    if (py::isinstance<py::float_>(v)) {
+        const double d = v.cast<double>();
+        return std::isnan(d) ? "null" : core::formatShortest(d);
+    }
+    if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+    if (py::isinstance<py::tuple>(v) || py::isinstance<py::list>(v)) {
+        const py::sequence s = v.cast<py::sequence>();
+        if (s.size() != 2) throw ParameterError("a range must be (min, max) or None (off), not " + std::string(py::repr(v)));
+        return valueText(s[0]) + "," + valueText(s[1]);
+    }
+    // numpy scalars and anything else with a number inside
+    if (py::hasattr(v, "__float__")) return core::formatShortest(v.cast<double>());
+    return py::str(v);
+}
+
+py::array_t<float> ownedArray(cv::Mat image) {
+    auto* keep = new cv::Mat(std::move(image));
+    py::capsule owner(keep, [](void* p) { delete static_cast<cv::Mat*>(p); });
+    return py::array_t<float>({keep->rows, keep->cols},
+                              {static_cast<py::ssize_t>(keep->step[0]), static_cast<py::ssize_t>(sizeof(float))},
+                              keep->ptr<float>(), owner);
+}
+
+py::dict csvColumns(const std::string& csv, const std::vector<std::string>& textColumns,
+                    const std::vector<std::string>& intColumns) {
+    const core::CsvReadResult r = core::parseCsv(csv, "report");
+    check(r.ok, r.error);
+    py::dict out;
+    const auto& t = r.table;
+    const size_t n = t.rows.size();
+    for (size_t c = 0; c < t.header.size(); ++c) {
+        const std::string& name = t.header[c];
+        const bool text = std::find(textColumns.begin(), textColumns.end(), name) != textColumns.end();
+        const bool whole = std::find(intColumns.begin(), intColumns.end(), name) != intColumns.end();
+        if (text) {
+            py::list cells;
+            for (const auto& row : t.rows) cells.append(row[c]);
+            out[py::str(name)] = py::module_::import("numpy").attr("array")(cells, "dtype"_a = "U");
+        } else if (whole) {
+            py::array_t<long long> a(static_cast<py::ssize_t>(n));
+            auto w = a.mutable_unchecked<1>();
+            for (size_t i = 0; i < n; ++i) {
+                double d = 0;
+                w(static_cast<py::ssize_t>(i)) = core::parseDouble(t.rows[i][c], &d) ? static_cast<long long>(d) : -1;
+            }
+            out[py::str(name)] = a;
+        } else {
+            py::array_t<double> a(static_cast<py::ssize_t>(n));
+            auto w = a.mutable_unchecked<1>();
+            for (size_t i = 0; i < n; ++i) {
+                double d = NAN;
+                if (!core::parseDouble(t.rows[i][c], &d)) d = NAN;
+                w(static_cast<py::ssize_t>(i)) = d;
+            }
+            out[py::str(name)] = a;
+        }
+    }
+    return out;
+}
+
+}  // namespace lwb::py
+
+using namespace pybind11::literals;
+
+PYBIND11_MODULE(_laserwb, m) {
+    namespace py = pybind11;
+    m.doc() = "Laser Workbench core (C++), bound with pybind11: the tasks of laserwb-cli and the workbench.";
+    m.attr("__version__") = LWB_VERSION;
+
+    // laserwb.Error, and laserwb.ParameterError(Error, ValueError) for refused parameters.
+    static PyObject* error = PyErr_NewException("laserwb.Error", PyExc_Exception, nullptr);
+    static PyObject* paramError = [] {
+        PyObject* bases = PyTuple_Pack(2, error, PyExc_ValueError);
+        PyObject* e = PyErr_NewException("laserwb.ParameterError", bases, nullptr);
+        Py_DECREF(bases);
+        return e;
+    }();
+    m.add_object("Error", py::handle(error));
+    m.add_object("ParameterError", py::handle(paramError));
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const lwb::py::ParameterError& e) {
+            PyErr_SetString(paramError, e.what());
+        } catch (const lwb::py::Error& e) {
+            PyErr_SetString(error, e.what());
+        }
+    });
+
+    m.def("write_text", [](const std::string& path, const std::string& text) {
+        std::string err;
+        py::gil_scoped_release nogil;
+        lwb::py::check(lwb::core::writeFileAtomic(path, text, &err), err);
+    }, py::arg("path"), py::arg("text"),
+       "Writes text to path atomically (a temporary beside it, renamed into place), as every writer of the core does.");
+
+    lwb::py::bindFootprint(m);
+    lwb::py::bindSlr(m);
+    lwb::py::bindTrendCalibRadiometry(m);
+}

@@ -1,0 +1,299 @@
+"""The laserwb module against laserwb-cli: the same inputs and parameters give the same files,
+byte for byte (both run the same core code in this build), and the same messages for refused
+parameters. Accuracy is checked against the simulators' truth where a number is asserted."""
+import csv
+import glob
+import json
+import os
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import laserwb
+from conftest import CLI, SHARED, cli, same_bytes
+
+
+def test_version_is_the_cli_version():
+    out = cli("version").stdout
+    assert laserwb.__version__ in out
+
+
+# ---- parameters: one schema ------------------------------------------------------------------
+
+@pytest.mark.parametrize("cls, command", [(laserwb.footprint.FootprintParams, ["footprint"]),
+                                          (laserwb.slr.SlrParams, ["slr"]),
+                                          (laserwb.trend.TrendParams, ["trend"]),
+                                          (laserwb.calib.CalibParams, ["calib", "detector"]),
+                                          (laserwb.radiometry.RadiometryParams, ["radiometry", "fit"])])
+def test_default_parameters_are_the_cli_defaults(cls, command):
+    printed = cli(*command, "--print-config").stdout
+    assert cls().to_json() + "\n" == printed or cls().to_json() == printed
+    # every key of the schema is documented in the class docstring
+    for key in cls().keys():
+        assert key in cls.__doc__
+
+
+def test_set_and_get_by_key():
+    p = laserwb.slr.SlrParams()
+    p["screen.cosine_c"] = 0.97
+    assert p["screen.cosine_c"] == 0.97
+    p["postfit.reject_sigma"] = 2.5
+    assert p.to_dict()["postfit.reject_sigma"] == 2.5
+    f = laserwb.footprint.FootprintParams({"method": "tefm", "roi.size": 24})
+    assert f["method"] == "tefm" and f["roi.size"] == 24
+    assert "gauss" in f.describe("method")["choices"]
+
+
+def test_refused_values_raise_the_cli_message():
+    p = laserwb.slr.SlrParams()
+    with pytest.raises(laserwb.ParameterError) as e:
+        p["screen.cosine_c"] = 1.2
+    assert isinstance(e.value, ValueError)
+    err = cli("slr", "x.frd", "-o", "x.csv", "--set", "screen.cosine_c=1.2", ok=(2,)).stderr
+    assert str(e.value) in err, (str(e.value), err)
+    assert "must be in [0.5, 1)" in str(e.value)
+    assert p["screen.cosine_c"] == 0.95  # untouched on error
+    with pytest.raises(laserwb.ParameterError) as e:
+        laserwb.footprint.FootprintParams({"segment.threshold_factor": -1})
+    err = cli("footprint", "x.png", "-o", "x.csv", "--set", "segment.threshold_factor=-1", ok=(2,)).stderr
+    assert str(e.value) in err
+    with pytest.raises(KeyError):
+        p["no.such.key"]
+
+
+def test_config_file_errors_name_file_line_and_column(tmp_path):
+    cfg = tmp_path / "bad.json"
+    cfg.write_text('{\n  "screen": {\n    "cosine_c": 3\n  }\n}\n')
+    with pytest.raises(laserwb.ParameterError) as e:
+        laserwb.slr.SlrParams().load(str(cfg))
+    assert f"{cfg}:3:" in str(e.value)
+
+
+def test_parameters_pickle():
+    import pickle
+    p = laserwb.slr.SlrParams({"screen.cosine_c": 0.9})
+    q = pickle.loads(pickle.dumps(p))
+    assert q == p and q["screen.cosine_c"] == 0.9
+
+
+# ---- footprint -------------------------------------------------------------------------------
+
+def test_footprint_report_is_the_cli_report(data, tmp_path):
+    shots = sorted(glob.glob(str(data / "shots" / "shot_*.png")))
+    cli("footprint", *shots, "-o", tmp_path / "cli.csv", "-q")
+    laserwb.footprint.fit_batch(shots).write_csv(str(tmp_path / "py.csv"))
+    same_bytes(tmp_path / "cli.csv", tmp_path / "py.csv")
+    # frames read into numpy and given as one 3-D stack: the same report
+    stack = np.stack([laserwb.footprint.read_frame(f) for f in shots])
+    assert stack.dtype == np.float32 and stack.ndim == 3
+    laserwb.footprint.fit_batch(stack, names=shots).write_csv(str(tmp_path / "stack.csv"))
+    same_bytes(tmp_path / "cli.csv", tmp_path / "stack.csv")
+
+
+def test_footprint_parameters_as_the_cli_options(data, tmp_path):
+    frames = str(data / "frames")
+    cli("footprint", frames, "--preset", "yao2021", "--method", "tefm", "--set", "segment.threshold_factor=0.2",
+        "--center", "122,262", "-o", tmp_path / "cli.csv", "-q")
+    rep = laserwb.footprint.fit_batch(frames, preset="yao2021", method="tefm", params={"segment.threshold_factor": 0.2},
+                                      centres=[(122, 262)])
+    rep.write_csv(str(tmp_path / "py.csv"))
+    same_bytes(tmp_path / "cli.csv", tmp_path / "py.csv")
+
+
+def test_footprint_fit_finds_the_true_centre(data):
+    truth = {r["file"]: r for r in csv.DictReader(open(data / "shots" / "truth.csv"))}
+    checked = 0
+    for name, t in truth.items():
+        if t["expect_good"] != "1":
+            continue
+        roi = laserwb.footprint.read_frame(str(data / "shots" / name))
+        row = laserwb.footprint.fit(roi)
+        if row["verdict"] != "good":
+            continue
+        # the simulator's spots are found to a fraction of a pixel (docs/footprint-accuracy.md)
+        assert abs(row["x"] - float(t["x"])) < 0.5 and abs(row["y"] - float(t["y"])) < 0.5, (name, row, t)
+        checked += 1
+    assert checked >= 4
+
+
+def test_footprint_columns_and_records(data):
+    rep = laserwb.footprint.fit_batch(str(data / "shots"))
+    cols = rep.columns()
+    assert list(cols) == laserwb.footprint.csv_header().strip().split(",")
+    assert len(rep) == len(cols["x"]) == 12
+    assert cols["x"].dtype == np.float64 and cols["roi"].dtype == np.int64
+    rec = rep.to_records()
+    assert rec.shape == (12,) and set(rec["verdict"]) <= {"good", "doubtful", "rejected"}
+
+
+def test_footprint_bad_frame_names_the_file(tmp_path):
+    bad = tmp_path / "bad.png"
+    bad.write_bytes(b"not an image")
+    with pytest.raises(laserwb.Error) as e:
+        laserwb.footprint.fit_batch([str(bad)])
+    assert str(bad) in str(e.value)
+    rep = laserwb.footprint.fit_batch([str(bad)], keep_going=True)
+    assert rep.columns()["verdict"][0] == "rejected"
+
+
+def test_footprint_releases_the_gil(data):
+    # Another Python thread runs while a batch is in the core.
+    stack = np.stack([laserwb.footprint.read_frame(f) for f in sorted(glob.glob(str(data / "shots" / "*.png")))] * 20)
+    ticks = []
+    done = threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks.append(1)
+            done.wait(0.001)
+
+    t = threading.Thread(target=count)
+    t.start()
+    laserwb.footprint.fit_batch(stack, threads=1)
+    done.set()
+    t.join()
+    assert len(ticks) > 5
+
+
+# ---- SLR -------------------------------------------------------------------------------------
+
+def test_slr_products_are_the_cli_products(data, tmp_path):
+    frd = str(data / "passes" / "pass3.frd")
+    cli("slr", frd, "-o", tmp_path / "cli.csv", "--crd-out", tmp_path / "cli.frd", "--npt-out", tmp_path / "cli.npt",
+        "-q", ok=(0, 3))
+    r = laserwb.slr.process(frd, csv=str(tmp_path / "py.csv"), crd=str(tmp_path / "py.frd"), npt=str(tmp_path / "py.npt"))
+    for ext in ("csv", "frd", "npt"):
+        same_bytes(tmp_path / f"cli.{ext}", tmp_path / f"py.{ext}")
+    # the simulated pass's truth is its station flags (2 signal): the screening finds most of it
+    p = laserwb.slr.load_pass(frd)
+    signal = p.station_flag == 2
+    assert len(p) == len(r.accepted) and signal.sum() > 0
+    recall = (r.accepted.astype(bool) & signal).sum() / signal.sum()
+    assert recall > 0.9, recall
+    assert r.accepted_count == int(r.accepted.sum())
+    assert len(r.normal_points["epoch_s"]) > 0 and np.all(np.isfinite(r.normal_points["tof_s"]))
+
+
+def test_slr_parameters_as_the_cli_options(data, tmp_path):
+    frd = str(data / "passes" / "pass4.frd")
+    cli("slr", frd, "--set", "screen.cosine_c=0.97", "--reject", "2.5", "-o", tmp_path / "cli.csv",
+        "--npt-out", tmp_path / "cli.npt", "-q", ok=(0, 3))
+    laserwb.slr.process(frd, params={"screen.cosine_c": 0.97, "postfit.reject_sigma": 2.5}, csv=str(tmp_path / "py.csv"),
+                        npt=str(tmp_path / "py.npt"))
+    same_bytes(tmp_path / "cli.csv", tmp_path / "py.csv")
+    same_bytes(tmp_path / "cli.npt", tmp_path / "py.npt")
+
+
+def test_slr_oc_table(data, tmp_path):
+    src = str(data / "pass.csv")
+    cli("slr", src, "-o", tmp_path / "cli.csv", "-q", ok=(0, 3))
+    r = laserwb.slr.process(src, csv=str(tmp_path / "py.csv"))
+    same_bytes(tmp_path / "cli.csv", tmp_path / "py.csv")
+    with pytest.raises(laserwb.ParameterError):
+        r.write(npt=str(tmp_path / "x.npt"))  # an O-C table has no CRD headers
+    assert not os.path.exists(tmp_path / "x.npt")
+    # the same table given as numpy arrays: the same screening and file
+    cols = np.genfromtxt(src, delimiter=",", names=True)
+    p = laserwb.slr.Pass.from_arrays(cols["epoch_s"], cols["oc_s"], name=src)
+    a = laserwb.slr.run(p)
+    a.write(csv=str(tmp_path / "arrays.csv"))
+    same_bytes(tmp_path / "cli.csv", tmp_path / "arrays.csv")
+    assert a.accepted_count == r.accepted_count > 0
+    with pytest.raises(laserwb.Error):
+        laserwb.slr.Pass.from_arrays([0.0, 1, 2], [0.0, 1, float("nan")])
+
+
+@pytest.mark.skipif(not os.path.isdir(os.path.join(SHARED, "data", "slr")), reason="no ../shared/data (real ILRS files)")
+def test_slr_real_pass_with_prediction(tmp_path):
+    d = os.path.join(SHARED, "data", "slr")
+    frd, cpf, snx = (os.path.join(d, n) for n in ("blits_201206.frd", "blits_cpf_120626_6801.hts",
+                                                   "SLRF2014_POS+VEL_2030.0_200428.snx"))
+    cli("slr", frd, "--pass", 3, "--cpf", cpf, "--stations", snx, "-o", tmp_path / "cli.csv", "--crd-out",
+        tmp_path / "cli.frd", "--npt-out", tmp_path / "cli.npt", "-q", ok=(0, 3))
+    r = laserwb.slr.process(frd, pass_number=3, cpf=cpf, stations=snx, csv=str(tmp_path / "py.csv"),
+                            crd=str(tmp_path / "py.frd"), npt=str(tmp_path / "py.npt"))
+    for ext in ("csv", "frd", "npt"):
+        same_bytes(tmp_path / f"cli.{ext}", tmp_path / f"py.{ext}")
+    assert laserwb.slr.load_pass(frd, pass_number=3, cpf=cpf, stations=snx).oc_origin == "CPF prediction"
+    assert np.isfinite(r.range_bias_s)
+    passes = laserwb.slr.read_crd(frd)
+    assert len(passes) > 3 and passes[2]["pass_number"] == 3 and passes[2]["satellite"] == "blits"
+    assert len(laserwb.slr.read_sinex(snx)["sites"]) > 10
+    # a prediction that misses the pass: the CLI's message
+    with pytest.raises(laserwb.Error) as e:
+        laserwb.slr.load_pass(frd, pass_number=1, cpf=cpf, stations=snx)
+    err = cli("slr", frd, "--cpf", cpf, "--stations", snx, "-o", tmp_path / "x.csv", ok=(1,)).stderr
+    assert str(e.value).splitlines()[0] in err and "the prediction covers" in str(e.value)
+
+
+def test_slr_bad_file_names_file_and_line(tmp_path):
+    bad = tmp_path / "bad.frd"
+    bad.write_text("H1 CRD  2 2012 06 26 07\nH2 XXXX\n")
+    with pytest.raises(laserwb.Error) as e:
+        laserwb.slr.load_pass(str(bad))
+    assert str(bad) in str(e.value)
+    cli_err = cli("slr", bad, "-o", tmp_path / "x.csv", ok=(1,)).stderr
+    assert str(e.value).splitlines()[0] in cli_err
+
+
+# ---- trend, calibration, radiometry ----------------------------------------------------------
+
+def test_trend_is_the_cli_trend(data, tmp_path):
+    src = str(data / "centroids.csv")
+    cli("trend", src, "--reject-sigma", "2.5", "-o", tmp_path / "cli.csv", "-q")
+    t = laserwb.trend.compute(src, params={"reject_sigma": 2.5})
+    t.write_csv(str(tmp_path / "py.csv"))
+    same_bytes(tmp_path / "cli.csv", tmp_path / "py.csv")
+    assert len(t) == len(t.columns()["month"]) > 0
+
+
+def test_calib_detector_and_stats_are_the_cli_files(data, tmp_path):
+    det = str(data / "calib" / "detectors.csv")
+    cli("calib", "detector", det, "-o", tmp_path / "cli_centre.csv", "--detectors", tmp_path / "cli_det.csv", "-q",
+        ok=(0, 3))
+    d = laserwb.calib.detector(det)
+    d.write_centre(str(tmp_path / "py_centre.csv"))
+    d.write_report(str(tmp_path / "py_det.csv"))
+    same_bytes(tmp_path / "cli_centre.csv", tmp_path / "py_centre.csv")
+    same_bytes(tmp_path / "cli_det.csv", tmp_path / "py_det.csv")
+    # the simulated footprint's centre (4 m spot, 5 % noise): found within a metre
+    truth = next(csv.DictReader(open(data / "calib" / "detector_truth.csv")))
+    assert abs(d.centre["e_m"] - float(truth["centre_e_m"])) < 1.0
+    assert abs(d.centre["n_m"] - float(truth["centre_n_m"])) < 1.0
+    diffs = str(data / "calib" / "diffs.csv")
+    cli("calib", "stats", diffs, "--group", "beam", "-o", tmp_path / "cli_stats.csv")
+    s = laserwb.calib.stats(diffs, group="beam")
+    s.write_csv(str(tmp_path / "py_stats.csv"))
+    same_bytes(tmp_path / "cli_stats.csv", tmp_path / "py_stats.csv")
+    assert all(g["n"] > 0 for g in s.groups().values())
+
+
+def test_calib_pointing_is_the_cli_files(data, tmp_path):
+    pts, beams = str(data / "calib" / "control_points.csv"), str(data / "calib" / "beams.json")
+    cli("calib", "pointing", pts, "--beams", beams, "--model", "dual", "-o", tmp_path / "cli_beams.csv",
+        "--iterations", tmp_path / "cli_iter.csv", "--params", tmp_path / "cli_params.csv", "-q")
+    x = laserwb.calib.pointing(pts, beams, params={"pointing.model": "dual"})
+    x.write_beams(str(tmp_path / "py_beams.csv"))
+    x.write_iterations(str(tmp_path / "py_iter.csv"))
+    x.write_params(str(tmp_path / "py_params.csv"))
+    for f in ("beams", "iter", "params"):
+        same_bytes(tmp_path / f"cli_{f}.csv", tmp_path / f"py_{f}.csv")
+    assert any(b["solved"] for b in x.beams)
+
+
+def test_radiometry_fit_is_the_cli_fit(tmp_path):
+    cli("simulate", "radiometry", "-q", tmp_path / "field")
+    regions = tmp_path / "field" / "regions.csv"
+    # regions given by their DN (no image): the fit alone
+    rows = list(csv.DictReader(open(regions)))
+    with open(tmp_path / "dn.csv", "w") as f:
+        f.write("name,reflectance,dn\n")
+        for i, r in enumerate(rows):
+            f.write(f"{r['name']},{r['reflectance']},{1000 + 400 * float(r['reflectance']) + 3 * i}\n")
+    cli("radiometry", "fit", tmp_path / "dn.csv", "-o", tmp_path / "cli.csv", "-q")
+    fit = laserwb.radiometry.fit(str(tmp_path / "dn.csv"))
+    fit.write_csv(str(tmp_path / "py.csv"))
+    same_bytes(tmp_path / "cli.csv", tmp_path / "py.csv")
+    assert abs(1 / fit.fit["k"] - 400) < 5

@@ -1,0 +1,33 @@
+"""Every examples/*.py (the notebook-style examples, one per family, and the Dask one) runs to
+its end and writes what it says it writes."""
+import os
+import subprocess
+import sys
+
+import pytest
+
+from conftest import SOURCE_DIR
+
+EXAMPLES = os.path.join(SOURCE_DIR, "examples")
+WRITES = {"footprint.py": ["report.csv"], "slr.py": ["screened.csv", "flagged.frd", "pass.npt"],
+          "trend.py": ["trend.csv"], "calibration.py": ["centre.csv", "stats.csv"], "radiometry.py": ["fit.csv"],
+          "dask_reprocess.py": ["footprint.csv", "slr/pass1.npt"]}
+
+
+def test_every_example_is_listed():
+    found = {f for f in os.listdir(EXAMPLES) if f.endswith(".py") and not f.startswith("_")}
+    assert found == set(WRITES)
+
+
+@pytest.mark.parametrize("name", sorted(WRITES))
+def test_example_runs(name, tmp_path):
+    args = [sys.executable, os.path.join(EXAMPLES, name), str(tmp_path)]
+    if name == "dask_reprocess.py":
+        args += ["--workers", "2", "--batch", "16"]
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([EXAMPLES, os.environ.get("PYTHONPATH", "")]))
+    p = subprocess.run(args, capture_output=True, text=True, env=env, timeout=240)
+    assert p.returncode == 0, p.stdout + p.stderr
+    for out in WRITES[name]:
+        assert os.path.getsize(tmp_path / out) > 0, out
+    # the examples use `# %%` cells (a notebook in VS Code, Spyder, Jupytext)
+    assert "# %%" in open(os.path.join(EXAMPLES, name)).read()
