@@ -60,7 +60,8 @@ std::vector<FootprintResult> ShotsTask::run(const Inputs& in, const FootprintPar
 std::string footprintCsvHeader(const FootprintCsvOptions& o) {
     std::string h =
         "file,x,y,verdict,reasons,method,noise_class,sigma_x,sigma_y,axis_ratio,tilt_deg,major_axis_px,"
-        "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0";
+        "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0,"
+        "cov_xx_px2,cov_xy_px2,cov_yy_px2,radius95_px";
     if (o.review) h += ",time,beam,camera,auto_verdict,override,note";
     return h + "\n";
 }
@@ -128,6 +129,9 @@ std::string footprintCsvRows(const BatchItem& item, Method method, const Footpri
         else
             out += ",,,," + num(r.background.level, 1);
         out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY);
+        // The centre's covariance behind uncertainty_px (the Gaussian fit's; empty for the others).
+        out += "," + (has ? sci(f.covXX) : "") + "," + (has ? sci(f.covXY) : "") + "," + (has ? sci(f.covYY) : "") + "," +
+               (has ? num(f.radius95Px, 5) : "");
         if (o.review) out += reviewColumns(item, k, r.verdict);
         out += "\n";
         ++count;
