@@ -17,6 +17,23 @@ void logOfRatio(const double* f, double S, double* out, int n) {
 }
 
 __attribute__((target_clones("avx2", "default")))
+__attribute__((target_clones("avx2", "default")))
+void lagSums(const double* u, const double* w, int width, int height, int lxMax, int lyMax, double* out) {
+    const int stride = 2 * lxMax + 1;
+    for (int ly = 0; ly <= lyMax; ++ly)
+        for (int lx = -lxMax; lx <= lxMax; ++lx) {
+            const int x0 = lx < 0 ? -lx : 0, x1 = lx > 0 ? width - lx : width;
+            double sum = 0;
+            for (int y = 0; y + ly < height; ++y) {
+                const double* ur = u + static_cast<long>(y) * width;
+                const double* wr = w + static_cast<long>(y + ly) * width + lx;
+#pragma omp simd reduction(+ : sum)
+                for (int x = x0; x < x1; ++x) sum += ur[x] * wr[x];
+            }
+            out[ly * stride + lx + lxMax] = sum;
+        }
+}
+
 double differenceWeights(const double* res, int m, int step, const double* w0, double c2, double* w, double* dr,
                          double* chi2) {
     double cost = 0, x2 = 0;
