@@ -1,5 +1,7 @@
 #include "core/footprint/gauss_kernel.hpp"
 
+#include <vector>
+
 #include <cmath>
 
 namespace lwb::core::footprint::kernel {
@@ -17,21 +19,29 @@ void logOfRatio(const double* f, double S, double* out, int n) {
 }
 
 __attribute__((target_clones("avx2", "default")))
+// For each row pair (y, y + ly) and each pixel of row y, the 2·lxMax + 1 products with the
+// other row's pixels around it are one contiguous multiply-add into the lag accumulators (the
+// other row zero-padded by lxMax on both sides), which vectorises across the lags.
 __attribute__((target_clones("avx2", "default")))
 void lagSums(const double* u, const double* w, int width, int height, int lxMax, int lyMax, double* out) {
-    const int stride = 2 * lxMax + 1;
-    for (int ly = 0; ly <= lyMax; ++ly)
-        for (int lx = -lxMax; lx <= lxMax; ++lx) {
-            const int x0 = lx < 0 ? -lx : 0, x1 = lx > 0 ? width - lx : width;
-            double sum = 0;
-            for (int y = 0; y + ly < height; ++y) {
-                const double* ur = u + static_cast<long>(y) * width;
-                const double* wr = w + static_cast<long>(y + ly) * width + lx;
-#pragma omp simd reduction(+ : sum)
-                for (int x = x0; x < x1; ++x) sum += ur[x] * wr[x];
+    const int stride = 2 * lxMax + 1, padded = width + 2 * lxMax;
+    thread_local std::vector<double> row;
+    row.assign(static_cast<size_t>(padded), 0.0);
+    for (int ly = 0; ly <= lyMax; ++ly) {
+        double* acc = out + ly * stride;
+        for (int k = 0; k < stride; ++k) acc[k] = 0;
+        for (int y = 0; y + ly < height; ++y) {
+            const double* ur = u + static_cast<long>(y) * width;
+            const double* wr = w + static_cast<long>(y + ly) * width;
+            for (int x = 0; x < width; ++x) row[static_cast<size_t>(x + lxMax)] = wr[x];
+            for (int x = 0; x < width; ++x) {
+                const double a = ur[x];
+                const double* wx = row.data() + x;  // wx[k] = w(x + k − lxMax, y + ly)
+#pragma omp simd
+                for (int k = 0; k < stride; ++k) acc[k] += a * wx[k];
             }
-            out[ly * stride + lx + lxMax] = sum;
         }
+    }
 }
 
 double differenceWeights(const double* res, int m, int step, const double* w0, double c2, double* w, double* dr,
