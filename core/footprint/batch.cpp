@@ -89,7 +89,7 @@ std::string footprintCsvRows(const BatchItem& item, Method method, const Footpri
     // Unreadable frames and failed fits are rejected rows, whatever the review says.
     auto failedRow = [&](const std::string& reason, size_t k, const std::string& roi) {
         if (o.acceptedOnly) return;
-        out += file + ",,,rejected," + csvEscape(reason) + "," + methodName(method) + ",,,,,,,,,," + roi + ",,,,,,,";
+        out += file + ",,,rejected," + csvEscape(reason) + "," + methodName(method) + ",,,,,,,,,," + roi + ",,,,,,,,,,,";  // (…, roi_y0, cov_xx/xy/yy_px2, radius95_px)
         if (o.review) out += reviewColumns(item, k, Verdict::Rejected);
         out += "\n";
         ++count;

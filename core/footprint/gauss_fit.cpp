@@ -613,17 +613,24 @@ CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw,
     // Lags up to half the template's reach (a quarter of the products; the coverage of aero1's
     // shots moved by less than 1 point against every lag), R flat beyond at its edge level.
     constexpr double kLagFraction = 0.5;
-    const int lxMax = std::max(1, static_cast<int>(std::lround(kLagFraction * (cols - 1)))),
-              lyMax = std::max(1, static_cast<int>(std::lround(kLagFraction * (rows - 1))));
+    // (At most kernel::kMaxLag either way: a spot of σ 25 px and more.)
+    const int lxMax = std::clamp(static_cast<int>(std::lround(kLagFraction * (cols - 1))), 1, kernel::kMaxLag),
+              lyMax = std::clamp(static_cast<int>(std::lround(kLagFraction * (rows - 1))), 1, kernel::kMaxLag);
     const int stride = 2 * lxMax + 1, lags = stride * (lyMax + 1);
-    thread_local std::vector<double> lagBuf;
-    lagBuf.resize(size_t(lags) * 5);
-    double *rr = lagBuf.data(), *axx = rr + lags, *ayy = axx + lags, *axy = ayy + lags, *ayx = axy + lags;
-    kernel::lagSums(rho, rho, W, H, lxMax, lyMax, rr);
-    kernel::lagSums(sx, sx, cols, rows, lxMax, lyMax, axx);
-    kernel::lagSums(sy, sy, cols, rows, lxMax, lyMax, ayy);
-    kernel::lagSums(sx, sy, cols, rows, lxMax, lyMax, axy);
-    kernel::lagSums(sy, sx, cols, rows, lxMax, lyMax, ayx);
+    // In single precision; the templates as s_x, s_y and s_x + s_y, whose autocorrelations give
+    // the symmetrised cross term as (A_x+y − A_xx − A_yy)/2.
+    thread_local std::vector<float> lagBuf, fr, fx, fy, fs;
+    lagBuf.resize(size_t(lags) * 4);
+    fr.assign(rho, rho + N);
+    fx.assign(sx, sx + n);
+    fy.assign(sy, sy + n);
+    fs.resize(size_t(n));
+    for (int i = 0; i < n; ++i) fs[size_t(i)] = static_cast<float>(sx[i] + sy[i]);
+    float *rr = lagBuf.data(), *axx = rr + lags, *ayy = axx + lags, *asum = ayy + lags;
+    kernel::lagSums(fr.data(), fr.data(), W, H, lxMax, lyMax, rr);
+    kernel::lagSums(fx.data(), fx.data(), cols, rows, lxMax, lyMax, axx);
+    kernel::lagSums(fy.data(), fy.data(), cols, rows, lxMax, lyMax, ayy);
+    kernel::lagSums(fs.data(), fs.data(), cols, rows, lxMax, lyMax, asum);
     // Beyond the lags summed, R is taken flat at its mean on the box's edge: the templates sum to
     // zero over all lags, so the lags left out carry −(the sum of A_s inside) times that level.
     double edge = 0;
@@ -643,7 +650,7 @@ CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw,
             const double r = twice * (rr[k] / (double(H - ly) * (W - std::abs(lx))) - edge);
             txx += axx[k] * r;
             tyy += ayy[k] * r;
-            txy += 0.5 * (axy[k] + ayx[k]) * r;
+            txy += 0.5 * (double(asum[k]) - axx[k] - ayy[k]) * r;
         }
     // The photon + read part of R(0) is counted exactly above (pixel by pixel): take its mean out.
     double sxx = 0, syy = 0, sxy = 0;
