@@ -65,7 +65,8 @@ const std::string kFootprintUsage =
     "  --where EXPR              only the report rows for which EXPR holds, e.g. 'snr < 10 and roi == 1'\n"
     "                            (the workbench's filter language over the report's columns)\n"
     "  -o, --output OUT.csv      report: file,x,y,verdict,reasons,method,noise_class,sigma_x,...,\n"
-    "                            roi_x0,roi_y0,time,beam,camera; beside it OUT.csv.provenance.json\n"
+    "                            roi_y0,cov_xx_px2,...,radius95_px,time,beam,camera; beside it\n"
+    "                            OUT.csv.provenance.json\n"
     "                            (version, parameters, settings, SHA-256 of every input and output)\n"
     "  -q, --quiet               no progress line\n") +
     kBatchOptionsHelp +
@@ -337,15 +338,27 @@ const char* kSimUsage =
     "  --center X,Y         spot position in full frames (within 3 px); give it twice for a two-beam\n"
     "                       frame (e.g. 60,311 and 228,158: paper 001's LSI beams; truth in x2,y2)\n"
     "  --format png|tif|pgm|raw   image format (default png)\n"
-    "  --ground photo|synthetic   ground: real aerial photographs (default; OpenCV's sample aerial\n"
-    "                       views, shipped with the workbench) or the older synthetic texture with\n"
-    "                       roads, field edges and buildings\n";
+    "  --ground photo|synthetic|fractal|photo-cuts   ground: real aerial photographs (default;\n"
+    "                       OpenCV's sample aerial views, shipped with the workbench), the older\n"
+    "                       synthetic texture with roads, field edges and buildings, or a family the\n"
+    "                       fit was not tuned on: fractal 1/f^beta ground (beta 1.5-3.5) with sharp\n"
+    "                       edges and water, or the photographs cut finer and coarser in mixed bands\n"
+    "  --photo aero1|aero3  photo ground from one photograph only\n";
 
-// --ground photo|synthetic into *g; false with *err when the value is unknown or photos are missing.
-bool groundOption(const Args& a, sim::GroundSource* g, std::string* err) {
+// --ground NAME and --photo NAME into *sp; false with *err when a value is unknown or photos are missing.
+bool groundOption(const Args& a, sim::FootprintSimParams* out, std::string* err) {
+    sim::GroundSource* g = &out->ground;
     if (a.has("--ground") && !sim::parseGroundSource(a.value("--ground"), g)) {
-        *err = "--ground must be photo or synthetic, not \"" + a.value("--ground") + "\"";
+        *err = "--ground must be photo, synthetic, fractal or photo-cuts, not \"" + a.value("--ground") + "\"";
         return false;
+    }
+    if (a.has("--photo")) {
+        const std::string ph = a.value("--photo");
+        if (ph != "aero1" && ph != "aero3") {
+            *err = "--photo must be aero1 or aero3, not \"" + ph + "\"";
+            return false;
+        }
+        out->photo = ph == "aero1" ? 0 : 1;
     }
     sim::FootprintSimParams sp;
     sp.ground = *g;
@@ -356,7 +369,7 @@ bool groundOption(const Args& a, sim::GroundSource* g, std::string* err) {
 
 int cmdSimulateFootprint(int argc, char** argv) {
     Args a("simulate footprint", kSimUsage);
-    for (const char* o : {"--count", "--seed", "--scene", "--case", "--size", "--center", "--format", "--ground"})
+    for (const char* o : {"--count", "--seed", "--scene", "--case", "--size", "--center", "--format", "--ground", "--photo"})
         a.option(o, true, std::string(o) == "--center");
     for (const char* o : {"--full-frame", "--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail("simulate footprint", a.error(), kUsage);
@@ -396,7 +409,7 @@ int cmdSimulateFootprint(int argc, char** argv) {
         cases = {c};
     }
     sim::FootprintSimParams sp;
-    if (!groundOption(a, &sp.ground, &err)) return fail("simulate footprint", err);
+    if (!groundOption(a, &sp, &err)) return fail("simulate footprint", err);
     sp.width = sp.height = static_cast<int>(size);
     if (a.has("--full-frame")) {
         sp.width = sp.height = 550;
@@ -450,7 +463,7 @@ int cmdSimulateFootprint(int argc, char** argv) {
                  f(t.x, 5) + "," + f(t.y, 5) + "," + f(t.sigmaMajor, 4) + "," + f(t.sigmaMinor, 4) + "," +
                  f(t.tiltRad * 180 / M_PI, 3) + "," + f(t.amplitude, 1) + "," + f(t.groundMean, 1) + "," +
                  f(t.textureRms, 1) + "," + (t.expectGood ? "1" : "0") + "," + f(t.x2, 5) + "," + f(t.y2, 5) + "," +
-                 (t.groundPhoto ? t.groundNote : "synthetic") + "\n";
+                 (t.groundPhoto || t.groundNote.rfind("fractal", 0) == 0 ? t.groundNote : "synthetic") + "\n";
         progress.update(static_cast<size_t>(i + 1));
     }
     progress.finish();
@@ -597,12 +610,14 @@ const char* kEvalUsage =
     "  --config FILE.json   add a variant \"config\": the defaults overridden by the file\n"
     "  -q, --quiet          no progress line\n"
     "  --scenes a,b         scenes to run (weak,moderate,strong,night,flat)\n"
-    "  --ground photo|synthetic   simulator ground (default photo: real aerial photographs)\n";
+    "  --ground photo|synthetic|fractal|photo-cuts   simulator ground (default photo: real aerial\n"
+    "                       photographs; fractal and photo-cuts: families the fit was not tuned on)\n"
+    "  --photo aero1|aero3  photo ground from one photograph only\n";
 }
 
 int cmdEvalFootprint(int argc, char** argv) {
     Args a("eval footprint", kEvalUsage);
-    for (const char* o : {"--count", "--seed", "--case", "--variants", "--threads", "--scenes", "--config", "--ground"})
+    for (const char* o : {"--count", "--seed", "--case", "--variants", "--threads", "--scenes", "--config", "--ground", "--photo"})
         a.option(o, true);
     for (const char* o : {"--help", "-h", "-q", "--quiet"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail("eval footprint", a.error(), kUsage);
@@ -619,7 +634,7 @@ int cmdEvalFootprint(int argc, char** argv) {
     ep.countPerScene = static_cast<int>(count);
     ep.seed = static_cast<uint64_t>(seed);
     ep.threads = static_cast<int>(threads);
-    if (!groundOption(a, &ep.sim.ground, &err)) return fail("eval footprint", err);
+    if (!groundOption(a, &ep.sim, &err)) return fail("eval footprint", err);
     if (a.has("--case") && !sim::parseSpotCase(a.value("--case"), &ep.spotCase))
         return fail("eval footprint", "unknown --case " + a.value("--case"), kUsage);
     if (a.has("--scenes")) {

@@ -63,6 +63,7 @@ FootprintParamsPanel::FootprintParamsPanel(QWidget* parent)
     form.place(ver, "verdict.tilt_deg", tr("Tilt θ"));
     form.place(ver, "verdict.eccentricity", tr("Eccentricity"));
     form.place(ver, "verdict.mse_max", tr("MSE below"));
+    form.place(ver, "verdict.max_uncertainty_px", tr("Uncertainty at most"));
     form.place(ver, "verdict.check_edge", tr("Spot must not touch the ROI edge"));
     form.place(ver, "verdict.check_saturation", tr("No saturated pixels"));
     form.place(ver, "verdict.check_second_spot", tr("No second spot above"));

@@ -17,7 +17,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 enum Col {
     File, Time, Beam, Camera, X, Y, Dx, Dy, Verdict_, Computed, Manual, Reasons, Method_, NoiseClass, Noise, SigmaX,
     SigmaY, AxisRatio, TiltDeg, MajorAxis, Mse, Snr, Crlb, Roi, Uncertainty, Eccentricity, Area, Amplitude,
-    Background, RoiX0, RoiY0, Note, Count
+    Background, RoiX0, RoiY0, CovXX, CovXY, CovYY, Radius95, Note, Count
 };
 }  // namespace
 
@@ -55,6 +55,10 @@ const std::vector<ShotColumn>& shotColumns() {
         {"background_dn", K::Number, "background level", "DN"},
         {"roi_x0", K::Number, "full-image x of the ROI's first pixel", "px"},
         {"roi_y0", K::Number, "full-image y of the ROI's first pixel", "px"},
+        {"cov_xx_px2", K::Number, "the centre's variance along x (uncertainty_px² = cov_xx + cov_yy)", "px²"},
+        {"cov_xy_px2", K::Number, "the centre's x-y covariance", "px²"},
+        {"cov_yy_px2", K::Number, "the centre's variance along y", "px²"},
+        {"radius95_px", K::Number, "radius holding the true centre in 95 % of shots", "px"},
         {"note", K::Text, "the analyst's note", ""},
     };
     Q_ASSERT(int(cols.size()) == Count);
@@ -153,6 +157,10 @@ core::FilterCell shotCell(const Shot& s, int roiIndex, int col) {
             return FilterCell::num(failed || !s.processed ? kNaN : f.ok ? f.background : s.result.background.level);
         case RoiX0: return FilterCell::num(failed ? kNaN : s.origin.x());
         case RoiY0: return FilterCell::num(failed ? kNaN : s.origin.y());
+        case CovXX: return fitNum(f.covXX);
+        case CovXY: return fitNum(f.covXY);
+        case CovYY: return fitNum(f.covYY);
+        case Radius95: return fitNum(f.radius95Px);
         case Note: return FilterCell::str(s.note.toStdString());
     }
     return {};

@@ -28,7 +28,7 @@ const ParamsBinding<fp::FootprintParams> kParams{
     fp::footprintSchema, defaults, familyCheck, fromJson, afterSet};
 
 // The report's columns that are text and whole numbers (the rest are float64, empty = NaN).
-const std::vector<std::string> kText = {"file", "verdict", "reasons", "method", "noise_class"};
+const std::vector<std::string> kText = {"file", "verdict", "reasons", "method", "noise_class", "time", "beam", "camera"};
 const std::vector<std::string> kInt = {"roi", "roi_x0", "roi_y0"};
 
 /// A run's items and its method: the report's rows.

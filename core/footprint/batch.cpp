@@ -102,7 +102,8 @@ std::vector<FootprintResult> ShotsTask::run(const Inputs& in, const FootprintPar
 std::string footprintCsvHeader(const FootprintCsvOptions& o) {
     std::string h =
         "file,x,y,verdict,reasons,method,noise_class,sigma_x,sigma_y,axis_ratio,tilt_deg,major_axis_px,"
-        "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0,time,beam,camera";
+        "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0,"
+        "cov_xx_px2,cov_xy_px2,cov_yy_px2,radius95_px,time,beam,camera";
     if (o.review) h += ",auto_verdict,override,note";
     return h + "\n";
 }
@@ -133,7 +134,8 @@ std::string footprintCsvRows(const BatchItem& item, Method method, const Footpri
     // Unreadable frames and failed fits are rejected rows, whatever the review says.
     auto failedRow = [&](const std::string& reason, size_t k, const std::string& roi) {
         if (o.acceptedOnly) return;
-        out += file + ",,,rejected," + csvEscape(reason) + "," + methodName(method) + ",,,,,,,,,," + roi + ",,,,,,," +
+        // (…, roi_y0, cov_xx/xy/yy_px2, radius95_px empty)
+        out += file + ",,,rejected," + csvEscape(reason) + "," + methodName(method) + ",,,,,,,,,," + roi + ",,,,,,,,,,," +
                shotColumns(item);
         if (o.review) out += reviewColumns(item, k, Verdict::Rejected);
         out += "\n";
@@ -173,7 +175,10 @@ std::string footprintCsvRows(const BatchItem& item, Method method, const Footpri
                    num(f.amplitude, 1) + "," + num(f.background, 1);
         else
             out += ",,,," + num(r.background.level, 1);
-        out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY) + shotColumns(item);
+        out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY);
+        // The centre's covariance behind uncertainty_px (the Gaussian fit's; empty for the others).
+        out += "," + (has ? sci(f.covXX) : "") + "," + (has ? sci(f.covXY) : "") + "," + (has ? sci(f.covYY) : "") + "," +
+               (has ? num(f.radius95Px, 5) : "") + shotColumns(item);
         if (o.review) out += reviewColumns(item, k, r.verdict);
         out += "\n";
         ++count;

@@ -123,12 +123,21 @@ void addGauss(Schema<FootprintParams>& s) {
               "textured ground: LM on neighbouring-pixel differences (whitens real ground's red spectrum)");
     s.real("gauss.lm_window_sigmas_difference", LWB_FIELD(F, gauss.lmWindowSigmasDifference), "sigma", {1, 20}, {1.5, 4},
            "LM window half-width in major-axis sigma for the difference fit");
+    s.boolean("gauss.uncertainty_from_ground", LWB_FIELD(F, gauss.uncertaintyFromGround),
+              "uncertainty_px from the shot's own ground: the fit's centre templates applied to the ground's "
+              "autocovariance measured in the ROI plus photon and read noise; false = the quick estimate below");
+    s.real("gauss.uncertainty_scale", LWB_FIELD(F, gauss.uncertaintyScale), "", {0.1, 10}, {0.5, 2},
+           "factor on the ground part of that uncertainty for fits with the Cauchy loss (the robust fit beats its "
+           "linearisation; calibrated on one photograph, aero1)");
+    s.real("gauss.radius95_factor", LWB_FIELD(F, gauss.radius95Factor), "", {1, 10}, {1.5, 3},
+           "radius95_px = this x uncertainty_px (a Gaussian error: 1.73; on real ground it is heavier-tailed; calibrated on aero1)");
     s.real("gauss.uncertainty_texture_scale", LWB_FIELD(F, gauss.uncertaintyTextureScale), "", {0, 100}, {0, 6},
-           "uncertainty_px: texture shift scale after the difference fit (calibrated for 63 % coverage)");
+           "quick uncertainty (LM's stop; uncertainty_px when uncertainty_from_ground is off): texture shift scale "
+           "after the difference fit");
     s.real("gauss.uncertainty_texture_scale_pixel_fit", LWB_FIELD(F, gauss.uncertaintyTextureScalePixelFit), "", {0, 100},
            {0, 8}, "the same after the pixel fit");
     s.real("gauss.uncertainty_deadband", LWB_FIELD(F, gauss.uncertaintyDeadband), "", {0, 10}, {0, 1},
-           "texture counts beyond (1 + this) x the photon part");
+           "quick uncertainty: texture counts beyond (1 + this) x the photon part");
     s.boolean("gauss.noise_weights", LWB_FIELD(F, gauss.noiseWeights), "LM weights 1 / (photon + read + ground-texture variance)");
     s.boolean("gauss.robust_loss", LWB_FIELD(F, gauss.robustLoss), "textured ground: Cauchy loss instead of least squares");
     s.real("gauss.robust_scale", LWB_FIELD(F, gauss.robustScale), "sigma", {0.1, 100, true, true}, {0.5, 4},
@@ -156,6 +165,16 @@ void addVerdictAndCamera(Schema<FootprintParams>& s) {
              if (!std::isnan(v)) p.verdict.mseMax = v;
          },
          "", {0, 1e6, true, false}, {1e-7, 1e-3}, "fit residual limit (paper 000 eq. 8, f normalised to unit sum); null = off")
+        .specials = {{NAN, "off"}};
+    s.real(
+         "verdict.max_uncertainty_px",
+         [](const F& p) { return p.verdict.maxUncertaintyEnabled ? p.verdict.maxUncertaintyPx : NAN; },
+         [](F& p, double v) {
+             p.verdict.maxUncertaintyEnabled = !std::isnan(v);
+             if (!std::isnan(v)) p.verdict.maxUncertaintyPx = v;
+         },
+         "px", {0, 1e6, true, false}, {0.05, 2},
+         "a centre whose 1-sigma radial uncertainty (uncertainty_px) exceeds this is doubtful; null = off")
         .specials = {{NAN, "off"}};
     s.boolean("verdict.check_edge", LWB_FIELD(F, verdict.checkEdge), "the spot's 1/e^2 ellipse must lie inside the ROI");
     s.real("verdict.edge_extent", LWB_FIELD(F, verdict.edgeExtent), "", {0.5, 5}, {0.8, 2},

@@ -496,6 +496,183 @@ DifferenceVariances groundDifferenceVariances(const cv::Mat& roi, const GaussMod
     return dv;
 }
 
+// The centre's covariance from the shot's own ground (issue 32). The fit's centre is, to first
+// order, δθ = (JᵀWJ)⁻¹JᵀW·n (pixel fit) or (J_dᵀWJ_d)⁻¹J_dᵀW·D·n (difference fit: D the
+// neighbour differences, J_d = D·J), with W the final (Cauchy re-weighted) weights: a template
+// s_x, s_y over the window's pixels gives x̂ − x = s_x·n. Its covariance under pixel noise of
+// covariance C is s C sᵀ: a sandwich. C = the ground's texture (stationary over the ROI, its
+// autocovariance R(l) measured on the residual field img − model of this ROI, each lag's sum
+// divided by the pairs it has) + the photon and read noise of each pixel (diagonal, from the
+// model). s C sᵀ = Σ_l A_s(l)·R(l) with A_s the template's autocorrelation, over every lag the
+// template reaches. The templates sum to zero and are orthogonal to the plane, so a constant
+// or a plane left in the residuals cancels. The texture part is scaled by textureScale²
+// (GaussParams::uncertaintyScale, for the robust fits: see there).
+struct CentreCovariance {
+    bool ok = false;
+    double xx = NAN, xy = NAN, yy = NAN;
+};
+
+CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw, const Vec9& p, const Mat9& jtj,
+                                        double cauchyC2, int cx, int cy, const CameraParams& camera, double textureScale) {
+    CentreCovariance out;
+    Eigen::Matrix<double, kP, 2> unit = Eigen::Matrix<double, kP, 2>::Zero();
+    unit(1, 0) = unit(2, 1) = 1;
+    const Eigen::LDLT<Mat9> ldlt(jtj);
+    if (ldlt.info() != Eigen::Success) return out;
+    const Eigen::Matrix<double, kP, 2> hc = ldlt.solve(unit);  // the x0 and y0 columns of (JᵀWJ)⁻¹
+    if (!hc.allFinite()) return out;
+    const std::vector<WinPixel>& win = fw.px;
+    const int n = static_cast<int>(win.size()), cols = fw.cols, rows = fw.rows;
+    if (n < 4 || cols < 2 || rows < 2) return out;
+    const double A = p(0), x0 = p(1), y0 = p(2), a = p(3), b = p(4), c = p(5), bx = p(7), by = p(8);
+    const double gain = camera.gainEPerDn, rn = camera.readNoiseE / camera.gainEPerDn, rn2 = rn * rn;
+    thread_local std::vector<double> buf;
+    buf.assign(size_t(n) * 8, 0.0);
+    double *q = buf.data(), *e = q + n, *gx = e + n, *gy = gx + n, *res = gy + n, *v = res + n, *sx = v + n, *sy = sx + n;
+    for (int i = 0; i < n; ++i) {
+        const double dx = win[size_t(i)].dx - x0, dy = win[size_t(i)].dy - y0;
+        q[i] = a * dx * dx + 2 * b * dx * dy + c * dy * dy;
+    }
+    kernel::halfNegExp(q, e, n);
+    for (int i = 0; i < n; ++i) {
+        const double dx = win[size_t(i)].dx - x0, dy = win[size_t(i)].dy - y0, g = A * e[i];
+        const double J[kP] = {e[i], g * (a * dx + b * dy) - bx, g * (b * dx + c * dy) - by, -0.5 * g * dx * dx,
+                              -g * dx * dy, -0.5 * g * dy * dy, 1.0, dx, dy};
+        double ux = 0, uy = 0;
+        for (int k = 0; k < kP; ++k) {
+            ux += J[k] * hc(k, 0);
+            uy += J[k] * hc(k, 1);
+        }
+        gx[i] = ux;
+        gy[i] = uy;
+        const double model = g + p(6) + bx * dx + by * dy;
+        res[i] = win[size_t(i)].value - model;
+        v[i] = std::max(model, 0.0) / gain + rn2;
+    }
+    if (!fw.diff) {
+        for (int i = 0; i < n; ++i) {
+            double w = win[size_t(i)].weight;
+            if (cauchyC2 > 0) w /= 1.0 + w * res[i] * res[i] / cauchyC2;
+            sx[i] = w * gx[i];
+            sy[i] = w * gy[i];
+        }
+    } else {
+        for (int pass = 0; pass < 2; ++pass) {
+            const int step = pass == 0 ? 1 : cols;
+            const std::vector<double>& w0 = fw.w0[pass];
+            const int m = std::min(n - step, static_cast<int>(w0.size()));
+            for (int i = 0; i < m; ++i) {
+                if (!(w0[size_t(i)] > 0)) continue;
+                const double d = res[i + step] - res[i];
+                double w = w0[size_t(i)];
+                if (cauchyC2 > 0) w /= 1.0 + w * d * d / cauchyC2;
+                const double hx = w * (gx[i + step] - gx[i]), hy = w * (gy[i + step] - gy[i]);
+                sx[i + step] += hx;
+                sx[i] -= hx;
+                sy[i + step] += hy;
+                sy[i] -= hy;
+            }
+        }
+    }
+    // Photon and read noise: diagonal.
+    double pxx = 0, pxy = 0, pyy = 0;
+    for (int i = 0; i < n; ++i) {
+        pxx += sx[i] * sx[i] * v[i];
+        pxy += sx[i] * sy[i] * v[i];
+        pyy += sy[i] * sy[i] * v[i];
+    }
+    // The ROI's residual field (mean removed) and its mean photon + read variance.
+    const int W = roi.cols, H = roi.rows, N = W * H;
+    const float* img = roi.ptr<float>();
+    thread_local std::vector<double> rq, re;
+    rq.resize(size_t(N));
+    re.resize(size_t(N));
+    const double ox = cx + x0, oy = cy + y0;  // the centre in ROI coordinates
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const double dx = x - ox, dy = y - oy;
+            rq[size_t(y) * W + x] = a * dx * dx + 2 * b * dx * dy + c * dy * dy;
+        }
+    kernel::halfNegExp(rq.data(), re.data(), N);
+    double* rho = rq.data();  // reused: the residual field
+    double mean = 0, vbar = 0;
+    for (int i = 0; i < N; ++i) {
+        const double dx = i % W - ox, dy = i / W - oy;
+        const double model = A * re[size_t(i)] + p(6) + bx * dx + by * dy;
+        rho[i] = img[i] - model;
+        mean += rho[i];
+        vbar += std::max(model, 0.0) / gain + rn2;
+    }
+    mean /= N;
+    vbar /= N;
+    for (int i = 0; i < N; ++i) rho[i] -= mean;
+    // Σ over the template's lags l of A_s(l)·R(l), R(l) = the lag's sum of products over its pairs,
+    // taken directly (kernel::lagSums, vectorised). Lags l and −l are the same pairs: the
+    // half-plane ly > 0 or (ly = 0, lx ≥ 0), the others counted twice. (By FFT on a 64² grid this
+    // took 4-5 times the fit's instructions; every lag directly, 8 times.)
+    // Lags up to half the template's reach (a quarter of the products; the coverage of aero1's
+    // shots moved by less than 1 point against every lag), R flat beyond at its edge level.
+    constexpr double kLagFraction = 0.5;
+    // (At most kernel::kMaxLag either way: a spot of σ 25 px and more.)
+    const int lxMax = std::clamp(static_cast<int>(std::lround(kLagFraction * (cols - 1))), 1, kernel::kMaxLag),
+              lyMax = std::clamp(static_cast<int>(std::lround(kLagFraction * (rows - 1))), 1, kernel::kMaxLag);
+    const int stride = 2 * lxMax + 1, lags = stride * (lyMax + 1);
+    // In single precision; the templates as s_x, s_y and s_x + s_y, whose autocorrelations give
+    // the symmetrised cross term as (A_x+y − A_xx − A_yy)/2.
+    thread_local std::vector<float> lagBuf, fr, fx, fy, fs;
+    lagBuf.resize(size_t(lags) * 4);
+    fr.assign(rho, rho + N);
+    fx.assign(sx, sx + n);
+    fy.assign(sy, sy + n);
+    fs.resize(size_t(n));
+    for (int i = 0; i < n; ++i) fs[size_t(i)] = static_cast<float>(sx[i] + sy[i]);
+    float *rr = lagBuf.data(), *axx = rr + lags, *ayy = axx + lags, *asum = ayy + lags;
+    kernel::lagSums(fr.data(), fr.data(), W, H, lxMax, lyMax, rr);
+    kernel::lagSums(fx.data(), fx.data(), cols, rows, lxMax, lyMax, axx);
+    kernel::lagSums(fy.data(), fy.data(), cols, rows, lxMax, lyMax, ayy);
+    kernel::lagSums(fs.data(), fs.data(), cols, rows, lxMax, lyMax, asum);
+    // Beyond the lags summed, R is taken flat at its mean on the box's edge: the templates sum to
+    // zero over all lags, so the lags left out carry −(the sum of A_s inside) times that level.
+    double edge = 0;
+    int edgeN = 0;
+    for (int ly = 0; ly <= lyMax; ++ly)
+        for (int lx = -lxMax; lx <= lxMax; ++lx)
+            if (ly == lyMax || std::abs(lx) == lxMax) {
+                edge += rr[ly * stride + lx + lxMax] / (double(H - ly) * (W - std::abs(lx)));
+                ++edgeN;
+            }
+    edge /= edgeN;
+    double txx = 0, txy = 0, tyy = 0;
+    for (int ly = 0; ly <= lyMax; ++ly)
+        for (int lx = ly == 0 ? 0 : -lxMax; lx <= lxMax; ++lx) {
+            const int k = ly * stride + lx + lxMax;
+            const double twice = ly == 0 && lx == 0 ? 1.0 : 2.0;
+            const double r = twice * (rr[k] / (double(H - ly) * (W - std::abs(lx))) - edge);
+            txx += axx[k] * r;
+            tyy += ayy[k] * r;
+            txy += 0.5 * (double(asum[k]) - axx[k] - ayy[k]) * r;
+        }
+    // The photon + read part of R(0) is counted exactly above (pixel by pixel): take its mean out.
+    double sxx = 0, syy = 0, sxy = 0;
+    for (int i = 0; i < n; ++i) {
+        sxx += sx[i] * sx[i];
+        syy += sy[i] * sy[i];
+        sxy += sx[i] * sy[i];
+    }
+    txx -= vbar * sxx;
+    tyy -= vbar * syy;
+    txy -= vbar * sxy;
+    const double k2 = textureScale * textureScale;
+    // A texture variance below zero is the estimate's noise: no texture part then.
+    const double texX = std::max(txx, 0.0), texY = std::max(tyy, 0.0);
+    const double texXY = std::clamp(txy, -std::sqrt(texX * texY), std::sqrt(texX * texY));
+    out.xx = pxx + k2 * texX;
+    out.yy = pyy + k2 * texY;
+    out.xy = pxy + k2 * texXY;
+    out.ok = std::isfinite(out.xx) && std::isfinite(out.yy) && std::isfinite(out.xy) && out.xx > 0 && out.yy > 0;
+    return out;
+}
+
 void fillFit(const GaussModel& m, double noise, SpotFit* f) {
     const double det = m.a * m.c - m.b * m.b;
     const double sxx = m.c / det, syy = m.a / det, sxy = -m.b / det;  // covariance = M⁻¹
@@ -778,7 +955,7 @@ void refineLm(const GaussParams& params, double background, LmProblem* lp, Gauss
 // uncertainty; paper 000's MSE at the reported model over the domain pixels above the fitted
 // background. False (r->fit.error) when refused.
 bool finishFit(const cv::Mat& roi, const SpotDomain& domain, double noise, const LmProblem& lp, const GaussModel& m,
-               int iterations, GaussResult* r) {
+               int iterations, const GaussParams& params, const CameraParams& camera, GaussResult* r) {
     fillFit(m, noise, &r->fit);
     if (r->fallbackStart) {
         // A moment start is only a spot when LM made a spot of it: kept, spot-sized (σ 1.5–6 px,
@@ -792,6 +969,17 @@ bool finishFit(const cv::Mat& roi, const SpotDomain& domain, double noise, const
         }
     }
     r->fit.uncertaintyPx = lp.uncertainty(lp.centreVariance(), m.amplitude);
+    if (params.uncertaintyFromGround) {
+        const CentreCovariance cc = groundCentreCovariance(roi, lp.fw, lp.p, lp.jtj, lp.cauchyC2, lp.cx, lp.cy, camera,
+                                                           lp.cauchyC2 > 0 ? params.uncertaintyScale : 1.0);
+        if (cc.ok) {
+            r->fit.covXX = cc.xx;
+            r->fit.covXY = cc.xy;
+            r->fit.covYY = cc.yy;
+            r->fit.uncertaintyPx = std::sqrt(cc.xx + cc.yy);
+            r->fit.radius95Px = params.radius95Factor * r->fit.uncertaintyPx;
+        }
+    }
     const int w = roi.cols;
     const float* img = roi.ptr<float>();
     thread_local std::vector<double> mseF, mseQ;
@@ -843,7 +1031,7 @@ GaussResult fitGauss(const cv::Mat& roi, const SpotDomain& domain, double backgr
     }
     LmProblem lp(roi, m, background, noise, params, camera);
     if (params.lmRefine) refineLm(params, background, &lp, &m, &r, &iterations);
-    finishFit(roi, domain, noise, lp, m, iterations, &r);
+    finishFit(roi, domain, noise, lp, m, iterations, params, camera, &r);
     return r;
 }
 

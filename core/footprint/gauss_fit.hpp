@@ -43,9 +43,27 @@ struct GaussParams {
     /// generalised least squares for that correlation).
     bool differenceFit = true;
     double lmWindowSigmasDifference = 2.5; ///< LM window for the difference fit (major-axis σ)
-    /// uncertainty_px adds, in quadrature, scale·(ground texture σ of a neighbour difference)·σ/A
-    /// to the LM covariance (which assumes independent pixels): the shift texture gives the
-    /// centre. Scales calibrated for ≈ 63 % coverage (Rayleigh) on the photo simulator.
+    /// uncertainty_px from the shot's own ground (issue 32): the fit's centre templates (the
+    /// rows of (JᵀWJ)⁻¹JᵀW, through the differences for the difference fit) applied to the
+    /// covariance of the ground measured in this ROI (the autocovariance of the residual field
+    /// img − model over the ROI, corrected for its overlap at each lag) plus the photon and read
+    /// noise: a sandwich covariance. false = the quick estimate below (before issue 32).
+    bool uncertaintyFromGround = true;
+    /// The sandwich's one calibrated factor, on the square root of its ground part, for fits with
+    /// the Cauchy loss (textured ground) only: the robust fit ignores outlying ground (edges,
+    /// bright objects) more than its final weights, which the linear sandwich uses, say. Calibrated
+    /// for 63.2 % coverage on photo ground cut from one photograph (aero1, eval seed 11); plain
+    /// least-squares fits take the sandwich as it is.
+    double uncertaintyScale = 0.86;
+    /// radius95_px = this × uncertainty_px: the radius that holds the true centre in 95 % of the
+    /// shots. A circular Gaussian error would give 1.7308 (2.45 σ per axis); the centre's error on
+    /// real ground is heavier-tailed (edges, bright objects), and the factor is calibrated on the
+    /// same photograph as uncertaintyScale.
+    double radius95Factor = 2.05;
+    /// The quick estimate: the LM covariance (independent pixels) plus, in quadrature,
+    /// scale·(ground texture σ of a neighbour difference)·σ/A. It sets LM's stop
+    /// (lmToleranceFraction) and, with uncertaintyFromGround off, uncertainty_px. Scales
+    /// calibrated for ≈ 63 % coverage on the photo simulator (it misses elsewhere: issue 32).
     double uncertaintyTextureScale = 2.0;          ///< after the difference fit
     double uncertaintyTextureScalePixelFit = 4.0;  ///< after the pixel fit (faint texture)
     double uncertaintyDeadband = 0.1;              ///< texture counts beyond (1 + this)·photon part

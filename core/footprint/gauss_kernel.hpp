@@ -5,6 +5,11 @@
 
 namespace lwb::core::footprint::kernel {
 
+/// Lag sums of two width × height fields (row-major): out[(ly)·(2·lxMax + 1) + lx + lxMax] =
+/// Σ u(x, y)·w(x + lx, y + ly) over the pairs inside the field, for 0 ≤ ly ≤ lyMax and
+/// |lx| ≤ lxMax (both below the field's size). Single precision.
+constexpr int kMaxLag = 31;  ///< lagSums' largest |lx|
+void lagSums(const float* u, const float* w, int width, int height, int lxMax, int lyMax, float* out);
 /// out[i] = exp(−½ q[i]) for i < n.
 void halfNegExp(const double* q, double* out, int n);
 /// out[i] = ln(f[i] / S) for i < n.

@@ -1,5 +1,6 @@
 #pragma once
 // Types shared by the footprint spot methods (gcm, tefm, gauss).
+#include <cmath>
 #include <string>
 
 namespace lwb::core::footprint {
@@ -29,6 +30,12 @@ struct SpotFit {
     double mse = 0;             ///< paper 000 eq. 8: ‖A − B·C‖²/N with f normalised to unit sum
     double snr = 0;             ///< amplitude / background noise σ
     double uncertaintyPx = 0;   ///< 1-σ radial position uncertainty sqrt(var x + var y) (px)
+    /// The centre's covariance (px²) that uncertaintyPx comes from: for the Gaussian fit, the
+    /// sandwich of the fit's templates with the shot's own ground texture (docs/footprint-accuracy.md);
+    /// NaN where the method gives none
+    double covXX = NAN, covXY = NAN, covYY = NAN;
+    /// Radius holding the true centre in 95 % of shots (px); NaN where the method gives none
+    double radius95Px = NAN;
     int iterations = 0;         ///< solver iterations used (Guo + LM for gauss)
 };
 

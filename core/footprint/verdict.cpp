@@ -71,6 +71,9 @@ Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int 
     checkRange("eccentricity", fit.eccentricity, p.eccentricity, 3, &j.reasons);
     if (p.mseEnabled && std::isfinite(fit.mse) && !(fit.mse < p.mseMax))
         j.reasons.push_back("mse " + formatDouble(fit.mse, 3) + " not below " + formatDouble(p.mseMax, 3));
+    if (p.maxUncertaintyEnabled && std::isfinite(fit.uncertaintyPx) && fit.uncertaintyPx > p.maxUncertaintyPx)
+        j.reasons.push_back("uncertainty_px " + formatDouble(fit.uncertaintyPx, 3) + " above " +
+                            formatDouble(p.maxUncertaintyPx, 4));
     if (p.checkEdge) {
         // Half extents of the ellipse of full axes major/minor at the fit's orientation.
         const double big = std::max(fit.sigmaX, fit.sigmaY);

@@ -27,6 +27,11 @@ struct VerdictParams {
     Range eccentricity{false, 0.2, 0.8};  ///< paper 001: 0.2–0.8
     bool mseEnabled = true;
     double mseMax = 1e-5;                 ///< paper 000 eq. 8 residual, f normalised to unit sum
+    /// A centre whose uncertainty_px (1-σ radial, from the shot's own ground for the Gaussian
+    /// fit) exceeds this is doubtful: the shot does not locate the footprint to the precision
+    /// the geolocation needs, whatever its shape.
+    bool maxUncertaintyEnabled = true;
+    double maxUncertaintyPx = 0.5;
     bool checkEdge = true;                ///< the spot's ellipse (1/e² × edgeExtent) must lie inside the ROI
     /// 1.25: the 2.5σ ellipse of a Gaussian (the 1/e² one leaves a spot whose minor axis points at
     /// an edge 4 px away "inside", with a tenth of its light cut off by the ROI's border).

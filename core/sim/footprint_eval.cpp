@@ -48,6 +48,9 @@ bool findVariant(const std::string& name, MethodVariant* out) {
 }
 
 namespace {
+// The 95 % radius of a circular 2-D Gaussian error: 2.4477 σ per axis, and u = √(var x + var y) =
+// √2 σ, so √(−ln 0.05) = 1.7308 u (P(|err| < k·u) = 1 − e^(−k²)).
+constexpr double kRadius95 = 1.7308;
 // The class the ground's true median falls in, with the pipeline's thresholds.
 NoiseClass trueClass(double groundMedian, const BackgroundParams& b) {
     if (groundMedian < b.nightBelow) return NoiseClass::Night;
@@ -63,7 +66,7 @@ struct ShotOutcome {
     bool classOk = false;
     double reportedCrlb = NAN;
     bool visible = false;
-    bool covered = false;
+    bool covered = false, covered95 = false;
 };
 }  // namespace
 
@@ -110,6 +113,8 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
                     o.fitted = r.ok && r.fit.ok && r.verdict != Verdict::Rejected;
                     if (o.fitted && t.hasSpot) o.err = std::hypot(r.fit.x - t.x, r.fit.y - t.y);
                     o.covered = o.fitted && t.hasSpot && o.err < r.fit.uncertaintyPx;
+                    o.covered95 = o.fitted && t.hasSpot &&
+                                  o.err < (std::isfinite(r.fit.radius95Px) ? r.fit.radius95Px : kRadius95 * r.fit.uncertaintyPx);
                     o.visible = t.hasSpot && t.amplitude >= 5 * std::max(t.textureRms, 1.0);
                     o.reportedCrlb = r.crlbPx;
                 }
@@ -139,6 +144,7 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
                 if (o.visible) ++s.visible;
                 if (o.visible && o.fitted) ++s.visibleFitted;
                 if (o.covered) ++s.covered;
+                if (o.covered95) ++s.covered95;
                 if (std::isfinite(o.err)) errs.push_back(o.err);
                 if (std::isfinite(crlb[i])) {
                     crlbSum += crlb[i] * crlb[i];
@@ -177,14 +183,15 @@ std::vector<EvalStats> evaluateFootprint(const EvalParams& params, const std::ve
 std::string evalTableMarkdown(const std::vector<EvalStats>& stats) {
     std::string t =
         "| method | scene | case | n | fitted | good | doubtful | rejected | mean err (px) | var (px²) | RMS (px) | "
-        "median | p99 | max | CRLB (px) | covered by u |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "median | p99 | max | CRLB (px) | covered by u | by radius95 |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& s : stats) {
         t += "| " + s.variant + " | " + sceneName(s.scene) + " | " + spotCaseName(s.spotCase) + " | " +
              std::to_string(s.n) + " | " + std::to_string(s.fitted) + " | " + std::to_string(s.good) + " | " +
              std::to_string(s.doubtful) + " | " + std::to_string(s.rejected) + " | " + formatFixed(s.meanErr, 3) +
              " | " + formatFixed(s.varErr, 4) + " | " + formatFixed(s.rmsErr, 3) + " | " + formatFixed(s.medianErr, 3) +
              " | " + formatFixed(s.p99Err, 3) + " | " + formatFixed(s.maxErr, 3) + " | " + formatFixed(s.meanCrlb, 4) +
-             " | " + (s.fitted ? formatFixed(100.0 * s.covered / s.fitted, 1) + " %" : std::string("—")) + " |\n";
+             " | " + (s.fitted ? formatFixed(100.0 * s.covered / s.fitted, 1) + " %" : std::string("—")) + " | " +
+             (s.fitted ? formatFixed(100.0 * s.covered95 / s.fitted, 1) + " %" : std::string("—")) + " |\n";
     }
     return t;
 }

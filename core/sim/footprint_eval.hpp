@@ -49,6 +49,7 @@ struct EvalStats {
     int visible = 0;        ///< shots whose spot is plainly visible: amplitude ≥ 5× the ground RMS
     int visibleFitted = 0;  ///< of those, shots that got a centre (good or doubtful)
     int covered = 0;        ///< fitted shots with |error| < uncertainty_px (Rayleigh level: 63.2 %)
+    int covered95 = 0;      ///< fitted shots with |error| < radius95_px (or, where none, 1.7308·uncertainty_px: 2.45 σ per axis)
 };
 
 /// Empty (with *error set when given) when the simulator cannot make the asked-for ground.

@@ -53,10 +53,18 @@ bool parseSpotCase(const std::string& s, SpotCase* out) {
     return false;
 }
 
-const char* groundSourceName(GroundSource g) { return g == GroundSource::Photo ? "photo" : "synthetic"; }
+const char* groundSourceName(GroundSource g) {
+    switch (g) {
+        case GroundSource::Photo: return "photo";
+        case GroundSource::Synthetic: return "synthetic";
+        case GroundSource::Fractal: return "fractal";
+        case GroundSource::PhotoCuts: return "photo-cuts";
+    }
+    return "?";
+}
 
 bool parseGroundSource(const std::string& s, GroundSource* out) {
-    for (GroundSource g : {GroundSource::Photo, GroundSource::Synthetic})
+    for (GroundSource g : {GroundSource::Photo, GroundSource::Synthetic, GroundSource::Fractal, GroundSource::PhotoCuts})
         if (toLower(s) == groundSourceName(g)) {
             *out = g;
             return true;
@@ -65,7 +73,7 @@ bool parseGroundSource(const std::string& s, GroundSource* out) {
 }
 
 SceneLevels sceneLevels(Scene s, GroundSource g) {
-    const bool photo = g == GroundSource::Photo;
+    const bool photo = g != GroundSource::Synthetic;  // the held-out families take the photo levels
     switch (s) {
         case Scene::Weak: return {2500, 3900, 100, 220, !photo};
         case Scene::Moderate: return {4000, 4500, 150, 300, !photo};
@@ -166,8 +174,74 @@ cv::Mat simulateGround(int width, int height, double mean, double rms, bool feat
     return g;
 }
 
+namespace {
+// Anti-aliased step: 1 on the far side of the line (x − px)·n > 0, 0 on the near side.
+float stepAcross(double d) { return static_cast<float>(std::clamp(0.5 + d, 0.0, 1.0)); }
+}  // namespace
+
+cv::Mat fractalGround(int width, int height, double mean, double rms, Rng& rng, FractalGroundInfo* info) {
+    // A Gaussian field with power ∝ 1/f^β on a grid twice the frame (its periodicity out of sight).
+    const int n = cv::getOptimalDFTSize(2 * std::max(width, height));
+    const double beta = rng.uniform(1.5, 3.5);
+    cv::Mat spec(n, n, CV_64FC2);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const double fx = (x <= n / 2 ? x : x - n) / double(n), fy = (y <= n / 2 ? y : y - n) / double(n);
+            const double f = std::max(std::hypot(fx, fy), 0.5 / n);
+            const double amp = std::pow(f, -beta / 2);
+            spec.at<cv::Vec2d>(y, x) = {amp * rng.normal(), amp * rng.normal()};
+        }
+    spec.at<cv::Vec2d>(0, 0) = {0, 0};
+    cv::Mat field;
+    cv::dft(spec, field, cv::DFT_INVERSE | cv::DFT_REAL_OUTPUT);
+    const int ox = static_cast<int>(rng.uniform() * (n - width)), oy = static_cast<int>(rng.uniform() * (n - height));
+    cv::Mat g;
+    field(cv::Rect(ox, oy, width, height)).convertTo(g, CV_32F);
+    cv::Scalar m0, sd0;
+    cv::meanStdDev(g, m0, sd0);
+    g = (g - m0[0]) / std::max(sd0[0], 1e-12);
+    // Strong sharp edges: 0-3 steps of 1-4 texture σ (field boundaries, shores, roofs), straight or
+    // bent (two half-lines meeting at a corner).
+    const int edges = static_cast<int>(rng.uniform() * 4);
+    for (int e = 0; e < edges; ++e) {
+        const double px = rng.uniform(0, width), py = rng.uniform(0, height), a1 = rng.uniform(0, 2 * M_PI);
+        const double a2 = rng.uniform() < 0.5 ? a1 : a1 + rng.uniform(-1.2, 1.2);
+        const double contrast = (rng.uniform() < 0.5 ? -1 : 1) * rng.uniform(1.0, 4.0);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const double d1 = (x - px) * std::cos(a1) + (y - py) * std::sin(a1);
+                const double d2 = (x - px) * std::cos(a2) + (y - py) * std::sin(a2);
+                g.at<float>(y, x) += static_cast<float>(contrast) * stepAcross(std::min(d1, d2));
+            }
+    }
+    // Water: a disc or half-plane that is flat (a level of its own, ripples of 3 % of the texture).
+    const bool water = rng.uniform() < 0.35;
+    if (water) {
+        const bool disc = rng.uniform() < 0.5;
+        const double px = rng.uniform(0, width), py = rng.uniform(0, height), ang = rng.uniform(0, 2 * M_PI);
+        const double radius = rng.uniform(5, 14), level = rng.uniform(-2.0, 1.0);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const double d = disc ? radius - std::hypot(x - px, y - py)
+                                      : (x - px) * std::cos(ang) + (y - py) * std::sin(ang);
+                const float k = stepAcross(d);
+                float& v = g.at<float>(y, x);
+                v = (1 - k) * v + k * static_cast<float>(level + 0.03 * rng.normal());
+            }
+    }
+    cv::Scalar m, sd;
+    cv::meanStdDev(g, m, sd);
+    g = (g - m[0]) * (rms / std::max(sd[0], 1e-12)) + mean;
+    if (info) {
+        info->beta = beta;
+        info->edges = edges;
+        info->water = water;
+    }
+    return g;
+}
+
 std::string groundProblem(const FootprintSimParams& p) {
-    if (p.ground != GroundSource::Photo || p.scene == Scene::Flat) return {};
+    if ((p.ground != GroundSource::Photo && p.ground != GroundSource::PhotoCuts) || p.scene == Scene::Flat) return {};
     return terrainPhotos().ok ? std::string() : terrainPhotos().error;
 }
 
@@ -192,8 +266,10 @@ FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
     t.scene = p.scene;
     t.spotCase = p.spotCase;
     const TerrainPhotos& photos = terrainPhotos();
-    const bool photo = p.ground == GroundSource::Photo && p.scene != Scene::Flat && photos.ok;
-    const SceneLevels lv = sceneLevels(p.scene, photo ? GroundSource::Photo : GroundSource::Synthetic);
+    const bool photo = (p.ground == GroundSource::Photo || p.ground == GroundSource::PhotoCuts) && p.scene != Scene::Flat &&
+                       photos.ok;
+    const bool fractal = p.ground == GroundSource::Fractal && p.scene != Scene::Flat;
+    const SceneLevels lv = sceneLevels(p.scene, photo || fractal ? GroundSource::Photo : GroundSource::Synthetic);
     t.groundMean = rng.uniform(lv.meanMin, lv.meanMax);
     t.textureRms = rng.uniform(lv.textureMin, lv.textureMax);
     const uint64_t groundSeed = rng.next();
@@ -201,11 +277,28 @@ FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
     if (photo) {
         Rng groundRng(groundSeed);
         TerrainPatchInfo info;
-        img = terrainPatch(photos, p.width, p.height, t.groundMean, t.textureRms, groundRng, {}, &info);
-        t.textureRms = t.textureRms * std::min(1.0, info.rawRms / TerrainPatchParams{}.minRawRms);
+        TerrainPatchParams tp;
+        tp.photo = p.photo;
+        if (p.ground == GroundSource::PhotoCuts) {
+            // Finer and coarser cuts than the simulator's 0.7-2.5, half each; mixed colour bands.
+            tp.zoomMin = 0.35;
+            tp.zoomMax = 0.7;
+            tp.altZoomMin = 2.5;
+            tp.altZoomMax = 6.0;
+            tp.altZoomShare = 0.5;
+            tp.bandMix = true;
+        }
+        img = terrainPatch(photos, p.width, p.height, t.groundMean, t.textureRms, groundRng, tp, &info);
+        t.textureRms = t.textureRms * std::min(1.0, info.rawRms / tp.minRawRms);
         t.groundPhoto = true;
-        t.groundNote = info.photo + " band " + std::to_string(info.band) + " zoom " + formatFixed(info.zoom, 2) +
-                       " angle " + formatFixed(info.angleDeg, 1) + (info.flipped ? " flipped" : "");
+        t.groundNote = info.photo + (tp.bandMix ? " band mix" : " band " + std::to_string(info.band)) + " zoom " +
+                       formatFixed(info.zoom, 2) + " angle " + formatFixed(info.angleDeg, 1) + (info.flipped ? " flipped" : "");
+    } else if (fractal) {
+        Rng groundRng(groundSeed);
+        FractalGroundInfo info;
+        img = fractalGround(p.width, p.height, t.groundMean, t.textureRms, groundRng, &info);
+        t.groundNote = "fractal beta " + formatFixed(info.beta, 2) + " edges " + std::to_string(info.edges) +
+                       (info.water ? " water" : "");
     } else {
         img = simulateGround(p.width, p.height, t.groundMean, t.textureRms, lv.features, groundSeed);
         if (p.ground == GroundSource::Photo && p.scene != Scene::Flat) t.groundNote = "synthetic: " + photos.error;

@@ -83,13 +83,27 @@ const TerrainPhotos& terrainPhotos() {
 
 cv::Mat terrainPatch(const TerrainPhotos& photos, int w, int h, double mean, double rms, Rng& rng,
                      const TerrainPatchParams& params, TerrainPatchInfo* info) {
-    const int bandIndex = std::min(static_cast<int>(rng.uniform() * photos.bands.size()),
-                                   static_cast<int>(photos.bands.size()) - 1);
-    const cv::Mat& src = photos.bands[static_cast<size_t>(bandIndex)];
+    // The band: any of every photograph's four, or (params.photo) one photograph's.
+    const int perPhoto = 4, nBands = static_cast<int>(photos.bands.size());
+    const bool onePhoto = params.photo >= 0 && (params.photo + 1) * perPhoto <= nBands;
+    const int firstBand = onePhoto ? params.photo * perPhoto : 0, bandCount = onePhoto ? perPhoto : nBands;
+    const int bandIndex = firstBand + std::min(static_cast<int>(rng.uniform() * bandCount), bandCount - 1);
+    cv::Mat mixed;
+    if (params.bandMix) {
+        // A positive mix of the photograph's red, green and blue (bands 1-3 after luminance).
+        const int base = bandIndex - bandIndex % perPhoto;
+        double wgt[3], sum = 0;
+        for (double& v : wgt) sum += (v = -std::log(std::max(rng.uniform(), 1e-12)));
+        mixed = photos.bands[size_t(base + 1)] * (wgt[0] / sum) + photos.bands[size_t(base + 2)] * (wgt[1] / sum) +
+                photos.bands[size_t(base + 3)] * (wgt[2] / sum);
+    }
+    const cv::Mat& src = params.bandMix ? mixed : photos.bands[static_cast<size_t>(bandIndex)];
     // Zoom: photo pixels per ROI pixel, log-uniform; a large frame must still fit in the photo.
     const double half = (std::max(w, h) / 2.0 + 2) * std::sqrt(2.0);
     const double zoomFit = (std::min(src.cols, src.rows) / 2.0 - 8) / half;
-    const double zHi = std::min(params.zoomMax, zoomFit), zLo = std::min(params.zoomMin, zHi);
+    const bool alt = params.altZoomShare > 0 && rng.uniform() < params.altZoomShare;
+    const double zHi = std::min(alt ? params.altZoomMax : params.zoomMax, zoomFit),
+                 zLo = std::min(alt ? params.altZoomMin : params.zoomMin, zHi);
     const double zoom = std::exp(rng.uniform(std::log(zLo), std::log(zHi)));
     const double angle = rng.uniform(0, 2 * M_PI);
     const bool flip = rng.uniform() < 0.5;

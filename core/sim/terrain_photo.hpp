@@ -45,6 +45,13 @@ struct TerrainPatchParams {
     /// drawn RMS, only by the gain that would bring this RMS there: they stay flat ground, and
     /// JPEG blocks are not amplified into texture.
     double minRawRms = 4.0;
+    int photo = -1;       ///< cut only from this photograph (index into names); -1 = any
+    /// Grey level as a random positive mix of the red, green and blue bands (weights drawn per
+    /// patch) instead of one of the luminance, red, green or blue bands
+    bool bandMix = false;
+    /// A second zoom range, drawn instead of [zoomMin, zoomMax] with probability altZoomShare
+    /// (e.g. finer and coarser cuts than the simulator's own); 0 = never
+    double altZoomMin = 0, altZoomMax = 0, altZoomShare = 0;
 };
 
 /// A w×h CV_32F patch with mean `mean` and RMS `rms` (DN; less on flat patches, see

@@ -124,6 +124,9 @@ def test_footprint_columns_and_records(data):
     assert list(cols) == laserwb.footprint.csv_header().strip().split(",")
     assert len(rep) == len(cols["x"]) == 12
     assert cols["x"].dtype == np.float64 and cols["roi"].dtype == np.int64
+    # the shot's time, beam and camera are text (empty without a shot list), never NaN numbers
+    assert all(isinstance(v, str) for c in ("time", "beam", "camera") for v in cols[c])
+    assert cols["radius95_px"].dtype == np.float64 and np.all(cols["radius95_px"][cols["verdict"] == "good"] > 0)
     rec = rep.to_records()
     assert rec.shape == (12,) and set(rec["verdict"]) <= {"good", "doubtful", "rejected"}
 
