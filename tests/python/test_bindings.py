@@ -300,3 +300,23 @@ def test_radiometry_fit_is_the_cli_fit(tmp_path):
     fit.write_csv(str(tmp_path / "py.csv"))
     same_bytes(tmp_path / "cli.csv", tmp_path / "py.csv")
     assert abs(1 / fit.fit["k"] - 400) < 5
+
+
+def test_import_with_the_python3_on_path():
+    """`python3 -c "import laserwb"` as the README writes it: the python3 first on PATH may be
+    another build of this version (pyenv here) that does not see Debian's numpy; the package
+    then takes numpy from Debian's dist-packages. Skipped when PATH's python3 is another version
+    (it cannot load this build's extension at all)."""
+    import shutil
+    import sys
+
+    exe = shutil.which("python3")
+    if not exe:
+        pytest.skip("no python3 on PATH")
+    ver = subprocess.run([exe, "-c", "import sys; print(sys.version_info[:2])"], capture_output=True, text=True)
+    if ver.stdout.strip() != str(sys.version_info[:2]):
+        pytest.skip(f"{exe} is Python {ver.stdout.strip()}, this build's is {sys.version_info[:2]}")
+    code = "import laserwb, numpy; r = laserwb.footprint.fit(numpy.zeros((32, 32), numpy.float32)); print(r['verdict'])"
+    p = subprocess.run([exe, "-c", code], capture_output=True, text=True, env=dict(os.environ))
+    assert p.returncode == 0, p.stderr
+    assert p.stdout.strip() == "rejected"  # a flat ROI has no spot

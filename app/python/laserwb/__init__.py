@@ -30,10 +30,26 @@ try:
 except ImportError:
     pass
 
+# numpy: the module is built against the system's (Debian's python3-numpy). An interpreter of
+# the same version that does not see it (a pyenv or venv python3 first on PATH, as on this
+# project's machines) is given Debian's dist-packages as a last resort, so that
+# `python3 -c "import laserwb"` works there too; the C ABI of one minor version is shared.
+try:
+    import numpy as _np
+except ImportError:
+    import importlib.machinery as _machinery
+
+    _debian = "/usr/lib/python3/dist-packages"
+    _here = _os.path.dirname(__file__)
+    # only an interpreter that can load this build's extension (same version and ABI tag)
+    _loadable = any(_os.path.exists(_os.path.join(_here, "_laserwb" + sfx)) for sfx in _machinery.EXTENSION_SUFFIXES)
+    if _loadable and _os.path.isdir(_os.path.join(_debian, "numpy")) and _debian not in _sys.path:
+        _sys.path.append(_debian)
+    import numpy as _np  # noqa: F811 (an ImportError here says what is missing)
+
 from ._laserwb import Error, ParameterError, __version__, write_text  # noqa: E402
 from ._laserwb import calib, footprint, radiometry, slr, trend  # noqa: E402
 
-import numpy as _np  # noqa: E402
 
 for _name in ("footprint", "slr", "trend", "calib", "radiometry"):
     _sys.modules[__name__ + "." + _name] = globals()[_name]
