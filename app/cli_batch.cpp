@@ -170,6 +170,27 @@ bool stageProvenance(core::OutputSet& outs, const core::Provenance& p, const std
     return true;
 }
 
+std::string addProvenanceSidecar(core::OutputSet& outs) {
+    const std::vector<std::string> files = outs.fileOutputs();
+    if (files.empty()) return {};
+    const std::string sidecar = core::provenancePathFor(files.front());
+    outs.addOutput(sidecar);
+    return sidecar;
+}
+
+int stageRunProvenance(const std::string& command, core::OutputSet& outs, const std::string& sidecar, core::Json parameters) {
+    if (sidecar.empty()) return kOk;
+    core::Provenance p;
+    p.command = command;
+    p.parameters = std::move(parameters);
+    p.inputs = outs.inputs();
+    std::vector<std::string> outputs;
+    for (const std::string& o : outs.fileOutputs())
+        if (o != sidecar) outputs.push_back(o);
+    std::string err;
+    return stageProvenance(outs, p, outputs, sidecar, &err) ? kOk : fail(command, err);
+}
+
 bool outputsComplete(const core::Provenance& p, const std::vector<std::string>& outputs, const std::string& sidecar,
                      std::string* why) {
     std::string dummy;

@@ -76,6 +76,14 @@ private:
 bool stageProvenance(core::OutputSet& outs, const core::Provenance& p, const std::vector<std::string>& outputs,
                      const std::string& sidecar, std::string* error);
 
+/// The provenance of a single command's outputs (calib, radiometry): addProvenanceSidecar(),
+/// after the outputs are added and before checkOutputs, adds FIRST.provenance.json beside the
+/// first output written to a file and returns its path ("" when everything goes to standard
+/// output); stageRunProvenance(), before commitOutputs, stages it with the command, the
+/// parameters (the schema's JSON), the inputs and outputs the set lists and their SHA-256.
+std::string addProvenanceSidecar(core::OutputSet& outs);
+int stageRunProvenance(const std::string& command, core::OutputSet& outs, const std::string& sidecar, core::Json parameters);
+
 /// --skip-existing: true when `sidecar` exists, records the same command, parameters, settings
 /// and inputs as `p` (each input with the SHA-256 it has now), and lists exactly `outputs`
 /// (empty: whatever it lists, at least one), each with the SHA-256 its file has now. Every

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 
 #include "cli_commands.hpp"
+#include "cli_batch.hpp"
 #include "cli_common.hpp"
 #include "core/calib/calib_csv.hpp"
 #include "core/calib/calib_params.hpp"
@@ -184,6 +185,7 @@ int cmdCalibDetector(int argc, char** argv) {
     outs.addInput(a.positional()[0]);
     if (!out.empty()) outs.addOutput(out);
     if (a.has("--detectors")) outs.addOutput(a.value("--detectors"));
+    const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     CalibInputData in;
     const DetectorArray& arr = in.array;
@@ -195,6 +197,7 @@ int cmdCalibDetector(int argc, char** argv) {
     if (!out.empty() && !writeDetectorCentreCsv(outs.stagingPath(out), r, &err)) return fail(cmd, outs.unstaged(err));
     if (a.has("--detectors") && !writeDetectorReportCsv(outs.stagingPath(a.value("--detectors")), arr, r, &err))
         return fail(cmd, outs.unstaged(err));
+    if (int rc = stageRunProvenance(cmd, outs, sidecar, calibSchema().toJson(cp))) return rc;
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
         const auto& e = r.centreEllipse;
@@ -241,6 +244,7 @@ int cmdCalibWaveform(int argc, char** argv) {
     outs.addInput(a.value("--features"));
     if (!outPath(a).empty()) outs.addOutput(outPath(a));
     if (a.has("--model")) outs.addOutput(a.value("--model"));
+    const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     // The waveform (or the given height) and the candidates through the run layer.
     CalibInputData in;
@@ -267,6 +271,7 @@ int cmdCalibWaveform(int argc, char** argv) {
     if ((!outPath(a).empty() && !writeTextOutput(outs.stagingPath(outPath(a)), rankingCsv(cands, mr), &err)) ||
         (a.has("--model") && !writeTextOutput(outs.stagingPath(a.value("--model")), waveformModelCsv(w, wr), &err)))
         return fail(cmd, outs.unstaged(err));
+    if (int rc = stageRunProvenance(cmd, outs, sidecar, calibSchema().toJson(cp))) return rc;
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (a.has("--features")) {
         if (!mr.found) {
@@ -315,6 +320,7 @@ int cmdCalibPointing(int argc, char** argv) {
     outs.addOutput(out);
     for (const char* o : {"--params", "--residuals", "--iterations", "--beams-out"})
         if (a.has(o)) outs.addOutput(a.value(o));
+    const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     CalibInputData in;
     const std::vector<BeamDesign>& beams = in.beams;
@@ -334,6 +340,7 @@ int cmdCalibPointing(int argc, char** argv) {
         (a.has("--iterations") && !write(a.value("--iterations"), pointingIterationsCsv(r))) ||
         (a.has("--beams-out") && !write(a.value("--beams-out"), beamsToJson(calibratedBeams(beams, r)))))
         return fail(cmd, outs.unstaged(err));
+    if (int rc = stageRunProvenance(cmd, outs, sidecar, calibSchema().toJson(cp))) return rc;
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
         const double urad = 1e6;
@@ -365,6 +372,7 @@ int cmdCalibStats(int argc, char** argv) {
     core::OutputSet outs;
     outs.addInput(a.positional()[0]);
     if (!outPath(a).empty()) outs.addOutput(outPath(a));
+    const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     std::vector<DifferenceGroup> groups;
     std::string err;
@@ -384,6 +392,7 @@ int cmdCalibStats(int argc, char** argv) {
     }
     if (!outPath(a).empty() && !writeTextOutput(outs.stagingPath(outPath(a)), statsCsv(statsRows(run.stats)), &err))
         return fail(cmd, outs.unstaged(err));
+    if (int rc = stageRunProvenance(cmd, outs, sidecar, calibSchema().toJson(cp))) return rc;
     return commitOutputs(cmd, outs);
 }
 

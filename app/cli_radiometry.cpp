@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli_commands.hpp"
+#include "cli_batch.hpp"
 #include "cli_common.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
@@ -160,6 +161,7 @@ int cmdRadiometryMosaic(int argc, char** argv) {
     outs.addOutput(out);
     for (const char* o : {"--coverage", "--pairs"})
         if (a.has(o)) outs.addOutput(a.value(o));
+    const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     if (const std::string why = mosaicMemoryProblem(a.positional(), memoryBudgetBytes()); !why.empty()) return fail(cmd, why);
     std::vector<cv::Mat> frames;
@@ -178,6 +180,7 @@ int cmdRadiometryMosaic(int argc, char** argv) {
         (a.has("--coverage") && !writeImage(outs.stagingPath(a.value("--coverage")), r.coverage, &err)) ||
         (a.has("--pairs") && !writePairCsv(outs.stagingPath(a.value("--pairs")), r, &err)))
         return fail(cmd, outs.unstaged(err));
+    if (int rc = stageRunProvenance(cmd, outs, sidecar, radiometrySchema().toJson(rp))) return rc;
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
         std::cerr << "radiometry mosaic: " << frames.size() << " frames -> " << r.image.cols << "x" << r.image.rows << " "
@@ -219,6 +222,7 @@ int cmdRadiometryGcp(int argc, char** argv) {
     outs.addOutput(out);
     for (const char* o : {"--valid", "--residuals"})
         if (a.has(o)) outs.addOutput(a.value(o));
+    const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     std::vector<Gcp> gcps;
     if (!readGcpCsv(a.value("--gcps"), &gcps, &err)) return fail(cmd, err);
@@ -239,6 +243,7 @@ int cmdRadiometryGcp(int argc, char** argv) {
         (a.has("--valid") && !writeMapImage(outs.stagingPath(a.value("--valid")), w.valid, geo, plain, &err)) ||
         (a.has("--residuals") && !writeGcpResidualCsv(outs.stagingPath(a.value("--residuals")), gcps, fit, &err)))
         return fail(cmd, outs.unstaged(err));
+    if (int rc = stageRunProvenance(cmd, outs, sidecar, radiometrySchema().toJson(rp))) return rc;
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a))
         std::cerr << "radiometry gcp: " << gcps.size() << " GCPs, " << geoModelName(fit.model) << "; RMS "
@@ -285,6 +290,7 @@ int cmdRadiometryFit(int argc, char** argv) {
     outs.addInput(a.value("--image"));
     outs.addOutput(out);
     if (a.has("--regions")) outs.addOutput(a.value("--regions"));
+    const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     std::vector<Region> regions;
     if (!readRegionCsv(a.positional()[0], &regions, &err)) return fail(cmd, err);
@@ -299,6 +305,7 @@ int cmdRadiometryFit(int argc, char** argv) {
     if (!writeFitCsv(outs.stagingPath(out), r.fit, &err) ||
         (a.has("--regions") && !writeRegionFitCsv(outs.stagingPath(a.value("--regions")), regions, r, &err)))
         return fail(cmd, outs.unstaged(err));
+    if (int rc = stageRunProvenance(cmd, outs, sidecar, radiometrySchema().toJson(rp))) return rc;
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a)) {
         const auto& f = r.fit;
@@ -356,6 +363,7 @@ int cmdRadiometryApply(int argc, char** argv) {
     outs.addOutput(out);
     for (const char* o : {"--uncertainty", "--table"})
         if (a.has(o)) outs.addOutput(a.value(o));
+    const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     if (a.has("--fit") && !readFitCsv(a.value("--fit"), &fit, &err)) return fail(cmd, err);
     cv::Mat img;
@@ -381,6 +389,7 @@ int cmdRadiometryApply(int argc, char** argv) {
         (a.has("--uncertainty") && !writeFloat(outs.stagingPath(a.value("--uncertainty")), r.uncertainty)) ||
         (a.has("--table") && !writeRelativeErrorCsv(outs.stagingPath(a.value("--table")), check, &err)))
         return fail(cmd, outs.unstaged(err));
+    if (int rc = stageRunProvenance(cmd, outs, sidecar, radiometrySchema().toJson(rp))) return rc;
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a))
         std::cerr << "radiometry apply: " << img.cols << "x" << img.rows << " -> " << out
@@ -418,6 +427,7 @@ int cmdRadiometryCheck(int argc, char** argv) {
     outs.addInput(a.positional()[0]);
     outs.addInput(a.value("--image"));
     if (!outPath(a).empty()) outs.addOutput(outPath(a));
+    const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     std::vector<Region> regions;
     if (!readRegionCsv(a.positional()[0], &regions, &err)) return fail(cmd, err);
@@ -427,6 +437,7 @@ int cmdRadiometryCheck(int argc, char** argv) {
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
     if (!outPath(a).empty() && !writeRelativeErrorCsv(outs.stagingPath(outPath(a)), r, &err))
         return fail(cmd, outs.unstaged(err));
+    if (int rc = stageRunProvenance(cmd, outs, sidecar, radiometrySchema().toJson(rp))) return rc;
     if (int rc = commitOutputs(cmd, outs)) return rc;
     for (const auto& row : r.rows)
         std::cout << row.name << ": measured " << fx(row.measured, 5) << " %, simulated " << fx(row.simulated, 5)

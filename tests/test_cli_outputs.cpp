@@ -4,6 +4,10 @@
 // the others were already renamed — and nothing may be left: no new file, no replaced file, no
 // staging file. And an output that names an input through another spelling (./x, a symbolic
 // link, a hard link), a device or a FIFO is refused with the input unchanged.
+#include <QCryptographicHash>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QtTest>
 #include <opencv2/imgcodecs.hpp>
 #include <signal.h>
@@ -168,6 +172,33 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(name + ": " + r.err));
         for (const QString& o : c.outputs) QVERIFY2(QFile::exists(p(o)), qPrintable(name + ": " + o));
         noStagingFiles();
+        if (name.startsWith("calib") || name.startsWith("radiometry")) provenanceListsEveryOutput(name, c);
+    }
+
+    // Issue 31: the calibration and radiometry commands' outputs carry a provenance sidecar
+    // beside their first output: the command, the parameters, every input and output with the
+    // SHA-256 its file has (checked here with Qt's own SHA-256).
+    void provenanceListsEveryOutput(const QString& name, const Case& c) {
+        const QString side = p(c.outputs.first() + ".provenance.json");
+        QJsonParseError pe;
+        const QJsonObject o = QJsonDocument::fromJson(readAll(side), &pe).object();
+        QVERIFY2(pe.error == QJsonParseError::NoError && !o.isEmpty(), qPrintable(name + ": " + side));
+        QCOMPARE(o["command"].toString(), name);
+        QVERIFY2(o["parameters"].isObject() && !o["parameters"].toObject().isEmpty(), qPrintable(name));
+        QVERIFY2(!o["inputs"].toArray().isEmpty(), qPrintable(name));
+        QStringList listed;
+        for (const QJsonValue& v : o["outputs"].toArray()) {
+            const QJsonObject f = v.toObject();
+            const QString path = QFileInfo(side).dir().filePath(f["path"].toString());
+            const QByteArray sum = QCryptographicHash::hash(readAll(path), QCryptographicHash::Sha256).toHex();
+            QCOMPARE(f["sha256"].toString().toLatin1(), sum);
+            listed << QFileInfo(path).fileName();
+        }
+        QStringList want;
+        for (const QString& out : c.outputs) want << QFileInfo(out).fileName();
+        listed.sort();
+        want.sort();
+        QCOMPARE(listed, want);
     }
 
     // The last output fails while being written or while being renamed into place (after the

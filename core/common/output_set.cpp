@@ -170,6 +170,13 @@ void OutputSet::addInput(const std::string& path) {
     if (!path.empty()) m_inputs.push_back(path);
 }
 
+std::vector<std::string> OutputSet::fileOutputs() const {
+    std::vector<std::string> out;
+    for (const Item& it : m_items)
+        if (!it.toStdout) out.push_back(it.path);
+    return out;
+}
+
 void OutputSet::addOutput(const std::string& path) {
     m_items.push_back({path == "-", path, {}, {}});
     m_checked = false;

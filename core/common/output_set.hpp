@@ -26,6 +26,9 @@ public:
     void addOutput(const std::string& path);
     /// True when an output is standard output ("-").
     bool writesStandardOutput() const;
+    /// The inputs as added, and the outputs written to files (not "-"), as given.
+    const std::vector<std::string>& inputs() const { return m_inputs; }
+    std::vector<std::string> fileOutputs() const;
     /// A run that writes a set of files into one folder (simulate footprint, slr --all-passes):
     /// `manifest` (one of the outputs, e.g. truth.csv or summary.csv, that lists the set) is
     /// removed first and renamed into place last, so a run killed half-way leaves no manifest
