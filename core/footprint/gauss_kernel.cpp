@@ -18,7 +18,6 @@ void logOfRatio(const double* f, double S, double* out, int n) {
     for (int i = 0; i < n; ++i) out[i] = std::log(f[i] / S);
 }
 
-__attribute__((target_clones("avx2", "default")))
 // For each row pair (y, y + ly) and each pixel of row y, the 2·lxMax + 1 products with the
 // other row's pixels around it are one contiguous multiply-add into the lag accumulators (the
 // other row zero-padded by lxMax on both sides), which vectorises across the lags. In single
