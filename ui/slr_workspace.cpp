@@ -216,7 +216,9 @@ void SlrWorkspace::buildPlots() {
     // theme; Home and a double-click are the workspace's own fit of every plot.
     const std::pair<QCustomPlot*, const char*> kits[] = {{m_ocPlot, "slr-oc"}, {m_imagePlot, "slr-binary-image"},
                                                          {m_histPlot, "slr-residuals"}};
-    for (const auto& [plot, name] : kits) {
+    for (const auto& entry : kits) {
+        QCustomPlot* plot = entry.first;  // (a structured binding cannot be captured in C++17: clang refuses it)
+        const auto& name = entry.second;
         PlotKitOptions o;
         o.home = [this] { resetView(); };
         o.exportName = name;
