@@ -417,16 +417,36 @@ private slots:
         QVERIFY2(consistent(&why), qPrintable(why));
         QCOMPARE(QDir(dir).entryList({"shot_*.png"}, QDir::Files).size(), 6);
         for (const QString& f : filesIn(dir)) QVERIFY2(!f.startsWith(".lwb-"), qPrintable(f));
-        // Killed at random moments (real SIGKILL from outside, during writing or committing).
-        for (int k = 0; k < 6; ++k) {
+        // Killed at moments spread over a whole run (real SIGKILL from outside, during writing or
+        // committing). The moments are fractions of a timed full run, so that they fall inside the
+        // run on any CPU. Only a process still running is signalled: QProcess::processId() is 0 once
+        // the child has finished, and kill(0, SIGKILL) kills the caller's whole process group (ctest,
+        // make, CI's shell: how CI died with exit 137, on a CPU fast enough to finish early).
+        const QStringList args = {"simulate", "footprint", "--count", "400", "--seed", "3", "-q", dir};
+        QElapsedTimer full;
+        full.start();
+        QVERIFY(runCli(args).exitCode == 0);
+        const qint64 fullMs = std::max<qint64>(full.elapsed(), 20);
+        QVERIFY2(consistent(&why), qPrintable(why));
+        int killedMidway = 0;
+        for (int k = 1; k <= 6; ++k) {
             QProcess run;
-            run.start(QString(LWB_CLI), {"simulate", "footprint", "--count", QString::number(200 + 100 * k), "--seed", "3", "-q", dir});
+            run.start(QString(LWB_CLI), args);
             QVERIFY(run.waitForStarted());
-            QTest::qWait(80 + 90 * k);
-            ::kill(pid_t(run.processId()), SIGKILL);
+            const qint64 pid = run.processId();
+            QVERIFY(pid > 1);
+            QTest::qWait(int(fullMs * k / 7));
+            // No event processing between this check and kill(): Qt reaps the child only in its event
+            // loop, so while state() is Running the pid is still this child's (alive or a zombie).
+            if (run.state() == QProcess::Running) {
+                QCOMPARE(::kill(pid_t(pid), SIGKILL), 0);
+                ++killedMidway;
+            }
             run.waitForFinished();
-            QVERIFY2(consistent(&why), qPrintable(QString("killed after %1 ms: ").arg(80 + 90 * k) + why));
+            QVERIFY2(consistent(&why), qPrintable(QString("killed after %1 ms of a %2 ms run: ").arg(fullMs * k / 7).arg(fullMs) + why));
         }
+        // Most moments fall inside the run (a run slower than the timed one only helps).
+        QVERIFY2(killedMidway >= 3, qPrintable(QString("only %1 of 6 runs were still running when killed").arg(killedMidway)));
         QVERIFY(runCli({"simulate", "footprint", "--count", "5", "--seed", "4", "-q", dir}).exitCode == 0);
         QVERIFY2(consistent(&why), qPrintable(why));
         QCOMPARE(QDir(dir).entryList({"shot_*.png"}, QDir::Files).size(), 5);
