@@ -684,7 +684,9 @@ const char* kBenchUsage =
     "usage: laserwb-cli bench footprint [--count N] [--seconds S] [--seed S] [--rounds R]\n"
     "ROIs per second on one core for each method variant, on N simulated 32x32 ROIs (weak, moderate,\n"
     "strong and night in turn, photo ground, decoded in memory), plus the default pipeline with 16-bit\n"
-    "PNG decoding and the multi-threaded batch throughput, then the default pipeline's cost per stage.\n"
+    "PNG decoding, the default pipeline with the quick uncertainty instead of the ground covariance,\n"
+    "and the multi-threaded batch throughput, each with its ratio to gcm's ROIs per second; then\n"
+    "the default pipeline's cost per stage.\n"
     "Every figure is the best of R rounds (default 3): the machine may be shared. Prints Markdown tables.\n";
 }
 
@@ -735,20 +737,31 @@ int cmdBenchFootprint(int argc, char** argv) {
         }
         return std::make_pair(best, 1e6 / best);
     };
-    std::cout << "| pipeline | ROIs/s (1 core) | µs per ROI |\n|---|---|---|\n";
+    // The ratio to gcm (the plain centroid, with the same background, segmentation and verdict)
+    // is issue 32's speed figure: ROIs per second of the row over those of gcm, in this run.
+    std::cout << "| pipeline | ROIs/s (1 core) | µs per ROI | ratio to gcm |\n|---|---|---|---|\n";
     size_t sink = 0;
+    double gcmRate = 0;
+    auto row = [&](const std::string& name, double rate, double us) {
+        std::cout << "| " << name << " | " << core::formatFixed(rate, 0) << " | " << core::formatFixed(us, 1) << " | "
+                  << (gcmRate > 0 ? core::formatFixed(rate / gcmRate, 2) : std::string("-")) << " |\n";
+    };
     for (const auto& v : sim::standardVariants()) {
         const auto [rate, us] = run([&](size_t i) { sink += processRoi(rois[i], v.params).verdict == Verdict::Good; });
-        std::cout << "| " << v.name << (v.name == "gauss" ? " (default)" : "") << " | " << core::formatFixed(rate, 0)
-                  << " | " << core::formatFixed(us, 1) << " |\n";
+        if (v.name == "gcm") gcmRate = rate;
+        row(v.name + (v.name == "gauss" ? " (default)" : ""), rate, us);
     }
     const FootprintParams def;
+    FootprintParams quick = def;
+    quick.gauss.uncertaintyFromGround = false;
+    const auto [qrate, qus] = run([&](size_t i) { sink += processRoi(rois[i], quick).verdict == Verdict::Good; });
+    row("gauss, quick uncertainty (gauss.uncertainty_from_ground off)", qrate, qus);
     const auto [rate, us] = run([&](size_t i) {
         cv::Mat img = core::imageDecode(cv::Mat(pngs[i]), cv::IMREAD_UNCHANGED), f;
         img.convertTo(f, CV_32F);
         sink += processRoi(f, def).verdict == Verdict::Good;
     });
-    std::cout << "| gauss + 16-bit PNG decode | " << core::formatFixed(rate, 0) << " | " << core::formatFixed(us, 1) << " |\n";
+    row("gauss + 16-bit PNG decode", rate, us);
     // All cores: the same default pipeline over the ROIs on every hardware thread.
     const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
     std::atomic<size_t> total{0};
@@ -762,7 +775,7 @@ int cmdBenchFootprint(int argc, char** argv) {
         });
     const double el = std::chrono::duration<double>(clock::now() - t0).count();
     std::cout << "| gauss, " << hw << " threads | " << core::formatFixed(total / el, 0) << " (all cores) | "
-              << core::formatFixed(1e6 * el * hw / total, 1) << " per thread |\n";
+              << core::formatFixed(1e6 * el * hw / total, 1) << " per thread | |\n";
     // The default pipeline stage by stage: each stage alone over the ROIs, on the inputs the
     // earlier stages produced (computed once beforehand).
     std::vector<BackgroundResult> bgs;

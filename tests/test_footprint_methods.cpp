@@ -289,6 +289,47 @@ private slots:
         }
     }
 
+    /// The lag sums of the ground covariance (kernel::lagSums: accumulators in registers, 8 lanes
+    /// × 1..8 vectors picked by the lag count) equal one scalar float accumulator per lag summed in
+    /// the same order (bit for bit: the estimator did not change when the kernel did) and the sums
+    /// in long double to 1e-5 of the sum of magnitudes; cross sums (u ≠ w) as well as auto.
+    void lagSumsMatchDirectSums() {
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<float> val(-40, 40);
+        const int shapes[][4] = {{5, 4, 1, 1}, {13, 13, 6, 6}, {32, 32, 11, 11}, {23, 17, 11, 8}, {40, 9, 19, 4},
+                                 {64, 64, 31, 31}, {9, 30, 4, 14}, {20, 20, 3, 9}};
+        for (const auto& sh : shapes) {
+            const int W = sh[0], H = sh[1], lxMax = sh[2], lyMax = sh[3], stride = 2 * lxMax + 1;
+            std::vector<float> u(size_t(W * H)), w(size_t(W * H));
+            for (float& x : u) x = val(rng);
+            for (float& x : w) x = val(rng);
+            for (const bool cross : {false, true}) {
+                const std::vector<float>& v = cross ? w : u;
+                std::vector<float> out(size_t(stride * (lyMax + 1)), NAN);
+                kernel::lagSums(u.data(), v.data(), W, H, lxMax, lyMax, out.data());
+                for (int ly = 0; ly <= lyMax; ++ly)
+                    for (int lx = -lxMax; lx <= lxMax; ++lx) {
+                        float f = 0;
+                        long double ld = 0, mag = 0;
+                        for (int y = 0; y + ly < H; ++y)
+                            for (int x = 0; x < W; ++x) {
+                                if (x + lx < 0 || x + lx >= W) continue;
+                                const float a = u[size_t(y * W + x)], b = v[size_t((y + ly) * W + x + lx)];
+                                f += a * b;
+                                ld += (long double)a * b;
+                                mag += std::fabs((long double)a * b);
+                            }
+                        const float got = out[size_t(ly * stride + lx + lxMax)];
+                        if (!(got == f) || std::fabs((long double)got - ld) > 1e-5L * mag + 1e-30L)
+                            QFAIL(qPrintable(QString("%1x%2 lags ±%3/%4 (%5), lag (%6, %7): %8, not %9 (long double %10)")
+                                                 .arg(W).arg(H).arg(lxMax).arg(lyMax).arg(cross ? "cross" : "auto")
+                                                 .arg(lx).arg(ly).arg(double(got), 0, 'g', 9).arg(double(f), 0, 'g', 9)
+                                                 .arg(double(ld), 0, 'g', 9)));
+                    }
+            }
+        }
+    }
+
     /// The difference fit's Gram kernel (register-blocked, vectorised) equals the sums taken one
     /// by one, for horizontal and vertical differences and for windows longer than its block.
     void differenceGramMatchesDirectSums() {

@@ -527,24 +527,25 @@ CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw,
     const double A = p(0), x0 = p(1), y0 = p(2), a = p(3), b = p(4), c = p(5), bx = p(7), by = p(8);
     const double gain = camera.gainEPerDn, rn = camera.readNoiseE / camera.gainEPerDn, rn2 = rn * rn;
     thread_local std::vector<double> buf;
-    buf.assign(size_t(n) * 8, 0.0);
+    buf.resize(size_t(n) * 8);
     double *q = buf.data(), *e = q + n, *gx = e + n, *gy = gx + n, *res = gy + n, *v = res + n, *sx = v + n, *sy = sx + n;
     for (int i = 0; i < n; ++i) {
         const double dx = win[size_t(i)].dx - x0, dy = win[size_t(i)].dy - y0;
         q[i] = a * dx * dx + 2 * b * dx * dy + c * dy * dy;
     }
     kernel::halfNegExp(q, e, n);
+    // The gradients of x0 and y0 at each pixel: J (the model's Jacobian row) times those columns,
+    // the terms in J's order (the plane's three columns 1, dx, dy last).
+    double h[2][kP];
+    for (int k = 0; k < kP; ++k) h[0][k] = hc(k, 0), h[1][k] = hc(k, 1);
     for (int i = 0; i < n; ++i) {
         const double dx = win[size_t(i)].dx - x0, dy = win[size_t(i)].dy - y0, g = A * e[i];
-        const double J[kP] = {e[i], g * (a * dx + b * dy) - bx, g * (b * dx + c * dy) - by, -0.5 * g * dx * dx,
-                              -g * dx * dy, -0.5 * g * dy * dy, 1.0, dx, dy};
-        double ux = 0, uy = 0;
-        for (int k = 0; k < kP; ++k) {
-            ux += J[k] * hc(k, 0);
-            uy += J[k] * hc(k, 1);
-        }
-        gx[i] = ux;
-        gy[i] = uy;
+        const double j1 = g * (a * dx + b * dy) - bx, j2 = g * (b * dx + c * dy) - by, j3 = -0.5 * g * dx * dx,
+                     j4 = -g * dx * dy, j5 = -0.5 * g * dy * dy;
+        gx[i] = e[i] * h[0][0] + j1 * h[0][1] + j2 * h[0][2] + j3 * h[0][3] + j4 * h[0][4] + j5 * h[0][5] + h[0][6] +
+                dx * h[0][7] + dy * h[0][8];
+        gy[i] = e[i] * h[1][0] + j1 * h[1][1] + j2 * h[1][2] + j3 * h[1][3] + j4 * h[1][4] + j5 * h[1][5] + h[1][6] +
+                dx * h[1][7] + dy * h[1][8];
         const double model = g + p(6) + bx * dx + by * dy;
         res[i] = win[size_t(i)].value - model;
         v[i] = std::max(model, 0.0) / gain + rn2;
@@ -557,6 +558,7 @@ CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw,
             sy[i] = w * gy[i];
         }
     } else {
+        std::fill(sx, sx + 2 * n, 0.0);  // sx and sy: sums over the differences each pixel is in
         for (int pass = 0; pass < 2; ++pass) {
             const int step = pass == 0 ? 1 : cols;
             const std::vector<double>& w0 = fw.w0[pass];
@@ -596,12 +598,15 @@ CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw,
     kernel::halfNegExp(rq.data(), re.data(), N);
     double* rho = rq.data();  // reused: the residual field
     double mean = 0, vbar = 0;
-    for (int i = 0; i < N; ++i) {
-        const double dx = i % W - ox, dy = i / W - oy;
-        const double model = A * re[size_t(i)] + p(6) + bx * dx + by * dy;
-        rho[i] = img[i] - model;
-        mean += rho[i];
-        vbar += std::max(model, 0.0) / gain + rn2;
+    for (int y = 0; y < H; ++y) {
+        const double dy = y - oy;
+        for (int x = 0; x < W; ++x) {
+            const int i = y * W + x;
+            const double model = A * re[size_t(i)] + p(6) + bx * (x - ox) + by * dy;
+            rho[i] = img[i] - model;
+            mean += rho[i];
+            vbar += std::max(model, 0.0) / gain + rn2;
+        }
     }
     mean /= N;
     vbar /= N;
