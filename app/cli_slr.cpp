@@ -274,7 +274,7 @@ public:
 private:
     static constexpr const char* kHeader =
         "pass,station,satellite,ilrs_id,start_utc,duration_s,points,accepted,rms_ps,rms_mm,normal_points,"
-        "station_precision,station_recall,oc_origin,status,reason,seconds,output,range_bias_mm,range_bias_sigma_mm,"
+        "station_precision,station_recall,oc_origin,status,reason,output,range_bias_mm,range_bias_sigma_mm,"
         "time_bias_us,time_bias_sigma_us\n";
 
     // The outputs' names, from the file's count of passes, so that every one is checked before any work.
@@ -324,10 +324,10 @@ private:
     }
 
     void row(const slr::PassSummary& s, size_t i, const std::string& status, const std::string& reason) {
-        // duration empty, the records, accepted .. oc_origin empty, then status and reason.
+        // duration empty, the records, accepted .. oc_origin empty, status and reason, the rest empty.
         m_rows[i] = std::to_string(i + 1) + "," + core::csvEscape(s.station) + "," + core::csvEscape(s.satellite) + "," +
                      core::csvEscape(s.ilrsId) + "," + s.start + ",," + std::to_string(s.ranges ? s.ranges : s.normalPoints) +
-                     ",,,,,,,," + status + "," + core::csvEscape(reason) + ",,,,,,\n";
+                     ",,,,,,,," + status + "," + core::csvEscape(reason) + ",,,,,\n";
     }
 
     bool onPass(slr::CrdPass&& crdPass) {
@@ -462,7 +462,7 @@ private:
                      (std::isfinite(rms) ? core::formatFixed(rms * 0.5 * 299792458.0 * 1e3, 2) : "") + "," +
                      (r.postOk && !doubtful ? std::to_string(r.post.normalPoints.size()) : "0") + "," +
                      f4(r.agreement.precision) + "," + f4(r.agreement.recall) + "," + core::csvEscape(pass.ocOrigin) + "," +
-                     st.status + "," + core::csvEscape(st.reason) + "," + core::formatFixed(r.seconds, 3) + "," + m_names[i] +
+                     st.status + "," + core::csvEscape(st.reason) + "," + m_names[i] +
                      ".csv," + biasCells(r.bias) + "\n";
     }
 
