@@ -33,19 +33,6 @@ bool maxPixels(const Args& a, long long* out, std::string* err) {
     return a.getInt("--max-pixels", 1, 1LL << 40, out, err);
 }
 
-bool isTiff(const std::string& path) {
-    const size_t dot = path.find_last_of('.');
-    const std::string ext = dot == std::string::npos ? std::string() : core::toLower(path.substr(dot + 1));
-    return ext == "tif" || ext == "tiff";
-}
-// An image output: a GeoTIFF (through GDAL) when it has a georeference, is a .tif and plain
-// TIFF was not asked for; else the plain writer (PNG, TIFF, PGM by extension).
-bool writeMapImage(const std::string& path, const cv::Mat& image, const GeoReference& geo, bool plain, std::string* err,
-                   bool floatNoData = false) {
-    if (geo.valid && !plain && isTiff(path)) return writeGeoTiff(path, image, geo, err, floatNoData, NAN);
-    return writeImage(path, image, err);
-}
-
 const char* kMosaicUsage =
     "usage: laserwb-cli radiometry mosaic FRAME... -o ROW.tif [options]\n"
     "Stitches the frames of one row, given in scan order (paper 003 3.1): keypoints matched between\n"
@@ -249,7 +236,7 @@ int cmdRadiometryGcp(int argc, char** argv) {
         std::cerr << "radiometry gcp: " << gcps.size() << " GCPs, " << geoModelName(fit.model) << "; RMS "
                   << fx(fit.rmsMap, 4) << " m = " << fx(fit.rmsPx, 3) << " px; map grid " << grid.width << "x" << grid.height
                   << " at " << core::formatDouble(grid.pixelSize, 4) << " m, top-left centre (" << fx(grid.originX, 4)
-                  << ", " << fx(grid.originY, 4) << ")" << (geo.valid && !plain && isTiff(out) ? ", GeoTIFF" : "") << "\n";
+                  << ", " << fx(grid.originY, 4) << ")" << (geo.valid && !plain && isTiffPath(out) ? ", GeoTIFF" : "") << "\n";
     if (!fit.outliers.empty()) {
         std::cerr << "laserwb-cli " << cmd << ": doubtful: " << fit.outliers.size()
                   << " GCP(s) do not agree with the others (outlier column of --residuals); exit 3\n";
@@ -381,10 +368,7 @@ int cmdRadiometryApply(int argc, char** argv) {
         check = relativeErrors(regions, &r.reflectance, limit);
         if (!check.ok) return fail(cmd, a.value("--check") + ": " + check.error);
     }
-    auto writeFloat = [&](const std::string& path, const cv::Mat& m) {
-        if (geo.valid && !plain && isTiff(path)) return writeGeoTiff(path, m, geo, &err, true, NAN);
-        return writeFloatTiff(path, m, &err);
-    };
+    auto writeFloat = [&](const std::string& path, const cv::Mat& m) { return writeFloatMapImage(path, m, geo, plain, &err); };
     if (!writeFloat(outs.stagingPath(out), r.reflectance) ||
         (a.has("--uncertainty") && !writeFloat(outs.stagingPath(a.value("--uncertainty")), r.uncertainty)) ||
         (a.has("--table") && !writeRelativeErrorCsv(outs.stagingPath(a.value("--table")), check, &err)))

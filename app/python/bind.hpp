@@ -8,6 +8,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -76,6 +77,15 @@ py::array_t<T> viewOf(const std::vector<T>& v, py::handle owner) {
 
 /// A float32 numpy array that owns `image` (CV_32FC1; no copy of its pixels).
 py::array_t<float> ownedArray(cv::Mat image);
+
+/// A numpy array that owns `image` (single channel, 8U, 16U, 32F or 64F; no copy of its pixels).
+py::array ownedImage(cv::Mat image);
+
+/// An image argument: a path (read by `read`, as the CLI reads it, refused above maxPixels) or a
+/// 2-D numpy array of uint8, uint16, float32 or float64 pixels, viewed without a copy (the array
+/// is appended to *keep, which the caller holds while the Mat is used). Errors raise, naming `what`.
+cv::Mat imageArgument(const py::object& image, const std::string& what, long long maxPixels, py::list* keep,
+                      const std::function<bool(const std::string&, cv::Mat*, std::string*, long long)>& read);
 
 /// The rows of a CSV text (header first) as {column: numpy array}: numbers as float64 (empty
 /// cells NaN), columns in `textColumns` as arrays of str, `intColumns` as int64.

@@ -1,7 +1,9 @@
 // laserwb.trend, laserwb.calib, laserwb.radiometry: the centroid trend (computeTrend,
-// writeTrendCsv), the calibration task (CalibTask: detector fit, statistics) with its writers, and
-// the radiometric fit's steps (measureRegionDn, fitReflectance, writeFitCsv), as the CLI's
-// `trend`, `calib detector|stats` and `radiometry fit` commands run them.
+// writeTrendCsv), the calibration task (CalibTask: detector fit, waveform and feature match,
+// pointing, statistics) with its writers, and the radiometric steps (mosaicRow, the GCP map,
+// measureRegionDn + fitReflectance, applyReflectance, relativeErrors) with theirs, as the CLI's
+// `trend`, `calib detector|waveform|pointing|stats` and `radiometry mosaic|gcp|fit|apply|check`
+// commands run them.
 #include "bind.hpp"
 #include "core/calib/calib_csv.hpp"
 #include "core/calib/calib_params.hpp"
@@ -9,7 +11,11 @@
 #include "core/calib/detector_array.hpp"
 #include "core/calib/pointing.hpp"
 #include "core/calib/validation_stats.hpp"
+#include "core/calib/waveform.hpp"
 #include "core/footprint/trend.hpp"
+#include "core/radiometry/gcp.hpp"
+#include "core/radiometry/geotiff.hpp"
+#include "core/radiometry/mosaic.hpp"
 #include "core/radiometry/radiometry_params.hpp"
 #include "core/radiometry/reflectance.hpp"
 
@@ -69,6 +75,40 @@ struct RadiometryFit {
     std::vector<rad::Region> regions;
     rad::ReflectanceFitResult r;
 };
+struct WaveformFit {
+    cal::CalibInputData in;
+    cal::CalibRunResult run;
+};
+struct Mosaic {
+    rad::MosaicResult r;
+};
+struct GcpMap {
+    std::vector<rad::Gcp> gcps;
+    rad::GcpFitResult fit;
+    rad::MapGrid grid;
+    rad::WarpResult warp;
+    rad::GeoReference geo;
+};
+struct Applied {
+    rad::ApplyResult r;
+    rad::GeoReference geo;
+};
+struct CheckTable {
+    rad::RelativeErrorResult r;
+};
+
+// The image readers of the radiometry commands (any depth kept), for imageArgument.
+bool readAnyDepth(const std::string& path, cv::Mat* m, std::string* err, long long maxPixels) {
+    return rad::readImageAnyDepth(path, m, err, maxPixels > 0 ? maxPixels : core::kMaxImagePixels);
+}
+
+py::dict relativeErrorDict(const rad::RelativeErrorResult& r) {
+    py::list rows;
+    for (const auto& row : r.rows)
+        rows.append(py::dict("name"_a = row.name, "measured_pct"_a = row.measured, "image_pct"_a = row.simulated,
+                             "relative_error_pct"_a = row.relativeErrorPct, "within_limit"_a = row.withinLimit));
+    return py::dict("rows"_a = rows, "max_pct"_a = r.maxPct, "mean_pct"_a = r.meanPct, "all_within_limit"_a = r.allWithinLimit);
+}
 
 // A numpy image as the single-channel float32 Mat the radiometry steps read (viewed when float32
 // and C-contiguous).
@@ -131,7 +171,7 @@ void bindTrendCalibRadiometry(py::module_& top) {
        "Reads a centroid table (time,beam,x,y[,camera]) and computes the monthly trend, as laserwb-cli trend.");
 
     // ---- calibration -------------------------------------------------------------------------
-    py::module_ c = top.def_submodule("calib", "Laser altimeter calibration (paper 002): detector arrays, statistics.");
+    py::module_ c = top.def_submodule("calib", "Laser altimeter calibration (paper 002): detector arrays, waveforms, pointing, statistics.");
     bindParams(c, kCalib);
     py::class_<Detector>(c, "DetectorFit", "The footprint centre from a ground detector array (CalibTask's detector step).")
         .def_property_readonly("centre", [](const Detector& d) {
@@ -248,8 +288,69 @@ void bindTrendCalibRadiometry(py::module_& top) {
     }, py::arg("path"), py::arg("group") = "", py::arg("params") = py::none(),
        "Statistics of a CSV of elevation differences (per `group` column value), as laserwb-cli calib stats.");
 
+    py::class_<WaveformFit>(c, "WaveformFit", "The feature height from a double-peak waveform and the feature it matches (CalibTask).")
+        .def_property_readonly("waveform", [](const WaveformFit& x) -> py::object {
+            if (!x.run.hasWaveform) return py::none();
+            const auto& w = x.run.waveform;
+            return py::dict("first_ns"_a = w.first.centreNs, "second_ns"_a = w.second.centreNs, "delta_t_ns"_a = w.deltaTNs,
+                            "delta_t_sd_ns"_a = w.deltaTSdNs, "height_m"_a = w.heightM, "height_sd_m"_a = w.heightSdM,
+                            "rms_residual"_a = w.rmsResidual, "iterations"_a = w.iterations);
+        }, "The two returns and the height (None when a height was given).")
+        .def_property_readonly("match", [](const WaveformFit& x) -> py::object {
+            if (!x.run.hasMatch) return py::none();
+            const auto& m = x.run.match;
+            return py::dict("found"_a = m.found, "best"_a = x.in.features[m.best].id, "best_delta_h_m"_a = m.bestDeltaHM);
+        }, "The candidate with the smallest height difference, and whether it is within thred_h (None without features).")
+        .def_property_readonly("warnings", [](const WaveformFit& x) {
+            std::vector<std::string> w = x.run.waveform.warnings;
+            w.insert(w.end(), x.run.match.warnings.begin(), x.run.match.warnings.end());
+            return w;
+        })
+        .def("write_ranking",
+             writer<WaveformFit>([](const std::string& p, const WaveformFit& x, std::string* e) {
+                 if (!x.run.hasMatch) {
+                     *e = "no candidate features were given: no ranking";
+                     return false;
+                 }
+                 return cal::writeTextOutput(p, cal::rankingCsv(x.in.features, x.run.match), e);
+             }),
+             py::arg("path"), "As laserwb-cli calib waveform -o.")
+        .def("write_model",
+             writer<WaveformFit>([](const std::string& p, const WaveformFit& x, std::string* e) {
+                 if (!x.run.hasWaveform) {
+                     *e = "a height was given, not a waveform: no model";
+                     return false;
+                 }
+                 return cal::writeTextOutput(p, cal::waveformModelCsv(x.in.waveform, x.run.waveform), e);
+             }),
+             py::arg("path"), "As --model.");
+    c.def("waveform", [](const py::object& path, const py::object& features, const py::object& height, const py::object& params) {
+        const cal::CalibParams p = paramsFrom(params, kCalib);
+        if (path.is_none() == height.is_none()) throw py::value_error("give a waveform file or height= (not both)");
+        if (!height.is_none() && features.is_none()) throw py::value_error("height= needs features= to match against");
+        const std::string file = path.is_none() ? std::string() : fsPath(path);
+        const std::string featureFile = features.is_none() ? std::string() : fsPath(features);
+        WaveformFit x;
+        x.in.givenHeightM = height.is_none() ? NAN : height.cast<double>();
+        {
+            py::gil_scoped_release nogil;
+            std::string err;
+            if (!file.empty()) check(cal::readWaveformCsv(file, p.waveform.sampleIntervalNs, &x.in.waveform, &err), err);
+            if (!featureFile.empty()) check(cal::readFeatureCsv(featureFile, &x.in.features, &err), err);
+            x.run = core::runTask<cal::CalibTask>(x.in, p);
+        }
+        if (x.run.hasWaveform) check(x.run.waveform.ok, file + ": " + x.run.waveform.error);
+        if (!featureFile.empty()) {
+            check(x.run.hasMatch, featureFile + ": no candidate features");
+            check(x.run.match.ok, x.run.match.error);
+        }
+        return x;
+    }, py::arg("path") = py::none(), py::arg("features") = py::none(), py::arg("height") = py::none(), py::arg("params") = py::none(),
+       "The feature height from a waveform CSV (or a given height=) and its match among the candidate\n"
+       "features (CSV), as laserwb-cli calib waveform. match['found'] False is the CLI's exit 3.");
+
     // ---- radiometry --------------------------------------------------------------------------
-    py::module_ r = top.def_submodule("radiometry", "Radiometric calibration (paper 003): DN to reflectance.");
+    py::module_ r = top.def_submodule("radiometry", "Radiometric calibration (paper 003): mosaic, GCP map, DN to reflectance, check.");
     bindParams(r, kRadiometry);
     py::class_<RadiometryFit>(r, "ReflectanceFit", "V_REF = K V_DN + B over the fit regions (fitReflectance).")
         .def_property_readonly("fit", [](const RadiometryFit& f) {
@@ -300,7 +401,8 @@ void bindTrendCalibRadiometry(py::module_& top) {
         }
         {
             py::gil_scoped_release nogil;
-            if (!img.empty()) check(rad::measureRegionDn(img, p.fit, &f.regions, &err), file + ": " + err);
+            // (the message after the call: the arguments of check() are evaluated in no set order)
+            if (!img.empty() && !rad::measureRegionDn(img, p.fit, &f.regions, &err)) check(false, file + ": " + err);
             f.r = rad::fitReflectance(f.regions, p.fit);
         }
         check(f.r.ok, file + ": " + f.r.error);
@@ -308,6 +410,185 @@ void bindTrendCalibRadiometry(py::module_& top) {
     }, py::arg("regions"), py::arg("image") = py::none(), py::arg("params") = py::none(),
        "Fits DN to reflectance from a region CSV, measuring the regions' DN on `image` (a path, or a\n"
        "2-D array) when given, as laserwb-cli radiometry fit.");
+
+    py::class_<Mosaic>(r, "Mosaic", "One row of frames stitched (mosaicRow).")
+        .def_property_readonly("image", [](const Mosaic& m) { return ownedImage(m.r.image.clone()); }, "The row (the frames' depth).")
+        .def_property_readonly("coverage", [](const Mosaic& m) { return ownedImage(m.r.coverage.clone()); }, "255 where a frame contributed.")
+        .def_property_readonly("pairs", [](const Mosaic& m) {
+            py::list out;
+            for (const auto& pr : m.r.pairs)
+                out.append(py::dict("from"_a = pr.from + 1, "to"_a = pr.to + 1, "matches"_a = pr.matches, "inliers"_a = pr.inliers,
+                                    "rms_px"_a = pr.rmsPx, "shift_x"_a = pr.shiftX, "shift_y"_a = pr.shiftY,
+                                    "rotation_deg"_a = pr.rotationDeg, "scale"_a = pr.scale));
+            return out;
+        }, "Each neighbour pair's registration (frames numbered from 1).")
+        .def_property_readonly("warnings", [](const Mosaic& m) { return m.r.warnings; })
+        .def("write", writer<Mosaic>([](const std::string& p, const Mosaic& m, std::string* e) { return rad::writeImage(p, m.r.image, e); }),
+             py::arg("path"), "As laserwb-cli radiometry mosaic -o.")
+        .def("write_coverage",
+             writer<Mosaic>([](const std::string& p, const Mosaic& m, std::string* e) { return rad::writeImage(p, m.r.coverage, e); }),
+             py::arg("path"), "As --coverage.")
+        .def("write_pairs", writer<Mosaic>([](const std::string& p, const Mosaic& m, std::string* e) { return rad::writePairCsv(p, m.r, e); }),
+             py::arg("path"), "As --pairs.");
+    r.def("mosaic", [](const py::list& frames, const py::object& params, long long maxPixels) {
+        const rad::RadiometryParams p = paramsFrom(params, kRadiometry);
+        py::list keep;
+        std::vector<cv::Mat> mats;
+        for (size_t i = 0; i < frames.size(); ++i)
+            mats.push_back(imageArgument(frames[i], "frame " + std::to_string(i + 1), maxPixels, &keep, readAnyDepth));
+        Mosaic m;
+        {
+            py::gil_scoped_release nogil;
+            m.r = rad::mosaicRow(mats, p.mosaic);
+        }
+        check(m.r.ok, m.r.error);
+        return m;
+    }, py::arg("frames"), py::arg("params") = py::none(), py::arg("max_pixels") = 0,
+       "Stitches the frames of one row (paths or 2-D arrays, in scan order), as laserwb-cli radiometry mosaic.");
+
+    py::class_<GcpMap>(r, "GcpMap", "An image resampled onto the map grid its control points give (fitGcpTransform, warpToMap).")
+        .def_property_readonly("image", [](const GcpMap& g) { return ownedImage(g.warp.image.clone()); })
+        .def_property_readonly("valid", [](const GcpMap& g) { return ownedImage(g.warp.valid.clone()); }, "255 where the map pixel came from inside the image.")
+        .def_property_readonly("fit", [](const GcpMap& g) {
+            return py::dict("model"_a = std::string(rad::geoModelName(g.fit.model)), "rms_map_m"_a = g.fit.rmsMap,
+                            "rms_px"_a = g.fit.rmsPx, "metres_per_pixel"_a = g.fit.metresPerPixel,
+                            "outliers"_a = [&] {
+                                std::vector<std::string> ids;
+                                for (size_t k : g.fit.outliers) ids.push_back(g.gcps[k].id);
+                                return ids;
+                            }(),
+                            "grid"_a = py::dict("width"_a = g.grid.width, "height"_a = g.grid.height, "pixel_size_m"_a = g.grid.pixelSize,
+                                                "origin_x"_a = g.grid.originX, "origin_y"_a = g.grid.originY));
+        }, "The transform's fit; outliers (GCP ids) make the map doubtful (the CLI's exit 3).")
+        .def_property_readonly("warnings", [](const GcpMap& g) { return g.fit.warnings; })
+        .def("write",
+             [](const GcpMap& g, const py::object& path, bool plain) {
+                 const std::string p = fsPath(path);
+                 std::string err;
+                 py::gil_scoped_release nogil;
+                 check(rad::writeMapImage(p, g.warp.image, g.geo, plain, &err, g.warp.image.depth() == CV_32F), err);
+             },
+             py::arg("path"), py::arg("plain_tiff") = false, "As laserwb-cli radiometry gcp -o (a GeoTIFF for .tif unless plain_tiff).")
+        .def("write_valid",
+             [](const GcpMap& g, const py::object& path, bool plain) {
+                 const std::string p = fsPath(path);
+                 std::string err;
+                 py::gil_scoped_release nogil;
+                 check(rad::writeMapImage(p, g.warp.valid, g.geo, plain, &err), err);
+             },
+             py::arg("path"), py::arg("plain_tiff") = false, "As --valid.")
+        .def("write_residuals",
+             writer<GcpMap>([](const std::string& p, const GcpMap& g, std::string* e) { return rad::writeGcpResidualCsv(p, g.gcps, g.fit, e); }),
+             py::arg("path"), "As --residuals.");
+    r.def("gcp", [](const py::object& image, const py::object& gcps, const py::object& params, const py::object& crs, long long maxPixels) {
+        const rad::RadiometryParams p = paramsFrom(params, kRadiometry);
+        GcpMap g;
+        std::string err, crsWkt;
+        const std::string gcpFile = fsPath(gcps);
+        if (!crs.is_none() && !rad::crsFromUserInput(py::str(crs), &crsWkt, &err)) check(false, "crs: " + err);
+        check(rad::readGcpCsv(gcpFile, &g.gcps, &err), err);
+        py::list keep;
+        const cv::Mat img = imageArgument(image, "image", maxPixels, &keep, readAnyDepth);
+        {
+            py::gil_scoped_release nogil;
+            g.fit = rad::fitGcpTransform(g.gcps, p.gcp);
+            if (g.fit.ok) {
+                g.grid = rad::gridCovering(g.fit, img.size(), p.mapPixelSizeM > 0 ? p.mapPixelSizeM : g.fit.metresPerPixel);
+                g.warp = rad::warpToMap(img, g.fit, g.grid);
+                g.geo = rad::geoReferenceOf(g.grid, crsWkt);
+            }
+        }
+        check(g.fit.ok, gcpFile + ": " + g.fit.error);
+        check(g.warp.ok, g.warp.error);
+        return g;
+    }, py::arg("image"), py::arg("gcps"), py::arg("params") = py::none(), py::arg("crs") = py::none(), py::arg("max_pixels") = 0,
+       "Fits the image-to-map transform of a GCP CSV and resamples the image (a path or 2-D array) onto\n"
+       "the map grid, as laserwb-cli radiometry gcp; crs: 'EPSG:32650', a PROJ string or WKT.");
+
+    py::class_<Applied>(r, "Reflectance", "A DN image converted to reflectance (applyReflectance).")
+        .def_property_readonly("reflectance", [](const Applied& a) { return ownedImage(a.r.reflectance.clone()); }, "%, float32.")
+        .def_property_readonly("uncertainty", [](const Applied& a) -> py::object {
+            return a.r.uncertainty.empty() ? py::object(py::none()) : py::object(ownedImage(a.r.uncertainty.clone()));
+        }, "% (float32), when a fit file with K's and B's errors was given.")
+        .def_property_readonly("out_of_range", [](const Applied& a) {
+            return py::dict("below"_a = a.r.belowRange, "above"_a = a.r.aboveRange);
+        })
+        .def_property_readonly("warnings", [](const Applied& a) { return a.r.warnings; })
+        .def("write",
+             [](const Applied& a, const py::object& path, bool plain) {
+                 const std::string p = fsPath(path);
+                 std::string err;
+                 py::gil_scoped_release nogil;
+                 check(rad::writeFloatMapImage(p, a.r.reflectance, a.geo, plain, &err), err);
+             },
+             py::arg("path"), py::arg("plain_tiff") = false,
+             "As laserwb-cli radiometry apply -o (georeferenced as the input when it was a GeoTIFF path).")
+        .def("write_uncertainty",
+             [](const Applied& a, const py::object& path, bool plain) {
+                 const std::string p = fsPath(path);
+                 std::string err;
+                 py::gil_scoped_release nogil;
+                 check(!a.r.uncertainty.empty(), "no uncertainty image: give fit= (a fit file with the errors of K and B)");
+                 check(rad::writeFloatMapImage(p, a.r.uncertainty, a.geo, plain, &err), err);
+             },
+             py::arg("path"), py::arg("plain_tiff") = false, "As --uncertainty.");
+    r.def("apply", [](const py::object& image, const py::object& fit, const py::object& k, const py::object& b,
+                      const py::object& params, long long maxPixels) {
+        rad::RadiometryParams p = paramsFrom(params, kRadiometry);
+        if (fit.is_none() == (k.is_none() && b.is_none()) || k.is_none() != b.is_none())
+            throw py::value_error("give fit= (a fit CSV), or k= and b=");
+        rad::ReflectanceFit f;
+        std::string err;
+        p.uncertaintyImage = !fit.is_none();  // (the errors of K and B come with a fit file)
+        if (!fit.is_none()) {
+            check(rad::readFitCsv(fsPath(fit), &f, &err), err);
+        } else {
+            f.k = k.cast<double>();
+            f.b = b.cast<double>();
+        }
+        Applied a;
+        py::list keep;
+        const cv::Mat img = imageArgument(image, "image", maxPixels, &keep, readAnyDepth);
+        if (!py::isinstance<py::array>(image)) {
+            std::string gerr;
+            if (!rad::readGeoReference(fsPath(image), &a.geo, &gerr)) a.geo = rad::GeoReference{};
+        }
+        {
+            py::gil_scoped_release nogil;
+            a.r = rad::applyReflectance(img, f, rad::applyParamsOf(p));
+        }
+        check(a.r.ok, a.r.error);
+        return a;
+    }, py::arg("image"), py::arg("fit") = py::none(), py::arg("k") = py::none(), py::arg("b") = py::none(),
+       py::arg("params") = py::none(), py::arg("max_pixels") = 0,
+       "Converts a DN image (a path or 2-D array) to reflectance with a fit file (fit=, as written by\n"
+       "radiometry fit: the uncertainty image comes with it) or k= and b=, as laserwb-cli radiometry apply.");
+
+    py::class_<CheckTable>(r, "Check", "Relative errors of check regions against their measured reflectance (relativeErrors).")
+        .def_property_readonly("table", [](const CheckTable& c) { return relativeErrorDict(c.r); })
+        .def_property_readonly("warnings", [](const CheckTable& c) { return c.r.warnings; })
+        .def("write_csv",
+             writer<CheckTable>([](const std::string& p, const CheckTable& c, std::string* e) { return rad::writeRelativeErrorCsv(p, c.r, e); }),
+             py::arg("path"), "As laserwb-cli radiometry check -o (and apply --table).");
+    r.def("check", [](const py::object& regions, const py::object& image, const py::object& params, long long maxPixels) {
+        const rad::RadiometryParams p = paramsFrom(params, kRadiometry);
+        const std::string file = fsPath(regions);
+        std::vector<rad::Region> regs;
+        std::string err;
+        check(rad::readRegionCsv(file, &regs, &err), err);
+        py::list keep;
+        cv::Mat img;
+        if (!image.is_none()) img = imageArgument(image, "image", maxPixels, &keep, readAnyDepth);
+        CheckTable c;
+        {
+            py::gil_scoped_release nogil;
+            c.r = rad::relativeErrors(regs, image.is_none() ? nullptr : &img, p.limitPct);
+        }
+        check(c.r.ok, file + ": " + c.r.error);
+        return c;
+    }, py::arg("regions"), py::arg("image") = py::none(), py::arg("params") = py::none(), py::arg("max_pixels") = 0,
+       "The relative errors of a check-region CSV, measured on a reflectance image (a path or 2-D\n"
+       "array) when given, as laserwb-cli radiometry check; table['all_within_limit'] False is exit 3.");
 }
 
 }  // namespace lwb::py

@@ -40,6 +40,46 @@ py::array_t<float> ownedArray(cv::Mat image) {
                               keep->ptr<float>(), owner);
 }
 
+py::array ownedImage(cv::Mat image) {
+    if (image.empty()) return py::array_t<float>(std::vector<py::ssize_t>{0, 0});
+    check(image.channels() == 1, "a multi-channel image cannot be returned as a 2-D array");
+    py::dtype dt = image.depth() == CV_8U    ? py::dtype::of<uint8_t>()
+                   : image.depth() == CV_16U ? py::dtype::of<uint16_t>()
+                   : image.depth() == CV_32F ? py::dtype::of<float>()
+                   : image.depth() == CV_64F ? py::dtype::of<double>()
+                                             : py::dtype();
+    check(image.depth() == CV_8U || image.depth() == CV_16U || image.depth() == CV_32F || image.depth() == CV_64F,
+          "an image of an unsupported depth");
+    auto* keep = new cv::Mat(std::move(image));
+    py::capsule owner(keep, [](void* p) { delete static_cast<cv::Mat*>(p); });
+    return py::array(dt, {keep->rows, keep->cols},
+                     {static_cast<py::ssize_t>(keep->step[0]), static_cast<py::ssize_t>(keep->elemSize())}, keep->data, owner);
+}
+
+cv::Mat imageArgument(const py::object& image, const std::string& what, long long maxPixels, py::list* keep,
+                      const std::function<bool(const std::string&, cv::Mat*, std::string*, long long)>& read) {
+    if (!py::isinstance<py::array>(image)) {
+        const std::string path = py::str(py::module_::import("os").attr("fspath")(image));
+        cv::Mat m;
+        std::string err;
+        check(read(path, &m, &err, maxPixels), err);
+        return m;
+    }
+    py::array a = py::module_::import("numpy").attr("ascontiguousarray")(image);
+    if (a.ndim() != 2) throw py::value_error(what + ": a 2-D array (rows, columns), not " + std::to_string(a.ndim()) + "-D");
+    const char kind = a.dtype().kind();
+    const size_t size = static_cast<size_t>(a.dtype().itemsize());
+    const int type = kind == 'u' && size == 1   ? CV_8UC1
+                     : kind == 'u' && size == 2 ? CV_16UC1
+                     : kind == 'f' && size == 4 ? CV_32FC1
+                     : kind == 'f' && size == 8 ? CV_64FC1
+                                                : -1;
+    if (type < 0) throw py::value_error(what + ": uint8, uint16, float32 or float64 pixels, not " + std::string(py::str(a.dtype())));
+    keep->append(a);  // (the Mat views the array's pixels: no copy)
+    return cv::Mat(static_cast<int>(a.shape(0)), static_cast<int>(a.shape(1)), type, const_cast<void*>(a.data()),
+                   static_cast<size_t>(a.strides(0)));
+}
+
 py::dict csvColumns(const std::string& csv, const std::vector<std::string>& textColumns,
                     const std::vector<std::string>& intColumns) {
     const core::CsvReadResult r = core::parseCsv(csv, "report");

@@ -8,6 +8,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/image_codecs.hpp"
 #include "core/common/text.hpp"
+#include "core/radiometry/reflectance.hpp"
 
 // The GDAL side of these functions is in the codec module (core/codecs_module/codecs_module.cpp),
 // loaded on first use; here are the checks and the atomic write around it.
@@ -44,6 +45,24 @@ bool writeGeoTiff(const std::string& path, const cv::Mat& image, const GeoRefere
     if (!m) return false;
     std::string bytes;
     return m->geoTiffBytes(path, image, geo, hasNoData, noData, &bytes, error) && writeFileAtomic(path, bytes, error);
+}
+
+bool isTiffPath(const std::string& path) {
+    const size_t dot = path.find_last_of('.');
+    const std::string ext = dot == std::string::npos ? std::string() : toLower(path.substr(dot + 1));
+    return ext == "tif" || ext == "tiff";
+}
+
+bool writeMapImage(const std::string& path, const cv::Mat& image, const GeoReference& geo, bool plain, std::string* error,
+                   bool floatNoData) {
+    if (geo.valid && !plain && isTiffPath(path)) return writeGeoTiff(path, image, geo, error, floatNoData, NAN);
+    return writeImage(path, image, error);
+}
+
+bool writeFloatMapImage(const std::string& path, const cv::Mat& image, const GeoReference& geo, bool plain,
+                        std::string* error) {
+    if (geo.valid && !plain && isTiffPath(path)) return writeGeoTiff(path, image, geo, error, true, NAN);
+    return writeFloatTiff(path, image, error);
 }
 
 bool readGeoReference(const std::string& path, GeoReference* geo, std::string* error) {

@@ -41,6 +41,20 @@ bool crsFromUserInput(const std::string& text, std::string* wkt, std::string* er
 bool writeGeoTiff(const std::string& path, const cv::Mat& image, const GeoReference& geo, std::string* error,
                   bool hasNoData = false, double noData = 0);
 
+/// True when the path ends in .tif or .tiff (any case).
+bool isTiffPath(const std::string& path);
+
+/// An image output of the map steps (radiometry gcp): a GeoTIFF through GDAL when geo.valid, the
+/// path is a .tif and plain TIFF was not asked for (floatNoData: NaN recorded as no data); else
+/// the plain writer (PNG, TIFF, PGM by extension: writeImage).
+bool writeMapImage(const std::string& path, const cv::Mat& image, const GeoReference& geo, bool plain, std::string* error,
+                   bool floatNoData = false);
+
+/// A float image output of radiometry apply (reflectance, its uncertainty): a GeoTIFF with NaN as
+/// no data under the same condition, else a plain 32-bit float TIFF (writeFloatTiff).
+bool writeFloatMapImage(const std::string& path, const cv::Mat& image, const GeoReference& geo, bool plain,
+                        std::string* error);
+
 /// Reads the georeferencing of an image file through GDAL (header only, no pixels). A file
 /// without one (PNG, plain TIFF) gives geo->valid = false and true. False with *error only
 /// when the file cannot be opened as a raster.

@@ -10,7 +10,8 @@ from conftest import SOURCE_DIR
 
 EXAMPLES = os.path.join(SOURCE_DIR, "examples")
 WRITES = {"footprint.py": ["report.csv"], "slr.py": ["screened.csv", "flagged.frd", "pass.npt"],
-          "trend.py": ["trend.csv"], "calibration.py": ["centre.csv", "stats.csv"], "radiometry.py": ["fit.csv"],
+          "trend.py": ["trend.csv"], "calibration.py": ["centre.csv", "ranking.csv", "beams.csv", "stats.csv"],
+          "radiometry.py": ["row.tif", "map.tif", "fit.csv"],
           "dask_reprocess.py": ["footprint.csv", "slr/pass1.npt"]}
 
 

@@ -9,8 +9,10 @@ Families (each a submodule, with its parameter class built from the family's sch
   ``fit_batch``, ``read_frame``, ``FootprintParams``)
 - ``laserwb.slr``: SLR passes (``read_crd``, ``load_pass``, ``run``, ``process``, ``SlrParams``)
 - ``laserwb.trend``: monthly centroid trend (``compute``, ``TrendParams``)
-- ``laserwb.calib``: altimeter calibration (``detector``, ``pointing``, ``stats``, ``CalibParams``)
-- ``laserwb.radiometry``: DN to reflectance (``fit``, ``read_image``, ``RadiometryParams``)
+- ``laserwb.calib``: altimeter calibration (``detector``, ``waveform``, ``pointing``, ``stats``,
+  ``CalibParams``)
+- ``laserwb.radiometry``: radiometric calibration (``mosaic``, ``gcp``, ``fit``, ``apply``,
+  ``check``, ``read_image``, ``RadiometryParams``); images in and out as numpy arrays or paths
 - ``laserwb.distributed``: folders of passes and frames on a Dask cluster
 
 Errors: ``laserwb.ParameterError`` (a ``ValueError``) for a refused parameter, with the schema's
