@@ -547,6 +547,8 @@ QString MainWindow::workspaceForPath(const QString& path) const {
     // A prediction or station coordinates go with the SLR pass (by their first record or name).
     if (head.startsWith("h1 cpf") || suffix == "cpf" || suffix == "hts") return "slr-cpf";
     if (head.startsWith("%=snx") || suffix == "snx") return "slr-sinex";
+    // A station's normal points (.npt, .np2) go beside the pass they were formed from.
+    if (suffix == "npt" || suffix == "np2") return "slr-npt";
     if (kCrdSuffixes.contains(suffix)) return "slr";
     if (suffix == "json") return head.contains("{") || head.isEmpty() ? "session" : QString();
     if (suffix == "csv" || suffix == "txt") {
@@ -560,7 +562,7 @@ QString MainWindow::workspaceForPath(const QString& path) const {
 }
 
 bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
-    QStringList problems, footprint, radiometry, cpf, sinex;
+    QStringList problems, footprint, radiometry, cpf, sinex, npt;
     for (const QString& p : paths) {
         if (!QFileInfo::exists(p)) {
             problems << tr("%1: no such file or folder").arg(p);
@@ -571,6 +573,8 @@ bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
             cpf << p;  // after the pass (given before or after it)
         } else if (where == "slr-sinex") {
             sinex << p;
+        } else if (where == "slr-npt") {
+            npt << p;  // after the pass (given before or after it)
         } else if (where == "footprint") {
             footprint << p;
         } else if (where == "radiometry") {
@@ -592,6 +596,20 @@ bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
                            "folder of frames, a session)")
                             .arg(p);
         }
+    }
+    // A station's normal points: compared with the open pass (Station normal points tab); with no
+    // pass open there is nothing to compare them with (a normal-point file is not screened).
+    if (npt.size() > 1) {
+        problems << tr("%1 and %2: one station normal-point file at a time").arg(npt.at(0), npt.at(1));
+    } else if (npt.size() == 1 && !m_slr->controller()->hasPass()) {
+        problems << tr("%1: a station's normal points are compared with the full-rate pass they were formed from, "
+                       "and no pass is open: open the pass and this file together, or this file in the Station normal "
+                       "points tab of the open pass")
+                        .arg(npt.first());
+    } else if (npt.size() == 1) {
+        QString err;
+        if (!m_slr->setStationNormalPoints(npt.first(), &err)) problems << err;
+        else m_tabs->setCurrentWidget(m_slr);
     }
     for (const QStringList* list : {&sinex, &cpf}) {
         if (list->size() > 1) {

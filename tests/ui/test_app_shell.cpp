@@ -35,6 +35,7 @@
 #include "ui/param_slider.hpp"
 #include "ui/plot_kit.hpp"
 #include "ui/radiometry_workspace.hpp"
+#include "ui/slr_station_nps.hpp"
 #include "ui/slr_workspace.hpp"
 #include "ui/workspace_layout.hpp"
 
@@ -551,6 +552,29 @@ private slots:
         QCOMPARE(w2.slr()->sinexPath(), snx);
         QCOMPARE(w2.tabs()->currentWidget(), static_cast<QWidget*>(w2.slr()));
         QVERIFY(w2.waitIdle(120000));
+    }
+
+    // Issue 29, seen in a real window: `laserwb --workspace slr PASS.frd PASS.npt` opened the
+    // station's normal points as the pass to screen ("no full-rate pass ... cannot be screened")
+    // and dropped the pass. A .npt now goes to the Station normal points tab of the pass opened
+    // with it (given before or after it); with no pass open it is refused, saying how to compare it.
+    void passAndItsStationNormalPointsOpenTogether() {
+        const QString frd = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd"),
+                      npt = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.npt");
+        if (!QFile::exists(frd) || !QFile::exists(npt)) QSKIP("shared SLR data absent");
+        MainWindow w;
+        QCOMPARE(w.workspaceForPath(npt), QString("slr-npt"));
+        QString err;
+        QVERIFY2(w.openPaths({npt, frd}, &err), qPrintable(err));
+        QCOMPARE(w.tabs()->currentWidget(), static_cast<QWidget*>(w.slr()));
+        QVERIFY(w.slr()->controller()->hasPass());
+        QCOMPARE(QString::fromStdString(w.slr()->controller()->pass().source), frd);
+        QVERIFY(w.slr()->stationNpPanel()->hasFile());
+        QVERIFY(w.waitIdle(120000));
+        MainWindow alone;
+        QVERIFY(!alone.openPaths({npt}, &err));
+        QVERIFY2(err.contains("no pass is open") && err.contains("Station normal points"), qPrintable(err));
+        QVERIFY(!alone.slr()->controller()->hasPass());
     }
 
     // Issue 28: Ctrl+S after opening another folder replaced the restored session (its manual
