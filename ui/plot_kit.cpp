@@ -248,8 +248,20 @@ void legendBelow(QCustomPlot* p, int columns) {
 }
 
 bool fitLegendBelow(QCustomPlot* p) {
-    if (!p->property("lwbLegendBelow").toBool() || !p->legend || p->legend->itemCount() == 0) return false;
+    if (!p->property("lwbLegendBelow").toBool() || !p->legend) return false;
     QCPLegend* lg = p->legend;
+    // A legend below the axes with no entry (no data yet) capped its layout column, and with it the
+    // axes, at the axes' least width (~120 px of a 500 px plot, seen in a real window): QCPLayoutGrid
+    // gives a column at most its elements' maximum widths, and an empty legend's is its margins.
+    // While empty it is hidden and its maximum width is set explicitly (the layout then takes that
+    // instead of the legend's own); with entries it is shown and sized by them again.
+    const bool empty = lg->itemCount() == 0;
+    if (lg->visible() == empty) {
+        lg->setVisible(!empty);
+        // (an explicit width: 10⁵ px, no screen's; QWIDGETSIZE_MAX − 1 plus the margins counts as unset)
+        lg->setMaximumSize(empty ? 100000 : QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
+    }
+    if (empty) return false;
     // Only when the width or the entries changed since the last fit (it runs before every replot).
     QString key = QString::number(p->width());
     for (int i = 0; i < lg->itemCount(); ++i)

@@ -168,6 +168,33 @@ private slots:
         plotsFit("JASON1");
     }
 
+    // Seen in a real window: with no pass (a file that could not be opened, or none yet) the O-C
+    // plot's axes were squeezed into a strip ~45 px wide at the left of an empty plot, its time
+    // label cut. Empty, each pass plot keeps its axes as wide as most of the plot.
+    void emptyPlotsKeepTheirWidth() {
+        MainWindow w;
+        w.resize(1480, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.showWorkspace("slr");
+        QTest::qWait(100);
+        QCoreApplication::processEvents();
+        for (QCustomPlot* p : {w.slr()->ocPlot(), w.slr()->imagePlot()}) {
+            p->replot();
+            const int axes = p->axisRect()->rect().width();
+            QString layout;
+            for (int c = 0; c < p->plotLayout()->columnCount(); ++c)
+                for (int r = 0; r < p->plotLayout()->rowCount(); ++r)
+                    if (QCPLayoutElement* e = p->plotLayout()->element(r, c))
+                        layout += QString(" (%1,%2) %3 %4 px (max %5/%6, visible %7)").arg(r).arg(c).arg(e->metaObject()->className()).arg(e->outerRect().width()).arg(e->maximumSize().width()).arg(e->maximumOuterSizeHint().width()).arg(e->visible());
+            QVERIFY2(axes >= p->width() / 2,
+                     qPrintable(QString("axes %1 px wide in a %2 px plot (viewport %4, layout %5 px, margins L%6 R%7, range %8..%9):%3")
+                                    .arg(axes).arg(p->width()).arg(layout).arg(p->viewport().width()).arg(p->plotLayout()->outerRect().width())
+                                    .arg(p->axisRect()->margins().left()).arg(p->axisRect()->margins().right())
+                                    .arg(p->xAxis->range().lower).arg(p->xAxis->range().upper)));
+        }
+    }
+
     void cosineSliderChangesTheAcceptedCount() {
         MainWindow w;
         SlrController* c = w.slr()->controller();
