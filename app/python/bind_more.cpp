@@ -58,6 +58,17 @@ auto writer(W write) {
     };
 }
 
+// The same for a map image: the method takes plain_tiff too (a plain TIFF even with a georeference).
+template <class T, class W>
+auto mapWriter(W write) {
+    return [write](const T& obj, const py::object& path, bool plain) {
+        const std::string p = fsPath(path);
+        std::string err;
+        py::gil_scoped_release nogil;
+        check(write(p, obj, plain, &err), err);
+    };
+}
+
 struct Trend {
     fp::TrendResult r;
 };
@@ -462,20 +473,14 @@ void bindTrendCalibRadiometry(py::module_& top) {
         }, "The transform's fit; outliers (GCP ids) make the map doubtful (the CLI's exit 3).")
         .def_property_readonly("warnings", [](const GcpMap& g) { return g.fit.warnings; })
         .def("write",
-             [](const GcpMap& g, const py::object& path, bool plain) {
-                 const std::string p = fsPath(path);
-                 std::string err;
-                 py::gil_scoped_release nogil;
-                 check(rad::writeMapImage(p, g.warp.image, g.geo, plain, &err, g.warp.image.depth() == CV_32F), err);
-             },
+             mapWriter<GcpMap>([](const std::string& p, const GcpMap& g, bool plain, std::string* e) {
+                 return rad::writeMapImage(p, g.warp.image, g.geo, plain, e, g.warp.image.depth() == CV_32F);
+             }),
              py::arg("path"), py::arg("plain_tiff") = false, "As laserwb-cli radiometry gcp -o (a GeoTIFF for .tif unless plain_tiff).")
         .def("write_valid",
-             [](const GcpMap& g, const py::object& path, bool plain) {
-                 const std::string p = fsPath(path);
-                 std::string err;
-                 py::gil_scoped_release nogil;
-                 check(rad::writeMapImage(p, g.warp.valid, g.geo, plain, &err), err);
-             },
+             mapWriter<GcpMap>([](const std::string& p, const GcpMap& g, bool plain, std::string* e) {
+                 return rad::writeMapImage(p, g.warp.valid, g.geo, plain, e);
+             }),
              py::arg("path"), py::arg("plain_tiff") = false, "As --valid.")
         .def("write_residuals",
              writer<GcpMap>([](const std::string& p, const GcpMap& g, std::string* e) { return rad::writeGcpResidualCsv(p, g.gcps, g.fit, e); }),
@@ -515,22 +520,19 @@ void bindTrendCalibRadiometry(py::module_& top) {
         })
         .def_property_readonly("warnings", [](const Applied& a) { return a.r.warnings; })
         .def("write",
-             [](const Applied& a, const py::object& path, bool plain) {
-                 const std::string p = fsPath(path);
-                 std::string err;
-                 py::gil_scoped_release nogil;
-                 check(rad::writeFloatMapImage(p, a.r.reflectance, a.geo, plain, &err), err);
-             },
+             mapWriter<Applied>([](const std::string& p, const Applied& a, bool plain, std::string* e) {
+                 return rad::writeFloatMapImage(p, a.r.reflectance, a.geo, plain, e);
+             }),
              py::arg("path"), py::arg("plain_tiff") = false,
              "As laserwb-cli radiometry apply -o (georeferenced as the input when it was a GeoTIFF path).")
         .def("write_uncertainty",
-             [](const Applied& a, const py::object& path, bool plain) {
-                 const std::string p = fsPath(path);
-                 std::string err;
-                 py::gil_scoped_release nogil;
-                 check(!a.r.uncertainty.empty(), "no uncertainty image: give fit= (a fit file with the errors of K and B)");
-                 check(rad::writeFloatMapImage(p, a.r.uncertainty, a.geo, plain, &err), err);
-             },
+             mapWriter<Applied>([](const std::string& p, const Applied& a, bool plain, std::string* e) {
+                 if (a.r.uncertainty.empty()) {
+                     *e = "no uncertainty image: give fit= (a fit file with the errors of K and B)";
+                     return false;
+                 }
+                 return rad::writeFloatMapImage(p, a.r.uncertainty, a.geo, plain, e);
+             }),
              py::arg("path"), py::arg("plain_tiff") = false, "As --uncertainty.");
     r.def("apply", [](const py::object& image, const py::object& fit, const py::object& k, const py::object& b,
                       const py::object& params, long long maxPixels) {

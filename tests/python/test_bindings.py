@@ -360,6 +360,9 @@ def test_radiometry_steps_are_the_cli_files(tmp_path):
     assert c.table["max_pct"] < 5 and c.table["all_within_limit"]
     k = laserwb.radiometry.apply(row, k=0.01, b=0.0)
     assert k.uncertainty is None
+    with pytest.raises(laserwb.Error, match="no uncertainty image"):
+        k.write_uncertainty(str(tmp_path / "none.tif"))
+    assert not os.path.exists(tmp_path / "none.tif")
     with pytest.raises(ValueError, match="fit= .* or k= and b="):
         laserwb.radiometry.apply(row, k=0.01)
     # the core's message comes whole (it was once read before the call that wrote it: empty)
