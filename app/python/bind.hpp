@@ -81,6 +81,10 @@ py::array_t<float> ownedArray(cv::Mat image);
 /// A numpy array that owns `image` (single channel, 8U, 16U, 32F or 64F; no copy of its pixels).
 py::array ownedImage(cv::Mat image);
 
+/// A result's image as a read-only numpy array sharing its pixels (no copy; read-only, as the
+/// result's writers write the same pixels afterwards). np.array(...) gives a writable copy.
+py::array resultImage(const cv::Mat& image);
+
 /// An image argument: a path (read by `read`, as the CLI reads it, refused above maxPixels) or a
 /// 2-D numpy array of uint8, uint16, float32 or float64 pixels, viewed without a copy (the array
 /// is appended to *keep, which the caller holds while the Mat is used). Errors raise, naming `what`.

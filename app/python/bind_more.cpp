@@ -423,8 +423,8 @@ void bindTrendCalibRadiometry(py::module_& top) {
        "2-D array) when given, as laserwb-cli radiometry fit.");
 
     py::class_<Mosaic>(r, "Mosaic", "One row of frames stitched (mosaicRow).")
-        .def_property_readonly("image", [](const Mosaic& m) { return ownedImage(m.r.image.clone()); }, "The row (the frames' depth).")
-        .def_property_readonly("coverage", [](const Mosaic& m) { return ownedImage(m.r.coverage.clone()); }, "255 where a frame contributed.")
+        .def_property_readonly("image", [](const Mosaic& m) { return resultImage(m.r.image); }, "The row (the frames' depth).")
+        .def_property_readonly("coverage", [](const Mosaic& m) { return resultImage(m.r.coverage); }, "255 where a frame contributed.")
         .def_property_readonly("pairs", [](const Mosaic& m) {
             py::list out;
             for (const auto& pr : m.r.pairs)
@@ -458,8 +458,8 @@ void bindTrendCalibRadiometry(py::module_& top) {
        "Stitches the frames of one row (paths or 2-D arrays, in scan order), as laserwb-cli radiometry mosaic.");
 
     py::class_<GcpMap>(r, "GcpMap", "An image resampled onto the map grid its control points give (fitGcpTransform, warpToMap).")
-        .def_property_readonly("image", [](const GcpMap& g) { return ownedImage(g.warp.image.clone()); })
-        .def_property_readonly("valid", [](const GcpMap& g) { return ownedImage(g.warp.valid.clone()); }, "255 where the map pixel came from inside the image.")
+        .def_property_readonly("image", [](const GcpMap& g) { return resultImage(g.warp.image); })
+        .def_property_readonly("valid", [](const GcpMap& g) { return resultImage(g.warp.valid); }, "255 where the map pixel came from inside the image.")
         .def_property_readonly("fit", [](const GcpMap& g) {
             return py::dict("model"_a = std::string(rad::geoModelName(g.fit.model)), "rms_map_m"_a = g.fit.rmsMap,
                             "rms_px"_a = g.fit.rmsPx, "metres_per_pixel"_a = g.fit.metresPerPixel,
@@ -511,9 +511,9 @@ void bindTrendCalibRadiometry(py::module_& top) {
        "the map grid, as laserwb-cli radiometry gcp; crs: 'EPSG:32650', a PROJ string or WKT.");
 
     py::class_<Applied>(r, "Reflectance", "A DN image converted to reflectance (applyReflectance).")
-        .def_property_readonly("reflectance", [](const Applied& a) { return ownedImage(a.r.reflectance.clone()); }, "%, float32.")
+        .def_property_readonly("reflectance", [](const Applied& a) { return resultImage(a.r.reflectance); }, "%, float32.")
         .def_property_readonly("uncertainty", [](const Applied& a) -> py::object {
-            return a.r.uncertainty.empty() ? py::object(py::none()) : py::object(ownedImage(a.r.uncertainty.clone()));
+            return a.r.uncertainty.empty() ? py::object(py::none()) : py::object(resultImage(a.r.uncertainty));
         }, "% (float32), when a fit file with K's and B's errors was given.")
         .def_property_readonly("out_of_range", [](const Applied& a) {
             return py::dict("below"_a = a.r.belowRange, "above"_a = a.r.aboveRange);

@@ -56,6 +56,12 @@ py::array ownedImage(cv::Mat image) {
                      {static_cast<py::ssize_t>(keep->step[0]), static_cast<py::ssize_t>(keep->elemSize())}, keep->data, owner);
 }
 
+py::array resultImage(const cv::Mat& image) {
+    py::array a = ownedImage(image);  // (a second header on the same pixels: cv::Mat counts the owners)
+    a.attr("setflags")(py::arg("write") = false);
+    return a;
+}
+
 cv::Mat imageArgument(const py::object& image, const std::string& what, long long maxPixels, py::list* keep,
                       const std::function<bool(const std::string&, cv::Mat*, std::string*, long long)>& read) {
     if (!py::isinstance<py::array>(image)) {

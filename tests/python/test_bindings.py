@@ -323,6 +323,11 @@ def test_radiometry_steps_are_the_cli_files(tmp_path):
     same_bytes(tmp_path / "cli_row.tif", tmp_path / "py_row.tif")
     same_bytes(tmp_path / "cli_pairs.csv", tmp_path / "py_pairs.csv")
     assert m.image.dtype == np.uint16 and len(m.pairs) == len(frames) - 1
+    # results share the core's pixels, read-only (the writers write those same pixels)
+    first, second = m.image, m.image  # two reads of the property: the same pixels, not copies
+    assert np.shares_memory(first, second) and not first.flags.writeable
+    with pytest.raises(ValueError):
+        m.image[0, 0] = 1
     # the frames as arrays (16-bit DN, exact in float32 and back): the same row
     arrays = [laserwb.radiometry.read_image(p).astype(np.uint16) for p in frames]
     assert np.array_equal(laserwb.radiometry.mosaic(arrays).image, m.image)
