@@ -316,6 +316,7 @@ Cost accumulate(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, 
 // beat the pixel fit, a separable AR(1) prewhitening with the measured lag-1 correlation, partial
 // differences (ρ = 0.5, 0.8) and second differences on every class. The constant background
 // drops out (its row of JᵀWJ is pinned); the plane's slopes remain.
+__attribute__((target_clones("avx2", "default")))
 Cost accumulateDifferences(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, Vec9* jtr) {
     // Structure-of-arrays: every Jacobian column, residual and weight is a contiguous array, and
     // a horizontal (vertical) difference is the array minus itself shifted by 1 (cols), so each
@@ -457,6 +458,7 @@ struct DifferenceVariances {
     bool ok = false;
 };
 
+__attribute__((target_clones("avx2", "default")))
 DifferenceVariances groundDifferenceVariances(const cv::Mat& roi, const GaussModel& m) {
     DifferenceVariances dv;
     const int w = roi.cols, h = roi.rows;
@@ -512,6 +514,7 @@ struct CentreCovariance {
     double xx = NAN, xy = NAN, yy = NAN;
 };
 
+__attribute__((target_clones("avx2", "default")))
 CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw, const Vec9& p, const Mat9& jtj,
                                         double cauchyC2, int cx, int cy, const CameraParams& camera, double textureScale) {
     CentreCovariance out;
