@@ -139,36 +139,11 @@ std::string folderOf(const std::string& path) {
     const size_t slash = path.find_last_of('/');
     return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
 }
-// How a sidecar names an output: by its file name when they share a folder (so that the folder
-// can be moved or copied whole), else as given ("./" before a bare name).
-std::string recordedName(const std::string& output, const std::string& sidecar) {
-    if (folderOf(output) == folderOf(sidecar)) return output.substr(folderOf(output).size());
-    return output.find('/') == std::string::npos ? "./" + output : output;
-}
-// The file a recorded name stands for.
+// The file a name recorded in a sidecar stands for (core::recordedName).
 std::string recordedFile(const std::string& name, const std::string& sidecar) {
     return name.find('/') == std::string::npos ? folderOf(sidecar) + name : name;
 }
 }  // namespace
-
-bool stageProvenance(core::OutputSet& outs, const core::Provenance& p, const std::vector<std::string>& outputs,
-                     const std::string& sidecar, std::string* error) {
-    std::vector<std::string> staged, names;
-    for (const auto& o : outputs) {
-        staged.push_back(outs.stagingPath(o));
-        names.push_back(recordedName(o, sidecar));
-    }
-    std::string text;
-    if (!core::provenanceText(p, names, staged, &text, error)) {
-        *error = outs.unstaged(*error);
-        return false;
-    }
-    if (!core::writeFileAtomic(outs.stagingPath(sidecar), text, error)) {
-        *error = outs.unstaged(*error);
-        return false;
-    }
-    return true;
-}
 
 std::string addProvenanceSidecar(core::OutputSet& outs) {
     const std::vector<std::string> files = outs.fileOutputs();
@@ -227,7 +202,7 @@ bool outputsComplete(const core::Provenance& p, const std::vector<std::string>& 
     for (size_t i = 0; i < it->size(); ++i) {
         const core::Json& e = (*it)[i];
         if (!e.is_object() || !e.contains("path") || !e["path"].is_string() ||
-            (!outputs.empty() && e["path"].get<std::string>() != recordedName(outputs[i], sidecar)))
+            (!outputs.empty() && e["path"].get<std::string>() != core::recordedName(outputs[i], sidecar)))
             return w = sidecar + ": lists other outputs", false;
         const std::string out = recordedFile(e["path"].get<std::string>(), sidecar);
         std::string hex, err;

@@ -70,11 +70,8 @@ private:
     std::chrono::steady_clock::time_point m_start;
 };
 
-/// Stages the provenance sidecar `sidecar` of the run's outputs `outputs` (already staged in
-/// `outs`; `sidecar` added to it before check()). An output in the sidecar's folder is named
-/// by its file name (the folder can be moved whole), another as given. False with *error.
-bool stageProvenance(core::OutputSet& outs, const core::Provenance& p, const std::vector<std::string>& outputs,
-                     const std::string& sidecar, std::string* error);
+/// (core::stageProvenance, core/common/provenance.hpp, stages a sidecar.)
+using core::stageProvenance;
 
 /// The provenance of a single command's outputs (calib, radiometry): addProvenanceSidecar(),
 /// after the outputs are added and before checkOutputs, adds FIRST.provenance.json beside the

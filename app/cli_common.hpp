@@ -78,22 +78,8 @@ int checkOutputs(const std::string& command, core::OutputSet& outs);
 /// of the outputs was replaced).
 int commitOutputs(const std::string& command, core::OutputSet& outs);
 
-/// An output folder for a run that writes several files into it: created when missing, and
-/// removed again (when still empty) unless keep() is called, so a failed run leaves nothing.
-class FolderForOutputs {
-public:
-    explicit FolderForOutputs(std::string dir);
-    ~FolderForOutputs();
-    FolderForOutputs(const FolderForOutputs&) = delete;
-    FolderForOutputs& operator=(const FolderForOutputs&) = delete;
-    bool ok() const { return m_ok; }
-    void keep() const { m_keep = true; }
-
-private:
-    std::string m_dir;
-    bool m_ok = false, m_created = false;
-    mutable bool m_keep = false;
-};
+/// An output folder that is removed again when the run fails (core/common/output_set.hpp).
+using core::FolderForOutputs;
 
 /// A named option that sets one schema field ("--cos-c" for "screen.cosine_c"): today's flags,
 /// kept as aliases of --set.
@@ -142,6 +128,22 @@ public:
         return kOk;
     }
     bool printRequested(const Args& a) const { return a.has("--print-config"); }
+    /// The named aliases, then each --set, as settings for the core to apply in that order (what
+    /// apply() does itself, for a task that resolves its parameters in core). False with *error
+    /// (a usage error) for a --set without '='.
+    bool settings(const Args& a, std::vector<core::ParamSetting>* out, std::string* error) const {
+        for (const auto& al : m_aliases)
+            if (a.has(al.flag)) out->push_back({al.key, a.value(al.flag), al.flag + " " + a.value(al.flag)});
+        for (const std::string& kv : a.values("--set")) {
+            const size_t eq = kv.find('=');
+            if (eq == std::string::npos) {
+                *error = "--set needs KEY=VALUE, not \"" + kv + "\"";
+                return false;
+            }
+            out->push_back({std::string(core::trim(kv.substr(0, eq))), kv.substr(eq + 1), "--set " + kv});
+        }
+        return true;
+    }
 
     /// The usage's paragraph about these options (`what`: "calib", `example`: "detector.trigger=5").
     static std::string paramsHelp(const std::string& what, const std::string& example) {

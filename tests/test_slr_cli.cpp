@@ -241,7 +241,9 @@ private slots:
             QVERIFY(std::fabs(rows[i].t - sp.ranges[i].secOfDay) < 1e-6);
             if (rows[i].kept) QVERIFY(rows[i].cls != "noise");  // the post-fit keeps accepted points only
         }
-        // --crd-out: the same file with this pass's flags = the CSV's classes; every record kept.
+        // --crd-out: the same file with this pass's flags as delivered = the CSV's kept column (2
+        // kept by the post-fit, 1 noise or rejected: the flags of every product, issue 40); every
+        // record kept.
         const CrdReadResult back = readCrd(p("stella.frd").toStdString());
         QVERIFY2(back.ok, back.error.c_str());
         QCOMPARE(back.file.passes.size(), src.file.passes.size());
@@ -249,7 +251,7 @@ private slots:
         QCOMPARE(bp.ranges.size(), sp.ranges.size());
         QCOMPARE(bp.records.size(), sp.records.size());
         for (size_t i = 0; i < bp.ranges.size(); ++i) {
-            QCOMPARE(bp.ranges[i].filterFlag, rows[i].cls == "noise" ? 1 : 2);
+            QCOMPARE(bp.ranges[i].filterFlag, rows[i].kept ? 2 : 1);
             QCOMPARE(bp.ranges[i].tofS, sp.ranges[i].tofS);
             QCOMPARE(bp.ranges[i].secOfDay, sp.ranges[i].secOfDay);
         }
@@ -295,13 +297,13 @@ private slots:
                 const auto& b = src.file.passes[size_t(j)].ranges;
                 QCOMPARE(a.size(), b.size());
                 for (size_t i = 0; i < a.size(); ++i)
-                    QCOMPARE(a[i].filterFlag, j == k - 1 ? (rows[i].cls == "noise" ? 1 : 2) : b[i].filterFlag);
+                    QCOMPARE(a[i].filterFlag, j == k - 1 ? (rows[i].kept ? 2 : 1) : b[i].filterFlag);
             }
         }
         // Out of range: the message lists the passes, numbered from 1.
         const auto bad = runCli({"slr", in, "--pass", "99", "-o", p("bc99.csv")}, kTimeoutMs);
         QCOMPARE(bad.exitCode, 1);
-        QVERIFY2(bad.err.contains("--pass 99") && bad.err.contains("holds 3 passes") && bad.err.contains("\n  3: Beacon-C"),
+        QVERIFY2(bad.err.contains("pass 99 asked for") && bad.err.contains("holds 3 passes") && bad.err.contains("\n  3: Beacon-C"),
                  qPrintable(bad.err));
         QVERIFY(!QFile::exists(p("bc99.csv")));
     }
@@ -690,12 +692,13 @@ private slots:
                               "h8\nh9\n";
         QTest::newRow("normal points only, one corrupted")
             << "np.v2C" << np
-            << QStringList{"no full-rate pass", "1 normal-point pass", "np.v2C:7: type 11 record skipped: field 2 (time of flight)"};
+            << QStringList{"no full-rate pass", "pass 1: station normal points (2 normal-point records",
+                           "np.v2C:7: type 11 record skipped: field 2 (time of flight)"};
         QByteArray fr = head + "h4 0 2018 2 1 15 14 58 2018 2 1 15 48 57 0 0 0 0 1 0 9 0\nc0 0 532.000 std\n"
                                "10 54927.6 0.044106029140 std 2 2 0 0 0 na\n10 54928.6 corrupted std 2 2 0 0 0 na\nh8\n";
         QTest::newRow("range type 9, a corrupted type 10")
             << "fr.v2C" << fr
-            << QStringList{"holds 1 full-rate records", "fr.v2C:4: H4 field 20 (range type indicator) is 9",
+            << QStringList{"pass 1: skipped (1 full-rate records; a pass needs at least 5)", "fr.v2C:4: H4 field 20 (range type indicator) is 9",
                            "fr.v2C:7: type 10 record skipped: field 2 (time of flight)"};
         QTest::newRow("H1 names CPF") << "cpf.frd" << QByteArray(np).replace("h1 CRD", "H1 CPF")
                                       << QStringList{"cpf.frd:1: H1 names the format \"CPF\", not \"CRD\""};
@@ -818,7 +821,7 @@ private slots:
                                           << QStringList{} << "text.frd:20:";
         QTest::newRow("no records") << "empty.frd" << h + "h8\nh9\n" << QStringList{} << "empty.frd:";
         QTest::newRow("one record") << "one.frd" << h + "10 77302.896480316 0.006390000000 std 2 2 0 0 0\nh8\nh9\n"
-                                    << QStringList{} << "holds 1 full-rate records";
+                                    << QStringList{} << "1 full-rate records; a pass needs at least 5";
         QTest::newRow("identical records") << "same.frd" << h + same + "h8\nh9\n" << QStringList{} << "same.frd";
         QTest::newRow("identical csv rows") << "same.csv" << QByteArray("epoch_s,oc_s\n") + QByteArray("5,1e-9\n").repeated(50)
                                             << QStringList{} << "epochs are equal";

@@ -663,10 +663,10 @@ private slots:
         const sim::SlrSimPass pass = sim::simulateSlrPass(sp, 5);
         std::vector<ScreenResult> r;
         for (int threads : {1, 4, 0}) {
-            setScaleSearchThreads(threads);
-            r.push_back(screenSignal(pass.epochS, pass.ocS, ScreenParams{}));
+            ScreenParams sp1;
+            sp1.searchThreads = threads;
+            r.push_back(screenSignal(pass.epochS, pass.ocS, sp1));
         }
-        setScaleSearchThreads(0);
         QVERIFY2(r[0].ok, r[0].error.c_str());
         QVERIFY(r[0].trials.size() > 30);  // the four ladders of a sparse pass ran
         for (size_t k = 1; k < r.size(); ++k) {

@@ -1,9 +1,9 @@
 #include "ui/slr_all_passes.hpp"
-#include "ui/save_path.hpp"
-#include "ui/table_csv.hpp"
 
-#include <QDateTime>
+#include <QCoreApplication>
 #include <QFileDialog>
+#include <QFileInfo>
+#include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -11,17 +11,14 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScreen>
-#include <QGuiApplication>
+#include <QSettings>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent>
 #include <algorithm>
-#include <cmath>
-#include <numeric>
 
 #include "core/common/atomic_file.hpp"
-#include "core/common/csv.hpp"
-#include "core/slr/pass_run.hpp"
+#include "ui/save_path.hpp"
 #include "ui/slr_controller.hpp"
 
 namespace lwb::ui {
@@ -29,40 +26,71 @@ namespace lwb::ui {
 using namespace core::slr;
 
 namespace {
-QString fixed(double v, int decimals) { return std::isfinite(v) ? QString::number(v, 'f', decimals) : QString(); }
+const QString kWaiting = QObject::tr("waiting");
 }  // namespace
 
-SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const SlrParams& base, QWidget* parent)
-    : QDialog(parent) {
+int SlrAllPassesDialog::column(const std::string& name) {
+    const auto& cols = dayColumns();
+    for (size_t c = 0; c < cols.size(); ++c)
+        if (cols[c].name == name) return int(c);
+    return -1;
+}
+
+SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const QString& presetFile, QWidget* parent)
+    : QDialog(parent), m_setup(controller->setup()) {
     setWindowTitle(tr("All passes of %1").arg(QFileInfo(controller->path()).fileName()));
     // As wide as the table wants, within the screen (1100 px put Close off a 1024 px screen).
     const QRect avail = (parent && parent->screen() ? parent->screen() : QGuiApplication::primaryScreen())->availableGeometry();
     resize(std::min(1100, avail.width() - 40), std::min(560, avail.height() - 80));
+    // The CLI's settings for a station's file: its defaults and each satellite's saved preset.
+    m_setup.sources.config = core::Json();
+    m_setup.sources.set.clear();
+    m_setup.sources.passNumber = 0;
+    if (!presetFile.isEmpty() && QFileInfo::exists(presetFile)) {
+        SlrSources src = m_setup.sources;
+        src.presets = presetFile.toStdString();
+        SlrSetup withPresets;
+        SlrError e;
+        if (setUpSlrRun(src, &withPresets, &e)) m_setup = std::move(withPresets);
+    }
     auto* l = new QVBoxLayout(this);
+    auto* about = new QLabel(
+        m_setup.havePresets
+            ? tr("The command's defaults and the saved preset of each satellite (%1), as laserwb-cli slr --all-passes --preset.")
+                  .arg(presetFile)
+            : tr("The command's defaults (no saved presets), as laserwb-cli slr --all-passes."),
+        this);
+    about->setWordWrap(true);
+    l->addWidget(about);
     m_table = new QTableWidget(this);
-    m_table->setColumnCount(ColCount);
-    m_table->setHorizontalHeaderLabels({tr("Pass"), tr("Start (UTC)"), tr("Station"), tr("Satellite"), tr("Points"),
-                                        tr("Accepted"), tr("RMS (mm)"), tr("Normal points"), tr("Station flags (P / R)"),
-                                        tr("Time (s)"), tr("Status")});
-    m_table->horizontalHeaderItem(ColRms)->setToolTip(tr("RMS of the post-fit residuals of the kept points, mm one-way"));
-    m_table->horizontalHeaderItem(ColAgreement)->setToolTip(
-        tr("The screening against the station's own filter flags: precision / recall (blank when the flags are incomplete)"));
-    m_table->horizontalHeaderItem(ColSeconds)->setToolTip(tr("Wall time of the screening and post-fit of the pass"));
+    const auto& cols = dayColumns();
+    m_table->setColumnCount(int(cols.size()));
+    for (size_t c = 0; c < cols.size(); ++c) {
+        auto* h = new QTableWidgetItem(QString::fromStdString(cols[c].name));
+        h->setToolTip(QString::fromStdString(cols[c].doc + (cols[c].unit.empty() ? "" : " (" + cols[c].unit + ")")));
+        m_table->setHorizontalHeaderItem(int(c), h);
+    }
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->verticalHeader()->setVisible(false);
-    m_table->setToolTip(tr("Double-click a row (or select it and press Open) to open that pass in the workspace"));
+    m_table->setToolTip(tr("Double-click a screened row (or select it and press Open) to open that pass in the workspace"));
     l->addWidget(m_table, 1);
     auto* row = new QHBoxLayout;
     m_label = new QLabel(this);
+    m_label->setWordWrap(true);
     m_progress = new QProgressBar(this);
-    m_progress->setToolTip(tr("Passes screened so far"));
+    m_progress->setToolTip(tr("Blocks decided so far"));
     m_cancelButton = new QPushButton(tr("Cancel"), this);
-    m_cancelButton->setToolTip(tr("Stop after the pass under way; the passes not reached are marked cancelled"));
+    m_cancelButton->setToolTip(tr("Stop after the passes under way; the blocks not reached are marked cancelled"));
     m_exportButton = new QPushButton(tr("Export CSV…"), this);
-    m_exportButton->setToolTip(tr("Write the table as it stands to a CSV file (one row per pass, the columns shown)"));
+    m_exportButton->setToolTip(tr("Write the table as summary.csv (laserwb-cli slr --all-passes writes the same bytes)"));
+    m_productsButton = new QPushButton(tr("Export products…"), this);
+    m_productsButton->setToolTip(
+        tr("Write the day's products into a folder, as laserwb-cli slr --all-passes --out-dir: passNNN.csv/.frd/.npt, "
+           "normal_points.npt, summary.csv, provenance.json"));
+    m_productsButton->setEnabled(false);
     m_openButton = new QPushButton(tr("Open pass"), this);
     m_openButton->setToolTip(tr("Open the selected pass in the SLR workspace"));
     auto* close = new QPushButton(tr("Close"), this);
@@ -71,33 +99,31 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
     row->addWidget(m_progress, 1);
     row->addWidget(m_cancelButton);
     row->addWidget(m_exportButton);
+    row->addWidget(m_productsButton);
     row->addWidget(m_openButton);
     row->addWidget(close);
     l->addLayout(row);
 
-    // Rows in time order (the start in the H4 record; passes without one last, in file order).
-    const std::vector<PassSummary> passes = controller->passes();
-    std::vector<int> order(passes.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return passes[size_t(a)].start < passes[size_t(b)].start; });
-    m_total = int(order.size());
+    // Every block of the file, in its order (summary.csv's), waiting.
+    const std::vector<PassSummary>& passes = controller->passes();
+    m_total = int(passes.size());
+    m_rows.resize(passes.size());
     m_table->setRowCount(m_total);
     for (int r = 0; r < m_total; ++r) {
-        const PassSummary& s = passes[size_t(order[size_t(r)])];
-        const QStringList cells{QString::number(s.index + 1), QString::fromStdString(s.start), QString::fromStdString(s.station),
-                                QString::fromStdString(s.satellite), QString::number(s.ranges)};
-        for (int c = 0; c < ColCount; ++c) {
-            auto* item = new QTableWidgetItem(c < cells.size() ? cells[c] : QString());
-            if (c == ColPass) item->setData(Qt::UserRole, s.index);
-            if (c == ColPass || (c >= ColPoints && c <= ColSeconds)) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        DayRow& d = m_rows[size_t(r)];
+        d.pass = size_t(r) + 1;
+        d.block = passes[size_t(r)];
+        d.status = kWaiting.toStdString();
+        for (int c = 0; c < int(cols.size()); ++c) {
+            auto* item = new QTableWidgetItem(QString::fromStdString(cols[size_t(c)].cell(d)));
+            if (c == 0) item->setData(Qt::UserRole, r);
             m_table->setItem(r, c, item);
         }
-        m_table->item(r, ColStatus)->setText(tr("waiting"));
     }
     m_table->resizeColumnsToContents();
     m_progress->setRange(0, std::max(1, m_total));
     m_progress->setValue(0);
-    m_label->setText(tr("Screening %1 passes…").arg(m_total));
+    m_label->setText(tr("Screening %1 blocks…").arg(m_total));
 
     connect(m_cancelButton, &QPushButton::clicked, this, &SlrAllPassesDialog::cancel);
     connect(close, &QPushButton::clicked, this, &QDialog::reject);
@@ -106,135 +132,145 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const Sl
         if (m_table->currentRow() >= 0) emit openPass(passOfRow(m_table->currentRow()));
     });
     connect(this, &QDialog::rejected, this, &SlrAllPassesDialog::cancel);
-
     connect(m_exportButton, &QPushButton::clicked, this, [this] {
-        const QString path = askSavePath(this, tr("Export the table"), "paths/slrExport", "all_passes.csv", tr("CSV (*.csv)"));
+        const QString path = askSavePath(this, tr("Export the table"), "paths/slrExport", "summary.csv", tr("CSV (*.csv)"));
         QString err;
         if (!path.isEmpty() && !exportCsv(path, &err)) m_label->setText(err);
     });
-
-    // The worker: the file, the sources and the settings shared read-only.
-    const auto crd = controller->crd();
-    const auto sources = controller->sources();
-    PassInputParams input = controller->inputParams();
-    input.cpfFallback = true;
-    const std::string path = controller->path().toStdString();
-    const auto cancelFlag = m_cancel;
-    QPointer<SlrAllPassesDialog> self(this);
-    m_future = QtConcurrent::run([=] {
-        for (int r = 0; r < int(order.size()); ++r) {
-            if (cancelFlag->load()) return;
-            const int index = order[size_t(r)];
-            QStringList cells;
-            bool ok = false;
-            // Not a pass to screen (the station's own normal points, engineering data, too few
-            // records): listed as laserwb-cli slr --all-passes lists it (core blockStatus).
-            if (const BlockStatus b = blockStatus(passes[size_t(index)]); !b.status.empty()) {
-                cells << QString() << QString() << QString() << QString() << QString()
-                      << QString::fromStdString(b.status + ": " + b.reason);
-                QMetaObject::invokeMethod(
-                    qApp, [self, r, cells] {
-                        if (self) self->rowDone(r, cells, true);
-                    },
-                    Qt::QueuedConnection);
-                continue;
-            }
-            const PassInputResult p = crd ? passFromCrd(crd, path, index, input, *sources) : PassInputResult{};
-            std::string err;
-            PassSettings settings;
-            if (!crd) {
-                cells << tr("failed: no CRD file");
-            } else if (!p.ok) {
-                cells << tr("failed: %1").arg(QString::fromStdString(p.error).section('\n', 0, 0));
-            } else if (!p.pass.damaged.empty()) {
-                cells << tr("failed: %1").arg(QString::fromStdString(p.pass.damaged));
-            } else if (!passSettings(p.pass, base, nullptr, std::string(), sources->haveStations ? &sources->stations : nullptr,
-                                     &settings, &err)) {
-                cells << tr("failed: %1").arg(QString::fromStdString(err));
-            } else {
-                const PassRunResult run = runPass(p.pass, settings.params);
-                if (!run.ok) {
-                    cells << tr("failed: screening: %1").arg(QString::fromStdString(run.error));
-                } else {
-                    ok = true;
-                    const double rms = run.postOk ? run.post.stats.rms : NAN;
-                    const StationAgreement& a = run.agreement;
-                    cells << QString::number(run.acceptedCount) << fixed(rms * 0.5 * 299792458.0 * 1e3, 2)
-                          << (run.postOk ? QString::number(run.post.normalPoints.size()) : QString())
-                          // (a precision of nothing accepted is 0/0: a dash, not a blank before the slash)
-                          << (a.available ? QString("%1 / %2").arg(std::isfinite(a.precision) ? fixed(a.precision, 3)
-                                                                                              : QString::fromUtf8("—"),
-                                                                   fixed(a.recall, 3))
-                                          : QString())
-                          << fixed(run.seconds, 2);
-                    // The CLI's status (core runStatus): ok, no signal or doubtful, with its reason.
-                    const BlockStatus st = runStatus(p.pass, run);
-                    QString status = st.status == "doubtful"
-                                         ? QString::fromStdString("doubtful: " + st.reason)
-                                         : tr("%1, O-C from %2").arg(QString::fromStdString(st.status), QString::fromStdString(p.pass.ocOrigin));
-                    if (st.status != "doubtful" && !st.reason.empty() && st.reason != "no signal found")
-                        status += " — " + QString::fromStdString(st.reason);
-                    cells << status;
-                }
-            }
-            QMetaObject::invokeMethod(
-                qApp, [self, r, cells, ok] {
-                    if (self) self->rowDone(r, cells, ok);
-                },
-                Qt::QueuedConnection);
-        }
+    connect(m_productsButton, &QPushButton::clicked, this, [this] {
+        QSettings settings;
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Export the day's products into a folder"),
+                                                              settings.value("paths/slrProducts").toString());
+        if (dir.isEmpty()) return;
+        settings.setValue("paths/slrProducts", dir);
+        QString err;
+        if (!exportProducts(dir, &err)) m_label->setText(err);
     });
+    connect(this, &SlrAllPassesDialog::productsWritten, this, [this](bool, const QString& message) { m_label->setText(message); });
+    start(QString());
 }
 
 SlrAllPassesDialog::~SlrAllPassesDialog() {
-    m_cancel->store(true);
+    if (m_feedback) m_feedback->cancel();
     m_future.waitForFinished();
+}
+
+void SlrAllPassesDialog::start(const QString& outDir) {
+    m_feedback = std::make_shared<core::Feedback>();
+    const auto feedback = m_feedback;
+    const SlrSetup setup = m_setup;
+    DayOptions opt;
+    opt.outDir = outDir.toStdString();
+    opt.provenance = slrProvenance(setup, true);
+    QPointer<SlrAllPassesDialog> self(this);
+    m_future = QtConcurrent::run([=] {
+        DayObserver obs;
+        obs.fb = feedback.get();
+        obs.row = [self](const DayRow& row) {
+            QMetaObject::invokeMethod(
+                qApp, [self, row] {
+                    if (self) self->rowDone(row);
+                },
+                Qt::QueuedConnection);
+        };
+        const DayResult r = runStationDay(setup, opt, obs);
+        QMetaObject::invokeMethod(
+            qApp, [self, r, outDir] {
+                if (self) self->runDone(r, outDir);
+            },
+            Qt::QueuedConnection);
+    });
 }
 
 void SlrAllPassesDialog::cancel() {
-    if (m_finished) return;
-    m_cancel->store(true);
+    if (m_finished && !m_exporting) return;
+    if (m_feedback) m_feedback->cancel();
     m_cancelButton->setEnabled(false);
-    m_label->setText(tr("Cancelling after the pass under way…"));
-    // The rows the worker will not reach.
+    m_label->setText(tr("Cancelling after the passes under way…"));
     m_future.waitForFinished();
     QCoreApplication::sendPostedEvents();
-    for (int r = 0; r < m_total; ++r)
-        if (m_table->item(r, ColStatus)->text() == tr("waiting")) m_table->item(r, ColStatus)->setText(tr("cancelled"));
-    m_finished = true;
-    m_label->setText(tr("Cancelled: %1 of %2 passes screened (%3 failed)").arg(m_done).arg(m_total).arg(m_failed));
-    emit allDone();
 }
 
 bool SlrAllPassesDialog::exportCsv(const QString& path, QString* error) const {
-    return writeTableCsv(m_table, path, error);
+    std::string err;
+    if (!core::writeFileAtomic(path.toStdString(), dayCsv(m_rows), &err)) {
+        *error = QString::fromStdString(err);
+        return false;
+    }
+    return true;
+}
+
+bool SlrAllPassesDialog::exportProducts(const QString& dir, QString* error) {
+    if (!m_finished || m_exporting) {
+        *error = tr("the screening is still under way: export when it has finished");
+        return false;
+    }
+    m_exporting = true;
+    m_productsButton->setEnabled(false);
+    m_cancelButton->setEnabled(true);
+    m_progress->setValue(0);
+    m_done = 0;
+    m_label->setText(tr("Writing the day's products into %1…").arg(dir));
+    start(dir);
+    return true;
 }
 
 int SlrAllPassesDialog::passOfRow(int row) const {
-    const QTableWidgetItem* item = m_table->item(row, ColPass);
+    const QTableWidgetItem* item = m_table->item(row, 0);
     return item ? item->data(Qt::UserRole).toInt() : -1;
 }
 
-void SlrAllPassesDialog::rowDone(int row, const QStringList& cells, bool ok) {
-    if (m_finished) return;
-    if (ok)
-        for (int k = 0; k < cells.size(); ++k) m_table->item(row, ColAccepted + k)->setText(cells[k]);
-    else {
-        m_table->item(row, ColStatus)->setText(cells.value(0));
-        m_table->item(row, ColStatus)->setToolTip(cells.value(0));
-        for (int c = 0; c < ColCount; ++c) m_table->item(row, c)->setForeground(QColor(170, 0, 0));
-        ++m_failed;
-    }
-    m_table->item(row, ColStatus)->setToolTip(m_table->item(row, ColStatus)->text());
+void SlrAllPassesDialog::rowDone(const DayRow& row) {
+    const int r = int(row.pass) - 1;
+    if (r < 0 || r >= m_total) return;
+    m_rows[size_t(r)] = row;
+    const auto& cols = dayColumns();
+    for (size_t c = 0; c < cols.size(); ++c) m_table->item(r, int(c))->setText(QString::fromStdString(cols[c].cell(row)));
+    const int status = column("status"), reason = column("reason");
+    m_table->item(r, status)->setToolTip(QString::fromStdString(row.reason));
+    m_table->item(r, reason)->setToolTip(QString::fromStdString(row.reason));
+    const bool failed = row.status == "failed";
+    const bool notScreened = !row.screened && !failed;
+    for (size_t c = 0; c < cols.size(); ++c)
+        m_table->item(r, int(c))->setForeground(failed ? QColor(170, 0, 0) : notScreened ? QColor(120, 120, 120) : palette().text().color());
+    if (!m_exporting) m_failed += failed;
     ++m_done;
     m_progress->setValue(m_done);
-    m_label->setText(tr("%1 of %2 passes screened (%3 failed)").arg(m_done).arg(m_total).arg(m_failed));
-    if (m_done == m_total) {
-        m_finished = true;
-        m_cancelButton->setEnabled(false);
-        m_table->resizeColumnsToContents();
-        emit allDone();
+    if (!m_exporting) m_label->setText(tr("%1 of %2 blocks decided (%3 failed)").arg(m_done).arg(m_total).arg(m_failed));
+}
+
+void SlrAllPassesDialog::runDone(const DayResult& result, const QString& outDir) {
+    const bool exporting = m_exporting;
+    m_exporting = false;
+    m_finished = true;
+    m_cancelButton->setEnabled(false);
+    if (result.cancelled)
+        for (int r = 0; r < m_total; ++r)
+            if (m_rows[size_t(r)].status == kWaiting.toStdString()) {
+                m_rows[size_t(r)].status = "cancelled";
+                m_table->item(r, column("status"))->setText(tr("cancelled"));
+            }
+    m_productsButton->setEnabled(!result.cancelled || exporting);
+    if (exporting) {
+        const QString msg = result.ok ? tr("Wrote %1 files into %2").arg(result.written.size()).arg(outDir)
+                                      : tr("Products not written: %1").arg(QString::fromStdString(result.error.message));
+        emit productsWritten(result.ok, msg);
+        return;
     }
+    m_table->resizeColumnsToContents();
+    if (result.cancelled)
+        m_label->setText(tr("Cancelled: %1 of %2 blocks decided (%3 failed)").arg(m_done).arg(m_total).arg(m_failed));
+    else if (!result.ok)
+        m_label->setText(tr("Stopped: %1").arg(QString::fromStdString(result.error.message)));
+    else
+        m_label->setText(tr("%1 blocks: %2 screened, %3 doubtful, %4 failed, %5 station normal points, %6 skipped")
+                             .arg(m_total)
+                             .arg(result.screened)
+                             .arg(result.doubtful)
+                             .arg(result.failed)
+                             .arg(result.stationNormalPoints)
+                             .arg(result.skipped));
+    emit allDone();
 }
 
 }  // namespace lwb::ui

@@ -1,14 +1,20 @@
 #pragma once
-// "Screen all passes": every pass of the open CRD file screened in the background (core
-// runPass per pass, the same path as `laserwb-cli slr --all-passes`), one table row per pass in
-// time order, with progress and Cancel; a failing pass is a row with its reason and the rest go
-// on; activating a row opens that pass in the workspace.
+// "Screen all passes": the station-file batch of the core (core/slr/station_day.hpp, the task
+// laserwb-cli slr --all-passes runs) on the open CRD file, in the background, with progress and
+// Cancel. The table is summary.csv: its columns (core dayColumns, their docs as tooltips), one
+// row per block in the file's order, the same statuses (the station's normal points and
+// engineering data are listed as what they are, never screened). The settings are the CLI's
+// for `--all-passes --preset PRESETS [--cpf --stations]`: the command's defaults and each
+// satellite's saved preset. "Export CSV…" writes summary.csv's bytes; "Export products…"
+// writes the day's products into a folder, as the CLI does. Activating a screened row opens
+// that pass in the workspace.
 #include <QDialog>
 #include <QFuture>
 #include <atomic>
 #include <memory>
+#include <vector>
 
-#include "core/slr/slr_params.hpp"
+#include "core/slr/station_day.hpp"
 
 class QLabel;
 class QProgressBar;
@@ -22,40 +28,47 @@ class SlrController;
 class SlrAllPassesDialog : public QDialog {
     Q_OBJECT
 public:
-    /// Columns of the table.
-    enum Column { ColPass, ColStart, ColStation, ColSatellite, ColPoints, ColAccepted, ColRms, ColNormalPoints,
-                  ColAgreement, ColSeconds, ColStatus, ColCount };
-    /// Screens every pass of `controller`'s open CRD file with `base` (per pass: its preset-free
-    /// settings, core::slr::passSettings) — starts at once.
-    SlrAllPassesDialog(const SlrController* controller, const core::slr::SlrParams& base, QWidget* parent = nullptr);
+    /// Screens every block of `controller`'s open CRD file (its CPF and SINEX), with the presets
+    /// of `presetFile` when it exists — starts at once.
+    SlrAllPassesDialog(const SlrController* controller, const QString& presetFile, QWidget* parent = nullptr);
     ~SlrAllPassesDialog() override;
     QTableWidget* table() const { return m_table; }
-    /// Passes finished (screened or failed).
+    /// The table's column of summary.csv's column `name` (-1 when none).
+    static int column(const std::string& name);
+    /// Blocks decided so far.
     int done() const { return m_done; }
     bool finished() const { return m_finished; }
-    /// Stops after the pass under way; the rows not reached say "cancelled".
+    /// Stops after the passes under way; the rows not reached say "cancelled".
     void cancel();
-    /// The table as it stands, as CSV (the columns shown, one row per block), written whole or
-    /// not at all. False with *error.
+    /// summary.csv of the blocks decided so far (the CLI's bytes once finished). False with *error.
     bool exportCsv(const QString& path, QString* error) const;
+    /// The day's products into `dir` (the CLI's --all-passes --out-dir DIR), run again in the
+    /// background; productsWritten() says when. False (with *error) when they cannot start.
+    bool exportProducts(const QString& dir, QString* error);
     /// The pass (0-based index in the file) of a table row.
     int passOfRow(int row) const;
 
 signals:
     void openPass(int passIndex);
     void allDone();
+    /// The products export ended: ok, and what it wrote or why not.
+    void productsWritten(bool ok, const QString& message);
 
 private:
-    void rowDone(int row, const QStringList& cells, bool ok);
+    void start(const QString& outDir);
+    void rowDone(const core::slr::DayRow& row);
+    void runDone(const core::slr::DayResult& result, const QString& outDir);
 
+    core::slr::SlrSetup m_setup;
     QTableWidget* m_table;
     QProgressBar* m_progress;
     QLabel* m_label;
-    QPushButton *m_cancelButton, *m_exportButton, *m_openButton;
-    std::shared_ptr<std::atomic<bool>> m_cancel = std::make_shared<std::atomic<bool>>(false);
+    QPushButton *m_cancelButton, *m_exportButton, *m_productsButton, *m_openButton;
+    std::shared_ptr<core::Feedback> m_feedback;
     QFuture<void> m_future;
+    std::vector<core::slr::DayRow> m_rows;
     int m_total = 0, m_done = 0, m_failed = 0;
-    bool m_finished = false;
+    bool m_finished = false, m_exporting = false;
 };
 
 }  // namespace lwb::ui

@@ -12,6 +12,7 @@
 
 #include "core/slr/pass_output.hpp"
 #include "core/slr/pass_run.hpp"
+#include "core/slr/slr_run.hpp"
 
 namespace lwb::ui {
 
@@ -27,12 +28,19 @@ SlrController::SlrController(QObject* parent) : QObject(parent) {
             in->pass = m_passData;
             in->forced = m_forced;
             r->inputs = std::move(in);
-            r->params = m_params;
-            // The pass's normal-point context, as the CLI gives it (core passNormalPointContext:
-            // the C1 fire rate, the station from the SINEX file), over what the parameters leave
-            // unknown: the same normal points in both (issue 28).
-            passNormalPointContext(m_pass, m_sources && m_sources->haveStations ? &m_sources->stations : nullptr,
-                                   &r->params.postfit);
+            // The parameters as every front end resolves them (core resolvePassParams): the
+            // panel's, as a config, with what the pass tells (fire rate, ILRS bin, the station's
+            // position) wherever they leave it unknown: the CLI's normal points (issue 28, 40).
+            core::slr::SlrSetup setup = m_setup;
+            setup.sources.config = slrSchema().toJson(m_params);
+            PassSettings settings;
+            SlrError e;
+            if (!resolvePassParams(setup, *m_passData, &settings, &e)) {
+                emit runFailed(QString::fromStdString(e.message));
+                return false;
+            }
+            r->params = settings.params;
+            m_settings = std::move(settings);
             // What this run reuses: the last screening (only the post-fit or the edits changed),
             // or, when reuseScaleForCosine is set (off by default), the scale the automatic mode
             // chose while only C moved; else nothing. (A screening at a kept scale is not the one
@@ -78,18 +86,20 @@ void SlrController::passLoaded() {
 }
 
 namespace {
-// The CPF (file or folder) and SINEX of `in`, read once for the passes of a file (the CPF is
-// used with the SINEX only; the SINEX alone gives the station's position).
-bool readSources(const PassInputParams& in, std::shared_ptr<const PassSources>* out, QString* error) {
-    auto sources = std::make_shared<PassSources>();
-    std::string err;
-    // The SINEX file alone still places the station (day or night per normal-point bin), as
-    // laserwb-cli slr --stations does.
-    if (!in.sinexPath.empty() && !readPassSources(in, sources.get(), &err)) {
-        *error = QString::fromStdString(err);
+// The workbench's sources for `path` (a CPF is used with a SINEX only; the SINEX alone gives the
+// station's position), read by the core once for the passes of the file.
+bool setUp(const QString& path, const PassInputParams& in, SlrSetup* out, QString* error) {
+    SlrSources src;
+    src.input = path.toStdString();
+    src.stations = in.sinexPath;
+    if (!in.sinexPath.empty()) src.cpf = in.cpfPath;
+    src.cpfFallback = true;  // a CPF that does not fit the pass: its own TOF trend, with a note
+    src.openDamaged = true;  // a pass with damaged records is shown (its exports are refused)
+    SlrError e;
+    if (!setUpSlrRun(src, out, &e)) {
+        *error = QString::fromStdString(e.message);
         return false;
     }
-    *out = sources;
     return true;
 }
 }  // namespace
@@ -102,46 +112,25 @@ void SlrController::resetPassErrors() {
 }
 
 bool SlrController::open(const QString& path, int passIndex, const PassInputParams& input, QString* error) {
-    PassInputParams in = input;
-    in.cpfFallback = true;  // a CPF that does not fit the pass: its own TOF trend, with a note
-    if (!isCrdFile(path.toStdString())) {
-        const PassInputResult r = passFromOcTable(path.toStdString());
-        if (!r.ok) {
-            *error = QString::fromStdString(r.error);
-            return false;
-        }
-        m_crd.reset();
-        m_sources = std::make_shared<const PassSources>();
-        m_input = in;
-        m_path = path;
-        m_passErrors.clear();
-        m_passes = r.passes;
-        m_selected = 0;
-        m_passProblem.clear();
-        m_warnings = r.warnings;
-        m_pass = r.pass;
-        passOpened();
-        return true;
-    }
-    auto crd = std::make_shared<CrdReadResult>(readCrd(path.toStdString()));
-    if (!crd->ok) {
-        *error = QString::fromStdString(crd->error);
-        for (size_t i = 0; i < crd->warnings.size() && i < 5; ++i) *error += "\n" + QString::fromStdString(crd->warnings[i]);
+    SlrSetup setup;
+    if (!setUp(path, input, &setup, error)) return false;
+    setup.sources.passNumber = passIndex + 1;  // (0: the file's first pass to screen, core isPassToScreen)
+    OpenedPass o = openPass(setup);
+    if (!o.ok && !o.crd) {  // the file (or an O-C table) cannot be read at all: the previous one stays
+        *error = QString::fromStdString(o.error.message);
         return false;
     }
-    std::shared_ptr<const PassSources> sources;
-    if (!readSources(in, &sources, error)) return false;
-    m_crd = crd;
-    m_sources = sources;
-    m_input = in;
+    m_setup = std::move(setup);
+    m_input = input;
     m_path = path;
-    m_passes = summarisePasses(crd->file);
+    m_crd = o.crd;
+    m_passes = o.passes;
     resetPassErrors();
-    // -1: the first pass with full-rate records (when none has any, passFromCrd says what the file holds).
-    for (size_t i = 0; passIndex < 0 && i < crd->file.passes.size(); ++i)
-        if (!crd->file.passes[i].ranges.empty()) passIndex = int(i);
-    m_selected = passIndex;
-    loadSelected(nullptr);
+    if (!m_crd) m_passErrors.clear();
+    // The block opened (the file's first pass to screen unless one was asked for); a block that
+    // is not a pass, or cannot be used, leaves no pass open and its reason in place.
+    m_selected = o.ok ? o.pass->passIndex : passIndex >= 0 ? passIndex : 0;
+    showOpened(std::move(o), nullptr);
     return true;
 }
 
@@ -158,11 +147,10 @@ bool SlrController::setSources(const QString& cpfPath, const QString& sinexPath,
     PassInputParams in = m_input;
     in.cpfPath = cpfPath.toStdString();
     in.sinexPath = sinexPath.toStdString();
-    in.cpfFallback = true;
-    std::shared_ptr<const PassSources> sources;
-    if (!readSources(in, &sources, error)) return false;
+    SlrSetup setup;
+    if (!setUp(m_path, in, &setup, error)) return false;
     m_input = in;
-    m_sources = sources;
+    m_setup = std::move(setup);
     if (m_crd) {
         // What was known against the passes may have been the old prediction's doing.
         resetPassErrors();
@@ -177,12 +165,13 @@ void SlrController::notePassError(int index, const QString& why) {
     emit passListChanged();
 }
 
-bool SlrController::loadSelected(QString* error) {
-    const PassInputResult r = passFromCrd(m_crd, m_path.toStdString(), m_selected, m_input, *m_sources);
-    m_warnings = r.warnings;
-    if (!r.ok) {
+bool SlrController::loadSelected(QString* error) { return showOpened(openPassOf(m_setup, m_crd, m_selected), error); }
+
+bool SlrController::showOpened(OpenedPass o, QString* error) {
+    m_warnings = o.warnings;
+    if (!o.ok) {
         // No pass open, the list stays: the reason is shown in place and against the pass.
-        m_passProblem = QString::fromStdString(r.error);
+        m_passProblem = QString::fromStdString(o.error.message);
         notePassError(m_selected, m_passProblem.section('\n', 0, 0));
         m_job.cancel();  // a run of the previous pass is not delivered
         m_pass = PassData{};
@@ -197,7 +186,7 @@ bool SlrController::loadSelected(QString* error) {
         return false;
     }
     m_passProblem.clear();
-    m_pass = r.pass;
+    m_pass = *o.pass;
     m_selected = m_pass.passIndex;
     if (m_passErrors.remove(m_selected)) emit passListChanged();
     passOpened();
@@ -328,65 +317,51 @@ bool SlrController::applySatellitePreset() {
         emit status(tr("Presets not read: %1").arg(QString::fromStdString(r.error)));
         return false;
     }
-    const SatellitePreset* p = findPreset(r.presets, m_pass.satellite, m_pass.ilrsId);
-    if (!p) return false;
+    // The core's lookup and application (applyPreset), as --preset on the command line.
+    SlrParams p;
+    std::string name, err;
+    if (!applyPreset(m_pass, r.presets, std::string(), &p, &name, &err)) return false;
     const double altitude = m_params.postfit.altitudeKm;
-    m_params = {p->screen, p->postfit};
+    m_params = p;
     if (!(m_params.postfit.altitudeKm > 0)) m_params.postfit.altitudeKm = altitude;
     m_screenDue = true;
     m_scaleValid = false;
     return true;
 }
 
-bool SlrController::exportCsv(const QString& path, QString* error) const {
+bool SlrController::exportProducts(const PassProductPaths& paths, QString* error) const {
     if (!hasRun()) {
         *error = tr("no screening result to export");
         return false;
     }
+    if (const std::string why = productsProblem(m_pass, m_settings, paths); !why.empty()) {
+        *error = QString::fromStdString(why);
+        return false;
+    }
+    // The CLI's writer and its all-or-nothing set: never over an input, the file whole or not at all.
+    core::OutputSet outs;
+    outs.addInput(m_pass.source);
+    for (const std::string* in : {&m_input.cpfPath, &m_input.sinexPath}) outs.addInput(*in);
+    for (const std::string* out : {&paths.csv, &paths.crd, &paths.npt})
+        if (!out->empty()) outs.addOutput(*out);
     std::string err;
-    if (!writeScreenCsv(path.toStdString(), m_pass, m_run->screen, m_run->accepted, &m_run->post, &err)) {
-        *error = QString::fromStdString(err);
+    if (!outs.check() || !stagePassProducts(outs, m_pass, *m_run, paths, nullptr, &err) || !outs.commit()) {
+        *error = QString::fromStdString(err.empty() ? outs.error() : err);
         return false;
     }
     return true;
+}
+
+bool SlrController::exportCsv(const QString& path, QString* error) const {
+    return exportProducts({path.toStdString(), "", "", false}, error);
 }
 
 bool SlrController::exportCrd(const QString& path, QString* error, bool wholeFile) const {
-    if (!hasRun()) {
-        *error = tr("no screening result to export");
-        return false;
-    }
-    std::string err;
-    PassData pass;
-    const PassData* out = &m_pass;
-    if (!wholeFile && m_pass.hasCrd && m_pass.passIndex >= 0 && size_t(m_pass.passIndex) < m_pass.crd->passes.size()) {
-        // This pass alone: its headers and records, the file's trailer (H9).
-        pass = m_pass;
-        auto alone = std::make_shared<core::slr::CrdFile>(*m_pass.crd);
-        alone->passes = {m_pass.crd->passes[size_t(m_pass.passIndex)]};
-        pass.crd = alone;
-        pass.passIndex = 0;
-        out = &pass;
-    }
-    if (!writeScreenedCrd(path.toStdString(), *out, m_run->accepted, &err)) {
-        *error = QString::fromStdString(err);
-        return false;
-    }
-    return true;
+    return exportProducts({"", path.toStdString(), "", wholeFile}, error);
 }
 
 bool SlrController::exportNormalPoints(const QString& path, QString* error) const {
-    if (!hasRun() || !m_run->post.ok || m_run->post.normalPoints.empty()) {
-        *error = hasRun() && !m_run->postNote.empty() ? QString::fromStdString(m_run->postNote) : tr("no normal points to export");
-        return false;
-    }
-    std::string err;
-    if (!writeNormalPointCrd(path.toStdString(), m_pass, m_run->post.normalPoints, &err,
-                             normalPointProduct(&m_run->post, &m_run->screen, std::string()))) {
-        *error = QString::fromStdString(err);
-        return false;
-    }
-    return true;
+    return exportProducts({"", "", path.toStdString(), false}, error);
 }
 
 bool SlrController::waitIdle(int timeoutMs) { return m_job.waitIdle(timeoutMs); }

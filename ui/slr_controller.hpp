@@ -20,6 +20,7 @@
 #include "core/slr/presets.hpp"
 #include "core/slr/screen.hpp"
 #include "core/slr/slr_params.hpp"
+#include "core/slr/slr_run.hpp"
 #include "ui/task_job.hpp"
 
 namespace lwb::ui {
@@ -50,7 +51,7 @@ public:
     /// Truth per point for simulated passes (1 = signal), empty otherwise.
     const std::vector<uint8_t>& truth() const { return m_truth; }
 
-    /// Opens a CRD file (pass `passIndex`, -1 = first full-rate one) or an O-C CSV; the CPF and
+    /// Opens a CRD file (pass `passIndex`, -1 = the first pass to screen, core isPassToScreen) or an O-C CSV; the CPF and
     /// SINEX paths in `input` (a CPF file or a folder of them) give O-C from the prediction. The
     /// file is read once and every pass is listed (passes()); a pass that cannot be processed
     /// leaves no pass open and its reason in passProblem(), the list stays. False (the previous
@@ -69,7 +70,9 @@ public:
     void notePassError(int index, const QString& why);
     /// The open CRD file and its prediction sources, shared read-only (null for an O-C table).
     std::shared_ptr<const core::slr::CrdReadResult> crd() const { return m_crd; }
-    std::shared_ptr<const core::slr::PassSources> sources() const { return m_sources; }
+    std::shared_ptr<const core::slr::PassSources> sources() const { return m_setup.predictions; }
+    /// The run's sources as the core read them (the file, CPF, SINEX): what "Screen all passes" runs on.
+    const core::slr::SlrSetup& setup() const { return m_setup; }
     QString path() const { return m_path; }
     /// Replaces the manual edits as a whole (the undo commands); one entry of the edit history.
     void setForced(const std::vector<int8_t>& forced);
@@ -110,6 +113,8 @@ public:
     /// The pass's records with the screening's filter flags: `wholeFile` writes every pass of
     /// the file (the others unchanged), else this pass alone (its headers and records).
     bool exportCrd(const QString& path, QString* error, bool wholeFile = true) const;
+    /// The normal points as the CLI's --npt-out writes them: the reason in their place when there
+    /// are none; refused when neither the bin length nor the altitude is known.
     bool exportNormalPoints(const QString& path, QString* error) const;
 
     bool waitIdle(int timeoutMs);
@@ -128,13 +133,17 @@ private:
     void passOpened();
     void resetPassErrors();
     bool loadSelected(QString* error);
+    bool showOpened(core::slr::OpenedPass o, QString* error);
+    /// Every export: the core's products writer (stagePassProducts), as the CLI writes them.
+    bool exportProducts(const core::slr::PassProductPaths& paths, QString* error) const;
 
     core::slr::PassData m_pass;
     QString m_path, m_passProblem;
     int m_selected = -1;
     QHash<int, QString> m_passErrors;
     std::shared_ptr<const core::slr::CrdReadResult> m_crd;
-    std::shared_ptr<const core::slr::PassSources> m_sources;
+    core::slr::SlrSetup m_setup;        ///< the sources as read (file, CPF, SINEX)
+    core::slr::PassSettings m_settings; ///< the last run's resolved parameters (what the exports check)
     std::vector<core::slr::PassSummary> m_passes;
     std::vector<std::string> m_warnings;
     std::vector<uint8_t> m_truth;

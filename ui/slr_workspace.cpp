@@ -582,7 +582,7 @@ bool SlrWorkspace::setSinex(const QString& path, QString* error) {
 SlrAllPassesDialog* SlrWorkspace::screenAllPasses() {
     if (!m_controller->crd()) return nullptr;
     if (m_all) m_all->deleteLater();
-    m_all = new SlrAllPassesDialog(m_controller, m_controller->params(), this);
+    m_all = new SlrAllPassesDialog(m_controller, m_controller->presetFile(), this);
     m_all->setAttribute(Qt::WA_DeleteOnClose);
     connect(m_all, &SlrAllPassesDialog::openPass, this, [this](int index) {
         m_controller->selectPass(index, nullptr);

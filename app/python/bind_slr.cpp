@@ -3,6 +3,7 @@
 // pass's own TOF trend), the settings of a pass (passSettings: preset, normal-point context),
 // the task (PassTask: screening, post-fit, normal points, judgeRun) and its writers
 // (core/slr/pass_output.hpp). Nothing here computes: the CLI and the workbench call the same.
+#include <atomic>
 #include <memory>
 
 #include "bind.hpp"
@@ -16,6 +17,8 @@
 #include "core/slr/screen_auto.hpp"
 #include "core/slr/sinex.hpp"
 #include "core/slr/slr_params.hpp"
+#include "core/slr/slr_run.hpp"
+#include "core/slr/station_day.hpp"
 
 namespace lwb::py {
 
@@ -49,6 +52,26 @@ struct PassRun {
     slr::PassRunResult r;
 };
 
+// The core's error as Python's: a usage error (an option, a block that is not a pass) is a
+// ParameterError, anything else laserwb.Error.
+[[noreturn]] void raise(const slr::SlrError& e) {
+    if (e.usage) throw ParameterError(e.message);
+    throw Error(e.message);
+}
+
+// The core's set-up of `s`, with the GIL released (it reads files).
+slr::SlrSetup setUp(const slr::SlrSources& s) {
+    slr::SlrSetup setup;
+    slr::SlrError e;
+    bool ok;
+    {
+        py::gil_scoped_release nogil;
+        ok = slr::setUpSlrRun(s, &setup, &e);
+    }
+    if (!ok) raise(e);
+    return setup;
+}
+
 // A reader's result for `file`, read with the GIL released; raises with the core's message.
 template <class R, class F>
 R readReleased(const std::string& file, F read) {
@@ -64,108 +87,136 @@ R readReleased(const std::string& file, F read) {
 py::dict summaryDict(const slr::PassSummary& s) {
     return py::dict("pass_number"_a = s.index + 1, "satellite"_a = s.satellite, "ilrs_id"_a = s.ilrsId, "station"_a = s.station,
                     "start"_a = s.start, "end"_a = s.end, "ranges"_a = s.ranges, "normal_points"_a = s.normalPoints,
-                    "data_type"_a = s.dataType, "problem"_a = s.problem);
+                    "data_type"_a = s.dataType, "problem"_a = s.problem, "status"_a = slr::blockStatus(s).status);
 }
 
 std::string fsPath(const py::object& o) { return py::str(py::module_::import("os").attr("fspath")(o)); }
 
+// The default of run(threads=None): set_search_threads.
+std::atomic<int> gDefaultSearchThreads{0};
+
+int threadCount(const py::object& threads) {
+    if (threads.is_none()) return gDefaultSearchThreads.load();
+    if (!py::isinstance<py::int_>(threads)) throw py::type_error("threads must be an int (0: every core)");
+    const long long n = threads.cast<long long>();
+    if (n < 0 || n > 256) throw py::value_error("threads must be in [0, 256] (0: every core), not " + std::to_string(n));
+    return static_cast<int>(n);
+}
+
 Pass loadPass(const py::object& path, const py::object& passNumber, const py::object& cpf, const py::object& stations) {
-    slr::PassInputParams in;
+    // The sources as the CLI gathers them from its flags; the core reads, chooses and loads.
+    slr::SlrSources src;
+    src.input = fsPath(path);
     // (stations alone give no O-C: run() takes them for day or night, as the CLI's --stations)
     if (!cpf.is_none()) {
         if (stations.is_none()) throw ParameterError("cpf and stations go together (O-C from the prediction needs both)");
-        in.cpfPath = fsPath(cpf);
-        in.sinexPath = fsPath(stations);
+        src.cpf = fsPath(cpf);
+        src.stations = fsPath(stations);
     }
-    const std::string input = fsPath(path);
-    const int index = passNumber.is_none() ? -1 : passNumber.cast<int>() - 1;
-    if (!passNumber.is_none() && index < 0) throw ParameterError("pass_number counts from 1");
-    slr::PassInputResult loaded;
+    if (!passNumber.is_none()) {
+        if (!py::isinstance<py::int_>(passNumber)) throw py::type_error("pass_number must be an int (from 1)");
+        const long long k = passNumber.cast<long long>();
+        if (k < 1 || k > 1000000) throw ParameterError("pass_number counts from 1 (at most 1000000), not " + std::to_string(k));
+        src.passNumber = static_cast<int>(k);
+    }
+    const slr::SlrSetup setup = setUp(src);
+    slr::OpenedPass opened;
     {
         py::gil_scoped_release nogil;
-        loaded = slr::loadPass(input, index, in);
+        opened = slr::openPass(setup);
     }
-    check(loaded.ok, named(input, loaded.error));
-    // A record of the pass the reader had to skip: its points are incomplete and every writer refuses it.
-    check(loaded.pass.damaged.empty(), loaded.pass.damaged + "; nothing written");
-    Pass p;
-    p.data = std::make_shared<const slr::PassData>(std::move(loaded.pass));
-    p.warnings = loaded.warnings;
-    return p;
+    if (!opened.ok) raise(opened.error);
+    return Pass{opened.pass, opened.warnings};
 }
 
 PassRun runPass(const Pass& pass, const py::object& params, const py::object& preset, const py::object& satellite,
-                const py::object& stations) {
-    // The settings as the CLI makes them: its defaults, the preset and the normal-point context of
-    // the pass (passSettings), then the analyst's own (a SlrParams as --config, a dict as --set).
-    std::vector<slr::SatellitePreset> presets;
-    if (!preset.is_none()) {
-        const std::string file = fsPath(preset);
-        const slr::PresetsResult pr = slr::loadPresets(file);
-        check(pr.ok, named(file, pr.error));
-        presets = pr.presets;
-    }
-    slr::SinexReadResult snx;
-    if (!stations.is_none()) {
-        const std::string file = fsPath(stations);
-        snx = slr::readSinex(file);
-        check(snx.ok, named(file, snx.error));
-    }
-    PassRun run;
-    run.pass = pass.data;
-    std::string err;
-    const std::string sat = satellite.is_none() ? std::string() : std::string(py::str(satellite));
-    if (!slr::passSettings(*pass.data, slr::commandDefaults(), preset.is_none() ? nullptr : &presets, sat,
-                           snx.ok ? &snx.file : nullptr, &run.settings, &err))
-        throw Error(fsPath(preset) + ": " + err);
-    const slr::PostfitParams fromPass = run.settings.params.postfit;
+                const py::object& stations, const py::object& threads) {
+    // The sources of the run as the CLI gathers them: the preset file and its satellite, the
+    // station file, the analyst's own parameters (a SlrParams as --config, a dict as --set); the
+    // core resolves them over the pass in the one order (core resolvePassParams).
+    slr::SlrSources src;
+    src.input = pass.data->source;
+    if (!preset.is_none()) src.presets = fsPath(preset);
+    if (!satellite.is_none()) src.satellite = std::string(py::str(satellite));
+    if (!stations.is_none()) src.stations = fsPath(stations);
     if (py::isinstance<slr::SlrParams>(params)) {
-        std::string e;
-        const slr::SlrParams given = params.cast<slr::SlrParams>();
-        if (!slr::slrSchema().fromJson(slr::slrSchema().toJson(given), &run.settings.params, &e)) throw ParameterError(e);
+        src.config = slr::slrSchema().toJson(params.cast<slr::SlrParams>());
     } else if (py::isinstance<py::dict>(params)) {
-        applyDict(slr::slrSchema(), params.cast<py::dict>(), &run.settings.params);
+        for (const auto& kv : params.cast<py::dict>()) {
+            const std::string key = py::str(kv.first);
+            src.set.push_back({key, valueText(kv.second), key});
+        }
     } else if (!params.is_none()) {
         throw py::type_error("params must be None, a dict {key: value} or laserwb.slr.SlrParams");
     }
-    slr::keepPassContext(fromPass, &run.settings.params.postfit);
-    if (const std::string e = slr::validate(run.settings.params.screen); !e.empty())
-        throw ParameterError((run.settings.presetName.empty() ? std::string() : "preset " + run.settings.presetName + ": ") + e);
+    src.searchThreads = threadCount(threads);
+    const slr::SlrSetup setup = setUp(src);
+    PassRun run;
+    run.pass = pass.data;
+    slr::SlrError e;
+    if (!slr::resolvePassParams(setup, *pass.data, &run.settings, &e)) raise(e);
     {
         py::gil_scoped_release nogil;
-        run.r = slr::runPass(*pass.data, run.settings.params);
+        run.r = slr::runOpenedPass(*pass.data, run.settings, setup);
     }
-    const std::string what = pass.data->hasCrd ? pass.data->source + " pass " + std::to_string(pass.data->passIndex + 1)
-                                               : pass.data->source;
-    check(run.r.ok, what + ": " + run.r.error);
+    check(run.r.ok, slr::passName(*pass.data) + ": " + run.r.error);
     return run;
 }
 
-// The products of a run as the one-pass CLI writes them, all or nothing (core::OutputSet).
+// The products of a run as the one-pass CLI writes them, all or nothing (core stagePassProducts).
+// A station's file of passes into `outDir` (core runStationDay), as laserwb-cli slr --all-passes
+// writes it: one dict per block (summary.csv's columns, as text).
+py::list processFile(const py::object& path, const py::object& outDir, const py::object& params, const py::object& preset,
+                     const py::object& satellite, const py::object& cpf, const py::object& stations, const py::object& threads) {
+    slr::SlrSources src;
+    src.input = fsPath(path);
+    if (!preset.is_none()) src.presets = fsPath(preset);
+    if (!satellite.is_none()) src.satellite = std::string(py::str(satellite));
+    if (!cpf.is_none()) src.cpf = fsPath(cpf);
+    if (!stations.is_none()) src.stations = fsPath(stations);
+    if (py::isinstance<slr::SlrParams>(params)) {
+        src.config = slr::slrSchema().toJson(params.cast<slr::SlrParams>());
+    } else if (py::isinstance<py::dict>(params)) {
+        for (const auto& kv : params.cast<py::dict>()) {
+            const std::string key = py::str(kv.first);
+            src.set.push_back({key, valueText(kv.second), key});
+        }
+    } else if (!params.is_none()) {
+        throw py::type_error("params must be None, a dict {key: value} or laserwb.slr.SlrParams");
+    }
+    const int nThreads = threadCount(threads);
+    const slr::SlrSetup setup = setUp(src);
+    slr::DayOptions opt;
+    opt.outDir = fsPath(outDir);
+    opt.threads = nThreads;
+    opt.provenance = slr::slrProvenance(setup, true);
+    slr::DayResult r;
+    {
+        py::gil_scoped_release nogil;
+        r = slr::runStationDay(setup, opt);
+    }
+    if (!r.ok) raise(r.error);
+    py::list rows;
+    for (const slr::DayRow& row : r.rows) {
+        py::dict d;
+        for (const slr::DayColumn& c : slr::dayColumns()) d[py::str(c.name)] = c.cell(row);
+        rows.append(d);
+    }
+    return rows;
+}
+
 void writeProducts(const PassRun& run, const std::string& csv, const std::string& crd, const std::string& npt) {
     const slr::PassData& pass = *run.pass;
-    const slr::PassRunResult& r = run.r;
     core::OutputSet outs;
     outs.addInput(pass.source);
     for (const std::string* p : {&csv, &crd, &npt})
         if (!p->empty()) outs.addOutput(*p);
     if (csv.empty() && crd.empty() && npt.empty()) throw ParameterError("no output: give csv, crd or npt");
     if (!outs.check()) throw Error(outs.error());
-    if ((!crd.empty() || !npt.empty()) && !pass.hasCrd)
-        throw ParameterError(std::string(!crd.empty() ? "crd" : "npt") + " needs a CRD input (its headers and records are written back); " +
-                             pass.source + " is an O-C table");
-    if (!npt.empty() && !(run.settings.params.postfit.binLengthS > 0) && !(run.settings.params.postfit.altitudeKm > 0))
-        throw ParameterError("no normal points: the satellite's altitude is unknown (give postfit.bin_length_s or a preset with altitude_km)");
-    const slr::DeliveredNormalPoints nps = slr::deliveredNormalPoints(r);
+    const slr::PassProductPaths paths{csv, crd, npt, true};
+    if (const std::string why = slr::productsProblem(pass, run.settings, paths); !why.empty()) throw ParameterError(why);
     std::string err;
-    if (!csv.empty() && !slr::writeScreenCsv(outs.stagingPath(csv), pass, r.screen, r.accepted, r.postOk ? &r.post : nullptr, &err))
-        throw Error(named(csv, outs.unstaged(err)));
-    if (!crd.empty() && !slr::writeScreenedCrd(outs.stagingPath(crd), pass, r.accepted, &err))
-        throw Error(named(crd, outs.unstaged(err)));
-    if (!npt.empty() &&
-        !slr::writeNormalPointCrd(outs.stagingPath(npt), pass, nps.points, &err,
-                                  slr::normalPointProduct(r.postOk ? &r.post : nullptr, &r.screen, nps.noneReason)))
-        throw Error(named(npt, outs.unstaged(err)));
+    if (!slr::stagePassProducts(outs, pass, run.r, paths, nullptr, &err)) throw Error(err);
     check(outs.commit(), outs.error());
 }
 
@@ -297,14 +348,23 @@ void bindSlr(py::module_& top) {
           "O-C CSV. With cpf (a file or a folder) and stations (SINEX), O-C from the prediction; without,\n"
           "O-C against the pass's own TOF trend. Bad files raise laserwb.Error with FILE:LINE.");
     m.def("run", &runPass, py::arg("pass_"), py::arg("params") = py::none(), py::arg("preset") = py::none(),
-          py::arg("satellite") = py::none(), py::arg("stations") = py::none(),
+          py::arg("satellite") = py::none(), py::arg("stations") = py::none(), py::arg("threads") = py::none(),
           "Screens a Pass, fits the trend and forms the normal points (PassTask), with the settings\n"
           "laserwb-cli slr makes: its defaults, the preset file's entry for the satellite (preset,\n"
           "satellite), the normal-point context (stations: SINEX for day or night), then params (a\n"
-          "SlrParams as --config, or {key: value} as --set). The GIL is released while it runs.");
-    m.def("set_search_threads", [](int n) { slr::setScaleSearchThreads(n); }, py::arg("n"),
-          "Threads of the automatic scale search (0: every core, the default). The answer is the same\n"
-          "for any number; a Dask worker running one pass per task sets 1 (as slr --all-passes does).");
+          "SlrParams as --config, or {key: value} as --set). threads: the scale search's threads (0: every\n"
+          "core; None: set_search_threads's default); the answer is the same for any number. The GIL is\n"
+          "released while it runs.");
+    m.def("set_search_threads", [](const py::object& n) { gDefaultSearchThreads.store(threadCount(n)); }, py::arg("n"),
+          "The default of run(threads=None): threads of the automatic scale search, 0..256 (0: every core,\n"
+          "the default). The answer is the same for any number; a Dask worker running one pass per task\n"
+          "sets 1 (as slr --all-passes does).");
+    m.def("process_file", &processFile, py::arg("path"), py::arg("out_dir"), py::arg("params") = py::none(),
+          py::arg("preset") = py::none(), py::arg("satellite") = py::none(), py::arg("cpf") = py::none(),
+          py::arg("stations") = py::none(), py::arg("threads") = 0,
+          "A station's file of passes, every block, into out_dir: the products of laserwb-cli slr --all-passes\n"
+          "--out-dir OUT_DIR, byte for byte (passNNN.csv/.frd/.npt, normal_points.npt, summary.csv,\n"
+          "provenance.json). Returns one dict per block with summary.csv's columns (text).");
     m.def("default_params", [] { return slr::commandDefaults(); }, "The defaults of laserwb-cli slr.");
 }
 

@@ -482,4 +482,14 @@ void OutputSet::abandon() {
     m_checked = false;
 }
 
+FolderForOutputs::FolderForOutputs(std::string dir) : m_dir(std::move(dir)) {
+    m_created = ::mkdir(m_dir.c_str(), 0755) == 0;
+    struct stat st {};
+    m_ok = ::stat(m_dir.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+FolderForOutputs::~FolderForOutputs() {
+    if (m_created && !m_keep) ::rmdir(m_dir.c_str());  // only succeeds when empty
+}
+
 }  // namespace lwb::core

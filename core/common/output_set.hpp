@@ -104,4 +104,21 @@ bool sameFile(const std::string& a, const std::string& b);
 /// (SIGKILL) just before renaming that file. Returns the phase's NAME or "".
 std::string faultInjectedName(const char* phase);
 
+/// An output folder for a run that writes several files into it: created when missing, and
+/// removed again (when still empty) unless keep() is called, so a failed run leaves nothing.
+class FolderForOutputs {
+public:
+    explicit FolderForOutputs(std::string dir);
+    ~FolderForOutputs();
+    FolderForOutputs(const FolderForOutputs&) = delete;
+    FolderForOutputs& operator=(const FolderForOutputs&) = delete;
+    bool ok() const { return m_ok; }
+    void keep() const { m_keep = true; }
+
+private:
+    std::string m_dir;
+    bool m_ok = false, m_created = false;
+    mutable bool m_keep = false;
+};
+
 }  // namespace lwb::core

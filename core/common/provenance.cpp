@@ -50,4 +50,35 @@ bool provenanceText(const Provenance& p, const std::vector<std::string>& outputs
     return true;
 }
 
+namespace {
+std::string folderOf(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+}  // namespace
+
+std::string recordedName(const std::string& output, const std::string& sidecar) {
+    if (folderOf(output) == folderOf(sidecar)) return output.substr(folderOf(output).size());
+    return output.find('/') == std::string::npos ? "./" + output : output;
+}
+
+bool stageProvenance(OutputSet& outs, const Provenance& p, const std::vector<std::string>& outputs,
+                     const std::string& sidecar, std::string* error) {
+    std::vector<std::string> staged, names;
+    for (const auto& o : outputs) {
+        staged.push_back(outs.stagingPath(o));
+        names.push_back(recordedName(o, sidecar));
+    }
+    std::string text;
+    if (!provenanceText(p, names, staged, &text, error)) {
+        *error = outs.unstaged(*error);
+        return false;
+    }
+    if (!writeFileAtomic(outs.stagingPath(sidecar), text, error)) {
+        *error = outs.unstaged(*error);
+        return false;
+    }
+    return true;
+}
+
 }  // namespace lwb::core

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/common/json.hpp"
+#include "core/common/output_set.hpp"
 
 namespace lwb::core {
 
@@ -33,5 +34,15 @@ inline std::string provenancePathFor(const std::string& output) { return output 
 /// listed without a checksum (null). False with *error when a file cannot be read.
 bool provenanceText(const Provenance& p, const std::vector<std::string>& outputs, const std::vector<std::string>& files,
                     std::string* text, std::string* error);
+
+/// How a sidecar names an output: by its file name when they share a folder (so that the folder
+/// can be moved or copied whole), else as given ("./" before a bare name).
+std::string recordedName(const std::string& output, const std::string& sidecar);
+
+/// Stages the provenance sidecar `sidecar` of the run's outputs `outputs` (already staged in
+/// `outs`; `sidecar` added to it before check()). An output in the sidecar's folder is named
+/// by its file name (the folder can be moved whole), another as given. False with *error.
+bool stageProvenance(OutputSet& outs, const Provenance& p, const std::vector<std::string>& outputs,
+                     const std::string& sidecar, std::string* error);
 
 }  // namespace lwb::core

@@ -28,6 +28,13 @@ namespace lwb::core {
 
 enum class FieldKind { Real, Integer, Boolean, Choice, Text, Range };
 
+/// One parameter set by name, as a front end gathers it (the CLI's --set KEY=VALUE and its named
+/// aliases, Python's {key: value}) for the core to apply (Schema::setFromText) in order.
+struct ParamSetting {
+    std::string key, value;
+    std::string label;  ///< how messages name it ("--cos-c 1.2", "--set screen.cosine_c=1.2"); "" = "KEY=VALUE"
+};
+
 /// A valid interval: [lo, hi] with either end open.
 struct Interval {
     double lo = -INFINITY, hi = INFINITY;

@@ -906,6 +906,7 @@ CrdReadResult parseCrdText(std::string_view given, std::string* owned, const std
             return res;
         }
         sink.close();
+        for (CrdPass& p : res.file.passes) p.crlf = res.file.crlf;
         res.ok = true;
     } catch (const std::exception& e) {
         res = CrdReadResult();
@@ -991,6 +992,7 @@ CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, 
         auto handOut = [&]() {
             for (CrdPass& p : splitter.takeClosed()) {
                 parseOnePass(p, p.ordinal - 1, src, &sink);
+                p.crlf = held.file.crlf;
                 ++out.passes;
                 if (!onPass(std::move(p))) return false;
             }
@@ -1064,6 +1066,24 @@ std::string formatCrd(const CrdFile& file) {
         out += eol;
     }
     return out;
+}
+
+CrdRecord trailerFor(const CrdPass& pass) {
+    bool lower = false;
+    for (const CrdRecord& r : pass.records)
+        if (r.id == "h4") {
+            lower = !r.text.empty() && r.text[0] == 'h';
+            break;
+        }
+    return CrdRecord{lower ? "h9" : "H9", "h9", 0};
+}
+
+CrdFile passAlone(const CrdPass& pass) {
+    CrdFile f;
+    f.crlf = pass.crlf;
+    f.passes.push_back(pass);
+    f.trailer.push_back(trailerFor(pass));
+    return f;
 }
 
 bool writeCrd(const std::string& path, const CrdFile& file, std::string* error) {

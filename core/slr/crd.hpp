@@ -205,6 +205,7 @@ struct CrdPass {
     bool inheritsHeaders = false;    ///< true when H1/H2/H3 came from an earlier block of the file
     bool endedWithH8 = false;        ///< false when the block was closed by a new H1/H4 or the end of file
     size_t ordinal = 0;              ///< its place among the file's passes, 1-based (0: made, not read)
+    bool crlf = false;               ///< its file used CRLF line ends (a pass written alone keeps them)
 
     /// Every line of the block in order: comments and H1..H3 before the H4, the H4, configs,
     /// data, 9x user records, the H8. Writing these back reproduces the block.
@@ -282,6 +283,13 @@ CrdReadResult readCrd(const std::string& path, const CrdReadParams& params = {},
 
 /// The file as text: every record of every pass, then the trailer.
 std::string formatCrd(const CrdFile& file);
+/// One pass as a file of its own, as every product of a pass is written (the flagged block, its
+/// normal points; one pass or a station's file of passes alike): the pass's records, the line
+/// ends of the file it came from, and an H9 written in the case of the pass's own H4 ("h4" ->
+/// "h9"). Built from the pass alone, so a pass read whole or streamed gives the same bytes.
+CrdFile passAlone(const CrdPass& pass);
+/// The H9 of passAlone (its case from the pass's H4).
+CrdRecord trailerFor(const CrdPass& pass);
 /// Writes formatCrd(file) atomically. False with *error on failure.
 bool writeCrd(const std::string& path, const CrdFile& file, std::string* error);
 

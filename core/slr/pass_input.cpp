@@ -352,6 +352,18 @@ PassInputResult passFromOc(std::vector<double> t, std::vector<double> oc, const 
     return r;
 }
 
+BlockStatus blockStatus(const PassSummary& s) {
+    // By the records first: a block of type-10 records only is full rate even when its H4 says
+    // data type 1 (the shared beaconc_20070511.frd: three such blocks of the station's own
+    // full-rate data).
+    if (s.normalPoints > 0 && (s.dataType == 1 || s.ranges == 0))
+        return {"station normal points", std::to_string(s.normalPoints) + " normal-point records of the station's own"};
+    if (s.dataType == 2) return {"skipped", "sampled engineering data (H4 data type 2)"};
+    if (s.problem.empty() && s.ranges < kMinPassPoints)
+        return {"skipped", std::to_string(s.ranges) + " full-rate records; a pass needs at least " + std::to_string(kMinPassPoints)};
+    return {};
+}
+
 std::vector<PassSummary> summarisePasses(const CrdFile& file) {
     std::vector<PassSummary> v;
     for (size_t i = 0; i < file.passes.size(); ++i) v.push_back(summarise(file.passes[i], int(i)));
@@ -360,27 +372,25 @@ std::vector<PassSummary> summarisePasses(const CrdFile& file) {
 
 namespace {
 
-// The pass to read: the one asked for, or the first with full-rate records; it must be usable
-// and hold at least kMinPassPoints of them. -1 with r->error (and r->passes listing the file) when not.
+// The pass to read: the one asked for, or the first pass to screen (isPassToScreen: the one
+// rule every front end and batch shares). -1 with r->error (and r->passes listing the file)
+// when there is none, or when the one asked for cannot be used or is not a pass (r->notAPass).
 int choosePass(const CrdReadResult& crd, const std::string& path, int passIndex, PassInputResult* r) {
     PassInputResult& res = *r;
     if (passIndex < 0) {
         for (size_t i = 0; i < crd.file.passes.size() && passIndex < 0; ++i)
-            if (!crd.file.passes[i].ranges.empty()) passIndex = int(i);
+            if (isPassToScreen(summarise(crd.file.passes[i], int(i)))) passIndex = int(i);
         if (passIndex < 0) {
-            // Say what the file does hold: normal-point passes, blocks that could not be read.
-            size_t np = 0;
-            std::string bad;
+            // Say what the file does hold, block by block.
+            std::string held;
             for (size_t i = 0; i < crd.file.passes.size(); ++i) {
                 const CrdPass& q = crd.file.passes[i];
-                if (!q.problem.empty()) bad += "\n  pass " + std::to_string(i + 1) + " cannot be used: " + q.problem;
-                else np += !q.normalPoints.empty();
+                const size_t number = q.ordinal ? q.ordinal : i + 1;
+                const BlockStatus b = blockStatus(summarise(q, int(i)));
+                held += "\n  pass " + std::to_string(number) +
+                        (!q.problem.empty() ? " cannot be used: " + q.problem : ": " + b.status + " (" + b.reason + ")");
             }
-            res.error = path + ": no full-rate pass (no readable type-10 records) to screen" +
-                        (np ? "; the file holds " + std::to_string(np) + " normal-point pass" + (np > 1 ? "es" : "") +
-                                  " (type 11), which cannot be screened"
-                            : std::string()) +
-                        bad;
+            res.error = path + ": no full-rate pass to screen in the file:" + held;
             res.error = withWarnings(res.error, res.warnings);
             res.passes = summarisePasses(crd.file);
             return -1;
@@ -400,11 +410,10 @@ int choosePass(const CrdReadResult& crd, const std::string& path, int passIndex,
                                  res.warnings);
         return -1;
     }
-    if (pass.ranges.size() < kMinPassPoints) {
-        res.error = withWarnings(path + ": pass " + std::to_string(number) + " holds " +
-                                     std::to_string(pass.ranges.size()) + " full-rate records; a pass needs at least " +
-                                     std::to_string(kMinPassPoints),
-                                 res.warnings);
+    if (const BlockStatus b = blockStatus(summarise(pass, passIndex)); !b.status.empty()) {
+        res.notAPass = true;
+        res.passes = summarisePasses(crd.file);
+        res.error = path + ": pass " + std::to_string(number) + " is not a pass to screen: " + b.status + " (" + b.reason + ")";
         return -1;
     }
     return passIndex;

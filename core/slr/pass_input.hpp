@@ -55,6 +55,22 @@ struct PassSummary {
 /// is listed and skipped, not failed.
 inline constexpr size_t kMinPassPoints = 5;
 
+/// What a block of a CRD file is called when a file's passes are screened (laserwb-cli slr
+/// --all-passes and the workbench's "Screen all passes" table alike).
+struct BlockStatus {
+    std::string status;  ///< "" (a pass to screen), "station normal points", "skipped", "ok", "no signal", "doubtful"
+    std::string reason;
+};
+/// Before screening: the station's own normal points (type-11 records in a block of H4 data type
+/// 1, or only type-11 records; a data-type-1 block of type-10 records only is full rate),
+/// sampled engineering data (data type 2) and blocks of fewer than kMinPassPoints full-rate
+/// records are not passes to screen; anything else is ({"", ""}).
+BlockStatus blockStatus(const PassSummary& s);
+
+/// The one rule for what a pass is, used by the default pass choice, --pass, the workbench's
+/// pass list and every batch: a block whose blockStatus is "" and that the reader could use.
+inline bool isPassToScreen(const PassSummary& s) { return s.problem.empty() && blockStatus(s).status.empty(); }
+
 struct PassData {
     std::string source;            ///< file the pass came from
     int passIndex = 0;
@@ -84,6 +100,9 @@ struct PassInputResult {
     std::vector<std::string> warnings;
     std::vector<PassSummary> passes;  ///< every pass of the file (one entry for an O-C table)
     PassData pass;                    ///< the loaded pass
+    /// The block asked for is not a pass to screen (the station's normal points, engineering
+    /// data, too few records; isPassToScreen): the caller's choice, not the file's fault (exit 2).
+    bool notAPass = false;
 };
 
 /// True when the file is to be read as CRD, by its content first: a first record (after blank
@@ -96,7 +115,7 @@ bool isCrdFile(const std::string& path);
 /// Reads params.cpfPath — a CPF file, or a folder whose readable CPF files are all kept — and
 /// params.sinexPath. False with *error.
 bool readPassSources(const PassInputParams& params, PassSources* out, std::string* error);
-/// One pass of an already-read CRD file (passIndex −1: the first with full-rate records). O-C
+/// One pass of an already-read CRD file (passIndex −1: the first pass to screen, isPassToScreen). O-C
 /// against the prediction of `sources` that fits the pass (satellite ids and time span; picked
 /// from a folder), else against the pass's own TOF trend (see PassInputParams::cpfFallback).
 /// The pass shares `crd` (no copy); PassInputResult::passes is filled only when the pass cannot be
@@ -112,7 +131,7 @@ PassInputResult passFromOc(std::vector<double> t, std::vector<double> oc, const 
 /// One summary per pass of a CRD file.
 std::vector<PassSummary> summarisePasses(const CrdFile& file);
 
-/// Loads pass `passIndex` (0-based; -1 = the first full-rate pass) of a CRD file, or an O-C CSV
+/// Loads pass `passIndex` (0-based; -1 = the first pass to screen) of a CRD file, or an O-C CSV
 /// (told apart by isCrdFile). With a CPF, the CPF must be for the pass's satellite (the ids of
 /// the CPF H2 and the CRD H3 that both give must agree). An error names what is wrong and ends
 /// with the first of the readers' warnings (the damaged lines that may explain it).

@@ -210,7 +210,9 @@ bool normalPointPass(const PassData& pass, const std::vector<NormalPoint>& nps, 
         c.returnRatePct = np.returnRatePct;
         recs.push_back(c);
     }
-    return makeNormalPointPass(full, recs, out, error, product);
+    if (!makeNormalPointPass(full, recs, out, error, product)) return false;
+    if (out) out->crlf = full.crlf;
+    return true;
 }
 
 bool writeNormalPointCrd(const std::string& path, const PassData& pass, const std::vector<NormalPoint>& nps,
@@ -219,15 +221,19 @@ bool writeNormalPointCrd(const std::string& path, const PassData& pass, const st
     if (!writablePassOutput(path, pass, error)) return false;
     CrdPass np;
     if (!normalPointPass(pass, nps, product, &np, error)) return false;
-    return writeNormalPointFile(path, {std::move(np)}, *pass.crd, error);
+    return writeNormalPointFile(path, {std::move(np)}, error);
 }
 
-bool writeNormalPointFile(const std::string& path, std::vector<CrdPass> passes, const CrdFile& like, std::string* error) {
+bool writeNormalPointFile(const std::string& path, std::vector<CrdPass> passes, std::string* error) {
+    if (passes.empty()) {
+        *error = path + ": no normal-point block to write";
+        return false;
+    }
     CrdFile out;
     out.path = path;
-    out.crlf = like.crlf;
+    out.crlf = passes.front().crlf;
+    out.trailer.push_back(trailerFor(passes.front()));
     out.passes = std::move(passes);
-    out.trailer = like.trailer;
     return writeCrd(path, out, error);
 }
 

@@ -39,7 +39,8 @@ bool writeNormalPointCrd(const std::string& path, const PassData& pass, const st
 /// normal-point file of a day: writeNormalPointFile).
 bool normalPointPass(const PassData& pass, const std::vector<NormalPoint>& nps, const NormalPointProduct& product, CrdPass* out,
                      std::string* error);
-/// Normal-point blocks as one CRD file (line ends and trailer like `like`, the file they came from).
-bool writeNormalPointFile(const std::string& path, std::vector<CrdPass> passes, const CrdFile& like, std::string* error);
+/// Normal-point blocks as one CRD file, with the line ends and the H9 of the first block as
+/// passAlone writes them (crd.hpp): the same bytes whether the pass was read whole or streamed.
+bool writeNormalPointFile(const std::string& path, std::vector<CrdPass> passes, std::string* error);
 
 }  // namespace lwb::core::slr

@@ -15,10 +15,6 @@ SlrParams commandDefaults() {
     return p;
 }
 
-void keepPassContext(const PostfitParams& fromPass, PostfitParams* pp) {
-    if (!(pp->altitudeKm > 0)) pp->altitudeKm = fromPass.altitudeKm;
-    if (!(pp->fireRateHz > 0)) pp->fireRateHz = fromPass.fireRateHz;
-}
 
 DeliveredNormalPoints deliveredNormalPoints(const PassRunResult& r) {
     DeliveredNormalPoints d;
@@ -32,40 +28,38 @@ DeliveredNormalPoints deliveredNormalPoints(const PassRunResult& r) {
     return d;
 }
 
+bool applyPreset(const PassData& pass, const std::vector<SatellitePreset>& presets, const std::string& satellite,
+                 SlrParams* params, std::string* presetName, std::string* error) {
+    const SatellitePreset* p =
+        satellite.empty() ? findPreset(presets, pass.satellite, pass.ilrsId) : findPreset(presets, satellite, satellite);
+    if (!p) {
+        std::string have;
+        const size_t shown = std::min<size_t>(presets.size(), 20);  // a long file is not dumped whole
+        for (size_t k = 0; k < shown; ++k) {
+            const auto& q = presets[k];
+            have += (have.empty() ? "" : ", ") + printableExcerpt(q.name.empty() ? q.ilrsId : q.name) +
+                    (q.ilrsId.empty() || q.name.empty() ? "" : " (" + printableExcerpt(q.ilrsId) + ")");
+        }
+        if (presets.size() > shown) have += ", ... and " + std::to_string(presets.size() - shown) + " more";
+        const std::string who =
+            !satellite.empty() ? "\"" + satellite + "\""
+            : pass.satellite.empty() && pass.ilrsId.empty()
+                ? std::string("(none: an O-C table names no satellite; give --satellite NAME)")
+                : "\"" + pass.satellite + "\"" + (pass.ilrsId.empty() ? "" : " (ILRS id " + pass.ilrsId + ")");
+        *error = "no preset for satellite " + who + "; the file holds: " + (have.empty() ? "no entries" : have);
+        return false;
+    }
+    *presetName = p->name.empty() ? p->ilrsId : p->name;
+    *params = {p->screen, p->postfit};
+    return true;
+}
+
 bool passSettings(const PassData& pass, const SlrParams& base, const std::vector<SatellitePreset>* presets,
                   const std::string& satellite, const SinexFile* stations, PassSettings* out, std::string* error) {
     PassSettings s;
     s.params = base;
-    s.params.postfit.altitudeKm = pass.altitudeKm;
-    if (presets) {
-        const SatellitePreset* p =
-            satellite.empty() ? findPreset(*presets, pass.satellite, pass.ilrsId) : findPreset(*presets, satellite, satellite);
-        if (!p) {
-            std::string have;
-            const size_t shown = std::min<size_t>(presets->size(), 20);  // a long file is not dumped whole
-            for (size_t k = 0; k < shown; ++k) {
-                const auto& q = (*presets)[k];
-                have += (have.empty() ? "" : ", ") + printableExcerpt(q.name.empty() ? q.ilrsId : q.name) +
-                        (q.ilrsId.empty() || q.name.empty() ? "" : " (" + printableExcerpt(q.ilrsId) + ")");
-            }
-            if (presets->size() > shown) have += ", ... and " + std::to_string(presets->size() - shown) + " more";
-            const std::string who =
-                !satellite.empty() ? "\"" + satellite + "\""
-                : pass.satellite.empty() && pass.ilrsId.empty()
-                    ? std::string("(none: an O-C table names no satellite; give --satellite NAME)")
-                    : "\"" + pass.satellite + "\"" + (pass.ilrsId.empty() ? "" : " (ILRS id " + pass.ilrsId + ")");
-            *error = "no preset for satellite " + who + "; the file holds: " + (have.empty() ? "no entries" : have);
-            return false;
-        }
-        s.presetName = p->name.empty() ? p->ilrsId : p->name;
-        const double alt = s.params.postfit.altitudeKm;
-        s.params = {p->screen, p->postfit};
-        if (!(s.params.postfit.altitudeKm > 0)) s.params.postfit.altitudeKm = alt;
-    }
-    if (pass.hasCrd) {
-        s.notes = fillNormalPointContext(pass.crd->passes[size_t(pass.passIndex)], pass.cdpPad, stations, &s.params.postfit);
-        // (day or night unknown: postfit.day_night auto takes the day minimum, 6)
-    }
+    if (presets && !applyPreset(pass, *presets, satellite, &s.params, &s.presetName, error)) return false;
+    s.notes = passNormalPointContext(pass, stations, &s.params.postfit);
     *out = std::move(s);
     return true;
 }
@@ -250,19 +244,10 @@ std::string judgeRun(const ScreenResult& screen, size_t acceptedCount, PostfitRe
 }
 
 std::vector<std::string> passNormalPointContext(const PassData& pass, const SinexFile* stations, PostfitParams* pp) {
+    if (!(pp->altitudeKm > 0)) pp->altitudeKm = pass.altitudeKm;
     if (!pass.hasCrd || pass.passIndex < 0 || size_t(pass.passIndex) >= pass.crd->passes.size()) return {};
-    PostfitParams ctx = *pp;
-    ctx.fireRateHz = 0;
-    ctx.stationLatDeg = ctx.stationLonDeg = ctx.dayStartMjd = NAN;
-    std::vector<std::string> notes = fillNormalPointContext(pass.crd->passes[size_t(pass.passIndex)], pass.cdpPad, stations, &ctx);
-    if (!(pp->fireRateHz > 0)) pp->fireRateHz = ctx.fireRateHz;
-    if (!(pp->binLengthS > 0)) pp->binLengthS = ctx.binLengthS;
-    if (!std::isfinite(pp->stationLatDeg)) {
-        pp->stationLatDeg = ctx.stationLatDeg;
-        pp->stationLonDeg = ctx.stationLonDeg;
-        pp->dayStartMjd = ctx.dayStartMjd;
-    }
-    return notes;
+    // (day or night unknown: postfit.day_night auto takes the day minimum, 6)
+    return fillNormalPointContext(pass.crd->passes[size_t(pass.passIndex)], pass.cdpPad, stations, pp);
 }
 
 namespace {
@@ -324,15 +309,6 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
 PassRunResult runPass(const PassData& pass, const SlrParams& params, Feedback* fb) {
     // The pass is borrowed for the call (an aliasing pointer that owns nothing).
     return runTask<PassTask>({std::shared_ptr<const PassData>(std::shared_ptr<const void>(), &pass), {}}, params, fb);
-}
-
-BlockStatus blockStatus(const PassSummary& s) {
-    if (s.dataType == 1 || (s.ranges == 0 && s.normalPoints > 0))
-        return {"station normal points", std::to_string(s.normalPoints) + " normal-point records of the station's own"};
-    if (s.dataType == 2) return {"skipped", "sampled engineering data (H4 data type 2)"};
-    if (s.problem.empty() && s.ranges < kMinPassPoints)
-        return {"skipped", std::to_string(s.ranges) + " full-rate records; a pass needs at least " + std::to_string(kMinPassPoints)};
-    return {};
 }
 
 BlockStatus runStatus(const PassData& pass, const PassRunResult& r) {

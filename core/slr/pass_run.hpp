@@ -29,22 +29,22 @@ struct PassSettings {
     std::vector<std::string> notes;  ///< normal-point context: fire rate, day or night, station
 };
 
-/// The parameters for `pass` before the user's explicit options: `base`, then the satellite's
-/// entry of `presets` (looked up under `satellite` when given, else the pass's H3 name / ILRS id;
-/// no presets = none), then the normal-point context of a CRD pass (C1 fire rate; the station's
-/// position from `stations` for day or night per bin; without a station and a preset, the day
-/// minimum of 6 points). False with *error when presets are given and none is for the pass.
+/// The parameters for `pass` from `base`: the satellite's entry of `presets` (looked up under
+/// `satellite` when given, else the pass's H3 name / ILRS id; no presets = none), then what the
+/// pass tells where the parameters leave it unknown (passNormalPointContext). False with *error
+/// when presets are given and none is for the pass. Front ends do not call it: they go through
+/// core/slr/slr_run.hpp (resolvePassParams), which adds the analyst's config and settings in
+/// the same order for every one of them.
 bool passSettings(const PassData& pass, const SlrParams& base, const std::vector<SatellitePreset>* presets,
                   const std::string& satellite, const SinexFile* stations, PassSettings* out, std::string* error);
+/// The satellite's preset of `presets` over *params (the preset's screening and post-fit replace
+/// them whole), its name in *presetName; false with *error (what the file holds) when none is for the pass.
+bool applyPreset(const PassData& pass, const std::vector<SatellitePreset>& presets, const std::string& satellite,
+                 SlrParams* params, std::string* presetName, std::string* error);
 
 /// The parameters `laserwb-cli slr` and Python's laserwb.slr start from: the core's, with the
 /// multi-photon rejection of 3 sigma.
 SlrParams commandDefaults();
-
-/// What passSettings took from the pass (its altitude, the fire rate) stays where the analyst's
-/// own settings (a config, --set) leave it unknown: a config's 0 (what --print-config writes
-/// for them) is not a value, so a printed config run again gives the same run.
-void keepPassContext(const PostfitParams& fromPass, PostfitParams* pp);
 
 /// The screening against the station's filter flags (2 data, 1 noise), when every point has one.
 struct StationAgreement {
@@ -117,10 +117,10 @@ double trackSeparation(const PostfitResult& post);
 /// A doubtful result loses its normal points (*postNote says why). Returns the doubt ("" when none).
 std::string judgeRun(const ScreenResult& screen, size_t acceptedCount, PostfitResult* post, std::string* postNote);
 
-/// The normal-point context of a CRD pass, as the CLI's passSettings gives it (the C1 fire rate,
-/// the ILRS missions table's bin length, the station's position and day start from SINEX when
-/// given, else from the ILRS stations table), written over the fields of *pp that the
-/// parameters leave unknown (fire rate 0, bin length 0, station position NaN). Notes for the summary.
+/// What a pass tells, written over the fields of *pp that the parameters leave unknown: the
+/// satellite's altitude (0), the C1 fire rate (0), the ILRS missions table's bin length (0), and
+/// the station's position and day start (from SINEX when given, else the ILRS stations table).
+/// Notes for the summary.
 std::vector<std::string> passNormalPointContext(const PassData& pass, const SinexFile* stations, PostfitParams* pp);
 
 /// The post-fit's parameters for a pass: with neither a normal-point bin length nor the
@@ -166,16 +166,7 @@ struct DeliveredNormalPoints {
 };
 DeliveredNormalPoints deliveredNormalPoints(const PassRunResult& r);
 
-/// What a block of a CRD file is called when a file's passes are screened (laserwb-cli slr
-/// --all-passes and the workbench's "Screen all passes" table alike).
-struct BlockStatus {
-    std::string status;  ///< "" (a pass to screen), "station normal points", "skipped", "ok", "no signal", "doubtful"
-    std::string reason;
-};
-/// Before screening: the station's own normal points (H4 data type 1, or only type-11 records),
-/// sampled engineering data (data type 2) and blocks of fewer than kMinPassPoints full-rate
-/// records are not passes to screen; anything else is ({"", ""}).
-BlockStatus blockStatus(const PassSummary& s);
+
 /// After screening: "doubtful" (r.doubt), "no signal" (nothing accepted) or "ok" (the O-C note
 /// or the post-fit's note as the reason).
 BlockStatus runStatus(const PassData& pass, const PassRunResult& r);

@@ -103,6 +103,10 @@ struct ScreenParams {
     /// before, 0 = none. A search on an O-C flattened by that round's track starts its ladders
     /// at O-C pixels at most 4× that round's pixel (screen_auto.cpp says why).
     double previousMagOc = 0;
+    /// Internal (no schema row: it never changes the answer): threads for the automatic scale
+    /// search's independent trials, 0 = every core, 1 = none. A run setting carried with the run,
+    /// not a process global: a batch that screens passes side by side gives each pass 1.
+    int searchThreads = 0;
 };
 
 /// Empty when the parameters are valid, else what is wrong (names the parameter).

@@ -21,12 +21,10 @@ namespace lwb::core::slr {
 
 namespace {
 
-std::atomic<int> gSearchThreads{0};
-
-// The scale search's trials, side by side on the cores (setScaleSearchThreads).
+// The scale search's trials, side by side on `threads` threads (ScreenParams::searchThreads).
 template <class Job>
-void runInParallel(size_t n, Job&& job) {
-    parallelFor(n, coresFor(gSearchThreads.load()), std::forward<Job>(job));
+void runInParallel(size_t n, int threads, Job&& job) {
+    parallelFor(n, coresFor(threads), std::forward<Job>(job));
 }
 
 // Ladders of trials. Trial `step` of ladder l is an independent computation, run(l, step)
@@ -37,7 +35,7 @@ void runInParallel(size_t n, Job&& job) {
 // run before its decisions, and results past a ladder's stop are dropped. decide sees exactly
 // the trials, in the order, of running each ladder alone step by step; it runs under a lock.
 template <class T, class Run, class Decide>
-void runLadders(size_t ladders, int ahead, Run&& run, Decide&& decide) {
+void runLadders(size_t ladders, int ahead, int threads, Run&& run, Decide&& decide) {
     struct Ladder {
         int launched = 0, decided = 0;
         int limit = std::numeric_limits<int>::max();  // first step that does not exist
@@ -99,7 +97,7 @@ void runLadders(size_t ladders, int ahead, Run&& run, Decide&& decide) {
             changed.notify_all();
         }
     };
-    runOnThreads(coresFor(gSearchThreads.load()), [&](size_t) { loop(); });
+    runOnThreads(coresFor(threads), [&](size_t) { loop(); });
     if (failure) std::rethrow_exception(failure);
 }
 
@@ -140,7 +138,6 @@ std::array<double, K> quantilesOf(const std::vector<double>& v, const std::array
 
 }  // namespace
 
-void setScaleSearchThreads(int threads) { gSearchThreads.store(std::max(0, threads)); }
 
 namespace {
 // The value of the trend at x inside the pieces' span, given the last piece starting at or
@@ -600,7 +597,7 @@ private:
         for (size_t i = 0; i < scales.size(); ++i)
             usable[i] = trialParams(scales[i][0], scales[i][1], static_cast<int>(scales[i][2]), &tps[i]);
         std::vector<WindowOut> wins(scales.size() * nw);
-        runInParallel(wins.size(), [&](size_t j) {
+        runInParallel(wins.size(), params_.searchThreads, [&](size_t j) {
             if (usable[j / nw] && !cancelled(fb_)) wins[j] = runWindow(tps[j / nw], j % nw);
         });
         std::vector<Trial> out(scales.size());
@@ -671,7 +668,7 @@ private:
         std::vector<LadderState> state(ladderC.size());
         std::vector<std::vector<Trial>> done(ladderC.size());
         runLadders<Trial>(
-            ladderC.size(), 2,
+            ladderC.size(), 2, params_.searchThreads,
             [&](size_t l, int step) -> std::optional<Trial> {
                 const int k = kStart(ladderC[l]) + step;
                 if (k > 24 || cancelled(fb_)) return std::nullopt;

@@ -55,9 +55,7 @@ struct AutoScaleResult {
 /// Chooses the scale parameters left at 0 in params (manual ones are kept). t and oc in
 /// seconds, finite, at least 3 points. Deterministic: the same choice and trial list whatever the
 /// number of threads. Polls fb for cancel. Independent trials (the ladders of a sparse pass, the
-/// refinement around the best) run side by side on the machine's cores (setScaleSearchThreads).
-/// Threads for the scale search's independent trials: 0 (the default) = every core, 1 = none.
-void setScaleSearchThreads(int threads);
+/// refinement around the best) run side by side on params.searchThreads threads (0: every core).
 
 AutoScaleResult chooseScale(const std::vector<double>& t, const std::vector<double>& oc, const ScreenParams& params,
                             const Feedback* fb = nullptr);

@@ -638,9 +638,12 @@ private slots:
         QVERIFY2(c->exportCrd(out, &err), qPrintable(err));
         const auto back = lwb::core::slr::readCrd(out.toStdString());
         QVERIFY2(back.ok, back.error.c_str());
-        int flagged = 0;
+        // The flags as delivered (issue 40): 2 for what the post-fit kept.
+        int flagged = 0, kept = 0;
         for (const auto& r : back.file.passes[0].ranges) flagged += r.filterFlag == 2;
-        QCOMPARE(flagged, acceptedCount(c->run()));
+        for (uint8_t k : lwb::core::slr::deliveredFlags(c->run())) kept += k != 0;
+        QCOMPARE(flagged, kept);
+        QVERIFY(kept > 50 && kept <= acceptedCount(c->run()));
         const QString np = m_dir.path() + "/jason.npt";
         QVERIFY2(c->exportNormalPoints(np, &err), qPrintable(err));
         const auto nps = lwb::core::slr::readCrd(np.toStdString());
@@ -874,62 +877,81 @@ private slots:
         QVERIFY(backOne.ok && backWhole.ok);
         QCOMPARE(backOne.file.passes.size(), size_t(1));
         QCOMPARE(backWhole.file.passes.size(), size_t(6));
-        int flagged = 0;
+        // The flags as delivered (issue 40: one rule for every product): what the post-fit kept.
+        int flagged = 0, kept = 0;
         for (const auto& r : backOne.file.passes[0].ranges) flagged += r.filterFlag == 2;
-        QCOMPARE(flagged, acceptedCount(c->run()));
+        for (uint8_t k : lwb::core::slr::deliveredFlags(c->run())) kept += k != 0;
+        QCOMPARE(flagged, kept);
+        QVERIFY(kept > 50);
 
-        // Screen all passes: a row per pass, the failing ones with their reason; a row opens its pass.
+        // Screen all passes (issue 40): the core's batch, so its table is laserwb-cli slr
+        // --all-passes's summary.csv, byte for byte, and so are the products it exports.
+        qputenv("SOURCE_DATE_EPOCH", "1700000000");
         SlrAllPassesDialog* all = ws->screenAllPasses();
+        QVERIFY(all);
         // Within the screen (issue 30: 1100 px wide, Close off a 1024 px screen).
         QVERIFY2(all->width() <= all->screen()->availableGeometry().width() &&
                      all->height() <= all->screen()->availableGeometry().height(),
                  qPrintable(QString("%1×%2 on %3×%4").arg(all->width()).arg(all->height())
                                 .arg(all->screen()->availableGeometry().width()).arg(all->screen()->availableGeometry().height())));
-        QVERIFY(all);
         QTRY_VERIFY_WITH_TIMEOUT(all->finished(), 120000);
         QTableWidget* t = all->table();
         QCOMPARE(t->rowCount(), 6);
+        const int colStatus = SlrAllPassesDialog::column("status"), colReason = SlrAllPassesDialog::column("reason"),
+                  colAccepted = SlrAllPassesDialog::column("accepted"), colRms = SlrAllPassesDialog::column("rms_mm"),
+                  colPrecision = SlrAllPassesDialog::column("station_precision");
+        QVERIFY(colStatus >= 0 && colReason >= 0 && colAccepted >= 0 && colRms >= 0 && colPrecision >= 0);
         // As laserwb-cli slr --all-passes: passes 4 and 5 skipped (3 and 4 records), pass 1
-        // doubtful, 2, 3 and 6 ok.
+        // doubtful, 2, 3 and 6 ok; rows in the file's order.
         int skipped = 0, ok = 0, doubtful = 0;
         for (int r = 0; r < t->rowCount(); ++r) {
-            const QString status = t->item(r, SlrAllPassesDialog::ColStatus)->text();
-            const QString accepted = t->item(r, SlrAllPassesDialog::ColAccepted)->text();
-            if (status.startsWith("skipped")) {
+            QCOMPARE(all->passOfRow(r), r);
+            const QString status = t->item(r, colStatus)->text(), accepted = t->item(r, colAccepted)->text();
+            if (status == "skipped") {
                 ++skipped;
-                QVERIFY2(status.contains("a pass needs at least 5"), qPrintable(status));
+                QVERIFY2(t->item(r, colReason)->text().contains("a pass needs at least 5"), qPrintable(t->item(r, colReason)->text()));
                 QVERIFY(accepted.isEmpty());
-            } else if (status.startsWith("doubtful")) {
+            } else if (status == "doubtful") {
                 ++doubtful;
-                QCOMPARE(all->passOfRow(r), 0);
-                // Nothing accepted: precision 0/0 is a dash (it was a blank: " / 0.000").
-                QCOMPARE(t->item(r, SlrAllPassesDialog::ColAgreement)->text(), QString::fromUtf8("— / 0.000"));
+                QCOMPARE(r, 0);
+                QVERIFY(t->item(r, colPrecision)->text().isEmpty());  // nothing accepted: precision 0/0, not 0
             } else {
                 ++ok;
-                QVERIFY2(status.startsWith("ok"), qPrintable(status));
+                QCOMPARE(status, QString("ok"));
                 QVERIFY(!accepted.isEmpty() && accepted != "0");
-                if (all->passOfRow(r) == 5) QVERIFY(!t->item(r, SlrAllPassesDialog::ColRms)->text().isEmpty());  // 101 points
+                if (r == 5) QVERIFY(!t->item(r, colRms)->text().isEmpty());  // 101 points
             }
         }
         QCOMPARE(skipped, 2);
         QCOMPARE(doubtful, 1);
         QCOMPARE(ok, 3);
-        // The table exports as it stands.
+        // The table exports as summary.csv, and the day's products as the CLI writes them.
+        const QString guiDir = m_dir.path() + "/day-gui", cliDir = m_dir.path() + "/day-cli";
         QString exportErr;
         QVERIFY2(all->exportCsv(m_dir.path() + "/all.csv", &exportErr), qPrintable(exportErr));
-        const auto exported = lwb::core::readCsv((m_dir.path() + "/all.csv").toStdString());
-        QVERIFY2(exported.ok, exported.error.c_str());
-        QCOMPARE(exported.table.rows.size(), size_t(6));
-        int row4 = -1;
-        for (int r = 0; r < t->rowCount(); ++r)
-            if (all->passOfRow(r) == 2) row4 = r;
-        QVERIFY(row4 >= 0);
-        QCOMPARE(t->item(row4, SlrAllPassesDialog::ColAccepted)->text().toInt() > 0, true);
-        emit t->cellDoubleClicked(row4, 0);
+        QSignalSpy written(all, &SlrAllPassesDialog::productsWritten);
+        QVERIFY(QDir().mkpath(guiDir));
+        QVERIFY2(all->exportProducts(guiDir, &exportErr), qPrintable(exportErr));
+        QTRY_VERIFY_WITH_TIMEOUT(written.count() == 1, 120000);
+        QVERIFY2(written.at(0).at(0).toBool(), qPrintable(written.at(0).at(1).toString()));
+        const lwbtest::CliRun cli = lwbtest::runCli({"slr", hy2c, "--all-passes", "--out-dir", cliDir, "-q"});
+        QVERIFY2(cli.exitCode == 3, qPrintable(cli.err));  // (pass 1 doubtful)
+        QCOMPARE(lwbtest::readAll(m_dir.path() + "/all.csv"), lwbtest::readAll(cliDir + "/summary.csv"));
+        const QStringList names = QDir(cliDir).entryList(QDir::Files, QDir::Name);
+        QCOMPARE(QDir(guiDir).entryList(QDir::Files, QDir::Name), names);
+        QVERIFY(names.contains("pass006.npt") && names.contains("normal_points.npt") && names.contains("provenance.json"));
+        for (const QString& n : names) QVERIFY2(lwbtest::readAll(guiDir + "/" + n) == lwbtest::readAll(cliDir + "/" + n), qPrintable(n));
+        // A screened row opens its pass, with the table's numbers.
+        emit t->cellDoubleClicked(2, 0);
         QCOMPARE(c->selectedPass(), 2);
         QVERIFY(c->waitIdle(60000));
         QVERIFY(c->hasRun());
-        QCOMPARE(QString::number(acceptedCount(c->run())), t->item(row4, SlrAllPassesDialog::ColAccepted)->text());
+        QCOMPARE(QString::number(acceptedCount(c->run())), t->item(2, colAccepted)->text());
+        // A skipped row does not screen: the block is shown as what it is.
+        emit t->cellDoubleClicked(3, 0);
+        QCOMPARE(c->selectedPass(), 3);
+        QVERIFY(!c->hasPass());
+        QVERIFY2(c->passProblem().contains("not a pass to screen"), qPrintable(c->passProblem()));
     }
 
     /// Issue 11: BLITS with the CPF and SINEX opens although pass 1 is before the CPF; a pass in

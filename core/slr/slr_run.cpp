@@ -1,0 +1,275 @@
+#include "core/slr/slr_run.hpp"
+
+#include <exception>
+
+#include "core/common/text.hpp"
+#include "core/slr/pass_output.hpp"
+
+namespace lwb::core::slr {
+
+namespace {
+
+// The config file and the config given directly, then the settings, over *p (the schema's
+// messages, with FILE:LINE:COL for the file). `configDoc` null: the file is read here.
+bool applyAnalystSettings(const SlrSources& src, const JsonParseResult* configDoc, SlrParams* p, SlrError* error) {
+    std::string err;
+    if (configDoc && !slrSchema().fromJson(configDoc->value, p, &err, configDoc)) {
+        *error = {err, false};
+        return false;
+    }
+    if (!src.config.is_null() && !slrSchema().fromJson(src.config, p, &err)) {
+        *error = {err, true};
+        return false;
+    }
+    for (const ParamSetting& s : src.set)
+        if (!slrSchema().setFromText(p, s.key, s.value, &err)) {
+            *error = {(s.label.empty() ? s.key + "=" + s.value : s.label) + ": " + err, true};
+            return false;
+        }
+    return true;
+}
+
+bool readConfig(const SlrSources& src, JsonParseResult* doc, SlrError* error) {
+    if (src.configFile.empty()) return true;
+    *doc = readJsonFile(src.configFile);
+    if (!doc->ok) {
+        *error = {doc->error, false};
+        return false;
+    }
+    return true;
+}
+
+std::string named(const std::string& path, const std::string& msg) {
+    return msg.rfind(path, 0) == 0 ? msg : path + ": " + msg;
+}
+
+}  // namespace
+
+bool resolveBaseParams(const SlrSources& sources, SlrParams* out, SlrError* error) {
+    JsonParseResult doc;
+    if (!readConfig(sources, &doc, error)) return false;
+    SlrParams p = commandDefaults();
+    if (!applyAnalystSettings(sources, sources.configFile.empty() ? nullptr : &doc, &p, error)) return false;
+    *out = p;
+    return true;
+}
+
+bool setUpSlrRun(const SlrSources& sources, SlrSetup* out, SlrError* error) {
+    SlrSetup s;
+    s.sources = sources;
+    if (!sources.cpf.empty() && sources.stations.empty()) {
+        *error = {"the prediction (CPF) and the station coordinates (SINEX) go together: O-C from the prediction needs both", true};
+        return false;
+    }
+    if (!sources.satellite.empty() && sources.presets.empty()) {
+        *error = {"a satellite name selects a preset entry: give the presets file with it", true};
+        return false;
+    }
+    // The settings first: a bad option or config stops the run before any file is read.
+    JsonParseResult doc;
+    if (!readConfig(sources, &doc, error)) return false;
+    s.base = commandDefaults();
+    if (!applyAnalystSettings(sources, sources.configFile.empty() ? nullptr : &doc, &s.base, error)) return false;
+    if (!sources.configFile.empty()) s.config = doc.value;
+    if (!sources.presets.empty()) {
+        const PresetsResult pr = loadPresets(sources.presets);
+        if (!pr.ok) {
+            *error = {named(sources.presets, pr.error), false};
+            return false;
+        }
+        s.presets = pr.presets;
+        s.havePresets = true;
+    }
+    auto predictions = std::make_shared<PassSources>();
+    if (!sources.stations.empty()) {
+        PassInputParams in;
+        in.cpfPath = sources.cpf;
+        in.sinexPath = sources.stations;
+        std::string err;
+        if (!readPassSources(in, predictions.get(), &err)) {
+            *error = {err, false};
+            return false;
+        }
+    }
+    s.predictions = std::move(predictions);
+    *out = std::move(s);
+    return true;
+}
+
+bool resolvePassParams(const SlrSetup& setup, const PassData& pass, PassSettings* out, SlrError* error) {
+    PassSettings s;
+    s.params = commandDefaults();
+    std::string err;
+    if (setup.havePresets && !applyPreset(pass, setup.presets, setup.sources.satellite, &s.params, &s.presetName, &err)) {
+        *error = {named(setup.sources.presets, err), false};
+        return false;
+    }
+    // The config as read at set-up (its file's locations are gone: the keys name it).
+    if (!setup.sources.configFile.empty() && !slrSchema().fromJson(setup.config, &s.params, &err)) {
+        *error = {setup.sources.configFile + ": " + err, false};
+        return false;
+    }
+    if (!applyAnalystSettings(setup.sources, nullptr, &s.params, error)) return false;
+    // What the pass tells, wherever the parameters leave it unknown (a printed config's 0 is not a value).
+    s.notes = passNormalPointContext(pass, setup.stations(), &s.params.postfit);
+    s.params.screen.searchThreads = setup.sources.searchThreads;
+    if (const std::string e = slrSchema().validate(s.params); !e.empty()) {
+        *error = {(s.presetName.empty() ? std::string() : "preset " + s.presetName + ": ") + e, true};
+        return false;
+    }
+    *out = std::move(s);
+    return true;
+}
+
+namespace {
+
+// The pass of `loaded` (ok) resolved, or its error.
+OpenedPass finishOpen(const SlrSetup& setup, PassInputResult loaded, std::shared_ptr<const CrdReadResult> crd) {
+    OpenedPass o;
+    o.crd = std::move(crd);
+    o.warnings = std::move(loaded.warnings);
+    o.passes = loaded.passes.empty() && o.crd ? summarisePasses(o.crd->file) : std::move(loaded.passes);
+    if (!loaded.ok) {
+        o.error = {named(setup.sources.input, loaded.error), loaded.notAPass};
+        return o;
+    }
+    // A record of the pass that the reader had to skip ("FILE:LINE: ..."): the point is missing
+    // from the screening and the damaged line would be written back as it is. Refused.
+    if (!loaded.pass.damaged.empty() && !setup.sources.openDamaged) {
+        o.error = {loaded.pass.damaged + "; nothing written", false};
+        return o;
+    }
+    auto pass = std::make_shared<const PassData>(std::move(loaded.pass));
+    if (!resolvePassParams(setup, *pass, &o.settings, &o.error)) return o;
+    o.pass = std::move(pass);
+    o.ok = true;
+    return o;
+}
+
+PassInputParams inputParams(const SlrSetup& setup) {
+    PassInputParams in;
+    in.cpfPath = setup.sources.cpf;
+    in.sinexPath = setup.sources.stations;
+    in.cpfFallback = setup.sources.cpfFallback;
+    return in;
+}
+
+}  // namespace
+
+OpenedPass openPassOf(const SlrSetup& setup, const std::shared_ptr<const CrdReadResult>& crd, int passIndex,
+                      const Feedback* fb) {
+    PassInputResult loaded = passFromCrd(crd, setup.sources.input, passIndex, inputParams(setup), *setup.predictions, fb);
+    return finishOpen(setup, std::move(loaded), crd);
+}
+
+OpenedPass openPass(const SlrSetup& setup, const Feedback* fb) {
+    const std::string& input = setup.sources.input;
+    if (!isCrdFile(input)) {
+        // (an O-C table is one pass: pass 1 of it is that pass)
+        if (setup.sources.passNumber > 1 || !setup.sources.cpf.empty()) {
+            OpenedPass o;
+            o.error = {std::string(setup.sources.passNumber > 0 ? "a pass number" : "a prediction (CPF)") +
+                           " applies to a CRD input; " + input + " is an O-C table",
+                       true};
+            return o;
+        }
+        return finishOpen(setup, passFromOcTable(input), nullptr);
+    }
+    auto crd = std::make_shared<const CrdReadResult>(readCrd(input, {}, fb));
+    if (!crd->ok) {
+        OpenedPass o;
+        o.error = {named(input, crd->error), false};
+        for (size_t i = 0; i < crd->warnings.size() && i < 5; ++i) o.error.message += "\n  " + crd->warnings[i];
+        return o;
+    }
+    if (setup.sources.passNumber > static_cast<int>(crd->file.passes.size())) {
+        OpenedPass o;
+        o.crd = crd;
+        o.passes = summarisePasses(crd->file);
+        o.error = {input + ": pass " + std::to_string(setup.sources.passNumber) + " asked for, the file holds " +
+                       std::to_string(crd->file.passes.size()) + " pass" + (crd->file.passes.size() == 1 ? "" : "es") +
+                       " (numbered from 1)",
+                   false};
+        return o;
+    }
+    return openPassOf(setup, crd, setup.sources.passNumber - 1, fb);
+}
+
+PassRunResult runOpenedPass(const PassData& pass, const PassSettings& settings, const SlrSetup& setup, Feedback* fb) {
+    SlrParams p = settings.params;
+    p.screen.searchThreads = setup.sources.searchThreads;
+    return runPass(pass, p, fb);
+}
+
+const std::vector<uint8_t>& deliveredFlags(const PassRunResult& r) {
+    return r.postOk && r.post.kept.size() == r.accepted.size() ? r.post.kept : r.accepted;
+}
+
+std::string productsProblem(const PassData& pass, const PassSettings& settings, const PassProductPaths& paths) {
+    if ((!paths.crd.empty() || !paths.npt.empty()) && !pass.hasCrd)
+        return std::string(!paths.crd.empty() ? "a flagged CRD" : "normal points as CRD") +
+               " need a CRD input (its headers and records are written back); " + pass.source + " is an O-C table";
+    if (!paths.npt.empty() && !(settings.params.postfit.binLengthS > 0) && !(settings.params.postfit.altitudeKm > 0))
+        return "no normal points: the satellite's altitude is unknown (give the bin length, postfit.bin_length_s, or a "
+               "preset with altitude_km)";
+    return {};
+}
+
+bool stagePassProducts(const OutputSet& outs, const PassData& pass, const PassRunResult& r, const PassProductPaths& paths,
+                       CrdPass* npBlock, std::string* error) {
+    const PostfitResult* post = r.postOk ? &r.post : nullptr;
+    if (!pass.damaged.empty()) {  // (every writer refuses a pass with records the reader skipped)
+        *error = pass.damaged + "; nothing written";
+        return false;
+    }
+    if (!paths.csv.empty() && !writeScreenCsv(outs.stagingPath(paths.csv), pass, r.screen, r.accepted, post, error)) {
+        *error = named(paths.csv, outs.unstaged(*error));
+        return false;
+    }
+    if (!paths.crd.empty()) {
+        // The pass alone (its own H9 and line ends, passAlone), or the whole file it came from.
+        PassData alone;
+        const PassData* target = &pass;
+        if (!paths.crdWholeFile && pass.hasCrd) {
+            alone.source = pass.source;
+            alone.hasCrd = true;
+            alone.crd = std::make_shared<const CrdFile>(passAlone(pass.crd->passes[size_t(pass.passIndex)]));
+            alone.rangeIndex = pass.rangeIndex;
+            target = &alone;
+        }
+        if (!writeScreenedCrd(outs.stagingPath(paths.crd), *target, deliveredFlags(r), error)) {
+            *error = named(paths.crd, outs.unstaged(*error));
+            return false;
+        }
+    }
+    if (!paths.npt.empty() || npBlock) {
+        const DeliveredNormalPoints delivered = deliveredNormalPoints(r);
+        CrdPass block;
+        if (!normalPointPass(pass, delivered.points, normalPointProduct(post, &r.screen, delivered.noneReason), &block, error) ||
+            (!paths.npt.empty() && !writeNormalPointFile(outs.stagingPath(paths.npt), {block}, error))) {
+            *error = named(paths.npt.empty() ? pass.source : paths.npt, outs.unstaged(*error));
+            return false;
+        }
+        if (npBlock) *npBlock = std::move(block);
+    }
+    return true;
+}
+
+Provenance slrProvenance(const SlrSetup& setup, bool stationFile) {
+    const SlrSources& s = setup.sources;
+    Provenance p;
+    p.command = stationFile ? "slr --all-passes" : "slr";
+    p.parameters = slrSchema().toJson(setup.base);
+    p.settings = {{"pass", s.passNumber}, {"cpf", s.cpf},           {"stations", s.stations},
+                  {"preset", s.presets},  {"satellite", s.satellite}};
+    p.inputs = {s.input, s.configFile, s.cpf, s.stations, s.presets};
+    return p;
+}
+
+std::string passName(const PassData& pass) {
+    if (!pass.hasCrd) return pass.source;
+    const size_t ordinal = pass.crd->passes[size_t(pass.passIndex)].ordinal;
+    return pass.source + " pass " + std::to_string(ordinal ? ordinal : size_t(pass.passIndex) + 1);
+}
+
+}  // namespace lwb::core::slr

@@ -1,0 +1,140 @@
+#pragma once
+// An SLR run from its sources (docs/architecture.md, "Sources -> load -> resolve -> run ->
+// write"). A front end — the CLI, the workbench, Python, Dask — only gathers SlrSources from its
+// own world (flags, dialogs, keyword arguments); the core reads them once (setUpSlrRun), decides
+// which block of a file is a pass and which one opens (isPassToScreen), resolves each pass's
+// parameters in one order (resolvePassParams), runs it (PassTask) and writes its products with
+// one writer (stagePassProducts). A station's file of passes is the batch over these steps
+// (station_day.hpp). No front end calls a reader or a set-up helper itself: that is where front
+// ends drifted apart (a printed config lost every normal point of --all-passes, issue 40).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/common/feedback.hpp"
+#include "core/common/json.hpp"
+#include "core/common/output_set.hpp"
+#include "core/common/provenance.hpp"
+#include "core/slr/pass_input.hpp"
+#include "core/slr/pass_run.hpp"
+#include "core/slr/presets.hpp"
+#include "core/slr/slr_params.hpp"
+
+namespace lwb::core::slr {
+
+using core::ParamSetting;
+
+/// What a front end gathers for an SLR run: names of files and the analyst's own settings,
+/// nothing read yet.
+struct SlrSources {
+    std::string input;           ///< a CRD file (one pass of it, or all) or an O-C CSV
+    int passNumber = 0;          ///< 1-based; 0 = the file's first pass to screen (isPassToScreen)
+    std::string cpf;             ///< CPF file or folder of CPF files; O-C from it needs `stations`
+    std::string stations;        ///< SINEX station coordinates (alone: day or night per bin)
+    std::string presets;         ///< per-satellite presets file ("" = none)
+    std::string satellite;       ///< look the preset up under this name instead of the pass's
+    std::string configFile;      ///< parameters as JSON (what --print-config writes); "" = none
+    /// Parameters as JSON given directly, read after configFile: the workbench's panel, Python's
+    /// SlrParams. Null = none. Keys the pass tells (altitude, fire rate, bin) left at 0 stay the pass's.
+    Json config;
+    std::vector<ParamSetting> set;  ///< after the config, in order (the last of one key wins)
+    /// A CPF that does not fit a pass (another satellite, another day): a note and the pass's own
+    /// TOF trend (the batch and the workbench) instead of an error (one pass on the CLI).
+    bool cpfFallback = false;
+    int searchThreads = 0;       ///< threads of the automatic scale search (0: every core); never changes the answer
+    /// A pass with records the reader had to skip opens to be looked at (the workbench) instead
+    /// of being refused; every writer still refuses it (PassData::damaged).
+    bool openDamaged = false;
+};
+
+/// A problem with a run: what and where; `usage` when it is the caller's choice (exit 2: an
+/// option, a block that is not a pass), else the data's or the system's (exit 1).
+struct SlrError {
+    std::string message;
+    bool usage = false;
+    bool empty() const { return message.empty(); }
+};
+
+/// The sources read once and shared read-only by every pass of the run.
+struct SlrSetup {
+    SlrSources sources;
+    std::vector<SatellitePreset> presets;
+    bool havePresets = false;
+    std::shared_ptr<const PassSources> predictions = std::make_shared<const PassSources>();  ///< CPFs (with stations), stations
+    Json config = Json::object();  ///< configFile then `config`, merged (applied to every pass)
+    /// The command's defaults with the config and the settings applied: what --print-config
+    /// prints and the provenance records before a pass's own context.
+    SlrParams base;
+    const SinexFile* stations() const { return predictions && predictions->haveStations ? &predictions->stations : nullptr; }
+};
+
+/// Reads the presets, the station coordinates, the predictions and the config, and checks
+/// every setting against the schema (before any pass is read). False with *error.
+bool setUpSlrRun(const SlrSources& sources, SlrSetup* out, SlrError* error);
+/// setUpSlrRun without the files: the config and the settings checked over the defaults
+/// (--print-config, and the usage checks before anything is read).
+bool resolveBaseParams(const SlrSources& sources, SlrParams* out, SlrError* error);
+
+/// The parameters of one pass, in the one order every front end and batch shares: the command's
+/// defaults; the satellite's preset (when presets are given; none for the pass is an error);
+/// the config; the settings; then what the pass tells wherever the parameters leave it unknown
+/// (altitude 0, fire rate 0, bin length 0, the station's position: passNormalPointContext);
+/// finally the whole schema's validation. Notes: the normal-point context.
+bool resolvePassParams(const SlrSetup& setup, const PassData& pass, PassSettings* out, SlrError* error);
+
+/// A pass opened: read, chosen, its O-C made and its parameters resolved.
+struct OpenedPass {
+    bool ok = false;
+    SlrError error;
+    std::vector<std::string> warnings;          ///< the readers'
+    std::vector<PassSummary> passes;            ///< every block of the file (one for an O-C table)
+    std::shared_ptr<const CrdReadResult> crd;   ///< the file as read (CRD input)
+    std::shared_ptr<const PassData> pass;
+    PassSettings settings;
+};
+
+/// Reads setup.sources.input and opens pass setup.sources.passNumber (0: the first pass to
+/// screen). A block that is not a pass, a damaged pass, a pass number beyond the file: errors
+/// that say what the file holds.
+OpenedPass openPass(const SlrSetup& setup, const Feedback* fb = nullptr);
+/// The same for a file already read (the workbench switching passes): passIndex 0-based, -1 the first.
+OpenedPass openPassOf(const SlrSetup& setup, const std::shared_ptr<const CrdReadResult>& crd, int passIndex,
+                      const Feedback* fb = nullptr);
+
+/// PassTask on an opened pass with its resolved parameters (and the setup's search threads).
+PassRunResult runOpenedPass(const PassData& pass, const PassSettings& settings, const SlrSetup& setup,
+                            Feedback* fb = nullptr);
+
+/// The filter flags a screened pass is delivered with: what the post-fit kept (its rejects are
+/// noise), else what the screening accepted. Every flagged-CRD product uses them.
+const std::vector<uint8_t>& deliveredFlags(const PassRunResult& r);
+
+/// Where a pass's products go ("" = not written).
+struct PassProductPaths {
+    std::string csv, crd, npt;
+    /// crd: the whole file the pass came from, other passes unchanged (laserwb-cli slr --crd-out),
+    /// or the pass alone (passAlone: a batch's passNNN.frd, the workbench's "this pass").
+    bool crdWholeFile = false;
+};
+
+/// The products a run can write for these settings: "" or why not (a usage error: normal points
+/// asked for when neither the bin length nor the altitude is known; a CRD product of an O-C table).
+std::string productsProblem(const PassData& pass, const PassSettings& settings, const PassProductPaths& paths);
+
+/// Writes the products of a pass into `outs`' staging files (the caller registered and checked
+/// them and commits the set): the per-point CSV, the flagged CRD (deliveredFlags) and the normal
+/// points (or the reason there are none). *npBlock (when given) gets the normal-point block for a
+/// day's file. False with *error (naming the file).
+bool stagePassProducts(const OutputSet& outs, const PassData& pass, const PassRunResult& r, const PassProductPaths& paths,
+                       CrdPass* npBlock, std::string* error);
+
+/// The provenance of a run's outputs (core/common/provenance.hpp): the command ("slr", or "slr
+/// --all-passes" for a station's file), the parameters before any pass's preset and context
+/// (setup.base; a one-pass run replaces them with the pass's own), the settings that shape the
+/// outputs and the inputs. Every front end records the same.
+Provenance slrProvenance(const SlrSetup& setup, bool stationFile);
+
+/// "FILE pass K" (CRD) or "FILE" (O-C table): how messages name a pass.
+std::string passName(const PassData& pass);
+
+}  // namespace lwb::core::slr
