@@ -189,6 +189,49 @@ def test_slr_parameters_as_the_cli_options(data, tmp_path):
     same_bytes(tmp_path / "cli.npt", tmp_path / "py.npt")
 
 
+def _station_file(data, tmp_path):
+    """A station's file of the simulated passes, one block after another."""
+    blocks = []
+    for seed in (3, 4, 5):
+        text = (data / "passes" / f"pass{seed}.frd").read_text()
+        blocks.append(text[:text.rfind("H9")] if "H9" in text else text[:text.rfind("h9")])
+    day = tmp_path / "day.frd"
+    day.write_text("".join(blocks) + "H9\n")
+    return str(day)
+
+
+def test_one_run_station_file_is_the_cli_day(data, tmp_path):
+    """Issue 40: laserwb.slr.process_file is the batch laserwb-cli slr --all-passes runs, byte for byte."""
+    day = _station_file(data, tmp_path)
+    cli("slr", day, "--all-passes", "--out-dir", tmp_path / "cli", "-q", ok=(0, 3))
+    rows = laserwb.slr.process_file(day, str(tmp_path / "py"))
+    names = sorted(os.listdir(tmp_path / "cli"))
+    assert names == sorted(os.listdir(tmp_path / "py")) and "summary.csv" in names and "pass003.npt" in names
+    for n in names:
+        same_bytes(tmp_path / "cli" / n, tmp_path / "py" / n)
+    assert [r["pass"] for r in rows] == ["1", "2", "3"] and all(r["status"] in ("ok", "doubtful") for r in rows)
+    # each pass alone, with the command's printed config as SlrParams: the day's files of that pass
+    printed = cli("slr", "--print-config").stdout
+    (tmp_path / "cfg.json").write_text(printed)
+    for k in (1, 2, 3):
+        p = laserwb.slr.load_pass(day, pass_number=k)
+        r = laserwb.slr.run(p, params=laserwb.slr.SlrParams())
+        r.write(csv=str(tmp_path / f"p{k}.csv"), npt=str(tmp_path / f"p{k}.npt"))
+        same_bytes(tmp_path / f"p{k}.csv", tmp_path / "cli" / f"pass00{k}.csv")
+        same_bytes(tmp_path / f"p{k}.npt", tmp_path / "cli" / f"pass00{k}.npt")
+        cli("slr", day, "--pass", k, "--config", tmp_path / "cfg.json", "--npt-out", tmp_path / f"c{k}.npt", "-q", ok=(0, 3))
+        same_bytes(tmp_path / f"c{k}.npt", tmp_path / "cli" / f"pass00{k}.npt")
+
+
+def test_one_run_thread_counts_are_checked():
+    """The scale search's threads belong to the run and are checked as the CLI checks --threads."""
+    with pytest.raises(ValueError):
+        laserwb.slr.set_search_threads(100000)
+    with pytest.raises(ValueError):
+        laserwb.slr.set_search_threads(-1)
+    laserwb.slr.set_search_threads(0)
+
+
 def test_slr_oc_table(data, tmp_path):
     src = str(data / "pass.csv")
     cli("slr", src, "-o", tmp_path / "cli.csv", "-q", ok=(0, 3))
