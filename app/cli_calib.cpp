@@ -17,7 +17,7 @@
 #include "core/common/csv.hpp"
 #include "core/common/text.hpp"
 #include "core/sim/calib_sim.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 namespace lwb::cli {
 

@@ -24,7 +24,7 @@
 #include "core/footprint/trend.hpp"
 #include "core/sim/centroid_sim.hpp"
 #include "core/sim/footprint_eval.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 namespace lwb::cli {
 

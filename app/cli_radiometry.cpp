@@ -13,7 +13,7 @@
 #include "core/radiometry/radiometry_params.hpp"
 #include "core/radiometry/reflectance.hpp"
 #include "core/sim/demo_data.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 namespace lwb::cli {
 

@@ -6,7 +6,7 @@
 #include "core/calib/detector_array.hpp"
 #include "core/calib/geodesy.hpp"
 #include "core/sim/calib_sim.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "test_support.hpp"
 
 using namespace lwb::core;

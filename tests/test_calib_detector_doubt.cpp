@@ -9,7 +9,7 @@
 
 #include "core/calib/detector_array.hpp"
 #include "core/sim/calib_sim.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 using namespace lwb::core;
 using namespace lwb::core::calib;

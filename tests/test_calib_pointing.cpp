@@ -8,7 +8,7 @@
 #include "core/calib/pointing.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/sim/calib_sim.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "test_support.hpp"
 
 using namespace lwb::core;

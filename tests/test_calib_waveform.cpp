@@ -5,7 +5,7 @@
 
 #include "core/calib/waveform.hpp"
 #include "core/sim/calib_sim.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "test_support.hpp"
 
 using namespace lwb::core;

@@ -10,7 +10,7 @@
 #include "core/footprint/pipeline.hpp"
 #include "core/sim/footprint_eval.hpp"
 #include "core/sim/footprint_sim.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "test_support.hpp"
 
 using namespace lwb::core;

@@ -8,7 +8,7 @@
 #include "core/footprint/pipeline.hpp"
 #include "core/sim/footprint_eval.hpp"
 #include "core/sim/footprint_sim.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "core/sim/texture_bound.hpp"
 #include "core/sim/terrain_photo.hpp"
 #include "footprint_cases.hpp"

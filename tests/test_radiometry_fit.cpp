@@ -6,7 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/radiometry/reflectance.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "test_support.hpp"
 
 using namespace lwb::core;

@@ -6,7 +6,7 @@
 
 #include "core/radiometry/gcp.hpp"
 #include "core/radiometry/mosaic.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "core/sim/scene_sim.hpp"
 #include "test_support.hpp"
 

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <set>
 
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "core/sim/slr_sim.hpp"
 #include "core/slr/crd.hpp"
 #include "core/slr/ilrs_tables.hpp"

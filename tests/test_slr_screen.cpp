@@ -6,7 +6,7 @@
 #include <set>
 
 #include "core/common/json.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "core/sim/slr_sim.hpp"
 #include "core/slr/binary_image.hpp"
 #include "core/slr/pass_run.hpp"

@@ -103,6 +103,20 @@ int threadCount(const py::object& threads) {
     return static_cast<int>(n);
 }
 
+// The analyst's own parameters as sources: a SlrParams as --config, a dict {key: value} as --set.
+void gatherParams(const py::object& params, slr::SlrSources* src) {
+    if (py::isinstance<slr::SlrParams>(params)) {
+        src->config = slr::slrSchema().toJson(params.cast<slr::SlrParams>());
+    } else if (py::isinstance<py::dict>(params)) {
+        for (const auto& kv : params.cast<py::dict>()) {
+            const std::string key = py::str(kv.first);
+            src->set.push_back({key, valueText(kv.second), key});
+        }
+    } else if (!params.is_none()) {
+        throw py::type_error("params must be None, a dict {key: value} or laserwb.slr.SlrParams");
+    }
+}
+
 Pass loadPass(const py::object& path, const py::object& passNumber, const py::object& cpf, const py::object& stations) {
     // The sources as the CLI gathers them from its flags; the core reads, chooses and loads.
     slr::SlrSources src;
@@ -139,16 +153,7 @@ PassRun runPass(const Pass& pass, const py::object& params, const py::object& pr
     if (!preset.is_none()) src.presets = fsPath(preset);
     if (!satellite.is_none()) src.satellite = std::string(py::str(satellite));
     if (!stations.is_none()) src.stations = fsPath(stations);
-    if (py::isinstance<slr::SlrParams>(params)) {
-        src.config = slr::slrSchema().toJson(params.cast<slr::SlrParams>());
-    } else if (py::isinstance<py::dict>(params)) {
-        for (const auto& kv : params.cast<py::dict>()) {
-            const std::string key = py::str(kv.first);
-            src.set.push_back({key, valueText(kv.second), key});
-        }
-    } else if (!params.is_none()) {
-        throw py::type_error("params must be None, a dict {key: value} or laserwb.slr.SlrParams");
-    }
+    gatherParams(params, &src);
     src.searchThreads = threadCount(threads);
     const slr::SlrSetup setup = setUp(src);
     PassRun run;
@@ -174,16 +179,7 @@ py::list processFile(const py::object& path, const py::object& outDir, const py:
     if (!satellite.is_none()) src.satellite = std::string(py::str(satellite));
     if (!cpf.is_none()) src.cpf = fsPath(cpf);
     if (!stations.is_none()) src.stations = fsPath(stations);
-    if (py::isinstance<slr::SlrParams>(params)) {
-        src.config = slr::slrSchema().toJson(params.cast<slr::SlrParams>());
-    } else if (py::isinstance<py::dict>(params)) {
-        for (const auto& kv : params.cast<py::dict>()) {
-            const std::string key = py::str(kv.first);
-            src.set.push_back({key, valueText(kv.second), key});
-        }
-    } else if (!params.is_none()) {
-        throw py::type_error("params must be None, a dict {key: value} or laserwb.slr.SlrParams");
-    }
+    gatherParams(params, &src);
     const int nThreads = threadCount(threads);
     const slr::SlrSetup setup = setUp(src);
     slr::DayOptions opt;

@@ -12,11 +12,11 @@
 #include <ogr_srs_api.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/codecs_module/codec_api.hpp"
+#include "core/common/codec_api.hpp"
 
 namespace lwb::core::codecs {
 namespace {
-using radiometry::GeoReference;
+using core::GeoReference;
 
 // GDAL is initialised once; its messages go to the caller's error text, not to stderr, and it
 // writes no .aux.xml side files (an output is exactly one file, renamed into place).

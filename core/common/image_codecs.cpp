@@ -4,7 +4,7 @@
 #include <mutex>
 #include <unistd.h>
 
-#include "core/codecs_module/codec_api.hpp"
+#include "core/common/codec_api.hpp"
 #include "core/common/install_paths.hpp"
 #include "core/common/output_set.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Image decoding and encoding for the core: OpenCV's imdecode / imencode / imread, called through
-// the codec module (liblaserwb_codecs.so, core/codecs_module/codec_api.hpp says why), which is
+// the codec module (liblaserwb_codecs.so, core/common/codec_api.hpp says why), which is
 // loaded the first time an image is read or written. Same semantics as OpenCV's functions; when
 // the module cannot be loaded they throw cv::Exception naming the reason, which every caller
 // already reports as "cannot decode/encode ...".

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/codecs_module/codec_api.hpp"
+#include "core/common/codec_api.hpp"
 #include "core/common/output_set.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/image_codecs.hpp"

@@ -11,16 +11,13 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "core/common/geo_reference.hpp"
 #include "core/common/image_header.hpp"
 #include "core/radiometry/gcp.hpp"
 
 namespace lwb::core::radiometry {
 
-struct GeoReference {
-    bool valid = false;            ///< false: the image has no georeferencing
-    double transform[6] = {0, 1, 0, 0, 0, 1};  ///< GDAL geotransform (corner convention, map units)
-    std::string crsWkt;            ///< coordinate reference system as WKT ("" = none recorded)
-};
+using core::GeoReference;  // (core/common/geo_reference.hpp)
 
 /// The georeferencing of a north-up map grid: pixel size s, centre of pixel (0, 0) at (X0, Y0)
 /// → transform (X0 − s/2, s, 0, Y0 + s/2, 0, −s). crsWkt: from crsFromUserInput, or "" for the

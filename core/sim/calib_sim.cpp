@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/calib/geodesy.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 namespace lwb::core::sim {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 namespace lwb::core::sim {
 

@@ -6,7 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/sim/footprint_sim.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "core/sim/scene_sim.hpp"
 
 namespace lwb::core::sim {

@@ -8,7 +8,7 @@
 #include "core/common/parallel.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/crlb.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 namespace lwb::core::sim {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/common/text.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "core/sim/terrain_photo.hpp"
 
 namespace lwb::core::sim {

@@ -10,7 +10,7 @@
 
 #include "core/footprint/gauss_fit.hpp"
 #include "core/footprint/spot.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 namespace lwb::core::sim {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 namespace lwb::core::sim {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "core/common/text.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 namespace lwb::core::sim {
 

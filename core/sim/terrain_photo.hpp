@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 
 namespace lwb::core::sim {
 

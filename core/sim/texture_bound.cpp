@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/footprint/crlb.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "core/sim/terrain_photo.hpp"
 
 namespace lwb::core::sim {

@@ -13,7 +13,7 @@
 #include "core/common/allocator.hpp"
 #include "core/common/select.hpp"
 #include "core/common/text.hpp"
-#include "core/sim/rng.hpp"
+#include "core/common/rng.hpp"
 #include "core/slr/kdtree2.hpp"
 #include "core/slr/postfit.hpp"
 #include "core/slr/screen_auto.hpp"
@@ -87,7 +87,7 @@ int automaticAreaLimit(const std::vector<double>& t, const std::vector<double>& 
     thread_local std::vector<double> uniforms;
     thread_local size_t uniformsFor = 0;
     if (uniformsFor != m || uniforms.size() != m) {
-        sim::Rng rng(0x6e756c6cULL ^ static_cast<uint64_t>(m));
+        Rng rng(0x6e756c6cULL ^ static_cast<uint64_t>(m));
         uniforms.resize(m);
         for (double& u : uniforms) u = rng.uniform();
         uniformsFor = m;

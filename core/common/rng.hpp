@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace lwb::core::sim {
+namespace lwb::core {
 
 class Rng {
 public:
@@ -80,4 +80,8 @@ private:
     double m_spare = 0;
 };
 
+}  // namespace lwb::core
+
+namespace lwb::core::sim {
+using core::Rng;  // (the simulators' name for it)
 }  // namespace lwb::core::sim

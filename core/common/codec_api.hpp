@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/radiometry/geotiff.hpp"
+#include "core/common/geo_reference.hpp"
 
 namespace lwb::core::codecs {
 
@@ -29,10 +29,10 @@ struct CodecModule {
     // GDAL. Messages are complete ("PATH: what is wrong ..."), as the public functions of
     // core/radiometry/geotiff.hpp give them; the core keeps the file checks and the atomic write.
     bool (*crsToWkt)(const std::string& text, std::string* wkt, std::string* gdalMessage) = nullptr;
-    bool (*geoTiffBytes)(const std::string& path, const cv::Mat& image, const radiometry::GeoReference& geo, bool hasNoData,
+    bool (*geoTiffBytes)(const std::string& path, const cv::Mat& image, const GeoReference& geo, bool hasNoData,
                          double noData, std::string* bytes, std::string* error) = nullptr;
-    bool (*readGeoReference)(const std::string& path, radiometry::GeoReference* geo, std::string* error) = nullptr;
-    bool (*readGeoTiff)(const std::string& path, cv::Mat* image, radiometry::GeoReference* geo, std::string* error,
+    bool (*readGeoReference)(const std::string& path, GeoReference* geo, std::string* error) = nullptr;
+    bool (*readGeoTiff)(const std::string& path, cv::Mat* image, GeoReference* geo, std::string* error,
                         long long maxPixels) = nullptr;
 };
 
