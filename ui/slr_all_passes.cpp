@@ -26,7 +26,8 @@ namespace lwb::ui {
 using namespace core::slr;
 
 namespace {
-const QString kWaiting = QObject::tr("waiting");
+// A row not decided yet (a status of the table only: summary.csv never holds it).
+constexpr const char* kWaiting = "waiting";
 }  // namespace
 
 int SlrAllPassesDialog::column(const std::string& name) {
@@ -113,7 +114,7 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const QS
         DayRow& d = m_rows[size_t(r)];
         d.pass = size_t(r) + 1;
         d.block = passes[size_t(r)];
-        d.status = kWaiting.toStdString();
+        d.status = kWaiting;
         for (int c = 0; c < int(cols.size()); ++c) {
             auto* item = new QTableWidgetItem(QString::fromStdString(cols[size_t(c)].cell(d)));
             if (c == 0) item->setData(Qt::UserRole, r);
@@ -246,7 +247,7 @@ void SlrAllPassesDialog::runDone(const DayResult& result, const QString& outDir)
     m_cancelButton->setEnabled(false);
     if (result.cancelled)
         for (int r = 0; r < m_total; ++r)
-            if (m_rows[size_t(r)].status == kWaiting.toStdString()) {
+            if (m_rows[size_t(r)].status == kWaiting) {
                 m_rows[size_t(r)].status = "cancelled";
                 m_table->item(r, column("status"))->setText(tr("cancelled"));
             }

@@ -89,18 +89,14 @@ SlrStationNpPanel::SlrStationNpPanel(QWidget* parent) : QWidget(parent) {
 }
 
 bool SlrStationNpPanel::load(const QString& path, QString* error) {
-    CrdReadResult r = readCrd(path.toStdString());
-    if (!r.ok) {
-        *error = QString::fromStdString(r.error);
+    // The core's reader and check (loadStationNormalPoints), as every front end would read it.
+    CrdFile file;
+    std::string err;
+    if (!loadStationNormalPoints(path.toStdString(), &file, &err)) {
+        *error = QString::fromStdString(err);
         return false;
     }
-    size_t nps = 0;
-    for (const CrdPass& p : r.file.passes) nps += p.normalPoints.size();
-    if (nps == 0) {
-        *error = tr("%1: no normal-point records (type 11): not a normal-point file").arg(path);
-        return false;
-    }
-    m_file = std::make_shared<const CrdFile>(std::move(r.file));
+    m_file = std::make_shared<const CrdFile>(std::move(file));
     m_path = path;
     m_fileLabel->setText(QFileInfo(path).fileName());
     m_fileLabel->setToolTip(path);

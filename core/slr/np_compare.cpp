@@ -197,4 +197,20 @@ NpComparison compareWithStation(const PassData& pass, const PostfitResult& post,
     return c;
 }
 
+bool loadStationNormalPoints(const std::string& path, CrdFile* out, std::string* error) {
+    CrdReadResult r = readCrd(path);
+    if (!r.ok) {
+        *error = r.error;
+        return false;
+    }
+    size_t nps = 0;
+    for (const CrdPass& p : r.file.passes) nps += p.normalPoints.size();
+    if (nps == 0) {
+        *error = path + ": no normal-point records (type 11): not a normal-point file";
+        return false;
+    }
+    *out = std::move(r.file);
+    return true;
+}
+
 }  // namespace lwb::core::slr

@@ -47,6 +47,10 @@ struct NpComparison {
     std::string describe() const;
 };
 
+/// Reads a station's normal-point file for compareWithStation: a CRD file with at least one
+/// type-11 record. False with *error ("FILE:LINE: ..." from the reader, or why it is not one).
+bool loadStationNormalPoints(const std::string& path, CrdFile* out, std::string* error);
+
 /// Compares `post`'s normal points (of `pass`, read from a CRD file: its day is the H4's) with
 /// the station's in `station`. The block is the one of the pass's satellite (ILRS id or name)
 /// with the most normal points within the pass's span (one bin beyond each end); bins are

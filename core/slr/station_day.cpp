@@ -88,6 +88,9 @@ public:
     StationDay(const SlrSetup& setup, const DayOptions& options, const DayObserver& observer)
         : m_setup(setup), m_opt(options), m_obs(observer), m_write(!options.outDir.empty()) {
         m_setup.sources.cpfFallback = true;  // a pass the CPF does not fit: its own TOF trend, with a note
+        // A pass with damaged records is a failed row, as on the command line, whoever asks (the
+        // workbench's own set-up opens such a pass to be looked at).
+        m_setup.sources.openDamaged = false;
     }
 
     DayResult run() {
@@ -249,13 +252,14 @@ private:
         try {
             j.r = runOpenedPass(*j.pass, j.settings, m_setup, nullptr);
             if (j.r.ok) {
-                PassProductPaths paths;
-                if (m_write) paths = {out(j.i, ".csv"), out(j.i, ".frd"), out(j.i, ".npt"), false};
-                // (its normal-point block is kept for the day's file)
-                if (stagePassProducts(m_outs, *j.pass, j.r, paths, &j.npBlock, &j.writeError))
-                    j.npsFormed = !deliveredNormalPoints(j.r).points.empty();
-                else if (j.writeError.empty())
-                    j.writeError = out(j.i, ".npt") + ": not written";
+                // Its files, and its normal-point block kept for the day's file (nothing without a folder).
+                if (m_write) {
+                    const PassProductPaths paths{out(j.i, ".csv"), out(j.i, ".frd"), out(j.i, ".npt"), false};
+                    if (stagePassProducts(m_outs, *j.pass, j.r, paths, &j.npBlock, &j.writeError))
+                        j.npsFormed = !deliveredNormalPoints(j.r).points.empty();
+                    else if (j.writeError.empty())
+                        j.writeError = out(j.i, ".npt") + ": not written";
+                }
             }
         } catch (const std::exception& e) {
             j.r.ok = false;

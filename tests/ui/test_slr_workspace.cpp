@@ -397,6 +397,18 @@ private slots:
         QVERIFY(!c->exportNormalPoints(npt, &err));
         QVERIFY2(err.startsWith(at), qPrintable(err));
         for (const QString& f : {csv, crd, npt}) QVERIFY(!QFile::exists(f));
+        // Screen all passes on it: the damaged pass is a failed row, as laserwb-cli slr
+        // --all-passes lists it (the workbench's own set-up opens it to be looked at; the batch
+        // ran it and stopped at its refused files, with no table).
+        SlrAllPassesDialog* all = w.slr()->screenAllPasses();
+        QVERIFY(all);
+        QTRY_VERIFY_WITH_TIMEOUT(all->finished(), 60000);
+        QCOMPARE(all->table()->item(0, SlrAllPassesDialog::column("status"))->text(), QString("failed"));
+        QVERIFY2(all->exportCsv(m_dir.path() + "/cut-all.csv", &err), qPrintable(err));
+        const lwbtest::CliRun day = lwbtest::runCli({"slr", cut, "--all-passes", "--out-dir", m_dir.path() + "/cut-day", "-q"});
+        QCOMPARE(day.exitCode, 4);
+        QCOMPARE(lwbtest::readAll(m_dir.path() + "/cut-all.csv"), lwbtest::readAll(m_dir.path() + "/cut-day/summary.csv"));
+        all->close();
         // A sound pass opened next clears the warnings and exports again.
         QVERIFY2(w.slr()->openPath(jason, -1, &err), qPrintable(err));
         QVERIFY(c->waitIdle(60000));
