@@ -323,6 +323,84 @@ int benchDay(const std::string& cmd, long long passes, long long points, long lo
     if (r1.exitCode != 0 || rn.exitCode != 0) return fail(cmd, "a run of the day failed (exit " + std::to_string(r1.exitCode) + ", " + std::to_string(rn.exitCode) + ")");
     return same ? kOk : fail(cmd, "the products on 1 thread and on every core differ");
 }
+
+// The bench's simulated pass of n points written to csv (run in a child by inChild).
+BenchRow simulatePassCsv(const sim::SlrSimParams& base, long long n, double fraction, long long seed,
+                         const std::string& csv) {
+    BenchRow r;
+    sim::SlrSimParams p = base;
+    p.points = n;
+    p.signalFraction = fraction;
+    const sim::SlrSimPass pass = sim::simulateSlrPass(p, static_cast<uint64_t>(seed));
+    std::string e;
+    r.ok = pass.ok && writePassCsv(csv, pass, false, &e);
+    return r;
+}
+
+// The pass CSV read, screened (automatic mode) and post-fitted with normal points, timed, with the
+// peak memory and the precision and recall against the truth column (run in a child by inChild).
+BenchRow screenPassCsv(const std::string& csv, sim::SlrKind kind, const sim::SlrSimParams& base) {
+    using Clock = std::chrono::steady_clock;
+    auto sec = [](Clock::time_point a0) { return std::chrono::duration<double>(Clock::now() - a0).count(); };
+    BenchRow r;
+    r.startKb = rssKb();
+    const auto t0 = Clock::now();
+    std::vector<double> t, oc;
+    std::vector<uint8_t> truth;
+    std::string e;
+    if (!readBenchCsv(csv, &t, &oc, &truth, &e)) {
+        std::cerr << "bench slr: " << e << "\n";
+        return r;
+    }
+    r.parse = sec(t0);
+    const auto t1 = Clock::now();
+    const slr::ScreenResult s = slr::screenSignal(t, oc, slr::ScreenParams{});
+    r.screen = sec(t1);
+    r.autoScale = s.autoMs / 1000.0;
+    if (!s.ok) {
+        std::cerr << "bench slr: " << s.error << "\n";
+        return r;
+    }
+    const auto t2 = Clock::now();
+    slr::PostfitParams pp;
+    pp.rejectSigma = kind == sim::SlrKind::Khz ? 2.5 : 3.0;
+    pp.altitudeKm = base.altitudeKm;
+    pp.fireRateHz = base.fireRateHz;
+    const slr::PostfitResult f = slr::postfit(t, oc, slr::acceptedMask(s), {}, pp);
+    r.postfit = sec(t2);
+    r.total = sec(t0);
+    if (!f.ok) {
+        std::cerr << "bench slr: " << f.error << "\n";
+        return r;
+    }
+    struct rusage ru {};
+    getrusage(RUSAGE_SELF, &ru);
+    r.peakKb = static_cast<double>(ru.ru_maxrss);
+    long long tp = 0, fp = 0, fn = 0;
+    for (size_t i = 0; i < t.size(); ++i) {
+        const bool acc = s.accepted(i);
+        tp += acc && truth[i];
+        fp += acc && !truth[i];
+        fn += !acc && truth[i];
+    }
+    r.precision = tp + fp ? static_cast<double>(tp) / static_cast<double>(tp + fp) : 0;
+    r.recall = tp + fn ? static_cast<double>(tp) / static_cast<double>(tp + fn) : 0;
+    r.points = static_cast<long long>(t.size());
+    r.nps = static_cast<long long>(f.normalPoints.size());
+    r.ok = 1;
+    return r;
+}
+
+// One row of the table.
+void printBenchRow(const BenchRow& row) {
+    auto f3 = [](double v) { return core::formatFixed(v, 3); };
+    std::cout << "| " << row.points << " | " << f3(row.parse) << " | " << f3(row.screen) << " | " << f3(row.autoScale)
+              << " | " << f3(row.postfit) << " | " << f3(row.total) << " | " << core::formatFixed(row.peakKb / 1024, 1)
+              << " | " << core::formatFixed(row.peakKb * 1024 / static_cast<double>(row.points), 0) << " | "
+              << core::formatFixed(row.precision, 4) << " | " << core::formatFixed(row.recall, 4) << " | " << row.nps
+              << " |\n"
+              << std::flush;
+}
 }  // namespace
 
 int cmdBenchSlr(int argc, char** argv) {
@@ -364,88 +442,19 @@ int cmdBenchSlr(int argc, char** argv) {
     for (long long n : sizes) {
         const std::string csv = dir + "/pass_" + std::to_string(n) + ".csv";
         BenchRow sr;
-        const bool simOk = inChild(
-            [&]() {
-                BenchRow r;
-                sim::SlrSimParams p = base;
-                p.points = n;
-                p.signalFraction = fraction;
-                const sim::SlrSimPass pass = sim::simulateSlrPass(p, static_cast<uint64_t>(seed));
-                std::string e;
-                r.ok = pass.ok && writePassCsv(csv, pass, false, &e);
-                return r;
-            },
-            &sr);
+        const bool simOk = inChild([&]() { return simulatePassCsv(base, n, fraction, seed, csv); }, &sr);
         if (!simOk) {
             rc = fail(cmd, "simulating " + std::to_string(n) + " points failed");
             break;
         }
         BenchRow row;
-        const bool runOk = inChild(
-            [&]() {
-                using Clock = std::chrono::steady_clock;
-                auto sec = [](Clock::time_point a0) { return std::chrono::duration<double>(Clock::now() - a0).count(); };
-                BenchRow r;
-                r.startKb = rssKb();
-                const auto t0 = Clock::now();
-                std::vector<double> t, oc;
-                std::vector<uint8_t> truth;
-                std::string e;
-                if (!readBenchCsv(csv, &t, &oc, &truth, &e)) {
-                    std::cerr << "bench slr: " << e << "\n";
-                    return r;
-                }
-                r.parse = sec(t0);
-                const auto t1 = Clock::now();
-                const slr::ScreenResult s = slr::screenSignal(t, oc, slr::ScreenParams{});
-                r.screen = sec(t1);
-                r.autoScale = s.autoMs / 1000.0;
-                if (!s.ok) {
-                    std::cerr << "bench slr: " << s.error << "\n";
-                    return r;
-                }
-                const auto t2 = Clock::now();
-                slr::PostfitParams pp;
-                pp.rejectSigma = kind == sim::SlrKind::Khz ? 2.5 : 3.0;
-                pp.altitudeKm = base.altitudeKm;
-                pp.fireRateHz = base.fireRateHz;
-                const slr::PostfitResult f = slr::postfit(t, oc, slr::acceptedMask(s), {}, pp);
-                r.postfit = sec(t2);
-                r.total = sec(t0);
-                if (!f.ok) {
-                    std::cerr << "bench slr: " << f.error << "\n";
-                    return r;
-                }
-                struct rusage ru {};
-                getrusage(RUSAGE_SELF, &ru);
-                r.peakKb = static_cast<double>(ru.ru_maxrss);
-                long long tp = 0, fp = 0, fn = 0;
-                for (size_t i = 0; i < t.size(); ++i) {
-                    const bool acc = s.accepted(i);
-                    tp += acc && truth[i];
-                    fp += acc && !truth[i];
-                    fn += !acc && truth[i];
-                }
-                r.precision = tp + fp ? static_cast<double>(tp) / static_cast<double>(tp + fp) : 0;
-                r.recall = tp + fn ? static_cast<double>(tp) / static_cast<double>(tp + fn) : 0;
-                r.points = static_cast<long long>(t.size());
-                r.nps = static_cast<long long>(f.normalPoints.size());
-                r.ok = 1;
-                return r;
-            },
-            &row);
+        const bool runOk = inChild([&]() { return screenPassCsv(csv, kind, base); }, &row);
         std::remove(csv.c_str());
         if (!runOk) {
             rc = fail(cmd, "the run on " + std::to_string(n) + " points failed");
             break;
         }
-        auto f3 = [](double v) { return core::formatFixed(v, 3); };
-        std::cout << "| " << row.points << " | " << f3(row.parse) << " | " << f3(row.screen) << " | " << f3(row.autoScale)
-                  << " | " << f3(row.postfit) << " | " << f3(row.total) << " | " << core::formatFixed(row.peakKb / 1024, 1)
-                  << " | " << core::formatFixed(row.peakKb * 1024 / static_cast<double>(row.points), 0) << " | "
-                  << core::formatFixed(row.precision, 4) << " | " << core::formatFixed(row.recall, 4) << " | " << row.nps
-                  << " |\n"
-                  << std::flush;
+        printBenchRow(row);
         if (sizes.back() == n)
             std::cerr << "(peak RSS includes the process baseline of about " << core::formatFixed(row.startKb / 1024, 1)
                       << " MB before reading; bytes/point = peak RSS / points)\n";

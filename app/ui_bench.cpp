@@ -31,27 +31,49 @@ Stats stats(std::vector<double> v) {
     s.max = v.back();
     return s;
 }
-}  // namespace
 
-int main(int argc, char** argv) {
-    lwb::core::tuneAllocator();
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    QApplication app(argc, argv);
-    QApplication::setApplicationName("laserwb-uibench");
-    lwb::ui::MainWindow w;
-    w.resize(1480, 900);
-    w.show();
-    w.openDemo();
-    w.waitIdle(60000);
-    auto* ws = w.footprint();
-    auto* c = ws->controller();
+// The first screening of one real pass: the pass, its points and the median time (ms).
+struct FirstRun {
+    QString file;
+    size_t points;
+    double ms;
+};
+
+// The benchmark on one workbench window: its stages, in the order main runs them, and what they
+// measure (times in ms). The counters are advanced by the controllers' signals, connected for
+// the whole run.
+struct UiBench {
+    explicit UiBench(lwb::ui::MainWindow& window) : w(window) {}
+
+    lwb::ui::MainWindow& w;
+    lwb::ui::FootprintWorkspace* ws = nullptr;
+    lwb::ui::FootprintController* c = nullptr;
+    lwb::ui::SlrWorkspace* slr = nullptr;
+    lwb::ui::SlrController* sc = nullptr;
+    int arrived = 0, runs = 0;
+    std::vector<double> fp, vj, vjCore, sl, sl2, cOnly;
+    bool refitted = false;
+    size_t simulatedPoints = 0;
+    std::vector<FirstRun> first;
+
+    void footprintThreshold();
+    void footprintVerdict();
+    void slrCosineKeptScale();
+    void slrCosineSearched();
+    void slrCoreOnly();
+    void slrRealPasses();
+    void printTable() const;
+};
+
+// The threshold factor dragged on the footprint workspace's sixth shot.
+void UiBench::footprintThreshold() {
+    ws = w.footprint();
+    c = ws->controller();
     ws->selectRow(5);
     w.waitIdle(10000);
     // Footprint: drag the threshold factor through 60 values; each change must produce a new
     // result for the current shot, painted.
-    std::vector<double> fp;
-    int arrived = 0;
-    QObject::connect(c, &lwb::ui::FootprintController::currentDetailReady, [&arrived] { ++arrived; });
+    QObject::connect(c, &lwb::ui::FootprintController::currentDetailReady, [this] { ++arrived; });
     for (int i = 0; i < 60; ++i) {
         const double v = 0.08 + 0.004 * (i % 30);
         arrived = 0;
@@ -63,10 +85,12 @@ int main(int argc, char** argv) {
         fp.push_back(t.nsecsElapsed() / 1e6);
     }
     w.waitIdle(30000);
-    const Stats f = stats(fp);
+}
+
+// A verdict criterion alone moved: every shot judged again, no refit.
+void UiBench::footprintVerdict() {
     // Footprint: a verdict criterion alone (axis-ratio max) moved through 40 values: the cached
     // fits of every shot of the demo are judged again, no refit (the fit count must not move).
-    std::vector<double> vj, vjCore;
     const long long fitsBefore = c->fitCount();
     lwb::ui::ParamSlider* axisMax = ws->paramsPanel()->axisRatioMaxSlider();
     for (int i = 0; i < 40; ++i) {
@@ -78,20 +102,21 @@ int main(int argc, char** argv) {
         vj.push_back(t.nsecsElapsed() / 1e6);
         vjCore.push_back(c->lastRejudgeMs());
     }
-    const bool refitted = c->fitCount() != fitsBefore;
-    const Stats v = stats(vj), vc = stats(vjCore);
+    refitted = c->fitCount() != fitsBefore;
+}
+
+// The cosine constant dragged on the SLR workspace's simulated pass, its scale kept.
+void UiBench::slrCosineKeptScale() {
     // SLR: a 10⁵-point simulated kHz pass; drag the cosine constant through 20 values; each
     // change reruns the screening and the post-fit off the GUI thread, then the three plots are
     // redrawn.
-    auto* slr = w.slr();
+    slr = w.slr();
     w.showWorkspace("slr");
     slr->openDemo(100000);
     w.waitIdle(60000);
-    auto* sc = slr->controller();
+    sc = slr->controller();
     sc->setReuseScaleForCosine(true);  // first: the scale kept while C moves (off by default since issue 28)
-    std::vector<double> sl;
-    int runs = 0;
-    QObject::connect(sc, &lwb::ui::SlrController::runReady, [&runs] { ++runs; });
+    QObject::connect(sc, &lwb::ui::SlrController::runReady, [this] { ++runs; });
     for (int i = 0; i < 20; ++i) {
         runs = 0;
         QElapsedTimer t;
@@ -102,11 +127,13 @@ int main(int argc, char** argv) {
         slr->imagePlot()->replot(QCustomPlot::rpImmediateRefresh);
         sl.push_back(t.nsecsElapsed() / 1e6);
     }
-    const Stats s = stats(sl);
+}
+
+// The cosine constant dragged again, the scale searched on every change.
+void UiBench::slrCosineSearched() {
     // The same with the scale searched again on every change (what the CLI does for each run, and
     // the workbench's default).
     sc->setReuseScaleForCosine(false);
-    std::vector<double> sl2;
     for (int i = 0; i < 10; ++i) {
         runs = 0;
         QElapsedTimer t;
@@ -117,11 +144,13 @@ int main(int argc, char** argv) {
         slr->imagePlot()->replot(QCustomPlot::rpImmediateRefresh);
         sl2.push_back(t.nsecsElapsed() / 1e6);
     }
-    const Stats s2 = stats(sl2);
+}
+
+// The core alone screening the simulated pass at the kept scale.
+void UiBench::slrCoreOnly() {
     // The core alone on the same pass: a C-only change screened at the scale the automatic
     // mode chose (core::slr::ScaleChoice passed in), best of 10.
     const lwb::core::slr::ScaleChoice scale = lwb::core::slr::scaleChoice(sc->run().screen);
-    std::vector<double> cOnly;
     lwb::core::slr::ScreenParams p = sc->screenParams();
     for (int i = 0; i < 10; ++i) {
         p.cosineC = 0.93 + 0.005 * i;
@@ -131,19 +160,16 @@ int main(int argc, char** argv) {
         cOnly.push_back(t.nsecsElapsed() / 1e6);
         if (!r.ok) std::fprintf(stderr, "screening failed: %s\n", r.error.c_str());
     }
-    const double cBest = *std::min_element(cOnly.begin(), cOnly.end());
+}
+
+// The first screening of the shared real passes that are present.
+void UiBench::slrRealPasses() {
     // SLR: the first screening of real passes (the shared ILRS files, when ../shared/data/slr or
     // $LWB_SHARED_SLR has them): open the file's first pass → automatic screening, post-fit and
     // the plots painted. What an analyst waits for after opening a pass.
-    struct FirstRun {
-        QString file;
-        size_t points;
-        double ms;
-    };
-    std::vector<FirstRun> first;
     const QString shared = qEnvironmentVariableIsEmpty("LWB_SHARED_SLR") ? QString("../shared/data/slr")
                                                                          : qEnvironmentVariable("LWB_SHARED_SLR");
-    const size_t simulatedPoints = sc->pass().t.size();
+    simulatedPoints = sc->pass().t.size();
     const struct {
         const char* file;
         int pass;  // 0-based; hy2c's first pass has 5 ranges and is refused, its third is screened
@@ -171,6 +197,15 @@ int main(int argc, char** argv) {
         if (ms.size() == 3)
             first.push_back({QString("%1 pass %2").arg(f).arg(passIndex + 1), sc->pass().t.size(), stats(ms).median});
     }
+}
+
+// The Markdown table of every stage's timings.
+void UiBench::printTable() const {
+    const Stats f = stats(fp);
+    const Stats v = stats(vj), vc = stats(vjCore);
+    const Stats s = stats(sl);
+    const Stats s2 = stats(sl2);
+    const double cBest = *std::min_element(cOnly.begin(), cOnly.end());
     std::printf("| interaction | n | median (ms) | p95 (ms) | max (ms) |\n|---|---|---|---|---|\n");
     std::printf("| footprint: threshold slider → current shot re-fitted (3 methods) and painted | %zu | %.1f | %.1f | %.1f |\n",
                 fp.size(), f.median, f.p95, f.max);
@@ -187,5 +222,27 @@ int main(int argc, char** argv) {
     for (const FirstRun& r : first)
         std::printf("| SLR, real pass %s (%zu points): opened → first screening, post-fit and plots painted | 3 | %.1f | | |\n",
                     qPrintable(r.file), r.points, r.ms);
-    return refitted ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    lwb::core::tuneAllocator();
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    QApplication::setApplicationName("laserwb-uibench");
+    lwb::ui::MainWindow w;
+    w.resize(1480, 900);
+    w.show();
+    w.openDemo();
+    w.waitIdle(60000);
+    UiBench b(w);
+    b.footprintThreshold();
+    b.footprintVerdict();
+    b.slrCosineKeptScale();
+    b.slrCosineSearched();
+    b.slrCoreOnly();
+    b.slrRealPasses();
+    b.printTable();
+    return b.refitted ? 1 : 0;
 }

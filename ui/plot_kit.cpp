@@ -816,6 +816,42 @@ void PlotKit::showMenu(const QPoint& globalPos) {
     menu.exec(globalPos);
 }
 
+namespace {
+
+// A box drag's rubber band from the press to the mouse, shown once the mouse has moved 5 pixels.
+void showRubberBand(QRubberBand*& band, QCustomPlot* plot, const QPoint& from, const QPoint& to) {
+    if ((to - from).manhattanLength() < 5 && !band) return;
+    if (!band) band = new QRubberBand(QRubberBand::Rectangle, plot);
+    band->setGeometry(QRect(from, to).normalized());
+    band->show();
+}
+
+// An axis dragged from `from` to `to`: its range at the press (lower, upper) shifted by the drag
+// (scaled on a logarithmic axis).
+void dragAxisRange(QCPAxis* a, double lower, double upper, const QPoint& from, const QPoint& to) {
+    a->setRange(lower, upper);
+    const bool h = a->orientation() == Qt::Horizontal;
+    const double c0 = a->pixelToCoord(h ? from.x() : from.y());
+    const double c1 = a->pixelToCoord(h ? to.x() : to.y());
+    if (a->scaleType() == QCPAxis::stLogarithmic && c0 > 0 && c1 > 0) a->setRange(lower * c0 / c1, upper * c0 / c1);
+    else a->setRange(lower + c0 - c1, upper + c0 - c1);
+}
+
+// Home: the home view; Backspace: one step back. True when the key was one of them.
+bool homeOrBackKey(PlotKit& kit, const QKeyEvent* ke) {
+    if (ke->key() == Qt::Key_Home) {
+        kit.home();
+        return true;
+    }
+    if (ke->key() == Qt::Key_Backspace) {
+        kit.back();
+        return true;
+    }
+    return false;
+}
+
+}  // namespace
+
 bool PlotKit::eventFilter(QObject* o, QEvent* e) {
     if (o != m_plot) return false;
     switch (e->type()) {
@@ -871,20 +907,11 @@ bool PlotKit::eventFilter(QObject* o, QEvent* e) {
         auto* me = static_cast<QMouseEvent*>(e);
         const QPoint pos = me->position().toPoint();
         if (m_drag == Drag::Box) {
-            if ((pos - m_pressPos).manhattanLength() < 5 && !m_band) return true;
-            if (!m_band) m_band = new QRubberBand(QRubberBand::Rectangle, m_plot);
-            m_band->setGeometry(QRect(m_pressPos, pos).normalized());
-            m_band->show();
+            showRubberBand(m_band, m_plot, m_pressPos, pos);
             return true;
         }
         if (m_drag == Drag::Axis && m_dragAxis) {
-            QCPAxis* a = m_dragAxis;
-            a->setRange(m_dragLower, m_dragUpper);
-            const bool h = a->orientation() == Qt::Horizontal;
-            const double c0 = a->pixelToCoord(h ? m_pressPos.x() : m_pressPos.y());
-            const double c1 = a->pixelToCoord(h ? pos.x() : pos.y());
-            if (a->scaleType() == QCPAxis::stLogarithmic && c0 > 0 && c1 > 0) a->setRange(m_dragLower * c0 / c1, m_dragUpper * c0 / c1);
-            else a->setRange(m_dragLower + c0 - c1, m_dragUpper + c0 - c1);
+            dragAxisRange(m_dragAxis, m_dragLower, m_dragUpper, m_pressPos, pos);
             m_plot->replot(QCustomPlot::rpQueuedReplot);
             return true;
         }
@@ -924,18 +951,8 @@ bool PlotKit::eventFilter(QObject* o, QEvent* e) {
         if (me->button() == Qt::LeftButton) home();
         return false;
     }
-    case QEvent::KeyPress: {
-        auto* ke = static_cast<QKeyEvent*>(e);
-        if (ke->key() == Qt::Key_Home) {
-            home();
-            return true;
-        }
-        if (ke->key() == Qt::Key_Backspace) {
-            back();
-            return true;
-        }
-        return false;
-    }
+    case QEvent::KeyPress:
+        return homeOrBackKey(*this, static_cast<QKeyEvent*>(e));
     default:
         return false;
     }

@@ -514,24 +514,40 @@ struct CentreCovariance {
     double xx = NAN, xy = NAN, yy = NAN;
 };
 
-__attribute__((target_clones("avx2", "default")))
-CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw, const Vec9& p, const Mat9& jtj,
-                                        double cauchyC2, int cx, int cy, const CameraParams& camera, double textureScale) {
-    CentreCovariance out;
-    Eigen::Matrix<double, kP, 2> unit = Eigen::Matrix<double, kP, 2>::Zero();
-    unit(1, 0) = unit(2, 1) = 1;
-    const Eigen::LDLT<Mat9> ldlt(jtj);
-    if (ldlt.info() != Eigen::Success) return out;
-    const Eigen::Matrix<double, kP, 2> hc = ldlt.solve(unit);  // the x0 and y0 columns of (JᵀWJ)⁻¹
-    if (!hc.allFinite()) return out;
-    const std::vector<WinPixel>& win = fw.px;
-    const int n = static_cast<int>(win.size()), cols = fw.cols, rows = fw.rows;
-    if (n < 4 || cols < 2 || rows < 2) return out;
-    const double A = p(0), x0 = p(1), y0 = p(2), a = p(3), b = p(4), c = p(5), bx = p(7), by = p(8);
-    const double gain = camera.gainEPerDn, rn = camera.readNoiseE / camera.gainEPerDn, rn2 = rn * rn;
+// The window's per-pixel arrays of the covariance, in one thread-local buffer: the model's
+// quadratic form and its exponential, the gradients of x0 and y0, the residual, the photon +
+// read variance and the templates s_x, s_y.
+struct CovarianceArrays {
+    double *q, *e, *gx, *gy, *res, *v, *sx, *sy;
+};
+
+// The three sums of a sandwich s C sᵀ (or its parts).
+struct CovarianceSums {
+    double xx = 0, xy = 0, yy = 0;
+};
+
+// The ROI's residual field (mean removed) and its mean photon + read variance.
+struct ResidualField {
+    const double* rho;
+    double vbar;
+};
+
+// Carves the window's arrays out of the thread's buffer (n pixels each).
+__attribute__((always_inline)) inline CovarianceArrays covarianceArrays(int n) {
     thread_local std::vector<double> buf;
     buf.resize(size_t(n) * 8);
     double *q = buf.data(), *e = q + n, *gx = e + n, *gy = gx + n, *res = gy + n, *v = res + n, *sx = v + n, *sy = sx + n;
+    return {q, e, gx, gy, res, v, sx, sy};
+}
+
+// At each window pixel: the gradients of x0 and y0, the residual and the photon + read variance.
+__attribute__((always_inline)) inline void windowGradients(const FitWindow& fw, const Vec9& p,
+                                                           const Eigen::Matrix<double, kP, 2>& hc, double gain, double rn2,
+                                                           const CovarianceArrays& t) {
+    const std::vector<WinPixel>& win = fw.px;
+    const int n = static_cast<int>(win.size());
+    const double A = p(0), x0 = p(1), y0 = p(2), a = p(3), b = p(4), c = p(5), bx = p(7), by = p(8);
+    double *q = t.q, *e = t.e, *gx = t.gx, *gy = t.gy, *res = t.res, *v = t.v;
     for (int i = 0; i < n; ++i) {
         const double dx = win[size_t(i)].dx - x0, dy = win[size_t(i)].dy - y0;
         q[i] = a * dx * dx + 2 * b * dx * dy + c * dy * dy;
@@ -553,6 +569,15 @@ CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw,
         res[i] = win[size_t(i)].value - model;
         v[i] = std::max(model, 0.0) / gain + rn2;
     }
+}
+
+// The templates s_x, s_y: each pixel's final weight times its gradients (pixel fit), or the
+// sums over the differences each pixel is in (difference fit).
+__attribute__((always_inline)) inline void centreTemplates(const FitWindow& fw, double cauchyC2, const CovarianceArrays& t) {
+    const std::vector<WinPixel>& win = fw.px;
+    const int n = static_cast<int>(win.size()), cols = fw.cols;
+    const double *gx = t.gx, *gy = t.gy, *res = t.res;
+    double *sx = t.sx, *sy = t.sy;
     if (!fw.diff) {
         for (int i = 0; i < n; ++i) {
             double w = win[size_t(i)].weight;
@@ -579,14 +604,12 @@ CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw,
             }
         }
     }
-    // Photon and read noise: diagonal.
-    double pxx = 0, pxy = 0, pyy = 0;
-    for (int i = 0; i < n; ++i) {
-        pxx += sx[i] * sx[i] * v[i];
-        pxy += sx[i] * sy[i] * v[i];
-        pyy += sy[i] * sy[i] * v[i];
-    }
-    // The ROI's residual field (mean removed) and its mean photon + read variance.
+}
+
+// The ROI's residual field img − model (mean removed) and its mean photon + read variance.
+__attribute__((always_inline)) inline ResidualField roiResidualField(const cv::Mat& roi, const Vec9& p, int cx, int cy,
+                                                                     double gain, double rn2) {
+    const double A = p(0), x0 = p(1), y0 = p(2), a = p(3), b = p(4), c = p(5), bx = p(7), by = p(8);
     const int W = roi.cols, H = roi.rows, N = W * H;
     const float* img = roi.ptr<float>();
     thread_local std::vector<double> rq, re;
@@ -614,6 +637,16 @@ CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw,
     mean /= N;
     vbar /= N;
     for (int i = 0; i < N; ++i) rho[i] -= mean;
+    return {rho, vbar};
+}
+
+// The texture part Σ_l A_s(l)·R(l) of the templates' sandwich, photon and read noise included
+// in R(0) (taken out by the caller).
+__attribute__((always_inline)) inline CovarianceSums textureSums(const cv::Mat& roi, const double* rho, const FitWindow& fw,
+                                                                 const CovarianceArrays& t) {
+    const int W = roi.cols, H = roi.rows, N = W * H;
+    const int n = static_cast<int>(fw.px.size()), cols = fw.cols, rows = fw.rows;
+    const double *sx = t.sx, *sy = t.sy;
     // Σ over the template's lags l of A_s(l)·R(l), R(l) = the lag's sum of products over its pairs,
     // taken directly (kernel::lagSums, vectorised). Lags l and −l are the same pairs: the
     // half-plane ly > 0 or (ly = 0, lx ≥ 0), the others counted twice. (By FFT on a 64² grid this
@@ -660,6 +693,38 @@ CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw,
             tyy += ayy[k] * r;
             txy += 0.5 * (double(asum[k]) - axx[k] - ayy[k]) * r;
         }
+    return {txx, txy, tyy};
+}
+
+__attribute__((target_clones("avx2", "default")))
+CentreCovariance groundCentreCovariance(const cv::Mat& roi, const FitWindow& fw, const Vec9& p, const Mat9& jtj,
+                                        double cauchyC2, int cx, int cy, const CameraParams& camera, double textureScale) {
+    CentreCovariance out;
+    Eigen::Matrix<double, kP, 2> unit = Eigen::Matrix<double, kP, 2>::Zero();
+    unit(1, 0) = unit(2, 1) = 1;
+    const Eigen::LDLT<Mat9> ldlt(jtj);
+    if (ldlt.info() != Eigen::Success) return out;
+    const Eigen::Matrix<double, kP, 2> hc = ldlt.solve(unit);  // the x0 and y0 columns of (JᵀWJ)⁻¹
+    if (!hc.allFinite()) return out;
+    const std::vector<WinPixel>& win = fw.px;
+    const int n = static_cast<int>(win.size()), cols = fw.cols, rows = fw.rows;
+    if (n < 4 || cols < 2 || rows < 2) return out;
+    const double gain = camera.gainEPerDn, rn = camera.readNoiseE / camera.gainEPerDn, rn2 = rn * rn;
+    const CovarianceArrays t = covarianceArrays(n);
+    windowGradients(fw, p, hc, gain, rn2, t);
+    centreTemplates(fw, cauchyC2, t);
+    const double *sx = t.sx, *sy = t.sy, *v = t.v;
+    // Photon and read noise: diagonal.
+    double pxx = 0, pxy = 0, pyy = 0;
+    for (int i = 0; i < n; ++i) {
+        pxx += sx[i] * sx[i] * v[i];
+        pxy += sx[i] * sy[i] * v[i];
+        pyy += sy[i] * sy[i] * v[i];
+    }
+    const ResidualField field = roiResidualField(roi, p, cx, cy, gain, rn2);
+    const double vbar = field.vbar;
+    const CovarianceSums tex = textureSums(roi, field.rho, fw, t);
+    double txx = tex.xx, txy = tex.xy, tyy = tex.yy;
     // The photon + read part of R(0) is counted exactly above (pixel by pixel): take its mean out.
     double sxx = 0, syy = 0, sxy = 0;
     for (int i = 0; i < n; ++i) {

@@ -259,20 +259,13 @@ footprint::GaussModel truthModel(const FootprintSimTruth& t) {
     return gm;
 }
 
-FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
-    Rng rng(seed);
-    FootprintSimShot shot;
-    FootprintSimTruth& t = shot.truth;
-    t.scene = p.scene;
-    t.spotCase = p.spotCase;
-    const TerrainPhotos& photos = terrainPhotos();
-    const bool photo = (p.ground == GroundSource::Photo || p.ground == GroundSource::PhotoCuts) && p.scene != Scene::Flat &&
-                       photos.ok;
-    const bool fractal = p.ground == GroundSource::Fractal && p.scene != Scene::Flat;
-    const SceneLevels lv = sceneLevels(p.scene, photo || fractal ? GroundSource::Photo : GroundSource::Synthetic);
-    t.groundMean = rng.uniform(lv.meanMin, lv.meanMax);
-    t.textureRms = rng.uniform(lv.textureMin, lv.textureMax);
-    const uint64_t groundSeed = rng.next();
+namespace {
+
+// The ground frame: a terrain photo patch, a fractal field or the synthetic ground, each from its
+// own generator seeded with groundSeed. Sets t's ground note (and on a photo patch rescales t's
+// texture RMS by the patch's raw RMS).
+cv::Mat groundImage(const FootprintSimParams& p, const SceneLevels& lv, const TerrainPhotos& photos, bool photo,
+                    bool fractal, uint64_t groundSeed, FootprintSimTruth& t) {
     cv::Mat img;
     if (photo) {
         Rng groundRng(groundSeed);
@@ -303,7 +296,11 @@ FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
         img = simulateGround(p.width, p.height, t.groundMean, t.textureRms, lv.features, groundSeed);
         if (p.ground == GroundSource::Photo && p.scene != Scene::Flat) t.groundNote = "synthetic: " + photos.error;
     }
-    const bool night = p.scene == Scene::Night;
+    return img;
+}
+
+// The spot's shape and centre (near a border for SpotCase::Edge).
+void spotGeometry(const FootprintSimParams& p, Rng& rng, FootprintSimTruth& t) {
     // Spot shape.
     t.sigmaMajor = rng.uniform(p.sigmaMajorMin, p.sigmaMajorMax);
     double ratio = rng.uniform(p.axisRatioMin, p.axisRatioMax);
@@ -325,6 +322,10 @@ FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
         else if (side == 2) t.y = d;
         else t.y = p.height - 1 - d;
     }
+}
+
+// The ground level under the spot; for SpotCase::Saturated a cloud added around it, lifting that level.
+double groundUnderSpot(const FootprintSimParams& p, Rng& rng, const FootprintSimTruth& t, cv::Mat& img) {
     double groundAtSpot = img.at<float>(std::clamp(static_cast<int>(std::lround(t.y)), 0, p.height - 1),
                                         std::clamp(static_cast<int>(std::lround(t.x)), 0, p.width - 1));
     if (p.spotCase == SpotCase::Saturated) {
@@ -339,11 +340,13 @@ FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
             }
         groundAtSpot += cloudAmp * 0.7;
     }
-    {
-        std::vector<float> g(img.begin<float>(), img.end<float>());
-        std::nth_element(g.begin(), g.begin() + g.size() / 2, g.end());
-        t.groundMedian = g[g.size() / 2];
-    }
+    return groundAtSpot;
+}
+
+// The spot's amplitude and the spots added: the spot, the second spot of SpotCase::DoubleSpot and
+// the second beam's.
+void addSpots(const FootprintSimParams& p, double groundAtSpot, Rng& rng, cv::Mat& img, FootprintSimTruth& t) {
+    const bool night = p.scene == Scene::Night;
     if (night)
         t.amplitude = rng.uniform(p.nightAmplitudeMin, p.nightAmplitudeMax);
     else
@@ -377,18 +380,49 @@ FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
                                  : rng.uniform(p.dayAmplitudeMin, p.dayAmplitudeMax);
         addSpot(img, t.x2, t.y2, amp, major, minor, tilt, p.supersample);
     }
-    if (!t.hasSpot) t.x = t.y = NAN;
-    t.expectGood = p.spotCase == SpotCase::Normal;
-    // Photon + read noise, quantisation, full-scale clipping.
+}
+
+// Photon + read noise, quantisation, full-scale clipping: the camera's 16-bit frame of img.
+void addCameraNoise(const FootprintSimParams& p, const cv::Mat& img, Rng& rng, cv::Mat& image) {
     const double g = p.camera.gainEPerDn, rn = p.camera.readNoiseE;
-    shot.image.create(p.height, p.width, CV_16UC1);
+    image.create(p.height, p.width, CV_16UC1);
     for (int y = 0; y < p.height; ++y)
         for (int x = 0; x < p.width; ++x) {
             const double photons = rng.poisson(std::max(0.0, static_cast<double>(img.at<float>(y, x))) * g);
             const double e = photons + rn * rng.normal();
             const double dn = std::clamp(std::round(e / g), 0.0, p.camera.saturationDn);
-            shot.image.at<uint16_t>(y, x) = static_cast<uint16_t>(dn);
+            image.at<uint16_t>(y, x) = static_cast<uint16_t>(dn);
         }
+}
+
+}  // namespace
+
+FootprintSimShot simulateFootprint(const FootprintSimParams& p, uint64_t seed) {
+    Rng rng(seed);
+    FootprintSimShot shot;
+    FootprintSimTruth& t = shot.truth;
+    t.scene = p.scene;
+    t.spotCase = p.spotCase;
+    const TerrainPhotos& photos = terrainPhotos();
+    const bool photo = (p.ground == GroundSource::Photo || p.ground == GroundSource::PhotoCuts) && p.scene != Scene::Flat &&
+                       photos.ok;
+    const bool fractal = p.ground == GroundSource::Fractal && p.scene != Scene::Flat;
+    const SceneLevels lv = sceneLevels(p.scene, photo || fractal ? GroundSource::Photo : GroundSource::Synthetic);
+    t.groundMean = rng.uniform(lv.meanMin, lv.meanMax);
+    t.textureRms = rng.uniform(lv.textureMin, lv.textureMax);
+    const uint64_t groundSeed = rng.next();
+    cv::Mat img = groundImage(p, lv, photos, photo, fractal, groundSeed, t);
+    spotGeometry(p, rng, t);
+    const double groundAtSpot = groundUnderSpot(p, rng, t, img);
+    {
+        std::vector<float> g(img.begin<float>(), img.end<float>());
+        std::nth_element(g.begin(), g.begin() + g.size() / 2, g.end());
+        t.groundMedian = g[g.size() / 2];
+    }
+    addSpots(p, groundAtSpot, rng, img, t);
+    if (!t.hasSpot) t.x = t.y = NAN;
+    t.expectGood = p.spotCase == SpotCase::Normal;
+    addCameraNoise(p, img, rng, shot.image);
     return shot;
 }
 
