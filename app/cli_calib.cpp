@@ -187,9 +187,11 @@ int cmdCalibDetector(int argc, char** argv) {
     if (a.has("--detectors")) outs.addOutput(a.value("--detectors"));
     const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
+    CalibSources src;
+    src.detectors = a.positional()[0];
     CalibInputData in;
     const DetectorArray& arr = in.array;
-    if (!readDetectorCsv(a.positional()[0], &in.array, &err)) return fail(cmd, err);
+    if (!loadCalibInputs(src, &in, &err)) return fail(cmd, err);
     const CalibRunResult run = core::runTask<CalibTask>(in, cp);
     const DetectorFitResult& r = run.detector;
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
@@ -231,7 +233,6 @@ int cmdCalibWaveform(int argc, char** argv) {
     double height = NAN;
     if (!a.getDouble("--height", -1e6, 1e6, &height, &err)) return fail(cmd, err, kUsage);
     if (int rc = params.load(cmd, a, &cp, check); rc >= 0) return rc;
-    const WaveformParams& wp = cp.waveform;
     const FeatureMatchParams& mp = cp.match;
     if (a.has("--height") == (a.positional().size() == 1) || a.positional().size() > 1)
         return fail(cmd, "give one waveform CSV or --height H (not both)", kUsage);
@@ -247,12 +248,14 @@ int cmdCalibWaveform(int argc, char** argv) {
     const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
     // The waveform (or the given height) and the candidates through the run layer.
+    CalibSources src;
+    src.givenHeightM = height;
+    if (!a.has("--height")) src.waveform = a.positional()[0];
+    src.features = a.value("--features");
     CalibInputData in;
-    in.givenHeightM = height;
-    if (!a.has("--height") && !readWaveformCsv(a.positional()[0], wp.sampleIntervalNs, &in.waveform, &err)) return fail(cmd, err);
-    if (a.has("--features") && !readFeatureCsv(a.value("--features"), &in.features, &err)) return fail(cmd, err);
+    if (!loadCalibInputs(src, &in, &err)) return fail(cmd, err);
     const CalibRunResult run = core::runTask<CalibTask>(in, cp);
-    const Waveform& w = in.waveform;
+    const Waveform& w = run.waveformRun;
     const WaveformResult& wr = run.waveform;
     if (run.hasWaveform) {
         if (!wr.ok) return fail(cmd, a.positional()[0] + ": " + wr.error);
@@ -322,12 +325,13 @@ int cmdCalibPointing(int argc, char** argv) {
         if (a.has(o)) outs.addOutput(a.value(o));
     const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
+    CalibSources src;
+    src.controlPoints = a.positional()[0];
+    src.beams = a.value("--beams");
     CalibInputData in;
     const std::vector<BeamDesign>& beams = in.beams;
     const std::vector<ControlPoint>& pts = in.points;
-    if (!readBeamsJson(a.value("--beams"), &in.beams, &err)) return fail(cmd, err);
-    if (!readControlPointCsv(a.positional()[0], &in.points, &err)) return fail(cmd, err);
-    if (in.points.empty()) return fail(cmd, a.positional()[0] + ": no control points");
+    if (!loadCalibInputs(src, &in, &err)) return fail(cmd, err);
     const CalibRunResult run = core::runTask<CalibTask>(in, cp);
     const PointingCalibResult& r = run.pointing;
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
@@ -374,14 +378,13 @@ int cmdCalibStats(int argc, char** argv) {
     if (!outPath(a).empty()) outs.addOutput(outPath(a));
     const std::string sidecar = addProvenanceSidecar(outs);
     if (int rc = checkOutputs(cmd, outs)) return rc;
-    std::vector<DifferenceGroup> groups;
-    std::string err;
-    if (!readDifferencesCsv(a.positional()[0], a.value("--group"), &groups, &err)) return fail(cmd, err);
     // The task the workbench runs (CalibTask), on the differences alone.
+    CalibSources src;
+    src.differences = a.positional()[0];
+    src.groupColumn = a.value("--group");
     CalibInputData in;
-    in.differences = std::move(groups);
-    in.differencesName = a.positional()[0];
-    in.groupColumn = a.value("--group");
+    std::string err;
+    if (!loadCalibInputs(src, &in, &err)) return fail(cmd, err);
     const CalibRunResult run = core::runTask<CalibTask>(in, cp);
     for (const StatsGroup& g : run.stats) {
         if (!g.stats.ok) return fail(cmd, a.positional()[0] + ": " + g.stats.error);

@@ -20,6 +20,7 @@
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
 #include "core/footprint/crlb.hpp"
+#include "core/footprint/footprint_run.hpp"
 #include "core/footprint/shot_list.hpp"
 #include "core/footprint/trend.hpp"
 #include "core/sim/centroid_sim.hpp"
@@ -79,19 +80,6 @@ struct FootprintOptions : ParamOptions<FootprintParams> {
         fromJson = [](const core::JsonParseResult& j, FootprintParams* p, std::string* err) {
             return footprintParamsFromJson(j.value, p, err, &j);
         };
-    }
-    int load(const std::string& cmd, const Args& a, FootprintParams* p) const {
-        if (int rc = apply(cmd, a, p, [&](FootprintParams* q) {
-                if (a.has("--preset") && !applyPreset(a.value("--preset"), q))
-                    return fail(cmd, "--preset must be wu2021 or yao2021, not \"" + a.value("--preset") + "\"", kUsage);
-                return int(kOk);
-            }))
-            return rc;
-        // An explicit ROI size: an image smaller than it is an error instead of a smaller ROI.
-        if (a.has("--roi")) p->roi.sizeExplicit = true;
-        for (const auto& kv : a.values("--set"))
-            if (kv.rfind("roi.size=", 0) == 0) p->roi.sizeExplicit = true;
-        return kOk;
     }
 };
 }  // namespace
@@ -153,7 +141,7 @@ core::Json shotEntry(const ShotSpec& shot, const BatchItem* item, const std::str
 }
 
 // The run of cmdFootprint once the options are read: the shots, the share, the report.
-int runFootprint(const Args& a, const BatchParams& bp, const BatchOptions& bo, RunSummary& summary) {
+int runFootprint(const Args& a, const FootprintSources& src, const BatchOptions& bo, RunSummary& summary) {
     const bool quiet = a.has("-q") || a.has("--quiet");
     std::string err;
     // --where: compiled before any work, against the report's columns.
@@ -174,22 +162,16 @@ int runFootprint(const Args& a, const BatchParams& bp, const BatchOptions& bo, R
     }
     const std::string out = a.has("-o") ? a.value("-o") : a.value("--output");
     if (out.empty()) return fail("footprint", "no output file: give -o OUT.csv", kUsage);
+    FootprintSetup setup;
+    FootprintError fe;
+    if (!setUpFootprintRun(src, &setup, &fe)) return fail("footprint", fe.message, fe.usage ? kUsage : kFailed);
+    const BatchParams& bp = setup.params;
+    const std::vector<ShotSpec>& all = setup.shots;
+    if (setup.unmatched && !quiet)
+        std::cerr << "laserwb-cli footprint: warning: " << setup.unmatched << " of " << all.size() << " shots have no row in "
+                  << a.value("--metadata") << " (their time, beam and camera stay empty)\n";
     std::vector<std::string> inputs = a.positional();
     inputs.insert(inputs.end(), bo.listed.begin(), bo.listed.end());
-    if (inputs.empty()) return fail("footprint", "no input files, folders or shot lists", kUsage);
-    // ---- the shots: frames, folders and shot lists, then the frame metadata, then the share ----
-    std::vector<ShotSpec> all;
-    if (!expandShots(inputs, &all, &err)) return fail("footprint", err);
-    if (all.empty()) return fail("footprint", "the inputs hold no image files (png, tif, tiff, pgm, raw, bin)");
-    if (a.has("--metadata")) {
-        const ShotListResult md = readShotList(a.value("--metadata"));
-        if (!md.ok) return fail("footprint", "--metadata: " + md.error);
-        size_t unmatched = 0;
-        if (!applyFrameMetadata(md, &all, &unmatched, &err)) return fail("footprint", "--metadata: " + err);
-        if (unmatched && !quiet)
-            std::cerr << "laserwb-cli footprint: warning: " << unmatched << " of " << all.size() << " shots have no row in "
-                      << a.value("--metadata") << " (their time, beam and camera stay empty)\n";
-    }
     summary.setInputsTotal(all.size());
     const auto [first, last] = bo.shard.range(all.size());
     const std::vector<ShotSpec> shots(all.begin() + long(first), all.begin() + long(last));
@@ -296,31 +278,43 @@ int cmdFootprint(int argc, char** argv) {
         std::cout << "footprint parameters (key = default unit  valid range):\n" << footprintSchema().describe(FootprintParams{});
         return kOk;
     }
-    BatchParams bp;
+    // The sources as given; the core resolves them (core/footprint/footprint_run.hpp).
+    FootprintSources src;
     std::string err;
+    src.configFile = a.value("--config");
+    src.preset = a.value("--preset");
+    if (!params.settings(a, &src.set, &err)) return fail("footprint", err, kUsage);
     if (params.printRequested(a)) {
-        if (int rc = params.load("footprint", a, &bp.footprint)) return rc;
-        std::cout << params.json(bp.footprint);
+        FootprintParams p;
+        FootprintError fe;
+        if (!resolveFootprintParams(src, &p, &fe)) return fail("footprint", fe.message, fe.usage ? kUsage : kFailed);
+        std::cout << params.json(p);
         return kOk;
     }
     BatchOptions bo;
     const int loaded = loadBatchOptions("footprint", a, &bo);
     RunSummary summary("footprint", bo);
     if (loaded) return summary.finish(loaded);
-    if (int rc = params.load("footprint", a, &bp.footprint)) return summary.finish(rc);
     for (const auto& c : a.values("--center")) {
         double x = 0, y = 0;
         if (!parsePoint(c, &x, &y))
             return summary.finish(fail("footprint", "--center must be X,Y (numbers), not \"" + c + "\"", kUsage));
-        bp.centres.emplace_back(x, y);
+        src.centres.emplace_back(x, y);
     }
-    if (a.has("--raw-size") && !parseSize(a.value("--raw-size"), &bp.read.rawWidth, &bp.read.rawHeight))
+    if (a.has("--raw-size") && !parseSize(a.value("--raw-size"), &src.read.rawWidth, &src.read.rawHeight))
         return summary.finish(fail("footprint", "--raw-size must be WxH, e.g. 550x550", kUsage));
     long long threads = 0;
-    if (!a.getInt("--threads", 0, 256, &threads, &err) || !a.getInt("--max-pixels", 1, 1LL << 40, &bp.read.maxPixels, &err))
+    if (!a.getInt("--threads", 0, 256, &threads, &err) || !a.getInt("--max-pixels", 1, 1LL << 40, &src.read.maxPixels, &err))
         return summary.finish(fail("footprint", err, kUsage));
-    bp.threads = static_cast<int>(threads);
-    return summary.finish(runFootprint(a, bp, bo, summary));
+    src.threads = static_cast<int>(threads);
+    src.inputs = a.positional();
+    src.inputs.insert(src.inputs.end(), bo.listed.begin(), bo.listed.end());
+    src.metadata = a.value("--metadata");
+    // The parameters' errors first (the shots are gathered once the options are known good).
+    FootprintParams checked;
+    FootprintError fe;
+    if (!resolveFootprintParams(src, &checked, &fe)) return summary.finish(fail("footprint", fe.message, fe.usage ? kUsage : kFailed));
+    return summary.finish(runFootprint(a, src, bo, summary));
 }
 
 namespace {
@@ -689,25 +683,32 @@ const char* kBenchUsage =
     "the default pipeline's cost per stage.\n"
     "Every figure is the best of R rounds (default 3), the rows of a table taking their rounds in turn, so\n"
     "that load on a shared machine spreads over every row. Prints Markdown tables.\n";
-}
 
-int cmdBenchFootprint(int argc, char** argv) {
-    Args a("bench footprint", kBenchUsage);
-    for (const char* o : {"--count", "--seconds", "--seed", "--rounds"}) a.option(o, true);
-    for (const char* o : {"--help", "-h"}) a.option(o, false);
-    if (!a.parse(argc, argv, 3)) return fail("bench footprint", a.error(), kUsage);
-    if (a.has("--help") || a.has("-h")) {
-        std::cout << kBenchUsage;
-        return kOk;
-    }
-    std::string err;
-    long long count = 2000, seed = 7, rounds = 3;
-    double seconds = 2.0;
-    if (!a.getInt("--count", 10, 1000000, &count, &err) || !a.getDouble("--seconds", 0.05, 600, &seconds, &err) ||
-        !a.getInt("--seed", 0, 1LL << 62, &seed, &err) || !a.getInt("--rounds", 1, 100, &rounds, &err))
-        return fail("bench footprint", err, kUsage);
+// The bench's state across its tables: the simulated ROIs (as float images and as their 16-bit
+// PNG encodings), the timing's settings, the default parameters and the checksum every timed
+// call adds to.
+struct FootprintBench {
+    using clock = std::chrono::steady_clock;
+
+    FootprintBench(long long roundCount, double secondsPerRow) : rounds(roundCount), seconds(secondsPerRow) {}
+
+    long long rounds;
+    double seconds;
     std::vector<cv::Mat> rois;
     std::vector<std::vector<uchar>> pngs;
+    const FootprintParams def;
+    size_t sink = 0;
+
+    void simulateRois(long long count, long long seed);
+    double timeOnce(const std::function<void(size_t)>& one) const;
+    std::vector<double> bestOfInterleaved(const std::vector<std::function<void(size_t)>>& fns) const;
+    void variantTable();
+    void threadsRow();
+    void stageTable();
+};
+
+// The ROIs: weak, moderate, strong and night in turn, photo ground.
+void FootprintBench::simulateRois(long long count, long long seed) {
     const sim::Scene scenes[] = {sim::Scene::Weak, sim::Scene::Moderate, sim::Scene::Strong, sim::Scene::Night};
     for (long long i = 0; i < count; ++i) {
         sim::FootprintSimParams sp;
@@ -720,38 +721,43 @@ int cmdBenchFootprint(int argc, char** argv) {
         core::imageEncode(".png", shot.image, buf);
         pngs.push_back(std::move(buf));
     }
-    using clock = std::chrono::steady_clock;
-    // Each row timed for `seconds` per round; the rounds go over every row of a table in turn
-    // (row 1, row 2, …, row 1, row 2, …), so that a burst of load on a shared machine falls on
-    // one round of every row rather than on all rounds of one, and each row keeps its best.
-    auto timeOnce = [&](const std::function<void(size_t)>& one) {
-        size_t n = 0;
-        const auto t0 = clock::now();
-        double el = 0;
-        do {
-            one(n % rois.size());
-            ++n;
-            if (n % 64 == 0) el = std::chrono::duration<double>(clock::now() - t0).count();
-        } while (el < seconds);
-        el = std::chrono::duration<double>(clock::now() - t0).count();
-        return n / el;
-    };
-    auto bestOfInterleaved = [&](const std::vector<std::function<void(size_t)>>& fns) {
-        std::vector<double> best(fns.size(), 0.0);
-        for (long long r = 0; r < rounds; ++r)
-            for (size_t k = 0; k < fns.size(); ++k) best[k] = std::max(best[k], timeOnce(fns[k]));
-        return best;
-    };
+}
+
+// Each row timed for `seconds` per round; the rounds go over every row of a table in turn
+// (row 1, row 2, …, row 1, row 2, …), so that a burst of load on a shared machine falls on
+// one round of every row rather than on all rounds of one, and each row keeps its best.
+double FootprintBench::timeOnce(const std::function<void(size_t)>& one) const {
+    size_t n = 0;
+    const auto t0 = clock::now();
+    double el = 0;
+    do {
+        one(n % rois.size());
+        ++n;
+        if (n % 64 == 0) el = std::chrono::duration<double>(clock::now() - t0).count();
+    } while (el < seconds);
+    el = std::chrono::duration<double>(clock::now() - t0).count();
+    return n / el;
+}
+
+// Each row's best rate (ROIs per second) over the rounds.
+std::vector<double> FootprintBench::bestOfInterleaved(const std::vector<std::function<void(size_t)>>& fns) const {
+    std::vector<double> best(fns.size(), 0.0);
+    for (long long r = 0; r < rounds; ++r)
+        for (size_t k = 0; k < fns.size(); ++k) best[k] = std::max(best[k], timeOnce(fns[k]));
+    return best;
+}
+
+// The table of the method variants, the quick uncertainty and the 16-bit PNG decoding, each row
+// with its ratio to gcm.
+void FootprintBench::variantTable() {
     // The ratio to gcm (the plain centroid, with the same background, segmentation and verdict)
     // is issue 32's speed figure: ROIs per second of the row over those of gcm, in this run.
     std::cout << "| pipeline | ROIs/s (1 core) | µs per ROI | ratio to gcm |\n|---|---|---|---|\n";
-    size_t sink = 0;
     double gcmRate = 0;
     auto row = [&](const std::string& name, double rate, double us) {
         std::cout << "| " << name << " | " << core::formatFixed(rate, 0) << " | " << core::formatFixed(us, 1) << " | "
                   << (gcmRate > 0 ? core::formatFixed(rate / gcmRate, 2) : std::string("-")) << " |\n";
     };
-    const FootprintParams def;
     FootprintParams quick = def;
     quick.gauss.uncertaintyFromGround = false;
     std::vector<std::string> names;
@@ -773,6 +779,10 @@ int cmdBenchFootprint(int argc, char** argv) {
     for (size_t k = 0; k < variants.size(); ++k)
         if (variants[k].name == "gcm") gcmRate = rates[k];
     for (size_t k = 0; k < fns.size(); ++k) row(names[k], rates[k], 1e6 / rates[k]);
+}
+
+// The multi-threaded batch throughput row.
+void FootprintBench::threadsRow() {
     // All cores: the same default pipeline over the ROIs on every hardware thread.
     const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
     std::atomic<size_t> total{0};
@@ -787,6 +797,10 @@ int cmdBenchFootprint(int argc, char** argv) {
     const double el = std::chrono::duration<double>(clock::now() - t0).count();
     std::cout << "| gauss, " << hw << " threads | " << core::formatFixed(total / el, 0) << " (all cores) | "
               << core::formatFixed(1e6 * el * hw / total, 1) << " per thread | |\n";
+}
+
+// The table of the default pipeline's cost per stage.
+void FootprintBench::stageTable() {
     // The default pipeline stage by stage: each stage alone over the ROIs, on the inputs the
     // earlier stages produced (computed once beforehand).
     std::vector<BackgroundResult> bgs;
@@ -831,8 +845,32 @@ int cmdBenchFootprint(int argc, char** argv) {
     for (size_t k = 0; k < stages.size(); ++k)
         std::cout << "| " << stages[k].name << " | " << core::formatFixed(1e6 / stageRates[k], 1) << " | "
                   << core::formatFixed(stageRates[k], 0) << " |\n";
+}
+
+}
+
+int cmdBenchFootprint(int argc, char** argv) {
+    Args a("bench footprint", kBenchUsage);
+    for (const char* o : {"--count", "--seconds", "--seed", "--rounds"}) a.option(o, true);
+    for (const char* o : {"--help", "-h"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail("bench footprint", a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << kBenchUsage;
+        return kOk;
+    }
+    std::string err;
+    long long count = 2000, seed = 7, rounds = 3;
+    double seconds = 2.0;
+    if (!a.getInt("--count", 10, 1000000, &count, &err) || !a.getDouble("--seconds", 0.05, 600, &seconds, &err) ||
+        !a.getInt("--seed", 0, 1LL << 62, &seed, &err) || !a.getInt("--rounds", 1, 100, &rounds, &err))
+        return fail("bench footprint", err, kUsage);
+    FootprintBench b(rounds, seconds);
+    b.simulateRois(count, seed);
+    b.variantTable();
+    b.threadsRow();
+    b.stageTable();
     std::cerr << "(" << count << " distinct ROIs, best of " << rounds << " rounds of " << core::formatFixed(seconds, 1)
-              << " s per row, the rows of a table taking their rounds in turn; checksum " << sink << ")\n";
+              << " s per row, the rows of a table taking their rounds in turn; checksum " << b.sink << ")\n";
     return kOk;
 }
 

@@ -3,6 +3,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/footprint/image_io.hpp"
+#include "core/footprint/footprint_run.hpp"
 #include "core/footprint/pipeline.hpp"
 #include "core/footprint/roi.hpp"
 #include "core/sim/footprint_sim.hpp"

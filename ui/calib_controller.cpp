@@ -31,133 +31,93 @@ bool fail(QString* error, const std::string& msg) {
     return false;
 }
 
-// Loads one part of the inputs into d ("demo", a path, or empty = none).
-enum class Part { Detectors, ControlPoints, CheckPoints, Differences, Waveform, Features };
+// The sources of a part as the core reads them (core/calib/calib_run.hpp: loadCalibPart).
+CalibSources sourcesOf(const CalibInputs& in) {
+    CalibSources s;
+    s.detectors = in.detectors.toStdString();
+    s.controlPoints = in.controlPoints.toStdString();
+    s.beams = in.beams.toStdString();
+    s.checkPoints = in.checkPoints.toStdString();
+    s.differences = in.differences.toStdString();
+    s.groupColumn = in.groupColumn.toStdString();
+    s.waveform = in.waveform.toStdString();
+    s.features = in.features.toStdString();
+    return s;
+}
 
-bool loadPart(Part part, const CalibInputs& in, CalibData* d, QString* error) {
-    std::string err;
+// The built-in demo's part ("demo" as its source): simulated inputs with their truth. False
+// when the part's source is not the demo.
+bool loadDemoPart(CalibPart part, const CalibInputs& in, CalibData* d, QString* error) {
     switch (part) {
-        case Part::Detectors: {
-            d->array = {};
-            d->hasDetectorTruth = false;
-            if (in.detectors.isEmpty()) return true;
-            if (in.detectors == kDemo) {
-                const sim::DetectorSimulation s = sim::demoDetectorArray();
-                d->array = s.array;
-                d->detectorTruth = s.truth;
-                d->hasDetectorTruth = true;
-                return true;
-            }
-            DetectorArray a;
-            if (!readDetectorCsv(in.detectors.toStdString(), &a, &err)) return fail(error, err);
-            d->array = std::move(a);
+        case CalibPart::Detectors: {
+            if (in.detectors != kDemo) return false;
+            const sim::DetectorSimulation s = sim::demoDetectorArray();
+            d->array = s.array;
+            d->detectorTruth = s.truth;
+            d->hasDetectorTruth = true;
             return true;
         }
-        case Part::ControlPoints: {
-            d->points.clear();
-            d->beams.clear();
-            d->hasPointingTruth = false;
-            if (in.controlPoints.isEmpty()) return true;
-            if (in.controlPoints == kDemo) {
-                const sim::CalibSimulation s = sim::demoCalibrationPasses();
-                d->beams = s.beams;
-                d->points = s.points;
-                d->hasPointingTruth = true;
-                for (int k = 0; k < 2; ++k) {
-                    d->trueDAlpha[k] = s.dAlpha[k];
-                    d->trueDBeta[k] = s.dBeta[k];
-                    d->trueDRho[k] = s.dRho[k];
-                }
-                return true;
+        case CalibPart::ControlPoints: {
+            if (in.controlPoints != kDemo) return false;
+            const sim::CalibSimulation s = sim::demoCalibrationPasses();
+            d->beams = s.beams;
+            d->points = s.points;
+            d->hasPointingTruth = true;
+            for (int k = 0; k < 2; ++k) {
+                d->trueDAlpha[k] = s.dAlpha[k];
+                d->trueDBeta[k] = s.dBeta[k];
+                d->trueDRho[k] = s.dRho[k];
             }
-            std::vector<ControlPoint> pts;
-            if (!readControlPointCsv(in.controlPoints.toStdString(), &pts, &err)) return fail(error, err);
-            std::vector<BeamDesign> beams;
-            if (in.beams.isEmpty()) {
-                if (error) *error = in.controlPoints + ": the control points need beam designs (a beams JSON)";
-                return false;
-            }
-            if (in.beams == kDemo) {
-                beams = sim::gf7Beams();
-            } else if (!readBeamsJson(in.beams.toStdString(), &beams, &err)) {
-                return fail(error, err);
-            }
-            d->points = std::move(pts);
-            d->beams = std::move(beams);
             return true;
         }
-        case Part::CheckPoints: {
-            d->checkPoints.clear();
-            if (in.checkPoints.isEmpty()) return true;
-            if (in.checkPoints == kDemo) {
-                d->checkPoints = sim::demoCheckPoints();
-                return true;
-            }
-            std::vector<ControlPoint> pts;
-            if (!readControlPointCsv(in.checkPoints.toStdString(), &pts, &err)) return fail(error, err);
-            d->checkPoints = std::move(pts);
+        case CalibPart::CheckPoints:
+            if (in.checkPoints != kDemo) return false;
+            d->checkPoints = sim::demoCheckPoints();
             return true;
-        }
-        case Part::Differences: {
-            d->differences.clear();
-            if (in.differences.isEmpty()) return true;
-            if (in.differences == kDemo) {
-                if (error) *error = QObject::tr("the demo has no differences file (its statistics come from check points)");
-                return false;
-            }
-            std::vector<DifferenceGroup> g;
-            if (!readDifferencesCsv(in.differences.toStdString(), in.groupColumn.toStdString(), &g, &err))
-                return fail(error, err);
-            d->differences = std::move(g);
-            d->differencesName = QFileInfo(in.differences).fileName().toStdString();
-            d->groupColumn = in.groupColumn.toStdString();
+        case CalibPart::Differences:
+            if (in.differences != kDemo) return false;
+            if (error) *error = QObject::tr("the demo has no differences file (its statistics come from check points)");
             return true;
-        }
-        case Part::Waveform: {
-            d->waveform = {};
-            d->trueHeightM = NAN;
-            if (in.waveform.isEmpty()) return true;
-            if (in.waveform == kDemo) {
-                d->waveform = sim::demoWaveform();
-                d->trueHeightM = sim::kDemoFeatureHeightM;
-                return true;
-            }
-            // The sample interval is a waveform parameter (files with a time column ignore it):
-            // read at 1 ns per sample here, the run puts waveform.sample_interval_ns on it
-            // (core withSampleInterval; it read a literal 0.5, which only the CLI's setting changed).
-            Waveform w;
-            if (!readWaveformCsv(in.waveform.toStdString(), 1.0, &w, &err)) return fail(error, err);
-            d->waveform = std::move(w);
+        case CalibPart::Waveform:
+            if (in.waveform != kDemo) return false;
+            d->waveform = sim::demoWaveform();
+            d->trueHeightM = sim::kDemoFeatureHeightM;
             return true;
-        }
-        case Part::Features: {
-            d->features.clear();
-            if (in.features.isEmpty()) return true;
-            if (in.features == kDemo) {
-                d->features = sim::demoFeatures();
-                return true;
-            }
-            std::vector<FeatureCandidate> c;
-            if (!readFeatureCsv(in.features.toStdString(), &c, &err)) return fail(error, err);
-            d->features = std::move(c);
+        case CalibPart::Features:
+            if (in.features != kDemo) return false;
+            d->features = sim::demoFeatures();
             return true;
-        }
     }
-    return true;
+    return false;
+}
+
+// Loads one part of the inputs into d ("demo", a path, or empty = none): the demo's here, a
+// file's by the core.
+bool loadPart(CalibPart part, const CalibInputs& in, CalibData* d, QString* error) {
+    std::string err;
+    (void)loadCalibPart(part, CalibSources{}, d, &err);  // the part cleared
+    QString demoError;
+    if (loadDemoPart(part, in, d, &demoError)) return demoError.isEmpty() ? true : fail(error, demoError.toStdString());
+    CalibSources src = sourcesOf(in);
+    if (src.beams == kDemo.toStdString()) {  // control points of a file with the demo's (GF-7's) beam designs
+        src.beams.clear();
+        src.givenBeams = sim::gf7Beams();
+    }
+    return loadCalibPart(part, src, d, &err) || fail(error, err);
 }
 
 // Loads every part whose source differs from `have` (all when have is null).
 bool loadChanged(const CalibInputs& in, const CalibData* have, CalibData* d, QString* error) {
     struct P {
-        Part part;
+        CalibPart part;
         bool changed;
     } parts[] = {
-        {Part::Detectors, !have || in.detectors != have->inputs.detectors},
-        {Part::ControlPoints, !have || in.controlPoints != have->inputs.controlPoints || in.beams != have->inputs.beams},
-        {Part::CheckPoints, !have || in.checkPoints != have->inputs.checkPoints},
-        {Part::Differences, !have || in.differences != have->inputs.differences || in.groupColumn != have->inputs.groupColumn},
-        {Part::Waveform, !have || in.waveform != have->inputs.waveform},
-        {Part::Features, !have || in.features != have->inputs.features},
+        {CalibPart::Detectors, !have || in.detectors != have->inputs.detectors},
+        {CalibPart::ControlPoints, !have || in.controlPoints != have->inputs.controlPoints || in.beams != have->inputs.beams},
+        {CalibPart::CheckPoints, !have || in.checkPoints != have->inputs.checkPoints},
+        {CalibPart::Differences, !have || in.differences != have->inputs.differences || in.groupColumn != have->inputs.groupColumn},
+        {CalibPart::Waveform, !have || in.waveform != have->inputs.waveform},
+        {CalibPart::Features, !have || in.features != have->inputs.features},
     };
     for (const P& p : parts)
         if (p.changed && !loadPart(p.part, in, d, error)) return false;
@@ -257,7 +217,7 @@ std::shared_ptr<const CalibData> CalibController::replaceParts(const CalibInputs
                                                               QString* error) {
     auto d = std::make_shared<CalibData>(*m_data);
     for (int p : parts)
-        if (!loadPart(static_cast<Part>(p), in, d.get(), error)) return nullptr;
+        if (!loadPart(static_cast<CalibPart>(p), in, d.get(), error)) return nullptr;
     d->inputs = in;
     m_data = d;
     emit inputsChanged();
@@ -268,7 +228,7 @@ std::shared_ptr<const CalibData> CalibController::replaceParts(const CalibInputs
 bool CalibController::openDetectors(const QString& path, QString* error) {
     CalibInputs in = inputs();
     in.detectors = path;
-    const auto d = replaceParts(in, {int(Part::Detectors)}, error);
+    const auto d = replaceParts(in, {int(CalibPart::Detectors)}, error);
     if (d) emit status(tr("%1: %2 detectors").arg(QFileInfo(path).fileName()).arg(d->array.detectors.size()));
     return d != nullptr;
 }
@@ -287,7 +247,7 @@ bool CalibController::openControlPoints(const QString& path, const QString& beam
             return false;
         }
     }
-    const auto d = replaceParts(in, {int(Part::ControlPoints)}, error);
+    const auto d = replaceParts(in, {int(CalibPart::ControlPoints)}, error);
     if (d)
         emit status(tr("%1: %2 control points, %3 beams").arg(QFileInfo(path).fileName()).arg(d->points.size()).arg(d->beams.size()));
     return d != nullptr;
@@ -298,14 +258,14 @@ bool CalibController::openCheckPoints(const QString& path, QString* error) {
     in.checkPoints = path;
     in.differences.clear();  // the statistics follow the check points now
     in.groupColumn.clear();
-    return replaceParts(in, {int(Part::CheckPoints), int(Part::Differences)}, error) != nullptr;
+    return replaceParts(in, {int(CalibPart::CheckPoints), int(CalibPart::Differences)}, error) != nullptr;
 }
 
 bool CalibController::openDifferences(const QString& path, const QString& groupColumn, QString* error) {
     CalibInputs in = inputs();
     in.differences = path;
     in.groupColumn = groupColumn;
-    const auto d = replaceParts(in, {int(Part::Differences)}, error);
+    const auto d = replaceParts(in, {int(CalibPart::Differences)}, error);
     if (d) emit status(tr("%1: %2 group(s) of differences").arg(QFileInfo(path).fileName()).arg(d->differences.size()));
     return d != nullptr;
 }
@@ -313,13 +273,13 @@ bool CalibController::openDifferences(const QString& path, const QString& groupC
 bool CalibController::openWaveform(const QString& path, QString* error) {
     CalibInputs in = inputs();
     in.waveform = path;
-    return replaceParts(in, {int(Part::Waveform)}, error) != nullptr;
+    return replaceParts(in, {int(CalibPart::Waveform)}, error) != nullptr;
 }
 
 bool CalibController::openFeatures(const QString& path, QString* error) {
     CalibInputs in = inputs();
     in.features = path;
-    return replaceParts(in, {int(Part::Features)}, error) != nullptr;
+    return replaceParts(in, {int(CalibPart::Features)}, error) != nullptr;
 }
 
 bool CalibController::setParams(const CalibParams& p, QString* error) {

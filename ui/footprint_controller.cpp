@@ -17,6 +17,7 @@
 #include "core/common/csv.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
+#include "core/footprint/footprint_run.hpp"
 #include "core/footprint/image_io.hpp"
 #include "core/footprint/shot_list.hpp"
 #include "ui/footprint_export.hpp"
@@ -57,71 +58,23 @@ struct IndexedJob {
     }
 };
 
-struct Spec {
-    QString file, time, beam, camera;
-    bool hasCenter = false;
-    QPointF center;
-};
-
-// Expands the inputs into shot specs: folders (their images) and image files, or CSV shot
-// lists. A CSV given with image files (a folder's truth.csv selected with its frames) and any
-// other non-image file are left out and listed in *skipped.
-bool expandSpecs(const QStringList& inputs, std::vector<Spec>* out, QStringList* skipped, QString* error) {
-    bool anyImage = false;
-    for (const QString& in : inputs) anyImage |= QFileInfo(in).isDir() || isFrameFile(in.toStdString());
-    for (const QString& in : inputs) {
-        const bool csvList = QFileInfo(in).suffix().compare("csv", Qt::CaseInsensitive) == 0;
-        if (!QFileInfo(in).isDir() && !isFrameFile(in.toStdString()) && (!csvList || anyImage)) {
-            if (QFileInfo(in).exists()) {
-                skipped->append(in);
-                continue;
-            }
-        }
-        if (csvList && !anyImage) {  // a shot list (core/footprint/shot_list.hpp: the CLI's reader)
-            const ShotListResult list = readShotList(in.toStdString());
-            if (!list.ok) {
-                *error = QString::fromStdString(list.error);
-                return false;
-            }
-            for (const ShotSpec& l : list.shots) {
-                Spec s;
-                s.file = QString::fromStdString(l.file);
-                s.time = QString::fromStdString(l.time);
-                s.beam = QString::fromStdString(l.beam);
-                s.camera = QString::fromStdString(l.camera);
-                s.hasCenter = l.hasCenter;
-                s.center = {l.centerX, l.centerY};
-                out->push_back(s);
-            }
-            continue;
-        }
-        if (QFileInfo(in).isDir())  // a folder: its files that are not images are left out too
-            for (const QString& f : QDir(in).entryList(QDir::Files, QDir::Name))
-                if (!isFrameFile(f.toStdString())) skipped->append(QDir(in).filePath(f));
-        std::vector<std::string> files;
-        std::string err;
-        if (!expandInputs({in.toStdString()}, &files, &err)) {
-            *error = QString::fromStdString(err);
-            return false;
-        }
-        for (const auto& f : files) out->push_back({QString::fromStdString(f), {}, {}, {}, false, {}});
-    }
-    return true;
-}
-
-// Reads the frame and cuts the ROI.
+// Reads the frame and cuts the ROI, as the batch does (core/footprint/footprint_run.hpp).
 void loadShot(Shot& s, const FootprintParams& p) {
-    ImageReadResult img = readFrame(s.file.toStdString());
-    if (!img.ok) {
-        s.loadError = QString::fromStdString(img.error);
+    ShotSpec spec;
+    spec.file = s.file.toStdString();
+    spec.hasCenter = s.hasCenter;
+    spec.centerX = s.center.x();
+    spec.centerY = s.center.y();
+    BatchParams bp;
+    bp.footprint = p;
+    std::vector<ShotRoi> rois;
+    std::string err;
+    if (!loadShotRois(spec, bp, &rois, &err)) {
+        s.loadError = QString::fromStdString(err);
         return;
     }
-    RoiParams rp = p.roi;
-    rp.hasCenter = s.hasCenter;
-    rp.centerX = s.center.x();
-    rp.centerY = s.center.y();
-    const RoiResult roi = extractRoi(img.image, rp);
-    if (!roi.ok) {
+    const ShotRoi& roi = rois.front();  // (no nominal centres in the workbench: one ROI a shot)
+    if (!roi.error.empty()) {
         s.loadError = s.file + ": " + QString::fromStdString(roi.error);
         return;
     }
@@ -281,17 +234,20 @@ void FootprintController::cancelLoading() {
 }
 
 void FootprintController::open(const QStringList& paths, bool append) {
-    std::vector<Spec> specs;
-    QString err;
+    // The shots as the CLI gathers them, but for what a file dialog picks besides frames
+    // (set aside and listed: a folder's truth.csv, its notes).
+    FootprintSources src;
+    for (const QString& p : paths) src.inputs.push_back(p.toStdString());
+    src.setAsideOthers = true;
+    FootprintSetup setup;
+    FootprintError fe;
+    if (!gatherShots(src, &setup, &fe)) {
+        emit error(QString::fromStdString(fe.message));
+        return;
+    }
+    const std::vector<ShotSpec>& specs = setup.shots;
     QStringList skipped;
-    if (!expandSpecs(paths, &specs, &skipped, &err)) {
-        emit error(err);
-        return;
-    }
-    if (specs.empty()) {
-        emit error(tr("No image files (png, tif, tiff, pgm, raw, bin) in: %1").arg(paths.join(", ")));
-        return;
-    }
+    for (const auto& f : setup.setAside) skipped << QString::fromStdString(f);
     if (!append) clear();
     m_skipped = skipped;
     m_inputs += paths;
@@ -299,12 +255,12 @@ void FootprintController::open(const QStringList& paths, bool append) {
     job->results.resize(specs.size());
     for (size_t i = 0; i < specs.size(); ++i) {
         Shot& s = job->results[i];
-        s.file = specs[i].file;
-        s.time = specs[i].time;
-        s.beam = specs[i].beam;
-        s.camera = specs[i].camera;
+        s.file = QString::fromStdString(specs[i].file);
+        s.time = QString::fromStdString(specs[i].time);
+        s.beam = QString::fromStdString(specs[i].beam);
+        s.camera = QString::fromStdString(specs[i].camera);
         s.hasCenter = specs[i].hasCenter;
-        s.center = specs[i].center;
+        s.center = {specs[i].centerX, specs[i].centerY};
     }
     m_loadFeedback = std::shared_ptr<core::Feedback>(job, &job->feedback);
     m_loading = true;
@@ -395,11 +351,19 @@ void FootprintController::rejudgeAll() {
     QElapsedTimer t;
     t.start();
     const core::footprint::VerdictParams& v = m_params.verdict;
-    for (Shot& s : m_shots)
-        if (s.processed && !s.roi.empty()) {
-            judgeResult(&s.result, s.roi.cols, s.roi.rows, v);
-            applyResult(s, s.result);
-        }
+    // The shots task with the fits of now reused: judged again, not fitted again (a shot not
+    // fitted yet is left to the list's refit).
+    ShotsTask::Inputs in;
+    auto fits = std::make_shared<std::vector<FootprintResult>>();
+    in.rois.reserve(m_shots.size());
+    fits->reserve(m_shots.size());
+    for (const Shot& s : m_shots) {
+        in.rois.push_back(s.processed ? s.roi : cv::Mat());
+        fits->push_back(s.result);
+    }
+    const std::vector<FootprintResult> judged = ShotsTask::run(in, m_params, ShotsTask::Reuse{fits}, nullptr);
+    for (size_t i = 0; i < m_shots.size(); ++i)
+        if (!in.rois[i].empty()) applyResult(m_shots[i], judged[i]);
     const bool haveDetail = m_detail.index >= 0 && m_detail.index == m_current && !m_detail.roi.empty();
     if (haveDetail)
         for (FootprintResult* r : {&m_detail.selected, &m_detail.gauss, &m_detail.tefm, &m_detail.gcm})
@@ -459,6 +423,13 @@ FootprintController::Counts FootprintController::counts() const {
         c.overridden += s.overridden;
     }
     return c;
+}
+
+cv::Mat FootprintController::frameOf(const Shot& s) {
+    ShotSpec spec;
+    spec.file = s.file.toStdString();
+    const ImageReadResult img = readShotFrame(spec, BatchParams{});
+    return img.ok ? img.image : cv::Mat();
 }
 
 bool FootprintController::exportAccepted(const QString& path, QString* error, int* rows) const {

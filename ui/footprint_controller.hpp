@@ -110,6 +110,8 @@ public:
     /// `footprint` command's report (core::footprint::writeFootprintCsv, every column), plus
     /// time, beam, camera, override and note. Atomic. False with *error; *rows (when given) is
     /// the number of shots written.
+    /// The whole frame of shot `s`, read as its ROI was (empty when it cannot be read).
+    static cv::Mat frameOf(const Shot& s);
     bool exportAccepted(const QString& path, QString* error, int* rows = nullptr) const;
     /// The status line after exporting `rows` accepted shots to `path`: says how many accepted
     /// shots have no position (accepted by hand, their fit failed) and were left out.

@@ -702,8 +702,7 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
     // Full-frame context.
     if (s->fullFrame) {
         if (m_frameFile != s->file) {
-            const ImageReadResult img = readFrame(s->file.toStdString());
-            m_frame = img.ok ? img.image : cv::Mat();
+            m_frame = FootprintController::frameOf(*s);
             m_frameFile = s->file;
         }
         if (!m_frame.empty()) {

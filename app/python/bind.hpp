@@ -69,6 +69,24 @@ P paramsFrom(const py::object& params, const ParamsBinding<P>& b);
 template <class P>
 void applyDict(const core::Schema<P>& s, const py::dict& d, P* p, void (*afterSet)(P*, const std::string&) = nullptr);
 
+/// `params` as a task's sources take them (core/*/..._run.hpp): a P becomes the config (its
+/// JSON), a dict {key: value} the settings in order (as --set); None leaves both empty. The core
+/// then resolves them in its one order. `typeName` names P in the TypeError.
+template <class P>
+void gatherParams(const py::object& params, const core::Schema<P>& schema, const char* typeName, core::Json* config,
+                  std::vector<core::ParamSetting>* set) {
+    if (py::isinstance<P>(params)) {
+        *config = schema.toJson(params.cast<P>());
+    } else if (py::isinstance<py::dict>(params)) {
+        for (const auto& kv : params.cast<py::dict>()) {
+            const std::string key = py::str(kv.first);
+            set->push_back({key, valueText(kv.second), key});
+        }
+    } else if (!params.is_none()) {
+        throw py::type_error(std::string("params must be None, a dict {key: value} or ") + typeName);
+    }
+}
+
 /// A numpy view of `v`'s data kept alive by `owner` (no copy).
 template <class T>
 py::array_t<T> viewOf(const std::vector<T>& v, py::handle owner) {

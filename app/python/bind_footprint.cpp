@@ -5,6 +5,7 @@
 
 #include "bind.hpp"
 #include "core/footprint/batch.hpp"
+#include "core/footprint/footprint_run.hpp"
 #include "core/footprint/image_io.hpp"
 
 namespace lwb::py {
@@ -42,21 +43,19 @@ struct Report {
     }
 };
 
-// The parameters as the CLI makes them: a FootprintParams (its --config), the preset, the method
-// (its alias), then a dict's keys (its --set options), then the family's rules.
-fp::FootprintParams runParams(const py::object& params, const py::object& preset, const py::object& method) {
-    fp::FootprintParams p = py::isinstance<fp::FootprintParams>(params) ? params.cast<fp::FootprintParams>() : defaults();
-    if (!params.is_none() && !py::isinstance<fp::FootprintParams>(params) && !py::isinstance<py::dict>(params))
-        throw py::type_error("params must be None, a dict {key: value} or laserwb.FootprintParams");
-    if (!preset.is_none()) {
-        const std::string name = py::str(preset);
-        if (!fp::applyPreset(name, &p)) throw ParameterError("preset must be wu2021 or yao2021, not \"" + name + "\"");
-    }
-    std::string err;
-    if (!method.is_none() && !fp::footprintSchema().setFromText(&p, "method", py::str(method), &err)) throw ParameterError(err);
-    if (py::isinstance<py::dict>(params)) applyDict(fp::footprintSchema(), params.cast<py::dict>(), &p, afterSet);
-    if (const std::string e = fp::validate(p); !e.empty()) throw ParameterError(e);
-    return p;
+// The sources as the CLI gathers them from its flags: a FootprintParams (its --config), the
+// preset, the method (its alias), then a dict's keys (its --set options); the core resolves them.
+fp::FootprintSources sourcesOf(const py::object& params, const py::object& preset, const py::object& method) {
+    fp::FootprintSources src;
+    gatherParams(params, fp::footprintSchema(), "laserwb.FootprintParams", &src.config, &src.set);
+    if (!preset.is_none()) src.preset = py::str(preset);
+    if (!method.is_none()) src.set.insert(src.set.begin(), {"method", py::str(method), "method"});
+    return src;
+}
+
+[[noreturn]] void raise(const fp::FootprintError& e) {
+    if (e.usage) throw ParameterError(e.message);
+    throw Error(e.message);
 }
 
 // The first failure of a run in input order, as the CLI reports it without --keep-going.
@@ -74,17 +73,20 @@ using Frame = py::array_t<float, py::array::c_style | py::array::forcecast>;
 Report fitBatch(const py::object& inputs, const py::object& params, const py::object& preset, const py::object& method,
                 const py::object& centres, const py::object& rawSize, long long maxPixels, int threads,
                 const py::object& names, bool keepGoing) {
-    fp::BatchParams bp;
-    bp.footprint = runParams(params, preset, method);
-    bp.threads = threads;
-    if (maxPixels > 0) bp.read.maxPixels = maxPixels;
+    fp::FootprintSources src = sourcesOf(params, preset, method);
+    src.threads = threads;
+    if (maxPixels > 0) src.read.maxPixels = maxPixels;
     if (!rawSize.is_none()) {
         const auto wh = rawSize.cast<std::pair<int, int>>();
-        bp.read.rawWidth = wh.first;
-        bp.read.rawHeight = wh.second;
+        src.read.rawWidth = wh.first;
+        src.read.rawHeight = wh.second;
     }
     if (!centres.is_none())
-        for (const auto& c : centres.cast<std::vector<std::pair<double, double>>>()) bp.centres.emplace_back(c.first, c.second);
+        for (const auto& c : centres.cast<std::vector<std::pair<double, double>>>()) src.centres.emplace_back(c.first, c.second);
+    fp::FootprintSetup setup;
+    fp::FootprintError fe;
+    if (!fp::resolveBatchParams(src, &setup.params, &fe)) raise(fe);
+    const fp::BatchParams& bp = setup.params;
     Report rep;
     rep.method = bp.footprint.method;
     // Frames in memory: float32 C-contiguous arrays are viewed in place (no copy); other dtypes are
@@ -137,12 +139,14 @@ Report fitBatch(const py::object& inputs, const py::object& params, const py::ob
             given.push_back(py::str(py::module_::import("os").attr("fspath")(inputs)));
         else
             for (const auto& o : inputs.cast<py::sequence>()) given.push_back(py::str(py::module_::import("os").attr("fspath")(o)));
-        std::vector<std::string> files;
-        std::string err;
-        check(fp::expandInputs(given, &files, &err), err);
-        check(!files.empty(), "the inputs hold no image files (png, tif, tiff, pgm, raw, bin)");
-        py::gil_scoped_release nogil;
-        rep.result = fp::runFootprintBatch(files, bp);
+        src.inputs = given;
+        bool ok;
+        {
+            py::gil_scoped_release nogil;  // (the set-up reads shot lists)
+            ok = fp::setUpFootprintRun(src, &setup, &fe);
+            if (ok) rep.result = fp::runFootprintBatch(setup.shots, setup.params);
+        }
+        if (!ok) raise(fe);
     }
     if (!keepGoing)
         if (const std::string e = firstFailure(rep.result); !e.empty())

@@ -125,9 +125,8 @@ py::dict relativeErrorDict(const rad::RelativeErrorResult& r) {
 // and C-contiguous).
 using Image = py::array_t<float, py::array::c_style | py::array::forcecast>;
 
-}  // namespace
-
-void bindTrendCalibRadiometry(py::module_& top) {
+// laserwb.trend: the monthly table (Trend) and compute().
+void bindTrend(py::module_& top) {
     // ---- trend -------------------------------------------------------------------------------
     py::module_ t = top.def_submodule("trend", "Monthly spot-centroid means and pointing change (paper 001).");
     bindParams(t, kTrend);
@@ -180,10 +179,10 @@ void bindTrendCalibRadiometry(py::module_& top) {
         return x;
     }, py::arg("path"), py::arg("params") = py::none(),
        "Reads a centroid table (time,beam,x,y[,camera]) and computes the monthly trend, as laserwb-cli trend.");
+}
 
-    // ---- calibration -------------------------------------------------------------------------
-    py::module_ c = top.def_submodule("calib", "Laser altimeter calibration (paper 002): detector arrays, waveforms, pointing, statistics.");
-    bindParams(c, kCalib);
+// laserwb.calib's detector step: DetectorFit and detector().
+void bindCalibDetector(py::module_& c) {
     py::class_<Detector>(c, "DetectorFit", "The footprint centre from a ground detector array (CalibTask's detector step).")
         .def_property_readonly("centre", [](const Detector& d) {
             const auto& r = d.run.detector;
@@ -209,15 +208,21 @@ void bindTrendCalibRadiometry(py::module_& top) {
         Detector d;
         {
             py::gil_scoped_release nogil;
+            cal::CalibSources src;
+            src.detectors = file;
             cal::CalibInputData in;
             std::string err;
-            check(cal::readDetectorCsv(file, &in.array, &err), err);
+            check(cal::loadCalibInputs(src, &in, &err), err);
             d.array = in.array;
             d.run = core::runTask<cal::CalibTask>(in, p);
         }
         check(d.run.detector.ok, file + ": " + d.run.detector.error);
         return d;
     }, py::arg("path"), py::arg("params") = py::none(), "Fits the footprint centre of a detector CSV (CalibTask), as laserwb-cli calib detector.");
+}
+
+// laserwb.calib's pointing step: PointingFit and pointing().
+void bindCalibPointing(py::module_& c) {
     py::class_<Pointing>(c, "PointingFit", "Pointing corrections and range biases from control points (CalibTask's pointing step).")
         .def_property_readonly("beams", [](const Pointing& x) {
             py::list out;
@@ -254,17 +259,22 @@ void bindTrendCalibRadiometry(py::module_& top) {
         Pointing x;
         {
             py::gil_scoped_release nogil;
+            cal::CalibSources src;
+            src.controlPoints = file;
+            src.beams = beamFile;
             cal::CalibInputData in;
             std::string err;
-            check(cal::readBeamsJson(beamFile, &in.beams, &err), err);
-            check(cal::readControlPointCsv(file, &in.points, &err), err);
-            check(!in.points.empty(), file + ": no control points");
+            check(cal::loadCalibInputs(src, &in, &err), err);
             x.run = core::runTask<cal::CalibTask>(in, p);
         }
         check(x.run.pointing.ok, file + ": " + x.run.pointing.error);
         return x;
     }, py::arg("points"), py::arg("beams"), py::arg("params") = py::none(),
        "Pointing calibration from a control-point CSV and the beam designs (JSON), as laserwb-cli calib pointing.");
+}
+
+// laserwb.calib's statistics: Stats and stats().
+void bindCalibStats(py::module_& c) {
     py::class_<Stats>(c, "Stats", "Validation statistics of elevation differences (CalibTask's statistics).")
         .def("groups", [](const Stats& s) {
             py::dict out;
@@ -287,18 +297,22 @@ void bindTrendCalibRadiometry(py::module_& top) {
         Stats s;
         {
             py::gil_scoped_release nogil;
+            cal::CalibSources src;
+            src.differences = file;
+            src.groupColumn = group;
             cal::CalibInputData in;
             std::string err;
-            check(cal::readDifferencesCsv(file, group, &in.differences, &err), err);
-            in.differencesName = file;
-            in.groupColumn = group;
+            check(cal::loadCalibInputs(src, &in, &err), err);
             s.run = core::runTask<cal::CalibTask>(in, p);
         }
         for (const auto& g : s.run.stats) check(g.stats.ok, file + ": " + g.stats.error);
         return s;
     }, py::arg("path"), py::arg("group") = "", py::arg("params") = py::none(),
        "Statistics of a CSV of elevation differences (per `group` column value), as laserwb-cli calib stats.");
+}
 
+// laserwb.calib's waveform step: WaveformFit and waveform().
+void bindCalibWaveform(py::module_& c) {
     py::class_<WaveformFit>(c, "WaveformFit", "The feature height from a double-peak waveform and the feature it matches (CalibTask).")
         .def_property_readonly("waveform", [](const WaveformFit& x) -> py::object {
             if (!x.run.hasWaveform) return py::none();
@@ -332,7 +346,7 @@ void bindTrendCalibRadiometry(py::module_& top) {
                      *e = "a height was given, not a waveform: no model";
                      return false;
                  }
-                 return cal::writeTextOutput(p, cal::waveformModelCsv(x.in.waveform, x.run.waveform), e);
+                 return cal::writeTextOutput(p, cal::waveformModelCsv(x.run.waveformRun, x.run.waveform), e);
              }),
              py::arg("path"), "As --model.");
     c.def("waveform", [](const py::object& path, const py::object& features, const py::object& height, const py::object& params) {
@@ -342,12 +356,14 @@ void bindTrendCalibRadiometry(py::module_& top) {
         const std::string file = path.is_none() ? std::string() : fsPath(path);
         const std::string featureFile = features.is_none() ? std::string() : fsPath(features);
         WaveformFit x;
-        x.in.givenHeightM = height.is_none() ? NAN : height.cast<double>();
+        cal::CalibSources src;
+        src.givenHeightM = height.is_none() ? NAN : height.cast<double>();
+        src.waveform = file;
+        src.features = featureFile;
         {
             py::gil_scoped_release nogil;
             std::string err;
-            if (!file.empty()) check(cal::readWaveformCsv(file, p.waveform.sampleIntervalNs, &x.in.waveform, &err), err);
-            if (!featureFile.empty()) check(cal::readFeatureCsv(featureFile, &x.in.features, &err), err);
+            check(cal::loadCalibInputs(src, &x.in, &err), err);
             x.run = core::runTask<cal::CalibTask>(x.in, p);
         }
         if (x.run.hasWaveform) check(x.run.waveform.ok, file + ": " + x.run.waveform.error);
@@ -359,10 +375,21 @@ void bindTrendCalibRadiometry(py::module_& top) {
     }, py::arg("path") = py::none(), py::arg("features") = py::none(), py::arg("height") = py::none(), py::arg("params") = py::none(),
        "The feature height from a waveform CSV (or a given height=) and its match among the candidate\n"
        "features (CSV), as laserwb-cli calib waveform. match['found'] False is the CLI's exit 3.");
+}
 
-    // ---- radiometry --------------------------------------------------------------------------
-    py::module_ r = top.def_submodule("radiometry", "Radiometric calibration (paper 003): mosaic, GCP map, DN to reflectance, check.");
-    bindParams(r, kRadiometry);
+// laserwb.calib: its parameters, then the detector, pointing, statistics and waveform steps.
+void bindCalib(py::module_& top) {
+    // ---- calibration -------------------------------------------------------------------------
+    py::module_ c = top.def_submodule("calib", "Laser altimeter calibration (paper 002): detector arrays, waveforms, pointing, statistics.");
+    bindParams(c, kCalib);
+    bindCalibDetector(c);
+    bindCalibPointing(c);
+    bindCalibStats(c);
+    bindCalibWaveform(c);
+}
+
+// laserwb.radiometry's fit: ReflectanceFit, read_image() and fit().
+void bindRadiometryFit(py::module_& r) {
     py::class_<RadiometryFit>(r, "ReflectanceFit", "V_REF = K V_DN + B over the fit regions (fitReflectance).")
         .def_property_readonly("fit", [](const RadiometryFit& f) {
             const auto& x = f.r.fit;
@@ -421,7 +448,10 @@ void bindTrendCalibRadiometry(py::module_& top) {
     }, py::arg("regions"), py::arg("image") = py::none(), py::arg("params") = py::none(),
        "Fits DN to reflectance from a region CSV, measuring the regions' DN on `image` (a path, or a\n"
        "2-D array) when given, as laserwb-cli radiometry fit.");
+}
 
+// laserwb.radiometry's mosaic: Mosaic and mosaic().
+void bindRadiometryMosaic(py::module_& r) {
     py::class_<Mosaic>(r, "Mosaic", "One row of frames stitched (mosaicRow).")
         .def_property_readonly("image", [](const Mosaic& m) { return resultImage(m.r.image); }, "The row (the frames' depth).")
         .def_property_readonly("coverage", [](const Mosaic& m) { return resultImage(m.r.coverage); }, "255 where a frame contributed.")
@@ -456,7 +486,10 @@ void bindTrendCalibRadiometry(py::module_& top) {
         return m;
     }, py::arg("frames"), py::arg("params") = py::none(), py::arg("max_pixels") = 0,
        "Stitches the frames of one row (paths or 2-D arrays, in scan order), as laserwb-cli radiometry mosaic.");
+}
 
+// laserwb.radiometry's GCP map: GcpMap and gcp().
+void bindRadiometryGcp(py::module_& r) {
     py::class_<GcpMap>(r, "GcpMap", "An image resampled onto the map grid its control points give (fitGcpTransform, warpToMap).")
         .def_property_readonly("image", [](const GcpMap& g) { return resultImage(g.warp.image); })
         .def_property_readonly("valid", [](const GcpMap& g) { return resultImage(g.warp.valid); }, "255 where the map pixel came from inside the image.")
@@ -509,7 +542,10 @@ void bindTrendCalibRadiometry(py::module_& top) {
     }, py::arg("image"), py::arg("gcps"), py::arg("params") = py::none(), py::arg("crs") = py::none(), py::arg("max_pixels") = 0,
        "Fits the image-to-map transform of a GCP CSV and resamples the image (a path or 2-D array) onto\n"
        "the map grid, as laserwb-cli radiometry gcp; crs: 'EPSG:32650', a PROJ string or WKT.");
+}
 
+// laserwb.radiometry's apply: Reflectance and apply().
+void bindRadiometryApply(py::module_& r) {
     py::class_<Applied>(r, "Reflectance", "A DN image converted to reflectance (applyReflectance).")
         .def_property_readonly("reflectance", [](const Applied& a) { return resultImage(a.r.reflectance); }, "%, float32.")
         .def_property_readonly("uncertainty", [](const Applied& a) -> py::object {
@@ -565,7 +601,10 @@ void bindTrendCalibRadiometry(py::module_& top) {
        py::arg("params") = py::none(), py::arg("max_pixels") = 0,
        "Converts a DN image (a path or 2-D array) to reflectance with a fit file (fit=, as written by\n"
        "radiometry fit: the uncertainty image comes with it) or k= and b=, as laserwb-cli radiometry apply.");
+}
 
+// laserwb.radiometry's check: Check and check().
+void bindRadiometryCheck(py::module_& r) {
     py::class_<CheckTable>(r, "Check", "Relative errors of check regions against their measured reflectance (relativeErrors).")
         .def_property_readonly("table", [](const CheckTable& c) { return relativeErrorDict(c.r); })
         .def_property_readonly("warnings", [](const CheckTable& c) { return c.r.warnings; })
@@ -591,6 +630,26 @@ void bindTrendCalibRadiometry(py::module_& top) {
     }, py::arg("regions"), py::arg("image") = py::none(), py::arg("params") = py::none(), py::arg("max_pixels") = 0,
        "The relative errors of a check-region CSV, measured on a reflectance image (a path or 2-D\n"
        "array) when given, as laserwb-cli radiometry check; table['all_within_limit'] False is exit 3.");
+}
+
+// laserwb.radiometry: its parameters, then the fit, mosaic, GCP map, apply and check steps.
+void bindRadiometry(py::module_& top) {
+    // ---- radiometry --------------------------------------------------------------------------
+    py::module_ r = top.def_submodule("radiometry", "Radiometric calibration (paper 003): mosaic, GCP map, DN to reflectance, check.");
+    bindParams(r, kRadiometry);
+    bindRadiometryFit(r);
+    bindRadiometryMosaic(r);
+    bindRadiometryGcp(r);
+    bindRadiometryApply(r);
+    bindRadiometryCheck(r);
+}
+
+}  // namespace
+
+void bindTrendCalibRadiometry(py::module_& top) {
+    bindTrend(top);
+    bindCalib(top);
+    bindRadiometry(top);
 }
 
 }  // namespace lwb::py

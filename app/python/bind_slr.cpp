@@ -105,16 +105,7 @@ int threadCount(const py::object& threads) {
 
 // The analyst's own parameters as sources: a SlrParams as --config, a dict {key: value} as --set.
 void gatherParams(const py::object& params, slr::SlrSources* src) {
-    if (py::isinstance<slr::SlrParams>(params)) {
-        src->config = slr::slrSchema().toJson(params.cast<slr::SlrParams>());
-    } else if (py::isinstance<py::dict>(params)) {
-        for (const auto& kv : params.cast<py::dict>()) {
-            const std::string key = py::str(kv.first);
-            src->set.push_back({key, valueText(kv.second), key});
-        }
-    } else if (!params.is_none()) {
-        throw py::type_error("params must be None, a dict {key: value} or laserwb.slr.SlrParams");
-    }
+    lwb::py::gatherParams(params, slr::slrSchema(), "laserwb.slr.SlrParams", &src->config, &src->set);
 }
 
 Pass loadPass(const py::object& path, const py::object& passNumber, const py::object& cpf, const py::object& stations) {
@@ -235,12 +226,8 @@ py::dict normalPointColumns(const std::vector<slr::NormalPoint>& nps) {
                     "return_rate_pct"_a = col([](const auto& n) { return n.returnRatePct; }));
 }
 
-}  // namespace
-
-void bindSlr(py::module_& top) {
-    py::module_ m = top.def_submodule("slr", "SLR passes: CRD/CPF/SINEX, O-C, screening (paper 004), post-fit, normal points.");
-    bindParams(m, kParams);
-
+// The readers: read_crd, read_cpf and read_sinex.
+void bindReaders(py::module_& m) {
     m.def("read_crd", [](const py::object& path) {
         const std::string file = fsPath(path);
         const auto r = readReleased<slr::CrdReadResult>(file, [](const std::string& f) { return slr::readCrd(f); });
@@ -260,7 +247,10 @@ void bindSlr(py::module_& top) {
         for (const auto& s : r.file.sites) codes.push_back(s.code);
         return py::dict("path"_a = file, "sites"_a = codes, "solutions"_a = r.file.solutions.size(), "warnings"_a = r.warnings);
     }, py::arg("path"), "Reads a SINEX file of station coordinates: its site codes and solutions.");
+}
 
+// Pass: one pass ready to screen.
+void bindPass(py::module_& m) {
     py::class_<Pass>(m, "Pass", "One pass ready to screen: epochs and O-C (numpy views, no copy) and where the O-C came from.")
         .def_property_readonly("t", [](py::object self) { return viewOf(self.cast<const Pass&>().data->t, self); },
                                "epoch (s since 0h UTC of the pass day for CRD)")
@@ -298,7 +288,10 @@ void bindSlr(py::module_& top) {
             return "<laserwb.slr.Pass " + p.data->source + " pass " + std::to_string(p.data->passIndex + 1) + ": " +
                    std::to_string(p.data->t.size()) + " points, O-C from " + p.data->ocOrigin + ">";
         });
+}
 
+// PassResult: a screened pass and its writers.
+void bindPassResult(py::module_& m) {
     py::class_<PassRun>(m, "PassResult",
                         "A screened pass (PassTask): classes, post-fit, normal points, and its writers (the CLI's).")
         .def_property_readonly("params", [](const PassRun& r) { return r.settings.params; }, "the parameters the pass ran with")
@@ -337,7 +330,10 @@ void bindSlr(py::module_& top) {
         }, py::arg("csv") = py::none(), py::arg("crd") = py::none(), py::arg("npt") = py::none(),
            "Writes the products with the CLI's writers, all or nothing: csv (as -o), crd (as --crd-out: the\n"
            "CRD with this pass's filter flags), npt (as --npt-out: the normal points, or why there are none).");
+}
 
+// The runs: load_pass, run, set_search_threads, process_file and default_params.
+void bindRuns(py::module_& m) {
     m.def("load_pass", &loadPass, py::arg("path"), py::arg("pass_number") = py::none(), py::arg("cpf") = py::none(),
           py::arg("stations") = py::none(),
           "Loads one pass of a CRD file (pass_number from 1; default the first with full-rate records) or an\n"
@@ -362,6 +358,18 @@ void bindSlr(py::module_& top) {
           "--out-dir OUT_DIR, byte for byte (passNNN.csv/.frd/.npt, normal_points.npt, summary.csv,\n"
           "provenance.json). Returns one dict per block with summary.csv's columns (text).");
     m.def("default_params", [] { return slr::commandDefaults(); }, "The defaults of laserwb-cli slr.");
+}
+
+}  // namespace
+
+void bindSlr(py::module_& top) {
+    py::module_ m = top.def_submodule("slr", "SLR passes: CRD/CPF/SINEX, O-C, screening (paper 004), post-fit, normal points.");
+    bindParams(m, kParams);
+
+    bindReaders(m);
+    bindPass(m);
+    bindPassResult(m);
+    bindRuns(m);
 }
 
 }  // namespace lwb::py

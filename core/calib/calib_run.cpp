@@ -2,6 +2,11 @@
 
 #include <cmath>
 
+#include "core/calib/detector_array.hpp"
+#include "core/calib/pointing.hpp"
+#include "core/calib/validation_stats.hpp"
+#include "core/calib/waveform.hpp"
+
 namespace lwb::core::calib {
 
 namespace {
@@ -75,7 +80,8 @@ CalibRunResult CalibTask::run(const CalibInputData& d, const CalibParams& p, con
     double height = d.givenHeightM;
     if (!d.waveform.amplitude.empty()) {
         run.hasWaveform = true;
-        run.waveform = decomposeWaveform(withSampleInterval(d.waveform, p.waveform.sampleIntervalNs), p.waveform);
+        run.waveformRun = withSampleInterval(d.waveform, p.waveform.sampleIntervalNs);
+        run.waveform = decomposeWaveform(run.waveformRun, p.waveform);
         height = run.waveform.ok ? run.waveform.heightM : NAN;
     }
     if (std::isfinite(height) && !d.features.empty()) {
@@ -83,6 +89,62 @@ CalibRunResult CalibTask::run(const CalibInputData& d, const CalibParams& p, con
         run.match = matchFeature(d.features, height, p.match);
     }
     return run;
+}
+
+bool loadCalibPart(CalibPart part, const CalibSources& src, CalibInputData* d, std::string* error) {
+    switch (part) {
+        case CalibPart::Detectors:
+            d->array = {};
+            d->hasDetectorTruth = false;
+            return src.detectors.empty() || readDetectorCsv(src.detectors, &d->array, error);
+        case CalibPart::ControlPoints:
+            d->points.clear();
+            d->beams.clear();
+            d->hasPointingTruth = false;
+            if (src.controlPoints.empty()) return true;
+            if (src.beams.empty() && src.givenBeams.empty()) {
+                *error = src.controlPoints + ": the control points need beam designs (a beams JSON)";
+                return false;
+            }
+            d->beams = src.givenBeams;
+            if ((!src.beams.empty() && !readBeamsJson(src.beams, &d->beams, error)) ||
+                !readControlPointCsv(src.controlPoints, &d->points, error)) {
+                d->points.clear();
+                d->beams.clear();
+                return false;
+            }
+            if (d->points.empty()) {
+                *error = src.controlPoints + ": no control points";
+                return false;
+            }
+            return true;
+        case CalibPart::CheckPoints:
+            d->checkPoints.clear();
+            return src.checkPoints.empty() || readControlPointCsv(src.checkPoints, &d->checkPoints, error);
+        case CalibPart::Differences:
+            d->differences.clear();
+            d->differencesName = src.differences;
+            d->groupColumn = src.groupColumn;
+            return src.differences.empty() || readDifferencesCsv(src.differences, src.groupColumn, &d->differences, error);
+        case CalibPart::Waveform:
+            d->waveform = {};
+            d->trueHeightM = NAN;
+            d->givenHeightM = src.givenHeightM;
+            return src.waveform.empty() || readWaveformCsv(src.waveform, 1.0, &d->waveform, error);
+        case CalibPart::Features:
+            d->features.clear();
+            return src.features.empty() || readFeatureCsv(src.features, &d->features, error);
+    }
+    return true;
+}
+
+bool loadCalibInputs(const CalibSources& src, CalibInputData* in, std::string* error) {
+    CalibInputData d;
+    for (CalibPart part : {CalibPart::Detectors, CalibPart::ControlPoints, CalibPart::CheckPoints, CalibPart::Differences,
+                           CalibPart::Waveform, CalibPart::Features})
+        if (!loadCalibPart(part, src, &d, error)) return false;
+    *in = std::move(d);
+    return true;
 }
 
 std::vector<std::pair<std::string, ElevationStats>> statsRows(const std::vector<StatsGroup>& groups) {

@@ -4,6 +4,7 @@
 // calibration, validation statistics, waveform decomposition and feature match). The workbench's
 // controller and the CLI's calib commands run CalibTask, and write its results with the
 // writers of core/calib/calib_csv.hpp.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,32 @@ struct CalibInputData {
     std::vector<FeatureCandidate> features;
 };
 
+/// Where a run's inputs come from (paths; "" = that part is not given). A front end gathers
+/// them — the CLI's calib commands from their arguments, the workbench from its input row,
+/// Python from its arguments — and the core reads them here, with one set of messages.
+struct CalibSources {
+    std::string detectors;      ///< detector CSV (calib detector)
+    std::string controlPoints;  ///< control-point CSV (calib pointing); needs beams
+    std::string beams;          ///< beam designs JSON (calib pointing --beams)
+    std::string checkPoints;    ///< independent check points, control-point CSV format (validation)
+    std::string differences;    ///< elevation differences CSV (calib stats)
+    std::string groupColumn;    ///< the differences' group column (e.g. beam); "" = one group
+    std::string waveform;       ///< waveform CSV (calib waveform)
+    std::string features;       ///< candidate features CSV (calib waveform --features)
+    double givenHeightM = NAN;  ///< no waveform: the height to match the features against
+    std::vector<BeamDesign> givenBeams;  ///< beam designs in memory, where `beams` is "" (the workbench's GF-7 designs)
+};
+
+/// The parts of a run's inputs, each read on its own (the workbench reads again only what changed).
+enum class CalibPart { Detectors, ControlPoints, CheckPoints, Differences, Waveform, Features };
+
+/// Reads one part of the sources into *in, clearing that part first (an empty source leaves it
+/// empty). A waveform without times is read at 1 ns a sample: the run puts
+/// waveform.sample_interval_ns on it (withSampleInterval). False with *error ("FILE:LINE: ...").
+bool loadCalibPart(CalibPart part, const CalibSources& sources, CalibInputData* in, std::string* error);
+/// Every part of the sources (and the given height).
+bool loadCalibInputs(const CalibSources& sources, CalibInputData* in, std::string* error);
+
 /// One group of elevation differences and its statistics.
 struct StatsGroup {
     std::string name;   ///< "beam 1", "beam 2", "all", or the group column and value (for display)
@@ -53,6 +80,7 @@ struct CalibRunResult {
     std::string statsError;
     std::vector<StatsGroup> stats;
     bool hasWaveform = false;
+    Waveform waveformRun;          ///< the waveform as decomposed (at waveform.sample_interval_ns)
     WaveformResult waveform;
     bool hasMatch = false;
     FeatureMatchResult match;

@@ -10,6 +10,7 @@
 #include "core/common/csv.hpp"
 #include "core/common/parallel.hpp"
 #include "core/common/text.hpp"
+#include "core/footprint/footprint_run.hpp"
 
 namespace lwb::core::footprint {
 
@@ -62,14 +63,8 @@ BatchResult runFootprintBatch(const std::vector<std::string>& files, const Batch
 BatchResult runFootprintBatch(const std::vector<ShotSpec>& shots, const BatchParams& params, Feedback* fb,
                               const BatchItemFn& onItem) {
     return runItems(shots, params.threads, fb, onItem, [&](size_t i, BatchItem& item) {
-        const ShotSpec& shot = shots[i];
-        const ImageReadResult img = readFrame(shot.file, params.read);
-        if (!img.ok)
-            item.readError = img.error;
-        else if (shot.hasCenter)
-            item.rois = processFrame(img.image, params.footprint, {cv::Point2d(shot.centerX, shot.centerY)});
-        else
-            item.rois = processFrame(img.image, params.footprint, params.centres);
+        std::vector<ShotRoi> rois;
+        if (loadShotRois(shots[i], params, &rois, &item.readError)) item.rois = processShotRois(rois, params.footprint);
     });
 }
 

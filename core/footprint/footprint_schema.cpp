@@ -36,6 +36,8 @@ void addMethodAndRoi(Schema<FootprintParams>& s) {
     s.text("preset", LWB_FIELD(F, preset), "name of the verdict criteria the verdict values came from (wu2021, yao2021)")
         .stage = kStageVerdict;  // a name only: changing it alone refits nothing
     s.integer("roi.size", LWB_FIELD(F, roi.size), "px", {4, 1024}, {16, 64}, "ROI side N cut around the spot");
+    s.boolean("roi.size_strict", LWB_FIELD(F, roi.sizeExplicit),
+              "a frame smaller than roi.size is an error instead of a smaller ROI (--roi and --set roi.size turn it on)");
     s.real("roi.blob_sigma", LWB_FIELD(F, roi.blobSigma), "px", {0.3, 50, true, true}, {1, 6},
            "spot scale of the blob search's matched filter (frames without --center)");
 }

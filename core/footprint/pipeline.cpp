@@ -92,36 +92,4 @@ bool onlyVerdictDiffers(const FootprintParams& a, const FootprintParams& b) {
     return footprintSchema().firstChangedStage(a, b) != kStageFit;
 }
 
-std::vector<FrameRoiResult> processFrame(const cv::Mat& image, const FootprintParams& params,
-                                         const std::vector<cv::Point2d>& centres) {
-    std::vector<FrameRoiResult> out;
-    std::vector<RoiParams> rois;
-    if (centres.empty()) {
-        rois.push_back(params.roi);
-    } else {
-        for (const auto& c : centres) {
-            RoiParams rp = params.roi;
-            rp.hasCenter = true;
-            rp.centerX = c.x;
-            rp.centerY = c.y;
-            rois.push_back(rp);
-        }
-    }
-    for (const RoiParams& rp : rois) {
-        FrameRoiResult fr;
-        const RoiResult roi = extractRoi(image, rp);
-        if (!roi.ok) {
-            fr.result.error = roi.error;
-            out.push_back(std::move(fr));
-            continue;
-        }
-        fr.originX = roi.originX;
-        fr.originY = roi.originY;
-        fr.warnings = roi.warnings;
-        fr.result = processRoi(roi.roi, params);
-        out.push_back(std::move(fr));
-    }
-    return out;
-}
-
 }  // namespace lwb::core::footprint

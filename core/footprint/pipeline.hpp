@@ -87,9 +87,6 @@ struct FrameRoiResult {
     std::vector<std::string> warnings;
 };
 
-/// Cuts one ROI per centre (or one searched / whole ROI when centres is empty) and processes
-/// each. On a ROI error the result has ok=false and the error.
-std::vector<FrameRoiResult> processFrame(const cv::Mat& image, const FootprintParams& params,
-                                         const std::vector<cv::Point2d>& centres);
+// (processFrame, which cuts a frame's ROIs and processes each: core/footprint/footprint_run.hpp)
 
 }  // namespace lwb::core::footprint

@@ -223,6 +223,34 @@ def test_one_run_station_file_is_the_cli_day(data, tmp_path):
         same_bytes(tmp_path / f"c{k}.npt", tmp_path / "cli" / f"pass00{k}.npt")
 
 
+def test_one_run_footprint_shot_list_is_the_cli_report(tmp_path):
+    """Issue 40: fit_batch gathers the sources and the core resolves them as laserwb-cli
+    footprint does: a shot list (its times, beams, a full frame's own centre), the command's
+    printed config given back as FootprintParams, the strict ROI size among them."""
+    cli("simulate", "footprint", "--count", "6", "--seed", "21", "--case", "mixed", "-q", tmp_path / "rois")
+    cli("simulate", "footprint", "--count", "2", "--seed", "22", "--full-frame", "-q", tmp_path / "frames")
+    rows = ["file,time,beam,camera,center_x,center_y"]
+    rows += [f"rois/shot_{i:06d}.png,2021-0{1 + i // 3}-1{i}T10:00:00Z,{1 + i % 2},LFI,," for i in range(6)]
+    rows += [f"frames/shot_{i:06d}.png,2021-05-0{i + 1},1,LSI,122,262" for i in range(2)]
+    shots = tmp_path / "list.csv"
+    shots.write_text("\n".join(rows) + "\n")
+    for opts in (["--preset", "yao2021", "--method", "tefm"], ["--roi", "48"]):
+        tag = "_".join(o.strip("-") for o in opts)
+        cfg = tmp_path / f"{tag}.json"
+        cfg.write_text(cli("footprint", "--print-config", *opts).stdout)
+        cli("footprint", shots, *opts, "--keep-going", "-q", "-o", tmp_path / f"{tag}_cli.csv")
+        params = laserwb.footprint.FootprintParams()
+        params.load(str(cfg))
+        laserwb.footprint.fit_batch(str(shots), params=params, keep_going=True).write_csv(str(tmp_path / f"{tag}_py.csv"))
+        same_bytes(tmp_path / f"{tag}_cli.csv", tmp_path / f"{tag}_py.csv")
+    # the same options as Python's own arguments: the same report
+    laserwb.footprint.fit_batch(str(shots), preset="yao2021", method="tefm").write_csv(str(tmp_path / "args.csv"))
+    same_bytes(tmp_path / "preset_yao2021_method_tefm_cli.csv", tmp_path / "args.csv")
+    with open(tmp_path / "roi_48_cli.csv") as f:
+        refused = [r for r in csv.DictReader(f) if "larger than the image" in r["reasons"]]
+    assert len(refused) == 6  # the 32 px ROIs under the strict 48 px size; the full frames are cut
+
+
 def test_one_run_thread_counts_are_checked():
     """The scale search's threads belong to the run and are checked as the CLI checks --threads."""
     with pytest.raises(ValueError):

@@ -29,6 +29,7 @@
 #include <qcustomplot.h>
 
 #include "core/common/csv.hpp"
+#include "core/footprint/footprint_run.hpp"
 #include "core/common/display_stretch.hpp"
 #include "test_support.hpp"
 #include "ui_support.hpp"
@@ -413,6 +414,37 @@ private slots:
         c->open({path});
         QCOMPARE(errors.size(), 1);
         QVERIFY2(errors[0][0].toString().contains("list.csv:2: time"), qPrintable(errors[0][0].toString()));
+    }
+
+    // Issue 40: the workbench resolves a config as the CLI does (core resolveFootprintParams):
+    // the CLI's printed config of `--preset yao2021 --method tefm --roi 24`, given to the
+    // workbench, gives the CLI's report cell for cell (the CLI run with the options themselves).
+    void workbenchTakesThePrintedConfig() {
+        const QStringList opts{"--preset", "yao2021", "--method", "tefm", "--roi", "24"};
+        const auto printed = lwbtest::runCli(QStringList{"footprint", "--print-config"} + opts);
+        QVERIFY2(printed.exitCode == 0, qPrintable(printed.err));
+        const QString cfg = m_dir.path() + "/printed.json";
+        QVERIFY(lwbtest::writeText(cfg, printed.out.toUtf8()));
+        const auto cli = lwbtest::runCli(QStringList{"footprint", m_dir.path() + "/shots", "-q", "-o", m_dir.path() + "/opts_cli.csv"} + opts);
+        QVERIFY2(cli.exitCode == 0, qPrintable(cli.err));
+        lwb::core::footprint::FootprintSources src;
+        src.configFile = cfg.toStdString();
+        lwb::core::footprint::FootprintParams p;
+        lwb::core::footprint::FootprintError fe;
+        QVERIFY2(lwb::core::footprint::resolveFootprintParams(src, &p, &fe), fe.message.c_str());
+        QVERIFY(p.roi.sizeExplicit && p.roi.size == 24 && p.method == lwb::core::footprint::Method::Tefm);
+        MainWindow w;
+        FootprintController* c = w.footprint()->controller();
+        c->setParams(p);
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
+        QString err;
+        QVERIFY2(w.footprint()->exportTable(m_dir.path() + "/opts_gui.csv", false, &err), qPrintable(err));
+        const auto ref = lwb::core::readCsv((m_dir.path() + "/opts_cli.csv").toStdString());
+        const auto got = lwb::core::readCsv((m_dir.path() + "/opts_gui.csv").toStdString());
+        QVERIFY(ref.ok && got.ok);
+        QCOMPARE(got.table.rows.size(), ref.table.rows.size());
+        for (size_t r = 0; r < ref.table.rows.size(); ++r)
+            for (size_t k = 0; k < ref.table.header.size(); ++k) QCOMPARE(got.table.rows[r][k], ref.table.rows[r][k]);
     }
 
     void exportReviewTableMatchesTheCli() {
