@@ -21,6 +21,7 @@
 #include "core/footprint/batch.hpp"
 #include "core/footprint/crlb.hpp"
 #include "core/footprint/footprint_run.hpp"
+#include "core/footprint/report_columns.hpp"
 #include "core/footprint/shot_list.hpp"
 #include "core/footprint/trend.hpp"
 #include "core/sim/centroid_sim.hpp"
@@ -47,6 +48,7 @@ const std::string kFootprintUsage =
     "  --set KEY=VALUE           one parameter (repeatable), e.g. --set segment.threshold_factor=0.2\n"
     "  --print-config            print the effective parameters as JSON and exit\n"
     "  --help-params             every parameter with its unit, range, default and meaning\n"
+    "  --help-columns            every column of the report with its unit and meaning\n"
     "  --method gauss|tefm|gcm   centre method (default {default:method}; gauss: Wu f.lnf QR + tilt + Guo + LM) = --set method=...\n"
     "  --preset wu2021|yao2021   verdict criteria (default {default:preset})\n"
     "  --roi N                   ROI side in px (default {default:roi.size}) = --set roi.size=N\n"
@@ -66,8 +68,8 @@ const std::string kFootprintUsage =
     "  --where EXPR              only the report rows for which EXPR holds, e.g. 'snr < 10 and roi == 1'\n"
     "                            (the workbench's filter language over the report's columns)\n"
     "  -o, --output OUT.csv      report: file,x,y,verdict,reasons,method,noise_class,sigma_x,...,\n"
-    "                            roi_y0,cov_xx_px2,...,radius95_px,time,beam,camera; beside it\n"
-    "                            OUT.csv.provenance.json\n"
+    "                            roi_y0,cov_xx_px2,...,radius95_px,time,beam,camera (every column:\n"
+    "                            --help-columns); beside it OUT.csv.provenance.json\n"
     "                            (version, parameters, settings, SHA-256 of every input and output)\n"
     "  -q, --quiet               no progress line\n") +
     kBatchOptionsHelp +
@@ -85,33 +87,36 @@ struct FootprintOptions : ParamOptions<FootprintParams> {
 }  // namespace
 
 namespace {
-// The report, filtered by --where when given (every field a text cell: a number field compares
-// as its number, an empty one is missing), staged at `path`. *rows and *kept count the rows.
+// The report, filtered by --where when given, staged at `path`: the expression sees each row's
+// values as the column table gives them (core/footprint/report_columns.hpp), the numbers before
+// the CSV rounds them, as the workbench's filter does. *rows and *kept count the rows.
 bool writeReport(const std::string& path, const BatchResult& res, Method method, const core::RowFilter* where,
-                 const std::vector<std::string>& columns, size_t* rows, size_t* kept, std::string* err) {
+                 size_t* rows, size_t* kept, std::string* err) {
     if (!where) return writeFootprintCsv(path, res.items, method, err);
-    std::string text = footprintCsvHeader();
-    for (const auto& it : res.items) text += footprintCsvRows(it, method);
-    const core::CsvReadResult table = core::parseCsv(text, "report");
-    if (!table.ok) {
-        *err = "--where: " + table.error;
-        return false;
-    }
     core::AtomicFile f(path);
     if (!f.ok()) {
         *err = f.error();
         return false;
     }
     f.stream() << footprintCsvHeader();
-    std::vector<core::FilterCell> cells(columns.size());
-    for (const auto& row : table.table.rows) {
-        ++*rows;
-        for (size_t c = 0; c < cells.size(); ++c) cells[c] = core::FilterCell::str(c < row.size() ? row[c] : "");
-        if (!where->matches(cells)) continue;
-        ++*kept;
-        for (size_t c = 0; c < row.size(); ++c) f.stream() << (c ? "," : "") << core::csvEscape(row[c]);
-        f.stream() << "\n";
-    }
+    const auto& columns = footprintColumns();
+    std::vector<core::FilterCell> cells;
+    for (const BatchItem& it : res.items)
+        for (const ReportRow& r : reportRows(it, method)) {
+            ++*rows;
+            cells.clear();
+            for (const FootprintColumn& c : columns)
+                if (!c.reviewOnly) cells.push_back(c.value(r));
+            if (!where->matches(cells)) continue;
+            ++*kept;
+            bool first = true;
+            for (const FootprintColumn& c : columns)
+                if (!c.reviewOnly) {
+                    f.stream() << (first ? "" : ",") << footprintCsvCell(c, r);
+                    first = false;
+                }
+            f.stream() << "\n";
+        }
     if (!f.commit()) {
         *err = f.error();
         return false;
@@ -146,16 +151,10 @@ int runFootprint(const Args& a, const FootprintSources& src, const BatchOptions&
     std::string err;
     // --where: compiled before any work, against the report's columns.
     std::shared_ptr<const core::RowFilter> where;
-    std::vector<std::string> reportColumns;
     if (a.has("--where")) {
-        const std::string header = footprintCsvHeader();
-        size_t from = 0;
-        for (size_t to; (to = header.find_first_of(",\n", from)) != std::string::npos; from = to + 1)
-            reportColumns.push_back(header.substr(from, to - from));
-        if (from < header.size()) reportColumns.push_back(header.substr(from));
         core::RowFilterParams wp;
         wp.text = a.value("--where");
-        wp.columns = reportColumns;
+        wp.columns = footprintColumnNames();
         const core::RowFilterResult w = core::compileRowFilter(wp);
         if (!w.ok) return fail("footprint", "--where: " + w.error, kUsage);
         where = w.filter;
@@ -233,7 +232,7 @@ int runFootprint(const Args& a, const FootprintSources& src, const BatchOptions&
     if (!firstError.empty()) return fail("footprint", firstError + " (nothing written; --keep-going reports it as a rejected row)");
     // ---- the report and its provenance, all or nothing ----
     size_t kept = 0, rows = 0;
-    if (!writeReport(outs.stagingPath(out), res, bp.footprint.method, where.get(), reportColumns, &rows, &kept, &err))
+    if (!writeReport(outs.stagingPath(out), res, bp.footprint.method, where.get(), &rows, &kept, &err))
         return fail("footprint", outs.unstaged(err));
     if (!toStdout && !stageProvenance(outs, prov, {out}, sidecar, &err)) return fail("footprint", err);
     if (int rc = commitOutputs("footprint", outs)) return rc;
@@ -268,10 +267,17 @@ int cmdFootprint(int argc, char** argv) {
     for (const char* o : {"--preset", "--raw-size", "--threads", "-o", "--output", "--max-pixels", "--where", "--metadata"})
         a.option(o, true);
     a.option("--center", true, true);
-    for (const char* o : {"--keep-going", "--help-params", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
+    for (const char* o : {"--keep-going", "--help-params", "--help-columns", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail("footprint", a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
         std::cout << a.usage();  // (its defaults filled from the schema by declare)
+        return kOk;
+    }
+    if (a.has("--help-columns")) {  // (from the column table the report is written by)
+        std::cout << "footprint report columns (name [unit]: meaning):\n";
+        for (const FootprintColumn& c : footprintColumns())
+            if (!c.reviewOnly)
+                std::cout << "  " << c.name << (*c.unit ? std::string(" [") + c.unit + "]" : std::string()) << ": " << c.doc << "\n";
         return kOk;
     }
     if (a.has("--help-params")) {

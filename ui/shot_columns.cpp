@@ -5,7 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#include <algorithm>
+
 #include "core/footprint/background.hpp"
+#include "core/footprint/report_columns.hpp"
 #include "ui/footprint_controller.hpp"
 #include "ui/shot_table_model.hpp"
 
@@ -13,55 +16,124 @@ namespace lwb::ui {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+namespace fp = core::footprint;
+using core::FilterCell;
 
-enum Col {
-    File, Time, Beam, Camera, X, Y, Dx, Dy, Verdict_, Computed, Manual, Reasons, Method_, NoiseClass, Noise, SigmaX,
-    SigmaY, AxisRatio, TiltDeg, MajorAxis, Mse, Snr, Crlb, Roi, Uncertainty, Eccentricity, Area, Amplitude,
-    Background, RoiX0, RoiY0, CovXX, CovXY, CovYY, Radius95, Note, Count
+// A shot as a row of the report's column table (core/footprint/report_columns.hpp), as the
+// review export writes it. Its strings are held here, filled only for a text column.
+struct ShotRow {
+    std::string file, time, beam, camera, note, readError;
+    fp::ReportRow row;
+    ShotRow(const Shot& s, int roiIndex, bool withText) {
+        if (withText) {
+            file = s.file.toStdString();
+            time = s.time.toStdString();
+            beam = s.beam.toStdString();
+            camera = s.camera.toStdString();
+            note = s.note.toStdString();
+            readError = s.loadError.toStdString();
+        }
+        row.file = file;
+        row.time = time;
+        row.beam = beam;
+        row.camera = camera;
+        row.note = note;
+        row.readError = readError;
+        row.result = s.loadError.isEmpty() ? &s.result : nullptr;
+        row.roi = roiIndex;
+        row.originX = s.origin.x();
+        row.originY = s.origin.y();
+        row.method = s.result.method;
+        row.review = true;
+        row.overridden = s.overridden;
+        row.manual = s.overrideVerdict;
+    }
 };
+
+// The workbench's own columns: what the table shows beside the report's (dx, dy, the state,
+// the computed verdict as the list has it) and the two it shows its own way (file: the name;
+// verdict: unreadable and pending too).
+struct OwnColumn {
+    ShotColumn column;
+    FilterCell (*cell)(const Shot&, int roiIndex);
+};
+
+FilterCell offset(const Shot& s, bool isX) {
+    const bool failed = !s.loadError.isEmpty();
+    const bool shown = s.fit.ok && !failed && s.effectiveVerdict() != Verdict::Rejected;
+    if (!shown || (!s.hasCenter && s.roi.empty())) return FilterCell::num(kNaN);
+    const double nominal = s.hasCenter ? (isX ? s.center.x() : s.center.y())
+                                       : (isX ? s.origin.x() + (s.roi.cols - 1) / 2.0 : s.origin.y() + (s.roi.rows - 1) / 2.0);
+    return FilterCell::num((isX ? s.fullX() : s.fullY()) - nominal);
+}
+
+using K = ShotColumnKind;
+const std::vector<OwnColumn> kOwn = {
+    {{"file", K::Text, "file name", ""},
+     [](const Shot& s, int) { return FilterCell::str(QFileInfo(s.file).fileName().toStdString()); }},
+    {{"dx", K::Number, "x minus the nominal centre (the ROI's middle when none is given)", "px"},
+     [](const Shot& s, int) { return offset(s, true); }},
+    {{"dy", K::Number, "y minus the nominal centre (the ROI's middle when none is given)", "px"},
+     [](const Shot& s, int) { return offset(s, false); }},
+    {{"verdict", K::Text, "verdict shown (good, doubtful, rejected, unreadable; manual when set)", ""},
+     [](const Shot& s, int) { return FilterCell::str(shotStateLabel(shotState(s)).toStdString()); }},
+    {{"computed", K::Text, "verdict the pipeline gave", ""},
+     [](const Shot& s, int) {
+         const bool failed = !s.loadError.isEmpty();
+         return FilterCell::str(failed ? "unreadable" : !s.processed ? "" : verdictLabel(s.verdict).toStdString());
+     }},
+    {{"manual", K::Number, "1 with a manual verdict, else 0", ""}, [](const Shot& s, int) { return FilterCell::num(s.overridden ? 1 : 0); }},
+    {{"noise", K::Text, "background noise class (as noise_class)", ""},
+     [](const Shot& s, int) { return FilterCell::str(s.noiseClass.toStdString()); }},
+};
+
+// The table's order: the report's columns (by name) and the workbench's own among them.
+const char* const kOrder[] = {"file", "time", "beam", "camera", "x", "y", "dx", "dy", "verdict", "computed", "manual",
+                              "reasons", "method", "noise_class", "noise"};
+
+struct Entry {
+    ShotColumn column;
+    const OwnColumn* own = nullptr;          ///< the workbench's column, or
+    const fp::FootprintColumn* report = nullptr;  ///< the report's
+};
+
+const std::vector<Entry>& entries() {
+    static const std::vector<Entry> all = [] {
+        std::vector<Entry> out;
+        std::vector<std::string> placed;
+        auto add = [&](const std::string& name) {
+            for (const OwnColumn& o : kOwn)
+                if (name == o.column.name) {
+                    out.push_back({o.column, &o, nullptr});
+                    placed.push_back(name);
+                    return;
+                }
+            for (const fp::FootprintColumn& c : fp::footprintColumns())
+                if (name == c.name) {
+                    // (the review's auto_verdict and override are the table's computed and manual)
+                    const K kind = name == "time" ? K::Time : c.type == fp::ColumnType::Text ? K::Text : K::Number;
+                    out.push_back({{c.name, kind, c.doc, c.unit}, nullptr, &c});
+                    placed.push_back(name);
+                    return;
+                }
+        };
+        for (const char* n : kOrder) add(n);
+        for (const fp::FootprintColumn& c : fp::footprintColumns())
+            if (std::find(placed.begin(), placed.end(), c.name) == placed.end() && std::string(c.name) != "auto_verdict" &&
+                std::string(c.name) != "override")
+                add(c.name);
+        return out;
+    }();
+    return all;
+}
 }  // namespace
 
 const std::vector<ShotColumn>& shotColumns() {
-    using K = ShotColumnKind;
-    static const std::vector<ShotColumn> cols = {
-        {"file", K::Text, "file name", ""},
-        {"time", K::Time, "time of the shot (UTC, as in the list)", ""},
-        {"beam", K::Text, "beam label", ""},
-        {"camera", K::Text, "camera label", ""},
-        {"x", K::Number, "spot centre x, full image (empty when rejected)", "px"},
-        {"y", K::Number, "spot centre y, full image (empty when rejected)", "px"},
-        {"dx", K::Number, "x minus the nominal centre (the ROI's middle when none is given)", "px"},
-        {"dy", K::Number, "y minus the nominal centre (the ROI's middle when none is given)", "px"},
-        {"verdict", K::Text, "verdict shown (good, doubtful, rejected, unreadable; manual when set)", ""},
-        {"computed", K::Text, "verdict the pipeline gave", ""},
-        {"manual", K::Number, "1 with a manual verdict, else 0", ""},
-        {"reasons", K::Text, "failed criteria", ""},
-        {"method", K::Text, "centre method", ""},
-        {"noise_class", K::Text, "background noise class", ""},
-        {"noise", K::Text, "background noise class (as noise_class)", ""},
-        {"sigma_x", K::Number, "spread along the x-near axis", "px"},
-        {"sigma_y", K::Number, "spread along the other axis", "px"},
-        {"axis_ratio", K::Number, "sigma_x / sigma_y", ""},
-        {"tilt_deg", K::Number, "tilt of the x-near axis", "°"},
-        {"major_axis_px", K::Number, "major axis at 1/e²", "px"},
-        {"mse", K::Number, "fit mean square error", ""},
-        {"snr", K::Number, "signal to noise ratio", ""},
-        {"crlb_px", K::Number, "Cramér–Rao bound on the radial error", "px"},
-        {"roi", K::Number, "ROI index within the frame", ""},
-        {"uncertainty_px", K::Number, "1-σ radial position uncertainty", "px"},
-        {"eccentricity", K::Number, "eccentricity", ""},
-        {"area_px", K::Number, "pixels in the spot domain", "px"},
-        {"amplitude_dn", K::Number, "peak above background", "DN"},
-        {"background_dn", K::Number, "background level", "DN"},
-        {"roi_x0", K::Number, "full-image x of the ROI's first pixel", "px"},
-        {"roi_y0", K::Number, "full-image y of the ROI's first pixel", "px"},
-        {"cov_xx_px2", K::Number, "the centre's variance along x (uncertainty_px² = cov_xx + cov_yy)", "px²"},
-        {"cov_xy_px2", K::Number, "the centre's x-y covariance", "px²"},
-        {"cov_yy_px2", K::Number, "the centre's variance along y", "px²"},
-        {"radius95_px", K::Number, "radius holding the true centre in 95 % of shots", "px"},
-        {"note", K::Text, "the analyst's note", ""},
-    };
-    Q_ASSERT(int(cols.size()) == Count);
+    static const std::vector<ShotColumn> cols = [] {
+        std::vector<ShotColumn> c;
+        for (const Entry& e : entries()) c.push_back(e.column);
+        return c;
+    }();
     return cols;
 }
 
@@ -108,66 +180,17 @@ double shotTimeSeconds(const QString& t) {
 }
 
 core::FilterCell shotCell(const Shot& s, int roiIndex, int col) {
-    using core::FilterCell;
-    const bool failed = !s.loadError.isEmpty();
-    const Verdict v = failed ? Verdict::Rejected : s.effectiveVerdict();
-    const bool shown = s.fit.ok && !failed && v != Verdict::Rejected;  // x, y as the table shows them
-    const core::footprint::SpotFit& f = s.fit;
-    auto fitNum = [&](double x) { return FilterCell::num(f.ok && !failed ? x : kNaN); };
-    switch (col) {
-        case File: return FilterCell::str(QFileInfo(s.file).fileName().toStdString());
-        case Time: return FilterCell::str(s.time.toStdString());
-        case Beam: return FilterCell::str(s.beam.toStdString());
-        case Camera: return FilterCell::str(s.camera.toStdString());
-        case X: return FilterCell::num(shown ? s.fullX() : kNaN);
-        case Y: return FilterCell::num(shown ? s.fullY() : kNaN);
-        case Dx:
-        case Dy: {
-            if (!shown) return FilterCell::num(kNaN);
-            const bool isX = col == Dx;
-            const double nominal = s.hasCenter ? (isX ? s.center.x() : s.center.y())
-                                               : (isX ? s.origin.x() + (s.roi.cols - 1) / 2.0
-                                                      : s.origin.y() + (s.roi.rows - 1) / 2.0);
-            if (!s.hasCenter && s.roi.empty()) return FilterCell::num(kNaN);
-            return FilterCell::num((isX ? s.fullX() : s.fullY()) - nominal);
-        }
-        case Verdict_: return FilterCell::str(shotStateLabel(shotState(s)).toStdString());
-        case Computed:
-            return FilterCell::str(failed ? "unreadable" : !s.processed ? "" : verdictLabel(s.verdict).toStdString());
-        case Manual: return FilterCell::num(s.overridden ? 1 : 0);
-        case Reasons: return FilterCell::str((failed ? QStringList{s.loadError} : s.reasons).join("; ").toStdString());
-        case Method_:
-            return FilterCell::str(s.processed && !failed ? core::footprint::methodName(s.result.method) : "");
-        case NoiseClass:
-        case Noise: return FilterCell::str(s.noiseClass.toStdString());
-        case SigmaX: return fitNum(f.sigmaX);
-        case SigmaY: return fitNum(f.sigmaY);
-        case AxisRatio: return fitNum(f.axisRatio);
-        case TiltDeg: return fitNum(f.tiltRad * 180 / M_PI);
-        case MajorAxis: return fitNum(f.majorAxisPx);
-        case Mse: return fitNum(f.mse);
-        case Snr: return fitNum(f.snr);
-        case Crlb: return fitNum(s.result.crlbPx);
-        case Roi: return FilterCell::num(roiIndex);
-        case Uncertainty: return fitNum(f.uncertaintyPx);
-        case Eccentricity: return fitNum(f.eccentricity);
-        case Area: return fitNum(f.areaPx);
-        case Amplitude: return fitNum(f.amplitude);
-        case Background:
-            return FilterCell::num(failed || !s.processed ? kNaN : f.ok ? f.background : s.result.background.level);
-        case RoiX0: return FilterCell::num(failed ? kNaN : s.origin.x());
-        case RoiY0: return FilterCell::num(failed ? kNaN : s.origin.y());
-        case CovXX: return fitNum(f.covXX);
-        case CovXY: return fitNum(f.covXY);
-        case CovYY: return fitNum(f.covYY);
-        case Radius95: return fitNum(f.radius95Px);
-        case Note: return FilterCell::str(s.note.toStdString());
-    }
-    return {};
+    const auto& all = entries();
+    if (col < 0 || col >= int(all.size())) return {};
+    const Entry& e = all[size_t(col)];
+    if (e.own) return e.own->cell(s, roiIndex);
+    const ShotRow r(s, roiIndex, e.report->type == fp::ColumnType::Text);
+    return e.report->value(r.row);
 }
 
 double shotNumber(const Shot& s, int roiIndex, int col) {
-    if (col == Time) return shotTimeSeconds(s.time);
+    static const int time = shotColumnIndex("time");
+    if (col == time) return shotTimeSeconds(s.time);
     return shotCell(s, roiIndex, col).number;
 }
 

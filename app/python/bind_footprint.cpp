@@ -6,6 +6,7 @@
 #include "bind.hpp"
 #include "core/footprint/batch.hpp"
 #include "core/footprint/footprint_run.hpp"
+#include "core/footprint/report_columns.hpp"
 #include "core/footprint/image_io.hpp"
 
 namespace lwb::py {
@@ -28,9 +29,16 @@ const ParamsBinding<fp::FootprintParams> kParams{
     "FootprintParams", "Parameters of the footprint shots (laserwb-cli footprint; core/footprint/pipeline.hpp).",
     fp::footprintSchema, defaults, familyCheck, fromJson, afterSet};
 
-// The report's columns that are text and whole numbers (the rest are float64, empty = NaN).
-const std::vector<std::string> kText = {"file", "verdict", "reasons", "method", "noise_class", "time", "beam", "camera"};
-const std::vector<std::string> kInt = {"roi", "roi_x0", "roi_y0"};
+// The report's columns of a type, from its column table (core/footprint/report_columns.hpp):
+// text and whole numbers; the rest are float64, empty = NaN.
+std::vector<std::string> columnsOfType(fp::ColumnType t) {
+    std::vector<std::string> names;
+    for (const auto& c : fp::footprintColumns())
+        if (c.type == t && !c.reviewOnly) names.push_back(c.name);
+    return names;
+}
+const std::vector<std::string> kText = columnsOfType(fp::ColumnType::Text);
+const std::vector<std::string> kInt = columnsOfType(fp::ColumnType::Integer);
 
 /// A run's items and its method: the report's rows.
 struct Report {

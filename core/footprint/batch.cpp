@@ -11,6 +11,7 @@
 #include "core/common/parallel.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/footprint_run.hpp"
+#include "core/footprint/report_columns.hpp"
 
 namespace lwb::core::footprint {
 
@@ -95,86 +96,57 @@ std::vector<FootprintResult> ShotsTask::run(const Inputs& in, const FootprintPar
 }
 
 std::string footprintCsvHeader(const FootprintCsvOptions& o) {
-    std::string h =
-        "file,x,y,verdict,reasons,method,noise_class,sigma_x,sigma_y,axis_ratio,tilt_deg,major_axis_px,"
-        "mse,snr,crlb_px,roi,uncertainty_px,eccentricity,area_px,amplitude_dn,background_dn,roi_x0,roi_y0,"
-        "cov_xx_px2,cov_xy_px2,cov_yy_px2,radius95_px,time,beam,camera";
-    if (o.review) h += ",auto_verdict,override,note";
+    std::string h;
+    for (const std::string& n : footprintColumnNames(o.review)) h += (h.empty() ? "" : ",") + n;
     return h + "\n";
 }
 
-namespace {
-std::string num(double v, int decimals) { return std::isfinite(v) ? formatFixed(v, decimals) : ""; }
-std::string sci(double v) { return std::isfinite(v) ? formatDouble(v, 4) : ""; }
-std::string joinReasons(const std::vector<std::string>& r) {
-    std::string s;
-    for (size_t i = 0; i < r.size(); ++i) s += (i ? "; " : "") + r[i];
-    return s;
+std::vector<ReportRow> reportRows(const BatchItem& item, Method method, bool review) {
+    std::vector<ReportRow> rows;
+    auto row = [&](size_t k) {
+        ReportRow r;
+        r.file = item.file;
+        r.time = item.time;
+        r.beam = item.beam;
+        r.camera = item.camera;
+        r.method = method;
+        r.roi = static_cast<int>(k);
+        r.review = review;
+        if (k < item.reviews.size()) {
+            r.overridden = item.reviews[k].overridden;
+            r.manual = item.reviews[k].verdict;
+            r.note = item.reviews[k].note;
+        }
+        return r;
+    };
+    if (!item.readError.empty()) {
+        ReportRow r = row(0);
+        r.readError = item.readError;
+        rows.push_back(r);
+        return rows;
+    }
+    for (size_t k = 0; k < item.rois.size(); ++k) {
+        ReportRow r = row(k);
+        r.result = &item.rois[k].result;
+        r.originX = item.rois[k].originX;
+        r.originY = item.rois[k].originY;
+        rows.push_back(r);
+    }
+    return rows;
 }
-// The shot's columns (time, beam, camera), and the review columns of ROI k (empty fields when
-// the item carries no review for it).
-std::string shotColumns(const BatchItem& item) {
-    return "," + csvEscape(item.time) + "," + csvEscape(item.beam) + "," + csvEscape(item.camera);
-}
-std::string reviewColumns(const BatchItem& item, size_t k, Verdict computed) {
-    const RoiReview rv = k < item.reviews.size() ? item.reviews[k] : RoiReview{};
-    return "," + std::string(verdictName(computed)) + "," + (rv.overridden ? "manual" : "") + "," + csvEscape(rv.note);
-}
-}  // namespace
 
 std::string footprintCsvRows(const BatchItem& item, Method method, const FootprintCsvOptions& o, size_t* rows) {
     std::string out;
     size_t count = 0;
-    const std::string file = csvEscape(item.file);
-    // Unreadable frames and failed fits are rejected rows, whatever the review says.
-    auto failedRow = [&](const std::string& reason, size_t k, const std::string& roi) {
-        if (o.acceptedOnly) return;
-        // (…, roi_y0, cov_xx/xy/yy_px2, radius95_px empty)
-        out += file + ",,,rejected," + csvEscape(reason) + "," + methodName(method) + ",,,,,,,,,," + roi + ",,,,,,,,,,," +
-               shotColumns(item);
-        if (o.review) out += reviewColumns(item, k, Verdict::Rejected);
-        out += "\n";
-        ++count;
-    };
-    if (!item.readError.empty()) {
-        failedRow("unreadable: " + item.readError, 0, "0");
-        if (rows) *rows += count;
-        return out;
-    }
-    for (size_t k = 0; k < item.rois.size(); ++k) {
-        const FrameRoiResult& fr = item.rois[k];
-        const FootprintResult& r = fr.result;
-        if (!r.ok) {
-            failedRow(r.error, k, std::to_string(k));
-            continue;
+    for (const ReportRow& r : reportRows(item, method, o.review)) {
+        // Accepted only: good rows with a fit (unreadable frames and failed fits are rejected rows).
+        if (o.acceptedOnly && (r.failed() || r.verdict() != Verdict::Good || !r.result->fit.ok)) continue;
+        bool first = true;
+        for (const FootprintColumn& c : footprintColumns()) {
+            if (c.reviewOnly && !o.review) continue;
+            out += (first ? "" : ",") + footprintCsvCell(c, r);
+            first = false;
         }
-        const SpotFit& f = r.fit;
-        Verdict v = r.verdict;
-        if (o.review && k < item.reviews.size() && item.reviews[k].overridden) v = item.reviews[k].verdict;
-        if (o.acceptedOnly && (v != Verdict::Good || !f.ok)) continue;
-        const bool has = f.ok && v != Verdict::Rejected;
-        out += file + ",";
-        out += (has ? num(f.x + fr.originX, 4) : "") + "," + (has ? num(f.y + fr.originY, 4) : "") + ",";
-        out += std::string(verdictName(v)) + "," + csvEscape(joinReasons(r.reasons)) + ",";
-        out += std::string(methodName(r.method)) + "," + noiseClassName(r.background.noiseClass) + ",";
-        if (f.ok) {
-            out += num(f.sigmaX, 4) + "," + num(f.sigmaY, 4) + "," + num(f.axisRatio, 4) + "," +
-                   num(f.tiltRad * 180 / M_PI, 3) + "," + num(f.majorAxisPx, 3) + "," + sci(f.mse) + "," +
-                   num(f.snr, 2) + "," + num(r.crlbPx, 5) + ",";
-        } else {
-            out += ",,,,,,,,";
-        }
-        out += std::to_string(k) + ",";
-        if (f.ok)
-            out += num(f.uncertaintyPx, 5) + "," + num(f.eccentricity, 4) + "," + num(f.areaPx, 0) + "," +
-                   num(f.amplitude, 1) + "," + num(f.background, 1);
-        else
-            out += ",,,," + num(r.background.level, 1);
-        out += "," + std::to_string(fr.originX) + "," + std::to_string(fr.originY);
-        // The centre's covariance behind uncertainty_px (the Gaussian fit's; empty for the others).
-        out += "," + (has ? sci(f.covXX) : "") + "," + (has ? sci(f.covXY) : "") + "," + (has ? sci(f.covYY) : "") + "," +
-               (has ? num(f.radius95Px, 5) : "") + shotColumns(item);
-        if (o.review) out += reviewColumns(item, k, r.verdict);
         out += "\n";
         ++count;
     }

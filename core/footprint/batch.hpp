@@ -90,8 +90,13 @@ struct ShotsTask {
     static Outputs run(const Inputs& in, const FootprintParams& params, const Reuse& reuse, Feedback* fb);
 };
 
-/// The CSV header of footprint reports: file,x,y,verdict,...,roi_x0,roi_y0,time,beam,camera (the
-/// shot's, empty when unknown), then the review's columns.
+struct ReportRow;
+/// The report's rows of an item (core/footprint/report_columns.hpp): one per ROI, or one for an
+/// unreadable frame. They point into `item`, which must outlive them.
+std::vector<ReportRow> reportRows(const BatchItem& item, Method method, bool review = false);
+
+/// The CSV header of footprint reports: the names of core/footprint/report_columns.hpp
+/// (file,x,y,verdict,...,time,beam,camera), then the review's columns when asked.
 std::string footprintCsvHeader(const FootprintCsvOptions& options = {});
 /// One CSV row per ROI of the item (coordinates in full-image px), each ending in '\n'; adds the
 /// number of rows to *rows when given.

@@ -33,6 +33,7 @@
 #include "core/common/display_stretch.hpp"
 #include "test_support.hpp"
 #include "ui_support.hpp"
+#include "ui/filter_field.hpp"
 #include "ui/app_undo.hpp"
 #include "ui/footprint_params_panel.hpp"
 #include "ui/contact_sheet.hpp"
@@ -445,6 +446,40 @@ private slots:
         QCOMPARE(got.table.rows.size(), ref.table.rows.size());
         for (size_t r = 0; r < ref.table.rows.size(); ++r)
             for (size_t k = 0; k < ref.table.header.size(); ++k) QCOMPARE(got.table.rows[r][k], ref.table.rows[r][k]);
+    }
+
+    // Issue 40 (and issue 42's "two answers"): the window's filter and `footprint --where` read
+    // the same column table, values before the CSV rounds them: the same rows for an SNR
+    // threshold between two rounded values (the CLI compared the rounded text: one row off).
+    void whereGivesTheWindowsRows() {
+        MainWindow w;
+        FootprintWorkspace* fw = w.footprint();
+        FootprintController* c = fw->controller();
+        QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
+        std::vector<double> snr;
+        for (const Shot& s : c->shots())
+            if (s.fit.ok) snr.push_back(s.fit.snr);
+        QVERIFY(snr.size() > 10);
+        std::sort(snr.begin(), snr.end());
+        // Just above a shot's SNR, below its value rounded to 2 decimals where one exists.
+        double cut = snr[snr.size() / 2] + 1e-9;
+        for (double v : snr)
+            if (std::round(v * 100) / 100 > v + 1e-6) {
+                cut = v + 1e-9;
+                break;
+            }
+        const QString cutText = QString::number(cut, 'g', 17);
+        for (const QString& expr : {QString("snr < %1").arg(cutText), QString("snr < 10 and verdict == \"doubtful\""),
+                                    QString("abs(x - 15.5) < 1 and roi == 0")}) {
+            const QString out = m_dir.path() + "/where.csv";
+            const auto cli = lwbtest::runCli({"footprint", m_dir.path() + "/shots", "-q", "--where", expr, "-o", out});
+            QVERIFY2(cli.exitCode == 0, qPrintable(cli.err));
+            const int cliRows = int(lwbtest::readAll(out).count('\n')) - 1;
+            fw->whereField()->setText(expr);
+            QVERIFY2(!fw->whereField()->hasError(), qPrintable(fw->whereField()->error()));
+            QVERIFY2(fw->proxy()->rowCount() == cliRows,
+                     qPrintable(QString("%1: the window shows %2 shots, --where keeps %3 rows").arg(expr).arg(fw->proxy()->rowCount()).arg(cliRows)));
+        }
     }
 
     void exportReviewTableMatchesTheCli() {
