@@ -164,6 +164,41 @@ private slots:
         QCOMPARE(filesOf(p("one")), names);
         for (const QString& n : names) QVERIFY2(readAll(p("plain/" + n)) == readAll(p("one/" + n)), qPrintable(n));
     }
+
+    // The O-C's parameters are schema rows (oc.*): --set and a config reach the computation
+    // (before, OcParams had no schema and nothing set it), the printed config gives the same run,
+    // and a preset that would set them (computed before a preset applies) is refused.
+    void ocRowsReachTheOcAndRoundTrip() {
+        const QString pass = slr("blits_201206.frd"), cpf = slr("blits_cpf_120626_6801.hts"),
+                      snx = slr("SLRF2014_POS+VEL_2030.0_200428.snx");
+        const QStringList base{"slr", pass, "--pass", "3", "--cpf", cpf, "--stations", snx, "-q"};
+        auto run = [&](const QStringList& extra, const QString& out) {
+            const auto r = runCli(base + extra + QStringList{"-o", out});
+            QVERIFY2(r.exitCode == 0 || r.exitCode == 3, qPrintable(r.err));
+        };
+        run({}, p("oc_mp.csv"));
+        run({"--set", "oc.refraction=none"}, p("oc_none.csv"));
+        const auto printed = runCli({"slr", "--print-config", "--set", "oc.refraction=none"});
+        QVERIFY2(printed.exitCode == 0 && printed.out.contains("\"refraction\": \"none\""), qPrintable(printed.out.left(300)));
+        QVERIFY(lwbtest::writeText(p("oc_none.json"), printed.out.toUtf8()));
+        run({"--config", p("oc_none.json")}, p("oc_none_config.csv"));
+        QCOMPARE(readAll(p("oc_none_config.csv")), readAll(p("oc_none.csv")));
+        // Without the troposphere the O-C holds its delay: 2.3 m one-way at the zenith is 15 ns
+        // two-way, more at low elevation (BLITS from Herstec: 20-60 degrees, 15-50 ns).
+        const auto a = lwb::core::readCsv(lwbtest::str(p("oc_mp.csv"))), b = lwb::core::readCsv(lwbtest::str(p("oc_none.csv")));
+        QVERIFY(a.ok && b.ok && a.table.rows.size() == b.table.rows.size() && a.table.rows.size() > 100);
+        const int oc = a.table.column("oc_s");
+        for (size_t r = 0; r < a.table.rows.size(); r += 25) {
+            const double d = std::stod(b.table.rows[r][size_t(oc)]) - std::stod(a.table.rows[r][size_t(oc)]);
+            QVERIFY2(d > 13e-9 && d < 60e-9, qPrintable(QString("row %1: the delay is %2 ns").arg(r).arg(d * 1e9)));
+        }
+        // A preset holding oc.* rows: refused, saying where they go.
+        QVERIFY(lwbtest::writeText(p("oc_preset.json"),
+                                   R"({"format": "laserwb-slr-presets", "version": 1, "satellites": [{"name": "BLITS", "oc": {"shapiro": false}}]})"));
+        const auto refused = runCli(base + QStringList{"--preset", p("oc_preset.json"), "-o", p("never.csv")});
+        QVERIFY2(refused.exitCode != 0 && refused.err.contains("the O-C's parameters are not a satellite's"), qPrintable(refused.err));
+        QVERIFY(!QFile::exists(p("never.csv")));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSlrOneRun)

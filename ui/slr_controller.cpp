@@ -87,10 +87,12 @@ void SlrController::passLoaded() {
 
 namespace {
 // The workbench's sources for `path` (a CPF is used with a SINEX only; the SINEX alone gives the
-// station's position), read by the core once for the passes of the file.
-bool setUp(const QString& path, const PassInputParams& in, SlrSetup* out, QString* error) {
+// station's position), read by the core once for the passes of the file; the panel's parameters
+// as the config (their oc.* rows make the pass's O-C).
+bool setUp(const QString& path, const PassInputParams& in, const SlrParams& params, SlrSetup* out, QString* error) {
     SlrSources src;
     src.input = path.toStdString();
+    src.config = slrSchema().toJson(params);
     src.stations = in.sinexPath;
     if (!in.sinexPath.empty()) src.cpf = in.cpfPath;
     src.cpfFallback = true;  // a CPF that does not fit the pass: its own TOF trend, with a note
@@ -113,7 +115,7 @@ void SlrController::resetPassErrors() {
 
 bool SlrController::open(const QString& path, int passIndex, const PassInputParams& input, QString* error) {
     SlrSetup setup;
-    if (!setUp(path, input, &setup, error)) return false;
+    if (!setUp(path, input, m_params, &setup, error)) return false;
     setup.sources.passNumber = passIndex + 1;  // (0: the file's first pass to screen, core isPassToScreen)
     OpenedPass o = openPass(setup);
     if (!o.ok && !o.crd) {  // the file (or an O-C table) cannot be read at all: the previous one stays
@@ -148,7 +150,7 @@ bool SlrController::setSources(const QString& cpfPath, const QString& sinexPath,
     in.cpfPath = cpfPath.toStdString();
     in.sinexPath = sinexPath.toStdString();
     SlrSetup setup;
-    if (!setUp(m_path, in, &setup, error)) return false;
+    if (!setUp(m_path, in, m_params, &setup, error)) return false;
     m_input = in;
     m_setup = std::move(setup);
     if (m_crd) {
@@ -242,6 +244,12 @@ void SlrController::setParams(const SlrParams& p) {
     const int stage = slrSchema().firstChangedStage(m_params, p);
     m_params = p;
     if (stage < 0) return;
+    if (stage == kStageOc) {  // the O-C is the pass's own: the pass is opened again with it
+        QString err;
+        if (!m_path.isEmpty() && !setSources(QString::fromStdString(m_input.cpfPath), QString::fromStdString(m_input.sinexPath), &err))
+            emit runFailed(err);
+        return;
+    }
     if (stage <= kStageRecovery) {
         m_screenDue = true;
         if (stage == kStageScale || !m_reuseScaleForCosine) m_scaleValid = false;

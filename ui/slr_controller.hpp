@@ -81,8 +81,16 @@ public:
                           const std::vector<uint8_t>& truth, const QString& name, double altitudeKm);
     /// New parameters: reruns the stages the changed keys (slrSchema().changedKeys) affect.
     void setParams(const core::slr::SlrParams& p);
-    void setScreenParams(const core::slr::ScreenParams& p) { setParams({p, m_params.postfit}); }
-    void setPostfitParams(const core::slr::PostfitParams& p) { setParams({m_params.screen, p}); }
+    void setScreenParams(const core::slr::ScreenParams& p) {
+        core::slr::SlrParams q = m_params;
+        q.screen = p;
+        setParams(q);
+    }
+    void setPostfitParams(const core::slr::PostfitParams& p) {
+        core::slr::SlrParams q = m_params;
+        q.postfit = p;
+        setParams(q);
+    }
     /// When on, moving only the cosine constant keeps the scale the automatic mode chose (the
     /// effect of C alone, and a faster rerun); off, every change searches the scale again, as
     /// `laserwb-cli slr` does.

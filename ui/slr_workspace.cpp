@@ -1368,7 +1368,7 @@ QJsonObject SlrWorkspace::saveState() const {
     o["demo"] = m_path.isEmpty() && m_controller->hasPass();
     o["main_plot"] = m_residual ? "residual" : "oc";
     if (m_stationNps->hasFile()) o["station_npt"] = m_stationNps->path();
-    // The schema's JSON: its two sections, every field.
+    // The schema's JSON: its sections, every field.
     const QJsonObject params = toQtJson(slrSchema().toJson(m_controller->params()));
     for (auto it = params.begin(); it != params.end(); ++it) o[it.key()] = it.value();
     QJsonArray forced;
@@ -1381,13 +1381,19 @@ QJsonObject SlrWorkspace::saveState() const {
 
 bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
                                 const std::vector<std::string>& at) {
-    if (!checkSessionKeys(o, {"path", "cpf", "sinex", "pass", "demo", "forced", "screen", "postfit", "main_plot", "station_npt"}, "slr",
-                          error, doc, at))
-        return false;
+    // The parameters' sections (oc, screen, postfit): the first parts of the schema's keys.
+    std::vector<std::string> sections;
+    for (const auto& f : slrSchema().fields()) {
+        const std::string section = f.key.substr(0, f.key.find('.'));
+        if (std::find(sections.begin(), sections.end(), section) == sections.end()) sections.push_back(section);
+    }
+    std::vector<std::string> known{"path", "cpf", "sinex", "pass", "demo", "forced", "main_plot", "station_npt"};
+    known.insert(known.end(), sections.begin(), sections.end());
+    if (!checkSessionKeys(o, known, "slr", error, doc, at)) return false;
     // Every parameter from the session over the defaults (the sections the schema writes).
     core::Json j = core::Json::object();
-    for (const char* section : {"screen", "postfit"})
-        if (o.contains(section)) j[section] = fromQtJson(o[section]);
+    for (const std::string& section : sections)
+        if (o.contains(QString::fromStdString(section))) j[section] = fromQtJson(o[QString::fromStdString(section)]);
     SlrParams params;
     std::string err;
     if (!slrSchema().fromJson(j, &params, &err, doc, at)) {

@@ -108,10 +108,12 @@ void gatherParams(const py::object& params, slr::SlrSources* src) {
     lwb::py::gatherParams(params, slr::slrSchema(), "laserwb.slr.SlrParams", &src->config, &src->set);
 }
 
-Pass loadPass(const py::object& path, const py::object& passNumber, const py::object& cpf, const py::object& stations) {
+Pass loadPass(const py::object& path, const py::object& passNumber, const py::object& cpf, const py::object& stations,
+              const py::object& params) {
     // The sources as the CLI gathers them from its flags; the core reads, chooses and loads.
     slr::SlrSources src;
     src.input = fsPath(path);
+    gatherParams(params, &src);  // (their oc.* rows make the O-C; the rest are run()'s)
     // (stations alone give no O-C: run() takes them for day or night, as the CLI's --stations)
     if (!cpf.is_none()) {
         if (stations.is_none()) throw ParameterError("cpf and stations go together (O-C from the prediction needs both)");
@@ -335,10 +337,11 @@ void bindPassResult(py::module_& m) {
 // The runs: load_pass, run, set_search_threads, process_file and default_params.
 void bindRuns(py::module_& m) {
     m.def("load_pass", &loadPass, py::arg("path"), py::arg("pass_number") = py::none(), py::arg("cpf") = py::none(),
-          py::arg("stations") = py::none(),
+          py::arg("stations") = py::none(), py::arg("params") = py::none(),
           "Loads one pass of a CRD file (pass_number from 1; default the first with full-rate records) or an\n"
           "O-C CSV. With cpf (a file or a folder) and stations (SINEX), O-C from the prediction; without,\n"
-          "O-C against the pass's own TOF trend. Bad files raise laserwb.Error with FILE:LINE.");
+          "O-C against the pass's own TOF trend. params (SlrParams or {key: value}): their oc.* rows make\n"
+          "the O-C (run() refuses other oc.* values). Bad files raise laserwb.Error with FILE:LINE.");
     m.def("run", &runPass, py::arg("pass_"), py::arg("params") = py::none(), py::arg("preset") = py::none(),
           py::arg("satellite") = py::none(), py::arg("stations") = py::none(), py::arg("threads") = py::none(),
           "Screens a Pass, fits the trend and forms the normal points (PassTask), with the settings\n"

@@ -1,5 +1,7 @@
 #include "core/slr/oc.hpp"
 
+#include "core/slr/slr_params.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -86,23 +88,17 @@ std::string passName(const CrdPass& p) {
 
 }  // namespace
 
+// The O-C parameters' ranges are their schema rows' (core/slr/slr_params.cpp, oc.*).
 std::string validate(const OcParams& p) {
-    if (const std::string e = validate(p.interpolation); !e.empty()) return e;
-    if (!std::isnan(p.wavelengthNm) && !(p.wavelengthNm >= 300 && p.wavelengthNm <= 2000))
-        return "wavelength must be 300..2000 nm (or unset)";
-    if (!std::isnan(p.targetComOffsetM) && !(p.targetComOffsetM >= 0 && p.targetComOffsetM <= 10))
-        return "centre-of-mass offset must be 0..10 m (or unset)";
-    if (!(p.convergenceS >= 1e-15 && p.convergenceS <= 1e-9)) return "convergence must be 1e-15..1e-9 s";
-    if (p.maxIterations < 2 || p.maxIterations > 50) return "light-time iterations must be 2..50";
-    return {};
+    SlrParams sp;
+    sp.oc = p;
+    return slrSchema().validate(sp, "oc.");
 }
 
 std::string validate(const TrendOcParams& p) {
-    if (p.degree < 1 || p.degree > 20) return "trend degree must be 1..20";
-    if (!(p.huberK >= 0.5 && p.huberK <= 10)) return "Huber constant must be 0.5..10";
-    if (p.maxIterations < 1 || p.maxIterations > 500) return "iterations must be 1..500";
-    if (p.minPoints < 3) return "minimum points must be >= 3";
-    return {};
+    SlrParams sp;
+    sp.ownTrend = p;
+    return slrSchema().validate(sp, "oc.");
 }
 
 // computeOc in named stages: check the inputs, the centre-of-mass offset, the refraction set-up,

@@ -529,6 +529,9 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
         return r;
     }
     for (const auto& w : oc.warnings) r.warnings.push_back(w);
+    d.ocComputed = true;
+    d.ocParams = params.oc;
+    d.ownTrendParams = params.trend;
     d.t = oc.epoch_s;
     d.oc = oc.oc_s;
     d.tof = oc.tof_s;

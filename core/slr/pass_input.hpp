@@ -78,6 +78,10 @@ struct PassData {
     int cdpPad = -1;
     std::string ocOrigin;          ///< "CPF prediction", "fitted TOF trend (no prediction)" or "O-C table"
     std::string ocNote;            ///< why a given prediction was not used (the TOF trend instead), else ""
+    /// The O-C's parameters (CRD passes: the O-C was computed with these; an O-C table's is given).
+    bool ocComputed = false;
+    OcParams ocParams;
+    TrendOcParams ownTrendParams;
     std::vector<double> t;         ///< epoch (s since 0h UTC of the pass day for CRD input)
     std::vector<double> oc;        ///< O-C (s, two-way)
     std::vector<double> tof;       ///< observed two-way TOF (s); empty for O-C tables

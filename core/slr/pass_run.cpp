@@ -50,7 +50,8 @@ bool applyPreset(const PassData& pass, const std::vector<SatellitePreset>& prese
         return false;
     }
     *presetName = p->name.empty() ? p->ilrsId : p->name;
-    *params = {p->screen, p->postfit};
+    params->screen = p->screen;  // (a preset holds the screening and the post-fit; the O-C is not a satellite's)
+    params->postfit = p->postfit;
     return true;
 }
 

@@ -98,7 +98,9 @@ double normalPointBinS(double km) {
 }
 
 std::string validate(const PostfitParams& p) {
-    if (std::string e = slrSchema().validate({ScreenParams{}, p}, "postfit."); !e.empty()) return e;
+    SlrParams sp;
+    sp.postfit = p;
+    if (std::string e = slrSchema().validate(sp, "postfit."); !e.empty()) return e;
     // Run-time conditions, not parameter ranges: the altitude may come with the pass.
     if (p.normalPoints && p.binLengthS == 0 && !(p.altitudeKm > 0))
         return "give the normal-point bin length or the satellite altitude (km)";

@@ -65,6 +65,8 @@ PresetsResult presetsFromJson(const Json& doc, const std::string& source, const 
         for (auto it = e.begin(); it != e.end(); ++it) {
             if (it.key() == "name" || it.key() == "ilrs_id") continue;
             if (it.key() == "altitude_km") params["postfit"]["altitude_km"] = *it;
+            else if (it.key() == "oc")  // (computed when the pass is opened, before a preset applies)
+                return fail(path, where + ": \"oc\": the O-C's parameters are not a satellite's; give them in the config or with --set");
             else params[it.key()] = *it;
         }
         SlrParams sp;  // parameter ranges only: whether the altitude is known is settled with the pass
@@ -100,7 +102,11 @@ Json presetsToJson(const std::vector<SatellitePreset>& presets) {
         Json e = Json::object();
         if (!p.name.empty()) e["name"] = p.name;
         if (!p.ilrsId.empty()) e["ilrs_id"] = p.ilrsId;
-        const Json params = slrSchema().toJson({p.screen, p.postfit});
+        SlrParams sp;
+        sp.screen = p.screen;
+        sp.postfit = p.postfit;
+        Json params = slrSchema().toJson(sp);
+        params.erase("oc");  // (a preset holds the screening and the post-fit)
         for (auto it = params.begin(); it != params.end(); ++it) e[it.key()] = *it;
         arr.push_back(std::move(e));
     }

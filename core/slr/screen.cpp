@@ -43,7 +43,11 @@ const char* pointClassName(PointClass c) {
     return "?";
 }
 
-std::string validate(const ScreenParams& p) { return slrSchema().validate({p, PostfitParams{}}, "screen."); }
+std::string validate(const ScreenParams& p) {
+    SlrParams sp;
+    sp.screen = p;
+    return slrSchema().validate(sp, "screen.");
+}
 
 std::vector<uint32_t> splitByArea(const std::vector<Region>& regions, int64_t areaLimit) {
     std::vector<uint32_t> out;

@@ -2,10 +2,49 @@
 
 namespace lwb::core::slr {
 
+namespace {
+
+// The O-C of a pass (core/slr/oc.hpp): computed when the pass is opened, before any screening.
+void addOcRows(Schema<SlrParams>& s) {
+    using S = SlrParams;
+    s.beginStage(kStageOc);
+    s.choice("oc.refraction", LWB_FIELD(S, oc.refraction), {"none", "mendes_pavlis"},
+             "tropospheric delay: Mendes & Pavlis (2004) zenith delay with the FCULa mapping, from the pass's "
+             "type-20 meteorological records (a warning and none without them); none leaves the whole delay in the O-C");
+    s.real("oc.wavelength_nm", LWB_FIELD(S, oc.wavelengthNm), "nm", {300, 2000}, {355, 1064},
+           "laser wavelength for the refraction; null = the record's C0 configuration, else 532 with a warning")
+        .specials = {{NAN, "from the record"}};
+    s.boolean("oc.shapiro", LWB_FIELD(S, oc.shapiro), "add the relativistic (Shapiro) light-time delay of the Earth's field (a few mm)");
+    s.real("oc.com_offset_m", LWB_FIELD(S, oc.targetComOffsetM), "m", {0, 10}, {0, 2},
+           "centre of mass to reflector, one way; null = the CPF's H5 value when its positions are of the centre of "
+           "mass (H2 flag 0), else 0")
+        .specials = {{NAN, "from the CPF"}};
+    auto& conv = s.real("oc.convergence_s", LWB_FIELD(S, oc.convergenceS), "s", {1e-15, 1e-9}, {1e-15, 1e-9},
+                        "the light-time iteration stops when a leg changes by less than this");
+    conv.uiLog = true;
+    s.integer("oc.max_iterations", LWB_FIELD(S, oc.maxIterations), "", {2, 50}, {2, 20}, "light-time iterations per leg");
+    s.integer("oc.lagrange_points", LWB_FIELD(S, oc.interpolation.points), "", {2, 20}, {4, 16},
+              "Lagrange nodes of the CPF interpolation (ILRS practice: 8-10 for LEO at 1-5 min steps)");
+    s.integer("oc.cpf_direction", LWB_FIELD(S, oc.interpolation.direction), "", {0, 2}, {0, 2},
+              "which CPF position records: 0 the common epoch, 1 or 2 for files that have them");
+    s.integer("oc.trend_degree", LWB_FIELD(S, ownTrend.degree), "", {1, 20}, {2, 8},
+              "without a prediction: degree of the robust polynomial of the squared time of flight (lowered for "
+              "short passes: max((records-1)/4, 2))");
+    s.real("oc.trend_huber_k", LWB_FIELD(S, ownTrend.huberK), "sigma", {0.5, 10}, {1, 3},
+           "without a prediction: the trend's Huber constant, in robust standard deviations");
+    s.integer("oc.trend_max_iterations", LWB_FIELD(S, ownTrend.maxIterations), "", {1, 500}, {5, 100},
+              "without a prediction: the trend's reweighting iterations");
+    s.integer("oc.trend_min_points", LWB_FIELD(S, ownTrend.minPoints), "", {3, 1000000}, {3, 20},
+              "without a prediction: fewer usable records is an error");
+}
+
+}  // namespace
+
 const Schema<SlrParams>& slrSchema() {
     static const Schema<SlrParams> schema = [] {
         using S = SlrParams;
         Schema<S> s("slr");
+        s.beginStage(kStageScale);
         const SpecialValue autoValue{0, "auto"};
         s.boolean("screen.automatic", LWB_FIELD(S, screen.automatic),
                   "automatic mode: mag_t, mag_oc, area_limit and connectivity left at 0 (auto) are chosen from the data (multi-scale search)");
@@ -58,6 +97,7 @@ const Schema<SlrParams>& slrSchema() {
         s.boolean("screen.accept_floorless", LWB_FIELD(S, screen.acceptFloorless),
                   "a pass with no noise floor (filtered; robust sigma <= 1 ns, <= 2 % beyond 5 sigma) "
                   "keeps every point within 5 sigma of its track");
+        addOcRows(s);
         s.beginStage(kStagePostfit);
         s.integer("postfit.degree", LWB_FIELD(S, postfit.degree), "", {0, 30}, {2, 15},
                   "trend polynomial degree (Legendre, per segment); the largest tried when auto_degree");

@@ -110,6 +110,21 @@ bool resolvePassParams(const SlrSetup& setup, const PassData& pass, PassSettings
         return false;
     }
     if (!applyAnalystSettings(setup.sources, nullptr, &s.params, error)) return false;
+    // The O-C was computed when the pass was opened, with the oc.* rows of the set-up that opened
+    // it: other values here (a preset's, or parameters given after the pass was loaded) would be
+    // shown and never used.
+    if (pass.ocComputed) {
+        SlrParams opened = s.params;
+        opened.oc = pass.ocParams;
+        opened.ownTrend = pass.ownTrendParams;
+        if (slrSchema().toJson(opened) != slrSchema().toJson(s.params)) {
+            *error = {(s.presetName.empty() ? std::string("the parameters set") : "preset " + s.presetName + " sets") +
+                          " oc.* rows other than the pass's O-C was computed with: the O-C is computed when the pass "
+                          "is opened; give them in the config or with --set (Python: load_pass(params=...))",
+                      true};
+            return false;
+        }
+    }
     // What the pass tells, wherever the parameters leave it unknown (a printed config's 0 is not a value).
     s.notes = passNormalPointContext(pass, setup.stations(), &s.params.postfit);
     s.params.screen.searchThreads = setup.sources.searchThreads;
@@ -148,6 +163,8 @@ OpenedPass finishOpen(const SlrSetup& setup, PassInputResult loaded, std::shared
 
 PassInputParams inputParams(const SlrSetup& setup) {
     PassInputParams in;
+    in.oc = setup.base.oc;  // (the O-C's rows: the config and the settings, before any preset)
+    in.trend = setup.base.ownTrend;
     in.cpfPath = setup.sources.cpf;
     in.sinexPath = setup.sources.stations;
     in.cpfFallback = setup.sources.cpfFallback;

@@ -251,6 +251,23 @@ def test_one_run_footprint_shot_list_is_the_cli_report(tmp_path):
     assert len(refused) == 6  # the 32 px ROIs under the strict 48 px size; the full frames are cut
 
 
+@pytest.mark.skipif(not os.path.isdir(os.path.join(SHARED, "data", "slr")), reason="no ../shared/data (real ILRS files)")
+def test_one_run_oc_rows_are_the_passs(tmp_path):
+    """The oc.* rows make the O-C when the pass is loaded (load_pass(params=...)), as --set does;
+    run() with other oc.* values than the pass was loaded with is refused, not silently ignored."""
+    d = os.path.join(SHARED, "data", "slr")
+    frd, cpf, snx = (os.path.join(d, f) for f in ("blits_201206.frd", "blits_cpf_120626_6801.hts",
+                                                   "SLRF2014_POS+VEL_2030.0_200428.snx"))
+    cli("slr", frd, "--pass", 3, "--cpf", cpf, "--stations", snx, "--set", "oc.refraction=none", "-o",
+        tmp_path / "cli.csv", "-q", ok=(0, 3))
+    none = {"oc.refraction": "none"}
+    p = laserwb.slr.load_pass(frd, pass_number=3, cpf=cpf, stations=snx, params=none)
+    laserwb.slr.run(p, params=none).write(csv=str(tmp_path / "py.csv"))
+    same_bytes(tmp_path / "cli.csv", tmp_path / "py.csv")
+    with pytest.raises(laserwb.ParameterError, match="oc"):
+        laserwb.slr.run(p)  # the defaults' Mendes-Pavlis is not what this pass's O-C was computed with
+
+
 def test_one_run_thread_counts_are_checked():
     """The scale search's threads belong to the run and are checked as the CLI checks --threads."""
     with pytest.raises(ValueError):
