@@ -176,9 +176,6 @@ int cmdCalibDetector(int argc, char** argv) {
         });
         rc >= 0)
         return rc;
-    const DetectorFitParams& p = cp.detector;
-    if (p.scaleByChi2 && p.noise != NoiseSource::Given)
-        return fail(cmd, "--scale-chi2 applies to a given noise model (--rel-noise / --noise-floor)", kUsage);
     if (a.positional().size() != 1) return fail(cmd, "give exactly one detector CSV", kUsage);
     const std::string out = outPath(a);
     core::OutputSet outs;

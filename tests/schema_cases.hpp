@@ -91,7 +91,24 @@ P otherValue(const core::Schema<P>& schema, const typename core::Schema<P>::Fiel
         if (special) setOtherValue(schema, g, &b);
     }
     p = b;
-    if (!setOtherValue(schema, f, &p)) QTest::qFail(("no other valid value for " + f.key).c_str(), __FILE__, __LINE__);
+    if (!setOtherValue(schema, f, &p)) {
+        // A rule between f and a choice (scale_chi2 applies to a given noise model): the
+        // choices of *base tried in turn until f has another valid value.
+        for (const auto& g : schema.fields()) {
+            if (&g == &f || g.kind != core::FieldKind::Choice) continue;
+            for (size_t k = 0; k < g.choices.size(); ++k) {
+                P c = b;
+                g.set(c, double(k));
+                if (!schema.validate(c).empty()) continue;
+                P t = c;
+                if (setOtherValue(schema, f, &t)) {
+                    *base = c;
+                    return t;
+                }
+            }
+        }
+        QTest::qFail(("no other valid value for " + f.key).c_str(), __FILE__, __LINE__);
+    }
     *base = b;
     return p;
 }

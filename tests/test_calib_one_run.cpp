@@ -18,6 +18,7 @@ class TestCalibOneRun : public QObject {
     Q_OBJECT
     QTemporaryDir m_dir;
     QString p(const QString& n) const { return m_dir.path() + "/" + n; }
+    QString p_(const QString& n) const { return p(n); }
 
 private slots:
     void initTestCase() {
@@ -89,6 +90,26 @@ private slots:
         src.beams.clear();
         QVERIFY(!lwb::core::calib::loadCalibInputs(src, &in, &err));
         QVERIFY2(err.find("need beam designs") != std::string::npos, err.c_str());
+    }
+
+    // A rule between rows is the schema's, so every front end refuses the same settings: the
+    // chi-square scaling of a given noise model was checked by `calib detector` alone (the
+    // workbench and Python ran it on the data's noise). In either order of the settings.
+    void rulesBetweenRowsAreEveryonesAndOrderFree() {
+        lwb::core::calib::CalibParams p;
+        p.detector.scaleByChi2 = true;
+        const std::string e = lwb::core::calib::validate(p);
+        QVERIFY2(e.find("scale_chi2") != std::string::npos && e.find("given noise") != std::string::npos, e.c_str());
+        const auto cli = runCli({"calib", "detector", p_("sim/detectors.csv"), "--set", "detector.scale_chi2=true", "-o", p_("c.csv")});
+        QCOMPARE(cli.exitCode, 2);
+        QVERIFY2(cli.err.contains(QString::fromStdString(e)), qPrintable(cli.err));
+        for (const QStringList& order : {QStringList{"detector.noise=given", "detector.scale_chi2=true"},
+                                         QStringList{"detector.scale_chi2=true", "detector.noise=given"}}) {
+            QStringList args{"calib", "detector", p_("sim/detectors.csv"), "-q", "-o", p_("ok.csv")};
+            for (const QString& kv : order) args << "--set" << kv;
+            const auto r = runCli(args);
+            QVERIFY2(r.exitCode == 0 || r.exitCode == 3, qPrintable(order.join(' ') + ": " + r.err));
+        }
     }
 };
 

@@ -78,22 +78,34 @@ const Schema<CalibParams>& calibSchema() {
                   "Levenberg-Marquardt accepted steps");
         s.real("waveform.thred_h", LWB_FIELD(C, match.thresholdM), "m", {0, 1e300, true, false}, {0.01, 1},
                "height threshold thred_h of the feature match (paper 002: 0.1)");
+        // ---- the rules between rows (every front end's check: validate(CalibParams)) ----
+        s.rule(
+            [](const C& p) -> std::string {
+                const DetectorFitParams& d = p.detector;
+                if (d.saturationLevel > 0 && d.saturationLevel <= d.triggerThreshold)
+                    return "detector fit: saturation level must exceed the trigger threshold";
+                if (d.scaleByChi2 && d.noise != NoiseSource::Given)
+                    return "detector fit: scale_chi2 (--scale-chi2) applies to a given noise model (detector.noise = given: "
+                           "--rel-noise / --noise-floor)";
+                return {};
+            },
+            "detector.", false);
+        s.rule(
+            [](const C& p) -> std::string {
+                if (p.pointing.fixRelativeRotation && p.pointing.model != CalibModel::DualBeam)
+                    return "pointing calibration: fix_relative (--fix-relative) goes with pointing.model = dual (--model dual)";
+                return {};
+            },
+            "pointing.", false);
         return s;
     }();
     return schema;
 }
 
 std::string validate(const CalibParams& p) {
-    // The fields' ranges, then the rules between fields, checked here once every setting is
-    // applied (so the order of --set options does not matter), with each step's own check.
-    if (std::string e = calibSchema().validate(p); !e.empty()) return e;
-    if (p.pointing.fixRelativeRotation && p.pointing.model != CalibModel::DualBeam)
-        return "pointing calibration: fix_relative (--fix-relative) goes with pointing.model = dual (--model dual)";
-    if (std::string e = validate(p.detector); !e.empty()) return "detector fit: " + e;
-    if (std::string e = validate(p.pointing); !e.empty()) return "pointing calibration: " + e;
-    if (std::string e = validate(p.waveform); !e.empty()) return "waveform: " + e;
-    if (std::string e = validate(p.match); !e.empty()) return "feature match: " + e;
-    return {};
+    // The rows' ranges and the rules between them (declared with the rows above), checked once
+    // every setting is applied, so the order of --set options does not matter.
+    return calibSchema().validate(p);
 }
 
 }  // namespace lwb::core::calib

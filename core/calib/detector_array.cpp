@@ -139,13 +139,10 @@ bool readDetectorCsv(const std::string& path, DetectorArray* out, std::string* e
 }
 
 std::string validate(const DetectorFitParams& p) {
-    // The ranges of the schema's rows (calib_params.cpp), then the rule between two of them.
+    // The ranges of the schema's rows and the rules between them (calib_params.cpp).
     CalibParams c;
     c.detector = p;
-    if (std::string e = calibSchema().validate(c, "detector."); !e.empty()) return e;
-    if (p.saturationLevel > 0 && p.saturationLevel <= p.triggerThreshold)
-        return "saturation level must exceed the trigger threshold";
-    return {};
+    return calibSchema().validate(c, "detector.");
 }
 
 double evalSurface(const GaussSurface& s, double e, double n) {

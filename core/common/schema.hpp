@@ -169,13 +169,16 @@ public:
         return f;
     }
     /// A rule between fields ("weak_below must be below strong_above"): "" when it holds.
-    /// `section` ("screen.") makes it part of that section's validation too.
+    /// `section` ("screen.") makes it part of that section's validation too. `onEachSet` false:
+    /// a rule between independent options (a model and an option of that model), checked by
+    /// validate() and fromJson() once every setting is in, not by each setFromText, so the
+    /// order of --set options (or of a dict's keys) does not matter.
     /// An older spelling that files written before a rename still hold: `rewrite` turns a JSON
     /// document that has it into today's keys before fromJson reads it (it is not an unknown key).
     void legacy(std::function<void(Json&)> rewrite) { m_legacy.push_back(std::move(rewrite)); }
 
-    void rule(std::function<std::string(const P&)> r, std::string section = {}) {
-        m_rules.push_back({std::move(section), std::move(r)});
+    void rule(std::function<std::string(const P&)> r, std::string section = {}, bool onEachSet = true) {
+        m_rules.push_back({std::move(section), std::move(r), onEachSet});
     }
 
     // ---- use --------------------------------------------------------------------------------
@@ -270,7 +273,8 @@ public:
         else e = m_name + "." + key + " = " + printableExcerpt(value) + ": " + e;
         if (e.empty())
             for (const auto& r : m_rules)
-                if (e = r.check(q); !e.empty()) {
+                if (!r.onEachSet) continue;
+                else if (e = r.check(q); !e.empty()) {
                     e = m_name + ": " + e;
                     break;
                 }
@@ -544,6 +548,7 @@ private:
     struct Rule {
         std::string section;
         std::function<std::string(const P&)> check;
+        bool onEachSet = true;
     };
     std::vector<Rule> m_rules;
     std::vector<std::function<void(Json&)>> m_legacy;

@@ -361,6 +361,16 @@ def test_calib_detector_and_stats_are_the_cli_files(data, tmp_path):
     assert all(g["n"] > 0 for g in s.groups().values())
 
 
+def test_calib_rules_between_rows_are_the_clis(data):
+    """Issue 40: the chi-square scaling of a given noise model is a schema rule, refused here as
+    by laserwb-cli calib detector (Python ran it on the data's noise before)."""
+    det = str(data / "calib" / "detectors.csv")
+    err = cli("calib", "detector", det, "--set", "detector.scale_chi2=true", "-o", "never.csv", ok=(2,)).stderr
+    with pytest.raises(laserwb.ParameterError) as e:
+        laserwb.calib.detector(det, params={"detector.scale_chi2": True})
+    assert str(e.value) in err
+
+
 def test_calib_pointing_is_the_cli_files(data, tmp_path):
     pts, beams = str(data / "calib" / "control_points.csv"), str(data / "calib" / "beams.json")
     cli("calib", "pointing", pts, "--beams", beams, "--model", "dual", "-o", tmp_path / "cli_beams.csv",
