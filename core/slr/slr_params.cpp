@@ -15,7 +15,7 @@ void addOcRows(Schema<SlrParams>& s) {
            "laser wavelength for the refraction; null = the record's C0 configuration, else 532 with a warning")
         .specials = {{NAN, "from the record"}};
     s.boolean("oc.shapiro", LWB_FIELD(S, oc.shapiro), "add the relativistic (Shapiro) light-time delay of the Earth's field (a few mm)");
-    s.real("oc.com_offset_m", LWB_FIELD(S, oc.targetComOffsetM), "m", {0, 10}, {0, 2},
+    s.real("oc.centre_of_mass_offset_m", LWB_FIELD(S, oc.targetComOffsetM), "m", {0, 10}, {0, 2},
            "centre of mass to reflector, one way; null = the CPF's H5 value when its positions are of the centre of "
            "mass (H2 flag 0), else 0")
         .specials = {{NAN, "from the CPF"}};
@@ -27,14 +27,14 @@ void addOcRows(Schema<SlrParams>& s) {
               "Lagrange nodes of the CPF interpolation (ILRS practice: 8-10 for LEO at 1-5 min steps)");
     s.integer("oc.cpf_direction", LWB_FIELD(S, oc.interpolation.direction), "", {0, 2}, {0, 2},
               "which CPF position records: 0 the common epoch, 1 or 2 for files that have them");
-    s.integer("oc.trend_degree", LWB_FIELD(S, ownTrend.degree), "", {1, 20}, {2, 8},
+    s.integer("oc.own_trend_degree", LWB_FIELD(S, ownTrend.degree), "", {1, 20}, {2, 8},
               "without a prediction: degree of the robust polynomial of the squared time of flight (lowered for "
               "short passes: max((records-1)/4, 2))");
-    s.real("oc.trend_huber_k", LWB_FIELD(S, ownTrend.huberK), "sigma", {0.5, 10}, {1, 3},
+    s.real("oc.own_trend_huber_k", LWB_FIELD(S, ownTrend.huberK), "sigma", {0.5, 10}, {1, 3},
            "without a prediction: the trend's Huber constant, in robust standard deviations");
-    s.integer("oc.trend_max_iterations", LWB_FIELD(S, ownTrend.maxIterations), "", {1, 500}, {5, 100},
+    s.integer("oc.own_trend_max_iterations", LWB_FIELD(S, ownTrend.maxIterations), "", {1, 500}, {5, 100},
               "without a prediction: the trend's reweighting iterations");
-    s.integer("oc.trend_min_points", LWB_FIELD(S, ownTrend.minPoints), "", {3, 1000000}, {3, 20},
+    s.integer("oc.own_trend_min_points", LWB_FIELD(S, ownTrend.minPoints), "", {3, 1000000}, {3, 20},
               "without a prediction: fewer usable records is an error");
 }
 

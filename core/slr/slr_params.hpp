@@ -12,7 +12,7 @@ namespace lwb::core::slr {
 
 struct SlrParams {
     OcParams oc;              ///< the O-C from the prediction (oc.*)
-    TrendOcParams ownTrend;   ///< the O-C from the pass's own TOF trend, without a prediction (oc.trend_*)
+    TrendOcParams ownTrend;   ///< the O-C from the pass's own TOF trend, without a prediction (oc.own_trend_*)
     ScreenParams screen;
     PostfitParams postfit;
 };

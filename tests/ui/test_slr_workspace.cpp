@@ -995,6 +995,35 @@ private slots:
                  qPrintable(QString("y %1..%2 ns, pass %3..%4 ns").arg(y.lower).arg(y.upper).arg(*oLo * 1e9).arg(*oHi * 1e9)));
     }
 
+    // Issue 40: an oc.* row changed in the panel reopens the pass with it (the O-C is computed
+    // when a pass is opened): without the troposphere the O-C holds its 15-60 ns two-way delay,
+    // and the run goes on (no refusal for parameters other than the pass's).
+    void ocRowChangeReopensThePass() {
+        const QString blits = lwbtest::sharedPath("slr/blits_201206.frd"), cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"),
+                      snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
+        if (!QFile::exists(blits) || !QFile::exists(cpf) || !QFile::exists(snx)) QSKIP("shared data absent");
+        MainWindow w;
+        SlrWorkspace* ws = w.slr();
+        SlrController* c = ws->controller();
+        QString err;
+        QVERIFY2(ws->setCpf(cpf, &err), qPrintable(err));
+        QVERIFY2(ws->setSinex(snx, &err), qPrintable(err));
+        QVERIFY2(ws->openPath(blits, 2, &err), qPrintable(err));  // pass 3, in the CPF's span
+        QVERIFY(c->hasPass() && c->pass().ocOrigin.find("CPF prediction") != std::string::npos);
+        QVERIFY(c->waitIdle(60000) && c->hasRun());
+        const std::vector<double> withTroposphere = c->pass().oc;
+        lwb::core::slr::SlrParams p = c->params();
+        p.oc.refraction = lwb::core::slr::RefractionModel::None;
+        c->setParams(p);
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY2(c->hasRun(), "no run after the O-C's parameter changed");
+        QCOMPARE(c->pass().oc.size(), withTroposphere.size());
+        for (size_t i = 0; i < withTroposphere.size(); i += 50) {
+            const double d = c->pass().oc[i] - withTroposphere[i];
+            QVERIFY2(d > 13e-9 && d < 60e-9, qPrintable(QString("point %1: %2 ns").arg(i).arg(d * 1e9)));
+        }
+    }
+
     void cpfClearedAndReplaced() {
         const QString blits = lwbtest::sharedPath("slr/blits_201206.frd"), cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"),
                       snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
