@@ -80,6 +80,21 @@ void showWithSparsePass(SlrWorkspace* ws) {
 }
 }  // namespace
 
+// The real BLITS month with its CPF and the SLRF2014 stations, pass `index` (-1: the first)
+// opened; false (the test skipped or failed) when it cannot be.
+static bool openBlitsWithPrediction(SlrWorkspace* ws, int index) {
+    const QString blits = lwbtest::sharedPath("slr/blits_201206.frd"), cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"),
+                  snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
+    if (!QFile::exists(blits) || !QFile::exists(cpf) || !QFile::exists(snx)) {
+        QTest::qSkip("shared data absent", __FILE__, __LINE__);
+        return false;
+    }
+    QString err;
+    const bool ok = ws->setCpf(cpf, &err) && ws->setSinex(snx, &err) && ws->openPath(blits, index, &err);
+    if (!ok) QTest::qFail(qPrintable(err), __FILE__, __LINE__);
+    return ok;
+}
+
 class TestSlrWorkspace : public QObject {
     Q_OBJECT
     QTemporaryDir m_dir;
@@ -999,16 +1014,10 @@ private slots:
     // when a pass is opened): without the troposphere the O-C holds its 15-60 ns two-way delay,
     // and the run goes on (no refusal for parameters other than the pass's).
     void ocRowChangeReopensThePass() {
-        const QString blits = lwbtest::sharedPath("slr/blits_201206.frd"), cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"),
-                      snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
-        if (!QFile::exists(blits) || !QFile::exists(cpf) || !QFile::exists(snx)) QSKIP("shared data absent");
         MainWindow w;
         SlrWorkspace* ws = w.slr();
         SlrController* c = ws->controller();
-        QString err;
-        QVERIFY2(ws->setCpf(cpf, &err), qPrintable(err));
-        QVERIFY2(ws->setSinex(snx, &err), qPrintable(err));
-        QVERIFY2(ws->openPath(blits, 2, &err), qPrintable(err));  // pass 3, in the CPF's span
+        if (!openBlitsWithPrediction(ws, 2)) return;  // pass 3, in the CPF's span
         QVERIFY(c->hasPass() && c->pass().ocOrigin.find("CPF prediction") != std::string::npos);
         QVERIFY(c->waitIdle(60000) && c->hasRun());
         const std::vector<double> withTroposphere = c->pass().oc;
@@ -1025,16 +1034,12 @@ private slots:
     }
 
     void cpfClearedAndReplaced() {
-        const QString blits = lwbtest::sharedPath("slr/blits_201206.frd"), cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"),
-                      snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
-        if (!QFile::exists(blits) || !QFile::exists(cpf) || !QFile::exists(snx)) QSKIP("shared data absent");
         MainWindow w;
         SlrWorkspace* ws = w.slr();
         SlrController* c = ws->controller();
+        if (!openBlitsWithPrediction(ws, -1)) return;
+        const QString cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts");
         QString err;
-        QVERIFY2(ws->setCpf(cpf, &err), qPrintable(err));
-        QVERIFY2(ws->setSinex(snx, &err), qPrintable(err));
-        QVERIFY2(ws->openPath(blits, -1, &err), qPrintable(err));
         QCOMPARE(ws->passCombo()->count(), 54);
         // Pass 1 is before the CPF starts: on its own TOF trend with the reason, or not processed with it.
         QCOMPARE(c->selectedPass(), 0);
