@@ -11,8 +11,10 @@
 #include <QTimer>
 
 #include "core/common/allocator.hpp"
+#include "core/common/image_codecs.hpp"
 #include "core/common/output_set.hpp"
 #include "lwb_version.hpp"
+#include "ui/frame_loader.hpp"
 #include "ui/main_window.hpp"
 
 int main(int argc, char** argv) {
@@ -75,11 +77,19 @@ int main(int argc, char** argv) {
             return outs.namingProblem() ? 2 : 1;
         }
     }
-    // No worker thread may outlive the window (a job still loading the codec module while the
-    // program exits crashed it): every pooled job is waited for before main returns.
-    struct JoinPool {
-        ~JoinPool() { QThreadPool::globalInstance()->waitForDone(); }
-    } joinPool;
+    // One shutdown path: no worker thread may outlive main (a footprint loader still inside the
+    // codec module's dlopen while the exit handlers ran aborted 2-4 runs in 20 of a refused
+    // session). The codec module is loaded here, once, before any pool starts (its libraries'
+    // constructors never run beside exit handlers), and on every return — refusal, error,
+    // screenshot, quit — the window's jobs are cancelled (its destructor, first) and both pools
+    // are waited for (this object's destructor, after the window's).
+    (void)lwb::core::codecs::codecModule();
+    struct JoinPools {
+        ~JoinPools() {
+            lwb::ui::loaderPool()->waitForDone();
+            QThreadPool::globalInstance()->waitForDone();
+        }
+    } joinPools;
     lwb::ui::MainWindow w;
     if (args.isEmpty()) {
         w.openDemo();

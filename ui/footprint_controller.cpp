@@ -176,6 +176,7 @@ FootprintController::~FootprintController() {
     if (m_loadFeedback) m_loadFeedback->cancel();
     m_currentJob.cancel();
     m_listJob.cancel();
+    loaderPool()->waitForDone();  // (the loader's workers hold this controller's job state)
     QThreadPool::globalInstance()->waitForDone(5000);
 }
 

@@ -172,6 +172,34 @@ private slots:
         for (const QString& f : lwbtest::filesIn(d)) QVERIFY2(!f.startsWith(".lwb-"), qPrintable(f));
     }
 
+    // Issue 41: every exit path joins the pools. A session whose footprint frames are loading
+    // when its SLR path (a folder) is refused made main return while a loader thread was inside
+    // the codec module's dlopen: 4 runs in 20 died by SIGABRT (gdcm's global constructor beside
+    // the exit handlers). 40 runs, each refused with exit 1 and none by a signal.
+    void refusedSessionNeverDiesBySignal() {
+        const QString d = m_dir.path() + "/exit";
+        QVERIFY(QDir().mkpath(d + "/aFolder"));
+        const lwbtest::CliRun sim = lwbtest::runCli({"simulate", "footprint", "--count", "300", "--seed", "2", "-q", d + "/frames"});
+        QCOMPARE(sim.exitCode, 0);
+        const QString session = d + "/s.lwb.json";
+        QVERIFY(lwbtest::writeText(session, QString("{\"format\": \"laserwb-session\", \"version\": 1, \"workspace\": \"footprint\", "
+                                                     "\"footprint\": {\"inputs\": [\"%1/frames\"]}, \"slr\": {\"path\": \"%1/aFolder\"}}\n")
+                                                 .arg(d)
+                                                 .toUtf8()));
+        lwbtest::RunOptions o;
+        o.env = {"QT_QPA_PLATFORM=offscreen"};
+        o.timeoutMs = 60000;
+        int bySignal = 0, refused = 0;
+        for (int i = 0; i < 40; ++i) {
+            const lwbtest::CliRun r = lwbtest::runProgram(QString(LWB_GUI), {"--screenshot", d + "/x.png", session}, o);
+            bySignal += r.exitCode == -2;
+            refused += r.exitCode == 1 && r.err.contains("is a folder");
+        }
+        QCOMPARE(bySignal, 0);
+        QCOMPARE(refused, 40);
+        QVERIFY(!QFile::exists(d + "/x.png"));
+    }
+
     // A session that is a FIFO, a device or a huge file is refused at once, as the CLI refuses such
     // inputs (it blocked forever on a FIFO and took > 6 GB on /dev/zero).
     void specialAndHugeSessionsAreRefused() {
