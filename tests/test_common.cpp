@@ -22,6 +22,34 @@ using namespace lwb::core;
 class TestCommon : public QObject {
     Q_OBJECT
 private slots:
+    // Issue 41: the header's duplicate-name check was a nested scan (40 000 columns: 42 s in
+    // calib stats). Linear now: ten times the columns costs about ten times the time, not a
+    // hundred (the ratio, not a time, so a slower CPU does not matter; the best of three runs).
+    void csvHeaderCheckIsLinear() {
+        auto header = [](size_t n) {
+            std::string h = "d_m";
+            for (size_t i = 0; i < n; ++i) h += ",c" + std::to_string(i);
+            return h + "\n1" + std::string(n, ',') + "\n";
+        };
+        auto seconds = [&](const std::string& text) {
+            double best = 1e9;
+            for (int k = 0; k < 3; ++k) {
+                const auto t0 = std::chrono::steady_clock::now();
+                const lwb::core::CsvReadResult r = lwb::core::parseCsv(text, "wide.csv");
+                best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                if (!r.ok) QTest::qFail(r.error.c_str(), __FILE__, __LINE__);
+            }
+            return best;
+        };
+        const std::string small = header(30000), large = header(300000);
+        const double a = seconds(small), b = seconds(large);
+        QVERIFY2(b < 30 * a + 0.05, qPrintable(QString("30 000 columns %1 s, 300 000 columns %2 s").arg(a).arg(b)));
+        // And a name given twice is still found, with both places.
+        const lwb::core::CsvReadResult twice = lwb::core::parseCsv("a,b,c,B\n1,2,3,4\n", "t.csv");
+        QVERIFY(!twice.ok);
+        QVERIFY2(twice.error == "t.csv:1: column \"b\" appears twice in the header (columns 2 and 4)", twice.error.c_str());
+    }
+
     void jsonRoundTrip() {
         const Json j = {{"name", "wu2021"}, {"ratio", 1.25}, {"tiny", 1e-5}, {"flag", true},
                         {"range", {1.0, -30}},   {"none", nullptr}, {"nan", NAN}, {"tenth", 0.1}};

@@ -1,5 +1,7 @@
 #include "core/common/csv.hpp"
 
+#include <unordered_map>
+
 #include "core/common/atomic_file.hpp"
 #include "core/common/text.hpp"
 
@@ -90,14 +92,19 @@ CsvReadResult parseCsv(std::string_view given, const std::string& source) {
         if (!haveHeader) {
             for (auto& f : fields) f = std::string(trim(f));
             // A name twice: which column is meant cannot be known (it was the first, silently).
-            for (size_t i = 0; i < fields.size(); ++i)
-                for (size_t k = i + 1; k < fields.size(); ++k)
-                    if (!fields[i].empty() && toLower(fields[i]) == toLower(fields[k])) {
-                        r.error = source + ":" + std::to_string(recLine) + ": column \"" + printableExcerpt(fields[i]) +
-                                  "\" appears twice in the header (columns " + std::to_string(i + 1) + " and " +
-                                  std::to_string(k + 1) + ")";
-                        return r;
-                    }
+            // One pass with a hash of the names seen (a nested scan took 42 s for 40 000 columns).
+            std::unordered_map<std::string, size_t> seen;
+            seen.reserve(fields.size());
+            for (size_t k = 0; k < fields.size(); ++k) {
+                if (fields[k].empty()) continue;
+                const auto [it, fresh] = seen.emplace(toLower(fields[k]), k);
+                if (!fresh) {
+                    r.error = source + ":" + std::to_string(recLine) + ": column \"" + printableExcerpt(fields[it->second]) +
+                              "\" appears twice in the header (columns " + std::to_string(it->second + 1) + " and " +
+                              std::to_string(k + 1) + ")";
+                    return r;
+                }
+            }
             r.table.header = fields;
             haveHeader = true;
             continue;
