@@ -1,5 +1,9 @@
 #include "cli_batch.hpp"
 
+#include <sys/stat.h>
+
+#include <filesystem>
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -96,8 +100,44 @@ const char* exitMeaning(int code) {
 RunSummary::RunSummary(std::string command, const BatchOptions& options)
     : m_command(std::move(command)), m_options(options), m_start(std::chrono::steady_clock::now()) {}
 
+namespace {
+// `path` as an absolute path with . and .. resolved, and symbolic links of what exists.
+std::string absolutePath(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+    return ec ? path : p.lexically_normal().string();
+}
+}  // namespace
+
+int RunSummary::checkTarget(const std::vector<std::string>& outputs, const std::vector<std::string>& folders,
+                            const std::function<bool(const std::string&)>& owns) const {
+    const std::string& path = m_options.summaryJson;
+    if (path.empty()) return kOk;
+    m_targetRefused = true;  // (until every check passed)
+    const std::string prefix = "--summary-json " + path;
+    if (const std::string in = core::inputReadAs(path); !in.empty())
+        return fail(m_command, prefix + " is " + in + ", a file of this run (an input); nothing run", kUsage);
+    for (const auto& o : outputs)
+        if (o == path || core::sameFile(o, path) || absolutePath(o) == absolutePath(path))
+            return fail(m_command, prefix + " is " + o + ", a file of this run (an output); nothing run", kUsage);
+    const std::filesystem::path target(absolutePath(path));
+    for (const auto& d : folders)
+        if (target.parent_path() == std::filesystem::path(absolutePath(d)) && owns && owns(target.filename().string()))
+            return fail(m_command, prefix + " is a file this run writes in " + d + "/; nothing run", kUsage);
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        return fail(m_command, prefix + ": not a regular file (a folder or a device); nothing run", kFailed);
+    const std::string parent = std::filesystem::path(absolutePath(path)).parent_path().string();
+    bool made = false;  // (a folder the run makes)
+    for (const auto& d : folders) made |= std::filesystem::path(absolutePath(d)) == std::filesystem::path(parent);
+    if (!made && (::stat(parent.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)))
+        return fail(m_command, prefix + ": the folder " + parent + " does not exist; nothing run", kFailed);
+    m_targetRefused = false;
+    return kOk;
+}
+
 int RunSummary::finish(int exitCode) {
-    if (m_options.summaryJson.empty()) return exitCode;
+    if (m_options.summaryJson.empty() || m_targetRefused) return exitCode;
     core::Json j = core::Json::object();
     j["software"] = "laserwb";
     j["version"] = LWB_VERSION;

@@ -4,6 +4,7 @@
 // --skip-existing (inputs whose outputs are complete are not run again), --summary-json FILE
 // (a machine-readable account of the run), and the provenance sidecars of the outputs
 // (core/common/provenance.hpp). The footprint and slr commands use them.
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,6 +59,12 @@ public:
     void addInput(core::Json entry) { m_inputs.push_back(std::move(entry)); }
     void setInputsTotal(size_t n) { m_total = n; }
     void addOutput(const std::string& path) { m_outputs.push_back(path); }
+    /// Before any work: the summary's file (when asked for) is no input of the run, none of
+    /// `outputs`, no file a folder of `folders` will hold (`owns(name)`: the run writes a file
+    /// of that name in each, e.g. summary.csv), not a folder or a device, and its folder
+    /// exists. 0 when fine, else the exit code after saying why (2: the name; 1: where it goes).
+    int checkTarget(const std::vector<std::string>& outputs, const std::vector<std::string>& folders = {},
+                    const std::function<bool(const std::string& name)>& owns = {}) const;
     /// Writes the summary (when asked for) and returns `exitCode`, or kFailed when it cannot be written.
     int finish(int exitCode);
 
@@ -68,6 +75,7 @@ private:
     std::vector<std::string> m_outputs;
     size_t m_total = 0;
     std::chrono::steady_clock::time_point m_start;
+    mutable bool m_targetRefused = false;  ///< checkTarget said no: finish writes nothing
 };
 
 /// (core::stageProvenance, core/common/provenance.hpp, stages a sidecar.)

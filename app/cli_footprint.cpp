@@ -210,6 +210,7 @@ int runFootprint(const Args& a, const FootprintSources& src, const BatchOptions&
     outs.addOutput(out);
     if (!toStdout) outs.addOutput(sidecar);
     if (int rc = checkOutputs("footprint", outs)) return rc;
+    if (int rc = summary.checkTarget(toStdout ? std::vector<std::string>{} : std::vector<std::string>{out, sidecar})) return rc;
     // ---- the shots processed ----
     Progress progress("footprint", shots.size(), quiet);
     size_t done = 0;

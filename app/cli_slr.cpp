@@ -4,6 +4,7 @@
 // core/slr/pass_output.hpp: the layer the SLR workspace of the GUI uses too.
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <map>
 #include <cmath>
 #include <cstdio>
@@ -356,6 +357,17 @@ int cmdSlr(int argc, char** argv) {
 namespace {
 // An --all-passes input's folder name when there are many: its file name without ".gz" and
 // without its last extension ("7810_lageos1_crd_20240101_00_00.frd.gz" -> "..._00_00").
+// True when `path` lies in `folder` (absolute, . and .. resolved, links of what exists followed).
+bool isInside(const std::string& path, const std::string& folder) {
+    std::error_code ec;
+    auto norm = [&](const std::string& p) {
+        return std::filesystem::weakly_canonical(std::filesystem::absolute(p, ec), ec).lexically_normal().string();
+    };
+    std::string f = norm(folder);
+    if (f.empty() || f.back() != '/') f += '/';
+    return norm(path).rfind(f, 0) == 0;
+}
+
 std::string stemOf(const std::string& path) {
     std::string n = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
     if (n.size() > 3 && n.compare(n.size() - 3, 3, ".gz") == 0) n.resize(n.size() - 3);
@@ -404,11 +416,40 @@ int allPassFiles(const std::string& cmd, const SlrPlan& plan, const slr::SlrSetu
             dirs.push_back(plan.outDir);
             continue;
         }
-        const std::string name = stemOf(f);
+        // The file's name as a folder inside --out-dir: never ".", "..", or hidden ("...frd" named
+        // "..", and the run wrote into the out-dir's parent).
+        std::string name = stemOf(f);
+        for (char& c : name)
+            if (c != '.') break;
+            else c = '_';
+        if (name.empty()) name = "_";
         if (auto [it, fresh] = seen.emplace(name, f); !fresh)
             return fail(cmd, f + " and " + it->second + " would both write " + plan.outDir + "/" + name + "/ (rename one)", kUsage);
         dirs.push_back(plan.outDir + "/" + name);
     }
+    // The whole plan before any work: no input inside a folder this run writes (the second file
+    // of `--out-dir OUT day.frd OUT/day/pass001.frd` was overwritten by the first's flagged CRD),
+    // and the summary's file none of the run's.
+    for (const auto& in : inputs)
+        for (size_t j = 0; many && j < dirs.size(); ++j)  // (one file: its outputs are checked by name)
+            if (isInside(in, dirs[j]))
+                return fail(cmd, in + " lies in " + dirs[j] + "/, which the products of " + inputs[j] +
+                                     " are written into; nothing run (give another --out-dir)",
+                            kUsage);
+    // (a day's folder: summary.csv, normal_points.npt, provenance.json, passNNN.csv/.frd/.npt)
+    std::vector<std::string> made = dirs;
+    made.push_back(plan.outDir);
+    if (int rc = summary.checkTarget({}, made, [](const std::string& n) {
+            if (n == "summary.csv" || n == "normal_points.npt" || n == "provenance.json") return true;
+            if (n.size() < 8 || n.rfind("pass", 0) != 0) return false;
+            const size_t dot = n.find('.');
+            if (dot == std::string::npos || dot == 4) return false;
+            for (size_t i = 4; i < dot; ++i)
+                if (!std::isdigit(static_cast<unsigned char>(n[i]))) return false;
+            const std::string ext = n.substr(dot);
+            return ext == ".csv" || ext == ".frd" || ext == ".npt";
+        }))
+        return rc;
     summary.setInputsTotal(inputs.size());
     const auto [first, last] = bo.shard.range(inputs.size());
     if (many && first < last) ::mkdir(plan.outDir.c_str(), 0777);  // (each file's folder is made by its run)
@@ -495,6 +536,11 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
     entry["input"] = input;
     entry["outputs"] = products;
     for (const auto& n : products) summary.addOutput(n), summary.addOutput(core::provenancePathFor(n));
+    {  // the summary's file is checked with the run's other outputs, before the run
+        std::vector<std::string> planned;
+        for (const auto& n : products) planned.push_back(n), planned.push_back(core::provenancePathFor(n));
+        if (int rc = summary.checkTarget(planned)) return rc;
+    }
     summary.setInputsTotal(1);
     if (bo.skipExisting && !products.empty()) {
         bool complete = true;

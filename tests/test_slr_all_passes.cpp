@@ -368,6 +368,43 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY(!QFileInfo::exists(p("x")));
     }
+
+    // Issue 41: one output plan, checked whole before any work. With several files each file's
+    // folder is a plain name inside --out-dir ('in/...frd' was named "..": the run wrote into the
+    // out-dir's parent, over its summary.csv); an input inside a folder the run writes is
+    // refused (the second file was overwritten by the first's flagged CRD, exit 0); and the
+    // summary JSON is none of the run's files, with its folder there, before anything runs.
+    void outputPlanCheckedWholeBeforeAnyWork() {
+        const QString stella = sharedPath("slr/7080_STELLA_crd_071220_2128_0.frd"), jason = sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
+        if (!QFile::exists(stella) || !QFile::exists(jason)) QSKIP("shared data absent");
+        const QString d = p("plan");
+        QVERIFY(QDir().mkpath(d + "/parent/in") && QDir().mkpath(d + "/OUT/day"));
+        QVERIFY(QFile::copy(stella, d + "/parent/in/...frd") && QFile::copy(jason, d + "/parent/other.frd"));
+        QVERIFY(writeText(d + "/parent/summary.csv", "keep\n"));
+        auto r = runCli({"slr", "--all-passes", "--out-dir", d + "/parent/out", d + "/parent/in/...frd", d + "/parent/other.frd", "-q"});
+        QVERIFY2(r.exitCode == 0 || r.exitCode == 3, qPrintable(r.err));
+        QCOMPARE(readAll(d + "/parent/summary.csv"), QByteArray("keep\n"));
+        QVERIFY(QFile::exists(d + "/parent/out/__/summary.csv") && QFile::exists(d + "/parent/out/other/summary.csv"));
+        // An input inside another's folder.
+        QVERIFY(QFile::copy(stella, d + "/day.frd") && QFile::copy(jason, d + "/OUT/day/pass001.frd"));
+        const QByteArray victim = readAll(d + "/OUT/day/pass001.frd");
+        r = runCli({"slr", "--all-passes", "--out-dir", d + "/OUT", d + "/day.frd", d + "/OUT/day/pass001.frd", "-q"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("lies in"), qPrintable(r.err));
+        QCOMPARE(readAll(d + "/OUT/day/pass001.frd"), victim);
+        QCOMPARE(filesIn(d + "/OUT/day").size(), 1);
+        // The summary JSON: a file the run writes, a device, a missing folder: refused, nothing run.
+        for (const QString& target : {d + "/od/summary.csv", QString("/dev/full"), d + "/nowhere/s.json"}) {
+            r = runCli({"slr", "--all-passes", "--out-dir", d + "/od", d + "/day.frd", "--summary-json", target, "-q"});
+            QVERIFY2(r.exitCode == 1 || r.exitCode == 2, qPrintable(target + ": " + r.err));
+            QVERIFY2(r.err.contains("nothing run"), qPrintable(r.err));
+            QVERIFY2(!QFile::exists(d + "/od"), qPrintable(target));
+        }
+        // Inside the out-dir under a name of its own: fine (the folder is the run's to make).
+        r = runCli({"slr", "--all-passes", "--out-dir", d + "/od", d + "/day.frd", "--summary-json", d + "/od/run.json", "-q"});
+        QVERIFY2(r.exitCode == 0 || r.exitCode == 3, qPrintable(r.err));
+        QVERIFY(QFile::exists(d + "/od/run.json") && QFile::exists(d + "/od/summary.csv"));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSlrAllPasses)
