@@ -87,10 +87,13 @@ void gatherParams(const py::object& params, const core::Schema<P>& schema, const
     }
 }
 
-/// A numpy view of `v`'s data kept alive by `owner` (no copy).
+/// A read-only numpy view of `v`'s data kept alive by `owner` (no copy). Read-only: a result
+/// is what the run gave (a writable view let `r.kept[:] = 254` reach the files r.write made).
 template <class T>
 py::array_t<T> viewOf(const std::vector<T>& v, py::handle owner) {
-    return py::array_t<T>({static_cast<py::ssize_t>(v.size())}, {static_cast<py::ssize_t>(sizeof(T))}, v.data(), owner);
+    py::array_t<T> a({static_cast<py::ssize_t>(v.size())}, {static_cast<py::ssize_t>(sizeof(T))}, v.data(), owner);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
 }
 
 /// A float32 numpy array that owns `image` (CV_32FC1; no copy of its pixels).

@@ -122,8 +122,10 @@ Pass loadPass(const py::object& path, const py::object& passNumber, const py::ob
     }
     if (!passNumber.is_none()) {
         if (!py::isinstance<py::int_>(passNumber)) throw py::type_error("pass_number must be an int (from 1)");
+        // (compared as Python ints: 10**20 does not fit a C++ integer, and its cast said only "Unable to cast")
+        if (passNumber < py::int_(1) || passNumber > py::int_(1000000))
+            throw ParameterError("pass_number counts from 1 (at most 1000000), not " + std::string(py::str(passNumber)));
         const long long k = passNumber.cast<long long>();
-        if (k < 1 || k > 1000000) throw ParameterError("pass_number counts from 1 (at most 1000000), not " + std::to_string(k));
         src.passNumber = static_cast<int>(k);
     }
     const slr::SlrSetup setup = setUp(src);

@@ -268,6 +268,19 @@ def test_one_run_oc_rows_are_the_passs(tmp_path):
         laserwb.slr.run(p)  # the defaults' Mendes-Pavlis is not what this pass's O-C was computed with
 
 
+def test_results_are_read_only_and_arguments_checked(data):
+    """Issue 41: a result's arrays are read-only views (r.kept[:] = 254 reached the files r.write
+    wrote), and an out-of-range pass number is a ParameterError naming it, not a cast error."""
+    p = laserwb.slr.load_pass(str(data / "pass.csv"))
+    r = laserwb.slr.run(p)
+    for a in (r.kept, r.accepted, r.residuals):
+        assert not a.flags.writeable
+        with pytest.raises(ValueError):
+            a[:1] = 0
+    with pytest.raises(laserwb.ParameterError, match="pass_number"):
+        laserwb.slr.load_pass(str(data / "pass.csv"), pass_number=10**20)
+
+
 def test_one_run_thread_counts_are_checked():
     """The scale search's threads belong to the run and are checked as the CLI checks --threads."""
     with pytest.raises(ValueError):
