@@ -170,6 +170,19 @@ class TestSlrIo : public QObject {
 private slots:
     // ---- issue 27: the file read pass by pass (streamCrd) gives what readCrd gives ----------------
     void streamedAsRead_data() { everyCrdFileParses_data(); }
+    // Issue 41: an H4 whose end precedes its start was read without a word.
+    void h4EndBeforeStartIsSaid() {
+        QByteArray text = kGoodCrd;
+        text.replace("H4 0 2021 9 1 20 46 0 2021 9 1 20 47 19", "H4 0 2021 9 1 20 46 0 2021 9 1 19 47 19");
+        const CrdReadResult r = parseCrd(text.toStdString(), "back.frd");
+        QVERIFY2(r.ok, r.error.c_str());
+        bool said = false;
+        for (const auto& w : r.warnings) said |= w.find("back.frd:4: H4 end date-time precedes its start") != std::string::npos;
+        QVERIFY(said);
+        const CrdReadResult good = parseCrd(kGoodCrd.toStdString(), "good.frd");
+        for (const auto& w : good.warnings) QVERIFY2(w.find("precedes") == std::string::npos, w.c_str());
+    }
+
     void streamedAsRead() {
         QFETCH(QString, file);
         if (!lwbtest::haveShared("slr/" + file)) QSKIP("shared SLR data absent (../shared/data/slr)");

@@ -1,5 +1,7 @@
 #include "core/slr/crd.hpp"
 
+#include <array>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -303,6 +305,16 @@ bool parseH4(const CrdRecord& r, const std::string& src, CrdSession* h, Sink* si
     } else if (!validDate(h->endYear, h->endMonth, h->endDay) || !validTime(h->endHour, h->endMinute, h->endSecond)) {
         *why = "H4 end date-time is not a valid date and time";
         return false;
+    } else {
+        // An end before the start: the header's span cannot be believed (said, not refused: the
+        // records carry their own epochs).
+        const std::array<double, 6> start{double(h->startYear), double(h->startMonth), double(h->startDay),
+                                          double(h->startHour), double(h->startMinute), double(h->startSecond)};
+        const std::array<double, 6> end{double(h->endYear), double(h->endMonth), double(h->endDay),
+                                        double(h->endHour), double(h->endMinute), double(h->endSecond)};
+        if (end < start)
+            sink->add(where(src, r.line) + "H4 end date-time precedes its start date-time: the header's span of the pass is "
+                                           "wrong (the records' epochs are used)");
     }
     struct Flag {
         int* field;
