@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iostream>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include "cli_batch.hpp"
@@ -328,7 +329,8 @@ namespace {
 const char* kSimUsage =
     "usage: laserwb-cli simulate footprint --count N --seed S [options] OUTDIR\n"
     "Writes simulated footprint shots with exact truth (OUTDIR/truth.csv).\n"
-    "  --count N            number of shots (default 100)\n"
+    "  --count N            number of shots (default 100; at most 1000000, and what the disk holds:\n"
+    "                       checked before the first shot, at 2 bytes a pixel)\n"
     "  -q, --quiet          no progress line\n"
     "  --seed S             random seed (default 1); the same seed gives the same files\n"
     "  --scene NAME         weak|moderate|strong|night|flat|mixed (default mixed: the first four in turn)\n"
@@ -368,6 +370,31 @@ bool groundOption(const Args& a, sim::FootprintSimParams* out, std::string* err)
 }
 }
 
+// A stated limit and the disk, before the first shot (10^7 shots ran past 120 s unrefused):
+// at most kMaxSimulatedShots, and no more bytes than the folder's file system has free (2 bytes
+// a pixel: the 16-bit images uncompressed, an upper bound for PNG and TIFF).
+constexpr long long kMaxSimulatedShots = 1000000;
+int checkSimulationSize(const std::string& dir, long long count, long long side) {
+    if (count > kMaxSimulatedShots)
+        return fail("simulate footprint", "--count " + std::to_string(count) + ": at most " + std::to_string(kMaxSimulatedShots) +
+                                              " shots a folder (simulate several folders, or --shard the run that reads them)",
+                    kUsage);
+    std::string where = dir;  // the nearest folder that exists
+    struct stat st {};
+    while (::stat(where.c_str(), &st) != 0 && where.find('/') != std::string::npos) where = where.substr(0, where.find_last_of('/'));
+    if (::stat(where.c_str(), &st) != 0) where = ".";
+    struct statvfs fs {};
+    if (::statvfs(where.c_str(), &fs) != 0) return kOk;  // (no figure: the writes will say)
+    const double need = double(count) * double(side) * double(side) * 2 + double(count) * 200;
+    const double free = double(fs.f_bavail) * double(fs.f_frsize);
+    if (need > free)
+        return fail("simulate footprint", dir + ": " + std::to_string(count) + " shots of " + std::to_string(side) + "x" +
+                                              std::to_string(side) + " px need up to " + core::formatFixed(need / 1e9, 2) + " GB; " +
+                                              where + " has " + core::formatFixed(free / 1e9, 2) + " GB free; nothing written",
+                    kFailed);
+    return kOk;
+}
+
 int cmdSimulateFootprint(int argc, char** argv) {
     Args a("simulate footprint", kSimUsage);
     for (const char* o : {"--count", "--seed", "--scene", "--case", "--size", "--center", "--format", "--ground", "--photo"})
@@ -385,6 +412,7 @@ int cmdSimulateFootprint(int argc, char** argv) {
         return fail("simulate footprint", err, kUsage);
     if (a.positional().size() != 1) return fail("simulate footprint", "give exactly one output folder", kUsage);
     const std::string dir = a.positional()[0];
+    if (int rc = checkSimulationSize(dir, count, a.has("--full-frame") ? 550 : size)) return rc;
     const std::string fmt = a.value("--format", "png");
     if (fmt != "png" && fmt != "tif" && fmt != "pgm" && fmt != "raw")
         return fail("simulate footprint", "--format must be png, tif, pgm or raw", kUsage);

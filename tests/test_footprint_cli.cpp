@@ -1,6 +1,7 @@
 // laserwb-cli footprint / simulate footprint / trend, end to end, including the bad inputs
 // that must stop with a clear message, a non-zero exit and no output file.
 #include <QtTest>
+#include <sys/statvfs.h>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/common/csv.hpp"
@@ -24,6 +25,23 @@ private slots:
     void initTestCase() {
         const auto r = runCli({"simulate", "footprint", "--count", "24", "--seed", "9", "--case", "mixed", "-q", p("shots")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    }
+
+    // Issue 41: a simulator's size is checked before the first shot (10^7 shots ran past 120 s
+    // unrefused): a stated limit (10^6 a folder), then the disk (2 bytes a pixel).
+    void simulatorSizeCheckedFirst() {
+        const QString d = m_dir.path() + "/big";
+        auto r = runCli({"simulate", "footprint", "--count", "10000000", "-q", d});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("at most 1000000"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(d));
+        struct statvfs fs {};
+        QVERIFY(::statvfs(qPrintable(m_dir.path()), &fs) == 0);
+        if (double(fs.f_bavail) * fs.f_frsize > 1e6 * 550.0 * 550 * 2) QSKIP("more than 605 GB free: the disk check cannot be shown here");
+        r = runCli({"simulate", "footprint", "--count", "1000000", "--full-frame", "-q", d});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("GB free; nothing written"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(d));
     }
 
     void simulateIsDeterministic() {
