@@ -5,6 +5,7 @@
 // demo) it executes laserwb-cli-imaging, built from this file with LWB_CLI_IMAGING, which lies
 // beside it and runs them. Loading OpenCV and the libraries it pulls in (LAPACK, TBB, X11, ...)
 // was 13 of the 19 ms an SLR run took to start.
+#include <csignal>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -105,6 +106,9 @@ int dispatch(int argc, char** argv);
 // Last resort: an exception escaping a command (out of memory, say) is reported, not a crash.
 int main(int argc, char** argv) {
     lwb::core::tuneAllocator();
+    // A reader of standard output that went away is an error the output set reports (and rolls
+    // the run's files back for), not a signal that kills the process half-way (exit 141).
+    std::signal(SIGPIPE, SIG_IGN);
     try {
         return dispatch(argc, argv);
     } catch (const std::exception& e) {

@@ -438,7 +438,7 @@ bool OutputSet::commit() {
         if (!m_items[i].toStdout && &m_items[i] != manifest) ok = put(m_items[i]);
     if (ok && !m_setFolder.empty() && !m_stalePatterns.empty()) ok = removeStaleOutputs(setAside);
     if (ok && manifest) ok = put(*manifest);
-    if (!ok) {
+    auto rollBack = [&] {
         for (const std::string& c : created) std::remove(c.c_str());
         // (rename() of a hard link over the same file does nothing: a backup of a file never
         // replaced is simply removed)
@@ -447,20 +447,29 @@ bool OutputSet::commit() {
             else std::rename(r->first.c_str(), r->second.c_str());
         }
         abandon();
+    };
+    if (!ok) {
+        rollBack();
+        return false;
+    }
+    // Standard output once the files are in place, streamed from its completed staging copy,
+    // while the files replaced are still kept: a reader that went away (a closed pipe) or a
+    // full device rolls the set back (--npt-out was left written beside a failed -o -).
+    for (const auto& it : m_items) {
+        if (!it.toStdout || !ok) continue;
+        std::string why;
+        if (!copyToFd(it.staging, standardOutputFd(), &why)) {
+            m_error = "cannot write standard output: " + why + " (the files of this run were not written)";
+            ok = false;
+        }
+    }
+    if (!ok) {
+        rollBack();
         return false;
     }
     for (const auto& r : restore) std::remove(r.first.c_str());
-    // Standard output last: the files are in place; a reader that went away (a closed pipe)
-    // is reported, and the staged copy removed.
-    for (const auto& it : m_items) {
-        if (!it.toStdout) continue;
-        std::string why;
-        if (!copyToFd(it.staging, standardOutputFd(), &why)) {
-            m_error = "cannot write standard output: " + why;
-            ok = false;
-        }
-        std::remove(it.staging.c_str());
-    }
+    for (const auto& it : m_items)
+        if (it.toStdout) std::remove(it.staging.c_str());
     m_items.clear();
     m_checked = false;
     return ok;
