@@ -271,13 +271,15 @@ public:
         std::string e = setFromTextValue(*f, q, value);
         if (e.empty()) e = checkField(*f, q);
         else e = m_name + "." + key + " = " + printableExcerpt(value) + ": " + e;
-        if (e.empty())
-            for (const auto& r : m_rules)
-                if (!r.onEachSet) continue;
-                else if (e = r.check(q); !e.empty()) {
+        if (e.empty()) {
+            for (const auto& r : m_rules) {
+                if (!r.onEachSet) continue;  // (a whole-set rule: validate() checks it)
+                if (e = r.check(q); !e.empty()) {
                     e = m_name + ": " + e;
                     break;
                 }
+            }
+        }
         if (!e.empty()) {
             *error = e;
             return false;
