@@ -43,16 +43,23 @@ SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const QS
     // As wide as the table wants, within the screen (1100 px put Close off a 1024 px screen).
     const QRect avail = (parent && parent->screen() ? parent->screen() : QGuiApplication::primaryScreen())->availableGeometry();
     resize(std::min(1100, avail.width() - 40), std::min(560, avail.height() - 80));
-    // The CLI's settings for a station's file: its defaults and each satellite's saved preset.
+    // The CLI's settings for a station's file: its defaults and each satellite's saved preset,
+    // set up afresh from the workbench's files (the panel's parameters, its oc.* rows among
+    // them, are not the batch's: the passes are opened and resolved with the defaults alike).
     m_setup.sources.config = core::Json();
     m_setup.sources.set.clear();
     m_setup.sources.passNumber = 0;
-    if (!presetFile.isEmpty() && QFileInfo::exists(presetFile)) {
+    {
         SlrSources src = m_setup.sources;
-        src.presets = presetFile.toStdString();
-        SlrSetup withPresets;
+        if (!presetFile.isEmpty() && QFileInfo::exists(presetFile)) src.presets = presetFile.toStdString();
+        SlrSetup fresh;
         SlrError e;
-        if (setUpSlrRun(src, &withPresets, &e)) m_setup = std::move(withPresets);
+        if (setUpSlrRun(src, &fresh, &e)) {
+            m_setup = std::move(fresh);
+        } else {  // (an unreadable presets file: the defaults alone)
+            src.presets.clear();
+            if (setUpSlrRun(src, &fresh, &e)) m_setup = std::move(fresh);
+        }
     }
     auto* l = new QVBoxLayout(this);
     auto* about = new QLabel(

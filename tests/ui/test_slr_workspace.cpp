@@ -1031,6 +1031,15 @@ private slots:
             const double d = c->pass().oc[i] - withTroposphere[i];
             QVERIFY2(d > 13e-9 && d < 60e-9, qPrintable(QString("point %1: %2 ns").arg(i).arg(d * 1e9)));
         }
+        // Screen all passes is the CLI's batch with its defaults: the panel's oc.* rows are not
+        // carried half-way into it (the passes opened with the panel's and resolved with the
+        // defaults were every one refused).
+        SlrAllPassesDialog* all = ws->screenAllPasses();
+        QVERIFY(all);
+        QTRY_VERIFY_WITH_TIMEOUT(all->finished(), 300000);
+        const int colReason = SlrAllPassesDialog::column("reason");
+        for (int r = 0; r < all->table()->rowCount(); ++r)
+            QVERIFY2(!all->table()->item(r, colReason)->text().contains("oc.*"), qPrintable(all->table()->item(r, colReason)->text()));
     }
 
     void cpfClearedAndReplaced() {
