@@ -291,6 +291,14 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
         if (!slr::resolveBaseParams(sources, &probe, &e)) return failed(cmd, e);
     }
     if (pl->inputs.size() > 1) return -1;  // (each file is looked at when its turn comes)
+    // A folder or a missing path is neither a CRD file nor an O-C table (it was called "an O-C
+    // table" when a CRD output or --all-passes was asked for).
+    if (struct stat st {}; !core::isStandardStream(input) && (::stat(input.c_str(), &st) != 0 || S_ISDIR(st.st_mode)))
+        return fail(cmd, input + (::stat(input.c_str(), &st) != 0
+                                      ? ": no such file"
+                                      : std::string(": is a folder, not a file") +
+                                            (allPasses ? " (--all-passes takes several files: give them, or --files-from)" : "")),
+                    kFailed);
     pl->csvInput = !slr::isCrdFile(input);
     const bool csvInput = pl->csvInput;
     if (csvInput && (!crdOut.empty() || !nptOut.empty()))

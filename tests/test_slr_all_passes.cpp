@@ -400,6 +400,10 @@ private slots:
             QVERIFY2(r.err.contains("nothing run"), qPrintable(r.err));
             QVERIFY2(!QFile::exists(d + "/od"), qPrintable(target));
         }
+        // A folder given as the file: said as a folder (it was "an O-C table (one pass)").
+        r = runCli({"slr", "--all-passes", "--out-dir", d + "/of", d + "/OUT"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("is a folder, not a file") && !r.err.contains("O-C table"), qPrintable(r.err));
         // Inside the out-dir under a name of its own: fine (the folder is the run's to make).
         r = runCli({"slr", "--all-passes", "--out-dir", d + "/od", d + "/day.frd", "--summary-json", d + "/od/run.json", "-q"});
         QVERIFY2(r.exitCode == 0 || r.exitCode == 3, qPrintable(r.err));
