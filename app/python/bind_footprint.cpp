@@ -134,7 +134,14 @@ Report fitBatch(const py::object& inputs, const py::object& params, const py::ob
             }
         }
         std::vector<std::string> frameNames;
-        if (!names.is_none()) frameNames = names.cast<std::vector<std::string>>();
+        if (!names.is_none()) {  // (pybind11's own words were "Unable to cast Python instance")
+            try {
+                frameNames = names.cast<std::vector<std::string>>();
+            } catch (const py::cast_error&) {
+                throw py::type_error("names must be a list of str, one per frame, not " +
+                                     std::string(py::str(names).cast<std::string>()).substr(0, 80));
+            }
+        }
         else
             for (size_t i = 0; i < frames.size(); ++i) frameNames.push_back(std::to_string(i));
         if (frameNames.size() != frames.size())

@@ -279,6 +279,8 @@ def test_results_are_read_only_and_arguments_checked(data):
             a[:1] = 0
     with pytest.raises(laserwb.ParameterError, match="pass_number"):
         laserwb.slr.load_pass(str(data / "pass.csv"), pass_number=10**20)
+    with pytest.raises(TypeError, match="names must be a list of str"):
+        laserwb.footprint.fit_batch([np.ones((32, 32), np.float32)] * 2, names=[1, None])
 
 
 def test_one_run_thread_counts_are_checked():
