@@ -176,17 +176,23 @@ void bindFootprint(py::module_& top) {
     bindParams(m, kParams);
 
     m.def("read_frame", [](const std::string& path, const py::object& rawSize, long long maxPixels) {
-        fp::ImageReadParams rp;
-        if (maxPixels > 0) rp.maxPixels = maxPixels;
+        // The frame as a run reads a shot's (core resolveBatchParams + readShotFrame).
+        fp::FootprintSources src;
+        if (maxPixels > 0) src.read.maxPixels = maxPixels;
         if (!rawSize.is_none()) {
             const auto wh = rawSize.cast<std::pair<int, int>>();
-            rp.rawWidth = wh.first;
-            rp.rawHeight = wh.second;
+            src.read.rawWidth = wh.first;
+            src.read.rawHeight = wh.second;
         }
+        fp::BatchParams bp;
+        fp::FootprintError fe;
+        if (!fp::resolveBatchParams(src, &bp, &fe)) raise(fe);
+        fp::ShotSpec shot;
+        shot.file = path;
         fp::ImageReadResult r;
         {
             py::gil_scoped_release nogil;
-            r = fp::readFrame(path, rp);
+            r = fp::readShotFrame(shot, bp);
         }
         check(r.ok, r.error);
         return ownedArray(r.image);  // (the array owns the decoded frame: no copy)

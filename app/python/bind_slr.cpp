@@ -34,11 +34,6 @@ const ParamsBinding<slr::SlrParams> kParams{
     "command's defaults (automatic screening, 3-sigma rejection).",
     slr::slrSchema, slr::commandDefaults, familyCheck};
 
-// Prefixes the input file to a message that does not name it already (as the CLI does).
-std::string named(const std::string& path, const std::string& msg) {
-    return msg.rfind(path, 0) == 0 ? msg : path + ": " + msg;
-}
-
 /// A loaded pass, shared with its results (the arrays are views of it).
 struct Pass {
     std::shared_ptr<const slr::PassData> data;
@@ -70,18 +65,6 @@ slr::SlrSetup setUp(const slr::SlrSources& s) {
     }
     if (!ok) raise(e);
     return setup;
-}
-
-// A reader's result for `file`, read with the GIL released; raises with the core's message.
-template <class R, class F>
-R readReleased(const std::string& file, F read) {
-    R r;
-    {
-        py::gil_scoped_release nogil;
-        r = read(file);
-    }
-    check(r.ok, named(file, r.error));
-    return r;
 }
 
 py::dict summaryDict(const slr::PassSummary& s) {
@@ -233,23 +216,47 @@ py::dict normalPointColumns(const std::vector<slr::NormalPoint>& nps) {
 // The readers: read_crd, read_cpf and read_sinex.
 void bindReaders(py::module_& m) {
     m.def("read_crd", [](const py::object& path) {
-        const std::string file = fsPath(path);
-        const auto r = readReleased<slr::CrdReadResult>(file, [](const std::string& f) { return slr::readCrd(f); });
+        slr::SlrSources src;  // (the file as a run's set-up reads it: core readSlrInput)
+        src.input = fsPath(path);
+        std::shared_ptr<const slr::CrdReadResult> r;
+        slr::SlrError e;
+        {
+            py::gil_scoped_release nogil;
+            r = slr::readSlrInput(src, &e);
+        }
+        if (!r) raise(e);
         py::list out;
-        for (const auto& s : slr::summarisePasses(r.file)) out.append(summaryDict(s));
+        for (const auto& s : slr::summarisePasses(r->file)) out.append(summaryDict(s));
         return out;
     }, py::arg("path"), "The passes of a CRD file (v1 or v2, gzip too): one dict per pass (pass_number from 1, satellite, station, start, end, ranges, ...).");
-    m.def("read_cpf", [](const py::object& path) {
-        const std::string file = fsPath(path);
-        const auto r = readReleased<slr::CpfReadResult>(file, [](const std::string& f) { return slr::readCpf(f); });
-        return py::dict("path"_a = file, "warnings"_a = r.warnings);
+    // The prediction and the stations as a run's set-up reads them (core readPassSources: a
+    // damaged prediction is refused here as it is before any pass is screened with it).
+    auto sources = [](const slr::PassInputParams& in) {
+        slr::PassSources out;
+        std::string err;
+        bool ok;
+        {
+            py::gil_scoped_release nogil;
+            ok = slr::readPassSources(in, &out, &err);
+        }
+        check(ok, err);
+        return out;
+    };
+    m.def("read_cpf", [sources](const py::object& path) {
+        slr::PassInputParams in;
+        in.cpfPath = fsPath(path);
+        const slr::PassSources r = sources(in);
+        check(!r.cpfFolder, in.cpfPath + ": a folder; read_cpf reads one CPF file");
+        return py::dict("path"_a = in.cpfPath, "warnings"_a = r.cpfs.front().warnings);
     }, py::arg("path"), "Reads and checks a CPF prediction (raises laserwb.Error with FILE:LINE when it is not one).");
-    m.def("read_sinex", [](const py::object& path) {
-        const std::string file = fsPath(path);
-        const auto r = readReleased<slr::SinexReadResult>(file, [](const std::string& f) { return slr::readSinex(f); });
+    m.def("read_sinex", [sources](const py::object& path) {
+        slr::PassInputParams in;
+        in.sinexPath = fsPath(path);
+        const slr::PassSources r = sources(in);
         std::vector<std::string> codes;
-        for (const auto& s : r.file.sites) codes.push_back(s.code);
-        return py::dict("path"_a = file, "sites"_a = codes, "solutions"_a = r.file.solutions.size(), "warnings"_a = r.warnings);
+        for (const auto& s : r.stations.sites) codes.push_back(s.code);
+        return py::dict("path"_a = in.sinexPath, "sites"_a = codes, "solutions"_a = r.stations.solutions.size(),
+                        "warnings"_a = r.stationWarnings);
     }, py::arg("path"), "Reads a SINEX file of station coordinates: its site codes and solutions.");
 }
 

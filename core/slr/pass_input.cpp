@@ -286,6 +286,7 @@ bool readPassSources(const PassInputParams& params, PassSources* out, std::strin
             return false;
         }
         out->stations = snx.file;
+        out->stationWarnings = snx.warnings;
         out->haveStations = true;
     }
     return true;

@@ -37,6 +37,7 @@ struct PassSources {
     std::vector<std::string> skipped;  ///< files of the folder that are not readable CPF, with why
     bool haveStations = false;
     SinexFile stations;
+    std::vector<std::string> stationWarnings;  ///< the SINEX reader's
 };
 
 struct PassSummary {

@@ -173,6 +173,16 @@ PassInputParams inputParams(const SlrSetup& setup) {
 
 }  // namespace
 
+std::shared_ptr<const CrdReadResult> readSlrInput(const SlrSources& sources, SlrError* error, const Feedback* fb) {
+    auto crd = std::make_shared<const CrdReadResult>(readCrd(sources.input, {}, fb));
+    if (!crd->ok) {
+        *error = {named(sources.input, crd->error), false};
+        for (size_t i = 0; i < crd->warnings.size() && i < 5; ++i) error->message += "\n  " + crd->warnings[i];
+        return nullptr;
+    }
+    return crd;
+}
+
 OpenedPass openPassOf(const SlrSetup& setup, const std::shared_ptr<const CrdReadResult>& crd, int passIndex,
                       const Feedback* fb) {
     PassInputResult loaded = passFromCrd(crd, setup.sources.input, passIndex, inputParams(setup), *setup.predictions, fb);
@@ -192,11 +202,11 @@ OpenedPass openPass(const SlrSetup& setup, const Feedback* fb) {
         }
         return finishOpen(setup, passFromOcTable(input), nullptr);
     }
-    auto crd = std::make_shared<const CrdReadResult>(readCrd(input, {}, fb));
-    if (!crd->ok) {
+    SlrError readError;
+    const std::shared_ptr<const CrdReadResult> crd = readSlrInput(setup.sources, &readError, fb);
+    if (!crd) {
         OpenedPass o;
-        o.error = {named(input, crd->error), false};
-        for (size_t i = 0; i < crd->warnings.size() && i < 5; ++i) o.error.message += "\n  " + crd->warnings[i];
+        o.error = readError;
         return o;
     }
     if (setup.sources.passNumber > static_cast<int>(crd->file.passes.size())) {

@@ -97,6 +97,9 @@ struct OpenedPass {
 /// screen). A block that is not a pass, a damaged pass, a pass number beyond the file: errors
 /// that say what the file holds.
 OpenedPass openPass(const SlrSetup& setup, const Feedback* fb = nullptr);
+/// The CRD file of the sources as openPass reads it (gzip, limits, messages with the first
+/// warnings): null with *error when it cannot be read. Python's read_crd lists its passes.
+std::shared_ptr<const CrdReadResult> readSlrInput(const SlrSources& sources, SlrError* error, const Feedback* fb = nullptr);
 /// The same for a file already read (the workbench switching passes): passIndex 0-based, -1 the first.
 OpenedPass openPassOf(const SlrSetup& setup, const std::shared_ptr<const CrdReadResult>& crd, int passIndex,
                       const Feedback* fb = nullptr);

@@ -268,6 +268,32 @@ def test_one_run_oc_rows_are_the_passs(tmp_path):
         laserwb.slr.run(p)  # the defaults' Mendes-Pavlis is not what this pass's O-C was computed with
 
 
+@pytest.mark.skipif(not os.path.isdir(os.path.join(SHARED, "data", "slr")), reason="no ../shared/data (real ILRS files)")
+def test_readers_read_as_the_run_does(tmp_path):
+    """The module's readers go through the run's set-up (core readSlrInput, readPassSources,
+    readShotFrame): a prediction the run would refuse as damaged is refused by read_cpf too,
+    and messages name the file as the CLI's do."""
+    d = os.path.join(SHARED, "data", "slr")
+    cpf = os.path.join(d, "blits_cpf_120626_6801.hts")
+    assert laserwb.slr.read_cpf(cpf)["path"] == cpf
+    with pytest.raises(laserwb.Error, match="blits_201206.frd:1"):
+        laserwb.slr.read_cpf(os.path.join(d, "blits_201206.frd"))
+    # a position record moved inside the Earth: the run refuses the prediction, and so does read_cpf
+    lines = open(cpf).read().split("\n")
+    k = next(i for i, l in enumerate(lines) if l.startswith("10 "))
+    f = lines[k].split()
+    f[5:8] = ["1000.0", "1000.0", "1000.0"]
+    lines[k] = " ".join(f)
+    bad = tmp_path / "inside.hts"
+    bad.write_text("\n".join(lines))
+    err = cli("slr", os.path.join(d, "blits_201206.frd"), "--pass", 3, "--cpf", bad, "--stations",
+              os.path.join(d, "SLRF2014_POS+VEL_2030.0_200428.snx"), "-o", tmp_path / "x.csv", ok=(1, 2)).stderr
+    with pytest.raises(laserwb.Error) as e:
+        laserwb.slr.read_cpf(str(bad))
+    assert str(e.value).split("\n")[0] in err
+    assert len(laserwb.slr.read_crd(os.path.join(d, "blits_201206.frd"))) == 54
+
+
 def test_results_are_read_only_and_arguments_checked(data):
     """Issue 41: a result's arrays are read-only views (r.kept[:] = 254 reached the files r.write
     wrote), and an out-of-range pass number is a ParameterError naming it, not a cast error."""
