@@ -211,6 +211,9 @@ bool outputsComplete(const core::Provenance& p, const std::vector<std::string>& 
     std::string dummy;
     std::string& w = why ? *why : dummy;
     if (::access(sidecar.c_str(), F_OK) != 0) return w = sidecar + " does not exist", false;
+    // A folder, FIFO or device there is not a sidecar (reading a folder threw "basic_filebuf::
+    // underflow ... Is a directory" out of the command); the run then refuses it as an output.
+    if (core::regularFileProblem(sidecar, &w)) return false;
     // (read directly, not as an input of the run: the run may write it again)
     std::ifstream f(sidecar, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());

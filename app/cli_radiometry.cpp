@@ -359,6 +359,8 @@ int cmdRadiometryApply(int argc, char** argv) {
     if (std::string gerr; !readGeoReference(a.positional()[0], &geo, &gerr)) geo = GeoReference{};
     const bool plain = a.has("--plain-tiff");
     const ApplyResult r = applyReflectance(img, fit, p);
+    const cv::Size size = img.size();
+    img.release();  // (the DN image is not needed while the reflectance is written)
     if (!r.ok) return fail(cmd, r.error);
     warn(cmd, r.warnings);
     RelativeErrorResult check;
@@ -376,7 +378,7 @@ int cmdRadiometryApply(int argc, char** argv) {
     if (int rc = stageRunProvenance(cmd, outs, sidecar, radiometrySchema().toJson(rp))) return rc;
     if (int rc = commitOutputs(cmd, outs)) return rc;
     if (!quiet(a))
-        std::cerr << "radiometry apply: " << img.cols << "x" << img.rows << " -> " << out
+        std::cerr << "radiometry apply: " << size.width << "x" << size.height << " -> " << out
                   << (geo.valid && !plain ? " (georeferenced as the input)" : "") << "\n";
     if (a.has("--check")) {
         for (const auto& row : check.rows)

@@ -987,6 +987,30 @@ private slots:
         r = runCli({"slr", p("one.csv"), "-o", p("one_out.csv"), "--np-bin", "30"});
         QCOMPARE(r.exitCode, 0);
         QVERIFY2(r.err.contains("normal points: ") && !r.err.contains("doubtful"), qPrintable(r.err));
+        // Issue 41: a kHz pass (half noise) with a ghost of 60 % of its signal 3 ns later: the band
+        // keeps noise between the two tracks, so no gap is empty (exit 0 and RMS 1.5 ns before).
+        QCOMPARE(runCli({"simulate", "slr", "--kind", "khz", "--points", "20000", "--seed", "3", "-q", p("k.csv")}).exitCode, 0);
+        const QList<QByteArray> kl = lwbtest::readAll(p("k.csv")).split('\n');
+        QByteArray ghost = "epoch_s,oc_s\n";
+        for (int i = 1; i < kl.size(); ++i) {
+            const QList<QByteArray> f = kl[i].split(',');
+            if (f.size() < 3) continue;
+            ghost += f[0] + "," + f[1] + "\n";
+            if (f[2] == "1" && i % 5 < 3)
+                ghost += QByteArray::number(f[0].toDouble() + 1e-4, 'f', 6) + "," + QByteArray::number(f[1].toDouble() + 3e-9, 'g', 17) + "\n";
+        }
+        QVERIFY(lwbtest::writeText(p("ghost.csv"), ghost));
+        r = runCli({"slr", p("ghost.csv"), "-o", p("ghost_out.csv"), "--np-bin", "30", "-q"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains("two parallel tracks 2.99") || r.err.contains("two parallel tracks 3.00"), qPrintable(r.err));
+        // Issue 41: a 0.5 %-signal debris pass (20 signal points among 3980): 5 noise points were
+        // accepted as the track, exit 0. Resting on fewer than 10 image points, it must stand 20
+        // times above the noise, and does not: doubtful.
+        QCOMPARE(runCli({"simulate", "slr", "--kind", "diffuse", "--points", "4000", "--signal-fraction", "0.005", "--seed",
+                         "3", "-q", p("faint_debris.csv")}).exitCode, 0);
+        r = runCli({"slr", p("faint_debris.csv"), "-o", p("faint_debris_out.csv"), "--np-bin", "30", "-q"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains("point(s) the image found") && r.err.contains("cannot be told from noise"), qPrintable(r.err));
     }
 };
 

@@ -89,6 +89,34 @@ private slots:
         QVERIFY(!QFile::exists(p("none.csv")));
     }
 
+    // Issue 41: `slr - < /dev/zero` grew to 4.3 GB before it was refused at the 2 GiB limit. A
+    // stream that starts with 64 KiB of NUL bytes is refused there, at once; a text input with a
+    // NUL byte further on is refused with its line, on standard input and as a file.
+    void zerosOnStandardInputRefusedAtOnce() {
+        QProcess proc;
+        proc.setStandardInputFile("/dev/zero");
+        proc.start(QString(LWB_CLI), {"slr", "-", "-o", p("zero.csv")});
+        QVERIFY(proc.waitForFinished(60000));
+        QCOMPARE(proc.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(proc.exitCode(), 1);
+        const QString err = QString::fromUtf8(proc.readAllStandardError());
+        QVERIFY2(err.contains("standard input starts with 65536 NUL bytes"), qPrintable(err));
+        QVERIFY(!QFile::exists(p("zero.csv")));
+        QByteArray crd = readAll(p("pass.frd"));
+        int at = -1;
+        for (int k = 0; k < 4; ++k) at = crd.indexOf('\n', at + 1);
+        QVERIFY(at > 0);
+        crd[at + 3] = '\0';  // inside line 5
+        const Piped r = pipeCli({"slr", "-", "-o", p("nul.csv")}, crd);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("-:5: binary data (NUL byte)"), r.err.constData());
+        QVERIFY(writeText(p("nul.frd"), crd));
+        const CliRun f = runCli({"slr", p("nul.frd"), "-o", p("nul.csv")});
+        QCOMPARE(f.exitCode, 1);
+        QVERIFY2(f.err.contains("nul.frd:5: binary data (NUL byte)"), qPrintable(f.err));
+        QVERIFY(!QFile::exists(p("nul.csv")));
+    }
+
     // An image on standard input: the footprint report of "-" is the file's report.
     void footprintFrameOnStandardInput() {
         QCOMPARE(runCli({"simulate", "footprint", "--count", "1", "--seed", "4", "-q", p("one")}).exitCode, 0);

@@ -35,6 +35,15 @@ inline void check(bool ok, const std::string& message) {
     if (!ok) throw Error(message);
 }
 
+/// A number argument `name` (a Python int or float, or a numpy scalar; bool refused): TypeError
+/// naming it for anything else ("k must be a number, not str 'x'"; pybind11's own words were
+/// "Unable to cast Python instance"), ValueError when it is not finite.
+double numberArgument(const py::object& v, const char* name);
+/// An argument (width, height) of two ints > 0: TypeError / ValueError naming it.
+std::pair<int, int> sizeArgument(const py::object& v, const char* name);
+/// A list of (x, y) number pairs: TypeError naming it.
+std::vector<std::pair<double, double>> pointsArgument(const py::object& v, const char* name);
+
 /// A Python value as the text `--set KEY=VALUE` takes: True/False, None ("null": a special, or a
 /// range switched off), a number (its shortest round-trip repr), (lo, hi) for a range, a string.
 std::string valueText(const py::handle& v);

@@ -85,12 +85,12 @@ Report fitBatch(const py::object& inputs, const py::object& params, const py::ob
     src.threads = threads;
     if (maxPixels > 0) src.read.maxPixels = maxPixels;
     if (!rawSize.is_none()) {
-        const auto wh = rawSize.cast<std::pair<int, int>>();
+        const auto wh = sizeArgument(rawSize, "raw_size");
         src.read.rawWidth = wh.first;
         src.read.rawHeight = wh.second;
     }
     if (!centres.is_none())
-        for (const auto& c : centres.cast<std::vector<std::pair<double, double>>>()) src.centres.emplace_back(c.first, c.second);
+        for (const auto& c : pointsArgument(centres, "centres")) src.centres.emplace_back(c.first, c.second);
     fp::FootprintSetup setup;
     fp::FootprintError fe;
     if (!fp::resolveBatchParams(src, &setup.params, &fe)) raise(fe);
@@ -107,9 +107,23 @@ Report fitBatch(const py::object& inputs, const py::object& params, const py::ob
         const py::sequence s = inputs.cast<py::sequence>();
         isFrames = s.size() > 0 && py::isinstance<py::array>(s[0]);
     }
+    // A frame's size against the same limit as a frame read from a file (max_pixels, default
+    // the reader's), before any copy or work: a 20000^2 array was processed until killed at 6 GB.
+    const long long limit = src.read.maxPixels;
+    auto sizeChecked = [&](const py::object& o, const std::string& what) {
+        if (!py::isinstance<py::array>(o) || limit <= 0) return;
+        const py::array a = py::reinterpret_borrow<py::array>(o);
+        if (a.ndim() < 2) return;
+        const long long h = static_cast<long long>(a.shape(a.ndim() - 2)), w = static_cast<long long>(a.shape(a.ndim() - 1));
+        if (h > 0 && w > limit / h)
+            throw ParameterError(what + ": a frame of " + std::to_string(w) + " x " + std::to_string(h) +
+                                 " pixels is more than the limit of " + std::to_string(limit) +
+                                 " pixels a frame (max_pixels=); a footprint frame is 550 x 550");
+    };
     if (isFrames) {
         std::vector<py::object> parts;
         if (isArray) {
+            sizeChecked(inputs, "frames");
             Frame a = Frame::ensure(inputs);
             if (!a) throw py::type_error("frames must be numbers");
             if (a.ndim() == 2) parts.push_back(a);
@@ -118,7 +132,9 @@ Report fitBatch(const py::object& inputs, const py::object& params, const py::ob
         } else {
             for (const auto& o : inputs.cast<py::sequence>()) parts.push_back(py::reinterpret_borrow<py::object>(o));
         }
-        for (const auto& o : parts) {
+        for (size_t i = 0; i < parts.size(); ++i) {
+            const py::object& o = parts[i];
+            sizeChecked(o, "frame " + std::to_string(i));
             Frame a = Frame::ensure(o);
             if (!a || a.ndim() != 2) throw py::value_error("every frame must be a 2-D array of numbers");
             held.push_back(a);
@@ -180,7 +196,7 @@ void bindFootprint(py::module_& top) {
         fp::FootprintSources src;
         if (maxPixels > 0) src.read.maxPixels = maxPixels;
         if (!rawSize.is_none()) {
-            const auto wh = rawSize.cast<std::pair<int, int>>();
+            const auto wh = sizeArgument(rawSize, "raw_size");
             src.read.rawWidth = wh.first;
             src.read.rawHeight = wh.second;
         }

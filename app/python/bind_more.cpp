@@ -357,7 +357,7 @@ void bindCalibWaveform(py::module_& c) {
         const std::string featureFile = features.is_none() ? std::string() : fsPath(features);
         WaveformFit x;
         cal::CalibSources src;
-        src.givenHeightM = height.is_none() ? NAN : height.cast<double>();
+        src.givenHeightM = height.is_none() ? NAN : numberArgument(height, "height");
         src.waveform = file;
         src.features = featureFile;
         {
@@ -581,8 +581,8 @@ void bindRadiometryApply(py::module_& r) {
         if (!fit.is_none()) {
             check(rad::readFitCsv(fsPath(fit), &f, &err), err);
         } else {
-            f.k = k.cast<double>();
-            f.b = b.cast<double>();
+            f.k = numberArgument(k, "k");
+            f.b = numberArgument(b, "b");
         }
         Applied a;
         py::list keep;

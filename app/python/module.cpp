@@ -1,17 +1,77 @@
 // The laserwb Python module's entry: exceptions, the shared conversions, and the families'
 // submodules (bind_footprint.cpp, bind_slr.cpp, bind_more.cpp). See bind.hpp.
 #include <algorithm>
+#include <climits>
 #include <cmath>
 
 #include "bind.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
+#include "core/common/image_header.hpp"
 #include "core/common/text.hpp"
 #include "lwb_version.hpp"
 
 namespace lwb::py {
 
 using namespace pybind11::literals;
+
+namespace {
+std::string shown(const py::handle& v) {
+    std::string r = py::repr(v);
+    if (r.size() > 60) r = r.substr(0, 57) + "...";
+    return std::string(py::str(py::type::handle_of(v).attr("__name__"))) + " " + r;
+}
+}  // namespace
+
+double numberArgument(const py::object& v, const char* name) {
+    const bool number = !py::isinstance<py::bool_>(v) &&
+                        (py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v) || py::hasattr(v, "__float__")) &&
+                        !py::isinstance<py::str>(v);
+    if (!number) throw py::type_error(std::string(name) + " must be a number, not " + shown(v));
+    double d = 0;
+    try {
+        d = v.cast<double>();
+    } catch (const py::cast_error&) {
+        throw py::type_error(std::string(name) + " must be a number, not " + shown(v));
+    }
+    if (!std::isfinite(d)) throw py::value_error(std::string(name) + " must be finite, not " + core::formatShortest(d));
+    return d;
+}
+
+std::pair<int, int> sizeArgument(const py::object& v, const char* name) {
+    if (!py::isinstance<py::sequence>(v) || py::isinstance<py::str>(v) || py::len(v) != 2)
+        throw py::type_error(std::string(name) + " must be (width, height), not " + shown(v));
+    const py::sequence s = v.cast<py::sequence>();
+    int wh[2] = {0, 0};
+    for (int i = 0; i < 2; ++i) {
+        const py::object e = s[static_cast<size_t>(i)];
+        if (!py::isinstance<py::int_>(e) || py::isinstance<py::bool_>(e))
+            throw py::type_error(std::string(name) + " must be (width, height) of ints, not " + shown(v));
+        const long long n = e.cast<long long>();
+        if (n < 1 || n > INT_MAX)
+            throw py::value_error(std::string(name) + ": width and height must be in [1, " + std::to_string(INT_MAX) + "], not " +
+                                  std::to_string(n));
+        wh[i] = static_cast<int>(n);
+    }
+    return {wh[0], wh[1]};
+}
+
+std::vector<std::pair<double, double>> pointsArgument(const py::object& v, const char* name) {
+    if (!py::isinstance<py::sequence>(v) || py::isinstance<py::str>(v))
+        throw py::type_error(std::string(name) + " must be a list of (x, y), not " + shown(v));
+    std::vector<std::pair<double, double>> out;
+    for (const py::handle h : v.cast<py::sequence>()) {
+        const py::object e = py::reinterpret_borrow<py::object>(h);
+        if (!py::isinstance<py::sequence>(e) || py::isinstance<py::str>(e) || py::len(e) != 2)
+            throw py::type_error(std::string(name) + " must be a list of (x, y), not one holding " + shown(e));
+        const py::sequence s = e.cast<py::sequence>();
+        for (const py::handle c : s)
+            if (py::isinstance<py::str>(c) || py::isinstance<py::bool_>(c) || !py::hasattr(c, "__float__"))
+                throw py::type_error(std::string(name) + " must be a list of (x, y) numbers, not one holding " + shown(e));
+        out.emplace_back(numberArgument(s[0], name), numberArgument(s[1], name));
+    }
+    return out;
+}
 
 std::string valueText(const py::handle& v) {
     if (v.is_none()) return "null";
@@ -71,8 +131,15 @@ cv::Mat imageArgument(const py::object& image, const std::string& what, long lon
         check(read(path, &m, &err, maxPixels), err);
         return m;
     }
-    py::array a = py::module_::import("numpy").attr("ascontiguousarray")(image);
+    py::array a = py::reinterpret_borrow<py::array>(image);
     if (a.ndim() != 2) throw py::value_error(what + ": a 2-D array (rows, columns), not " + std::to_string(a.ndim()) + "-D");
+    // The limit of an image read from a file applies to an array too (checked before any copy).
+    const long long limit = maxPixels > 0 ? maxPixels : core::kMaxImagePixels;
+    const long long rows = static_cast<long long>(a.shape(0)), cols = static_cast<long long>(a.shape(1));
+    if (rows > INT_MAX || cols > INT_MAX || (rows > 0 && cols > limit / rows))
+        throw ParameterError(what + ": " + std::to_string(cols) + " x " + std::to_string(rows) +
+                             " pixels is more than the limit of " + std::to_string(limit) + " pixels (max_pixels=)");
+    a = py::module_::import("numpy").attr("ascontiguousarray")(image);
     const char kind = a.dtype().kind();
     const size_t size = static_cast<size_t>(a.dtype().itemsize());
     const int type = kind == 'u' && size == 1   ? CV_8UC1

@@ -47,8 +47,18 @@ bool regularFileProblem(const std::string& path, std::string* error, long long* 
 ///    input is refused (it would wait for typing).
 ///  - A gzip-compressed input (by its magic bytes 1f 8b, whatever its name; several members are
 ///    read one after the other) is decompressed, and maxBytes applies to what it decompresses to.
+///  - A NUL byte (after decompression) is refused where it comes, with its line: no text
+///    input holds one, and a file of zeros is not read on (sparse files, /dev/zero piped in).
+///  - Memory: the file's size once (reserved, filled in blocks); standard input is kept, so
+///    "-" holds it twice.
 bool readFileText(const std::string& path, std::string* content, std::string* error,
                   long long maxBytes = kMaxTextInputBytes);
+/// "FILE:LINE: binary data (NUL byte): not a text file (not read further)": the one message of
+/// readFileText and LineReader for a NUL byte in a text input.
+std::string nulByteMessage(const std::string& path, long line);
+/// readFileText for binary inputs (raw and PGM frames, images read whole): NUL bytes are data.
+bool readFileBytes(const std::string& path, std::string* content, std::string* error,
+                   long long maxBytes = kMaxTextInputBytes);
 
 /// "-": standard input (or output, for an output).
 inline bool isStandardStream(const std::string& path) { return path == "-"; }

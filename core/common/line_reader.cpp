@@ -145,6 +145,14 @@ bool LineReader::fill() {
     }
 }
 
+// A NUL byte in a line: readFileText's refusal, with the same message (the streamed and the
+// whole read of a file say the same).
+bool LineReader::noNul(std::string_view line) {
+    if (!std::memchr(line.data(), 0, line.size())) return true;
+    error_ = nulByteMessage(path_, line_);
+    return false;
+}
+
 bool LineReader::next(std::string_view* line) {
     if (!error_.empty()) return false;
     if (!started_) {
@@ -166,7 +174,7 @@ bool LineReader::next(std::string_view* line) {
             *line = std::string_view(buf_).substr(pos_, end - pos_);
             pos_ = end + 1;
             ++line_;
-            return true;
+            return noNul(*line);
         }
         if (buf_.size() - pos_ > maxLineBytes) {
             error_ = path_ + ":" + std::to_string(line_ + 1) + ": a line longer than " + std::to_string(maxLineBytes >> 20) +
@@ -179,7 +187,7 @@ bool LineReader::next(std::string_view* line) {
             *line = std::string_view(buf_).substr(pos_);  // the last line, without a line end
             pos_ = buf_.size();
             ++line_;
-            return true;
+            return noNul(*line);
         }
     }
 }

@@ -25,7 +25,8 @@ public:
     /// The next line without its line end: LF, CRLF, or CR alone in a file whose first block has
     /// no LF (an old Mac text; readFileText's plainText rule). A UTF-8 byte-order mark at the start
     /// is dropped. False at the end of the input, or on an error (error() not empty). The view
-    /// holds until the next call. A line longer than maxLineBytes is an error naming its line.
+    /// holds until the next call. A line longer than maxLineBytes, or one holding a NUL byte, is
+    /// an error naming its line.
     bool next(std::string_view* line);
 
     /// The number of the line `next` gave last (1-based).
@@ -40,6 +41,7 @@ public:
 private:
     bool fill();         // more text into buf_ after pos_; false at the end or on error
     bool readRaw(char* to, size_t n, size_t* got);  // raw bytes of the file or the kept input
+    bool noNul(std::string_view line);              // false (error_ set) when the line holds a NUL byte
 
     std::string path_, error_;
     std::ifstream file_;

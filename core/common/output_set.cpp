@@ -6,6 +6,10 @@
 #include <cerrno>
 #include <climits>
 #include <dirent.h>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <map>
+#include <unordered_map>
 #include <fnmatch.h>
 #include <mutex>
 #include <set>
@@ -15,6 +19,8 @@
 #include <cstring>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "core/common/atomic_file.hpp"
 
 namespace lwb::core {
 
@@ -107,6 +113,76 @@ bool copyToFd(const std::string& path, int fd, std::string* why) {
     return ok;
 }
 
+
+// A commit's journal, one in each folder the commit changes: ".lwb-journal-PID-ID". Each line
+// is "old\tBACKUP\tNAME" (NAME is replaced or removed by the commit and kept as BACKUP, a hard
+// link beside it) or "new\tNAME" (NAME does not exist before the commit). It is written, whole,
+// before the first rename and removed once the last one is done (the commit point). A run killed
+// in between leaves it, and the next run that writes into the folder puts every BACKUP back over
+// its NAME and removes every new NAME (rollBackJournal): the folder holds the earlier set again,
+// never a mix of two runs' files.
+std::string journalEscape(const std::string& name) {
+    std::string out;
+    for (char c : name) {
+        if (c == '\\') out += "\\\\";
+        else if (c == '\t') out += "\\t";
+        else if (c == '\n') out += "\\n";
+        else out += c;
+    }
+    return out;
+}
+
+std::string journalUnescape(const std::string& s) {
+    std::string out;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (s[i] != '\\' || i + 1 == s.size()) {
+            out += s[i];
+            continue;
+        }
+        const char c = s[++i];
+        out += c == 't' ? '\t' : c == 'n' ? '\n' : c;
+    }
+    return out;
+}
+
+// Rolls back the commit a dead process left journalled in `folder`; the journal is removed.
+// Returns how many files were put back or removed.
+int rollBackJournal(const std::string& folder, const std::string& journalName) {
+    const std::string path = folder + "/" + journalName;
+    std::string text, err;
+    FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return 0;
+    char buf[1 << 16];
+    for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
+    std::fclose(f);
+    int undone = 0;
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string line = text.substr(start, end - start);
+        start = end + 1;
+        const size_t t1 = line.find('\t');
+        if (t1 == std::string::npos) continue;
+        const std::string kind = line.substr(0, t1);
+        if (kind == "old") {
+            const size_t t2 = line.find('\t', t1 + 1);
+            if (t2 == std::string::npos) continue;
+            const std::string backup = folder + "/" + journalUnescape(line.substr(t1 + 1, t2 - t1 - 1));
+            const std::string name = folder + "/" + journalUnescape(line.substr(t2 + 1));
+            struct stat st {};
+            if (::lstat(backup.c_str(), &st) == 0 && std::rename(backup.c_str(), name.c_str()) == 0) ++undone;
+        } else if (kind == "new") {
+            const std::string name = folder + "/" + journalUnescape(line.substr(t1 + 1));
+            if (::unlink(name.c_str()) == 0) ++undone;
+        }
+    }
+    std::remove(path.c_str());
+    return undone;
+}
+
+std::atomic<long> g_backupCounter{0};
+
 }  // namespace
 
 void noteInputRead(const std::string& path) {
@@ -133,15 +209,24 @@ int removeLeftovers(const std::string& folder) {
     std::vector<std::string> names;
     while (const dirent* e = ::readdir(d)) names.emplace_back(e->d_name);
     ::closedir(d);
+    auto deadPid = [](const char* digits) {  // the PID a leftover's name starts with, when it no longer runs
+        char* end = nullptr;
+        const long pid = std::strtol(digits, &end, 10);
+        if (pid <= 0 || !end || *end != '-') return false;
+        // A process that still runs (or one we may not signal: it exists) keeps its files.
+        return !(pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+    };
+    // A commit killed half-way: its journal puts the earlier files back first (before the loop
+    // below removes the backups that hold them).
+    static const std::string kJournal = ".lwb-journal-";
+    for (const std::string& name : names)
+        if (name.compare(0, kJournal.size(), kJournal) == 0 && deadPid(name.c_str() + kJournal.size()))
+            removed += rollBackJournal(folder, name);
     for (const std::string& name : names) {
         for (const char* prefix : {".lwb-stage-", ".lwb-backup-", ".lwb-tmp-", ".lwb-stdout-"}) {
             const size_t n = std::strlen(prefix);
             if (name.compare(0, n, prefix) != 0) continue;
-            char* end = nullptr;
-            const long pid = std::strtol(name.c_str() + n, &end, 10);
-            if (pid <= 0 || !end || *end != '-') break;
-            // A process that still runs (or one we may not signal: it exists) keeps its files.
-            if (pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM) break;
+            if (!deadPid(name.c_str() + n)) break;
             const std::string path = folder + "/" + name;
             struct stat st {};
             if (::lstat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && std::remove(path.c_str()) == 0) ++removed;
@@ -165,6 +250,31 @@ bool sameFile(const std::string& a, const std::string& b) {
 }
 
 OutputSet::~OutputSet() { abandon(); }
+
+// Two runs writing a set into one folder at once would mix their files (two simulations, two
+// days' --all-passes into one out-dir): the second is refused while the first holds the lock.
+bool OutputSet::lockFolder() {
+    if (m_setFolder.empty() || m_lockFd >= 0) return true;
+    m_lockFd = ::open(m_setFolder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (m_lockFd < 0) return true;  // (a missing folder is said by the outputs' own checks)
+    if (::flock(m_lockFd, LOCK_EX | LOCK_NB) == 0) {
+        removeLeftovers(m_setFolder);  // (every time: a run killed since this process last looked)
+        return true;
+    }
+    const int e = errno;
+    ::close(m_lockFd);
+    m_lockFd = -1;
+    if (e != EWOULDBLOCK) return true;  // a file system without locks: nothing to hold
+    m_error = m_setFolder + ": another run is writing its files into this folder now; wait for it to end or choose "
+                            "another folder (nothing written)";
+    return false;
+}
+
+void OutputSet::unlockFolder() {
+    if (m_lockFd < 0) return;
+    ::close(m_lockFd);  // (releases the flock)
+    m_lockFd = -1;
+}
 
 void OutputSet::addInput(const std::string& path) {
     if (!path.empty()) m_inputs.push_back(path);
@@ -197,6 +307,7 @@ bool OutputSet::writesStandardOutput() const {
 bool OutputSet::check() {
     m_error.clear();
     m_naming = false;
+    if (!lockFolder()) return false;
     std::vector<Identity> inputs;
     for (const auto& in : m_inputs) {
         struct stat st {};
@@ -207,7 +318,7 @@ bool OutputSet::check() {
         id.ino = st.st_ino;
         inputs.push_back(id);
     }
-    std::vector<Identity> outputs;
+    std::unordered_map<std::string, size_t> outputs;  // an output's identity → its item
     static std::atomic<int> counter{0};
     bool stdoutTaken = false;
     for (auto& it : m_items) {
@@ -276,10 +387,11 @@ bool OutputSet::check() {
             m_error = p + ": cannot write in " + targetDir + ": " + std::strerror(errno) + " (nothing written)";
             return false;
         }
-        static std::vector<std::string> cleaned;  // (each folder once per process)
-        if (std::find(cleaned.begin(), cleaned.end(), targetDir) == cleaned.end()) {
-            removeLeftovers(targetDir);
-            cleaned.push_back(targetDir);
+        {
+            static std::mutex cleanedMutex;  // (sets are checked on several threads in the workbench)
+            static std::set<std::string> cleaned;  // each folder once per process
+            std::lock_guard<std::mutex> lock(cleanedMutex);
+            if (cleaned.insert(targetDir).second) removeLeftovers(targetDir);
         }
         for (const auto& in : inputs)
             if (id.same(in)) {
@@ -295,13 +407,14 @@ bool OutputSet::check() {
                 return false;
             }
         }
-        for (size_t k = 0; k < outputs.size(); ++k)
-            if (id.same(outputs[k])) {
-                m_error = "two outputs name the same file: " + m_items[k].path + " and " + p + " (nothing written)";
-                m_naming = true;
-                return false;
-            }
-        outputs.push_back(id);
+        // (hashed: a simulation of 10^6 shots is 10^6 outputs, not 10^12 comparisons)
+        const std::string key = id.exists ? std::to_string(id.dev) + ":" + std::to_string(id.ino) : "/" + id.canonical;
+        const auto seen = outputs.emplace(key, static_cast<size_t>(&it - m_items.data()));
+        if (!seen.second) {
+            m_error = "two outputs name the same file: " + m_items[seen.first->second].path + " and " + p + " (nothing written)";
+            m_naming = true;
+            return false;
+        }
         it.staging = targetDir + "/.lwb-stage-" + std::to_string(::getpid()) + "-" + std::to_string(++counter) + "-" +
                      baseOf(it.target);
     }
@@ -356,10 +469,11 @@ bool OutputSet::readyToCommit() {
     return true;
 }
 
-// Earlier outputs of the same kind in the set's folder that this run did not write again: each
-// kept aside (setAside) and removed. False with m_error.
-bool OutputSet::removeStaleOutputs(const std::function<bool(const std::string&)>& setAside) {
-    std::vector<std::string> names;
+// Earlier outputs of the same kind in the set's folder that this run does not write again
+// (removed by the commit).
+std::vector<std::string> OutputSet::staleOutputs() const {
+    std::vector<std::string> names, stale;
+    if (m_setFolder.empty() || m_stalePatterns.empty()) return stale;
     if (DIR* d = ::opendir(m_setFolder.c_str())) {
         while (const dirent* e = ::readdir(d)) names.emplace_back(e->d_name);
         ::closedir(d);
@@ -379,35 +493,68 @@ bool OutputSet::removeStaleOutputs(const std::function<bool(const std::string&)>
         struct stat st {};
         if (!match || ::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
         if (ours.count({st.st_dev, st.st_ino}) || !inputReadAs(path).empty()) continue;
-        if (!setAside(path) || ::unlink(path.c_str()) != 0) {
-            m_error = "cannot remove the earlier output " + path + ": " + std::strerror(errno) + " (nothing written)";
-            return false;
-        }
+        stale.push_back(path);
     }
-    return true;
+    return stale;
 }
 
 bool OutputSet::commit() {
     if (!readyToCommit()) return false;
-    // Every file replaced or removed keeps a hard link (a backup) until the end, so that a failure
-    // half-way through can put it back; a new file is removed again. Order: the manifest's old
-    // file first, the new files, the stale files of the set, the manifest last.
+    // The plan, journalled before anything moves (see rollBackJournal): every file replaced or
+    // removed keeps a hard link (a backup) until the end, so that a failure half-way through, or
+    // the next run after a kill, can put it back; a new file is removed again. Order: the
+    // manifest's old file first, the new files, the stale files of the set, the manifest last.
     const std::string faultName = faultInjectedName("rename"), killName = faultInjectedName("kill");
+    const Item* manifest = nullptr;
+    for (const auto& it : m_items)
+        if (!m_manifest.empty() && it.path == m_manifest) manifest = &it;
+    const std::vector<std::string> stale = staleOutputs();
+    std::map<std::string, std::string> backupOf;  // target → its backup
+    std::map<std::string, std::string> journals;  // folder → journal text
+    auto plan = [&](const std::string& target) {
+        struct stat st {};
+        std::string& j = journals[folderOf(target)];
+        if (::lstat(target.c_str(), &st) != 0) {
+            j += "new\t" + journalEscape(baseOf(target)) + "\n";
+            return;
+        }
+        const std::string b = ".lwb-backup-" + std::to_string(::getpid()) + "-" + std::to_string(g_backupCounter++) + "-" +
+                              baseOf(target);
+        backupOf[target] = folderOf(target) + "/" + b;
+        j += "old\t" + journalEscape(b) + "\t" + journalEscape(baseOf(target)) + "\n";
+    };
+    for (const auto& it : m_items)
+        if (!it.toStdout) plan(it.target);
+    for (const std::string& path : stale) plan(path);
+    static std::atomic<long> journalCounter{0};
+    const std::string journalName = ".lwb-journal-" + std::to_string(::getpid()) + "-" + std::to_string(journalCounter++);
+    std::vector<std::string> journalFiles;
+    auto removeJournals = [&] {
+        for (const std::string& j : journalFiles) std::remove(j.c_str());
+    };
+    for (const auto& [folder, text] : journals) {
+        std::string err;
+        journalFiles.push_back(folder + "/" + journalName);
+        if (!writeFileAtomic(journalFiles.back(), text, &err)) {
+            m_error = "cannot start writing the outputs in " + folder + ": " + err + " (nothing written)";
+            removeJournals();
+            abandon();
+            return false;
+        }
+    }
     std::vector<std::pair<std::string, std::string>> restore;  // (backup, original)
     std::vector<std::string> created;
-    int backupCount = 0;
     auto setAside = [&](const std::string& target) {  // false when it cannot be kept
-        struct stat st {};
-        if (::lstat(target.c_str(), &st) != 0) return true;  // nothing there
-        const std::string b = folderOf(target) + "/.lwb-backup-" + std::to_string(::getpid()) + "-" +
-                              std::to_string(backupCount++) + "-" + baseOf(target);
-        if (::link(target.c_str(), b.c_str()) != 0) return false;
-        restore.emplace_back(b, target);
+        const auto b = backupOf.find(target);
+        if (b == backupOf.end()) return true;  // nothing there
+        if (::link(target.c_str(), b->second.c_str()) != 0) return false;
+        restore.emplace_back(b->second, target);
         return true;
     };
     auto put = [&](const Item& it) {
-        const bool existed = ::access(it.target.c_str(), F_OK) == 0;
-        if (existed && !setAside(it.target)) {
+        // (the manifest's old file was set aside and removed first: nothing to keep then)
+        const bool existed = backupOf.count(it.target) > 0, present = existed && ::access(it.target.c_str(), F_OK) == 0;
+        if (present && !setAside(it.target)) {
             m_error = "cannot write " + it.path + ": cannot keep the file it replaces: " + std::strerror(errno) +
                       " (nothing written)";
             return false;
@@ -426,17 +573,18 @@ bool OutputSet::commit() {
         if (!existed) created.push_back(it.target);
         return true;
     };
-    const Item* manifest = nullptr;
-    for (const auto& it : m_items)
-        if (!m_manifest.empty() && it.path == m_manifest) manifest = &it;
     bool ok = true;
-    if (manifest && ::access(manifest->target.c_str(), F_OK) == 0) {
+    if (manifest && backupOf.count(manifest->target)) {
         ok = setAside(manifest->target) && ::unlink(manifest->target.c_str()) == 0;
         if (!ok) m_error = "cannot replace " + manifest->path + ": " + std::strerror(errno) + " (nothing written)";
     }
     for (size_t i = 0; ok && i < m_items.size(); ++i)
         if (!m_items[i].toStdout && &m_items[i] != manifest) ok = put(m_items[i]);
-    if (ok && !m_setFolder.empty() && !m_stalePatterns.empty()) ok = removeStaleOutputs(setAside);
+    for (size_t i = 0; ok && i < stale.size(); ++i)
+        if (!setAside(stale[i]) || ::unlink(stale[i].c_str()) != 0) {
+            m_error = "cannot remove the earlier output " + stale[i] + ": " + std::strerror(errno) + " (nothing written)";
+            ok = false;
+        }
     if (ok && manifest) ok = put(*manifest);
     auto rollBack = [&] {
         for (const std::string& c : created) std::remove(c.c_str());
@@ -446,6 +594,7 @@ bool OutputSet::commit() {
             if (sameFile(r->first, r->second)) std::remove(r->first.c_str());
             else std::rename(r->first.c_str(), r->second.c_str());
         }
+        removeJournals();
         abandon();
     };
     if (!ok) {
@@ -467,11 +616,13 @@ bool OutputSet::commit() {
         rollBack();
         return false;
     }
+    removeJournals();  // the commit point: from here on the new set stands
     for (const auto& r : restore) std::remove(r.first.c_str());
     for (const auto& it : m_items)
         if (it.toStdout) std::remove(it.staging.c_str());
     m_items.clear();
     m_checked = false;
+    unlockFolder();
     return ok;
 }
 
@@ -489,6 +640,7 @@ void OutputSet::abandon() {
         if (!it.staging.empty()) std::remove(it.staging.c_str());
     m_items.clear();
     m_checked = false;
+    unlockFolder();
 }
 
 FolderForOutputs::FolderForOutputs(std::string dir) : m_dir(std::move(dir)) {

@@ -35,7 +35,10 @@ public:
     /// beside a mix of old and new files; files of `folder` whose names match one of
     /// `stalePatterns` (fnmatch, e.g. "pass[0-9]*.csv"), are not outputs of this run and are not
     /// inputs of it are earlier outputs of the same kind: removed before the manifest is renamed.
-    /// A failure restores every file replaced or removed.
+    /// A failure restores every file replaced or removed; a run killed during its commit leaves
+    /// a journal from which the next run writing into the folder restores the earlier set.
+    /// check() locks the folder (flock) until the set is committed or abandoned: a second run
+    /// writing a set into it meanwhile is refused.
     void setManifest(const std::string& manifest, const std::string& folder, std::vector<std::string> stalePatterns);
     /// Checks every output (see the file comment). Call before any computation. False with error().
     bool check();
@@ -59,7 +62,9 @@ public:
 
 private:
     bool readyToCommit();
-    bool removeStaleOutputs(const std::function<bool(const std::string&)>& setAside);
+    std::vector<std::string> staleOutputs() const;
+    bool lockFolder();
+    void unlockFolder();
     struct Item {
         bool toStdout = false;  ///< "-"
         std::string path;     ///< as given
@@ -72,6 +77,7 @@ private:
     std::vector<std::string> m_stalePatterns;
     std::string m_error;
     bool m_checked = false, m_naming = false;
+    int m_lockFd = -1;  ///< the set's folder, locked (flock) from check() to the end of commit()
 };
 
 /// Every file this process reads as an input is noted here (readFileText, readFileHead, image

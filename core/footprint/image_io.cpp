@@ -43,7 +43,7 @@ ImageReadResult readRaw(const std::string& path, const ImageReadParams& p) {
                               " pixels is more than the limit of " + std::to_string(p.maxPixels) +
                               " pixels (raise it with --max-pixels)");
     std::string bytes, err;
-    if (!readFileText(path, &bytes, &err)) return fail(path, err.substr(err.find(": ") + 2));
+    if (!readFileBytes(path, &bytes, &err)) return fail(path, err.substr(err.find(": ") + 2));
     const size_t want = size_t(p.rawWidth) * size_t(p.rawHeight) * 2;
     if (bytes.size() != want)
         return fail(path, "raw file holds " + std::to_string(bytes.size()) + " bytes, but " +
@@ -87,7 +87,7 @@ ImageReadResult readFrame(const std::string& path, const ImageReadParams& params
         cv::Mat m;
         try {
             std::string bytes;
-            if (!readFileText(path, &bytes, &err)) return fail(path, err.substr(std::min(err.size(), path.size() + 2)));
+            if (!readFileBytes(path, &bytes, &err)) return fail(path, err.substr(std::min(err.size(), path.size() + 2)));
             if (const std::string why = imageSizeProblem(bytes, path, params.maxPixels); !why.empty()) {
                 r.error = why;
                 return r;

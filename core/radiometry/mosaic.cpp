@@ -390,7 +390,7 @@ std::string mosaicMemoryProblem(const std::vector<std::string>& paths, double bu
         if (!readFileHead(p, 1 << 16, &bytes, &err)) return {};  // the decoder says why
         ImageHeader h = readImageHeader(bytes);
         if (!h.complete && bytes.size() == (1u << 16)) {
-            if (!readFileText(p, &bytes, &err)) return {};
+            if (!readFileBytes(p, &bytes, &err)) return {};
             h = readImageHeader(bytes);
         }
         if (!h.complete) return {};

@@ -325,17 +325,19 @@ ApplyResult applyReflectance(const cv::Mat& dn, const ReflectanceFit& fit, const
         res.error = "the per-pixel uncertainty needs the standard errors of K and B";
         return res;
     }
+    // One row in double at a time (a whole-image double copy was 8 bytes a pixel: 2 GiB of the
+    // 4.8 GB a 16384^2 image took); the output and the input are the only images held.
     cv::Mat f;
     try {
-        dn.convertTo(f, CV_64F);
         res.reflectance.create(dn.size(), CV_32FC1);
         if (unc) res.uncertainty.create(dn.size(), CV_32FC1);
     } catch (const cv::Exception& e) {
         res.error = std::string("cannot allocate the reflectance image: ") + e.what();
         return res;
     }
-    for (int y = 0; y < f.rows; ++y) {
-        const double* in = f.ptr<double>(y);
+    for (int y = 0; y < dn.rows; ++y) {
+        dn.row(y).convertTo(f, CV_64F);
+        const double* in = f.ptr<double>(0);
         float* out = res.reflectance.ptr<float>(y);
         float* uo = unc ? res.uncertainty.ptr<float>(y) : nullptr;
         for (int x = 0; x < f.cols; ++x) {
@@ -366,7 +368,7 @@ ApplyResult applyReflectance(const cv::Mat& dn, const ReflectanceFit& fit, const
             }
         }
     }
-    const size_t total = f.total();
+    const size_t total = dn.total();
     if (res.belowRange || res.aboveRange)
         res.warnings.push_back(std::to_string(res.belowRange) + " pixels below and " + std::to_string(res.aboveRange) +
                                " above the linear range " + formatDouble(params.dnMin, 6) + ".." +
@@ -551,7 +553,14 @@ bool writeImage(const std::string& path, const cv::Mat& image, std::string* erro
         *error = path + ": cannot encode: " + e.what();
         return false;
     }
-    return writeFileAtomic(path, std::string(buf.begin(), buf.end()), error);
+    // Written from the encoder's buffer (a string copy of it was a third image-sized block).
+    AtomicFile f(path);
+    if (f.ok()) f.stream().write(reinterpret_cast<const char*>(buf.data()), static_cast<std::streamsize>(buf.size()));
+    if (!f.ok() || !f.commit()) {
+        *error = f.error();
+        return false;
+    }
+    return true;
 }
 
 bool writeFloatTiff(const std::string& path, const cv::Mat& image, std::string* error) {
@@ -569,7 +578,7 @@ bool writeFloatTiff(const std::string& path, const cv::Mat& image, std::string* 
 
 bool readImageAnyDepth(const std::string& path, cv::Mat* out, std::string* error, long long maxPixels) {
     std::string bytes;
-    if (!readFileText(path, &bytes, error)) return false;
+    if (!readFileBytes(path, &bytes, error)) return false;
     if (const std::string why = imageSizeProblem(bytes, path, maxPixels); !why.empty()) {
         *error = why;
         return false;

@@ -93,11 +93,13 @@ struct PassRunResult {
 /// Two parallel tracks in a track's residuals: "" or what was found. The sorted residuals are
 /// cut at their widest gap with at least 10 % (and 5) of them on each side; two tracks when the
 /// gap is more than 8 times the larger of the two sides' standard deviations (one Gaussian track
-/// of 50 points or more stays below 2: test parallelTracksAreFound).
+/// of 50 points or more stays below 2: test parallelTracksAreFound). With noise between the
+/// tracks (no empty gap), a second dense window of the main track's width beside it, parted
+/// from it by a sparse valley and standing 5 times above the noise (see pass_run.cpp).
 std::string parallelTracks(const std::vector<double>& residuals);
 
-/// The fewest points the binary image must find on a track that recovers more points than it
-/// found, unless the track stands kMinTrackSeparation times above the noise (judgeRun).
+/// The fewest points the binary image must find on a track, unless the track stands
+/// kMinTrackSeparation times above the noise (judgeRun).
 inline constexpr size_t kMinImagePoints = 10;
 inline constexpr double kMinTrackSeparation = 20;
 
@@ -110,8 +112,9 @@ double trackSeparation(const PostfitResult& post);
 
 /// Whether a pass's result can be trusted, judged the same way wherever it is run (PassTask):
 /// - points accepted: the screening's doubt (no scale showed a clear track), or a track resting
-///   on fewer than kMinImagePoints image points with more recovered around them that does not
-///   stand kMinTrackSeparation above the noise (not on a filtered pass), or two parallel tracks in the post-fit's kept residuals;
+///   on fewer than kMinImagePoints image points (recovered around them or not) that does not
+///   stand kMinTrackSeparation above the noise (not on a filtered pass), or two parallel tracks
+///   in the post-fit's kept residuals;
 /// - nothing accepted: doubtful when no scale showed a clear track (a signal too sparse for the
 ///   method), else "no signal found" is the answer and not a doubt.
 /// A doubtful result loses its normal points (*postNote says why). Returns the doubt ("" when none).

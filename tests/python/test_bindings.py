@@ -309,6 +309,36 @@ def test_results_are_read_only_and_arguments_checked(data):
         laserwb.footprint.fit_batch([np.ones((32, 32), np.float32)] * 2, names=[1, None])
 
 
+def test_arguments_are_typed_errors_naming_them():
+    """Issue 41: pybind11's "Unable to cast Python instance" for k='x' and for a size or centres
+    of the wrong kind; a TypeError or ValueError naming the argument now."""
+    img = np.full((8, 8), 100.0, np.float32)
+    with pytest.raises(TypeError, match="k must be a number, not str 'x'"):
+        laserwb.radiometry.apply(img, k="x", b=0.0)
+    with pytest.raises(TypeError, match="b must be a number"):
+        laserwb.radiometry.apply(img, k=1.0, b=[1])
+    with pytest.raises(ValueError, match="k must be finite"):
+        laserwb.radiometry.apply(img, k=float("nan"), b=0.0)
+    assert laserwb.radiometry.apply(img, k=np.float64(0.5), b=1).reflectance[0, 0] == pytest.approx(51.0)
+    with pytest.raises(TypeError, match="raw_size must be"):
+        laserwb.footprint.fit_batch([np.ones((32, 32), np.float32)], raw_size="550x550")
+    with pytest.raises(TypeError, match="centres must be a list of"):
+        laserwb.footprint.fit_batch([np.ones((32, 32), np.float32)], centres=[(1, "a")])
+
+
+def test_arrays_have_the_files_pixel_limit():
+    """Issue 41: footprint.fit on a 20000^2 array ran until killed at 6 GB (an array had no pixel
+    limit). An array is held to the limit of a frame read from a file, before any work or copy;
+    max_pixels= raises it as for files. The radiometry arrays likewise (max_pixels=)."""
+    big = np.zeros((4100, 4100), np.uint16)  # 16.8 Mpx, over the footprint frame limit of 2^24
+    with pytest.raises(laserwb.ParameterError, match="more than the limit of 16777216 pixels"):
+        laserwb.footprint.fit(big)
+    with pytest.raises(laserwb.ParameterError, match="max_pixels"):
+        laserwb.footprint.fit_batch(big[np.newaxis, :, :])
+    with pytest.raises(laserwb.ParameterError, match="more than the limit of 1000 pixels"):
+        laserwb.radiometry.apply(np.ones((40, 40), np.float32), k=1.0, b=0.0, max_pixels=1000)
+
+
 def test_one_run_thread_counts_are_checked():
     """The scale search's threads belong to the run and are checked as the CLI checks --threads."""
     with pytest.raises(ValueError):
