@@ -408,6 +408,26 @@ void FootprintController::setNote(int index, const QString& note) {
     emit shotsChanged(index, index);
 }
 
+void FootprintController::applyReviews(const std::vector<Review>& reviews) {
+    int first = count(), last = -1;
+    bool verdicts = false;
+    for (const Review& r : reviews) {
+        if (r.index < 0 || r.index >= count()) continue;
+        Shot& s = m_shots[size_t(r.index)];
+        if (r.setVerdict) {
+            s.overridden = true;
+            s.overrideVerdict = r.verdict;
+            verdicts = true;
+        }
+        s.note = r.note;
+        first = std::min(first, r.index);
+        last = std::max(last, r.index);
+    }
+    if (last < first) return;
+    emit shotsChanged(first, last);
+    if (verdicts) emit countsChanged();
+}
+
 FootprintController::Counts FootprintController::counts() const {
     Counts c;
     for (const Shot& s : m_shots) {

@@ -395,8 +395,8 @@ void FootprintWorkspace::wireController() {
         }
     });
     connect(m_controller, &FootprintController::rejudgeFinished, this, &FootprintWorkspace::refreshTrend);
-    connect(m_controller, &FootprintController::shotsAppended, this, [this](int, int) {
-        applyPendingOverrides();
+    connect(m_controller, &FootprintController::shotsAppended, this, [this](int first, int last) {
+        applyPendingOverrides(first, last);
         if (!m_table->currentIndex().isValid() && m_proxy->rowCount() > 0) m_table->selectRow(0);
     });
     connect(m_controller, &FootprintController::shotsReset, this, [this] {
@@ -1006,7 +1006,8 @@ bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, 
         m_display->setSettings(ds);
         m_colorMap->setCurrentIndex(std::clamp(disp["colors"].toInt(1), 0, m_colorMap->count() - 1));
     }
-    m_pendingOverrides = ov;
+    m_pendingOverrides.clear();
+    for (auto it = ov.begin(); it != ov.end(); ++it) m_pendingOverrides.insert(it.key(), it.value().toObject());
     m_pendingCurrent = state["current_key"].toString();
     QStringList inputs;
     for (const auto& v : state["inputs"].toArray()) inputs << v.toString();
@@ -1022,23 +1023,26 @@ bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, 
     return true;
 }
 
-void FootprintWorkspace::applyPendingOverrides() {
-    for (int i = 0; !m_pendingOverrides.isEmpty() && i < m_controller->count(); ++i) {
-        const Shot& s = *m_controller->shot(i);
-        const QString key = overrideKey(s);
-        if (!m_pendingOverrides.contains(key)) continue;
-        const QJsonObject e = m_pendingOverrides[key].toObject();
-        if (e.contains("verdict")) {
-            Verdict v = Verdict::Good;
-            parseVerdict(e["verdict"].toString().toStdString(), &v);
-            m_controller->setOverride(i, v, e["note"].toString());
-        } else {
-            m_controller->setNote(i, e["note"].toString());
+void FootprintWorkspace::applyPendingOverrides(int first, int last) {
+    if (last < 0 || last >= m_controller->count()) last = m_controller->count() - 1;
+    first = std::max(first, 0);
+    std::vector<FootprintController::Review> reviews;
+    for (int i = first; !m_pendingOverrides.isEmpty() && i <= last; ++i) {
+        const auto it = m_pendingOverrides.constFind(overrideKey(*m_controller->shot(i)));
+        if (it == m_pendingOverrides.constEnd()) continue;
+        FootprintController::Review r;
+        r.index = i;
+        r.note = it->value("note").toString();
+        if (it->contains("verdict")) {
+            r.setVerdict = true;
+            parseVerdict((*it)["verdict"].toString().toStdString(), &r.verdict);
         }
-        m_pendingOverrides.remove(key);
+        reviews.push_back(r);
+        m_pendingOverrides.erase(it);
     }
+    m_controller->applyReviews(reviews);
     // The session's current shot, once it has arrived (after its override: it decides the view).
-    for (int i = 0; !m_pendingCurrent.isEmpty() && i < m_controller->count(); ++i) {
+    for (int i = first; !m_pendingCurrent.isEmpty() && i <= last; ++i) {
         if (overrideKey(*m_controller->shot(i)) != m_pendingCurrent) continue;
         m_pendingCurrent.clear();
         selectRow(i);

@@ -4,6 +4,7 @@
 // view, the parameter panel, and the trend plots. The review loop: filter, then A / R / N
 // (accept, reject, next unreviewed) and E (note) by keyboard; every verdict and note is an
 // undoable command on the workspace's undo stack (undoStackOf).
+#include <QHash>
 #include <QJsonObject>
 #include <QWidget>
 
@@ -115,9 +116,9 @@ private:
     void commitNote();
 
 public:
-    /// Applies session overrides (and the session's current shot) to the rows that have arrived
-    /// (called as rows arrive).
-    void applyPendingOverrides();
+    /// Applies session overrides (and the session's current shot) to the rows first..last that
+    /// have arrived (last -1: every row; called as rows arrive, for the rows that arrived).
+    void applyPendingOverrides(int first = 0, int last = -1);
 
 private:
     FootprintController* m_controller;
@@ -142,7 +143,7 @@ private:
     QCustomPlot *m_plotX, *m_plotY, *m_plotPointing;
     QLabel* m_trendSummary;
     ShotDetail m_detail;
-    QJsonObject m_pendingOverrides;  // from a session, applied when rows arrive
+    QHash<QString, QJsonObject> m_pendingOverrides;  // from a session (by shot key), applied when rows arrive
     QString m_pendingCurrent;        // from a session: key of the shot to make current
     cv::Mat m_frame;                 // full frame of the current shot (when it is one)
     QString m_frameFile;

@@ -98,49 +98,109 @@ std::string JsonParseResult::where(const std::vector<std::string>& path) const {
     return source + ":" + lineCol(text, at) + ": ";
 }
 
-JsonParseResult parseJson(std::string_view text, const std::string& source) {
-    JsonParseResult r;
-    r.source = source;
-    r.text = std::string(text);
-    // Open containers: an object's keys so far, or an array's element count; with them the
-    // path of the member being read, for the position of a duplicate key.
-    struct Open {
+namespace {
+struct NumberOverflow {
+    std::string text;
+};
+
+// Builds the document as nlohmann's own DOM parser does, with the checks of parseJson (depth,
+// duplicate keys with the member's path), but appends an object's members to its vector
+// directly: ordered_json's insertion looked every new key up in the members so far, so an
+// object of 10^5 members (a session's overrides) took minutes. Duplicates are found by a set.
+class DomBuilder {
+public:
+    Json root;
+
+    bool null() { return value(Json(nullptr)); }
+    bool boolean(bool v) { return value(Json(v)); }
+    bool number_integer(Json::number_integer_t v) { return value(Json(v)); }
+    bool number_unsigned(Json::number_unsigned_t v) { return value(Json(v)); }
+    bool number_float(Json::number_float_t v, const Json::string_t& s) {
+        if (!std::isfinite(v)) throw NumberOverflow{s};  // (the DOM parser's out_of_range 406)
+        return value(Json(v));
+    }
+    bool string(Json::string_t& v) { return value(Json(std::move(v))); }
+    bool binary(Json::binary_t& v) { return value(Json::binary(std::move(v))); }
+    bool start_object(std::size_t) { return open(Json::object(), true); }
+    bool end_object() { return close(); }
+    bool start_array(std::size_t) { return open(Json::array(), false); }
+    bool end_array() { return close(); }
+    bool key(Json::string_t& k) {
+        Level& l = m_levels.back();
+        l.key = k;
+        if (!l.keys.insert(k).second) throw DuplicateKey{pathHere()};
+        auto& members = static_cast<Json::object_t::Container&>(m_stack.back()->get_ref<Json::object_t&>());
+        members.emplace_back(k, nullptr);
+        m_member = &members.back().second;
+        return true;
+    }
+    bool parse_error(std::size_t, const std::string& token, const nlohmann::detail::exception& e) {
+        // (nlohmann reports a float beyond double range here too, as out_of_range 406)
+        if (const auto* pe = dynamic_cast<const Json::parse_error*>(&e)) throw *pe;
+        throw NumberOverflow{token};
+    }
+
+private:
+    struct Level {
         bool object;
         std::set<std::string> keys;
         std::string key;
         long count = 0;
     };
-    std::vector<Open> open;
-    auto pathHere = [&]() {
+    std::vector<Json*> m_stack;
+    std::vector<Level> m_levels;
+    Json* m_member = nullptr;
+
+    std::vector<std::string> pathHere() const {
         std::vector<std::string> path;
-        for (const Open& o : open) path.push_back(o.object ? o.key : "[" + std::to_string(o.count) + "]");
+        for (const Level& l : m_levels) path.push_back(l.object ? l.key : "[" + std::to_string(l.count) + "]");
         return path;
-    };
-    auto elementDone = [&]() {
-        if (!open.empty() && !open.back().object) ++open.back().count;
-    };
-    const Json::parser_callback_t check = [&](int depth, Json::parse_event_t event, Json& parsed) {
-        if (depth > kMaxDepth) throw TooDeep{};
-        switch (event) {
-            case Json::parse_event_t::object_start: open.push_back({true, {}, {}, 0}); break;
-            case Json::parse_event_t::array_start: open.push_back({false, {}, {}, 0}); break;
-            case Json::parse_event_t::key:
-                if (!open.empty()) {
-                    open.back().key = parsed.get<std::string>();
-                    if (!open.back().keys.insert(open.back().key).second) throw DuplicateKey{pathHere()};
-                }
-                break;
-            case Json::parse_event_t::object_end:
-            case Json::parse_event_t::array_end:
-                if (!open.empty()) open.pop_back();
-                elementDone();
-                break;
-            case Json::parse_event_t::value: elementDone(); break;
+    }
+    // Where a new value goes: the root, the end of the open array, or the member just keyed.
+    Json* place(Json&& v) {
+        if (m_stack.empty()) {
+            root = std::move(v);
+            return &root;
         }
+        Json* top = m_stack.back();
+        if (top->is_array()) {
+            top->get_ref<Json::array_t&>().push_back(std::move(v));
+            return &top->get_ref<Json::array_t&>().back();
+        }
+        *m_member = std::move(v);
+        return m_member;
+    }
+    void elementDone() {
+        if (!m_levels.empty() && !m_levels.back().object) ++m_levels.back().count;
+    }
+    bool value(Json&& v) {
+        place(std::move(v));
+        elementDone();
         return true;
-    };
+    }
+    bool open(Json&& v, bool object) {
+        if (static_cast<int>(m_stack.size()) >= kMaxDepth) throw TooDeep{};
+        m_stack.push_back(place(std::move(v)));
+        m_levels.push_back({object, {}, {}, 0});
+        return true;
+    }
+    bool close() {
+        m_stack.pop_back();
+        m_levels.pop_back();
+        elementDone();
+        return true;
+    }
+};
+}  // namespace
+
+JsonParseResult parseJson(std::string_view text, const std::string& source) {
+    JsonParseResult r;
+    r.source = source;
+    r.text = std::string(text);
     try {
-        r.value = Json::parse(text.begin(), text.end(), check);
+        DomBuilder dom;
+        Json::sax_parse(text.begin(), text.end(), &dom);
+        r.value = std::move(dom.root);
         r.ok = true;
     } catch (const Json::parse_error& e) {
         // "[json.exception.parse_error.101] parse error at line 2, column 7: syntax error ..."
@@ -156,6 +216,10 @@ JsonParseResult parseJson(std::string_view text, const std::string& source) {
         const size_t q1 = what.find('\''), q2 = q1 == std::string::npos ? q1 : what.find('\'', q1 + 1);
         const size_t at = q2 == std::string::npos ? std::string_view::npos : text.find(what.substr(q1 + 1, q2 - q1 - 1));
         r.error = source + (at == std::string_view::npos ? std::string() : ":" + lineCol(text, at)) + ": " + what;
+    } catch (const NumberOverflow& n) {  // "number overflow parsing '1e999'", where it stands
+        const size_t at = text.find(n.text);
+        r.error = source + (at == std::string_view::npos ? std::string() : ":" + lineCol(text, at)) +
+                  ": number overflow parsing '" + n.text + "'";
     } catch (const DuplicateKey& d) {
         r.value = Json();
         r.error = r.where(d.path) + "the key \"" + printableExcerpt(d.path.back()) + "\" appears twice in one object";

@@ -1,6 +1,9 @@
 // The footprint workspace under the offscreen platform: loading, live reruns, verdict counts,
 // overrides, export, sessions, and a corrupt session that must leave the state alone.
 #include <QApplication>
+#include <QJsonObject>
+#include <QJsonDocument>
+#include <QJsonArray>
 #include <QDoubleSpinBox>
 #include <QStandardPaths>
 #include <QSignalSpy>
@@ -123,6 +126,52 @@ private slots:
         QCOMPARE(c2->counts().overridden, 2);
         QCOMPARE(c2->counts().good, expectGood);
         QCOMPARE(c2->shot(39)->note, QString("last one"));
+    }
+
+    // Issue 41: a session of 10^5 overrides took 170 s to open (27 s without them): each override
+    // was its own countsChanged, and every one recounted every shot; the overrides were looked
+    // for among all the rows at each arrival of rows. Now a session's overrides arrive as one
+    // review per batch of rows: 3000 overrides (on 3000 shots, 75 ROIs in each of the 40
+    // frames) cost no more count signals than the same list opened without them, plus one a
+    // batch, and every one is applied (the note-only one too).
+    void sessionOverridesApplyInBulk() {
+        const int kShots = 3000;
+        QByteArray list = "file,center_x,center_y\n";
+        QJsonObject overrides;
+        for (int i = 0; i < kShots; ++i) {
+            const QString file = QString("shots/shot_%1.png").arg(i % 40, 6, 10, QChar('0'));
+            const int x = 8 + (i / 40) % 15, y = 8 + (i / 600);
+            list += file.toUtf8() + "," + QByteArray::number(x) + "," + QByteArray::number(y) + "\n";
+            QJsonObject e;
+            if (i != 7) e["verdict"] = "rejected";
+            e["note"] = QString("n%1").arg(i);
+            overrides[QString("%1/%2#%3,%4").arg(m_dir.path(), file).arg(x).arg(y)] = e;
+        }
+        QVERIFY(lwbtest::writeText(m_dir.path() + "/many.csv", list));
+        auto opened = [&](bool withOverrides, int* countSignals) -> int {
+            QJsonObject fp;
+            fp["inputs"] = QJsonArray{m_dir.path() + "/many.csv"};
+            if (withOverrides) fp["overrides"] = overrides;
+            QJsonObject o{{"format", "laserwb-session"}, {"version", 1}, {"workspace", "footprint"}, {"footprint", fp}};
+            const QString path = m_dir.path() + (withOverrides ? "/many_ov.json" : "/many.json");
+            if (!lwbtest::writeText(path, QJsonDocument(o).toJson())) return -1;
+            MainWindow w;
+            FootprintController* c = w.footprint()->controller();
+            QSignalSpy counts(c, &FootprintController::countsChanged);
+            QSignalSpy finished(c, &FootprintController::loadFinished);
+            QString err;
+            if (!w.openSession(path, true, &err)) return -1;
+            if (!finished.wait(120000) || !c->waitIdle(120000)) return -1;
+            *countSignals = int(counts.count());
+            if (c->count() != kShots) return -1;
+            if (withOverrides && c->shot(7)->note != "n7") return -1;
+            return c->counts().overridden;
+        };
+        int base = 0, with = 0;
+        QCOMPARE(opened(false, &base), 0);
+        QCOMPARE(opened(true, &with), kShots - 1);
+        qInfo("count signals: %d with the overrides, %d without", with, base);
+        QVERIFY2(with <= 2 * base + 20, qPrintable(QString("%1 count signals with the overrides, %2 without").arg(with).arg(base)));
     }
 
     void corruptSessionKeepsThePreviousState() {
