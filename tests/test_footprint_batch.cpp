@@ -278,6 +278,16 @@ private slots:
         QCOMPARE(clash.exitCode, 2);
         QVERIFY2(clash.err.contains("a file of this run"), qPrintable(clash.err));
         QCOMPARE(lwbtest::readAll(p("skip.csv")), remade);
+        // Issue 41: a folder where the sidecar should be was "internal error: basic_filebuf::
+        // underflow ... Is a directory". Now it is said, and the run refuses it as an output.
+        QVERIFY(QFile::remove(p("skip.csv.provenance.json")));
+        QVERIFY(QDir().mkpath(p("skip.csv.provenance.json")));
+        const auto folder = runCli(base);
+        QVERIFY2(folder.exitCode == 1 || folder.exitCode == 2, qPrintable(folder.err));
+        QVERIFY2(!folder.err.contains("internal error") && folder.err.contains("skip.csv.provenance.json: is a folder"),
+                 qPrintable(folder.err));
+        QCOMPARE(lwbtest::readAll(p("skip.csv")), remade);
+        QVERIFY(QDir(p("skip.csv.provenance.json")).removeRecursively());
     }
 
     // The sidecar: version, parameters, settings, and the SHA-256 of every input and output,

@@ -1,5 +1,7 @@
 // Footprint input: every file format, ROI extraction, and the bad inputs that must fail clearly.
 #include <QtTest>
+#include <sys/resource.h>
+#include <unistd.h>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/footprint/image_io.hpp"
@@ -29,6 +31,34 @@ class TestFootprintIo : public QObject {
     QString path(const QString& name) const { return m_dir.path() + "/" + name; }
 
 private slots:
+    // Issue 41: 2 GiB sparse inputs were read whole before their header said no. A frame file
+    // larger than any frame within the pixel limit could be (8 bytes a pixel and 1 MB) is
+    // refused from its size; a raw frame whose size is not its pixels' likewise, unread.
+    void oversizedFrameFilesRefusedUnread() {
+        const std::string big = lwbtest::str(path("sparse.png"));
+        QVERIFY(lwbtest::writeText(path("sparse.png"), QByteArray("\x89PNG\r\n\x1a\n", 8)));
+        QCOMPARE(::truncate(big.c_str(), 2LL << 30), 0);
+        struct rusage before {}, after {};
+        getrusage(RUSAGE_SELF, &before);
+        ImageReadParams p;
+        const ImageReadResult r = readFrame(big, p);
+        getrusage(RUSAGE_SELF, &after);
+        QVERIFY(!r.ok);
+        QVERIFY2(r.error.find("2147483648 bytes: larger than a frame of at most 16777216 pixels") != std::string::npos,
+                 r.error.c_str());
+        QVERIFY2(after.ru_maxrss - before.ru_maxrss < 16 * 1024, "the file was read");
+        const std::string raw = lwbtest::str(path("sparse.raw"));
+        QVERIFY(lwbtest::writeText(path("sparse.raw"), QByteArray(10, '\x01')));
+        QCOMPARE(::truncate(raw.c_str(), 1LL << 24), 0);
+        p.rawWidth = p.rawHeight = 550;
+        const ImageReadResult rr = readFrame(raw, p);
+        QVERIFY(!rr.ok);
+        QVERIFY2(rr.error.find("raw file holds 16777216 bytes, but 550x550 16-bit pixels need 605000") != std::string::npos,
+                 rr.error.c_str());
+        QFile::remove(path("sparse.png"));
+        QFile::remove(path("sparse.raw"));
+    }
+
     void everyFormatReadsTheSamePixels_data() {
         QTest::addColumn<QString>("ext");
         QTest::newRow("png") << "png";

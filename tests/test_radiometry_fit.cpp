@@ -3,6 +3,7 @@
 // certified regression (StRD "Norris"), recovery of a known line, the reflectance image as a
 // 32-bit float TIFF, and clear errors for bad input.
 #include <QtTest>
+#include <sys/resource.h>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/radiometry/reflectance.hpp"
@@ -28,6 +29,27 @@ class TestRadiometryFit : public QObject {
     QString path(const QString& n) const { return m_dir.path() + "/" + n; }
 
 private slots:
+    // Issue 41: `radiometry apply` on 16384² took 4.8 GB: applyReflectance converted the whole
+    // image to double (8 bytes a pixel) beside its float output. Now one row at a time: applying
+    // to a 4096² 16-bit image grows the process by its output (4 bytes a pixel, 64 MiB) and a
+    // row, well under the 12 bytes a pixel it took. (The first test of this program, so that its
+    // peak is the one measured; the input is touched before the measurement.)
+    void applyHoldsOnlyItsOutput() {
+        cv::Mat dn(4096, 4096, CV_16UC1);
+        cv::randu(dn, 100, 4000);
+        ReflectanceFit fit;
+        fit.k = 0.01;
+        fit.b = 1;
+        struct rusage before {}, after {};
+        getrusage(RUSAGE_SELF, &before);
+        const ApplyResult r = applyReflectance(dn, fit, ApplyParams{});
+        getrusage(RUSAGE_SELF, &after);
+        QVERIFY2(r.ok, r.error.c_str());
+        QCOMPARE(r.reflectance.at<float>(7, 9), float(0.01 * dn.at<uint16_t>(7, 9) + 1));
+        const double grownBytesPerPixel = double(after.ru_maxrss - before.ru_maxrss) * 1024 / double(dn.total());
+        QVERIFY2(grownBytesPerPixel < 6, qPrintable(QString("grew by %1 bytes a pixel").arg(grownBytesPerPixel)));
+    }
+
     // Paper 003 tables 5–7 (ALGORITHMS.md §4): measured, simulated reflectance (%) and the
     // published relative error (%). Cement 1's second row is garbled in the source and left out.
     void paperRelativeErrors_data() {

@@ -79,6 +79,18 @@ ImageReadResult readFrame(const std::string& path, const ImageReadParams& params
         if (size == 0) return fail(path, "empty file");
     }
     const std::string ext = extensionOf(path);
+    // A file larger than any frame within the pixel limit could be (8 bytes a pixel, twice the
+    // widest sample, and a megabyte of header) is refused from its size, before it is read (a
+    // 2 GiB sparse file was read whole first); a raw frame must be exactly its pixels.
+    if (!isStandardStream(path) && params.maxPixels > 0 && size > params.maxPixels * 8 + (1LL << 20))
+        return fail(path, std::to_string(size) + " bytes: larger than a frame of at most " + std::to_string(params.maxPixels) +
+                              " pixels can be (raise the limit with --max-pixels)");
+    if (!isStandardStream(path) && isRaw(ext) && params.rawWidth > 0 && params.rawHeight > 0 &&
+        size != static_cast<long long>(params.rawWidth) * params.rawHeight * 2 && params.rawWidth <= 65536 &&
+        params.rawHeight <= 65536)
+        return fail(path, "raw file holds " + std::to_string(size) + " bytes, but " + std::to_string(params.rawWidth) + "x" +
+                              std::to_string(params.rawHeight) + " 16-bit pixels need " +
+                              std::to_string(static_cast<long long>(params.rawWidth) * params.rawHeight * 2));
     ImageReadResult r;
     if (isRaw(ext)) {
         r = readRaw(path, params);

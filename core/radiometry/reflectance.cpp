@@ -577,6 +577,15 @@ bool writeFloatTiff(const std::string& path, const cv::Mat& image, std::string* 
 }
 
 bool readImageAnyDepth(const std::string& path, cv::Mat* out, std::string* error, long long maxPixels) {
+    // Larger than an image within the pixel limit could be (8 bytes a pixel and a megabyte of
+    // header): refused from its size, before it is read (a sparse file was read whole first).
+    long long size = 0;
+    if (!isStandardStream(path) && !regularFileProblem(path, nullptr, &size) && maxPixels > 0 &&
+        size > maxPixels * 8 + (1LL << 20)) {
+        *error = path + ": " + std::to_string(size) + " bytes: larger than an image of at most " + std::to_string(maxPixels) +
+                 " pixels can be (raise the limit with --max-pixels)";
+        return false;
+    }
     std::string bytes;
     if (!readFileBytes(path, &bytes, error)) return false;
     if (const std::string why = imageSizeProblem(bytes, path, maxPixels); !why.empty()) {
