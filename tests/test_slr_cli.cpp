@@ -990,15 +990,7 @@ private slots:
         // Issue 41: a kHz pass (half noise) with a ghost of 60 % of its signal 3 ns later: the band
         // keeps noise between the two tracks, so no gap is empty (exit 0 and RMS 1.5 ns before).
         QCOMPARE(runCli({"simulate", "slr", "--kind", "khz", "--points", "20000", "--seed", "3", "-q", p("k.csv")}).exitCode, 0);
-        const QList<QByteArray> kl = lwbtest::readAll(p("k.csv")).split('\n');
-        QByteArray ghost = "epoch_s,oc_s\n";
-        for (int i = 1; i < kl.size(); ++i) {
-            const QList<QByteArray> f = kl[i].split(',');
-            if (f.size() < 3) continue;
-            ghost += f[0] + "," + f[1] + "\n";
-            if (f[2] == "1" && i % 5 < 3)
-                ghost += QByteArray::number(f[0].toDouble() + 1e-4, 'f', 6) + "," + QByteArray::number(f[1].toDouble() + 3e-9, 'g', 17) + "\n";
-        }
+        const QByteArray ghost = lwbtest::withGhostTrack(lwbtest::readAll(p("k.csv")));
         QVERIFY(lwbtest::writeText(p("ghost.csv"), ghost));
         r = runCli({"slr", p("ghost.csv"), "-o", p("ghost_out.csv"), "--np-bin", "30", "-q"});
         QCOMPARE(r.exitCode, 3);

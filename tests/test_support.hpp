@@ -87,4 +87,20 @@ inline CliRun simulateFootprintFolder(const QString& dir) {
 
 inline QStringList filesIn(const QString& dir) { return QDir(dir).entryList(QDir::Files | QDir::Hidden); }
 
+/// An O-C table (epoch_s,oc_s) of a simulated pass (`simulate slr` CSV, with its truth column)
+/// and a ghost of its track: three signal points in five again `shiftS` later (and 0.1 ms later
+/// in time), as a double echo or a second target would give (issue 41).
+inline QByteArray withGhostTrack(const QByteArray& simulatedCsv, double shiftS = 3e-9) {
+    const QList<QByteArray> lines = simulatedCsv.split('\n');
+    QByteArray out = "epoch_s,oc_s\n";
+    for (int i = 1; i < lines.size(); ++i) {
+        const QList<QByteArray> f = lines[i].split(',');
+        if (f.size() < 3) continue;
+        out += f[0] + "," + f[1] + "\n";
+        if (f[2] == "1" && i % 5 < 3)
+            out += QByteArray::number(f[0].toDouble() + 1e-4, 'f', 6) + "," + QByteArray::number(f[1].toDouble() + shiftS, 'g', 17) + "\n";
+    }
+    return out;
+}
+
 }  // namespace lwbtest

@@ -1293,10 +1293,15 @@ QString SlrWorkspace::summaryHtml(const SlrRun& run) const {
             const QString prefix = QStringLiteral("no normal points: ");  // the heading says it already
             QString why = QString::fromStdString(run.postNote);
             if (why.startsWith(prefix)) why = why.mid(prefix.size());
-            // A doubtful result (core judgeRun, as the CLI's exit 3) in the warning colour.
-            statsHtml += run.doubt.empty() ? tr("<b>No normal points</b>: %1").arg(why.toHtmlEscaped())
-                                           : tr("<b><span style='color:#c05000'>Doubtful, no normal points</span></b>: %1")
-                                                 .arg(why.toHtmlEscaped());
+            // A doubtful result (core judgeRun, as the CLI's exit 3) in the warning colour, with
+            // its doubt first: a ghost track on a pass whose normal points were off anyway (no
+            // altitude) was shown with the altitude as its only reason.
+            const QString doubt = QString::fromStdString(run.doubt);
+            if (doubt.isEmpty())
+                statsHtml += tr("<b>No normal points</b>: %1").arg(why.toHtmlEscaped());
+            else
+                statsHtml += tr("<b><span style='color:#c05000'>Doubtful, no normal points</span></b>: %1").arg(doubt.toHtmlEscaped()) +
+                             (why == doubt ? QString() : tr("<br>(also: %1)").arg(why.toHtmlEscaped()));
         }
     } else {
         // A doubtful pass with no post-fit (nothing accepted, or too few points on its own TOF

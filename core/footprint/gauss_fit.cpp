@@ -239,6 +239,8 @@ struct FitWindow {
     std::vector<double> w0[2];
 };
 
+// (declared with its clones: clang refuses a function that becomes multiversioned after a use)
+__attribute__((target_clones("avx2", "default")))
 Cost accumulateDifferences(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, Vec9* jtr);
 
 Cost accumulate(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, Vec9* jtr) {

@@ -348,6 +348,32 @@ private slots:
         QVERIFY(!QFileInfo::exists(m_dir.path() + "/none.npt"));
     }
 
+    // Seen in a real window (issue 41): a kHz pass with a ghost 3 ns beside its track, as an
+    // O-C table (no altitude, so no normal points anyway), said "Doubtful, no normal points: the
+    // satellite's altitude is unknown": the doubt itself was not shown. Now it comes first.
+    void ghostTrackDoubtIsShown() {
+        // The pass of test_slr_cli's ghost: `simulate slr --kind khz --points 20000 --seed 3`,
+        // three signal points in five again 3 ns (and 0.1 ms) later.
+        const QString sim = m_dir.path() + "/khz.csv", csv = m_dir.path() + "/ghost.csv";
+        QCOMPARE(lwbtest::runCli({"simulate", "slr", "--kind", "khz", "--points", "20000", "--seed", "3", "-q", sim}).exitCode, 0);
+        const QByteArray ghost = lwbtest::withGhostTrack(lwbtest::readAll(sim));
+        QVERIFY(lwbtest::writeText(csv, ghost));
+        MainWindow w;
+        w.slr()->resize(1500, 950);
+        w.slr()->show();
+        QString err;
+        QVERIFY2(w.slr()->openPath(csv, 0, &err), qPrintable(err));
+        SlrController* c = w.slr()->controller();
+        QVERIFY(c->waitIdle(60000));
+        QCoreApplication::processEvents();
+        QVERIFY(c->hasRun());
+        QVERIFY2(c->run().doubt.find("two parallel tracks") == 0, c->run().doubt.c_str());
+        const QString text = w.slr()->statsLabel()->text();
+        QVERIFY2(text.contains("Doubtful, no normal points") && text.contains("two parallel tracks") && text.contains("altitude"),
+                 qPrintable(text));
+        QVERIFY2(text.indexOf("two parallel tracks") < text.indexOf("altitude"), qPrintable(text));
+    }
+
     void demoSessionRoundTrip() {
         const QString session = m_dir.path() + "/demo.lwb.json";
         QString err;
