@@ -20,6 +20,7 @@
 #include <QJsonDocument>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPointer>
 #include <QMimeData>
 #include <QPainter>
 #include <QProgressBar>
@@ -171,13 +172,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     for (QCustomPlot* p : m_tabs->findChildren<QCustomPlot*>())
         if (p->minimumWidth() == 0) p->setMinimumWidth(160);
     buildMenus();
-    connect(m_footprint, &FootprintWorkspace::modified, this, [this] { setModified(true); });
+    connect(m_footprint, &FootprintWorkspace::modified, this, [this] { markUnsaved(m_footprint); });
     connect(m_footprint, &FootprintWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_footprint, s, 5000); });
-    connect(m_slr, &SlrWorkspace::modified, this, [this] { setModified(true); });
+    connect(m_slr, &SlrWorkspace::modified, this, [this] { markUnsaved(m_slr); });
     connect(m_slr, &SlrWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_slr, s, 8000); });
-    connect(m_calib, &CalibWorkspace::modified, this, [this] { setModified(true); });
+    connect(m_calib, &CalibWorkspace::modified, this, [this] { markUnsaved(m_calib); });
     connect(m_calib, &CalibWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_calib, s, 8000); });
-    connect(m_radiometry, &RadiometryWorkspace::modified, this, [this] { setModified(true); });
+    connect(m_radiometry, &RadiometryWorkspace::modified, this, [this] { markUnsaved(m_radiometry); });
     connect(m_radiometry, &RadiometryWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_radiometry, s, 8000); });
     connect(m_footprint->controller(), &FootprintController::error, this,
             [this](const QString& msg) { showError(tr("Cannot open the footprint inputs"), msg); });
@@ -472,17 +473,30 @@ void MainWindow::showError(const QString& what, const QString& detail) {
     QMessageBox::warning(this, what, detail);
 }
 
-void MainWindow::inputsOpened() {
+void MainWindow::inputsOpened(QWidget* workspace) {
     // Other data than the session file describes: Save asks for a name (Ctrl+S replaced the
-    // restored session, its verdicts and notes, with the new data), and opening files is no
-    // unsaved work (issue 28). Unsaved changes were offered for saving before (maybeSave).
+    // restored session, its verdicts and notes, with the new data). The workspace's unsaved
+    // work was offered for saving before (maybeSave(workspace)) and is replaced; the other
+    // workspaces keep theirs (issue 42: opening a pass cleared the footprint review's unsaved
+    // verdicts, and Ctrl+Q then quit without asking).
     m_sessionPath.clear();
-    QMetaObject::invokeMethod(this, [this] { setModified(false); }, Qt::QueuedConnection);  // after the workspaces' own signals
-    setModified(false);
+    QPointer<QWidget> ws(workspace);
+    QMetaObject::invokeMethod(this, [this, ws] { markSaved(ws); }, Qt::QueuedConnection);  // after the workspace's own signals
+    markSaved(workspace);
+}
+
+void MainWindow::markUnsaved(QWidget* workspace) {
+    m_unsaved.insert(workspace);
+    setModified(true);
+}
+
+void MainWindow::markSaved(QWidget* workspace) {
+    m_unsaved.remove(workspace);
+    setModified(!m_unsaved.isEmpty());
 }
 
 void MainWindow::setModified(bool m) {
-    m_modified = m;
+    if (!m) m_unsaved.clear();  // (the whole session saved, opened or replaced)
     const QString name = m_sessionPath.isEmpty() ? tr("untitled") : QFileInfo(m_sessionPath).fileName();
     setWindowTitle(tr("%1%2 — Laser Workbench").arg(name, m ? "*" : ""));
 }
@@ -505,9 +519,9 @@ bool MainWindow::openDemo() {
 }
 
 bool MainWindow::openFootprintInputs(const QStringList& paths) {
-    if (paths.isEmpty() || !maybeSave()) return false;
+    if (paths.isEmpty() || !maybeSave(m_footprint)) return false;
     m_footprint->controller()->open(paths);
-    inputsOpened();
+    inputsOpened(m_footprint);
     // One entry for a folder or a shot list; several frames are remembered by their folder.
     const QString first = paths.first();
     addRecentInput("footprint", paths.size() == 1 ? first : QFileInfo(first).absolutePath());
@@ -581,11 +595,12 @@ bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
             radiometry << p;
         } else if (where == "slr") {
             QString err;
+            if (!maybeSave(m_slr)) continue;
             if (!m_slr->openPath(p, -1, &err)) problems << err;
             else {
                 m_tabs->setCurrentWidget(m_slr);
                 addRecentInput("slr", p, m_slr->controller()->pass().passIndex);
-                inputsOpened();
+                inputsOpened(m_slr);
             }
         } else if (where == "session") {
             if (!maybeSave()) continue;
@@ -626,7 +641,7 @@ bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
         openFootprintInputs(footprint);
         m_tabs->setCurrentWidget(m_footprint);
     }
-    if (!radiometry.isEmpty()) {
+    if (!radiometry.isEmpty() && maybeSave(m_radiometry)) {
         std::sort(radiometry.begin(), radiometry.end());  // file names carry the scan order
         QString err;
         const bool ok = radiometry.size() == 1 ? m_radiometry->controller()->openImage(radiometry.first(), &err)
@@ -634,7 +649,7 @@ bool MainWindow::openPaths(const QStringList& paths, QString* errorOut) {
         if (!ok) problems << err;
         else {
             addRecentInput("radiometry", radiometry.size() == 1 ? radiometry.first() : QFileInfo(radiometry.first()).absolutePath());
-            inputsOpened();
+            inputsOpened(m_radiometry);
         }
     }
     if (!problems.isEmpty()) {
@@ -924,8 +939,11 @@ bool MainWindow::saveAs() {
     return save();
 }
 
-bool MainWindow::maybeSave() {
-    if (!m_modified) return true;
+bool MainWindow::maybeSave(QWidget* workspace) {
+    QStringList which;  // the workspaces whose unsaved work would be lost, by their tab names
+    for (int i = 0; i < m_tabs->count(); ++i)
+        if (m_unsaved.contains(m_tabs->widget(i)) && (!workspace || m_tabs->widget(i) == workspace)) which << m_tabs->tabText(i);
+    if (which.isEmpty()) return true;
     QMessageBox::StandardButton answer;
     if (m_prompt) {
         answer = m_prompt();
@@ -934,7 +952,8 @@ bool MainWindow::maybeSave() {
         answer = QMessageBox::Discard;
     } else {
         answer = QMessageBox::question(this, tr("Unsaved changes"),
-                                       tr("The session has unsaved changes (verdicts, notes, parameters). Save them?"),
+                                       tr("%1 has unsaved changes (verdicts, notes, edits, parameters). Save the session?")
+                                           .arg(which.join(tr(", "))),
                                        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     }
     if (answer == QMessageBox::Save) return save();

@@ -3,6 +3,7 @@
 // unsaved-changes prompt), settings, status bar, error dialogs.
 #include <QJsonObject>
 #include <QMainWindow>
+#include <QSet>
 #include <QMessageBox>
 #include <functional>
 
@@ -50,12 +51,16 @@ public:
     /// answer one, Discard with a warning).
     using PromptFn = std::function<QMessageBox::StandardButton()>;
     void setUnsavedChangesPrompt(PromptFn fn) { m_prompt = std::move(fn); }
-    /// Asks whether to save unsaved changes before they are replaced; false: do not go on.
-    bool maybeSave();
+    /// Asks whether to save unsaved changes before they are replaced: those of `workspace` (its
+    /// data is about to be replaced), or of any workspace (nullptr: quitting, a new session, the
+    /// demo). False: do not go on.
+    bool maybeSave(QWidget* workspace = nullptr);
     /// Saves the session atomically. False with *error.
     bool saveSession(const QString& path, QString* error);
     QJsonObject sessionState() const;
-    bool isModified() const { return m_modified; }
+    bool isModified() const { return !m_unsaved.isEmpty(); }
+    /// Whether a workspace has unsaved work (its verdicts, notes, edits or parameters).
+    bool hasUnsaved(QWidget* workspace) const { return m_unsaved.contains(workspace); }
     /// The session file the window's state was read from or saved to ("" when none, or when other
     /// inputs were opened since).
     QString sessionPath() const { return m_sessionPath; }
@@ -99,8 +104,11 @@ protected:
     void dropEvent(class QDropEvent* e) override;
 
 private:
-    /// Inputs were opened from the window (files, folders, drops, the command line): see main_window.cpp.
-    void inputsOpened();
+    /// Inputs were opened in `workspace` from the window (files, folders, drops, the command line): see main_window.cpp.
+    void inputsOpened(QWidget* workspace);
+    /// A workspace's work changed (its modified signal), or was saved or replaced.
+    void markUnsaved(QWidget* workspace);
+    void markSaved(QWidget* workspace);
     void buildMenus();
     static void fitGuideImages(QTextBrowser* browser, int width);
     void rebuildRecentInputsMenu();
@@ -131,7 +139,7 @@ private:
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;
     QString m_sessionPath;
-    bool m_modified = false;
+    QSet<QWidget*> m_unsaved;  ///< the workspaces with unsaved work
     PromptFn m_prompt;
 };
 

@@ -371,8 +371,8 @@ QWidget* SlrWorkspace::buildPlotArea() {
 
     connect(m_passCombo, &QComboBox::activated, this, [this](int i) {
         if (m_loading || !m_controller->crd()) return;
+        // (choosing a pass is a view change, not unsaved work: issue 42)
         m_controller->selectPass(m_passCombo->itemData(i).toInt(), nullptr);  // a failure is shown in place
-        emit modified();
     });
     connect(all, &QPushButton::clicked, this, [this] {
         if (!screenAllPasses()) QMessageBox::information(this, tr("Screen all passes"), tr("Open a CRD file first."));
@@ -585,8 +585,7 @@ SlrAllPassesDialog* SlrWorkspace::screenAllPasses() {
     m_all = new SlrAllPassesDialog(m_controller, m_controller->presetFile(), this);
     m_all->setAttribute(Qt::WA_DeleteOnClose);
     connect(m_all, &SlrAllPassesDialog::openPass, this, [this](int index) {
-        m_controller->selectPass(index, nullptr);
-        emit modified();
+        m_controller->selectPass(index, nullptr);  // (a view change: issue 42)
     });
     m_all->show();
     return m_all;

@@ -239,12 +239,8 @@ struct FitWindow {
     std::vector<double> w0[2];
 };
 
-// (declared with its clones: clang refuses a function that becomes multiversioned after a use)
-__attribute__((target_clones("avx2", "default")))
-Cost accumulateDifferences(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, Vec9* jtr);
-
-Cost accumulate(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, Vec9* jtr) {
-    if (fw.diff) return accumulateDifferences(fw, p, cauchyC2, jtj, jtr);
+// The cost on the pixels (accumulate: the pixels or their differences).
+Cost accumulatePixels(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, Vec9* jtr) {
     const std::vector<WinPixel>& win = fw.px;
     const double A = p(0), x0 = p(1), y0 = p(2), a = p(3), b = p(4), c = p(5);
     const int n = static_cast<int>(win.size());
@@ -390,6 +386,13 @@ Cost accumulateDifferences(const FitWindow& fw, const Vec9& p, double cauchyC2, 
         (*jtr)(6) = 0;
     }
     return cost;
+}
+
+// The cost and its normal equations: on the pixels, or on their neighbour differences. (Defined
+// after both: a target_clones function declared ahead of its definition and called before it
+// is refused by clang, and a declaration carrying the attribute miscompiled under it.)
+Cost accumulate(const FitWindow& fw, const Vec9& p, double cauchyC2, Mat9* jtj, Vec9* jtr) {
+    return fw.diff ? accumulateDifferences(fw, p, cauchyC2, jtj, jtr) : accumulatePixels(fw, p, cauchyC2, jtj, jtr);
 }
 
 // A step that changes nothing that matters: it moves the centre less than `tolerance` (px), and

@@ -5,6 +5,9 @@
 // right workspace; at start-up the status bar does not show another workspace's message; the
 // window is usable at 1024×700.
 #include <QAbstractScrollArea>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QMessageBox>
 #include <QDockWidget>
 #include <QMainWindow>
 #include <QSettings>
@@ -575,6 +578,63 @@ private slots:
         QVERIFY(!alone.openPaths({npt}, &err));
         QVERIFY2(err.contains("no pass is open") && err.contains("Station normal points"), qPrintable(err));
         QVERIFY(!alone.slr()->controller()->hasPass());
+    }
+
+    // Issue 42 (lost work, major): a manual verdict in the footprint review, then a pass opened in
+    // the SLR workspace: the "*" went and Ctrl+Q quit without asking. Each workspace now has its
+    // own unsaved state: opening a pass replaces the SLR workspace's work only (asking first when
+    // it has some), the footprint's verdict stays unsaved, and quitting asks, naming it. Choosing
+    // another pass is a view change, not a change.
+    void openingInOneWorkspaceKeepsTheOthersUnsavedWork() {
+        const QString pass = lwbtest::sharedPath("slr/hy2c_202109.fr2");
+        if (!QFile::exists(pass)) QSKIP("shared SLR data absent");
+        const QString d = m_dir.path();
+        QCOMPARE(lwbtest::simulateFootprintFolder(d + "/verdicts").exitCode, 0);
+        MainWindow w;
+        int prompts = 0;
+        w.setUnsavedChangesPrompt([&] {
+            ++prompts;
+            return QMessageBox::Cancel;
+        });
+        QString err;
+        QVERIFY(w.openPaths({d + "/verdicts"}, &err));
+        QVERIFY(w.waitIdle(60000));
+        QTest::qWait(100);
+        QVERIFY(!w.isModified());
+        // A manual verdict, as the Reject button gives it (its undo command marks the change).
+        w.footprint()->selectRow(0);
+        w.footprint()->rejectCurrent();  // (the Reject button, R)
+        QCoreApplication::processEvents();
+        QCOMPARE(w.footprint()->controller()->counts().overridden, 1);
+        QVERIFY(w.isModified() && w.hasUnsaved(w.footprint()));
+        QVERIFY(w.windowTitle().contains("*"));
+        // A pass opened in the SLR workspace: nothing of the SLR workspace was unsaved, so no
+        // question; the footprint's verdict stays unsaved.
+        QVERIFY2(w.openPaths({pass}, &err), qPrintable(err));
+        QVERIFY(w.waitIdle(60000));
+        QTest::qWait(200);
+        QCOMPARE(prompts, 0);
+        QVERIFY2(w.isModified() && w.hasUnsaved(w.footprint()) && !w.hasUnsaved(w.slr()), qPrintable(w.windowTitle()));
+        QVERIFY(w.windowTitle().contains("*"));
+        // Another pass from the list: a view change.
+        QComboBox* passes = w.slr()->passCombo();
+        QVERIFY(passes->count() > 2);
+        const int other = passes->currentIndex() == 1 ? 2 : 1;
+        passes->setCurrentIndex(other);
+        emit passes->activated(other);
+        QVERIFY(w.waitIdle(60000));
+        QTest::qWait(100);
+        QVERIFY(!w.hasUnsaved(w.slr()));
+        // Quitting asks (here: Cancel, so the window stays), and the verdict is still there.
+        QCloseEvent close;
+        QApplication::sendEvent(&w, &close);
+        QCOMPARE(prompts, 1);
+        QVERIFY(!close.isAccepted());
+        QCOMPARE(w.footprint()->controller()->counts().overridden, 1);
+        // Opening another footprint folder replaces the footprint's work: asked first.
+        QVERIFY(!w.openPaths({d + "/verdicts"}, &err) || prompts == 2);
+        QCOMPARE(prompts, 2);
+        QCOMPARE(w.footprint()->controller()->counts().overridden, 1);  // (cancelled: kept)
     }
 
     // Issue 28: Ctrl+S after opening another folder replaced the restored session (its manual
