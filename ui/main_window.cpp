@@ -175,6 +175,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_footprint, &FootprintWorkspace::modified, this, [this] { markUnsaved(m_footprint); });
     connect(m_footprint, &FootprintWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_footprint, s, 5000); });
     connect(m_slr, &SlrWorkspace::modified, this, [this] { markUnsaved(m_slr); });
+    connect(m_slr, &SlrWorkspace::openRequested, this, [this](const QString& path) { openPaths({path}); });
     connect(m_slr, &SlrWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_slr, s, 8000); });
     connect(m_calib, &CalibWorkspace::modified, this, [this] { markUnsaved(m_calib); });
     connect(m_calib, &CalibWorkspace::status, this, [this](const QString& s) { workspaceStatus(m_calib, s, 8000); });

@@ -169,6 +169,12 @@ QHBoxLayout* SlrWorkspace::buildInputRow() {
                                                           tr("CRD and O-C tables (*.frd *.fr2 *.npt *.np2 *.crd *.csv);;All files (*)"));
         if (path.isEmpty()) return;
         st.setValue("paths/slr", QFileInfo(path).absolutePath());
+        // Through the window when there is one: it asks about this workspace's unsaved work and
+        // leaves the other workspaces' alone (issue 42), as for a file opened from its menu.
+        if (receivers(SIGNAL(openRequested(QString))) > 0) {
+            emit openRequested(path);
+            return;
+        }
         QString err;
         if (!openPath(path, -1, &err)) QMessageBox::warning(this, tr("Cannot open the file"), err);
     });

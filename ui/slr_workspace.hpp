@@ -105,6 +105,8 @@ public:
 
 signals:
     void modified();
+    /// The workspace's Open button chose a pass file: the window opens it (openPaths).
+    void openRequested(const QString& path);
     void status(const QString& message);
 
 private:
