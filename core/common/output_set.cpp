@@ -183,6 +183,37 @@ int rollBackJournal(const std::string& folder, const std::string& journalName) {
 
 std::atomic<long> g_backupCounter{0};
 
+// The plan of a commit, journalled before anything moves (see rollBackJournal): the backup name
+// of every target that exists, and in each folder a journal listing its targets. False with
+// *error; *journalFiles lists what was written either way.
+bool journalCommit(const std::vector<std::string>& targets, std::map<std::string, std::string>* backupOf,
+                   std::vector<std::string>* journalFiles, std::string* error) {
+    std::map<std::string, std::string> journals;  // folder → journal text
+    for (const std::string& target : targets) {
+        struct stat st {};
+        std::string& j = journals[folderOf(target)];
+        if (::lstat(target.c_str(), &st) != 0) {
+            j += "new\t" + journalEscape(baseOf(target)) + "\n";
+            continue;
+        }
+        const std::string b = ".lwb-backup-" + std::to_string(::getpid()) + "-" + std::to_string(g_backupCounter++) + "-" +
+                              baseOf(target);
+        (*backupOf)[target] = folderOf(target) + "/" + b;
+        j += "old\t" + journalEscape(b) + "\t" + journalEscape(baseOf(target)) + "\n";
+    }
+    static std::atomic<long> journalCounter{0};
+    const std::string name = ".lwb-journal-" + std::to_string(::getpid()) + "-" + std::to_string(journalCounter++);
+    for (const auto& [folder, text] : journals) {
+        std::string err;
+        journalFiles->push_back(folder + "/" + name);
+        if (!writeFileAtomic(journalFiles->back(), text, &err)) {
+            *error = "cannot start writing the outputs in " + folder + ": " + err + " (nothing written)";
+            return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
 void noteInputRead(const std::string& path) {
@@ -509,38 +540,18 @@ bool OutputSet::commit() {
     for (const auto& it : m_items)
         if (!m_manifest.empty() && it.path == m_manifest) manifest = &it;
     const std::vector<std::string> stale = staleOutputs();
-    std::map<std::string, std::string> backupOf;  // target → its backup
-    std::map<std::string, std::string> journals;  // folder → journal text
-    auto plan = [&](const std::string& target) {
-        struct stat st {};
-        std::string& j = journals[folderOf(target)];
-        if (::lstat(target.c_str(), &st) != 0) {
-            j += "new\t" + journalEscape(baseOf(target)) + "\n";
-            return;
-        }
-        const std::string b = ".lwb-backup-" + std::to_string(::getpid()) + "-" + std::to_string(g_backupCounter++) + "-" +
-                              baseOf(target);
-        backupOf[target] = folderOf(target) + "/" + b;
-        j += "old\t" + journalEscape(b) + "\t" + journalEscape(baseOf(target)) + "\n";
-    };
+    std::vector<std::string> targets = stale;
     for (const auto& it : m_items)
-        if (!it.toStdout) plan(it.target);
-    for (const std::string& path : stale) plan(path);
-    static std::atomic<long> journalCounter{0};
-    const std::string journalName = ".lwb-journal-" + std::to_string(::getpid()) + "-" + std::to_string(journalCounter++);
+        if (!it.toStdout) targets.push_back(it.target);
+    std::map<std::string, std::string> backupOf;  // target → its backup
     std::vector<std::string> journalFiles;
     auto removeJournals = [&] {
         for (const std::string& j : journalFiles) std::remove(j.c_str());
     };
-    for (const auto& [folder, text] : journals) {
-        std::string err;
-        journalFiles.push_back(folder + "/" + journalName);
-        if (!writeFileAtomic(journalFiles.back(), text, &err)) {
-            m_error = "cannot start writing the outputs in " + folder + ": " + err + " (nothing written)";
-            removeJournals();
-            abandon();
-            return false;
-        }
+    if (!journalCommit(targets, &backupOf, &journalFiles, &m_error)) {
+        removeJournals();
+        abandon();
+        return false;
     }
     std::vector<std::pair<std::string, std::string>> restore;  // (backup, original)
     std::vector<std::string> created;

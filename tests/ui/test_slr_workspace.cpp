@@ -46,6 +46,17 @@ lwb::core::sim::SlrSimPass simulated(lwb::core::sim::SlrKind kind, int points, d
     if (altitudeKm) *altitudeKm = p.altitudeKm;
     return simulateSlrPass(p, seed);
 }
+// Opens a pass (its first) in the window's SLR workspace, shown at 1500 x 950, and waits for its
+// run. False with *err.
+bool openScreened(MainWindow& w, const QString& path, QString* err) {
+    w.slr()->resize(1500, 950);
+    w.slr()->show();
+    if (!w.slr()->openPath(path, 0, err)) return false;
+    if (!w.slr()->controller()->waitIdle(60000)) return *err = "the run did not end", false;
+    QCoreApplication::processEvents();
+    if (!w.slr()->controller()->hasRun()) return *err = "no run", false;
+    return true;
+}
 // A sparse pass with a curved track, where the recovery step (and so C) matters.
 void openSparsePass(SlrController* c) {
     double altitude = 0;
@@ -326,14 +337,9 @@ private slots:
             for (size_t i = 0; i < pass.epochS.size(); ++i) o << pass.epochS[i] << "," << pass.ocS[i] << "\n";
         }
         MainWindow w;
-        w.slr()->resize(1500, 950);
-        w.slr()->show();
         QString err;
-        QVERIFY2(w.slr()->openPath(csv, 0, &err), qPrintable(err));
+        QVERIFY2(openScreened(w, csv, &err), qPrintable(err));
         SlrController* c = w.slr()->controller();
-        QVERIFY(c->waitIdle(60000));
-        QCoreApplication::processEvents();
-        QVERIFY(c->hasRun());
         const SlrRun& r = c->run();
         QVERIFY2(r.post.ok, r.post.error.c_str());
         QVERIFY(r.post.used > 500 && r.post.stats.rms > 0 && r.post.stats.rms < 1e-9);
@@ -359,14 +365,9 @@ private slots:
         const QByteArray ghost = lwbtest::withGhostTrack(lwbtest::readAll(sim));
         QVERIFY(lwbtest::writeText(csv, ghost));
         MainWindow w;
-        w.slr()->resize(1500, 950);
-        w.slr()->show();
         QString err;
-        QVERIFY2(w.slr()->openPath(csv, 0, &err), qPrintable(err));
+        QVERIFY2(openScreened(w, csv, &err), qPrintable(err));
         SlrController* c = w.slr()->controller();
-        QVERIFY(c->waitIdle(60000));
-        QCoreApplication::processEvents();
-        QVERIFY(c->hasRun());
         QVERIFY2(c->run().doubt.find("two parallel tracks") == 0, c->run().doubt.c_str());
         const QString text = w.slr()->statsLabel()->text();
         QVERIFY2(text.contains("Doubtful, no normal points") && text.contains("two parallel tracks") && text.contains("altitude"),
