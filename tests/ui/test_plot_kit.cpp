@@ -234,6 +234,13 @@ private slots:
         QCOMPARE(withFilterSuffix("/tmp/np", "CRD (*.npt *.np2 *.crd)"), QString("/tmp/np.npt"));
         QCOMPARE(withFilterSuffix("/tmp/np.np2", "CRD (*.npt *.np2 *.crd)"), QString("/tmp/np.np2"));
         QCOMPARE(withFilterSuffix("/tmp/v1.2", "PNG image (*.png)"), QString("/tmp/v1.2.png"));
+        // Issue 42: "x.svg" typed with the PNG type chosen wrote "x.svg.png"; the name's type wins
+        // when it is one of the dialog's, and a name of none of them gets the chosen type's.
+        const QString all = "PNG image (*.png);;SVG (*.svg);;PDF (*.pdf)";
+        QCOMPARE(withFilterSuffix("/tmp/x.svg", "PNG image (*.png)", all), QString("/tmp/x.svg"));
+        QCOMPARE(withFilterSuffix("/tmp/x.PDF", "PNG image (*.png)", all), QString("/tmp/x.PDF"));
+        QCOMPARE(withFilterSuffix("/tmp/x.txt", "PNG image (*.png)", all), QString("/tmp/x.txt.png"));
+        QCOMPARE(withFilterSuffix("/tmp/x", "SVG (*.svg)", all), QString("/tmp/x.svg"));
     }
 
     void legendClickHidesAndShowsItsSeries() {
