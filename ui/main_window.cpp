@@ -307,7 +307,9 @@ void MainWindow::buildMenus() {
         else showNormal();
     });
     fs->setCheckable(true);
-    fs->setShortcut(QKeySequence::FullScreen);
+    // F11 on every platform: QKeySequence::FullScreen is F11 only under some desktops' themes
+    // (none under plain X11), so the guide's F11 did nothing in a real window (issue 42).
+    fs->setShortcut(QKeySequence(Qt::Key_F11));
     view->addSeparator();
     auto* themes = new QActionGroup(this);
     m_lightAction = view->addAction(tr("&Light theme"), this, [this] { setDarkTheme(false); });
