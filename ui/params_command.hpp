@@ -23,7 +23,11 @@ public:
     ParamsCommand(QObject* owner, const core::Schema<P>& schema, const P& before, const P& after, Apply apply,
                   const QString& what)
         : m_owner(owner), m_before(before), m_after(after), m_keys(schema.changedKeys(before, after)), m_apply(std::move(apply)) {
-        setText(QObject::tr("Change %1").arg(m_keys.size() == 1 ? QString::fromStdString(m_keys[0]) : what));
+        // The field's key as words ("Redo Change verdict major axis px", not "Redo Change
+        // verdict.major_axis_px": issue 42).
+        QString one = m_keys.size() == 1 ? QString::fromStdString(m_keys[0]) : what;
+        if (m_keys.size() == 1) one.replace('.', ' ').replace('_', ' ');
+        setText(QObject::tr("Change %1").arg(one));
     }
     int id() const override { return 0x511; }
     bool mergeWith(const QUndoCommand* other) override {

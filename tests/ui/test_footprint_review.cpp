@@ -359,6 +359,8 @@ private slots:
         emit fw->paramsPanel()->paramsChanged(p);  // as a slider move does
         QCOMPARE(c->params().roi.size, roiBefore + 8);
         QVERIFY(c->waitIdle(60000));
+        // Issue 42: the step is named as people read the field ("Change verdict.major_axis_px" before).
+        QCOMPARE(undoStackOf(fw).undoText(), QString("Change roi size"));
         undoStackOf(fw).undo();  // the parameter change first
         QCOMPARE(c->params().roi.size, roiBefore);
         QCOMPARE(fw->paramsPanel()->params().roi.size, roiBefore);
