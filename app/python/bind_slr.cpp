@@ -125,7 +125,7 @@ PassRun runPass(const Pass& pass, const py::object& params, const py::object& pr
                 const py::object& stations, const py::object& threads) {
     // The sources of the run as the CLI gathers them: the preset file and its satellite, the
     // station file, the analyst's own parameters (a SlrParams as --config, a dict as --set); the
-    // core resolves them over the pass in the one order (core resolvePassParams).
+    // core resolves them over the pass in the one order and runs it (core resolveAndRunPass).
     slr::SlrSources src;
     src.input = pass.data->source;
     if (!preset.is_none()) src.presets = fsPath(preset);
@@ -134,15 +134,16 @@ PassRun runPass(const Pass& pass, const py::object& params, const py::object& pr
     gatherParams(params, &src);
     src.searchThreads = threadCount(threads);
     const slr::SlrSetup setup = setUp(src);
-    PassRun run;
-    run.pass = pass.data;
-    slr::SlrError e;
-    if (!slr::resolvePassParams(setup, *pass.data, &run.settings, &e)) raise(e);
+    slr::ResolvedRun done;
     {
         py::gil_scoped_release nogil;
-        run.r = slr::runOpenedPass(*pass.data, run.settings, setup);
+        done = slr::resolveAndRunPass(setup, *pass.data);
     }
-    check(run.r.ok, slr::passName(*pass.data) + ": " + run.r.error);
+    if (!done.ok) raise(done.error);
+    PassRun run;
+    run.pass = pass.data;
+    run.settings = std::move(done.settings);
+    run.r = std::move(done.result);
     return run;
 }
 

@@ -228,6 +228,18 @@ PassRunResult runOpenedPass(const PassData& pass, const PassSettings& settings, 
     return runPass(pass, p, fb);
 }
 
+ResolvedRun resolveAndRunPass(const SlrSetup& setup, const PassData& pass, Feedback* fb) {
+    ResolvedRun out;
+    if (!resolvePassParams(setup, pass, &out.settings, &out.error)) return out;
+    out.result = runOpenedPass(pass, out.settings, setup, fb);
+    if (!out.result.ok) {
+        out.error = {passName(pass) + ": " + out.result.error, false};
+        return out;
+    }
+    out.ok = true;
+    return out;
+}
+
 const std::vector<uint8_t>& deliveredFlags(const PassRunResult& r) {
     return r.postOk && r.post.kept.size() == r.accepted.size() ? r.post.kept : r.accepted;
 }

@@ -108,6 +108,18 @@ OpenedPass openPassOf(const SlrSetup& setup, const std::shared_ptr<const CrdRead
 PassRunResult runOpenedPass(const PassData& pass, const PassSettings& settings, const SlrSetup& setup,
                             Feedback* fb = nullptr);
 
+/// A pass opened earlier and run with the sources of `setup` (Python's load_pass, then run with
+/// a preset, stations or parameters of its own): resolvePassParams, then runOpenedPass, so that
+/// no front end strings the two together itself. ok false with `error` (a parameter refused is a
+/// usage error; a failed screening names the pass).
+struct ResolvedRun {
+    bool ok = false;
+    SlrError error;
+    PassSettings settings;
+    PassRunResult result;
+};
+ResolvedRun resolveAndRunPass(const SlrSetup& setup, const PassData& pass, Feedback* fb = nullptr);
+
 /// The filter flags a screened pass is delivered with: what the post-fit kept (its rejects are
 /// noise), else what the screening accepted. Every flagged-CRD product uses them.
 const std::vector<uint8_t>& deliveredFlags(const PassRunResult& r);
