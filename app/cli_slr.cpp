@@ -530,8 +530,10 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
     }
     const slr::PassData& pass = *opened.pass;
     const slr::PassSettings& settings = opened.settings;
-    if (!quiet)
+    if (!quiet) {
         for (const auto& w : opened.warnings) std::cerr << "laserwb-cli slr: warning: " << w << "\n";
+        for (const auto& n : opened.notes) std::cerr << "laserwb-cli slr: note: " << n << "\n";
+    }
     const slr::PassProductPaths paths{out, crdOut, nptOut, true};
     if (const std::string why = slr::productsProblem(pass, settings, paths); !why.empty()) return fail(cmd, why, kUsage);
     // The pass's own parameters (its preset and context applied) in the provenance; with

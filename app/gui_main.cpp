@@ -14,8 +14,8 @@
 #include "core/common/image_codecs.hpp"
 #include "core/common/output_set.hpp"
 #include "lwb_version.hpp"
-#include "ui/frame_loader.hpp"
-#include "ui/main_window.hpp"
+#include "ui/kit/frame_loader.hpp"
+#include "ui/shell/main_window.hpp"
 
 int main(int argc, char** argv) {
     lwb::core::tuneAllocator();

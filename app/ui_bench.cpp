@@ -8,14 +8,14 @@
 #include <cstdio>
 #include <vector>
 
-#include "ui/footprint_params_panel.hpp"
-#include "ui/footprint_workspace.hpp"
-#include "ui/image_view.hpp"
-#include "ui/main_window.hpp"
-#include "ui/param_slider.hpp"
+#include "ui/footprint/footprint_params_panel.hpp"
+#include "ui/footprint/footprint_workspace.hpp"
+#include "ui/kit/image_view.hpp"
+#include "ui/shell/main_window.hpp"
+#include "ui/kit/param_slider.hpp"
 #include "core/common/allocator.hpp"
 #include "core/slr/screen.hpp"
-#include "ui/slr_workspace.hpp"
+#include "ui/slr/slr_workspace.hpp"
 #include <qcustomplot.h>
 
 namespace {
@@ -67,7 +67,7 @@ struct UiBench {
 
 // The threshold factor dragged on the footprint workspace's sixth shot.
 void UiBench::footprintThreshold() {
-    ws = w.footprint();
+    ws = w.workspace<lwb::ui::FootprintWorkspace>();
     c = ws->controller();
     ws->selectRow(5);
     w.waitIdle(10000);
@@ -110,7 +110,7 @@ void UiBench::slrCosineKeptScale() {
     // SLR: a 10⁵-point simulated kHz pass; drag the cosine constant through 20 values; each
     // change reruns the screening and the post-fit off the GUI thread, then the three plots are
     // redrawn.
-    slr = w.slr();
+    slr = w.workspace<lwb::ui::SlrWorkspace>();
     w.showWorkspace("slr");
     slr->openDemo(100000);
     w.waitIdle(60000);

@@ -1,4 +1,7 @@
 #include "core/slr/np_compare.hpp"
+#include "core/slr/slr_time.hpp"
+
+#include <cstdio>
 
 #include <algorithm>
 #include <cmath>
@@ -102,6 +105,39 @@ std::string NpComparison::describe() const {
     return s;
 }
 
+std::string npComparisonCsv(const NpComparison& c) {
+    auto num = [](double v, int decimals) {
+        if (!std::isfinite(v)) return std::string();
+        char b[64];
+        std::snprintf(b, sizeof b, "%.*f", decimals, v);
+        return std::string(b);
+    };
+    auto count = [](int n) { return n > 0 ? std::to_string(n) : std::string(); };
+    auto iso = [&c](double t) {
+        if (!std::isfinite(t)) return std::string();
+        const long long ms = std::llround(t * 1000.0);
+        const long long dayMs = 86400000LL;
+        const long long days = ms >= 0 ? ms / dayMs : -((-ms + dayMs - 1) / dayMs);  // (a bin before 0h: the day before)
+        const long long of = ms - days * dayMs;
+        int y = 0, mo = 0, d = 0;
+        dateFromMjd(c.dayMjd + static_cast<long>(days), &y, &mo, &d);
+        char b[48];
+        std::snprintf(b, sizeof b, "%04d-%02d-%02dT%02lld:%02lld:%02lld.%03lldZ", y, mo, d, of / 3600000, of / 60000 % 60,
+                      of / 1000 % 60, of % 1000);
+        return std::string(b);
+    };
+    std::string out = "utc,epoch_s,match,delta_mm,station_ranges,our_ranges,station_rms_ps,our_rms_ps,station_oc_s,station_residual_s\n";
+    for (const NpDifference& d : c.rows) {
+        const char* match = d.match == NpDifference::Match::Both          ? "both"
+                            : d.match == NpDifference::Match::StationOnly ? "station_only"
+                                                                          : "ours_only";
+        out += iso(d.t) + "," + num(d.t, 3) + "," + match + "," + num(d.deltaMm, 2) + "," + count(d.stationRanges) + "," +
+               count(d.ourRanges) + "," + num(d.stationRmsPs, 1) + "," + num(d.ourRmsPs, 1) + "," + num(d.stationOcS, 12) +
+               "," + num(d.stationResidualS, 12) + "\n";
+    }
+    return out;
+}
+
 NpComparison compareWithStation(const PassData& pass, const PostfitResult& post, const CrdFile& station,
                                 const std::string& stationPath) {
     NpComparison c;
@@ -117,6 +153,7 @@ NpComparison compareWithStation(const PassData& pass, const PostfitResult& post,
     }
     const CrdPass& mine = pass.crd->passes[static_cast<size_t>(pass.passIndex)];
     const long mjd = mine.startMjd();
+    c.dayMjd = mjd;
     double L = post.binLengthS > 0 ? post.binLengthS : 30;
     const int k = pickBlock(pass, mjd, station, L);
     if (k < 0) {

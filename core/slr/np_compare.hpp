@@ -40,12 +40,20 @@ struct NpComparison {
     std::string stationName; ///< its H2 station name and satellite, for the display
     std::string satellite;
     double binLengthS = 0;   ///< the station's bin length (its records' window), else ours
+    long dayMjd = 0;         ///< the pass day (its H4's start date, 0h UTC): rows' t are seconds from it
     std::vector<NpDifference> rows;  ///< by epoch
     size_t matched = 0, stationOnly = 0, oursOnly = 0;
     double meanMm = NAN, meanAbsMm = NAN, rmsMm = NAN;  ///< over the matched bins
     /// One line: "N station normal points, M ours: K in the same bins, mean ... mm, ...".
     std::string describe() const;
 };
+
+/// The comparison as CSV, one row a bin: utc (ISO 8601, date and time, "Z"), epoch_s (s from 0h
+/// UTC of the pass day), match (both, station_only, ours_only), delta_mm (ours − station, one-way),
+/// station_ranges, our_ranges, station_rms_ps, our_rms_ps, station_oc_s, station_residual_s;
+/// empty fields where a side has no value. The workbench's Export CSV of the Station normal points
+/// tab (issue 42: its table's cells had been written, "Δ (mm)" headers and a time of day only).
+std::string npComparisonCsv(const NpComparison& c);
 
 /// Reads a station's normal-point file for compareWithStation: a CRD file with at least one
 /// type-11 record. False with *error ("FILE:LINE: ..." from the reader, or why it is not one).

@@ -526,7 +526,7 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             res.line.push_back(r.line);
             res.filter_flag.push_back(r.filterFlag);
         }
-        res.warnings.push_back(name + ": no prediction: O-C is relative to a robust degree-" + std::to_string(degree) +
+        res.notes.push_back(name + ": no prediction: O-C is relative to a robust degree-" + std::to_string(degree) +
                                " polynomial trend of the time of flight (a range bias and smooth drifts are absorbed)");
         if (feedback) feedback->setProgress(1.0);
         res.ok = true;

@@ -57,6 +57,9 @@ struct OcResult {
     bool ok = false;
     std::string error;
     std::vector<std::string> warnings;
+    /// What the O-C is relative to, when that is not a prediction ("no prediction: O-C is
+    /// relative to a robust degree-3 polynomial trend ..."): information, not a problem of the files.
+    std::vector<std::string> notes;
     OcMethod method = OcMethod::Prediction;
 
     /// Per point (one per usable type-10 record, in file order):

@@ -530,6 +530,7 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
         return r;
     }
     for (const auto& w : oc.warnings) r.warnings.push_back(w);
+    r.notes = oc.notes;
     d.ocComputed = true;
     d.ocParams = params.oc;
     d.ownTrendParams = params.trend;

@@ -103,6 +103,7 @@ struct PassInputResult {
     bool ok = false;
     std::string error;
     std::vector<std::string> warnings;
+    std::vector<std::string> notes;   ///< what the O-C is relative to (OcResult::notes)
     std::vector<PassSummary> passes;  ///< every pass of the file (one entry for an O-C table)
     PassData pass;                    ///< the loaded pass
     /// The block asked for is not a pass to screen (the station's normal points, engineering

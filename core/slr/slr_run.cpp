@@ -143,6 +143,7 @@ OpenedPass finishOpen(const SlrSetup& setup, PassInputResult loaded, std::shared
     OpenedPass o;
     o.crd = std::move(crd);
     o.warnings = std::move(loaded.warnings);
+    o.notes = std::move(loaded.notes);
     o.passes = loaded.passes.empty() && o.crd ? summarisePasses(o.crd->file) : std::move(loaded.passes);
     if (!loaded.ok) {
         o.error = {named(setup.sources.input, loaded.error), loaded.notAPass};

@@ -87,6 +87,7 @@ struct OpenedPass {
     bool ok = false;
     SlrError error;
     std::vector<std::string> warnings;          ///< the readers'
+    std::vector<std::string> notes;             ///< what the O-C is relative to (OcResult::notes)
     std::vector<PassSummary> passes;            ///< every block of the file (one for an O-C table)
     std::shared_ptr<const CrdReadResult> crd;   ///< the file as read (CRD input)
     std::shared_ptr<const PassData> pass;

@@ -13,8 +13,8 @@
 
 #include "core/footprint/pipeline.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
-#include "ui/calib_controller.hpp"
-#include "ui/radiometry_controller.hpp"
+#include "ui/calib/calib_controller.hpp"
+#include "ui/radiometry/radiometry_controller.hpp"
 
 using namespace lwb;
 using lwb::fuzz::check;

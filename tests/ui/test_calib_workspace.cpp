@@ -14,7 +14,7 @@
 #include "core/common/csv.hpp"
 #include "session_refused.hpp"
 #include "test_support.hpp"
-#include "ui/calib_workspace.hpp"
+#include "ui/calib/calib_workspace.hpp"
 
 using namespace lwb::ui;
 using namespace lwb::core::calib;

@@ -20,12 +20,12 @@
 #include "core/common/region_stats.hpp"
 #include "test_support.hpp"
 #include "ui_support.hpp"
-#include "ui/blink_view.hpp"
-#include "ui/display_controls.hpp"
-#include "ui/footprint_workspace.hpp"
-#include "ui/image_view.hpp"
-#include "ui/main_window.hpp"
-#include "ui/shot_table_model.hpp"
+#include "ui/footprint/blink_view.hpp"
+#include "ui/kit/display_controls.hpp"
+#include "ui/footprint/footprint_workspace.hpp"
+#include "ui/kit/image_view.hpp"
+#include "ui/shell/main_window.hpp"
+#include "ui/footprint/shot_table_model.hpp"
 
 using namespace lwb::ui;
 
@@ -96,7 +96,7 @@ private slots:
     // fields (Manual) follow; a double-click on the colour bar goes back to min–max.
     void contrastBiasDragMovesTheLimits() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         QVERIFY(loadAndWait(fw->controller(), {m_dir.path() + "/frames"}));
         w.resize(1400, 900);
         w.show();
@@ -163,7 +163,7 @@ private slots:
     // under the views are those of the pixels inside, in full-frame coordinates.
     void regionsShowTheirStatistics() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         QVERIFY(loadAndWait(fw->controller(), {m_dir.path() + "/frames"}));
         w.resize(1400, 900);
         w.show();
@@ -240,7 +240,7 @@ private slots:
     // one sets the limits of all; blinking cycles them at the interval.
     void blinkAndTileLockZoomAndDisplay() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         QVERIFY(loadAndWait(fw->controller(), {m_dir.path() + "/frames"}));
         w.resize(1400, 900);
         w.show();
@@ -330,7 +330,7 @@ private slots:
     // SVG, PDF); without the overlays the same export has none of their colours.
     void exportTheViewWithItsOverlays() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         QVERIFY(loadAndWait(fw->controller(), {m_dir.path() + "/frames"}));
         w.resize(1400, 900);
         w.show();

@@ -14,19 +14,19 @@
 #include <qcustomplot.h>
 
 #include "test_support.hpp"
-#include "ui/column_plot.hpp"
-#include "ui/contact_sheet.hpp"
-#include "ui/filter_field.hpp"
-#include "ui/footprint_workspace.hpp"
-#include "ui/main_window.hpp"
-#include "ui/shot_columns.hpp"
-#include "ui/shot_table_model.hpp"
+#include "ui/footprint/column_plot.hpp"
+#include "ui/footprint/contact_sheet.hpp"
+#include "ui/footprint/filter_field.hpp"
+#include "ui/footprint/footprint_workspace.hpp"
+#include "ui/shell/main_window.hpp"
+#include "ui/footprint/shot_columns.hpp"
+#include "ui/footprint/shot_table_model.hpp"
 
 using namespace lwb::ui;
 
 namespace {
 bool showDemo(MainWindow& w, QSize size = {1400, 900}) {
-    if (!w.openDemo() || !w.footprint()->controller()->waitIdle(60000)) return false;
+    if (!w.openDemo() || !w.workspace<lwb::ui::FootprintWorkspace>()->controller()->waitIdle(60000)) return false;
     w.resize(size);
     w.show();
     w.activateWindow();
@@ -75,7 +75,7 @@ private slots:
     void filterNarrowsTableSheetTrendAndPlot() {
         MainWindow w;
         QVERIFY(showDemo(w));
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         const FootprintController* c = fw->controller();
         const int all = c->count();
         QVERIFY(all > 100);
@@ -127,7 +127,7 @@ private slots:
     void invalidExpressionKeepsThePreviousFilter() {
         MainWindow w;
         QVERIFY(showDemo(w));
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         fw->whereField()->setText("beam == 1");
         const int beam1 = fw->proxy()->rowCount();
         QVERIFY(beam1 > 0 && beam1 < fw->controller()->count());
@@ -162,7 +162,7 @@ private slots:
         {
             MainWindow w;
             QVERIFY(showDemo(w));
-            FootprintWorkspace* fw = w.footprint();
+            FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
             fw->whereField()->setText(expr);
             rows = fw->proxy()->rowCount();
             QVERIFY(rows > 0 && rows < fw->controller()->count());
@@ -173,8 +173,8 @@ private slots:
         MainWindow w2;
         QString err;
         QVERIFY2(w2.openSession(session, true, &err), qPrintable(err));
-        QVERIFY(w2.footprint()->controller()->waitIdle(60000));
-        FootprintWorkspace* fw = w2.footprint();
+        QVERIFY(w2.workspace<lwb::ui::FootprintWorkspace>()->controller()->waitIdle(60000));
+        FootprintWorkspace* fw = w2.workspace<lwb::ui::FootprintWorkspace>();
         QCOMPARE(fw->whereField()->text(), expr);
         QCOMPARE(fw->proxy()->expression(), expr);
         QCOMPARE(fw->proxy()->rowCount(), rows);
@@ -185,7 +185,7 @@ private slots:
     void columnPlotPointsAndClick() {
         MainWindow w;
         QVERIFY(showDemo(w));
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         const FootprintController* c = fw->controller();
         fw->showTab("plot");
         ColumnPlot* cp = fw->columnPlot();
@@ -233,7 +233,7 @@ private slots:
     void trendPlotsAt1024x700() {
         MainWindow w;
         QVERIFY(showDemo(w, {1024, 700}));
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         fw->showTab("trend");
         QTest::qWait(50);
         const QList<QCustomPlot*> plots = fw->trendPlots();

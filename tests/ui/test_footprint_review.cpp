@@ -33,16 +33,16 @@
 #include "core/common/display_stretch.hpp"
 #include "test_support.hpp"
 #include "ui_support.hpp"
-#include "ui/filter_field.hpp"
-#include "ui/app_undo.hpp"
-#include "ui/footprint_params_panel.hpp"
-#include "ui/contact_sheet.hpp"
-#include "ui/display_controls.hpp"
-#include "ui/footprint_workspace.hpp"
-#include "ui/frame_loader.hpp"
-#include "ui/image_view.hpp"
-#include "ui/main_window.hpp"
-#include "ui/shot_table_model.hpp"
+#include "ui/footprint/filter_field.hpp"
+#include "ui/kit/app_undo.hpp"
+#include "ui/footprint/footprint_params_panel.hpp"
+#include "ui/footprint/contact_sheet.hpp"
+#include "ui/kit/display_controls.hpp"
+#include "ui/footprint/footprint_workspace.hpp"
+#include "ui/kit/frame_loader.hpp"
+#include "ui/kit/image_view.hpp"
+#include "ui/shell/main_window.hpp"
+#include "ui/footprint/shot_table_model.hpp"
 
 using namespace lwb::ui;
 using lwb::core::footprint::FootprintParams;
@@ -68,7 +68,7 @@ bool loadAndWait(FootprintController* c, const QStringList& inputs) {
 
 // The demo, judged, in a shown and active 1400x900 window.
 bool showDemo(MainWindow& w) {
-    if (!w.openDemo() || !w.footprint()->controller()->waitIdle(60000)) return false;
+    if (!w.openDemo() || !w.workspace<lwb::ui::FootprintWorkspace>()->controller()->waitIdle(60000)) return false;
     w.resize(1400, 900);
     w.show();
     w.activateWindow();
@@ -131,7 +131,7 @@ private slots:
     void filteredAcceptRejectVisitsEveryShotOnce() {
         MainWindow w;
         w.openDemo();
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(c->waitIdle(60000));
         QComboBox* filter = filterCombo(&w);
@@ -162,7 +162,7 @@ private slots:
     // Item 2: the ROI view draws the fits again after an unreadable frame was shown.
     void overlaysSurviveAnUnreadableFrame() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(loadAndWait(c, {m_dir.path() + "/shots/shot_000000.png", m_dir.path() + "/junk/broken.png"}));
         QCOMPARE(c->count(), 2);
@@ -192,7 +192,7 @@ private slots:
     // the status says how many files were skipped.
     void nonImageFilesAreSkippedAndCounted() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QStringList files;
         for (const QString& f : QDir(m_dir.path() + "/shots").entryList(QDir::Files, QDir::Name))
@@ -212,7 +212,7 @@ private slots:
     // the filter.
     void unreadableIsItsOwnState() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(loadAndWait(c, {m_dir.path() + "/junk/broken.png", m_dir.path() + "/shots/shot_000000.png"}));
         QCOMPARE(c->counts().rejected, 0);
@@ -227,7 +227,7 @@ private slots:
     void pixelReadoutClearedOnShotChange() {
         MainWindow w;
         w.openDemo();
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         QVERIFY(fw->controller()->waitIdle(60000));
         QLabel* readout = nullptr;
         for (QLabel* l : w.findChildren<QLabel*>())
@@ -247,7 +247,7 @@ private slots:
         int current = -1;
         {
             MainWindow w;
-            FootprintWorkspace* fw = w.footprint();
+            FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
             FootprintController* c = fw->controller();
             QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
             filterCombo(&w)->setCurrentIndex(2);
@@ -261,10 +261,10 @@ private slots:
         MainWindow w2;
         QString err;
         QVERIFY2(w2.openSession(session, true, &err), qPrintable(err));
-        QVERIFY(w2.footprint()->controller()->waitIdle(30000));
+        QVERIFY(w2.workspace<lwb::ui::FootprintWorkspace>()->controller()->waitIdle(30000));
         QCOMPARE(filterCombo(&w2)->currentIndex(), 2);
-        QCOMPARE(currentSource(w2.footprint()), current);
-        QCOMPARE(w2.footprint()->controller()->current(), current);
+        QCOMPARE(currentSource(w2.workspace<lwb::ui::FootprintWorkspace>()), current);
+        QCOMPARE(w2.workspace<lwb::ui::FootprintWorkspace>()->controller()->current(), current);
     }
 
     // Item 7: the trend legend sits outside the data area; without times there are no empty
@@ -272,7 +272,7 @@ private slots:
     void trendLegendAndEmptyTrend() {
         MainWindow w;
         w.openDemo();
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         QVERIFY(fw->controller()->waitIdle(60000));
         w.resize(1400, 900);
         w.show();
@@ -308,7 +308,7 @@ private slots:
         }
         MainWindow w;
         QVERIFY(w.openDemo());
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(c->waitIdle(60000));
         int asked = 0;
@@ -324,7 +324,7 @@ private slots:
         QVERIFY(w.isModified());
         QVERIFY(!w.openDemo());
         QCOMPARE(asked, 1);
-        QVERIFY(!w.openFootprintInputs({m_dir.path() + "/shots"}));
+        QVERIFY(!w.openInputsIn(w.workspace<lwb::ui::FootprintWorkspace>(), {m_dir.path() + "/shots"}));
         QCOMPARE(asked, 2);
         QString err;
         QVERIFY(!w.openSession(session, true, &err));
@@ -332,7 +332,7 @@ private slots:
         QVERIFY(c->shot(5)->overridden);  // still there after three cancels
         QCOMPARE(c->count(), 240);
         answer = QMessageBox::Discard;
-        QVERIFY(w.openFootprintInputs({m_dir.path() + "/shots"}));
+        QVERIFY(w.openInputsIn(w.workspace<lwb::ui::FootprintWorkspace>(), {m_dir.path() + "/shots"}));
         QCOMPARE(asked, 4);
         QVERIFY(c->waitIdle(30000));
         QCOMPARE(c->count(), 40);
@@ -347,7 +347,7 @@ private slots:
     // be on screen) and left the parameter as it was.
     void parameterChangeIsUndoneBeforeAVerdict() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
         fw->selectRow(0);
@@ -395,11 +395,11 @@ private slots:
         const auto cli = lwbtest::runCli({"footprint", path, "-q", "-o", m_dir.path() + "/list_cli.csv"});
         QVERIFY2(cli.exitCode == 0, qPrintable(cli.err));
         MainWindow w;
-        FootprintController* c = w.footprint()->controller();
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
         QVERIFY(loadAndWait(c, {path}));
         QCOMPARE(c->count(), 6);
         QString err;
-        QVERIFY2(w.footprint()->exportTable(m_dir.path() + "/list_gui.csv", false, &err), qPrintable(err));
+        QVERIFY2(w.workspace<lwb::ui::FootprintWorkspace>()->exportTable(m_dir.path() + "/list_gui.csv", false, &err), qPrintable(err));
         const auto ref = lwb::core::readCsv((m_dir.path() + "/list_cli.csv").toStdString());
         const auto got = lwb::core::readCsv((m_dir.path() + "/list_gui.csv").toStdString());
         QVERIFY(ref.ok && got.ok);
@@ -437,11 +437,11 @@ private slots:
         QVERIFY2(lwb::core::footprint::resolveFootprintParams(src, &p, &fe), fe.message.c_str());
         QVERIFY(p.roi.sizeExplicit && p.roi.size == 24 && p.method == lwb::core::footprint::Method::Tefm);
         MainWindow w;
-        FootprintController* c = w.footprint()->controller();
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
         c->setParams(p);
         QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
         QString err;
-        QVERIFY2(w.footprint()->exportTable(m_dir.path() + "/opts_gui.csv", false, &err), qPrintable(err));
+        QVERIFY2(w.workspace<lwb::ui::FootprintWorkspace>()->exportTable(m_dir.path() + "/opts_gui.csv", false, &err), qPrintable(err));
         const auto ref = lwb::core::readCsv((m_dir.path() + "/opts_cli.csv").toStdString());
         const auto got = lwb::core::readCsv((m_dir.path() + "/opts_gui.csv").toStdString());
         QVERIFY(ref.ok && got.ok);
@@ -455,7 +455,7 @@ private slots:
     // threshold between two rounded values (the CLI compared the rounded text: one row off).
     void whereGivesTheWindowsRows() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
         std::vector<double> snr;
@@ -489,7 +489,7 @@ private slots:
                                           m_dir.path() + "/junk/broken.png", "-o", m_dir.path() + "/cli.csv"});
         QVERIFY2(cli.exitCode == 0, qPrintable(cli.err));
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(loadAndWait(c, {m_dir.path() + "/shots", m_dir.path() + "/junk/broken.png"}));
         QCOMPARE(c->count(), 41);
@@ -561,7 +561,7 @@ private slots:
     // 35 accepted shots", 34 rows). The message now gives the rows written and what was left out.
     void acceptedExportCountsTheRowsWritten() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(loadAndWait(c, {m_dir.path() + "/shots"}));
         int rejected = -1;
@@ -596,7 +596,7 @@ private slots:
         QVERIFY(showDemo(w));
         w.resize(1480, 900);
         QVERIFY(QTest::qWaitFor([&] { return w.width() == 1480; }, 2000));
-        QTableView* t = w.footprint()->table();
+        QTableView* t = w.workspace<lwb::ui::FootprintWorkspace>()->table();
         const int x = t->columnViewportPosition(ShotTableModel::VerdictCol);
         QVERIFY2(x >= 0 && x + t->columnWidth(ShotTableModel::VerdictCol) <= t->viewport()->width(),
                  qPrintable(QString("verdict column at %1..%2 of a %3 px viewport")
@@ -616,7 +616,7 @@ private slots:
         auto* cancel = w.findChild<QPushButton*>("loadCancel");
         auto* progress = w.findChild<QProgressBar*>("loadProgress");
         QVERIFY(cancel && progress);
-        FootprintController* c = w.footprint()->controller();
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
         QSignalSpy finished(c, &FootprintController::loadFinished);
         QElapsedTimer t;
         t.start();
@@ -641,7 +641,7 @@ private slots:
     void triageNextUnreviewedCounterAndContactSheet() {
         MainWindow w;
         QVERIFY(showDemo(w));
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         fw->filterBox()->setCurrentIndex(0);  // all shots
         int doubtful = 0;
@@ -700,7 +700,7 @@ private slots:
     void roiDisplayLimitsStretchHistogramColourBar() {
         MainWindow w;
         QVERIFY(showDemo(w));
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QSignalSpy detail(c, &FootprintController::currentDetailReady);
         fw->selectRow(7);
@@ -779,7 +779,7 @@ private slots:
         QVERIFY(QFile::copy(staging + "/truth.csv", folder + "/truth.csv"));
 
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         w.resize(1400, 900);
         w.show();
@@ -787,7 +787,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QSignalSpy status(fw, &FootprintWorkspace::status);
         QSignalSpy finished(c, &FootprintController::loadFinished);
-        QVERIFY(w.openFootprintInputs({folder}));
+        QVERIFY(w.openInputsIn(w.workspace<lwb::ui::FootprintWorkspace>(), {folder}));
         QVERIFY(finished.wait(60000));
         QVERIFY(c->waitIdle(60000));
         QCOMPARE(c->count(), 200);
@@ -894,7 +894,7 @@ private slots:
         const QString file = m_dir.path() + "/corner/spot_top_left.png";
         QVERIFY(writeSpot(file, 4.0, 2.0));
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(loadAndWait(c, {file}));
         QCOMPARE(c->count(), 1);
@@ -945,7 +945,7 @@ private slots:
                                           m_dir.path() + "/zoomframes"});
         QVERIFY2(sim.exitCode == 0, qPrintable(sim.err));
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(loadAndWait(c, {m_dir.path() + "/zoomframes"}));
         w.resize(1400, 900);
@@ -1028,7 +1028,7 @@ private slots:
     // colour bar are cleared and the ROI view says why it cannot be read.
     void unreadableShotClearsTheDisplayAndSaysWhy() {
         MainWindow w;
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         FootprintController* c = fw->controller();
         QVERIFY(loadAndWait(c, {m_dir.path() + "/shots/shot_000000.png", m_dir.path() + "/junk/broken.png"}));
         w.resize(1400, 900);
@@ -1064,7 +1064,7 @@ private slots:
     void colourBarUnitDoesNotCoverTheBar() {
         MainWindow w;
         QVERIFY(showDemo(w));
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         QVERIFY(showShot(fw, 7));
         ColorBar* bar = fw->colorBar();
         QVERIFY(bar->isVisible());
@@ -1097,7 +1097,7 @@ private slots:
     void tabLeavesTheShotTable() {
         MainWindow w;
         QVERIFY(showDemo(w));
-        FootprintWorkspace* fw = w.footprint();
+        FootprintWorkspace* fw = w.workspace<lwb::ui::FootprintWorkspace>();
         fw->filterBox()->setCurrentIndex(0);
         fw->selectRow(3);
         fw->table()->setFocus();

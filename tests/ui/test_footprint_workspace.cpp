@@ -12,12 +12,12 @@
 
 #include "core/common/csv.hpp"
 #include "test_support.hpp"
-#include "ui/footprint_params_panel.hpp"
-#include "ui/footprint_workspace.hpp"
-#include "ui/image_view.hpp"
-#include "ui/main_window.hpp"
-#include "ui/param_slider.hpp"
-#include "ui/shot_table_model.hpp"
+#include "ui/footprint/footprint_params_panel.hpp"
+#include "ui/footprint/footprint_workspace.hpp"
+#include "ui/kit/image_view.hpp"
+#include "ui/shell/main_window.hpp"
+#include "ui/kit/param_slider.hpp"
+#include "ui/footprint/shot_table_model.hpp"
 
 using namespace lwb::ui;
 
@@ -34,12 +34,12 @@ private slots:
 
     void loadingAFolderFillsTheTable() {
         MainWindow w;
-        FootprintController* c = w.footprint()->controller();
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
         QSignalSpy finished(c, &FootprintController::loadFinished);
         c->open({m_dir.path() + "/shots"});
         QVERIFY(finished.wait(30000));
         QCOMPARE(c->count(), 40);
-        QCOMPARE(w.footprint()->table()->model()->rowCount(), 40);
+        QCOMPARE(w.workspace<lwb::ui::FootprintWorkspace>()->table()->model()->rowCount(), 40);
         const auto n = c->counts();
         QCOMPARE(n.good + n.doubtful + n.rejected, 40);
         QVERIFY(n.good >= 20);      // 28 normal shots among 40 (2 of every 3)
@@ -49,25 +49,25 @@ private slots:
 
     void sliderChangesTheCurrentShotAndTheCounts() {
         MainWindow w;
-        FootprintController* c = w.footprint()->controller();
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
         QSignalSpy finished(c, &FootprintController::loadFinished);
         c->open({m_dir.path() + "/shots"});
         QVERIFY(finished.wait(30000));
         QVERIFY(c->waitIdle(30000));
         QSignalSpy detail(c, &FootprintController::currentDetailReady);
-        w.footprint()->selectRow(0);
+        w.workspace<lwb::ui::FootprintWorkspace>()->selectRow(0);
         c->setCurrent(0);  // row 0 may already be current: ask for its result explicitly
         QVERIFY(detail.wait(5000));
         const double axisBefore = detail.last().at(0).value<ShotDetail>().selected.fit.majorAxisPx;
         const int goodBefore = c->counts().good;
         // Threshold factor moves the spot domain: the fit's domain area changes at once.
         const size_t areaBefore = detail.last().at(0).value<ShotDetail>().selected.domain.pixels.size();
-        w.footprint()->paramsPanel()->thresholdSlider()->field()->setValue(0.4);
+        w.workspace<lwb::ui::FootprintWorkspace>()->paramsPanel()->thresholdSlider()->field()->setValue(0.4);
         QVERIFY(detail.wait(5000));
         const ShotDetail after = detail.last().at(0).value<ShotDetail>();
         QVERIFY(after.selected.domain.pixels.size() < areaBefore);
         // Axis ratio max down to 1.05: most good spots now fail the ratio criterion.
-        w.footprint()->paramsPanel()->axisRatioMaxSlider()->field()->setValue(1.05);
+        w.workspace<lwb::ui::FootprintWorkspace>()->paramsPanel()->axisRatioMaxSlider()->field()->setValue(1.05);
         QVERIFY(c->waitIdle(30000));
         QVERIFY2(c->counts().good < goodBefore, qPrintable(QString("%1 -> %2").arg(goodBefore).arg(c->counts().good)));
         Q_UNUSED(axisBefore);
@@ -80,14 +80,14 @@ private slots:
         int expectGood = 0;
         {
             MainWindow w;
-            FootprintController* c = w.footprint()->controller();
+            FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
             QSignalSpy finished(c, &FootprintController::loadFinished);
             c->open({m_dir.path() + "/shots"});
             QVERIFY(finished.wait(30000));
             QVERIFY(c->waitIdle(30000));
             auto p = c->params();
             p.verdict.tiltDeg = {true, -25, 25};
-            w.footprint()->paramsPanel()->setParams(p);
+            w.workspace<lwb::ui::FootprintWorkspace>()->paramsPanel()->setParams(p);
             c->setParams(p);
             QVERIFY(c->waitIdle(30000));
             // Reject the first good shot, accept the first doubtful one, note on a third.
@@ -119,7 +119,7 @@ private slots:
         // Reopen: parameters and overrides restored.
         MainWindow w2;
         QVERIFY2(w2.openSession(session, true, &err), qPrintable(err));
-        FootprintController* c2 = w2.footprint()->controller();
+        FootprintController* c2 = w2.workspace<lwb::ui::FootprintWorkspace>()->controller();
         QVERIFY(c2->waitIdle(30000));
         QCOMPARE(c2->count(), 40);
         QCOMPARE(c2->params().verdict.tiltDeg.lo, -25.0);
@@ -156,7 +156,7 @@ private slots:
             const QString path = m_dir.path() + (withOverrides ? "/many_ov.json" : "/many.json");
             if (!lwbtest::writeText(path, QJsonDocument(o).toJson())) return -1;
             MainWindow w;
-            FootprintController* c = w.footprint()->controller();
+            FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
             QSignalSpy counts(c, &FootprintController::countsChanged);
             QSignalSpy finished(c, &FootprintController::loadFinished);
             QString err;
@@ -177,7 +177,7 @@ private slots:
     void corruptSessionKeepsThePreviousState() {
         MainWindow w;
         w.openDemo();
-        FootprintController* c = w.footprint()->controller();
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
         QVERIFY(c->waitIdle(30000));
         const int before = c->count();
         const double thr = c->params().segment.thresholdFactor;
@@ -199,7 +199,7 @@ private slots:
 
     void unreadableInputIsReportedNotFatal() {
         MainWindow w;
-        FootprintController* c = w.footprint()->controller();
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
         QDir().mkpath(m_dir.path() + "/junk");
         QVERIFY(lwbtest::writeText(m_dir.path() + "/junk/broken.png", "not a png"));
         QSignalSpy finished(c, &FootprintController::loadFinished);
@@ -216,7 +216,7 @@ private slots:
         const auto r = lwbtest::runCli({"simulate", "footprint", "--count", "1500", "--seed", "8", "-q", m_dir.path() + "/many"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         MainWindow w;
-        FootprintController* c = w.footprint()->controller();
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
         QSignalSpy finished(c, &FootprintController::loadFinished);
         c->open({m_dir.path() + "/many"});
         c->cancelLoading();  // straight away: the workers stop at their next shot
@@ -230,13 +230,13 @@ private slots:
     void keyboardAcceptsAndRejects() {
         MainWindow w;
         w.openDemo();
-        FootprintController* c = w.footprint()->controller();
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
         QVERIFY(c->waitIdle(30000));
-        QTableView* t = w.footprint()->table();
+        QTableView* t = w.workspace<lwb::ui::FootprintWorkspace>()->table();
         w.show();
         w.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        w.footprint()->selectRow(3);
+        w.workspace<lwb::ui::FootprintWorkspace>()->selectRow(3);
         t->setFocus();
         QTest::keyClick(t, Qt::Key_R);
         QCOMPARE(c->shot(3)->effectiveVerdict(), Verdict::Rejected);

@@ -10,10 +10,10 @@
 #include <qcustomplot.h>
 
 #include "test_support.hpp"
-#include "ui/calib_workspace.hpp"
-#include "ui/plot_kit.hpp"
-#include "ui/save_path.hpp"
-#include "ui/radiometry_workspace.hpp"
+#include "ui/calib/calib_workspace.hpp"
+#include "ui/kit/plot_kit.hpp"
+#include "ui/kit/save_path.hpp"
+#include "ui/radiometry/radiometry_workspace.hpp"
 
 using namespace lwb::ui;
 
@@ -213,6 +213,40 @@ private slots:
         // An unwritable place: an error, no crash.
         QVERIFY(!exportPlot(p, m_dir.filePath("no/such/dir/plot.png"), &err));
         QVERIFY(err.contains("plot.png"));
+    }
+
+    /// Issue 42: an export at another size than the window's kept the window's tick count: a wide
+    /// PNG labelled 0 and 5000 only, a narrow one ran "28003000" together. The export's ticks are
+    /// fitted to its layout: at 1600 px at least five labels on x, none overlapping; at 260 px at
+    /// least two, none overlapping. (The export's layout stays on the axes until the next replot.)
+    void exportTicksFitTheExportsLayout() {
+        QCustomPlot* p = makePlot(m_host);
+        p->xAxis->setRange(0, 5000);
+        p->replot();
+        QString err;
+        auto labelsApart = [p](int* count) {
+            const QVector<double> ticks = p->xAxis->tickVector();
+            const QVector<QString> labels = p->xAxis->tickVectorLabels();
+            const QFontMetrics fm(p->xAxis->tickLabelFont());
+            *count = int(labels.size());
+            for (int i = 1; i < ticks.size() && i < labels.size(); ++i)
+                if (std::fabs(p->xAxis->coordToPixel(ticks[i]) - p->xAxis->coordToPixel(ticks[i - 1])) <
+                    (fm.horizontalAdvance(labels[i]) + fm.horizontalAdvance(labels[i - 1])) / 2.0 + 2)
+                    return QString("\"%1\" and \"%2\" overlap").arg(labels[i - 1], labels[i]);
+            return QString();
+        };
+        int count = 0;
+        QVERIFY2(exportPlot(p, m_dir.filePath("wide.png"), &err, 1600, 600, 96), qPrintable(err));
+        QString overlap = labelsApart(&count);
+        QVERIFY2(count >= 5 && overlap.isEmpty(), qPrintable(QString("%1 labels on a 1600 px export %2").arg(count).arg(overlap)));
+        QVERIFY2(exportPlot(p, m_dir.filePath("narrow.svg"), &err, 260, 200), qPrintable(err));
+        overlap = labelsApart(&count);
+        QVERIFY2(count >= 2 && overlap.isEmpty(), qPrintable(QString("%1 labels on a 260 px export %2").arg(count).arg(overlap)));
+        // The window's own come back with the next replot.
+        QApplication::processEvents();
+        p->replot();
+        overlap = labelsApart(&count);
+        QVERIFY2(count >= 2 && overlap.isEmpty(), qPrintable(overlap));
     }
 
     /// Issue 30: plot exports were the widget's size (a 323 × 161 PNG), named plot.png, with no

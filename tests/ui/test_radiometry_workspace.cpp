@@ -16,7 +16,7 @@
 #include "core/radiometry/reflectance.hpp"
 #include "session_refused.hpp"
 #include "test_support.hpp"
-#include "ui/radiometry_workspace.hpp"
+#include "ui/radiometry/radiometry_workspace.hpp"
 
 using namespace lwb::ui;
 using namespace lwb::core::radiometry;

@@ -19,14 +19,14 @@
 #include "core/slr/presets.hpp"
 #include "schema_cases.hpp"
 #include "test_support.hpp"
-#include "ui/calib_params_panel.hpp"
-#include "ui/footprint_params_panel.hpp"
-#include "ui/footprint_workspace.hpp"
-#include "ui/live_job.hpp"
-#include "ui/param_slider.hpp"
-#include "ui/schema_form.hpp"
-#include "ui/slr_params_panel.hpp"
-#include "ui/slr_workspace.hpp"
+#include "ui/calib/calib_params_panel.hpp"
+#include "ui/footprint/footprint_params_panel.hpp"
+#include "ui/footprint/footprint_workspace.hpp"
+#include "ui/kit/live_job.hpp"
+#include "ui/kit/param_slider.hpp"
+#include "ui/kit/schema_form.hpp"
+#include "ui/slr/slr_params_panel.hpp"
+#include "ui/slr/slr_workspace.hpp"
 
 using namespace lwb::ui;
 using namespace lwb::core;

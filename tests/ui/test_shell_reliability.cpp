@@ -12,13 +12,13 @@
 
 #include "lwb_version.hpp"
 #include "test_support.hpp"
-#include "ui/footprint_controller.hpp"
-#include "ui/footprint_workspace.hpp"
-#include "ui/main_window.hpp"
-#include "ui/radiometry_controller.hpp"
-#include "ui/radiometry_workspace.hpp"
-#include "ui/slr_controller.hpp"
-#include "ui/slr_workspace.hpp"
+#include "ui/footprint/footprint_controller.hpp"
+#include "ui/footprint/footprint_workspace.hpp"
+#include "ui/shell/main_window.hpp"
+#include "ui/radiometry/radiometry_controller.hpp"
+#include "ui/radiometry/radiometry_workspace.hpp"
+#include "ui/slr/slr_controller.hpp"
+#include "ui/slr/slr_workspace.hpp"
 
 using namespace lwb::ui;
 
@@ -74,7 +74,7 @@ private slots:
         QFETCH(QString, message);
         MainWindow w;
         w.openDemo();
-        FootprintController* c = w.footprint()->controller();
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
         QVERIFY(c->waitIdle(30000));
         const int before = c->count();
         const QString path = m_dir.path() + "/v.lwb.json";
@@ -124,8 +124,8 @@ private slots:
         const QByteArray before = lwbtest::readAll(copy);
         MainWindow w;
         QString err;
-        QVERIFY2(w.slr()->openPath(copy, -1, &err), qPrintable(err));
-        SlrController* c = w.slr()->controller();
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->openPath(copy, -1, &err), qPrintable(err));
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         QVERIFY(c->waitIdle(60000));
         QVERIFY(c->hasRun());
         QVERIFY(!c->exportCrd(link, &err));
@@ -295,7 +295,7 @@ private slots:
             const QString path = d + QString("/m%1.lwb.json").arg(i);
             QVERIFY(lwbtest::writeText(path, m));
             MainWindow w;
-            const QJsonObject before = w.footprint()->saveState();
+            const QJsonObject before = w.workspace<lwb::ui::FootprintWorkspace>()->saveState();
             QString err;
             if (w.openSession(path, true, &err)) {
                 ++opened;
@@ -303,7 +303,7 @@ private slots:
             } else {
                 ++refused;
                 QVERIFY2(err.contains(path), qPrintable(QString("mutant %1: %2").arg(i).arg(err)));
-                QCOMPARE(w.footprint()->saveState(), before);
+                QCOMPARE(w.workspace<lwb::ui::FootprintWorkspace>()->saveState(), before);
             }
             QFile::remove(path);
         }

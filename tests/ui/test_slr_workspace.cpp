@@ -19,14 +19,16 @@
 #include "core/slr/crd.hpp"
 #include "core/slr/pass_input.hpp"
 #include "test_support.hpp"
-#include "ui/main_window.hpp"
-#include "ui/app_undo.hpp"
-#include "ui/param_slider.hpp"
-#include "ui/plot_kit.hpp"
-#include "ui/slr_all_passes.hpp"
-#include "ui/slr_params_panel.hpp"
-#include "ui/slr_station_nps.hpp"
-#include "ui/slr_workspace.hpp"
+#include "ui/shell/main_window.hpp"
+#include "ui/kit/app_undo.hpp"
+#include "ui/kit/param_slider.hpp"
+#include "ui/kit/plot_kit.hpp"
+#include "ui/slr/slr_all_passes.hpp"
+#include "ui/slr/slr_params_panel.hpp"
+#include "ui/slr/slr_station_nps.hpp"
+#include "ui/slr/slr_workspace.hpp"
+#include <QRegularExpression>
+#include "core/slr/slr_time.hpp"
 
 using namespace lwb::ui;
 
@@ -49,12 +51,12 @@ lwb::core::sim::SlrSimPass simulated(lwb::core::sim::SlrKind kind, int points, d
 // Opens a pass (its first) in the window's SLR workspace, shown at 1500 x 950, and waits for its
 // run. False with *err.
 bool openScreened(MainWindow& w, const QString& path, QString* err) {
-    w.slr()->resize(1500, 950);
-    w.slr()->show();
-    if (!w.slr()->openPath(path, 0, err)) return false;
-    if (!w.slr()->controller()->waitIdle(60000)) return *err = "the run did not end", false;
+    w.workspace<lwb::ui::SlrWorkspace>()->resize(1500, 950);
+    w.workspace<lwb::ui::SlrWorkspace>()->show();
+    if (!w.workspace<lwb::ui::SlrWorkspace>()->openPath(path, 0, err)) return false;
+    if (!w.workspace<lwb::ui::SlrWorkspace>()->controller()->waitIdle(60000)) return *err = "the run did not end", false;
     QCoreApplication::processEvents();
-    if (!w.slr()->controller()->hasRun()) return *err = "no run", false;
+    if (!w.workspace<lwb::ui::SlrWorkspace>()->controller()->hasRun()) return *err = "no run", false;
     return true;
 }
 // A sparse pass with a curved track, where the recovery step (and so C) matters.
@@ -116,7 +118,7 @@ private slots:
     void demoPassIsScreened() {
         MainWindow w;
         w.openDemo();
-        SlrController* c = w.slr()->controller();
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         QVERIFY(c->waitIdle(60000));
         QVERIFY(c->hasRun());
         const SlrRun& r = c->run();
@@ -142,10 +144,10 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         w.showWorkspace("slr");
-        QVERIFY(w.slr()->controller()->waitIdle(60000));
+        QVERIFY(w.workspace<lwb::ui::SlrWorkspace>()->controller()->waitIdle(60000));
         QTest::qWait(50);
         QCoreApplication::processEvents();
-        SlrWorkspace* ws = w.slr();
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
         // The legends in two columns, every entry inside its plot; the titles and the image's
         // O-C axis label no longer than their room.
         auto plotsFit = [ws](const QString& what) {
@@ -205,7 +207,7 @@ private slots:
         w.showWorkspace("slr");
         QTest::qWait(100);
         QCoreApplication::processEvents();
-        for (QCustomPlot* p : {w.slr()->ocPlot(), w.slr()->imagePlot()}) {
+        for (QCustomPlot* p : {w.workspace<lwb::ui::SlrWorkspace>()->ocPlot(), w.workspace<lwb::ui::SlrWorkspace>()->imagePlot()}) {
             p->replot();
             const int axes = p->axisRect()->rect().width();
             QString layout;
@@ -223,7 +225,7 @@ private slots:
 
     void cosineSliderChangesTheAcceptedCount() {
         MainWindow w;
-        SlrController* c = w.slr()->controller();
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         openSparsePass(c);
         QVERIFY(c->waitIdle(60000));
         // Fix the scale (manual) so only C moves, at a finer O-C scale and a higher area limit
@@ -231,24 +233,24 @@ private slots:
         // recovery step (where C acts) decides about them.
         const double magOc = c->run().screen.magOc * 3;
         const int area = c->run().screen.areaLimit * 3;
-        w.slr()->autoCheck()->setChecked(false);  // the sliders hold the automatic choice
+        w.workspace<lwb::ui::SlrWorkspace>()->autoCheck()->setChecked(false);  // the sliders hold the automatic choice
         // The paper's fixed procedure: no refinement, track following or floorless check (since
         // issue 28 they have their own switches and stay on when Automatic is unticked).
         for (const char* key : {"screen.follow_track", "screen.accept_floorless"})
-            qobject_cast<QCheckBox*>(w.slr()->paramsPanel()->form().widget(key))->setChecked(false);
-        w.slr()->paramsPanel()->slider("screen.refine_rounds")->field()->setValue(0);
-        w.slr()->magOcSlider()->field()->setValue(magOc);
-        w.slr()->areaSlider()->field()->setValue(area);
+            qobject_cast<QCheckBox*>(w.workspace<lwb::ui::SlrWorkspace>()->paramsPanel()->form().widget(key))->setChecked(false);
+        w.workspace<lwb::ui::SlrWorkspace>()->paramsPanel()->slider("screen.refine_rounds")->field()->setValue(0);
+        w.workspace<lwb::ui::SlrWorkspace>()->magOcSlider()->field()->setValue(magOc);
+        w.workspace<lwb::ui::SlrWorkspace>()->areaSlider()->field()->setValue(area);
         QVERIFY(c->waitIdle(60000));
         QVERIFY(!c->screenParams().automatic);
         QCOMPARE(c->screenParams().areaLimit, area);
         QSignalSpy ready(c, &SlrController::runReady);
-        w.slr()->cosineSlider()->field()->setValue(0.90);
+        w.workspace<lwb::ui::SlrWorkspace>()->cosineSlider()->field()->setValue(0.90);
         QVERIFY(ready.wait(60000));
         QVERIFY(c->waitIdle(60000));
         const int loose = acceptedCount(c->run());
         const size_t recLoose = c->run().screen.recoveredRegions;
-        w.slr()->cosineSlider()->field()->setValue(0.999);
+        w.workspace<lwb::ui::SlrWorkspace>()->cosineSlider()->field()->setValue(0.999);
         QVERIFY(ready.wait(60000));
         QVERIFY(c->waitIdle(60000));
         const int strict = acceptedCount(c->run());
@@ -258,7 +260,7 @@ private slots:
 
     void manualEditsAreKeptAndUndoable() {
         MainWindow w;
-        SlrController* c = w.slr()->controller();
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         openSparsePass(c);
         QVERIFY(c->waitIdle(60000));
         const std::vector<uint8_t> base = c->run().accepted;
@@ -296,7 +298,7 @@ private slots:
         int accepted = 0;
         {
             MainWindow w;
-            SlrController* c = w.slr()->controller();
+            SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
             openSparsePass(c);
             QVERIFY(c->waitIdle(60000));
             c->forcePoints({0, 1, 2}, true);
@@ -339,14 +341,14 @@ private slots:
         MainWindow w;
         QString err;
         QVERIFY2(openScreened(w, csv, &err), qPrintable(err));
-        SlrController* c = w.slr()->controller();
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         const SlrRun& r = c->run();
         QVERIFY2(r.post.ok, r.post.error.c_str());
         QVERIFY(r.post.used > 500 && r.post.stats.rms > 0 && r.post.stats.rms < 1e-9);
         QVERIFY(r.post.normalPoints.empty());
         QVERIFY(QString::fromStdString(r.postNote).contains("altitude"));
         bool shown = false;
-        for (QLabel* l : w.slr()->findChildren<QLabel*>())
+        for (QLabel* l : w.workspace<lwb::ui::SlrWorkspace>()->findChildren<QLabel*>())
             shown = shown || (l->text().contains("RMS") && l->text().contains("No normal points") && l->text().contains("altitude"));
         QVERIFY2(shown, "the statistics give the RMS and say why there are no normal points");
         QVERIFY(!c->exportNormalPoints(m_dir.path() + "/none.npt", &err));
@@ -367,9 +369,9 @@ private slots:
         MainWindow w;
         QString err;
         QVERIFY2(openScreened(w, csv, &err), qPrintable(err));
-        SlrController* c = w.slr()->controller();
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         QVERIFY2(c->run().doubt.find("two parallel tracks") == 0, c->run().doubt.c_str());
-        const QString text = w.slr()->statsLabel()->text();
+        const QString text = w.workspace<lwb::ui::SlrWorkspace>()->statsLabel()->text();
         QVERIFY2(text.contains("Doubtful, no normal points") && text.contains("two parallel tracks") && text.contains("altitude"),
                  qPrintable(text));
         QVERIFY2(text.indexOf("two parallel tracks") < text.indexOf("altitude"), qPrintable(text));
@@ -381,7 +383,7 @@ private slots:
         {
             MainWindow w;
             w.openDemo();
-            SlrController* c = w.slr()->controller();
+            SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
             QVERIFY(c->waitIdle(60000));
             c->forcePoints({5, 6, 7, 8}, false);
             auto sp = c->screenParams();
@@ -392,7 +394,7 @@ private slots:
         }
         MainWindow w2;
         QVERIFY2(w2.openSession(session, true, &err), qPrintable(err));
-        SlrController* c2 = w2.slr()->controller();
+        SlrController* c2 = w2.workspace<lwb::ui::SlrWorkspace>()->controller();
         QVERIFY(c2->waitIdle(60000));
         QCOMPARE(c2->screenParams().cosineC, 0.925);
         int forcedOut = 0;
@@ -420,12 +422,12 @@ private slots:
 
         MainWindow w;
         QString err;
-        QVERIFY2(w.slr()->openPath(cut, -1, &err), qPrintable(err));
-        SlrController* c = w.slr()->controller();
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->openPath(cut, -1, &err), qPrintable(err));
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         QVERIFY(c->waitIdle(60000));
         QVERIFY(c->hasRun());
         QCOMPARE(c->pass().t.size(), size_t(258));  // the 259 records less the damaged one
-        const QString info = w.slr()->infoLabel()->text();
+        const QString info = w.workspace<lwb::ui::SlrWorkspace>()->infoLabel()->text();
         QVERIFY2(info.contains(at.toHtmlEscaped()), qPrintable(info));
         QVERIFY2(info.contains("exports are refused"), qPrintable(info));
         QVERIFY2(info.contains("file ends without H8"), qPrintable(info));
@@ -442,7 +444,7 @@ private slots:
         // Screen all passes on it: the damaged pass is a failed row, as laserwb-cli slr
         // --all-passes lists it (the workbench's own set-up opens it to be looked at; the batch
         // ran it and stopped at its refused files, with no table).
-        SlrAllPassesDialog* all = w.slr()->screenAllPasses();
+        SlrAllPassesDialog* all = w.workspace<lwb::ui::SlrWorkspace>()->screenAllPasses();
         QVERIFY(all);
         QTRY_VERIFY_WITH_TIMEOUT(all->finished(), 60000);
         QCOMPARE(all->table()->item(0, SlrAllPassesDialog::column("status"))->text(), QString("failed"));
@@ -452,11 +454,11 @@ private slots:
         QCOMPARE(lwbtest::readAll(m_dir.path() + "/cut-all.csv"), lwbtest::readAll(m_dir.path() + "/cut-day/summary.csv"));
         all->close();
         // A sound pass opened next clears the warnings and exports again.
-        QVERIFY2(w.slr()->openPath(jason, -1, &err), qPrintable(err));
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->openPath(jason, -1, &err), qPrintable(err));
         QVERIFY(c->waitIdle(60000));
         for (const auto& warning : c->warnings()) QVERIFY2(warning.find("cut.frd") == std::string::npos, warning.c_str());
-        QVERIFY(!w.slr()->infoLabel()->text().contains("cut.frd"));
-        QVERIFY(!w.slr()->infoLabel()->text().contains("refused"));
+        QVERIFY(!w.workspace<lwb::ui::SlrWorkspace>()->infoLabel()->text().contains("cut.frd"));
+        QVERIFY(!w.workspace<lwb::ui::SlrWorkspace>()->infoLabel()->text().contains("refused"));
         QVERIFY2(c->exportCsv(csv, &err), qPrintable(err));
     }
 
@@ -468,7 +470,7 @@ private slots:
         if (!QFile::exists(jason)) QSKIP("shared data absent");
         MainWindow w;
         w.openDemo();
-        SlrWorkspace* ws = w.slr();
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
         QVERIFY(ws->controller()->waitIdle(60000));
         QCoreApplication::processEvents();
         QCPGraph* off = ws->imagePlot()->graph(3);
@@ -495,7 +497,7 @@ private slots:
     /// unpooled on top: every signal cell drawn there is a signal pixel, at its place.
     void imageShowsTheTrackAtPixelResolution() {
         MainWindow w;
-        SlrWorkspace* ws = w.slr();
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
         double altitude = 0;
         const lwb::core::sim::SlrSimPass pass = simulated(lwb::core::sim::SlrKind::Conventional, 20000, 0.1, 3, &altitude);
         QVERIFY(pass.ok);
@@ -566,14 +568,14 @@ private slots:
                       snx = lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx");
         QStringList options;
         if (sources == 1) {
-            QVERIFY2(w.slr()->setCpf(cpf, &err) && w.slr()->setSinex(snx, &err), qPrintable(err));
+            QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->setCpf(cpf, &err) && w.workspace<lwb::ui::SlrWorkspace>()->setSinex(snx, &err), qPrintable(err));
             options = {"--cpf", cpf, "--stations", snx};
         } else if (sources == 2) {
-            QVERIFY2(w.slr()->setSinex(snx, &err), qPrintable(err));
+            QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->setSinex(snx, &err), qPrintable(err));
             options = {"--stations", snx};
         }
-        QVERIFY2(w.slr()->openPath(in, pass - 1, &err), qPrintable(err));
-        SlrController* c = w.slr()->controller();
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->openPath(in, pass - 1, &err), qPrintable(err));
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         QVERIFY(c->waitIdle(60000));
         QVERIFY(c->hasRun());
         QVERIFY2(c->exportCsv(d + "/gui.csv", &err), qPrintable(err));
@@ -592,11 +594,11 @@ private slots:
     // Opens pass `pass` (from 1) of a real file in the SLR workspace and waits for its screening.
     static bool openAndWait(MainWindow& w, const QString& in, int pass) {
         QString err;
-        if (!w.slr()->openPath(in, pass - 1, &err)) {
+        if (!w.workspace<lwb::ui::SlrWorkspace>()->openPath(in, pass - 1, &err)) {
             qWarning("%s", qPrintable(err));
             return false;
         }
-        return w.slr()->controller()->waitIdle(60000);
+        return w.workspace<lwb::ui::SlrWorkspace>()->controller()->waitIdle(60000);
     }
 
     // Moving C gives laserwb-cli's result at that C, byte for byte (issue 28). It reused the
@@ -616,8 +618,8 @@ private slots:
         if (!QFile::exists(in)) QSKIP("shared data absent");
         MainWindow w;
         QString err;
-        QVERIFY2(w.slr()->openPath(in, pass - 1, &err), qPrintable(err));
-        SlrController* c = w.slr()->controller();
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->openPath(in, pass - 1, &err), qPrintable(err));
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         QVERIFY(c->waitIdle(60000));
         const int screenings = c->screenCount();
         auto sp = c->screenParams();
@@ -643,11 +645,11 @@ private slots:
         QFETCH(int, pass);
         if (!lwbtest::haveShared(file)) QSKIP("shared data absent");
         MainWindow w;
-        SlrController* c = w.slr()->controller();
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         QVERIFY(openAndWait(w, lwbtest::sharedPath(file), pass));
         const int automatic = acceptedCount(c->run());
         const int screenings = c->screenCount();
-        w.slr()->autoCheck()->setChecked(false);
+        w.workspace<lwb::ui::SlrWorkspace>()->autoCheck()->setChecked(false);
         QTRY_VERIFY_WITH_TIMEOUT(c->waitIdle(1000) && c->hasRun() && c->screenCount() > screenings, 60000);
         QVERIFY(!c->screenParams().automatic);
         QVERIFY(c->screenParams().magT > 0 && c->screenParams().magOc > 0);
@@ -665,15 +667,15 @@ private slots:
         if (!QFile::exists(stella)) QSKIP("shared data absent");
         MainWindow w;
         QString err;
-        SlrController* c = w.slr()->controller();
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         c->setPresetFile(m_dir.path() + "/stella-presets.json");
         QFile::remove(m_dir.path() + "/stella-presets.json");
-        QVERIFY2(w.slr()->openPath(stella, -1, &err), qPrintable(err));
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->openPath(stella, -1, &err), qPrintable(err));
         QVERIFY(c->waitIdle(60000));
         const int before = acceptedCount(c->run());
         QVERIFY2(before >= 140, qPrintable(QString::number(before)));
         QVERIFY2(c->savePreset(&err), qPrintable(err));
-        QVERIFY2(w.slr()->openPath(stella, -1, &err), qPrintable(err));
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->openPath(stella, -1, &err), qPrintable(err));
         QVERIFY(c->waitIdle(60000));
         QCOMPARE(acceptedCount(c->run()), before);
     }
@@ -683,8 +685,8 @@ private slots:
         if (!QFile::exists(jason)) QSKIP("shared data absent");
         MainWindow w;
         QString err;
-        QVERIFY2(w.slr()->openPath(jason, -1, &err), qPrintable(err));
-        SlrController* c = w.slr()->controller();
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->openPath(jason, -1, &err), qPrintable(err));
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         QVERIFY(c->waitIdle(60000));
         QVERIFY(c->hasRun());
         QCOMPARE(c->pass().t.size(), size_t(259));
@@ -713,14 +715,42 @@ private slots:
         QVERIFY(c->savePreset(&err));
         sp.cosineC = 0.99;
         c->setScreenParams(sp);
-        QVERIFY(w.slr()->openPath(jason, -1, &err));
+        QVERIFY(w.workspace<lwb::ui::SlrWorkspace>()->openPath(jason, -1, &err));
         QCOMPARE(c->screenParams().cosineC, 0.91);
+        // Said in view with the pass (issue 42: only in the status bar), as the CLI's "; preset NAME".
+        QCOMPARE(c->appliedPreset(), QString("JASON1"));
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->infoLabel()->text().contains("preset JASON1</b> applied (presets.json)"),
+                 qPrintable(w.workspace<lwb::ui::SlrWorkspace>()->infoLabel()->text()));
         // The preset reproduces the screening shown when it was saved (issue 28: it stored the
         // chosen scale with the automatic mode off, which dropped the refinement and the track
         // following): the automatic mode stays on, the same points are accepted.
         QVERIFY(c->screenParams().automatic);
         QTRY_VERIFY_WITH_TIMEOUT(c->waitIdle(1000) && c->hasRun() && acceptedCount(c->run()) > 0, 60000);
         QCOMPARE(acceptedCount(c->run()), shown);
+    }
+
+    /// Issue 42: after a change that leaves nothing kept, the residual histogram kept the last
+    /// run's axes with no bars. Its axes are reset and it says why.
+    void histogramSaysWhenNothingIsKept() {
+        SlrWorkspace ws;
+        showWithSparsePass(&ws);
+        SlrController* c = ws.controller();
+        QVERIFY(c->hasRun() && c->run().post.ok);
+        QCOMPARE(ws.histPlot()->plottableCount(), 1);
+        const QCPRange before = ws.histPlot()->xAxis->range();
+        QCPItemText* empty = ws.histPlot()->findChild<QCPItemText*>("histogramEmpty");
+        QVERIFY(empty && !empty->visible());
+        // Nothing accepted: every point forced out (the analyst's box over the whole pass).
+        std::vector<uint32_t> all(c->pass().t.size());
+        for (size_t i = 0; i < all.size(); ++i) all[i] = uint32_t(i);
+        c->forcePoints(all, false);
+        QTRY_VERIFY_WITH_TIMEOUT(c->waitIdle(1000) && c->hasRun() && acceptedCount(c->run()) == 0, 60000);
+        QCoreApplication::processEvents();
+        QCOMPARE(ws.histPlot()->plottableCount(), 0);
+        QVERIFY(empty->visible());
+        QVERIFY2(!empty->text().isEmpty(), "no reason given");
+        QVERIFY2(ws.histPlot()->xAxis->range() != before,
+                 qPrintable(QString("axis %1 .. %2 kept").arg(before.lower).arg(before.upper)));
     }
 
     /// Issue 30: the SLR plots had none of the shared plot tools (no right-click menu, export,
@@ -774,12 +804,12 @@ private slots:
         if (!QFile::exists(frd)) QSKIP("shared data absent");
         MainWindow w;
         QString err;
-        QVERIFY2(w.slr()->openPath(frd, 2, &err), qPrintable(err));
-        SlrController* c = w.slr()->controller();
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->openPath(frd, 2, &err), qPrintable(err));
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
         QVERIFY(c->waitIdle(60000) && c->hasRun());
         QCoreApplication::processEvents();
         const double pixelNs = 1e9 / c->run().screen.magOc;
-        const QCPRange r = w.slr()->imagePlot()->yAxis->range();
+        const QCPRange r = w.workspace<lwb::ui::SlrWorkspace>()->imagePlot()->yAxis->range();
         QVERIFY2(r.size() >= 10 * pixelNs, qPrintable(QString("axis %1 .. %2 ns, pixel %3 ns").arg(r.lower).arg(r.upper).arg(pixelNs)));
     }
 
@@ -793,7 +823,7 @@ private slots:
         const QString stella = lwbtest::sharedPath("slr/7080_STELLA_crd_071220_2128_0.npt");
         if (!QFile::exists(frd) || !QFile::exists(npt) || !QFile::exists(stella)) QSKIP("shared data absent");
         MainWindow w;
-        SlrWorkspace* ws = w.slr();
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
         SlrController* c = ws->controller();
         QString err;
         QVERIFY2(ws->openPath(frd, 0, &err), qPrintable(err));
@@ -827,13 +857,29 @@ private slots:
         QVERIFY(stationGraph());
         QCOMPARE(stationGraph()->dataCount(), 13);
         QCOMPARE(stationGraph()->data()->at(0)->key, cmp.rows.front().stationT);
-        // Exported as shown.
+        // Exported as data (issue 42: the table's cells had been written, with "Δ (mm)" headers and
+        // a time-of-day-only UTC column): machine names, the pass day's date with the time, and
+        // the comparison's own numbers.
         const QString csv = m_dir.path() + "/np_diff.csv";
         QVERIFY2(panel->exportCsv(csv, &err), qPrintable(err));
         const auto table = lwb::core::readCsv(csv.toStdString());
         QVERIFY2(table.ok, table.error.c_str());
         QCOMPARE(table.table.rows.size(), size_t(13));
-        QVERIFY(table.table.column("Δ (mm)") >= 0);
+        QCOMPARE(table.table.column("Δ (mm)"), -1);
+        const int cUtc = table.table.column("utc"), cDelta = table.table.column("delta_mm"), cEpoch = table.table.column("epoch_s");
+        QVERIFY(cUtc >= 0 && cDelta >= 0 && cEpoch >= 0 && table.table.column("match") >= 0);
+        int y = 0, mo = 0, dd = 0;
+        lwb::core::slr::dateFromMjd(cmp.dayMjd, &y, &mo, &dd);
+        const QString day = QString::asprintf("%04d-%02d-%02dT", y, mo, dd);
+        for (size_t r = 0; r < cmp.rows.size(); ++r) {
+            const QString u = QString::fromStdString(table.table.rows[r][size_t(cUtc)]);
+            QVERIFY2(QRegularExpression("^\\d{4}-\\d\\d-\\d\\dT\\d\\d:\\d\\d:\\d\\d\\.\\d{3}Z$").match(u).hasMatch(), qPrintable(u));
+            if (cmp.rows[r].t < 86400) QVERIFY2(u.startsWith(day), qPrintable(u));
+            QVERIFY(std::fabs(std::stod(table.table.rows[r][size_t(cEpoch)]) - cmp.rows[r].t) < 5e-4);  // (3 decimals)
+            const std::string delta = table.table.rows[r][size_t(cDelta)];
+            QCOMPARE(delta.empty(), !std::isfinite(cmp.rows[r].deltaMm));
+            if (!delta.empty()) QVERIFY(std::fabs(std::stod(delta) - cmp.rows[r].deltaMm) < 0.005 + 1e-9);  // (2 decimals)
+        }
         // A session keeps it.
         const QJsonObject state = ws->saveState();
         QCOMPARE(state["station_npt"].toString(), npt);
@@ -862,10 +908,10 @@ private slots:
         QVERIFY(!ws->saveState().contains("station_npt"));
         // Restored from the session.
         MainWindow w2;
-        QVERIFY2(w2.slr()->restoreState(state, &err), qPrintable(err));
-        QVERIFY(w2.slr()->controller()->waitIdle(60000));
-        QTRY_VERIFY_WITH_TIMEOUT(w2.slr()->stationNpPanel()->comparison().ok, 10000);
-        QCOMPARE(w2.slr()->stationNpPanel()->comparison().matched, size_t(11));
+        QVERIFY2(w2.workspace<lwb::ui::SlrWorkspace>()->restoreState(state, &err), qPrintable(err));
+        QVERIFY(w2.workspace<lwb::ui::SlrWorkspace>()->controller()->waitIdle(60000));
+        QTRY_VERIFY_WITH_TIMEOUT(w2.workspace<lwb::ui::SlrWorkspace>()->stationNpPanel()->comparison().ok, 10000);
+        QCOMPARE(w2.workspace<lwb::ui::SlrWorkspace>()->stationNpPanel()->comparison().matched, size_t(11));
     }
 
     /// Issue 11: a multi-pass file whose first pass cannot be processed opens; every pass is
@@ -877,7 +923,7 @@ private slots:
         const auto passes = lwb::core::slr::summarisePasses(lwb::core::slr::readCrd(hy2c.toStdString()).file);
         QCOMPARE(passes.size(), size_t(6));
         MainWindow w;
-        SlrWorkspace* ws = w.slr();
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
         SlrController* c = ws->controller();
         QString err;
         QVERIFY2(ws->openPath(hy2c, -1, &err), qPrintable(err));
@@ -1018,7 +1064,7 @@ private slots:
         const QString blits = lwbtest::sharedPath("slr/blits_201206.frd");
         if (!QFile::exists(blits)) QSKIP("shared data absent");
         MainWindow w;
-        SlrWorkspace* ws = w.slr();
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
         QString err;
         QVERIFY2(ws->openPath(blits, 15, &err), qPrintable(err));  // 0-based: pass 16
         QVERIFY(ws->controller()->waitIdle(60000));
@@ -1042,7 +1088,7 @@ private slots:
     // and the run goes on (no refusal for parameters other than the pass's).
     void ocRowChangeReopensThePass() {
         MainWindow w;
-        SlrWorkspace* ws = w.slr();
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
         SlrController* c = ws->controller();
         if (!openBlitsWithPrediction(ws, 2)) return;  // pass 3, in the CPF's span
         QVERIFY(c->hasPass() && c->pass().ocOrigin.find("CPF prediction") != std::string::npos);
@@ -1071,7 +1117,7 @@ private slots:
 
     void cpfClearedAndReplaced() {
         MainWindow w;
-        SlrWorkspace* ws = w.slr();
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
         SlrController* c = ws->controller();
         if (!openBlitsWithPrediction(ws, -1)) return;
         const QString cpf = lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts");

@@ -1,0 +1,382 @@
+#include "ui/slr/slr_controller.hpp"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QPointer>
+#include <QStandardPaths>
+#include <QThreadPool>
+#include <QtConcurrent>
+
+#include "core/slr/pass_output.hpp"
+#include "core/slr/pass_run.hpp"
+#include "core/slr/slr_run.hpp"
+
+namespace lwb::ui {
+
+using namespace core::slr;
+
+SlrController::SlrController(QObject* parent) : QObject(parent) {
+    qRegisterMetaType<lwb::ui::SlrRun>();
+    m_presetFile = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/slr-presets.json";
+    m_job.bind(
+        [this](TaskJob<PassTask>::Run* r) {
+            if (!hasPass()) return false;
+            auto in = std::make_shared<PassTask::Inputs>();
+            in->pass = m_passData;
+            in->forced = m_forced;
+            r->inputs = std::move(in);
+            // The parameters as every front end resolves them (core resolvePassParams): the
+            // panel's, as a config, with what the pass tells (fire rate, ILRS bin, the station's
+            // position) wherever they leave it unknown: the CLI's normal points (issue 28, 40).
+            core::slr::SlrSetup setup = m_setup;
+            setup.sources.config = slrSchema().toJson(m_params);
+            PassSettings settings;
+            SlrError e;
+            if (!resolvePassParams(setup, *m_passData, &settings, &e)) {
+                emit runFailed(QString::fromStdString(e.message));
+                return false;
+            }
+            r->params = settings.params;
+            m_settings = std::move(settings);
+            // What this run reuses: the last screening (only the post-fit or the edits changed),
+            // or, when reuseScaleForCosine is set (off by default), the scale the automatic mode
+            // chose while only C moved; else nothing. (A screening at a kept scale is not the one
+            // laserwb-cli makes at that C: "one answer everywhere" wins over the 0.15 s of a
+            // 10^5-point pass's scale search, docs/benchmarks.md.)
+            if (!m_screenDue && m_run->screen.ok) r->reuse.screen = std::shared_ptr<const ScreenResult>(m_run, &m_run->screen);
+            else if (m_screenDue && m_scaleValid && m_params.screen.automatic) r->reuse.scale = m_scale;
+            return true;
+        },
+        [this](PassRunResult result) {
+            SlrRun run;
+            static_cast<PassRunResult&>(run) = std::move(result);
+            run.generation = m_job.generation();
+            run.latencyMs = double(QDateTime::currentMSecsSinceEpoch() - m_job.changedAt());
+            if (!run.screen.ok) {
+                notePassError(m_selected, tr("screening: %1").arg(QString::fromStdString(run.screen.error)));
+                emit runFailed(QString::fromStdString(run.screen.error));
+                return;
+            }
+            if (!run.screenReused) {
+                ++m_screenings;
+                m_screenDue = false;
+                // The automatic choice: reused while only C moves.
+                if (!run.scaleReused) {
+                    m_scale = scaleChoice(run.screen);
+                    m_scaleValid = m_params.screen.automatic;
+                }
+            }
+            m_run = std::make_shared<const SlrRun>(std::move(run));
+            emit runReady(*m_run);
+        });
+}
+
+SlrController::~SlrController() { m_job.cancel(); }
+
+void SlrController::passLoaded() {
+    m_passData = std::make_shared<const PassData>(m_pass);
+    m_screenDue = true;
+    m_scaleValid = false;
+    m_screenings = 0;
+    m_run = std::make_shared<const SlrRun>();
+    m_forced.assign(m_pass.t.size(), 0);
+}
+
+namespace {
+// The workbench's sources for `path` (a CPF is used with a SINEX only; the SINEX alone gives the
+// station's position), read by the core once for the passes of the file; the panel's parameters
+// as the config (their oc.* rows make the pass's O-C).
+bool setUp(const QString& path, const PassInputParams& in, const SlrParams& params, SlrSetup* out, QString* error) {
+    SlrSources src;
+    src.input = path.toStdString();
+    src.config = slrSchema().toJson(params);
+    src.stations = in.sinexPath;
+    if (!in.sinexPath.empty()) src.cpf = in.cpfPath;
+    src.cpfFallback = true;  // a CPF that does not fit the pass: its own TOF trend, with a note
+    src.openDamaged = true;  // a pass with damaged records is shown (its exports are refused)
+    SlrError e;
+    if (!setUpSlrRun(src, out, &e)) {
+        *error = QString::fromStdString(e.message);
+        return false;
+    }
+    return true;
+}
+}  // namespace
+
+void SlrController::resetPassErrors() {
+    // What is known from reading the file alone (blocks that cannot be a pass).
+    m_passErrors.clear();
+    for (const PassSummary& s : m_passes)
+        if (!s.problem.empty()) m_passErrors[s.index] = QString::fromStdString(s.problem);
+}
+
+bool SlrController::open(const QString& path, int passIndex, const PassInputParams& input, QString* error) {
+    SlrSetup setup;
+    if (!setUp(path, input, m_params, &setup, error)) return false;
+    setup.sources.passNumber = passIndex + 1;  // (0: the file's first pass to screen, core isPassToScreen)
+    OpenedPass o = openPass(setup);
+    if (!o.ok && !o.crd) {  // the file (or an O-C table) cannot be read at all: the previous one stays
+        *error = QString::fromStdString(o.error.message);
+        return false;
+    }
+    m_setup = std::move(setup);
+    m_input = input;
+    m_path = path;
+    m_crd = o.crd;
+    m_passes = o.passes;
+    resetPassErrors();
+    if (!m_crd) m_passErrors.clear();
+    // The block opened (the file's first pass to screen unless one was asked for); a block that
+    // is not a pass, or cannot be used, leaves no pass open and its reason in place.
+    m_selected = o.ok ? o.pass->passIndex : passIndex >= 0 ? passIndex : 0;
+    showOpened(std::move(o), nullptr);
+    return true;
+}
+
+bool SlrController::selectPass(int index, QString* error) {
+    if (!m_crd) {
+        if (error) *error = tr("no CRD file is open");
+        return false;
+    }
+    m_selected = index;
+    return loadSelected(error);
+}
+
+bool SlrController::setSources(const QString& cpfPath, const QString& sinexPath, QString* error) {
+    PassInputParams in = m_input;
+    in.cpfPath = cpfPath.toStdString();
+    in.sinexPath = sinexPath.toStdString();
+    SlrSetup setup;
+    if (!setUp(m_path, in, m_params, &setup, error)) return false;
+    m_input = in;
+    m_setup = std::move(setup);
+    if (m_crd) {
+        // What was known against the passes may have been the old prediction's doing.
+        resetPassErrors();
+        loadSelected(nullptr);
+    }
+    return true;
+}
+
+void SlrController::notePassError(int index, const QString& why) {
+    if (index < 0) return;
+    m_passErrors[index] = why;
+    emit passListChanged();
+}
+
+bool SlrController::loadSelected(QString* error) { return showOpened(openPassOf(m_setup, m_crd, m_selected), error); }
+
+bool SlrController::showOpened(OpenedPass o, QString* error) {
+    m_warnings = o.warnings;
+    m_notes = o.notes;
+    if (!o.ok) {
+        // No pass open, the list stays: the reason is shown in place and against the pass.
+        m_passProblem = QString::fromStdString(o.error.message);
+        notePassError(m_selected, m_passProblem.section('\n', 0, 0));
+        m_job.cancel();  // a run of the previous pass is not delivered
+        m_pass = PassData{};
+        m_pass.source = m_path.toStdString();
+        m_pass.passIndex = m_selected;
+        m_truth.clear();
+        passLoaded();
+        emit passChanged();
+        emit editsChanged();
+        emit status(tr("Pass %1 cannot be processed: %2").arg(m_selected + 1).arg(m_passProblem.section('\n', 0, 0)));
+        if (error) *error = m_passProblem;
+        return false;
+    }
+    m_passProblem.clear();
+    m_pass = *o.pass;
+    m_selected = m_pass.passIndex;
+    if (m_passErrors.remove(m_selected)) emit passListChanged();
+    passOpened();
+    return true;
+}
+
+void SlrController::passOpened() {
+    m_truth.clear();
+    passLoaded();
+    m_params.postfit.altitudeKm = m_pass.altitudeKm;
+    m_params.postfit.binLengthS = 0;
+    for (const auto& w : m_warnings) emit status(QString::fromStdString(w));
+    const bool preset = applySatellitePreset();
+    emit passChanged();
+    emit editsChanged();
+    emit status(tr("%1: %2 points, O-C from %3%4")
+                    .arg(QFileInfo(m_path).fileName())
+                    .arg(m_pass.t.size())
+                    .arg(QString::fromStdString(m_pass.ocOrigin))
+                    .arg(preset ? tr("; preset of %1 applied").arg(QString::fromStdString(m_pass.satellite)) : QString()));
+    m_job.schedule();
+}
+
+void SlrController::setSimulatedPass(const std::vector<double>& t, const std::vector<double>& oc,
+                                     const std::vector<double>& tof, const std::vector<uint8_t>& truth,
+                                     const QString& name, double altitudeKm) {
+    m_pass = PassData{};
+    m_pass.source = name.toStdString();
+    m_pass.satellite = name.toStdString();
+    m_pass.ocOrigin = "simulation";
+    m_pass.t = t;
+    m_pass.oc = oc;
+    m_pass.tof = tof;
+    m_pass.altitudeKm = altitudeKm;
+    m_passes.clear();
+    m_warnings.clear();
+    m_notes.clear();
+    m_appliedPreset.clear();
+    m_crd.reset();
+    m_path.clear();
+    m_passProblem.clear();
+    m_passErrors.clear();
+    m_selected = 0;
+    m_truth = truth;
+    passLoaded();
+    m_params.postfit.altitudeKm = altitudeKm;
+    applySatellitePreset();  // as for a pass read from a file
+    emit passChanged();
+    emit editsChanged();
+    m_job.schedule();
+}
+
+void SlrController::setParams(const SlrParams& p) {
+    // The earliest stage the change touches, from the schema rows' stage tags.
+    const int stage = slrSchema().firstChangedStage(m_params, p);
+    m_params = p;
+    if (stage < 0) return;
+    if (stage == kStageOc) {  // the O-C is the pass's own: the pass is opened again with it
+        QString err;
+        if (!m_path.isEmpty() && !setSources(QString::fromStdString(m_input.cpfPath), QString::fromStdString(m_input.sinexPath), &err))
+            emit runFailed(err);
+        return;
+    }
+    if (stage <= kStageRecovery) {
+        m_screenDue = true;
+        if (stage == kStageScale || !m_reuseScaleForCosine) m_scaleValid = false;
+    }
+    m_job.schedule();
+}
+
+void SlrController::forcePoints(const std::vector<uint32_t>& indices, bool in) {
+    if (indices.empty()) return;
+    for (uint32_t i : indices) m_forced[i] = in ? 1 : -1;
+    emit editsChanged();
+    m_job.schedule();
+}
+
+void SlrController::setForced(const std::vector<int8_t>& forced) {
+    if (forced.size() != m_forced.size() || forced == m_forced) return;
+    m_forced = forced;
+    emit editsChanged();
+    m_job.schedule();
+}
+
+void SlrController::clearEdits() {
+    std::fill(m_forced.begin(), m_forced.end(), 0);
+    emit editsChanged();
+    m_job.schedule();
+}
+
+void SlrController::setPresetFile(const QString& path) { m_presetFile = path; }
+
+bool SlrController::savePreset(QString* error) {
+    if (m_pass.satellite.empty() && m_pass.ilrsId.empty()) {
+        *error = tr("the pass names no satellite (H3 record) to key a preset on");
+        return false;
+    }
+    std::vector<SatellitePreset> presets;
+    if (QFileInfo::exists(m_presetFile)) {
+        const PresetsResult r = loadPresets(m_presetFile.toStdString());
+        if (!r.ok) {
+            *error = QString::fromStdString(r.error);
+            return false;
+        }
+        presets = r.presets;
+    }
+    SatellitePreset p;
+    p.name = m_pass.satellite;
+    p.ilrsId = m_pass.ilrsId;
+    // The settings as the analyst has them: the automatic mode stays on unless it was turned off
+    // (then the panel holds the scale it had chosen). Storing the chosen scale with the automatic
+    // mode off lost the refinement and the track following: STELLA reopened with 70 of 236
+    // points accepted instead of 150 (issue 28).
+    p.screen = m_params.screen;
+    p.postfit = m_params.postfit;
+    bool replaced = false;
+    for (auto& q : presets)
+        if ((!p.ilrsId.empty() && q.ilrsId == p.ilrsId) || (p.ilrsId.empty() && q.name == p.name)) {
+            q = p;
+            replaced = true;
+        }
+    if (!replaced) presets.push_back(p);
+    QDir().mkpath(QFileInfo(m_presetFile).absolutePath());
+    std::string err;
+    if (!savePresets(m_presetFile.toStdString(), presets, &err)) {
+        *error = QString::fromStdString(err);
+        return false;
+    }
+    return true;
+}
+
+bool SlrController::applySatellitePreset() {
+    m_appliedPreset.clear();
+    if (!QFileInfo::exists(m_presetFile)) return false;
+    const PresetsResult r = loadPresets(m_presetFile.toStdString());
+    if (!r.ok) {
+        emit status(tr("Presets not read: %1").arg(QString::fromStdString(r.error)));
+        return false;
+    }
+    // The core's lookup and application (applyPreset), as --preset on the command line.
+    SlrParams p;
+    std::string name, err;
+    if (!applyPreset(m_pass, r.presets, std::string(), &p, &name, &err)) return false;
+    m_appliedPreset = QString::fromStdString(name.empty() ? m_pass.satellite : name);
+    const double altitude = m_params.postfit.altitudeKm;
+    m_params = p;
+    if (!(m_params.postfit.altitudeKm > 0)) m_params.postfit.altitudeKm = altitude;
+    m_screenDue = true;
+    m_scaleValid = false;
+    return true;
+}
+
+bool SlrController::exportProducts(const PassProductPaths& paths, QString* error) const {
+    if (!hasRun()) {
+        *error = tr("no screening result to export");
+        return false;
+    }
+    if (const std::string why = productsProblem(m_pass, m_settings, paths); !why.empty()) {
+        *error = QString::fromStdString(why);
+        return false;
+    }
+    // The CLI's writer and its all-or-nothing set: never over an input, the file whole or not at all.
+    core::OutputSet outs;
+    outs.addInput(m_pass.source);
+    for (const std::string* in : {&m_input.cpfPath, &m_input.sinexPath}) outs.addInput(*in);
+    for (const std::string* out : {&paths.csv, &paths.crd, &paths.npt})
+        if (!out->empty()) outs.addOutput(*out);
+    std::string err;
+    if (!outs.check() || !stagePassProducts(outs, m_pass, *m_run, paths, nullptr, &err) || !outs.commit()) {
+        *error = QString::fromStdString(err.empty() ? outs.error() : err);
+        return false;
+    }
+    return true;
+}
+
+bool SlrController::exportCsv(const QString& path, QString* error) const {
+    return exportProducts({path.toStdString(), "", "", false}, error);
+}
+
+bool SlrController::exportCrd(const QString& path, QString* error, bool wholeFile) const {
+    return exportProducts({"", path.toStdString(), "", wholeFile}, error);
+}
+
+bool SlrController::exportNormalPoints(const QString& path, QString* error) const {
+    return exportProducts({"", "", path.toStdString(), false}, error);
+}
+
+bool SlrController::waitIdle(int timeoutMs) { return m_job.waitIdle(timeoutMs); }
+
+}  // namespace lwb::ui

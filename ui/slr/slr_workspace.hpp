@@ -1,0 +1,178 @@
+#pragma once
+// The SLR workspace: the O-C scatter beside its binary image (axes linked), the residual
+// histogram, the parameter panel (ui/slr_params_panel.hpp), box edits, presets and exports.
+#include <QJsonObject>
+#include <QPointer>
+#include <QSet>
+#include <QWidget>
+
+#include "ui/kit/elided_label.hpp"
+#include "core/common/json.hpp"
+
+#include "ui/kit/workspace.hpp"
+#include "ui/slr/slr_controller.hpp"
+
+class QComboBox;
+class QToolButton;
+class QCheckBox;
+class QLabel;
+class QPushButton;
+class QRadioButton;
+class QCustomPlot;
+class QCPRange;
+class QCPColorMap;
+class QCPItemText;
+
+class QHBoxLayout;
+class QTabWidget;
+
+namespace lwb::ui {
+
+class ParamSlider;
+class SlrParamsPanel;
+class SlrAllPassesDialog;
+class SlrStationNpPanel;
+
+class SlrWorkspace : public Workspace {
+    Q_OBJECT
+public:
+    explicit SlrWorkspace(QWidget* parent = nullptr);
+    SlrController* controller() const { return m_controller; }
+    SlrParamsPanel* paramsPanel() const { return m_params; }
+    ParamSlider* cosineSlider() const;
+    ParamSlider* magOcSlider() const;
+    ParamSlider* areaSlider() const;
+    QCheckBox* autoCheck() const;
+    QCustomPlot* ocPlot() const { return m_ocPlot; }
+    QCustomPlot* imagePlot() const { return m_imagePlot; }
+    QLabel* infoLabel() const { return m_info; }  ///< the pass line and the readers' warnings
+    QComboBox* passCombo() const { return m_passCombo; }  ///< every pass, by time; item data = pass index
+    QCustomPlot* histPlot() const { return m_histPlot; }
+    QLabel* statsLabel() const { return m_stats; }  ///< the run's summary beside the histogram
+    QLabel* hoverLabel() const { return m_hover; }
+    /// The station's normal points beside ours: the table under the plots (a tab beside the
+    /// histogram) and the overlay on the main plot.
+    SlrStationNpPanel* stationNpPanel() const { return m_stationNps; }
+    /// Opens a station's CRD normal-point file to compare with; "" stops comparing. False with
+    /// *error (the file in use kept).
+    bool setStationNormalPoints(const QString& path, QString* error);
+
+    /// What a box drawn on the main plot does.
+    enum class BoxMode { Pan, Zoom, ForceIn, ForceOut };
+    void setBoxMode(BoxMode mode);
+    /// The main plot: O-C (ns) or the residual view (O-C less the post-fit trend, ps two-way on
+    /// the left axis, mm one-way on the right).
+    void setResidualView(bool on);
+    bool residualView() const { return m_residual; }
+    /// Time axis in seconds of day instead of UTC hh:mm:ss.
+    void setSecondsOfDay(bool on);
+    /// Home: every plot fitted to its data again.
+    void resetView();
+    /// The hover readout for a pixel of the main plot ("" when no point is near).
+    QString readoutAt(const QPointF& pixel) const;
+    /// The point nearest a pixel of the main plot (`m_ocPlot`) or of the binary image, within
+    /// 10 px; -1 when none.
+    int pointNear(const QCustomPlot* plot, const QPointF& pixel) const;
+    /// The one time cursor of the pass (the mouse over `source`, at `pixel`): a line at the
+    /// hovered epoch on the O-C plot and the image, the hovered point ringed in each, its
+    /// residual marked on the histogram, the readout in the hover line. clearTimeCursor hides it.
+    void showTimeCursor(QCustomPlot* source, const QPointF& coords, const QPoint& pixel);
+    void clearTimeCursor();
+    /// The hover line's text for point k.
+    QString pointText(int k) const;
+    /// New CPF (a file or a folder) or SINEX; "" clears it. The open pass is read again.
+    bool setCpf(const QString& path, QString* error);
+    bool setSinex(const QString& path, QString* error);
+    QString cpfPath() const { return m_cpfPath; }
+    QString sinexPath() const { return m_snxPath; }
+    /// Exports the pass as CRD full rate with the screening's flags: `wholeFile` = every pass of
+    /// the file with this pass's flags set, else this pass alone. *message says what was written.
+    bool exportCrd(const QString& path, bool wholeFile, QString* message);
+    /// Opens the "all passes" table of the open CRD file (screened in the background).
+    SlrAllPassesDialog* screenAllPasses();
+
+    /// Opens a CRD or O-C CSV with the CPF/SINEX chosen in the workspace; errors in a dialog.
+    bool openPath(const QString& path, int passIndex, QString* error);
+    /// A simulated kHz pass of about `points` points (the demo, the latency benchmark).
+    void openDemo(int points);
+
+    // Workspace
+    QString key() const override { return QStringLiteral("slr"); }
+    QString title() const override { return tr("SLR pass screening"); }
+    void openDemo() override { openDemo(20000); }
+    QString demoSummary() const override { return tr("a simulated kHz pass"); }
+    bool waitIdle(int timeoutMs) override { return m_controller->waitIdle(timeoutMs); }
+    /// "slr" a pass (CRD, O-C table), "slr-cpf" a prediction, "slr-sinex" station coordinates,
+    /// "slr-npt" a station's normal points (compared with the open pass).
+    QString claim(const InputProbe& probe, bool current) const override;
+    OpenOutcome openInputs(const QMap<QString, QStringList>& byRole, int pass) override;
+    QList<QAction*> openActions() override;
+    QStringList shortcutNotes() const override;
+
+    /// Session state: inputs, edits, and the parameters as slrSchema()'s JSON ("screen" and
+    /// "postfit", every field).
+    QJsonObject saveState() const override;
+    /// Restores a session. The parameters start from the defaults and every field given is read
+    /// (Schema::fromJson: unknown keys and invalid values are errors naming the key, with the
+    /// line and column when `doc`, the parsed session file, is given; `at` is this state's path
+    /// in it). False with *error, nothing changed.
+    bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                      const std::vector<std::string>& at = {"slr"}) override;
+
+private:
+    /// The Open button: a pass file chosen, opened through the window (openRequested).
+    void choosePass();
+    /// The prediction's and station file's names beside the Open buttons (m_cpfPath, m_snxPath).
+    void showSourceNames();
+    // The constructor's parts.
+    QHBoxLayout* buildInputRow();
+    void buildPlots();
+    QWidget* buildPlotArea();
+    QWidget* buildPanel();
+    void wireController();
+
+    void showRun(const SlrRun& run);
+    void drawMainPlot(const SlrRun& run, bool residual);
+    void drawImage(const SlrRun& run);
+    void drawHistogram(const SlrRun& run);
+    QString summaryHtml(const SlrRun& run) const;
+    void showPass();
+    QString passFileStem() const;
+    void fillPassList();
+    void applyTimeAxis();
+    void fitMainPlot();
+    void fitImagePlot();
+    void pushForced(const std::vector<int8_t>& after, const QString& text);
+    void linkRanges(QCustomPlot* from, QCustomPlot* to);
+    void boxSelected(const QRect& rect);
+
+    SlrController* m_controller;
+    QCustomPlot *m_ocPlot, *m_imagePlot, *m_histPlot;
+    QCPColorMap* m_imageMap;
+    QCPItemText* m_histEmpty = nullptr;  ///< the histogram's "nothing kept" line
+    QCPColorMap* m_imageBand;  ///< the track's band of O-C pixels unpooled, over m_imageMap (showRun)
+    QComboBox* m_passCombo;
+    SlrParamsPanel* m_params;
+    QRadioButton *m_modeZoom, *m_modeIn, *m_modeOut;
+    QPushButton *m_undo, *m_clearEdits;
+    QLabel *m_info, *m_stats;
+    ElidedLabel *m_cpfLabel, *m_snxLabel;
+    QString m_path, m_cpfPath, m_snxPath;
+    bool m_loading = false;
+    bool m_linking = false;
+    bool m_imageFlattened = false;  ///< the binary image is of the flattened O-C (refinement)
+    bool m_residual = false, m_secondsOfDay = false, m_applyingParams = false;
+    QRadioButton* m_modeBoxZoom;
+    QComboBox* m_viewCombo;
+    QCheckBox* m_sodCheck;
+    QToolButton *m_cpfClear, *m_snxClear;
+    QLabel* m_hover;
+    QVector<double> m_y;           ///< per point: the main plot's value (ns, or ps in the residual view)
+    QVector<const char*> m_class;  ///< per point: its class in the last run
+    QVector<double> m_imgX, m_imgY;  ///< per point: its pixel's centre on the binary image (s, ns)
+    QPointer<SlrAllPassesDialog> m_all;
+    SlrStationNpPanel* m_stationNps;
+    QTabWidget* m_bottomTabs;
+};
+
+}  // namespace lwb::ui
