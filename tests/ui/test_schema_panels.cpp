@@ -9,6 +9,7 @@
 #include <QLineEdit>
 #include <QScrollArea>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QWheelEvent>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -255,6 +256,30 @@ private slots:
         s.field()->interpretText();
         QCOMPARE(s.value(), 7.5);
         QCOMPARE(changed.count(), 1);
+    }
+
+    /// Issue 42: mag_T's seven decades went from 2 to 483 px/s in a 29 px drag. Shift+drag moves
+    /// the slider ten times slower than the mouse: 29 px then moves it 2.9 px's worth (at 14 px a
+    /// decade, a factor below 1.7), where a plain drag's 29 px is above 100.
+    void shiftDragIsTenTimesFiner() {
+        const auto* magT = slr::slrSchema().find("screen.mag_t");
+        QVERIFY(magT);
+        ParamSlider s(*magT);
+        s.resize(98 + 100 + 90, 30);
+        static_cast<QWidget&>(s).show();  // (ParamSlider::show repaints the value)
+        QVERIFY(QTest::qWaitForWindowExposed(&s));
+        s.setValue(2);
+        QSlider* bar = s.slider();
+        const int px = bar->width();
+        const double decadesPerPx = 7.0 / px;
+        const QPoint at(bar->width() / 2, bar->height() / 2);
+        QTest::mousePress(bar, Qt::LeftButton, Qt::ShiftModifier, at);
+        QTest::mouseMove(bar, at + QPoint(29, 0));
+        QTest::mouseRelease(bar, Qt::LeftButton, Qt::ShiftModifier, at + QPoint(29, 0));
+        const double ratio = s.value() / 2.0;
+        const double expected = std::pow(10.0, 29 * decadesPerPx / 10);
+        QVERIFY2(ratio > 1.0 && std::fabs(std::log10(ratio) - std::log10(expected)) < 0.05,
+                 qPrintable(QString("2 → %1 px/s in a 29 px Shift+drag over a %2 px slider (expected ×%3)").arg(s.value()).arg(px).arg(expected)));
     }
 
     // Leaving the dual model releases the rigid beams (a rule between fields the form keeps).

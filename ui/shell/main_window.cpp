@@ -358,6 +358,7 @@ QStringList MainWindow::shortcutList() const {
         << tr("Drag on the colour bar\tImage view ▸ contrast and bias; a double-click on the bar resets them")
         << tr("Drag (region mode)\tImage view ▸ draw a box or circle region; drag a region to move it")
         << tr("Delete\tImage view ▸ delete the selected region (the view reached by Tab)");
+    out << tr("Shift+drag\tParameter slider ▸ ten times finer than the mouse");
     out << tr("Wheel\tPlot ▸ zoom both axes about the cursor") << tr("Shift+Wheel\tPlot ▸ zoom x only")
         << tr("Ctrl+Wheel\tPlot ▸ zoom y only") << tr("Wheel / drag over an axis\tPlot ▸ zoom / pan that axis only")
         << tr("Drag\tPlot ▸ pan") << tr("Right-drag, Shift+drag\tPlot ▸ box zoom")
