@@ -54,6 +54,9 @@ const std::string kSlrUsage = std::string(
     "                        are absorbed). --stations alone: the station's position for day or night\n"
     "                        (the Sun's elevation per normal-point bin: at least 6 points by day, 3 by\n"
     "                        night); without it a CRD pass gets the day minimum of 6\n"
+    "  --cpf-fallback        a CPF that does not fit the pass (another satellite, a span that misses\n"
+    "                        it): O-C against the pass's own TOF trend with a warning, as the workbench\n"
+    "                        and --all-passes do (default: an error)\n"
     "  --pass K              pass number in the CRD file, 1-based (1 = the first block of the file);\n"
     "                        default: the first pass to screen. The station's own normal points,\n"
     "                        sampled engineering data (H4 data type 2) and blocks of fewer than 5\n"
@@ -153,6 +156,7 @@ int gatherSources(const std::string& cmd, const Args& a, const ParamOptions<slr:
     s.input = input;
     s.passNumber = static_cast<int>(passK);
     s.cpf = a.value("--cpf");
+    s.cpfFallback = a.has("--cpf-fallback");
     s.stations = a.value("--stations");
     s.presets = a.value("--preset");
     s.satellite = a.value("--satellite");
@@ -336,7 +340,7 @@ int cmdSlr(int argc, char** argv) {
                           "--out-dir", "--threads"})
         a.option(o, true);
     declareBatchOptions(a);
-    for (const char* o : {"--quiet", "-q", "--help", "-h", "--help-params", "--all-passes"}) a.option(o, false);
+    for (const char* o : {"--quiet", "-q", "--help", "-h", "--help-params", "--all-passes", "--cpf-fallback"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail(cmd, a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
         std::cout << a.usage();  // (its defaults filled from the schema by declare)

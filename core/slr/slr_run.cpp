@@ -1,4 +1,5 @@
 #include "core/slr/slr_run.hpp"
+#include "core/slr/slr_params.hpp"
 
 #include <exception>
 
@@ -310,6 +311,37 @@ std::string passName(const PassData& pass) {
     if (!pass.hasCrd) return pass.source;
     const size_t ordinal = pass.crd->passes[size_t(pass.passIndex)].ordinal;
     return pass.source + " pass " + std::to_string(ordinal ? ordinal : size_t(pass.passIndex) + 1);
+}
+
+std::vector<std::string> slrCommandArgs(const std::string& input, int passNumber, const std::string& cpf, bool cpfFallback,
+                                        const std::string& sinex, const SlrParams& params) {
+    std::vector<std::string> out = {"slr", input};
+    if (passNumber > 0) out.insert(out.end(), {"--pass", std::to_string(passNumber)});
+    if (!cpf.empty()) out.insert(out.end(), {"--cpf", cpf});
+    if (!cpf.empty() && cpfFallback) out.push_back("--cpf-fallback");
+    if (!sinex.empty()) out.insert(out.end(), {"--stations", sinex});
+    const Schema<SlrParams>& schema = slrSchema();
+    const SlrParams defaults;
+    for (const std::string& key : schema.changedKeys(defaults, params))
+        if (const auto* f = schema.find(key)) out.insert(out.end(), {"--set", key + "=" + schema.valueText(*f, params)});
+    return out;
+}
+
+std::string shellCommand(const std::vector<std::string>& args) {
+    std::string s;
+    for (const std::string& a : args) {
+        const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+                                                             "_-+=.,/:@%") == std::string::npos;
+        if (!s.empty()) s += ' ';
+        if (plain) {
+            s += a;
+            continue;
+        }
+        s += '\'';
+        for (char c : a) s += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        s += '\'';
+    }
+    return s;
 }
 
 }  // namespace lwb::core::slr

@@ -153,4 +153,14 @@ Provenance slrProvenance(const SlrSetup& setup, bool stationFile);
 /// "FILE pass K" (CRD) or "FILE" (O-C table): how messages name a pass.
 std::string passName(const PassData& pass);
 
+/// The laserwb-cli arguments that run pass `passNumber` (1-based; 0: none given) of `input` with
+/// `params`: every field that differs from the schema's default as --set KEY=VALUE (the value as
+/// --set reads it back exactly), the prediction (with --cpf-fallback when `cpfFallback`, as the
+/// workbench reads it) and the station file when given. Without the
+/// program's name and the outputs: the workbench's Edit ▸ Copy as command line (issue 42).
+std::vector<std::string> slrCommandArgs(const std::string& input, int passNumber, const std::string& cpf, bool cpfFallback,
+                                        const std::string& sinex, const SlrParams& params);
+/// Arguments as a POSIX shell reads them back: each single-quoted unless it is plain.
+std::string shellCommand(const std::vector<std::string>& args);
+
 }  // namespace lwb::core::slr

@@ -729,6 +729,50 @@ private slots:
         QCOMPARE(acceptedCount(c->run()), shown);
     }
 
+    /// Issue 42, item 6: Edit ▸ Copy as command line gives the laserwb-cli command of the current
+    /// result. A BLITS pass with its CPF and SINEX (pass 2 of the file), C and the rejection moved
+    /// in the window: the copied command, run by the shell with -o and --npt-out, writes the
+    /// window's exports byte for byte. Box edits are said not to be in it.
+    void copiedCommandLineGivesTheWindowsProducts() {
+        MainWindow w;
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
+        if (!openBlitsWithPrediction(ws, 1)) return;
+        SlrController* c = ws->controller();
+        QVERIFY(c->waitIdle(60000));
+        auto sp = c->screenParams();
+        sp.cosineC = 0.93;
+        c->setScreenParams(sp);
+        auto pp = c->postfitParams();
+        pp.rejectSigma = 2.5;
+        c->setPostfitParams(pp);
+        QTRY_VERIFY_WITH_TIMEOUT(c->waitIdle(1000) && c->hasRun() && c->settings().params.screen.cosineC == 0.93 &&
+                                     c->settings().params.postfit.rejectSigma == 2.5, 60000);
+        QString note;
+        const QString cmd = ws->commandLine(&note);
+        QVERIFY2(cmd.startsWith("laserwb-cli slr ") && cmd.contains("--pass 2") && cmd.contains("--cpf ") && cmd.contains("--cpf-fallback") && cmd.contains("--stations ") &&
+                     cmd.contains("--set screen.cosine_c=0.93"),
+                 qPrintable(cmd));
+        QVERIFY(note.isEmpty());
+        const QString d = m_dir.path() + "/copied";
+        QVERIFY(QDir().mkpath(d));
+        QString err;
+        QVERIFY2(c->exportCsv(d + "/gui.csv", &err), qPrintable(err));
+        QVERIFY2(c->exportNormalPoints(d + "/gui.npt", &err), qPrintable(err));
+        const QString shell = QString(LWB_CLI) + cmd.mid(QString("laserwb-cli").size()) + " -q -o '" + d + "/cli.csv' --npt-out '" + d + "/cli.npt'";
+        const lwbtest::CliRun r = lwbtest::runProgram("/bin/sh", {"-c", shell});
+        QVERIFY2(r.exitCode == 0, qPrintable(shell + "\n" + r.err));
+        QCOMPARE(lwbtest::readAll(d + "/cli.csv"), lwbtest::readAll(d + "/gui.csv"));
+        QCOMPARE(lwbtest::readAll(d + "/cli.npt"), lwbtest::readAll(d + "/gui.npt"));
+        // A box edit cannot be said on the command line: the note says so.
+        c->forcePoints({0, 1, 2}, false);
+        QTRY_VERIFY_WITH_TIMEOUT(c->waitIdle(1000) && c->hasRun(), 60000);
+        ws->commandLine(&note);
+        QVERIFY2(note.contains("3 point"), qPrintable(note));
+        // The shell's quoting: a name with a space and a quote comes back whole.
+        QCOMPARE(QString::fromStdString(lwb::core::slr::shellCommand({"slr", "/tmp/a b/it's.frd", "--set", "x=1"})),
+                 QString("slr '/tmp/a b/it'\\''s.frd' --set x=1"));
+    }
+
     /// Issue 42: after a change that leaves nothing kept, the residual histogram kept the last
     /// run's axes with no bars. Its axes are reset and it says why.
     void histogramSaysWhenNothingIsKept() {

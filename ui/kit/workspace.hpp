@@ -85,6 +85,12 @@ public:
     virtual QStringList shortcutNotes() const { return {}; }
     /// Stops a long load it reported with progress().
     virtual void cancelWork() {}
+    /// The laserwb-cli command that reproduces its current result (Edit ▸ Copy as command line),
+    /// "" when there is none; *note says what the command cannot carry (manual edits).
+    virtual QString commandLine(QString* note) const {
+        Q_UNUSED(note);
+        return QString();
+    }
 
 signals:
     /// Something a session would save changed (a verdict, a note, an edit, a parameter).

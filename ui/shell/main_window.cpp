@@ -5,6 +5,7 @@
 
 #include <QActionGroup>
 #include <QApplication>
+#include <QClipboard>
 #include <QCloseEvent>
 #include <QDialog>
 #include <QDockWidget>
@@ -242,6 +243,19 @@ void MainWindow::buildMenus() {
     redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
     edit->addAction(undo);
     edit->addAction(redo);
+    edit->addSeparator();
+    // The batch command of the current result, to paste into a terminal or a script.
+    edit->addAction(tr("Copy as &command line"), this, [this] {
+        Workspace* ws = currentWorkspace();
+        QString note;
+        const QString cmd = ws ? ws->commandLine(&note) : QString();
+        if (cmd.isEmpty()) {
+            statusBar()->showMessage(tr("No result here that a command reproduces"), 6000);
+            return;
+        }
+        QApplication::clipboard()->setText(cmd);
+        statusBar()->showMessage(note.isEmpty() ? tr("Copied: %1").arg(cmd) : tr("Copied (%1): %2").arg(note, cmd), 10000);
+    })->setObjectName("actionCopyCommand");
     appUndoGroup().setActiveStack(&undoStackOf(m_tabs->currentWidget()));
 
     QMenu* view = menuBar()->addMenu(tr("&View"));

@@ -45,6 +45,8 @@ public:
     const std::vector<std::string>& notes() const { return m_notes; }
     /// The satellite preset applied when the pass was opened ("" none), as the CLI's "; preset NAME".
     QString appliedPreset() const { return m_appliedPreset; }
+    /// The last run's resolved parameters (what its products were made with).
+    const core::slr::PassSettings& settings() const { return m_settings; }
     bool hasPass() const { return !m_pass.t.empty(); }
     const SlrRun& run() const { return *m_run; }
     bool hasRun() const { return m_run->screen.ok; }

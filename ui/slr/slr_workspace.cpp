@@ -1581,4 +1581,18 @@ QStringList SlrWorkspace::shortcutNotes() const {
     return {tr("Hover\tSLR ▸ one time cursor on the O-C plot, the binary image and the histogram")};
 }
 
+QString SlrWorkspace::commandLine(QString* note) const {
+    if (!m_controller->hasRun() || m_path.isEmpty()) return QString();  // (the demo's pass is simulated: no file)
+    const int pass = m_controller->pass().hasCrd ? m_controller->pass().passIndex + 1 : 0;
+    const auto args = core::slr::slrCommandArgs(QFileInfo(m_path).absoluteFilePath().toStdString(), pass,
+                                                m_cpfPath.isEmpty() ? std::string() : QFileInfo(m_cpfPath).absoluteFilePath().toStdString(),
+                                                m_controller->setup().sources.cpfFallback,
+                                                m_snxPath.isEmpty() ? std::string() : QFileInfo(m_snxPath).absoluteFilePath().toStdString(),
+                                                m_controller->settings().params);
+    long long edits = 0;
+    for (int8_t f : m_controller->forced()) edits += f != 0;
+    if (note) *note = edits ? tr("%n point(s) forced in or out by hand are not in the command", nullptr, int(edits)) : QString();
+    return QStringLiteral("laserwb-cli ") + QString::fromStdString(core::slr::shellCommand(args));
+}
+
 }  // namespace lwb::ui

@@ -108,6 +108,9 @@ public:
     OpenOutcome openInputs(const QMap<QString, QStringList>& byRole, int pass) override;
     QList<QAction*> openActions() override;
     QStringList shortcutNotes() const override;
+    /// laserwb-cli slr with the pass, the prediction, the station file and the last run's
+    /// parameters (core slrCommandArgs); the box edits are not in it (*note says how many).
+    QString commandLine(QString* note) const override;
 
     /// Session state: inputs, edits, and the parameters as slrSchema()'s JSON ("screen" and
     /// "postfit", every field).
