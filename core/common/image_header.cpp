@@ -136,6 +136,27 @@ ImageHeader readImageHeader(std::string_view b) {
     return h;
 }
 
+namespace {
+// A PNG's chunks walked from the signature to IEND (length, type, data, CRC each): "" when the
+// file holds them whole, else where it ends. The decoder was handed a truncated file and said
+// "unknown format" with libpng's own "Read Error" on stderr (issue 42).
+std::string pngTruncation(std::string_view b) {
+    size_t at = 8;  // after the signature
+    while (at + 8 <= b.size()) {
+        const auto u = [&](size_t i) { return static_cast<uint32_t>(static_cast<unsigned char>(b[i])); };
+        const uint64_t length = (u(at) << 24) | (u(at + 1) << 16) | (u(at + 2) << 8) | u(at + 3);
+        const std::string type(b.substr(at + 4, 4));
+        const uint64_t end = at + 12 + length;
+        if (end > b.size())
+            return "truncated PNG: the file ends inside its " + type + " chunk (" + std::to_string(b.size()) + " bytes, the chunk needs " +
+                   std::to_string(end) + ")";
+        if (type == "IEND") return {};
+        at = static_cast<size_t>(end);
+    }
+    return "truncated PNG: the file ends after " + std::to_string(b.size()) + " bytes without the IEND chunk";
+}
+}  // namespace
+
 std::string imageSizeProblem(std::string_view bytes, const std::string& source, long long maxPixels) {
     const ImageHeader h = readImageHeader(bytes);
     if (!h.recognised) return source + ": not a readable image (no PNG, TIFF, PGM or JPEG signature)";
@@ -148,6 +169,8 @@ std::string imageSizeProblem(std::string_view bytes, const std::string& source, 
         return source + ": the image is " + std::to_string(h.width) + " x " + std::to_string(h.height) + " = " +
                (h.width <= INT64_MAX / h.height ? std::to_string(h.width * h.height) : std::string("over 9.2e18")) + " pixels, more than the limit of " + std::to_string(maxPixels) +
                " pixels (raise it with --max-pixels)";
+    if (h.format == "PNG")
+        if (std::string why = pngTruncation(bytes); !why.empty()) return source + ": not a readable image (" + why + ")";
     return {};
 }
 
