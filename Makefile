@@ -10,7 +10,7 @@ SANITIZE_BUILD ?= build-sanitize
 SHARED_SLR ?= ../shared/data/slr
 PREFIX ?= /usr/local
 
-.PHONY: all deps configure build test test-sanitize run bench fuzz install deb clean screenshots
+.PHONY: all deps configure build test test-sanitize run bench fuzz install deb clean screenshots translations
 
 all: build
 
@@ -27,6 +27,14 @@ build: configure
 
 test: build
 	cd $(BUILD) && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j$(JOBS)
+
+# Refreshes the Chinese translation's source (ui/i18n/laserwb_zh_CN.ts) from the code: the schema
+# rows' texts first (ui/i18n/schema_strings.cpp), then lupdate. New strings come in unfinished;
+# translate them in Qt Linguist (linguist ui/i18n/laserwb_zh_CN.ts) or in the XML; ui_test_translations
+# fails until every one is.
+translations: build
+	./$(BUILD)/bin/lwb-i18n-strings ui/i18n/schema_strings.cpp
+	cmake --build $(BUILD) --target update_translations
 
 # Opens the workbench on its built-in demo. Without a display (no DISPLAY / WAYLAND_DISPLAY) it
 # renders the demo window offscreen to $(BUILD)/demo.png instead and says so.
@@ -89,9 +97,10 @@ clean:
 SCREENS := footprint footprint:trend slr calibration calibration:waveform radiometry
 screenshots: build
 	@mkdir -p docs/img/screens
-	@for ws in $(SCREENS); do n=$$(echo $$ws | tr : -); cfg=$$(mktemp -d); \
-	  QT_QPA_PLATFORM=offscreen XDG_CONFIG_HOME=$$cfg ./$(BUILD)/bin/laserwb --workspace $$ws \
+	@for lang in en zh_CN; do sfx=$$([ $$lang = en ] || echo -$$lang); \
+	 for ws in $(SCREENS); do n=$$(echo $$ws | tr : -)$$sfx; cfg=$$(mktemp -d); \
+	  QT_QPA_PLATFORM=offscreen XDG_CONFIG_HOME=$$cfg ./$(BUILD)/bin/laserwb --language $$lang --workspace $$ws \
 	    --size 1024x700 --screenshot docs/img/screens/$$n-1024x700.png 2>/dev/null && \
-	  QT_QPA_PLATFORM=offscreen QT_SCALE_FACTOR=1.5 XDG_CONFIG_HOME=$$cfg ./$(BUILD)/bin/laserwb --workspace $$ws \
+	  QT_QPA_PLATFORM=offscreen QT_SCALE_FACTOR=1.5 XDG_CONFIG_HOME=$$cfg ./$(BUILD)/bin/laserwb --language $$lang --workspace $$ws \
 	    --size 1280x720 --screenshot docs/img/screens/$$n-150pct.png 2>/dev/null && \
-	  rm -rf $$cfg && echo "screenshots: $$n"; done
+	  rm -rf $$cfg && echo "screenshots: $$n"; done; done

@@ -26,6 +26,7 @@
 #include "core/slr/np_context.hpp"
 #include "core/slr/pass_input.hpp"
 #include "core/slr/pass_output.hpp"
+#include "core/slr/pass_report.hpp"
 #include "core/slr/pass_run.hpp"
 #include "core/slr/slr_run.hpp"
 #include "core/slr/station_day.hpp"
@@ -42,7 +43,8 @@ namespace slr = core::slr;
 namespace {
 
 const std::string kSlrUsage = std::string(
-    "usage: laserwb-cli slr INPUT [options] [-o OUT.csv] [--crd-out FILE] [--npt-out FILE] (at least one)\n"
+    "usage: laserwb-cli slr INPUT [options] [-o OUT.csv] [--crd-out FILE] [--npt-out FILE] [--report-out FILE.pdf]\n"
+    "                        (at least one output)\n"
     "       laserwb-cli slr --all-passes --out-dir DIR [options] CRD...\n"
     "Screens one SLR pass: signal extraction by binary image (paper 004; automatic scale by default),\n"
     "then a trend fit with k-sigma rejection and ILRS normal points. A summary goes to stderr.\n"
@@ -116,6 +118,10 @@ const std::string kSlrUsage = std::string(
     "                        none (no signal, no bin full enough, a doubtful pass) the file holds the\n"
     "                        reason as a comment record '00 no normal points: ...' in their place\n"
     "                        (--crd-out and --npt-out need a CRD input)\n"
+    "  --report-out FILE.pdf a one-page PDF report for the station log: O-C with the screening's\n"
+    "                        classes, post-fit residuals and normal-point bins, binary image,\n"
+    "                        histogram, parameters, normal points, provenance and this command\n"
+    "                        (the workbench's File > Report... writes the same)\n"
     "  Provenance: each output file F gets F.provenance.json beside it, and --out-dir DIR gets\n"
     "                        DIR/provenance.json: version, parameters, settings, SHA-256 of every\n"
     "                        input and output\n"
@@ -231,7 +237,7 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
 // What one slr run reads and writes, from its options (cmdSlr's first stage).
 struct SlrPlan {
     std::vector<std::string> inputs;  ///< the files named and listed (--files-from)
-    std::string input, out, crdOut, nptOut, outDir;
+    std::string input, out, crdOut, nptOut, reportOut, outDir;
     bool allPasses = false, csvInput = false;
     long long passK = 0;  ///< --pass K (1-based), 0 when not given
     long long threads = 0;  ///< --threads (--all-passes), 0 = every core
@@ -256,7 +262,7 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
     const std::string& outDir = pl->outDir;
     if (allPasses) {
         if (outDir.empty()) return fail(cmd, "--all-passes needs --out-dir DIR (each pass's CSV and summary.csv go there)", kUsage);
-        for (const char* o : {"-o", "--output", "--crd-out", "--npt-out", "--pass"})
+        for (const char* o : {"-o", "--output", "--crd-out", "--npt-out", "--report-out", "--pass"})
             if (a.has(o)) return fail(cmd, std::string(o) + " is for one pass; --all-passes writes DIR/passNNN.csv and DIR/summary.csv", kUsage);
     } else if (!outDir.empty() || a.has("--threads")) {
         return fail(cmd, std::string(outDir.empty() ? "--threads" : "--out-dir") + " goes with --all-passes", kUsage);
@@ -266,17 +272,20 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
     const std::string& out = pl->out;
     pl->crdOut = a.value("--crd-out");
     pl->nptOut = a.value("--npt-out");
-    if (out.empty() && pl->crdOut.empty() && pl->nptOut.empty() && !allPasses)
-        return fail(cmd, "no output file: give -o OUT.csv, --crd-out FILE or --npt-out FILE", kUsage);
-    const std::string &crdOut = pl->crdOut, &nptOut = pl->nptOut;
+    pl->reportOut = a.value("--report-out");
+    if (out.empty() && pl->crdOut.empty() && pl->nptOut.empty() && pl->reportOut.empty() && !allPasses)
+        return fail(cmd, "no output file: give -o OUT.csv, --crd-out FILE, --npt-out FILE or --report-out FILE.pdf", kUsage);
+    if (core::isStandardStream(pl->reportOut))
+        return fail(cmd, "--report-out needs a file (a PDF is not written to standard output)", kUsage);
+    const std::string &crdOut = pl->crdOut, &nptOut = pl->nptOut, &reportOut = pl->reportOut;
     // Every output is checked before anything is computed or written: none may replace an
     // input or another output (same device and inode, whatever the spelling), devices and
     // folders are refused, and all are renamed into place together at the end.
     for (const char* in : {"--cpf", "--stations", "--preset"}) outs->addInput(a.value(in));
     outs->addInput(input);
-    for (const std::string* p : {&out, &crdOut, &nptOut})
+    for (const std::string* p : {&out, &crdOut, &nptOut, &reportOut})
         if (!p->empty()) outs->addOutput(*p);
-    for (const std::string* p : {&out, &crdOut, &nptOut})  // each file's provenance beside it
+    for (const std::string* p : {&out, &crdOut, &nptOut, &reportOut})  // each file's provenance beside it
         if (!p->empty() && !core::isStandardStream(*p)) outs->addOutput(core::provenancePathFor(*p));
     if (!allPasses)
         if (int rc = checkOutputs(cmd, *outs)) return rc;
@@ -337,7 +346,7 @@ int cmdSlr(int argc, char** argv) {
                                                                  {"--np-bin", "postfit.bin_length_s"}});
     params.declare(a);
     for (const char* o : {"--cpf", "--stations", "--satellite", "--preset", "--pass", "-o", "--output", "--crd-out", "--npt-out",
-                          "--out-dir", "--threads"})
+                          "--report-out", "--out-dir", "--threads"})
         a.option(o, true);
     declareBatchOptions(a);
     for (const char* o : {"--quiet", "-q", "--help", "-h", "--help-params", "--all-passes", "--cpf-fallback"}) a.option(o, false);
@@ -510,7 +519,8 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
     plan.inputs.insert(plan.inputs.end(), bo.listed.begin(), bo.listed.end());
     core::OutputSet outs;
     if (int rc = planSlrRun(cmd, a, params, &plan, &outs); rc >= 0) return rc;
-    const std::string &input = plan.input, &out = plan.out, &crdOut = plan.crdOut, &nptOut = plan.nptOut;
+    const std::string &input = plan.input, &out = plan.out, &crdOut = plan.crdOut, &nptOut = plan.nptOut,
+                      &reportOut = plan.reportOut;
     const bool allPasses = plan.allPasses;
     std::string err;
 
@@ -538,13 +548,16 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
         for (const auto& w : opened.warnings) std::cerr << "laserwb-cli slr: warning: " << w << "\n";
         for (const auto& n : opened.notes) std::cerr << "laserwb-cli slr: note: " << n << "\n";
     }
-    const slr::PassProductPaths paths{out, crdOut, nptOut, true};
+    std::vector<std::string> openingNotes = opened.warnings;
+    openingNotes.insert(openingNotes.end(), opened.notes.begin(), opened.notes.end());
+    const slr::PassReport report = slr::passReportOf(setup, pass, settings, openingNotes);
+    const slr::PassProductPaths paths{out, crdOut, nptOut, true, reportOut, &report};
     if (const std::string why = slr::productsProblem(pass, settings, paths); !why.empty()) return fail(cmd, why, kUsage);
     // The pass's own parameters (its preset and context applied) in the provenance; with
     // --skip-existing, outputs whose sidecars say they are complete are not made again.
     prov.parameters = slr::slrSchema().toJson(settings.params);
     std::vector<std::string> products;
-    for (const std::string* o : {&out, &crdOut, &nptOut})
+    for (const std::string* o : {&out, &crdOut, &nptOut, &reportOut})
         if (!o->empty() && !core::isStandardStream(*o)) products.push_back(*o);
     core::Json entry = core::Json::object();
     entry["input"] = input;
@@ -590,7 +603,7 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
     if (!quiet) {
         printSummary(what, pass, settings, r);
         std::string written;
-        for (const std::string* o : {&out, &crdOut, &nptOut})
+        for (const std::string* o : {&out, &crdOut, &nptOut, &reportOut})
             if (!o->empty()) written += (written.empty() ? "" : ", ") + *o;
         std::cerr << "  -> " << written
                   << (nptOut.empty() || !delivered.points.empty() ? "" : " (" + nptOut + ": no normal points: " + delivered.noneReason + ")")

@@ -1,12 +1,13 @@
 // laserwb: the workbench. With no arguments it opens the built-in demo.
 //   laserwb [FILE...]   a session, or inputs opened where they belong (MainWindow::openPaths)
-//   laserwb --screenshot OUT.png [--workspace footprint|slr] [--size WxH|screen] [FILE...]
+//   laserwb --screenshot OUT.png [--workspace footprint|slr] [--size WxH|screen] [--language en|zh_CN] [FILE...]
 #include <cstdio>
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
 #include <QFileInfo>
+#include <QSettings>
 #include <QThreadPool>
 #include <QTimer>
 
@@ -15,6 +16,7 @@
 #include "core/common/output_set.hpp"
 #include "lwb_version.hpp"
 #include "ui/kit/frame_loader.hpp"
+#include "ui/kit/i18n.hpp"
 #include "ui/shell/main_window.hpp"
 
 int main(int argc, char** argv) {
@@ -59,8 +61,24 @@ int main(int argc, char** argv) {
                             "Window size for --screenshot, WxH, or 'screen': the size the window first opens at on "
                             "this screen (fitted to its available area).",
                             "WxH|screen", "1480x900");
-    cli.addOptions({shot, ws, size});
+    QCommandLineOption lang("language",
+                            "Interface language for this run: en, zh_CN, or system (the locale's). Without it, "
+                            "the choice of View > Language (the system's at first).",
+                            "en|zh_CN|system");
+    cli.addOptions({shot, ws, size, lang});
     cli.process(app);
+    // Before the window: every widget takes its text when it is made.
+    if (cli.isSet(lang)) {
+        const QString l = cli.value(lang);
+        if (l != "en" && l != "system" && !lwb::ui::translatedLanguages().contains(l)) {
+            fprintf(stderr, "laserwb: --language %s: give en, %s or system\n", qPrintable(l),
+                    qPrintable(lwb::ui::translatedLanguages().join(", ")));
+            return 2;
+        }
+        lwb::ui::installLanguage(l == "system" ? QString() : l);
+    } else {
+        lwb::ui::installLanguage(QSettings().value(lwb::ui::kLanguageSetting).toString());
+    }
 
     // The screenshot is an output like any other (core/common/output_set.hpp): checked before
     // anything is opened (not a folder, device or one of the files given), written to a staging

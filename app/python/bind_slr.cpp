@@ -188,7 +188,7 @@ void writeProducts(const PassRun& run, const std::string& csv, const std::string
         if (!p->empty()) outs.addOutput(*p);
     if (csv.empty() && crd.empty() && npt.empty()) throw ParameterError("no output: give csv, crd or npt");
     if (!outs.check()) throw Error(outs.error());
-    const slr::PassProductPaths paths{csv, crd, npt, true};
+    const slr::PassProductPaths paths{csv, crd, npt, true, "", nullptr};
     if (const std::string why = slr::productsProblem(pass, run.settings, paths); !why.empty()) throw ParameterError(why);
     std::string err;
     if (!slr::stagePassProducts(outs, pass, run.r, paths, nullptr, &err)) throw Error(err);

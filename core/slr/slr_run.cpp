@@ -1,6 +1,9 @@
 #include "core/slr/slr_run.hpp"
+
+#include "core/slr/pass_report.hpp"
 #include "core/slr/slr_params.hpp"
 
+#include <cmath>
 #include <exception>
 
 #include "core/common/text.hpp"
@@ -293,6 +296,16 @@ bool stagePassProducts(const OutputSet& outs, const PassData& pass, const PassRu
         }
         if (npBlock) *npBlock = std::move(block);
     }
+    if (!paths.report.empty()) {
+        if (!paths.reportOf) {
+            *error = named(paths.report, "no report contents given");
+            return false;
+        }
+        if (!writePassReport(outs.stagingPath(paths.report), pass, r, *paths.reportOf, error)) {
+            *error = named(paths.report, outs.unstaged(*error));
+            return false;
+        }
+    }
     return true;
 }
 
@@ -327,6 +340,19 @@ std::vector<std::string> slrCommandArgs(const std::string& input, int passNumber
     return out;
 }
 
+SlrParams commandParams(const SlrSetup& setup, const PassData& pass, const SlrParams& resolved) {
+    const SlrParams defaults = commandDefaults();
+    SlrParams told = defaults;
+    passNormalPointContext(pass, setup.stations(), &told.postfit);
+    SlrParams out = resolved;
+    for (const auto& f : slrSchema().fields()) {
+        if (f.key.rfind("postfit.", 0) != 0 || !f.get || !f.set) continue;
+        const double d = f.get(defaults), t = f.get(told), r = f.get(resolved);
+        if (t != d && r == t) f.set(out, d);
+    }
+    return out;
+}
+
 std::string shellCommand(const std::vector<std::string>& args) {
     std::string s;
     for (const std::string& a : args) {
@@ -341,6 +367,46 @@ std::string shellCommand(const std::vector<std::string>& args) {
         for (char c : a) s += c == '\'' ? std::string("'\\''") : std::string(1, c);
         s += '\'';
     }
+    return s;
+}
+
+namespace {
+// A Python string literal (single quotes; backslashes, quotes and control characters escaped).
+std::string pyString(const std::string& v) {
+    std::string s = "'";
+    for (char c : v) {
+        if (c == '\\' || c == '\'') s += '\\';
+        if (c == '\n') {
+            s += "\\n";
+            continue;
+        }
+        s += c;
+    }
+    return s + "'";
+}
+}  // namespace
+
+std::string slrPythonScript(const std::string& input, int passNumber, const std::string& cpf, const std::string& sinex,
+                            const SlrParams& params) {
+    const Schema<SlrParams>& schema = slrSchema();
+    std::string dict;
+    for (const std::string& key : schema.changedKeys(SlrParams{}, params))
+        if (const auto* f = schema.find(key)) {
+            const std::string v = schema.valueText(*f, params);
+            double number = 0;
+            const bool bare = parseDouble(v, &number) && std::isfinite(number);
+            dict += "    " + pyString(key) + ": " + (bare ? v : pyString(v)) + ",\n";
+        }
+    std::string s = "import laserwb\n\n";
+    s += dict.empty() ? "params = {}\n" : "params = {\n" + dict + "}\n";
+    s += "p = laserwb.slr.load_pass(" + pyString(input);
+    if (passNumber > 0) s += ", pass_number=" + std::to_string(passNumber);
+    if (!cpf.empty()) s += ", cpf=" + pyString(cpf);
+    if (!sinex.empty()) s += ", stations=" + pyString(sinex);
+    s += ", params=params)\n";
+    s += "r = laserwb.slr.run(p, params=params" + (sinex.empty() ? std::string() : ", stations=" + pyString(sinex)) + ")\n";
+    s += "print(r.accepted_count, 'points accepted;', r.doubt or r.post_note or 'ok')\n";
+    s += std::string("r.write(csv='screened.csv'") + (passNumber > 0 ? ", npt='pass.npt'" : "") + ")\n";
     return s;
 }
 

@@ -125,12 +125,17 @@ ResolvedRun resolveAndRunPass(const SlrSetup& setup, const PassData& pass, Feedb
 /// noise), else what the screening accepted. Every flagged-CRD product uses them.
 const std::vector<uint8_t>& deliveredFlags(const PassRunResult& r);
 
+struct PassReport;
+
 /// Where a pass's products go ("" = not written).
 struct PassProductPaths {
     std::string csv, crd, npt;
     /// crd: the whole file the pass came from, other passes unchanged (laserwb-cli slr --crd-out),
     /// or the pass alone (passAlone: a batch's passNNN.frd, the workbench's "this pass").
     bool crdWholeFile = false;
+    /// The one-page PDF report (pass_report.hpp), drawn from `reportOf` (required with `report`).
+    std::string report;
+    const PassReport* reportOf = nullptr;
 };
 
 /// The products a run can write for these settings: "" or why not (a usage error: normal points
@@ -138,8 +143,8 @@ struct PassProductPaths {
 std::string productsProblem(const PassData& pass, const PassSettings& settings, const PassProductPaths& paths);
 
 /// Writes the products of a pass into `outs`' staging files (the caller registered and checked
-/// them and commits the set): the per-point CSV, the flagged CRD (deliveredFlags) and the normal
-/// points (or the reason there are none). *npBlock (when given) gets the normal-point block for a
+/// them and commits the set): the per-point CSV, the flagged CRD (deliveredFlags), the normal
+/// points (or the reason there are none) and the PDF report. *npBlock (when given) gets the normal-point block for a
 /// day's file. False with *error (naming the file).
 bool stagePassProducts(const OutputSet& outs, const PassData& pass, const PassRunResult& r, const PassProductPaths& paths,
                        CrdPass* npBlock, std::string* error);
@@ -160,7 +165,20 @@ std::string passName(const PassData& pass);
 /// program's name and the outputs: the workbench's Edit ▸ Copy as command line (issue 42).
 std::vector<std::string> slrCommandArgs(const std::string& input, int passNumber, const std::string& cpf, bool cpfFallback,
                                         const std::string& sinex, const SlrParams& params);
+/// The parameters a command that reruns `pass` needs to be given: `resolved` with every post-fit
+/// field the pass tells itself (its altitude, the C1 fire rate, the ILRS bin, the station's
+/// position: passNormalPointContext) put back to the default where it holds the value the pass
+/// tells, so that the rerun says those notes again instead of taking them as the analyst's.
+SlrParams commandParams(const SlrSetup& setup, const PassData& pass, const SlrParams& resolved);
+
 /// Arguments as a POSIX shell reads them back: each single-quoted unless it is plain.
 std::string shellCommand(const std::vector<std::string>& args);
+/// The same run as a Python script of the laserwb module (Edit ▸ Copy as Python): load_pass with
+/// the prediction and stations, run with every field that differs from the schema's default (the
+/// value as --set reads it, a number bare, other values quoted), then writing the products to
+/// screened.csv (and, for a CRD pass, passNumber > 0, its normal points to pass.npt) in the
+/// working folder. An empty `cpf`: none.
+std::string slrPythonScript(const std::string& input, int passNumber, const std::string& cpf, const std::string& sinex,
+                            const SlrParams& params);
 
 }  // namespace lwb::core::slr

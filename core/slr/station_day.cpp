@@ -254,7 +254,7 @@ private:
             if (j.r.ok) {
                 // Its files, and its normal-point block kept for the day's file (nothing without a folder).
                 if (m_write) {
-                    const PassProductPaths paths{out(j.i, ".csv"), out(j.i, ".frd"), out(j.i, ".npt"), false};
+                    const PassProductPaths paths{out(j.i, ".csv"), out(j.i, ".frd"), out(j.i, ".npt"), false, "", nullptr};
                     if (stagePassProducts(m_outs, *j.pass, j.r, paths, &j.npBlock, &j.writeError))
                         j.npsFormed = !deliveredNormalPoints(j.r).points.empty();
                     else if (j.writeError.empty())

@@ -763,6 +763,43 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(shell + "\n" + r.err));
         QCOMPARE(lwbtest::readAll(d + "/cli.csv"), lwbtest::readAll(d + "/gui.csv"));
         QCOMPARE(lwbtest::readAll(d + "/cli.npt"), lwbtest::readAll(d + "/gui.npt"));
+        // File > Report... and slr --report-out: one writer, the same bytes for the same production
+        // date (the report names the files as the run was given them: here both absolute).
+        qputenv("SOURCE_DATE_EPOCH", "1700000000");
+        QVERIFY2(ws->writeReport(d + "/gui.pdf", &err), qPrintable(err));
+        const QString reportShell = QString(LWB_CLI) + cmd.mid(QString("laserwb-cli").size()) + " -q --report-out '" + d + "/cli.pdf'";
+        const lwbtest::CliRun rr = lwbtest::runProgram("/bin/sh", {"-c", reportShell});
+        QVERIFY2(rr.exitCode == 0, qPrintable(reportShell + "\n" + rr.err));
+        const QByteArray guiPdf = lwbtest::readAll(d + "/gui.pdf");
+        QVERIFY2(guiPdf.startsWith("%PDF-") && guiPdf.size() > 20000, qPrintable(QString::number(guiPdf.size())));
+        if (lwbtest::readAll(d + "/cli.pdf") != guiPdf) {  // (which words differ, when poppler is there to say)
+            const QString a = lwbtest::runProgram("pdftotext", {"-layout", d + "/gui.pdf", "-"}).out,
+                          b = lwbtest::runProgram("pdftotext", {"-layout", d + "/cli.pdf", "-"}).out;
+            QCOMPARE(a.split('\n'), b.split('\n'));
+            QFAIL("the window's report and the CLI's differ (their text is the same)");
+        }
+        QCOMPARE(ws->reportName(), QString("blits_201206_pass2_report.pdf"));
+#ifdef LWB_PYTHON
+        // Edit > Copy as Python: the script, run as it is, writes the window's CSV and normal points.
+        QString pyNote;
+        const QString script = ws->pythonScript(&pyNote);
+        QVERIFY2(script.contains("laserwb.slr.load_pass(") && script.contains("pass_number=2") &&
+                     script.contains("'screen.cosine_c': 0.93") && script.contains("'postfit.reject_sigma': 2.5"),
+                 qPrintable(script));
+        // Pass 2 is before the prediction's days (the window fell back to its own TOF trend, with
+        // a note): the script leaves the CPF out, where load_pass would refuse it, and says so.
+        QVERIFY2(pyNote.contains("prediction") && !script.contains("cpf="), qPrintable(pyNote + "\n" + script));
+        const QString pyDir = d + "/python";
+        QVERIFY(QDir().mkpath(pyDir));
+        QVERIFY(lwbtest::writeText(pyDir + "/run.py", script.toUtf8()));
+        lwbtest::RunOptions po;
+        po.cwd = pyDir;
+        po.env = {QString("PYTHONPATH=") + LWB_PYTHON_PATH, "SOURCE_DATE_EPOCH=1700000000"};
+        const lwbtest::CliRun pr = lwbtest::runProgram(LWB_PYTHON, {"run.py"}, po);
+        QVERIFY2(pr.exitCode == 0, qPrintable(script + "\n" + pr.err));
+        QCOMPARE(lwbtest::readAll(pyDir + "/screened.csv"), lwbtest::readAll(d + "/gui.csv"));
+        QCOMPARE(lwbtest::readAll(pyDir + "/pass.npt"), lwbtest::readAll(d + "/gui.npt"));
+#endif
         // A box edit cannot be said on the command line: the note says so.
         c->forcePoints({0, 1, 2}, false);
         QTRY_VERIFY_WITH_TIMEOUT(c->waitIdle(1000) && c->hasRun(), 60000);
@@ -1078,7 +1115,8 @@ private slots:
         QVERIFY2(all->exportProducts(guiDir, &exportErr), qPrintable(exportErr));
         QTRY_VERIFY_WITH_TIMEOUT(written.count() == 1, 120000);
         QVERIFY2(written.at(0).at(0).toBool(), qPrintable(written.at(0).at(1).toString()));
-        const lwbtest::CliRun cli = lwbtest::runCli({"slr", hy2c, "--all-passes", "--out-dir", cliDir, "-q"});
+        // (the workbench names its files by their absolute paths, as its provenance records them)
+        const lwbtest::CliRun cli = lwbtest::runCli({"slr", QFileInfo(hy2c).absoluteFilePath(), "--all-passes", "--out-dir", cliDir, "-q"});
         QVERIFY2(cli.exitCode == 3, qPrintable(cli.err));  // (pass 1 doubtful)
         QCOMPARE(lwbtest::readAll(m_dir.path() + "/all.csv"), lwbtest::readAll(cliDir + "/summary.csv"));
         const QStringList names = QDir(cliDir).entryList(QDir::Files, QDir::Name);

@@ -321,6 +321,7 @@ QWidget* CalibWorkspace::buildArrayTab() {
     new EqualAspect(m_centrePlot);
     legendBelow(m_centrePlot, 2);
     m_detSummary = new QLabel(page);
+    m_detSummary->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_detSummary->setWordWrap(true);
     m_detSummary->setTextFormat(Qt::RichText);
     m_detSummary->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -377,6 +378,7 @@ QWidget* CalibWorkspace::buildArrayTab() {
     auto* statsLay = new QVBoxLayout(statsPage);
     statsLay->setContentsMargins(4, 4, 4, 4);
     m_statsSource = new QLabel(statsPage);
+    m_statsSource->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_statsSource->setWordWrap(true);
     m_statsTable = newTable(statsPage, {});
     m_statsTable->setAlternatingRowColors(true);
@@ -390,6 +392,7 @@ QWidget* CalibWorkspace::buildArrayTab() {
     auto* paramLay = new QVBoxLayout(paramPage);
     paramLay->setContentsMargins(4, 4, 4, 4);
     m_pointingSummary = new QLabel(paramPage);
+    m_pointingSummary->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_pointingSummary->setWordWrap(true);
     m_pointingSummary->setTextFormat(Qt::RichText);
     m_paramTable = newTable(paramPage, {tr("Parameter"), tr("Estimate"), tr("1σ"), tr("Simulated"), tr("Error / σ")});
@@ -432,6 +435,7 @@ QWidget* CalibWorkspace::buildWaveformTab() {
                          tr("Amplitude (DN)"));
     legendBelow(m_wavePlot, 5);
     m_waveSummary = new QLabel(wpage);
+    m_waveSummary->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_waveSummary->setWordWrap(true);
     m_waveSummary->setTextFormat(Qt::RichText);
     m_waveSummary->setAlignment(Qt::AlignTop | Qt::AlignLeft);
@@ -905,7 +909,8 @@ void CalibWorkspace::showStats(const CalibRun& run) {
     m_statsTable->setColumnCount(int(run.stats.size()));
     m_statsTable->setRowCount(int(labels.size()));
     QStringList headers, rows;
-    for (const StatsColumn& c : run.stats) headers << c.name;
+    // (the core names a column "beam N": the interface's word for it)
+    for (const StatsColumn& c : run.stats) headers << (c.name.startsWith("beam ") ? tr("beam %1").arg(c.name.mid(5)) : c.name);
     const std::map<std::string, QString> shortNames = {
         {"n", tr("n")},
         {"mean", tr("mean (m)")},

@@ -46,7 +46,7 @@ public:
         f.setBold(true);
         f.setPointSizeF(std::max(6.0, f.pointSizeF() * 0.85));
         p->setFont(f);
-        const QString badge = shotStateLabel(st) + (s->overridden ? QObject::tr(" ✎") : QString());
+        const QString badge = shotStateText(st) + (s->overridden ? QObject::tr(" ✎") : QString());
         const QSize badgeSize(p->fontMetrics().horizontalAdvance(badge) + 8, p->fontMetrics().height() + 2);
         // In a corner that leaves the spot's centre in view (in the top left one it hid a spot
         // near the ROI's top edge, issue 30); the thumbnail is the ROI stretched over `img`.

@@ -325,6 +325,7 @@ void FootprintWorkspace::buildCentre() {
     m_regionStats->setText(tr("Regions: right-click a view ▸ Mouse: box / circle regions"));
     revLay->addWidget(m_regionStats);
     m_details = new QLabel(review);
+    m_details->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_details->setTextFormat(Qt::RichText);
     m_details->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_details->setWordWrap(true);
@@ -703,8 +704,8 @@ void FootprintWorkspace::showDetail(const ShotDetail& d) {
     m_colorBar->setScale(cm, ds.stretch, lim.lo, lim.hi);
     const FootprintResult& r = d.selected;
     const Verdict v = s->effectiveVerdict();
-    QString badge = verdictLabel(v).toUpper();
-    if (s->overridden) badge += tr(" (manual; computed: %1)").arg(verdictLabel(s->verdict));
+    QString badge = shotStateText(ShotState(int(v))).toUpper();
+    if (s->overridden) badge += tr(" (manual; computed: %1)").arg(shotStateText(ShotState(int(s->verdict))));
     for (const auto& reason : r.reasons) badge += "\n• " + QString::fromStdString(reason);
     m_roiView->setBadge(badge, verdictColor(v));
     // The badge must not hide the spot: it keeps clear of every centre marker drawn.
@@ -797,6 +798,7 @@ QWidget* FootprintWorkspace::buildTrendTab() {
     m_plotPointing = makePlot(tr("Pointing (″)"), tr("Planar pointing change from the first month (arcsec)"),
                               "trend_pointing", true, trend);
     m_trendSummary = new QLabel(trend);
+    m_trendSummary->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_trendSummary->setWordWrap(true);
     trendLay->addWidget(m_plotX, 1);
     trendLay->addWidget(m_plotY, 1);

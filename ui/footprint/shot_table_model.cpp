@@ -1,5 +1,7 @@
 #include "ui/footprint/shot_table_model.hpp"
 
+#include <QCoreApplication>
+
 #include <QColor>
 #include <QFileInfo>
 #include <cmath>
@@ -33,6 +35,15 @@ QString shotStateLabel(ShotState s) {
     }
 }
 
+QString shotStateText(ShotState s) {
+    switch (s) {
+        case ShotState::Good: return QCoreApplication::translate("lwb::ui::ShotTableModel", "good");
+        case ShotState::Doubtful: return QCoreApplication::translate("lwb::ui::ShotTableModel", "doubtful");
+        case ShotState::Rejected: return QCoreApplication::translate("lwb::ui::ShotTableModel", "rejected");
+        default: return shotStateLabel(s);
+    }
+}
+
 QColor shotStateColor(ShotState s) {
     switch (s) {
         case ShotState::Unreadable: return QColor(110, 110, 120);
@@ -59,7 +70,9 @@ int ShotTableModel::columnCount(const QModelIndex& parent) const { return parent
 
 QVariant ShotTableModel::headerData(int section, Qt::Orientation o, int role) const {
     if (o != Qt::Horizontal || role != Qt::DisplayRole) return {};
-    static const char* names[] = {"File", "Time", "Beam", "X (px)", "Y (px)", "Verdict", "Failed criteria", "Noise", "Note"};
+    static const char* names[] = {QT_TR_NOOP("File"),    QT_TR_NOOP("Time"),    QT_TR_NOOP("Beam"),
+                                  QT_TR_NOOP("X (px)"),  QT_TR_NOOP("Y (px)"),  QT_TR_NOOP("Verdict"),
+                                  QT_TR_NOOP("Failed criteria"), QT_TR_NOOP("Noise"), QT_TR_NOOP("Note")};
     return section >= 0 && section < ColumnCount ? tr(names[section]) : QVariant();
 }
 
@@ -96,7 +109,7 @@ QVariant ShotTableModel::data(const QModelIndex& index, int role) const {
         }
         case VerdictCol:
             if (sort) return int(state) * 2 + (s->overridden ? 1 : 0);
-            return s->overridden && !failed ? shotStateLabel(state) + tr(" (manual)") : shotStateLabel(state);
+            return s->overridden && !failed ? shotStateText(state) + tr(" (manual)") : shotStateText(state);
         case Reasons: return failed ? s->loadError : s->reasons.join("; ");
         case NoiseClass: return s->noiseClass;
         case Note: return s->note;
@@ -146,7 +159,8 @@ bool ShotFilterProxy::verdictAccepts(int row, const QModelIndex& parent) const {
         case RejectedOnly: return s == ShotState::Rejected;
         case UnreadableOnly: return s == ShotState::Unreadable;
         case OverriddenOnly:
-            return sourceModel()->data(sourceModel()->index(row, ShotTableModel::VerdictCol, parent)).toString().contains("manual");
+            // (the sort key: state · 2 + overridden; the shown text is translated)
+            return sourceModel()->data(sourceModel()->index(row, ShotTableModel::VerdictCol, parent), ShotTableModel::SortRole).toInt() % 2 == 1;
         default: return true;
     }
 }

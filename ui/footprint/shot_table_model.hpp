@@ -69,6 +69,8 @@ QColor verdictColor(Verdict v);
 enum class ShotState { Good, Doubtful, Rejected, Unreadable, Pending };
 ShotState shotState(const Shot& s);
 QString shotStateLabel(ShotState s);
+/// The state as the interface shows it (translated; shotStateLabel is the value filters and files use).
+QString shotStateText(ShotState s);
 QColor shotStateColor(ShotState s);
 
 }  // namespace lwb::ui

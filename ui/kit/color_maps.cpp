@@ -1,13 +1,22 @@
 #include "ui/kit/color_maps.hpp"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 namespace lwb::ui {
 
-QStringList colorMapNames() { return {"Gray", "Viridis", "Inferno", "Jet"}; }
-QStringList stretchNames() { return {"Min–max", "Percentile 1–99.5", "Square root"}; }
+QStringList colorMapNames() {
+    return {QCoreApplication::translate("lwb::ui::ColorMaps", "Gray"), "Viridis",
+            "Inferno", "Jet"};
+}
+QStringList stretchNames() {
+    return {QCoreApplication::translate("lwb::ui::ColorMaps", "Min–max"),
+            QCoreApplication::translate("lwb::ui::ColorMaps", "Percentile 1–99.5"),
+            QCoreApplication::translate("lwb::ui::ColorMaps", "Square root")};
+}
 ColorMap colorMapFromIndex(int i) { return static_cast<ColorMap>(std::clamp(i, 0, 3)); }
 Stretch stretchFromIndex(int i) { return static_cast<Stretch>(std::clamp(i, 0, 2)); }
 

@@ -10,7 +10,6 @@
 namespace lwb::ui {
 
 namespace {
-QString tr(const char* s) { return QCoreApplication::translate("lwb::ui::ImageRegions", s); }
 
 QRectF boxRect(const core::RegionStatsParams& r) {
     return {r.centerX - r.width / 2, r.centerY - r.height / 2, r.width, r.height};
@@ -66,21 +65,21 @@ bool regionContains(const core::RegionStatsParams& r, QPointF q, double slack) {
 QString regionStatsText(const core::RegionStatsParams& r, const core::RegionStatsResult& s, int index, QPointF origin) {
     const QString where =
         r.shape == core::RegionShape::Circle
-            ? tr("Circle %1 (r %2 px at %3, %4)").arg(index + 1).arg(num(r.radius)).arg(num(r.centerX + origin.x())).arg(num(r.centerY + origin.y()))
-            : tr("Box %1 (%2 × %3 px at %4, %5)")
+            ? QCoreApplication::translate("lwb::ui::ImageRegions", "Circle %1 (r %2 px at %3, %4)").arg(index + 1).arg(num(r.radius)).arg(num(r.centerX + origin.x())).arg(num(r.centerY + origin.y()))
+            : QCoreApplication::translate("lwb::ui::ImageRegions", "Box %1 (%2 × %3 px at %4, %5)")
                   .arg(index + 1)
                   .arg(num(r.width))
                   .arg(num(r.height))
                   .arg(num(r.centerX + origin.x()))
                   .arg(num(r.centerY + origin.y()));
     if (!s.ok) return where + ": " + QString::fromStdString(s.error);
-    QString t = where + tr(": n %1 · sum %2 · mean %3 · median %4 · σ %5 · min %6 · max %7")
+    QString t = where + QCoreApplication::translate("lwb::ui::ImageRegions", ": n %1 · sum %2 · mean %3 · median %4 · σ %5 · min %6 · max %7")
                             .arg(s.count)
                             .arg(num(s.sum), num(s.mean), num(s.median), num(s.stddev), num(s.min), num(s.max));
-    t += s.centroidOk ? tr(" · centroid (%1, %2)").arg(num(s.centroidX + origin.x()), num(s.centroidY + origin.y()))
-                      : tr(" · no centroid (sum ≤ 0)");
-    if (s.nonFinite) t += tr(" · %1 NaN left out").arg(s.nonFinite);
-    if (s.outside) t += tr(" · %1 px outside the image").arg(s.outside);
+    t += s.centroidOk ? QCoreApplication::translate("lwb::ui::ImageRegions", " · centroid (%1, %2)").arg(num(s.centroidX + origin.x()), num(s.centroidY + origin.y()))
+                      : QCoreApplication::translate("lwb::ui::ImageRegions", " · no centroid (sum ≤ 0)");
+    if (s.nonFinite) t += QCoreApplication::translate("lwb::ui::ImageRegions", " · %1 NaN left out").arg(s.nonFinite);
+    if (s.outside) t += QCoreApplication::translate("lwb::ui::ImageRegions", " · %1 px outside the image").arg(s.outside);
     return t;
 }
 

@@ -1,4 +1,5 @@
 #include "ui/kit/param_slider.hpp"
+#include "ui/kit/i18n.hpp"
 
 #include <QMouseEvent>
 
@@ -161,10 +162,10 @@ QString firstUpper(QString s) {
 
 ParamSlider::ParamSlider(const core::FieldInfo& info, const QString& label, QWidget* parent)
     : QWidget(parent), m_info(info) {
-    build(label.isEmpty() ? firstUpper(QString::fromStdString(info.label())) : label);
+    build(label.isEmpty() ? firstUpper(schemaText(info.label())) : label);
     QString tip = QString("<b>%1</b>").arg(QString::fromStdString(info.key).toHtmlEscaped());
     if (!info.unit.empty()) tip += QString(" (%1)").arg(QString::fromStdString(info.unit).toHtmlEscaped());
-    tip += "<br>" + QString::fromStdString(info.doc).toHtmlEscaped();
+    tip += "<br>" + schemaText(info.doc).toHtmlEscaped();
     tip += "<br>" + tr("Valid: %1").arg(QString::fromStdString(info.rangeText()).toHtmlEscaped());
     tip += "<br>" + tr("Slider: %1 – %2%3 (values outside are kept; the slider then sits at its end)")
                         .arg(info.uiLo)
@@ -205,9 +206,9 @@ void ParamSlider::build(const QString& label) {
     guardWheel(m_field);
     m_slider->installEventFilter(new FineDrag(m_slider));
     for (const core::SpecialValue& s : f.specials) {
-        auto* box = new QCheckBox(QString::fromStdString(s.meaning), this);
+        auto* box = new QCheckBox(schemaText(s.meaning), this);
         box->setToolTip(tr("%1 = %2").arg(std::isnan(s.value) ? QString("null") : QString::number(s.value),
-                                          QString::fromStdString(s.meaning)));
+                                          schemaText(s.meaning)));
         lay->addWidget(box);
         m_specials.push_back(box);
         const double special = s.value;

@@ -1,5 +1,7 @@
 #include "ui/kit/schema_form.hpp"
 
+#include "ui/kit/i18n.hpp"
+
 #include <QHash>
 #include <QLabel>
 #include <QStringList>
@@ -9,6 +11,8 @@
 namespace lwb::ui {
 
 QString defaultLabel(const core::FieldInfo& info) {
+    // Translated: the translation as it is (its words are not English ones to abbreviate).
+    if (const QString t = schemaText(info.label()); t != QString::fromStdString(info.label())) return t;
     QStringList words = QString::fromStdString(info.label()).split(' ', Qt::SkipEmptyParts);
     // A last word that repeats the unit shown beside the field ("ring inner px" … px) goes.
     if (words.size() > 1 && !info.unit.empty() &&
@@ -26,7 +30,11 @@ QString defaultLabel(const core::FieldInfo& info) {
 }
 
 QWidget* sectionHeading(const QString& section) {
-    auto* l = new QLabel(QString("<b>%1</b>").arg(section.toHtmlEscaped()));
+    // Translated: the name in the interface's language with the key's section beside it, as
+    // --set and the JSON write it ("高斯拟合 gauss").
+    const QString t = schemaText(section.toStdString());
+    auto* l = new QLabel(t == section ? QString("<b>%1</b>").arg(section.toHtmlEscaped())
+                                      : QString("<b>%1</b> <tt>%2</tt>").arg(t.toHtmlEscaped(), section.toHtmlEscaped()));
     l->setContentsMargins(0, 6, 0, 0);
     return l;
 }
@@ -44,7 +52,7 @@ RangeEdit::RangeEdit(const core::FieldInfo& info, const QString& label, QWidget*
     m_lo = new ParamSlider(end, tr("   min"), this);
     m_hi = new ParamSlider(end, tr("   max"), this);
     const QString tip = QString("<b>%1</b><br>%2<br>%3")
-                            .arg(QString::fromStdString(info.key).toHtmlEscaped(), QString::fromStdString(info.doc).toHtmlEscaped(),
+                            .arg(QString::fromStdString(info.key).toHtmlEscaped(), schemaText(info.doc).toHtmlEscaped(),
                                  QString::fromStdString(info.rangeText()).toHtmlEscaped());
     m_on->setToolTip(tip);
     lay->addWidget(m_on);
@@ -134,7 +142,7 @@ void ValueCombo::rebuild() {
     int current = -1;
     auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
     for (const core::SpecialValue& s : m_info.specials) {
-        QString text = QString::fromStdString(s.meaning);
+        QString text = schemaText(s.meaning);
         if (!m_hint.isEmpty()) text += QString(" (%1)").arg(m_hint);
         addItem(text, s.value);
         if (same(s.value, m_value)) current = count() - 1;

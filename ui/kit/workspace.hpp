@@ -91,6 +91,19 @@ public:
         Q_UNUSED(note);
         return QString();
     }
+    /// The same as a Python script of the laserwb module (Edit ▸ Copy as Python), "" when none.
+    virtual QString pythonScript(QString* note) const {
+        Q_UNUSED(note);
+        return QString();
+    }
+    /// File ▸ Report…: the suggested file name of its current result's PDF report, "" when it
+    /// has nothing to report; writeReport writes it (false with *error).
+    virtual QString reportName() const { return QString(); }
+    virtual bool writeReport(const QString& path, QString* error) const {
+        Q_UNUSED(path);
+        if (error) *error = QString();
+        return false;
+    }
 
 signals:
     /// Something a session would save changed (a verdict, a note, an edit, a parameter).

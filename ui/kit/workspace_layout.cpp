@@ -315,7 +315,15 @@ void placeOnScreen(QWidget* window, const QSize& wanted) {
     QRect want(QPoint(0, 0), wanted);
     if (parent) want.moveCenter(parent->frameGeometry().center());
     else want.moveCenter(sc->availableGeometry().center());
-    window->setGeometry(fitWindowToScreen(want, window->minimumSizeHint(), sc->availableGeometry(), QMargins(0, 30, 0, 0)));
+    // The window manager's frame as the parent has it (borders too: 2 px a side left a dialog
+    // 4 px beyond an 800 px screen, issue 42), at least a title bar of 30 px.
+    QMargins frame(0, 30, 0, 0);
+    if (parent) {
+        const QRect f = parent->frameGeometry(), g = parent->geometry();
+        frame = QMargins(std::max(0, g.left() - f.left()), std::max(30, g.top() - f.top()), std::max(0, f.right() - g.right()),
+                         std::max(0, f.bottom() - g.bottom()));
+    }
+    window->setGeometry(fitWindowToScreen(want, window->minimumSizeHint(), sc->availableGeometry(), frame));
 }
 
 }  // namespace lwb::ui

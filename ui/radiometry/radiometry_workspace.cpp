@@ -146,6 +146,7 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : Workspace(parent) {
     m_controller = new RadiometryController(this);
     QHBoxLayout* top = buildInputRow();
     m_info = new QLabel(this);
+    m_info->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_info->setTextFormat(Qt::RichText);
     m_info->setForegroundRole(QPalette::PlaceholderText);
 
@@ -162,6 +163,7 @@ RadiometryWorkspace::RadiometryWorkspace(QWidget* parent) : Workspace(parent) {
     m_fitPlot->legend->setRowSpacing(0);
     legendBelow(m_fitPlot, 2);
     m_fitSummary = new QLabel(this);
+    m_fitSummary->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_fitSummary->setWordWrap(true);
     m_fitSummary->setTextFormat(Qt::RichText);
     m_fitSummary->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -479,6 +481,7 @@ QWidget* RadiometryWorkspace::buildErrorColumn() {
     m_errorTable->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_errorTable->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_errorSummary = new QLabel(errCol);
+    m_errorSummary->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_errorSummary->setWordWrap(true);
     m_errorSummary->setTextFormat(Qt::RichText);
     errLay->addWidget(m_fitSummary);

@@ -31,6 +31,7 @@
 #include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
+#include <QLocale>
 #include <QStatusBar>
 #include <QStyleFactory>
 #include <QTabWidget>
@@ -47,6 +48,7 @@
 #include <qcustomplot.h>
 
 #include "core/common/json.hpp"
+#include "ui/kit/i18n.hpp"
 #include "ui/kit/app_undo.hpp"
 #include "ui/kit/save_path.hpp"
 #include "ui/kit/workspace_layout.hpp"
@@ -232,6 +234,8 @@ void MainWindow::buildMenus() {
     file->addSeparator();
     file->addAction(tr("&Export… (current workspace)"), QKeySequence(tr("Ctrl+E")), this, &MainWindow::exportForCurrent);
     for (Workspace* ws : m_workspaces) file->addActions(ws->fileExportActions());
+    file->addAction(tr("&Report… (PDF)"), this, &MainWindow::reportForCurrent)
+        ->setObjectName("actionReport");
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -244,18 +248,35 @@ void MainWindow::buildMenus() {
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
-    // The batch command of the current result, to paste into a terminal or a script.
-    edit->addAction(tr("Copy as &command line"), this, [this] {
-        Workspace* ws = currentWorkspace();
-        QString note;
-        const QString cmd = ws ? ws->commandLine(&note) : QString();
-        if (cmd.isEmpty()) {
-            statusBar()->showMessage(tr("No result here that a command reproduces"), 6000);
-            return;
-        }
-        QApplication::clipboard()->setText(cmd);
-        statusBar()->showMessage(note.isEmpty() ? tr("Copied: %1").arg(cmd) : tr("Copied (%1): %2").arg(note, cmd), 10000);
-    })->setObjectName("actionCopyCommand");
+    // The batch command of the current result, to paste into a terminal, and the same as a
+    // Python script: the workspace's text on the clipboard, what it leaves out on the status line.
+    auto copyOf = [this](QString (Workspace::*text)(QString*) const, const QString& none,
+                         const std::function<QString(const QString&, const QString&)>& said) {
+        return [this, text, none, said] {
+            Workspace* ws = currentWorkspace();
+            QString note;
+            const QString t = ws ? (ws->*text)(&note) : QString();
+            if (t.isEmpty()) {
+                statusBar()->showMessage(none, 6000);
+                return;
+            }
+            QApplication::clipboard()->setText(t);
+            statusBar()->showMessage(said(t, note), 10000);
+        };
+    };
+    edit->addAction(tr("Copy as &command line"), this,
+                    copyOf(&Workspace::commandLine, tr("No result here that a command reproduces"),
+                           [this](const QString& cmd, const QString& note) {
+                               return note.isEmpty() ? tr("Copied: %1").arg(cmd) : tr("Copied (%1): %2").arg(note, cmd);
+                           }))
+        ->setObjectName("actionCopyCommand");
+    edit->addAction(tr("Copy as &Python"), this,
+                    copyOf(&Workspace::pythonScript, tr("No result here that a script reproduces"),
+                           [this](const QString& script, const QString& note) {
+                               return note.isEmpty() ? tr("Copied the Python script (%n line(s))", nullptr, int(script.count('\n')))
+                                                     : tr("Copied the Python script (%1)").arg(note);
+                           }))
+        ->setObjectName("actionCopyPython");
     appUndoGroup().setActiveStack(&undoStackOf(m_tabs->currentWidget()));
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -313,6 +334,32 @@ void MainWindow::buildMenus() {
         themes->addAction(a);
     }
     m_lightAction->setChecked(true);
+    // The interface language: the system's, English or Chinese, from the next start (every
+    // widget takes its text when it is made); `laserwb --language` for one run.
+    QMenu* language = view->addMenu(tr("Lan&guage"));
+    language->setObjectName("languageMenu");
+    auto* languages = new QActionGroup(this);
+    const QString chosen = QSettings().value(kLanguageSetting).toString();
+    const QList<QPair<QString, QString>> choices = {{QString(), tr("As the system (%1)").arg(QLocale::system().name())},
+                                                    {QStringLiteral("en"), QStringLiteral("English")},
+                                                    {QStringLiteral("zh_CN"), QStringLiteral("中文（简体）")}};
+    for (const auto& [code, name] : choices) {
+        QAction* a = language->addAction(name);
+        a->setCheckable(true);
+        a->setChecked(code == chosen);
+        a->setData(code);
+        languages->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code] {
+            QSettings().setValue(kLanguageSetting, code);
+            const QString next = resolveLanguage(code);
+            if (next == currentLanguage()) return;
+            const QString text = tr("The interface will be in %1 from the next start of the workbench.")
+                                     .arg(next == QLatin1String("en") ? QStringLiteral("English") : QStringLiteral("中文"));
+            statusBar()->showMessage(text, 8000);
+            if (qApp->platformName() != QLatin1String("offscreen"))
+                QMessageBox::information(this, tr("Language"), text);
+        });
+    }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&User guide"), QKeySequence::HelpContents, this, &MainWindow::showUserGuide);
@@ -347,20 +394,28 @@ void MainWindow::setPanelsVisible(bool visible) {
     if (m_panelsAction) m_panelsAction->setChecked(visible);
 }
 
+namespace {
+// A menu text as a list names it: without its accelerator ("&File" -> "File", "文件(&F)" -> "文件").
+QString withoutAccelerator(QString text) {
+    static const QRegularExpression inParentheses(QStringLiteral("\\(&[^)]\\)"));
+    text.remove(inParentheses);
+    return text.remove('&');
+}
+}  // namespace
+
 QStringList MainWindow::shortcutList() const {
     QStringList out;
     std::function<void(const QList<QAction*>&, const QString&)> walk = [&](const QList<QAction*>& acts, const QString& menu) {
         for (QAction* a : acts) {
             if (a->menu()) {
-                walk(a->menu()->actions(), a->menu()->title().remove('&'));
+                walk(a->menu()->actions(), withoutAccelerator(a->menu()->title()));
                 continue;
             }
             const QList<QKeySequence> keys = a->shortcuts();
             if (keys.isEmpty()) continue;
             QStringList ks;
             for (const QKeySequence& k : keys) ks << k.toString(QKeySequence::NativeText);
-            QString text = a->text().remove('&');
-            text = text.split('\t').first();
+            QString text = withoutAccelerator(a->text()).split('\t').first();
             out << ks.join(", ") + "\t" + menu + " ▸ " + text;
         }
     };
@@ -408,6 +463,29 @@ void MainWindow::showShortcuts() {
     dlg->show();
 }
 
+void MainWindow::reportForCurrent() {
+    Workspace* ws = currentWorkspace();
+    const QString name = ws ? ws->reportName() : QString();
+    if (name.isEmpty()) {
+        showError(tr("No report"), tr("%1 has no result to report yet.").arg(ws ? ws->title() : tr("This workspace")));
+        return;
+    }
+    const QString path = askSavePath(this, tr("Write report"), QStringLiteral("paths/lastReport"), name, tr("PDF (*.pdf)"));
+    if (path.isEmpty()) return;
+    writeReportTo(path);
+}
+
+bool MainWindow::writeReportTo(const QString& path) {
+    Workspace* ws = currentWorkspace();
+    QString err;
+    if (!ws || !ws->writeReport(path, &err)) {
+        showError(tr("Report not written"), err.isEmpty() ? tr("nothing to report") : err);
+        return false;
+    }
+    statusBar()->showMessage(tr("Report written: %1").arg(path), 8000);
+    return true;
+}
+
 void MainWindow::showUserGuide() {
     auto* dlg = new QDialog(this);
     dlg->setAttribute(Qt::WA_DeleteOnClose);
@@ -419,7 +497,9 @@ void MainWindow::showUserGuide() {
     // The guide as the program shows it: without the paragraphs for developers (between
     // <!-- developer --> and <!-- /developer -->: building, rendering the screenshots), and its
     // pictures no wider than the window (issue 30: shown at their full 1480 px, and "make run").
-    QFile f(QStringLiteral(":/docs/user-guide.md"));
+    // The guide in the interface's language (docs/user-guide.zh_CN.md), else the English one.
+    QFile f(QStringLiteral(":/docs/user-guide.%1.md").arg(currentLanguage()));
+    if (!f.exists()) f.setFileName(QStringLiteral(":/docs/user-guide.md"));
     QString text = f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : tr("The user guide is missing.");
     text.remove(QRegularExpression(QStringLiteral("<!-- developer -->.*?<!-- /developer -->"),
                                    QRegularExpression::DotMatchesEverythingOption));

@@ -103,6 +103,10 @@ public:
     void addRecentInput(const QString& kind, const QString& path, int pass = -1);
     /// The keyboard shortcuts as "keys\twhat" lines (Help ▸ Keyboard shortcuts).
     QStringList shortcutList() const;
+    /// File ▸ Report…: the current workspace's PDF report, to a file the analyst names.
+    void reportForCurrent();
+    /// The report of the current workspace written to `path` (false: shown as an error).
+    bool writeReportTo(const QString& path);
     void showUserGuide();
     void showShortcuts();
 

@@ -11,6 +11,7 @@
 #include <QtConcurrent>
 
 #include "core/slr/pass_output.hpp"
+#include "core/slr/pass_report.hpp"
 #include "core/slr/pass_run.hpp"
 #include "core/slr/slr_run.hpp"
 
@@ -90,11 +91,15 @@ namespace {
 // station's position), read by the core once for the passes of the file; the panel's parameters
 // as the config (their oc.* rows make the pass's O-C).
 bool setUp(const QString& path, const PassInputParams& in, const SlrParams& params, SlrSetup* out, QString* error) {
+    // Files by their absolute paths: what the report, the copied command and the script name.
+    auto absolute = [](const std::string& p) {
+        return p.empty() ? p : QFileInfo(QString::fromStdString(p)).absoluteFilePath().toStdString();
+    };
     SlrSources src;
-    src.input = path.toStdString();
+    src.input = absolute(path.toStdString());
     src.config = slrSchema().toJson(params);
-    src.stations = in.sinexPath;
-    if (!in.sinexPath.empty()) src.cpf = in.cpfPath;
+    src.stations = absolute(in.sinexPath);
+    if (!in.sinexPath.empty()) src.cpf = absolute(in.cpfPath);
     src.cpfFallback = true;  // a CPF that does not fit the pass: its own TOF trend, with a note
     src.openDamaged = true;  // a pass with damaged records is shown (its exports are refused)
     SlrError e;
@@ -355,7 +360,7 @@ bool SlrController::exportProducts(const PassProductPaths& paths, QString* error
     core::OutputSet outs;
     outs.addInput(m_pass.source);
     for (const std::string* in : {&m_input.cpfPath, &m_input.sinexPath}) outs.addInput(*in);
-    for (const std::string* out : {&paths.csv, &paths.crd, &paths.npt})
+    for (const std::string* out : {&paths.csv, &paths.crd, &paths.npt, &paths.report})
         if (!out->empty()) outs.addOutput(*out);
     std::string err;
     if (!outs.check() || !stagePassProducts(outs, m_pass, *m_run, paths, nullptr, &err) || !outs.commit()) {
@@ -366,15 +371,37 @@ bool SlrController::exportProducts(const PassProductPaths& paths, QString* error
 }
 
 bool SlrController::exportCsv(const QString& path, QString* error) const {
-    return exportProducts({path.toStdString(), "", "", false}, error);
+    PassProductPaths paths;
+    paths.csv = path.toStdString();
+    return exportProducts(paths, error);
 }
 
 bool SlrController::exportCrd(const QString& path, QString* error, bool wholeFile) const {
-    return exportProducts({"", path.toStdString(), "", wholeFile}, error);
+    PassProductPaths paths;
+    paths.crd = path.toStdString();
+    paths.crdWholeFile = wholeFile;
+    return exportProducts(paths, error);
 }
 
 bool SlrController::exportNormalPoints(const QString& path, QString* error) const {
-    return exportProducts({"", "", path.toStdString(), false}, error);
+    PassProductPaths paths;
+    paths.npt = path.toStdString();
+    return exportProducts(paths, error);
+}
+
+bool SlrController::exportReport(const QString& path, const NpComparison* station, QString* error) const {
+    // What opening the pass said, as the CLI gathers it, and what the command cannot carry.
+    std::vector<std::string> notes = m_warnings;
+    notes.insert(notes.end(), m_notes.begin(), m_notes.end());
+    long long edits = 0;
+    for (int8_t f : m_forced) edits += f != 0;
+    if (edits) notes.push_back(std::to_string(edits) + " point(s) forced in or out by hand in the workbench (not in the command below)");
+    PassReport report = passReportOf(m_setup, m_pass, m_settings, notes);
+    report.station = station;
+    PassProductPaths paths;
+    paths.report = path.toStdString();
+    paths.reportOf = &report;
+    return exportProducts(paths, error);
 }
 
 bool SlrController::waitIdle(int timeoutMs) { return m_job.waitIdle(timeoutMs); }

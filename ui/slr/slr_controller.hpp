@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/common/feedback.hpp"
+#include "core/slr/np_compare.hpp"
 #include "core/slr/pass_input.hpp"
 #include "core/slr/pass_run.hpp"
 #include "core/slr/postfit.hpp"
@@ -130,6 +131,9 @@ public:
     /// The normal points as the CLI's --npt-out writes them: the reason in their place when there
     /// are none; refused when neither the bin length nor the altitude is known.
     bool exportNormalPoints(const QString& path, QString* error) const;
+    /// The pass's one-page PDF report (core pass_report.hpp, as slr --report-out writes it), with
+    /// the station comparison when one is given.
+    bool exportReport(const QString& path, const core::slr::NpComparison* station, QString* error) const;
 
     bool waitIdle(int timeoutMs);
 

@@ -119,6 +119,7 @@ SlrWorkspace::SlrWorkspace(QWidget* parent) : Workspace(parent) {
     m_controller = new SlrController(this);
     QHBoxLayout* top = buildInputRow();
     m_info = new QLabel(this);
+    m_info->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_info->setWordWrap(true);
 
     buildPlots();
@@ -356,6 +357,7 @@ QWidget* SlrWorkspace::buildPlotArea() {
     m_bottomTabs->setTabToolTip(1, tr("Open the station's CRD normal points of the pass: drawn over ours, differences bin by bin"));
     bl->addWidget(m_bottomTabs, 2);
     m_stats = new QLabel(bottom);
+    m_stats->setProperty("showsData", true);  // results: the program's words with the data's and the core's
     m_stats->setTextFormat(Qt::RichText);
     m_stats->setWordWrap(true);  // as wide as the scroll area's viewport (a wider minimum cut it on the right)
     m_stats->setAlignment(Qt::AlignTop | Qt::AlignLeft);
@@ -1581,18 +1583,57 @@ QStringList SlrWorkspace::shortcutNotes() const {
     return {tr("Hover\tSLR ▸ one time cursor on the O-C plot, the binary image and the histogram")};
 }
 
+namespace {
+QString absolute(const QString& path) { return path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath(); }
+}  // namespace
+
+// The run in front as the CLI or Python names it: its files as absolute paths, its pass, its
+// resolved parameters; *note says what neither carries (manual edits).
 QString SlrWorkspace::commandLine(QString* note) const {
     if (!m_controller->hasRun() || m_path.isEmpty()) return QString();  // (the demo's pass is simulated: no file)
     const int pass = m_controller->pass().hasCrd ? m_controller->pass().passIndex + 1 : 0;
-    const auto args = core::slr::slrCommandArgs(QFileInfo(m_path).absoluteFilePath().toStdString(), pass,
-                                                m_cpfPath.isEmpty() ? std::string() : QFileInfo(m_cpfPath).absoluteFilePath().toStdString(),
-                                                m_controller->setup().sources.cpfFallback,
-                                                m_snxPath.isEmpty() ? std::string() : QFileInfo(m_snxPath).absoluteFilePath().toStdString(),
-                                                m_controller->settings().params);
+    const auto args = core::slr::slrCommandArgs(absolute(m_path).toStdString(), pass, absolute(m_cpfPath).toStdString(),
+                                                m_controller->setup().sources.cpfFallback, absolute(m_snxPath).toStdString(),
+                                                core::slr::commandParams(m_controller->setup(), m_controller->pass(),
+                                                                         m_controller->settings().params));
+    if (note) *note = editsNote();
+    return QStringLiteral("laserwb-cli ") + QString::fromStdString(core::slr::shellCommand(args));
+}
+
+QString SlrWorkspace::pythonScript(QString* note) const {
+    if (!m_controller->hasRun() || m_path.isEmpty()) return QString();
+    const core::slr::PassData& p = m_controller->pass();
+    // A prediction the pass did not use (another satellite or day: the TOF trend instead, with a
+    // note) is left out: load_pass would refuse it where the workbench fell back.
+    const bool cpfUsed = !m_cpfPath.isEmpty() && p.ocNote.empty();
+    QString edits = editsNote();
+    if (!m_cpfPath.isEmpty() && !cpfUsed)
+        edits += (edits.isEmpty() ? QString() : QStringLiteral("; ")) + tr("the prediction, which this pass did not use, is left out");
+    if (note) *note = edits;
+    return QString::fromStdString(core::slr::slrPythonScript(absolute(m_path).toStdString(), p.hasCrd ? p.passIndex + 1 : 0,
+                                                             cpfUsed ? absolute(m_cpfPath).toStdString() : std::string(),
+                                                             absolute(m_snxPath).toStdString(),
+                                                             core::slr::commandParams(m_controller->setup(), p, m_controller->settings().params)));
+}
+
+QString SlrWorkspace::editsNote() const {
     long long edits = 0;
     for (int8_t f : m_controller->forced()) edits += f != 0;
-    if (note) *note = edits ? tr("%n point(s) forced in or out by hand are not in the command", nullptr, int(edits)) : QString();
-    return QStringLiteral("laserwb-cli ") + QString::fromStdString(core::slr::shellCommand(args));
+    return edits ? tr("%n point(s) forced in or out by hand are not in the command", nullptr, int(edits)) : QString();
+}
+
+QString SlrWorkspace::reportName() const {
+    if (!m_controller->hasRun()) return QString();
+    const core::slr::PassData& p = m_controller->pass();
+    QString base = m_path.isEmpty() ? QStringLiteral("demo") : QFileInfo(m_path).completeBaseName();
+    if (p.hasCrd) base += QStringLiteral("_pass%1").arg(p.passIndex + 1);
+    return base + QStringLiteral("_report.pdf");
+}
+
+bool SlrWorkspace::writeReport(const QString& path, QString* error) const {
+    const core::slr::NpComparison& cmp = m_stationNps->comparison();
+    const bool compared = m_stationNps->hasFile() && (cmp.ok || !cmp.error.empty());
+    return m_controller->exportReport(path, compared ? &cmp : nullptr, error);
 }
 
 }  // namespace lwb::ui

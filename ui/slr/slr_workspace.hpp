@@ -111,6 +111,10 @@ public:
     /// laserwb-cli slr with the pass, the prediction, the station file and the last run's
     /// parameters (core slrCommandArgs); the box edits are not in it (*note says how many).
     QString commandLine(QString* note) const override;
+    QString pythonScript(QString* note) const override;
+    QString reportName() const override;
+    bool writeReport(const QString& path, QString* error) const override;
+    QString editsNote() const;  ///< what the command and the script cannot carry ("" when nothing)
 
     /// Session state: inputs, edits, and the parameters as slrSchema()'s JSON ("screen" and
     /// "postfit", every field).

@@ -1,0 +1,41 @@
+#pragma once
+// A one-page PDF report of a screened pass for the station log (issue 42): what was screened
+// (satellite, station, day, file, points), the verdict and its reason, the O-C with the
+// screening's classes, the post-fit residuals with the normal-point bins, the binary image,
+// the residual histogram, the parameters used (the automatic mode's choices marked), the normal
+// points, the station comparison when one was made, and the provenance (program, inputs with
+// their SHA-256, the command that makes the same products). Drawn with cairo's PDF surface; the
+// plots are rasters inside vector axes, so that a pass of 10^6 points is still a page of a few
+// hundred kB. `laserwb-cli slr --report-out` and the workbench's File > Report... both write it
+// through stagePassProducts (slr_run.hpp): the same bytes for the same run and the same
+// production date (SOURCE_DATE_EPOCH when set, else now).
+#include <string>
+#include <vector>
+
+#include "core/slr/np_compare.hpp"
+#include "core/slr/pass_run.hpp"
+#include "core/slr/slr_run.hpp"
+
+namespace lwb::core::slr {
+
+struct PassReport {
+    const PassSettings* settings = nullptr;  ///< the parameters the pass ran with (required)
+    std::vector<std::string> inputs;         ///< the files read (pass, CPF, stations, presets), as named
+    std::vector<std::string> notes;          ///< what opening the pass said (O-C origin, warnings)
+    const NpComparison* station = nullptr;   ///< the station's normal points compared, when they were
+    std::string command;                     ///< the laserwb-cli command that reproduces the run ("" = none)
+};
+
+/// The report of a pass opened and resolved from `setup` (every front end's): its files in the
+/// order pass, prediction, stations, presets, as the sources name them; the laserwb-cli command of
+/// the run (slrCommandArgs with the pass's number and its resolved parameters); `notes`: what
+/// opening it said (warnings first). `settings` must outlive the report.
+PassReport passReportOf(const SlrSetup& setup, const PassData& pass, const PassSettings& settings,
+                        std::vector<std::string> notes);
+
+/// Writes the report of `pass` screened as `run` to `path` (the caller's staging file) as a
+/// one-page A4 PDF. False with *error when cairo cannot write it.
+bool writePassReport(const std::string& path, const PassData& pass, const PassRunResult& run, const PassReport& report,
+                     std::string* error);
+
+}  // namespace lwb::core::slr
