@@ -24,4 +24,6 @@ int cmdSimulateRadiometry(int argc, char** argv);
 int cmdSlr(int argc, char** argv);
 int cmdSimulateSlr(int argc, char** argv);
 int cmdBenchSlr(int argc, char** argv);
+// CRD files: app/cli_crd.cpp ("crd check")
+int cmdCrd(int argc, char** argv);
 }  // namespace lwb::cli

@@ -42,6 +42,7 @@ const char* kMainUsage =
     "                       points -> CSV, CRD with filter flags, CRD normal points\n"
     "  simulate slr         a simulated pass (O-C CSV or CRD) with exact truth per point\n"
     "  bench slr            parse + screen + post-fit times and peak memory, 10^4..10^6 points\n"
+    "  crd check            check CRD files record by record against the format (FILE:LINE: reason)\n"
     "\n"
     "Altimeter calibration (paper 002):\n"
     "  calib detector       footprint centre from a ground detector array (Gaussian surface + ellipse)\n"
@@ -130,6 +131,7 @@ int dispatch(int argc, char** argv) {
     if (cmd == "slr") return cmdSlr(argc, argv);
     if (cmd == "simulate" && sub == "slr") return cmdSimulateSlr(argc, argv);
     if (cmd == "bench" && sub == "slr") return cmdBenchSlr(argc, argv);
+    if (cmd == "crd") return cmdCrd(argc, argv);
     if (isImagingCommand(cmd, sub)) return runImaging(argc, argv);
 #else
     if (cmd == "footprint") return cmdFootprint(argc, argv);
@@ -150,7 +152,7 @@ int dispatch(int argc, char** argv) {
     if (cmd == "radiometry" && sub == "apply") return cmdRadiometryApply(argc, argv);
     if (cmd == "radiometry" && sub == "check") return cmdRadiometryCheck(argc, argv);
     if (cmd == "demo") return demo(argc, argv);
-    if (cmd == "slr" || ((cmd == "simulate" || cmd == "bench") && sub == "slr"))
+    if (cmd == "slr" || cmd == "crd" || ((cmd == "simulate" || cmd == "bench") && sub == "slr"))
         return fail(cmd, "the SLR commands are run by laserwb-cli itself, not by laserwb-cli-imaging", kUsage);
 #endif
     if (cmd == "calib" || cmd == "radiometry") {

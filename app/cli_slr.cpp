@@ -44,7 +44,7 @@ namespace {
 
 const std::string kSlrUsage = std::string(
     "usage: laserwb-cli slr INPUT [options] [-o OUT.csv] [--crd-out FILE] [--npt-out FILE] [--report-out FILE.pdf]\n"
-    "                        (at least one output)\n"
+    "                        (no output: the summary alone, nothing written)\n"
     "       laserwb-cli slr --all-passes --out-dir DIR [options] CRD...\n"
     "Screens one SLR pass: signal extraction by binary image (paper 004; automatic scale by default),\n"
     "then a trend fit with k-sigma rejection and ILRS normal points. A summary goes to stderr.\n"
@@ -104,7 +104,7 @@ const std::string kSlrUsage = std::string(
     "  --np-bin S            normal-point bin length in s (default: the ILRS length for the\n"
     "                        satellite's altitude; an O-C CSV has no altitude: no normal points\n"
     "                        unless --np-bin or a preset's altitude_km is given)\n"
-    "Outputs (at least one; each written whole or not at all; nothing is written when the run fails):\n"
+    "Outputs (none: the summary alone; each written whole or not at all; nothing when the run fails):\n"
     "  -o, --output OUT.csv  one row per input point, in input order:\n"
     "                        index,epoch_s,oc_s,class,region,residual_s,kept,station_flag\n"
     "                        index: 0-based row of the O-C CSV, or type-10 record of the CRD pass;\n"
@@ -122,6 +122,9 @@ const std::string kSlrUsage = std::string(
     "                        classes, post-fit residuals and normal-point bins, binary image,\n"
     "                        histogram, parameters, normal points, provenance and this command\n"
     "                        (the workbench's File > Report... writes the same)\n"
+    "  --station-np FILE     the station's own normal points of the pass (a CRD normal-point file):\n"
+    "                        compared with ours bin by bin in the report and the summary, as the\n"
+    "                        workbench's Station normal points tab compares them\n"
     "  Provenance: each output file F gets F.provenance.json beside it, and --out-dir DIR gets\n"
     "                        DIR/provenance.json: version, parameters, settings, SHA-256 of every\n"
     "                        input and output\n"
@@ -164,6 +167,7 @@ int gatherSources(const std::string& cmd, const Args& a, const ParamOptions<slr:
     s.cpf = a.value("--cpf");
     s.cpfFallback = a.has("--cpf-fallback");
     s.stations = a.value("--stations");
+    s.stationNormalPoints = a.value("--station-np");
     s.presets = a.value("--preset");
     s.satellite = a.value("--satellite");
     s.configFile = a.value("--config");
@@ -262,7 +266,7 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
     const std::string& outDir = pl->outDir;
     if (allPasses) {
         if (outDir.empty()) return fail(cmd, "--all-passes needs --out-dir DIR (each pass's CSV and summary.csv go there)", kUsage);
-        for (const char* o : {"-o", "--output", "--crd-out", "--npt-out", "--report-out", "--pass"})
+        for (const char* o : {"-o", "--output", "--crd-out", "--npt-out", "--report-out", "--pass", "--station-np"})
             if (a.has(o)) return fail(cmd, std::string(o) + " is for one pass; --all-passes writes DIR/passNNN.csv and DIR/summary.csv", kUsage);
     } else if (!outDir.empty() || a.has("--threads")) {
         return fail(cmd, std::string(outDir.empty() ? "--threads" : "--out-dir") + " goes with --all-passes", kUsage);
@@ -273,15 +277,14 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
     pl->crdOut = a.value("--crd-out");
     pl->nptOut = a.value("--npt-out");
     pl->reportOut = a.value("--report-out");
-    if (out.empty() && pl->crdOut.empty() && pl->nptOut.empty() && pl->reportOut.empty() && !allPasses)
-        return fail(cmd, "no output file: give -o OUT.csv, --crd-out FILE, --npt-out FILE or --report-out FILE.pdf", kUsage);
+    // (no output asked for: the run prints its summary and writes nothing)
     if (core::isStandardStream(pl->reportOut))
         return fail(cmd, "--report-out needs a file (a PDF is not written to standard output)", kUsage);
     const std::string &crdOut = pl->crdOut, &nptOut = pl->nptOut, &reportOut = pl->reportOut;
     // Every output is checked before anything is computed or written: none may replace an
     // input or another output (same device and inode, whatever the spelling), devices and
     // folders are refused, and all are renamed into place together at the end.
-    for (const char* in : {"--cpf", "--stations", "--preset"}) outs->addInput(a.value(in));
+    for (const char* in : {"--cpf", "--stations", "--preset", "--station-np"}) outs->addInput(a.value(in));
     outs->addInput(input);
     for (const std::string* p : {&out, &crdOut, &nptOut, &reportOut})
         if (!p->empty()) outs->addOutput(*p);
@@ -346,7 +349,7 @@ int cmdSlr(int argc, char** argv) {
                                                                  {"--np-bin", "postfit.bin_length_s"}});
     params.declare(a);
     for (const char* o : {"--cpf", "--stations", "--satellite", "--preset", "--pass", "-o", "--output", "--crd-out", "--npt-out",
-                          "--report-out", "--out-dir", "--threads"})
+                          "--report-out", "--out-dir", "--threads", "--station-np"})
         a.option(o, true);
     declareBatchOptions(a);
     for (const char* o : {"--quiet", "-q", "--help", "-h", "--help-params", "--all-passes", "--cpf-fallback"}) a.option(o, false);
@@ -602,10 +605,18 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
     summary.addInput(entry);
     if (!quiet) {
         printSummary(what, pass, settings, r);
+        if (setup.stationNormalPoints) {  // (the comparison the report and the Station NP tab make)
+            const slr::NpComparison cmp =
+                r.postOk ? slr::compareWithStation(pass, r.post, *setup.stationNormalPoints, setup.sources.stationNormalPoints)
+                         : slr::NpComparison{};
+            std::cerr << "  station normal points: "
+                      << (cmp.ok ? cmp.describe() : cmp.error.empty() ? std::string("no post-fit: nothing to compare") : cmp.error)
+                      << "\n";
+        }
         std::string written;
         for (const std::string* o : {&out, &crdOut, &nptOut, &reportOut})
             if (!o->empty()) written += (written.empty() ? "" : ", ") + *o;
-        std::cerr << "  -> " << written
+        std::cerr << "  -> " << (written.empty() ? "nothing written (-o, --crd-out, --npt-out, --report-out write the products)" : written)
                   << (nptOut.empty() || !delivered.points.empty() ? "" : " (" + nptOut + ": no normal points: " + delivered.noneReason + ")")
                   << "\n";
     }

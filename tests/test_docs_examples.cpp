@@ -85,7 +85,7 @@ QList<QPair<int, QString>> inlineCommands(const QString& path) {
 
 // The command words of a laserwb-cli invocation ("calib detector", "slr").
 QStringList commandWords(const QStringList& args) {
-    static const QStringList two{"simulate", "eval", "bench", "calib", "radiometry"};
+    static const QStringList two{"simulate", "eval", "bench", "calib", "radiometry", "crd"};
     if (args.isEmpty()) return {};
     if (two.contains(args[0]) && args.size() > 1) return args.mid(0, 2);
     return args.mid(0, 1);

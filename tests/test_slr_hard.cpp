@@ -10,6 +10,7 @@
 //    normal points (see normalPointsAgainstTheStation).
 #include <QtTest>
 #include <Eigen/Dense>
+#include <cctype>
 #include <cmath>
 #include <set>
 
@@ -118,20 +119,60 @@ slr::PassData passOf(const sim::SlrSimPass& s, double altitudeKm) {
 class TestSlrHard : public QObject {
     Q_OBJECT
 private slots:
-    // ---------------------------------------------------------------- ILRS tables (issue 29)
+    // ---------------------------------------------------------------- ILRS tables (issues 29, 43)
     // The shipped tables parse, and a pass takes its normal-point bin from the missions table
     // and its station's day or night from the stations table: without a SINEX file, hy2c pass 6
     // (GLSL, a night pass) forms the normal points it forms with the SLRF2014 SINEX given.
+    // The missions table (issue 43) holds the ILRS satellites past and present that its sources
+    // identify (resources/ilrs/README.md): each once by ILRS id, SIC, NORAD and name.
     void ilrsTablesGiveBinAndStation() {
         const auto& missions = slr::ilrsMissions();
-        QVERIFY(missions.size() >= 12);
-        std::set<std::string> ids;
+        QVERIFY2(missions.size() >= 150, qPrintable(QString::number(missions.size())));
+        std::set<long> ids, sics, norads;
+        std::set<std::string> names;
+        size_t gnss = 0;
         for (const auto& m : missions) {
             QVERIFY2(m.npBinS > 0 && m.altitudeKm > 0 && !m.source.empty(), m.name.c_str());
-            QVERIFY2(ids.insert(m.ilrsId).second, m.ilrsId.c_str());
+            QVERIFY2(m.ilrsId.size() == 7 && m.ilrsId.find_first_not_of("0123456789") == std::string::npos, m.name.c_str());
+            QVERIFY2(ids.insert(std::stol(m.ilrsId)).second, m.ilrsId.c_str());
+            QVERIFY2(m.sic < 0 || sics.insert(m.sic).second, m.name.c_str());
+            QVERIFY2(m.norad < 0 || norads.insert(m.norad).second, m.name.c_str());
+            std::string letters;  // findMission's name key: letters and digits, lower case
+            for (char c : m.name)
+                if (std::isalnum(static_cast<unsigned char>(c))) letters += char(std::tolower(static_cast<unsigned char>(c)));
+            QVERIFY2(names.insert(letters).second, m.name.c_str());
+            // Each row is found by its own ids and name.
+            QCOMPARE(slr::findMission("", m.ilrsId), &m);
+            QCOMPARE(slr::findMission(letters, ""), &m);
             // A bin from the altitude class agrees with the class of the nominal altitude.
             if (m.source == "class") QCOMPARE(m.npBinS, slr::normalPointBinS(m.altitudeKm));
+            for (const char* g : {"gps", "glonass", "galileo", "giove", "compass", "qzs", "irnss"})
+                gnss += letters.rfind(g, 0) == 0;
         }
+        QVERIFY2(gnss >= 80, qPrintable(QString::number(gnss)));
+        // The ILRS's own bins: ERS-2 (785 km) 15 s where a pass's altitude estimate gave 30 s;
+        // ICESat (586-594 km) the 15 s of its class; GRACE and Sentinel-3 the ILRS table's examples.
+        auto bin = [](const char* name, const char* id) {
+            const slr::IlrsMission* m = slr::findMission(name, id);
+            return m && m == slr::findMission(name, "") ? m->npBinS : -1.0;
+        };
+        QCOMPARE(bin("ers2", "9502101"), 15.0);
+        QCOMPARE(bin("icesat", "0300201"), 15.0);
+        QCOMPARE(bin("gracea", "0201201"), 5.0);
+        QCOMPARE(bin("sentinel3a", "1601101"), 15.0);
+        QCOMPARE(bin("topex", "9205201"), 15.0);
+        QCOMPARE(bin("gps35", "9305401"), 300.0);
+        QCOMPARE(bin("glonass134", "1407501"), 300.0);
+        QCOMPARE(bin("galileo101", "1106001"), 300.0);
+        const slr::IlrsMission* l1 = slr::findMission("", "7603901");  // LAGEOS-1 by its ILRS id alone
+        QVERIFY(l1 && l1->name == "LAGEOS-1" && l1->npBinS == 120 && l1->sic == 1155 && l1->norad == 8820);
+        QCOMPARE(slr::findMission("", "", 4146)->name, std::string("Etalon-2"));  // Etalon-2's SIC (was 526)
+        // The lunar reflectors, by the ids the CRD H3 records give them (no NORAD).
+        for (const char* r : {"apollo11", "apollo14", "apollo15", "luna17", "luna21"}) {
+            const slr::IlrsMission* m = slr::findMission(r, "");
+            QVERIFY2(m && m->norad < 0 && m->source.rfind("lunar", 0) == 0 && m->altitudeKm > 350000, r);
+        }
+        QCOMPARE(slr::findMission("", "103", 103), slr::findMission("apollo15", ""));
         const slr::IlrsMission* j = slr::findMission("JASON1", "0105501");
         QVERIFY(j && j->npBinS == 15);
         QCOMPARE(slr::findMission("jason1", "105501"), j);  // the CRD v2 samples' spelling
@@ -160,6 +201,60 @@ private slots:
         QCOMPARE(a.post.normalPoints.size(), size_t(6));  // 3 points a bin by night (5 with the day minimum)
         for (size_t k = 0; k < a.post.normalPoints.size(); ++k)
             QVERIFY(std::fabs(a.post.normalPoints[k].ocS - b.post.normalPoints[k].ocS) < 1e-15);
+    }
+
+    // The bins of the shared real passes and of the simulated kinds come from the missions table
+    // (issue 43): each pass's bin is its satellite's row, said so; the simulator's satellites
+    // other than LAGEOS-1 (simsat-*, ids 9999901/9999/99999) are in no row and keep the altitude
+    // rule (bin 0 here), said so.
+    void ilrsBinsOfSharedAndSimulatedPasses() {
+        auto settingsOf = [](const std::string& path, slr::PassSettings* out, const slr::IlrsMission** m) {
+            const slr::PassInputResult in = slr::loadPass(path, -1, {});
+            QVERIFY2(in.ok, in.error.c_str());
+            *m = slr::findMission(in.pass.crd->passes[size_t(in.pass.passIndex)].target);
+            std::string err;
+            QVERIFY2(slr::passSettings(in.pass, slr::SlrParams{}, nullptr, "", nullptr, out, &err), err.c_str());
+        };
+        auto noted = [](const slr::PassSettings& s, const std::string& what) {
+            for (const auto& n : s.notes)
+                if (n.find(what) != std::string::npos) return true;
+            return false;
+        };
+        QTemporaryDir dir;
+        for (sim::SlrKind kind : {sim::SlrKind::Khz, sim::SlrKind::Conventional, sim::SlrKind::Diffuse, sim::SlrKind::Leo}) {
+            const sim::SlrSimParams sp = sim::slrSimPreset(kind);
+            const sim::SlrSimPass p = sim::simulateSlrPass(sp, 1);
+            QVERIFY2(p.ok, p.error.c_str());
+            const QString path = dir.path() + "/" + sim::slrKindName(kind) + ".frd";
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray::fromStdString(sim::slrPassCrd(sp, p)));
+            f.close();
+            slr::PassSettings s;
+            const slr::IlrsMission* m = nullptr;
+            settingsOf(path.toStdString(), &s, &m);
+            if (kind == sim::SlrKind::Conventional) {  // "lageos1 7603901 1155 8820"
+                QVERIFY(m && m->name == "LAGEOS-1");
+                QCOMPARE(s.params.postfit.binLengthS, 120.0);
+                QVERIFY(noted(s, "s for LAGEOS-1 (ILRS missions table: "));
+            } else {
+                QVERIFY2(!m, sim::slrKindName(kind));
+                QCOMPARE(s.params.postfit.binLengthS, 0.0);
+                QVERIFY(noted(s, "satellite not in the ILRS missions table"));
+            }
+        }
+        const std::pair<const char*, double> shared[] = {
+            {"blits_201206.frd", 30}, {"7080_JASON1_crd_071220_2033_0.frd", 15}, {"7080_STELLA_crd_071220_2128_0.frd", 30},
+            {"beaconc_20070511.frd", 15}, {"7080_Beacon-C_crd_071220_1715_0.frd", 15}, {"hy2c_202109.fr2", 30}};
+        if (!lwbtest::haveShared("slr/hy2c_202109.fr2")) QSKIP("shared data not found");
+        for (const auto& [file, expected] : shared) {
+            slr::PassSettings s;
+            const slr::IlrsMission* m = nullptr;
+            settingsOf(lwbtest::sharedPath(QString("slr/") + file).toStdString(), &s, &m);
+            QVERIFY2(m, file);
+            QVERIFY2(s.params.postfit.binLengthS == m->npBinS && m->npBinS == expected, file);
+            QVERIFY2(noted(s, "s for " + m->name + " (ILRS missions table: " + m->source + ")"), file);
+        }
     }
 
     // The station's check against a prediction (issue 29): the range and time bias fitted to the

@@ -7,11 +7,13 @@
 #include <memory>
 
 #include "bind.hpp"
+#include "core/common/atomic_file.hpp"
 #include "core/common/output_set.hpp"
 #include "core/slr/cpf.hpp"
 #include "core/slr/crd.hpp"
 #include "core/slr/pass_input.hpp"
 #include "core/slr/pass_output.hpp"
+#include "core/slr/pass_report.hpp"
 #include "core/slr/pass_run.hpp"
 #include "core/slr/presets.hpp"
 #include "core/slr/screen_auto.hpp"
@@ -38,11 +40,16 @@ const ParamsBinding<slr::SlrParams> kParams{
 struct Pass {
     std::shared_ptr<const slr::PassData> data;
     std::vector<std::string> warnings;
+    std::vector<std::string> notes;  ///< what the O-C is relative to (when not a prediction)
+    slr::SlrSources sources;         ///< what load_pass was given (the pass's file, prediction, stations)
 };
 
-/// A pass's run: its settings and the task's outputs.
+/// A pass's run: its settings, the task's outputs, and the set-up it ran with (its sources also
+/// name the pass's prediction: what the report's command gives the CLI).
 struct PassRun {
     std::shared_ptr<const slr::PassData> pass;
+    std::shared_ptr<const slr::SlrSetup> setup;
+    std::vector<std::string> openingNotes;  ///< load_pass's warnings, then its notes
     slr::PassSettings settings;
     slr::PassRunResult r;
 };
@@ -118,7 +125,7 @@ Pass loadPass(const py::object& path, const py::object& passNumber, const py::ob
         opened = slr::openPass(setup);
     }
     if (!opened.ok) raise(opened.error);
-    return Pass{opened.pass, opened.warnings};
+    return Pass{opened.pass, opened.warnings, opened.notes, setup.sources};
 }
 
 PassRun runPass(const Pass& pass, const py::object& params, const py::object& preset, const py::object& satellite,
@@ -133,15 +140,25 @@ PassRun runPass(const Pass& pass, const py::object& params, const py::object& pr
     if (!stations.is_none()) src.stations = fsPath(stations);
     gatherParams(params, &src);
     src.searchThreads = threadCount(threads);
-    const slr::SlrSetup setup = setUp(src);
+    auto setup = std::make_shared<slr::SlrSetup>(setUp(src));
     slr::ResolvedRun done;
     {
         py::gil_scoped_release nogil;
-        done = slr::resolveAndRunPass(setup, *pass.data);
+        done = slr::resolveAndRunPass(*setup, *pass.data);
     }
     if (!done.ok) raise(done.error);
     PassRun run;
     run.pass = pass.data;
+    run.openingNotes = pass.warnings;
+    run.openingNotes.insert(run.openingNotes.end(), pass.notes.begin(), pass.notes.end());
+    // The O-C's prediction is the pass's (load_pass read it): named with the run's sources when
+    // the run has the same stations, the shape of the CLI's --cpf with --stations.
+    if (!pass.sources.cpf.empty()) {
+        if (pass.sources.stations == setup->sources.stations) setup->sources.cpf = pass.sources.cpf;
+        else run.openingNotes.push_back("O-C from the prediction " + pass.sources.cpf + " with the stations " + pass.sources.stations +
+                                        ", which this run was not given: the command below has no prediction");
+    }
+    run.setup = std::move(setup);
     run.settings = std::move(done.settings);
     run.r = std::move(done.result);
     return run;
@@ -180,15 +197,26 @@ py::list processFile(const py::object& path, const py::object& outDir, const py:
     return rows;
 }
 
-void writeProducts(const PassRun& run, const std::string& csv, const std::string& crd, const std::string& npt) {
+void writeProducts(const PassRun& run, const std::string& csv, const std::string& crd, const std::string& npt,
+                   const std::string& report, const std::string& stationNp) {
     const slr::PassData& pass = *run.pass;
+    if (csv.empty() && crd.empty() && npt.empty() && report.empty()) throw ParameterError("no output: give csv, crd, npt or report");
+    if (!stationNp.empty() && report.empty())
+        throw ParameterError("station_np is compared in the report: give report='FILE.pdf' with it");
+    if (core::isStandardStream(report)) throw ParameterError("report needs a file (a PDF is not written to standard output)");
     core::OutputSet outs;
     outs.addInput(pass.source);
-    for (const std::string* p : {&csv, &crd, &npt})
+    outs.addInput(stationNp);
+    for (const std::string* p : {&csv, &crd, &npt, &report})
         if (!p->empty()) outs.addOutput(*p);
-    if (csv.empty() && crd.empty() && npt.empty()) throw ParameterError("no output: give csv, crd or npt");
     if (!outs.check()) throw Error(outs.error());
-    const slr::PassProductPaths paths{csv, crd, npt, true, "", nullptr};
+    // The report as the CLI's --report-out makes it: the run's set-up, with the station's
+    // normal points read by the core (--station-np).
+    slr::SlrSetup setup = *run.setup;
+    slr::SlrError e;
+    if (!slr::setStationNormalPoints(&setup, stationNp, &e)) raise(e);
+    const slr::PassReport rep = slr::passReportOf(setup, pass, run.settings, run.openingNotes);
+    const slr::PassProductPaths paths{csv, crd, npt, true, report, report.empty() ? nullptr : &rep};
     if (const std::string why = slr::productsProblem(pass, run.settings, paths); !why.empty()) throw ParameterError(why);
     std::string err;
     if (!slr::stagePassProducts(outs, pass, run.r, paths, nullptr, &err)) throw Error(err);
@@ -335,13 +363,18 @@ void bindPassResult(py::module_& m) {
         .def_property_readonly("no_normal_points_reason", [](const PassRun& r) { return slr::deliveredNormalPoints(r.r).noneReason; })
         .def_property_readonly("range_bias_s", [](const PassRun& r) { return r.r.bias.ok ? r.r.bias.rangeBiasS : NAN; })
         .def_property_readonly("time_bias_s", [](const PassRun& r) { return r.r.bias.ok ? r.r.bias.timeBiasS : NAN; })
-        .def("write", [](const PassRun& r, const py::object& csv, const py::object& crd, const py::object& npt) {
-            const std::string c = csv.is_none() ? "" : fsPath(csv), f = crd.is_none() ? "" : fsPath(crd), n = npt.is_none() ? "" : fsPath(npt);
+        .def("write", [](const PassRun& r, const py::object& csv, const py::object& crd, const py::object& npt,
+                         const py::object& report, const py::object& stationNp) {
+            auto path = [](const py::object& o) { return o.is_none() ? std::string() : fsPath(o); };
+            const std::string c = path(csv), f = path(crd), n = path(npt), rep = path(report), snp = path(stationNp);
             py::gil_scoped_release nogil;
-            writeProducts(r, c, f, n);
+            writeProducts(r, c, f, n, rep, snp);
         }, py::arg("csv") = py::none(), py::arg("crd") = py::none(), py::arg("npt") = py::none(),
+           py::arg("report") = py::none(), py::arg("station_np") = py::none(),
            "Writes the products with the CLI's writers, all or nothing: csv (as -o), crd (as --crd-out: the\n"
-           "CRD with this pass's filter flags), npt (as --npt-out: the normal points, or why there are none).");
+           "CRD with this pass's filter flags), npt (as --npt-out: the normal points, or why there are none),\n"
+           "report (as --report-out: the one-page PDF), with station_np (as --station-np: the station's\n"
+           "normal points compared in it).");
 }
 
 // The runs: load_pass, run, set_search_threads, process_file and default_params.

@@ -360,7 +360,8 @@ std::string slrPassCrd(const SlrSimParams& p, const SlrSimPass& pass, int year, 
     out.reserve(out.size() + pass.epochS.size() * 48 + 16);
     for (size_t i = 0; i < pass.epochS.size(); ++i) {
         // Seconds of day (of the H4 date; the CRD convention rolls past 86400 into the next day).
-        std::snprintf(line, sizeof line, "10 %.12f %.12f std 2 %d 0 0 na\n", pass.epochS[i], pass.tofS[i],
+        // (v2: nine fields, the receive and transmit amplitudes not available)
+        std::snprintf(line, sizeof line, "10 %.12f %.12f std 2 %d 0 0 na na\n", pass.epochS[i], pass.tofS[i],
                       pass.isSignal[i] ? 2 : 1);
         out += line;
     }

@@ -259,6 +259,7 @@ struct Context {
     const PassData& pass;
     const PassRunResult& run;
     const PassReport& report;
+    const NpComparison* station;  // the station's normal points compared (null: none given)
     bool timeOfDay;          // CRD epochs: seconds of the pass day, labelled UTC
     double ocUnit;           // s per unit of the O-C axis
     std::string ocUnitName;
@@ -507,7 +508,7 @@ double drawNormalPoints(Page& pg, const Context& c, double x, double y, double w
         pg.color(kGrey);
         return pg.paragraph(x, y, "None: " + d.noneReason, w, 8.2, 4);
     }
-    const bool station = c.report.station && c.report.station->ok;
+    const bool station = c.station && c.station->ok;
     const std::vector<std::pair<std::string, double>> cols = {{"#", 0},          {"UTC", 14},       {"ranges", 62},
                                                               {"RMS (ps)", 96},  {"residual (ps)", 136},
                                                               {"return (%)", 188}, {station ? "Δ station (mm)" : "", 228}};
@@ -536,7 +537,7 @@ double drawNormalPoints(Page& pg, const Context& c, double x, double y, double w
         pg.text(x + 188, y, std::isfinite(np.returnRatePct) ? fmt("%.1f", np.returnRatePct) : "–");
         if (station) {
             double delta = NAN;
-            for (const NpDifference& row : c.report.station->rows)
+            for (const NpDifference& row : c.station->rows)
                 if (row.match == NpDifference::Match::Both && std::abs(row.ourT - np.epochS) < 0.5 * std::max(np.windowS, 1.0))
                     delta = row.deltaMm;
             pg.text(x + 228, y, std::isfinite(delta) ? fmt("%+.1f", delta) : "–");
@@ -570,11 +571,12 @@ PassReport passReportOf(const SlrSetup& setup, const PassData& pass, const PassS
     const SlrSources& src = setup.sources;
     PassReport r;
     r.settings = &settings;
-    for (const std::string* f : {&src.input, &src.cpf, &src.stations, &src.presets})
+    for (const std::string* f : {&src.input, &src.cpf, &src.stations, &src.presets, &src.stationNormalPoints})
         if (!f->empty()) r.inputs.push_back(*f);
     r.notes = std::move(notes);
-    r.command = shellCommand(slrCommandArgs(src.input, pass.hasCrd ? pass.passIndex + 1 : 0, src.cpf, src.cpfFallback,
-                                            src.stations, commandParams(setup, pass, settings.params)));
+    r.stationFile = setup.stationNormalPoints;
+    r.stationPath = src.stationNormalPoints;
+    r.command = shellCommand(slrCommandArgs(src, pass.hasCrd ? pass.passIndex + 1 : 0, commandParams(setup, pass, settings.params)));
     return r;
 }
 
@@ -601,7 +603,14 @@ bool writePassReport(const std::string& path, const PassData& pass, const PassRu
         ocSpan = hi - lo;
     }
     const bool us = ocSpan > 2e-6;
-    const Context c{pass, run, report, pass.hasCrd, us ? 1e-6 : 1e-9, us ? "µs" : "ns"};
+    // The station's normal points beside ours: the one comparison the Station NP tab shows.
+    NpComparison compared;
+    if (report.stationFile) {
+        if (run.postOk) compared = compareWithStation(pass, run.post, *report.stationFile, report.stationPath);
+        else compared.error = report.stationPath + ": no post-fit of the pass, so no normal points of ours to compare";
+    }
+    const NpComparison* stationNps = report.stationFile ? &compared : nullptr;
+    const Context c{pass, run, report, stationNps, pass.hasCrd, us ? 1e-6 : 1e-9, us ? "µs" : "ns"};
 
     // ---- heading: what, where, when, and the verdict ----
     double y = kMargin + 10;
@@ -674,9 +683,9 @@ bool writePassReport(const std::string& path, const PassData& pass, const PassRu
     pg.rule(x, y, x + w, y, kLight, 0.5);
     y += 10;
     pg.font(6.5);
-    if (report.station) {
+    if (stationNps) {
         pg.color(kInk);
-        y = pg.paragraph(x, y, "Station normal points: " + (report.station->ok ? report.station->describe() : report.station->error),
+        y = pg.paragraph(x, y, "Station normal points: " + (stationNps->ok ? stationNps->describe() : stationNps->error),
                          w, 8.2, 2);
     }
     for (const std::string& n : report.notes) {

@@ -9,6 +9,7 @@
 // hundred kB. `laserwb-cli slr --report-out` and the workbench's File > Report... both write it
 // through stagePassProducts (slr_run.hpp): the same bytes for the same run and the same
 // production date (SOURCE_DATE_EPOCH when set, else now).
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,13 +23,17 @@ struct PassReport {
     const PassSettings* settings = nullptr;  ///< the parameters the pass ran with (required)
     std::vector<std::string> inputs;         ///< the files read (pass, CPF, stations, presets), as named
     std::vector<std::string> notes;          ///< what opening the pass said (O-C origin, warnings)
-    const NpComparison* station = nullptr;   ///< the station's normal points compared, when they were
+    /// The station's normal points (SlrSetup::stationNormalPoints, named by stationPath): the
+    /// report compares them with the run's (compareWithStation) as the Station NP tab does.
+    std::shared_ptr<const CrdFile> stationFile;
+    std::string stationPath;
     std::string command;                     ///< the laserwb-cli command that reproduces the run ("" = none)
 };
 
 /// The report of a pass opened and resolved from `setup` (every front end's): its files in the
 /// order pass, prediction, stations, presets, as the sources name them; the laserwb-cli command of
-/// the run (slrCommandArgs with the pass's number and its resolved parameters); `notes`: what
+/// the run (slrCommandArgs with the pass's number and its resolved parameters); the station's
+/// normal points of the setup when given; `notes`: what
 /// opening it said (warnings first). `settings` must outlive the report.
 PassReport passReportOf(const SlrSetup& setup, const PassData& pass, const PassSettings& settings,
                         std::vector<std::string> notes);

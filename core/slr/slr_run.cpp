@@ -7,6 +7,7 @@
 #include <exception>
 
 #include "core/common/text.hpp"
+#include "core/slr/np_compare.hpp"
 #include "core/slr/pass_output.hpp"
 
 namespace lwb::core::slr {
@@ -96,7 +97,24 @@ bool setUpSlrRun(const SlrSources& sources, SlrSetup* out, SlrError* error) {
         }
     }
     s.predictions = std::move(predictions);
+    if (!setStationNormalPoints(&s, sources.stationNormalPoints, error)) return false;
     *out = std::move(s);
+    return true;
+}
+
+bool setStationNormalPoints(SlrSetup* setup, const std::string& path, SlrError* error) {
+    std::shared_ptr<const CrdFile> file;
+    if (!path.empty()) {
+        CrdFile f;
+        std::string err;
+        if (!loadStationNormalPoints(path, &f, &err)) {
+            *error = {err, false};
+            return false;
+        }
+        file = std::make_shared<const CrdFile>(std::move(f));
+    }
+    setup->sources.stationNormalPoints = path;
+    setup->stationNormalPoints = std::move(file);
     return true;
 }
 
@@ -316,7 +334,7 @@ Provenance slrProvenance(const SlrSetup& setup, bool stationFile) {
     p.parameters = slrSchema().toJson(setup.base);
     p.settings = {{"pass", s.passNumber}, {"cpf", s.cpf},           {"stations", s.stations},
                   {"preset", s.presets},  {"satellite", s.satellite}};
-    p.inputs = {s.input, s.configFile, s.cpf, s.stations, s.presets};
+    p.inputs = {s.input, s.configFile, s.cpf, s.stations, s.presets, s.stationNormalPoints};
     return p;
 }
 
@@ -326,13 +344,13 @@ std::string passName(const PassData& pass) {
     return pass.source + " pass " + std::to_string(ordinal ? ordinal : size_t(pass.passIndex) + 1);
 }
 
-std::vector<std::string> slrCommandArgs(const std::string& input, int passNumber, const std::string& cpf, bool cpfFallback,
-                                        const std::string& sinex, const SlrParams& params) {
-    std::vector<std::string> out = {"slr", input};
+std::vector<std::string> slrCommandArgs(const SlrSources& src, int passNumber, const SlrParams& params) {
+    std::vector<std::string> out = {"slr", src.input};
     if (passNumber > 0) out.insert(out.end(), {"--pass", std::to_string(passNumber)});
-    if (!cpf.empty()) out.insert(out.end(), {"--cpf", cpf});
-    if (!cpf.empty() && cpfFallback) out.push_back("--cpf-fallback");
-    if (!sinex.empty()) out.insert(out.end(), {"--stations", sinex});
+    if (!src.cpf.empty()) out.insert(out.end(), {"--cpf", src.cpf});
+    if (!src.cpf.empty() && src.cpfFallback) out.push_back("--cpf-fallback");
+    if (!src.stations.empty()) out.insert(out.end(), {"--stations", src.stations});
+    if (!src.stationNormalPoints.empty()) out.insert(out.end(), {"--station-np", src.stationNormalPoints});
     const Schema<SlrParams>& schema = slrSchema();
     const SlrParams defaults;
     for (const std::string& key : schema.changedKeys(defaults, params))
@@ -386,8 +404,7 @@ std::string pyString(const std::string& v) {
 }
 }  // namespace
 
-std::string slrPythonScript(const std::string& input, int passNumber, const std::string& cpf, const std::string& sinex,
-                            const SlrParams& params) {
+std::string slrPythonScript(const SlrSources& src, int passNumber, const SlrParams& params, bool withCpf) {
     const Schema<SlrParams>& schema = slrSchema();
     std::string dict;
     for (const std::string& key : schema.changedKeys(SlrParams{}, params))
@@ -397,17 +414,21 @@ std::string slrPythonScript(const std::string& input, int passNumber, const std:
             const bool bare = parseDouble(v, &number) && std::isfinite(number);
             dict += "    " + pyString(key) + ": " + (bare ? v : pyString(v)) + ",\n";
         }
+    const std::string& sinex = src.stations;
+    const bool cpf = withCpf && !src.cpf.empty();
     std::string s = "import laserwb\n\n";
     s += dict.empty() ? "params = {}\n" : "params = {\n" + dict + "}\n";
-    s += "p = laserwb.slr.load_pass(" + pyString(input);
+    s += "p = laserwb.slr.load_pass(" + pyString(src.input);
     if (passNumber > 0) s += ", pass_number=" + std::to_string(passNumber);
-    if (!cpf.empty()) s += ", cpf=" + pyString(cpf);
+    if (cpf) s += ", cpf=" + pyString(src.cpf);
     if (!sinex.empty()) s += ", stations=" + pyString(sinex);
     s += ", params=params)\n";
     s += "r = laserwb.slr.run(p, params=params" + (sinex.empty() ? std::string() : ", stations=" + pyString(sinex)) + ")\n";
     s += "print(r.accepted_count, 'points accepted;', r.doubt or r.post_note or 'ok')\n";
-    s += std::string("r.write(csv='screened.csv'") + (passNumber > 0 ? ", npt='pass.npt'" : "") + ")\n";
-    return s;
+    s += std::string("r.write(csv='screened.csv'") + (passNumber > 0 ? ", npt='pass.npt'" : "");
+    if (!src.stationNormalPoints.empty())
+        s += ", report='pass_report.pdf', station_np=" + pyString(src.stationNormalPoints);
+    return s + ")\n";
 }
 
 }  // namespace lwb::core::slr

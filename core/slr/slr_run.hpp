@@ -31,6 +31,9 @@ struct SlrSources {
     int passNumber = 0;          ///< 1-based; 0 = the file's first pass to screen (isPassToScreen)
     std::string cpf;             ///< CPF file or folder of CPF files; O-C from it needs `stations`
     std::string stations;        ///< SINEX station coordinates (alone: day or night per bin)
+    /// The station's own normal points of the pass (a CRD normal-point file): compared with ours
+    /// bin by bin in the pass report (np_compare.hpp; --station-np, the Station NP tab).
+    std::string stationNormalPoints;
     std::string presets;         ///< per-satellite presets file ("" = none)
     std::string satellite;       ///< look the preset up under this name instead of the pass's
     std::string configFile;      ///< parameters as JSON (what --print-config writes); "" = none
@@ -65,12 +68,18 @@ struct SlrSetup {
     /// The command's defaults with the config and the settings applied: what --print-config
     /// prints and the provenance records before a pass's own context.
     SlrParams base;
+    /// sources.stationNormalPoints as read (null: none given).
+    std::shared_ptr<const CrdFile> stationNormalPoints;
     const SinexFile* stations() const { return predictions && predictions->haveStations ? &predictions->stations : nullptr; }
 };
 
 /// Reads the presets, the station coordinates, the predictions and the config, and checks
 /// every setting against the schema (before any pass is read). False with *error.
 bool setUpSlrRun(const SlrSources& sources, SlrSetup* out, SlrError* error);
+/// Reads `path` as the station's normal points of the run (setUpSlrRun does it for
+/// sources.stationNormalPoints; the workbench when the analyst opens one): both of the setup's
+/// fields set, or cleared for "". False with *error (FILE:LINE) and the setup as it was.
+bool setStationNormalPoints(SlrSetup* setup, const std::string& path, SlrError* error);
 /// setUpSlrRun without the files: the config and the settings checked over the defaults
 /// (--print-config, and the usage checks before anything is read).
 bool resolveBaseParams(const SlrSources& sources, SlrParams* out, SlrError* error);
@@ -158,13 +167,13 @@ Provenance slrProvenance(const SlrSetup& setup, bool stationFile);
 /// "FILE pass K" (CRD) or "FILE" (O-C table): how messages name a pass.
 std::string passName(const PassData& pass);
 
-/// The laserwb-cli arguments that run pass `passNumber` (1-based; 0: none given) of `input` with
-/// `params`: every field that differs from the schema's default as --set KEY=VALUE (the value as
-/// --set reads it back exactly), the prediction (with --cpf-fallback when `cpfFallback`, as the
-/// workbench reads it) and the station file when given. Without the
-/// program's name and the outputs: the workbench's Edit ▸ Copy as command line (issue 42).
-std::vector<std::string> slrCommandArgs(const std::string& input, int passNumber, const std::string& cpf, bool cpfFallback,
-                                        const std::string& sinex, const SlrParams& params);
+/// The laserwb-cli arguments that run pass `passNumber` (1-based; 0: none given) of the sources'
+/// input with `params`: every field that differs from the schema's default as --set KEY=VALUE
+/// (the value as --set reads it back exactly), the prediction (with --cpf-fallback when the
+/// sources fall back, as the workbench reads it), the station file and the station's normal
+/// points when given. Without the program's name and the outputs: the report's command and the
+/// workbench's Edit ▸ Copy as command line (issue 42), from the one SlrSources.
+std::vector<std::string> slrCommandArgs(const SlrSources& sources, int passNumber, const SlrParams& params);
 /// The parameters a command that reruns `pass` needs to be given: `resolved` with every post-fit
 /// field the pass tells itself (its altitude, the C1 fire rate, the ILRS bin, the station's
 /// position: passNormalPointContext) put back to the default where it holds the value the pass
@@ -177,8 +186,8 @@ std::string shellCommand(const std::vector<std::string>& args);
 /// the prediction and stations, run with every field that differs from the schema's default (the
 /// value as --set reads it, a number bare, other values quoted), then writing the products to
 /// screened.csv (and, for a CRD pass, passNumber > 0, its normal points to pass.npt) in the
-/// working folder. An empty `cpf`: none.
-std::string slrPythonScript(const std::string& input, int passNumber, const std::string& cpf, const std::string& sinex,
-                            const SlrParams& params);
+/// working folder; with the station's normal points, the report (pass_report.pdf) that compares
+/// them. The sources' cpf is left out when `withCpf` is false (a prediction the pass did not use).
+std::string slrPythonScript(const SlrSources& sources, int passNumber, const SlrParams& params, bool withCpf = true);
 
 }  // namespace lwb::core::slr

@@ -11,7 +11,7 @@ _laserwb_cli() {
         words=("${COMP_WORDS[@]}"); cword=$COMP_CWORD
     fi
     local prog=${words[0]}
-    local commands="footprint trend slr simulate eval bench calib radiometry demo version help"
+    local commands="footprint trend slr crd simulate eval bench calib radiometry demo version help"
     if [[ $cword -eq 1 ]]; then
         COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
         return
@@ -22,6 +22,7 @@ _laserwb_cli() {
         eval)     [[ $cword -eq 2 ]] && { COMPREPLY=($(compgen -W "footprint" -- "$cur")); return; } ; sub=${words[2]} ;;
         bench)    [[ $cword -eq 2 ]] && { COMPREPLY=($(compgen -W "footprint slr" -- "$cur")); return; } ; sub=${words[2]} ;;
         calib)    [[ $cword -eq 2 ]] && { COMPREPLY=($(compgen -W "detector waveform pointing stats" -- "$cur")); return; } ; sub=${words[2]} ;;
+        crd)      [[ $cword -eq 2 ]] && { COMPREPLY=($(compgen -W "check" -- "$cur")); return; } ; sub=${words[2]} ;;
         radiometry) [[ $cword -eq 2 ]] && { COMPREPLY=($(compgen -W "mosaic gcp fit apply check" -- "$cur")); return; } ; sub=${words[2]} ;;
     esac
     case $prev in

@@ -6,7 +6,7 @@
 #   the header/value variants the tests use, for the CSV, JSON, image and session targets;
 # - from the shared ILRS files (not copied whole: cut to fit the fuzzers' -max_len, 4 KiB):
 #   crd:    each CRD file's first two passes, their headers and up to 8 records of each data
-#           type, then H9; and each file's first 4 KiB as it is;
+#           type, then H9; and each file's first 4 KiB as it is (crd_check gets the same);
 #   cpf:    the header and 12 position records of each CPF, then 99;
 #   sinex:  the header line, every block with its column-title comment and first 6 data lines
 #           (the FILE/COMMENT, FILE/REFERENCE and INPUT/HISTORY blocks empty), then %ENDSNX;
@@ -65,6 +65,7 @@ else
     { echo "===="; sed -n '1,3p;495,511p' "$cpf"; echo "99"; } >> "$out/slr_oc/seed-matm"
   fi
 fi
+mkdir -p "$out/crd_check" && cp "$out"/crd/* "$out/crd_check/" 2>/dev/null || true  # (the checker reads what the reader does)
 for d in "$out"/*_csv "$out"/oc_csv; do cp "$d"/* "$out/csv/" 2>/dev/null || true; done
 for d in "$out"/footprint_config "$out"/slr_config "$out"/calib_config "$out"/radiometry_config "$out"/trend_config "$out"/slr_presets "$out"/beams_json "$out"/session; do
   cp "$d"/* "$out/json/" 2>/dev/null || true

@@ -269,6 +269,28 @@ def test_one_run_oc_rows_are_the_passs(tmp_path):
 
 
 @pytest.mark.skipif(not os.path.isdir(os.path.join(SHARED, "data", "slr")), reason="no ../shared/data (real ILRS files)")
+def test_report_with_station_normal_points_is_the_clis(tmp_path):
+    """Issue 42: write(report=, station_np=) is slr --report-out with --station-np, byte for byte
+    (the station's normal points are a source of the run, read by the core's set-up), and a
+    station file without a report, or a report to standard output, is refused before anything
+    is written."""
+    d = os.path.join(SHARED, "data", "slr")
+    frd, npt = os.path.join(d, "beaconc_20070511.frd"), os.path.join(d, "beaconc_20070511.npt")
+    run = cli("slr", frd, "--pass", 1, "--station-np", npt, "--report-out", tmp_path / "cli.pdf", ok=(0, 3))
+    assert "station normal points: " in run.stderr and "in the same bins" in run.stderr, run.stderr
+    r = laserwb.slr.run(laserwb.slr.load_pass(frd, pass_number=1))
+    r.write(report=str(tmp_path / "py.pdf"), station_np=npt)
+    same_bytes(tmp_path / "cli.pdf", tmp_path / "py.pdf")
+    with pytest.raises(laserwb.ParameterError, match="station_np"):
+        r.write(csv=str(tmp_path / "x.csv"), station_np=npt)
+    with pytest.raises(laserwb.ParameterError, match="standard output"):
+        r.write(report="-")
+    with pytest.raises(laserwb.Error, match="no normal-point records"):
+        r.write(report=str(tmp_path / "y.pdf"), station_np=frd)
+    assert not (tmp_path / "x.csv").exists() and not (tmp_path / "y.pdf").exists()
+
+
+@pytest.mark.skipif(not os.path.isdir(os.path.join(SHARED, "data", "slr")), reason="no ../shared/data (real ILRS files)")
 def test_readers_read_as_the_run_does(tmp_path):
     """The module's readers go through the run's set-up (core readSlrInput, readPassSources,
     readShotFrame): a prediction the run would refuse as damaged is refused by read_cpf too,

@@ -12,6 +12,7 @@
 #include <QSlider>
 #include <QWheelEvent>
 #include <QStandardPaths>
+#include "ui/kit/i18n.hpp"
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -232,7 +233,27 @@ private slots:
     /// Issue 30: fields showed every digit (4.329739712682504, 0.1353352) and group separators
     /// (11,482,396,630.7232), clipped. They show the row's digits (at least 4 significant), the
     /// exact value in the tooltip, and leaving a field untouched keeps the exact value.
+    void fieldsShowTheirDigitsAndKeepTheExactValue_data() {
+        // The interface's locales (ui/kit/i18n: en_US, zh_CN) and the test's own: Qt 6's en_US and
+        // zh_CN write "1.148E+10", which a field showed where the CLI writes 1.148e+10 (seen in a
+        // real window: "6.726E+10 px/s" beside the summary's 6.726e+10).
+        QTest::addColumn<QString>("language");
+        QTest::newRow("test's locale") << QString();
+        QTest::newRow("en") << QString("en");
+        QTest::newRow("zh_CN") << QString("zh_CN");
+    }
     void fieldsShowTheirDigitsAndKeepTheExactValue() {
+        QFETCH(QString, language);
+        const QLocale saved;
+        if (!language.isEmpty()) installLanguage(language);
+        struct Restore {
+            QLocale l;
+            bool lang;
+            ~Restore() {
+                if (lang) installLanguage("en");
+                QLocale::setDefault(l);
+            }
+        } restore{saved, !language.isEmpty()};
         const auto* magT = slr::slrSchema().find("screen.mag_t");
         QVERIFY(magT);
         ParamSlider s(*magT);
@@ -241,7 +262,7 @@ private slots:
                                       std::pair{11482396630.7232, QString("1.148e+10")}, std::pair{60000.0, QString("60000")}}) {
             s.setValue(v);
             QCOMPARE(s.field()->cleanText(), text);
-            QVERIFY2(s.field()->toolTip().contains(QLocale().toString(v, 'g', QLocale::FloatingPointShortest)),
+            QVERIFY2(s.field()->toolTip().contains(lowerExponent(QLocale(), QLocale().toString(v, 'g', QLocale::FloatingPointShortest))),
                      qPrintable(s.field()->toolTip()));
             // The field left as shown (focus out / Enter): the value stays exact, nothing emitted.
             s.field()->interpretText();

@@ -7,6 +7,7 @@
 #include <qcustomplot.h>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QProgressDialog>
 #include <QScrollArea>
 #include <QScreen>
 #include <QSignalSpy>
@@ -21,9 +22,11 @@
 #include "test_support.hpp"
 #include "ui/shell/main_window.hpp"
 #include "ui/kit/app_undo.hpp"
+#include "ui/kit/modal_work.hpp"
 #include "ui/kit/param_slider.hpp"
 #include "ui/kit/plot_kit.hpp"
 #include "ui/slr/slr_all_passes.hpp"
+#include "ui/slr/slr_file_check.hpp"
 #include "ui/slr/slr_params_panel.hpp"
 #include "ui/slr/slr_station_nps.hpp"
 #include "ui/slr/slr_workspace.hpp"
@@ -107,6 +110,55 @@ static bool openBlitsWithPrediction(SlrWorkspace* ws, int index) {
     if (!ok) QTest::qFail(qPrintable(err), __FILE__, __LINE__);
     return ok;
 }
+
+#ifdef LWB_PYTHON
+/// Runs a script of Edit > Copy as Python as it is, in `pyDir` (made), with the build's module
+/// and the fixed production date the byte comparisons need.
+static lwbtest::CliRun runCopiedPython(const QString& script, const QString& pyDir) {
+    if (!QDir().mkpath(pyDir) || !lwbtest::writeText(pyDir + "/run.py", script.toUtf8())) return {};
+    lwbtest::RunOptions po;
+    po.cwd = pyDir;
+    po.env = {QString("PYTHONPATH=") + LWB_PYTHON_PATH, "SOURCE_DATE_EPOCH=1700000000"};
+    return lwbtest::runProgram(LWB_PYTHON, {"run.py"}, po);
+}
+#endif
+
+/// The comparison with the station's normal points is in the run's sources (core SlrSetup), not
+/// the tab's own: the window's report, `slr --station-np` of the copied command and the copied
+/// Python script write the same PDF (issue 42: the window's report carried a comparison no
+/// command reproduced).
+static void reportWithStationNormalPointsIsEveryFrontEnds(SlrWorkspace* ws, const QString& npt, const QString& dir) {
+    QString note, err;
+    const QString cmd = ws->commandLine(&note);
+    QVERIFY2(cmd.contains("--station-np " + QFileInfo(npt).absoluteFilePath()), qPrintable(cmd));
+    const QString d = dir + "/station-np-report";
+    QVERIFY(QDir().mkpath(d));
+    qputenv("SOURCE_DATE_EPOCH", "1700000000");
+    QVERIFY2(ws->writeReport(d + "/gui.pdf", &err), qPrintable(err));
+    const QString shell = QString(LWB_CLI) + cmd.mid(QString("laserwb-cli").size()) + " --report-out '" + d + "/cli.pdf'";
+    const lwbtest::CliRun r = lwbtest::runProgram("/bin/sh", {"-c", shell});
+    QVERIFY2(r.exitCode == 0, qPrintable(shell + "\n" + r.err));
+    // The CLI's summary says the comparison the tab shows.
+    QVERIFY2(r.err.contains("station normal points: ") && r.err.contains("11 in the same bins"), qPrintable(r.err));
+    const QByteArray gui = lwbtest::readAll(d + "/gui.pdf");
+    QVERIFY(gui.startsWith("%PDF-"));
+    QCOMPARE(lwbtest::readAll(d + "/cli.pdf"), gui);
+    const lwbtest::CliRun text = lwbtest::runProgram("pdftotext", {"-layout", d + "/gui.pdf", "-"});
+    if (text.exitCode == 0) {
+        QVERIFY2(text.out.contains("Station normal points:") && text.out.contains("11 in the same bins") &&
+                     text.out.contains("station (mm)") && text.out.contains("--station-np"),
+                 qPrintable(text.out));
+    }
+#ifdef LWB_PYTHON
+    const QString script = ws->pythonScript(&note);
+    QVERIFY2(script.contains("report='pass_report.pdf', station_np="), qPrintable(script));
+    const QString pyDir = d + "/python";
+    const lwbtest::CliRun pr = runCopiedPython(script, pyDir);
+    QVERIFY2(pr.exitCode == 0, qPrintable(script + "\n" + pr.err));
+    QCOMPARE(lwbtest::readAll(pyDir + "/pass_report.pdf"), gui);
+#endif
+}
+
 
 class TestSlrWorkspace : public QObject {
     Q_OBJECT
@@ -534,6 +586,43 @@ private slots:
                 ++cells;
             }
         QCOMPARE(cells, static_cast<int>(signal.size()));  // each signal pixel drawn once, unpooled
+        // What is drawn (helper's look at the user guide's picture: the pooled cells showed through
+        // the band's empty cells once those became transparent): a band cell that is empty over
+        // a pooled cell that is not is painted the plot's empty colour, not the pooled cell's.
+        QCustomPlot* plot = ws->imagePlot();
+        plot->resize(900, 700);
+        const QCPRange keys = d->keyRange(), values = d->valueRange();
+        plot->xAxis->setRange(keys);
+        plot->yAxis->setRange(values);
+        for (int g = 0; g < plot->graphCount(); ++g) plot->graph(g)->setVisible(false);  // (the marks over the track)
+        plot->replot();
+        const QImage img = plot->toPixmap().toImage();
+        QCPColorMap* pooled = nullptr;
+        for (int i = 0; i < plot->plottableCount(); ++i)
+            if (auto* m = qobject_cast<QCPColorMap*>(plot->plottable(i)); m && m != band && m->visible()) pooled = m;
+        QVERIFY(pooled);
+        const QColor empty = emptyCellColor(plot);
+        int checked = 0;
+        for (int x = 0; x < d->keySize() && checked < 50; x += 3)
+            for (int y = 0; y < d->valueSize() && checked < 50; ++y) {
+                if (d->cell(x, y) != 0) continue;
+                double key = 0, value = 0;
+                d->cellToCoord(x, y, &key, &value);
+                if (pooled->data()->data(key, value) == 0) continue;
+                const QPoint px(int(plot->xAxis->coordToPixel(key)), int(plot->yAxis->coordToPixel(value)));
+                // (inside the axes, clear of the axis lines and their inward ticks)
+                if (!img.rect().contains(px) || !plot->axisRect()->rect().adjusted(8, 8, -8, -8).contains(px)) continue;
+                // (the marks drawn over the track may cover a cell next to it: those are not the band's)
+                bool nearSignal = false;
+                for (int dx = -2; dx <= 2; ++dx)
+                    for (int dy = -2; dy <= 2; ++dy)
+                        if (x + dx >= 0 && x + dx < d->keySize() && y + dy >= 0 && y + dy < d->valueSize() && d->cell(x + dx, y + dy) != 0)
+                            nearSignal = true;
+                if (nearSignal) continue;
+                QCOMPARE(img.pixelColor(px).rgb(), empty.rgb());
+                ++checked;
+            }
+        QVERIFY2(checked > 0, "no empty band cell over a pooled cell to look at");
     }
 
     // GUI = CLI (issue 28): the same pass with the same (default) settings gives byte-identical
@@ -790,12 +879,7 @@ private slots:
         // a note): the script leaves the CPF out, where load_pass would refuse it, and says so.
         QVERIFY2(pyNote.contains("prediction") && !script.contains("cpf="), qPrintable(pyNote + "\n" + script));
         const QString pyDir = d + "/python";
-        QVERIFY(QDir().mkpath(pyDir));
-        QVERIFY(lwbtest::writeText(pyDir + "/run.py", script.toUtf8()));
-        lwbtest::RunOptions po;
-        po.cwd = pyDir;
-        po.env = {QString("PYTHONPATH=") + LWB_PYTHON_PATH, "SOURCE_DATE_EPOCH=1700000000"};
-        const lwbtest::CliRun pr = lwbtest::runProgram(LWB_PYTHON, {"run.py"}, po);
+        const lwbtest::CliRun pr = runCopiedPython(script, pyDir);
         QVERIFY2(pr.exitCode == 0, qPrintable(script + "\n" + pr.err));
         QCOMPARE(lwbtest::readAll(pyDir + "/screened.csv"), lwbtest::readAll(d + "/gui.csv"));
         QCOMPARE(lwbtest::readAll(pyDir + "/pass.npt"), lwbtest::readAll(d + "/gui.npt"));
@@ -812,6 +896,90 @@ private slots:
 
     /// Issue 42: after a change that leaves nothing kept, the residual histogram kept the last
     /// run's axes with no bars. Its axes are reset and it says why.
+    /// Issue 42, item 3: a 10^6-point pass showed empty axes for 1.5-3 s, no progress, no Cancel
+    /// (the open read the file on the GUI thread). It reads on a worker: the window goes on
+    /// painting (a timer fires during the open; before, not once), a progress dialog with Cancel
+    /// comes after ModalProgress::kShowAfterMs, and Cancel leaves the pass shown before, with no
+    /// error (the analyst's choice).
+    void largePassOpensWithProgressAndCancel() {
+        const QString big = m_dir.path() + "/big.frd";
+        const lwbtest::CliRun sim = lwbtest::runCli({"simulate", "slr", "--kind", "khz", "--points", "1000000", "--seed", "8", "-q", big});
+        QVERIFY2(sim.exitCode == 0, qPrintable(sim.err));
+        MainWindow w;
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
+        SlrController* c = ws->controller();
+        ws->openDemo();
+        QVERIFY(c->waitIdle(60000) && c->hasRun());
+        const size_t demoPoints = c->pass().t.size();
+        // Open it whole: events go on while it is read.
+        int ticks = 0;
+        QTimer tick;
+        connect(&tick, &QTimer::timeout, [&ticks] { ++ticks; });
+        tick.start(20);
+        const int dialogsBefore = ModalProgress::dialogsShown();
+        QElapsedTimer clock;
+        clock.start();
+        QString err;
+        QVERIFY2(ws->openPath(big, -1, &err), qPrintable(err));
+        const qint64 ms = clock.elapsed();
+        tick.stop();
+        QCOMPARE(c->pass().t.size(), size_t(1000000));
+        QVERIFY2(ticks >= 3, qPrintable(QString("%1 timer events in an open of %2 ms").arg(ticks).arg(ms)));
+        if (ms > ModalProgress::kShowAfterMs + 300)
+            QVERIFY2(ModalProgress::dialogsShown() > dialogsBefore, qPrintable(QString("open of %1 ms, no dialog").arg(ms)));
+        QVERIFY(c->waitIdle(120000) && c->hasRun());
+        // Opened again and cancelled as soon as its dialog shows: the pass shown stays, no error.
+        ws->openDemo();
+        QVERIFY(c->waitIdle(60000) && c->hasRun());
+        QCOMPARE(c->pass().t.size(), demoPoints);
+        bool sawDialog = false;
+        QTimer cancel;
+        connect(&cancel, &QTimer::timeout, [&] {
+            for (QWidget* top : QApplication::topLevelWidgets())
+                for (auto* d : top->findChildren<QProgressDialog*>("modalProgress"))
+                    if (d->isVisible() && !d->wasCanceled()) {
+                        sawDialog = true;
+                        QVERIFY(d->windowModality() == Qt::WindowModal);
+                        d->cancel();
+                    }
+        });
+        cancel.start(20);
+        const OpenOutcome o = ws->openInputs({{ws->key(), {big}}}, -1);
+        cancel.stop();
+        if (!sawDialog) QSKIP("the open ended before its progress dialog showed (a fast machine)");
+        QVERIFY(!o.opened && !o.replaced);
+        QVERIFY2(o.problems.isEmpty(), qPrintable(o.problems.join('\n')));
+        QCOMPARE(c->pass().t.size(), demoPoints);
+        QVERIFY(c->path().isEmpty());  // (the demo has no file)
+    }
+
+    /// Issue 43, item 5: the workbench lists the open file's problems as `laserwb-cli crd check`
+    /// does (one checker, core checkCrd): the same lines, the table a row per problem; with no CRD
+    /// file open there is nothing to check.
+    void fileCheckListsWhatTheCliLists() {
+        const QString blits = lwbtest::sharedPath("slr/blits_201206.frd");
+        if (!QFile::exists(blits)) QSKIP("shared data absent");
+        MainWindow w;
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
+        ws->openDemo();
+        QVERIFY(!ws->checkFile());  // (the demo is simulated: no file; a message says so)
+        QString err;
+        QVERIFY2(ws->openPath(blits, 2, &err), qPrintable(err));
+        SlrFileCheckDialog* d = ws->checkFile();
+        QVERIFY(d);
+        const lwbtest::CliRun cli = lwbtest::runCli({"crd", "check", blits});
+        QVERIFY2(cli.exitCode == 3, qPrintable(cli.err));  // (warnings: the BLITS file has some, docs/crd-check.md)
+        QCOMPARE(d->cliText(), cli.out);
+        const int lines = int(cli.out.count('\n'));
+        QCOMPARE(d->table()->rowCount(), lines - 1);  // (the last line is the summary)
+        QVERIFY(d->summaryLabel()->text().contains("warning"));
+        // The File menu has it.
+        bool inMenu = false;
+        for (QAction* a : w.findChildren<QAction*>("actionCheckCrd")) inMenu = inMenu || a->isEnabled();
+        QVERIFY(inMenu);
+        d->close();
+    }
+
     void histogramSaysWhenNothingIsKept() {
         SlrWorkspace ws;
         showWithSparsePass(&ws);
@@ -929,6 +1097,8 @@ private slots:
         QVERIFY2(std::fabs(cmp.meanAbsMm) < 2.0, cmp.describe().c_str());  // (test_slr_hard: 0.75 mm)
         QCOMPARE(panel->table()->rowCount(), 13);
         QVERIFY(panel->summaryLabel()->text().contains("11 in the same bins"));
+        reportWithStationNormalPointsIsEveryFrontEnds(ws, npt, m_dir.path());
+        if (QTest::currentTestFailed()) return;
         // Drawn over ours: every station point of the pass on the O-C plot, at its epoch.
         auto stationGraph = [ws]() -> QCPGraph* {
             for (int g = 0; g < ws->ocPlot()->graphCount(); ++g)

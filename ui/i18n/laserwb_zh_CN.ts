@@ -3519,6 +3519,46 @@
 <context>
     <name>lwb::ui::SlrWorkspace</name>
     <message>
+        <source>CRD file check</source>
+        <translation>CRD 文件检查</translation>
+    </message>
+    <message>
+        <source>Open a CRD file first: the pass shown is not from one.</source>
+        <translation>请先打开 CRD 文件：当前显示的过境并非来自 CRD 文件。</translation>
+    </message>
+    <message>
+        <source>Checking %1…</source>
+        <translation>正在检查 %1…</translation>
+    </message>
+    <message>
+        <source>Check the CRD file…</source>
+        <translation>检查 CRD 文件…</translation>
+    </message>
+    <message>
+        <source>Every record of the open CRD file against the CRD format, as laserwb-cli crd check lists them</source>
+        <translation>按 CRD 格式检查已打开 CRD 文件的每条记录，与 laserwb-cli crd check 列出的结果相同</translation>
+    </message>
+    <message>
+        <source>Opening %1…</source>
+        <translation>正在打开 %1…</translation>
+    </message>
+    <message>
+        <source>%1: opening cancelled; the pass shown before stays</source>
+        <translation>%1：已取消打开；仍显示之前的过境</translation>
+    </message>
+    <message>
+        <source>Opening %1 cancelled</source>
+        <translation>已取消打开 %1</translation>
+    </message>
+    <message>
+        <source>Opening pass %1…</source>
+        <translation>正在打开过境 %1…</translation>
+    </message>
+    <message>
+        <source>Opening pass %1 cancelled</source>
+        <translation>已取消打开过境 %1</translation>
+    </message>
+    <message>
         <source>Open CRD / O-C CSV…</source>
         <translation>打开 CRD / O-C CSV…</translation>
     </message>
@@ -5693,6 +5733,76 @@
     <message>
         <source>gcp</source>
         <translation>几何校正（控制点）</translation>
+    </message>
+</context>
+<context>
+    <name>lwb::ui::ModalProgress</name>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Working</source>
+        <translation>处理中</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>正在取消…</translation>
+    </message>
+</context>
+<context>
+    <name>lwb::ui::SlrFileCheckDialog</name>
+    <message>
+        <source>CRD file check</source>
+        <translation>CRD 文件检查</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>行</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>严重程度</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>记录</translation>
+    </message>
+    <message>
+        <source>Rule</source>
+        <translation>规则</translation>
+    </message>
+    <message>
+        <source>Reason</source>
+        <translation>原因</translation>
+    </message>
+    <message>
+        <source>The rule of the CRD specification it breaks (docs/crd-check.md)</source>
+        <translation>所违反的 CRD 规范规则（docs/crd-check.md）</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>文件</translation>
+    </message>
+    <message numerus="yes">
+        <source> (%n like it)</source>
+        <translation><numerusform>（另有 %n 处同类）</numerusform></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Copy as text</source>
+        <translation>复制为文本</translation>
+    </message>
+    <message>
+        <source>The list as laserwb-cli crd check prints it, a line per problem</source>
+        <translation>按 laserwb-cli crd check 的输出格式复制列表，每个问题一行</translation>
     </message>
 </context>
 </TS>

@@ -59,6 +59,12 @@ QString installLanguage(const QString& choice) {
 
 QString currentLanguage() { return g_language; }
 
+QString lowerExponent(const QLocale& locale, QString text) {
+    const QString e = locale.exponential();
+    if (!e.isEmpty() && e != QLatin1String("e")) text.replace(e, QStringLiteral("e"));
+    return text;
+}
+
 QString schemaText(const std::string& text) {
     if (text.empty()) return QString();
     return QCoreApplication::translate("schema", text.c_str());

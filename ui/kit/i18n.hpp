@@ -4,6 +4,7 @@
 // messages and every file written stay English.
 #include <string>
 
+#include <QLocale>
 #include <QString>
 #include <QStringList>
 
@@ -20,6 +21,9 @@ QString resolveLanguage(const QString& choice);
 QString installLanguage(const QString& choice);
 /// The language installLanguage put in effect ("en" before any call).
 QString currentLanguage();
+/// A number's text as `locale` wrote it with the exponent as the CLI and the files write it
+/// ("1.148e+10"): Qt 6's en_US and zh_CN write "1.148E+10" whatever the format asked.
+QString lowerExponent(const QLocale& locale, QString text);
 /// The settings key of the language choice ("" = the system's).
 inline constexpr const char* kLanguageSetting = "view/language";
 

@@ -108,7 +108,7 @@ public:
         // Whole numbers as such (60000, not 6e+04); others with the row's digits, at least 4
         // significant ones (0.1353, 4.33, 1.148e+10, 0.03945).
         if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 1e6) return locale().toString(qlonglong(v));
-        return locale().toString(v, 'g', std::max(4, m_info.decimals));
+        return lowerExponent(locale(), locale().toString(v, 'g', std::max(4, m_info.decimals)));
     }
     double valueFromText(const QString& text) const override {
         // The text as shown (rounded) stands for the exact value: leaving the field must not
@@ -309,7 +309,7 @@ void ParamSlider::setToolTipText(const QString& tip) {
 void ParamSlider::showExactValue() {
     const double v = m_field->value();
     m_field->setToolTip(m_tip + (m_tip.isEmpty() ? "" : "<br>") +
-                        tr("Value: %1").arg(QLocale().toString(v, 'g', QLocale::FloatingPointShortest)));
+                        tr("Value: %1").arg(lowerExponent(QLocale(), QLocale().toString(v, 'g', QLocale::FloatingPointShortest))));
 }
 
 int ParamSlider::toSlider(double v) const {

@@ -1,4 +1,6 @@
 #include "ui/kit/plot_kit.hpp"
+
+#include <QLocale>
 #include "ui/kit/save_path.hpp"
 
 #include <QApplication>
@@ -458,6 +460,10 @@ PlotKit* installPlotKit(QCustomPlot* plot, const PlotKitOptions& options) {
 PlotKit::PlotKit(QCustomPlot* plot, const PlotKitOptions& options) : QObject(plot), m_plot(plot), m_options(options) {
     plot->installEventFilter(this);
     plot->setFocusPolicy(Qt::ClickFocus);
+    // Tick labels as the CLI and the files write numbers ("1e+04", "0.5", no grouping): Qt 6's
+    // en_US and zh_CN locales write an upper-case exponent ("1E+04", seen on the calibration's
+    // convergence axes), which QCustomPlot's powers of ten ("eb") do not recognise.
+    plot->setLocale(QLocale::c());
     plot->setContextMenuPolicy(Qt::PreventContextMenu);  // the kit's own menu, on a right click
     // No tooltip over the whole plot (it would cover the data); the gestures are in the
     // right-click menu, Help ▸ Keyboard shortcuts and the user guide.
@@ -694,6 +700,12 @@ void PlotKit::fitTicksTo(const QSize& layout) {
     fitTickCounts();
     m_plot->setViewport(shown);
     m_laidOut = was;
+}
+
+QColor emptyCellColor(const QCustomPlot* plot) {
+    const QCPAxisRect* r = plot ? plot->axisRect() : nullptr;
+    if (r && r->backgroundBrush().style() != Qt::NoBrush) return r->backgroundBrush().color();
+    return theme().background;
 }
 
 void PlotKit::applyTheme() {

@@ -18,6 +18,7 @@
 // addImageMap (an image plot with its colour bar), gradientFor (a colour map as a gradient),
 // linkXRange (plots following a master's x range) and setUtcTimeAxis (hh:mm:ss ticks in UTC with
 // the date in the axis title, or seconds of day).
+#include <QColor>
 #include <QDate>
 #include <QObject>
 #include <QPair>
@@ -115,6 +116,10 @@ QCustomPlot* newPlot(QWidget* parent, const QString& title, const QString& xLabe
 void legendBelow(QCustomPlot* plot, int columns);
 /// Lays a legendBelow legend out for the plot's width; true when its layout changed.
 bool fitLegendBelow(QCustomPlot* plot);
+/// The colour an empty image cell shows in the current theme: the axis rect's background where
+/// it has one (an image plot), else the plot's. A colour map drawn over another (the SLR
+/// image's unpooled track band) paints its empty cells with it, opaque, to hide the one below.
+QColor emptyCellColor(const QCustomPlot* plot);
 
 /// An image plot: a colour map on the main axes and its colour bar on the right with `label`.
 /// yDown: row 0 on top (image pixels). The axis rect's background shows where there is no data.

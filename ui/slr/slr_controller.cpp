@@ -118,36 +118,64 @@ void SlrController::resetPassErrors() {
         if (!s.problem.empty()) m_passErrors[s.index] = QString::fromStdString(s.problem);
 }
 
+SlrOpening SlrController::readForOpen(const QString& path, int passIndex, const PassInputParams& input,
+                                      const SlrParams& params, const core::Feedback* fb) {
+    SlrOpening o;
+    o.path = path;
+    o.passIndex = passIndex;
+    o.input = input;
+    if (!setUp(path, input, params, &o.setup, &o.error)) return o;
+    o.setup.sources.passNumber = passIndex + 1;  // (0: the file's first pass to screen, core isPassToScreen)
+    o.opened = openPass(o.setup, fb);
+    if (!o.opened.ok && !o.opened.crd) {  // the file (or an O-C table) cannot be read at all
+        o.error = QString::fromStdString(o.opened.error.message);
+        return o;
+    }
+    o.read = true;
+    return o;
+}
+
 bool SlrController::open(const QString& path, int passIndex, const PassInputParams& input, QString* error) {
-    SlrSetup setup;
-    if (!setUp(path, input, m_params, &setup, error)) return false;
-    setup.sources.passNumber = passIndex + 1;  // (0: the file's first pass to screen, core isPassToScreen)
-    OpenedPass o = openPass(setup);
-    if (!o.ok && !o.crd) {  // the file (or an O-C table) cannot be read at all: the previous one stays
-        *error = QString::fromStdString(o.error.message);
+    return adoptOpening(readForOpen(path, passIndex, input, m_params, nullptr), error);
+}
+
+bool SlrController::adoptOpening(SlrOpening o, QString* error) {
+    if (!o.read) {  // the previous file stays
+        if (error) *error = o.error;
         return false;
     }
-    m_setup = std::move(setup);
-    m_input = input;
-    m_path = path;
-    m_crd = o.crd;
-    m_passes = o.passes;
+    keepStationNormalPoints(&o.setup);
+    m_setup = std::move(o.setup);
+    m_input = o.input;
+    m_path = o.path;
+    m_crd = o.opened.crd;
+    m_passes = o.opened.passes;
     resetPassErrors();
     if (!m_crd) m_passErrors.clear();
     // The block opened (the file's first pass to screen unless one was asked for); a block that
     // is not a pass, or cannot be used, leaves no pass open and its reason in place.
-    m_selected = o.ok ? o.pass->passIndex : passIndex >= 0 ? passIndex : 0;
-    showOpened(std::move(o), nullptr);
+    m_selected = o.opened.ok ? o.opened.pass->passIndex : o.passIndex >= 0 ? o.passIndex : 0;
+    showOpened(std::move(o.opened), nullptr);
     return true;
 }
 
 bool SlrController::selectPass(int index, QString* error) {
-    if (!m_crd) {
+    const auto read = passReader(index);
+    if (!read) {
         if (error) *error = tr("no CRD file is open");
         return false;
     }
+    return showSelectedPass(index, read(nullptr), error);
+}
+
+std::function<OpenedPass(const core::Feedback*)> SlrController::passReader(int index) const {
+    if (!m_crd) return {};
+    return [setup = m_setup, crd = m_crd, index](const core::Feedback* fb) { return openPassOf(setup, crd, index, fb); };
+}
+
+bool SlrController::showSelectedPass(int index, OpenedPass o, QString* error) {
     m_selected = index;
-    return loadSelected(error);
+    return showOpened(std::move(o), error);
 }
 
 bool SlrController::setSources(const QString& cpfPath, const QString& sinexPath, QString* error) {
@@ -156,6 +184,7 @@ bool SlrController::setSources(const QString& cpfPath, const QString& sinexPath,
     in.sinexPath = sinexPath.toStdString();
     SlrSetup setup;
     if (!setUp(m_path, in, m_params, &setup, error)) return false;
+    keepStationNormalPoints(&setup);
     m_input = in;
     m_setup = std::move(setup);
     if (m_crd) {
@@ -164,6 +193,21 @@ bool SlrController::setSources(const QString& cpfPath, const QString& sinexPath,
         loadSelected(nullptr);
     }
     return true;
+}
+
+bool SlrController::setStationNormalPoints(const QString& path, QString* error) {
+    SlrError e;
+    const std::string p = path.isEmpty() ? std::string() : QFileInfo(path).absoluteFilePath().toStdString();
+    if (!core::slr::setStationNormalPoints(&m_setup, p, &e)) {
+        if (error) *error = QString::fromStdString(e.message);
+        return false;
+    }
+    return true;
+}
+
+void SlrController::keepStationNormalPoints(SlrSetup* setup) const {
+    setup->sources.stationNormalPoints = m_setup.sources.stationNormalPoints;
+    setup->stationNormalPoints = m_setup.stationNormalPoints;
 }
 
 void SlrController::notePassError(int index, const QString& why) {
@@ -389,15 +433,14 @@ bool SlrController::exportNormalPoints(const QString& path, QString* error) cons
     return exportProducts(paths, error);
 }
 
-bool SlrController::exportReport(const QString& path, const NpComparison* station, QString* error) const {
+bool SlrController::exportReport(const QString& path, QString* error) const {
     // What opening the pass said, as the CLI gathers it, and what the command cannot carry.
     std::vector<std::string> notes = m_warnings;
     notes.insert(notes.end(), m_notes.begin(), m_notes.end());
     long long edits = 0;
     for (int8_t f : m_forced) edits += f != 0;
     if (edits) notes.push_back(std::to_string(edits) + " point(s) forced in or out by hand in the workbench (not in the command below)");
-    PassReport report = passReportOf(m_setup, m_pass, m_settings, notes);
-    report.station = station;
+    const PassReport report = passReportOf(m_setup, m_pass, m_settings, notes);
     PassProductPaths paths;
     paths.report = path.toStdString();
     paths.reportOf = &report;

@@ -10,6 +10,7 @@
 #include <QObject>
 #include <QSet>
 #include <QString>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -30,6 +31,17 @@ namespace lwb::ui {
 struct SlrRun : core::slr::PassRunResult {
     quint64 generation = 0;
     double latencyMs = 0;                ///< parameter change → result delivered
+};
+
+/// A file read for opening, not yet shown (SlrController::readForOpen; any thread).
+struct SlrOpening {
+    bool read = false;            ///< the file (and its CPF / SINEX) could be read; else `error`
+    QString error;
+    QString path;
+    int passIndex = -1;           ///< asked for (-1: the file's first pass to screen)
+    core::slr::PassInputParams input;
+    core::slr::SlrSetup setup;
+    core::slr::OpenedPass opened;
 };
 
 class SlrController : public QObject {
@@ -64,11 +76,27 @@ public:
     /// leaves no pass open and its reason in passProblem(), the list stays. False (the previous
     /// file stays) only when the file or the CPF/SINEX cannot be read at all.
     bool open(const QString& path, int passIndex, const core::slr::PassInputParams& input, QString* error);
+    /// open() in two halves, so that the reading can run on a worker with progress and Cancel
+    /// (the workspace's ModalProgress; issue 42): readForOpen touches nothing of the controller
+    /// (`params`: the panel's, whose oc.* rows make the O-C), adoptOpening shows what it read on
+    /// the GUI thread, with open()'s result.
+    static SlrOpening readForOpen(const QString& path, int passIndex, const core::slr::PassInputParams& input,
+                                  const core::slr::SlrParams& params, const core::Feedback* fb);
+    bool adoptOpening(SlrOpening o, QString* error);
     /// Opens pass `index` of the open CRD file; false with its reason (also in passProblem()).
     bool selectPass(int index, QString* error);
+    /// selectPass() in two halves as open(): the reading of pass `index` (any thread; the file
+    /// and sources are shared read-only), then showing it. No file open: an empty function.
+    std::function<core::slr::OpenedPass(const core::Feedback*)> passReader(int index) const;
+    bool showSelectedPass(int index, core::slr::OpenedPass o, QString* error);
     /// New CPF / SINEX paths ("" clears them): read again, the current pass reopened. A CPF that
     /// does not fit a pass leaves it on its own TOF trend with PassData::ocNote saying why.
     bool setSources(const QString& cpfPath, const QString& sinexPath, QString* error);
+    /// The station's normal points of the run (core setStationNormalPoints on its set-up; ""
+    /// clears them): what the Station NP tab shows, and what the report compares and the copied
+    /// command names (--station-np). Kept when another file or prediction is opened. False with
+    /// *error (FILE:LINE), the ones in use kept.
+    bool setStationNormalPoints(const QString& path, QString* error);
     /// Why the selected pass could not be opened ("" when it is open).
     const QString& passProblem() const { return m_passProblem; }
     int selectedPass() const { return m_selected; }
@@ -132,8 +160,8 @@ public:
     /// are none; refused when neither the bin length nor the altitude is known.
     bool exportNormalPoints(const QString& path, QString* error) const;
     /// The pass's one-page PDF report (core pass_report.hpp, as slr --report-out writes it), with
-    /// the station comparison when one is given.
-    bool exportReport(const QString& path, const core::slr::NpComparison* station, QString* error) const;
+    /// the station comparison when the run has the station's normal points.
+    bool exportReport(const QString& path, QString* error) const;
 
     bool waitIdle(int timeoutMs);
 
@@ -150,6 +178,8 @@ private:
     void passLoaded();
     void passOpened();
     void resetPassErrors();
+    /// A new set-up keeps the station's normal points of the one it replaces.
+    void keepStationNormalPoints(core::slr::SlrSetup* setup) const;
     bool loadSelected(QString* error);
     bool showOpened(core::slr::OpenedPass o, QString* error);
     /// Every export: the core's products writer (stagePassProducts), as the CLI writes them.

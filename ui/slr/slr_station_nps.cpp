@@ -97,20 +97,16 @@ SlrStationNpPanel::SlrStationNpPanel(QWidget* parent) : QWidget(parent) {
     clear();
 }
 
-bool SlrStationNpPanel::load(const QString& path, QString* error) {
-    // The core's reader and check (loadStationNormalPoints), as every front end would read it.
-    CrdFile file;
-    std::string err;
-    if (!loadStationNormalPoints(path.toStdString(), &file, &err)) {
-        *error = QString::fromStdString(err);
-        return false;
+void SlrStationNpPanel::show(std::shared_ptr<const CrdFile> file, const QString& path) {
+    if (!file) {
+        clear();
+        return;
     }
-    m_file = std::make_shared<const CrdFile>(std::move(file));
+    m_file = std::move(file);
     m_path = path;
     m_fileLabel->setFullText(QFileInfo(path).fileName());
     m_fileLabel->setPlainToolTip(path);
     m_clear->setEnabled(true);
-    return true;
 }
 
 void SlrStationNpPanel::clear() {

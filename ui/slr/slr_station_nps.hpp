@@ -23,9 +23,9 @@ class SlrStationNpPanel : public QWidget {
 public:
     explicit SlrStationNpPanel(QWidget* parent = nullptr);
 
-    /// Reads a CRD normal-point file (any CRD file with type-11 records). False with *error
-    /// ("FILE:LINE: ..."), the file in use kept.
-    bool load(const QString& path, QString* error);
+    /// Shows the station's normal points of the run (read by the core into the run's set-up:
+    /// SlrController::setStationNormalPoints), named `path`; null clears.
+    void show(std::shared_ptr<const core::slr::CrdFile> file, const QString& path);
     void clear();
     bool hasFile() const { return static_cast<bool>(m_file); }
     QString path() const { return m_path; }

@@ -30,12 +30,14 @@
 
 #include "core/sim/slr_sim.hpp"
 #include "ui/kit/elided_label.hpp"
+#include "ui/kit/modal_work.hpp"
 #include "ui/kit/save_path.hpp"
 #include "ui/kit/app_undo.hpp"
 #include "ui/kit/params_command.hpp"
 #include "ui/kit/param_slider.hpp"
 #include "ui/kit/plot_kit.hpp"
 #include "ui/slr/slr_all_passes.hpp"
+#include "ui/slr/slr_file_check.hpp"
 #include "ui/slr/slr_station_nps.hpp"
 #include "ui/kit/session_json.hpp"
 #include "ui/slr/slr_params_panel.hpp"
@@ -377,7 +379,7 @@ QWidget* SlrWorkspace::buildPlotArea() {
     connect(m_passCombo, &QComboBox::activated, this, [this](int i) {
         if (m_loading || !m_controller->crd()) return;
         // (choosing a pass is a view change, not unsaved work: issue 42)
-        m_controller->selectPass(m_passCombo->itemData(i).toInt(), nullptr);  // a failure is shown in place
+        switchToPass(m_passCombo->itemData(i).toInt());  // a failure is shown in place
     });
     connect(all, &QPushButton::clicked, this, [this] {
         if (!screenAllPasses()) QMessageBox::information(this, tr("Screen all passes"), tr("Open a CRD file first."));
@@ -393,6 +395,7 @@ QWidget* SlrWorkspace::buildPlotArea() {
         if (!setStationNormalPoints(path, &err)) QMessageBox::warning(this, tr("Cannot use the file"), err);
     });
     connect(m_stationNps, &SlrStationNpPanel::changed, this, [this] {
+        if (!m_stationNps->hasFile()) m_controller->setStationNormalPoints(QString(), nullptr);  // (cleared in the tab)
         if (m_controller->hasRun()) showRun(m_controller->run());
         emit modified();
     });
@@ -598,21 +601,78 @@ SlrAllPassesDialog* SlrWorkspace::screenAllPasses() {
     m_all = new SlrAllPassesDialog(m_controller, m_controller->presetFile(), this);
     m_all->setAttribute(Qt::WA_DeleteOnClose);
     connect(m_all, &SlrAllPassesDialog::openPass, this, [this](int index) {
-        m_controller->selectPass(index, nullptr);  // (a view change: issue 42)
+        switchToPass(index);  // (a view change: issue 42)
     });
     m_all->show();
     return m_all;
+}
+
+SlrFileCheckDialog* SlrWorkspace::checkFile() {
+    if (m_path.isEmpty() || !m_controller->crd()) {
+        emit failed(tr("CRD file check"), tr("Open a CRD file first: the pass shown is not from one."));
+        return nullptr;
+    }
+    const std::string path = m_path.toStdString();
+    bool cancelled = false;
+    const core::slr::CrdCheckResult r = runModal<core::slr::CrdCheckResult>(
+        this, tr("Checking %1…").arg(QFileInfo(m_path).fileName()),
+        [path](const core::Feedback* fb) { return core::slr::checkCrd(path, {}, fb); }, &cancelled);
+    if (cancelled) return nullptr;
+    if (!r.ok) {
+        emit failed(tr("CRD file check"), QString::fromStdString(r.error));
+        return nullptr;
+    }
+    auto* d = new SlrFileCheckDialog(r, m_path, this);
+    d->setAttribute(Qt::WA_DeleteOnClose);
+    d->show();
+    emit status(QString::fromStdString(core::slr::crdCheckSummary(r, path)));
+    return d;
+}
+
+QList<QAction*> SlrWorkspace::fileOpenActions() {
+    auto* a = new QAction(tr("Check the CRD file…"), this);
+    a->setObjectName("actionCheckCrd");
+    a->setToolTip(tr("Every record of the open CRD file against the CRD format, as laserwb-cli crd check lists them"));
+    connect(a, &QAction::triggered, this, [this] { checkFile(); });
+    return {a};
 }
 
 bool SlrWorkspace::openPath(const QString& path, int passIndex, QString* error) {
     PassInputParams in = m_controller->inputParams();
     in.cpfPath = m_cpfPath.toStdString();
     in.sinexPath = m_snxPath.toStdString();
-    if (!m_controller->open(path, passIndex, in, error)) return false;
+    // Read on a worker with progress and Cancel (a 10^6-point pass takes seconds: issue 42);
+    // the window keeps painting and takes no input meanwhile.
+    const SlrParams params = m_controller->params();
+    bool cancelled = false;
+    SlrOpening o = runModal<SlrOpening>(
+        this, tr("Opening %1…").arg(QFileInfo(path).fileName()),
+        [path, passIndex, in, params](const core::Feedback* fb) { return SlrController::readForOpen(path, passIndex, in, params, fb); },
+        &cancelled);
+    m_openCancelled = cancelled;
+    if (cancelled) {
+        if (error) *error = tr("%1: opening cancelled; the pass shown before stays").arg(path);
+        emit status(tr("Opening %1 cancelled").arg(QFileInfo(path).fileName()));
+        return false;
+    }
+    if (!m_controller->adoptOpening(std::move(o), error)) return false;
     m_path = path;
     fillPassList();
     emit modified();
     return true;
+}
+
+bool SlrWorkspace::switchToPass(int index) {
+    const auto read = m_controller->passReader(index);
+    if (!read) return false;
+    bool cancelled = false;
+    OpenedPass o = runModal<OpenedPass>(this, tr("Opening pass %1…").arg(index + 1), read, &cancelled);
+    if (cancelled) {  // the pass shown stays, and the list says so
+        fillPassList();
+        emit status(tr("Opening pass %1 cancelled").arg(index + 1));
+        return false;
+    }
+    return m_controller->showSelectedPass(index, std::move(o), nullptr);
 }
 
 void SlrWorkspace::fillPassList() {
@@ -1233,6 +1293,12 @@ void SlrWorkspace::drawImage(const SlrRun& run) {
             m_imageBand->data()->setRange(QCPRange(r0 / s.magT, (r0 + (cols - 1) * fr) / s.magT),
                                           QCPRange(b0 / s.magOc * 1e9, (b0 + (brows - 1) * fb) / s.magOc * 1e9));
             m_imageBand->data()->fill(0);
+            // Its empty cells are the plot's empty colour, opaque: the pooled cells under the
+            // band must not show through (they did once empty cells became transparent for the
+            // dark theme, seen in a real window: the track a solid block 1.2 ns tall).
+            QCPColorGradient bandGradient = m_imageMap->gradient();
+            bandGradient.setColorStopAt(0.0, emptyCellColor(m_imagePlot));
+            m_imageBand->setGradient(bandGradient);
             for (size_t i = 0; i < n; ++i) {
                 const long long c = std::llround(imgOc[i] * s.magOc);
                 if (c < b0 || c > b1) continue;
@@ -1487,12 +1553,10 @@ bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core
 }
 
 bool SlrWorkspace::setStationNormalPoints(const QString& path, QString* error) {
-    if (path.isEmpty()) {
-        m_stationNps->clear();
-    } else {
-        if (!m_stationNps->load(path, error)) return false;
-        m_bottomTabs->setCurrentWidget(m_stationNps);
-    }
+    // Read into the run's set-up by the core: the tab, the report and the copied command use it.
+    if (!m_controller->setStationNormalPoints(path, error)) return false;
+    m_stationNps->show(m_controller->setup().stationNormalPoints, path);
+    if (!path.isEmpty()) m_bottomTabs->setCurrentWidget(m_stationNps);
     if (m_controller->hasRun()) showRun(m_controller->run());
     else m_stationNps->update(m_controller->pass(), nullptr);
     emit modified();
@@ -1537,7 +1601,7 @@ OpenOutcome SlrWorkspace::openInputs(const QMap<QString, QStringList>& byRole, i
     for (const QString& p : byRole.value(key())) {
         QString err;
         if (!openPath(p, pass, &err)) {
-            out.problems << err;
+            if (!m_openCancelled) out.problems << err;  // (a Cancel is the analyst's choice: said in the status line)
             continue;
         }
         out.opened = out.replaced = true;
@@ -1583,19 +1647,14 @@ QStringList SlrWorkspace::shortcutNotes() const {
     return {tr("Hover\tSLR ▸ one time cursor on the O-C plot, the binary image and the histogram")};
 }
 
-namespace {
-QString absolute(const QString& path) { return path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath(); }
-}  // namespace
-
 // The run in front as the CLI or Python names it: its files as absolute paths, its pass, its
 // resolved parameters; *note says what neither carries (manual edits).
 QString SlrWorkspace::commandLine(QString* note) const {
     if (!m_controller->hasRun() || m_path.isEmpty()) return QString();  // (the demo's pass is simulated: no file)
-    const int pass = m_controller->pass().hasCrd ? m_controller->pass().passIndex + 1 : 0;
-    const auto args = core::slr::slrCommandArgs(absolute(m_path).toStdString(), pass, absolute(m_cpfPath).toStdString(),
-                                                m_controller->setup().sources.cpfFallback, absolute(m_snxPath).toStdString(),
-                                                core::slr::commandParams(m_controller->setup(), m_controller->pass(),
-                                                                         m_controller->settings().params));
+    const core::slr::PassData& p = m_controller->pass();
+    // The run's own sources (absolute paths: the controller's set-up), as the report names them.
+    const auto args = core::slr::slrCommandArgs(m_controller->setup().sources, p.hasCrd ? p.passIndex + 1 : 0,
+                                                core::slr::commandParams(m_controller->setup(), p, m_controller->settings().params));
     if (note) *note = editsNote();
     return QStringLiteral("laserwb-cli ") + QString::fromStdString(core::slr::shellCommand(args));
 }
@@ -1610,10 +1669,9 @@ QString SlrWorkspace::pythonScript(QString* note) const {
     if (!m_cpfPath.isEmpty() && !cpfUsed)
         edits += (edits.isEmpty() ? QString() : QStringLiteral("; ")) + tr("the prediction, which this pass did not use, is left out");
     if (note) *note = edits;
-    return QString::fromStdString(core::slr::slrPythonScript(absolute(m_path).toStdString(), p.hasCrd ? p.passIndex + 1 : 0,
-                                                             cpfUsed ? absolute(m_cpfPath).toStdString() : std::string(),
-                                                             absolute(m_snxPath).toStdString(),
-                                                             core::slr::commandParams(m_controller->setup(), p, m_controller->settings().params)));
+    return QString::fromStdString(core::slr::slrPythonScript(m_controller->setup().sources, p.hasCrd ? p.passIndex + 1 : 0,
+                                                             core::slr::commandParams(m_controller->setup(), p, m_controller->settings().params),
+                                                             cpfUsed));
 }
 
 QString SlrWorkspace::editsNote() const {
@@ -1630,10 +1688,6 @@ QString SlrWorkspace::reportName() const {
     return base + QStringLiteral("_report.pdf");
 }
 
-bool SlrWorkspace::writeReport(const QString& path, QString* error) const {
-    const core::slr::NpComparison& cmp = m_stationNps->comparison();
-    const bool compared = m_stationNps->hasFile() && (cmp.ok || !cmp.error.empty());
-    return m_controller->exportReport(path, compared ? &cmp : nullptr, error);
-}
+bool SlrWorkspace::writeReport(const QString& path, QString* error) const { return m_controller->exportReport(path, error); }
 
 }  // namespace lwb::ui

@@ -31,6 +31,7 @@ namespace lwb::ui {
 class ParamSlider;
 class SlrParamsPanel;
 class SlrAllPassesDialog;
+class SlrFileCheckDialog;
 class SlrStationNpPanel;
 
 class SlrWorkspace : public Workspace {
@@ -90,9 +91,17 @@ public:
     bool exportCrd(const QString& path, bool wholeFile, QString* message);
     /// Opens the "all passes" table of the open CRD file (screened in the background).
     SlrAllPassesDialog* screenAllPasses();
+    /// Checks the open CRD file against the format (core checkCrd, as laserwb-cli crd check)
+    /// with progress and Cancel, and lists its problems; null when no CRD file is open or it
+    /// was cancelled.
+    SlrFileCheckDialog* checkFile();
+    QList<QAction*> fileOpenActions() override;
 
     /// Opens a CRD or O-C CSV with the CPF/SINEX chosen in the workspace; errors in a dialog.
     bool openPath(const QString& path, int passIndex, QString* error);
+    /// Opens pass `index` of the open file (the pass list, Screen all passes) with progress and
+    /// Cancel; false when it cannot be opened (shown in place) or was cancelled.
+    bool switchToPass(int index);
     /// A simulated kHz pass of about `points` points (the demo, the latency benchmark).
     void openDemo(int points);
 
@@ -166,6 +175,7 @@ private:
     ElidedLabel *m_cpfLabel, *m_snxLabel;
     QString m_path, m_cpfPath, m_snxPath;
     bool m_loading = false;
+    bool m_openCancelled = false;  ///< the last openPath was cancelled by the analyst
     bool m_linking = false;
     bool m_imageFlattened = false;  ///< the binary image is of the flattened O-C (refinement)
     bool m_residual = false, m_secondsOfDay = false, m_applyingParams = false;
