@@ -330,18 +330,17 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
     return out;
 }
 
-std::string slrPassCrd(const SlrSimParams& p, const SlrSimPass& pass, int year, int month, int day) {
-    const bool lageos = p.kind == SlrKind::Conventional;
-    const std::string name = lageos ? "lageos1" : std::string("simsat-") + slrKindName(p.kind);
-    const std::string target = lageos ? "lageos1 7603901 1155 8820" : name + " 9999901 9999 99999";
+std::string simulatedCrd(const std::string& h3, const std::vector<double>& epochS, const std::vector<double>& tofS,
+                         const std::vector<uint8_t>& isSignal, double emptyStartSod, int year, int month, int day,
+                         int epochDecimals, int tofDecimals) {
     auto hms = [](double sod, int* h, int* m, int* sec) {
         const long s = static_cast<long>(std::floor(sod)) % 86400;
         *h = int(s / 3600);
         *m = int(s / 60 % 60);
         *sec = int(s % 60);
     };
-    const double first = pass.epochS.empty() ? p.startSod : pass.epochS.front();
-    const double last = pass.epochS.empty() ? p.startSod : pass.epochS.back();
+    const double first = epochS.empty() ? emptyStartSod : epochS.front();
+    const double last = epochS.empty() ? emptyStartSod : epochS.back();
     int h0, m0, s0, h1, m1, s1;
     hms(first, &h0, &m0, &s0);
     hms(last, &h1, &m1, &s1);
@@ -350,23 +349,29 @@ std::string slrPassCrd(const SlrSimParams& p, const SlrSimPass& pass, int year, 
     std::snprintf(line, sizeof line, "H1 CRD  2 %04d %02d %02d %02d\n", year, month, day, h0);
     out += line;
     out += "H2 SIMU 9999 99 99  7 ILRS\n";
-    std::snprintf(line, sizeof line, "H3 %s  0  1  1\n", target.c_str());
-    out += line;
+    out += "H3 " + h3 + "\n";
     // H4: full rate, session start and end, no corrections applied, two-way ranges.
     std::snprintf(line, sizeof line, "H4  0 %04d %02d %02d %02d %02d %02d %04d %02d %02d %02d %02d %02d  0  0  0  0  1  0  2  0\n",
                   year, month, day, h0, m0, s0, year, month, day, h1, m1, s1);
     out += line;
     out += "C0 0 532.000 std\n";
-    out.reserve(out.size() + pass.epochS.size() * 48 + 16);
-    for (size_t i = 0; i < pass.epochS.size(); ++i) {
+    out.reserve(out.size() + epochS.size() * 48 + 16);
+    for (size_t i = 0; i < epochS.size() && i < tofS.size() && i < isSignal.size(); ++i) {
         // Seconds of day (of the H4 date; the CRD convention rolls past 86400 into the next day).
         // (v2: nine fields, the receive and transmit amplitudes not available)
-        std::snprintf(line, sizeof line, "10 %.12f %.12f std 2 %d 0 0 na na\n", pass.epochS[i], pass.tofS[i],
-                      pass.isSignal[i] ? 2 : 1);
+        std::snprintf(line, sizeof line, "10 %.*f %.*f std 2 %d 0 0 na na\n", epochDecimals, epochS[i], tofDecimals, tofS[i],
+                      isSignal[i] ? 2 : 1);
         out += line;
     }
     out += "H8\nH9\n";
     return out;
+}
+
+std::string slrPassCrd(const SlrSimParams& p, const SlrSimPass& pass, int year, int month, int day) {
+    const bool lageos = p.kind == SlrKind::Conventional;
+    const std::string name = lageos ? "lageos1" : std::string("simsat-") + slrKindName(p.kind);
+    const std::string target = lageos ? "lageos1 7603901 1155 8820" : name + " 9999901 9999 99999";
+    return simulatedCrd(target + "  0  1  1", pass.epochS, pass.tofS, pass.isSignal, p.startSod, year, month, day);
 }
 
 }  // namespace lwb::core::sim

@@ -89,6 +89,14 @@ SlrSimPass simulateSlrPass(const SlrSimParams& params, uint64_t seed);
 /// kind, whose physics is LAGEOS's; "simsat-KIND", id 9999901, for the others); the station is
 /// "SIMU", pad 9999. An epoch past midnight rolls the date.
 std::string slrPassCrd(const SlrSimParams& p, const SlrSimPass& pass, int year = 2024, int month = 6, int day = 15);
+/// Every simulator's CRD writer: the events as a CRD v2 full-rate file of one pass (H1, H2 of a
+/// simulated station, H3 `h3` (the fields after "H3 ": target name, ids, class), an H4 over the
+/// epochs (full rate, two-way; `emptyStartSod` when there are none), one configuration, a type-10
+/// record per event with the truth as its filter flag (2 signal, 1 noise), H8, H9), with
+/// `epochDecimals` and `tofDecimals` digits.
+std::string simulatedCrd(const std::string& h3, const std::vector<double>& epochS, const std::vector<double>& tofS,
+                         const std::vector<uint8_t>& isSignal, double emptyStartSod, int year, int month, int day,
+                         int epochDecimals = 12, int tofDecimals = 12);
 
 /// The model O-C (s) of a pass at epoch t (for truth comparisons): eq. 1 only, without the
 /// drift and the level shifts of the gaps (those are in SlrSimPass::trackOcS).

@@ -416,6 +416,192 @@ int robustTofTrend(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs, const
     return fitted ? 1 : 0;
 }
 
+// ---- the orbit arc (issue 43) ------------------------------------------------------------------
+//
+// TOF^2 (ms^2) = sum_k c_k P_k(x) (k = 0..p) + B cos(w s) + C sin(w s), s = t - t_mid (s), x the
+// normalised time: the range of a circular orbit past a station (see oc.hpp), linear for a given
+// w. The fit is the polynomial's (Huber IRLS, least squares in the TOF), then for the arc a few
+// bisquare steps from the Huber solution (a redescending weight: a noise point microseconds off
+// a short pass takes no part in the arc). w is searched on a log grid, then by golden section.
+
+struct ArcFit {
+    bool ok = false;
+    int degree = 0;          // of the polynomial under the arc
+    int rotation = 0;        // the Earth's rotation terms (arcDesign)
+    double omega = NAN;      // rad/s
+    double scale = NAN;      // robust scale of the TOF residuals (ms)
+    double bic = INFINITY;   // n ln(scale^2) + k ln n
+    Eigen::VectorXd resid;   // TOF residuals (ms)
+};
+
+// The arc's design: the polynomial's columns, cos(w s), sin(w s) and, for the Earth's rotation
+// (`rotation` 1: first order, 2: exact for a circular orbit), the terms of the frequencies w -/+ w_E:
+// the station turning at w_E about the pole makes r_sat . r_station a sum of cos and sin at w and
+// w -/+ w_E, whose span is that of cos(w s), sin(w s) times sin(w_E s) (1) and cos(w_E s) - 1 (2).
+Eigen::MatrixXd arcDesign(const Eigen::MatrixXd& poly, const std::vector<double>& s, double omega, int rotation) {
+    const Eigen::Index c0 = poly.cols();
+    Eigen::MatrixXd a(poly.rows(), c0 + 2 + 2 * rotation);
+    a.leftCols(c0) = poly;
+    for (Eigen::Index i = 0; i < poly.rows(); ++i) {
+        const double si = s[static_cast<size_t>(i)];
+        const double c = std::cos(omega * si), sn = std::sin(omega * si);
+        a(i, c0) = c;
+        a(i, c0 + 1) = sn;
+        if (rotation >= 1) {
+            const double e = std::sin(kEarthRotationRate * si);
+            a(i, c0 + 2) = c * e;
+            a(i, c0 + 3) = sn * e;
+        }
+        if (rotation >= 2) {
+            const double e = std::cos(kEarthRotationRate * si) - 1;
+            a(i, c0 + 4) = c * e;
+            a(i, c0 + 5) = sn * e;
+        }
+    }
+    return a;
+}
+
+// The robust fit of the design `a` to the squared TOF, as robustTofTrend (Huber), then
+// `bisquareSteps` Tukey bisquare steps (c = 4.685 robust sigma). Returns the robust scale (ms),
+// NaN when degenerate; residuals into *resid.
+double robustArcResiduals(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs, const Eigen::VectorXd& ysq, double huberK,
+                          int maxIterations, int bisquareSteps, Eigen::VectorXd* resid, Eigen::VectorXd* coefOut) {
+    const Eigen::Index nn = tofMs.size();
+    Eigen::VectorXd base(nn), w = Eigen::VectorXd::Ones(nn), r = Eigen::VectorXd::Zero(nn);
+    for (Eigen::Index i = 0; i < nn; ++i) base(i) = tofMs(i) > 0 ? 1.0 / (4.0 * tofMs(i) * tofMs(i)) : 0.0;
+    double scale = NAN;
+    bool fitted = false;
+    int bisquare = 0;
+    for (int it = 0; it < maxIterations + bisquareSteps; ++it) {
+        const Eigen::VectorXd sw = w.cwiseProduct(base).cwiseSqrt();
+        const Eigen::VectorXd coef = (sw.asDiagonal() * a).colPivHouseholderQr().solve(sw.cwiseProduct(ysq));
+        if (!coef.allFinite()) break;
+        const Eigen::VectorXd fit = a * coef;
+        Eigen::VectorXd rn(nn);
+        bool good = true;
+        for (Eigen::Index i = 0; i < nn && good; ++i) {
+            good = fit(i) > 0;
+            rn(i) = good ? tofMs(i) - std::sqrt(fit(i)) : 0;
+        }
+        if (!good) break;
+        r = rn;
+        *coefOut = coef;
+        fitted = true;
+        std::vector<double> absr(static_cast<size_t>(nn));
+        for (Eigen::Index i = 0; i < nn; ++i) absr[static_cast<size_t>(i)] = std::fabs(r(i));
+        const double sc = 1.4826 * medianOf(absr);
+        if (!(sc > 0)) {
+            scale = 0;
+            break;
+        }
+        const bool converged = std::isfinite(scale) && std::fabs(sc - scale) <= 1e-6 * scale;
+        scale = sc;
+        const bool tukey = converged || it >= maxIterations;
+        if (tukey && ++bisquare > bisquareSteps) break;
+        for (Eigen::Index i = 0; i < nn; ++i) {
+            if (tukey) {
+                const double u = r(i) / (4.685 * sc);
+                w(i) = std::fabs(u) < 1 ? (1 - u * u) * (1 - u * u) : 0.0;
+            } else {
+                const double u = std::fabs(r(i)) / (huberK * sc);
+                w(i) = u <= 1 ? 1.0 : 1.0 / u;
+            }
+        }
+        if (tukey && w.sum() < static_cast<double>(a.cols()) + 1) break;  // too few points left to fit
+    }
+    if (!fitted) return NAN;
+    *resid = r;
+    return scale;
+}
+
+// Whether a fitted arc is a satellite's orbit: the constant A = (2/c)^2 (Re^2 + R^2) of TOF^2 gives
+// the orbit's radius R (Re: 6371 km), and the angular rate must be Kepler's for it,
+// sqrt(GM/R^3), within the Earth's rotation (1.5 w_E: the pass's apparent rate differs by up to
+// w_E cos i) and 10 % (an eccentric orbit's rate varies along it: Beacon-C, e = 0.025, by 5 %).
+// Without this a long dense pass's arc, with its rotation terms, can fit the gate's noise with
+// any rate. Only for an arc without a polynomial (its constant is then A).
+bool arcIsAnOrbit(const Eigen::VectorXd& coef, double omega, int degree) {
+    if (degree != 0 || coef.size() < 1) return false;
+    constexpr double kRe = 6371e3;
+    const double halfC = 0.5 * kSpeedOfLight * 1e-3;  // ms of two-way TOF -> m of range
+    const double r2 = coef(0) * halfC * halfC - kRe * kRe;
+    if (!(r2 > 0)) return false;
+    const double R = std::sqrt(r2);
+    if (R < kRe + 150e3) return false;
+    const double n = std::sqrt(kEarthGm / (R * R * R));
+    return std::fabs(omega - n) <= 1.5 * kEarthRotationRate + 0.1 * n;
+}
+
+// The best arc for a polynomial of `degree` under it: w on a log grid over [5e-5, 1.4e-3] rad/s,
+// refined by golden section, each w scored by the robust scale of its Huber fit (on at most 600
+// points, evenly taken); the final fit at the best w on every point.
+ArcFit fitArc(const std::vector<double>& x, const std::vector<double>& s, const Eigen::VectorXd& tofMs,
+              const Eigen::VectorXd& ysq, int degree, int rotation, const TrendOcParams& params) {
+    ArcFit best;
+    const bool checkOrbit = true;
+    const size_t n = x.size();
+    const size_t step = std::max<size_t>(1, (n + 599) / 600);
+    std::vector<double> xs, ss;
+    std::vector<Eigen::Index> pick;
+    for (size_t i = 0; i < n; i += step) {
+        xs.push_back(x[i]);
+        ss.push_back(s[i]);
+        pick.push_back(static_cast<Eigen::Index>(i));
+    }
+    Eigen::VectorXd ts(static_cast<Eigen::Index>(pick.size())), ys(ts.size());
+    for (Eigen::Index k = 0; k < ts.size(); ++k) ts(k) = tofMs(pick[static_cast<size_t>(k)]), ys(k) = ysq(pick[static_cast<size_t>(k)]);
+    const Eigen::MatrixXd polySub = legendre(xs, degree);
+    const int iters = std::min(params.maxIterations, 30);
+    auto score = [&](double lw) {
+        Eigen::VectorXd r, coef;
+        const double sc =
+            robustArcResiduals(arcDesign(polySub, ss, std::exp(lw), rotation), ts, ys, params.huberK, iters, 0, &r, &coef);
+        return std::isfinite(sc) && (!checkOrbit || arcIsAnOrbit(coef, std::exp(lw), degree)) ? sc : INFINITY;
+    };
+    const double lo = std::log(5e-5), hi = std::log(1.4e-3);
+    constexpr int kGrid = 48;
+    double bestLw = lo, bestScore = INFINITY;
+    std::vector<double> grid(kGrid + 1);
+    for (int g = 0; g <= kGrid; ++g) {
+        const double lw = lo + (hi - lo) * g / kGrid;
+        grid[static_cast<size_t>(g)] = score(lw);
+        if (grid[static_cast<size_t>(g)] < bestScore) bestScore = grid[static_cast<size_t>(g)], bestLw = lw;
+    }
+    if (!std::isfinite(bestScore)) return best;
+    // Golden section in the grid cell pair about the best node.
+    const double h = (hi - lo) / kGrid;
+    double a = std::max(lo, bestLw - h), b = std::min(hi, bestLw + h);
+    const double gr = 0.5 * (std::sqrt(5.0) - 1);
+    double c = b - gr * (b - a), d = a + gr * (b - a), fc = score(c), fd = score(d);
+    for (int it = 0; it < 30 && b - a > 1e-7; ++it) {
+        if (fc <= fd) {
+            b = d, d = c, fd = fc;
+            c = b - gr * (b - a), fc = score(c);
+        } else {
+            a = c, c = d, fc = fd;
+            d = a + gr * (b - a), fd = score(d);
+        }
+    }
+    const double lw = fc <= fd ? c : d;
+    if (std::min(fc, fd) <= bestScore) bestLw = lw;
+    best.omega = std::exp(bestLw);
+    best.degree = degree;
+    best.rotation = rotation;
+    const Eigen::MatrixXd a2 = arcDesign(legendre(x, degree), s, best.omega, rotation);
+    Eigen::VectorXd coef;
+    best.scale = robustArcResiduals(a2, tofMs, ysq, params.huberK, params.maxIterations, 3, &best.resid, &coef);
+    if (!std::isfinite(best.scale) || (checkOrbit && !arcIsAnOrbit(coef, best.omega, degree))) return best;
+    // The scale of the fit: the bisquare's residuals, MAD about zero.
+    std::vector<double> absr(n);
+    for (size_t i = 0; i < n; ++i) absr[i] = std::fabs(best.resid(static_cast<Eigen::Index>(i)));
+    best.scale = 1.4826 * medianOf(absr);
+    const double nn = static_cast<double>(n);
+    const int k = degree + 1 + 2 + 2 * rotation + 1;  // the polynomial, B and C, the rotation's, and w
+    best.bic = nn * std::log(std::max(best.scale, 1e-18) * std::max(best.scale, 1e-18)) + k * std::log(nn);
+    best.ok = true;
+    return best;
+}
+
 // Elevation and azimuth at a pass's epochs, interpolated in its pointing records (type 30);
 // NaN without them.
 class PointingAngles {
@@ -479,9 +665,9 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         // pass's range is not a line over a minute), with 2 degrees of freedom left at 5 records.
         const int n = static_cast<int>(t.size());
         const int degree = std::max(1, std::min(params.degree, std::max((n - 1) / 4, std::min(2, n - 3))));
-        if (degree < params.degree)
-            res.warnings.push_back(name + ": trend degree lowered to " + std::to_string(degree) + " for " +
-                                   std::to_string(t.size()) + " records");
+        const std::string lowered = degree < params.degree ? name + ": trend degree lowered to " + std::to_string(degree) +
+                                                                 " for " + std::to_string(t.size()) + " records"
+                                                           : std::string();
         std::vector<double> x(t.size());
         for (size_t i = 0; i < t.size(); ++i) x[i] = 2 * (t[i] - t0) / (t1 - t0) - 1;
         const Eigen::MatrixXd a = legendre(x, degree);
@@ -509,6 +695,42 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         }
         res.trendDegree = degree;
         res.trendScaleS = std::isfinite(scale) ? scale * 1e-3 : NAN;
+        // The orbit arc (issue 43), when the data say it fits better: at least 8 records (4
+        // parameters and as many degrees of freedom), at most half the polynomial's robust
+        // scatter, and a lower BIC (n ln(scale^2) + k ln n) than the polynomial's.
+        ArcFit arc;
+        if (params.orbitArc && n >= 8 && std::isfinite(scale)) {
+            std::vector<double> s(t.size());
+            const double tm = 0.5 * (t0 + t1);
+            for (size_t i = 0; i < t.size(); ++i) s[i] = t[i] - tm;
+            // (polynomial degree, rotation terms): 4 + degree + 2 rotation parameters, each model
+            // with 4 records more than parameters.
+            for (const auto [p, rot] : {std::pair{0, 0}, {0, 1}, {0, 2}}) {
+                if (4 + p + 2 * rot + 4 > n) continue;
+                if (cancelled(feedback)) {
+                    res = OcResult();
+                    res.error = "cancelled";
+                    return res;
+                }
+                ArcFit f = fitArc(x, s, tofMs, ysq, p, rot, params);
+                if (f.ok && f.bic < arc.bic) arc = std::move(f);
+            }
+            const double nd = static_cast<double>(n);
+            const double polyBic = nd * std::log(std::max(scale, 1e-18) * std::max(scale, 1e-18)) + (degree + 1) * std::log(nd);
+            // A short pass (under 50 records, the screening's "short LEO pass") takes the arc when
+            // it is an orbit (arcIsAnOrbit): too few records to tell the models by their scatter,
+            // and the polynomial in TOF^2 is not the geometry. A longer one only when the arc
+            // halves the scatter and has the lower BIC (a dense pass's scatter is its gate's
+            // noise, which either model follows: the polynomial stays unless the arc is clearly better).
+            if (arc.ok && (n < 50 || arc.scale <= 0.5 * scale) && arc.bic < polyBic) {
+                resid = arc.resid;
+                res.trendDegree = arc.degree;
+                res.trendScaleS = arc.scale * 1e-3;
+                res.trendArcRateRadS = arc.omega;
+            } else {
+                arc.ok = false;
+            }
+        }
 
         // Elevation/azimuth from the pointing records (type 30), when there are some.
         const PointingAngles angles(pass);
@@ -526,8 +748,17 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             res.line.push_back(r.line);
             res.filter_flag.push_back(r.filterFlag);
         }
-        res.notes.push_back(name + ": no prediction: O-C is relative to a robust degree-" + std::to_string(degree) +
-                               " polynomial trend of the time of flight (a range bias and smooth drifts are absorbed)");
+        if (!arc.ok && !lowered.empty()) res.warnings.push_back(lowered);  // (the polynomial's; not the arc's)
+        if (arc.ok)
+            res.notes.push_back(name + ": no prediction: O-C is relative to a robust orbit-arc trend of the time of flight (" +
+                                "a circular orbit's range past the station, " + formatFixed(arc.omega * 1e3, 4) +
+                                " mrad/s, " +
+                                (arc.rotation ? std::string("with the Earth's rotation")
+                                              : "with a degree-" + std::to_string(arc.degree) + " polynomial") +
+                                "; a range bias and smooth drifts are absorbed)");
+        else
+            res.notes.push_back(name + ": no prediction: O-C is relative to a robust degree-" + std::to_string(degree) +
+                                " polynomial trend of the time of flight (a range bias and smooth drifts are absorbed)");
         if (feedback) feedback->setProgress(1.0);
         res.ok = true;
     } catch (const std::exception& e) {

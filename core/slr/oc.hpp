@@ -14,7 +14,15 @@
 // Without a prediction (computeTrendOc): residuals against a robust trend of the time of flight
 // itself over all returns (filter flags unused): sqrt of a polynomial fitted to the squared time
 // of flight (a pass's range is nearly sqrt(d^2 + v^2 t^2)), a Huber M-estimate by iteratively
-// reweighted least squares. Huber (bounded influence, not redescending) follows the centre of the
+// reweighted least squares. Issue 43: or sqrt of the orbit arc, chosen by the data. A satellite
+// on a circular orbit of radius R seen from a station at radius Re (non-rotating Earth) has
+// rho^2 = Re^2 + R^2 - 2 Re R cos(gamma_min) cos(w (t - t0)), i.e. TOF^2 = A + B cos(w t) +
+// C sin(w t): linear in A, B, C for a given angular rate w, which is searched (5e-5..1.4e-3
+// rad/s: LEO to above LAGEOS). A Legendre polynomial of degree 0..2 (by BIC on the robust scale)
+// on top takes up the Earth's rotation and the eccentricity. Taken when it leaves at most half
+// the polynomial's robust scatter and a lower BIC: sparse LEO passes whose TOF no low-degree
+// polynomial follows (an ERS-class pass of 18 ranges: 44 ns residuals on real returns); dense
+// passes whose scatter is the gate's noise keep the polynomial. Huber (bounded influence, not redescending) follows the centre of the
 // noise band, i.e. the station's own prediction, rather than locking onto part of the track. The range gate is centred on
 // the station's own prediction, so noise spreads evenly about it and the trend follows the
 // gate centre or the track; either way the O-C is relative to a fitted trend, not to an orbit:
@@ -80,8 +88,11 @@ struct OcResult {
     double wavelengthNm = NAN;          ///< wavelength of the first point's configuration
     Eigen::Vector3d stationEcef{0, 0, 0};  ///< station position used (m, ITRF)
     std::string stationCode;            ///< SINEX site code (when looked up)
-    int trendDegree = 0;                ///< FittedTrend: polynomial degree used
+    int trendDegree = 0;                ///< FittedTrend: polynomial degree used (of the polynomial under the
+                                        ///< orbit arc when trendArcRateRadS is finite)
     double trendScaleS = NAN;           ///< FittedTrend: robust scale of the residuals (s)
+    double trendArcRateRadS = NAN;      ///< FittedTrend: the orbit arc's angular rate (rad/s) when the arc model
+                                        ///< was chosen (computeTrendOc); NaN: the polynomial in TOF^2
 };
 
 /// O-C of a pass against a prediction, station position given (ECEF, m). Never throws.
@@ -99,6 +110,10 @@ struct TrendOcParams {
     double huberK = 1.345;    ///< Huber constant, in robust standard deviations (MAD x 1.4826) (0.5..10)
     int maxIterations = 50;   ///< reweighting iterations (1..500)
     int minPoints = 5;        ///< fewer usable records: error (>= 3; kMinPassPoints of pass_input.hpp)
+    /// Internal, no schema row (tests compare with and without it): also fit the orbit-arc model
+    /// (TOF^2 = A + B cos wt + C sin wt + a polynomial of degree 0..2, w searched) and take it when
+    /// it leaves at most half the polynomial's robust scatter and a lower information criterion.
+    bool orbitArc = true;
 };
 std::string validate(const TrendOcParams& p);
 

@@ -284,6 +284,138 @@ double trackSeparation(const PostfitResult& post) {
     return static_cast<double>(in) / (static_cast<double>(out) * band / rest);
 }
 
+namespace {
+// P(X ≥ k) for X ~ Binomial(n, q): the terms summed from k up in log space.
+double binomialUpperTail(long long k, long long n, double q) {
+    if (k <= 0) return 1;
+    if (k > n || !(q > 0)) return 0;
+    if (q >= 1) return 1;
+    const double lq = std::log(q), l1q = std::log1p(-q), lgn = std::lgamma(double(n) + 1);
+    double sum = 0, first = NAN;
+    for (long long j = k; j <= n; ++j) {
+        const double lt = lgn - std::lgamma(double(j) + 1) - std::lgamma(double(n - j) + 1) + double(j) * lq + double(n - j) * l1q;
+        if (std::isnan(first)) first = lt;
+        const double term = std::exp(lt - first);
+        sum += term;
+        if (term < 1e-12 * sum && double(j) > double(n) * q) break;
+    }
+    return std::min(1.0, std::exp(first) * sum);
+}
+}  // namespace
+
+std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const PostfitResult& post) {
+    std::vector<BinEvidence> out;
+    const double h = 3 * post.stats.rms;  // the track's half window
+    const double flank = 20 * 2 * h;      // each flank: 20 windows
+    for (const NormalPoint& np : post.normalPoints) {
+        BinEvidence e;
+        e.binStartS = np.binStartS;
+        std::vector<std::pair<double, double>> pts;  // (t, residual) in the bin
+        for (size_t i = 0; i < t.size() && i < post.residuals.size(); ++i)
+            if (t[i] >= np.binStartS && t[i] < np.binStartS + np.windowS && std::isfinite(post.residuals[i]))
+                pts.emplace_back(t[i], post.residuals[i]);
+        if (!(h > 0) || pts.empty()) {
+            e.why = "no spread to judge the track by";
+            out.push_back(e);
+            continue;
+        }
+        std::sort(pts.begin(), pts.end());
+        const size_t n = pts.size(), slices = std::clamp<size_t>(n / 20, 1, 20);
+        double lambda = 0, lambdaPlus = 0;
+        std::vector<double> rooms, extents;
+        for (size_t s = 0; s < slices; ++s) {
+            const size_t a = n * s / slices, b = n * (s + 1) / slices;
+            double lo = INFINITY, hi = -INFINITY;
+            long long on = 0, off = 0;
+            for (size_t i = a; i < b; ++i) {
+                const double r = pts[i].second;
+                lo = std::min(lo, r);
+                hi = std::max(hi, r);
+                if (std::fabs(r) <= h) ++on;
+                else if (std::fabs(r) <= h + flank) ++off;
+            }
+            const double offWidth = std::max(0.0, -h - std::max(lo, -h - flank)) + std::max(0.0, std::min(hi, h + flank) - h);
+            e.onPoints += on;
+            e.offPoints += off;
+            extents.push_back(hi - lo);
+            if (offWidth > 0) {
+                lambda += double(off) * 2 * h / offWidth;
+                lambdaPlus += (double(off) + 1.0 / double(slices)) * 2 * h / offWidth;
+            }
+        }
+        // The gate's edges near each point of the track: the 16 nearest points in time off the
+        // window (a trend that bends moves the edges within a slice).
+        for (size_t i = 0; i < n; ++i) {
+            if (std::fabs(pts[i].second) > h) continue;
+            double lo = -h, hi = h;
+            size_t a = i, b = i, got = 0;
+            while (got < 16 && (a > 0 || b + 1 < n)) {
+                const bool left = a > 0 && (b + 1 >= n || pts[i].first - pts[a - 1].first <= pts[b + 1].first - pts[i].first);
+                const size_t j = left ? --a : ++b;
+                const double r = pts[j].second;
+                if (std::fabs(r) <= h) continue;
+                lo = std::min(lo, r);
+                hi = std::max(hi, r);
+                ++got;
+            }
+            rooms.push_back(std::min(-h - lo, hi - h) / (2 * h));
+        }
+        e.expectedNoise = lambda;
+        if (rooms.empty()) {
+            e.why = "no point of the bin on the track";
+            out.push_back(e);
+            continue;
+        }
+        std::nth_element(rooms.begin(), rooms.begin() + long(rooms.size() / 2), rooms.end());
+        e.edgeRoom = rooms[rooms.size() / 2];
+        std::nth_element(extents.begin(), extents.begin() + long(extents.size() / 2), extents.end());
+        e.trials = std::max(1.0, std::pow(extents[extents.size() / 2] / (2 * h), 2));
+        e.noiseShare = e.onPoints > 0 ? std::min(1.0, lambdaPlus / double(e.onPoints)) : 1;
+        const double alpha = lambdaPlus / double(e.offPoints + 1);  // window / flanks, as the points measure it
+        e.pValue = std::min(1.0, binomialUpperTail(e.onPoints, e.onPoints + e.offPoints, alpha / (1 + alpha)));
+        const std::string window = "±" + formatFixed(h * 1e12, 0) + " ps";
+        // (only where the noise is dense enough to show the gate: 3 points expected in 10 windows,
+        // and the 16 points off the window the room is measured by)
+        if (n < size_t(e.onPoints) + 16) {
+            // Fewer than 16 points off the window: too few to measure the noise beside this bin
+            // by (a station's narrow gate, the MLRS Beacon-C passes' 15 s bins); the pass-wide
+            // test below judges it.
+        } else if (e.edgeRoom < kMinEdgeRoom && 10 * lambda >= 3)
+            e.why = "its track lies at the edge of the gate (" + formatFixed(std::max(0.0, e.edgeRoom), 1) +
+                    " windows from it): a band of noise at the gate's edge cannot be told from a track";
+        else if (e.pValue > kMaxBinFalseAlarm)
+            e.why = std::to_string(e.onPoints) + " points within " + window + " of the track where the noise beside it puts " +
+                    formatFixed(lambda, 1) + ": noise alone does that with a chance of " + formatFixed(e.pValue, 4);
+        else if (e.noiseShare > kMaxBinNoiseShare)
+            e.why = "about " + formatFixed(100 * e.noiseShare, 0) + " % of its " + std::to_string(e.onPoints) + " points within " +
+                    window + " of the track are noise, by the density beside it";
+        out.push_back(e);
+    }
+    // The track across the pass: the bins' counts together, against the tracks of that width one
+    // could draw across the gate (the trials factor of the widest bin); a bin alone is judged
+    // with its track given (the trend rests on the whole pass).
+    long long on = 0, off = 0;
+    double lam = 0, trials = 1;
+    for (const BinEvidence& e : out) {
+        on += e.onPoints;
+        off += e.offPoints;
+        lam += e.expectedNoise;
+        trials = std::max(trials, e.trials);
+    }
+    if (!out.empty()) {
+        const double alpha = (lam + 1.0 * (h > 0 ? 2 * h / (2 * flank) : 0)) / double(off + 1);
+        const double pPass = std::min(1.0, trials * binomialUpperTail(on, on + off, alpha / (1 + alpha)));
+        if (pPass > kMaxBinFalseAlarm)
+            for (BinEvidence& e : out)
+                if (e.why.empty())
+                    e.why = "the track's " + std::to_string(on) + " points within ±" + formatFixed(h * 1e12, 0) +
+                            " ps, where the noise beside it puts " + formatFixed(lam, 1) +
+                            ", could be noise: noise alone does that with a chance of " + formatFixed(pPass, 4) + " (" +
+                            formatFixed(trials, 0) + " tracks of that width fit the gate)";
+    }
+    return out;
+}
+
 std::string judgeRun(const ScreenResult& screen, size_t acceptedCount, PostfitResult* post, std::string* postNote) {
     std::string doubt;
     if (acceptedCount > 0) {
@@ -380,6 +512,26 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
         pass.ocOrigin.rfind("fitted TOF trend", 0) == 0)
         r.doubt = std::to_string(pass.t.size()) + " points on the pass's own TOF trend (no prediction): too few to tell "
                   "a track from the trend's misfit; give a CPF (--cpf) to judge this pass";
+    // Each normal point must stand above the noise beside it (issue 43: real lunar passes).
+    if (r.doubt.empty() && r.postOk && !r.screen.floorless && !r.post.normalPoints.empty()) {
+        r.binEvidence = normalPointEvidence(pass.t, r.post);
+        std::vector<NormalPoint> standing;
+        std::string why;
+        for (size_t k = 0; k < r.binEvidence.size(); ++k) {
+            if (r.binEvidence[k].why.empty()) standing.push_back(r.post.normalPoints[k]);
+            else if (why.empty()) why = r.binEvidence[k].why;
+        }
+        const size_t dropped = r.post.normalPoints.size() - standing.size();
+        if (standing.empty()) {
+            r.doubt = "no normal point stands above the noise: " + why;
+            r.post.normalPoints.clear();
+            r.postNote = "no normal points: " + r.doubt;
+        } else if (dropped > 0) {
+            r.post.normalPoints = std::move(standing);
+            const std::string note = std::to_string(dropped) + " normal point(s) dropped: " + why;
+            r.postNote = r.postNote.empty() ? note : r.postNote + "; " + note;
+        }
+    }
     r.agreement = stationAgreement(pass, r.accepted, r.postOk ? &r.post : nullptr);
     if (r.postOk && r.doubt.empty()) r.bias = passBias(pass, r.post.kept);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

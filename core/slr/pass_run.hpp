@@ -70,6 +70,42 @@ PassBias passBias(const PassData& pass, const std::vector<uint8_t>& kept);
 /// "range bias 12.3 ± 0.4 mm (one-way), time bias 5.1 ± 0.8 µs (150 points)", or why none.
 std::string describeBias(const PassBias& b);
 
+/// The evidence for one normal point's bin (issue 43: real lunar passes published normal points
+/// from points 40-67 % noise). The track's window is ±3σ of the trend (σ the kept residuals'
+/// RMS): `onPoints` of the bin's points fall in it. The noise beside it is counted in the flanks
+/// out to 20 windows each side, clipped to the gate as the bin's points show it, slice by slice
+/// (about 20 points a slice: a burst of noise or a gate that moves is measured where it is):
+/// `expectedNoise` is the number the flanks' density puts in the window. `pValue`: the chance
+/// that noise alone puts onPoints of the window's and flanks' points in the window (the binomial
+/// on/off test, the track given). The whole track (every bin's counts together) must pass the
+/// same test times `trials` = (gate / window)², the tracks of that width one could draw across
+/// the gate (the largest of the bins'); a pass that fails it fails in every bin. `edgeRoom`: the room between the window and the nearer edge of the gate, in
+/// windows (median over the track's points of the room left by the 16 points off the window nearest
+/// in time). Judged by kMaxBinFalseAlarm, kMaxBinNoiseShare and
+/// kMinEdgeRoom.
+struct BinEvidence {
+    double binStartS = 0;
+    long long onPoints = 0, offPoints = 0;
+    double expectedNoise = 0;   ///< noise in the window, from the flanks
+    double noiseShare = 0;      ///< (offPoints + 1)-based estimate of the window's noise share
+    double pValue = 1;          ///< with the trials factor
+    double trials = 1;
+    double edgeRoom = 0;        ///< windows
+    std::string why;            ///< "" when the bin's normal point stands
+};
+/// A bin's normal point stands when noise alone would give it less than once in 1000 bins, when
+/// the window's estimated noise share is at most 10 %, and when the window is at least 2 windows
+/// from the gate's edge (a band of noise at the gate's opening is dense and flat; a track there
+/// cannot be told from it) — the last judged only where the noise shows the gate (the flanks'
+/// density puts at least 3 points in 10 windows; sparse noise leaves a side empty by chance). A
+/// bin with fewer than 16 points off the window is judged by the pass-wide test alone (too few
+/// to measure its noise by: the MLRS Beacon-C passes' 15 s bins).
+inline constexpr double kMaxBinFalseAlarm = 1e-3;
+inline constexpr double kMaxBinNoiseShare = 0.10;
+inline constexpr double kMinEdgeRoom = 2;
+/// One BinEvidence per normal point of `post` (t: the pass's epochs).
+std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const PostfitResult& post);
+
 struct PassRunResult {
     bool ok = false;
     std::string error;                 ///< the screening failed
@@ -88,6 +124,9 @@ struct PassRunResult {
     bool screenReused = false;         ///< the earlier run's screening was reused (only post-fit or edits changed)
     bool scaleReused = false;          ///< screened at the scales an earlier run chose (only C changed)
     PassBias bias;                     ///< range and time bias against the prediction (CPF O-C only)
+    /// One per normal point the post-fit formed (before any was dropped), on a pass with a noise
+    /// floor and no other doubt: why each stands or not (normalPointEvidence).
+    std::vector<BinEvidence> binEvidence;
 };
 
 /// Two parallel tracks in a track's residuals: "" or what was found. The sorted residuals are

@@ -11,6 +11,7 @@
 
 #include "test_support.hpp"
 #include "ui/calib/calib_workspace.hpp"
+#include "ui/kit/display_controls.hpp"
 #include "ui/kit/i18n.hpp"
 #include "ui/kit/plot_kit.hpp"
 #include "ui/kit/save_path.hpp"
@@ -104,6 +105,30 @@ private slots:
         }
         installLanguage("en");
         QLocale::setDefault(saved);
+    }
+
+    /// The display limits a session keeps are the analyst's: in an automatic mode the boxes show
+    /// the image's own limits (showLimits), which had followed the last image shown into
+    /// saveState, and into a refused session's rollback (ui_test_shell_reliability's mutant 18 on
+    /// another base session: the footprint state changed after the session was refused).
+    void displaySettingsAreTheAnalystsNotTheImagesShown() {
+        DisplayControls c;
+        DisplaySettings s;
+        s.limits = LimitsMode::Manual;
+        s.manualLo = 100;
+        s.manualHi = 900;
+        c.setSettings(s);
+        s.limits = DisplaySettings{}.limits;  // an automatic mode, the manual limits kept
+        QVERIFY(s.limits != LimitsMode::Manual);
+        c.setSettings(s);
+        c.showLimits(2480, 7493);
+        QCOMPARE(c.low(), 2480.0);  // (shown)
+        QCOMPARE(c.settings().manualLo, 100.0);
+        QCOMPARE(c.settings().manualHi, 900.0);
+        // Manual again: the limits shown become the analyst's, as before.
+        c.limitsBox()->setCurrentIndex(int(LimitsMode::Manual));
+        QCOMPARE(c.settings().manualLo, 2480.0);
+        QCOMPARE(c.settings().manualHi, 7493.0);
     }
 
     void boxZoomChangesOnlyTheRangeAsked() {

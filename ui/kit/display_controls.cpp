@@ -112,6 +112,7 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     sync();
     connect(m_limits, &QComboBox::currentIndexChanged, this, [this, sync] {
         sync();
+        if (m_limits->currentIndex() == int(LimitsMode::Manual)) keepManual();  // (the limits shown become the analyst's)
         m_cbBaseSet = false;  // limits chosen by hand: a reset has nothing to go back to
         emit changed();
     });
@@ -119,6 +120,7 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     for (QDoubleSpinBox* b : {m_lo, m_hi})
         connect(b, &QDoubleSpinBox::valueChanged, this, [this] {
             if (m_limits->currentIndex() != int(LimitsMode::Manual)) return;
+            keepManual();
             m_cbBaseSet = false;
             emit changed();
         });
@@ -144,6 +146,7 @@ void DisplayControls::dragContrastBias(double dxFraction, double dyFraction) {
     m_hi->setReadOnly(false);
     m_lo->setValue(l.lo);
     m_hi->setValue(std::max(l.hi, m_lo->value() + 1));  // the fields keep whole DN: never an empty window
+    keepManual();
     emit changed();
 }
 
@@ -158,15 +161,22 @@ DisplaySettings DisplayControls::settings() const {
     DisplaySettings s;
     s.limits = LimitsMode(m_limits->currentIndex());
     s.stretch = StretchKind(m_stretch->currentIndex());
-    s.manualLo = m_lo->value();
-    s.manualHi = m_hi->value();
+    const bool manual = s.limits == LimitsMode::Manual;
+    s.manualLo = manual ? m_lo->value() : m_manualLo;
+    s.manualHi = manual ? m_hi->value() : m_manualHi;
     return s;
+}
+
+void DisplayControls::keepManual() {
+    m_manualLo = m_lo->value();
+    m_manualHi = m_hi->value();
 }
 
 void DisplayControls::setSettings(const DisplaySettings& s) {
     const QSignalBlocker b1(m_limits), b2(m_stretch), b3(m_lo), b4(m_hi);
     m_lo->setValue(s.manualLo);
     m_hi->setValue(s.manualHi);
+    keepManual();
     m_stretch->setCurrentIndex(int(s.stretch));
     m_limits->setCurrentIndex(int(s.limits));
     m_lo->setReadOnly(s.limits != LimitsMode::Manual);

@@ -68,7 +68,12 @@ signals:
 private:
     QComboBox *m_limits, *m_stretch;
     QDoubleSpinBox *m_lo, *m_hi;
+    void keepManual();
     double m_cbLo = 0, m_cbHi = 1;  // the limits when the drag began
+    // The analyst's manual limits: what settings() gives (and a session keeps) whatever the
+    // boxes show in an automatic mode (showLimits: the image's own limits, which followed the
+    // last image shown into sessions, and into a refused session's rollback).
+    double m_manualLo = DisplaySettings{}.manualLo, m_manualHi = DisplaySettings{}.manualHi;
     DisplaySettings m_cbBase;       // the settings before the first drag
     bool m_cbBaseSet = false;
 };

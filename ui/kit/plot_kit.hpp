@@ -116,9 +116,8 @@ QCustomPlot* newPlot(QWidget* parent, const QString& title, const QString& xLabe
 void legendBelow(QCustomPlot* plot, int columns);
 /// Lays a legendBelow legend out for the plot's width; true when its layout changed.
 bool fitLegendBelow(QCustomPlot* plot);
-/// The colour an empty image cell shows in the current theme: the axis rect's background where
-/// it has one (an image plot), else the plot's. A colour map drawn over another (the SLR
-/// image's unpooled track band) paints its empty cells with it, opaque, to hide the one below.
+/// The colour an empty (transparent) image cell shows in the current theme: the axis rect's
+/// background where it has one (an image plot), else the plot's.
 QColor emptyCellColor(const QCustomPlot* plot);
 
 /// An image plot: a colour map on the main axes and its colour bar on the right with `label`.

@@ -1293,12 +1293,16 @@ void SlrWorkspace::drawImage(const SlrRun& run) {
             m_imageBand->data()->setRange(QCPRange(r0 / s.magT, (r0 + (cols - 1) * fr) / s.magT),
                                           QCPRange(b0 / s.magOc * 1e9, (b0 + (brows - 1) * fb) / s.magOc * 1e9));
             m_imageBand->data()->fill(0);
-            // Its empty cells are the plot's empty colour, opaque: the pooled cells under the
-            // band must not show through (they did once empty cells became transparent for the
-            // dark theme, seen in a real window: the track a solid block 1.2 ns tall).
-            QCPColorGradient bandGradient = m_imageMap->gradient();
-            bandGradient.setColorStopAt(0.0, emptyCellColor(m_imagePlot));
-            m_imageBand->setGradient(bandGradient);
+            // The pooled cells the band covers whole are emptied: the band draws them again,
+            // unpooled, and its empty cells are transparent (the theme's background shows, light
+            // or dark). Left filled they showed through the band (seen in a real window once
+            // empty cells became transparent for the dark theme: the track a block 1.2 ns tall).
+            const double bandLo = double(b0) - 0.5 * double(fb), bandHi = double(b0 + (brows - 1) * fb) + 0.5 * double(fb);
+            for (int y = 0; y < rows; ++y) {
+                const double lo = double(c0 + y * fc) - 0.5 * double(fc);
+                if (lo >= bandLo && lo + double(fc) <= bandHi)
+                    for (int x = 0; x < cols; ++x) m_imageMap->data()->setCell(x, y, 0);
+            }
             for (size_t i = 0; i < n; ++i) {
                 const long long c = std::llround(imgOc[i] * s.magOc);
                 if (c < b0 || c > b1) continue;

@@ -1,0 +1,260 @@
+// Issue 43, item 3: no confident wrong answer on lunar passes. Simulated lunar ranging passes
+// (core/sim/slr_sim_lunar: 10 Hz or 1 kHz, 30 min, returns 0.03–2 % of the shots, Poisson noise
+// over a 200 ns–2 µs gate) written as CRD full-rate files of Apollo 15 and run as the CLI runs
+// them without a prediction (O-C against the pass's own TOF trend, the missions table's 900 s
+// bin): clean passes publish, adversarial ones (no signal, clustered noise, a band at the gate's
+// edge, afterpulses, a second weak track, a gate that moves) end doubtful or publish normal
+// points from kept points at most kMaxNoiseShare noise by the simulation's truth.
+#include <QtTest>
+#include <cmath>
+
+#include "core/common/rng.hpp"
+#include "core/sim/slr_sim_lunar.hpp"
+#include "core/slr/pass_input.hpp"
+#include "core/slr/pass_run.hpp"
+#include "test_support.hpp"
+
+using namespace lwb::core;
+namespace sim = lwb::core::sim;
+
+namespace {
+
+struct LunarOutcome {
+    bool doubtful = false;
+    size_t normalPoints = 0;
+    long long kept = 0, keptNoise = 0, events = 0, signal = 0;
+    std::string doubt, evidence;
+    double noiseShare() const { return kept ? double(keptNoise) / double(kept) : 0; }
+};
+
+// The kept points that make the normal points: in a bin that formed one.
+LunarOutcome runLunar(const sim::LunarSimParams& p, uint64_t seed, const QString& dir) {
+    LunarOutcome o;
+    const sim::LunarSimPass s = sim::simulateLunarPass(p, seed);
+    if (!s.ok) qFatal("%s", s.error.c_str());
+    o.events = static_cast<long long>(s.epochS.size());
+    o.signal = s.signalCount;
+    if (s.epochS.size() < 5) {
+        o.doubtful = true;
+        o.doubt = "fewer than 5 events";
+        return o;
+    }
+    const QString path = dir + "/lunar.frd";
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) qFatal("cannot write %s", qPrintable(path));
+    f.write(QByteArray::fromStdString(sim::lunarPassCrd(p, s)));
+    f.close();
+    const slr::PassInputResult in = slr::loadPass(path.toStdString(), -1, {});
+    if (!in.ok) qFatal("%s", in.error.c_str());
+    slr::PassSettings settings;
+    std::string err;
+    if (!slr::passSettings(in.pass, slr::commandDefaults(), nullptr, "", nullptr, &settings, &err)) qFatal("%s", err.c_str());
+    const slr::PassRunResult r = slr::runPass(in.pass, settings.params);
+    if (!r.ok) qFatal("%s", r.error.c_str());
+    o.doubtful = !r.doubt.empty();
+    o.doubt = r.doubt;
+    for (const auto& e : r.binEvidence)
+        o.evidence += QString(" [on %1 off %2 lam %3 share %4 p %5 T %6 room %7 rms %8 ps%9]")
+                          .arg(e.onPoints).arg(e.offPoints).arg(e.expectedNoise, 0, 'f', 2).arg(e.noiseShare, 0, 'f', 2)
+                          .arg(e.pValue, 0, 'g', 2).arg(e.trials, 0, 'f', 0).arg(e.edgeRoom, 0, 'f', 1)
+                          .arg(r.post.stats.rms * 1e12, 0, 'f', 0).arg(e.why.empty() ? "" : " X")
+                          .toStdString();
+    const slr::DeliveredNormalPoints d = slr::deliveredNormalPoints(r);
+    o.normalPoints = d.points.size();
+    if (r.postOk)
+        for (const auto& np : d.points)
+            for (size_t i = 0; i < in.pass.t.size(); ++i)
+                if (r.post.kept[i] && in.pass.t[i] >= np.binStartS && in.pass.t[i] < np.binStartS + np.windowS) {
+                    ++o.kept;
+                    o.keptNoise += s.isSignal[i] == 0;
+                }
+    return o;
+}
+
+struct Case {
+    const char* name;
+    sim::LunarSimParams p;
+    bool clean;  // a pass that should publish
+};
+
+std::vector<Case> lunarCases() {
+    std::vector<Case> c;
+    auto base = [](double ret, double noise, double gate, double rate = 10) {
+        sim::LunarSimParams p;
+        p.returnProbability = ret;
+        p.noisePerShot = noise;
+        p.gateS = gate;
+        p.fireRateHz = rate;
+        return p;
+    };
+    c.push_back({"clean 10 Hz 2 % / 0.05 noise, 200 ns", base(0.02, 0.05, 200e-9), true});
+    c.push_back({"clean 10 Hz 0.5 % / 0.05 noise, 200 ns", base(0.005, 0.05, 200e-9), true});
+    c.push_back({"clean 10 Hz 0.2 % / 0.005 noise, 1 us", base(0.002, 0.005, 1e-6), true});
+    c.push_back({"clean 1 kHz 0.1 % / 0.01 noise, 2 us", base(0.001, 0.01, 2e-6, 1000), true});
+    c.push_back({"sparse 10 Hz 0.05 % / 0.005 noise, 200 ns", base(0.0005, 0.005, 200e-9), false});
+    c.push_back({"sparse 10 Hz 0.03 % / 0.001 noise, 100 ns", base(0.0003, 0.001, 100e-9), false});
+    c.push_back({"no signal 10 Hz 0.05 noise, 200 ns", base(0, 0.05, 200e-9), false});
+    c.push_back({"no signal 10 Hz 0.005 noise, 1 us", base(0, 0.005, 1e-6), false});
+    c.push_back({"no signal 1 kHz 0.002 noise, 2 us", base(0, 0.002, 2e-6, 1000), false});
+    {
+        auto p = base(0, 0.02, 200e-9);
+        p.afterpulseProbability = 0.3;
+        p.afterpulseDelayS = 5e-9;
+        c.push_back({"no signal, afterpulses", p, false});
+    }
+    {
+        auto p = base(0, 0.02, 200e-9);
+        p.edgeBandS = 3e-9;
+        p.edgeBandPerShot = 0.005;
+        c.push_back({"no signal, edge band 3 ns", p, false});
+    }
+    {
+        auto p = base(0, 0.01, 200e-9);
+        p.burstCount = 3;
+        p.burstLengthS = 60;
+        p.burstFactor = 30;
+        c.push_back({"no signal, 3 noise bursts", p, false});
+    }
+    {
+        auto p = base(0, 0.01, 200e-9);
+        p.gateShiftAtS = 900;
+        p.gateShiftS = 60e-9;
+        p.edgeBandS = 2e-9;
+        p.edgeBandPerShot = 0.003;
+        c.push_back({"no signal, moving gate with edge band", p, false});
+    }
+    {
+        auto p = base(0.002, 0.02, 200e-9);
+        p.edgeBandS = 3e-9;
+        p.edgeBandPerShot = 0.005;
+        c.push_back({"weak signal, edge band 3 ns", p, false});
+    }
+    {
+        auto p = base(0.002, 0.02, 200e-9);
+        p.secondProbability = 0.001;
+        c.push_back({"weak signal, second track", p, false});
+    }
+    {
+        auto p = base(0.002, 0.02, 200e-9);
+        p.burstCount = 3;
+        p.burstFactor = 30;
+        c.push_back({"weak signal, noise bursts", p, false});
+    }
+    {
+        auto p = base(0.002, 0.02, 200e-9);
+        p.afterpulseProbability = 0.3;
+        p.afterpulseDelayS = 5e-9;
+        c.push_back({"weak signal, afterpulses", p, false});
+    }
+    {
+        auto p = base(0.002, 0.02, 200e-9);
+        p.gateShiftAtS = 900;
+        p.gateShiftS = 60e-9;
+        c.push_back({"weak signal, moving gate", p, false});
+    }
+    return c;
+}
+
+}  // namespace
+
+class TestSlrLunar : public QObject {
+    Q_OBJECT
+private slots:
+    // 18 kinds of lunar pass x seeds 1-10 (docs/slr-detection.md, "Issue 43: lunar passes"):
+    // - every pass without a signal (uniform noise; afterpulses; a 3 ns band at the gate's edge;
+    //   noise bursts; a gate that moves with its edge band) ends doubtful with no normal point;
+    // - a pass that publishes does so from kept points at most a third noise each, and at most
+    //   15 % over the adversarial kinds with a signal (measured 31 of 217, 14 %: afterpulses and a second
+    //   track put noise beside the track that the flanks do not measure; the rule bounds the
+    //   share the flanks' density predicts at 10 % a bin);
+    // - the four clean kinds publish on at least 9 seeds of 10 each (39 of 40 measured).
+    void adversarialLunarPassesAreDoubtfulOrRight() {
+        QTemporaryDir dir;
+        const bool verbose = qEnvironmentVariableIsSet("LWB_LUNAR_VERBOSE");
+        long long advKept = 0, advNoise = 0;
+        int cleanPublished = 0, noSignalDoubtful = 0, noSignalRuns = 0;
+        for (const Case& c : lunarCases()) {
+            int doubtful = 0, published = 0, worstSeed = 0;
+            double worst = 0;
+            long long ev = 0, sig = 0;
+            for (uint64_t seed = 1; seed <= 10; ++seed) {
+                const LunarOutcome o = runLunar(c.p, seed, dir.path());
+                ev += o.events;
+                sig += o.signal;
+                doubtful += o.doubtful;
+                if (verbose)
+                    qInfo("  seed %d: %s NPs %zu kept %lld noise %.2f%s %s", int(seed), o.doubtful ? "doubtful" : "ok",
+                          o.normalPoints, o.kept, o.noiseShare(), o.evidence.c_str(), o.doubt.substr(0, 90).c_str());
+                QVERIFY2(!o.doubtful || o.normalPoints == 0,
+                         qPrintable(QString("%1, seed %2: doubtful with normal points").arg(c.name).arg(seed)));
+                if (o.normalPoints == 0) continue;
+                ++published;
+                if (o.noiseShare() > worst) worst = o.noiseShare(), worstSeed = int(seed);
+                QVERIFY2(3 * o.keptNoise <= o.kept, qPrintable(QString("%1, seed %2: normal points from %3 kept points, %4 noise")
+                                                                   .arg(c.name).arg(seed).arg(o.kept).arg(o.keptNoise)));
+                if (!c.clean) advKept += o.kept, advNoise += o.keptNoise;
+            }
+            qInfo("%-45s events %6lld signal %5lld | doubtful %2d published %2d worst noise share %.2f (seed %d)", c.name,
+                  ev / 10, sig / 10, doubtful, published, worst, worstSeed);
+            if (c.clean) {
+                cleanPublished += published;
+                QVERIFY2(published >= 9, c.name);
+            }
+            if (c.p.returnProbability == 0) {
+                noSignalRuns += 10;
+                noSignalDoubtful += doubtful;
+                QVERIFY2(published == 0 && doubtful == 10, c.name);
+            }
+        }
+        qInfo("clean kinds: %d of 40 publish; no-signal kinds: %d of %d doubtful; adversarial kinds with a signal: "
+              "%lld of %lld kept points in published bins are noise", cleanPublished, noSignalDoubtful, noSignalRuns, advNoise, advKept);
+        QVERIFY(cleanPublished >= 38);
+        QVERIFY2(100 * advNoise <= 15 * advKept, qPrintable(QString("%1 of %2").arg(advNoise).arg(advKept)));
+    }
+
+    // The evidence of a bin on hand-made residuals: a dense track among sparse noise stands; the
+    // same track at the gate's edge, or among noise as dense as itself, does not.
+    void binEvidenceOnHandMadeBins() {
+        auto make = [](double trackAt, double noisePerNs, double gateLo, double gateHi, uint64_t seed) {
+            slr::PostfitResult post;
+            Rng rng(seed);
+            std::vector<double> t;
+            const int track = 30;
+            const long long noise = static_cast<long long>(noisePerNs * (gateHi - gateLo) * 1e9);
+            for (int i = 0; i < track; ++i) {
+                t.push_back(rng.uniform(0, 900));
+                post.residuals.push_back(trackAt + 150e-12 * rng.normal());
+            }
+            for (long long i = 0; i < noise; ++i) {
+                t.push_back(rng.uniform(0, 900));
+                post.residuals.push_back(rng.uniform(gateLo, gateHi));
+            }
+            post.stats.rms = 150e-12;
+            slr::NormalPoint np;
+            np.binStartS = 0;
+            np.windowS = 900;
+            post.normalPoints.push_back(np);
+            return std::make_pair(t, post);
+        };
+        {
+            const auto [t, post] = make(0, 1, -100e-9, 100e-9, 1);  // 30 on a track, 200 over 200 ns
+            const auto e = slr::normalPointEvidence(t, post);
+            QCOMPARE(e.size(), size_t(1));
+            QVERIFY2(e[0].why.empty(), e[0].why.c_str());
+            QVERIFY(e[0].expectedNoise < 3 && e[0].pValue < 1e-10 && e[0].edgeRoom > 20);
+        }
+        {
+            const auto [t, post] = make(0, 1, -0.5e-9, 100e-9, 2);  // the gate opens at the track
+            const auto e = slr::normalPointEvidence(t, post);
+            QVERIFY2(e[0].why.find("edge of the gate") != std::string::npos, e[0].why.c_str());
+        }
+        {
+            const auto [t, post] = make(0, 30, -100e-9, 100e-9, 3);  // 27 noise a window: 30 on it is no track
+            const auto e = slr::normalPointEvidence(t, post);
+            QVERIFY2(!e[0].why.empty(), "a track as dense as the noise stood");
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSlrLunar)
+#include "test_slr_lunar.moc"
