@@ -44,11 +44,12 @@ struct Pass {
     slr::SlrSources sources;         ///< what load_pass was given (the pass's file, prediction, stations)
 };
 
-/// A pass's run: its settings, the task's outputs, and the set-up it ran with (its sources also
-/// name the pass's prediction: what the report's command gives the CLI).
+/// A pass's run: its settings, the task's outputs, the set-up it ran with and the sources the
+/// pass was loaded with (the report names both: core passReportOfLoaded).
 struct PassRun {
     std::shared_ptr<const slr::PassData> pass;
     std::shared_ptr<const slr::SlrSetup> setup;
+    slr::SlrSources opened;
     std::vector<std::string> openingNotes;  ///< load_pass's warnings, then its notes
     slr::PassSettings settings;
     slr::PassRunResult r;
@@ -140,7 +141,7 @@ PassRun runPass(const Pass& pass, const py::object& params, const py::object& pr
     if (!stations.is_none()) src.stations = fsPath(stations);
     gatherParams(params, &src);
     src.searchThreads = threadCount(threads);
-    auto setup = std::make_shared<slr::SlrSetup>(setUp(src));
+    auto setup = std::make_shared<const slr::SlrSetup>(setUp(src));
     slr::ResolvedRun done;
     {
         py::gil_scoped_release nogil;
@@ -151,13 +152,7 @@ PassRun runPass(const Pass& pass, const py::object& params, const py::object& pr
     run.pass = pass.data;
     run.openingNotes = pass.warnings;
     run.openingNotes.insert(run.openingNotes.end(), pass.notes.begin(), pass.notes.end());
-    // The O-C's prediction is the pass's (load_pass read it): named with the run's sources when
-    // the run has the same stations, the shape of the CLI's --cpf with --stations.
-    if (!pass.sources.cpf.empty()) {
-        if (pass.sources.stations == setup->sources.stations) setup->sources.cpf = pass.sources.cpf;
-        else run.openingNotes.push_back("O-C from the prediction " + pass.sources.cpf + " with the stations " + pass.sources.stations +
-                                        ", which this run was not given: the command below has no prediction");
-    }
+    run.opened = pass.sources;
     run.setup = std::move(setup);
     run.settings = std::move(done.settings);
     run.r = std::move(done.result);
@@ -212,10 +207,10 @@ void writeProducts(const PassRun& run, const std::string& csv, const std::string
     if (!outs.check()) throw Error(outs.error());
     // The report as the CLI's --report-out makes it: the run's set-up, with the station's
     // normal points read by the core (--station-np).
-    slr::SlrSetup setup = *run.setup;
+    slr::PassReport rep;
     slr::SlrError e;
-    if (!slr::setStationNormalPoints(&setup, stationNp, &e)) raise(e);
-    const slr::PassReport rep = slr::passReportOf(setup, pass, run.settings, run.openingNotes);
+    if (!report.empty() && !slr::passReportOfLoaded(*run.setup, run.opened, pass, run.settings, run.openingNotes, stationNp, &rep, &e))
+        raise(e);
     const slr::PassProductPaths paths{csv, crd, npt, true, report, report.empty() ? nullptr : &rep};
     if (const std::string why = slr::productsProblem(pass, run.settings, paths); !why.empty()) throw ParameterError(why);
     std::string err;

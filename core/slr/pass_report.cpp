@@ -580,6 +580,19 @@ PassReport passReportOf(const SlrSetup& setup, const PassData& pass, const PassS
     return r;
 }
 
+bool passReportOfLoaded(const SlrSetup& run, const SlrSources& opened, const PassData& pass, const PassSettings& settings,
+                        std::vector<std::string> notes, const std::string& stationNp, PassReport* out, SlrError* error) {
+    SlrSetup s = run;
+    if (!opened.cpf.empty()) {
+        if (opened.stations == run.sources.stations) s.sources.cpf = opened.cpf;
+        else notes.push_back("O-C from the prediction " + opened.cpf + " with the stations " + opened.stations +
+                             ", which this run was not given: the command below has no prediction");
+    }
+    if (!setStationNormalPoints(&s, stationNp, error)) return false;
+    *out = passReportOf(s, pass, settings, std::move(notes));
+    return true;
+}
+
 bool writePassReport(const std::string& path, const PassData& pass, const PassRunResult& run, const PassReport& report,
                      std::string* error) {
     if (!report.settings) {

@@ -38,6 +38,14 @@ struct PassReport {
 PassReport passReportOf(const SlrSetup& setup, const PassData& pass, const PassSettings& settings,
                         std::vector<std::string> notes);
 
+/// The report of a pass loaded with the sources `opened` and run later with the set-up `run`
+/// (Python's load_pass, then run): passReportOf with the prediction the pass was opened with
+/// named as the CLI's --cpf where the run has the same stations (else a note says the command
+/// cannot carry it), and the station's normal points `stationNp` ("" none) read by the core.
+/// False with *error (FILE:LINE).
+bool passReportOfLoaded(const SlrSetup& run, const SlrSources& opened, const PassData& pass, const PassSettings& settings,
+                        std::vector<std::string> notes, const std::string& stationNp, PassReport* out, SlrError* error);
+
 /// Writes the report of `pass` screened as `run` to `path` (the caller's staging file) as a
 /// one-page A4 PDF. False with *error when cairo cannot write it.
 bool writePassReport(const std::string& path, const PassData& pass, const PassRunResult& run, const PassReport& report,
