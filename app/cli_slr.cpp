@@ -193,7 +193,9 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
     if (!pass.satellite.empty()) std::cerr << " (" << pass.satellite << (pass.station.empty() ? "" : " from " + pass.station) << ")";
     std::cerr << ": O-C from " << pass.ocOrigin << (settings.presetName.empty() ? "" : "; preset " + settings.presetName) << "\n"
               << "  points " << pass.t.size() << ", accepted " << r.acceptedCount << " (" << s.signalPoints << " signal + "
-              << s.recoveredPoints << " recovered), noise " << s.noisePoints << "\n"
+              << s.recoveredPoints << " recovered"
+              << (r.bandTaken ? " + " + std::to_string(r.bandTaken) + " within the post-fit's band" : std::string())
+              << "), noise " << s.noisePoints << "\n"
               << "  scale: mag_T " << core::formatDouble(s.magT, 4) << mark(s.autoMagT) << ", mag_OC "
               << core::formatDouble(s.magOc, 4) << mark(s.autoMagOc) << ", area limit " << s.areaLimit << mark(s.autoArea)
               << ", connectivity " << s.connectivity << mark(s.autoConnectivity) << ", C "
@@ -209,6 +211,11 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
                   << "-sigma rejection removed " << post.rejected << " of " << post.used << ", RMS "
                   << ps(post.stats.rms) << " (" << core::formatFixed(post.stats.rms * 0.5 * 299792458.0 * 1e3, 1)
                   << " mm one-way)\n";
+        if (std::isfinite(post.noiseBandS))
+            std::cerr << "  band narrowed by the noise beside it (" << core::formatDouble(post.noiseDensity * 1e-9, 3)
+                      << " points per ns): +-" << ps(post.noiseBandS) << " = "
+                      << core::formatFixed(post.noiseBandS / post.signalSigmaS, 2) << " sigma of the signal's "
+                      << ps(post.signalSigmaS) << ", the band of the best expected F1\n";
         if (post.normalPoints.empty() && !r.postNote.empty())
             std::cerr << "  " << r.postNote << "\n";
         else

@@ -28,12 +28,13 @@ const char* slrKindName(SlrKind k) {
         case SlrKind::Conventional: return "conventional";
         case SlrKind::Diffuse: return "diffuse";
         case SlrKind::Leo: return "leo";
+        case SlrKind::Daylight: return "daylight";
     }
     return "?";
 }
 
 bool parseSlrKind(const std::string& s, SlrKind* out) {
-    for (SlrKind k : {SlrKind::Khz, SlrKind::Conventional, SlrKind::Diffuse, SlrKind::Leo})
+    for (SlrKind k : {SlrKind::Khz, SlrKind::Conventional, SlrKind::Diffuse, SlrKind::Leo, SlrKind::Daylight})
         if (toLower(s) == slrKindName(k)) {
             *out = k;
             return true;
@@ -91,6 +92,21 @@ SlrSimParams slrSimPreset(SlrKind kind) {
             p.velocityKmS = 7.2;
             p.rangeBiasMaxS = 50e-9;
             p.timeBiasMaxS = 2e-3;
+            break;
+        case SlrKind::Daylight:  // low-SNR 20 Hz ranging to a LEO satellite by day (issue 43)
+            p.fireRateHz = 20;
+            p.returnProbability = 0.03;
+            p.noiseRateNightHz = 2;
+            p.noiseRateDayHz = 20;
+            p.gateS = 400e-9;
+            p.jitterS = 150e-12;
+            p.tailS = 0;
+            p.durationS = 900;
+            p.altitudeKm = 1500;
+            p.tcaDistanceKm = 2000;
+            p.velocityKmS = 7.1;
+            p.rangeBiasMaxS = 20e-9;
+            p.timeBiasMaxS = 1e-3;
             break;
     }
     return p;

@@ -11,7 +11,9 @@
 // LAGEOS (60 % returns, 80 ps, 1 µs gate, 0.3 / 2 noise/s); diffuse (debris) ranging (20 Hz,
 // 15 %, 2 ns, 10 µs gate, 3 / 20 noise/s); leo: 10 Hz multi-photon ranging to a low-orbit
 // altimetry satellite (Jason class, 1336 km) on a low pass from a noisy station (50 % returns,
-// 60 ps, 10 µs gate, 20 / 60 noise/s). signalFraction overrides the noise rate so that
+// 60 ps, 10 µs gate, 20 / 60 noise/s); daylight: low-SNR 20 Hz ranging to a LEO satellite by
+// day (issue 43: 3 % returns, 150 ps, 400 ns gate, 2 / 20 noise/s, 15 min; by day about 3 % of
+// the points are signal). signalFraction overrides the noise rate so that
 // signal / all = fraction (down to 3 % and below).
 //
 // Hard passes (issue 13): an extra O-C drift (a steep, curved track as against a poor
@@ -24,8 +26,8 @@
 
 namespace lwb::core::sim {
 
-enum class SlrKind { Khz, Conventional, Diffuse, Leo };
-const char* slrKindName(SlrKind k);                   ///< "khz", "conventional", "diffuse", "leo"
+enum class SlrKind { Khz, Conventional, Diffuse, Leo, Daylight };
+const char* slrKindName(SlrKind k);  ///< "khz", "conventional", "diffuse", "leo", "daylight"
 bool parseSlrKind(const std::string& s, SlrKind* out);
 
 /// A gap in the track: no signal from startS to startS + lengthS (seconds from the first shot).

@@ -502,6 +502,27 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
         r.post = postfit(pass.t, pass.oc, r.accepted, pass.tof, pp, fb);
         if (cancelled(fb)) return r;
         r.postOk = r.post.ok;
+        // Where the binary image stopped, the trend goes on: the points within its band are
+        // taken and the trend fitted again with them (once). Only where the noise beside the
+        // band was measured and the band set by it (PostfitResult::noiseDensity), so that what
+        // the band takes is known to be more signal than noise: on a sparse lunar pass a k·σ
+        // band about a trend of a few returns takes noise (issue 43's adversarial passes).
+        // Not on a filtered pass, whose screening already kept everything within 5 sigma.
+        if (r.post.ok && pp.takeBand && !r.screen.floorless && std::isfinite(r.post.noiseDensity)) {
+            const std::vector<uint32_t> more = pointsInBand(pass.t, r.post, r.accepted, in.forced);
+            if (!more.empty()) {
+                std::vector<uint8_t> accepted = r.accepted;
+                for (uint32_t i : more) accepted[i] = 1;
+                PostfitResult again = postfit(pass.t, pass.oc, accepted, pass.tof, pp, fb);
+                if (cancelled(fb)) return r;
+                if (again.ok) {
+                    r.accepted = std::move(accepted);
+                    r.acceptedCount += more.size();
+                    r.bandTaken = static_cast<long long>(more.size());
+                    r.post = std::move(again);
+                }
+            }
+        }
         if (!r.post.ok) r.postNote = "post-fit not done: " + r.post.error;
     } else {
         r.post.error = std::to_string(r.acceptedCount) + " point(s) accepted";
@@ -537,6 +558,20 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.ok = true;
     return r;
+}
+
+std::vector<uint32_t> pointsInBand(const std::vector<double>& t, const PostfitResult& post,
+                                   const std::vector<uint8_t>& accepted, const std::vector<int8_t>& forced) {
+    std::vector<uint32_t> out;
+    if (!(post.limitS > 0) || post.residuals.size() != t.size() || accepted.size() != t.size()) return out;
+    for (size_t i = 0; i < t.size(); ++i) {
+        if (accepted[i] || (i < forced.size() && forced[i] < 0)) continue;
+        if (!(std::fabs(post.residuals[i]) <= post.limitS)) continue;
+        const bool inside = std::any_of(post.segments.begin(), post.segments.end(),
+                                        [&](const TrendSegment& g) { return t[i] >= g.tStart && t[i] <= g.tEnd; });
+        if (inside) out.push_back(static_cast<uint32_t>(i));
+    }
+    return out;
 }
 
 PassRunResult runPass(const PassData& pass, const SlrParams& params, Feedback* fb) {

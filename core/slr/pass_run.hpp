@@ -124,6 +124,9 @@ struct PassRunResult {
     bool screenReused = false;         ///< the earlier run's screening was reused (only post-fit or edits changed)
     bool scaleReused = false;          ///< screened at the scales an earlier run chose (only C changed)
     PassBias bias;                     ///< range and time bias against the prediction (CPF O-C only)
+    /// Points the screening left out that the post-fit's band took (PostfitParams::takeBand);
+    /// they are in `accepted`, not in `screen`.
+    long long bandTaken = 0;
     /// One per normal point the post-fit formed (before any was dropped), on a pass with a noise
     /// floor and no other doubt: why each stands or not (normalPointEvidence).
     std::vector<BinEvidence> binEvidence;
@@ -196,6 +199,11 @@ struct PassTask {
     using Outputs = PassRunResult;
     static PassRunResult run(const Inputs& in, const SlrParams& params, const Reuse& reuse, Feedback* fb);
 };
+
+/// The points outside `accepted` within the post-fit's final band (|residual| ≤ post.limitS)
+/// and inside one of its trend segments' spans, less those an edit forced out (forced < 0).
+std::vector<uint32_t> pointsInBand(const std::vector<double>& t, const PostfitResult& post,
+                                   const std::vector<uint8_t>& accepted, const std::vector<int8_t>& forced);
 
 /// PassTask from scratch on `pass` (no edits, nothing reused).
 PassRunResult runPass(const PassData& pass, const SlrParams& params, Feedback* fb = nullptr);

@@ -139,6 +139,22 @@ ResidualStats residualStats(const std::vector<double>& r) {
     return s;
 }
 
+double bestExpectedF1Band(double sigmaS, double signal, double density) {
+    if (!(sigmaS > 0) || !(signal > 0) || !std::isfinite(sigmaS)) return NAN;
+    if (!(density > 0)) return INFINITY;
+    double best = NAN, bestF1 = -1;
+    for (int k = 150; k <= 600; ++k) {
+        const double w = sigmaS * k / 100.0;
+        const double s = signal * std::erf(w / (sigmaS * std::sqrt(2.0)));
+        const double f1 = 2 * s / (s + 2 * w * density + signal);
+        if (f1 > bestF1) {
+            bestF1 = f1;
+            best = w;
+        }
+    }
+    return best;
+}
+
 namespace {
 const TrendSegment* segmentFor(const std::vector<TrendSegment>& segs, double t) {
     if (segs.empty()) return nullptr;
@@ -381,7 +397,7 @@ public:
                 return false;
             }
             if (k == 0) break;
-            if (!reject(k * res_->sigmaS)) break;
+            if (!reject(std::min(k * res_->sigmaS, cap_))) break;
             if (it == p_.maxIterations) {
                 res_->converged = false;
                 res_->warnings.push_back("the " + formatDouble(k, 3) + "-sigma rejection did not settle in " +
@@ -390,6 +406,10 @@ public:
         }
         return true;
     }
+
+    /// The rejection's limit is at most this (s) from now on (PostfitParams::noiseBand).
+    void capLimit(double limitS) { cap_ = limitS; }
+    double limit() const { return std::min(p_.rejectSigma * res_->sigmaS, cap_); }
 
 private:
     struct Incremental {
@@ -639,6 +659,7 @@ private:
     std::vector<double> pb_, basis_ = std::vector<double>(32);
     std::vector<int> frozen_;
     bool warnedDegree_ = false, incremental_ = false;
+    double cap_ = INFINITY;
     std::vector<Incremental> inc_;
     std::vector<uint8_t> inFit_;
 };
@@ -646,6 +667,7 @@ private:
 // Stage 5: the segments' trends into the result; the longest segment's as the pass's trend.
 void collectTrend(const std::vector<Seg>& segs, PostfitResult* res) {
     res->degree = 0;
+    res->segments.clear();
     size_t longest = 0;
     for (size_t gi = 0; gi < segs.size(); ++gi) {
         res->degree = std::max(res->degree, segs[gi].trend.degree);
@@ -655,6 +677,74 @@ void collectTrend(const std::vector<Seg>& segs, PostfitResult* res) {
     res->tCenter = segs[longest].trend.tCenter;
     res->tHalfSpan = segs[longest].trend.tHalfSpan;
     res->coefficients = segs[longest].trend.coefficients;
+}
+
+// Stage 4b (PostfitParams::noiseBand): the band of the best expected F1 when the noise beside
+// the kept band is measurable, else INFINITY. `limit` is the band the rejection last used.
+// Every point of the pass within the kept points' time span is set against the trend; the
+// noise's density is counted beside the band, from 2 to 2 + 40 kept-RMS widths out on each side,
+// each side clipped to where the pass has points (the gate as the data show it). The kept
+// points hold the signal within ±limit plus the noise's 2·limit·λ: taking that noise out of
+// their count and of their sum of squares (uniform: limit²/3 each), and the truncation of a
+// Gaussian at ±limit, gives the signal's σ and count.
+double noiseBandLimit(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& used,
+                      double limit, PostfitResult* res) {
+    const size_t n = t.size();
+    double t0 = INFINITY, t1 = -INFINITY, ss = 0;
+    long long nk = 0;
+    for (size_t i = 0; i < n; ++i)
+        if (res->kept[i]) {
+            t0 = std::min(t0, t[i]);
+            t1 = std::max(t1, t[i]);
+            ss += res->residuals[i] * res->residuals[i];
+            ++nk;
+        }
+    if (nk < 10 || !(limit > 0) || !std::isfinite(limit)) return INFINITY;
+    const double rms = std::sqrt(ss / static_cast<double>(nk));
+    std::vector<double> tu, r;
+    std::vector<size_t> iu;
+    for (size_t i = 0; i < n; ++i) {
+        if (used[i]) {
+            r.push_back(res->residuals[i]);
+        } else if (std::isfinite(t[i]) && std::isfinite(oc[i]) && t[i] >= t0 && t[i] <= t1) {
+            tu.push_back(t[i]);
+            iu.push_back(i);
+        }
+    }
+    std::vector<double> yu(tu.size());
+    evaluateTrendMany(*res, tu.data(), tu.size(), yu.data());
+    for (size_t k = 0; k < tu.size(); ++k) r.push_back(oc[iu[k]] - yu[k]);
+    const double a = 2 * limit, b = a + 40 * rms;
+    double hi = -INFINITY, lo = INFINITY;
+    for (double x : r) {
+        hi = std::max(hi, x);
+        lo = std::min(lo, x);
+    }
+    const double upTo = std::min(b, hi), downTo = std::min(b, -lo);
+    const double width = std::max(0.0, upTo - a) + std::max(0.0, downTo - a);
+    long long flank = 0;
+    for (double x : r) flank += (x >= a && x <= upTo) || (-x >= a && -x <= downTo);
+    if (flank < kNoiseBandMinFlank || !(width > 0)) return INFINITY;
+    const double lambda = static_cast<double>(flank) / width;
+    const double noiseIn = std::min(0.8 * static_cast<double>(nk), lambda * 2 * limit);
+    const double nsIn = static_cast<double>(nk) - noiseIn;
+    const double ssSignal = ss - noiseIn * limit * limit / 3;
+    if (!(ssSignal > 0) || nsIn < 5) return INFINITY;
+    // σ² of the untruncated Gaussian from the truncated second moment, by fixed point.
+    const double m2 = ssSignal / nsIn;
+    double sigma = std::sqrt(m2);
+    for (int k = 0; k < 20; ++k) {
+        const double z = limit / sigma, mass = std::erf(z / std::sqrt(2.0));
+        const double shrink = 1 - 2 * z * std::exp(-z * z / 2) / std::sqrt(2 * M_PI) / std::max(mass, 1e-12);
+        if (!(shrink > 0.05)) break;
+        sigma = std::sqrt(m2 / shrink);
+    }
+    const double signal = nsIn / std::max(1e-12, std::erf(limit / sigma / std::sqrt(2.0)));
+    const double w = bestExpectedF1Band(sigma, signal, lambda);
+    if (!std::isfinite(w)) return INFINITY;
+    res->signalSigmaS = sigma;
+    res->noiseDensity = lambda;
+    return w;
 }
 
 // Stage 6: the residuals of the points not fitted (against the trend), the statistics of the
@@ -783,8 +873,21 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
     if (res.used > 0 && t[ord.front()] == t[ord.back()] && p.degree > 0)
         res.warnings.push_back("all accepted epochs are equal: the trend is a constant");
     res.residuals.assign(n, NAN);
-    if (!TrendIteration(t, oc, ord, segs, p, &res).run(fb)) return res;
+    TrendIteration iteration(t, oc, ord, segs, p, &res);
+    if (!iteration.run(fb)) return res;
     collectTrend(segs, &res);
+    // The noise beside the band may call for a narrower one (at most twice: the trend moves
+    // little once the band is set).
+    for (int round = 0; round < 2 && p.noiseBand && !p.trendOnly && p.rejectSigma > 0; ++round) {
+        const double lim = iteration.limit();
+        const double w = noiseBandLimit(t, oc, used, lim, &res);
+        if (!(w < 0.99 * lim)) break;
+        res.noiseBandS = w;
+        iteration.capLimit(w);
+        if (!iteration.run(fb)) return res;
+        collectTrend(segs, &res);
+    }
+    res.limitS = p.rejectSigma > 0 ? iteration.limit() : NAN;
     if (p.trendOnly) {
         res.rejected = res.used - std::count(res.kept.begin(), res.kept.end(), uint8_t{1});
         if (res.rejected == res.used) {

@@ -112,6 +112,12 @@ const Schema<SlrParams>& slrSchema() {
         s.real("postfit.reject_sigma", LWB_FIELD(S, postfit.rejectSigma), "sigma", {1, 10}, {2, 4},
                "k of the k-sigma rejection: 2.5 single-photon, 3 multi-photon (ILRS); 0 = off")
             .specials = {{0, "off"}};
+        s.boolean("postfit.noise_band", LWB_FIELD(S, postfit.noiseBand),
+                  "narrow the k-sigma band where the noise beside the track is measurable: the band of the best "
+                  "expected F1 (the signal's sigma with that noise taken out), never wider than k sigma");
+        s.boolean("postfit.take_band", LWB_FIELD(S, postfit.takeBand),
+                  "take the points the screening left out that lie within the final band about the trend "
+                  "(inside its segments), and fit again with them");
         s.integer("postfit.max_iterations", LWB_FIELD(S, postfit.maxIterations), "", {1, 1000}, {5, 50}, "fit-reject iterations");
         s.real("postfit.bin_length_s", LWB_FIELD(S, postfit.binLengthS), "s", {0.1, 86400}, {5, 300},
                "normal-point bin length; 0 = from the altitude (ILRS table)")

@@ -34,7 +34,7 @@ _laserwb_cli() {
             COMPREPLY=($(compgen -W "$keys" -- "$cur"))
             return ;;
         --method) COMPREPLY=($(compgen -W "gauss tefm gcm" -- "$cur")); return ;;
-        --kind) COMPREPLY=($(compgen -W "khz conventional diffuse leo" -- "$cur")); return ;;
+        --kind) COMPREPLY=($(compgen -W "khz conventional diffuse leo daylight" -- "$cur")); return ;;
         --out-dir) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     esac
     if [[ $cur == -* ]]; then

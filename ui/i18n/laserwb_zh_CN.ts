@@ -4173,6 +4173,14 @@
         <translation>&lt;b&gt;接受&lt;/b&gt; %1 / %2（信号 %3，恢复 %4），后拟合保留 %5，剔除 %6&lt;br&gt;&lt;b&gt;RMS&lt;/b&gt; %7 ps（单程 %8 mm）· 偏度 %9 · 峰度 %10 · 峰值−均值 %11 ps&lt;br&gt;</translation>
     </message>
     <message>
+        <source>%1 more points within the post-fit's band (where the image stopped)&lt;br&gt;</source>
+        <translation>另有 %1 个点位于后拟合带内（二值图像未及之处）&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Band narrowed by the noise beside it: ±%1 ps = %2 σ of the signal's %3 ps (best expected F1)&lt;br&gt;</source>
+        <translation>带宽因旁侧噪声收窄：±%1 ps = 信号 %3 ps 的 %2 σ（期望 F1 最佳）&lt;br&gt;</translation>
+    </message>
+    <message>
         <source>&lt;b&gt;Normal points&lt;/b&gt; %1 (bins of %2 s)</source>
         <translation>&lt;b&gt;标准点&lt;/b&gt; %1 个（分段长 %2 s）</translation>
     </message>
@@ -5185,6 +5193,22 @@
     <message>
         <source>k of the k-sigma rejection: 2.5 single-photon, 3 multi-photon (ILRS); 0 = off</source>
         <translation>k 倍 σ 剔除中的 k：单光子取 2.5，多光子取 3（ILRS）；0 = 关闭</translation>
+    </message>
+    <message>
+        <source>noise band</source>
+        <translation>噪声带</translation>
+    </message>
+    <message>
+        <source>narrow the k-sigma band where the noise beside the track is measurable: the band of the best expected F1 (the signal's sigma with that noise taken out), never wider than k sigma</source>
+        <translation>在轨迹旁的噪声可测时收窄 k 倍 σ 带：取期望 F1 最佳的带宽（信号的 σ 扣除该噪声后求得），不宽于 k 倍 σ</translation>
+    </message>
+    <message>
+        <source>take band</source>
+        <translation>带内取点</translation>
+    </message>
+    <message>
+        <source>take the points the screening left out that lie within the final band about the trend (inside its segments), and fit again with them</source>
+        <translation>将筛选遗漏、但位于趋势最终带内（各分段范围内）的点纳入，并据此重新拟合</translation>
     </message>
     <message>
         <source>fit-reject iterations</source>

@@ -1132,10 +1132,11 @@ void SlrWorkspace::drawMainPlot(const SlrRun& run, bool residual) {
             jx << x;
             jy << y;
             m_class[int(i)] = "rejected by the post-fit";
-        } else if (s.pointClass[i] == PointClass::Recovered) {
+        } else if (s.pointClass[i] == PointClass::Recovered || s.pointClass[i] == PointClass::Noise) {
+            // (accepted where the screening said noise: taken within the post-fit's band, or an edit)
             rx << x;
             ry << y;
-            m_class[int(i)] = "recovered";
+            m_class[int(i)] = s.pointClass[i] == PointClass::Recovered ? "recovered" : "within the post-fit's band";
         } else {
             sx << x;
             sy << y;
@@ -1401,6 +1402,13 @@ QString SlrWorkspace::summaryHtml(const SlrRun& run) const {
                          .arg(st.skew, 0, 'f', 2)
                          .arg(st.kurtosis, 0, 'f', 2)
                          .arg(st.peakMinusMean * 1e12, 0, 'f', 1);
+        if (run.bandTaken > 0)
+            statsHtml += tr("%1 more points within the post-fit's band (where the image stopped)<br>").arg(run.bandTaken);
+        if (std::isfinite(run.post.noiseBandS))
+            statsHtml += tr("Band narrowed by the noise beside it: ±%1 ps = %2 σ of the signal's %3 ps (best expected F1)<br>")
+                             .arg(run.post.noiseBandS * 1e12, 0, 'f', 1)
+                             .arg(run.post.noiseBandS / run.post.signalSigmaS, 0, 'f', 2)
+                             .arg(run.post.signalSigmaS * 1e12, 0, 'f', 1);
         if (run.postNote.empty()) {
             statsHtml += tr("<b>Normal points</b> %1 (bins of %2 s)").arg(run.post.normalPoints.size()).arg(run.post.binLengthS, 0, 'f', 0);
         } else {
