@@ -711,12 +711,6 @@ private slots:
                 ++k;
             }
         }
-        if (file.startsWith("7080_JASON1"))
-            QEXPECT_FAIL("JASON1", "known: the station's last two NPs (13 and 2 ranges) come from the 13 flag-2 ranges at "
-                                   "74362-74374 s, so its bins there are not the 15 s bins aligned to 0h UTC; the aligned bin "
-                                   "holds 11 of them and differs by 7.5 mm, which alone takes the pass over 2 mm mean and 3 mm RMS (the "
-                                   "other four NPs: |d| <= 1.6 mm)",
-                         Continue);
         if (file.startsWith("7080_Beacon-C"))
             QEXPECT_FAIL("Beacon-C", "known: without a prediction the O-C (against a fitted TOF trend) bends by nanoseconds in "
                                      "the first 10 s; the station keeps two ranges there 6.5 and 3.7 ns off any smooth trend "

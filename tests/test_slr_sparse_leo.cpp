@@ -88,6 +88,7 @@ SparseOutcome runSparse(const sim::SparseLeoParams& sp, uint64_t seed, bool orbi
     // The ILRS bin of the true altitude; the night minimum of 3 points a bin (a sparse pass).
     set.params.postfit.binLengthS = normalPointBinS(sp.altitudeKm);
     set.params.postfit.dayNight = PostfitParams::DayNight::Night;
+    if (qEnvironmentVariableIsSet("LWB_SPLIT")) set.params.postfit.splitGapS = qEnvironmentVariable("LWB_SPLIT").toDouble();
     const PassRunResult run = runPass(in.pass, set.params);
     if (!run.ok || !run.postOk) {
         o.error = run.ok ? run.postNote : run.error;
