@@ -195,7 +195,7 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
               << "  points " << pass.t.size() << ", accepted " << r.acceptedCount << " (" << s.signalPoints << " signal + "
               << s.recoveredPoints << " recovered"
               << (r.bandTaken ? " + " + std::to_string(r.bandTaken) + " within the post-fit's band" : std::string())
-              << "), noise " << s.noisePoints << "\n"
+              << "), noise " << pass.t.size() - r.acceptedCount << "\n"
               << "  scale: mag_T " << core::formatDouble(s.magT, 4) << mark(s.autoMagT) << ", mag_OC "
               << core::formatDouble(s.magOc, 4) << mark(s.autoMagOc) << ", area limit " << s.areaLimit << mark(s.autoArea)
               << ", connectivity " << s.connectivity << mark(s.autoConnectivity) << ", C "
@@ -229,6 +229,7 @@ void printSummary(const std::string& what, const slr::PassData& pass, const slr:
                                                                                 ? " (day)"
                                                                                 : " (day: day or night unknown)"))
                       << (post.binsTooSmall ? ", " + std::to_string(post.binsTooSmall) + " bins too small" : "") << ")\n";
+        if (!post.normalPoints.empty() && !r.postNote.empty()) std::cerr << "  " << r.postNote << "\n";
         for (const auto& note : settings.notes) std::cerr << "  " << note << "\n";
     }
     if (r.bias.ok) std::cerr << "  against the prediction: " << slr::describeBias(r.bias) << "\n";

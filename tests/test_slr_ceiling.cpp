@@ -7,6 +7,7 @@
 // (the tables in docs/slr-detection.md used 10); LWB_CEILING_BEFORE=1 turns postfit.noise_band and
 // postfit.take_band off (the "before" column); LWB_CEILING_DEBUG=1 says where the returns were lost.
 #include <QtTest>
+#include <QTemporaryDir>
 #include <cmath>
 
 #include "core/sim/slr_eval.hpp"
@@ -157,6 +158,50 @@ private slots:
         }
         qInfo("%-24s mean F1 %.4f ceiling %.4f, worst gap %+.4f", c.name, sumF1 / seeds, sumCeil / seeds, worstGap);
         QVERIFY2(worstGap <= 0.015, qPrintable(QString("%1: F1 %2 below its ceiling").arg(c.name).arg(worstGap)));
+    }
+
+    // The points the post-fit's band takes are a class of their own, the same in the run, the
+    // CLI's CSV and its summary: "band" rows exactly where the run took them, accepted exactly
+    // where the class is not noise, and the summary's noise count the points not accepted (it
+    // had counted the band's points both as accepted and as noise).
+    void bandPointsAreAClassEverywhere() {
+        QTemporaryDir dir;
+        const QString frd = dir.path() + "/day7.frd";
+        lwbtest::CliRun sim = lwbtest::runCli({"simulate", "slr", "--kind", "daylight", "--day", "--seed", "7", "-q", frd});
+        QVERIFY2(sim.exitCode == 0, qPrintable(sim.err));
+        const PassInputResult in = loadPass(frd.toStdString(), 0, PassInputParams{});
+        QVERIFY2(in.ok, in.error.c_str());
+        PassSettings set;
+        std::string err;
+        QVERIFY2(passSettings(in.pass, commandDefaults(), nullptr, "", nullptr, &set, &err), err.c_str());
+        const PassRunResult r = runPass(in.pass, set.params);
+        QVERIFY2(r.ok && r.postOk, r.error.c_str());
+        QVERIFY2(r.bandTaken > 0, "the low-SNR pass of seed 7 has returns the image left within the band");
+        QCOMPARE(r.classes.size(), in.pass.t.size());
+        long long band = 0;
+        for (size_t i = 0; i < r.classes.size(); ++i) {
+            band += r.classes[i] == PointClass::Band;
+            QCOMPARE(bool(r.accepted[i]), r.classes[i] != PointClass::Noise);
+            if (r.classes[i] == PointClass::Band) QCOMPARE(r.screen.pointClass[i], PointClass::Noise);
+        }
+        QCOMPARE(band, r.bandTaken);
+        const QString csv = dir.path() + "/day7.csv";
+        lwbtest::CliRun cli = lwbtest::runCli({"slr", frd, "-o", csv});
+        QVERIFY2(cli.exitCode == 0, qPrintable(cli.err));
+        const QList<QByteArray> rows = lwbtest::readAll(csv).split('\n');
+        long long csvBand = 0;
+        for (qsizetype k = 1; k < rows.size(); ++k) {
+            const QList<QByteArray> f = rows[k].split(',');
+            if (f.size() < 4) continue;
+            const size_t i = size_t(k - 1);
+            QVERIFY(i < r.classes.size());
+            QCOMPARE(f[3].toStdString(), std::string(pointClassName(r.classes[i])));
+            csvBand += f[3] == "band";
+        }
+        QCOMPARE(csvBand, r.bandTaken);
+        QVERIFY2(cli.err.contains(QString("accepted %1 (").arg(r.acceptedCount)) &&
+                     cli.err.contains(QString(" + %1 within the post-fit's band), noise %2\n").arg(r.bandTaken).arg(qulonglong(in.pass.t.size() - r.acceptedCount))),
+                 qPrintable(cli.err));
     }
 
     // The shared real passes with a noise floor, against the station's own filter flags (2 data,

@@ -238,7 +238,7 @@ private slots:
         QCOMPARE(rows.size(), sp.ranges.size());  // one row per type-10 record
         for (size_t i = 0; i < rows.size(); ++i) {
             QCOMPARE(rows[i].index, long(i));
-            QVERIFY(rows[i].cls == "signal" || rows[i].cls == "recovered" || rows[i].cls == "noise");
+            QVERIFY(rows[i].cls == "signal" || rows[i].cls == "recovered" || rows[i].cls == "band" || rows[i].cls == "noise");
             QCOMPARE(rows[i].flag, sp.ranges[i].filterFlag);
             QVERIFY(std::fabs(rows[i].t - sp.ranges[i].secOfDay) < 1e-6);
             if (rows[i].kept) QVERIFY(rows[i].cls != "noise");  // the post-fit keeps accepted points only
@@ -589,12 +589,12 @@ private slots:
         screen.pointClass.assign(3, PointClass::Signal);
         const std::string out = p("nofit.csv").toStdString();
         std::string err;
-        QVERIFY(!writeScreenCsv(out, pass, screen, std::vector<uint8_t>(3, 1), nullptr, &err));
+        QVERIFY(!writeScreenCsv(out, pass, screen, screen.pointClass, nullptr, &err));
         QVERIFY2(err.find("point 2") != std::string::npos && err.find("too large") != std::string::npos, err.c_str());
         QVERIFY(!QFile::exists(p("nofit.csv")));
         noStrayFiles();
         pass.t[2] = 2.0;  // the same pass with a sound epoch is written
-        QVERIFY2(writeScreenCsv(out, pass, screen, std::vector<uint8_t>(3, 1), nullptr, &err), err.c_str());
+        QVERIFY2(writeScreenCsv(out, pass, screen, screen.pointClass, nullptr, &err), err.c_str());
         QVERIFY(lwbtest::readAll(p("nofit.csv")).contains("\n2,2.000000000,3.000000e-09,signal,"));
     }
 
@@ -610,19 +610,19 @@ private slots:
         ScreenResult screen;
         screen.ok = true;
         screen.pointClass.assign(n, PointClass::Noise);
-        std::vector<uint8_t> accepted(n, 0);
-        for (size_t i = 0; i < n; i += 3) accepted[i] = 1;
+        std::vector<PointClass> classes(n, PointClass::Noise);
+        for (size_t i = 0; i < n; i += 3) classes[i] = PointClass::Signal;
         const std::string out = p("blocks.csv").toStdString();
         std::string err;
         pass.t[35000] = 1e300;
         pass.t[20000] = 1e300;
-        QVERIFY(!writeScreenCsv(out, pass, screen, accepted, nullptr, &err));
+        QVERIFY(!writeScreenCsv(out, pass, screen, classes, nullptr, &err));
         QVERIFY2(err.find("point 20000 ") != std::string::npos, err.c_str());
         QVERIFY(!QFile::exists(p("blocks.csv")));
         noStrayFiles();
         pass.t[35000] = 1000.0 + 0.5 * 35000;
         pass.t[20000] = 1000.0 + 0.5 * 20000;
-        QVERIFY2(writeScreenCsv(out, pass, screen, accepted, nullptr, &err), err.c_str());
+        QVERIFY2(writeScreenCsv(out, pass, screen, classes, nullptr, &err), err.c_str());
         const QList<QByteArray> lines = lwbtest::readAll(p("blocks.csv")).split('\n');
         QCOMPARE(lines.size(), static_cast<qsizetype>(n + 2));  // header, n rows, the empty piece after the last newline
         for (size_t i = 0; i < n; ++i) {
@@ -780,7 +780,7 @@ private slots:
         screen.pointClass.assign(n, PointClass::Signal);
         const std::vector<uint8_t> accepted(n, 1);
         std::string err;
-        QVERIFY(!writeScreenCsv(p("cut.csv").toStdString(), in.pass, screen, accepted, nullptr, &err));
+        QVERIFY(!writeScreenCsv(p("cut.csv").toStdString(), in.pass, screen, screen.pointClass, nullptr, &err));
         QCOMPARE(err, in.pass.damaged);
         QVERIFY(!writeScreenedCrd(p("cut-out.frd").toStdString(), in.pass, accepted, &err));
         QCOMPARE(err, in.pass.damaged);

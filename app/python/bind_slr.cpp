@@ -338,9 +338,9 @@ void bindPassResult(py::module_& m) {
         .def_property_readonly("accepted_count", [](const PassRun& r) { return r.r.acceptedCount; })
         .def_property_readonly("classes", [](const PassRun& r) {
             py::list c;
-            for (const auto pc : r.r.screen.pointClass) c.append(slr::pointClassName(pc));
+            for (const auto pc : r.r.classes) c.append(slr::pointClassName(pc));
             return py::module_::import("numpy").attr("array")(c, "dtype"_a = "U");
-        }, "per point: 'signal', 'recovered' or 'noise'")
+        }, "per point, the run's class (the CSV's): 'signal', 'recovered', 'band' (taken by the post-fit's band) or 'noise'")
         .def_property_readonly("scale", [](const PassRun& r) {
             const auto& s = r.r.screen;
             return py::dict("mag_t"_a = s.magT, "mag_oc"_a = s.magOc, "area_limit"_a = s.areaLimit, "connectivity"_a = s.connectivity,

@@ -35,10 +35,10 @@ bool writablePassOutput(const std::string& path, const PassData& pass, std::stri
 }  // namespace
 
 bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
-                    const std::vector<uint8_t>& accepted, const PostfitResult* post, std::string* error) {
+                    const std::vector<PointClass>& classes, const PostfitResult* post, std::string* error) {
     if (!writablePassOutput(path, pass, error)) return false;
     const size_t n = pass.t.size();
-    if (screen.pointClass.size() != n || accepted.size() != n) {
+    if (screen.pointClass.size() != n || classes.size() != n) {
         *error = "screening result does not match the pass (" + std::to_string(screen.pointClass.size()) + " vs " +
                  std::to_string(n) + " points)";
         return false;
@@ -68,12 +68,9 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
             else block.append(num, res.ptr);
         };
         for (size_t i = from; i < to; ++i) {
-            // A manual edit can accept a point the screening called noise (or the reverse).
-            const PointClass c = accepted[i] ? (screen.pointClass[i] == PointClass::Noise ? PointClass::Signal
-                                                                                         : screen.pointClass[i])
-                                             : PointClass::Noise;
+            const PointClass c = classes[i];
             const double res = post && post->ok ? post->residuals[i] : NAN;
-            const int kept = post && post->ok ? post->kept[i] : accepted[i];
+            const int kept = post && post->ok ? post->kept[i] : c != PointClass::Noise;
             // index: the type-10 record of the CRD pass (a record without an O-C, e.g. a one-way
             // epoch event, has no row), else the row of the O-C table.
             const size_t index = i < pass.rangeIndex.size() ? pass.rangeIndex[i] : i;

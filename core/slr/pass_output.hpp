@@ -15,10 +15,11 @@ namespace lwb::core::slr {
 
 /// Per-point result as CSV: index,epoch_s,oc_s,class,region,residual_s,kept,station_flag, one
 /// row per point in pass order; index = the point's type-10 record in the CRD pass (0-based;
-/// pass.rangeIndex), or its row in an O-C table. `post` may be null. Atomic. Refuses a pass
-/// with damaged records (PassData::damaged).
+/// pass.rangeIndex), or its row in an O-C table; class the run's (PassRunResult::classes:
+/// signal, recovered, band or noise), region the screening's. `post` may be null. Atomic.
+/// Refuses a pass with damaged records (PassData::damaged).
 bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
-                    const std::vector<uint8_t>& accepted, const PostfitResult* post, std::string* error);
+                    const std::vector<PointClass>& classes, const PostfitResult* post, std::string* error);
 /// The pass as CRD full rate with filter flags 2 (accepted) / 1 (noise) on the screened records;
 /// records without an O-C keep their flag; other passes unchanged.
 bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::vector<uint8_t>& accepted,

@@ -288,18 +288,22 @@ void drawOc(Page& pg, const Context& c, const Plot& area) {
             const bool acc = i < r.accepted.size() && r.accepted[i];
             if (acc != (pass2 == 1)) continue;
             Rgb col = kNoise;
-            if (acc) col = post && !r.post.kept[i] ? kRejected : (i < r.screen.pointClass.size() && r.screen.pointClass[i] == PointClass::Recovered ? kRecovered : kSignal);
+            const PointClass pc = i < r.classes.size() ? r.classes[i] : PointClass::Signal;
+            if (acc) col = post && !r.post.kept[i] ? kRejected : (pc == PointClass::Recovered || pc == PointClass::Band ? kRecovered : kSignal);
             ras.dot(pass.t[i], oc[i], col, acc ? 3 : 2);
         }
     ras.paint(pg.cr());
     // Legend, on a white ground over the points.
     pg.font(6);
+    const std::vector<std::pair<std::string, Rgb>> legend{
+        {"signal", kSignal}, {"recovered, band", kRecovered}, {"post-fit rejected", kRejected}, {"noise", kNoise}};
+    double legendW = 4;
+    for (const auto& item : legend) legendW += pg.width(item.first) + 15;
     cairo_set_source_rgba(pg.cr(), 1, 1, 1, 0.85);
-    cairo_rectangle(pg.cr(), p.x + 2, p.y + 2, std::min(p.w - 4, 190.0), 8.5);
+    cairo_rectangle(pg.cr(), p.x + 2, p.y + 2, std::min(p.w - 4, legendW - 8), 8.5);
     cairo_fill(pg.cr());
     double lx = p.x + 4;
-    for (const auto& [name, col] : std::vector<std::pair<std::string, Rgb>>{
-             {"signal", kSignal}, {"recovered", kRecovered}, {"post-fit rejected", kRejected}, {"noise", kNoise}}) {
+    for (const auto& [name, col] : legend) {
         pg.color(col);
         cairo_rectangle(pg.cr(), lx, p.y + 4.5, 4, 4);
         cairo_fill(pg.cr());

@@ -495,8 +495,13 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
         return r;
     }
     r.accepted = acceptedMask(r.screen);
+    r.classes = r.screen.pointClass;
     for (size_t i = 0; i < r.accepted.size() && i < in.forced.size(); ++i)
-        if (in.forced[i] != 0) r.accepted[i] = in.forced[i] > 0 ? 1 : 0;
+        if (in.forced[i] != 0) {
+            r.accepted[i] = in.forced[i] > 0 ? 1 : 0;
+            if ((r.classes[i] == PointClass::Noise) == bool(r.accepted[i]))
+                r.classes[i] = r.accepted[i] ? PointClass::Signal : PointClass::Noise;
+        }
     for (uint8_t v : r.accepted) r.acceptedCount += v;
     if (r.acceptedCount >= 2) {
         r.post = postfit(pass.t, pass.oc, r.accepted, pass.tof, pp, fb);
@@ -516,6 +521,7 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
                 PostfitResult again = postfit(pass.t, pass.oc, accepted, pass.tof, pp, fb);
                 if (cancelled(fb)) return r;
                 if (again.ok) {
+                    for (uint32_t i : more) r.classes[i] = PointClass::Band;
                     r.accepted = std::move(accepted);
                     r.acceptedCount += more.size();
                     r.bandTaken = static_cast<long long>(more.size());

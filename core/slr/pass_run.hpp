@@ -127,6 +127,10 @@ struct PassRunResult {
     /// Points the screening left out that the post-fit's band took (PostfitParams::takeBand);
     /// they are in `accepted`, not in `screen`.
     long long bandTaken = 0;
+    /// Per point, the run's class for every product (the CSV, Python, the workbench, the
+    /// report): the screening's, Signal or Noise where an edit overrode it, Band where the
+    /// post-fit's band took it. Accepted exactly where it is not Noise.
+    std::vector<PointClass> classes;
     /// One per normal point the post-fit formed (before any was dropped), on a pass with a noise
     /// floor and no other doubt: why each stands or not (normalPointEvidence).
     std::vector<BinEvidence> binEvidence;

@@ -39,6 +39,7 @@ const char* pointClassName(PointClass c) {
         case PointClass::Noise: return "noise";
         case PointClass::Signal: return "signal";
         case PointClass::Recovered: return "recovered";
+        case PointClass::Band: return "band";
     }
     return "?";
 }

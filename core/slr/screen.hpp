@@ -34,9 +34,11 @@
 
 namespace lwb::core::slr {
 
-enum class PointClass : uint8_t { Noise = 0, Signal = 1, Recovered = 2 };
+/// Band: accepted by the post-fit's band where the screening said noise (a run's class,
+/// PassRunResult::classes; the screening itself never gives it).
+enum class PointClass : uint8_t { Noise = 0, Signal = 1, Recovered = 2, Band = 3 };
 enum class RegionClass : uint8_t { Noise = 0, Signal = 1, Recovered = 2 };
-const char* pointClassName(PointClass c);  ///< "noise", "signal", "recovered"
+const char* pointClassName(PointClass c);  ///< "noise", "signal", "recovered", "band"
 
 struct ScreenParams {
     /// Automatic mode: every parameter left at 0 below is chosen from the data — mag_T, mag_OC

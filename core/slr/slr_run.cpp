@@ -284,7 +284,7 @@ bool stagePassProducts(const OutputSet& outs, const PassData& pass, const PassRu
         *error = pass.damaged + "; nothing written";
         return false;
     }
-    if (!paths.csv.empty() && !writeScreenCsv(outs.stagingPath(paths.csv), pass, r.screen, r.accepted, post, error)) {
+    if (!paths.csv.empty() && !writeScreenCsv(outs.stagingPath(paths.csv), pass, r.screen, r.classes, post, error)) {
         *error = named(paths.csv, outs.unstaged(*error));
         return false;
     }

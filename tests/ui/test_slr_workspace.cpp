@@ -429,6 +429,44 @@ private slots:
         QVERIFY2(text.indexOf("two parallel tracks") < text.indexOf("altitude"), qPrintable(text));
     }
 
+    // Issue 43 (a real-window run): on a low-SNR daylight pass whose normal points stand but for
+    // three dropped beside the noise, the summary headed its count "No normal points"; the points
+    // the post-fit's band took were drawn (and counted) as "recovered". The summary gives the
+    // count with the note under it, the band's two lines, and the band's points are a series of
+    // their own with the run's count.
+    void lowSnrPassShowsItsBandAndItsNormalPoints() {
+        const QString frd = m_dir.path() + "/day7.frd";
+        QCOMPARE(lwbtest::runCli({"simulate", "slr", "--kind", "daylight", "--day", "--seed", "7", "-q", frd}).exitCode, 0);
+        MainWindow w;
+        QString err;
+        QVERIFY2(openScreened(w, frd, &err), qPrintable(err));
+        SlrWorkspace* ws = w.workspace<lwb::ui::SlrWorkspace>();
+        const auto& run = ws->controller()->run();
+        QVERIFY(run.doubt.empty());
+        QVERIFY2(!run.post.normalPoints.empty() && !run.postNote.empty(), run.postNote.c_str());  // NPs and a note
+        QVERIFY(run.bandTaken > 0 && std::isfinite(run.post.noiseBandS));
+        const QString text = ws->statsLabel()->text();
+        QVERIFY2(!text.contains("No normal points") && text.contains(QString("<b>Normal points</b> %1 (bins of").arg(run.post.normalPoints.size())) &&
+                     text.contains(QString::fromStdString(run.postNote).toHtmlEscaped()),
+                 qPrintable(text));
+        QVERIFY2(text.contains(QString("%1 more points within the post-fit's band").arg(run.bandTaken)) &&
+                     text.contains(QString("Band narrowed by the noise beside it: ±%1 ps").arg(run.post.noiseBandS * 1e12, 0, 'f', 1)),
+                 qPrintable(text));
+        int bandPoints = -1, recovered = -1;
+        for (int g = 0; g < ws->ocPlot()->graphCount(); ++g) {
+            const QString key = ws->ocPlot()->graph(g)->property("series").toString();
+            if (key == "band") bandPoints = ws->ocPlot()->graph(g)->dataCount();
+            if (key == "recovered") recovered = ws->ocPlot()->graph(g)->dataCount();
+        }
+        long long keptBand = 0, keptRecovered = 0;
+        for (size_t i = 0; i < run.classes.size(); ++i) {
+            keptBand += run.classes[i] == lwb::core::slr::PointClass::Band && run.post.kept[i];
+            keptRecovered += run.classes[i] == lwb::core::slr::PointClass::Recovered && run.post.kept[i];
+        }
+        QCOMPARE(bandPoints, int(keptBand));
+        QCOMPARE(recovered, int(keptRecovered));
+    }
+
     void demoSessionRoundTrip() {
         const QString session = m_dir.path() + "/demo.lwb.json";
         QString err;

@@ -9,6 +9,8 @@
 //   wrote (what the data says — file names, satellite names, the core's messages — and format
 //   names and units are not the program's words; they are listed below and stay).
 #include <QtTest>
+#include <QRegularExpression>
+#include <QCheckBox>
 #include <QAbstractButton>
 #include <QDockWidget>
 #include <QGroupBox>
@@ -209,6 +211,19 @@ private slots:
                 QString word;
                 if (!b->text().isEmpty() && !showsData(b) && englishWord(plain(b->text()), &word))
                     bad << "button " + b->text() + " (" + b->objectName() + ")  [" + word + "]";
+            }
+            // A schema row's checkbox: its tooltip is "<b>key</b><br>doc<br>true or false"; the doc
+            // and the range in Chinese (they were English on every checkbox and combo box while
+            // the sliders' were translated: a real-window run).
+            for (QCheckBox* b : w.findChildren<QCheckBox*>()) {
+                const QStringList parts = b->toolTip().split("<br>");
+                if (parts.size() != 3 || !parts[0].startsWith("<b>")) continue;
+                // (values and keys stay as the JSON and the CLI spell them: false, detector.background, 0..degree)
+                QString text = plain(parts[1] + " " + parts[2]);
+                text.replace(QRegularExpression("\\b(true|false)\\b|\\S*[._]\\S*"), " ");
+                QString word;
+                if (englishWord(text, &word))
+                    bad << "tooltip of " + b->text() + ": " + plain(parts[1]).left(60) + "  [" + word + "]";
             }
             for (QLabel* l : w.findChildren<QLabel*>()) {
                 QString word;

@@ -3142,6 +3142,13 @@
     </message>
 </context>
 <context>
+    <name>lwb::ui::SchemaForm</name>
+    <message>
+        <source>true or false</source>
+        <translation>真或假</translation>
+    </message>
+</context>
+<context>
     <name>lwb::ui::ShotTableModel</name>
     <message>
         <source>File</source>
@@ -4111,6 +4118,34 @@
     <message>
         <source>rejected (%1)</source>
         <translation>剔除（%1）</translation>
+    </message>
+    <message>
+        <source>post-fit band (%1)</source>
+        <translation>后拟合带内（%1）</translation>
+    </message>
+    <message>
+        <source>noise</source>
+        <translation>噪声</translation>
+    </message>
+    <message>
+        <source>rejected by the post-fit</source>
+        <translation>被后拟合剔除</translation>
+    </message>
+    <message>
+        <source>recovered</source>
+        <translation>恢复</translation>
+    </message>
+    <message>
+        <source>in the post-fit's band</source>
+        <translation>位于后拟合带内</translation>
+    </message>
+    <message>
+        <source>signal</source>
+        <translation>信号</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;(%1)</source>
+        <translation>&lt;br&gt;（%1）</translation>
     </message>
     <message>
         <source>manual (%1)</source>

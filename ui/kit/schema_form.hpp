@@ -11,6 +11,7 @@
 //     groupLayout->addRow(form.add("screen.cosine_c", tr("Cosine C")));
 //     form.addRemaining(advancedLayout);   // every row not placed yet: nothing is unreachable
 #include <QCheckBox>
+#include <QCoreApplication>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "core/common/schema.hpp"
+#include "ui/kit/i18n.hpp"
 #include "ui/kit/param_slider.hpp"
 
 namespace lwb::ui {
@@ -293,10 +295,14 @@ private:
         show(m_p);
         m_refreshing = false;
     }
+    // The key, the row's doc in the language of the window (as the sliders' tooltips), and what it
+    // takes.
     static QString tooltip(const core::FieldInfo& f) {
+        const QString range = f.kind == core::FieldKind::Boolean
+                                  ? QCoreApplication::translate("lwb::ui::SchemaForm", "true or false")
+                                  : QString::fromStdString(f.rangeText());
         return QString("<b>%1</b><br>%2<br>%3")
-            .arg(QString::fromStdString(f.key).toHtmlEscaped(), QString::fromStdString(f.doc).toHtmlEscaped(),
-                 QString::fromStdString(f.rangeText()).toHtmlEscaped());
+            .arg(QString::fromStdString(f.key).toHtmlEscaped(), schemaText(f.doc).toHtmlEscaped(), range.toHtmlEscaped());
     }
 
     void edited(const Field& f, const std::function<void(P&)>& write) {

@@ -48,7 +48,7 @@ namespace lwb::ui {
 using namespace core::slr;
 
 namespace {
-const QColor kSignal(31, 119, 180), kRecovered(44, 160, 44), kNoise(150, 150, 150), kRejected(214, 39, 40),
+const QColor kSignal(31, 119, 180), kRecovered(44, 160, 44), kBand(188, 189, 34), kNoise(150, 150, 150), kRejected(214, 39, 40),
     kNormalPoint(0, 0, 0), kForced(255, 127, 14), kStationNp(0, 160, 160);
 constexpr size_t kMaxShown = 40000;  // points per graph shown; more are thinned with a fixed stride
 constexpr double kMmPerPs = 0.149896229;  // 1 ps two-way = c / 2 · 1 ps of range, one-way
@@ -911,7 +911,7 @@ void SlrWorkspace::fitMainPlot() {
         const QString key = m_ocPlot->graph(g)->property("series").toString();
         const bool residual = m_ocPlot->yAxis2->visible();
         // In the residual view the noise spans the range gate: fit to the track.
-        if (key != "signal" && key != "recovered" && (residual || key != "noise")) continue;
+        if (key != "signal" && key != "recovered" && key != "band" && (residual || key != "noise")) continue;
         bool found = false;
         const QCPRange kr = m_ocPlot->graph(g)->getKeyRange(found);
         if (!found) continue;
@@ -1040,7 +1040,7 @@ void SlrWorkspace::showTimeCursor(QCustomPlot* source, const QPointF& coords, co
         const bool ps = source == m_ocPlot && m_ocPlot->yAxis2->visible();
         own.text = tr("%1 · %2 %3 %4\n%5")
                        .arg(PlotKit::axisText(source->xAxis, t), ps ? tr("residual") : source == m_ocPlot ? tr("O-C") : tr("image"),
-                            PlotKit::axisText(source->yAxis, y), ps ? tr("ps") : tr("ns"), QString::fromLatin1(m_class[k]));
+                            PlotKit::axisText(source->yAxis, y), ps ? tr("ps") : tr("ns"), tr(m_class[k]));
     } else {
         own.text = plotKit(source)->readoutAt(coords.x(), coords.y());
     }
@@ -1071,7 +1071,7 @@ QString SlrWorkspace::pointText(int k) const {
     QString text = tr("%1 · O-C %2 ns").arg(epoch).arg(p.oc[size_t(k)] * 1e9, 0, 'f', 3);
     if (run.post.ok)
         text += tr(" · residual %1 ps (%2 mm)").arg(run.post.residuals[size_t(k)] * 1e12, 0, 'f', 1).arg(run.post.residuals[size_t(k)] * 1e12 * kMmPerPs, 0, 'f', 1);
-    text += " · " + QString::fromLatin1(m_class[k]);
+    text += " · " + tr(m_class[k]);
     const auto& forced = m_controller->forced();
     if (size_t(k) < forced.size() && forced[size_t(k)]) text += forced[size_t(k)] > 0 ? tr(" (forced in)") : tr(" (forced out)");
     if (p.stationFlag.size() == p.t.size()) text += tr(" · station flag %1").arg(p.stationFlag[size_t(k)]);
@@ -1120,27 +1120,32 @@ void SlrWorkspace::drawMainPlot(const SlrRun& run, bool residual) {
     const auto& forced = m_controller->forced();
     m_y.resize(int(n));
     m_class.resize(int(n));
-    QVector<double> nx, ny, sx, sy, rx, ry, jx, jy, fx, fy, dx, dy;
+    QVector<double> nx, ny, sx, sy, rx, ry, bx, by, jx, jy, fx, fy, dx, dy;
     for (size_t i = 0; i < n; ++i) {
         const double x = p.t[i], y = residual ? run.post.residuals[i] * 1e12 : p.oc[i] * 1e9;
         m_y[int(i)] = y;
-        if (!run.accepted[i]) {
+        // The run's class (core: the CSV's), drawn as such; the post-fit's rejections apart.
+        const PointClass c = i < run.classes.size() ? run.classes[i] : (run.accepted[i] ? PointClass::Signal : PointClass::Noise);
+        if (c == PointClass::Noise) {
             nx << x;
             ny << y;
-            m_class[int(i)] = "noise";
+            m_class[int(i)] = QT_TR_NOOP("noise");
         } else if (run.post.ok && !run.post.kept[i]) {
             jx << x;
             jy << y;
-            m_class[int(i)] = "rejected by the post-fit";
-        } else if (s.pointClass[i] == PointClass::Recovered || s.pointClass[i] == PointClass::Noise) {
-            // (accepted where the screening said noise: taken within the post-fit's band, or an edit)
+            m_class[int(i)] = QT_TR_NOOP("rejected by the post-fit");
+        } else if (c == PointClass::Recovered) {
             rx << x;
             ry << y;
-            m_class[int(i)] = s.pointClass[i] == PointClass::Recovered ? "recovered" : "within the post-fit's band";
+            m_class[int(i)] = QT_TR_NOOP("recovered");
+        } else if (c == PointClass::Band) {
+            bx << x;
+            by << y;
+            m_class[int(i)] = QT_TR_NOOP("in the post-fit's band");
         } else {
             sx << x;
             sy << y;
-            m_class[int(i)] = "signal";
+            m_class[int(i)] = QT_TR_NOOP("signal");
         }
         if (i < forced.size() && forced[i]) {
             fx << x;
@@ -1167,6 +1172,8 @@ void SlrWorkspace::drawMainPlot(const SlrRun& run, bool residual) {
     fill(keyed(scatter(m_ocPlot, tr("noise (%1)").arg(nx.size()), kNoise, QCPScatterStyle::ssDisc, 2.5), "noise"), nx, ny);
     fill(keyed(scatter(m_ocPlot, tr("signal (%1)").arg(sx.size()), kSignal, QCPScatterStyle::ssDisc, 3), "signal"), sx, sy);
     fill(keyed(scatter(m_ocPlot, tr("recovered (%1)").arg(rx.size()), kRecovered, QCPScatterStyle::ssDisc, 3.5), "recovered"), rx, ry);
+    if (!bx.isEmpty())  // (only when the post-fit's band took points: PostfitParams::takeBand)
+        fill(keyed(scatter(m_ocPlot, tr("post-fit band (%1)").arg(bx.size()), kBand, QCPScatterStyle::ssDisc, 3.5), "band"), bx, by);
     fill(keyed(scatter(m_ocPlot, tr("rejected (%1)").arg(jx.size()), kRejected, QCPScatterStyle::ssCross, 5), "rejected"), jx, jy);
     if (!fx.isEmpty()) {
         QCPGraph* g = keyed(scatter(m_ocPlot, tr("manual (%1)").arg(fx.size()), kForced, QCPScatterStyle::ssSquare, 7), "manual");
@@ -1411,6 +1418,11 @@ QString SlrWorkspace::summaryHtml(const SlrRun& run) const {
                              .arg(run.post.signalSigmaS * 1e12, 0, 'f', 1);
         if (run.postNote.empty()) {
             statsHtml += tr("<b>Normal points</b> %1 (bins of %2 s)").arg(run.post.normalPoints.size()).arg(run.post.binLengthS, 0, 'f', 0);
+        } else if (!run.post.normalPoints.empty() && run.doubt.empty()) {
+            // Normal points formed, with a note (some dropped as standing below the noise beside
+            // them): the note under the count, not a "no normal points" heading over it.
+            statsHtml += tr("<b>Normal points</b> %1 (bins of %2 s)").arg(run.post.normalPoints.size()).arg(run.post.binLengthS, 0, 'f', 0) +
+                         tr("<br>(%1)").arg(QString::fromStdString(run.postNote).toHtmlEscaped());
         } else {
             const QString prefix = QStringLiteral("no normal points: ");  // the heading says it already
             QString why = QString::fromStdString(run.postNote);
