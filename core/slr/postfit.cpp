@@ -906,6 +906,7 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
     // Segments: split at gaps longer than splitGapS (automatic: 3 bins, at least 20 s).
     double split = p.splitGapS;
     if (split == 0) split = std::max(20.0, 3 * (std::isfinite(res.binLengthS) ? res.binLengthS : 0.0));
+    res.splitGapS = split;
     std::vector<Seg> segs = splitAtGaps(t, ord, split);
     rejectGrossOutliers(t, oc, ord, segs, p, &res);
     if (res.used > 0 && t[ord.front()] == t[ord.back()] && p.degree > 0)

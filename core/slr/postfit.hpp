@@ -157,6 +157,7 @@ struct PostfitResult {
     long long rejected = 0;             ///< of those, removed by the k·σ rejection
     bool converged = true;
     double binLengthS = 0;
+    double splitGapS = 0;               ///< the gap the trend was split at (s; ≤ 0 none): splitGapS or its automatic value
     int minPointsPerBin = 0;            ///< the ILRS minimum used (the larger one when bins differ)
     int dayBins = 0, nightBins = 0;     ///< bins judged by the Sun's elevation (station given)
     std::vector<NormalPoint> normalPoints;

@@ -279,6 +279,30 @@ private slots:
         QCOMPARE(changed.count(), 1);
     }
 
+    /// Every slider's field has room for a short value with its unit: "Own trend huber k" showed
+    /// "1.345 sigm" in a real window (the field's 86 px, whatever the unit).
+    void fieldsHoldAShortValueAndTheirUnit() {
+        QWidget host;
+        auto* lay = new QVBoxLayout(&host);
+        std::vector<ParamSlider*> sliders;
+        for (const auto& f : slr::slrSchema().fields())
+            if (f.kind == lwb::core::FieldKind::Real || f.kind == lwb::core::FieldKind::Integer) {
+                sliders.push_back(new ParamSlider(f));
+                lay->addWidget(sliders.back());
+            }
+        host.resize(420, 40 * int(sliders.size()));
+        host.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&host));
+        for (ParamSlider* s : sliders) {
+            QLineEdit* edit = s->field()->findChild<QLineEdit*>();
+            QVERIFY(edit);
+            const QString text = "0.000" + s->field()->suffix();
+            QVERIFY2(edit->width() >= edit->fontMetrics().horizontalAdvance(text),
+                     qPrintable(QString("%1: %2 px for \"%3\" (%4 px)").arg(QString::fromStdString(s->info().key)).arg(edit->width()).arg(text)
+                                    .arg(edit->fontMetrics().horizontalAdvance(text))));
+        }
+    }
+
     /// Issue 42: mag_T's seven decades went from 2 to 483 px/s in a 29 px drag. Shift+drag moves
     /// the slider ten times slower than the mouse: 29 px then moves it 2.9 px's worth (at 14 px a
     /// decade, a factor below 1.7), where a plain drag's 29 px is above 100.

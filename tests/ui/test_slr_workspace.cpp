@@ -465,6 +465,11 @@ private slots:
         }
         QCOMPARE(bandPoints, int(keptBand));
         QCOMPARE(recovered, int(keptRecovered));
+        // The automatic post-fit fields show what the run used (they showed their sliders'
+        // middles: a greyed "153 s" bin where the bins were 30 s).
+        QCOMPARE(ws->paramsPanel()->slider("postfit.bin_length_s")->field()->value(), run.post.binLengthS);
+        QCOMPARE(ws->paramsPanel()->slider("postfit.split_gap_s")->field()->value(), run.post.splitGapS);
+        QCOMPARE(ws->paramsPanel()->slider("postfit.min_points")->field()->value(), double(run.post.minPointsPerBin));
     }
 
     void demoSessionRoundTrip() {

@@ -99,6 +99,8 @@ public:
         setMinimumWidth(86);
         setMaximumWidth(130);  // (four significant digits and the unit: "1.148e+10 px/s")
         if (!info.unit.empty()) setSuffix(" " + QString::fromStdString(info.unit));
+        // Room for a short value and its unit ("1.345 sigma" showed as "1.345 sigm").
+        setMinimumWidth(std::clamp(fontMetrics().horizontalAdvance("0.000" + suffix()) + 36, 86, 130));
         QLocale plain = locale();
         plain.setNumberOptions(plain.numberOptions() | QLocale::OmitGroupSeparator);  // "11482396630", not "11,482,…"
         setLocale(plain);

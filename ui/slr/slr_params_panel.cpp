@@ -83,6 +83,15 @@ void SlrParamsPanel::showScale(const ScaleChoice& scale) {
     m_form->setHint("screen.connectivity", scale.connectivity);
 }
 
+void SlrParamsPanel::showPostfit(const PostfitResult& post) {
+    // What "auto", "from altitude" and "ILRS minimum" came to in the last run (the disabled
+    // field showed its slider's middle, "153 s", where the run's bins were 30 s).
+    const bool ok = post.ok;
+    m_form->setHint("postfit.bin_length_s", ok && post.binLengthS > 0 ? post.binLengthS : NAN);
+    m_form->setHint("postfit.split_gap_s", ok && post.splitGapS > 0 ? post.splitGapS : NAN);
+    m_form->setHint("postfit.min_points", ok && post.minPointsPerBin > 0 ? post.minPointsPerBin : NAN);
+}
+
 ParamSlider* SlrParamsPanel::slider(const std::string& key) const { return qobject_cast<ParamSlider*>(m_form->widget(key)); }
 
 QCheckBox* SlrParamsPanel::autoCheck() const { return qobject_cast<QCheckBox*>(m_form->widget("screen.automatic")); }

@@ -30,6 +30,9 @@ public:
     /// The scale a run used: shown on the fields left at auto, and the start when the automatic
     /// mode is switched off.
     void showScale(const core::slr::ScaleChoice& scale);
+    /// What the post-fit's automatic values came to in a run (bin length, split gap, points a
+    /// bin needs): shown on those fields while they are left automatic.
+    void showPostfit(const core::slr::PostfitResult& post);
 
     SchemaForm<core::slr::SlrParams>& form() { return *m_form; }
     ParamSlider* slider(const std::string& key) const;

@@ -1084,6 +1084,7 @@ void SlrWorkspace::showRun(const SlrRun& run) {
     if (p.t.empty() || run.accepted.size() != p.t.size()) return;
     // The scale used, on the fields left at auto.
     m_params->showScale(scaleChoice(run.screen));
+    m_params->showPostfit(run.post);
     clearTimeCursor();  // its point may be another one now
     const bool fresh = m_ocPlot->property("fresh").toBool();
     const QCPRange xr = m_ocPlot->xAxis->range(), yr = m_ocPlot->yAxis->range();
