@@ -720,8 +720,9 @@ void collectTrend(const std::vector<Seg>& segs, PostfitResult* res) {
 // Stage 4b (PostfitParams::noiseBand): the band of the best expected F1 when the noise beside
 // the kept band is measurable, else INFINITY. `limit` is the band the rejection last used.
 // Every point of the pass within the kept points' time span is set against the trend; the
-// noise's density is counted beside the band, from 2 to 2 + 40 kept-RMS widths out on each side,
-// each side clipped to where the pass has points (the gate as the data show it). The kept
+// noise's density is counted beside the band, from twice its half-width out to 40 kept-point
+// RMS beyond that on each side, each side clipped to where the pass has points (the gate as the
+// data show it). The kept
 // points hold the signal within ±limit plus the noise's 2·limit·λ: taking that noise out of
 // their count and of their sum of squares (uniform: limit²/3 each), and the truncation of a
 // Gaussian at ±limit, gives the signal's σ and count.
