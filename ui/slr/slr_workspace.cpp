@@ -1115,7 +1115,6 @@ void SlrWorkspace::showRun(const SlrRun& run) {
 // the trend per segment and the normal points; in O-C (ns) or as residuals (ps).
 void SlrWorkspace::drawMainPlot(const SlrRun& run, bool residual) {
     const PassData& p = m_controller->pass();
-    const ScreenResult& s = run.screen;
     m_ocPlot->clearGraphs();
     const size_t n = p.t.size();
     const auto& forced = m_controller->forced();
