@@ -1,5 +1,5 @@
 // laserwb.slr: an SLR pass from its files to its products, as `laserwb-cli slr` runs it: the
-// readers (CRD, CPF, SINEX; core/slr/pass_input.hpp loadPass: O-C from the prediction or the
+// readers (CRD, CPF, SINEX; core/slr/slr_run.hpp loadSlrPass: O-C from the prediction or the
 // pass's own TOF trend), the settings of a pass (passSettings: preset, normal-point context),
 // the task (PassTask: screening, post-fit, normal points, judgeRun) and its writers
 // (core/slr/pass_output.hpp). Nothing here computes: the CLI and the workbench call the same.
@@ -119,14 +119,13 @@ Pass loadPass(const py::object& path, const py::object& passNumber, const py::ob
         const long long k = passNumber.cast<long long>();
         src.passNumber = static_cast<int>(k);
     }
-    const slr::SlrSetup setup = setUp(src);
-    slr::OpenedPass opened;
+    slr::LoadedSlrPass loaded;
     {
         py::gil_scoped_release nogil;
-        opened = slr::openPass(setup);
+        loaded = slr::loadSlrPass(src);
     }
-    if (!opened.ok) raise(opened.error);
-    return Pass{opened.pass, opened.warnings, opened.notes, setup.sources};
+    if (!loaded.ok) raise(loaded.error);
+    return Pass{loaded.opened.pass, loaded.opened.warnings, loaded.opened.notes, loaded.setup.sources};
 }
 
 PassRun runPass(const Pass& pass, const py::object& params, const py::object& preset, const py::object& satellite,
@@ -237,50 +236,41 @@ py::dict normalPointColumns(const std::vector<slr::NormalPoint>& nps) {
                     "return_rate_pct"_a = col([](const auto& n) { return n.returnRatePct; }));
 }
 
-// The readers: read_crd, read_cpf and read_sinex.
+// The readers: read_crd, read_cpf and read_sinex, as a run's set-up reads those files (core
+// readSlrSourceContents: a damaged prediction is refused here as before any pass is screened).
+slr::SlrSourceContents contentsOf(const slr::SlrSources& src) {
+    slr::SlrSourceContents c;
+    {
+        py::gil_scoped_release nogil;
+        c = slr::readSlrSourceContents(src);
+    }
+    if (!c.ok) raise(c.error);
+    return c;
+}
+
 void bindReaders(py::module_& m) {
     m.def("read_crd", [](const py::object& path) {
-        slr::SlrSources src;  // (the file as a run's set-up reads it: core readSlrInput)
+        slr::SlrSources src;
         src.input = fsPath(path);
-        std::shared_ptr<const slr::CrdReadResult> r;
-        slr::SlrError e;
-        {
-            py::gil_scoped_release nogil;
-            r = slr::readSlrInput(src, &e);
-        }
-        if (!r) raise(e);
         py::list out;
-        for (const auto& s : slr::summarisePasses(r->file)) out.append(summaryDict(s));
+        for (const auto& s : contentsOf(src).passes) out.append(summaryDict(s));
         return out;
     }, py::arg("path"), "The passes of a CRD file (v1 or v2, gzip too): one dict per pass (pass_number from 1, satellite, station, start, end, ranges, ...).");
-    // The prediction and the stations as a run's set-up reads them (core readPassSources: a
-    // damaged prediction is refused here as it is before any pass is screened with it).
-    auto sources = [](const slr::PassInputParams& in) {
-        slr::PassSources out;
-        std::string err;
-        bool ok;
-        {
-            py::gil_scoped_release nogil;
-            ok = slr::readPassSources(in, &out, &err);
-        }
-        check(ok, err);
-        return out;
-    };
-    m.def("read_cpf", [sources](const py::object& path) {
-        slr::PassInputParams in;
-        in.cpfPath = fsPath(path);
-        const slr::PassSources r = sources(in);
-        check(!r.cpfFolder, in.cpfPath + ": a folder; read_cpf reads one CPF file");
-        return py::dict("path"_a = in.cpfPath, "warnings"_a = r.cpfs.front().warnings);
+    m.def("read_cpf", [](const py::object& path) {
+        slr::SlrSources src;
+        src.cpf = fsPath(path);
+        const slr::SlrSourceContents c = contentsOf(src);
+        check(!c.predictions.cpfFolder, src.cpf + ": a folder; read_cpf reads one CPF file");
+        return py::dict("path"_a = src.cpf, "warnings"_a = c.predictions.cpfs.front().warnings);
     }, py::arg("path"), "Reads and checks a CPF prediction (raises laserwb.Error with FILE:LINE when it is not one).");
-    m.def("read_sinex", [sources](const py::object& path) {
-        slr::PassInputParams in;
-        in.sinexPath = fsPath(path);
-        const slr::PassSources r = sources(in);
+    m.def("read_sinex", [](const py::object& path) {
+        slr::SlrSources src;
+        src.stations = fsPath(path);
+        const slr::SlrSourceContents c = contentsOf(src);
         std::vector<std::string> codes;
-        for (const auto& s : r.stations.sites) codes.push_back(s.code);
-        return py::dict("path"_a = in.sinexPath, "sites"_a = codes, "solutions"_a = r.stations.solutions.size(),
-                        "warnings"_a = r.stationWarnings);
+        for (const auto& s : c.predictions.stations.sites) codes.push_back(s.code);
+        return py::dict("path"_a = src.stations, "sites"_a = codes, "solutions"_a = c.predictions.stations.solutions.size(),
+                        "warnings"_a = c.predictions.stationWarnings);
     }, py::arg("path"), "Reads a SINEX file of station coordinates: its site codes and solutions.");
 }
 

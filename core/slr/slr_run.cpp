@@ -196,6 +196,40 @@ PassInputParams inputParams(const SlrSetup& setup) {
 
 }  // namespace
 
+LoadedSlrPass loadSlrPass(const SlrSources& sources, const Feedback* fb) {
+    LoadedSlrPass l;
+    if (!setUpSlrRun(sources, &l.setup, &l.error)) return l;
+    l.setUp = true;
+    l.opened = openPass(l.setup, fb);
+    if (!l.opened.ok) {
+        l.error = l.opened.error;
+        return l;
+    }
+    l.ok = true;
+    return l;
+}
+
+SlrSourceContents readSlrSourceContents(const SlrSources& sources, const Feedback* fb) {
+    SlrSourceContents c;
+    if (!sources.input.empty()) {
+        const std::shared_ptr<const CrdReadResult> crd = readSlrInput(sources, &c.error, fb);
+        if (!crd) return c;
+        c.passes = summarisePasses(crd->file);
+    }
+    if (!sources.cpf.empty() || !sources.stations.empty()) {
+        PassInputParams in;
+        in.cpfPath = sources.cpf;
+        in.sinexPath = sources.stations;
+        std::string err;
+        if (!readPassSources(in, &c.predictions, &err)) {
+            c.error = {err, false};
+            return c;
+        }
+    }
+    c.ok = true;
+    return c;
+}
+
 std::shared_ptr<const CrdReadResult> readSlrInput(const SlrSources& sources, SlrError* error, const Feedback* fb) {
     auto crd = std::make_shared<const CrdReadResult>(readCrd(sources.input, {}, fb));
     if (!crd->ok) {

@@ -114,6 +114,31 @@ std::shared_ptr<const CrdReadResult> readSlrInput(const SlrSources& sources, Slr
 OpenedPass openPassOf(const SlrSetup& setup, const std::shared_ptr<const CrdReadResult>& crd, int passIndex,
                       const Feedback* fb = nullptr);
 
+/// One pass loaded from its sources, the load every front end that opens a pass shares
+/// (Python's load_pass, the workbench's open): setUpSlrRun, then openPass. ok false with
+/// `error`; `setup` is set when the set-up succeeded, `opened` when the file was read (its
+/// passes listed even when the one asked for cannot open).
+struct LoadedSlrPass {
+    bool ok = false;
+    SlrError error;
+    bool setUp = false;
+    SlrSetup setup;
+    OpenedPass opened;
+};
+LoadedSlrPass loadSlrPass(const SlrSources& sources, const Feedback* fb = nullptr);
+
+/// What the files of `sources` hold, read as a run's set-up reads them (Python's read_crd,
+/// read_cpf and read_sinex): the passes of `input` (readSlrInput), the CPF of `cpf` and the
+/// stations of `stations` (readPassSources; a CPF here is checked without stations). Each only
+/// when given. ok false with `error` (FILE:LINE) at the first that cannot be read.
+struct SlrSourceContents {
+    bool ok = false;
+    SlrError error;
+    std::vector<PassSummary> passes;
+    PassSources predictions;
+};
+SlrSourceContents readSlrSourceContents(const SlrSources& sources, const Feedback* fb = nullptr);
+
 /// PassTask on an opened pass with its resolved parameters (and the setup's search threads).
 PassRunResult runOpenedPass(const PassData& pass, const PassSettings& settings, const SlrSetup& setup,
                             Feedback* fb = nullptr);

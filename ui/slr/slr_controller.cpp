@@ -90,7 +90,7 @@ namespace {
 // The workbench's sources for `path` (a CPF is used with a SINEX only; the SINEX alone gives the
 // station's position), read by the core once for the passes of the file; the panel's parameters
 // as the config (their oc.* rows make the pass's O-C).
-bool setUp(const QString& path, const PassInputParams& in, const SlrParams& params, SlrSetup* out, QString* error) {
+SlrSources sourcesOf(const QString& path, const PassInputParams& in, const SlrParams& params) {
     // Files by their absolute paths: what the report, the copied command and the script name.
     auto absolute = [](const std::string& p) {
         return p.empty() ? p : QFileInfo(QString::fromStdString(p)).absoluteFilePath().toStdString();
@@ -102,8 +102,12 @@ bool setUp(const QString& path, const PassInputParams& in, const SlrParams& para
     if (!in.sinexPath.empty()) src.cpf = absolute(in.cpfPath);
     src.cpfFallback = true;  // a CPF that does not fit the pass: its own TOF trend, with a note
     src.openDamaged = true;  // a pass with damaged records is shown (its exports are refused)
+    return src;
+}
+
+bool setUp(const QString& path, const PassInputParams& in, const SlrParams& params, SlrSetup* out, QString* error) {
     SlrError e;
-    if (!setUpSlrRun(src, out, &e)) {
+    if (!setUpSlrRun(sourcesOf(path, in, params), out, &e)) {
         *error = QString::fromStdString(e.message);
         return false;
     }
@@ -124,9 +128,15 @@ SlrOpening SlrController::readForOpen(const QString& path, int passIndex, const 
     o.path = path;
     o.passIndex = passIndex;
     o.input = input;
-    if (!setUp(path, input, params, &o.setup, &o.error)) return o;
-    o.setup.sources.passNumber = passIndex + 1;  // (0: the file's first pass to screen, core isPassToScreen)
-    o.opened = openPass(o.setup, fb);
+    SlrSources src = sourcesOf(path, input, params);
+    src.passNumber = passIndex + 1;  // (0: the file's first pass to screen, core isPassToScreen)
+    LoadedSlrPass loaded = loadSlrPass(src, fb);  // the load Python's load_pass makes
+    if (!loaded.setUp) {
+        o.error = QString::fromStdString(loaded.error.message);
+        return o;
+    }
+    o.setup = std::move(loaded.setup);
+    o.opened = std::move(loaded.opened);
     if (!o.opened.ok && !o.opened.crd) {  // the file (or an O-C table) cannot be read at all
         o.error = QString::fromStdString(o.opened.error.message);
         return o;
