@@ -200,22 +200,12 @@ const RecordSpec* specOf(std::string_view id) {
 
 constexpr size_t kMaxTokens = 64;
 
-/// Blank-separated fields of a line (the first kMaxTokens kept; n counts them all).
+/// Blank-separated fields of a line (text.hpp splitBlanks); n counts them all, [] gives "" past
+/// the last (and past kMaxTokens, which the per-record checks size their arrays by).
 struct Tokens {
-    std::string_view t[kMaxTokens];
+    std::vector<std::string_view> t;
     size_t n = 0;
-    explicit Tokens(std::string_view s) {
-        size_t i = 0;
-        while (i < s.size()) {
-            while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
-            if (i >= s.size()) break;
-            size_t j = i;
-            while (j < s.size() && s[j] != ' ' && s[j] != '\t' && s[j] != '\r') ++j;
-            if (n < kMaxTokens) t[n] = s.substr(i, j - i);
-            ++n;
-            i = j;
-        }
-    }
+    explicit Tokens(std::string_view s) : t(splitBlanks(s)), n(t.size()) {}
     std::string_view operator[](size_t i) const { return i < kMaxTokens && i < n ? t[i] : std::string_view(); }
 };
 
