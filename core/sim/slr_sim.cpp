@@ -348,7 +348,7 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
 
 std::string simulatedCrd(const std::string& h3, const std::vector<double>& epochS, const std::vector<double>& tofS,
                          const std::vector<uint8_t>& isSignal, double emptyStartSod, int year, int month, int day,
-                         int epochDecimals, int tofDecimals) {
+                         int epochDecimals, int tofDecimals, const std::string& h2) {
     auto hms = [](double sod, int* h, int* m, int* sec) {
         const long s = static_cast<long>(std::floor(sod)) % 86400;
         *h = int(s / 3600);
@@ -364,7 +364,7 @@ std::string simulatedCrd(const std::string& h3, const std::vector<double>& epoch
     std::string out;
     std::snprintf(line, sizeof line, "H1 CRD  2 %04d %02d %02d %02d\n", year, month, day, h0);
     out += line;
-    out += "H2 SIMU 9999 99 99  7 ILRS\n";
+    out += "H2 " + h2 + "\n";
     out += "H3 " + h3 + "\n";
     // H4: full rate, session start and end, no corrections applied, two-way ranges.
     std::snprintf(line, sizeof line, "H4  0 %04d %02d %02d %02d %02d %02d %04d %02d %02d %02d %02d %02d  0  0  0  0  1  0  2  0\n",

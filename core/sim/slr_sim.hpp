@@ -95,10 +95,10 @@ std::string slrPassCrd(const SlrSimParams& p, const SlrSimPass& pass, int year =
 /// simulated station, H3 `h3` (the fields after "H3 ": target name, ids, class), an H4 over the
 /// epochs (full rate, two-way; `emptyStartSod` when there are none), one configuration, a type-10
 /// record per event with the truth as its filter flag (2 signal, 1 noise), H8, H9), with
-/// `epochDecimals` and `tofDecimals` digits.
+/// `epochDecimals` and `tofDecimals` digits; `h2` the fields after "H2 " (the station).
 std::string simulatedCrd(const std::string& h3, const std::vector<double>& epochS, const std::vector<double>& tofS,
                          const std::vector<uint8_t>& isSignal, double emptyStartSod, int year, int month, int day,
-                         int epochDecimals = 12, int tofDecimals = 12);
+                         int epochDecimals = 12, int tofDecimals = 12, const std::string& h2 = "SIMU 9999 99 99  7 ILRS");
 
 /// The model O-C (s) of a pass at epoch t (for truth comparisons): eq. 1 only, without the
 /// drift and the level shifts of the gaps (those are in SlrSimPass::trackOcS).

@@ -1,4 +1,6 @@
 #include "core/sim/slr_sim_sparse.hpp"
+
+#include "core/slr/ilrs_tables.hpp"
 #include "core/sim/slr_sim.hpp"
 
 #include <algorithm>
@@ -57,9 +59,24 @@ SparseLeoPass simulateSparseLeoPass(const SparseLeoParams& p, uint64_t seed) {
     s.radiusM = R;
     s.meanMotion = std::sqrt(kGm / (R * R * R));
     s.tRefS = p.dayStartSod;
-    const double lat = p.stationLatDeg * kDeg, lon = p.stationLonDeg * kDeg;
-    const V3 sHat{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
-    const V3 st = kRe * sHat;
+    double lat = p.stationLatDeg * kDeg, lon = p.stationLonDeg * kDeg;
+    V3 st = kRe * V3{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+    if (p.stationPad != 0) {
+        const slr::IlrsStation* is = slr::findStation(p.stationPad);
+        if (!is) {
+            s.error = "sparse LEO pass: station " + std::to_string(p.stationPad) + " is not in the ILRS stations table";
+            return s;
+        }
+        // WGS-84: the station where the table puts it (its geocentric direction is "up" below).
+        constexpr double a = 6378137.0, f = 1 / 298.257223563, e2 = f * (2 - f);
+        const double la = is->latDeg * kDeg, lo = is->lonDeg * kDeg, nu = a / std::sqrt(1 - e2 * std::sin(la) * std::sin(la));
+        st = V3{(nu + is->heightM) * std::cos(la) * std::cos(lo), (nu + is->heightM) * std::cos(la) * std::sin(lo),
+                (nu * (1 - e2) + is->heightM) * std::sin(la)};
+        lat = std::atan2(st.z, std::hypot(st.x, st.y));
+        lon = lo;
+        s.stationPad = p.stationPad;
+    }
+    const V3 sHat = unit(st);
     s.station[0] = st.x, s.station[1] = st.y, s.station[2] = st.z;
     // Culmination wanted: the central angle gamma of elevation e, tan e = (cos g - Re/R) / sin g.
     const double eWant = (p.maxElevationDeg > 0 ? p.maxElevationDeg : rng.uniform(25, 85)) * kDeg;
@@ -152,7 +169,10 @@ SparseLeoPass simulateSparseLeoPass(const SparseLeoParams& p, uint64_t seed) {
 }
 
 std::string sparseLeoPassCrd(const SparseLeoPass& pass, int year, int month, int day) {
-    return simulatedCrd("simsat-sparse 9999902 9998 99998  0  1  1", pass.epochS, pass.tofS, pass.isSignal, 0, year, month, day, 7, 12);
+    char h2[64];
+    std::snprintf(h2, sizeof h2, "%s %04d 99 99  7 ILRS", pass.stationPad == 9999 ? "SIMU" : "SIMSTA", pass.stationPad);
+    return simulatedCrd("simsat-sparse 9999902 9998 99998  0  1  1", pass.epochS, pass.tofS, pass.isSignal, 0, year, month, day, 7,
+                        12, h2);
 }
 
 }  // namespace lwb::core::sim

@@ -22,8 +22,11 @@ struct SparseLeoParams {
     double gateS = 2e-6;             ///< range gate width for the noise (two-way s)
     double minElevationDeg = 15;     ///< the pass: the satellite above this elevation
     double maxElevationDeg = 0;      ///< 0: drawn in 25..85°; else the culmination wanted (approximate)
-    double stationLatDeg = 30.68;    ///< station geodetic... (spherical) latitude and east longitude (deg)
-    double stationLonDeg = -104.02;
+    double stationLatDeg = 30.68;    ///< station (spherical) latitude and east longitude (deg), on a
+    double stationLonDeg = -104.02;  ///< 6371 km sphere, written as SIMU pad 9999 (not in the ILRS table)
+    /// An ILRS station instead (a CDP pad id of resources/ilrs/stations.csv): the station at its
+    /// WGS-84 position and height, written with its pad id; 0: the sphere's station above.
+    int stationPad = 0;
     double fireRateHz = 10;          ///< epochs on the shot grid of this rate
     double dayStartSod = 36000;      ///< seconds of day of the pass's culmination (about)
 };
@@ -39,6 +42,7 @@ struct SparseLeoPass {
     // The orbit and station, for trueTof at any epoch.
     double radiusM = 0, meanMotion = 0, tRefS = 0;
     double p[3] = {0, 0, 0}, q[3] = {0, 0, 0}, station[3] = {0, 0, 0};
+    int stationPad = 9999;           ///< the CRD's H2 pad id
 };
 
 /// Simulates one pass. Deterministic for (params, seed).
@@ -48,7 +52,8 @@ SparseLeoPass simulateSparseLeoPass(const SparseLeoParams& params, uint64_t seed
 double sparseLeoTrueTof(const SparseLeoPass& pass, double t);
 
 /// The pass as a CRD v2 full-rate file (as slrPassCrd: filter flag 2 signal, 1 noise), satellite
-/// "simsat-sparse" (ILRS id 9999902, not in the missions table), station SIMU pad 9999.
+/// "simsat-sparse" (ILRS id 9999902, not in the missions table), station SIMU pad 9999 or the
+/// ILRS station simulated.
 std::string sparseLeoPassCrd(const SparseLeoPass& pass, int year = 2024, int month = 6, int day = 15);
 
 }  // namespace lwb::core::sim

@@ -9,6 +9,8 @@
 #include <numeric>
 
 #include "core/common/text.hpp"
+#include "core/slr/ilrs_tables.hpp"
+#include "core/slr/orbit_fit.hpp"
 #include "core/slr/refraction.hpp"
 #include "core/slr/slr_time.hpp"
 
@@ -432,6 +434,7 @@ struct ArcFit {
     double scale = NAN;      // robust scale of the TOF residuals (ms)
     double bic = INFINITY;   // n ln(scale^2) + k ln n
     Eigen::VectorXd resid;   // TOF residuals (ms)
+    Eigen::VectorXd coef;    // the design's coefficients (ms^2): the polynomial's, then B and C
 };
 
 // The arc's design: the polynomial's columns, cos(w s), sin(w s) and, for the Earth's rotation
@@ -590,6 +593,7 @@ ArcFit fitArc(const std::vector<double>& x, const std::vector<double>& s, const 
     const Eigen::MatrixXd a2 = arcDesign(legendre(x, degree), s, best.omega, rotation);
     Eigen::VectorXd coef;
     best.scale = robustArcResiduals(a2, tofMs, ysq, params.huberK, params.maxIterations, 3, &best.resid, &coef);
+    best.coef = coef;
     if (!std::isfinite(best.scale) || (checkOrbit && !arcIsAnOrbit(coef, best.omega, degree))) return best;
     // The scale of the fit: the bisquare's residuals, MAD about zero.
     std::vector<double> absr(n);
@@ -600,6 +604,22 @@ ArcFit fitArc(const std::vector<double>& x, const std::vector<double>& s, const 
     best.bic = nn * std::log(std::max(best.scale, 1e-18) * std::max(best.scale, 1e-18)) + k * std::log(nn);
     best.ok = true;
     return best;
+}
+
+// The circular orbit's fit (orbit_fit.hpp) on passes under 50 records, the screening's "short
+// LEO pass" (the arc's own rule for a short pass): a longer pass has the records to fit the arc's
+// free coefficients, and its satellite may be eccentric (Beacon-C, e = 0.025, over 400 records
+// of which half are noise: its normal points went 3.4 → 11.7 mm from the station's with the
+// circle).
+constexpr int kMaxOrbitFitPoints = 49;
+
+// ECEF (m) of a WGS-84 geodetic position.
+Eigen::Vector3d ecefOfGeodetic(double latDeg, double lonDeg, double heightM) {
+    constexpr double a = 6378137.0, f = 1 / 298.257223563, e2 = f * (2 - f);
+    const double la = latDeg * M_PI / 180, lo = lonDeg * M_PI / 180;
+    const double nu = a / std::sqrt(1 - e2 * std::sin(la) * std::sin(la));
+    return {(nu + heightM) * std::cos(la) * std::cos(lo), (nu + heightM) * std::cos(la) * std::sin(lo),
+            (nu * (1 - e2) + heightM) * std::sin(la)};
 }
 
 // Elevation and azimuth at a pass's epochs, interpolated in its pointing records (type 30);
@@ -698,14 +718,15 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         // The orbit arc (issue 43), when the data say it fits better: at least 8 records (4
         // parameters and as many degrees of freedom), at most half the polynomial's robust
         // scatter, and a lower BIC (n ln(scale^2) + k ln n) than the polynomial's.
-        ArcFit arc;
+        ArcFit arc, start;  // (start: the plain arc, the circular orbit's starting geometry)
+        double chosenBic = INFINITY;
         if (params.orbitArc && n >= 8 && std::isfinite(scale)) {
             std::vector<double> s(t.size());
             const double tm = 0.5 * (t0 + t1);
             for (size_t i = 0; i < t.size(); ++i) s[i] = t[i] - tm;
             // (polynomial degree, rotation terms): 4 + degree + 2 rotation parameters, each model
             // with 4 records more than parameters.
-            for (const auto [p, rot] : {std::pair{0, 0}, {0, 1}, {0, 2}}) {
+            for (const auto& [p, rot] : {std::pair{0, 0}, {0, 1}, {0, 2}}) {
                 if (4 + p + 2 * rot + 4 > n) continue;
                 if (cancelled(feedback)) {
                     res = OcResult();
@@ -713,6 +734,7 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
                     return res;
                 }
                 ArcFit f = fitArc(x, s, tofMs, ysq, p, rot, params);
+                if (rot == 0 && f.coef.size() >= 3 && std::isfinite(f.omega)) start = f;
                 if (f.ok && f.bic < arc.bic) arc = std::move(f);
             }
             const double nd = static_cast<double>(n);
@@ -722,13 +744,60 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             // and the polynomial in TOF^2 is not the geometry. A longer one only when the arc
             // halves the scatter and has the lower BIC (a dense pass's scatter is its gate's
             // noise, which either model follows: the polynomial stays unless the arc is clearly better).
+            chosenBic = polyBic;
             if (arc.ok && (n < 50 || arc.scale <= 0.5 * scale) && arc.bic < polyBic) {
                 resid = arc.resid;
                 res.trendDegree = arc.degree;
                 res.trendScaleS = arc.scale * 1e-3;
                 res.trendArcRateRadS = arc.omega;
+                chosenBic = arc.bic;
             } else {
                 arc.ok = false;
+            }
+        }
+        // The circular orbit itself (orbit_fit.hpp) where the ILRS table knows the station: its
+        // search about the plain arc's rate, on the points within 5 robust sigma of the trend so
+        // far. Taken when its BIC on those points' sums of squares is below the trend's so far (the
+        // MAD of 10–30 residuals is too noisy to tell models apart by).
+        CircularOrbitResult orbit;
+        const IlrsStation* station = findStation(pass.station.cdpPadId);
+        if (params.orbitArc && params.circularOrbit && station && start.coef.size() >= 3 && n >= 10 && n <= kMaxOrbitFitPoints &&
+            std::isfinite(chosenBic)) {
+            CircularOrbitParams cp;
+            cp.arcRate = start.omega;
+            cp.stationEcef = ecefOfGeodetic(station->latDeg, station->lonDeg, station->heightM);
+            const double lim = 5 * std::max(res.trendScaleS, 1e-12);
+            std::vector<double> s(t.size()), w(t.size());
+            const double tm = 0.5 * (t0 + t1);
+            double ssRef = 0, m = 0;
+            for (size_t i = 0; i < t.size(); ++i) {
+                const double r = resid(static_cast<Eigen::Index>(i)) * 1e-3;
+                s[i] = t[i] - tm;
+                w[i] = std::fabs(r) <= lim ? 1.0 : 0.0;
+                ssRef += w[i] * r * r;
+                m += w[i];
+            }
+            const int kRef = arc.ok ? arc.degree + 4 + 2 * arc.rotation : degree + 1;
+            const double best = m * std::log(std::max(ssRef, 1e-40) / m) + kRef * std::log(m);
+            if (cancelled(feedback)) {
+                res = OcResult();
+                res.error = "cancelled";
+                return res;
+            }
+            CircularOrbitResult f = fitCircularOrbit(s, y, w, cp);
+            if (f.ok) {
+                double ss = 0;
+                for (size_t i = 0; i < t.size(); ++i) ss += w[i] * f.residualS[i] * f.residualS[i];
+                const double bic = m * std::log(std::max(ss, 1e-40) / m) + f.parameters * std::log(m);
+                if (bic < best) orbit = std::move(f);
+            }
+            if (orbit.ok) {
+                for (size_t i = 0; i < t.size(); ++i) resid(static_cast<Eigen::Index>(i)) = orbit.residualS[i] * 1e3;
+                arc.ok = false;
+                res.trendDegree = 0;
+                res.trendScaleS = orbit.scaleS;
+                res.trendArcRateRadS = orbit.meanMotion;
+                res.trendOrbit = true;
             }
         }
 
@@ -748,8 +817,14 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             res.line.push_back(r.line);
             res.filter_flag.push_back(r.filterFlag);
         }
-        if (!arc.ok && !lowered.empty()) res.warnings.push_back(lowered);  // (the polynomial's; not the arc's)
-        if (arc.ok)
+        if (!arc.ok && !orbit.ok && !lowered.empty()) res.warnings.push_back(lowered);  // (the polynomial's only)
+        if (orbit.ok)
+            res.notes.push_back(name + ": no prediction: O-C is relative to a robust orbit-arc trend of the time of flight (" +
+                                "a circular orbit's range past the station fitted to the pass: radius " +
+                                formatFixed(orbit.radiusM / 1e3, 1) + " km, " + formatFixed(orbit.meanMotion * 1e3, 4) +
+                                " mrad/s (Kepler's for the radius), the station where the ILRS table puts it; a range "
+                                "bias is absorbed)");
+        else if (arc.ok)
             res.notes.push_back(name + ": no prediction: O-C is relative to a robust orbit-arc trend of the time of flight (" +
                                 "a circular orbit's range past the station, " + formatFixed(arc.omega * 1e3, 4) +
                                 " mrad/s, " +

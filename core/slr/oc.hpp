@@ -93,6 +93,8 @@ struct OcResult {
     double trendScaleS = NAN;           ///< FittedTrend: robust scale of the residuals (s)
     double trendArcRateRadS = NAN;      ///< FittedTrend: the orbit arc's angular rate (rad/s) when the arc model
                                         ///< was chosen (computeTrendOc); NaN: the polynomial in TOF^2
+    bool trendOrbit = false;            ///< FittedTrend: the circular orbit itself (orbit_fit.hpp) was chosen:
+                                        ///< its residuals need at most a bias and a drift (postfitForPass)
 };
 
 /// O-C of a pass against a prediction, station position given (ECEF, m). Never throws.
@@ -114,6 +116,10 @@ struct TrendOcParams {
     /// (TOF^2 = A + B cos wt + C sin wt + a polynomial of degree 0..2, w searched) and take it when
     /// it leaves at most half the polynomial's robust scatter and a lower information criterion.
     bool orbitArc = true;
+    /// Internal, no schema row (tests compare with and without it): with orbitArc, on a pass of
+    /// 10–49 records from a station the ILRS table knows, also fit the circular orbit itself
+    /// (orbit_fit.hpp) and take it when its BIC is the lower.
+    bool circularOrbit = true;
 };
 std::string validate(const TrendOcParams& p);
 

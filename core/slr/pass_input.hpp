@@ -83,6 +83,9 @@ struct PassData {
     bool ocComputed = false;
     OcParams ocParams;
     TrendOcParams ownTrendParams;
+    /// The O-C is relative to a circular orbit fitted to the pass itself (OcResult::trendOrbit):
+    /// the post-fit then models at most a bias and a drift over the whole pass (postfitForPass).
+    bool orbitTrend = false;
     std::vector<double> t;         ///< epoch (s since 0h UTC of the pass day for CRD input)
     std::vector<double> oc;        ///< O-C (s, two-way)
     std::vector<double> tof;       ///< observed two-way TOF (s); empty for O-C tables

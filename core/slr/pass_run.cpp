@@ -95,10 +95,15 @@ StationAgreement stationAgreement(const PassData& pass, const std::vector<uint8_
     return a;
 }
 
-PostfitParams postfitForPass(PostfitParams pp, std::string* note) {
+PostfitParams postfitForPass(PostfitParams pp, std::string* note, const PassData* pass) {
     if (pp.normalPoints && !(pp.binLengthS > 0) && !(pp.altitudeKm > 0)) {
         pp.normalPoints = false;
         if (note) *note = "no normal points: the satellite's altitude is unknown (give the bin length or the altitude)";
+    }
+    if (pass && pass->orbitTrend && pp.autoDegree && pp.splitGapS == 0) {
+        pp.autoDegree = false;  // (its BIC would also try splines: a cubic through a few bursts)
+        pp.degree = std::min(pp.degree, 1);
+        pp.splitGapS = -1;
     }
     return pp;
 }
@@ -487,7 +492,7 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
     }
     const PassData& pass = *in.pass;
     const auto t0 = std::chrono::steady_clock::now();
-    const PostfitParams pp = postfitForPass(params.postfit, &r.postNote);
+    const PostfitParams pp = postfitForPass(params.postfit, &r.postNote, &pass);
     r.screen = screenStage(pass, params.screen, reuse, &r, fb);
     if (cancelled(fb)) return r;
     if (!r.screen.ok) {

@@ -174,8 +174,12 @@ std::vector<std::string> passNormalPointContext(const PassData& pass, const Sine
 
 /// The post-fit's parameters for a pass: with neither a normal-point bin length nor the
 /// satellite's altitude (an O-C table names none) no bins can be laid, so the trend fit and the
-/// rejection run without normal points, and *note (when given) says why.
-PostfitParams postfitForPass(PostfitParams pp, std::string* note);
+/// rejection run without normal points, and *note (when given) says why. A pass whose O-C is
+/// relative to a circular orbit fitted to it (PassData::orbitTrend) has residuals that need at
+/// most a bias and a drift: with the automatic degree and split gap, its trend is then one line
+/// over the pass (per-burst polynomials or splines through a few returns would carry their noise
+/// into the normal points).
+PostfitParams postfitForPass(PostfitParams pp, std::string* note, const PassData* pass = nullptr);
 
 /// The SLR pass task (core/common/task.hpp), run by `laserwb-cli slr` (one pass and
 /// --all-passes) and by the workbench's SLR workspace (TaskJob<PassTask>): screens the pass,
