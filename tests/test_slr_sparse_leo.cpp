@@ -138,6 +138,15 @@ sim::SparseLeoParams sparseCase(uint64_t seed) {
 // coefficients) without the circular orbit, and everything (the default).
 enum class Trend { Polynomial, Arc, Orbit };
 
+// Seed's case without jitter or noise points.
+sim::SparseLeoPass noiseFreePass(uint64_t seed, sim::SparseLeoParams* params = nullptr) {
+    sim::SparseLeoParams p = sparseCase(seed);
+    p.jitterS = 0;
+    p.noisePoints = 0;
+    if (params) *params = p;
+    return sim::simulateSparseLeoPass(p, seed);
+}
+
 SparseOutcome runSparse(const sim::SparseLeoParams& sp, uint64_t seed, Trend trend, const QString& dir) {
     const bool orbitArc = trend != Trend::Polynomial;
     SparseOutcome o;
@@ -264,10 +273,7 @@ private slots:
     void circularOrbitFitsANoiseFreePass() {
         int fitted = 0;
         for (uint64_t seed = 1; seed <= 40; ++seed) {
-            sim::SparseLeoParams p = sparseCase(seed);
-            p.jitterS = 0;
-            p.noisePoints = 0;
-            const sim::SparseLeoPass s = sim::simulateSparseLeoPass(p, seed);
+            const sim::SparseLeoPass s = noiseFreePass(seed);
             QVERIFY(s.ok);
             const double tm = 0.5 * (s.epochS.front() + s.epochS.back());
             std::vector<double> ss;
@@ -326,10 +332,8 @@ private slots:
     void arcFollowsANoiseFreePass() {
         std::vector<double> worsts, worstsBefore;
         for (uint64_t seed = 1; seed <= 40; ++seed) {
-            sim::SparseLeoParams p = sparseCase(seed);
-            p.jitterS = 0;
-            p.noisePoints = 0;
-            const sim::SparseLeoPass s = sim::simulateSparseLeoPass(p, seed);
+            sim::SparseLeoParams p;
+            const sim::SparseLeoPass s = noiseFreePass(seed, &p);
             QVERIFY(s.ok);
             const CrdReadResult crd = parseCrd(sim::sparseLeoPassCrd(s), "sim.frd");
             QVERIFY2(crd.ok, crd.error.c_str());

@@ -1,6 +1,7 @@
 #include "core/sim/slr_sim_sparse.hpp"
 
 #include "core/slr/ilrs_tables.hpp"
+#include "core/slr/refraction.hpp"
 #include "core/sim/slr_sim.hpp"
 
 #include <algorithm>
@@ -67,11 +68,10 @@ SparseLeoPass simulateSparseLeoPass(const SparseLeoParams& p, uint64_t seed) {
             s.error = "sparse LEO pass: station " + std::to_string(p.stationPad) + " is not in the ILRS stations table";
             return s;
         }
-        // WGS-84: the station where the table puts it (its geocentric direction is "up" below).
-        constexpr double a = 6378137.0, f = 1 / 298.257223563, e2 = f * (2 - f);
-        const double la = is->latDeg * kDeg, lo = is->lonDeg * kDeg, nu = a / std::sqrt(1 - e2 * std::sin(la) * std::sin(la));
-        st = V3{(nu + is->heightM) * std::cos(la) * std::cos(lo), (nu + is->heightM) * std::cos(la) * std::sin(lo),
-                (nu * (1 - e2) + is->heightM) * std::sin(la)};
+        // The station where the table puts it (its geocentric direction is "up" below).
+        const Eigen::Vector3d e = slr::ecefFromGeodetic(is->latDeg, is->lonDeg, is->heightM);
+        st = V3{e.x(), e.y(), e.z()};
+        const double lo = is->lonDeg * kDeg;
         lat = std::atan2(st.z, std::hypot(st.x, st.y));
         lon = lo;
         s.stationPad = p.stationPad;

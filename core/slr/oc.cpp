@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <numeric>
 
+#include "core/common/golden.hpp"
 #include "core/common/text.hpp"
 #include "core/slr/ilrs_tables.hpp"
 #include "core/slr/orbit_fit.hpp"
@@ -573,20 +574,9 @@ ArcFit fitArc(const std::vector<double>& x, const std::vector<double>& s, const 
     if (!std::isfinite(bestScore)) return best;
     // Golden section in the grid cell pair about the best node.
     const double h = (hi - lo) / kGrid;
-    double a = std::max(lo, bestLw - h), b = std::min(hi, bestLw + h);
-    const double gr = 0.5 * (std::sqrt(5.0) - 1);
-    double c = b - gr * (b - a), d = a + gr * (b - a), fc = score(c), fd = score(d);
-    for (int it = 0; it < 30 && b - a > 1e-7; ++it) {
-        if (fc <= fd) {
-            b = d, d = c, fd = fc;
-            c = b - gr * (b - a), fc = score(c);
-        } else {
-            a = c, c = d, fc = fd;
-            d = a + gr * (b - a), fd = score(d);
-        }
-    }
-    const double lw = fc <= fd ? c : d;
-    if (std::min(fc, fd) <= bestScore) bestLw = lw;
+    double fMin = INFINITY;
+    const double lw = goldenSection(std::max(lo, bestLw - h), std::min(hi, bestLw + h), 30, 1e-7, score, &fMin);
+    if (fMin <= bestScore) bestLw = lw;
     best.omega = std::exp(bestLw);
     best.degree = degree;
     best.rotation = rotation;
@@ -612,15 +602,6 @@ ArcFit fitArc(const std::vector<double>& x, const std::vector<double>& s, const 
 // of which half are noise: its normal points went 3.4 → 11.7 mm from the station's with the
 // circle).
 constexpr int kMaxOrbitFitPoints = 49;
-
-// ECEF (m) of a WGS-84 geodetic position.
-Eigen::Vector3d ecefOfGeodetic(double latDeg, double lonDeg, double heightM) {
-    constexpr double a = 6378137.0, f = 1 / 298.257223563, e2 = f * (2 - f);
-    const double la = latDeg * M_PI / 180, lo = lonDeg * M_PI / 180;
-    const double nu = a / std::sqrt(1 - e2 * std::sin(la) * std::sin(la));
-    return {(nu + heightM) * std::cos(la) * std::cos(lo), (nu + heightM) * std::cos(la) * std::sin(lo),
-            (nu * (1 - e2) + heightM) * std::sin(la)};
-}
 
 // Elevation and azimuth at a pass's epochs, interpolated in its pointing records (type 30);
 // NaN without them.
@@ -765,7 +746,7 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             std::isfinite(chosenBic)) {
             CircularOrbitParams cp;
             cp.arcRate = start.omega;
-            cp.stationEcef = ecefOfGeodetic(station->latDeg, station->lonDeg, station->heightM);
+            cp.stationEcef = ecefFromGeodetic(station->latDeg, station->lonDeg, station->heightM);
             const double lim = 5 * std::max(res.trendScaleS, 1e-12);
             std::vector<double> s(t.size()), w(t.size());
             const double tm = 0.5 * (t0 + t1);

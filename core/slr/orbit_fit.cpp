@@ -4,6 +4,7 @@
 #include <cmath>
 #include <exception>
 
+#include "core/common/golden.hpp"
 #include "core/slr/oc.hpp"
 
 namespace lwb::core::slr {
@@ -213,7 +214,6 @@ Orbit searchOrbit(const CircularOrbitParams& p, const Data& d, double* ssrOut) {
             minima.push_back(row[i]);
     std::sort(minima.begin(), minima.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
     if (minima.size() > 3) minima.resize(3);
-    const double g = 0.5 * (std::sqrt(5.0) - 1);
     for (const auto& m : minima) {
         Orbit warm = best;
         auto trial = [&](double n) {
@@ -227,17 +227,7 @@ Orbit searchOrbit(const CircularOrbitParams& p, const Data& d, double* ssrOut) {
             if (r < bestSsr) bestSsr = r, best = r1 <= r2 ? f1 : f2, warm = best;
             return r;
         };
-        double a = m.first - p.arcRate * kStep, b = m.first + p.arcRate * kStep;
-        double c = b - g * (b - a), e = a + g * (b - a), fc = trial(c), fe = trial(e);
-        for (int it = 0; it < 20; ++it) {
-            if (fc <= fe) {
-                b = e, e = c, fe = fc;
-                c = b - g * (b - a), fc = trial(c);
-            } else {
-                a = c, c = e, fc = fe;
-                e = a + g * (b - a), fe = trial(e);
-            }
-        }
+        goldenSection(m.first - p.arcRate * kStep, m.first + p.arcRate * kStep, 20, 0.0, trial);
     }
     *ssrOut = bestSsr;
     return best;

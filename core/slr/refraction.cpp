@@ -11,6 +11,13 @@ constexpr double kF = 1.0 / 298.257222101;    // GRS80 flattening
 constexpr double kE2 = kF * (2.0 - kF);       // first eccentricity squared
 }  // namespace
 
+Eigen::Vector3d ecefFromGeodetic(double latDeg, double lonDeg, double heightM) {
+    const double la = latDeg * M_PI / 180, lo = lonDeg * M_PI / 180;
+    const double n = kA / std::sqrt(1 - kE2 * std::sin(la) * std::sin(la));
+    return {(n + heightM) * std::cos(la) * std::cos(lo), (n + heightM) * std::cos(la) * std::sin(lo),
+            (n * (1 - kE2) + heightM) * std::sin(la)};
+}
+
 Geodetic geodeticFromEcef(const Eigen::Vector3d& xyz) {
     Geodetic g;
     const double p = std::hypot(xyz.x(), xyz.y());

@@ -17,6 +17,9 @@ struct Geodetic {
 /// ECEF (m) -> geodetic latitude, longitude, height (GRS80), iterated to < 1e-12 rad.
 Geodetic geodeticFromEcef(const Eigen::Vector3d& xyz);
 
+/// Geodetic latitude, longitude (degrees) and height (m) on GRS80 -> ECEF (m).
+Eigen::Vector3d ecefFromGeodetic(double latDeg, double lonDeg, double heightM);
+
 /// Azimuth (rad, from north through east, 0..2π) and elevation (rad) of `target` seen from
 /// `station` (both ECEF, m), with the geodetic vertical of the station.
 void azimuthElevation(const Eigen::Vector3d& station, const Geodetic& geo, const Eigen::Vector3d& target,
