@@ -598,9 +598,8 @@ ArcFit fitArc(const std::vector<double>& x, const std::vector<double>& s, const 
 
 // The circular orbit's fit (orbit_fit.hpp) on passes under 50 records, the screening's "short
 // LEO pass" (the arc's own rule for a short pass): a longer pass has the records to fit the arc's
-// free coefficients, and its satellite may be eccentric (Beacon-C, e = 0.025, over 400 records
-// of which half are noise: its normal points went 3.4 → 11.7 mm from the station's with the
-// circle).
+// free coefficients, and its satellite may be eccentric (Beacon-C, e = 0.025, 96 records of
+// which half are noise: its normal points went 3.4 → 11.7 mm from the station's with the circle).
 constexpr int kMaxOrbitFitPoints = 49;
 
 // Elevation and azimuth at a pass's epochs, interpolated in its pointing records (type 30);
@@ -699,8 +698,7 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         // The orbit arc (issue 43), when the data say it fits better: at least 8 records (4
         // parameters and as many degrees of freedom), at most half the polynomial's robust
         // scatter, and a lower BIC (n ln(scale^2) + k ln n) than the polynomial's.
-        ArcFit arc, start;  // (start: the plain arc, the circular orbit's starting geometry)
-        double chosenBic = INFINITY;
+        ArcFit arc, start;  // (start: the plain arc, whose rate centres the circular orbit's search)
         if (params.orbitArc && n >= 8 && std::isfinite(scale)) {
             std::vector<double> s(t.size());
             const double tm = 0.5 * (t0 + t1);
@@ -725,13 +723,11 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             // and the polynomial in TOF^2 is not the geometry. A longer one only when the arc
             // halves the scatter and has the lower BIC (a dense pass's scatter is its gate's
             // noise, which either model follows: the polynomial stays unless the arc is clearly better).
-            chosenBic = polyBic;
             if (arc.ok && (n < 50 || arc.scale <= 0.5 * scale) && arc.bic < polyBic) {
                 resid = arc.resid;
                 res.trendDegree = arc.degree;
                 res.trendScaleS = arc.scale * 1e-3;
                 res.trendArcRateRadS = arc.omega;
-                chosenBic = arc.bic;
             } else {
                 arc.ok = false;
             }
@@ -742,8 +738,8 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         // MAD of 10–30 residuals is too noisy to tell models apart by).
         CircularOrbitResult orbit;
         const IlrsStation* station = findStation(pass.station.cdpPadId);
-        if (params.orbitArc && params.circularOrbit && station && start.coef.size() >= 3 && n >= 10 && n <= kMaxOrbitFitPoints &&
-            std::isfinite(chosenBic)) {
+        if (params.orbitArc && params.circularOrbit && station && start.coef.size() >= 3 && n >= 10 &&
+            n <= kMaxOrbitFitPoints) {
             CircularOrbitParams cp;
             cp.arcRate = start.omega;
             cp.stationEcef = ecefFromGeodetic(station->latDeg, station->lonDeg, station->heightM);

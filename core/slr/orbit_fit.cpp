@@ -11,8 +11,6 @@ namespace lwb::core::slr {
 
 namespace {
 
-constexpr double kWgsA = 6378137.0, kWgsB = 6356752.314245;
-
 double keplerRadius(double n) { return std::cbrt(kEarthGm / (n * n)); }
 double keplerMotion(double r) { return std::sqrt(kEarthGm / (r * r * r)); }
 
@@ -192,14 +190,15 @@ double madAboutZero(const std::vector<double>& r, const std::vector<double>& w) 
 
 // The search: the orientation and bias fitted at every n of a grid within 20 % of the pass's
 // apparent rate (the Earth's turning makes it differ from the orbit's by up to 7 %, and a noisy
-// arc's rate is itself a few per cent off), 0.4 % apart; the four best local minima in n refined by golden section (each trial's orientation
-// and bias from its linear start and from the best so far, the lower kept).
+// arc's rate is itself a few per cent off), 0.4 % apart; the three best local minima in n
+// refined by golden section, 20 steps (each trial's orientation and bias from its linear start
+// and from the best so far, the lower kept).
 Orbit searchOrbit(const CircularOrbitParams& p, const Data& d, double* ssrOut) {
     const Model inner(p, {1, 2, 3, 4});
     Orbit best;
     double bestSsr = INFINITY;
     constexpr int kHalf = 50;
-    constexpr double kStep = 0.004;
+    constexpr double kStep = 0.004;  // (0.8 % steps: 15 NPs beyond the bound tolerance instead of 11)
     std::vector<std::pair<double, double>> row;  // (n, ssr)
     for (int k = -kHalf; k <= kHalf; ++k) {
         const double n = p.arcRate * (1 + kStep * k);
