@@ -408,12 +408,10 @@ std::string stemOf(const std::string& path) {
 }
 
 // One file's --all-passes run (core runStationDay): progress on stderr, the summary line.
-int screenAllPasses(const std::string& cmd, const slr::SlrSetup& setup, const std::string& dir, int threads, bool quiet,
-                    const core::Provenance& prov) {
+int screenAllPasses(const std::string& cmd, const slr::SlrSetup& setup, const std::string& dir, int threads, bool quiet) {
     slr::DayOptions opt;
     opt.outDir = dir;
     opt.threads = threads;
-    opt.provenance = prov;
     std::unique_ptr<Progress> progress;
     size_t done = 0;
     slr::DayObserver obs;
@@ -437,7 +435,7 @@ int screenAllPasses(const std::string& cmd, const slr::SlrSetup& setup, const st
 
 // --all-passes over the inputs of this shard: one file's products in --out-dir, or with many
 // files each file's in DIR/<its name>/; a file that fails does not stop the others.
-int allPassFiles(const std::string& cmd, const SlrPlan& plan, const slr::SlrSetup& setup, const core::Provenance& prov,
+int allPassFiles(const std::string& cmd, const SlrPlan& plan, const slr::SlrSetup& setup,
                  const BatchOptions& bo, RunSummary& summary, bool quiet) {
     const std::vector<std::string>& inputs = plan.inputs;
     const bool many = inputs.size() > 1;
@@ -490,8 +488,9 @@ int allPassFiles(const std::string& cmd, const SlrPlan& plan, const slr::SlrSetu
         core::Json e = core::Json::object();
         e["input"] = inputs[i];
         e["outputs"] = core::Json::array({dirs[i]});
-        core::Provenance p = prov;
-        p.inputs.front() = inputs[i];
+        slr::SlrSetup one = setup;
+        one.sources.input = inputs[i];
+        const core::Provenance p = slr::slrProvenance(one, true);  // (what its run records)
         std::string why;
         if (bo.skipExisting && outputsComplete(p, {}, dirs[i] + "/provenance.json", &why)) {
             e["status"] = "skipped";
@@ -500,9 +499,7 @@ int allPassFiles(const std::string& cmd, const SlrPlan& plan, const slr::SlrSetu
             continue;
         }
         const auto t0 = std::chrono::steady_clock::now();
-        slr::SlrSetup one = setup;
-        one.sources.input = inputs[i];
-        const int rc = screenAllPasses(cmd, one, dirs[i], static_cast<int>(plan.threads), quiet, p);
+        const int rc = screenAllPasses(cmd, one, dirs[i], static_cast<int>(plan.threads), quiet);
         ++run;
         e["status"] = rc == kOk ? "ok" : rc == kDoubtful ? "doubtful" : rc == kSomeFailed ? "some passes failed" : "failed";
         e["exit_code"] = rc;
@@ -541,10 +538,10 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
     slr::SlrSetup setup;
     slr::SlrError e;
     if (!slr::setUpSlrRun(sources, &setup, &e)) return failed(cmd, e);
-    // Provenance: the parameters (--all-passes: before each pass's preset and context; the
-    // presets file is an input), what else shapes the outputs, and the inputs.
-    core::Provenance prov = slr::slrProvenance(setup, allPasses);
-    if (allPasses) return allPassFiles(cmd, plan, setup, prov, bo, summary, quiet);
+    // (--all-passes: the set-up read once for every file; each file's run records its provenance)
+    if (allPasses) return allPassFiles(cmd, plan, setup, bo, summary, quiet);
+    // Provenance: the parameters, what else shapes the outputs, and the inputs.
+    core::Provenance prov = slr::slrProvenance(setup, false);
 
     // ---- the pass: read, chosen (the first pass to screen unless --pass), resolved ----
     const slr::OpenedPass opened = slr::openPass(setup);

@@ -15,6 +15,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/parallel.hpp"
+#include "core/common/provenance.hpp"
 #include "core/common/text.hpp"
 #include "core/sim/slr_sim.hpp"
 #include "core/slr/oc_csv.hpp"
@@ -165,7 +166,10 @@ const char* kBenchUsage =
     "  --day N    instead: a station's day of N simulated passes (khz, leo and conventional in turn,\n"
     "             --points each, default 20000) in one CRD file, screened by 'slr --all-passes' in a\n"
     "             fresh process on 1 thread and on every core: wall and CPU time, peak memory, and\n"
-    "             whether the products are the same.\n";
+    "             whether the products are the same.\n"
+    "  --end-to-end  instead: for 10^5, 10^6, 4*10^6 and 10^7 events (or N) a simulated pass as CRD\n"
+    "             and as O-C CSV, 'slr FILE -o OUT.csv -q' on each in a fresh process: wall time, its\n"
+    "             ratio to a plain read of the same file, peak memory and bytes per event.\n";
 
 struct BenchRow {
     double parse = 0, screen = 0, autoScale = 0, postfit = 0, total = 0;
@@ -325,6 +329,108 @@ int benchDay(const std::string& cmd, long long passes, long long points, long lo
     return same ? kOk : fail(cmd, "the products on 1 thread and on every core differ");
 }
 
+// ---- bench slr --end-to-end: the command on CRD and CSV passes against a plain read ------------
+
+// A plain read of the file as issue 44 measured it: awk summing each data line's first two
+// numbers (CRD: type-10 records; CSV: every line after the header), in a child process. NaN
+// when awk cannot be run.
+double plainReadSeconds(const std::string& path) {
+    const bool crd = path.size() > 4 && path.compare(path.size() - 4, 4, ".frd") == 0;
+    const char* program = crd ? "$1 == \"10\" { s += $2 + $3 } END { print s > \"/dev/null\" }"
+                              : "NR > 1 { s += $1 + $2 } END { print s > \"/dev/null\" }";
+    const auto t0 = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) return NAN;
+    if (pid == 0) {
+        if (crd) execlp("awk", "awk", program, path.c_str(), static_cast<char*>(nullptr));
+        else execlp("awk", "awk", "-F,", program, path.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    int status = 0;
+    if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return NAN;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// laserwb-cli slr FILE -o OUT -q in a child process: wall time, peak RSS, exit code.
+DayRun runSlrCommand(const std::string& input, const std::string& out) {
+    DayRun r;
+    const auto t0 = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) return r;
+    if (pid == 0) {
+        execl("/proc/self/exe", "laserwb-cli", "slr", input.c_str(), "-o", out.c_str(), "-q", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    int status = 0;
+    struct rusage ru {};
+    if (wait4(pid, &status, 0, &ru) != pid) return r;
+    r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.cpu = static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) + 1e-6 * static_cast<double>(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+    r.peakMb = static_cast<double>(ru.ru_maxrss) / 1024.0;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+// bench slr --end-to-end: for each size a simulated pass written as CRD and as an O-C CSV, then
+// `laserwb-cli slr FILE -o OUT.csv -q` on each in a fresh process (wall, peak RSS, bytes per
+// event) beside a plain read of the same file in the same run (issue 44's table).
+int benchEndToEnd(const std::string& cmd, const std::vector<long long>& sizes, sim::SlrKind kind, double fraction,
+                  long long seed) {
+    std::string dir = "/tmp/laserwb-bench-e2e-XXXXXX";
+    if (!mkdtemp(dir.data())) return fail(cmd, "cannot create a temporary folder");
+    const sim::SlrSimParams base = sim::slrSimPreset(kind);
+    std::cout << "laserwb-cli slr FILE -o OUT.csv -q in a fresh process, " << sim::slrKindName(kind)
+              << " passes (signal fraction " << core::formatFixed(fraction, 3)
+              << ", no prediction: the O-C of a CRD pass is its own TOF trend); plain read = awk summing each data line's "
+                 "first two numbers, in the same run (the file in the page cache).\n\n"
+              << "| events | input | file (MB) | plain read (s) | slr wall (s) | over the read | CPU (s) | peak RSS (MB) | "
+                 "bytes/event | exit |\n|---|---|---|---|---|---|---|---|---|---|\n"
+              << std::flush;
+    int rc = kOk;
+    for (long long n : sizes) {
+        const std::string crd = dir + "/pass.frd", csv = dir + "/pass.csv", out = dir + "/out.csv";
+        BenchRow made;
+        const bool simOk = inChild([&]() {
+            BenchRow r;
+            sim::SlrSimParams p = base;
+            p.points = n;
+            p.signalFraction = fraction;
+            const sim::SlrSimPass pass = sim::simulateSlrPass(p, static_cast<uint64_t>(seed));
+            std::string e;
+            r.ok = pass.ok && core::writeFileAtomic(crd, sim::slrPassCrd(p, pass), &e) && writePassCsv(csv, pass, false, &e);
+            return r;
+        }, &made);
+        if (!simOk) {
+            rc = fail(cmd, "simulating " + std::to_string(n) + " events failed");
+            break;
+        }
+        for (const std::string* in : {&crd, &csv}) {
+            const double read = plainReadSeconds(*in);
+            const DayRun r = runSlrCommand(*in, out);
+            std::FILE* f = std::fopen(in->c_str(), "rb");
+            double mb = 0;
+            if (f) {
+                std::fseek(f, 0, SEEK_END);
+                mb = static_cast<double>(std::ftell(f)) / 1e6;
+                std::fclose(f);
+            }
+            std::cout << "| " << n << " | " << (in == &crd ? "CRD" : "CSV") << " | " << core::formatFixed(mb, 1) << " | "
+                      << core::formatFixed(read, 3) << " | " << core::formatFixed(r.wall, 3) << " | "
+                      << core::formatFixed(r.wall / read, 1) << "x | " << core::formatFixed(r.cpu, 3) << " | "
+                      << core::formatFixed(r.peakMb, 1) << " | " << core::formatFixed(r.peakMb * 1048576.0 / static_cast<double>(n), 0)
+                      << " | " << r.exitCode << " |\n"
+                      << std::flush;
+            if (r.exitCode != 0 && r.exitCode != 3) rc = fail(cmd, "slr on " + std::to_string(n) + " events failed (exit " + std::to_string(r.exitCode) + ")");
+            std::remove(out.c_str());
+            std::remove(core::provenancePathFor(out).c_str());
+        }
+        std::remove(crd.c_str());
+        std::remove(csv.c_str());
+    }
+    ::rmdir(dir.c_str());
+    return rc;
+}
+
 // The bench's simulated pass of n points written to csv (run in a child by inChild).
 BenchRow simulatePassCsv(const sim::SlrSimParams& base, long long n, double fraction, long long seed,
                          const std::string& csv) {
@@ -408,7 +514,7 @@ int cmdBenchSlr(int argc, char** argv) {
     const std::string cmd = "bench slr";
     Args a(cmd, kBenchUsage);
     for (const char* o : {"--points", "--kind", "--signal-fraction", "--seed", "--day"}) a.option(o, true);
-    for (const char* o : {"--help", "-h"}) a.option(o, false);
+    for (const char* o : {"--help", "-h", "--end-to-end"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
         std::cout << kBenchUsage;
@@ -427,6 +533,9 @@ int cmdBenchSlr(int argc, char** argv) {
     long long day = 0;
     if (!a.getInt("--day", 1, 10000, &day, &err)) return fail(cmd, err, kUsage);
     if (day > 0) return benchDay(cmd, day, points > 0 ? points : 20000, seed);
+    if (a.has("--end-to-end"))
+        return benchEndToEnd(cmd, points > 0 ? std::vector<long long>{points} : std::vector<long long>{100000, 1000000, 4000000, 10000000},
+                             kind, fraction, seed);
     std::vector<long long> sizes = {10000, 100000, 1000000};
     if (points > 0) sizes = {points};
     std::string dir = "/tmp/laserwb-bench-slr-XXXXXX";

@@ -561,6 +561,56 @@ private slots:
         }
     }
 
+    /// A pass of more records than a trend's robust fit takes (TrendOcParams::fitMaxPoints, 20 000:
+    /// a kHz pass) is fitted on every k-th record and its residuals computed for all (the fit's
+    /// QRs of the whole pass took 20 s of a 10^6-event pass). Measured here on real BLITS passes
+    /// of 1200+ records with the limit lowered to 400: with the polynomial alone, and with the arc
+    /// where both fits choose the same model, the trend at every station-flagged point is within
+    /// half the whole fit's robust scale of the whole pass's (a fit of k coefficients to m
+    /// records is uncertain by about scale * sqrt(k / m), 0.11 scale for 5 of 400; its worst
+    /// over the pass a few times that: 0.15-0.43 measured, 15-124 ps). Which model is chosen may
+    /// differ: on one pass the arc at the search's lowest rate (with the Earth's rotation terms,
+    /// 49 ps) passes the orbit check (arcIsAnOrbit) for one fit and misses it for the other, so
+    /// that the whole pass keeps its polynomial (288 ps); at most one pass may differ so. (No
+    /// BLITS pass this long takes the arc under both fits: the arc's sampled path runs there
+    /// only on that pass.)
+    void trendOfALongPassFromEvenlyTakenRecords() {
+        if (!lwbtest::haveShared("slr/blits_201206.frd")) QSKIP("shared SLR data absent");
+        const CrdReadResult r = readCrd(lwbtest::str(lwbtest::sharedPath("slr/blits_201206.frd")));
+        QVERIFY2(r.ok, r.error.c_str());
+        int compared = 0, otherModel = 0;
+        for (const bool arc : {false, true}) {
+            TrendOcParams whole, sampled;
+            whole.orbitArc = sampled.orbitArc = arc;
+            sampled.fitMaxPoints = 400;
+            for (const CrdPass& p : r.file.passes) {
+                if (p.ranges.size() < 1200) continue;  // (at least 3 records for every one fitted)
+                const OcResult a = computeTrendOc(p, whole);
+                const OcResult b = computeTrendOc(p, sampled);
+                QVERIFY2(a.ok && b.ok, (a.error + b.error).c_str());
+                QCOMPARE(b.oc_s.size(), p.ranges.size());
+                const bool arcA = std::isfinite(a.trendArcRateRadS), arcB = std::isfinite(b.trendArcRateRadS);
+                if (arcA != arcB || a.trendDegree != b.trendDegree) {
+                    qInfo("%zu records: the models differ (whole pass: %s, %.0f ps; 400 records: %s, %.0f ps)", p.ranges.size(),
+                          arcA ? "arc" : "polynomial", a.trendScaleS * 1e12, arcB ? "arc" : "polynomial", b.trendScaleS * 1e12);
+                    ++otherModel;
+                    continue;
+                }
+                double worst = 0;
+                for (size_t i = 0; i < p.ranges.size(); ++i)
+                    if (a.filter_flag[i] == 2) worst = std::max(worst, std::fabs(b.oc_s[i] - a.oc_s[i]));
+                qInfo("%zu records, %s: the trend of 400 of them within %.1f ps of the whole pass's at the station's "
+                      "signal (%.2f of its robust scale)",
+                      p.ranges.size(), arcA ? "arc" : "polynomial", worst * 1e12, worst / a.trendScaleS);
+                QVERIFY2(worst < 0.5 * a.trendScaleS,
+                         qPrintable(QString("%1 ps, scale %2 ps").arg(worst * 1e12).arg(a.trendScaleS * 1e12)));
+                ++compared;
+            }
+        }
+        QVERIFY(compared >= 12);
+        QVERIFY(otherModel <= 1);
+    }
+
     void trendFallbackErrors() {
         CrdPass p;
         p.session.startYear = 2020, p.session.startMonth = 1, p.session.startDay = 1;

@@ -62,19 +62,6 @@ struct PassRun {
     throw Error(e.message);
 }
 
-// The core's set-up of `s`, with the GIL released (it reads files).
-slr::SlrSetup setUp(const slr::SlrSources& s) {
-    slr::SlrSetup setup;
-    slr::SlrError e;
-    bool ok;
-    {
-        py::gil_scoped_release nogil;
-        ok = slr::setUpSlrRun(s, &setup, &e);
-    }
-    if (!ok) raise(e);
-    return setup;
-}
-
 py::dict summaryDict(const slr::PassSummary& s) {
     return py::dict("pass_number"_a = s.index + 1, "satellite"_a = s.satellite, "ilrs_id"_a = s.ilrsId, "station"_a = s.station,
                     "start"_a = s.start, "end"_a = s.end, "ranges"_a = s.ranges, "normal_points"_a = s.normalPoints,
@@ -140,11 +127,10 @@ PassRun runPass(const Pass& pass, const py::object& params, const py::object& pr
     if (!stations.is_none()) src.stations = fsPath(stations);
     gatherParams(params, &src);
     src.searchThreads = threadCount(threads);
-    auto setup = std::make_shared<const slr::SlrSetup>(setUp(src));
     slr::ResolvedRun done;
     {
         py::gil_scoped_release nogil;
-        done = slr::resolveAndRunPass(*setup, *pass.data);
+        done = slr::resolveAndRunPass(src, *pass.data);
     }
     if (!done.ok) raise(done.error);
     PassRun run;
@@ -152,7 +138,7 @@ PassRun runPass(const Pass& pass, const py::object& params, const py::object& pr
     run.openingNotes = pass.warnings;
     run.openingNotes.insert(run.openingNotes.end(), pass.notes.begin(), pass.notes.end());
     run.opened = pass.sources;
-    run.setup = std::move(setup);
+    run.setup = std::move(done.setup);
     run.settings = std::move(done.settings);
     run.r = std::move(done.result);
     return run;
@@ -170,16 +156,13 @@ py::list processFile(const py::object& path, const py::object& outDir, const py:
     if (!cpf.is_none()) src.cpf = fsPath(cpf);
     if (!stations.is_none()) src.stations = fsPath(stations);
     gatherParams(params, &src);
-    const int nThreads = threadCount(threads);
-    const slr::SlrSetup setup = setUp(src);
     slr::DayOptions opt;
     opt.outDir = fsPath(outDir);
-    opt.threads = nThreads;
-    opt.provenance = slr::slrProvenance(setup, true);
+    opt.threads = threadCount(threads);
     slr::DayResult r;
     {
         py::gil_scoped_release nogil;
-        r = slr::runStationDay(setup, opt);
+        r = slr::runStationDay(src, opt);
     }
     if (!r.ok) raise(r.error);
     py::list rows;

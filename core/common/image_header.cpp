@@ -169,7 +169,7 @@ std::string imageSizeProblem(std::string_view bytes, const std::string& source, 
         return source + ": the image is " + std::to_string(h.width) + " x " + std::to_string(h.height) + " = " +
                (h.width <= INT64_MAX / h.height ? std::to_string(h.width * h.height) : std::string("over 9.2e18")) + " pixels, more than the limit of " + std::to_string(maxPixels) +
                " pixels (raise it with --max-pixels)";
-    if (h.format == "PNG")
+    if (std::string_view(h.format) == "PNG")  // (format is a C string: compared as text, not as a pointer)
         if (std::string why = pngTruncation(bytes); !why.empty()) return source + ": not a readable image (" + why + ")";
     return {};
 }

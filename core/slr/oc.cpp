@@ -366,6 +366,54 @@ double medianOf(std::vector<double> v) {
     return med;
 }
 
+// (TrendOcParams::fitMaxPoints, 20 000, is above every shared real pass, BLITS's longest having
+// ~4000 records: their trends are the whole pass's fit.)
+// Indices 0, k, 2k, ... of n records, k the least step that keeps at most `most` of them.
+std::vector<size_t> evenlyTaken(size_t n, size_t most) {
+    most = std::max<size_t>(most, 1);
+    const size_t every = std::max<size_t>(1, (n + most - 1) / most);
+    std::vector<size_t> at;
+    for (size_t i = 0; i < n; i += every) at.push_back(i);
+    return at;
+}
+
+template <class T>
+std::vector<T> takeAt(const std::vector<T>& v, const std::vector<size_t>& at) {
+    std::vector<T> out(at.size());
+    for (size_t k = 0; k < at.size(); ++k) out[k] = v[at[k]];
+    return out;
+}
+
+Eigen::VectorXd takeAt(const Eigen::VectorXd& v, const std::vector<size_t>& at) {
+    Eigen::VectorXd out(static_cast<Eigen::Index>(at.size()));
+    for (size_t k = 0; k < at.size(); ++k) out(static_cast<Eigen::Index>(k)) = v(static_cast<Eigen::Index>(at[k]));
+    return out;
+}
+
+// The TOF residuals (ms) of every record from a squared-TOF fit's coefficients, its design made
+// for a block of rows at a time (`design(begin, end)`), so that no n-row matrix is built. False
+// when the squared trend is not positive somewhere.
+template <class Design>
+bool residualsOfAll(size_t n, const Design& design, const Eigen::VectorXd& coef, const Eigen::VectorXd& tofMs,
+                    Eigen::VectorXd* resid) {
+    resid->resize(static_cast<Eigen::Index>(n));
+    constexpr size_t kBlock = 1 << 14;
+    for (size_t b = 0; b < n; b += kBlock) {
+        const size_t e = std::min(n, b + kBlock);
+        const Eigen::VectorXd fit = design(b, e) * coef;
+        for (size_t i = b; i < e; ++i) {
+            const double f = fit(static_cast<Eigen::Index>(i - b));
+            if (!(f > 0)) return false;
+            (*resid)(static_cast<Eigen::Index>(i)) = tofMs(static_cast<Eigen::Index>(i)) - std::sqrt(f);
+        }
+    }
+    return true;
+}
+
+std::vector<double> slice(const std::vector<double>& v, size_t b, size_t e) {
+    return std::vector<double>(v.begin() + static_cast<long>(b), v.begin() + static_cast<long>(e));
+}
+
 }  // namespace
 
 namespace {
@@ -374,7 +422,8 @@ namespace {
 // the residuals' scale settles: the residuals in ms into *resid, the robust scale (ms) into
 // *scale. 1 fitted, 0 not (degenerate), -1 cancelled.
 int robustTofTrend(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs, const Eigen::VectorXd& ysq,
-                   const TrendOcParams& params, const Feedback* feedback, Eigen::VectorXd* residOut, double* scaleOut) {
+                   const TrendOcParams& params, const Feedback* feedback, Eigen::VectorXd* residOut, double* scaleOut,
+                   Eigen::VectorXd* coefOut) {
     const Eigen::Index nn = tofMs.size();
     // Weights in tof^2 space: d(tof^2) = 2 tof d(tof), so 1/(2 tof)^2 makes the fit least squares in tof.
     Eigen::VectorXd base(nn), w = Eigen::VectorXd::Ones(nn), resid = Eigen::VectorXd::Zero(nn);
@@ -395,6 +444,7 @@ int robustTofTrend(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs, const
             r(i) = good ? tofMs(i) - std::sqrt(fit(i)) : 0;
         }
         if (!good) break;  // a non-positive squared trend: keep the previous fit
+        if (coefOut) *coefOut = coef;
         resid = r;
         fitted = true;
         std::vector<double> absr(static_cast<size_t>(nn));
@@ -538,7 +588,7 @@ bool arcIsAnOrbit(const Eigen::VectorXd& coef, double omega, int degree) {
 
 // The best arc for a polynomial of `degree` under it: w on a log grid over [5e-5, 1.4e-3] rad/s,
 // refined by golden section, each w scored by the robust scale of its Huber fit (on at most 600
-// points, evenly taken); the final fit at the best w on every point.
+// points, evenly taken); the final fit at the best w on every point (at most fitMaxPoints).
 ArcFit fitArc(const std::vector<double>& x, const std::vector<double>& s, const Eigen::VectorXd& tofMs,
               const Eigen::VectorXd& ysq, int degree, int rotation, const TrendOcParams& params) {
     ArcFit best;
@@ -580,9 +630,20 @@ ArcFit fitArc(const std::vector<double>& x, const std::vector<double>& s, const 
     best.omega = std::exp(bestLw);
     best.degree = degree;
     best.rotation = rotation;
-    const Eigen::MatrixXd a2 = arcDesign(legendre(x, degree), s, best.omega, rotation);
     Eigen::VectorXd coef;
-    best.scale = robustArcResiduals(a2, tofMs, ysq, params.huberK, params.maxIterations, 3, &best.resid, &coef);
+    if (n <= params.fitMaxPoints) {
+        const Eigen::MatrixXd a2 = arcDesign(legendre(x, degree), s, best.omega, rotation);
+        best.scale = robustArcResiduals(a2, tofMs, ysq, params.huberK, params.maxIterations, 3, &best.resid, &coef);
+    } else {  // (a kHz pass: fitted on fitMaxPoints of its records)
+        const std::vector<size_t> at = evenlyTaken(n, params.fitMaxPoints);
+        Eigen::VectorXd rf;
+        best.scale = robustArcResiduals(arcDesign(legendre(takeAt(x, at), degree), takeAt(s, at), best.omega, rotation),
+                                        takeAt(tofMs, at), takeAt(ysq, at), params.huberK, params.maxIterations, 3, &rf, &coef);
+        const auto design = [&](size_t b, size_t e) {
+            return arcDesign(legendre(slice(x, b, e), degree), slice(s, b, e), best.omega, rotation);
+        };
+        if (std::isfinite(best.scale) && !residualsOfAll(n, design, coef, tofMs, &best.resid)) best.scale = NAN;
+    }
     best.coef = coef;
     if (!std::isfinite(best.scale) || (checkOrbit && !arcIsAnOrbit(coef, best.omega, degree))) return best;
     // The scale of the fit: the bisquare's residuals, MAD about zero.
@@ -670,7 +731,6 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
                                                            : std::string();
         std::vector<double> x(t.size());
         for (size_t i = 0; i < t.size(); ++i) x[i] = 2 * (t[i] - t0) / (t1 - t0) - 1;
-        const Eigen::MatrixXd a = legendre(x, degree);
         // The polynomial models the squared time of flight (ms^2): a pass's range is close to
         // sqrt(d^2 + v^2 (t - t0)^2), so its square is nearly quadratic in time and a low degree
         // reaches the ranging noise where a polynomial in the range itself needs degree > 12.
@@ -682,7 +742,22 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         }
         Eigen::VectorXd resid;
         double scale = NAN;
-        const int fit = robustTofTrend(a, tofMs, ysq, params, feedback, &resid, &scale);
+        int fit;
+        if (t.size() <= params.fitMaxPoints) {
+            fit = robustTofTrend(legendre(x, degree), tofMs, ysq, params, feedback, &resid, &scale, nullptr);
+        } else {  // (a kHz pass: fitted on fitMaxPoints of its records, the residuals of all)
+            const std::vector<size_t> at = evenlyTaken(t.size(), params.fitMaxPoints);
+            Eigen::VectorXd coef;
+            fit = robustTofTrend(legendre(takeAt(x, at), degree), takeAt(tofMs, at), takeAt(ysq, at), params, feedback, &resid,
+                                 &scale, &coef);
+            const auto design = [&](size_t b, size_t e) { return legendre(slice(x, b, e), degree); };
+            if (fit > 0 && !residualsOfAll(t.size(), design, coef, tofMs, &resid)) fit = 0;
+            if (fit > 0) {
+                std::vector<double> absr(t.size());
+                for (size_t i = 0; i < t.size(); ++i) absr[i] = std::fabs(resid(static_cast<Eigen::Index>(i)));
+                scale = 1.4826 * medianOf(absr);
+            }
+        }
         if (fit < 0) {
             res = OcResult();
             res.error = "cancelled";

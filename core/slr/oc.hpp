@@ -120,6 +120,10 @@ struct TrendOcParams {
     /// 10–49 records from a station the ILRS table knows, also fit the circular orbit itself
     /// (orbit_fit.hpp) and take it when its BIC is the lower.
     bool circularOrbit = true;
+    /// Internal, no schema row: the most records a trend's robust fit takes; a pass with more is
+    /// fitted on every k-th (evenly taken) and its residuals computed for all. Each reweighting
+    /// step is a QR of the design: on a 10^6-event kHz pass the whole-pass fit took 20 s.
+    size_t fitMaxPoints = 20000;
 };
 std::string validate(const TrendOcParams& p);
 

@@ -297,6 +297,15 @@ ResolvedRun resolveAndRunPass(const SlrSetup& setup, const PassData& pass, Feedb
     return out;
 }
 
+ResolvedRun resolveAndRunPass(const SlrSources& sources, const PassData& pass, Feedback* fb) {
+    auto setup = std::make_shared<SlrSetup>();
+    ResolvedRun out;
+    if (!setUpSlrRun(sources, setup.get(), &out.error)) return out;
+    out = resolveAndRunPass(*setup, pass, fb);
+    out.setup = std::move(setup);
+    return out;
+}
+
 const std::vector<uint8_t>& deliveredFlags(const PassRunResult& r) {
     return r.postOk && r.post.kept.size() == r.accepted.size() ? r.post.kept : r.accepted;
 }

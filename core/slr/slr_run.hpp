@@ -152,8 +152,11 @@ struct ResolvedRun {
     SlrError error;
     PassSettings settings;
     PassRunResult result;
+    std::shared_ptr<const SlrSetup> setup;  ///< the set-up of the sources overload (its report needs it)
 };
 ResolvedRun resolveAndRunPass(const SlrSetup& setup, const PassData& pass, Feedback* fb = nullptr);
+/// The same from the sources a front end gathered (Python's run): setUpSlrRun, then the above.
+ResolvedRun resolveAndRunPass(const SlrSources& sources, const PassData& pass, Feedback* fb = nullptr);
 
 /// The filter flags a screened pass is delivered with: what the post-fit kept (its rejects are
 /// noise), else what the screening accepted. Every flagged-CRD product uses them.

@@ -332,7 +332,7 @@ private:
                 for (const char* ext : {".csv", ".frd", ".npt"}) written.push_back(out(i, ext));
         if (m_res.dayNormalPoints) written.push_back(nptPath());
         written.push_back(summaryPath());
-        if (!stageProvenance(m_outs, m_opt.provenance, written, provenancePath(), &err)) return failure({err, false});
+        if (!stageProvenance(m_outs, slrProvenance(m_setup, true), written, provenancePath(), &err)) return failure({err, false});
         if (!m_outs.commit()) return failure({m_outs.error(), m_outs.namingProblem()});
         m_folder->keep();
         written.push_back(provenancePath());
@@ -368,6 +368,13 @@ DayResult runStationDay(const SlrSetup& setup, const DayOptions& options, const 
         r.error = {setup.sources.input + ": internal error: " + e.what(), false};
         return r;
     }
+}
+
+DayResult runStationDay(const SlrSources& sources, const DayOptions& options, const DayObserver& observer) {
+    SlrSetup setup;
+    DayResult r;
+    if (!setUpSlrRun(sources, &setup, &r.error)) return r;
+    return runStationDay(setup, options, observer);
 }
 
 }  // namespace lwb::core::slr

@@ -52,7 +52,6 @@ std::string dayCsv(const std::vector<DayRow>& rows);
 struct DayOptions {
     std::string outDir;  ///< "" = the rows only, nothing written
     int threads = 0;     ///< passes screened side by side (0: every core); the products are the same for any number
-    Provenance provenance;  ///< of DIR/provenance.json (its outputs are added)
 };
 
 struct DayObserver {
@@ -73,7 +72,12 @@ struct DayResult {
 
 /// Runs every block of setup.sources.input (a CRD file). Passes the prediction does not fit are
 /// screened on their own TOF trend with a note, whatever setup.sources.cpfFallback says.
+/// DIR/provenance.json records slrProvenance(setup, true), whoever runs it.
 DayResult runStationDay(const SlrSetup& setup, const DayOptions& options, const DayObserver& observer = {});
+/// The same from the sources a front end gathered: setUpSlrRun, then the run (a set-up that
+/// fails is the result's error). Python's process_file and the workbench's "Screen all passes";
+/// the CLI sets up once for many files and runs each with the setup above.
+DayResult runStationDay(const SlrSources& sources, const DayOptions& options, const DayObserver& observer = {});
 
 /// "passNNN" for block k (1-based): the products' names.
 std::string dayPassName(size_t k);

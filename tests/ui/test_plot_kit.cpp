@@ -91,7 +91,7 @@ private slots:
     /// writes its numbers as the CLI does, in either language.
     void tickLabelsWriteNumbersAsTheCli() {
         const QLocale saved;
-        for (const QString language : {QString("en"), QString("zh_CN")}) {
+        for (const QString& language : {QString("en"), QString("zh_CN")}) {
             installLanguage(language);
             QCustomPlot* p = makePlot(m_host);
             p->yAxis->setScaleType(QCPAxis::stLogarithmic);

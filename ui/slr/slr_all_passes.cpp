@@ -169,7 +169,6 @@ void SlrAllPassesDialog::start(const QString& outDir) {
     const SlrSetup setup = m_setup;
     DayOptions opt;
     opt.outDir = outDir.toStdString();
-    opt.provenance = slrProvenance(setup, true);
     QPointer<SlrAllPassesDialog> self(this);
     m_future = QtConcurrent::run([=] {
         DayObserver obs;
