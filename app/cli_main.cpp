@@ -106,6 +106,7 @@ int dispatch(int argc, char** argv);
 
 // Last resort: an exception escaping a command (out of memory, say) is reported, not a crash.
 int main(int argc, char** argv) {
+    lwb::core::reexecWithHugePages(argv);
     lwb::core::tuneAllocator();
     // A reader of standard output that went away is an error the output set reports (and rolls
     // the run's files back for), not a signal that kills the process half-way (exit 141).

@@ -20,6 +20,7 @@
 #include "ui/shell/main_window.hpp"
 
 int main(int argc, char** argv) {
+    lwb::core::reexecWithHugePages(argv);
     lwb::core::tuneAllocator();
     // --screenshot renders without a display, and --help / --version need none.
     bool offscreen = false;

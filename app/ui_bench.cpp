@@ -227,6 +227,7 @@ void UiBench::printTable() const {
 }  // namespace
 
 int main(int argc, char** argv) {
+    lwb::core::reexecWithHugePages(argv);
     lwb::core::tuneAllocator();
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);

@@ -2,6 +2,7 @@
 #include <QtTest>
 #include <zlib.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <atomic>
 #include <chrono>
@@ -307,6 +308,40 @@ private slots:
         QVERIFY(err.find("missing") != std::string::npos);
         // A folder as target.
         QVERIFY(!writeFileAtomic(dir.path().toStdString(), "x", &err));
+    }
+
+    // allocator.hpp: reexecWithHugePages executes the program again with glibc.malloc.hugetlb=1
+    // added to GLIBC_TUNABLES (after the tunables given), and not when the tunable is there
+    // already (0 keeps glibc's default). Run in a child whose "program" is a shell writing the
+    // variable it was started with; the child that returns writes "returned" itself.
+    void programsStartAgainWithHugePages() {
+#if !defined(__GLIBC__) || !defined(__linux__)
+        QSKIP("glibc on Linux only");
+#else
+        QTemporaryDir dir;
+        const std::string out = (dir.path() + "/env.txt").toStdString();
+        auto startedWith = [&](const char* tunables) -> QString {
+            const pid_t pid = fork();
+            if (pid == 0) {
+                if (tunables) setenv("GLIBC_TUNABLES", tunables, 1);
+                else unsetenv("GLIBC_TUNABLES");
+                const std::string script = "printf %s \"$GLIBC_TUNABLES\" > '" + out + "'";
+                char* argv[] = {const_cast<char*>("sh"), const_cast<char*>("-c"), const_cast<char*>(script.c_str()), nullptr};
+                reexecWithHugePages(argv, "/bin/sh");
+                std::FILE* f = std::fopen(out.c_str(), "w");
+                if (f) std::fputs("returned", f), std::fclose(f);
+                _exit(0);
+            }
+            int status = 0;
+            waitpid(pid, &status, 0);
+            QFile f(QString::fromStdString(out));
+            return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString("(nothing written)");
+        };
+        QCOMPARE(startedWith(nullptr), QString("glibc.malloc.hugetlb=1"));
+        QCOMPARE(startedWith("glibc.cpu.x86_shstk=off"), QString("glibc.cpu.x86_shstk=off:glibc.malloc.hugetlb=1"));
+        QCOMPARE(startedWith("glibc.malloc.hugetlb=0"), QString("returned"));
+        QCOMPARE(startedWith("glibc.malloc.hugetlb=1"), QString("returned"));
+#endif
     }
 
     // allocator.hpp: after tuneAllocator, a worker thread of parallelFor allocates from an arena

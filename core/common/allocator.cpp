@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>  // defines __GLIBC__ on glibc
+#include <string>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -46,6 +47,23 @@ void tuneAllocator() {
     const uintptr_t after = reinterpret_cast<uintptr_t>(sbrk(0));
     mallopt(M_TOP_PAD, 128 << 10);  // glibc's default from here on
     if (before != uintptr_t(-1) && after > before) adviseHuge(before, after - before);
+#endif
+}
+
+void reexecWithHugePages(char** argv, const char* exe) {
+#if defined(__GLIBC__)
+    const char* now = std::getenv("GLIBC_TUNABLES");
+    const std::string given = now ? now : "";
+    if (given.find("glibc.malloc.hugetlb") != std::string::npos || !argv || !argv[0]) return;
+    const std::string tunables = given.empty() ? "glibc.malloc.hugetlb=1" : given + ":glibc.malloc.hugetlb=1";
+    if (setenv("GLIBC_TUNABLES", tunables.c_str(), 1) != 0) return;
+    execv(exe, argv);
+    // (not executed: the program goes on with glibc's default, and says nothing of it)
+    if (now) setenv("GLIBC_TUNABLES", now, 1);
+    else unsetenv("GLIBC_TUNABLES");
+#else
+    (void)argv;
+    (void)exe;
 #endif
 }
 
