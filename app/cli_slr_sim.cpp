@@ -252,16 +252,17 @@ struct DayRun {
     int exitCode = -1;
 };
 
-// laserwb-cli slr DAY --all-passes --out-dir DIR --threads T in a child process.
-DayRun runDay(const std::string& day, const std::string& dir, int threads) {
+// laserwb-cli ARGS... in a child process: wall and CPU time, peak RSS, exit code.
+DayRun runCliChild(const std::vector<std::string>& args) {
     DayRun r;
-    const std::string t = std::to_string(threads);
+    std::vector<char*> argv = {const_cast<char*>("laserwb-cli")};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
     const auto t0 = std::chrono::steady_clock::now();
     const pid_t pid = fork();
     if (pid < 0) return r;
     if (pid == 0) {
-        execl("/proc/self/exe", "laserwb-cli", "slr", day.c_str(), "--all-passes", "--out-dir", dir.c_str(), "--threads",
-              t.c_str(), "-q", static_cast<char*>(nullptr));
+        execv("/proc/self/exe", argv.data());
         _exit(127);
     }
     int status = 0;
@@ -272,6 +273,11 @@ DayRun runDay(const std::string& day, const std::string& dir, int threads) {
     r.peakMb = static_cast<double>(ru.ru_maxrss) / 1024.0;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+// laserwb-cli slr DAY --all-passes --out-dir DIR --threads T in a child process.
+DayRun runDay(const std::string& day, const std::string& dir, int threads) {
+    return runCliChild({"slr", day, "--all-passes", "--out-dir", dir, "--threads", std::to_string(threads), "-q"});
 }
 
 // The products of two runs, byte for byte.
@@ -351,26 +357,6 @@ double plainReadSeconds(const std::string& path) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// laserwb-cli slr FILE -o OUT -q in a child process: wall time, peak RSS, exit code.
-DayRun runSlrCommand(const std::string& input, const std::string& out) {
-    DayRun r;
-    const auto t0 = std::chrono::steady_clock::now();
-    const pid_t pid = fork();
-    if (pid < 0) return r;
-    if (pid == 0) {
-        execl("/proc/self/exe", "laserwb-cli", "slr", input.c_str(), "-o", out.c_str(), "-q", static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    int status = 0;
-    struct rusage ru {};
-    if (wait4(pid, &status, 0, &ru) != pid) return r;
-    r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.cpu = static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) + 1e-6 * static_cast<double>(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
-    r.peakMb = static_cast<double>(ru.ru_maxrss) / 1024.0;
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
 // bench slr --end-to-end: for each size a simulated pass written as CRD and as an O-C CSV, then
 // `laserwb-cli slr FILE -o OUT.csv -q` on each in a fresh process (wall, peak RSS, bytes per
 // event) beside a plain read of the same file in the same run (issue 44's table).
@@ -406,7 +392,7 @@ int benchEndToEnd(const std::string& cmd, const std::vector<long long>& sizes, s
         }
         for (const std::string* in : {&crd, &csv}) {
             const double read = plainReadSeconds(*in);
-            const DayRun r = runSlrCommand(*in, out);
+            const DayRun r = runCliChild({"slr", *in, "-o", out, "-q"});
             std::FILE* f = std::fopen(in->c_str(), "rb");
             double mb = 0;
             if (f) {
