@@ -166,6 +166,35 @@ private slots:
     // reason in place of the records, and the exit code says which: 0 for "no signal found"
     // (a fixed scale at which no region reaches the area limit), 3 for a doubtful pass
     // (hy2c pass 1: 5 records on its own TOF trend). Never 1, and every output is there.
+    /// Issue 44, "limits said, not hit": a pass whose run would not fit the memory the process may
+    /// take is refused before it is read, with the figures (its file's size times the bytes an
+    /// event measured, docs/benchmarks.md); a smaller one runs under the same limit. The limit
+    /// here is the data segment's (ulimit -d 250 MB): the 10^6-event CRD file (55 MB) needs about
+    /// 470 MB by the estimate and 394 MB measured, the 2·10^4-event one about 41 MB.
+    void passBeyondTheMemoryIsRefusedBeforeReading() {
+        QTemporaryDir dir;
+        const QString big = dir.path() + "/big.frd", small = dir.path() + "/small.frd", table = dir.path() + "/big.csv";
+        for (const auto& [n, f] : {std::pair{"1000000", big}, {"20000", small}})
+            QVERIFY(runCli({"simulate", "slr", "--kind", "khz", "--points", n, "--seed", "3", "-q", f}).exitCode == 0);
+        QVERIFY(runCli({"simulate", "slr", "--kind", "khz", "--points", "1000000", "--seed", "3", "-q", table}).exitCode == 0);
+        auto limited = [&](const QString& in, const QString& out) {
+            return lwbtest::runProgram(
+                "/bin/sh", {"-c", QString("ulimit -d 250000 && exec '%1' slr '%2' -o '%3' -q").arg(LWB_CLI, in, out)});
+        };
+        for (const QString& in : {big, table}) {
+            const QString out = in + ".out.csv";
+            const lwbtest::CliRun r = limited(in, out);
+            QCOMPARE(r.exitCode, 1);
+            QVERIFY2(r.err.contains(in + ": about ") && r.err.contains("of memory is needed for its") &&
+                         r.err.contains("is available (the data limit (ulimit -d))") && r.err.contains("not read"),
+                     qPrintable(r.err));
+            QVERIFY(!QFile::exists(out));
+        }
+        const lwbtest::CliRun s = limited(small, dir.path() + "/small.csv");
+        QVERIFY2(s.exitCode == 0, qPrintable(s.err));
+        QVERIFY(QFile::exists(dir.path() + "/small.csv"));
+    }
+
     void noNormalPointIsAResult() {
         if (!have() || !lwbtest::haveShared("slr/hy2c_202109.fr2")) QSKIP("shared SLR data absent");
         const auto none = runCli({"slr", slr("7080_STELLA_crd_071220_2128_0.frd"), "--set", "screen.automatic=false", "--mag-t", "1",

@@ -5,7 +5,11 @@
 
 #include <cmath>
 #include <exception>
+#include <fstream>
 
+#include <sys/stat.h>
+
+#include "core/common/memory.hpp"
 #include "core/common/text.hpp"
 #include "core/slr/np_compare.hpp"
 #include "core/slr/pass_output.hpp"
@@ -46,6 +50,42 @@ bool readConfig(const SlrSources& src, JsonParseResult* doc, SlrError* error) {
 
 std::string named(const std::string& path, const std::string& msg) {
     return msg.rfind(path, 0) == 0 ? msg : path + ": " + msg;
+}
+
+// Peak memory of a pass's run for each byte of its file, measured on simulated kHz passes of
+// 10^5..10^7 events (docs/benchmarks.md, "A raw kHz pass end to end"): CRD 398-414 bytes an
+// event for 55-byte lines (7.5), an O-C CSV 124-159 for 35-byte lines (4.5); rounded up. Real
+// CRD lines are longer (fewer events a byte), so the estimate errs high.
+constexpr uint64_t kCrdBytesPerFileByte = 8, kCsvBytesPerFileByte = 5, kProcessBytes = 32u << 20;
+
+// "" when the input's run fits the memory this process can take (core/common/memory.hpp), else
+// why it is not read: issue 44's "limits said, not hit", before any of it is read. A gzip file
+// counts by the size it decompresses to (its trailer's ISIZE). Standard input is not checked.
+std::string inputMemoryProblem(const std::string& path, bool crd) {
+    if (path.empty() || path == "-") return {};
+    // Only a regular file is looked into (opening a FIFO would wait for its writer): anything
+    // else, missing or unreadable, is the reader's to refuse with its own message.
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_size <= 0) return {};
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return {};
+    const std::streamoff size = st.st_size;
+    uint64_t bytes = static_cast<uint64_t>(size);
+    unsigned char head[2] = {0, 0}, tail[4] = {0, 0, 0, 0};
+    in.seekg(0);
+    in.read(reinterpret_cast<char*>(head), 2);
+    if (head[0] == 0x1f && head[1] == 0x8b && size > 18) {
+        in.seekg(size - 4);
+        in.read(reinterpret_cast<char*>(tail), 4);
+        const uint64_t isize = tail[0] | tail[1] << 8 | tail[2] << 16 | static_cast<uint64_t>(tail[3]) << 24;
+        bytes = std::max(bytes, isize);  // (ISIZE is modulo 4 GiB: never below the compressed size)
+    }
+    const uint64_t need = bytes * (crd ? kCrdBytesPerFileByte : kCsvBytesPerFileByte) + kProcessBytes;
+    const std::string why = memoryShortfall(
+        need, availableMemory(),
+        "its " + formatFixed(static_cast<double>(bytes) / 1e6, 1) + " MB of " + (crd ? "CRD" : "O-C table") + " (" +
+            std::to_string(crd ? kCrdBytesPerFileByte : kCsvBytesPerFileByte) + " bytes for each byte of it, measured)");
+    return why.empty() ? why : path + ": " + why + ": not read";
 }
 
 }  // namespace
@@ -231,6 +271,10 @@ SlrSourceContents readSlrSourceContents(const SlrSources& sources, const Feedbac
 }
 
 std::shared_ptr<const CrdReadResult> readSlrInput(const SlrSources& sources, SlrError* error, const Feedback* fb) {
+    if (std::string why = inputMemoryProblem(sources.input, true); !why.empty()) {
+        *error = {std::move(why), false};
+        return nullptr;
+    }
     auto crd = std::make_shared<const CrdReadResult>(readCrd(sources.input, {}, fb));
     if (!crd->ok) {
         *error = {named(sources.input, crd->error), false};
@@ -255,6 +299,11 @@ OpenedPass openPass(const SlrSetup& setup, const Feedback* fb) {
             o.error = {std::string(setup.sources.passNumber > 0 ? "a pass number" : "a prediction (CPF)") +
                            " applies to a CRD input; " + input + " is an O-C table",
                        true};
+            return o;
+        }
+        if (std::string why = inputMemoryProblem(input, false); !why.empty()) {
+            OpenedPass o;
+            o.error = {std::move(why), false};
             return o;
         }
         return finishOpen(setup, passFromOcTable(input), nullptr);
