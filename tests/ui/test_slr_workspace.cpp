@@ -22,6 +22,7 @@
 #include "test_support.hpp"
 #include "ui/shell/main_window.hpp"
 #include "ui/kit/app_undo.hpp"
+#include "ui/kit/live_job.hpp"
 #include "ui/kit/modal_work.hpp"
 #include "ui/kit/param_slider.hpp"
 #include "ui/kit/plot_kit.hpp"
@@ -251,6 +252,32 @@ private slots:
     // Seen in a real window: with no pass (a file that could not be opened, or none yet) the O-C
     // plot's axes were squeezed into a strip ~45 px wide at the left of an empty plot, its time
     // label cut. Empty, each pass plot keeps its axes as wide as most of the plot.
+    /// Seen in a real window (issue 44): a 10^6-event pass under ulimit -d 600000 opened, its
+    /// run ran out of memory in the worker and the exception was kept in a future nobody read:
+    /// the window stayed empty and idle, no reason anywhere. A LiveJob's task that throws now
+    /// ends the run with `failed` (the SLR workspace shows "Screening failed: out of memory ...").
+    void aRunThatThrowsIsSaid() {
+        for (const bool oom : {true, false}) {
+            lwb::ui::LiveJob job;
+            QSignalSpy failed(&job, &lwb::ui::LiveJob::failed);
+            bool delivered = false;
+            job.setWork<int>(
+                [oom]() -> std::function<int(lwb::core::Feedback&)> {
+                    return [oom](lwb::core::Feedback&) -> int {
+                        if (oom) throw std::bad_alloc();
+                        throw std::runtime_error("a test's failure");
+                    };
+                },
+                [&delivered](int) { delivered = true; });
+            job.startNow();
+            QVERIFY(job.waitIdle(10000));
+            QCOMPARE(failed.count(), 1);
+            const QString why = failed.front().front().toString();
+            QVERIFY2(oom ? why.startsWith("out of memory") : why == "internal error: a test's failure", qPrintable(why));
+            QVERIFY(!delivered);
+        }
+    }
+
     void emptyPlotsKeepTheirWidth() {
         MainWindow w;
         w.resize(1480, 900);

@@ -183,6 +183,14 @@
         <source>SLR parameters</source>
         <translation>SLR 参数</translation>
     </message>
+    <message>
+        <source>out of memory: the run needs more memory than this process may take</source>
+        <translation>内存不足：本次运行需要的内存超出本进程可用的内存</translation>
+    </message>
+    <message>
+        <source>internal error: %1</source>
+        <translation>内部错误：%1</translation>
+    </message>
 </context>
 <context>
     <name>lwb::ui::BlinkView</name>

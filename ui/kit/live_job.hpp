@@ -15,6 +15,8 @@
 #include <QtConcurrent>
 #include <functional>
 #include <memory>
+#include <new>
+#include <optional>
 #include <vector>
 
 #include "core/common/allocator.hpp"
@@ -54,8 +56,31 @@ public:
             QPointer<LiveJob> self(this);
             track(QtConcurrent::run([self, task = std::move(task), deliver, fb, gen]() {
                 core::adviseThreadHeap();  // the pool thread's malloc arena (allocator.hpp)
-                R result = task(*fb);
+                // An exception out of the task (memory ran out under a limit, say) is said, not
+                // lost in the future nobody reads: before this the run ended silently and the
+                // window stayed empty and idle (a 10^6-event pass under ulimit -d 600000).
+                std::optional<R> done;
+                QString failure;
+                try {
+                    done.emplace(task(*fb));
+                } catch (const std::bad_alloc&) {
+                    failure = QObject::tr("out of memory: the run needs more memory than this process may take");
+                } catch (const std::exception& e) {
+                    failure = QObject::tr("internal error: %1").arg(QString::fromUtf8(e.what()));
+                }
                 if (fb->isCancelled()) return;
+                if (!done) {
+                    QMetaObject::invokeMethod(
+                        qApp,
+                        [self, gen, failure]() {
+                            if (!self || gen != self->m_generation) return;
+                            self->finished(gen);
+                            emit self->failed(failure);
+                        },
+                        Qt::QueuedConnection);
+                    return;
+                }
+                R result = std::move(*done);
                 QMetaObject::invokeMethod(
                     qApp,
                     [self, deliver, gen, result = std::move(result)]() mutable {
@@ -91,6 +116,9 @@ signals:
     void progress(double fraction);
     /// The job went idle (its latest run delivered, or there was nothing to run).
     void idle();
+    /// The latest run threw instead of returning (out of memory, an internal error): why. The
+    /// job is idle; nothing was delivered.
+    void failed(const QString& reason);
 
 private:
     void run();

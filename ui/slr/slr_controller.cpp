@@ -73,6 +73,11 @@ SlrController::SlrController(QObject* parent) : QObject(parent) {
             m_run = std::make_shared<const SlrRun>(std::move(run));
             emit runReady(*m_run);
         });
+    // A run that threw (memory ran out) is said where a failed screening is.
+    connect(&m_job, &LiveJob::failed, this, [this](const QString& why) {
+        notePassError(m_selected, why);
+        emit runFailed(why);
+    });
 }
 
 SlrController::~SlrController() { m_job.cancel(); }
