@@ -357,6 +357,21 @@ double plainReadSeconds(const std::string& path) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The bench's simulated pass of n points written to csv, and to crd when given (run in a child by
+// inChild).
+BenchRow simulatePassFiles(const sim::SlrSimParams& base, long long n, double fraction, long long seed,
+                           const std::string& csv, const std::string& crd = {}) {
+    BenchRow r;
+    sim::SlrSimParams p = base;
+    p.points = n;
+    p.signalFraction = fraction;
+    const sim::SlrSimPass pass = sim::simulateSlrPass(p, static_cast<uint64_t>(seed));
+    std::string e;
+    r.ok = pass.ok && (crd.empty() || core::writeFileAtomic(crd, sim::slrPassCrd(p, pass), &e)) &&
+           writePassCsv(csv, pass, false, &e);
+    return r;
+}
+
 // bench slr --end-to-end: for each size a simulated pass written as CRD and as an O-C CSV, then
 // `laserwb-cli slr FILE -o OUT.csv -q` on each in a fresh process (wall, peak RSS, bytes per
 // event) beside a plain read of the same file in the same run (issue 44's table).
@@ -376,16 +391,7 @@ int benchEndToEnd(const std::string& cmd, const std::vector<long long>& sizes, s
     for (long long n : sizes) {
         const std::string crd = dir + "/pass.frd", csv = dir + "/pass.csv", out = dir + "/out.csv";
         BenchRow made;
-        const bool simOk = inChild([&]() {
-            BenchRow r;
-            sim::SlrSimParams p = base;
-            p.points = n;
-            p.signalFraction = fraction;
-            const sim::SlrSimPass pass = sim::simulateSlrPass(p, static_cast<uint64_t>(seed));
-            std::string e;
-            r.ok = pass.ok && core::writeFileAtomic(crd, sim::slrPassCrd(p, pass), &e) && writePassCsv(csv, pass, false, &e);
-            return r;
-        }, &made);
+        const bool simOk = inChild([&]() { return simulatePassFiles(base, n, fraction, seed, csv, crd); }, &made);
         if (!simOk) {
             rc = fail(cmd, "simulating " + std::to_string(n) + " events failed");
             break;
@@ -417,18 +423,6 @@ int benchEndToEnd(const std::string& cmd, const std::vector<long long>& sizes, s
     return rc;
 }
 
-// The bench's simulated pass of n points written to csv (run in a child by inChild).
-BenchRow simulatePassCsv(const sim::SlrSimParams& base, long long n, double fraction, long long seed,
-                         const std::string& csv) {
-    BenchRow r;
-    sim::SlrSimParams p = base;
-    p.points = n;
-    p.signalFraction = fraction;
-    const sim::SlrSimPass pass = sim::simulateSlrPass(p, static_cast<uint64_t>(seed));
-    std::string e;
-    r.ok = pass.ok && writePassCsv(csv, pass, false, &e);
-    return r;
-}
 
 // The pass CSV read, screened (automatic mode) and post-fitted with normal points, timed, with the
 // peak memory and the precision and recall against the truth column (run in a child by inChild).
@@ -538,7 +532,7 @@ int cmdBenchSlr(int argc, char** argv) {
     for (long long n : sizes) {
         const std::string csv = dir + "/pass_" + std::to_string(n) + ".csv";
         BenchRow sr;
-        const bool simOk = inChild([&]() { return simulatePassCsv(base, n, fraction, seed, csv); }, &sr);
+        const bool simOk = inChild([&]() { return simulatePassFiles(base, n, fraction, seed, csv); }, &sr);
         if (!simOk) {
             rc = fail(cmd, "simulating " + std::to_string(n) + " points failed");
             break;

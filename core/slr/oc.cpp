@@ -367,7 +367,7 @@ double medianOf(std::vector<double> v) {
 }
 
 // (TrendOcParams::fitMaxPoints, 20 000, is above every shared real pass, BLITS's longest having
-// ~4000 records: their trends are the whole pass's fit.)
+// 7 920 records: their trends are the whole pass's fit.)
 // Indices 0, k, 2k, ... of n records, k the least step that keeps at most `most` of them.
 std::vector<size_t> evenlyTaken(size_t n, size_t most) {
     most = std::max<size_t>(most, 1);
