@@ -23,7 +23,7 @@ print(p, f"O-C spread {np.ptp(p.oc) * 1e9:.1f} ns")
 # %% Screening, post-fit and normal points, with one parameter changed
 r = laserwb.slr.run(p, params={"screen.cosine_c": 0.95, "postfit.reject_sigma": 3})
 truth = p.station_flag == 2
-found = r.accepted.astype(bool)
+found = r.accepted  # a bool mask: p.t[found] are the accepted epochs
 print(f"accepted {r.accepted_count} of {len(p)}; recall {np.sum(found & truth) / np.sum(truth):.3f}, "
       f"precision {np.sum(found & truth) / max(np.sum(found), 1):.3f}; RMS {r.rms_s * 1e12:.1f} ps")
 print(f"{len(r.normal_points['epoch_s'])} normal points" + (f" ({r.no_normal_points_reason})" if r.doubt else ""))

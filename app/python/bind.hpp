@@ -105,6 +105,22 @@ py::array_t<T> viewOf(const std::vector<T>& v, py::handle owner) {
     return a;
 }
 
+/// A read-only numpy bool array of a 0/1 mask (a view of `v`'s bytes kept alive by `owner`;
+/// a copy, value != 0, if any byte is not 0 or 1): `x[mask]` selects, where a uint8 array of
+/// 0 and 1 took x[0] and x[1] over and over (fancy indexing).
+py::array maskOf(const std::vector<uint8_t>& v, py::handle owner);
+
+/// A path argument (str or os.PathLike) as os.fspath gives it.
+std::string fsPath(const py::object& o);
+/// The same for a file the call reads: requireReadable first (Python's OSError when it cannot be opened).
+std::string inputPath(const py::object& o, bool folderOk = false);
+
+/// Raises Python's own OSError subclass (FileNotFoundError, PermissionError, IsADirectoryError,
+/// ...) with its errno and the file's name when `path` cannot be opened for reading (a folder
+/// when `folderOk`); does nothing for "" and "-". The core's messages say the same in words; a
+/// Python caller catches the class.
+void requireReadable(const std::string& path, bool folderOk = false);
+
 /// A float32 numpy array that owns `image` (CV_32FC1; no copy of its pixels).
 py::array_t<float> ownedArray(cv::Mat image);
 

@@ -3,6 +3,8 @@
 // the report's writer (writeFootprintCsv, footprintCsvRows), as `laserwb-cli footprint` runs them.
 #include <cstring>
 
+#include <map>
+
 #include "bind.hpp"
 #include "core/footprint/batch.hpp"
 #include "core/footprint/footprint_run.hpp"
@@ -167,9 +169,9 @@ Report fitBatch(const py::object& inputs, const py::object& params, const py::ob
     } else {
         std::vector<std::string> given;
         if (py::isinstance<py::str>(inputs) || py::hasattr(inputs, "__fspath__"))
-            given.push_back(py::str(py::module_::import("os").attr("fspath")(inputs)));
+            given.push_back(inputPath(inputs, true));
         else
-            for (const auto& o : inputs.cast<py::sequence>()) given.push_back(py::str(py::module_::import("os").attr("fspath")(o)));
+            for (const auto& o : inputs.cast<py::sequence>()) given.push_back(inputPath(py::reinterpret_borrow<py::object>(o), true));
         src.inputs = given;
         bool ok;
         {
@@ -205,6 +207,7 @@ void bindFootprint(py::module_& top) {
         if (!fp::resolveBatchParams(src, &bp, &fe)) raise(fe);
         fp::ShotSpec shot;
         shot.file = path;
+        requireReadable(path);
         fp::ImageReadResult r;
         {
             py::gil_scoped_release nogil;
@@ -238,6 +241,22 @@ void bindFootprint(py::module_& top) {
                 for (const auto& roi : it.rois)
                     for (const auto& s : roi.warnings) w.push_back(it.file + ": " + s);
             return w;
+        })
+        .def("__repr__", [](const Report& r) {
+            size_t rows = 0, errors = 0;
+            std::map<std::string, size_t> verdicts;
+            for (const auto& it : r.result.items) {
+                size_t n = 0;
+                fp::footprintCsvRows(it, r.method, {}, &n);
+                rows += n;
+                errors += !it.readError.empty();
+                for (const auto& roi : it.rois) ++verdicts[roi.result.ok ? fp::verdictName(roi.result.verdict) : "failed"];
+            }
+            std::string s = "<laserwb.footprint.Report: " + std::to_string(rows) + " rows from " +
+                            std::to_string(r.result.items.size()) + " frames";
+            for (const auto& [v, n] : verdicts) s += ", " + std::to_string(n) + " " + v;
+            if (errors) s += ", " + std::to_string(errors) + " not read";
+            return s + ">";
         })
         .def("csv_rows", &Report::rows, "The report's data rows as text (what write_csv writes after the header).")
         .def("columns", [](const Report& r) { return csvColumns(fp::footprintCsvHeader() + r.rows(), kText, kInt); },

@@ -44,8 +44,6 @@ const ParamsBinding<rad::RadiometryParams> kRadiometry{
     "RadiometryParams", "Parameters of the radiometric calibration (laserwb-cli radiometry mosaic|gcp|fit|apply|check).",
     rad::radiometrySchema, plain<rad::RadiometryParams>, radiometryCheck};
 
-std::string fsPath(const py::object& o) { return py::str(py::module_::import("os").attr("fspath")(o)); }
-
 // A method that writes the object with a core writer (path, object, &error): the path as
 // os.fspath gives it, the GIL released while it writes, a failure raised with the core's message.
 template <class T, class W>
@@ -166,7 +164,7 @@ void bindTrend(py::module_& top) {
              py::arg("path"), "Writes the table with the CLI's writer (writeTrendCsv).");
     t.def("compute", [](const py::object& path, const py::object& params) {
         const fp::TrendParams p = paramsFrom(params, kTrend);
-        const std::string file = fsPath(path);
+        const std::string file = inputPath(path);
         Trend x;
         std::vector<fp::CentroidRecord> recs;
         std::string err;
@@ -204,7 +202,7 @@ void bindCalibDetector(py::module_& c) {
              py::arg("path"), "As laserwb-cli calib detector --detectors.");
     c.def("detector", [](const py::object& path, const py::object& params) {
         const cal::CalibParams p = paramsFrom(params, kCalib);
-        const std::string file = fsPath(path);
+        const std::string file = inputPath(path);
         Detector d;
         {
             py::gil_scoped_release nogil;
@@ -255,7 +253,7 @@ void bindCalibPointing(py::module_& c) {
              py::arg("path"), "As --iterations.");
     c.def("pointing", [](const py::object& points, const py::object& beams, const py::object& params) {
         const cal::CalibParams p = paramsFrom(params, kCalib);
-        const std::string file = fsPath(points), beamFile = fsPath(beams);
+        const std::string file = inputPath(points), beamFile = inputPath(beams);
         Pointing x;
         {
             py::gil_scoped_release nogil;
@@ -293,7 +291,7 @@ void bindCalibStats(py::module_& c) {
              py::arg("path"), "As laserwb-cli calib stats -o.");
     c.def("stats", [](const py::object& path, const std::string& group, const py::object& params) {
         const cal::CalibParams p = paramsFrom(params, kCalib);
-        const std::string file = fsPath(path);
+        const std::string file = inputPath(path);
         Stats s;
         {
             py::gil_scoped_release nogil;
@@ -353,8 +351,8 @@ void bindCalibWaveform(py::module_& c) {
         const cal::CalibParams p = paramsFrom(params, kCalib);
         if (path.is_none() == height.is_none()) throw py::value_error("give a waveform file or height= (not both)");
         if (!height.is_none() && features.is_none()) throw py::value_error("height= needs features= to match against");
-        const std::string file = path.is_none() ? std::string() : fsPath(path);
-        const std::string featureFile = features.is_none() ? std::string() : fsPath(features);
+        const std::string file = path.is_none() ? std::string() : inputPath(path);
+        const std::string featureFile = features.is_none() ? std::string() : inputPath(features);
         WaveformFit x;
         cal::CalibSources src;
         src.givenHeightM = height.is_none() ? NAN : numberArgument(height, "height");
@@ -409,7 +407,7 @@ void bindRadiometryFit(py::module_& r) {
              }),
              py::arg("path"), "As laserwb-cli radiometry fit --regions.");
     r.def("read_image", [](const py::object& path, long long maxPixels) {
-        const std::string file = fsPath(path);
+        const std::string file = inputPath(path);
         cv::Mat img;
         std::string err;
         {
@@ -421,7 +419,7 @@ void bindRadiometryFit(py::module_& r) {
     }, py::arg("path"), py::arg("max_pixels") = 0, "An image as the radiometry commands read it, as float32.");
     r.def("fit", [](const py::object& regions, const py::object& image, const py::object& params) {
         const rad::RadiometryParams p = paramsFrom(params, kRadiometry);
-        const std::string file = fsPath(regions);
+        const std::string file = inputPath(regions);
         RadiometryFit f;
         std::string err;
         check(rad::readRegionCsv(file, &f.regions, &err), err);
@@ -434,7 +432,7 @@ void bindRadiometryFit(py::module_& r) {
                 keep = a;
                 img = cv::Mat(static_cast<int>(a.shape(0)), static_cast<int>(a.shape(1)), CV_32FC1, const_cast<float*>(a.data()));
             } else {
-                check(rad::readImageAnyDepth(fsPath(image), &img, &err, core::kMaxImagePixels), err);
+                check(rad::readImageAnyDepth(inputPath(image), &img, &err, core::kMaxImagePixels), err);
             }
         }
         {
@@ -522,7 +520,7 @@ void bindRadiometryGcp(py::module_& r) {
         const rad::RadiometryParams p = paramsFrom(params, kRadiometry);
         GcpMap g;
         std::string err, crsWkt;
-        const std::string gcpFile = fsPath(gcps);
+        const std::string gcpFile = inputPath(gcps);
         if (!crs.is_none() && !rad::crsFromUserInput(py::str(crs), &crsWkt, &err)) check(false, "crs: " + err);
         check(rad::readGcpCsv(gcpFile, &g.gcps, &err), err);
         py::list keep;
@@ -579,7 +577,7 @@ void bindRadiometryApply(py::module_& r) {
         std::string err;
         p.uncertaintyImage = !fit.is_none();  // (the errors of K and B come with a fit file)
         if (!fit.is_none()) {
-            check(rad::readFitCsv(fsPath(fit), &f, &err), err);
+            check(rad::readFitCsv(inputPath(fit), &f, &err), err);
         } else {
             f.k = numberArgument(k, "k");
             f.b = numberArgument(b, "b");
@@ -589,7 +587,7 @@ void bindRadiometryApply(py::module_& r) {
         const cv::Mat img = imageArgument(image, "image", maxPixels, &keep, readAnyDepth);
         if (!py::isinstance<py::array>(image)) {
             std::string gerr;
-            if (!rad::readGeoReference(fsPath(image), &a.geo, &gerr)) a.geo = rad::GeoReference{};
+            if (!rad::readGeoReference(inputPath(image), &a.geo, &gerr)) a.geo = rad::GeoReference{};
         }
         {
             py::gil_scoped_release nogil;
@@ -613,7 +611,7 @@ void bindRadiometryCheck(py::module_& r) {
              py::arg("path"), "As laserwb-cli radiometry check -o (and apply --table).");
     r.def("check", [](const py::object& regions, const py::object& image, const py::object& params, long long maxPixels) {
         const rad::RadiometryParams p = paramsFrom(params, kRadiometry);
-        const std::string file = fsPath(regions);
+        const std::string file = inputPath(regions);
         std::vector<rad::Region> regs;
         std::string err;
         check(rad::readRegionCsv(file, &regs, &err), err);

@@ -120,8 +120,11 @@ py::class_<P> bindParams(py::module_& m, const ParamsBinding<P>& b) {
         if (!f->choices.empty()) d["choices"] = f->choices;
         return d;
     }, py::arg("key"), "The schema row of `key`: unit, valid range, doc, default and the value here.");
-    c.def("__repr__", [bb](const P& p) {
-        std::string s = std::string("laserwb.") + bb.name + "({";
+    // laserwb.FAMILY.NAME(...): eval() gives it back; "# defaults" when nothing differs.
+    std::string family = py::str(m.attr("__name__"));
+    family = "laserwb." + family.substr(family.rfind('.') + 1) + "." + bb.name;
+    c.def("__repr__", [bb, family](const P& p) {
+        std::string s = family + "({";
         bool first = true;
         const P d = bb.defaults();
         for (const auto& f : bb.schema().fields()) {
@@ -130,7 +133,7 @@ py::class_<P> bindParams(py::module_& m, const ParamsBinding<P>& b) {
             s += (first ? "'" : ", '") + f.key + "': " + std::string(py::str(py::repr(fieldValue(bb.schema(), f, p))));
             first = false;
         }
-        return s + "})";
+        return first ? family + "()  # defaults" : s + "})";
     });
     c.def("__eq__", [bb](const P& a, const P& b2) { return bb.schema().changedKeys(a, b2).empty(); });
     c.def("copy", [](const P& p) { return P(p); });

@@ -21,6 +21,7 @@
 #include "core/slr/slr_params.hpp"
 #include "core/slr/slr_run.hpp"
 #include "core/slr/station_day.hpp"
+#include "core/common/text.hpp"
 
 namespace lwb::py {
 
@@ -68,8 +69,6 @@ py::dict summaryDict(const slr::PassSummary& s) {
                     "data_type"_a = s.dataType, "problem"_a = s.problem, "status"_a = slr::blockStatus(s).status);
 }
 
-std::string fsPath(const py::object& o) { return py::str(py::module_::import("os").attr("fspath")(o)); }
-
 // The default of run(threads=None): set_search_threads.
 std::atomic<int> gDefaultSearchThreads{0};
 
@@ -91,12 +90,15 @@ Pass loadPass(const py::object& path, const py::object& passNumber, const py::ob
     // The sources as the CLI gathers them from its flags; the core reads, chooses and loads.
     slr::SlrSources src;
     src.input = fsPath(path);
+    requireReadable(src.input);
     gatherParams(params, &src);  // (their oc.* rows make the O-C; the rest are run()'s)
     // (stations alone give no O-C: run() takes them for day or night, as the CLI's --stations)
     if (!cpf.is_none()) {
         if (stations.is_none()) throw ParameterError("cpf and stations go together (O-C from the prediction needs both)");
         src.cpf = fsPath(cpf);
         src.stations = fsPath(stations);
+        requireReadable(src.cpf, true);
+        requireReadable(src.stations);
     }
     if (!passNumber.is_none()) {
         if (!py::isinstance<py::int_>(passNumber)) throw py::type_error("pass_number must be an int (from 1)");
@@ -115,8 +117,16 @@ Pass loadPass(const py::object& path, const py::object& passNumber, const py::ob
     return Pass{loaded.opened.pass, loaded.opened.warnings, loaded.opened.notes, loaded.setup.sources};
 }
 
-PassRun runPass(const Pass& pass, const py::object& params, const py::object& preset, const py::object& satellite,
+PassRun runPass(const py::object& given, const py::object& params, const py::object& preset, const py::object& satellite,
                 const py::object& stations, const py::object& threads) {
+    // A Pass, or a file's path loaded here as load_pass(path, params=params) loads it.
+    Pass loaded;
+    if (py::isinstance<py::str>(given) || py::hasattr(given, "__fspath__"))
+        loaded = loadPass(given, py::none(), py::none(), py::none(), params);
+    else if (!py::isinstance<Pass>(given))
+        throw py::type_error("run() takes a Pass (laserwb.slr.load_pass(PATH)) or a CRD or O-C file's path, not " +
+                             std::string(py::str(py::type::of(given).attr("__name__"))));
+    const Pass& pass = loaded.data ? loaded : given.cast<const Pass&>();
     // The sources of the run as the CLI gathers them: the preset file and its satellite, the
     // station file, the analyst's own parameters (a SlrParams as --config, a dict as --set); the
     // core resolves them over the pass in the one order and runs it (core resolveAndRunPass).
@@ -125,6 +135,8 @@ PassRun runPass(const Pass& pass, const py::object& params, const py::object& pr
     if (!preset.is_none()) src.presets = fsPath(preset);
     if (!satellite.is_none()) src.satellite = std::string(py::str(satellite));
     if (!stations.is_none()) src.stations = fsPath(stations);
+    requireReadable(src.presets);
+    requireReadable(src.stations);
     gatherParams(params, &src);
     src.searchThreads = threadCount(threads);
     slr::ResolvedRun done;
@@ -155,6 +167,8 @@ py::list processFile(const py::object& path, const py::object& outDir, const py:
     if (!satellite.is_none()) src.satellite = std::string(py::str(satellite));
     if (!cpf.is_none()) src.cpf = fsPath(cpf);
     if (!stations.is_none()) src.stations = fsPath(stations);
+    for (const std::string* f : {&src.input, &src.presets, &src.stations}) requireReadable(*f);
+    requireReadable(src.cpf, true);
     gatherParams(params, &src);
     slr::DayOptions opt;
     opt.outDir = fsPath(outDir);
@@ -222,6 +236,9 @@ py::dict normalPointColumns(const std::vector<slr::NormalPoint>& nps) {
 // The readers: read_crd, read_cpf and read_sinex, as a run's set-up reads those files (core
 // readSlrSourceContents: a damaged prediction is refused here as before any pass is screened).
 slr::SlrSourceContents contentsOf(const slr::SlrSources& src) {
+    requireReadable(src.input);
+    requireReadable(src.cpf);
+    requireReadable(src.stations);
     slr::SlrSourceContents c;
     {
         py::gil_scoped_release nogil;
@@ -306,8 +323,8 @@ void bindPassResult(py::module_& m) {
         .def_property_readonly("preset", [](const PassRun& r) { return r.settings.presetName; })
         .def_property_readonly("notes", [](const PassRun& r) { return r.settings.notes; }, "the normal-point context")
         .def_property_readonly("doubt", [](const PassRun& r) { return r.r.doubt; }, "why the result cannot be trusted ('' when it can)")
-        .def_property_readonly("accepted", [](py::object self) { return viewOf(self.cast<const PassRun&>().r.accepted, self); },
-                               "per point: 1 signal or recovered")
+        .def_property_readonly("accepted", [](py::object self) { return maskOf(self.cast<const PassRun&>().r.accepted, self); },
+                               "per point: True when signal or recovered (a bool mask: pass_.t[r.accepted])")
         .def_property_readonly("accepted_count", [](const PassRun& r) { return r.r.acceptedCount; })
         .def_property_readonly("classes", [](const PassRun& r) {
             py::list c;
@@ -323,14 +340,24 @@ void bindPassResult(py::module_& m) {
         .def_property_readonly("post_note", [](const PassRun& r) { return r.r.postNote; })
         .def_property_readonly("residuals", [](py::object self) { return viewOf(self.cast<const PassRun&>().r.post.residuals, self); },
                                "per point: O-C minus the post-fit trend (s); empty without a post-fit")
-        .def_property_readonly("kept", [](py::object self) { return viewOf(self.cast<const PassRun&>().r.post.kept, self); },
-                               "per point: 1 when in the final post-fit")
+        .def_property_readonly("kept", [](py::object self) { return maskOf(self.cast<const PassRun&>().r.post.kept, self); },
+                               "per point: True when in the final post-fit (a bool mask)")
         .def_property_readonly("rms_s", [](const PassRun& r) { return r.r.postOk ? r.r.post.stats.rms : NAN; })
         .def_property_readonly("normal_points", [](const PassRun& r) { return normalPointColumns(slr::deliveredNormalPoints(r.r).points); },
                                "the normal points delivered (none when doubtful): {column: numpy array}")
         .def_property_readonly("no_normal_points_reason", [](const PassRun& r) { return slr::deliveredNormalPoints(r.r).noneReason; })
         .def_property_readonly("range_bias_s", [](const PassRun& r) { return r.r.bias.ok ? r.r.bias.rangeBiasS : NAN; })
         .def_property_readonly("time_bias_s", [](const PassRun& r) { return r.r.bias.ok ? r.r.bias.timeBiasS : NAN; })
+        .def("__len__", [](const PassRun& r) { return r.r.accepted.size(); })
+        .def("__repr__", [](const PassRun& r) {
+            const slr::PassData& d = *r.pass;
+            std::string s = "<laserwb.slr.PassResult " + d.source + " pass " + std::to_string(d.passIndex + 1) + ": " +
+                            std::to_string(r.r.accepted.size()) + " points, " + std::to_string(r.r.acceptedCount) + " accepted";
+            if (r.r.postOk) s += ", post-fit RMS " + core::formatFixed(r.r.post.stats.rms * 1e12, 1) + " ps";
+            s += ", " + std::to_string(slr::deliveredNormalPoints(r.r).points.size()) + " normal points";
+            if (!r.r.doubt.empty()) s += "; doubtful: " + r.r.doubt.substr(0, 120) + (r.r.doubt.size() > 120 ? "..." : "");
+            return s + ">";
+        })
         .def("write", [](const PassRun& r, const py::object& csv, const py::object& crd, const py::object& npt,
                          const py::object& report, const py::object& stationNp) {
             auto path = [](const py::object& o) { return o.is_none() ? std::string() : fsPath(o); };
@@ -355,7 +382,8 @@ void bindRuns(py::module_& m) {
           "the O-C (run() refuses other oc.* values). Bad files raise laserwb.Error with FILE:LINE.");
     m.def("run", &runPass, py::arg("pass_"), py::arg("params") = py::none(), py::arg("preset") = py::none(),
           py::arg("satellite") = py::none(), py::arg("stations") = py::none(), py::arg("threads") = py::none(),
-          "Screens a Pass, fits the trend and forms the normal points (PassTask), with the settings\n"
+          "Screens a Pass (or the first pass of a file's path, loaded as load_pass(path, params=params)),\n"
+          "fits the trend and forms the normal points (PassTask), with the settings\n"
           "laserwb-cli slr makes: its defaults, the preset file's entry for the satellite (preset,\n"
           "satellite), the normal-point context (stations: SINEX for day or night), then params (a\n"
           "SlrParams as --config, or {key: value} as --set). threads: the scale search's threads (0: every\n"

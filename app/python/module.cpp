@@ -92,6 +92,40 @@ std::string valueText(const py::handle& v) {
     return py::str(v);
 }
 
+py::array maskOf(const std::vector<uint8_t>& v, py::handle owner) {
+    const bool binary = std::all_of(v.begin(), v.end(), [](uint8_t b) { return b <= 1; });
+    if (!binary) {
+        py::array_t<bool> a(static_cast<py::ssize_t>(v.size()));
+        bool* out = a.mutable_data();
+        for (size_t i = 0; i < v.size(); ++i) out[i] = v[i] != 0;
+        py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+        return std::move(a);
+    }
+    py::array a(py::dtype::of<bool>(), {static_cast<py::ssize_t>(v.size())}, {py::ssize_t{1}}, v.data(), owner);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
+}
+
+std::string fsPath(const py::object& o) { return py::str(py::module_::import("os").attr("fspath")(o)); }
+
+std::string inputPath(const py::object& o, bool folderOk) {
+    std::string p = fsPath(o);
+    requireReadable(p, folderOk);
+    return p;
+}
+
+void requireReadable(const std::string& path, bool folderOk) {
+    if (path.empty() || path == "-") return;
+    const py::module_ os = py::module_::import("os");
+    // os.stat and open raise FileNotFoundError, PermissionError, ... with errno and filename.
+    const py::object st = os.attr("stat")(path);
+    if (folderOk && py::module_::import("stat").attr("S_ISDIR")(st.attr("st_mode")).cast<bool>()) {
+        os.attr("listdir")(path);
+        return;
+    }
+    py::module_::import("builtins").attr("open")(path, "rb").attr("close")();  // (a folder: IsADirectoryError)
+}
+
 py::array_t<float> ownedArray(cv::Mat image) {
     auto* keep = new cv::Mat(std::move(image));
     py::capsule owner(keep, [](void* p) { delete static_cast<cv::Mat*>(p); });
@@ -125,7 +159,7 @@ py::array resultImage(const cv::Mat& image) {
 cv::Mat imageArgument(const py::object& image, const std::string& what, long long maxPixels, py::list* keep,
                       const std::function<bool(const std::string&, cv::Mat*, std::string*, long long)>& read) {
     if (!py::isinstance<py::array>(image)) {
-        const std::string path = py::str(py::module_::import("os").attr("fspath")(image));
+        const std::string path = inputPath(image);
         cv::Mat m;
         std::string err;
         check(read(path, &m, &err, maxPixels), err);

@@ -331,6 +331,61 @@ def test_results_are_read_only_and_arguments_checked(data):
         laserwb.footprint.fit_batch([np.ones((32, 32), np.float32)] * 2, names=[1, None])
 
 
+def test_masks_select_and_os_errors_are_pythons(data, tmp_path):
+    """Issue 46: r.accepted and r.kept were uint8, so p.t[r.accepted] took t[0] and t[1] over and
+    over (fancy indexing); a missing file raised laserwb.Error; run("file") was pybind11's
+    "incompatible function arguments"; reprs were <... object at 0x...>."""
+    frd = str(data / "passes" / "pass3.frd")
+    p = laserwb.slr.load_pass(frd)
+    r = laserwb.slr.run(p)
+    for m in (r.accepted, r.kept):
+        assert m.dtype == np.bool_ and len(m) == len(p) and not m.flags.writeable
+    sel = p.t[r.accepted]
+    assert len(sel) == r.accepted_count == int(np.count_nonzero(r.accepted))
+    assert np.array_equal(sel, np.asarray(p.t)[np.flatnonzero(r.accepted)])  # the points themselves
+    assert len(set(sel.tolist())) > 2  # (the uint8 mask gave two distinct epochs)
+    # run() of a path loads it as load_pass does: the same answer
+    r2 = laserwb.slr.run(frd)
+    assert np.array_equal(r2.accepted, r.accepted) and r2.accepted_count == r.accepted_count
+    with pytest.raises(TypeError, match="run\\(\\) takes a Pass"):
+        laserwb.slr.run(3.5)
+    # OS errors are Python's own, with errno and the file's name
+    missing = str(tmp_path / "nowhere.frd")
+    for call in (lambda: laserwb.slr.load_pass(missing), lambda: laserwb.slr.run(missing),
+                 lambda: laserwb.slr.read_crd(missing), lambda: laserwb.slr.process_file(missing, str(tmp_path))):
+        with pytest.raises(FileNotFoundError) as e:
+            call()
+        assert e.value.filename == missing
+    with pytest.raises(FileNotFoundError):
+        laserwb.slr.load_pass(frd, cpf=str(tmp_path / "no.cpf"), stations=str(tmp_path / "no.snx"))
+    for call in (lambda: laserwb.footprint.fit_batch(missing), lambda: laserwb.footprint.read_frame(missing),
+                 lambda: laserwb.trend.compute(missing), lambda: laserwb.radiometry.read_image(missing),
+                 lambda: laserwb.calib.detector(missing)):
+        with pytest.raises(FileNotFoundError):
+            call()
+    if os.geteuid() != 0:  # (root reads a file of mode 000)
+        locked = tmp_path / "locked.frd"
+        locked.write_bytes(open(frd, "rb").read())
+        locked.chmod(0)
+        with pytest.raises(PermissionError):
+            laserwb.slr.load_pass(str(locked))
+    with pytest.raises(IsADirectoryError):
+        laserwb.slr.load_pass(str(tmp_path))
+    # reprs that summarise
+    text = repr(r)
+    assert text.startswith("<laserwb.slr.PassResult ") and f"{r.accepted_count} accepted" in text, text
+    assert f"{len(r.normal_points['epoch_s'])} normal points" in text, text
+    assert repr(laserwb.slr.SlrParams()) == "laserwb.slr.SlrParams()  # defaults"
+    q = laserwb.slr.SlrParams({"screen.cosine_c": 0.9})
+    assert repr(q).startswith("laserwb.slr.SlrParams({'screen.cosine_c': 0.9")
+    assert eval(repr(q), {"laserwb": laserwb}) == q
+    assert eval(repr(laserwb.slr.SlrParams()), {"laserwb": laserwb}) == laserwb.slr.SlrParams()
+    assert repr(laserwb.footprint.FootprintParams()).startswith("laserwb.footprint.FootprintParams()")
+    rep = laserwb.footprint.fit_batch(str(data / "shots"))
+    text = repr(rep)
+    assert text.startswith(f"<laserwb.footprint.Report: {len(rep)} rows from ") and "good" in text, text
+
+
 def test_arguments_are_typed_errors_naming_them():
     """Issue 41: pybind11's "Unable to cast Python instance" for k='x' and for a size or centres
     of the wrong kind; a TypeError or ValueError naming the argument now."""

@@ -16,7 +16,8 @@ Families (each a submodule, with its parameter class built from the family's sch
 - ``laserwb.distributed``: folders of passes and frames on a Dask cluster
 
 Errors: ``laserwb.ParameterError`` (a ``ValueError``) for a refused parameter, with the schema's
-message; ``laserwb.Error`` for anything else (a bad file names FILE:LINE).
+message; Python's ``FileNotFoundError``, ``PermissionError``, ``IsADirectoryError`` for a file
+that cannot be opened; ``laserwb.Error`` for anything else (a bad file names FILE:LINE).
 """
 import os as _os
 import sys as _sys
