@@ -3,6 +3,7 @@
 // the report's writer (writeFootprintCsv, footprintCsvRows), as `laserwb-cli footprint` runs them.
 #include <cstring>
 
+#include <cmath>
 #include <map>
 
 #include "bind.hpp"
@@ -31,17 +32,6 @@ const ParamsBinding<fp::FootprintParams> kParams{
     "FootprintParams", "Parameters of the footprint shots (laserwb-cli footprint; core/footprint/pipeline.hpp).",
     fp::footprintSchema, defaults, familyCheck, fromJson, afterSet};
 
-// The report's columns of a type, from its column table (core/footprint/report_columns.hpp):
-// text and whole numbers; the rest are float64, empty = NaN.
-std::vector<std::string> columnsOfType(fp::ColumnType t) {
-    std::vector<std::string> names;
-    for (const auto& c : fp::footprintColumns())
-        if (c.type == t && !c.reviewOnly) names.push_back(c.name);
-    return names;
-}
-const std::vector<std::string> kText = columnsOfType(fp::ColumnType::Text);
-const std::vector<std::string> kInt = columnsOfType(fp::ColumnType::Integer);
-
 /// A run's items and its method: the report's rows.
 struct Report {
     fp::BatchResult result;
@@ -52,6 +42,40 @@ struct Report {
         return s;
     }
 };
+
+// The report's columns from the column table's getters (core/footprint/report_columns.hpp), as
+// the core computed them: text as str, whole numbers as int64 (-1 empty), the rest float64 at
+// full precision (NaN empty). The CSV's rounding is the CSV's only (x 14.8403 was 14.84031...).
+py::dict reportColumns(const Report& rep) {
+    std::vector<fp::ReportRow> rows;
+    for (const auto& it : rep.result.items)
+        for (fp::ReportRow& r : fp::reportRows(it, rep.method)) rows.push_back(r);
+    const py::object numpy = py::module_::import("numpy");
+    py::dict out;
+    const auto n = static_cast<py::ssize_t>(rows.size());
+    for (const fp::FootprintColumn& c : fp::footprintColumns()) {
+        if (c.reviewOnly) continue;
+        if (c.type == fp::ColumnType::Text) {
+            py::list cells;
+            for (const auto& r : rows) cells.append(c.value(r).text);
+            out[c.name] = numpy.attr("array")(cells, "dtype"_a = "U");
+        } else if (c.type == fp::ColumnType::Integer) {
+            py::array_t<long long> a(n);
+            long long* w = a.mutable_data();
+            for (py::ssize_t i = 0; i < n; ++i) {
+                const double v = c.value(rows[static_cast<size_t>(i)]).number;
+                w[i] = std::isfinite(v) ? static_cast<long long>(v) : -1;
+            }
+            out[c.name] = a;
+        } else {
+            py::array_t<double> a(n);
+            double* w = a.mutable_data();
+            for (py::ssize_t i = 0; i < n; ++i) w[i] = c.value(rows[static_cast<size_t>(i)]).number;
+            out[c.name] = a;
+        }
+    }
+    return out;
+}
 
 // The sources as the CLI gathers them from its flags: a FootprintParams (its --config), the
 // preset, the method (its alias), then a dict's keys (its --set options); the core resolves them.
@@ -259,8 +283,9 @@ void bindFootprint(py::module_& top) {
             return s + ">";
         })
         .def("csv_rows", &Report::rows, "The report's data rows as text (what write_csv writes after the header).")
-        .def("columns", [](const Report& r) { return csvColumns(fp::footprintCsvHeader() + r.rows(), kText, kInt); },
-             "{column: numpy array} of the report (numbers as written in the report; empty cells NaN).")
+        .def("columns", &reportColumns,
+             "{column: numpy array} of the report: the CSV's columns at the core's full precision (float64;\n"
+             "empty cells NaN, whole-number columns int64 with -1 empty, text str).")
         .def("write_csv", [](const Report& r, const std::string& path) {
             std::string err;
             py::gil_scoped_release nogil;

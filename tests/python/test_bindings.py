@@ -3,6 +3,8 @@ byte for byte (both run the same core code in this build), and the same messages
 parameters. Accuracy is checked against the simulators' truth where a number is asserted."""
 import csv
 import glob
+import inspect
+import io
 import json
 import os
 import subprocess
@@ -129,6 +131,21 @@ def test_footprint_columns_and_records(data):
     assert cols["radius95_px"].dtype == np.float64 and np.all(cols["radius95_px"][cols["verdict"] == "good"] > 0)
     rec = rep.to_records()
     assert rec.shape == (12,) and set(rec["verdict"]) <= {"good", "doubtful", "rejected"}
+    # Issue 46: the core's values, not the CSV's text read back (x 14.8403, snr 15.89 were): the
+    # CSV's cells are these rounded, and some carry digits beyond the CSV's
+    text = list(csv.DictReader(io.StringIO(laserwb.footprint.csv_header() + "".join(rep.csv_rows()))))
+    finer = 0
+    for c in ("x", "y", "snr", "sigma_x"):
+        for v, t in zip(cols[c], text):
+            if t[c] == "":
+                assert np.isnan(v)
+                continue
+            decimals = len(t[c].split(".")[1]) if "." in t[c] else 0
+            assert abs(v - float(t[c])) <= 0.5 * 10 ** -decimals * (1 + 1e-9), (c, v, t[c])
+            finer += v != float(t[c])
+    assert finer > 0
+    row = laserwb.footprint.fit(laserwb.footprint.read_frame(str(data / "shots" / rep.files[0])))
+    assert row["file"] is None and row["x"] == cols["x"][0]
 
 
 def test_footprint_bad_frame_names_the_file(tmp_path):
@@ -384,6 +401,43 @@ def test_masks_select_and_os_errors_are_pythons(data, tmp_path):
     rep = laserwb.footprint.fit_batch(str(data / "shots"))
     text = repr(rep)
     assert text.startswith(f"<laserwb.footprint.Report: {len(rep)} rows from ") and "good" in text, text
+
+
+def test_parameters_are_python_objects():
+    """Issue 46: SlrParams(cosine_c=.97) gave pybind11's constructor dump; no attributes to
+    tab-complete, no items()/values()/get()/from_json, no signature."""
+    P = laserwb.slr.SlrParams
+    p = P(cosine_c=0.97)
+    assert p["screen.cosine_c"] == 0.97 and p.screen.cosine_c == 0.97 and p.cosine_c == 0.97
+    assert P(screen__cosine_c=0.8)["screen.cosine_c"] == 0.8
+    assert P({"screen.cosine_c": 0.8}, mag_t=2.5) == P(screen__cosine_c=0.8, screen__mag_t=2.5)
+    p.screen.cosine_c = 0.9
+    p.reject_sigma = 2.5
+    assert p["screen.cosine_c"] == 0.9 and p["postfit.reject_sigma"] == 2.5
+    # the schema's rules and messages hold through every way in
+    with pytest.raises(laserwb.ParameterError, match="cosine_c"):
+        P(cosine_c=1.5)
+    with pytest.raises(laserwb.ParameterError, match="cosine_c"):
+        p.screen.cosine_c = 1.5
+    with pytest.raises(laserwb.ParameterError, match="several stages: give one of oc__max_iterations"):
+        P(max_iterations=3)
+    with pytest.raises(laserwb.ParameterError, match="did you mean 'screen.cosine_c'"):
+        P(cosin_c=0.9)
+    with pytest.raises(AttributeError, match="did you mean"):
+        p.screen.cosin_c
+    assert "screen" in dir(p) and "cosine_c" in dir(p.screen)
+    # the mapping protocol and JSON
+    assert dict(p.items()) == p.to_dict() and p.values() == [p[k] for k in p.keys()]
+    assert p.get("screen.cosine_c") == 0.9 and p.get("no.such", 7) == 7
+    assert P.from_json(p.to_json()) == p
+    with pytest.raises(laserwb.ParameterError):
+        P.from_json('{"screen": {"cosine_c": 7}}')
+    assert str(inspect.signature(P.__init__)) == "(self, values=None, **keywords)"
+    for cls in (laserwb.footprint.FootprintParams, laserwb.trend.TrendParams, laserwb.calib.CalibParams,
+                laserwb.radiometry.RadiometryParams):
+        q = cls()
+        k = q.keys()[-1]
+        assert cls.from_json(q.to_json()) == q and q.get(k) == q[k]
 
 
 def test_arguments_are_typed_errors_naming_them():

@@ -58,6 +58,130 @@ for _name in ("footprint", "slr", "trend", "calib", "radiometry"):
     _sys.modules[__name__ + "." + _name] = globals()[_name]
 
 
+class _Stage:
+    """The parameters of one stage (``p.screen``): attributes read and set ``p["screen.NAME"]``."""
+
+    __slots__ = ("_params", "_prefix")
+
+    def __init__(self, params, prefix):
+        object.__setattr__(self, "_params", params)
+        object.__setattr__(self, "_prefix", prefix)
+
+    def _names(self):
+        n = len(self._prefix) + 1
+        return sorted({k[n:].split(".")[0] for k in self._params.keys() if k.startswith(self._prefix + ".")})
+
+    def __getattr__(self, name):
+        return _attribute(self._params, self._prefix + "." + name, name)
+
+    def __setattr__(self, name, value):
+        key = self._prefix + "." + name
+        if key not in self._params:
+            raise AttributeError(_unknown(self._params, key, name))
+        self._params[key] = value
+
+    def __dir__(self):
+        return self._names()
+
+    def __repr__(self):
+        return f"<{type(self._params).__name__} {self._prefix}: " + ", ".join(
+            f"{n}={self._params[self._prefix + '.' + n]!r}" for n in self._names()
+            if self._prefix + "." + n in self._params) + ">"
+
+
+def _unknown(params, key, name):
+    import difflib
+
+    close = difflib.get_close_matches(key, params.keys(), n=3) or difflib.get_close_matches(
+        name, [k.split(".")[-1] for k in params.keys()], n=3)
+    return f"{type(params).__name__} has no parameter {name!r}" + (
+        f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else "")
+
+
+def _attribute(params, key, name):
+    if key in params:
+        return params[key]
+    if any(k.startswith(key + ".") for k in params.keys()):
+        return _Stage(params, key)
+    raise AttributeError(_unknown(params, key, name))
+
+
+def _full_key(params, name):
+    """A keyword's key: the full key with "__" for ".", or a parameter's last name when only one
+    parameter has it (max_iterations is in several stages: screen__max_iterations then)."""
+    key = name.replace("__", ".")
+    if key in params:
+        return key
+    owners = [k for k in params.keys() if k.split(".")[-1] == name]
+    if len(owners) == 1:
+        return owners[0]
+    if owners:
+        raise ParameterError(f"{name!r} is a parameter of several stages: give one of "
+                             + ", ".join(k.replace(".", "__") for k in owners))
+    raise ParameterError(_unknown(params, key, name))
+
+
+def _params_class(cls):
+    """The Python side of a family's parameter class: keyword arguments, attributes by stage,
+    the mapping protocol and from_json (the schema's keys throughout)."""
+    construct = cls.__init__
+
+    def __init__(self, values=None, **keywords):
+        construct(self, values)
+        for name, value in keywords.items():
+            self[_full_key(self, name)] = value
+
+    __init__.__doc__ = (f"{cls.__name__}(values=None, **keywords): the command's defaults, then `values` "
+                        "({key: value}) and the keywords: a parameter's name where only one stage has it "
+                        "(cosine_c=0.97) or its key with '__' for '.' (screen__cosine_c=0.97).")
+
+    def __getattr__(self, name):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if any(k == name or k.startswith(name + ".") for k in self.keys()):
+            return _attribute(self, name, name)
+        return self[_full_key(self, name)] if name in {k.split(".")[-1] for k in self.keys()} else _attribute(self, name, name)
+
+    def __setattr__(self, name, value):
+        self[_full_key(self, name)] = value
+
+    def __dir__(self):
+        return sorted(set(object.__dir__(self)) | {k.split(".")[0] for k in self.keys()})
+
+    def items(self):
+        return [(k, self[k]) for k in self.keys()]
+
+    def values(self):
+        return [self[k] for k in self.keys()]
+
+    def get(self, key, default=None):
+        return self[key] if key in self else default
+
+    @classmethod
+    def from_json(klass, text):
+        """Parameters from JSON text (what to_json and --print-config write), over the defaults."""
+        import tempfile
+
+        with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+            f.write(text)
+        try:
+            p = klass()
+            p.load(f.name)
+            return p
+        finally:
+            _os.unlink(f.name)
+
+    for name, fn in (("__init__", __init__), ("__getattr__", __getattr__), ("__setattr__", __setattr__),
+                     ("__dir__", __dir__), ("items", items), ("values", values), ("get", get)):
+        setattr(cls, name, fn)
+    cls.from_json = from_json
+
+
+for _cls in (footprint.FootprintParams, slr.SlrParams, trend.TrendParams, calib.CalibParams,
+             radiometry.RadiometryParams):
+    _params_class(_cls)
+
+
 def _records(columns):
     """{column: array} as a numpy structured array (one record per row)."""
     names = list(columns)
@@ -70,11 +194,13 @@ def _fit(roi, params=None, preset=None, method=None, centre=None):
     The row is that of ``laserwb-cli footprint`` for the same frame: x, y (px), verdict, reasons,
     sigma_x, sigma_y, snr, crlb_px, ... (``footprint.csv_header()``). ``centre``: (x, y), the
     nominal spot centre (``--center``); without it the brightest spot-like blob or the whole ROI.
+    Numbers at the core's full precision; ``file`` is None (an array names no file).
     """
     report = footprint.fit_batch(roi, params=params, preset=preset, method=method,
-                                 centres=None if centre is None else [centre], threads=1)
-    cols = report.columns()
-    return {k: v[0].item() for k, v in cols.items()}
+                                 centres=None if centre is None else [centre], threads=1, names=[""])
+    row = {k: v[0].item() for k, v in report.columns().items()}
+    row["file"] = None
+    return row
 
 
 def _report_records(self):
