@@ -33,9 +33,7 @@ std::string gx(double v) { return std::isfinite(v) ? core::formatDouble(v, 10) :
 std::string outPath(const Args& a) { return a.has("-o") ? a.value("-o") : a.value("--output"); }
 bool quiet(const Args& a) { return a.has("-q") || a.has("--quiet"); }
 bool wantsHelp(const Args& a) { return a.has("--help") || a.has("-h"); }
-void warn(const std::string& cmd, const std::vector<std::string>& ws) {
-    for (const auto& w : ws) std::cerr << "laserwb-cli " << cmd << ": warning: " << w << "\n";
-}
+void warn(const std::string& cmd, const std::vector<std::string>& ws, const Args& a) { warnings(cmd, ws, quiet(a)); }
 
 // ------------------------------------------------------------------------------------------
 const char* kDetectorUsage =
@@ -192,7 +190,7 @@ int cmdCalibDetector(int argc, char** argv) {
     const CalibRunResult run = core::runTask<CalibTask>(in, cp);
     const DetectorFitResult& r = run.detector;
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
-    warn(cmd, r.warnings);
+    warn(cmd, r.warnings, a);
     if (!out.empty() && !writeDetectorCentreCsv(outs.stagingPath(out), r, &err)) return fail(cmd, outs.unstaged(err));
     if (a.has("--detectors") && !writeDetectorReportCsv(outs.stagingPath(a.value("--detectors")), arr, r, &err))
         return fail(cmd, outs.unstaged(err));
@@ -256,7 +254,7 @@ int cmdCalibWaveform(int argc, char** argv) {
     const WaveformResult& wr = run.waveform;
     if (run.hasWaveform) {
         if (!wr.ok) return fail(cmd, a.positional()[0] + ": " + wr.error);
-        warn(cmd, wr.warnings);
+        warn(cmd, wr.warnings, a);
         std::cout << "returns at " << fx(wr.first.centreNs, 3) << " and " << fx(wr.second.centreNs, 3) << " ns; dt "
                   << fx(wr.deltaTNs, 3) << " +- " << fx(wr.deltaTSdNs, 3) << " ns; h_waveform " << fx(wr.heightM, 3)
                   << " +- " << fx(wr.heightSdM, 3) << " m\n";
@@ -266,7 +264,7 @@ int cmdCalibWaveform(int argc, char** argv) {
     if (a.has("--features")) {
         if (!run.hasMatch) return fail(cmd, a.value("--features") + ": no candidate features");
         if (!mr.ok) return fail(cmd, mr.error);
-        warn(cmd, mr.warnings);
+        warn(cmd, mr.warnings, a);
     }
     if ((!outPath(a).empty() && !writeTextOutput(outs.stagingPath(outPath(a)), rankingCsv(cands, mr), &err)) ||
         (a.has("--model") && !writeTextOutput(outs.stagingPath(a.value("--model")), waveformModelCsv(w, wr), &err)))
@@ -332,7 +330,7 @@ int cmdCalibPointing(int argc, char** argv) {
     const CalibRunResult run = core::runTask<CalibTask>(in, cp);
     const PointingCalibResult& r = run.pointing;
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
-    warn(cmd, r.warnings);
+    warn(cmd, r.warnings, a);
     auto write = [&](const std::string& path, const std::string& text) {
         return writeTextOutput(outs.stagingPath(path), text, &err);
     };

@@ -36,7 +36,9 @@ bool Args::parse(int argc, char** argv, int first) {
         }
         const auto it = m_spec.find(name);
         if (it == m_spec.end()) {
-            m_error = "unknown option " + name;
+            std::vector<std::string> names{"--version"};  // (answered before any command's parser)
+            for (const auto& [n, spec] : m_spec) names.push_back(n);
+            m_error = "unknown option " + name + core::didYouMean(name, names);
             return false;
         }
         if (it->second.first) {
@@ -111,6 +113,11 @@ std::string g_lastFailure;
 }
 
 const std::string& lastFailure() { return g_lastFailure; }
+
+void warnings(const std::string& command, const std::vector<std::string>& ws, bool quiet, bool doubtful) {
+    if (quiet && !doubtful) return;
+    for (const auto& w : ws) std::cerr << "laserwb-cli " << command << ": warning: " << w << "\n";
+}
 
 int fail(const std::string& command, const std::string& message, int code) {
     g_lastFailure = message;

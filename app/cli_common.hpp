@@ -50,6 +50,10 @@ private:
     std::vector<std::string> m_positional;
 };
 
+/// A run's warnings on stderr ("laserwb-cli COMMAND: warning: ..."); -q (`quiet`) silences them
+/// when the run is sound, never when they explain a doubtful result (exit 3: `doubtful`).
+void warnings(const std::string& command, const std::vector<std::string>& ws, bool quiet, bool doubtful = false);
+
 /// Prints "laserwb-cli COMMAND: message" on stderr and returns code.
 int fail(const std::string& command, const std::string& message, int code = kFailed);
 /// The message of the last fail() (run summaries say why a run failed).

@@ -318,6 +318,7 @@ int cmdFootprint(int argc, char** argv) {
     src.inputs = a.positional();
     src.inputs.insert(src.inputs.end(), bo.listed.begin(), bo.listed.end());
     src.metadata = a.value("--metadata");
+    src.keepGoing = a.has("--keep-going");
     // The parameters' errors first (the shots are gathered once the options are known good).
     FootprintParams checked;
     FootprintError fe;
@@ -606,7 +607,7 @@ int cmdTrend(int argc, char** argv) {
     if (!note.empty() && !a.quiet()) std::cerr << "trend: " << a.positional()[0] << ": " << note << "\n";
     const TrendResult tr = computeTrend(recs, tp);
     if (!tr.ok) return fail("trend", tr.error);
-    for (const auto& w : tr.warnings) std::cerr << "laserwb-cli trend: warning: " << w << "\n";
+    warnings("trend", tr.warnings, a.quiet());
     if (!writeTrendCsv(outs.stagingPath(out), tr.rows, &err)) return fail("trend", outs.unstaged(err));
     core::Provenance prov;
     prov.command = "trend";

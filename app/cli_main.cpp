@@ -63,7 +63,8 @@ const char* kMainUsage =
     "  demo                 a short end-to-end run on simulated data\n"
     "  version              print the version\n"
     "\n"
-    "'laserwb-cli COMMAND --help' describes each command.\n";
+    "'laserwb-cli COMMAND --help' (or 'laserwb-cli help COMMAND') describes each command;\n"
+    "'laserwb-cli COMMAND --version' prints the version.\n";
 
 #ifdef LWB_CLI_IMAGING
 int demo(int argc, char** argv);
@@ -120,11 +121,51 @@ int main(int argc, char** argv) {
 }
 
 namespace {
+// The commands and the kinds of those that take one (for "did you mean").
+const std::vector<std::string> kCommands = {"footprint", "trend", "slr", "crd", "simulate", "eval", "bench",
+                                            "calib", "radiometry", "demo", "version", "help"};
+const char* kindsOf(const std::string& cmd) {
+    if (cmd == "calib") return "detector, waveform, pointing, stats";
+    if (cmd == "radiometry") return "mosaic, gcp, fit, apply, check";
+    if (cmd == "simulate") return "footprint, trend, slr, calib, radiometry";
+    if (cmd == "bench") return "footprint, slr";
+    if (cmd == "eval") return "footprint";
+    return nullptr;
+}
+
+// "unknown kind "X" (a, b, c)" with the nearest kind when one is near.
+std::string unknownKind(const std::string& sub, const char* kinds) {
+    std::vector<std::string> names;
+    for (std::string_view rest = kinds; !rest.empty();) {
+        const size_t comma = rest.find(',');
+        names.emplace_back(lwb::core::trim(rest.substr(0, comma)));
+        rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+    }
+    return "unknown kind \"" + sub + "\" (" + kinds + ")" + lwb::core::didYouMean(sub, names);
+}
+
 int dispatch(int argc, char** argv) {
     using namespace lwb::cli;
+    // help CMD [KIND]: CMD [KIND] --help.
+    if (argc >= 3 && !std::strcmp(argv[1], "help")) {
+        std::vector<char*> again{argv[0]};
+        for (int i = 2; i < argc && i < 4; ++i) again.push_back(argv[i]);
+        static char helpFlag[] = "--help";
+        again.push_back(helpFlag);
+        again.push_back(nullptr);
+        return dispatch(static_cast<int>(again.size()) - 1, again.data());
+    }
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
         std::cout << kMainUsage;
         return argc < 2 ? kUsage : kOk;
+    }
+    // CMD --version, CMD KIND --version: the program's version (every command is of one build).
+    for (int i = 2; i < argc && i < 4 && argv[i][0] != '\0'; ++i) {
+        if (!std::strcmp(argv[i], "--version")) {
+            std::cout << "laserwb-cli " LWB_VERSION "\n";
+            return kOk;
+        }
+        if (argv[i][0] == '-') break;
     }
     const std::string cmd = argv[1];
     const std::string sub = argc > 2 ? argv[2] : "";
@@ -156,27 +197,19 @@ int dispatch(int argc, char** argv) {
     if (cmd == "slr" || cmd == "crd" || ((cmd == "simulate" || cmd == "bench") && sub == "slr"))
         return fail(cmd, "the SLR commands are run by laserwb-cli itself, not by laserwb-cli-imaging", kUsage);
 #endif
-    if (cmd == "calib" || cmd == "radiometry") {
-        const char* subs = cmd == "calib" ? "detector, waveform, pointing, stats" : "mosaic, gcp, fit, apply, check";
-        if (sub == "--help" || sub == "-h") {
-            std::cout << "usage: laserwb-cli " << cmd << " (" << subs << ") [options]; each has --help\n";
-            return kOk;
-        }
-        return fail(cmd, (sub.empty() ? "which one? (" : "unknown kind \"" + sub + "\" (") + subs + ")", kUsage);
-    }
     if (cmd == "version" || cmd == "--version") {
         std::cout << "laserwb-cli " LWB_VERSION "\n";
         return kOk;
     }
-    if (cmd == "simulate" || cmd == "eval" || cmd == "bench") {
-        const char* kinds = cmd == "simulate" ? "footprint, trend, slr, calib, radiometry" : cmd == "bench" ? "footprint, slr" : "footprint";
+    if (const char* kinds = kindsOf(cmd)) {
         if (sub == "--help" || sub == "-h") {
             std::cout << "usage: laserwb-cli " << cmd << " (" << kinds << ") [options]; each has --help\n";
             return kOk;
         }
-        return fail(cmd, (sub.empty() ? "which one? (" : "unknown kind \"" + sub + "\" (") + kinds + ")", kUsage);
+        return fail(cmd, sub.empty() ? std::string("which one? (") + kinds + ")" : unknownKind(sub, kinds), kUsage);
     }
-    std::cerr << "laserwb-cli: unknown command \"" << cmd << "\"\n\n" << kMainUsage;
+    std::cerr << "laserwb-cli: unknown command \"" << cmd << "\"" << lwb::core::didYouMean(cmd, kCommands) << "\n\n"
+              << kMainUsage;
     return kUsage;
 }
 }  // namespace

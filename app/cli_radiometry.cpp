@@ -24,8 +24,8 @@ namespace {
 std::string fx(double v, int d) { return std::isfinite(v) ? core::formatFixed(v, d) : std::string(); }
 std::string outPath(const Args& a) { return a.has("-o") ? a.value("-o") : a.value("--output"); }
 bool quiet(const Args& a) { return a.has("-q") || a.has("--quiet"); }
-void warn(const std::string& cmd, const std::vector<std::string>& ws) {
-    for (const auto& w : ws) std::cerr << "laserwb-cli " << cmd << ": warning: " << w << "\n";
+void warn(const std::string& cmd, const std::vector<std::string>& ws, const Args& a, bool doubtful = false) {
+    warnings(cmd, ws, quiet(a), doubtful);
 }
 // --max-pixels: the largest image decoded (its header is read first).
 bool maxPixels(const Args& a, long long* out, std::string* err) {
@@ -162,7 +162,7 @@ int cmdRadiometryMosaic(int argc, char** argv) {
     const MosaicResult r = mosaicRow(frames, p, &fb);
     progress.finish();
     if (!r.ok) return fail(cmd, r.error);
-    warn(cmd, r.warnings);
+    warn(cmd, r.warnings, a);
     if (!writeImage(outs.stagingPath(out), r.image, &err) ||
         (a.has("--coverage") && !writeImage(outs.stagingPath(a.value("--coverage")), r.coverage, &err)) ||
         (a.has("--pairs") && !writePairCsv(outs.stagingPath(a.value("--pairs")), r, &err)))
@@ -217,11 +217,7 @@ int cmdRadiometryGcp(int argc, char** argv) {
     if (!readImageAnyDepth(a.positional()[0], &img, &err, maxPx)) return fail(cmd, err);
     const GcpFitResult fit = fitGcpTransform(gcps, p);
     if (!fit.ok) return fail(cmd, a.value("--gcps") + ": " + fit.error);
-    if (fit.outliers.empty()) {
-        if (!quiet(a)) warn(cmd, fit.warnings);
-    } else {
-        warn(cmd, fit.warnings);  // (said even with -q: the map is doubtful, exit 3)
-    }
+    warn(cmd, fit.warnings, a, !fit.outliers.empty());  // (outliers: the map is doubtful, exit 3)
     const MapGrid grid = gridCovering(fit, img.size(), pixel > 0 ? pixel : fit.metresPerPixel);
     const WarpResult w = warpToMap(img, fit, grid);
     if (!w.ok) return fail(cmd, w.error);
@@ -288,7 +284,7 @@ int cmdRadiometryFit(int argc, char** argv) {
     }
     const ReflectanceFitResult r = fitReflectance(regions, p);
     if (!r.ok) return fail(cmd, a.positional()[0] + ": " + r.error);
-    warn(cmd, r.warnings);
+    warn(cmd, r.warnings, a);
     if (!writeFitCsv(outs.stagingPath(out), r.fit, &err) ||
         (a.has("--regions") && !writeRegionFitCsv(outs.stagingPath(a.value("--regions")), regions, r, &err)))
         return fail(cmd, outs.unstaged(err));
@@ -362,7 +358,7 @@ int cmdRadiometryApply(int argc, char** argv) {
     const cv::Size size = img.size();
     img.release();  // (the DN image is not needed while the reflectance is written)
     if (!r.ok) return fail(cmd, r.error);
-    warn(cmd, r.warnings);
+    warn(cmd, r.warnings, a);
     RelativeErrorResult check;
     if (a.has("--check")) {
         std::vector<Region> regions;
@@ -385,7 +381,7 @@ int cmdRadiometryApply(int argc, char** argv) {
             std::cout << row.name << ": measured " << fx(row.measured, 4) << " %, image " << fx(row.simulated, 4)
                       << " %, relative error " << fx(row.relativeErrorPct, 3) << " %\n";
         std::cout << "max relative error " << fx(check.maxPct, 3) << " % (limit " << core::formatDouble(limit, 4) << " %)\n";
-        warn(cmd, check.warnings);
+        warn(cmd, check.warnings, a, !check.allWithinLimit);
         if (!check.allWithinLimit) {
             std::cerr << "laserwb-cli " << cmd << ": doubtful: a check region exceeds the " << core::formatDouble(limit, 4)
                       << " % limit (outputs written; exit 3)\n";
@@ -430,7 +426,7 @@ int cmdRadiometryCheck(int argc, char** argv) {
                   << " %, relative error " << fx(row.relativeErrorPct, 6) << " %\n";
     std::cout << "max " << fx(r.maxPct, 4) << " %, mean " << fx(r.meanPct, 4) << " % (limit " << core::formatDouble(limit, 4)
               << " %)\n";
-    warn(cmd, r.warnings);
+    warn(cmd, r.warnings, a, !r.allWithinLimit);
     if (!r.allWithinLimit)
         std::cerr << "laserwb-cli " << cmd << ": doubtful: a region exceeds the limit (table written; exit 3)\n";
     return r.allWithinLimit ? kOk : kDoubtful;

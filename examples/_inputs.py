@@ -1,4 +1,5 @@
 """Where the examples find laserwb-cli (for the simulated inputs) and their work folder."""
+import atexit
 import os
 import shutil
 import subprocess
@@ -9,9 +10,14 @@ CLI = os.environ.get("LWB_CLI") or shutil.which("laserwb-cli") or "laserwb-cli"
 
 
 def workdir():
-    """The folder given as the first argument, else a new temporary one."""
-    d = sys.argv[1] if len(sys.argv) > 1 else tempfile.mkdtemp(prefix="laserwb-example-")
-    os.makedirs(d, exist_ok=True)
+    """The folder given as the first argument; else (and in a notebook, whose kernel is started
+    with "-f CONNECTION_FILE") a new temporary one, removed when the interpreter exits."""
+    given = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("-") else None
+    if given and "ipykernel" not in sys.modules:
+        os.makedirs(given, exist_ok=True)
+        return given
+    d = tempfile.mkdtemp(prefix="laserwb-example-")
+    atexit.register(shutil.rmtree, d, ignore_errors=True)
     return d
 
 

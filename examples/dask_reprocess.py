@@ -29,8 +29,12 @@ def inputs(args):
     frames = args.frames or os.path.join(args.work, "shots")
     if not args.frames:
         simulate("footprint", "--count", 64, "--seed", 1, frames)
-    return (sorted(glob.glob(os.path.join(passes, "*.frd")) + glob.glob(os.path.join(passes, "*.frd.gz"))),
-            sorted(glob.glob(os.path.join(frames, "*.png"))))
+    found = (sorted(glob.glob(os.path.join(passes, "*.frd")) + glob.glob(os.path.join(passes, "*.frd.gz"))),
+             sorted(glob.glob(os.path.join(frames, "*.png"))))
+    for what, folder, files in (("CRD files (*.frd, *.frd.gz)", passes, found[0]), ("frames (*.png)", frames, found[1])):
+        if not files:  # (the throughput below divided by zero)
+            raise SystemExit(f"dask_reprocess: {folder} holds no {what}")
+    return found
 
 
 # %%

@@ -14,6 +14,7 @@
 #include <QRegularExpression>
 #include <QtTest>
 
+#include "core/footprint/batch.hpp"
 #include "lwb_version.hpp"
 #include "test_support.hpp"
 
@@ -200,6 +201,52 @@ private slots:
         const QRegularExpressionMatch r = release.match(QString::fromUtf8(readAll(LWB_SOURCE_DIR "/CHANGELOG.md")));
         QVERIFY2(r.hasMatch(), "CHANGELOG.md has no release");
         QCOMPARE(r.captured(1), QString(LWB_VERSION));
+    }
+
+    // Issue 46: the README's list of the footprint report's columns had fallen behind the report
+    // (cov_*_px2 and radius95_px missing): it is the header, in order.
+    void readmeListsTheReportColumns() {
+        const QString readme = QString::fromUtf8(readAll(LWB_SOURCE_DIR "/README.md"));
+        static const QRegularExpression list("holds one row per image \\(per ROI\\): `([^`]*)`");
+        const QRegularExpressionMatch m = list.match(readme);
+        QVERIFY2(m.hasMatch(), "README.md: the report's column list is gone");
+        QString listed = m.captured(1);
+        listed.remove(QRegularExpression("\\s"));
+        QCOMPARE(listed, QString::fromStdString(lwb::core::footprint::footprintCsvHeader()).trimmed());
+    }
+
+    // Issue 46: `help CMD`, `CMD --version` and "did you mean" were missing. help CMD [KIND] is
+    // CMD [KIND] --help, byte for byte; every command answers --version; a mistyped command,
+    // kind, option or --set key names the nearest (and only a near one).
+    void helpVersionAndDidYouMean() {
+        for (const QStringList& c : QList<QStringList>{{"slr"}, {"crd", "check"}, {"footprint"}, {"calib", "detector"},
+                                                       {"simulate", "slr"}, {"radiometry"}}) {
+            const CliRun h = runCli(QStringList{"help"} + c), direct = runCli(c + QStringList{"--help"});
+            QCOMPARE(h.exitCode, 0);
+            QVERIFY2(!h.out.isEmpty() && h.out == direct.out, qPrintable(c.join(' ')));
+            const CliRun v = runCli(c + QStringList{"--version"});
+            QCOMPARE(v.exitCode, 0);
+            QCOMPARE(v.out.trimmed(), QString("laserwb-cli " LWB_VERSION));
+        }
+        const QList<QPair<QStringList, QString>> typos{
+            {{"sl", "x.frd"}, "unknown command \"sl\" (did you mean slr?)"},
+            {{"radiometri", "fit"}, "(did you mean radiometry?)"},
+            {{"simulate", "slrr"}, "unknown kind \"slrr\" (footprint, trend, slr, calib, radiometry) (did you mean slr?)"},
+            {{"calib", "pointng"}, "(did you mean pointing?)"},
+            {{"slr", "x.frd", "--crd-ot", "y.frd"}, "unknown option --crd-ot (did you mean --crd-out?)"},
+            {{"footprint", "--versoin"}, "(did you mean --version?)"},
+            {{"slr", "x.frd", "--set", "screen.cosin_c=0.9"}, "unknown parameter \"screen.cosin_c\" for slr (did you mean screen.cosine_c?)"},
+            {{"footprint", "x.png", "--set", "segment.threshold_factr=1"}, "(did you mean segment.threshold_factor?)"}};
+        for (const auto& [args, said] : typos) {
+            const CliRun r = runCli(args);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(said), qPrintable(args.join(' ') + ": " + r.err));
+        }
+        // nothing near: no guess
+        const CliRun far = runCli({"xyzzy"});
+        QVERIFY(far.err.contains("unknown command \"xyzzy\"") && !far.err.contains("did you mean"));
+        const CliRun farOpt = runCli({"slr", "x.frd", "--bogus"});
+        QVERIFY(farOpt.err.contains("unknown option --bogus") && !farOpt.err.contains("did you mean"));
     }
 
     // A flag a command takes is in its --help (the README used -q everywhere; most --help texts

@@ -168,6 +168,22 @@ private slots:
         QCOMPARE(t.rows.size(), size_t(2));
         QCOMPARE(t.rows[0][t.column("verdict")], std::string("rejected"));
         QVERIFY(t.rows[0][t.column("reasons")].find("all zero") != std::string::npos);
+        // Issue 46: a frame named but missing is unreadable too (it stopped the run before, with or
+        // without --keep-going, and so lost a Dask batch's report): a rejected row, the provenance
+        // listing it as missing. Without --keep-going it stops the run, nothing written.
+        const auto m = runCli({"footprint", "--keep-going", p("shots/shot_000000.png"), p("gone.png"), "-o", p("kg2.csv")});
+        QVERIFY2(m.exitCode == 0, qPrintable(m.err));
+        const auto t2 = readTable(p("kg2.csv"));
+        QCOMPARE(t2.rows.size(), size_t(2));
+        QCOMPARE(t2.rows[1][t2.column("file")], p("gone.png").toStdString());
+        QCOMPARE(t2.rows[1][t2.column("verdict")], std::string("rejected"));
+        QVERIFY(QString::fromUtf8(lwbtest::readAll(p("kg2.csv.provenance.json"))).contains("\"missing\": true"));
+        const auto stop = runCli({"footprint", p("shots/shot_000000.png"), p("gone.png"), "-o", p("kg3.csv")});
+        QCOMPARE(stop.exitCode, 1);
+        QVERIFY2(stop.err.contains("gone.png: no such file or folder"), qPrintable(stop.err));
+        QVERIFY(!QFile::exists(p("kg3.csv")));
+        // a missing folder is not a frame: it stops the run even with --keep-going
+        QCOMPARE(runCli({"footprint", "--keep-going", p("no_such_folder"), "-o", p("kg4.csv")}).exitCode, 1);
     }
 
     void printedConfigReadsBack() {

@@ -68,7 +68,10 @@ private slots:
                                    "share/doc/laserwb/LICENSE",
                                    "share/doc/laserwb/README.md",
                                    "share/doc/laserwb/CITATION.cff",
-                                   "share/doc/laserwb/docs/algorithms.md"};
+                                   "share/doc/laserwb/docs/algorithms.md",
+                                   "share/doc/laserwb/examples/slr.py",  // (issue 46: examples/ was not installed)
+                                   "share/doc/laserwb/examples/_inputs.py",
+                                   "share/mime/packages/laserwb.xml"};
         for (const QString& f : expected) QVERIFY2(QFile::exists(m_prefix + "/" + f), qPrintable(f + " not installed"));
 #ifdef LWB_GUI
         QVERIFY(QFile::exists(m_prefix + "/bin/laserwb"));
@@ -163,6 +166,27 @@ private slots:
         QVERIFY(r.out.contains(".TH LASERWB-CLI-SLR"));
         QVERIFY(r.out.contains("all\\-passes") || r.out.contains("all-passes"));
         QVERIFY(r.out.contains(LWB_VERSION));
+        // Issue 46: EXAMPLES (the README's), FILES, and the whole exit-status table (4 was missing).
+        for (const char* section : {".SH EXAMPLES", ".SH FILES", ".SH \"EXIT STATUS\"", ".SH \"SEE ALSO\""})
+            QVERIFY2(r.out.contains(section), section);
+        QVERIFY(r.out.contains("laserwb\\-cli slr pass.frd") || r.out.contains("laserwb-cli slr pass.frd"));
+        QVERIFY2(r.out.contains(".B 4\n"), "exit status 4 not in the page");
+        // The ILRS types by name and by their H1 record, in a MIME database of their own; the desktop
+        // entry claims those, not every PNG, TIFF and JSON file.
+        if (!QStandardPaths::findExecutable("update-mime-database").isEmpty()) {
+            QDir().mkpath(m_tmp.path() + "/mime/packages");
+            QVERIFY(QFile::copy(m_prefix + "/share/mime/packages/laserwb.xml", m_tmp.path() + "/mime/packages/laserwb.xml"));
+            r = run("update-mime-database", {m_tmp.path() + "/mime"});
+            QVERIFY2(r.exitCode == 0 && !r.err.contains("rror"), qPrintable(r.out + r.err));
+            const QString globs = QString::fromUtf8(readAll(m_tmp.path() + "/mime/globs2"));
+            for (const char* g : {"application/x-ilrs-crd:*.frd", "application/x-ilrs-crd:*.npt", "application/x-ilrs-cpf:*.cpf",
+                                  "application/x-laserwb-session:*.lwb.json"})
+                QVERIFY2(globs.contains(g), g);
+            QVERIFY(readAll(m_tmp.path() + "/mime/magic").contains("H1 CRD"));
+        }
+        const QString entry = QString::fromUtf8(readAll(m_prefix + "/share/applications/io.github.laserwb.LaserWorkbench.desktop"));
+        QVERIFY(entry.contains("application/x-ilrs-crd;") && entry.contains("application/x-ilrs-cpf;"));
+        QVERIFY(!entry.contains("image/png") && !entry.contains("application/json;"));
         if (!QStandardPaths::findExecutable("desktop-file-validate").isEmpty()) {
             r = run("desktop-file-validate", {m_prefix + "/share/applications/io.github.laserwb.LaserWorkbench.desktop"});
             QVERIFY2(r.exitCode == 0 && r.out.trimmed().isEmpty(), qPrintable(r.out + r.err));
@@ -182,6 +206,19 @@ private slots:
                          "COMP_WORDS=(laserwb-cli slr --all); COMP_CWORD=2; _laserwb_cli; echo \"${COMPREPLY[*]}\""},
                 {"PATH=" + m_prefix + "/bin:" + qEnvironmentVariable("PATH")});
         QVERIFY2(r.exitCode == 0 && r.out.contains("--all-passes"), qPrintable(r.out + r.err));
+        // Issue 46: an option's values from its --help line (--connectivity and footprint --preset
+        // completed file names); an option that takes a file still completes file names.
+        const QList<QPair<QString, QString>> choices{{"slr x.frd --connectivity ''", "4 8"},
+                                                      {"footprint --preset ''", "wu2021 yao2021"},
+                                                      {"footprint --method t", "tefm"},
+                                                      {"simulate slr --kind d", "diffuse daylight"}};
+        for (const auto& [words, want] : choices) {
+            r = run("bash", {"-c", "source '" + m_prefix + "/share/bash-completion/completions/laserwb-cli'; "
+                             "COMP_WORDS=(laserwb-cli " + words + "); COMP_CWORD=$((${#COMP_WORDS[@]} - 1)); _laserwb_cli; "
+                             "echo \"${COMPREPLY[*]}\""},
+                    {"PATH=" + m_prefix + "/bin:" + qEnvironmentVariable("PATH")});
+            QVERIFY2(r.exitCode == 0 && r.out.trimmed() == want, qPrintable(words + ": " + r.out + r.err));
+        }
     }
 
 #ifdef LWB_GUI
@@ -222,10 +259,22 @@ private slots:
 #ifdef LWB_PYTHON
         QVERIFY2(c.out.contains("./usr/" LWB_PYTHON_INSTALL_DIR "/laserwb/__init__.py"), qPrintable(c.out));
 #endif
-        const Run info = run("dpkg-deb", {"-f", deb, "Version", "Depends", "Section"});
+        const Run info = run("dpkg-deb", {"-f", deb, "Version", "Depends", "Section", "Suggests"});
         QVERIFY2(info.out.contains("Version: " LWB_VERSION), qPrintable(info.out));
         QVERIFY2(info.out.contains("libqt6") && info.out.contains("libopencv") && info.out.contains("libgdal"),
                  qPrintable(info.out));
+        QVERIFY2(c.out.contains("./usr/share/mime/packages/laserwb.xml"), qPrintable(c.out));
+#ifdef LWB_PYTHON
+        // Issue 46: `import laserwb` failed after `apt install` (Depends came from the libraries alone):
+        // the module's Python minor version, its numpy, and Dask as a suggestion.
+        const Run ver = run(LWB_PYTHON, {"-c", "import sys; print('%d.%d %d.%d' % (sys.version_info[0], sys.version_info[1], "
+                                                "sys.version_info[0], sys.version_info[1] + 1))"});
+        const QStringList mm = ver.out.trimmed().split(' ');
+        QCOMPARE(mm.size(), 2);
+        for (const QString& want : {"python3 (>= " + mm[0] + ")", "python3 (<< " + mm[1] + ")", QString("python3-numpy"),
+                                    QString("Suggests: python3-distributed")})
+            QVERIFY2(info.out.contains(want), qPrintable(want + " not in:\n" + info.out));
+#endif
         qInfo("%s", qPrintable(c.out));
     }
 };

@@ -118,6 +118,15 @@ private slots:
         QVERIFY(std::fabs(refl.at<float>(100, 100) - (K * 20000 + B)) < 1e-5);
         QVERIFY(num(path("table.csv"), 0, "relative_error_pct") < 1e-4);
         QCOMPARE(cv::imread(path("unc.tif").toStdString(), cv::IMREAD_UNCHANGED).type(), CV_32FC1);
+        // Issue 46: pixels outside the linear range are a warning, which -q silences (exit 0: sound);
+        // without -q it is said.
+        cv::Mat dark = dn.clone();
+        dark(cv::Rect(0, 150, 200, 50)).setTo(50);  // below --dn-min 100
+        QVERIFY(cv::imwrite(path("dark.tif").toStdString(), dark));
+        r = runCli({"radiometry", "apply", path("dark.tif"), "--k", "0.001", "--b", "0", "-o", path("dark_refl.tif")});
+        QVERIFY2(r.exitCode == 0 && r.err.contains("warning: 10000 pixels below"), qPrintable(r.err));
+        r = runCli({"radiometry", "apply", path("dark.tif"), "--k", "0.001", "--b", "0", "-o", path("dark_refl2.tif"), "-q"});
+        QVERIFY2(r.exitCode == 0 && r.err.isEmpty() && r.out.isEmpty(), qPrintable(r.out + r.err));
         // PNG cannot hold float: exit 1, nothing written.
         r = runCli({"radiometry", "apply", path("dn.tif"), "--k", "0.001", "--b", "0", "-o", path("refl.png")});
         QCOMPARE(r.exitCode, 1);

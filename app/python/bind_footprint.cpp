@@ -192,11 +192,14 @@ Report fitBatch(const py::object& inputs, const py::object& params, const py::ob
         rep.result = fp::runFootprintFrames(frames, frameNames, bp);
     } else {
         std::vector<std::string> given;
+        // (keep_going: a file that cannot be read is a rejected row, as --keep-going writes it)
+        auto path = [&](const py::object& o) { return keepGoing ? fsPath(o) : inputPath(o, true); };
         if (py::isinstance<py::str>(inputs) || py::hasattr(inputs, "__fspath__"))
-            given.push_back(inputPath(inputs, true));
+            given.push_back(path(inputs));
         else
-            for (const auto& o : inputs.cast<py::sequence>()) given.push_back(inputPath(py::reinterpret_borrow<py::object>(o), true));
+            for (const auto& o : inputs.cast<py::sequence>()) given.push_back(path(py::reinterpret_borrow<py::object>(o)));
         src.inputs = given;
+        src.keepGoing = keepGoing;
         bool ok;
         {
             py::gil_scoped_release nogil;  // (the set-up reads shot lists)

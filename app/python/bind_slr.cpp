@@ -63,6 +63,12 @@ struct PassRun {
     throw Error(e.message);
 }
 
+// The MJD of a CRD pass's day (its epochs are seconds of that day), None for an O-C table.
+py::object startMjd(const slr::PassData& d) {
+    if (!d.hasCrd || !d.crd || d.passIndex < 0 || static_cast<size_t>(d.passIndex) >= d.crd->passes.size()) return py::none();
+    return py::int_(d.crd->passes[static_cast<size_t>(d.passIndex)].startMjd());
+}
+
 py::dict summaryDict(const slr::PassSummary& s) {
     return py::dict("pass_number"_a = s.index + 1, "satellite"_a = s.satellite, "ilrs_id"_a = s.ilrsId, "station"_a = s.station,
                     "start"_a = s.start, "end"_a = s.end, "ranges"_a = s.ranges, "normal_points"_a = s.normalPoints,
@@ -284,6 +290,8 @@ void bindPass(py::module_& m) {
                                "observed two-way time of flight (s); empty for an O-C table")
         .def_property_readonly("station_flag", [](py::object self) { return viewOf(self.cast<const Pass&>().data->stationFlag, self); })
         .def_property_readonly("source", [](const Pass& p) { return p.data->source; })
+        .def_property_readonly("start_mjd", [](const Pass& p) { return startMjd(*p.data); },
+                               "MJD of the day the epochs count from (a CRD pass's H4 start day); None for an O-C table")
         .def_property_readonly("pass_number", [](const Pass& p) { return p.data->passIndex + 1; })
         .def_property_readonly("satellite", [](const Pass& p) { return p.data->satellite; })
         .def_property_readonly("ilrs_id", [](const Pass& p) { return p.data->ilrsId; })
@@ -320,6 +328,11 @@ void bindPassResult(py::module_& m) {
     py::class_<PassRun>(m, "PassResult",
                         "A screened pass (PassTask): classes, post-fit, normal points, and its writers (the CLI's).")
         .def_property_readonly("params", [](const PassRun& r) { return r.settings.params; }, "the parameters the pass ran with")
+        .def_property_readonly("t", [](py::object self) { return viewOf(self.cast<const PassRun&>().pass->t, self); },
+                               "the pass's epochs (s), as Pass.t")
+        .def_property_readonly("oc", [](py::object self) { return viewOf(self.cast<const PassRun&>().pass->oc, self); },
+                               "the pass's O-C (s, two-way), as Pass.oc")
+        .def_property_readonly("start_mjd", [](const PassRun& r) { return startMjd(*r.pass); }, "as Pass.start_mjd")
         .def_property_readonly("preset", [](const PassRun& r) { return r.settings.presetName; })
         .def_property_readonly("notes", [](const PassRun& r) { return r.settings.notes; }, "the normal-point context")
         .def_property_readonly("doubt", [](const PassRun& r) { return r.r.doubt; }, "why the result cannot be trusted ('' when it can)")

@@ -1,5 +1,7 @@
 #include "core/common/provenance.hpp"
 
+#include <cerrno>
+
 #include <set>
 #include <sys/stat.h>
 
@@ -21,7 +23,13 @@ bool provenanceText(const Provenance& p, const std::vector<std::string>& outputs
         Json e = Json::object();
         e["path"] = name;
         struct stat st {};
-        if (isStandardStream(file) || (::stat(file.c_str(), &st) == 0 && S_ISDIR(st.st_mode))) {
+        const bool exists = isStandardStream(file) || ::stat(file.c_str(), &st) == 0;
+        if (!exists && errno == ENOENT) {  // (a frame named but missing, reported as a rejected row: --keep-going)
+            e["sha256"] = nullptr;
+            e["missing"] = true;
+            return e;
+        }
+        if (isStandardStream(file) || (exists && S_ISDIR(st.st_mode))) {
             e["sha256"] = nullptr;  // (standard input, read once; a folder, such as a CPF folder)
             return e;
         }

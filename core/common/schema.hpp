@@ -264,7 +264,11 @@ public:
     bool setFromText(P* p, const std::string& key, const std::string& value, std::string* error) const {
         const Field* f = find(key);
         if (!f) {
-            *error = "unknown parameter \"" + printableExcerpt(key) + "\" for " + m_name + " (--print-config lists them)";
+            std::vector<std::string> keys;
+            for (const Field& g : m_fields) keys.push_back(g.key);
+            const std::string near = didYouMean(key, keys);
+            *error = "unknown parameter \"" + printableExcerpt(key) + "\" for " + m_name +
+                     (near.empty() ? " (--print-config lists them)" : near);
             return false;
         }
         P q = *p;

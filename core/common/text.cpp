@@ -194,4 +194,34 @@ std::string formatFixed(double v, int decimals) {
     return buf;
 }
 
+namespace {
+size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const size_t up = row[j];
+            const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (same ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+}  // namespace
+
+std::string didYouMean(std::string_view given, const std::vector<std::string>& known) {
+    const std::string* best = nullptr;
+    size_t bestD = 0;
+    for (const std::string& k : known) {
+        size_t d = editDistance(given, k);
+        if (given.size() >= 3 && k.find(given) != std::string::npos) d = std::min(d, size_t{1});
+        if (!best || d < bestD) best = &k, bestD = d;
+    }
+    if (!best || bestD == 0 || bestD > std::max<size_t>(2, given.size() / 3)) return "";
+    return " (did you mean " + *best + "?)";
+}
+
 }  // namespace lwb::core

@@ -126,7 +126,8 @@ bool gatherShots(const FootprintSources& src, FootprintSetup* out, FootprintErro
         return false;
     }
     std::string err;
-    if (!(src.setAsideOthers ? gatherSettingAside(src.inputs, &s, &err) : expandShots(src.inputs, &s.shots, &err))) {
+    if (!(src.setAsideOthers ? gatherSettingAside(src.inputs, &s, &err)
+                             : expandShots(src.inputs, &s.shots, &err, src.keepGoing))) {
         *error = {err, false};
         return false;
     }

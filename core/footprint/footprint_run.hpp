@@ -23,6 +23,9 @@ struct FootprintSources {
     /// read; so are a folder's files that are not frames. Otherwise (the CLI, Python) a named
     /// file is read as a frame and a .csv is always a shot list.
     bool setAsideOthers = false;
+    /// --keep-going: a frame named but missing is kept as a shot, and reported as a rejected row
+    /// like any frame that cannot be read (a folder or shot list that is missing still stops the run).
+    bool keepGoing = false;
     // ---- the parameters, applied in this order over the defaults ----
     std::string configFile;            ///< a JSON config (the footprint block of a session); "" none
     Json config;                       ///< parameters given as JSON (Python's FootprintParams, the

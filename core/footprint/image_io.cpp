@@ -140,7 +140,7 @@ ImageReadResult readFrame(const std::string& path, const ImageReadParams& params
 }
 
 bool expandInputs(const std::vector<std::string>& inputs, std::vector<std::string>* files,
-                  std::string* error) {
+                  std::string* error, bool keepMissing) {
     for (const auto& in : inputs) {
         if (isStandardStream(in)) {  // one frame on standard input
             if (std::count(files->begin(), files->end(), in)) {
@@ -152,6 +152,10 @@ bool expandInputs(const std::vector<std::string>& inputs, std::vector<std::strin
         }
         struct stat st {};
         if (::stat(in.c_str(), &st) != 0) {
+            if (keepMissing && isFrameFile(in)) {
+                files->push_back(in);
+                continue;
+            }
             *error = in + ": no such file or folder";
             return false;
         }

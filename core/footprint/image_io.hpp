@@ -33,9 +33,11 @@ bool isFrameFile(const std::string& path);
 
 /// Expands files and folders (non-recursive for folders, sorted by name) into frame files.
 /// Folders contribute only frame files; a named file is kept whatever its ending.
-/// Missing paths are reported in *error (first one) and make the call return false.
+/// Missing paths are reported in *error (first one) and make the call return false, except,
+/// with `keepMissing`, a missing path named as a frame (isFrameFile): it is kept, for its reading
+/// to fail and the run to report it (--keep-going: a rejected row).
 bool expandInputs(const std::vector<std::string>& inputs, std::vector<std::string>* files,
-                  std::string* error);
+                  std::string* error, bool keepMissing = false);
 
 /// Writes a CV_16UC1 image as 16-bit PNG/TIFF/PGM (by ending) or raw little-endian (.raw),
 /// atomically. False with *error on failure.

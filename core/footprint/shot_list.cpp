@@ -102,7 +102,7 @@ ShotListResult readShotList(const std::string& path) {
     return res;
 }
 
-bool expandShots(const std::vector<std::string>& inputs, std::vector<ShotSpec>* out, std::string* error) {
+bool expandShots(const std::vector<std::string>& inputs, std::vector<ShotSpec>* out, std::string* error, bool keepMissing) {
     for (const std::string& in : inputs) {
         if (isShotListFile(in)) {
             ShotListResult l = readShotList(in);
@@ -114,7 +114,7 @@ bool expandShots(const std::vector<std::string>& inputs, std::vector<ShotSpec>* 
             continue;
         }
         std::vector<std::string> files;
-        if (!expandInputs({in}, &files, error)) return false;
+        if (!expandInputs({in}, &files, error, keepMissing)) return false;
         for (auto& f : files) {
             ShotSpec s;
             s.file = std::move(f);

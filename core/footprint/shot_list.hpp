@@ -40,7 +40,8 @@ ShotListResult readShotList(const std::string& path);
 
 /// Expands frames, folders (their frames, sorted by name) and shot lists into shots, in the
 /// order given. False with *error (the first problem) when a path is missing or a list is bad.
-bool expandShots(const std::vector<std::string>& inputs, std::vector<ShotSpec>* out, std::string* error);
+bool expandShots(const std::vector<std::string>& inputs, std::vector<ShotSpec>* out, std::string* error,
+                 bool keepMissing = false);
 
 /// Frame metadata: a table in the shot-list format (file, time, beam, camera, center_x,
 /// center_y) that annotates shots chosen otherwise (folders, --files-from, shards). A shot takes

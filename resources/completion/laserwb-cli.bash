@@ -33,10 +33,19 @@ _laserwb_cli() {
             compopt -o nospace 2>/dev/null
             COMPREPLY=($(compgen -W "$keys" -- "$cur"))
             return ;;
-        --method) COMPREPLY=($(compgen -W "gauss tefm gcm" -- "$cur")); return ;;
-        --kind) COMPREPLY=($(compgen -W "khz conventional diffuse leo daylight" -- "$cur")); return ;;
         --out-dir) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     esac
+    # An option whose --help line gives its values ("--connectivity 4|8", "--preset wu2021|yao2021",
+    # "[--kind khz|conventional|...]"): those values, not file names.
+    if [[ $prev == --* ]]; then
+        local choices
+        choices=$("$prog" $cmd $sub --help 2>/dev/null |
+                  grep -o -- "${prev} [A-Za-z0-9_.+-]*\(|[A-Za-z0-9_.+-]*\)\+" | head -1 | cut -d' ' -f2)
+        if [[ -n $choices ]]; then
+            COMPREPLY=($(compgen -W "${choices//|/ }" -- "$cur"))
+            return
+        fi
+    fi
     if [[ $cur == -* ]]; then
         local opts
         opts=$("$prog" $cmd $sub --help 2>/dev/null | grep -o -- '--[a-z][a-z0-9-]*' | sort -u)

@@ -440,6 +440,45 @@ def test_parameters_are_python_objects():
         assert cls.from_json(q.to_json()) == q and q.get(k) == q[k]
 
 
+def test_results_as_dataframes_with_utc_epochs(data, tmp_path):
+    """Issue 46: no to_pandas() anywhere, epochs only as seconds of day."""
+    pd = pytest.importorskip("pandas")  # (make test installs python3-pandas: .ci/install-deps)
+    frd = str(data / "passes" / "pass3.frd")
+    p = laserwb.slr.load_pass(frd)
+    h4 = next(l.split() for l in open(frd) if l[:2].lower() == "h4")
+    day = pd.Timestamp(year=int(h4[2]), month=int(h4[3]), day=int(h4[4]), tz="UTC")
+    df = p.to_pandas()
+    assert list(df.columns) == ["epoch", "t_s", "oc_s", "tof_s", "station_flag"] and len(df) == len(p)
+    assert str(df["epoch"].dtype) == "datetime64[ns, UTC]"
+    # the epoch is the H4 day plus the seconds, to the nanosecond
+    assert abs((df["epoch"][0] - day).total_seconds() - p.t[0]) < 1e-9 + 1e-9 * abs(p.t[0])
+    assert np.array_equal(p.epochs.astype("datetime64[ns]"), df["epoch"].dt.tz_localize(None).to_numpy())
+    r = laserwb.slr.run(p)
+    pts = r.to_pandas()
+    assert len(pts) == len(p) and pts["accepted"].dtype == bool and int(pts["accepted"].sum()) == r.accepted_count
+    assert set(pts["class"]) <= {"signal", "recovered", "band", "noise"}
+    nps = r.to_pandas("normal_points")
+    assert len(nps) == len(r.normal_points["epoch_s"]) > 0
+    assert nps["epoch"].min() >= df["epoch"].min() and nps["epoch"].max() <= df["epoch"].max()
+    with pytest.raises(ValueError, match="table must be"):
+        r.to_pandas("nps")
+    # an O-C table names no day: NaT
+    oc = laserwb.slr.load_pass(str(data / "pass.csv"))
+    assert oc.start_mjd is None and oc.to_pandas()["epoch"].isna().all()
+    # the other results: their tables
+    rep = laserwb.footprint.fit_batch(str(data / "shots"))
+    f = rep.to_pandas()
+    assert f.shape == (len(rep), len(rep.columns())) and np.array_equal(f["x"].to_numpy(), rep.columns()["x"], equal_nan=True)
+    t = laserwb.trend.compute(str(data / "centroids.csv"))
+    assert len(t.to_pandas()) == len(t) > 0
+    d = laserwb.calib.detector(str(data / "calib" / "detectors.csv"))
+    assert d.to_pandas()["e_m"][0] == d.centre["e_m"]
+    s = laserwb.calib.stats(str(data / "calib" / "diffs.csv"), group="beam")
+    assert sorted(s.to_pandas()["group"]) == sorted(s.groups())
+    x = laserwb.calib.pointing(str(data / "calib" / "control_points.csv"), str(data / "calib" / "beams.json"))
+    assert len(x.to_pandas()) == len(x.beams) > 0
+
+
 def test_arguments_are_typed_errors_naming_them():
     """Issue 41: pybind11's "Unable to cast Python instance" for k='x' and for a size or centres
     of the wrong kind; a TypeError or ValueError naming the argument now."""
@@ -693,21 +732,23 @@ def test_radiometry_fit_is_the_cli_fit(tmp_path):
     assert abs(1 / fit.fit["k"] - 400) < 5
 
 
-def test_import_with_the_python3_on_path():
-    """`python3 -c "import laserwb"` as the README writes it: the python3 first on PATH may be
-    another build of this version (pyenv here) that does not see Debian's numpy; the package
-    then takes numpy from Debian's dist-packages. Skipped when PATH's python3 is another version
-    (it cannot load this build's extension at all)."""
-    import shutil
+def test_import_changes_no_search_path():
+    """Issue 46: importing laserwb appended Debian's dist-packages to sys.path when numpy was
+    missing (an isolated venv then imported dask and photutils from there). Now sys.path is left
+    as it was, and an interpreter without numpy is told what to do. Run under Python with -I and
+    -S (no site-packages: numpy is out of reach, as in an isolated venv) and normally."""
     import sys
 
-    exe = shutil.which("python3")
-    if not exe:
-        pytest.skip("no python3 on PATH")
-    ver = subprocess.run([exe, "-c", "import sys; print(sys.version_info[:2])"], capture_output=True, text=True)
-    if ver.stdout.strip() != str(sys.version_info[:2]):
-        pytest.skip(f"{exe} is Python {ver.stdout.strip()}, this build's is {sys.version_info[:2]}")
-    code = "import laserwb, numpy; r = laserwb.footprint.fit(numpy.zeros((32, 32), numpy.float32)); print(r['verdict'])"
-    p = subprocess.run([exe, "-c", code], capture_output=True, text=True, env=dict(os.environ))
+    build = os.environ["PYTHONPATH"].split(os.pathsep)[0]
+    code = ("import sys; sys.path.insert(0, %r); before = list(sys.path)\n"
+            "try:\n    import laserwb\nexcept ImportError as e:\n    print('ImportError:', e)\n"
+            "print(sys.path == before)") % build
+    p = subprocess.run([sys.executable, "-I", "-S", "-c", code], capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
-    assert p.stdout.strip() == "rejected"  # a flat ROI has no spot
+    assert "ImportError: laserwb needs numpy" in p.stdout and "--system-site-packages" in p.stdout, p.stdout
+    assert p.stdout.strip().endswith("True"), p.stdout
+    code = ("import sys; before = list(sys.path); import laserwb, numpy\n"
+            "r = laserwb.footprint.fit(numpy.zeros((32, 32), numpy.float32)); print(r['verdict'], sys.path == before)")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=dict(os.environ))
+    assert p.returncode == 0, p.stderr
+    assert p.stdout.split() == ["rejected", "True"]  # a flat ROI has no spot

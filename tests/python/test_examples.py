@@ -32,3 +32,25 @@ def test_example_runs(name, tmp_path):
         assert os.path.getsize(tmp_path / out) > 0, out
     # the examples use `# %%` cells (a notebook in VS Code, Spyder, Jupytext)
     assert "# %%" in open(os.path.join(EXAMPLES, name)).read()
+
+
+def test_examples_in_a_notebook_kernel_leave_nothing_behind(tmp_path):
+    """Issue 46: under Jupyter every example broke on its first cell (workdir() took the kernel's
+    "-f CONNECTION_FILE" as its folder) and left /tmp/laserwb-example-* behind. Run as a kernel
+    runs it: a temporary folder, removed at exit."""
+    env = dict(os.environ, TMPDIR=str(tmp_path), PYTHONPATH=os.pathsep.join([EXAMPLES, os.environ.get("PYTHONPATH", "")]))
+    for name in ("slr.py", "trend.py"):
+        p = subprocess.run([sys.executable, os.path.join(EXAMPLES, name), "-f", str(tmp_path / "kernel-1.json")],
+                           capture_output=True, text=True, env=env, timeout=240)
+        assert p.returncode == 0, p.stdout + p.stderr
+        assert not (tmp_path / "-f").exists()
+        assert [f for f in os.listdir(tmp_path) if f.startswith("laserwb-example-")] == [], os.listdir(tmp_path)
+
+
+def test_dask_example_refuses_an_empty_folder(tmp_path):
+    (tmp_path / "empty").mkdir()
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([EXAMPLES, os.environ.get("PYTHONPATH", "")]))
+    p = subprocess.run([sys.executable, os.path.join(EXAMPLES, "dask_reprocess.py"), str(tmp_path / "w"), "--passes",
+                        str(tmp_path / "empty"), "--frames", str(tmp_path / "empty")],
+                       capture_output=True, text=True, env=env, timeout=120)
+    assert p.returncode != 0 and "holds no CRD files" in p.stderr and "ZeroDivisionError" not in p.stderr, p.stderr

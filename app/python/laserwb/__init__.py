@@ -33,22 +33,16 @@ try:
 except ImportError:
     pass
 
-# numpy: the module is built against the system's (Debian's python3-numpy). An interpreter of
-# the same version that does not see it (a pyenv or venv python3 first on PATH, as on this
-# project's machines) is given Debian's dist-packages as a last resort, so that
-# `python3 -c "import laserwb"` works there too; the C ABI of one minor version is shared.
+# numpy: the module is built against the system's (Debian's python3-numpy). An interpreter that
+# cannot import it (a pyenv python3, an isolated venv) is told so; the package does not change
+# sys.path (it once appended Debian's dist-packages, and a venv then imported dask from there).
 try:
     import numpy as _np
-except ImportError:
-    import importlib.machinery as _machinery
-
-    _debian = "/usr/lib/python3/dist-packages"
-    _here = _os.path.dirname(__file__)
-    # only an interpreter that can load this build's extension (same version and ABI tag)
-    _loadable = any(_os.path.exists(_os.path.join(_here, "_laserwb" + sfx)) for sfx in _machinery.EXTENSION_SUFFIXES)
-    if _loadable and _os.path.isdir(_os.path.join(_debian, "numpy")) and _debian not in _sys.path:
-        _sys.path.append(_debian)
-    import numpy as _np  # noqa: F811 (an ImportError here says what is missing)
+except ImportError as _e:
+    raise ImportError(
+        f"laserwb needs numpy, which {_sys.executable} cannot import ({_e}): run Debian's "
+        "/usr/bin/python3 (python3-numpy), make the venv with --system-site-packages, or install "
+        "numpy in it") from _e
 
 from ._laserwb import Error, ParameterError, __version__, write_text  # noqa: E402
 from ._laserwb import calib, footprint, radiometry, slr, trend  # noqa: E402
@@ -228,6 +222,91 @@ def _process(path, csv=None, crd=None, npt=None, pass_number=None, cpf=None, sta
 
 
 slr.process = _process
+
+
+# ---- epochs as datetimes, and every result as a pandas DataFrame ------------------------------
+
+def _pandas():
+    try:
+        import pandas
+    except ImportError as e:
+        raise ImportError(f"to_pandas() needs pandas, which {_sys.executable} cannot import ({e}): "
+                          "Debian's python3-pandas") from e
+    return pandas
+
+
+def _datetimes(mjd, seconds):
+    """Seconds of the day `mjd` as numpy datetime64[ns] (UTC); NaT where the day is unknown."""
+    seconds = _np.asarray(seconds, dtype=float)
+    if mjd is None:
+        return _np.full(seconds.shape, _np.datetime64("NaT"), "datetime64[ns]")
+    day = _np.datetime64("1858-11-17T00:00:00", "ns") + _np.timedelta64(int(mjd), "D")
+    return day + _np.round(seconds * 1e9).astype("timedelta64[ns]")
+
+
+def _frame(table):
+    """A DataFrame of {column: array} (one row per element), of {group: {column: value}} (one row
+    per group), of a dict of scalars (one row), or of a list of dicts (one row each)."""
+    pd = _pandas()
+    if isinstance(table, dict):
+        if table and all(isinstance(v, dict) for v in table.values()):  # {group: {column: value}}
+            return pd.DataFrame([{"group": k, **v} for k, v in table.items()])
+        if table and all(_np.ndim(v) == 1 for v in table.values()):
+            return pd.DataFrame({k: _np.asarray(v) for k, v in table.items()})
+        return pd.DataFrame([table])
+    return pd.DataFrame(list(table))
+
+
+def _utc(frame, column):
+    frame[column] = frame[column].dt.tz_localize("UTC")
+    return frame
+
+
+def _pass_epochs(self):
+    """The pass's epochs as numpy datetime64[ns] (UTC; NaT for an O-C table, whose day is not known)."""
+    return _datetimes(self.start_mjd, self.t)
+
+
+def _pass_frame(self):
+    """The pass as a DataFrame: epoch (UTC), t_s, oc_s, and tof_s and station_flag where the file has them."""
+    cols = {"epoch": self.epochs, "t_s": self.t, "oc_s": self.oc}
+    if len(self.tof):
+        cols["tof_s"] = self.tof
+    if len(self.station_flag):
+        cols["station_flag"] = self.station_flag
+    return _utc(_frame(cols), "epoch")
+
+
+def _result_frame(self, table="points"):
+    """A DataFrame of the result: table="points" (one row per point: epoch, t_s, oc_s, class,
+    accepted, kept, residual_s) or "normal_points" (the normal points delivered, with their epoch)."""
+    if table == "points":
+        cols = {"epoch": _datetimes(self.start_mjd, self.t), "t_s": self.t, "oc_s": self.oc, "class": self.classes,
+                "accepted": self.accepted}
+        if len(self.kept):
+            cols["kept"] = self.kept
+        if len(self.residuals):
+            cols["residual_s"] = self.residuals
+        return _utc(_frame(cols), "epoch")
+    if table == "normal_points":
+        nps = dict(self.normal_points)
+        frame = _frame({"epoch": _datetimes(self.start_mjd, nps["epoch_s"]), **nps})
+        return _utc(frame, "epoch")
+    raise ValueError(f"table must be 'points' or 'normal_points', not {table!r}")
+
+
+slr.Pass.epochs = property(_pass_epochs)
+slr.Pass.to_pandas = _pass_frame
+slr.PassResult.to_pandas = _result_frame
+for _cls, _table in ((footprint.Report, lambda r: r.columns()), (trend.Trend, lambda r: r.columns()),
+                     (calib.DetectorFit, lambda r: r.centre), (calib.PointingFit, lambda r: r.beams),
+                     (calib.Stats, lambda r: r.groups()), (calib.WaveformFit, lambda r: r.waveform),
+                     (radiometry.ReflectanceFit, lambda r: r.fit), (radiometry.Check, lambda r: r.table)):
+    def _to_pandas(self, _table=_table):
+        """The result's table as a pandas DataFrame (the columns of its CSV)."""
+        return _frame(_table(self))
+
+    _cls.to_pandas = _to_pandas
 
 __all__ = ["Error", "ParameterError", "__version__", "write_text", "footprint", "slr", "trend", "calib",
            "radiometry"]
