@@ -9,6 +9,7 @@
 #include "bind.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/output_set.hpp"
+#include "core/common/provenance.hpp"
 #include "core/slr/cpf.hpp"
 #include "core/slr/crd.hpp"
 #include "core/slr/pass_input.hpp"
@@ -204,8 +205,17 @@ void writeProducts(const PassRun& run, const std::string& csv, const std::string
     core::OutputSet outs;
     outs.addInput(pass.source);
     outs.addInput(stationNp);
+    // Each file's provenance beside it (F.provenance.json), as laserwb-cli slr writes it: the
+    // run's set-up and the pass's own parameters.
+    std::vector<std::string> products;
     for (const std::string* p : {&csv, &crd, &npt, &report})
-        if (!p->empty()) outs.addOutput(*p);
+        if (!p->empty()) {
+            outs.addOutput(*p);
+            if (!core::isStandardStream(*p)) {
+                products.push_back(*p);
+                outs.addOutput(core::provenancePathFor(*p));
+            }
+        }
     if (!outs.check()) throw Error(outs.error());
     // The report as the CLI's --report-out makes it: the run's set-up, with the station's
     // normal points read by the core (--station-np).
@@ -217,6 +227,10 @@ void writeProducts(const PassRun& run, const std::string& csv, const std::string
     if (const std::string why = slr::productsProblem(pass, run.settings, paths); !why.empty()) throw ParameterError(why);
     std::string err;
     if (!slr::stagePassProducts(outs, pass, run.r, paths, nullptr, &err)) throw Error(err);
+    core::Provenance prov = slr::slrProvenance(*run.setup, false);
+    prov.parameters = slr::slrSchema().toJson(run.settings.params);
+    for (const std::string& p : products)
+        if (!core::stageProvenance(outs, prov, products, core::provenancePathFor(p), &err)) throw Error(err);
     check(outs.commit(), outs.error());
 }
 

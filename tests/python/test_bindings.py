@@ -186,6 +186,13 @@ def test_slr_products_are_the_cli_products(data, tmp_path):
     r = laserwb.slr.process(frd, csv=str(tmp_path / "py.csv"), crd=str(tmp_path / "py.frd"), npt=str(tmp_path / "py.npt"))
     for ext in ("csv", "frd", "npt"):
         same_bytes(tmp_path / f"cli.{ext}", tmp_path / f"py.{ext}")
+        # Issue 46: files written from Python had no provenance; now the CLI's sidecar, the same
+        # but for the outputs' own names
+        cli_prov = json.load(open(tmp_path / f"cli.{ext}.provenance.json"))
+        py_prov = json.load(open(tmp_path / f"py.{ext}.provenance.json"))
+        for k in ("command", "parameters", "settings", "inputs", "software", "version"):
+            assert py_prov.get(k) == cli_prov.get(k), k
+        assert [o["sha256"] for o in py_prov["outputs"]] == [o["sha256"] for o in cli_prov["outputs"]]
     # the simulated pass's truth is its station flags (2 signal): the screening finds most of it
     p = laserwb.slr.load_pass(frd)
     signal = p.station_flag == 2
