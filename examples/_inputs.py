@@ -17,8 +17,19 @@ def workdir():
         os.makedirs(given, exist_ok=True)
         return given
     d = tempfile.mkdtemp(prefix="laserwb-example-")
+    _made.append(d)
     atexit.register(shutil.rmtree, d, ignore_errors=True)
     return d
+
+
+_made = []
+
+
+def finish():
+    """Removes the temporary folders workdir() made, now (a notebook kernel that is stopped
+    rather than left to exit never reaches the interpreter's exit handlers)."""
+    while _made:
+        shutil.rmtree(_made.pop(), ignore_errors=True)
 
 
 def simulate(*args):

@@ -13,10 +13,11 @@
 import argparse
 import glob
 import os
+import sys
 import time
 
 import laserwb.distributed as lwd
-from _inputs import simulate
+from _inputs import finish, simulate, workdir
 
 
 def inputs(args):
@@ -48,17 +49,21 @@ def main():
     ap.add_argument("--passes", help="folder of CRD files (default: 6 simulated passes)")
     ap.add_argument("--frames", help="folder of frames (default: 64 simulated 32x32 shots)")
     ap.add_argument("--batch", type=int, default=16)
-    args = ap.parse_args()
+    # (in a notebook the kernel's own arguments are not ours: a temporary folder, the defaults)
+    args = ap.parse_args([workdir()] if "ipykernel" in sys.modules else None)
     args.work = os.path.abspath(args.work)
     os.makedirs(args.work, exist_ok=True)
     passes, shots = inputs(args)
 
     # The cluster: here, or the scheduler of a cluster of several nodes
+    cluster = None
     if args.scheduler:
         client = Client(args.scheduler)
     else:
+        # (the workers' scratch space in the work folder: nothing left in the system's)
         cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True, host="127.0.0.1",
-                               dashboard_address=None, silence_logs=40)
+                               dashboard_address=None, silence_logs=40,
+                               local_directory=os.path.join(args.work, "dask-worker-space"))
         client = Client(cluster)
     print(client)
 
@@ -79,6 +84,9 @@ def main():
     print(f"{len(shots)} frames in {wall:.2f} s: {len(shots) / wall:.1f} frames/s; "
           f"per worker busy {len(shots) / busy:.1f} frames/s")
     client.close()
+    if cluster is not None:
+        cluster.close()
+    finish()
 
 
 if __name__ == "__main__":

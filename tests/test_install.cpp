@@ -71,6 +71,7 @@ private slots:
                                    "share/doc/laserwb/docs/algorithms.md",
                                    "share/doc/laserwb/examples/slr.py",  // (issue 46: examples/ was not installed)
                                    "share/doc/laserwb/examples/_inputs.py",
+                                   "share/doc/laserwb/examples/slr.ipynb",
                                    "share/mime/packages/laserwb.xml"};
         for (const QString& f : expected) QVERIFY2(QFile::exists(m_prefix + "/" + f), qPrintable(f + " not installed"));
 #ifdef LWB_GUI

@@ -54,3 +54,32 @@ def test_dask_example_refuses_an_empty_folder(tmp_path):
                         str(tmp_path / "empty"), "--frames", str(tmp_path / "empty")],
                        capture_output=True, text=True, env=env, timeout=120)
     assert p.returncode != 0 and "holds no CRD files" in p.stderr and "ZeroDivisionError" not in p.stderr, p.stderr
+
+
+def notebooks():
+    build = os.path.dirname(os.environ.get("PYTHONPATH", "").split(os.pathsep)[0])
+    folder = os.path.join(build, "examples")
+    return sorted(os.path.join(folder, f) for f in os.listdir(folder) if f.endswith(".ipynb")) if os.path.isdir(folder) else []
+
+
+def test_every_example_is_a_notebook():
+    assert {os.path.basename(n)[:-6] + ".py" for n in notebooks()} == set(WRITES)
+
+
+@pytest.mark.parametrize("notebook", notebooks(), ids=os.path.basename)
+def test_notebook_executes(notebook, tmp_path):
+    """Issue 46: the examples as notebooks (written from the scripts' `# %%` cells by the build),
+    executed as Jupyter executes them (nbconvert, a Python kernel), leaving nothing behind."""
+    env = dict(os.environ, TMPDIR=str(tmp_path / "tmp"), PYDEVD_DISABLE_FILE_VALIDATION="1")
+    os.makedirs(env["TMPDIR"])
+    p = subprocess.run([sys.executable, "-m", "jupyter", "nbconvert", "--to", "notebook", "--execute",
+                        "--ExecutePreprocessor.timeout=240", "--output-dir", str(tmp_path), notebook],
+                       capture_output=True, text=True, env=env, timeout=300, cwd=os.path.dirname(notebook))
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    import json
+
+    done = json.load(open(tmp_path / os.path.basename(notebook)))
+    code = [c for c in done["cells"] if c["cell_type"] == "code"]
+    assert code and all(c["execution_count"] for c in code)
+    assert not any(o.get("output_type") == "error" for c in code for o in c["outputs"])
+    assert [f for f in os.listdir(env["TMPDIR"]) if f.startswith("laserwb-example-")] == []
