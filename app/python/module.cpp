@@ -94,7 +94,7 @@ std::string valueText(const py::handle& v) {
 
 py::array maskOf(const std::vector<uint8_t>& v, py::handle owner) {
     const bool binary = std::all_of(v.begin(), v.end(), [](uint8_t b) { return b <= 1; });
-    if (!binary) {
+    if (!binary || v.empty()) {  // (a copy; an empty vector has no data to view)
         py::array_t<bool> a(static_cast<py::ssize_t>(v.size()));
         bool* out = a.mutable_data();
         for (size_t i = 0; i < v.size(); ++i) out[i] = v[i] != 0;
