@@ -15,6 +15,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "core/common/provenance.hpp"
 #include "core/common/schema.hpp"
 
 namespace lwb::py {
@@ -109,6 +110,23 @@ py::array_t<T> viewOf(const std::vector<T>& v, py::handle owner) {
 /// a copy, value != 0, if any byte is not 0 or 1): `x[mask]` selects, where a uint8 array of
 /// 0 and 1 took x[0] and x[1] over and over (fancy indexing).
 py::array maskOf(const std::vector<uint8_t>& v, py::handle owner);
+
+/// What a result records of its run for the provenance of the files written from it: the
+/// command it stands for, its parameters (the schema's JSON) and the files it read.
+struct Recorded {
+    core::Provenance prov;
+    void record(const std::string& command, core::Json parameters, std::vector<std::string> inputs) {
+        prov.command = command;
+        prov.parameters = std::move(parameters);
+        prov.inputs = std::move(inputs);
+    }
+};
+
+/// Writes `path` with `write(stagingPath, &error)` and, beside it, its provenance
+/// (PATH.provenance.json: the run's command, parameters and inputs, the file's SHA-256), all or
+/// nothing (core OutputSet) as the CLI writes its outputs; standard output gets no sidecar.
+void writeRecorded(const core::Provenance& prov, const std::string& path,
+                   const std::function<bool(const std::string&, std::string*)>& write);
 
 /// A path argument (str or os.PathLike) as os.fspath gives it.
 std::string fsPath(const py::object& o);

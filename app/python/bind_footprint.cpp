@@ -33,7 +33,7 @@ const ParamsBinding<fp::FootprintParams> kParams{
     fp::footprintSchema, defaults, familyCheck, fromJson, afterSet};
 
 /// A run's items and its method: the report's rows.
-struct Report {
+struct Report : Recorded {
     fp::BatchResult result;
     fp::Method method = fp::Method::Gauss;
     std::string rows() const {
@@ -122,6 +122,7 @@ Report fitBatch(const py::object& inputs, const py::object& params, const py::ob
     if (!fp::resolveBatchParams(src, &setup.params, &fe)) raise(fe);
     const fp::BatchParams& bp = setup.params;
     Report rep;
+    bool fromFiles = false;  // (frames read from files, not arrays: the provenance lists them)
     rep.method = bp.footprint.method;
     // Frames in memory: float32 C-contiguous arrays are viewed in place (no copy); other dtypes are
     // converted once. A 3-D array is a stack of frames.
@@ -200,6 +201,7 @@ Report fitBatch(const py::object& inputs, const py::object& params, const py::ob
             for (const auto& o : inputs.cast<py::sequence>()) given.push_back(path(py::reinterpret_borrow<py::object>(o)));
         src.inputs = given;
         src.keepGoing = keepGoing;
+        fromFiles = true;
         bool ok;
         {
             py::gil_scoped_release nogil;  // (the set-up reads shot lists)
@@ -211,6 +213,12 @@ Report fitBatch(const py::object& inputs, const py::object& params, const py::ob
     if (!keepGoing)
         if (const std::string e = firstFailure(rep.result); !e.empty())
             throw Error(e + " (keep_going=True reports it as a rejected row)");
+    // (the provenance of the report written from it: the parameters, the frames read as files)
+    std::vector<std::string> read;
+    if (fromFiles)
+        for (const auto& it : rep.result.items)
+            if (it.readError.empty()) read.push_back(it.file);
+    rep.record("footprint", fp::footprintSchema().toJson(setup.params.footprint), read);
     return rep;
 }
 
@@ -290,10 +298,12 @@ void bindFootprint(py::module_& top) {
              "{column: numpy array} of the report: the CSV's columns at the core's full precision (float64;\n"
              "empty cells NaN, whole-number columns int64 with -1 empty, text str).")
         .def("write_csv", [](const Report& r, const std::string& path) {
-            std::string err;
             py::gil_scoped_release nogil;
-            check(fp::writeFootprintCsv(path, r.result.items, r.method, &err), err);
-        }, py::arg("path"), "Writes the report with the CLI's writer (writeFootprintCsv): the same bytes as laserwb-cli footprint -o.");
+            writeRecorded(r.prov, path, [&](const std::string& to, std::string* e) {
+                return fp::writeFootprintCsv(to, r.result.items, r.method, e);
+            });
+        }, py::arg("path"), "Writes the report with the CLI's writer (writeFootprintCsv): the same bytes as laserwb-cli footprint -o,\n"
+           "its provenance beside it (PATH.provenance.json).");
 
     m.def("csv_header", [] { return fp::footprintCsvHeader(); }, "The report's header line.");
     m.def("fit_batch", &fitBatch, py::arg("inputs"), py::arg("params") = py::none(), py::arg("preset") = py::none(),

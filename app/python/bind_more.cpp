@@ -4,8 +4,12 @@
 // measureRegionDn + fitReflectance, applyReflectance, relativeErrors) with theirs, as the CLI's
 // `trend`, `calib detector|waveform|pointing|stats` and `radiometry mosaic|gcp|fit|apply|check`
 // commands run them.
+#include <functional>
+
 #include "bind.hpp"
 #include "core/calib/calib_csv.hpp"
+#include "core/common/output_set.hpp"
+#include "core/common/provenance.hpp"
 #include "core/calib/calib_params.hpp"
 #include "core/calib/calib_run.hpp"
 #include "core/calib/detector_array.hpp"
@@ -44,15 +48,25 @@ const ParamsBinding<rad::RadiometryParams> kRadiometry{
     "RadiometryParams", "Parameters of the radiometric calibration (laserwb-cli radiometry mosaic|gcp|fit|apply|check).",
     rad::radiometrySchema, plain<rad::RadiometryParams>, radiometryCheck};
 
+// The path of an argument that may be a file's path or an array ("" for an array or None).
+std::string pathOf(const py::object& o) {
+    return !o.is_none() && (py::isinstance<py::str>(o) || py::hasattr(o, "__fspath__")) ? fsPath(o) : std::string();
+}
+std::vector<std::string> pathsOf(const py::list& items) {
+    std::vector<std::string> out;
+    for (const auto& o : items) out.push_back(pathOf(py::reinterpret_borrow<py::object>(o)));
+    return out;
+}
+
 // A method that writes the object with a core writer (path, object, &error): the path as
-// os.fspath gives it, the GIL released while it writes, a failure raised with the core's message.
+// os.fspath gives it, the GIL released while it writes, a failure raised with the core's message,
+// the file's provenance beside it.
 template <class T, class W>
 auto writer(W write) {
     return [write](const T& obj, const py::object& path) {
         const std::string p = fsPath(path);
-        std::string err;
         py::gil_scoped_release nogil;
-        check(write(p, obj, &err), err);
+        writeRecorded(obj.prov, p, [&](const std::string& to, std::string* e) { return write(to, obj, e); });
     };
 }
 
@@ -61,48 +75,47 @@ template <class T, class W>
 auto mapWriter(W write) {
     return [write](const T& obj, const py::object& path, bool plain) {
         const std::string p = fsPath(path);
-        std::string err;
         py::gil_scoped_release nogil;
-        check(write(p, obj, plain, &err), err);
+        writeRecorded(obj.prov, p, [&](const std::string& to, std::string* e) { return write(to, obj, plain, e); });
     };
 }
 
-struct Trend {
+struct Trend : Recorded {
     fp::TrendResult r;
 };
-struct Detector {
+struct Detector : Recorded {
     cal::DetectorArray array;
     cal::CalibRunResult run;
 };
-struct Pointing {
+struct Pointing : Recorded {
     cal::CalibRunResult run;
 };
-struct Stats {
+struct Stats : Recorded {
     cal::CalibRunResult run;
 };
-struct RadiometryFit {
+struct RadiometryFit : Recorded {
     std::vector<rad::Region> regions;
     rad::ReflectanceFitResult r;
 };
-struct WaveformFit {
+struct WaveformFit : Recorded {
     cal::CalibInputData in;
     cal::CalibRunResult run;
 };
-struct Mosaic {
+struct Mosaic : Recorded {
     rad::MosaicResult r;
 };
-struct GcpMap {
+struct GcpMap : Recorded {
     std::vector<rad::Gcp> gcps;
     rad::GcpFitResult fit;
     rad::MapGrid grid;
     rad::WarpResult warp;
     rad::GeoReference geo;
 };
-struct Applied {
+struct Applied : Recorded {
     rad::ApplyResult r;
     rad::GeoReference geo;
 };
-struct CheckTable {
+struct CheckTable : Recorded {
     rad::RelativeErrorResult r;
 };
 
@@ -174,6 +187,7 @@ void bindTrend(py::module_& top) {
             x.r = fp::computeTrend(recs, p);
         }
         check(x.r.ok, x.r.error);
+        x.record("trend", fp::trendSchema().toJson(p), {file});
         return x;
     }, py::arg("path"), py::arg("params") = py::none(),
        "Reads a centroid table (time,beam,x,y[,camera]) and computes the monthly trend, as laserwb-cli trend.");
@@ -215,6 +229,7 @@ void bindCalibDetector(py::module_& c) {
             d.run = core::runTask<cal::CalibTask>(in, p);
         }
         check(d.run.detector.ok, file + ": " + d.run.detector.error);
+        d.record("calib detector", cal::calibSchema().toJson(p), {file});
         return d;
     }, py::arg("path"), py::arg("params") = py::none(), "Fits the footprint centre of a detector CSV (CalibTask), as laserwb-cli calib detector.");
 }
@@ -266,6 +281,7 @@ void bindCalibPointing(py::module_& c) {
             x.run = core::runTask<cal::CalibTask>(in, p);
         }
         check(x.run.pointing.ok, file + ": " + x.run.pointing.error);
+        x.record("calib pointing", cal::calibSchema().toJson(p), {file, beamFile});
         return x;
     }, py::arg("points"), py::arg("beams"), py::arg("params") = py::none(),
        "Pointing calibration from a control-point CSV and the beam designs (JSON), as laserwb-cli calib pointing.");
@@ -304,6 +320,7 @@ void bindCalibStats(py::module_& c) {
             s.run = core::runTask<cal::CalibTask>(in, p);
         }
         for (const auto& g : s.run.stats) check(g.stats.ok, file + ": " + g.stats.error);
+        s.record("calib stats", cal::calibSchema().toJson(p), {file});
         return s;
     }, py::arg("path"), py::arg("group") = "", py::arg("params") = py::none(),
        "Statistics of a CSV of elevation differences (per `group` column value), as laserwb-cli calib stats.");
@@ -369,6 +386,7 @@ void bindCalibWaveform(py::module_& c) {
             check(x.run.hasMatch, featureFile + ": no candidate features");
             check(x.run.match.ok, x.run.match.error);
         }
+        x.record("calib waveform", cal::calibSchema().toJson(p), {file, featureFile});
         return x;
     }, py::arg("path") = py::none(), py::arg("features") = py::none(), py::arg("height") = py::none(), py::arg("params") = py::none(),
        "The feature height from a waveform CSV (or a given height=) and its match among the candidate\n"
@@ -442,6 +460,7 @@ void bindRadiometryFit(py::module_& r) {
             f.r = rad::fitReflectance(f.regions, p.fit);
         }
         check(f.r.ok, file + ": " + f.r.error);
+        f.record("radiometry fit", rad::radiometrySchema().toJson(p), {file, pathOf(image)});
         return f;
     }, py::arg("regions"), py::arg("image") = py::none(), py::arg("params") = py::none(),
        "Fits DN to reflectance from a region CSV, measuring the regions' DN on `image` (a path, or a\n"
@@ -481,6 +500,7 @@ void bindRadiometryMosaic(py::module_& r) {
             m.r = rad::mosaicRow(mats, p.mosaic);
         }
         check(m.r.ok, m.r.error);
+        m.record("radiometry mosaic", rad::radiometrySchema().toJson(p), pathsOf(frames));
         return m;
     }, py::arg("frames"), py::arg("params") = py::none(), py::arg("max_pixels") = 0,
        "Stitches the frames of one row (paths or 2-D arrays, in scan order), as laserwb-cli radiometry mosaic.");
@@ -536,6 +556,7 @@ void bindRadiometryGcp(py::module_& r) {
         }
         check(g.fit.ok, gcpFile + ": " + g.fit.error);
         check(g.warp.ok, g.warp.error);
+        g.record("radiometry gcp", rad::radiometrySchema().toJson(p), {pathOf(image), gcpFile});
         return g;
     }, py::arg("image"), py::arg("gcps"), py::arg("params") = py::none(), py::arg("crs") = py::none(), py::arg("max_pixels") = 0,
        "Fits the image-to-map transform of a GCP CSV and resamples the image (a path or 2-D array) onto\n"
@@ -594,6 +615,7 @@ void bindRadiometryApply(py::module_& r) {
             a.r = rad::applyReflectance(img, f, rad::applyParamsOf(p));
         }
         check(a.r.ok, a.r.error);
+        a.record("radiometry apply", rad::radiometrySchema().toJson(p), {pathOf(image), pathOf(fit)});
         return a;
     }, py::arg("image"), py::arg("fit") = py::none(), py::arg("k") = py::none(), py::arg("b") = py::none(),
        py::arg("params") = py::none(), py::arg("max_pixels") = 0,
@@ -624,6 +646,7 @@ void bindRadiometryCheck(py::module_& r) {
             c.r = rad::relativeErrors(regs, image.is_none() ? nullptr : &img, p.limitPct);
         }
         check(c.r.ok, file + ": " + c.r.error);
+        c.record("radiometry check", rad::radiometrySchema().toJson(p), {file, pathOf(image)});
         return c;
     }, py::arg("regions"), py::arg("image") = py::none(), py::arg("params") = py::none(), py::arg("max_pixels") = 0,
        "The relative errors of a check-region CSV, measured on a reflectance image (a path or 2-D\n"

@@ -6,6 +6,7 @@
 
 #include "bind.hpp"
 #include "core/common/atomic_file.hpp"
+#include "core/common/output_set.hpp"
 #include "core/common/csv.hpp"
 #include "core/common/image_header.hpp"
 #include "core/common/text.hpp"
@@ -104,6 +105,32 @@ py::array maskOf(const std::vector<uint8_t>& v, py::handle owner) {
     py::array a(py::dtype::of<bool>(), {static_cast<py::ssize_t>(v.size())}, {py::ssize_t{1}}, v.data(), owner);
     py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
     return a;
+}
+
+// Writes `path` with `write(stagingPath, &error)` and, beside it, its provenance
+// (PATH.provenance.json: the run's command, parameters and inputs, the file's SHA-256), all or
+// nothing (core OutputSet) as the CLI writes its outputs; standard output gets no sidecar.
+void writeRecorded(const core::Provenance& prov, const std::string& path,
+                   const std::function<bool(const std::string&, std::string*)>& write) {
+    std::string err;
+    if (core::isStandardStream(path)) {
+        const bool written = write(path, &err);
+        check(written, err);
+        return;
+    }
+    core::OutputSet outs;
+    for (const std::string& in : prov.inputs) outs.addInput(in);
+    const std::string sidecar = core::provenancePathFor(path);
+    outs.addOutput(path);
+    outs.addOutput(sidecar);
+    check(outs.check(), outs.error());
+    // (each call before its message: the arguments of check() are evaluated in no set order)
+    const bool written = write(outs.stagingPath(path), &err);
+    check(written, outs.unstaged(err));
+    const bool recorded = core::stageProvenance(outs, prov, {path}, sidecar, &err);
+    check(recorded, err);
+    const bool committed = outs.commit();
+    check(committed, outs.error());
 }
 
 std::string fsPath(const py::object& o) { return py::str(py::module_::import("os").attr("fspath")(o)); }

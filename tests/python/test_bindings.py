@@ -484,6 +484,47 @@ def test_results_as_dataframes_with_utc_epochs(data, tmp_path):
     assert sorted(s.to_pandas()["group"]) == sorted(s.groups())
     x = laserwb.calib.pointing(str(data / "calib" / "control_points.csv"), str(data / "calib" / "beams.json"))
     assert len(x.to_pandas()) == len(x.beams) > 0
+    # every result's repr summarises it (they were <... object at 0x...>)
+    for obj, family, start in ((t, "trend", f"{len(t)} rows"), (d, "calib", "e_m "), (s, "calib", f"{len(s.groups())} groups"),
+                               (x, "calib", f"{len(x.beams)} beams")):
+        text = repr(obj)
+        assert text.startswith(f"<laserwb.{family}.{type(obj).__name__}: {start}") and "object at 0x" not in text, text
+
+
+def test_files_written_from_python_carry_the_clis_provenance(data, tmp_path):
+    """Issue 46: files written from Python had no provenance (the CLI writes F.provenance.json
+    beside each). Every family's writer now writes one; its command, parameters and inputs (with
+    their SHA-256) are the CLI's for the same run, and it lists the file with the file's SHA-256."""
+    def same_record(py_file, cli_sidecar):
+        py = json.load(open(str(py_file) + ".provenance.json"))
+        ref = json.load(open(cli_sidecar))
+        for k in ("software", "version", "command", "parameters"):
+            assert py[k] == ref[k], (py_file, k)
+        assert {e["sha256"] for e in py["inputs"]} <= {e["sha256"] for e in ref["inputs"]}, py_file
+        assert len(py["inputs"]) >= 1
+        import hashlib
+        (out,) = py["outputs"]
+        assert out["sha256"] == hashlib.sha256(open(py_file, "rb").read()).hexdigest()
+
+    shots = sorted(glob.glob(str(data / "shots" / "shot_*.png")))[:3]
+    cli("footprint", *shots, "-o", tmp_path / "cli_fp.csv", "-q")
+    laserwb.footprint.fit_batch(shots).write_csv(str(tmp_path / "py_fp.csv"))
+    same_record(tmp_path / "py_fp.csv", tmp_path / "cli_fp.csv.provenance.json")
+    src = str(data / "centroids.csv")
+    cli("trend", src, "-o", tmp_path / "cli_trend.csv", "-q")
+    laserwb.trend.compute(src).write_csv(str(tmp_path / "py_trend.csv"))
+    same_record(tmp_path / "py_trend.csv", tmp_path / "cli_trend.csv.provenance.json")
+    det = str(data / "calib" / "detectors.csv")
+    cli("calib", "detector", det, "-o", tmp_path / "cli_centre.csv", "-q", ok=(0, 3))
+    laserwb.calib.detector(det).write_centre(str(tmp_path / "py_centre.csv"))
+    same_record(tmp_path / "py_centre.csv", tmp_path / "cli_centre.csv.provenance.json")
+    diffs = str(data / "calib" / "diffs.csv")
+    cli("calib", "stats", diffs, "--group", "beam", "-o", tmp_path / "cli_stats.csv", "-q")
+    laserwb.calib.stats(diffs, group="beam").write_csv(str(tmp_path / "py_stats.csv"))
+    same_record(tmp_path / "py_stats.csv", tmp_path / "cli_stats.csv.provenance.json")
+    # frames given as arrays name no input file; the sidecar says so rather than invent one
+    laserwb.footprint.fit_batch([np.ones((32, 32), np.float32) * 100]).write_csv(str(tmp_path / "arr.csv"))
+    assert json.load(open(str(tmp_path / "arr.csv") + ".provenance.json"))["inputs"] == []
 
 
 def test_arguments_are_typed_errors_naming_them():

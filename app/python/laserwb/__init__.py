@@ -295,6 +295,38 @@ def _result_frame(self, table="points"):
     raise ValueError(f"table must be 'points' or 'normal_points', not {table!r}")
 
 
+def _summary_repr(self):
+    """A result's repr: its family and class, its size and its headline values."""
+    cls = type(self)
+    parts = []
+    if hasattr(cls, "__len__"):
+        parts.append(f"{len(self)} rows")
+    for attr in ("centre", "waveform", "fit"):
+        d = getattr(self, attr, None)
+        if isinstance(d, dict):
+            parts.append(", ".join(f"{k} {v:.6g}" for k, v in d.items()
+                                   if isinstance(v, (int, float)) and not isinstance(v, bool)) or "")
+            break
+    if isinstance(getattr(self, "beams", None), list):
+        parts.append(f"{len(self.beams)} beams")
+    if callable(getattr(self, "groups", None)):
+        parts.append(f"{len(self.groups())} groups")
+    for attr in ("reflectance", "image"):
+        a = getattr(self, attr, None)
+        if getattr(a, "ndim", 0) == 2:
+            parts.append(f"{attr} {a.shape[1]}x{a.shape[0]} px")
+            break
+    for attr in ("doubts", "warnings"):
+        v = getattr(self, attr, None)
+        if v:
+            parts.append(f"{len(v)} {attr}")
+    return f"<laserwb.{cls.__module__.rsplit('.', 1)[-1]}.{cls.__name__}: " + "; ".join(p for p in parts if p) + ">"
+
+
+for _cls in (trend.Trend, calib.DetectorFit, calib.PointingFit, calib.Stats, calib.WaveformFit,
+             radiometry.ReflectanceFit, radiometry.Mosaic, radiometry.GcpMap, radiometry.Reflectance, radiometry.Check):
+    _cls.__repr__ = _summary_repr
+
 slr.Pass.epochs = property(_pass_epochs)
 slr.Pass.to_pandas = _pass_frame
 slr.PassResult.to_pandas = _result_frame
