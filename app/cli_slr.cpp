@@ -294,10 +294,8 @@ int planSlrRun(const std::string& cmd, const Args& a, const ParamOptions<slr::Sl
     // folders are refused, and all are renamed into place together at the end.
     for (const char* in : {"--cpf", "--stations", "--preset", "--station-np"}) outs->addInput(a.value(in));
     outs->addInput(input);
-    for (const std::string* p : {&out, &crdOut, &nptOut, &reportOut})
-        if (!p->empty()) outs->addOutput(*p);
-    for (const std::string* p : {&out, &crdOut, &nptOut, &reportOut})  // each file's provenance beside it
-        if (!p->empty() && !core::isStandardStream(*p)) outs->addOutput(core::provenancePathFor(*p));
+    for (const std::string& o : slr::passOutputFiles({out, crdOut, nptOut, true, reportOut}))  // (each file's provenance beside it)
+        outs->addOutput(o);
     if (!allPasses)
         if (int rc = checkOutputs(cmd, *outs)) return rc;
     if (a.has("--cpf") && !a.has("--stations"))
@@ -540,8 +538,6 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
     if (!slr::setUpSlrRun(sources, &setup, &e)) return failed(cmd, e);
     // (--all-passes: the set-up read once for every file; each file's run records its provenance)
     if (allPasses) return allPassFiles(cmd, plan, setup, bo, summary, quiet);
-    // Provenance: the parameters, what else shapes the outputs, and the inputs.
-    core::Provenance prov = slr::slrProvenance(setup, false);
 
     // ---- the pass: read, chosen (the first pass to screen unless --pass), resolved ----
     const slr::OpenedPass opened = slr::openPass(setup);
@@ -556,17 +552,12 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
         for (const auto& w : opened.warnings) std::cerr << "laserwb-cli slr: warning: " << w << "\n";
         for (const auto& n : opened.notes) std::cerr << "laserwb-cli slr: note: " << n << "\n";
     }
-    std::vector<std::string> openingNotes = opened.warnings;
-    openingNotes.insert(openingNotes.end(), opened.notes.begin(), opened.notes.end());
-    const slr::PassReport report = slr::passReportOf(setup, pass, settings, openingNotes);
-    const slr::PassProductPaths paths{out, crdOut, nptOut, true, reportOut, &report};
+    const slr::PassProductPaths paths{out, crdOut, nptOut, true, reportOut};
     if (const std::string why = slr::productsProblem(pass, settings, paths); !why.empty()) return fail(cmd, why, kUsage);
-    // The pass's own parameters (its preset and context applied) in the provenance; with
+    // The provenance the products will record (the pass's own parameters): with
     // --skip-existing, outputs whose sidecars say they are complete are not made again.
-    prov.parameters = slr::slrSchema().toJson(settings.params);
-    std::vector<std::string> products;
-    for (const std::string* o : {&out, &crdOut, &nptOut, &reportOut})
-        if (!o->empty() && !core::isStandardStream(*o)) products.push_back(*o);
+    const core::Provenance prov = slr::passProvenance(setup, settings);
+    const std::vector<std::string> products = slr::passProductFiles(paths);
     core::Json entry = core::Json::object();
     entry["input"] = input;
     entry["outputs"] = products;
@@ -601,9 +592,9 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
     const slr::DeliveredNormalPoints delivered = slr::deliveredNormalPoints(r);
 
     // ---- outputs: all or nothing (the writer every front end and batch uses) ----
-    if (!slr::stagePassProducts(outs, pass, r, paths, nullptr, &err)) return fail(cmd, err);
-    for (const auto& n : products)
-        if (!stageProvenance(outs, prov, products, core::provenancePathFor(n), &err)) return fail(cmd, err);
+    slr::ScreenedPass screened{&setup, nullptr, &pass, &settings, &r, opened.warnings};
+    screened.notes.insert(screened.notes.end(), opened.notes.begin(), opened.notes.end());
+    if (!slr::stageScreenedPass(outs, screened, paths, "", &e)) return failed(cmd, e);
     if (int rc = commitOutputs(cmd, outs)) return rc;
     entry["status"] = doubtful ? "doubtful" : "ok";
     entry["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

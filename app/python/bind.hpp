@@ -124,7 +124,7 @@ struct Recorded {
 
 /// Writes `path` with `write(stagingPath, &error)` and, beside it, its provenance
 /// (PATH.provenance.json: the run's command, parameters and inputs, the file's SHA-256), all or
-/// nothing (core OutputSet) as the CLI writes its outputs; standard output gets no sidecar.
+/// nothing (core writeWithProvenance) as the CLI writes its outputs; standard output gets no sidecar.
 void writeRecorded(const core::Provenance& prov, const std::string& path,
                    const std::function<bool(const std::string&, std::string*)>& write);
 

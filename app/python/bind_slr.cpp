@@ -138,7 +138,7 @@ PassRun runPass(const py::object& given, const py::object& params, const py::obj
     // station file, the analyst's own parameters (a SlrParams as --config, a dict as --set); the
     // core resolves them over the pass in the one order and runs it (core resolveAndRunPass).
     slr::SlrSources src;
-    src.input = pass.data->source;
+    src.input = pass.sources.input;  // ("" for a pass given as arrays: no file to record)
     if (!preset.is_none()) src.presets = fsPath(preset);
     if (!satellite.is_none()) src.satellite = std::string(py::str(satellite));
     if (!stations.is_none()) src.stations = fsPath(stations);
@@ -163,7 +163,6 @@ PassRun runPass(const py::object& given, const py::object& params, const py::obj
     return run;
 }
 
-// The products of a run as the one-pass CLI writes them, all or nothing (core stagePassProducts).
 // A station's file of passes into `outDir` (core runStationDay), as laserwb-cli slr --all-passes
 // writes it: one dict per block (summary.csv's columns, as text).
 py::list processFile(const py::object& path, const py::object& outDir, const py::object& params, const py::object& preset,
@@ -195,43 +194,18 @@ py::list processFile(const py::object& path, const py::object& outDir, const py:
     return rows;
 }
 
+// The products of a run as the one-pass CLI writes them, all or nothing, each file's provenance
+// beside it (core writeScreenedPass: the CLI's writer, report and sidecars).
 void writeProducts(const PassRun& run, const std::string& csv, const std::string& crd, const std::string& npt,
                    const std::string& report, const std::string& stationNp) {
-    const slr::PassData& pass = *run.pass;
+    // (the checks in this front end's own words: its keywords)
     if (csv.empty() && crd.empty() && npt.empty() && report.empty()) throw ParameterError("no output: give csv, crd, npt or report");
     if (!stationNp.empty() && report.empty())
         throw ParameterError("station_np is compared in the report: give report='FILE.pdf' with it");
     if (core::isStandardStream(report)) throw ParameterError("report needs a file (a PDF is not written to standard output)");
-    core::OutputSet outs;
-    outs.addInput(pass.source);
-    outs.addInput(stationNp);
-    // Each file's provenance beside it (F.provenance.json), as laserwb-cli slr writes it: the
-    // run's set-up and the pass's own parameters.
-    std::vector<std::string> products;
-    for (const std::string* p : {&csv, &crd, &npt, &report})
-        if (!p->empty()) {
-            outs.addOutput(*p);
-            if (!core::isStandardStream(*p)) {
-                products.push_back(*p);
-                outs.addOutput(core::provenancePathFor(*p));
-            }
-        }
-    if (!outs.check()) throw Error(outs.error());
-    // The report as the CLI's --report-out makes it: the run's set-up, with the station's
-    // normal points read by the core (--station-np).
-    slr::PassReport rep;
+    const slr::ScreenedPass screened{run.setup.get(), &run.opened, run.pass.get(), &run.settings, &run.r, run.openingNotes};
     slr::SlrError e;
-    if (!report.empty() && !slr::passReportOfLoaded(*run.setup, run.opened, pass, run.settings, run.openingNotes, stationNp, &rep, &e))
-        raise(e);
-    const slr::PassProductPaths paths{csv, crd, npt, true, report, report.empty() ? nullptr : &rep};
-    if (const std::string why = slr::productsProblem(pass, run.settings, paths); !why.empty()) throw ParameterError(why);
-    std::string err;
-    if (!slr::stagePassProducts(outs, pass, run.r, paths, nullptr, &err)) throw Error(err);
-    core::Provenance prov = slr::slrProvenance(*run.setup, false);
-    prov.parameters = slr::slrSchema().toJson(run.settings.params);
-    for (const std::string& p : products)
-        if (!core::stageProvenance(outs, prov, products, core::provenancePathFor(p), &err)) throw Error(err);
-    check(outs.commit(), outs.error());
+    if (!slr::writeScreenedPass(screened, {csv, crd, npt, true, report}, stationNp, &e)) raise(e);
 }
 
 py::dict normalPointColumns(const std::vector<slr::NormalPoint>& nps) {
@@ -317,17 +291,21 @@ void bindPass(py::module_& m) {
                                       const py::array_t<double, py::array::c_style | py::array::forcecast>& oc,
                                       const std::string& name) {
             if (t.ndim() != 1 || oc.ndim() != 1) throw py::value_error("t and oc must be 1-D arrays");
-            std::vector<double> tv(t.data(), t.data() + t.size()), ov(oc.data(), oc.data() + oc.size());
-            slr::PassInputResult r;
+            // A source of its own (core openPass makes it an O-C table's pass), loaded as load_pass loads a file.
+            auto arrays = std::make_shared<slr::OcArrays>();
+            arrays->t.assign(t.data(), t.data() + t.size());
+            arrays->oc.assign(oc.data(), oc.data() + oc.size());
+            arrays->name = name;
+            slr::SlrSources src;
+            src.arrays = std::move(arrays);
+            slr::LoadedSlrPass loaded;
             {
                 py::gil_scoped_release nogil;
-                r = slr::passFromOc(std::move(tv), std::move(ov), name);
+                loaded = slr::loadSlrPass(src);
             }
-            check(r.ok, r.error);
-            Pass p;
-            p.data = std::make_shared<const slr::PassData>(std::move(r.pass));
-            p.warnings = r.warnings;
-            return p;
+            if (!loaded.ok) raise(loaded.error);
+            loaded.setup.sources.arrays.reset();  // (the pass holds its columns; no file names it)
+            return Pass{loaded.opened.pass, loaded.opened.warnings, loaded.opened.notes, loaded.setup.sources};
         }, py::arg("t"), py::arg("oc"), py::arg("name") = "arrays",
            "A pass from epochs and O-C (s, two-way), as an O-C table's columns: run() screens it, write(csv=) writes its table.")
         .def("__len__", [](const Pass& p) { return p.data->t.size(); })

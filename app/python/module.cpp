@@ -107,30 +107,11 @@ py::array maskOf(const std::vector<uint8_t>& v, py::handle owner) {
     return a;
 }
 
-// Writes `path` with `write(stagingPath, &error)` and, beside it, its provenance
-// (PATH.provenance.json: the run's command, parameters and inputs, the file's SHA-256), all or
-// nothing (core OutputSet) as the CLI writes its outputs; standard output gets no sidecar.
 void writeRecorded(const core::Provenance& prov, const std::string& path,
                    const std::function<bool(const std::string&, std::string*)>& write) {
     std::string err;
-    if (core::isStandardStream(path)) {
-        const bool written = write(path, &err);
-        check(written, err);
-        return;
-    }
-    core::OutputSet outs;
-    for (const std::string& in : prov.inputs) outs.addInput(in);
-    const std::string sidecar = core::provenancePathFor(path);
-    outs.addOutput(path);
-    outs.addOutput(sidecar);
-    check(outs.check(), outs.error());
-    // (each call before its message: the arguments of check() are evaluated in no set order)
-    const bool written = write(outs.stagingPath(path), &err);
-    check(written, outs.unstaged(err));
-    const bool recorded = core::stageProvenance(outs, prov, {path}, sidecar, &err);
-    check(recorded, err);
-    const bool committed = outs.commit();
-    check(committed, outs.error());
+    const bool written = core::writeWithProvenance(prov, path, write, &err);
+    check(written, err);
 }
 
 std::string fsPath(const py::object& o) { return py::str(py::module_::import("os").attr("fspath")(o)); }

@@ -89,4 +89,28 @@ bool stageProvenance(OutputSet& outs, const Provenance& p, const std::vector<std
     return true;
 }
 
+bool writeWithProvenance(const Provenance& p, const std::string& path,
+                         const std::function<bool(const std::string&, std::string*)>& write, std::string* error) {
+    if (isStandardStream(path)) return write(path, error);
+    OutputSet outs;
+    for (const std::string& in : p.inputs) outs.addInput(in);
+    const std::string sidecar = provenancePathFor(path);
+    outs.addOutput(path);
+    outs.addOutput(sidecar);
+    if (!outs.check()) {
+        *error = outs.error();
+        return false;
+    }
+    if (!write(outs.stagingPath(path), error)) {
+        *error = outs.unstaged(*error);
+        return false;
+    }
+    if (!stageProvenance(outs, p, {path}, sidecar, error)) return false;
+    if (!outs.commit()) {
+        *error = outs.error();
+        return false;
+    }
+    return true;
+}
+
 }  // namespace lwb::core

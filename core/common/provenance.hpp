@@ -9,6 +9,7 @@
 // for a parameter set (its C5 software record names the program and version, and ours write it).
 // Reproducible: no clock, no host or user names; the same command on the same inputs writes the
 // same bytes.
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,5 +45,13 @@ std::string recordedName(const std::string& output, const std::string& sidecar);
 /// by its file name (the folder can be moved whole), another as given. False with *error.
 bool stageProvenance(OutputSet& outs, const Provenance& p, const std::vector<std::string>& outputs,
                      const std::string& sidecar, std::string* error);
+
+/// Writes one file and, beside it, its provenance, all or nothing: `write(stagingPath, &error)`
+/// writes the file's bytes where the OutputSet stages it; the inputs of `p` are registered (the
+/// file may replace none of them), the sidecar (provenancePathFor) lists the file with its
+/// SHA-256, and both are renamed into place together. Standard output ("-") gets the file alone.
+/// False with *error (naming the file) and nothing written. (A result's writer from Python.)
+bool writeWithProvenance(const Provenance& p, const std::string& path,
+                         const std::function<bool(const std::string&, std::string*)>& write, std::string* error);
 
 }  // namespace lwb::core

@@ -580,7 +580,8 @@ PassReport passReportOf(const SlrSetup& setup, const PassData& pass, const PassS
     r.notes = std::move(notes);
     r.stationFile = setup.stationNormalPoints;
     r.stationPath = src.stationNormalPoints;
-    r.command = shellCommand(slrCommandArgs(src, pass.hasCrd ? pass.passIndex + 1 : 0, commandParams(setup, pass, settings.params)));
+    if (!src.input.empty())  // (a pass given as arrays has no command that reruns it)
+        r.command = shellCommand(slrCommandArgs(src, pass.hasCrd ? pass.passIndex + 1 : 0, commandParams(setup, pass, settings.params)));
     return r;
 }
 
@@ -592,7 +593,7 @@ bool passReportOfLoaded(const SlrSetup& run, const SlrSources& opened, const Pas
         else notes.push_back("O-C from the prediction " + opened.cpf + " with the stations " + opened.stations +
                              ", which this run was not given: the command below has no prediction");
     }
-    if (!setStationNormalPoints(&s, stationNp, error)) return false;
+    if (!stationNp.empty() && !setStationNormalPoints(&s, stationNp, error)) return false;
     *out = passReportOf(s, pass, settings, std::move(notes));
     return true;
 }

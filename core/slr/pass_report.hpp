@@ -41,7 +41,7 @@ PassReport passReportOf(const SlrSetup& setup, const PassData& pass, const PassS
 /// The report of a pass loaded with the sources `opened` and run later with the set-up `run`
 /// (Python's load_pass, then run): passReportOf with the prediction the pass was opened with
 /// named as the CLI's --cpf where the run has the same stations (else a note says the command
-/// cannot carry it), and the station's normal points `stationNp` ("" none) read by the core.
+/// cannot carry it), and the station's normal points `stationNp` ("" = the run's) read by the core.
 /// False with *error (FILE:LINE).
 bool passReportOfLoaded(const SlrSetup& run, const SlrSources& opened, const PassData& pass, const PassSettings& settings,
                         std::vector<std::string> notes, const std::string& stationNp, PassReport* out, SlrError* error);

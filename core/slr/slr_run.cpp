@@ -9,6 +9,7 @@
 
 #include <sys/stat.h>
 
+#include "core/common/atomic_file.hpp"
 #include "core/common/memory.hpp"
 #include "core/common/text.hpp"
 #include "core/slr/np_compare.hpp"
@@ -292,6 +293,14 @@ OpenedPass openPassOf(const SlrSetup& setup, const std::shared_ptr<const CrdRead
 
 OpenedPass openPass(const SlrSetup& setup, const Feedback* fb) {
     const std::string& input = setup.sources.input;
+    if (const OcArrays* a = setup.sources.arrays.get()) {  // (a pass given as its columns is an O-C table's pass)
+        if (setup.sources.passNumber > 1 || !setup.sources.cpf.empty() || !input.empty()) {
+            OpenedPass o;
+            o.error = {a->name + ": a pass given as arrays is one O-C table's pass (no file, pass number or prediction)", true};
+            return o;
+        }
+        return finishOpen(setup, passFromOc(a->t, a->oc, a->name), nullptr);
+    }
     if (!isCrdFile(input)) {
         // (an O-C table is one pass: pass 1 of it is that pass)
         if (setup.sources.passNumber > 1 || !setup.sources.cpf.empty()) {
@@ -415,6 +424,101 @@ bool stagePassProducts(const OutputSet& outs, const PassData& pass, const PassRu
             *error = named(paths.report, outs.unstaged(*error));
             return false;
         }
+    }
+    return true;
+}
+
+std::vector<std::string> passProductFiles(const PassProductPaths& paths) {
+    std::vector<std::string> out;
+    for (const std::string* p : {&paths.csv, &paths.crd, &paths.npt, &paths.report})
+        if (!p->empty() && !isStandardStream(*p)) out.push_back(*p);
+    return out;
+}
+
+std::vector<std::string> passOutputFiles(const PassProductPaths& paths) {
+    std::vector<std::string> out;
+    for (const std::string* p : {&paths.csv, &paths.crd, &paths.npt, &paths.report})
+        if (!p->empty()) out.push_back(*p);
+    for (const std::string& p : passProductFiles(paths)) out.push_back(provenancePathFor(p));
+    return out;
+}
+
+Provenance passProvenance(const SlrSetup& setup, const PassSettings& settings, long long forcedByHand) {
+    Provenance p = slrProvenance(setup, false);
+    p.parameters = slrSchema().toJson(settings.params);
+    if (forcedByHand > 0) p.settings["forced_by_hand"] = forcedByHand;
+    return p;
+}
+
+bool stageScreenedPass(OutputSet& outs, const ScreenedPass& s, const PassProductPaths& given, const std::string& stationNp,
+                       SlrError* error) {
+    if (!s.setup || !s.pass || !s.settings || !s.result) {
+        *error = {"a screened pass needs its set-up, pass, parameters and result", false};
+        return false;
+    }
+    if (!stationNp.empty() && given.report.empty()) {
+        *error = {"the station's normal points are compared in the report: give the report's file with them", true};
+        return false;
+    }
+    if (isStandardStream(given.report)) {
+        *error = {"the report needs a file (a PDF is not written to standard output)", true};
+        return false;
+    }
+    if (const std::string why = productsProblem(*s.pass, *s.settings, given); !why.empty()) {
+        *error = {why, true};
+        return false;
+    }
+    // The report as every front end makes it: the run's set-up, the prediction the pass was
+    // opened with, the station's normal points, and what opening it said.
+    PassProductPaths paths = given;
+    PassReport report;
+    if (!paths.report.empty()) {
+        std::vector<std::string> notes = s.notes;
+        if (s.forcedByHand > 0)
+            notes.push_back(std::to_string(s.forcedByHand) +
+                            " point(s) forced in or out by hand in the workbench (not in the command below)");
+        if (!passReportOfLoaded(*s.setup, s.openedWith ? *s.openedWith : s.setup->sources, *s.pass, *s.settings, std::move(notes),
+                                stationNp, &report, error))
+            return false;
+        paths.reportOf = &report;
+    }
+    std::string err;
+    if (!stagePassProducts(outs, *s.pass, *s.result, paths, nullptr, &err)) {
+        *error = {err, false};
+        return false;
+    }
+    const std::vector<std::string> products = passProductFiles(paths);
+    const Provenance prov = passProvenance(*s.setup, *s.settings, s.forcedByHand);
+    for (const std::string& p : products)
+        if (!stageProvenance(outs, prov, products, provenancePathFor(p), &err)) {
+            *error = {err, false};
+            return false;
+        }
+    return true;
+}
+
+bool writeScreenedPass(const ScreenedPass& s, const PassProductPaths& paths, const std::string& stationNp, SlrError* error) {
+    if (paths.csv.empty() && paths.crd.empty() && paths.npt.empty() && paths.report.empty()) {
+        *error = {"no output: give a per-point CSV, a flagged CRD, normal points or a report", true};
+        return false;
+    }
+    OutputSet outs;
+    if (s.pass) outs.addInput(s.pass->source);
+    outs.addInput(stationNp);
+    for (const SlrSources* src : {s.setup ? &s.setup->sources : nullptr, s.openedWith})
+        if (src)
+            for (const std::string* in : {&src->input, &src->cpf, &src->stations, &src->presets, &src->configFile,
+                                          &src->stationNormalPoints})
+                outs.addInput(*in);
+    for (const std::string& o : passOutputFiles(paths)) outs.addOutput(o);
+    if (!outs.check()) {
+        *error = {outs.error(), false};
+        return false;
+    }
+    if (!stageScreenedPass(outs, s, paths, stationNp, error)) return false;
+    if (!outs.commit()) {
+        *error = {outs.error(), false};
+        return false;
     }
     return true;
 }

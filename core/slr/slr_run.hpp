@@ -26,8 +26,17 @@ using core::ParamSetting;
 
 /// What a front end gathers for an SLR run: names of files and the analyst's own settings,
 /// nothing read yet.
+/// A pass given as its columns instead of a file (Python's Pass.from_arrays): epochs and O-C
+/// (s, two-way), as an O-C table's, named `name` in messages and products.
+struct OcArrays {
+    std::vector<double> t, oc;
+    std::string name = "arrays";
+};
+
 struct SlrSources {
     std::string input;           ///< a CRD file (one pass of it, or all) or an O-C CSV
+    /// The pass as arrays (instead of `input`): openPass makes it a pass as it makes an O-C table's.
+    std::shared_ptr<const OcArrays> arrays;
     int passNumber = 0;          ///< 1-based; 0 = the file's first pass to screen (isPassToScreen)
     std::string cpf;             ///< CPF file or folder of CPF files; O-C from it needs `stations`
     std::string stations;        ///< SINEX station coordinates (alone: day or night per bin)
@@ -185,6 +194,45 @@ std::string productsProblem(const PassData& pass, const PassSettings& settings, 
 /// day's file. False with *error (naming the file).
 bool stagePassProducts(const OutputSet& outs, const PassData& pass, const PassRunResult& r, const PassProductPaths& paths,
                        CrdPass* npBlock, std::string* error);
+
+/// A screened pass as a front end holds it: what its products, its report and their provenance
+/// are written from. Every pointer is required.
+struct ScreenedPass {
+    const SlrSetup* setup = nullptr;         ///< the run's set-up: the provenance's, the report's command
+    /// The sources the pass was opened with when they are not the run's (Python's load_pass with a
+    /// prediction, then run): the report names that prediction. Null: setup->sources.
+    const SlrSources* openedWith = nullptr;
+    const PassData* pass = nullptr;
+    const PassSettings* settings = nullptr;  ///< the parameters it ran with
+    const PassRunResult* result = nullptr;
+    std::vector<std::string> notes;          ///< what opening it said, warnings first (the report's)
+    /// Points forced in or out by hand (the workbench's edits): said in the report and recorded
+    /// in the provenance, since the command it records does not make them.
+    long long forcedByHand = 0;
+};
+
+/// The files a run of `paths` writes: each product, and beside each file its provenance sidecar
+/// (F.provenance.json; a product to standard output has none). What a front end registers.
+std::vector<std::string> passOutputFiles(const PassProductPaths& paths);
+/// The products of `paths` that are files (not standard output): the ones a sidecar lists.
+std::vector<std::string> passProductFiles(const PassProductPaths& paths);
+
+/// The provenance of a one-pass run's products: slrProvenance with the pass's own parameters
+/// (its preset and context applied) and, when there are any, the points forced by hand.
+Provenance passProvenance(const SlrSetup& setup, const PassSettings& settings, long long forcedByHand = 0);
+
+/// The whole writing of a screened pass, the one every front end uses (the CLI's outputs, the
+/// workbench's exports, Python's write): the report built when asked for (passReportOfLoaded, with
+/// the station's normal points `stationNp`, "" = the set-up's), the products checked
+/// (productsProblem: a usage error), staged (stagePassProducts) and each file's provenance staged
+/// beside it (passProvenance). The caller registered passOutputFiles(paths) in `outs` and commits.
+/// False with *error.
+bool stageScreenedPass(OutputSet& outs, const ScreenedPass& s, const PassProductPaths& paths, const std::string& stationNp,
+                       SlrError* error);
+/// stageScreenedPass into files of its own, all or nothing: the outputs and the run's inputs
+/// registered and checked (none may replace an input or another output), staged, committed.
+/// False with *error and nothing written (Python's write, the workbench's exports).
+bool writeScreenedPass(const ScreenedPass& s, const PassProductPaths& paths, const std::string& stationNp, SlrError* error);
 
 /// The provenance of a run's outputs (core/common/provenance.hpp): the command ("slr", or "slr
 /// --all-passes" for a station's file), the parameters before any pass's preset and context

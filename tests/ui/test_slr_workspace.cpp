@@ -371,6 +371,33 @@ private slots:
         for (int8_t f : c->forced()) QCOMPARE(int(f), 0);
     }
 
+    // An export records its run as the CLI's products do (F.provenance.json, core
+    // writeScreenedPass), with what no command makes: the points forced by hand. A simulated
+    // pass shown after a file was open records no input (its set-up kept the file's name, which
+    // the report's command then named).
+    void exportsRecordTheirRunAndTheEditsByHand() {
+        const QString stella = lwbtest::sharedPath("slr/7080_STELLA_crd_071220_2128_0.frd");
+        if (!QFile::exists(stella)) QSKIP("shared data absent");
+        MainWindow w;
+        QString err;
+        QVERIFY2(w.workspace<lwb::ui::SlrWorkspace>()->openPath(stella, 0, &err), qPrintable(err));
+        SlrController* c = w.workspace<lwb::ui::SlrWorkspace>()->controller();
+        QVERIFY(c->waitIdle(60000));
+        openSparsePass(c);
+        QVERIFY(c->waitIdle(60000));
+        c->forcePoints({0, 1, 2}, true);
+        QVERIFY(c->waitIdle(60000));
+        const QString csv = m_dir.path() + "/edited.csv";
+        QVERIFY2(c->exportCsv(csv, &err), qPrintable(err));
+        QFile f(csv + ".provenance.json");
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject prov = QJsonDocument::fromJson(f.readAll()).object();
+        QCOMPARE(prov.value("command").toString(), QString("slr"));
+        QCOMPARE(prov.value("settings").toObject().value("forced_by_hand").toInt(), 3);
+        QVERIFY2(prov.value("inputs").toArray().isEmpty(), QJsonDocument(prov.value("inputs").toArray()).toJson().constData());
+        QCOMPARE(prov.value("parameters").toObject().value("screen").toObject().value("automatic").toBool(), true);
+    }
+
     void exportsAndSession() {
         const QString session = m_dir.path() + "/slr.lwb.json";
         QString err;
@@ -758,6 +785,23 @@ private slots:
         QCOMPARE(lwbtest::readAll(d + "/gui.csv"), lwbtest::readAll(d + "/cli.csv"));
         QCOMPARE(lwbtest::readAll(d + "/gui.frd"), lwbtest::readAll(d + "/cli.frd"));
         QCOMPARE(lwbtest::readAll(d + "/gui.npt"), lwbtest::readAll(d + "/cli.npt"));
+        // The provenance beside each product too (one writer, core writeScreenedPass): the
+        // workbench wrote none before, so its exports could not be traced to their run.
+        QVERIFY(QDir().mkpath(d + "/g") && QDir().mkpath(d + "/c"));
+        QVERIFY2(c->exportNormalPoints(d + "/g/pass.npt", &err), qPrintable(err));
+        // (the files named as the workbench names them: their canonical paths)
+        QStringList named = options;
+        for (QString& o : named)
+            if (QFileInfo::exists(o)) o = QFileInfo(o).canonicalFilePath();
+        const lwbtest::CliRun alone = lwbtest::runCli(
+            QStringList{"slr", QFileInfo(in).canonicalFilePath(), "--pass", QString::number(pass), "--npt-out", d + "/c/pass.npt", "-q"} +
+            named);
+        QVERIFY2(alone.exitCode == 0, qPrintable(alone.err));
+        const QByteArray guiProv = lwbtest::readAll(d + "/g/pass.npt.provenance.json");
+        QVERIFY2(guiProv.contains("\"command\": \"slr\""), guiProv.constData());
+        const QList<QByteArray> g = guiProv.split('\n'), k = lwbtest::readAll(d + "/c/pass.npt.provenance.json").split('\n');
+        for (qsizetype i = 0; i < std::min(g.size(), k.size()); ++i) QCOMPARE(g[i], k[i]);  // (the first line that differs)
+        QCOMPARE(g.size(), k.size());
     }
 
     // Opens pass `pass` (from 1) of a real file in the SLR workspace and waits for its screening.
@@ -1328,6 +1372,18 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(all->finished(), 120000);
         QTableWidget* t = all->table();
         QCOMPARE(t->rowCount(), 6);
+        {  // A presets file the core cannot read stops the batch with its reason, as the CLI's
+           // --preset does (the dialog set the run up itself and fell back to the defaults, silently).
+            const QString bad = m_dir.path() + "/bad-presets.json";
+            QFile pf(bad);
+            QVERIFY(pf.open(QIODevice::WriteOnly) && pf.write("{\"satellites\": [ {\"name\": ") > 0);
+            pf.close();
+            SlrAllPassesDialog refused(c, bad);
+            QTRY_VERIFY_WITH_TIMEOUT(refused.finished(), 60000);
+            QStringList said;
+            for (const QLabel* l : refused.findChildren<QLabel*>()) said << l->text();
+            QVERIFY2(said.filter("Stopped: ").size() == 1 && said.filter("bad-presets.json").size() >= 1, qPrintable(said.join(" | ")));
+        }
         const int colStatus = SlrAllPassesDialog::column("status"), colReason = SlrAllPassesDialog::column("reason"),
                   colAccepted = SlrAllPassesDialog::column("accepted"), colRms = SlrAllPassesDialog::column("rms_mm"),
                   colPrecision = SlrAllPassesDialog::column("station_precision");

@@ -38,32 +38,24 @@ int SlrAllPassesDialog::column(const std::string& name) {
 }
 
 SlrAllPassesDialog::SlrAllPassesDialog(const SlrController* controller, const QString& presetFile, QWidget* parent)
-    : QDialog(parent), m_setup(controller->setup()) {
+    : QDialog(parent), m_sources(controller->setup().sources) {
     setWindowTitle(tr("All passes of %1").arg(QFileInfo(controller->path()).fileName()));
     // As wide as the table wants, within the screen (1100 px put Close off a 1024 px screen).
     const QRect avail = (parent && parent->screen() ? parent->screen() : QGuiApplication::primaryScreen())->availableGeometry();
     resize(std::min(1100, avail.width() - 40), std::min(560, avail.height() - 80));
-    // The CLI's settings for a station's file: its defaults and each satellite's saved preset,
-    // set up afresh from the workbench's files (the panel's parameters, its oc.* rows among
-    // them, are not the batch's: the passes are opened and resolved with the defaults alike).
-    m_setup.sources.config = core::Json();
-    m_setup.sources.set.clear();
-    m_setup.sources.passNumber = 0;
-    {
-        SlrSources src = m_setup.sources;
-        if (!presetFile.isEmpty() && QFileInfo::exists(presetFile)) src.presets = presetFile.toStdString();
-        SlrSetup fresh;
-        SlrError e;
-        if (setUpSlrRun(src, &fresh, &e)) {
-            m_setup = std::move(fresh);
-        } else {  // (an unreadable presets file: the defaults alone)
-            src.presets.clear();
-            if (setUpSlrRun(src, &fresh, &e)) m_setup = std::move(fresh);
-        }
-    }
+    // The CLI's sources for a station's file: the file, its prediction and stations, and each
+    // satellite's saved preset (the panel's parameters, its oc.* rows among them, are not the
+    // batch's: the passes are opened and resolved with the defaults alike). The core sets the
+    // run up from them (runStationDay) as for laserwb-cli slr --all-passes --preset; a presets
+    // file it cannot read fails the run with its reason.
+    m_sources.config = core::Json();
+    m_sources.set.clear();
+    m_sources.passNumber = 0;
+    m_sources.presets.clear();
+    if (!presetFile.isEmpty() && QFileInfo::exists(presetFile)) m_sources.presets = presetFile.toStdString();
     auto* l = new QVBoxLayout(this);
     auto* about = new QLabel(
-        m_setup.havePresets
+        !m_sources.presets.empty()
             ? tr("The command's defaults and the saved preset of each satellite (%1), as laserwb-cli slr --all-passes --preset.")
                   .arg(presetFile)
             : tr("The command's defaults (no saved presets), as laserwb-cli slr --all-passes."),
@@ -166,7 +158,7 @@ SlrAllPassesDialog::~SlrAllPassesDialog() {
 void SlrAllPassesDialog::start(const QString& outDir) {
     m_feedback = std::make_shared<core::Feedback>();
     const auto feedback = m_feedback;
-    const SlrSetup setup = m_setup;
+    const SlrSources sources = m_sources;
     DayOptions opt;
     opt.outDir = outDir.toStdString();
     QPointer<SlrAllPassesDialog> self(this);
@@ -180,7 +172,7 @@ void SlrAllPassesDialog::start(const QString& outDir) {
                 },
                 Qt::QueuedConnection);
         };
-        const DayResult r = runStationDay(setup, opt, obs);
+        const DayResult r = runStationDay(sources, opt, obs);
         QMetaObject::invokeMethod(
             qApp, [self, r, outDir] {
                 if (self) self->runDone(r, outDir);

@@ -59,7 +59,7 @@ private:
     void rowDone(const core::slr::DayRow& row);
     void runDone(const core::slr::DayResult& result, const QString& outDir);
 
-    core::slr::SlrSetup m_setup;
+    core::slr::SlrSources m_sources;  ///< what the run is set up from (core runStationDay)
     QTableWidget* m_table;
     QProgressBar* m_progress;
     QLabel* m_label;

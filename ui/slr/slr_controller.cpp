@@ -288,6 +288,7 @@ void SlrController::setSimulatedPass(const std::vector<double>& t, const std::ve
     m_pass.oc = oc;
     m_pass.tof = tof;
     m_pass.altitudeKm = altitudeKm;
+    m_setup.sources.input.clear();  // (no file: its products record none, and no command reruns it)
     m_passes.clear();
     m_warnings.clear();
     m_notes.clear();
@@ -411,19 +412,16 @@ bool SlrController::exportProducts(const PassProductPaths& paths, QString* error
         *error = tr("no screening result to export");
         return false;
     }
-    if (const std::string why = productsProblem(m_pass, m_settings, paths); !why.empty()) {
-        *error = QString::fromStdString(why);
-        return false;
-    }
-    // The CLI's writer and its all-or-nothing set: never over an input, the file whole or not at all.
-    core::OutputSet outs;
-    outs.addInput(m_pass.source);
-    for (const std::string* in : {&m_input.cpfPath, &m_input.sinexPath}) outs.addInput(*in);
-    for (const std::string* out : {&paths.csv, &paths.crd, &paths.npt, &paths.report})
-        if (!out->empty()) outs.addOutput(*out);
-    std::string err;
-    if (!outs.check() || !stagePassProducts(outs, m_pass, *m_run, paths, nullptr, &err) || !outs.commit()) {
-        *error = QString::fromStdString(err.empty() ? outs.error() : err);
+    // The writer every front end uses (core writeScreenedPass): the CLI's products, report and
+    // provenance sidecars, all or nothing, never over an input. What opening the pass said goes
+    // in the report, as the CLI gathers it; the edits by hand, which no command makes, are said
+    // in the report and recorded in the provenance.
+    ScreenedPass screened{&m_setup, nullptr, &m_pass, &m_settings, m_run.get(), m_warnings};
+    screened.notes.insert(screened.notes.end(), m_notes.begin(), m_notes.end());
+    for (int8_t f : m_forced) screened.forcedByHand += f != 0;
+    SlrError e;
+    if (!writeScreenedPass(screened, paths, std::string(), &e)) {
+        *error = QString::fromStdString(e.message);
         return false;
     }
     return true;
@@ -449,16 +447,8 @@ bool SlrController::exportNormalPoints(const QString& path, QString* error) cons
 }
 
 bool SlrController::exportReport(const QString& path, QString* error) const {
-    // What opening the pass said, as the CLI gathers it, and what the command cannot carry.
-    std::vector<std::string> notes = m_warnings;
-    notes.insert(notes.end(), m_notes.begin(), m_notes.end());
-    long long edits = 0;
-    for (int8_t f : m_forced) edits += f != 0;
-    if (edits) notes.push_back(std::to_string(edits) + " point(s) forced in or out by hand in the workbench (not in the command below)");
-    const PassReport report = passReportOf(m_setup, m_pass, m_settings, notes);
     PassProductPaths paths;
     paths.report = path.toStdString();
-    paths.reportOf = &report;
     return exportProducts(paths, error);
 }
 
