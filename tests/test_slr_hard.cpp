@@ -646,16 +646,16 @@ private slots:
             }
             double corr = 0;
             if (std::fabs(m->secOfDay - s.secOfDay) > 1e-6) {
-                std::vector<const CrdRange*> near;
+                std::vector<CrdRange> near;  // (copies: the pass's ranges are columns, a record a value)
                 for (const CrdRange& x : ranges)
-                    if (x.filterFlag == 2 && std::fabs(x.secOfDay - s.secOfDay) <= L) near.push_back(&x);
+                    if (x.filterFlag == 2 && std::fabs(x.secOfDay - s.secOfDay) <= L) near.push_back(x);
                 QVERIFY(near.size() >= 4);
                 Eigen::MatrixXd A(Eigen::Index(near.size()), 4);
                 Eigen::VectorXd b(Eigen::Index(near.size()));
                 for (size_t k = 0; k < near.size(); ++k) {
-                    const double u = (near[k]->secOfDay - s.secOfDay) / L;
+                    const double u = (near[k].secOfDay - s.secOfDay) / L;
                     A.row(Eigen::Index(k)) << 1, u, u * u, u * u * u;
-                    b(Eigen::Index(k)) = near[k]->tofS;
+                    b(Eigen::Index(k)) = near[k].tofS;
                 }
                 const Eigen::VectorXd q = A.colPivHouseholderQr().solve(b);
                 const double u = (m->secOfDay - s.secOfDay) / L;

@@ -494,7 +494,7 @@ private slots:
         QVERIFY(warned);
         // One-way epoch events are skipped with a warning.
         p = *blitsPasses().front();
-        p.ranges[0].epochEvent = 3;
+        p.ranges.setEpochEvent(0, 3);
         const OcResult e = computeOc(p, m_shared.cpf.file, m_shared.snx.file, OcParams());
         QVERIFY(e.ok);
         QCOMPARE(e.oc_s.size(), p.ranges.size() - 1);
@@ -533,7 +533,7 @@ private slots:
             QVERIFY(!warned);
             // The filter flags are not used: clearing them gives the same O-C.
             CrdPass blind = p;
-            for (auto& x : blind.ranges) x.filterFlag = 0;
+            for (size_t k = 0; k < blind.ranges.size(); ++k) blind.ranges.setFilterFlag(k, 0);
             const OcResult oc2 = computeTrendOc(blind, TrendOcParams());
             QVERIFY(oc2.ok);
             QVERIFY(oc2.oc_s == oc.oc_s);
@@ -623,7 +623,12 @@ private slots:
         const OcResult a = computeTrendOc(p, TrendOcParams());
         QVERIFY(!a.ok);
         QVERIFY2(a.error.find("at least 5") != std::string::npos, a.error.c_str());
-        for (auto& r : p.ranges) r.secOfDay = 100;
+        CrdRanges oneEpoch;
+        for (CrdRange r : p.ranges) {
+            r.secOfDay = 100;
+            oneEpoch.push_back(r);
+        }
+        p.ranges = oneEpoch;
         TrendOcParams tp;
         tp.minPoints = 3;
         const OcResult b = computeTrendOc(p, tp);

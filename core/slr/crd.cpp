@@ -454,9 +454,16 @@ bool parse40(const Fields& fs, CrdCalibration* r, std::string* why) {
 
 /// Parses data record r (index i of the pass) into `list` with `parse`; a record that does not
 /// parse is skipped with a warning naming its line. `x` may carry preset fields.
-template <class Rec, class Parse>
+// The record type of a list of parsed records, and erasing one of them.
+template <class List> struct ItemOf;
+template <class T> struct ItemOf<std::vector<T>> { using type = T; };
+template <> struct ItemOf<CrdRanges> { using type = CrdRange; };
+template <class T> void eraseAt(std::vector<T>& v, size_t k) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(k)); }
+void eraseAt(CrdRanges& v, size_t k) { v.erase(k); }
+
+template <class List, class Parse, class Rec = typename ItemOf<List>::type>
 void addRecord(Parse parse, const CrdRecord& r, size_t i, const std::string& src, Sink* sink, const char* what,
-               std::vector<Rec>& list, std::vector<long>& skipped, Rec x = Rec{}) {
+               List& list, std::vector<long>& skipped, Rec x = Rec{}) {
     std::string why;
     if (!parse(Fields(r.text), &x, &why)) {
         sink->add(where(src, r.line) + what + " record skipped: " + why);
@@ -554,7 +561,7 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
                 sink->add(where(src, list[k].line) + what + " record skipped: seconds of day " + formatFixed(sod, 6) +
                           " is 23:59:60, a leap second, but " + date + " ends without one");
                 p->skippedLines.push_back(list[k].line);
-                list.erase(list.begin() + static_cast<long>(k));
+                eraseAt(list, k);
                 continue;
             }
             ++k;
@@ -861,6 +868,71 @@ bool setAsideUnusablePasses(Sink* sink, CrdReadResult* res) {
 
 // ---- CrdPass ---------------------------------------------------------------------------------
 
+void CrdRanges::reserve(size_t n) {
+    for (auto* v : {&m_sod, &m_tof}) v->reserve(n);
+    for (auto* v : {&m_config, &m_record, &m_line}) v->reserve(n);
+    for (auto* v : {&m_event, &m_flag}) v->reserve(n);
+}
+
+void CrdRanges::clear() {
+    *this = CrdRanges();
+}
+
+CrdRange CrdRanges::operator[](size_t i) const {
+    CrdRange r;
+    r.secOfDay = m_sod[i];
+    r.tofS = m_tof[i];
+    r.configId = m_configIds[m_config[i]];
+    r.epochEvent = m_event[i];
+    r.filterFlag = m_flag[i];
+    r.detectorChannel = m_channel.at(i);
+    r.stopNumber = m_stop.at(i);
+    r.receiveAmplitude = m_rxAmp.at(i);
+    r.transmitAmplitude = m_txAmp.at(i);
+    r.record = m_record[i];
+    r.line = static_cast<long>(m_line[i]);
+    return r;
+}
+
+void CrdRanges::push_back(const CrdRange& r) {
+    const size_t n = size();
+    m_sod.push_back(r.secOfDay);
+    m_tof.push_back(r.tofS);
+    // (a pass has a few configuration ids; the last one used is the likeliest)
+    uint32_t id = 0;
+    if (!m_config.empty() && m_configIds[m_config.back()] == r.configId) {
+        id = m_config.back();
+    } else {
+        while (id < m_configIds.size() && m_configIds[id] != r.configId) ++id;
+        if (id == m_configIds.size()) m_configIds.push_back(r.configId);
+    }
+    m_config.push_back(id);
+    m_event.push_back(static_cast<int8_t>(r.epochEvent));  // (0..6, checked by the reader)
+    m_flag.push_back(static_cast<int8_t>(r.filterFlag));   // (0..2)
+    m_channel.push(r.detectorChannel, n);
+    m_stop.push(r.stopNumber, n);
+    m_rxAmp.push(r.receiveAmplitude, n);
+    m_txAmp.push(r.transmitAmplitude, n);
+    // (a record index or line beyond 2^32 would be a file of hundreds of GB: refused before it
+    // is read, inputMemoryProblem)
+    m_record.push_back(static_cast<uint32_t>(r.record));
+    m_line.push_back(static_cast<uint32_t>(r.line));
+}
+
+void CrdRanges::erase(size_t i) {
+    auto at = [i](auto& v) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(i)); };
+    at(m_sod), at(m_tof), at(m_config), at(m_event), at(m_flag), at(m_record), at(m_line);
+    m_channel.erase(i), m_stop.erase(i), m_rxAmp.erase(i), m_txAmp.erase(i);
+}
+
+size_t CrdRanges::bytes() const {
+    size_t b = (m_sod.capacity() + m_tof.capacity()) * sizeof(double) +
+               (m_config.capacity() + m_record.capacity() + m_line.capacity()) * sizeof(uint32_t) + m_event.capacity() +
+               m_flag.capacity() + m_channel.bytes() + m_stop.bytes() + m_rxAmp.bytes() + m_txAmp.bytes();
+    for (const auto& s : m_configIds) b += sizeof(s) + s.capacity();
+    return b;
+}
+
 long CrdPass::startMjd() const { return mjdFromDate(session.startYear, session.startMonth, session.startDay); }
 
 double CrdPass::passSeconds(double secOfDay) const {
@@ -1120,12 +1192,12 @@ bool setFilterFlags(CrdPass* pass, const std::vector<int>& flags, std::string* e
             return false;
         }
     for (size_t i = 0; i < flags.size(); ++i) {
-        CrdRange& r = pass->ranges[i];
-        if (r.record >= pass->records.size() || !replaceToken(&pass->records[r.record].text, 5, std::to_string(flags[i]))) {
+        const size_t rec = pass->ranges.record(i);
+        if (rec >= pass->records.size() || !replaceToken(&pass->records[rec].text, 5, std::to_string(flags[i]))) {
             *error = "setFilterFlags: type-10 record " + std::to_string(i) + " has no filter flag field";
             return false;
         }
-        r.filterFlag = flags[i];
+        pass->ranges.setFilterFlag(i, flags[i]);
     }
     return true;
 }

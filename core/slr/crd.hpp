@@ -21,8 +21,12 @@
 // A file that has no H1/H4 before its data, whose H1 names another format (CPF), whose every
 // pass is unusable, binary data or an empty file stop the read with an error naming file and
 // line.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <functional>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,9 +39,37 @@ namespace lwb::core::slr {
 constexpr int kCrdAbsent = -1;
 
 /// One line of the file, verbatim.
+/// A record's id held in 8 bytes (issue 44: a std::string was 32 bytes of every record): up to
+/// 7 characters exactly. A longer first field (no CRD record's) keeps its first 7 and equals
+/// no id of 7 characters or fewer.
+class CrdRecordId {
+public:
+    CrdRecordId() = default;
+    CrdRecordId(std::string_view s) {
+        m_n = static_cast<unsigned char>(s.size() > kMax ? kLong : s.size());
+        std::memcpy(m_c, s.data(), std::min(s.size(), kMax));
+    }
+    CrdRecordId(const char* s) : CrdRecordId(std::string_view(s)) {}
+    CrdRecordId(const std::string& s) : CrdRecordId(std::string_view(s)) {}
+    size_t size() const { return m_n == kLong ? kMax : m_n; }
+    bool empty() const { return m_n == 0; }
+    char operator[](size_t i) const { return m_c[i]; }
+    std::string_view view() const { return {m_c, size()}; }
+    std::string str() const { return std::string(view()); }
+    operator std::string() const { return str(); }
+    friend bool operator==(const CrdRecordId& a, const CrdRecordId& b) { return a.m_n == b.m_n && a.view() == b.view(); }
+    friend bool operator!=(const CrdRecordId& a, const CrdRecordId& b) { return !(a == b); }
+
+private:
+    static constexpr size_t kMax = 7;
+    static constexpr unsigned char kLong = 255;
+    char m_c[kMax] = {};
+    unsigned char m_n = 0;
+};
+
 struct CrdRecord {
     std::string text;  ///< the line without its line end (trailing CRs removed)
-    std::string id;    ///< lower-case record id: "h1".."h9", "c0".."c7", "10", "11", "00", "93", ...; "" for a blank line
+    CrdRecordId id;    ///< lower-case record id: "h1".."h9", "c0".."c7", "10", "11", "00", "93", ...; "" for a blank line
     long line = 0;     ///< 1-based line in the source (0 for records added by a helper)
 };
 
@@ -117,6 +149,104 @@ struct CrdRange {
     double transmitAmplitude = NAN;  ///< v2 transmit amplitude, NaN when absent
     size_t record = 0;       ///< index into CrdPass::records
     long line = 0;           ///< source line
+};
+
+/// A column of a pass's type-10 records that is often the same in every record (a detector
+/// channel, "na" amplitudes): one value until a record differs, then one per record.
+template <class T>
+class CrdLazyColumn {
+public:
+    T at(size_t i) const { return m_values.empty() ? m_first : m_values[i]; }
+    void push(T v, size_t count) {  // count: the records before this one
+        if (m_values.empty()) {
+            if (count == 0) m_first = v;
+            if (same(v, m_first)) return;
+            m_values.assign(count, m_first);
+        }
+        m_values.push_back(v);
+    }
+    void set(size_t i, T v, size_t count) {
+        if (m_values.empty()) {
+            if (same(v, m_first)) return;
+            m_values.assign(count, m_first);
+        }
+        m_values[i] = v;
+    }
+    void erase(size_t i) {
+        if (!m_values.empty()) m_values.erase(m_values.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+    void clear() {
+        m_values.clear();
+        m_values.shrink_to_fit();
+    }
+    size_t bytes() const { return m_values.capacity() * sizeof(T); }
+
+private:
+    static bool same(T a, T b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }  // (NaN is NaN)
+    T m_first{};
+    std::vector<T> m_values;
+};
+
+/// The type-10 records of a pass by column (issue 44): about 30 bytes a record where a
+/// CrdRange is 96, its configuration id a small number into the pass's ids, the columns that
+/// do not change (channel, stop, amplitudes "na") one value. Read a record with [] (a CrdRange
+/// by value) or a column; records are added with push_back and changed with setFilterFlag.
+class CrdRanges {
+public:
+    size_t size() const { return m_sod.size(); }
+    bool empty() const { return m_sod.empty(); }
+    void reserve(size_t n);
+    void clear();
+    CrdRange operator[](size_t i) const;
+    CrdRange front() const { return (*this)[0]; }
+    CrdRange back() const { return (*this)[size() - 1]; }
+    void push_back(const CrdRange& r);
+    void erase(size_t i);
+    void setFilterFlag(size_t i, int flag) { m_flag[i] = static_cast<int8_t>(flag); }
+    void setEpochEvent(size_t i, int event) { m_event[i] = static_cast<int8_t>(event); }
+
+    /// The columns a pass's O-C and screening read without building records.
+    double secOfDay(size_t i) const { return m_sod[i]; }
+    double tofS(size_t i) const { return m_tof[i]; }
+    int filterFlag(size_t i) const { return m_flag[i]; }
+    int epochEvent(size_t i) const { return m_event[i]; }
+    size_t record(size_t i) const { return m_record[i]; }
+    long line(size_t i) const { return static_cast<long>(m_line[i]); }
+    const std::string& configId(size_t i) const { return m_configIds[m_config[i]]; }
+    /// Bytes held (the benchmark's accounting).
+    size_t bytes() const;
+
+    class const_iterator {
+    public:
+        using iterator_category = std::forward_iterator_tag;
+        using value_type = CrdRange;
+        using difference_type = std::ptrdiff_t;
+        using pointer = void;
+        using reference = CrdRange;
+        const_iterator(const CrdRanges* r, size_t i) : m_r(r), m_i(i) {}
+        CrdRange operator*() const { return (*m_r)[m_i]; }
+        const_iterator& operator++() {
+            ++m_i;
+            return *this;
+        }
+        bool operator==(const const_iterator& o) const { return m_i == o.m_i; }
+        bool operator!=(const const_iterator& o) const { return m_i != o.m_i; }
+
+    private:
+        const CrdRanges* m_r;
+        size_t m_i;
+    };
+    const_iterator begin() const { return {this, 0}; }
+    const_iterator end() const { return {this, size()}; }
+
+private:
+    std::vector<double> m_sod, m_tof;
+    std::vector<uint32_t> m_config;         ///< index into m_configIds
+    std::vector<std::string> m_configIds;
+    std::vector<int8_t> m_event, m_flag;
+    std::vector<uint32_t> m_record, m_line;
+    CrdLazyColumn<int32_t> m_channel, m_stop;
+    CrdLazyColumn<double> m_rxAmp, m_txAmp;
 };
 
 /// Type 11: one normal point (also what a helper writes).
@@ -212,7 +342,7 @@ struct CrdPass {
     std::vector<CrdRecord> records;
 
     std::vector<CrdSystemConfig> configs;
-    std::vector<CrdRange> ranges;               ///< type 10, in file order
+    CrdRanges ranges;                           ///< type 10, in file order
     std::vector<CrdNormalPoint> normalPoints;   ///< type 11
     std::vector<CrdRangeSupplement> supplements;///< type 12
     std::vector<CrdMeteo> meteo;                ///< type 20

@@ -251,6 +251,8 @@ OcResult computeOc(const CrdPass& pass, const CpfFile& cpf, const Eigen::Vector3
         std::string spanError;
         const size_t n = pass.ranges.size();
         const double c = kSpeedOfLight;
+        for (auto* v : {&res.epoch_s, &res.oc_s, &res.tof_s, &res.elevation_rad, &res.azimuth_rad, &res.refraction_s}) v->reserve(n);
+        res.range_index.reserve(n), res.line.reserve(n), res.filter_flag.reserve(n);
         for (size_t i = 0; i < n; ++i) {
             if ((i & 0xfff) == 0 && feedback) {
                 if (feedback->isCancelled()) {
@@ -706,9 +708,10 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         res.startMjd = pass.startMjd();
         std::vector<double> t, y;
         std::vector<size_t> idx;
+        t.reserve(pass.ranges.size()), y.reserve(pass.ranges.size()), idx.reserve(pass.ranges.size());
         for (size_t i = 0; i < pass.ranges.size(); ++i) {
-            t.push_back(pass.passSeconds(pass.ranges[i].secOfDay));
-            y.push_back(pass.ranges[i].tofS);
+            t.push_back(pass.passSeconds(pass.ranges.secOfDay(i)));
+            y.push_back(pass.ranges.tofS(i));
             idx.push_back(i);
         }
         if (static_cast<int>(t.size()) < params.minPoints) {
@@ -854,21 +857,21 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         }
 
         // Elevation/azimuth from the pointing records (type 30), when there are some.
+        // (every column sized once: a column grown by doubling held up to 1.5 copies of itself)
         const PointingAngles angles(pass);
-        for (size_t i = 0; i < t.size(); ++i) {
-            const CrdRange& r = pass.ranges[idx[i]];
-            double az = NAN, el = NAN;
-            angles.at(t[i], &az, &el);
-            res.epoch_s.push_back(t[i]);
-            res.oc_s.push_back(resid(static_cast<Eigen::Index>(i)) * 1e-3);
-            res.tof_s.push_back(r.tofS);
-            res.elevation_rad.push_back(el);
-            res.azimuth_rad.push_back(az);
-            res.refraction_s.push_back(0);
-            res.range_index.push_back(idx[i]);
-            res.line.push_back(r.line);
-            res.filter_flag.push_back(r.filterFlag);
+        const size_t points = t.size();
+        res.oc_s.resize(points), res.tof_s.resize(points), res.elevation_rad.resize(points), res.azimuth_rad.resize(points);
+        res.refraction_s.assign(points, 0.0), res.line.resize(points), res.filter_flag.resize(points);
+        for (size_t i = 0; i < points; ++i) {
+            const size_t k = idx[i];
+            angles.at(t[i], &res.azimuth_rad[i], &res.elevation_rad[i]);
+            res.oc_s[i] = resid(static_cast<Eigen::Index>(i)) * 1e-3;
+            res.tof_s[i] = pass.ranges.tofS(k);
+            res.line[i] = pass.ranges.line(k);
+            res.filter_flag[i] = pass.ranges.filterFlag(k);
         }
+        res.epoch_s = std::move(t);  // (the epochs and the records' indices as they are)
+        res.range_index = std::move(idx);
         if (!arc.ok && !orbit.ok && !lowered.empty()) res.warnings.push_back(lowered);  // (the polynomial's only)
         if (orbit.ok)
             res.notes.push_back(name + ": no prediction: O-C is relative to a robust orbit-arc trend of the time of flight (" +

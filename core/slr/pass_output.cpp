@@ -139,7 +139,7 @@ bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::
     // Records that were not screened (no O-C: outside the prediction, one-way events) keep the
     // station's own flag; only the screened ones get 2 (accepted) or 1 (noise).
     std::vector<int> flags(p.ranges.size());
-    for (size_t k = 0; k < p.ranges.size(); ++k) flags[k] = p.ranges[k].filterFlag;
+    for (size_t k = 0; k < p.ranges.size(); ++k) flags[k] = p.ranges.filterFlag(k);
     for (size_t i = 0; i < pass.rangeIndex.size() && i < accepted.size(); ++i)
         flags[pass.rangeIndex[i]] = accepted[i] ? 2 : 1;
     if (!setFilterFlags(&p, flags, error)) return false;
