@@ -22,6 +22,8 @@ int cmdRadiometryCheck(int argc, char** argv);
 int cmdSimulateRadiometry(int argc, char** argv);
 // SLR signal extraction (paper 004): app/cli_slr.cpp, app/cli_slr_sim.cpp
 int cmdSlr(int argc, char** argv);
+/// laserwb-cli slr tune (cli_slr_tune.cpp).
+int cmdSlrTune(int argc, char** argv);
 int cmdSimulateSlr(int argc, char** argv);
 int cmdBenchSlr(int argc, char** argv);
 // CRD files: app/cli_crd.cpp ("crd check")

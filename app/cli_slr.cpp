@@ -46,6 +46,7 @@ const std::string kSlrUsage = std::string(
     "usage: laserwb-cli slr INPUT [options] [-o OUT.csv] [--crd-out FILE] [--npt-out FILE] [--report-out FILE.pdf]\n"
     "                        (no output: the summary alone, nothing written)\n"
     "       laserwb-cli slr --all-passes --out-dir DIR [options] CRD...\n"
+    "       laserwb-cli slr tune CRD... --preset-out FILE.json  (parameters from the station's flags: slr tune --help)\n"
     "Screens one SLR pass: signal extraction by binary image (paper 004; automatic scale by default),\n"
     "then a trend fit with k-sigma rejection and ILRS normal points. A summary goes to stderr.\n"
     "INPUT: a CRD file (v1 or v2; recognised by its H1 record, whatever the name) or an O-C CSV\n"
@@ -342,6 +343,7 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
            RunSummary& summary);
 
 int cmdSlr(int argc, char** argv) {
+    if (argc > 2 && std::string(argv[2]) == "tune") return cmdSlrTune(argc, argv);  // (a file named tune: ./tune)
     const std::string cmd = "slr";
     Args a(cmd, kSlrUsage);
     // Every screening and post-fit parameter: slr_params.hpp's schema; the named options are

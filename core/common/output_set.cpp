@@ -319,7 +319,12 @@ std::vector<std::string> OutputSet::fileOutputs() const {
 }
 
 void OutputSet::addOutput(const std::string& path) {
-    m_items.push_back({path == "-", path, {}, {}});
+    m_items.push_back({path == "-", path, {}, {}, false});
+    m_checked = false;
+}
+
+void OutputSet::addUpdate(const std::string& path) {
+    m_items.push_back({false, path, {}, {}, true});
     m_checked = false;
 }
 
@@ -430,7 +435,7 @@ bool OutputSet::check() {
                 m_naming = true;
                 return false;
             }
-        if (id.exists) {
+        if (id.exists && !it.update) {
             const std::string as = noted(st);
             if (!as.empty()) {
                 m_error = p + ": an output would overwrite an input of this run (the same file as " + as + "); nothing written";
@@ -487,7 +492,7 @@ bool OutputSet::readyToCommit() {
     }
     // Inputs read since check() (a file picked from a folder, a config read late) are protected too.
     for (const auto& it : m_items) {
-        if (it.toStdout) continue;
+        if (it.toStdout || it.update) continue;
         const std::string as = inputReadAs(it.target);
         if (!as.empty()) {
             m_error = it.path + ": an output would overwrite an input of this run (the same file as " + as +

@@ -24,6 +24,10 @@ public:
     /// file in the temporary folder like any output, and copied to standardOutputFd() at commit,
     /// after every file of the run is in place. At most one output may be "-".
     void addOutput(const std::string& path);
+    /// A file the run reads and then replaces on purpose (an existing presets file that gets a
+    /// satellite's entry): an output like addOutput's, which check() and commit() do not refuse
+    /// for having been read. It must not be one of addInput's.
+    void addUpdate(const std::string& path);
     /// True when an output is standard output ("-").
     bool writesStandardOutput() const;
     /// The inputs as added, and the outputs written to files (not "-"), as given.
@@ -70,6 +74,7 @@ private:
         std::string path;     ///< as given
         std::string target;   ///< symbolic links resolved: the file that is replaced
         std::string staging;  ///< written by the run
+        bool update = false;  ///< addUpdate: read by the run, replaced on purpose
     };
     std::vector<std::string> m_inputs;
     std::vector<Item> m_items;

@@ -90,12 +90,14 @@ bool stageProvenance(OutputSet& outs, const Provenance& p, const std::vector<std
 }
 
 bool writeWithProvenance(const Provenance& p, const std::string& path,
-                         const std::function<bool(const std::string&, std::string*)>& write, std::string* error) {
+                         const std::function<bool(const std::string&, std::string*)>& write, std::string* error,
+                         bool update) {
     if (isStandardStream(path)) return write(path, error);
     OutputSet outs;
     for (const std::string& in : p.inputs) outs.addInput(in);
     const std::string sidecar = provenancePathFor(path);
-    outs.addOutput(path);
+    if (update) outs.addUpdate(path);
+    else outs.addOutput(path);
     outs.addOutput(sidecar);
     if (!outs.check()) {
         *error = outs.error();

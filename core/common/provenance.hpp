@@ -51,7 +51,10 @@ bool stageProvenance(OutputSet& outs, const Provenance& p, const std::vector<std
 /// file may replace none of them), the sidecar (provenancePathFor) lists the file with its
 /// SHA-256, and both are renamed into place together. Standard output ("-") gets the file alone.
 /// False with *error (naming the file) and nothing written. (A result's writer from Python.)
+/// `update`: the file was read by the run and is replaced on purpose (OutputSet::addUpdate: an
+/// existing presets file that gets an entry).
 bool writeWithProvenance(const Provenance& p, const std::string& path,
-                         const std::function<bool(const std::string&, std::string*)>& write, std::string* error);
+                         const std::function<bool(const std::string&, std::string*)>& write, std::string* error,
+                         bool update = false);
 
 }  // namespace lwb::core

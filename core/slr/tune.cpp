@@ -1,0 +1,267 @@
+#include "core/slr/tune.hpp"
+
+#include <cmath>
+#include <sys/stat.h>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/provenance.hpp"
+#include "core/common/text.hpp"
+#include "core/slr/presets.hpp"
+
+namespace lwb::core::slr {
+
+namespace {
+
+// The grid: the parameters that decide which points are delivered once the track is found.
+constexpr double kCosines[] = {0.90, 0.93, 0.95, 0.97, 0.98, 0.99};
+constexpr double kRejects[] = {2.5, 3.0, 3.5};
+constexpr bool kTakeBand[] = {true, false};
+// The mean F1 by which a candidate must beat the starting point to be chosen over it: where the
+// automatic mode is at its ceiling, a candidate better by less is a pass's chance, not a gain.
+constexpr double kMinGain = 0.001;
+// ... and it may lose to the starting point on no pass by more than this.
+constexpr double kMaxLoss = 0.002;
+
+std::string candidateLabel(const SlrParams& p) {
+    return "cosine_c=" + formatFixed(p.screen.cosineC, 2) + " reject_sigma=" + formatFixed(p.postfit.rejectSigma, 1) +
+           " take_band=" + (p.postfit.takeBand ? "true" : "false");
+}
+
+bool sameChoice(const SlrParams& a, const SlrParams& b) {
+    return a.screen.cosineC == b.screen.cosineC && a.postfit.rejectSigma == b.postfit.rejectSigma &&
+           a.postfit.takeBand == b.postfit.takeBand;
+}
+
+// A pass opened for tuning: the pass, its resolved starting settings and the set-up it ran with.
+struct OpenTuned {
+    std::shared_ptr<const SlrSetup> setup;
+    std::shared_ptr<const PassData> pass;
+    PassSettings settings;
+    std::vector<uint8_t> labels;  ///< 1 where the station flagged data
+};
+
+TuneResult failed(std::string message, bool usage) {
+    TuneResult r;
+    r.error = {std::move(message), usage};
+    return r;
+}
+
+}  // namespace
+
+TuneResult tuneSlr(const TuneSources& sources, Feedback* fb) {
+    if (sources.files.empty()) return failed("no passes to tune on: give one or more CRD files with the station's filter flags", true);
+    std::vector<SatellitePreset> entries;
+    if (!sources.presets.empty()) {
+        const PresetsResult pr = loadPresets(sources.presets);
+        if (!pr.ok) return failed(pr.error, false);
+        entries = pr.presets;
+    }
+    const std::vector<SatellitePreset> wanted = {SatellitePreset{sources.satellite, {}, {}, {}}};
+    TuneResult out;
+    std::vector<OpenTuned> open;
+    for (const std::string& file : sources.files) {
+        SlrSources src;
+        src.input = file;
+        src.set = sources.set;
+        src.searchThreads = sources.threads;
+        auto plain = std::make_shared<SlrSetup>();
+        if (!setUpSlrRun(src, plain.get(), &out.error)) return out;
+        // (the existing entry of the pass's satellite is the starting point, where there is one)
+        std::shared_ptr<SlrSetup> withEntry;
+        if (!entries.empty()) {
+            src.presets = sources.presets;
+            withEntry = std::make_shared<SlrSetup>();
+            if (!setUpSlrRun(src, withEntry.get(), &out.error)) return out;
+        }
+        if (!isCrdFile(file)) return failed(file + ": an O-C table has no station flags to tune on (a CRD file has)", true);
+        const std::shared_ptr<const CrdReadResult> crd = readSlrInput(src, &out.error);
+        if (!crd) return out;
+        const std::vector<PassSummary> summaries = summarisePasses(crd->file);
+        for (const PassSummary& s : summaries) {
+            const std::string name = file + " pass " + std::to_string(s.index + 1);
+            if (!isPassToScreen(s)) {
+                out.notes.push_back(name + ": left out: " + (s.problem.empty() ? blockStatus(s).reason : s.problem));
+                continue;
+            }
+            if (!sources.satellite.empty() && !findPreset(wanted, s.satellite)) {
+                out.notes.push_back(name + ": left out: satellite " + s.satellite + ", not " + sources.satellite);
+                continue;
+            }
+            const bool entry = withEntry && findPreset(entries, s.satellite, s.ilrsId);
+            std::shared_ptr<const SlrSetup> setup = entry ? std::shared_ptr<const SlrSetup>(withEntry) : plain;
+            OpenedPass o = openPassOf(*setup, crd, s.index);
+            if (!o.ok) return failed(o.error.message, o.error.usage);
+            const PassData& d = *o.pass;
+            size_t data = 0, noise = 0;
+            for (int f : d.stationFlag) data += f == 2, noise += f == 1;
+            if (data == 0)
+                return failed(name + ": no labels to tune on: " +
+                                  (noise == 0 ? std::string("every filter flag is 0 (unknown)")
+                                              : "no point is flagged data (2), " + std::to_string(noise) + " noise (1)") +
+                                  "; tuning learns from the station's own decisions (2 data, 1 noise)",
+                              false);
+            OpenTuned t{setup, o.pass, o.settings, {}};
+            t.labels.resize(d.stationFlag.size());
+            for (size_t i = 0; i < d.stationFlag.size(); ++i) t.labels[i] = d.stationFlag[i] == 2;
+            open.push_back(std::move(t));
+        }
+    }
+    if (open.empty()) return failed("no pass to tune on in the files given" + (out.notes.empty() ? std::string() : ": " + out.notes.front()), true);
+    // One satellite: its preset entry is what the tuning writes.
+    out.satellite = sources.satellite.empty() ? open.front().pass->satellite : sources.satellite;
+    out.ilrsId = open.front().pass->ilrsId;
+    if (sources.satellite.empty()) {
+        const std::vector<SatellitePreset> first = {SatellitePreset{open.front().pass->satellite, {}, {}, {}}};
+        for (const OpenTuned& t : open)
+            if (!findPreset(first, t.pass->satellite))
+                return failed("passes of several satellites (" + open.front().pass->satellite + ", " + t.pass->satellite +
+                                  "): give --satellite NAME to tune one",
+                              true);
+    }
+    // The candidates: the starting point first, then the grid (the pass's context left to each pass).
+    const SlrParams start = commandParams(*open.front().setup, *open.front().pass, open.front().settings.params);
+    out.candidates.push_back({candidateLabel(start) + " (the starting point)", start, 0});
+    for (double c : kCosines)
+        for (double k : kRejects)
+            for (bool band : kTakeBand) {
+                SlrParams p = start;
+                p.screen.cosineC = c;
+                p.postfit.rejectSigma = k;
+                p.postfit.takeBand = band;
+                if (!sameChoice(p, start)) out.candidates.push_back({candidateLabel(p), p, 0});
+            }
+    const size_t total = open.size() * out.candidates.size();
+    size_t done = 0;
+    for (const OpenTuned& t : open) {
+        TunedPass tp;
+        tp.name = passName(*t.pass);
+        tp.points = t.labels.size();
+        for (uint8_t l : t.labels) tp.labelledSignal += l;
+        for (const TuneCandidate& c : out.candidates) {
+            if (fb && fb->isCancelled()) return failed("cancelled", false);
+            PassSettings s = t.settings;
+            s.params.screen.cosineC = c.params.screen.cosineC;
+            s.params.postfit.rejectSigma = c.params.postfit.rejectSigma;
+            s.params.postfit.takeBand = c.params.postfit.takeBand;
+            const PassRunResult r = runOpenedPass(*t.pass, s, *t.setup);
+            tp.scores.push_back(r.ok ? sim::scoreDetection(deliveredFlags(r), t.labels) : sim::DetectionScore{});
+            if (fb) fb->setProgress(double(++done) / double(total));
+        }
+        out.passes.push_back(std::move(tp));
+    }
+    // The choice: the best mean F1 among the candidates that beat the starting point by more
+    // than kMinGain and lose to it on no pass by more than kMaxLoss (the starting point on a tie).
+    auto bestOver = [&](size_t leftOut) {
+        auto mean = [&](size_t c) {
+            double sum = 0;
+            size_t n = 0;
+            for (size_t p = 0; p < out.passes.size(); ++p)
+                if (p != leftOut) sum += out.passes[p].scores[c].f1, ++n;
+            return n ? sum / double(n) : 0.0;
+        };
+        const double startMean = mean(0);
+        size_t best = 0;
+        double bestF1 = startMean;
+        for (size_t c = 1; c < out.candidates.size(); ++c) {
+            const double m = mean(c);
+            if (!(m > startMean + kMinGain) || !(m > bestF1 + 1e-12)) continue;
+            bool holds = true;
+            for (size_t p = 0; p < out.passes.size(); ++p)
+                if (p != leftOut) holds = holds && out.passes[p].scores[c].f1 >= out.passes[p].scores[0].f1 - kMaxLoss;
+            if (holds) bestF1 = m, best = c;
+        }
+        return best;
+    };
+    for (size_t c = 0; c < out.candidates.size(); ++c) {
+        double sum = 0;
+        for (const TunedPass& p : out.passes) sum += p.scores[c].f1;
+        out.candidates[c].meanF1 = sum / double(out.passes.size());
+    }
+    out.best = bestOver(out.passes.size());
+    double held = 0;
+    for (size_t p = 0; p < out.passes.size(); ++p) {
+        // (one pass alone: nothing to choose on without it; its held-out figure is the starting point's)
+        const size_t choice = out.passes.size() > 1 ? bestOver(p) : 0;
+        out.passes[p].heldOutF1 = out.passes[p].scores[choice].f1;
+        held += out.passes[p].heldOutF1;
+    }
+    out.heldOutMeanF1 = held / double(out.passes.size());
+    if (out.passes.size() == 1)
+        out.notes.push_back("one pass: the choice is not cross-validated (leave-one-pass-out needs two or more)");
+    out.ok = true;
+    return out;
+}
+
+Json tuneSummary(const TuneResult& r) {
+    Json j = Json::object();
+    j["satellite"] = r.satellite;
+    j["chosen"] = r.candidates[r.best].label;
+    j["f1_before"] = r.candidates[0].meanF1;
+    j["f1_after"] = r.candidates[r.best].meanF1;
+    j["f1_held_out"] = r.heldOutMeanF1;
+    j["candidates"] = r.candidates.size();
+    Json passes = Json::array();
+    for (const TunedPass& p : r.passes) {
+        Json e = Json::object();
+        e["pass"] = p.name;
+        e["points"] = p.points;
+        e["labelled_data"] = p.labelledSignal;
+        e["f1_before"] = p.scores[0].f1;
+        e["f1_after"] = p.scores[r.best].f1;
+        e["f1_held_out"] = p.heldOutF1;
+        passes.push_back(std::move(e));
+    }
+    j["passes"] = std::move(passes);
+    return j;
+}
+
+bool writeTunedPreset(const TuneResult& r, const TuneSources& sources, const std::string& path, std::string* error,
+                      std::string* note) {
+    if (!r.ok || r.candidates.empty()) {
+        *error = "no tuning to write";
+        return false;
+    }
+    // The file's entries kept, the satellite's replaced (or added).
+    std::vector<SatellitePreset> presets;
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0) {
+        const PresetsResult pr = loadPresets(path);
+        if (!pr.ok) {
+            *error = pr.error + " (the tuned entry is written into an existing presets file: it must read)";
+            return false;
+        }
+        presets = pr.presets;
+    }
+    const SlrParams& chosen = r.candidates[r.best].params;
+    SatellitePreset entry{r.satellite, r.ilrsId, chosen.screen, chosen.postfit};
+    bool replaced = false;
+    for (SatellitePreset& p : presets)
+        if (findPreset({p}, r.satellite, r.ilrsId)) {
+            if (note)
+                *note = "the entry \"" + p.name + "\"" + (p.ilrsId.empty() ? std::string() : " (ILRS id " + p.ilrsId + ")") +
+                        " replaced" + (p.name == r.satellite ? std::string() : " (the same satellite by its ILRS id)");
+            p = entry, replaced = true;
+        }
+    if (!replaced) {
+        presets.push_back(entry);
+        if (note) *note = "the entry \"" + r.satellite + "\" added";
+    }
+    const Json doc = presetsToJson(presets);
+    if (const PresetsResult check = presetsFromJson(doc, path); !check.ok) {
+        *error = check.error + " (nothing written)";
+        return false;
+    }
+    Provenance prov;
+    prov.command = "slr tune";
+    prov.parameters = slrSchema().toJson(chosen);
+    prov.settings = tuneSummary(r);
+    prov.inputs = sources.files;
+    prov.inputs.push_back(sources.presets);
+    // The file and its provenance all or nothing; an existing presets file is read above and
+    // replaced on purpose (update), every other input stays protected.
+    const std::string text = dumpJson(doc);
+    return writeWithProvenance(prov, path, [&](const std::string& to, std::string* e) { return writeFileAtomic(to, text, e); },
+                               error, !presets.empty() || ::stat(path.c_str(), &st) == 0);
+}
+
+}  // namespace lwb::core::slr

@@ -1,0 +1,72 @@
+#pragma once
+// Parameters tuned from a station's own decisions (issue 45): labelled passes (the station's
+// filter flags in its CRD files, 2 data / 1 noise) are screened with each candidate of a small
+// grid over the parameters that decide which points are kept (the screening's cosine constant,
+// the post-fit's rejection k and whether its band takes the image's leftovers), the command's
+// own settings first; the candidate with the best mean F1 of the delivered flags against the
+// labels is chosen, and leave-one-pass-out says how well that choice holds on a pass it was not
+// chosen on. `laserwb-cli slr tune` writes it as the satellite's preset entry, with provenance.
+#include <string>
+#include <vector>
+
+#include "core/common/feedback.hpp"
+#include "core/common/json.hpp"
+#include "core/sim/slr_eval.hpp"
+#include "core/slr/slr_run.hpp"
+
+namespace lwb::core::slr {
+
+/// What a front end gathers for a tuning: the files, the analyst's settings (as for a run) and
+/// the satellite whose passes count ("" = the passes' one satellite).
+struct TuneSources {
+    std::vector<std::string> files;  ///< CRD files: every pass to screen of each (isPassToScreen)
+    std::string satellite;           ///< only passes of this satellite (matched as presets match)
+    std::string presets;             ///< an existing presets file: its entry is the starting point
+    std::vector<ParamSetting> set;   ///< over the defaults (or the entry), as --set
+    int threads = 0;                 ///< the scale search's threads (0: every core)
+};
+
+/// One pass of the tuning: its name, its labels and each candidate's score on it.
+struct TunedPass {
+    std::string name;                         ///< "FILE pass K"
+    size_t points = 0, labelledSignal = 0;    ///< points, and those the station flagged data
+    std::vector<sim::DetectionScore> scores;  ///< per candidate (same order as TuneResult::candidates)
+    double heldOutF1 = 0;                     ///< leave-one-pass-out: the choice made without this pass, scored on it
+};
+
+struct TuneCandidate {
+    std::string label;  ///< "cosine_c=0.95 reject_sigma=3 take_band=true"
+    SlrParams params;   ///< the parameters as a preset holds them (the pass's context left to the pass)
+    double meanF1 = 0;  ///< over the passes
+};
+
+struct TuneResult {
+    bool ok = false;
+    SlrError error;
+    std::string satellite, ilrsId;
+    std::vector<TuneCandidate> candidates;  ///< [0]: the starting point (defaults, the entry, --set)
+    std::vector<TunedPass> passes;
+    size_t best = 0;                        ///< index of the chosen candidate
+    double heldOutMeanF1 = 0;               ///< mean of TunedPass::heldOutF1
+    std::vector<std::string> notes;         ///< passes left out (another satellite, not a pass) and why
+};
+
+/// Reads the files, keeps the passes of one satellite, refuses a pass without labels (every flag
+/// 0, or no point flagged data) with its reason, screens every pass with every candidate and
+/// chooses. ok false with `error` (a usage error when the choice is the caller's: passes of
+/// several satellites without `satellite`, too few labelled passes).
+TuneResult tuneSlr(const TuneSources& sources, Feedback* fb = nullptr);
+
+/// The tuning's record for the preset's provenance: the passes, their labels, F1 before (the
+/// starting point) and after, and leave-one-pass-out.
+Json tuneSummary(const TuneResult& r);
+
+/// Writes `r`'s chosen parameters as the satellite's entry of the presets file `path` (the
+/// entries already there kept, that satellite's replaced) and its provenance beside it
+/// (PATH.provenance.json), all or nothing. An entry is the satellite's by its ILRS id, else by
+/// its name (as a pass finds its preset). *note (when given): which entry was added or replaced.
+/// False with *error.
+bool writeTunedPreset(const TuneResult& r, const TuneSources& sources, const std::string& path, std::string* error,
+                      std::string* note = nullptr);
+
+}  // namespace lwb::core::slr
