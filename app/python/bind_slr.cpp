@@ -22,6 +22,7 @@
 #include "core/slr/slr_params.hpp"
 #include "core/slr/slr_run.hpp"
 #include "core/slr/station_day.hpp"
+#include "core/slr/tune.hpp"
 #include "core/common/text.hpp"
 
 namespace lwb::py {
@@ -377,7 +378,34 @@ void bindPassResult(py::module_& m) {
            "normal points compared in it).");
 }
 
-// The runs: load_pass, run, set_search_threads, process_file and default_params.
+// tune: laserwb-cli slr tune's task (core tuneSlr, writeTunedPreset), its record as a dict.
+py::dict tunePasses(const py::object& files, const py::object& satellite, const py::object& preset, const py::object& presetOut,
+                    const py::object& threads) {
+    slr::TuneSources src;
+    if (py::isinstance<py::str>(files) || py::hasattr(files, "__fspath__")) src.files.push_back(inputPath(files));
+    else
+        for (const py::handle f : files) src.files.push_back(inputPath(py::reinterpret_borrow<py::object>(f)));
+    if (!satellite.is_none()) src.satellite = std::string(py::str(satellite));
+    if (!preset.is_none()) src.presets = inputPath(preset);
+    src.threads = threadCount(threads);
+    const std::string out = presetOut.is_none() ? std::string() : fsPath(presetOut);
+    slr::TuneResult r;
+    std::string err, note;
+    bool written = true;
+    {
+        py::gil_scoped_release nogil;
+        r = slr::tuneSlr(src);
+        if (r.ok && !out.empty()) written = slr::writeTunedPreset(r, src, out, &err, &note);
+    }
+    if (!r.ok) raise(r.error);
+    check(written, err);
+    py::dict d = py::module_::import("json").attr("loads")(core::dumpJson(slr::tuneSummary(r)));
+    d["notes"] = r.notes;
+    d["written"] = note;
+    return d;
+}
+
+// The runs: load_pass, run, set_search_threads, process_file, tune and default_params.
 void bindRuns(py::module_& m) {
     m.def("load_pass", &loadPass, py::arg("path"), py::arg("pass_number") = py::none(), py::arg("cpf") = py::none(),
           py::arg("stations") = py::none(), py::arg("params") = py::none(),
@@ -404,6 +432,14 @@ void bindRuns(py::module_& m) {
           "A station's file of passes, every block, into out_dir: the products of laserwb-cli slr --all-passes\n"
           "--out-dir OUT_DIR, byte for byte (passNNN.csv/.frd/.npt, normal_points.npt, summary.csv,\n"
           "provenance.json). Returns one dict per block with summary.csv's columns (text).");
+    m.def("tune", &tunePasses, py::arg("files"), py::arg("satellite") = py::none(), py::arg("preset") = py::none(),
+          py::arg("preset_out") = py::none(), py::arg("threads") = py::none(),
+          "A satellite's parameters from the station's own filter flags, as laserwb-cli slr tune: every pass\n"
+          "of the CRD files (one path or a list) screened with each candidate, the best mean F1 against the\n"
+          "flags chosen (another than the starting point only for a gain beyond 0.001 that loses on no pass\n"
+          "more than 0.002), leave-one-pass-out. preset: start from the satellite's entry of this presets\n"
+          "file; preset_out: write the entry there (its other entries kept) with its provenance, the CLI's\n"
+          "bytes. Returns the record: satellite, chosen, f1_before, f1_after, f1_held_out, passes, notes.");
     m.def("default_params", [] { return slr::commandDefaults(); }, "The defaults of laserwb-cli slr.");
 }
 

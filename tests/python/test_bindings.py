@@ -203,6 +203,34 @@ def test_slr_products_are_the_cli_products(data, tmp_path):
     assert len(r.normal_points["epoch_s"]) > 0 and np.all(np.isfinite(r.normal_points["tof_s"]))
 
 
+def test_slr_tune_is_the_cli_tune(tmp_path):
+    # Issue 45: the same task (core tuneSlr), the same preset file and provenance, byte for byte
+    files = []
+    for seed in (1, 2):
+        f = str(tmp_path / f"leo{seed}.frd")
+        cli("simulate", "slr", "--kind", "leo", "--points", "3000", "--seed", str(seed), "-q", f)
+        files.append(f)
+    cli("slr", "tune", *files, "--preset-out", tmp_path / "cli.json", "-q")
+    r = laserwb.slr.tune(files, preset_out=tmp_path / "py.json")
+    same_bytes(tmp_path / "cli.json", tmp_path / "py.json")
+    cli_prov = json.load(open(tmp_path / "cli.json.provenance.json"))
+    py_prov = json.load(open(tmp_path / "py.json.provenance.json"))
+    for k in ("command", "parameters", "settings", "inputs", "software", "version"):
+        assert py_prov.get(k) == cli_prov.get(k), k
+    assert r["satellite"] == "simsat-leo" and len(r["passes"]) == 2
+    assert r["f1_after"] >= r["f1_before"] and r["chosen"] == cli_prov["settings"]["chosen"]
+    assert r["written"] == 'the entry "simsat-leo" added'
+    # a pass without labels is refused as the CLI refuses it
+    blind = tmp_path / "blind.frd"
+    blind.write_text("".join(
+        " ".join(l.split(" ")[:5] + ["0"] + l.split(" ")[6:]) if l.startswith("10 ") else l
+        for l in open(files[0]).readlines()))
+    with pytest.raises(laserwb.Error, match="no labels"):
+        laserwb.slr.tune(str(blind))
+    with pytest.raises(FileNotFoundError):
+        laserwb.slr.tune([str(tmp_path / "missing.frd")])
+
+
 def test_slr_parameters_as_the_cli_options(data, tmp_path):
     frd = str(data / "passes" / "pass4.frd")
     cli("slr", frd, "--set", "screen.cosine_c=0.97", "--reject", "2.5", "-o", tmp_path / "cli.csv",
