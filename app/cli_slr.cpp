@@ -530,7 +530,6 @@ int runSlr(const std::string& cmd, const Args& a, const ParamOptions<slr::SlrPar
     const std::string &input = plan.input, &out = plan.out, &crdOut = plan.crdOut, &nptOut = plan.nptOut,
                       &reportOut = plan.reportOut;
     const bool allPasses = plan.allPasses;
-    std::string err;
 
     // ---- the sources, read once by the core (presets, stations, predictions, config) ----
     slr::SlrSources sources;
