@@ -228,19 +228,20 @@ py::dict normalPointColumns(const std::vector<slr::NormalPoint>& nps) {
                     "return_rate_pct"_a = col([](const auto& n) { return n.returnRatePct; }));
 }
 
-// The readers: read_crd, read_cpf and read_sinex, as a run's set-up reads those files (core
-// readSlrSourceContents: a damaged prediction is refused here as before any pass is screened).
-slr::SlrSourceContents contentsOf(const slr::SlrSources& src) {
+// The readers: read_crd, read_cpf and read_sinex, as a run's load reads those files (core
+// loadSlrPass with listOnly: a damaged prediction is refused as before any pass is screened).
+slr::LoadedSlrPass contentsOf(slr::SlrSources src) {
     requireReadable(src.input);
     requireReadable(src.cpf);
     requireReadable(src.stations);
-    slr::SlrSourceContents c;
+    src.listOnly = true;
+    slr::LoadedSlrPass l;
     {
         py::gil_scoped_release nogil;
-        c = slr::readSlrSourceContents(src);
+        l = slr::loadSlrPass(src);
     }
-    if (!c.ok) raise(c.error);
-    return c;
+    if (!l.ok) raise(l.error);
+    return l;
 }
 
 void bindReaders(py::module_& m) {
@@ -248,24 +249,26 @@ void bindReaders(py::module_& m) {
         slr::SlrSources src;
         src.input = fsPath(path);
         py::list out;
-        for (const auto& s : contentsOf(src).passes) out.append(summaryDict(s));
+        for (const auto& s : contentsOf(src).opened.passes) out.append(summaryDict(s));
         return out;
     }, py::arg("path"), "The passes of a CRD file (v1 or v2, gzip too): one dict per pass (pass_number from 1, satellite, station, start, end, ranges, ...).");
     m.def("read_cpf", [](const py::object& path) {
         slr::SlrSources src;
         src.cpf = fsPath(path);
-        const slr::SlrSourceContents c = contentsOf(src);
-        check(!c.predictions.cpfFolder, src.cpf + ": a folder; read_cpf reads one CPF file");
-        return py::dict("path"_a = src.cpf, "warnings"_a = c.predictions.cpfs.front().warnings);
+        const slr::LoadedSlrPass l = contentsOf(src);
+        const slr::PassSources& c = *l.setup.predictions;
+        check(!c.cpfFolder, src.cpf + ": a folder; read_cpf reads one CPF file");
+        return py::dict("path"_a = src.cpf, "warnings"_a = c.cpfs.front().warnings);
     }, py::arg("path"), "Reads and checks a CPF prediction (raises laserwb.Error with FILE:LINE when it is not one).");
     m.def("read_sinex", [](const py::object& path) {
         slr::SlrSources src;
         src.stations = fsPath(path);
-        const slr::SlrSourceContents c = contentsOf(src);
+        const slr::LoadedSlrPass l = contentsOf(src);
+        const slr::PassSources& c = *l.setup.predictions;
         std::vector<std::string> codes;
-        for (const auto& s : c.predictions.stations.sites) codes.push_back(s.code);
-        return py::dict("path"_a = src.stations, "sites"_a = codes, "solutions"_a = c.predictions.stations.solutions.size(),
-                        "warnings"_a = c.predictions.stationWarnings);
+        for (const auto& s : c.stations.sites) codes.push_back(s.code);
+        return py::dict("path"_a = src.stations, "sites"_a = codes, "solutions"_a = c.stations.solutions.size(),
+                        "warnings"_a = c.stationWarnings);
     }, py::arg("path"), "Reads a SINEX file of station coordinates: its site codes and solutions.");
 }
 

@@ -104,7 +104,7 @@ bool resolveBaseParams(const SlrSources& sources, SlrParams* out, SlrError* erro
 bool setUpSlrRun(const SlrSources& sources, SlrSetup* out, SlrError* error) {
     SlrSetup s;
     s.sources = sources;
-    if (!sources.cpf.empty() && sources.stations.empty()) {
+    if (!sources.cpf.empty() && sources.stations.empty() && !sources.listOnly) {
         *error = {"the prediction (CPF) and the station coordinates (SINEX) go together: O-C from the prediction needs both", true};
         return false;
     }
@@ -128,7 +128,7 @@ bool setUpSlrRun(const SlrSources& sources, SlrSetup* out, SlrError* error) {
         s.havePresets = true;
     }
     auto predictions = std::make_shared<PassSources>();
-    if (!sources.stations.empty()) {
+    if (!sources.stations.empty() || (sources.listOnly && !sources.cpf.empty())) {  // (listed: a CPF checked alone)
         PassInputParams in;
         in.cpfPath = sources.cpf;
         in.sinexPath = sources.stations;
@@ -242,6 +242,15 @@ LoadedSlrPass loadSlrPass(const SlrSources& sources, const Feedback* fb) {
     LoadedSlrPass l;
     if (!setUpSlrRun(sources, &l.setup, &l.error)) return l;
     l.setUp = true;
+    if (sources.listOnly) {  // (the input's blocks listed, none opened)
+        if (!sources.input.empty()) {
+            l.opened.crd = readSlrInput(sources, &l.error, fb);
+            if (!l.opened.crd) return l;
+            l.opened.passes = summarisePasses(l.opened.crd->file);
+        }
+        l.opened.ok = l.ok = true;
+        return l;
+    }
     l.opened = openPass(l.setup, fb);
     if (!l.opened.ok) {
         l.error = l.opened.error;
@@ -249,27 +258,6 @@ LoadedSlrPass loadSlrPass(const SlrSources& sources, const Feedback* fb) {
     }
     l.ok = true;
     return l;
-}
-
-SlrSourceContents readSlrSourceContents(const SlrSources& sources, const Feedback* fb) {
-    SlrSourceContents c;
-    if (!sources.input.empty()) {
-        const std::shared_ptr<const CrdReadResult> crd = readSlrInput(sources, &c.error, fb);
-        if (!crd) return c;
-        c.passes = summarisePasses(crd->file);
-    }
-    if (!sources.cpf.empty() || !sources.stations.empty()) {
-        PassInputParams in;
-        in.cpfPath = sources.cpf;
-        in.sinexPath = sources.stations;
-        std::string err;
-        if (!readPassSources(in, &c.predictions, &err)) {
-            c.error = {err, false};
-            return c;
-        }
-    }
-    c.ok = true;
-    return c;
 }
 
 std::shared_ptr<const CrdReadResult> readSlrInput(const SlrSources& sources, SlrError* error, const Feedback* fb) {

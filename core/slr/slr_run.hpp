@@ -57,6 +57,9 @@ struct SlrSources {
     /// A pass with records the reader had to skip opens to be looked at (the workbench) instead
     /// of being refused; every writer still refuses it (PassData::damaged).
     bool openDamaged = false;
+    /// Read and check the files, open no pass (Python's read_crd, read_cpf and read_sinex):
+    /// loadSlrPass lists the input's blocks, and a prediction is checked without stations.
+    bool listOnly = false;
 };
 
 /// A problem with a run: what and where; `usage` when it is the caller's choice (exit 2: an
@@ -126,7 +129,9 @@ OpenedPass openPassOf(const SlrSetup& setup, const std::shared_ptr<const CrdRead
 /// One pass loaded from its sources, the load every front end that opens a pass shares
 /// (Python's load_pass, the workbench's open): setUpSlrRun, then openPass. ok false with
 /// `error`; `setup` is set when the set-up succeeded, `opened` when the file was read (its
-/// passes listed even when the one asked for cannot open).
+/// passes listed even when the one asked for cannot open). With sources.listOnly the input's
+/// blocks are listed (opened.passes, opened.crd) and none is opened; the set-up's predictions
+/// hold the CPF and stations as read.
 struct LoadedSlrPass {
     bool ok = false;
     SlrError error;
@@ -135,18 +140,6 @@ struct LoadedSlrPass {
     OpenedPass opened;
 };
 LoadedSlrPass loadSlrPass(const SlrSources& sources, const Feedback* fb = nullptr);
-
-/// What the files of `sources` hold, read as a run's set-up reads them (Python's read_crd,
-/// read_cpf and read_sinex): the passes of `input` (readSlrInput), the CPF of `cpf` and the
-/// stations of `stations` (readPassSources; a CPF here is checked without stations). Each only
-/// when given. ok false with `error` (FILE:LINE) at the first that cannot be read.
-struct SlrSourceContents {
-    bool ok = false;
-    SlrError error;
-    std::vector<PassSummary> passes;
-    PassSources predictions;
-};
-SlrSourceContents readSlrSourceContents(const SlrSources& sources, const Feedback* fb = nullptr);
 
 /// PassTask on an opened pass with its resolved parameters (and the setup's search threads).
 PassRunResult runOpenedPass(const PassData& pass, const PassSettings& settings, const SlrSetup& setup,
