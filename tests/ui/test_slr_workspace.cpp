@@ -8,6 +8,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QScreen>
 #include <QSignalSpy>
@@ -1383,6 +1384,16 @@ private slots:
             QStringList said;
             for (const QLabel* l : refused.findChildren<QLabel*>()) said << l->text();
             QVERIFY2(said.filter("Stopped: ").size() == 1 && said.filter("bad-presets.json").size() >= 1, qPrintable(said.join(" | ")));
+            // (a real window showed every row "waiting" under "Stopped", and its products offered)
+            for (int r = 0; r < refused.table()->rowCount(); ++r)
+                QCOMPARE(refused.table()->item(r, SlrAllPassesDialog::column("status"))->text(), QString("not run"));
+            int products = 0;
+            for (const QPushButton* b : refused.findChildren<QPushButton*>())
+                if (b->text().startsWith("Export products")) {
+                    QVERIFY(!b->isEnabled());
+                    ++products;
+                }
+            QCOMPARE(products, 1);
         }
         const int colStatus = SlrAllPassesDialog::column("status"), colReason = SlrAllPassesDialog::column("reason"),
                   colAccepted = SlrAllPassesDialog::column("accepted"), colRms = SlrAllPassesDialog::column("rms_mm"),

@@ -243,13 +243,15 @@ void SlrAllPassesDialog::runDone(const DayResult& result, const QString& outDir)
     m_exporting = false;
     m_finished = true;
     m_cancelButton->setEnabled(false);
-    if (result.cancelled)
+    // Blocks never reached: cancelled, or not run when the run stopped before them (a presets
+    // file it could not read: seen in a real window, the rows said "waiting" under "Stopped").
+    if (result.cancelled || !result.ok)
         for (int r = 0; r < m_total; ++r)
             if (m_rows[size_t(r)].status == kWaiting) {
-                m_rows[size_t(r)].status = "cancelled";
-                m_table->item(r, column("status"))->setText(tr("cancelled"));
+                m_rows[size_t(r)].status = result.cancelled ? "cancelled" : "not run";
+                m_table->item(r, column("status"))->setText(result.cancelled ? tr("cancelled") : tr("not run"));
             }
-    m_productsButton->setEnabled(!result.cancelled || exporting);
+    m_productsButton->setEnabled((!result.cancelled && result.ok) || exporting);
     if (exporting) {
         const QString msg = result.ok ? tr("Wrote %1 files into %2").arg(result.written.size()).arg(outDir)
                                       : tr("Products not written: %1").arg(QString::fromStdString(result.error.message));
