@@ -3310,6 +3310,10 @@
         <translation>已取消</translation>
     </message>
     <message>
+        <source>not run</source>
+        <translation>未运行</translation>
+    </message>
+    <message>
         <source>Wrote %1 files into %2</source>
         <translation>已将 %1 个文件写入 %2</translation>
     </message>
