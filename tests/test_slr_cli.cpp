@@ -281,6 +281,7 @@ private slots:
         const CrdPass& bp = back.file.passes.front();
         QCOMPARE(bp.ranges.size(), sp.ranges.size());
         QCOMPARE(bp.records.size(), sp.records.size());
+        QCOMPARE(bp.rangeLines.size(), sp.rangeLines.size());
         for (size_t i = 0; i < bp.ranges.size(); ++i) {
             QCOMPARE(bp.ranges[i].filterFlag, rows[i].kept ? 2 : 1);
             QCOMPARE(bp.ranges[i].tofS, sp.ranges[i].tofS);

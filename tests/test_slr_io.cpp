@@ -117,10 +117,11 @@ QString streamDiff(const QString& path) {
         const CrdPass &a = got[i], &b = r.file.passes[i];
         const QString at = QString("pass %1: ").arg(i + 1);
         if (a.ordinal != i + 1 || b.ordinal != i + 1) return at + "ordinal";
-        if (a.records.size() != b.records.size()) return at + "record count";
-        for (size_t k = 0; k < a.records.size(); ++k)
-            if (a.records[k].text != b.records[k].text || a.records[k].line != b.records[k].line || a.records[k].id != b.records[k].id)
-                return at + QString("record %1 (line %2)").arg(k).arg(b.records[k].line);
+        const std::vector<CrdRecord> ar = allRecords(a), br = allRecords(b);
+        if (ar.size() != br.size()) return at + "record count";
+        for (size_t k = 0; k < ar.size(); ++k)
+            if (ar[k].text != br[k].text || ar[k].line != br[k].line || ar[k].id != br[k].id)
+                return at + QString("record %1 (line %2)").arg(k).arg(br[k].line);
         if (a.ranges.size() != b.ranges.size() || a.normalPoints.size() != b.normalPoints.size()) return at + "parsed counts";
         for (size_t k = 0; k < a.ranges.size(); ++k)
             if (a.ranges[k].secOfDay != b.ranges[k].secOfDay || a.ranges[k].tofS != b.ranges[k].tofS)
@@ -270,7 +271,7 @@ private slots:
         QCOMPARE(static_cast<int>(countParsed<CrdSystemConfig>(r.file, &CrdPass::configs)), countLines(raw, "c0"));
         // Every line is kept: records of all passes + trailer == lines of the file.
         size_t lines = r.file.trailer.size();
-        for (const auto& p : r.file.passes) lines += p.records.size();
+        for (const auto& p : r.file.passes) lines += p.records.size() + p.rangeLines.size();
         QCOMPARE(static_cast<int>(lines), static_cast<int>(raw.count('\n') + (raw.endsWith('\n') ? 0 : 1)));
         // Filter flags against an independent count.
         QCOMPARE(static_cast<int>(countRanges(r.file, 1)), countFlag(raw, 1));
@@ -284,9 +285,9 @@ private slots:
             QVERIFY(validDate(p.session.startYear, p.session.startMonth, p.session.startDay));
             QVERIFY(!p.ranges.empty() || !p.normalPoints.empty());
             for (const auto& x : p.ranges) {
-                QVERIFY(x.record < p.records.size());
-                QCOMPARE(p.records[x.record].id, std::string("10"));
-                QCOMPARE(p.records[x.record].line, x.line);
+                QVERIFY(x.record < p.rangeLines.size());
+                QCOMPARE(p.rangeLines.line(x.record), x.line);
+                QVERIFY(p.rangeLines.text(x.record).substr(0, 2) == "10");
             }
         }
     }
@@ -383,7 +384,7 @@ private slots:
         QVERIFY2(r.ok, r.error.c_str());
         std::set<std::string> ids;
         for (const auto& p : r.file.passes)
-            for (const auto& rec : p.records) ids.insert(rec.id);
+            for (const auto& rec : allRecords(p)) ids.insert(rec.id);
         for (const auto& rec : r.file.trailer) ids.insert(rec.id);
         for (const char* id : {"h1", "h2", "h3", "h4", "h5", "h8", "h9", "c0", "c1", "c2", "c3", "c4", "c5", "c6", "c7",
                                "10", "11", "12", "20", "21", "30", "40", "41", "42", "50", "91", "92", "93", "00"})
@@ -491,10 +492,11 @@ private slots:
         QCOMPARE(b.file.passes.size(), a.file.passes.size());
         for (size_t k = 0; k < a.file.passes.size(); ++k) {
             const CrdPass &pa = a.file.passes[k], &pb = b.file.passes[k];
-            QCOMPARE(pb.records.size(), pa.records.size());
-            for (size_t i = 0; i < pa.records.size(); ++i) {
-                QCOMPARE(pb.records[i].text, pa.records[i].text);
-                QCOMPARE(pb.records[i].line, pa.records[i].line);
+            const std::vector<CrdRecord> ra = allRecords(pa), rb = allRecords(pb);
+            QCOMPARE(rb.size(), ra.size());
+            for (size_t i = 0; i < ra.size(); ++i) {
+                QCOMPARE(rb[i].text, ra[i].text);
+                QCOMPARE(rb[i].line, ra[i].line);
             }
             QCOMPARE(pb.ranges.size(), pa.ranges.size());
             for (size_t i = 0; i < pa.ranges.size(); ++i) {
@@ -598,24 +600,25 @@ private slots:
         QVERIFY2(b.ok, b.error.c_str());
         QCOMPARE(countRanges(b.file, 2), size_t(200));
         QCOMPARE(countRanges(b.file, 1), size_t(59));
-        const CrdPass& q = b.file.passes.front();
-        QCOMPARE(q.records.size(), before.records.size());
-        for (size_t i = 0; i < q.records.size(); ++i) {
-            if (q.records[i].id != "10") {
-                QCOMPARE(q.records[i].text, before.records[i].text);
+        const std::vector<CrdRecord> q = allRecords(b.file.passes.front()), was = allRecords(before);
+        QCOMPARE(q.size(), was.size());
+        for (size_t i = 0; i < q.size(); ++i) {
+            if (q[i].id != "10") {
+                QCOMPARE(q[i].text, was[i].text);
                 continue;
             }
             // Same fields except the 6th; same spacing.
-            QStringList fa = QString::fromStdString(before.records[i].text).split(' ');
-            QStringList fb = QString::fromStdString(q.records[i].text).split(' ');
+            QStringList fa = QString::fromStdString(was[i].text).split(' ');
+            QStringList fb = QString::fromStdString(q[i].text).split(' ');
             QCOMPARE(fb.size(), fa.size());
             int diffs = 0;
             for (int k = 0; k < fa.size(); ++k) diffs += fa[k] != fb[k];
             QCOMPARE(diffs, 1);
         }
-        for (size_t i = 0; i < q.ranges.size(); ++i) {
-            QCOMPARE(q.ranges[i].filterFlag, flags[i]);
-            QCOMPARE(q.ranges[i].tofS, before.ranges[i].tofS);
+        const CrdPass& qp = b.file.passes.front();
+        for (size_t i = 0; i < qp.ranges.size(); ++i) {
+            QCOMPARE(qp.ranges[i].filterFlag, flags[i]);
+            QCOMPARE(qp.ranges[i].tofS, before.ranges[i].tofS);
         }
     }
 

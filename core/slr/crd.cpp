@@ -127,7 +127,7 @@ bool idIsValid(std::string_view id) {
 }
 
 /// Start and end of blank-separated token k of a line (npos when absent).
-bool tokenSpan(const std::string& s, size_t k, size_t* b, size_t* e) {
+bool tokenSpan(std::string_view s, size_t k, size_t* b, size_t* e) {
     size_t i = 0, idx = 0;
     while (i < s.size()) {
         while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
@@ -461,8 +461,16 @@ template <> struct ItemOf<CrdRanges> { using type = CrdRange; };
 template <class T> void eraseAt(std::vector<T>& v, size_t k) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(k)); }
 void eraseAt(CrdRanges& v, size_t k) { v.erase(k); }
 
+// A line to parse: a record's or a type-10 line's.
+struct CrdLine {
+    std::string_view text;
+    long line = 0;
+    CrdLine(std::string_view t, long l) : text(t), line(l) {}
+    CrdLine(const CrdRecord& r) : text(r.text), line(r.line) {}
+};
+
 template <class List, class Parse, class Rec = typename ItemOf<List>::type>
-void addRecord(Parse parse, const CrdRecord& r, size_t i, const std::string& src, Sink* sink, const char* what,
+void addRecord(Parse parse, const CrdLine& r, size_t i, const std::string& src, Sink* sink, const char* what,
                List& list, std::vector<long>& skipped, Rec x = Rec{}) {
     std::string why;
     if (!parse(Fields(r.text), &x, &why)) {
@@ -497,13 +505,18 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
     std::vector<std::string> again;
     Sink quiet{&again, 0};
     bool sawH4 = false;
-    {  // the range records counted first: one allocation, no growth (a pass of 10^6 ranges held
-       // up to 1.5 copies of its ranges while the vector doubled)
-        size_t n10 = 0;
-        for (const CrdRecord& r : p->records) n10 += r.id == "10";
-        p->ranges.reserve(n10);
-    }
-    for (size_t i = 0; i < p->records.size(); ++i) {
+    // (the ranges allocated once: a pass of 10^6 ranges held up to 1.5 copies of its ranges while
+    // the vector doubled)
+    const CrdRangeLines& lines = p->rangeLines;
+    p->ranges.reserve(lines.size());
+    size_t k = 0;  // the type-10 lines, each parsed where it stands among the records
+    auto rangesBefore = [&](size_t slot) {
+        for (; k < lines.size() && lines.slot(k) <= slot; ++k)
+            addRecord(parse10, CrdLine{lines.text(k), lines.line(k)}, k, src, sink, "type 10", p->ranges, p->skippedLines);
+    };
+    for (size_t i = 0; i <= p->records.size(); ++i) {
+        rangesBefore(i);
+        if (i == p->records.size()) break;
         const CrdRecord& r = p->records[i];
         const std::string& id = r.id;
         if (id.empty() || id == "00" || id[0] == '9') continue;
@@ -525,8 +538,6 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
             p->predictionHeader = r.text;
         } else if (id == "c0") {
             addRecord(parseC0, r, i, src, sink, "C0", p->configs, p->skippedLines);
-        } else if (id == "10") {
-            addRecord(parse10, r, i, src, sink, "type 10", p->ranges, p->skippedLines);
         } else if (id == "11") {
             addRecord(parse11, r, i, src, sink, "type 11", p->normalPoints, p->skippedLines);
         } else if (id == "12") {
@@ -589,6 +600,15 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
 }
 
 
+// The lines from an H4 to the next one (or the end), and their bytes (without line ends).
+struct LinesAfterH4 {
+    size_t lines = 0, bytes = 0;
+    void count(std::string_view line) {
+        ++lines;
+        bytes += line.size();
+    }
+};
+
 // parseCrd, stage 1: the records grouped into passes. A pass opens at H4 with the H1/H2/H3 in
 // force and closes at H8 (or, with a warning, at the next header or at the end of the file);
 // comments, blank lines and user records outside a pass go with what follows.
@@ -646,7 +666,8 @@ public:
                               : "before the H1 format header (not a CRD file, or its header is missing)");
             return false;
         }
-        open_->records.push_back(std::move(rec));
+        if (id == "10") open_->rangeLines.add(rec.text, rec.line, open_->records.size());
+        else open_->records.push_back(std::move(rec));
         return true;
     }
 
@@ -706,7 +727,7 @@ private:
         own_[0] = own_[1] = own_[2] = false;
         open_->records = std::move(pending_);
         pending_.clear();
-        if (opened_ < linesAfterH4_.size()) open_->records.reserve(open_->records.size() + linesAfterH4_[opened_]);
+        if (opened_ < linesAfterH4_.size()) open_->rangeLines.reserve(linesAfterH4_[opened_].lines, linesAfterH4_[opened_].bytes);
         open_->ordinal = ++opened_;
         open_->records.push_back(std::move(rec));
         return true;
@@ -727,12 +748,13 @@ public:
         return out;
     }
 
-    /// Capacity hints: the lines from each H4 to the next (countLinesAfterH4), so that a pass's
-    /// records are allocated once instead of doubling (a 3·10^6-record pass held 1.5 copies).
-    void setCapacityHints(std::vector<size_t> linesAfterH4) { linesAfterH4_ = std::move(linesAfterH4); }
+    /// Capacity hints: the lines (and their bytes) from each H4 to the next (countLinesAfterH4),
+    /// so that a pass's type-10 lines are allocated once instead of doubling (a 3·10^6-record
+    /// pass held 1.5 copies).
+    void setCapacityHints(std::vector<LinesAfterH4> linesAfterH4) { linesAfterH4_ = std::move(linesAfterH4); }
 
 private:
-    std::vector<size_t> linesAfterH4_;
+    std::vector<LinesAfterH4> linesAfterH4_;
     size_t opened_ = 0;
 
     const std::string& src_;
@@ -756,14 +778,14 @@ bool isH4Line(std::string_view line) {
 }
 
 // The number of lines from each line that starts an H4 record to the next such line (or the end).
-std::vector<size_t> countLinesAfterH4(std::string_view text) {
-    std::vector<size_t> counts;
+std::vector<LinesAfterH4> countLinesAfterH4(std::string_view text) {
+    std::vector<LinesAfterH4> counts;
     size_t pos = 0;
     while (pos < text.size()) {
         const size_t end = text.find('\n', pos);
         const std::string_view line = text.substr(pos, end == std::string_view::npos ? std::string_view::npos : end - pos);
-        if (isH4Line(line)) counts.push_back(0);
-        if (!counts.empty()) ++counts.back();
+        if (isH4Line(line)) counts.emplace_back();
+        if (!counts.empty()) counts.back().count(line);
         pos = end == std::string_view::npos ? text.size() : end + 1;
     }
     return counts;
@@ -933,6 +955,103 @@ size_t CrdRanges::bytes() const {
     return b;
 }
 
+// ---- CrdRangeLines ---------------------------------------------------------------------------
+
+size_t CrdRangeLines::runOf(size_t k) const {
+    // (the last run whose first line is at or before k)
+    const auto it = std::upper_bound(m_runs.begin(), m_runs.end(), k, [](size_t v, const Run& r) { return v < r.first; });
+    return static_cast<size_t>(it - m_runs.begin()) - 1;
+}
+
+std::string_view CrdRangeLines::text(size_t k) const {
+    const size_t b = m_runs[runOf(k)].base + m_start[k];
+    const size_t e = k + 1 < m_start.size() ? m_runs[runOf(k + 1)].base + m_start[k + 1] : m_text.size();
+    return std::string_view(m_text).substr(b, e - b);
+}
+
+long CrdRangeLines::line(size_t k) const {
+    const Run& r = m_runs[runOf(k)];
+    return r.firstLine + static_cast<long>(k - r.first);
+}
+
+size_t CrdRangeLines::slot(size_t k) const { return m_runs[runOf(k)].slot; }
+
+void CrdRangeLines::add(std::string_view text, long line, size_t slot) {
+    const size_t k = m_start.size();
+    const size_t at = m_text.size();
+    // A new run where the line is not the next one of the last run, or its offset would not fit
+    // in 32 bits.
+    if (m_runs.empty() || m_runs.back().slot != slot || this->line(k - 1) + 1 != line ||
+        at - m_runs.back().base > UINT32_MAX)
+        m_runs.push_back(Run{k, slot, line, at});
+    m_start.push_back(static_cast<uint32_t>(at - m_runs.back().base));
+    m_text.append(text);
+}
+
+void CrdRangeLines::reserve(size_t lines, size_t bytes) {
+    m_start.reserve(lines);
+    m_text.reserve(bytes);
+}
+
+bool CrdRangeLines::replaceField(size_t field, const std::function<std::optional<std::string>(size_t k)>& value) {
+    // In place where every new value is as long as the old one (a flag for a flag); else the
+    // buffer written anew.
+    std::vector<std::optional<std::string>> values(size());
+    bool sameLength = true;
+    for (size_t k = 0; k < size(); ++k) {
+        values[k] = value(k);
+        if (!values[k]) continue;
+        size_t b = 0, e = 0;
+        if (!tokenSpan(text(k), field, &b, &e)) return false;
+        sameLength = sameLength && values[k]->size() == e - b;
+    }
+    if (sameLength) {
+        for (size_t k = 0; k < size(); ++k) {
+            if (!values[k]) continue;
+            const std::string_view t = text(k);
+            size_t b = 0, e = 0;
+            tokenSpan(t, field, &b, &e);
+            const size_t at = static_cast<size_t>(t.data() - m_text.data()) + b;
+            m_text.replace(at, e - b, *values[k]);
+        }
+        return true;
+    }
+    CrdRangeLines out;
+    out.reserve(size(), m_text.size() + size());
+    for (size_t k = 0; k < size(); ++k) {
+        std::string t(text(k));
+        if (values[k]) replaceToken(&t, field, *values[k]);
+        out.add(t, line(k), slot(k));
+    }
+    *this = std::move(out);
+    return true;
+}
+
+size_t CrdRangeLines::bytes() const {
+    return m_text.capacity() + m_start.capacity() * sizeof(uint32_t) + m_runs.capacity() * sizeof(Run);
+}
+
+std::vector<CrdRecord> allRecords(const CrdPass& pass) {
+    std::vector<CrdRecord> out;
+    out.reserve(pass.records.size() + pass.rangeLines.size());
+    const CrdRangeLines& L = pass.rangeLines;
+    size_t k = 0;
+    for (size_t i = 0; i <= pass.records.size(); ++i) {
+        for (; k < L.size() && L.slot(k) <= i; ++k) out.push_back(CrdRecord{std::string(L.text(k)), "10", L.line(k)});
+        if (i < pass.records.size()) out.push_back(pass.records[i]);
+    }
+    return out;
+}
+
+void setAllRecords(CrdPass* pass, std::vector<CrdRecord> lines) {
+    pass->records.clear();
+    pass->rangeLines.clear();
+    for (CrdRecord& r : lines) {
+        if (r.id == "10") pass->rangeLines.add(r.text, r.line, pass->records.size());
+        else pass->records.push_back(std::move(r));
+    }
+}
+
 long CrdPass::startMjd() const { return mjdFromDate(session.startYear, session.startMonth, session.startDay); }
 
 double CrdPass::passSeconds(double secOfDay) const {
@@ -1029,7 +1148,7 @@ CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, 
         // Read 1 (the first 10 % of the progress): the passes counted, the lines of each (capacity
         // hints), and what makes the whole file unreadable found before any pass is handed out:
         // binary data, nothing but blank lines.
-        std::vector<size_t> linesAfterH4;
+        std::vector<LinesAfterH4> linesAfterH4;
         {
             core::LineReader lr;
             if (!lr.open(path)) {
@@ -1044,8 +1163,8 @@ CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, 
                     return out;
                 }
                 anyText = anyText || !core::trim(line).empty();
-                if (isH4Line(line)) linesAfterH4.push_back(0);
-                if (!linesAfterH4.empty()) ++linesAfterH4.back();
+                if (isH4Line(line)) linesAfterH4.emplace_back();
+                if (!linesAfterH4.empty()) linesAfterH4.back().count(line);
                 if ((lr.lineNumber() & 0x3fff) == 0 && feedback) {
                     if (feedback->isCancelled()) {
                         out.error = src + ": cancelled";
@@ -1132,24 +1251,122 @@ CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, 
 
 // ---- writing ---------------------------------------------------------------------------------
 
-std::string formatCrd(const CrdFile& file) {
-    const char* eol = file.crlf ? "\r\n" : "\n";
-    size_t n = 0;
-    for (const auto& p : file.passes)
-        for (const auto& r : p.records) n += r.text.size() + 2;
-    for (const auto& r : file.trailer) n += r.text.size() + 2;
-    std::string out;
-    out.reserve(n);
-    for (const auto& p : file.passes)
-        for (const auto& r : p.records) {
-            out += r.text;
-            out += eol;
-        }
-    for (const auto& r : file.trailer) {
-        out += r.text;
-        out += eol;
+namespace {
+
+// The type-10 lines' new flags from one flag a range (as setFilterFlags takes them): -1 where a
+// line has no range (the reader could not parse it: it keeps its text). False with *error when
+// the flags do not fit the pass.
+bool lineFlagsOf(const CrdPass& pass, const std::vector<int>& flags, std::vector<int8_t>* lineFlag, std::string* error) {
+    if (flags.size() != pass.ranges.size()) {
+        *error = "setFilterFlags: " + std::to_string(flags.size()) + " flags for " + std::to_string(pass.ranges.size()) +
+                 " type-10 records";
+        return false;
     }
+    lineFlag->assign(pass.rangeLines.size(), -1);
+    for (size_t i = 0; i < flags.size(); ++i) {
+        if (flags[i] < 0 || flags[i] > 2) {
+            *error = "setFilterFlags: flag " + std::to_string(flags[i]) + " at index " + std::to_string(i) +
+                     " (must be 0 unknown, 1 noise or 2 data)";
+            return false;
+        }
+        const size_t k = pass.ranges.record(i);
+        if (k >= lineFlag->size()) {
+            *error = "setFilterFlags: type-10 record " + std::to_string(i) + " has no line";
+            return false;
+        }
+        (*lineFlag)[k] = static_cast<int8_t>(flags[i]);
+    }
+    return true;
+}
+
+// The lines of a pass in order (its records with its type-10 lines in their slots) to emit(text);
+// where lineFlag (when given) has a flag for a type-10 line, the line is emitted with it as its
+// filter flag. False (*error) when such a line has no flag field.
+template <class Emit>
+bool emitPass(const CrdPass& p, const std::vector<int8_t>* lineFlag, Emit&& emit, std::string* error) {
+    const CrdRangeLines& L = p.rangeLines;
+    std::string buf;
+    size_t k = 0;
+    for (size_t i = 0; i <= p.records.size(); ++i) {
+        for (; k < L.size() && L.slot(k) <= i; ++k) {
+            if (!lineFlag || (*lineFlag)[k] < 0) {
+                emit(L.text(k));
+                continue;
+            }
+            buf.assign(L.text(k));
+            if (!replaceToken(&buf, 5, std::to_string((*lineFlag)[k]))) {
+                *error = "line " + std::to_string(L.line(k)) + ": a type-10 record without a filter flag field";
+                return false;
+            }
+            emit(std::string_view(buf));
+        }
+        if (i < p.records.size()) emit(std::string_view(p.records[i].text));
+    }
+    return true;
+}
+
+}  // namespace
+
+std::string formatCrd(const CrdFile& file) {
+    const std::string eol = file.crlf ? "\r\n" : "\n";
+    size_t n = 0;
+    for (const auto& p : file.passes) {
+        for (const auto& r : p.records) n += r.text.size() + 2;
+        n += p.rangeLines.bytes() + 2 * p.rangeLines.size();
+    }
+    for (const auto& r : file.trailer) n += r.text.size() + 2;
+    std::string out, unused;
+    out.reserve(n);
+    auto put = [&](std::string_view t) {
+        out += t;
+        out += eol;
+    };
+    for (const auto& p : file.passes) emitPass(p, nullptr, put, &unused);
+    for (const auto& r : file.trailer) put(r.text);
     return out;
+}
+
+bool writeCrdWithFlags(const std::string& path, const CrdFile& file, size_t passIndex, const std::vector<int>& flags,
+                       bool alone, std::string* error) {
+    try {
+        if (passIndex >= file.passes.size()) {
+            *error = path + ": no pass " + std::to_string(passIndex + 1) + " in the file";
+            return false;
+        }
+        const CrdPass& pass = file.passes[passIndex];
+        std::vector<int8_t> lineFlag;
+        if (!lineFlagsOf(pass, flags, &lineFlag, error)) return false;
+        AtomicFile f(path);
+        if (!f.ok()) {
+            *error = f.error();
+            return false;
+        }
+        std::ostream& o = f.stream();
+        const std::string eol = (alone ? pass.crlf : file.crlf) ? "\r\n" : "\n";
+        auto put = [&](std::string_view t) {
+            o.write(t.data(), static_cast<std::streamsize>(t.size()));
+            o.write(eol.data(), static_cast<std::streamsize>(eol.size()));
+        };
+        bool ok = true;
+        std::string why;
+        for (size_t k = 0; k < file.passes.size() && ok; ++k)
+            if (!alone || k == passIndex) ok = emitPass(file.passes[k], k == passIndex ? &lineFlag : nullptr, put, &why);
+        if (!ok) {
+            *error = path + ": " + why;
+            return false;  // (the AtomicFile removes its temporary)
+        }
+        if (alone) put(trailerFor(pass).text);
+        else
+            for (const auto& r : file.trailer) put(r.text);
+        if (!f.commit()) {
+            *error = f.error();
+            return false;
+        }
+        return true;
+    } catch (const std::exception& e) {
+        *error = path + ": " + e.what();
+        return false;
+    }
 }
 
 CrdRecord trailerFor(const CrdPass& pass) {
@@ -1180,25 +1397,17 @@ bool writeCrd(const std::string& path, const CrdFile& file, std::string* error) 
 }
 
 bool setFilterFlags(CrdPass* pass, const std::vector<int>& flags, std::string* error) {
-    if (flags.size() != pass->ranges.size()) {
-        *error = "setFilterFlags: " + std::to_string(flags.size()) + " flags for " + std::to_string(pass->ranges.size()) +
-                 " type-10 records";
+    std::vector<int8_t> lineFlag;
+    if (!lineFlagsOf(*pass, flags, &lineFlag, error)) return false;
+    const bool ok = pass->rangeLines.replaceField(5, [&](size_t k) -> std::optional<std::string> {
+        if (lineFlag[k] < 0) return std::nullopt;
+        return std::to_string(lineFlag[k]);
+    });
+    if (!ok) {
+        *error = "setFilterFlags: a type-10 record has no filter flag field";
         return false;
     }
-    for (size_t i = 0; i < flags.size(); ++i)
-        if (flags[i] < 0 || flags[i] > 2) {
-            *error = "setFilterFlags: flag " + std::to_string(flags[i]) + " at index " + std::to_string(i) +
-                     " (must be 0 unknown, 1 noise or 2 data)";
-            return false;
-        }
-    for (size_t i = 0; i < flags.size(); ++i) {
-        const size_t rec = pass->ranges.record(i);
-        if (rec >= pass->records.size() || !replaceToken(&pass->records[rec].text, 5, std::to_string(flags[i]))) {
-            *error = "setFilterFlags: type-10 record " + std::to_string(i) + " has no filter flag field";
-            return false;
-        }
-        pass->ranges.setFilterFlag(i, flags[i]);
-    }
+    for (size_t i = 0; i < flags.size(); ++i) pass->ranges.setFilterFlag(i, flags[i]);
     return true;
 }
 
@@ -1273,7 +1482,7 @@ bool setNormalPoints(CrdPass* pass, const std::vector<CrdNormalPoint>& nps, Norm
     try {
         if (!checkNormalPoints(nps, error)) return false;
         CrdPass work = *pass;  // the pass changes only when everything succeeded
-        std::vector<CrdRecord>& recs = work.records;
+        std::vector<CrdRecord> recs = allRecords(work);
         size_t insertAt = std::string::npos;
         if (mode == NormalPointMode::Replace) {
             std::vector<CrdRecord> kept;
@@ -1301,6 +1510,7 @@ bool setNormalPoints(CrdPass* pass, const std::vector<CrdNormalPoint>& nps, Norm
         std::vector<CrdRecord> add;
         for (const auto& n : nps) add.push_back(CrdRecord{formatNormalPointRecord(n, work.format.version), "11", 0});
         recs.insert(recs.begin() + static_cast<long>(insertAt), add.begin(), add.end());
+        setAllRecords(&work, std::move(recs));
         size_t expected = nps.size();
         if (mode == NormalPointMode::Append) expected += pass->normalPoints.size();
         if (!reparse(&work, error)) return false;

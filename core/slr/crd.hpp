@@ -27,6 +27,7 @@
 #include <cstring>
 #include <functional>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -147,7 +148,7 @@ struct CrdRange {
     int stopNumber = kCrdAbsent;
     double receiveAmplitude = NAN;   ///< receive amplitude (mV or linear count), NaN when absent
     double transmitAmplitude = NAN;  ///< v2 transmit amplitude, NaN when absent
-    size_t record = 0;       ///< index into CrdPass::records
+    size_t record = 0;       ///< index into CrdPass::rangeLines (its line's text)
     long line = 0;           ///< source line
 };
 
@@ -325,6 +326,40 @@ struct CrdCalibration {
     long line = 0;
 };
 
+/// A pass's type-10 lines, held apart from its other records (issue 44: a CrdRecord a line was
+/// 112 bytes of every event): their texts one after another in one buffer, a 4-byte offset a
+/// line, and runs of consecutive lines each with its place among the records (its slot: the
+/// run is written before records[slot]) and its first source line. Lines a reader could not
+/// parse are kept too (written back as they were).
+class CrdRangeLines {
+public:
+    size_t size() const { return m_start.size(); }
+    bool empty() const { return m_start.empty(); }
+    std::string_view text(size_t k) const;
+    long line(size_t k) const;
+    size_t slot(size_t k) const;
+    /// Adds a line after the others (slot: the number of records before it).
+    void add(std::string_view text, long line, size_t slot);
+    void reserve(size_t lines, size_t bytes);
+    /// Replaces field `field` (0-based, blank-separated) of every line k with value(k) (a
+    /// nullopt keeps it). False when a line has no such field (nothing is changed then).
+    bool replaceField(size_t field, const std::function<std::optional<std::string>(size_t k)>& value);
+    size_t bytes() const;
+    void clear() { *this = CrdRangeLines(); }
+
+private:
+    struct Run {
+        size_t first = 0;      // its first line's index
+        size_t slot = 0;
+        long firstLine = 0;
+        size_t base = 0;       // the offset its lines' starts are counted from
+    };
+    size_t runOf(size_t k) const;
+    std::string m_text;
+    std::vector<uint32_t> m_start;  // each line's start, from its run's base
+    std::vector<Run> m_runs;
+};
+
 /// One pass: an H4 ... H8 block with the lines that precede it.
 struct CrdPass {
     CrdFormatHeader format;          ///< from this block's H1 or the last one before it
@@ -337,9 +372,12 @@ struct CrdPass {
     size_t ordinal = 0;              ///< its place among the file's passes, 1-based (0: made, not read)
     bool crlf = false;               ///< its file used CRLF line ends (a pass written alone keeps them)
 
-    /// Every line of the block in order: comments and H1..H3 before the H4, the H4, configs,
-    /// data, 9x user records, the H8. Writing these back reproduces the block.
+    /// Every line of the block in order but its type-10 ones: comments and H1..H3 before the
+    /// H4, the H4, configs, other data, 9x user records, the H8. With rangeLines in their slots
+    /// (allRecords) writing them back reproduces the block.
     std::vector<CrdRecord> records;
+    /// The block's type-10 lines, each with its place among `records`.
+    CrdRangeLines rangeLines;
 
     std::vector<CrdSystemConfig> configs;
     CrdRanges ranges;                           ///< type 10, in file order
@@ -365,6 +403,12 @@ struct CrdPass {
     /// C0 record for a system configuration id, or nullptr (ids compare case-insensitively).
     const CrdSystemConfig* config(const std::string& systemId) const;
 };
+
+/// Every line of a pass in its order (records and rangeLines merged), as records.
+std::vector<CrdRecord> allRecords(const CrdPass& pass);
+/// The pass's lines from `lines` (every line in order, as allRecords gives them): type-10 ones
+/// into rangeLines, the others into records.
+void setAllRecords(CrdPass* pass, std::vector<CrdRecord> lines);
 
 struct CrdFile {
     std::string path;                ///< as given to the reader ("" for text)
@@ -423,6 +467,12 @@ CrdRecord trailerFor(const CrdPass& pass);
 /// Writes formatCrd(file) atomically. False with *error on failure.
 bool writeCrd(const std::string& path, const CrdFile& file, std::string* error);
 
+/// Writes formatCrd(file) (alone: formatCrd(passAlone(pass))) with the filter flags of pass
+/// `passIndex`'s type-10 records set to `flags` as setFilterFlags sets them, streamed to a
+/// temporary renamed over `path` when complete: neither the file nor its text is copied (a
+/// flagged pass of 10^7 events cost two copies of its lines). False with *error, nothing written.
+bool writeCrdWithFlags(const std::string& path, const CrdFile& file, size_t passIndex, const std::vector<int>& flags,
+                       bool alone, std::string* error);
 /// Sets the filter flag (0 unknown, 1 noise, 2 data) of every type-10 record of the pass, in
 /// order; flags.size() must equal pass->ranges.size(). Only the flag field of each line changes.
 bool setFilterFlags(CrdPass* pass, const std::vector<int>& flags, std::string* error);

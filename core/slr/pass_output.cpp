@@ -128,22 +128,20 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
 }
 
 bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::vector<uint8_t>& accepted,
-                      std::string* error) {
+                      std::string* error, bool alone) {
     if (!pass.hasCrd) {
         *error = "the pass did not come from a CRD file; there is nothing to write flags into";
         return false;
     }
     if (!writablePassOutput(path, pass, error)) return false;
-    CrdFile out = *pass.crd;
-    CrdPass& p = out.passes[size_t(pass.passIndex)];
+    const CrdPass& p = pass.crd->passes[size_t(pass.passIndex)];
     // Records that were not screened (no O-C: outside the prediction, one-way events) keep the
     // station's own flag; only the screened ones get 2 (accepted) or 1 (noise).
     std::vector<int> flags(p.ranges.size());
     for (size_t k = 0; k < p.ranges.size(); ++k) flags[k] = p.ranges.filterFlag(k);
     for (size_t i = 0; i < pass.rangeIndex.size() && i < accepted.size(); ++i)
         flags[pass.rangeIndex[i]] = accepted[i] ? 2 : 1;
-    if (!setFilterFlags(&p, flags, error)) return false;
-    return writeCrd(path, out, error);
+    return writeCrdWithFlags(path, *pass.crd, size_t(pass.passIndex), flags, alone, error);
 }
 
 NormalPointProduct normalPointProduct(const PostfitResult* post, const ScreenResult* screen, const std::string& noneReason) {

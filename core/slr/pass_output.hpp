@@ -21,9 +21,10 @@ namespace lwb::core::slr {
 bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenResult& screen,
                     const std::vector<PointClass>& classes, const PostfitResult* post, std::string* error);
 /// The pass as CRD full rate with filter flags 2 (accepted) / 1 (noise) on the screened records;
-/// records without an O-C keep their flag; other passes unchanged.
+/// records without an O-C keep their flag; other passes unchanged (alone: the pass alone, as
+/// passAlone gives it).
 bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::vector<uint8_t>& accepted,
-                      std::string* error);
+                      std::string* error, bool alone = false);
 /// What a normal-point file of ours says beyond its records (crd.hpp NormalPointProduct): why
 /// there are none ("" when there are), the post-fit's session statistics (record 50; quality 1
 /// when at most 10 % of the points are noise, else 2), the H1's production date

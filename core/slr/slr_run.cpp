@@ -379,17 +379,9 @@ bool stagePassProducts(const OutputSet& outs, const PassData& pass, const PassRu
         return false;
     }
     if (!paths.crd.empty()) {
-        // The pass alone (its own H9 and line ends, passAlone), or the whole file it came from.
-        PassData alone;
-        const PassData* target = &pass;
-        if (!paths.crdWholeFile && pass.hasCrd) {
-            alone.source = pass.source;
-            alone.hasCrd = true;
-            alone.crd = std::make_shared<const CrdFile>(passAlone(pass.crd->passes[size_t(pass.passIndex)]));
-            alone.rangeIndex = pass.rangeIndex;
-            target = &alone;
-        }
-        if (!writeScreenedCrd(outs.stagingPath(paths.crd), *target, deliveredFlags(r), error)) {
+        // The pass alone (its own H9 and line ends, as passAlone gives it), or the whole file it
+        // came from.
+        if (!writeScreenedCrd(outs.stagingPath(paths.crd), pass, deliveredFlags(r), error, !paths.crdWholeFile)) {
             *error = named(paths.crd, outs.unstaged(*error));
             return false;
         }
