@@ -284,10 +284,18 @@ private slots:
             QVERIFY(!p.target.name.empty());
             QVERIFY(validDate(p.session.startYear, p.session.startMonth, p.session.startDay));
             QVERIFY(!p.ranges.empty() || !p.normalPoints.empty());
+            // (a plain file's type-10 lines are read again from it: none is held in memory)
+            QVERIFY(p.rangeLines.empty() || !p.rangeLines.inMemory());
+            std::vector<std::string> texts;
+            CrdRangeLines::Reader rd(p.rangeLines);
+            std::string_view t;
+            while (rd.next(&t)) texts.emplace_back(t);
+            QVERIFY2(rd.error().empty(), rd.error().c_str());
+            QCOMPARE(texts.size(), p.rangeLines.size());
             for (const auto& x : p.ranges) {
                 QVERIFY(x.record < p.rangeLines.size());
                 QCOMPARE(p.rangeLines.line(x.record), x.line);
-                QVERIFY(p.rangeLines.text(x.record).substr(0, 2) == "10");
+                QVERIFY(texts[x.record].substr(0, 2) == "10");
             }
         }
     }
@@ -578,6 +586,88 @@ private slots:
         QVERIFY(leapSecondAtEndOf(mjdFromDate(1972, 6, 30)));
         QVERIFY(!leapSecondAtEndOf(mjdFromDate(2016, 12, 30)));
         QVERIFY(!leapSecondAtEndOf(mjdFromDate(2020, 12, 31)));
+    }
+
+    // Issue 44: a plain file's type-10 lines are not held in memory but read again from the file
+    // when written; what is written is what the same text held in memory gives (CRLF, a
+    // byte-order mark, no final line end, several passes). A gzip file, a CR-only text and a
+    // text given in memory keep their lines. A file changed or removed since it was read is
+    // refused with the reason, and nothing is written.
+    void typeTenLinesReadAgainFromTheirFile() {
+        QTemporaryDir dir;
+        QByteArray crlf = kGoodCrd, cr = kGoodCrd, twoPasses = kGoodCrd;
+        crlf.replace("\n", "\r\n");
+        cr.replace('\n', '\r');
+        twoPasses.chop(3);
+        twoPasses += "H4 0 2021 9 1 20 50 0 2021 9 1 20 51 0 0 0 0 0 1 0 2 1\n10 75000.5 0.0131 sys1 2 2 0 0 0 na\n"
+                     "20 75000.5 1013.2 288.1 50 0\n10 75001.5 0.0131 sys1 2 0 0 0 0 na\n10 75002.5 0.0131 sys1 2 0 0 0 0 na\nH8\nH9\n";
+        const QList<QPair<QString, QByteArray>> texts = {
+            {"good.frd", kGoodCrd}, {"crlf.frd", crlf}, {"cr.frd", cr}, {"bom.frd", "\xEF\xBB\xBF" + kGoodCrd},
+            {"nofinal.frd", kGoodCrd.left(kGoodCrd.size() - 1)}, {"blocks.frd", twoPasses}};
+        for (const auto& [name, text] : texts) {
+            const std::string path = lwbtest::str(dir.filePath(name));
+            QVERIFY(lwbtest::writeText(dir.filePath(name), text));
+            const bool plain = name != "cr.frd";
+            // What the same text held in memory gives, every range flagged noise.
+            CrdReadResult mem = parseCrd(text.toStdString(), path);
+            QVERIFY2(mem.ok, mem.error.c_str());
+            std::string err;
+            for (CrdPass& p : mem.file.passes) {
+                QVERIFY(p.rangeLines.inMemory());
+                QVERIFY2(setFilterFlags(&p, std::vector<int>(p.ranges.size(), 1), &err), err.c_str());
+            }
+            const std::string expected = formatCrd(mem.file);
+            QVERIFY(!expected.empty());
+            const CrdReadResult r = readCrd(path);
+            QVERIFY2(r.ok, r.error.c_str());
+            std::vector<CrdPass> streamed;
+            QVERIFY(streamCrd(path, {}, nullptr, {}, [&](CrdPass&& p) { streamed.push_back(std::move(p)); return true; }).ok);
+            QCOMPARE(streamed.size(), r.file.passes.size());
+            for (size_t k = 0; k < r.file.passes.size(); ++k) {
+                QCOMPARE(r.file.passes[k].rangeLines.inMemory(), !plain);
+                QCOMPARE(streamed[k].rangeLines.inMemory(), !plain);
+            }
+            // The whole file with every pass's flags set, one pass at a time, as written.
+            CrdFile flagged = r.file;
+            for (size_t k = 0; k < flagged.passes.size(); ++k) {
+                const std::string out = lwbtest::str(dir.filePath(name + QString(".%1.out").arg(k)));
+                const std::vector<int> flags(flagged.passes[k].ranges.size(), 1);
+                QVERIFY2(writeCrdWithFlags(out, flagged, k, flags, false, &err), err.c_str());
+                QVERIFY2(setFilterFlags(&flagged.passes[k], flags, &err), err.c_str());
+                QVERIFY(flagged.passes[k].rangeLines.inMemory());  // (read back to be changed)
+            }
+            QCOMPARE(formatCrd(flagged), expected);
+            const std::string last = lwbtest::str(dir.filePath(name + QString(".%1.out").arg(flagged.passes.size() - 1)));
+            if (flagged.passes.size() == 1) QCOMPARE(lwbtest::readAll(QString::fromStdString(last)).toStdString(), expected);
+            // Alone: the pass with its own H9.
+            const std::string alone = lwbtest::str(dir.filePath(name + ".alone"));
+            QVERIFY2(writeCrdWithFlags(alone, r.file, 0, std::vector<int>(r.file.passes[0].ranges.size(), 1), true, &err),
+                     err.c_str());
+            QCOMPARE(lwbtest::readAll(QString::fromStdString(alone)).toStdString(), formatCrd(passAlone(flagged.passes[0])));
+        }
+        // gzip keeps its lines in memory (they are not at offsets of the file).
+        QCOMPARE(QProcess::execute("sh", {"-c", "cd '" + dir.path() + "' && gzip -c good.frd > good.frd.gz"}), 0);
+        const CrdReadResult gz = readCrd(lwbtest::str(dir.filePath("good.frd.gz")));
+        QVERIFY2(gz.ok, gz.error.c_str());
+        QVERIFY(gz.file.passes[0].rangeLines.inMemory());
+        // Changed since it was read (a comment line added at the top), then removed: refused, nothing written.
+        const std::string moved = lwbtest::str(dir.filePath("moved.frd"));
+        QVERIFY(lwbtest::writeText(dir.filePath("moved.frd"), kGoodCrd));
+        const CrdReadResult before = readCrd(moved);
+        QVERIFY2(before.ok, before.error.c_str());
+        QVERIFY(lwbtest::writeText(dir.filePath("moved.frd"), "00 a comment\n" + kGoodCrd));
+        const std::string out = lwbtest::str(dir.filePath("moved.out"));
+        std::string err;
+        QVERIFY(!writeCrdWithFlags(out, before.file, 0, std::vector<int>(3, 1), false, &err));
+        QVERIFY2(err.find("moved.frd: the file changed since it was read") != std::string::npos, err.c_str());
+        QVERIFY(!QFile::exists(QString::fromStdString(out)));
+        QVERIFY(!writeCrd(out, before.file, &err));
+        QVERIFY(!QFile::exists(QString::fromStdString(out)));
+        QVERIFY(allRecords(before.file.passes[0], &err).empty());
+        QVERIFY(QFile::remove(dir.filePath("moved.frd")));
+        QVERIFY(!writeCrd(out, before.file, &err));
+        QVERIFY2(err.find("cannot read the file's type-10 records again") != std::string::npos, err.c_str());
+        QVERIFY(!QFile::exists(QString::fromStdString(out)));
     }
 
     void setFilterFlagsChangesOnlyTheFlag() {

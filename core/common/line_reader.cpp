@@ -28,6 +28,7 @@ bool LineReader::open(const std::string& path) {
     path_ = path;
     if (isStandardStream(path)) {
         // The standard input cannot be read twice: readFileText keeps it (decompressed when gzip).
+        stdin_ = true;
         if (!readFileText(path, &buf_, &error_)) return false;
         eofRaw_ = eofText_ = true;
         rawSize_ = rawRead_ = static_cast<long long>(buf_.size());
@@ -79,6 +80,7 @@ double LineReader::fraction() const {
 bool LineReader::fill() {
     if (eofText_) return false;
     // What is left moves to the front; then a block is appended.
+    bufStart_ += static_cast<long long>(pos_);
     buf_.erase(0, pos_);
     pos_ = 0;
     const size_t old = buf_.size();
@@ -171,6 +173,7 @@ bool LineReader::next(std::string_view* line) {
     for (;;) {
         const size_t end = buf_.find(eol, pos_);
         if (end != std::string::npos) {
+            lineOffset_ = bufStart_ + static_cast<long long>(pos_);
             *line = std::string_view(buf_).substr(pos_, end - pos_);
             pos_ = end + 1;
             ++line_;
@@ -184,6 +187,7 @@ bool LineReader::next(std::string_view* line) {
         if (eofText_ || !fill()) {
             if (!error_.empty()) return false;
             if (pos_ >= buf_.size()) return false;
+            lineOffset_ = bufStart_ + static_cast<long long>(pos_);
             *line = std::string_view(buf_).substr(pos_);  // the last line, without a line end
             pos_ = buf_.size();
             ++line_;

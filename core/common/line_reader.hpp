@@ -31,6 +31,9 @@ public:
 
     /// The number of the line `next` gave last (1-based).
     long lineNumber() const { return line_; }
+    /// Where that line starts in the file (bytes), or -1 when the lines are not at offsets of
+    /// the file: a gzip file, the standard input, a CR-only text.
+    long long lineOffset() const { return gzip_ || stdin_ || crOnly_ ? -1 : lineOffset_; }
     /// The share of the input read so far, 0..1 (of the compressed bytes for a gzip file).
     double fraction() const;
     const std::string& error() const { return error_; }
@@ -52,6 +55,9 @@ private:
     std::string buf_;  // text not yet handed out starts at pos_
     size_t pos_ = 0;
     long line_ = 0;
+    bool stdin_ = false;
+    long long bufStart_ = 0;    // the file offset of buf_[0] (a plain file)
+    long long lineOffset_ = -1;
 };
 
 }  // namespace lwb::core

@@ -6,8 +6,12 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <limits>
+
+#include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/line_reader.hpp"
@@ -510,12 +514,21 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
     const CrdRangeLines& lines = p->rangeLines;
     p->ranges.reserve(lines.size());
     size_t k = 0;  // the type-10 lines, each parsed where it stands among the records
+    CrdRangeLines::Reader rd(lines);
+    std::string_view text;
     auto rangesBefore = [&](size_t slot) {
-        for (; k < lines.size() && lines.slot(k) <= slot; ++k)
-            addRecord(parse10, CrdLine{lines.text(k), lines.line(k)}, k, src, sink, "type 10", p->ranges, p->skippedLines);
+        for (; k < lines.size() && lines.slot(k) <= slot; ++k) {
+            if (!rd.next(&text)) return false;
+            addRecord(parse10, CrdLine{text, lines.line(k)}, k, src, sink, "type 10", p->ranges, p->skippedLines);
+        }
+        return true;
     };
     for (size_t i = 0; i <= p->records.size(); ++i) {
-        rangesBefore(i);
+        if (!rangesBefore(i)) {
+            *error = rd.error();
+            clearParsed(p);
+            return false;
+        }
         if (i == p->records.size()) break;
         const CrdRecord& r = p->records[i];
         const std::string& id = r.id;
@@ -617,7 +630,7 @@ public:
     PassSplitter(const std::string& src, Sink* sink, CrdFile* file) : src_(src), sink_(sink), file_(file) {}
 
     // One record; false (and *error) when the file cannot be read as CRD from here.
-    bool add(CrdRecord rec, const Fields& fs, std::string* error) {
+    bool add(CrdRecord rec, const Fields& fs, std::string* error, long long fileOffset = -1) {
         const std::string& id = rec.id;
         const long lineNo = rec.line;
         if (id.empty() || id == "00") {  // blank or comment: belongs to whatever is open
@@ -666,7 +679,7 @@ public:
                               : "before the H1 format header (not a CRD file, or its header is missing)");
             return false;
         }
-        if (id == "10") open_->rangeLines.add(rec.text, rec.line, open_->records.size());
+        if (id == "10") open_->rangeLines.add(rec.text, rec.line, open_->records.size(), fileOffset);
         else open_->records.push_back(std::move(rec));
         return true;
     }
@@ -793,7 +806,8 @@ std::vector<LinesAfterH4> countLinesAfterH4(std::string_view text) {
 
 // One line of the text (without its LF) as a record through the splitter. Every trailing CR goes
 // (so a text never ends with one and LF/CRLF writing is unambiguous).
-bool feedLine(PassSplitter& splitter, std::string_view line, long lineNo, CrdReadResult* res) {
+// fileOffset: where the line starts in its file (-1: not a plain file's line).
+bool feedLine(PassSplitter& splitter, std::string_view line, long lineNo, CrdReadResult* res, long long fileOffset = -1) {
     if (!line.empty() && line.back() == '\r' && lineNo == 1) res->file.crlf = true;
     while (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     CrdRecord rec;
@@ -801,12 +815,15 @@ bool feedLine(PassSplitter& splitter, std::string_view line, long lineNo, CrdRea
     rec.line = lineNo;
     const Fields fs(line);
     rec.id = fs.n ? toLower(fs.f[0]) : std::string();
-    return splitter.add(std::move(rec), fs, &res->error);
+    return splitter.add(std::move(rec), fs, &res->error, fileOffset);
 }
 
 // Stage 1: the text's lines through the splitter (progress: the first half). False with
 // res->error on a line that cannot be CRD, on cancel, or without any pass.
-bool splitPasses(std::string_view text, const std::string& src, const Feedback* feedback, Sink* sink, CrdReadResult* res) {
+// fileStart: where the file's first byte is when `text` is a plain file's content (the lines'
+// offsets in the file are their distance from it), else nullptr.
+bool splitPasses(std::string_view text, const std::string& src, const Feedback* feedback, Sink* sink, CrdReadResult* res,
+                 const char* fileStart) {
     PassSplitter splitter(src, sink, &res->file);
     splitter.setCapacityHints(countLinesAfterH4(text));
     size_t pos = 0;
@@ -824,7 +841,8 @@ bool splitPasses(std::string_view text, const std::string& src, const Feedback* 
         if (!hadNewline) end = text.size();
         const std::string_view line = text.substr(pos, end - pos);
         pos = hadNewline ? end + 1 : end;
-        if (!feedLine(splitter, line, ++lineNo, res)) return false;
+        if (!feedLine(splitter, line, ++lineNo, res, fileStart ? static_cast<long long>(line.data() - fileStart) : -1))
+            return false;
     }
     splitter.finish(lineNo);
     if (res->file.passes.empty()) {
@@ -964,6 +982,7 @@ size_t CrdRangeLines::runOf(size_t k) const {
 }
 
 std::string_view CrdRangeLines::text(size_t k) const {
+    if (m_origin) return {};
     const size_t b = m_runs[runOf(k)].base + m_start[k];
     const size_t e = k + 1 < m_start.size() ? m_runs[runOf(k + 1)].base + m_start[k + 1] : m_text.size();
     return std::string_view(m_text).substr(b, e - b);
@@ -976,24 +995,180 @@ long CrdRangeLines::line(size_t k) const {
 
 size_t CrdRangeLines::slot(size_t k) const { return m_runs[runOf(k)].slot; }
 
-void CrdRangeLines::add(std::string_view text, long line, size_t slot) {
-    const size_t k = m_start.size();
+void CrdRangeLines::add(std::string_view text, long line, size_t slot, long long fileOffset) {
+    if (m_origin) return;  // (a pass whose texts are in its file only is not added to)
+    const size_t k = m_size;
     const size_t at = m_text.size();
     // A new run where the line is not the next one of the last run, or its offset would not fit
     // in 32 bits.
     if (m_runs.empty() || m_runs.back().slot != slot || this->line(k - 1) + 1 != line ||
         at - m_runs.back().base > UINT32_MAX)
-        m_runs.push_back(Run{k, slot, line, at});
-    m_start.push_back(static_cast<uint32_t>(at - m_runs.back().base));
+        m_runs.push_back(Run{k, slot, line, at, fileOffset, fileOffset});
+    Run& run = m_runs.back();
+    m_allInFile = m_allInFile && fileOffset >= 0 && run.fileBegin >= 0;
+    run.fileEnd = fileOffset >= 0 ? fileOffset + static_cast<long long>(text.size()) : -1;
+    m_start.push_back(static_cast<uint32_t>(at - run.base));
     m_text.append(text);
+    ++m_size;
 }
 
 void CrdRangeLines::reserve(size_t lines, size_t bytes) {
+    if (m_origin) return;
     m_start.reserve(lines);
     m_text.reserve(bytes);
 }
 
-bool CrdRangeLines::replaceField(size_t field, const std::function<std::optional<std::string>(size_t k)>& value) {
+void CrdRangeLines::keepInFile(const std::shared_ptr<const CrdFileOrigin>& origin) {
+    if (!origin || m_origin || !m_allInFile || m_size == 0) return;
+    std::string().swap(m_text);
+    std::vector<uint32_t>().swap(m_start);
+    m_origin = origin;
+}
+
+namespace {
+// The file as it is now, to compare with what it was when read.
+bool sameAsRead(const CrdFileOrigin& o, std::string* error) {
+    struct stat st {};
+    if (::stat(o.path.c_str(), &st) != 0) {
+        *error = o.path + ": cannot read the file's type-10 records again (" + std::strerror(errno) +
+                 "): it was read from there and its records are written from it; open it again";
+        return false;
+    }
+    const long long mtime = static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
+    if (static_cast<long long>(st.st_size) != o.size || mtime != o.mtimeNs || st.st_ino != o.inode ||
+        st.st_dev != o.device) {
+        *error = o.path + ": the file changed since it was read; its type-10 records are written from it, so "
+                          "nothing is written: open it again";
+        return false;
+    }
+    return true;
+}
+}  // namespace
+
+namespace {
+// The file at `path` as it is (nullptr for the standard input, or what is not a regular file).
+std::shared_ptr<const CrdFileOrigin> crdFileOrigin(const std::string& path) {
+    struct stat st {};
+    if (path.empty() || isStandardStream(path) || ::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return nullptr;
+    {  // (a gzip file's lines are not at offsets of the file)
+        std::ifstream in(path, std::ios::binary);
+        char magic[2] = {0, 0};
+        in.read(magic, 2);
+        if (!in || (static_cast<unsigned char>(magic[0]) == 0x1f && static_cast<unsigned char>(magic[1]) == 0x8b))
+            return nullptr;
+    }
+    auto o = std::make_shared<CrdFileOrigin>();
+    o->path = path;
+    o->size = static_cast<long long>(st.st_size);
+    o->mtimeNs = static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
+    o->inode = st.st_ino;
+    o->device = st.st_dev;
+    return o;
+}
+}  // namespace
+
+struct CrdRangeLines::Reader::File {
+    std::ifstream in;
+    std::string buf;
+    size_t pos = 0;
+    long long left = 0;  // bytes of the run not read yet
+};
+
+CrdRangeLines::Reader::Reader(const CrdRangeLines& lines) : m_lines(lines) {
+    if (!lines.m_origin || lines.m_size == 0) return;
+    if (!sameAsRead(*lines.m_origin, &m_error)) return;
+    m_file = std::make_unique<File>();
+    m_file->in.open(lines.m_origin->path, std::ios::binary);
+    if (!m_file->in) m_error = lines.m_origin->path + ": cannot open it again to read its type-10 records: " + std::strerror(errno);
+}
+
+CrdRangeLines::Reader::~Reader() = default;
+
+// The next block of the current run into the buffer (what is left of the last moved to the front).
+bool CrdRangeLines::Reader::fill() {
+    File& f = *m_file;
+    f.buf.erase(0, f.pos);
+    f.pos = 0;
+    const size_t want = static_cast<size_t>(std::min<long long>(f.left, 1 << 20));
+    const size_t old = f.buf.size();
+    f.buf.resize(old + want);
+    f.in.read(f.buf.data() + old, static_cast<std::streamsize>(want));
+    const size_t got = static_cast<size_t>(f.in.gcount());
+    f.buf.resize(old + got);
+    f.left -= static_cast<long long>(got);
+    return got == want;
+}
+
+bool CrdRangeLines::Reader::next(std::string_view* text) {
+    if (!m_error.empty() || m_k >= m_lines.m_size) return false;
+    if (!m_file) {
+        *text = m_lines.text(m_k++);
+        return true;
+    }
+    File& f = *m_file;
+    const std::string& path = m_lines.m_origin->path;
+    auto changed = [&](const std::string& what) {
+        m_error = path + ":" + std::to_string(m_lines.line(m_k)) + ": " + what +
+                  ": the file changed since it was read; nothing is written from it: open it again";
+        return false;
+    };
+    if (m_inRun == 0) {  // a run starts: its span read from the file
+        const Run& r = m_lines.m_runs[m_run];
+        f.buf.clear();
+        f.pos = 0;
+        f.left = r.fileEnd - r.fileBegin;
+        f.in.clear();
+        f.in.seekg(r.fileBegin);
+        if (!f.in) return changed("cannot seek to the line");
+    }
+    const bool last = m_inRun + 1 == m_lines.runSize(m_run);
+    size_t end = std::string::npos;
+    for (;;) {
+        end = last ? (f.left == 0 ? f.buf.size() : std::string::npos) : f.buf.find('\n', f.pos);
+        if (end != std::string::npos) break;
+        if (f.left == 0) return changed("fewer lines than it had");
+        if (!fill()) return changed("it ends earlier");
+    }
+    std::string_view t = std::string_view(f.buf).substr(f.pos, end - f.pos);
+    f.pos = end + 1;
+    while (!t.empty() && t.back() == '\r') t.remove_suffix(1);
+    if (last && t.find('\n') != std::string_view::npos) return changed("more lines than it had");
+    size_t q = 0;
+    while (q < t.size() && (t[q] == ' ' || t[q] == '\t')) ++q;
+    if (t.substr(q, 2) != "10" || (t.size() > q + 2 && t[q + 2] != ' ' && t[q + 2] != '\t'))
+        return changed("not the type-10 record it was");
+    *text = t;
+    ++m_k;
+    if (last) {
+        ++m_run;
+        m_inRun = 0;
+    } else {
+        ++m_inRun;
+    }
+    return true;
+}
+
+bool CrdRangeLines::load(std::string* error) {
+    if (!m_origin) return true;
+    CrdRangeLines mem;
+    {
+        Reader rd(*this);
+        std::string_view t;
+        for (size_t k = 0; k < m_size; ++k) {
+            if (!rd.next(&t)) {
+                *error = rd.error();
+                return false;
+            }
+            mem.add(t, line(k), slot(k));
+        }
+    }
+    *this = std::move(mem);
+    return true;
+}
+
+bool CrdRangeLines::replaceField(size_t field, const std::function<std::optional<std::string>(size_t k)>& value,
+                                 std::string* error) {
+    if (!load(error)) return false;
     // In place where every new value is as long as the old one (a flag for a flag); else the
     // buffer written anew.
     std::vector<std::optional<std::string>> values(size());
@@ -1002,7 +1177,10 @@ bool CrdRangeLines::replaceField(size_t field, const std::function<std::optional
         values[k] = value(k);
         if (!values[k]) continue;
         size_t b = 0, e = 0;
-        if (!tokenSpan(text(k), field, &b, &e)) return false;
+        if (!tokenSpan(text(k), field, &b, &e)) {
+            *error = "line " + std::to_string(line(k)) + ": a type-10 record without field " + std::to_string(field + 1);
+            return false;
+        }
         sameLength = sameLength && values[k]->size() == e - b;
     }
     if (sameLength) {
@@ -1031,13 +1209,21 @@ size_t CrdRangeLines::bytes() const {
     return m_text.capacity() + m_start.capacity() * sizeof(uint32_t) + m_runs.capacity() * sizeof(Run);
 }
 
-std::vector<CrdRecord> allRecords(const CrdPass& pass) {
+std::vector<CrdRecord> allRecords(const CrdPass& pass, std::string* error) {
     std::vector<CrdRecord> out;
     out.reserve(pass.records.size() + pass.rangeLines.size());
     const CrdRangeLines& L = pass.rangeLines;
+    CrdRangeLines::Reader rd(L);
+    std::string_view t;
     size_t k = 0;
     for (size_t i = 0; i <= pass.records.size(); ++i) {
-        for (; k < L.size() && L.slot(k) <= i; ++k) out.push_back(CrdRecord{std::string(L.text(k)), "10", L.line(k)});
+        for (; k < L.size() && L.slot(k) <= i; ++k) {
+            if (!rd.next(&t)) {
+                if (error) *error = rd.error();
+                return {};
+            }
+            out.push_back(CrdRecord{std::string(t), "10", L.line(k)});
+        }
         if (i < pass.records.size()) out.push_back(pass.records[i]);
     }
     return out;
@@ -1081,10 +1267,12 @@ namespace {
 // copies (after the split into passes): the file's text is not kept beside them while the
 // passes are parsed.
 CrdReadResult parseCrdText(std::string_view given, std::string* owned, const std::string& source, const CrdReadParams& params,
-                           const Feedback* feedback) {
+                           const Feedback* feedback, const std::shared_ptr<const CrdFileOrigin>& origin = nullptr) {
     CrdReadResult res;
     std::string storage;
     std::string_view text = plainText(given, &storage);
+    // The lines' offsets in the file: when the text is the file's own bytes (not rewritten).
+    const bool inFile = origin && storage.empty() && static_cast<long long>(given.size()) == origin->size;
     try {
         res.file.path = source;
         const std::string src = source.empty() ? "crd" : source;
@@ -1097,7 +1285,7 @@ CrdReadResult parseCrdText(std::string_view given, std::string* owned, const std
             return res;
         }
         Sink sink{&res.warnings, params.maxWarnings};
-        if (!splitPasses(text, src, feedback, &sink, &res)) {
+        if (!splitPasses(text, src, feedback, &sink, &res, inFile ? given.data() : nullptr)) {
             res.file.passes.clear();
             return res;
         }
@@ -1109,7 +1297,10 @@ CrdReadResult parseCrdText(std::string_view given, std::string* owned, const std
             return res;
         }
         sink.close();
-        for (CrdPass& p : res.file.passes) p.crlf = res.file.crlf;
+        for (CrdPass& p : res.file.passes) {
+            p.crlf = res.file.crlf;
+            if (inFile) p.rangeLines.keepInFile(origin);
+        }
         res.ok = true;
     } catch (const std::exception& e) {
         res = CrdReadResult();
@@ -1127,12 +1318,13 @@ CrdReadResult parseCrd(std::string_view given, const std::string& source, const 
 
 CrdReadResult readCrd(const std::string& path, const CrdReadParams& params, const Feedback* feedback) {
     std::string text, err;
+    const std::shared_ptr<const CrdFileOrigin> origin = crdFileOrigin(path);  // (as it is before it is read)
     if (!readFileText(path, &text, &err)) {
         CrdReadResult r;
         r.error = err;
         return r;
     }
-    return parseCrdText(text, &text, path, params, feedback);
+    return parseCrdText(text, &text, path, params, feedback, origin);
 }
 
 CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, const Feedback* feedback,
@@ -1192,10 +1384,12 @@ CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, 
         Sink sink{&out.warnings, params.maxWarnings};
         PassSplitter splitter(src, &sink, &held.file);
         splitter.setCapacityHints(std::move(linesAfterH4));
+        const std::shared_ptr<const CrdFileOrigin> origin = crdFileOrigin(path);
         auto handOut = [&]() {
             for (CrdPass& p : splitter.takeClosed()) {
                 parseOnePass(p, p.ordinal - 1, src, &sink);
                 p.crlf = held.file.crlf;
+                p.rangeLines.keepInFile(origin);
                 ++out.passes;
                 if (!onPass(std::move(p))) return false;
             }
@@ -1215,7 +1409,7 @@ CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, 
                 }
                 feedback->setProgress(0.1 + 0.9 * lr.fraction());
             }
-            if (!feedLine(splitter, line, lr.lineNumber(), &held)) {
+            if (!feedLine(splitter, line, lr.lineNumber(), &held, lr.lineOffset())) {
                 out.error = held.error;
                 return out;
             }
@@ -1285,15 +1479,21 @@ bool lineFlagsOf(const CrdPass& pass, const std::vector<int>& flags, std::vector
 template <class Emit>
 bool emitPass(const CrdPass& p, const std::vector<int8_t>* lineFlag, Emit&& emit, std::string* error) {
     const CrdRangeLines& L = p.rangeLines;
+    CrdRangeLines::Reader rd(L);
     std::string buf;
+    std::string_view t;
     size_t k = 0;
     for (size_t i = 0; i <= p.records.size(); ++i) {
         for (; k < L.size() && L.slot(k) <= i; ++k) {
+            if (!rd.next(&t)) {
+                *error = rd.error();
+                return false;
+            }
             if (!lineFlag || (*lineFlag)[k] < 0) {
-                emit(L.text(k));
+                emit(t);
                 continue;
             }
-            buf.assign(L.text(k));
+            buf.assign(t);
             if (!replaceToken(&buf, 5, std::to_string((*lineFlag)[k]))) {
                 *error = "line " + std::to_string(L.line(k)) + ": a type-10 record without a filter flag field";
                 return false;
@@ -1308,6 +1508,12 @@ bool emitPass(const CrdPass& p, const std::vector<int8_t>* lineFlag, Emit&& emit
 }  // namespace
 
 std::string formatCrd(const CrdFile& file) {
+    std::string out, error;
+    if (!formatCrd(file, &out, &error)) return {};
+    return out;
+}
+
+bool formatCrd(const CrdFile& file, std::string* text, std::string* error) {
     const std::string eol = file.crlf ? "\r\n" : "\n";
     size_t n = 0;
     for (const auto& p : file.passes) {
@@ -1315,15 +1521,17 @@ std::string formatCrd(const CrdFile& file) {
         n += p.rangeLines.bytes() + 2 * p.rangeLines.size();
     }
     for (const auto& r : file.trailer) n += r.text.size() + 2;
-    std::string out, unused;
+    std::string out;
     out.reserve(n);
     auto put = [&](std::string_view t) {
         out += t;
         out += eol;
     };
-    for (const auto& p : file.passes) emitPass(p, nullptr, put, &unused);
+    for (const auto& p : file.passes)
+        if (!emitPass(p, nullptr, put, error)) return false;
     for (const auto& r : file.trailer) put(r.text);
-    return out;
+    *text = std::move(out);
+    return true;
 }
 
 bool writeCrdWithFlags(const std::string& path, const CrdFile& file, size_t passIndex, const std::vector<int>& flags,
@@ -1389,7 +1597,9 @@ CrdFile passAlone(const CrdPass& pass) {
 
 bool writeCrd(const std::string& path, const CrdFile& file, std::string* error) {
     try {
-        return writeFileAtomic(path, formatCrd(file), error);
+        std::string text;
+        if (!formatCrd(file, &text, error)) return false;
+        return writeFileAtomic(path, text, error);
     } catch (const std::exception& e) {
         if (error) *error = path + ": " + e.what();
         return false;
@@ -1399,12 +1609,13 @@ bool writeCrd(const std::string& path, const CrdFile& file, std::string* error) 
 bool setFilterFlags(CrdPass* pass, const std::vector<int>& flags, std::string* error) {
     std::vector<int8_t> lineFlag;
     if (!lineFlagsOf(*pass, flags, &lineFlag, error)) return false;
+    std::string why;
     const bool ok = pass->rangeLines.replaceField(5, [&](size_t k) -> std::optional<std::string> {
         if (lineFlag[k] < 0) return std::nullopt;
         return std::to_string(lineFlag[k]);
-    });
+    }, &why);
     if (!ok) {
-        *error = "setFilterFlags: a type-10 record has no filter flag field";
+        *error = "setFilterFlags: " + why;
         return false;
     }
     for (size_t i = 0; i < flags.size(); ++i) pass->ranges.setFilterFlag(i, flags[i]);
@@ -1482,7 +1693,12 @@ bool setNormalPoints(CrdPass* pass, const std::vector<CrdNormalPoint>& nps, Norm
     try {
         if (!checkNormalPoints(nps, error)) return false;
         CrdPass work = *pass;  // the pass changes only when everything succeeded
-        std::vector<CrdRecord> recs = allRecords(work);
+        std::string why;
+        std::vector<CrdRecord> recs = allRecords(work, &why);
+        if (!why.empty()) {
+            *error = "setNormalPoints: " + why;
+            return false;
+        }
         size_t insertAt = std::string::npos;
         if (mode == NormalPointMode::Replace) {
             std::vector<CrdRecord> kept;

@@ -27,6 +27,7 @@
 #include <cstring>
 #include <functional>
 #include <iterator>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -326,38 +327,83 @@ struct CrdCalibration {
     long line = 0;
 };
 
+/// The file a reader read, as it was then (its lines are re-read from it by offset).
+struct CrdFileOrigin {
+    std::string path;
+    long long size = -1;
+    long long mtimeNs = 0;
+    unsigned long long inode = 0, device = 0;
+};
+
 /// A pass's type-10 lines, held apart from its other records (issue 44: a CrdRecord a line was
-/// 112 bytes of every event): their texts one after another in one buffer, a 4-byte offset a
-/// line, and runs of consecutive lines each with its place among the records (its slot: the
-/// run is written before records[slot]) and its first source line. Lines a reader could not
-/// parse are kept too (written back as they were).
+/// 112 bytes of every event). While a pass is read, their texts lie one after another in one
+/// buffer, a 4-byte offset a line. A pass read from a plain file (not compressed, not the
+/// standard input) then keeps no text at all: each run of consecutive lines knows its span in
+/// the file, and the lines are read again from there when they are written (a file changed
+/// since is refused, not written from). Runs also give each line its place among the records
+/// (its slot: the run is written before records[slot]) and its source line. Lines the reader
+/// could not parse are kept too (written back as they were).
 class CrdRangeLines {
 public:
-    size_t size() const { return m_start.size(); }
-    bool empty() const { return m_start.empty(); }
+    size_t size() const { return m_size; }
+    bool empty() const { return m_size == 0; }
+    /// Line k's text: only while the texts are in memory (inMemory()).
     std::string_view text(size_t k) const;
+    bool inMemory() const { return !m_origin; }
     long line(size_t k) const;
     size_t slot(size_t k) const;
-    /// Adds a line after the others (slot: the number of records before it).
-    void add(std::string_view text, long line, size_t slot);
+    /// Adds a line after the others (slot: the number of records before it; fileOffset: where
+    /// the line starts in its file, -1 when it did not come from a plain file).
+    void add(std::string_view text, long line, size_t slot, long long fileOffset = -1);
     void reserve(size_t lines, size_t bytes);
+    /// Drops the texts when every line has its place in `origin`'s file (else keeps them).
+    void keepInFile(const std::shared_ptr<const CrdFileOrigin>& origin);
+    /// Reads the texts back into memory (a no-op when they are). False with *error when the file
+    /// changed since it was read.
+    bool load(std::string* error);
     /// Replaces field `field` (0-based, blank-separated) of every line k with value(k) (a
-    /// nullopt keeps it). False when a line has no such field (nothing is changed then).
-    bool replaceField(size_t field, const std::function<std::optional<std::string>(size_t k)>& value);
+    /// nullopt keeps it). False (*error) when a line has no such field or the texts cannot be
+    /// read back (nothing is changed then).
+    bool replaceField(size_t field, const std::function<std::optional<std::string>(size_t k)>& value, std::string* error);
     size_t bytes() const;
     void clear() { *this = CrdRangeLines(); }
+
+    /// The lines in order, from memory or from the file (in blocks).
+    class Reader {
+    public:
+        explicit Reader(const CrdRangeLines& lines);
+        ~Reader();
+        Reader(const Reader&) = delete;
+        Reader& operator=(const Reader&) = delete;
+        /// The next line's text (valid until the next call); false at the end or on an error.
+        bool next(std::string_view* text);
+        const std::string& error() const { return m_error; }
+
+    private:
+        bool fill();
+        const CrdRangeLines& m_lines;
+        size_t m_k = 0, m_run = 0, m_inRun = 0;
+        struct File;
+        std::unique_ptr<File> m_file;
+        std::string m_error;
+    };
 
 private:
     struct Run {
         size_t first = 0;      // its first line's index
         size_t slot = 0;
         long firstLine = 0;
-        size_t base = 0;       // the offset its lines' starts are counted from
+        size_t base = 0;       // the offset its lines' starts are counted from (in m_text)
+        long long fileBegin = -1, fileEnd = -1;  // its lines' span in the file (the last one's text ends at fileEnd)
     };
     size_t runOf(size_t k) const;
+    size_t runSize(size_t r) const { return (r + 1 < m_runs.size() ? m_runs[r + 1].first : m_size) - m_runs[r].first; }
     std::string m_text;
-    std::vector<uint32_t> m_start;  // each line's start, from its run's base
+    std::vector<uint32_t> m_start;  // each line's start, from its run's base (in memory only)
     std::vector<Run> m_runs;
+    size_t m_size = 0;
+    bool m_allInFile = true;
+    std::shared_ptr<const CrdFileOrigin> m_origin;  // set when the texts are in the file only
 };
 
 /// One pass: an H4 ... H8 block with the lines that precede it.
@@ -404,8 +450,9 @@ struct CrdPass {
     const CrdSystemConfig* config(const std::string& systemId) const;
 };
 
-/// Every line of a pass in its order (records and rangeLines merged), as records.
-std::vector<CrdRecord> allRecords(const CrdPass& pass);
+/// Every line of a pass in its order (records and rangeLines merged), as records. Empty, with
+/// *error, when its type-10 lines cannot be read back from their file.
+std::vector<CrdRecord> allRecords(const CrdPass& pass, std::string* error = nullptr);
 /// The pass's lines from `lines` (every line in order, as allRecords gives them): type-10 ones
 /// into rangeLines, the others into records.
 void setAllRecords(CrdPass* pass, std::vector<CrdRecord> lines);
@@ -455,7 +502,10 @@ CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, 
 /// Reads and parses a CRD file.
 CrdReadResult readCrd(const std::string& path, const CrdReadParams& params = {}, const Feedback* feedback = nullptr);
 
-/// The file as text: every record of every pass, then the trailer.
+/// The file as text: every record of every pass, then the trailer. False (*error) when a
+/// pass's type-10 lines cannot be read back from their file (it changed since it was read).
+bool formatCrd(const CrdFile& file, std::string* out, std::string* error);
+/// formatCrd for a file held in memory (parseCrd's): "" when a pass's lines cannot be read back.
 std::string formatCrd(const CrdFile& file);
 /// One pass as a file of its own, as every product of a pass is written (the flagged block, its
 /// normal points; one pass or a station's file of passes alike): the pass's records, the line
