@@ -54,11 +54,12 @@ std::string named(const std::string& path, const std::string& msg) {
 }
 
 // Peak memory of a pass's run for each byte of its file, measured on simulated kHz passes of
-// 10^5..10^7 events (docs/benchmarks.md, "A raw kHz pass end to end"): CRD 301-332 bytes an
-// event for 55-byte lines at 10^6..10^7 (6.0; the type-10 records by column), an O-C CSV 124-159
+// 10^5..10^7 events (docs/benchmarks.md, "A raw kHz pass end to end"): CRD 191-220 bytes an
+// event for 55-byte lines at 10^6..10^7 (3.3-3.8; its type-10 lines read again from the file),
+// 4.6 for a gzip file (its lines kept in memory; of the decompressed bytes), an O-C CSV 124-159
 // for 35-byte lines (4.5); rounded up. Real CRD lines are longer (fewer events a byte), so the
 // estimate errs high.
-constexpr uint64_t kCrdBytesPerFileByte = 7, kCsvBytesPerFileByte = 5, kProcessBytes = 32u << 20;
+constexpr uint64_t kCrdBytesPerFileByte = 5, kCsvBytesPerFileByte = 5, kProcessBytes = 32u << 20;
 
 // "" when the input's run fits the memory this process can take (core/common/memory.hpp), else
 // why it is not read: issue 44's "limits said, not hit", before any of it is read. A gzip file
