@@ -147,6 +147,16 @@ const QByteArray kGoodCrd =
     "H8\n"                                                    // 9
     "H9\n";                                                   // 10
 
+/// kGoodCrd as the readers accept it (LF, CRLF, CR alone, a byte-order mark, no final line end)
+/// and a text of several blocks, each with its file name.
+QList<QPair<QString, QByteArray>> goodCrdForms(const QByteArray& blocks) {
+    QByteArray crlf = kGoodCrd, cr = kGoodCrd;
+    crlf.replace("\n", "\r\n");
+    cr.replace('\n', '\r');
+    return {{"good.frd", kGoodCrd}, {"crlf.frd", crlf}, {"cr.frd", cr}, {"bom.frd", "\xEF\xBB\xBF" + kGoodCrd},
+            {"nofinal.frd", kGoodCrd.left(kGoodCrd.size() - 1)}, {"blocks.frd", blocks}};
+}
+
 /// True when the read gave exactly one warning, starting with `prefix` and holding every part.
 bool oneWarning(const CrdReadResult& r, const QString& prefix, const QStringList& parts, QString* why) {
     *why = QString::fromStdString(joined(r.warnings));
@@ -201,19 +211,11 @@ private slots:
     // errors (truncated gzip, NUL, blank only, no H4, data before H1), with the same messages.
     void streamedAsReadVariants() {
         QTemporaryDir dir;
-        QByteArray crlf = kGoodCrd, cr = kGoodCrd, twoPasses = kGoodCrd;
-        crlf.replace("\n", "\r\n");
-        cr.replace('\n', '\r');
-        twoPasses.chop(3);
-        twoPasses += "H4 0 2021 9 1 20 50 0 2021 9 1 20 51 0 0 0 0 0 1 0 2 1\n10 75000.5 0.0131 sys1 2 2 0 0 0 na\n"
-                     "H4 1 2021 9 1 21 46 0 -1 -1 -1 -1 -1 -1 0 0 0 0 1 0 2 0\nH9\n";
-        const QList<QPair<QString, QByteArray>> texts = {
-            {"good.frd", kGoodCrd},
-            {"crlf.frd", crlf},
-            {"cr.frd", cr},
-            {"bom.frd", "\xEF\xBB\xBF" + kGoodCrd},
-            {"nofinal.frd", kGoodCrd.left(kGoodCrd.size() - 1)},
-            {"blocks.frd", twoPasses},
+        const QByteArray twoPasses = kGoodCrd.left(kGoodCrd.size() - 3) +
+                                     "H4 0 2021 9 1 20 50 0 2021 9 1 20 51 0 0 0 0 0 1 0 2 1\n10 75000.5 0.0131 sys1 2 2 0 0 0 na\n"
+                                     "H4 1 2021 9 1 21 46 0 -1 -1 -1 -1 -1 -1 0 0 0 0 1 0 2 0\nH9\n";
+        QList<QPair<QString, QByteArray>> texts = goodCrdForms(twoPasses);
+        texts += QList<QPair<QString, QByteArray>>{
             {"nul.frd", kGoodCrd + QByteArray("10 x\0y\n", 7)},
             {"blank.frd", "\n  \n\r\n"},
             {"noh4.frd", "H1 CRD 2 2021 9 1 21\nH2 GLSL 1824 81 1 4 EUROLAS\nH3 hy2c 2006601 2209 46469 0 1 1\nH9\n"},
@@ -595,15 +597,10 @@ private slots:
     // refused with the reason, and nothing is written.
     void typeTenLinesReadAgainFromTheirFile() {
         QTemporaryDir dir;
-        QByteArray crlf = kGoodCrd, cr = kGoodCrd, twoPasses = kGoodCrd;
-        crlf.replace("\n", "\r\n");
-        cr.replace('\n', '\r');
-        twoPasses.chop(3);
-        twoPasses += "H4 0 2021 9 1 20 50 0 2021 9 1 20 51 0 0 0 0 0 1 0 2 1\n10 75000.5 0.0131 sys1 2 2 0 0 0 na\n"
-                     "20 75000.5 1013.2 288.1 50 0\n10 75001.5 0.0131 sys1 2 0 0 0 0 na\n10 75002.5 0.0131 sys1 2 0 0 0 0 na\nH8\nH9\n";
-        const QList<QPair<QString, QByteArray>> texts = {
-            {"good.frd", kGoodCrd}, {"crlf.frd", crlf}, {"cr.frd", cr}, {"bom.frd", "\xEF\xBB\xBF" + kGoodCrd},
-            {"nofinal.frd", kGoodCrd.left(kGoodCrd.size() - 1)}, {"blocks.frd", twoPasses}};
+        const QList<QPair<QString, QByteArray>> texts = goodCrdForms(
+            kGoodCrd.left(kGoodCrd.size() - 3) +
+            "H4 0 2021 9 1 20 50 0 2021 9 1 20 51 0 0 0 0 0 1 0 2 1\n10 75000.5 0.0131 sys1 2 2 0 0 0 na\n"
+            "20 75000.5 1013.2 288.1 50 0\n10 75001.5 0.0131 sys1 2 0 0 0 0 na\n10 75002.5 0.0131 sys1 2 0 0 0 0 na\nH8\nH9\n");
         for (const auto& [name, text] : texts) {
             const std::string path = lwbtest::str(dir.filePath(name));
             QVERIFY(lwbtest::writeText(dir.filePath(name), text));
