@@ -894,6 +894,39 @@ private slots:
         QCOMPARE(acceptedCount(c->run()), before);
     }
 
+    // Issue 44: the flagged CRD is written from the file the pass was opened from (its type-10
+    // lines are not kept in memory). Changed since it was opened, the export says so and writes
+    // nothing; opened again, it exports.
+    void flaggedCrdExportRefusesAChangedSource() {
+        const QString jason = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
+        if (!QFile::exists(jason)) QSKIP("shared data absent");
+        const QString copy = m_dir.path() + "/jason-copy.frd";
+        QFile::remove(copy);
+        QVERIFY(QFile::copy(jason, copy));
+        MainWindow w;
+        auto* ws = w.workspace<lwb::ui::SlrWorkspace>();
+        QString err;
+        QVERIFY2(ws->openPath(copy, -1, &err), qPrintable(err));
+        SlrController* c = ws->controller();
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY(c->hasRun());
+        const QString out = m_dir.path() + "/jason-flags.frd";
+        QString message;
+        QVERIFY2(ws->exportCrd(out, false, &message), qPrintable(message));
+        QVERIFY(QFile::remove(out));
+        QByteArray text = lwbtest::readAll(copy);
+        QVERIFY(lwbtest::writeText(copy, "00 edited after it was opened\n" + text));
+        QSignalSpy status(ws, &lwb::ui::Workspace::status);
+        QVERIFY(!ws->exportCrd(out, false, &message));
+        QVERIFY2(message.contains("changed since it was read") && message.contains("jason-copy.frd"), qPrintable(message));
+        QVERIFY(!QFile::exists(out));
+        QVERIFY(!status.isEmpty() && status.last().at(0).toString().startsWith("Nothing written"));
+        QVERIFY2(ws->openPath(copy, -1, &err), qPrintable(err));
+        QVERIFY(c->waitIdle(60000));
+        QVERIFY2(ws->exportCrd(out, false, &message), qPrintable(message));
+        QVERIFY(QFile::exists(out));
+    }
+
     void crdPassWithFlagsRoundTrip() {
         const QString jason = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
         if (!QFile::exists(jason)) QSKIP("shared data absent");
