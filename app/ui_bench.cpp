@@ -6,7 +6,10 @@
 #include <QFileInfo>
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <vector>
+
+#include <sys/resource.h>
 
 #include "ui/footprint/footprint_params_panel.hpp"
 #include "ui/footprint/footprint_workspace.hpp"
@@ -224,6 +227,102 @@ void UiBench::printTable() const {
                     qPrintable(r.file), r.points, r.ms);
 }
 
+// Resident memory now and at its peak (MB), from /proc/self/statm and getrusage.
+void residentMb(double* now, double* peak) {
+    long pages = 0, resident = 0;
+    if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+        std::fclose(f);
+    }
+    *now = static_cast<double>(resident) * 4096.0 / 1048576.0;
+    rusage ru{};
+    getrusage(RUSAGE_SELF, &ru);
+    *peak = static_cast<double>(ru.ru_maxrss) / 1024.0;
+}
+
+// Issue 44's workbench benchmark: one large pass (a CRD or O-C file) opened in the SLR workspace,
+// then the cosine constant and the O-C magnification moved (each change to its result painted),
+// then the O-C plot zoomed and panned (one immediate replot a frame). Prints a Markdown table.
+int largePass(lwb::ui::MainWindow& w, const QString& path, int changes) {
+    auto* slr = w.workspace<lwb::ui::SlrWorkspace>();
+    w.showWorkspace("slr");
+    lwb::ui::SlrController* sc = slr->controller();
+    int runs = 0;
+    QObject::connect(sc, &lwb::ui::SlrController::runReady, [&runs] { ++runs; });
+    auto waitRun = [&](QElapsedTimer& t) {
+        while (runs == 0 && t.elapsed() < 600000) QApplication::processEvents(QEventLoop::AllEvents, 1);
+        slr->ocPlot()->replot(QCustomPlot::rpImmediateRefresh);
+        slr->imagePlot()->replot(QCustomPlot::rpImmediateRefresh);
+        return t.nsecsElapsed() / 1e6;
+    };
+    QElapsedTimer t;
+    t.start();
+    QString err;
+    if (!slr->openPath(path, 0, &err)) {
+        std::fprintf(stderr, "%s: %s\n", qPrintable(path), qPrintable(err));
+        return 1;
+    }
+    const double openMs = waitRun(t);
+    double rssNow = 0, rssPeak = 0;
+    residentMb(&rssNow, &rssPeak);
+    const size_t n = sc->pass().t.size();
+    if (!sc->hasRun() || n == 0) {
+        std::fprintf(stderr, "%s: no run after opening\n", qPrintable(path));
+        return 1;
+    }
+    auto drag = [&](lwb::ui::ParamSlider* s, double from, double step) {
+        std::vector<double> ms;
+        for (int i = 0; i < changes; ++i) {
+            runs = 0;
+            QElapsedTimer c;
+            c.start();
+            s->field()->setValue(from + step * i);
+            ms.push_back(waitRun(c));
+        }
+        return stats(ms);
+    };
+    const Stats cosine = drag(slr->cosineSlider(), 0.93, 0.004);
+    sc->setReuseScaleForCosine(true);  // the scale the automatic mode chose kept while C moves
+    const Stats cosineKept = drag(slr->cosineSlider(), 0.95, 0.004);
+    sc->setReuseScaleForCosine(false);
+    const double mag = slr->magOcSlider()->field()->value();
+    const Stats magOc = drag(slr->magOcSlider(), mag * 0.8, mag * 0.1);
+    // Zoom in by halves about the middle, then pan by a tenth: one immediate replot a frame.
+    QCPAxis* x = slr->ocPlot()->xAxis;
+    const QCPRange whole = x->range();
+    std::vector<double> frames;
+    for (int i = 0; i < 2 * changes; ++i) {
+        const QCPRange r = x->range();
+        if (i < changes) x->setRange(r.center() - r.size() / 4, r.center() + r.size() / 4);
+        else x->setRange(r.lower + r.size() / 10, r.upper + r.size() / 10);
+        QElapsedTimer f;
+        f.start();
+        slr->ocPlot()->replot(QCustomPlot::rpImmediateRefresh);
+        frames.push_back(f.nsecsElapsed() / 1e6);
+    }
+    x->setRange(whole);
+    QElapsedTimer f;
+    f.start();
+    slr->ocPlot()->replot(QCustomPlot::rpImmediateRefresh);
+    const double wholeFrame = f.nsecsElapsed() / 1e6;
+    double rssEnd = 0, peakEnd = 0;
+    residentMb(&rssEnd, &peakEnd);
+    const Stats pan = stats(frames);
+    std::printf("%s: %zu events (the workbench, offscreen, window 1480x900)\n\n", qPrintable(QFileInfo(path).fileName()), n);
+    std::printf("| interaction | n | median (ms) | p95 (ms) | max (ms) |\n|---|---|---|---|---|\n");
+    std::printf("| opened → automatic screening, post-fit and both plots painted | 1 | %.0f | | |\n", openMs);
+    std::printf("| cosine constant → screened, post-fitted, both plots redrawn | %d | %.0f | %.0f | %.0f |\n", changes, cosine.median,
+                cosine.p95, cosine.max);
+    std::printf("| the same, the scale kept while C moves (setReuseScaleForCosine) | %d | %.0f | %.0f | %.0f |\n", changes,
+                cosineKept.median, cosineKept.p95, cosineKept.max);
+    std::printf("| O-C magnification → the same | %d | %.0f | %.0f | %.0f |\n", changes, magOc.median, magOc.p95, magOc.max);
+    std::printf("| O-C plot zoomed or panned → one frame | %d | %.1f | %.1f | %.1f |\n", 2 * changes, pan.median, pan.p95, pan.max);
+    std::printf("| O-C plot, the whole pass → one frame | 1 | %.1f | | |\n", wholeFrame);
+    std::printf("\nresident after opening %.0f MB (peak %.0f MB, %.0f bytes an event); at the end %.0f MB (peak %.0f MB, %.0f bytes an event)\n",
+                rssNow, rssPeak, rssPeak * 1048576.0 / double(n), rssEnd, peakEnd, peakEnd * 1048576.0 / double(n));
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -235,6 +334,14 @@ int main(int argc, char** argv) {
     lwb::ui::MainWindow w;
     w.resize(1480, 900);
     w.show();
+    // --large-pass FILE [--changes N]: issue 44's benchmark of one large pass instead of the table.
+    for (int i = 1; i + 1 < argc; ++i)
+        if (std::strcmp(argv[i], "--large-pass") == 0) {
+            int changes = 10;
+            for (int j = 1; j + 1 < argc; ++j)
+                if (std::strcmp(argv[j], "--changes") == 0) changes = std::max(1, std::atoi(argv[j + 1]));
+            return largePass(w, QString::fromLocal8Bit(argv[i + 1]), changes);
+        }
     w.openDemo();
     w.waitIdle(60000);
     UiBench b(w);
