@@ -3,6 +3,7 @@
 #include <QtTest>
 
 #include <QDate>
+#include <QDir>
 #include <QRegularExpression>
 #include <cmath>
 #include <map>
@@ -147,14 +148,21 @@ const QByteArray kGoodCrd =
     "H8\n"                                                    // 9
     "H9\n";                                                   // 10
 
-/// kGoodCrd as the readers accept it (LF, CRLF, CR alone, a byte-order mark, no final line end)
-/// and a text of several blocks, each with its file name.
+/// kGoodCrd as the readers accept it (LF, CRLF, CR alone, LF-CR: every line after the first
+/// starting with a CR, a byte-order mark, no final line end) and a text of several blocks, each
+/// with its file name.
 QList<QPair<QString, QByteArray>> goodCrdForms(const QByteArray& blocks) {
-    QByteArray crlf = kGoodCrd, cr = kGoodCrd;
+    QByteArray crlf = kGoodCrd, cr = kGoodCrd, lfcr = kGoodCrd;
     crlf.replace("\n", "\r\n");
     cr.replace('\n', '\r');
-    return {{"good.frd", kGoodCrd}, {"crlf.frd", crlf}, {"cr.frd", cr}, {"bom.frd", "\xEF\xBB\xBF" + kGoodCrd},
-            {"nofinal.frd", kGoodCrd.left(kGoodCrd.size() - 1)}, {"blocks.frd", blocks}};
+    lfcr.replace("\n", "\n\r");
+    return {{"good.frd", kGoodCrd},
+            {"crlf.frd", crlf},
+            {"cr.frd", cr},
+            {"lfcr.frd", lfcr},
+            {"bom.frd", "\xEF\xBB\xBF" + kGoodCrd},
+            {"nofinal.frd", kGoodCrd.left(kGoodCrd.size() - 1)},
+            {"blocks.frd", blocks}};
 }
 
 /// True when the read gave exactly one warning, starting with `prefix` and holding every part.
@@ -641,6 +649,19 @@ private slots:
             QVERIFY2(writeCrdWithFlags(alone, r.file, 0, std::vector<int>(r.file.passes[0].ranges.size(), 1), true, &err),
                      err.c_str());
             QCOMPARE(lwbtest::readAll(QString::fromStdString(alone)).toStdString(), formatCrd(passAlone(flagged.passes[0])));
+        }
+        // Read by a relative name, written after the working folder changed: the same file.
+        {
+            const QString was = QDir::currentPath();
+            QVERIFY(QDir::setCurrent(dir.path()));
+            const CrdReadResult rel = readCrd("good.frd");
+            QVERIFY(QDir::setCurrent(QDir::tempPath()));
+            std::string err;
+            const std::string out = lwbtest::str(dir.filePath("rel.out"));
+            const bool ok = writeCrdWithFlags(out, rel.file, 0, std::vector<int>(3, 1), false, &err);
+            QVERIFY(QDir::setCurrent(was));
+            QVERIFY2(rel.ok && ok, (rel.error + err).c_str());
+            QVERIFY(!rel.file.passes[0].rangeLines.inMemory());
         }
         // gzip keeps its lines in memory (they are not at offsets of the file).
         QCOMPARE(QProcess::execute("sh", {"-c", "cd '" + dir.path() + "' && gzip -c good.frd > good.frd.gz"}), 0);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -615,8 +616,12 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
 
 // The lines from an H4 to the next one (or the end), and their bytes (without line ends).
 struct LinesAfterH4 {
-    size_t lines = 0, bytes = 0;
+    size_t lines = 0, bytes = 0;  // (of the type-10 lines: what CrdRangeLines holds)
     void count(std::string_view line) {
+        size_t q = 0;
+        while (q < line.size() && (line[q] == ' ' || line[q] == '\t' || line[q] == '\r')) ++q;
+        if (line.substr(q, 2) != "10" || (line.size() > q + 2 && line[q + 2] != ' ' && line[q + 2] != '\t' && line[q + 2] != '\r'))
+            return;
         ++lines;
         bytes += line.size();
     }
@@ -783,9 +788,11 @@ private:
 };
 
 // Whether a line is an H4 record (the start of a pass).
+// (blanks as the reader's Fields takes them: spaces, tabs and CRs, so that a line of an LF-CR
+// text, which starts with the CR, is counted as the reader reads it)
 bool isH4Line(std::string_view line) {
     size_t q = 0;
-    while (q < line.size() && (line[q] == ' ' || line[q] == '\t')) ++q;
+    while (q < line.size() && (line[q] == ' ' || line[q] == '\t' || line[q] == '\r')) ++q;
     return q + 1 < line.size() && (line[q] == 'h' || line[q] == 'H') && line[q + 1] == '4' &&
            (q + 2 == line.size() || line[q + 2] == ' ' || line[q + 2] == '\t' || line[q + 2] == '\r');
 }
@@ -1029,7 +1036,7 @@ namespace {
 // The file as it is now, to compare with what it was when read.
 bool sameAsRead(const CrdFileOrigin& o, std::string* error) {
     struct stat st {};
-    if (::stat(o.path.c_str(), &st) != 0) {
+    if (::stat(o.openPath.c_str(), &st) != 0) {
         *error = o.path + ": cannot read the file's type-10 records again (" + std::strerror(errno) +
                  "): it was read from there and its records are written from it; open it again";
         return false;
@@ -1059,6 +1066,13 @@ std::shared_ptr<const CrdFileOrigin> crdFileOrigin(const std::string& path) {
     }
     auto o = std::make_shared<CrdFileOrigin>();
     o->path = path;
+    // (opened again by its absolute name: the working folder may change before the lines are read)
+    if (char* abs = ::realpath(path.c_str(), nullptr)) {
+        o->openPath = abs;
+        std::free(abs);
+    } else {
+        o->openPath = path;
+    }
     o->size = static_cast<long long>(st.st_size);
     o->mtimeNs = static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
     o->inode = st.st_ino;
@@ -1078,7 +1092,7 @@ CrdRangeLines::Reader::Reader(const CrdRangeLines& lines) : m_lines(lines) {
     if (!lines.m_origin || lines.m_size == 0) return;
     if (!sameAsRead(*lines.m_origin, &m_error)) return;
     m_file = std::make_unique<File>();
-    m_file->in.open(lines.m_origin->path, std::ios::binary);
+    m_file->in.open(lines.m_origin->openPath, std::ios::binary);
     if (!m_file->in) m_error = lines.m_origin->path + ": cannot open it again to read its type-10 records: " + std::strerror(errno);
 }
 
@@ -1133,9 +1147,11 @@ bool CrdRangeLines::Reader::next(std::string_view* text) {
     f.pos = end + 1;
     while (!t.empty() && t.back() == '\r') t.remove_suffix(1);
     if (last && t.find('\n') != std::string_view::npos) return changed("more lines than it had");
+    // (the record's first field as the reader's Fields takes it: blanks are spaces, tabs and CRs)
+    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
     size_t q = 0;
-    while (q < t.size() && (t[q] == ' ' || t[q] == '\t')) ++q;
-    if (t.substr(q, 2) != "10" || (t.size() > q + 2 && t[q + 2] != ' ' && t[q + 2] != '\t'))
+    while (q < t.size() && blank(t[q])) ++q;
+    if (t.substr(q, 2) != "10" || (t.size() > q + 2 && !blank(t[q + 2])))
         return changed("not the type-10 record it was");
     *text = t;
     ++m_k;
@@ -1203,6 +1219,13 @@ bool CrdRangeLines::replaceField(size_t field, const std::function<std::optional
     }
     *this = std::move(out);
     return true;
+}
+
+size_t CrdRangeLines::textBytes() const {
+    if (!m_origin) return m_text.size();
+    size_t b = 0;
+    for (const Run& r : m_runs) b += static_cast<size_t>(r.fileEnd - r.fileBegin);
+    return b;
 }
 
 size_t CrdRangeLines::bytes() const {
@@ -1518,7 +1541,7 @@ bool formatCrd(const CrdFile& file, std::string* text, std::string* error) {
     size_t n = 0;
     for (const auto& p : file.passes) {
         for (const auto& r : p.records) n += r.text.size() + 2;
-        n += p.rangeLines.bytes() + 2 * p.rangeLines.size();
+        n += p.rangeLines.textBytes() + 2 * p.rangeLines.size();
     }
     for (const auto& r : file.trailer) n += r.text.size() + 2;
     std::string out;

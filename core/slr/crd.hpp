@@ -329,7 +329,8 @@ struct CrdCalibration {
 
 /// The file a reader read, as it was then (its lines are re-read from it by offset).
 struct CrdFileOrigin {
-    std::string path;
+    std::string path;      ///< as given (for messages)
+    std::string openPath;  ///< absolute, to open it again
     long long size = -1;
     long long mtimeNs = 0;
     unsigned long long inode = 0, device = 0;
@@ -366,6 +367,8 @@ public:
     /// read back (nothing is changed then).
     bool replaceField(size_t field, const std::function<std::optional<std::string>(size_t k)>& value, std::string* error);
     size_t bytes() const;
+    /// The lines' text bytes (without line ends), in memory or in the file.
+    size_t textBytes() const;
     void clear() { *this = CrdRangeLines(); }
 
     /// The lines in order, from memory or from the file (in blocks).
