@@ -1,8 +1,9 @@
-// laserwb.slr: an SLR pass from its files to its products, as `laserwb-cli slr` runs it: the
-// readers (CRD, CPF, SINEX; core/slr/slr_run.hpp loadSlrPass: O-C from the prediction or the
-// pass's own TOF trend), the settings of a pass (passSettings: preset, normal-point context),
-// the task (PassTask: screening, post-fit, normal points, judgeRun) and its writers
-// (core/slr/pass_output.hpp). Nothing here computes: the CLI and the workbench call the same.
+// laserwb.slr: an SLR pass from its files to its products, as `laserwb-cli slr` runs it. The
+// binding gathers sources (SlrSources: files, parameters, preset, threads) and hands them to the
+// core's tasks: loadSlrPass loads them (read, checked, the pass opened), resolveAndRunPass
+// resolves a pass's settings and runs it, writeScreenedPass writes its products, runStationDay
+// and tuneSlr do a file of passes. Nothing here reads, resolves or computes: the CLI and the
+// workbench call the same tasks.
 #include <atomic>
 #include <memory>
 
@@ -93,8 +94,24 @@ void gatherParams(const py::object& params, slr::SlrSources* src) {
     lwb::py::gatherParams(params, slr::slrSchema(), "laserwb.slr.SlrParams", &src->config, &src->set);
 }
 
-Pass loadPass(const py::object& path, const py::object& passNumber, const py::object& cpf, const py::object& stations,
-              const py::object& params) {
+// The sources loaded by the core (loadSlrPass: read, resolved, the pass opened) without the GIL,
+// as a Pass; the load's error raised.
+slr::LoadedSlrPass loadSources(const slr::SlrSources& src) {
+    slr::LoadedSlrPass loaded;
+    {
+        py::gil_scoped_release nogil;
+        loaded = slr::loadSlrPass(src);
+    }
+    if (!loaded.ok) raise(loaded.error);
+    return loaded;
+}
+
+Pass passOf(const slr::LoadedSlrPass& loaded) {
+    return Pass{loaded.opened.pass, loaded.opened.warnings, loaded.opened.notes, loaded.setup.sources};
+}
+
+Pass pyLoadPass(const py::object& path, const py::object& passNumber, const py::object& cpf, const py::object& stations,
+                const py::object& params) {
     // The sources as the CLI gathers them from its flags; the core reads, chooses and loads.
     slr::SlrSources src;
     src.input = fsPath(path);
@@ -116,13 +133,7 @@ Pass loadPass(const py::object& path, const py::object& passNumber, const py::ob
         const long long k = passNumber.cast<long long>();
         src.passNumber = static_cast<int>(k);
     }
-    slr::LoadedSlrPass loaded;
-    {
-        py::gil_scoped_release nogil;
-        loaded = slr::loadSlrPass(src);
-    }
-    if (!loaded.ok) raise(loaded.error);
-    return Pass{loaded.opened.pass, loaded.opened.warnings, loaded.opened.notes, loaded.setup.sources};
+    return passOf(loadSources(src));
 }
 
 PassRun runPass(const py::object& given, const py::object& params, const py::object& preset, const py::object& satellite,
@@ -130,7 +141,7 @@ PassRun runPass(const py::object& given, const py::object& params, const py::obj
     // A Pass, or a file's path loaded here as load_pass(path, params=params) loads it.
     Pass loaded;
     if (py::isinstance<py::str>(given) || py::hasattr(given, "__fspath__"))
-        loaded = loadPass(given, py::none(), py::none(), py::none(), params);
+        loaded = pyLoadPass(given, py::none(), py::none(), py::none(), params);
     else if (!py::isinstance<Pass>(given))
         throw py::type_error("run() takes a Pass (laserwb.slr.load_pass(PATH)) or a CRD or O-C file's path, not " +
                              std::string(py::str(py::type::of(given).attr("__name__"))));
@@ -235,13 +246,7 @@ slr::LoadedSlrPass contentsOf(slr::SlrSources src) {
     requireReadable(src.cpf);
     requireReadable(src.stations);
     src.listOnly = true;
-    slr::LoadedSlrPass l;
-    {
-        py::gil_scoped_release nogil;
-        l = slr::loadSlrPass(src);
-    }
-    if (!l.ok) raise(l.error);
-    return l;
+    return loadSources(src);
 }
 
 void bindReaders(py::module_& m) {
@@ -302,14 +307,9 @@ void bindPass(py::module_& m) {
             arrays->name = name;
             slr::SlrSources src;
             src.arrays = std::move(arrays);
-            slr::LoadedSlrPass loaded;
-            {
-                py::gil_scoped_release nogil;
-                loaded = slr::loadSlrPass(src);
-            }
-            if (!loaded.ok) raise(loaded.error);
+            slr::LoadedSlrPass loaded = loadSources(src);
             loaded.setup.sources.arrays.reset();  // (the pass holds its columns; no file names it)
-            return Pass{loaded.opened.pass, loaded.opened.warnings, loaded.opened.notes, loaded.setup.sources};
+            return passOf(loaded);
         }, py::arg("t"), py::arg("oc"), py::arg("name") = "arrays",
            "A pass from epochs and O-C (s, two-way), as an O-C table's columns: run() screens it, write(csv=) writes its table.")
         .def("__len__", [](const Pass& p) { return p.data->t.size(); })
@@ -410,7 +410,7 @@ py::dict tunePasses(const py::object& files, const py::object& satellite, const 
 
 // The runs: load_pass, run, set_search_threads, process_file, tune and default_params.
 void bindRuns(py::module_& m) {
-    m.def("load_pass", &loadPass, py::arg("path"), py::arg("pass_number") = py::none(), py::arg("cpf") = py::none(),
+    m.def("load_pass", &pyLoadPass, py::arg("path"), py::arg("pass_number") = py::none(), py::arg("cpf") = py::none(),
           py::arg("stations") = py::none(), py::arg("params") = py::none(),
           "Loads one pass of a CRD file (pass_number from 1; default the first with full-rate records) or an\n"
           "O-C CSV. With cpf (a file or a folder) and stations (SINEX), O-C from the prediction; without,\n"
