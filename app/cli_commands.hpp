@@ -3,6 +3,8 @@
 // the command itself.
 namespace lwb::cli {
 int cmdFootprint(int argc, char** argv);
+/// laserwb-cli footprint tune (cli_footprint.cpp).
+int cmdFootprintTune(int argc, char** argv);
 int cmdSimulateFootprint(int argc, char** argv);
 int cmdTrend(int argc, char** argv);
 int cmdSimulateTrend(int argc, char** argv);

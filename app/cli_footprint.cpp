@@ -25,6 +25,7 @@
 #include "core/footprint/report_columns.hpp"
 #include "core/footprint/shot_list.hpp"
 #include "core/footprint/trend.hpp"
+#include "core/footprint/tune.hpp"
 #include "core/sim/centroid_sim.hpp"
 #include "core/sim/footprint_eval.hpp"
 #include "core/common/rng.hpp"
@@ -261,14 +262,49 @@ int runFootprint(const Args& a, const FootprintSources& src, const BatchOptions&
 }
 }  // namespace
 
+namespace {
+// The options `footprint` and `footprint tune` gather their sources from.
+void declareSourceOptions(Args& a, const FootprintOptions& params) {
+    params.declare(a);
+    for (const char* o : {"--preset", "--raw-size", "--threads", "--max-pixels", "--metadata"}) a.option(o, true);
+    a.option("--center", true, true);
+}
+
+// The sources as given (the core resolves them: core/footprint/footprint_run.hpp). False with
+// *err (a usage error).
+bool gatherSources(const Args& a, const FootprintOptions& params, FootprintSources* src, std::string* err) {
+    src->configFile = a.value("--config");
+    src->preset = a.value("--preset");
+    if (!params.settings(a, &src->set, err)) return false;
+    for (const auto& c : a.values("--center")) {
+        double x = 0, y = 0;
+        if (!parsePoint(c, &x, &y)) {
+            *err = "--center must be X,Y (numbers), not \"" + c + "\"";
+            return false;
+        }
+        src->centres.emplace_back(x, y);
+    }
+    if (a.has("--raw-size") && !parseSize(a.value("--raw-size"), &src->read.rawWidth, &src->read.rawHeight)) {
+        *err = "--raw-size must be WxH, e.g. 550x550";
+        return false;
+    }
+    long long threads = 0;
+    if (!a.getInt("--threads", 0, 256, &threads, err) || !a.getInt("--max-pixels", 1, 1LL << 40, &src->read.maxPixels, err))
+        return false;
+    src->threads = static_cast<int>(threads);
+    src->inputs = a.positional();
+    src->metadata = a.value("--metadata");
+    return true;
+}
+}  // namespace
+
 int cmdFootprint(int argc, char** argv) {
+    if (argc > 2 && std::string(argv[2]) == "tune") return cmdFootprintTune(argc, argv);  // (a frame named tune: ./tune)
     Args a("footprint", kFootprintUsage);
     const FootprintOptions params;
-    params.declare(a);
+    declareSourceOptions(a, params);
     declareBatchOptions(a);
-    for (const char* o : {"--preset", "--raw-size", "--threads", "-o", "--output", "--max-pixels", "--where", "--metadata"})
-        a.option(o, true);
-    a.option("--center", true, true);
+    for (const char* o : {"-o", "--output", "--where"}) a.option(o, true);
     for (const char* o : {"--keep-going", "--help-params", "--help-columns", "-q", "--quiet", "--help", "-h"}) a.option(o, false);
     if (!a.parse(argc, argv, 2)) return fail("footprint", a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
@@ -286,12 +322,9 @@ int cmdFootprint(int argc, char** argv) {
         std::cout << "footprint parameters (key = default unit  valid range):\n" << footprintSchema().describe(FootprintParams{});
         return kOk;
     }
-    // The sources as given; the core resolves them (core/footprint/footprint_run.hpp).
     FootprintSources src;
     std::string err;
-    src.configFile = a.value("--config");
-    src.preset = a.value("--preset");
-    if (!params.settings(a, &src.set, &err)) return fail("footprint", err, kUsage);
+    if (!gatherSources(a, params, &src, &err)) return fail("footprint", err, kUsage);
     if (params.printRequested(a)) {
         FootprintParams p;
         FootprintError fe;
@@ -303,21 +336,7 @@ int cmdFootprint(int argc, char** argv) {
     const int loaded = loadBatchOptions("footprint", a, &bo);
     RunSummary summary("footprint", bo);
     if (loaded) return summary.finish(loaded);
-    for (const auto& c : a.values("--center")) {
-        double x = 0, y = 0;
-        if (!parsePoint(c, &x, &y))
-            return summary.finish(fail("footprint", "--center must be X,Y (numbers), not \"" + c + "\"", kUsage));
-        src.centres.emplace_back(x, y);
-    }
-    if (a.has("--raw-size") && !parseSize(a.value("--raw-size"), &src.read.rawWidth, &src.read.rawHeight))
-        return summary.finish(fail("footprint", "--raw-size must be WxH, e.g. 550x550", kUsage));
-    long long threads = 0;
-    if (!a.getInt("--threads", 0, 256, &threads, &err) || !a.getInt("--max-pixels", 1, 1LL << 40, &src.read.maxPixels, &err))
-        return summary.finish(fail("footprint", err, kUsage));
-    src.threads = static_cast<int>(threads);
-    src.inputs = a.positional();
     src.inputs.insert(src.inputs.end(), bo.listed.begin(), bo.listed.end());
-    src.metadata = a.value("--metadata");
     src.keepGoing = a.has("--keep-going");
     // The parameters' errors first (the shots are gathered once the options are known good).
     FootprintParams checked;
@@ -326,6 +345,81 @@ int cmdFootprint(int argc, char** argv) {
     return summary.finish(runFootprint(a, src, bo, summary));
 }
 
+namespace {
+const std::string kTuneUsage =
+    std::string("usage: laserwb-cli footprint tune [options] INPUT... --verdicts VERDICTS.csv --config-out FILE.json\n"
+    "Tunes the verdict criteria from the analyst's own verdicts. Every shot of the inputs (frames,\n"
+    "folders, shot lists, as for `footprint`) is fitted once under the starting parameters (the\n"
+    "defaults, or --config / --preset / --set); the shots with a verdict in VERDICTS.csv are then\n"
+    "judged under moved thresholds (each end of the axis-ratio, major-axis, tilt and eccentricity\n"
+    "ranges, mse_max, max_uncertainty_px, edge_extent, saturation_max_pixels, second_spot_fraction;\n"
+    "those switched on), one at a time, for the fewest disagreements between good and not good. No\n"
+    "move lets more shots the analyst did not call good through as good than the starting point did,\n"
+    "and a threshold moves only for a gain, to the middle of the values that give it. Cross-validation\n"
+    "(the shots in folds by name; each fold judged by criteria tuned on the others) says how the\n"
+    "choice holds on shots it was not tuned on. Prints the confusion table before, after and held out.\n"
+    "VERDICTS.csv: 'file' and 'verdict' columns (good, doubtful, rejected; empty or unreadable rows\n"
+    "are left out), and 'roi' for frames of several ROIs: the workbench's review export and a\n"
+    "`footprint` report have them. A row is matched to a shot by the frame's path (relative to the\n"
+    "table's folder, else to the working folder), else by its file name where one frame alone has it.\n"
+    "  --verdicts FILE.csv       the analyst's verdicts (required)\n"
+    "  --config-out FILE.json    the tuned parameters, a config for `footprint --config` (required);\n"
+    "                            beside it FILE.json.provenance.json (the tuning's record, the inputs)\n"
+    "  --folds K                 cross-validation folds, 2-20 (default 5; 0 = none)\n"
+    "  --config, --set, --preset, --method, --roi, --center, --metadata, --raw-size, --max-pixels,\n"
+    "  --threads                 the starting point and the shots, as for `footprint`\n"
+    "  -q, --quiet               no progress line, no tables\n") +
+    "Then: laserwb-cli footprint INPUT... --config FILE.json -o OUT.csv applies it.\n"
+    "Exit codes: 0 written, 1 a file could not be read or written, 2 usage (no verdicts, no shot\n"
+    "with a verdict, verdicts of one kind only).\n";
+}  // namespace
+
+int cmdFootprintTune(int argc, char** argv) {
+    const std::string cmd = "footprint tune";
+    Args a(cmd, kTuneUsage);
+    const FootprintOptions params;
+    declareSourceOptions(a, params);
+    for (const char* o : {"--verdicts", "--config-out", "--folds"}) a.option(o, true);
+    for (const char* o : {"-q", "--quiet", "--help", "-h"}) a.option(o, false);
+    if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
+    if (a.has("--help") || a.has("-h")) {
+        std::cout << a.usage();
+        return kOk;
+    }
+    const bool quiet = a.has("-q") || a.has("--quiet");
+    FootprintTuneSources src;
+    std::string err;
+    if (!gatherSources(a, params, &src.run, &err)) return fail(cmd, err, kUsage);
+    src.verdicts = a.value("--verdicts");
+    const std::string out = a.value("--config-out");
+    long long folds = 5;
+    if (!a.getInt("--folds", 0, 20, &folds, &err)) return fail(cmd, err, kUsage);
+    src.folds = static_cast<int>(folds);
+    if (src.run.inputs.empty()) return fail(cmd, "no shots given (frames, folders or shot lists)", kUsage);
+    if (src.verdicts.empty()) return fail(cmd, "--verdicts FILE.csv is required (the analyst's verdicts)", kUsage);
+    if (out.empty()) return fail(cmd, "--config-out FILE.json is required (where the tuned parameters go)", kUsage);
+    Progress progress("footprint tune", 1000, quiet);
+    core::Feedback fb([&](double f) { progress.update(static_cast<size_t>(f * 1000)); });
+    const FootprintTuneResult r = tuneFootprint(src, &fb);
+    progress.finish();
+    if (!r.ok) return fail(cmd, r.error.message, r.error.usage ? kUsage : kFailed);
+    for (const std::string& n : r.notes) std::cerr << "laserwb-cli footprint tune: note: " << n << "\n";
+    if (!writeTunedFootprintConfig(r, src, out, &err)) return fail(cmd, err);
+    if (!quiet) {
+        const VerdictTuneResult& t = r.tuning;
+        std::cout << r.labelled << " shot(s) with a verdict of " << r.rois << " (" << r.shots << " frame(s))\n";
+        if (t.changes.empty()) std::cout << "no criterion moved: the starting point is already the best found\n";
+        for (const VerdictChange& c : t.changes)
+            std::cout << "  " << c.name() << ": " << core::formatDouble(c.before, 4) << " -> " << core::formatDouble(c.after, 4) << "\n";
+        std::cout << "before (the starting point):\n" << t.confusionBefore.text() << "after (tuned on these shots):\n"
+                  << t.confusionAfter.text();
+        if (t.folds)
+            std::cout << "held out (" << t.folds << "-fold cross-validation: each shot judged by criteria tuned without it):\n"
+                      << t.heldOut.text();
+        std::cout << "written: " << out << "\n";
+    }
+    return kOk;
+}
 namespace {
 const char* kSimUsage =
     "usage: laserwb-cli simulate footprint --count N --seed S [options] OUTDIR\n"

@@ -31,6 +31,7 @@ const char* kMainUsage =
     "\n"
     "Footprint camera:\n"
     "  footprint            spot centre + verdict for frames/ROIs -> CSV\n"
+    "  footprint tune       verdict criteria tuned from the analyst's verdicts -> config JSON\n"
     "  trend                monthly centroid means, pointing change, beam distance -> CSV\n"
     "  simulate footprint   simulated shots with exact truth\n"
     "  simulate trend       a simulated centroid table (both beams, months) with exact truth\n"

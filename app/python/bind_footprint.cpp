@@ -9,6 +9,7 @@
 #include "bind.hpp"
 #include "core/footprint/batch.hpp"
 #include "core/footprint/footprint_run.hpp"
+#include "core/footprint/tune.hpp"
 #include "core/footprint/report_columns.hpp"
 #include "core/footprint/image_io.hpp"
 
@@ -100,6 +101,44 @@ std::string firstFailure(const fp::BatchResult& r) {
             if (!roi.result.ok) return it.file + ": " + roi.result.error;
     }
     return {};
+}
+
+// tune: laserwb-cli footprint tune's task (core tuneFootprint, writeTunedFootprintConfig), its
+// record as a dict.
+py::dict tuneShots(const py::object& inputs, const py::object& verdicts, const py::object& configOut, const py::object& params,
+                   const py::object& preset, const py::object& method, const py::object& centres, const py::object& rawSize,
+                   long long maxPixels, int threads, int folds) {
+    fp::FootprintTuneSources src;
+    src.run = sourcesOf(params, preset, method);
+    if (py::isinstance<py::str>(inputs) || py::hasattr(inputs, "__fspath__")) src.run.inputs.push_back(inputPath(inputs, true));
+    else
+        for (const py::handle f : inputs) src.run.inputs.push_back(inputPath(py::reinterpret_borrow<py::object>(f), true));
+    src.run.threads = threads;
+    if (maxPixels > 0) src.run.read.maxPixels = maxPixels;
+    if (!rawSize.is_none()) {
+        const auto wh = sizeArgument(rawSize, "raw_size");
+        src.run.read.rawWidth = wh.first;
+        src.run.read.rawHeight = wh.second;
+    }
+    if (!centres.is_none())
+        for (const auto& c : pointsArgument(centres, "centres")) src.run.centres.emplace_back(c.first, c.second);
+    src.verdicts = inputPath(verdicts);
+    src.folds = folds;
+    const std::string out = configOut.is_none() ? std::string() : fsPath(configOut);
+    fp::FootprintTuneResult r;
+    std::string err;
+    bool written = true;
+    {
+        py::gil_scoped_release nogil;
+        r = fp::tuneFootprint(src);
+        if (r.ok && !out.empty()) written = fp::writeTunedFootprintConfig(r, src, out, &err);
+    }
+    if (!r.ok) raise(r.error);
+    if (!written) throw Error(err);
+    py::module_ json = py::module_::import("json");
+    py::dict d = json.attr("loads")(core::dumpJson(fp::footprintTuneSummary(r)));
+    d["params"] = json.attr("loads")(core::dumpJson(fp::footprintParamsToJson(r.tuning.after)));
+    return d;
 }
 
 using Frame = py::array_t<float, py::array::c_style | py::array::forcecast>;
@@ -306,6 +345,17 @@ void bindFootprint(py::module_& top) {
            "its provenance beside it (PATH.provenance.json).");
 
     m.def("csv_header", [] { return fp::footprintCsvHeader(); }, "The report's header line.");
+    m.def("tune", &tuneShots, py::arg("inputs"), py::arg("verdicts"), py::arg("config_out") = py::none(),
+          py::arg("params") = py::none(), py::arg("preset") = py::none(), py::arg("method") = py::none(),
+          py::arg("centres") = py::none(), py::arg("raw_size") = py::none(), py::arg("max_pixels") = 0,
+          py::arg("threads") = 0, py::arg("folds") = 5,
+          "The verdict criteria tuned from the analyst's verdicts, as laserwb-cli footprint tune: every shot\n"
+          "of inputs (image files, folders, shot lists: a path or a list) fitted once under the starting\n"
+          "parameters (params, preset, method as for fit_batch), the thresholds moved one at a time for the\n"
+          "fewest disagreements with verdicts (a CSV with file and verdict columns, roi for frames of several\n"
+          "ROIs), never letting more not-good shots through than the start; folds: cross-validation (0 none).\n"
+          "config_out: the tuned parameters written as a config (the CLI's bytes) with its provenance.\n"
+          "Returns the record: shots, labelled, changes, confusion_before/after/held_out, notes, params.");
     m.def("fit_batch", &fitBatch, py::arg("inputs"), py::arg("params") = py::none(), py::arg("preset") = py::none(),
           py::arg("method") = py::none(), py::arg("centres") = py::none(), py::arg("raw_size") = py::none(),
           py::arg("max_pixels") = 0, py::arg("threads") = 0, py::arg("names") = py::none(), py::arg("keep_going") = false,

@@ -78,14 +78,16 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params) {
     return r;
 }
 
+VerdictMeasures measureResult(const FootprintResult& r, int roiWidth, int roiHeight) {
+    VerdictMeasures m = measureVerdict(r.fit, r.domain, roiWidth, roiHeight);
+    m.startNote = r.startNote;
+    return m;
+}
+
 void judgeResult(FootprintResult* r, int roiWidth, int roiHeight, const VerdictParams& verdict) {
     if (!r->ok) return;
-    Judgement j = judge(r->fit, r->domain, roiWidth, roiHeight, verdict);
-    r->verdict = j.verdict;
-    r->reasons = std::move(j.reasons);
-    // A fit that had to start from moments is doubtful at best, whatever the criteria.
-    if (!r->startNote.empty() && r->verdict == Verdict::Good) r->verdict = Verdict::Doubtful;
-    if (!r->startNote.empty() && r->verdict == Verdict::Doubtful) r->reasons.push_back(r->startNote);
+    r->reasons.clear();
+    r->verdict = checkVerdict(measureResult(*r, roiWidth, roiHeight), verdict, &r->reasons);
 }
 
 bool onlyVerdictDiffers(const FootprintParams& a, const FootprintParams& b) {

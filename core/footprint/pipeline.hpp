@@ -76,6 +76,9 @@ FootprintResult processRoi(const cv::Mat& roi, const FootprintParams& params);
 /// criteria, no refit (roiWidth / roiHeight: the ROI's size, for the edge check). A result that
 /// is not ok (unusable input or params) is left as it is.
 void judgeResult(FootprintResult* r, int roiWidth, int roiHeight, const VerdictParams& verdict);
+/// What the verdict stage reads of r (its fit, domain and start note; roiWidth / roiHeight: the
+/// ROI's size): judgeResult is checkVerdict of these under the criteria.
+VerdictMeasures measureResult(const FootprintResult& r, int roiWidth, int roiHeight);
 /// True when results under `a` hold under `b` but for the verdict: only verdict criteria (and
 /// the informational preset name) differ, so judgeResult() replaces processRoi(). The stages
 /// come from the schema rows' tags (FootprintStage).

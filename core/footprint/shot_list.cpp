@@ -124,31 +124,47 @@ bool expandShots(const std::vector<std::string>& inputs, std::vector<ShotSpec>* 
     return true;
 }
 
+void FrameIndex::add(const std::string& file, size_t row) {
+    const std::string path = absolute(file);
+    std::vector<size_t>& rows = m_byPath[path];
+    if (rows.empty()) m_pathsByName[nameOf(path)].push_back(path);
+    rows.push_back(row);
+}
+
+const std::vector<size_t>& FrameIndex::atPath(const std::string& file) const {
+    static const std::vector<size_t> kNone;
+    const auto it = m_byPath.find(absolute(file));
+    return it == m_byPath.end() ? kNone : it->second;
+}
+
+const std::vector<size_t>& FrameIndex::rowsOf(const std::string& file) const {
+    const std::vector<size_t>& here = atPath(file);
+    if (!here.empty()) return here;
+    const auto n = m_pathsByName.find(nameOf(file));
+    return n != m_pathsByName.end() && n->second.size() == 1 ? m_byPath.at(n->second.front()) : here;
+}
+
 bool applyFrameMetadata(const ShotListResult& metadata, std::vector<ShotSpec>* shots, size_t* unmatched,
                         std::string* error) {
-    std::map<std::string, const ShotSpec*> byPath;
-    std::map<std::string, std::vector<const ShotSpec*>> byName;
-    for (const ShotSpec& m : metadata.shots) {
-        const std::string key = absolute(m.file);
-        if (auto [it, fresh] = byPath.emplace(key, &m); !fresh) {
+    FrameIndex index;
+    for (size_t k = 0; k < metadata.shots.size(); ++k) {
+        const ShotSpec& m = metadata.shots[k];
+        index.add(m.file, k);
+        if (const std::vector<size_t>& rows = index.atPath(m.file); rows.size() > 1) {
             *error = whereInFile(m.source, m.line) + m.file + " is described already at line " +
-                     std::to_string(it->second->line) +
+                     std::to_string(metadata.shots[rows.front()].line) +
                      " (frame metadata: one row per frame; a frame with two beams is two rows of a shot list)";
             return false;
         }
-        byName[nameOf(m.file)].push_back(&m);
     }
     *unmatched = 0;
     for (ShotSpec& s : *shots) {
-        const ShotSpec* m = nullptr;
-        if (auto it = byPath.find(absolute(s.file)); it != byPath.end())
-            m = it->second;
-        else if (auto n = byName.find(nameOf(s.file)); n != byName.end() && n->second.size() == 1)
-            m = n->second.front();
-        if (!m) {
+        const std::vector<size_t>& rows = index.rowsOf(s.file);
+        if (rows.empty()) {
             ++*unmatched;
             continue;
         }
+        const ShotSpec* m = &metadata.shots[rows.front()];
         if (s.time.empty()) s.time = m->time;
         if (s.beam.empty()) s.beam = m->beam;
         if (s.camera.empty()) s.camera = m->camera;

@@ -10,6 +10,7 @@
 // `file` is relative to the list's folder. `time` is anything the trend reads (ISO 8601 date or
 // date-time, YYYY-MM, Unix seconds) and is checked here, so that a bad time is reported at its
 // line before any frame is processed.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,22 @@ ShotListResult readShotList(const std::string& path);
 /// order given. False with *error (the first problem) when a path is missing or a list is bad.
 bool expandShots(const std::vector<std::string>& inputs, std::vector<ShotSpec>* out, std::string* error,
                  bool keepMissing = false);
+
+/// Rows of a table found by the frame they name: by its path (absolute, symlink-free), else by
+/// its file name when every row of that name names one path (frame metadata, verdict tables).
+class FrameIndex {
+public:
+    /// Adds row `row` for the frame `file` (as the table resolves it).
+    void add(const std::string& file, size_t row);
+    /// The rows of the frame at `file`'s path alone (empty if none).
+    const std::vector<size_t>& atPath(const std::string& file) const;
+    /// The rows of the frame `file`: those of its path, else those of its name (above).
+    const std::vector<size_t>& rowsOf(const std::string& file) const;
+
+private:
+    std::map<std::string, std::vector<size_t>> m_byPath;
+    std::map<std::string, std::vector<std::string>> m_pathsByName;
+};
 
 /// Frame metadata: a table in the shot-list format (file, time, beam, camera, center_x,
 /// center_y) that annotates shots chosen otherwise (folders, --files-from, shards). A shot takes

@@ -1,5 +1,6 @@
 #include "core/footprint/verdict.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/common/text.hpp"
@@ -48,53 +49,102 @@ namespace {
 std::string rangeText(const Range& r) {
     return "[" + formatDouble(r.lo, 4) + ", " + formatDouble(r.hi, 4) + "]";
 }
-void checkRange(const char* name, double v, const Range& r, int digits, std::vector<std::string>* reasons) {
-    if (!r.enabled || std::isnan(v) || r.contains(v)) return;
-    reasons->push_back(std::string(name) + " " + formatDouble(v, digits) + " not in " + rangeText(r));
+// One failed criterion: true when the check is to stop (no reasons wanted).
+bool fails(std::vector<std::string>* reasons, const std::string& why) {
+    if (!reasons) return true;
+    reasons->push_back(why);
+    return false;
+}
+bool failsRange(const char* name, double v, const Range& r, int digits, std::vector<std::string>* reasons) {
+    if (!r.enabled || std::isnan(v) || r.contains(v)) return false;
+    return reasons ? fails(reasons, std::string(name) + " " + formatDouble(v, digits) + " not in " + rangeText(r)) : true;
+}
+// The room along one axis: the extent e at which centre ∓ e·h reaches the pixel edge `dist` away.
+double room(double dist, double h) {
+    if (std::isnan(dist) || std::isnan(h)) return NAN;
+    if (h > 0) return dist / h;
+    return dist >= 0 ? INFINITY : -INFINITY;
 }
 }  // namespace
 
-Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int roiHeight,
-                const VerdictParams& p) {
-    Judgement j;
+VerdictMeasures measureVerdict(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int roiHeight) {
+    VerdictMeasures m;
     if (!domain.found) {
-        j.reasons.push_back(domain.why.empty() ? "no spot" : domain.why);
-        return j;
+        m.refusal = domain.why.empty() ? "no spot" : domain.why;
+        return m;
     }
     if (!fit.ok) {
-        j.reasons.push_back(fit.error.empty() ? "fit failed" : fit.error);
-        return j;
+        m.refusal = fit.error.empty() ? "fit failed" : fit.error;
+        return m;
     }
-    checkRange("axis_ratio", fit.axisRatio, p.axisRatio, 3, &j.reasons);
-    checkRange("major_axis_px", fit.majorAxisPx, p.majorAxisPx, 3, &j.reasons);
-    checkRange("tilt_deg", fit.tiltRad * 180.0 / M_PI, p.tiltDeg, 3, &j.reasons);
-    checkRange("eccentricity", fit.eccentricity, p.eccentricity, 3, &j.reasons);
-    if (p.mseEnabled && std::isfinite(fit.mse) && !(fit.mse < p.mseMax))
-        j.reasons.push_back("mse " + formatDouble(fit.mse, 3) + " not below " + formatDouble(p.mseMax, 3));
-    if (p.maxUncertaintyEnabled && std::isfinite(fit.uncertaintyPx) && fit.uncertaintyPx > p.maxUncertaintyPx)
-        j.reasons.push_back("uncertainty_px " + formatDouble(fit.uncertaintyPx, 3) + " above " +
-                            formatDouble(p.maxUncertaintyPx, 4));
-    if (p.checkEdge) {
-        // Half extents of the ellipse of full axes major/minor at the fit's orientation.
-        const double big = std::max(fit.sigmaX, fit.sigmaY);
-        const double scale = big > 0 ? 0.5 * fit.majorAxisPx / big * p.edgeExtent : 0;
-        const double ax = fit.sigmaX * scale, ay = fit.sigmaY * scale;
-        const double c = std::cos(fit.tiltRad), s = std::sin(fit.tiltRad);
-        const double hx = std::hypot(ax * c, ay * s), hy = std::hypot(ax * s, ay * c);
-        if (fit.x - hx < -0.5 || fit.y - hy < -0.5 || fit.x + hx > roiWidth - 0.5 || fit.y + hy > roiHeight - 0.5)
-            j.reasons.push_back("spot touches the ROI edge");
+    m.axisRatio = fit.axisRatio;
+    m.majorAxisPx = fit.majorAxisPx;
+    m.tiltDeg = fit.tiltRad * 180.0 / M_PI;
+    m.eccentricity = fit.eccentricity;
+    m.mse = fit.mse;
+    m.uncertaintyPx = fit.uncertaintyPx;
+    // Half extents, per unit of edge_extent, of the ellipse of full axes major/minor at the
+    // fit's orientation.
+    const double big = std::max(fit.sigmaX, fit.sigmaY);
+    const double scale = big > 0 ? 0.5 * fit.majorAxisPx / big : 0;
+    const double ax = fit.sigmaX * scale, ay = fit.sigmaY * scale;
+    const double c = std::cos(fit.tiltRad), s = std::sin(fit.tiltRad);
+    const double hx = std::hypot(ax * c, ay * s), hy = std::hypot(ax * s, ay * c);
+    const double rooms[4] = {room(fit.x + 0.5, hx), room(roiWidth - 0.5 - fit.x, hx), room(fit.y + 0.5, hy),
+                             room(roiHeight - 0.5 - fit.y, hy)};
+    for (double r : rooms) m.edgeRoom = std::isnan(r) || std::isnan(m.edgeRoom) ? NAN : std::min(m.edgeRoom, r);
+    m.saturatedPixels = domain.saturatedPixels;
+    m.faint = domain.faint;
+    m.peakSnr = domain.peakSnr;
+    m.localPeakSnr = domain.localPeakSnr;
+    m.localTextureSnr = domain.localTextureSnr;
+    m.secondPeakFraction = domain.secondPeakFraction;
+    m.secondPeakX = domain.secondPeakX;
+    m.secondPeakY = domain.secondPeakY;
+    return m;
+}
+
+Verdict checkVerdict(const VerdictMeasures& m, const VerdictParams& p, std::vector<std::string>* reasons) {
+    if (!m.refusal.empty()) {
+        if (reasons) reasons->push_back(m.refusal);
+        return Verdict::Rejected;
     }
-    if (p.checkSaturation && domain.saturatedPixels > p.saturationMaxPixels)
-        j.reasons.push_back("saturated: " + std::to_string(domain.saturatedPixels) + " px at full scale");
-    if (domain.faint)
-        j.reasons.push_back("faint: peak " + formatDouble(domain.peakSnr, 3) + " sigma above the ROI's ground, " +
-                            formatDouble(domain.localPeakSnr, 3) + " above the ring around it, " +
-                            formatDouble(domain.localTextureSnr, 3) + " above its pixel-scale texture");
-    if (p.checkSecondSpot && domain.secondPeakFraction >= p.secondSpotFraction)
-        j.reasons.push_back("second spot at (" + std::to_string(domain.secondPeakX) + ", " +
-                            std::to_string(domain.secondPeakY) + "), " +
-                            formatDouble(100 * domain.secondPeakFraction, 3) + "% of the main peak");
-    j.verdict = j.reasons.empty() ? Verdict::Good : Verdict::Doubtful;
+    const size_t before = reasons ? reasons->size() : 0;
+    if (failsRange("axis_ratio", m.axisRatio, p.axisRatio, 3, reasons) ||
+        failsRange("major_axis_px", m.majorAxisPx, p.majorAxisPx, 3, reasons) ||
+        failsRange("tilt_deg", m.tiltDeg, p.tiltDeg, 3, reasons) ||
+        failsRange("eccentricity", m.eccentricity, p.eccentricity, 3, reasons))
+        return Verdict::Doubtful;
+    if (p.mseEnabled && std::isfinite(m.mse) && !(m.mse < p.mseMax) &&
+        fails(reasons, reasons ? "mse " + formatDouble(m.mse, 3) + " not below " + formatDouble(p.mseMax, 3) : ""))
+        return Verdict::Doubtful;
+    if (p.maxUncertaintyEnabled && std::isfinite(m.uncertaintyPx) && m.uncertaintyPx > p.maxUncertaintyPx &&
+        fails(reasons, reasons ? "uncertainty_px " + formatDouble(m.uncertaintyPx, 3) + " above " +
+                                     formatDouble(p.maxUncertaintyPx, 4)
+                               : ""))
+        return Verdict::Doubtful;
+    if (p.checkEdge && p.edgeExtent > m.edgeRoom && fails(reasons, "spot touches the ROI edge")) return Verdict::Doubtful;
+    if (p.checkSaturation && m.saturatedPixels > p.saturationMaxPixels &&
+        fails(reasons, reasons ? "saturated: " + std::to_string(m.saturatedPixels) + " px at full scale" : ""))
+        return Verdict::Doubtful;
+    if (m.faint && fails(reasons, reasons ? "faint: peak " + formatDouble(m.peakSnr, 3) + " sigma above the ROI's ground, " +
+                                                formatDouble(m.localPeakSnr, 3) + " above the ring around it, " +
+                                                formatDouble(m.localTextureSnr, 3) + " above its pixel-scale texture"
+                                          : ""))
+        return Verdict::Doubtful;
+    if (p.checkSecondSpot && m.secondPeakFraction >= p.secondSpotFraction &&
+        fails(reasons, reasons ? "second spot at (" + std::to_string(m.secondPeakX) + ", " +
+                                     std::to_string(m.secondPeakY) + "), " +
+                                     formatDouble(100 * m.secondPeakFraction, 3) + "% of the main peak"
+                               : ""))
+        return Verdict::Doubtful;
+    if (!m.startNote.empty() && fails(reasons, m.startNote)) return Verdict::Doubtful;
+    return reasons && reasons->size() > before ? Verdict::Doubtful : Verdict::Good;
+}
+
+Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int roiHeight, const VerdictParams& p) {
+    Judgement j;
+    j.verdict = checkVerdict(measureVerdict(fit, domain, roiWidth, roiHeight), p, &j.reasons);
     return j;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Quality verdict of a fitted spot: good / doubtful / rejected with the failed criteria.
 // Presets: wu2021 (paper 000 step 7) and yao2021 (paper 001 step 6).
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -52,8 +53,34 @@ struct Judgement {
     std::vector<std::string> reasons;  ///< every failed criterion, e.g. "axis_ratio 1.62 not in [1, 1.5]"
 };
 
-/// Judges a fit. `domain` supplies the no-spot, saturation and second-spot checks; roiWidth /
-/// roiHeight the edge check. A criterion whose value the method does not give (NaN) is skipped.
+/// What the criteria look at, measured once from a fit and its domain: the verdict is these
+/// numbers against the criteria (checkVerdict), so that a tuning (core/footprint/tune.hpp) can
+/// judge the same shots under many criteria without fitting again.
+struct VerdictMeasures {
+    std::string refusal;        ///< not empty: no spot, or the fit failed (rejected, this reason)
+    double axisRatio = NAN, majorAxisPx = NAN, tiltDeg = NAN, eccentricity = NAN, mse = NAN, uncertaintyPx = NAN;
+    /// The largest edge_extent at which the spot's ellipse stays inside the ROI (pixel edges at
+    /// −0.5 and size − 0.5); negative when the centre is outside; NaN when the fit gives no centre.
+    double edgeRoom = INFINITY;
+    int saturatedPixels = 0;
+    bool faint = false;         ///< found by the ring look only: doubtful whatever the criteria
+    double peakSnr = 0, localPeakSnr = 0, localTextureSnr = 0;
+    double secondPeakFraction = 0;
+    int secondPeakX = -1, secondPeakY = -1;
+    /// The Gaussian fit had to start from moments (why): doubtful at best, whatever the criteria.
+    std::string startNote;
+};
+
+/// The measures of a fit. `domain` supplies the no-spot, saturation and second-spot ones;
+/// roiWidth / roiHeight the edge room.
+VerdictMeasures measureVerdict(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int roiHeight);
+
+/// The verdict of measures under the criteria, with every failed criterion in *reasons; without
+/// reasons (nullptr) it stops at the first failure and writes no text (a tuning's inner loop).
+/// A criterion whose value the method does not give (NaN) is skipped.
+Verdict checkVerdict(const VerdictMeasures& m, const VerdictParams& params, std::vector<std::string>* reasons = nullptr);
+
+/// Judges a fit: checkVerdict(measureVerdict(...)) with its reasons.
 Judgement judge(const SpotFit& fit, const SpotDomain& domain, int roiWidth, int roiHeight,
                 const VerdictParams& params);
 

@@ -231,6 +231,32 @@ def test_slr_tune_is_the_cli_tune(tmp_path):
         laserwb.slr.tune([str(tmp_path / "missing.frd")])
 
 
+def test_footprint_tune_is_the_cli_tune(tmp_path):
+    # Issue 45: the same task (core tuneFootprint), the same config file and provenance, byte for byte
+    shots = tmp_path / "shots"
+    cli("simulate", "footprint", "--count", "120", "--seed", "3", "--case", "mixed", "--ground", "synthetic", "-q", shots)
+    with open(shots / "truth.csv") as f, open(tmp_path / "verdicts.csv", "w") as out:
+        out.write("file,verdict\n")
+        for row in csv.DictReader(f):
+            verdict = "good" if row["expect_good"] == "1" else "rejected" if row["case"] == "no_spot" else "doubtful"
+            out.write(f"shots/{row['file']},{verdict}\n")
+    cli("footprint", "tune", shots, "--verdicts", tmp_path / "verdicts.csv", "--config-out", tmp_path / "cli.json", "-q")
+    r = laserwb.footprint.tune(str(shots), tmp_path / "verdicts.csv", config_out=tmp_path / "py.json")
+    same_bytes(tmp_path / "cli.json", tmp_path / "py.json")
+    cli_prov = json.load(open(tmp_path / "cli.json.provenance.json"))
+    py_prov = json.load(open(tmp_path / "py.json.provenance.json"))
+    for k in ("command", "parameters", "settings", "inputs", "software", "version"):
+        assert py_prov.get(k) == cli_prov.get(k), k
+    assert r["labelled"] == 120 and r["unmatched_verdict_rows"] == 0
+    assert r["confusion_after"]["false_doubts"] <= r["confusion_before"]["false_doubts"]
+    assert r["confusion_after"]["misses"] <= r["confusion_before"]["misses"]
+    assert r["params"] == json.load(open(tmp_path / "py.json"))
+    # a table without verdicts is refused as the CLI refuses it, with its line
+    (tmp_path / "bad.csv").write_text("file,verdict\nshots/shot_000000.png,maybe\n")
+    with pytest.raises(laserwb.Error, match="bad.csv:2:"):
+        laserwb.footprint.tune(str(shots), tmp_path / "bad.csv")
+
+
 def test_slr_parameters_as_the_cli_options(data, tmp_path):
     frd = str(data / "passes" / "pass4.frd")
     cli("slr", frd, "--set", "screen.cosine_c=0.97", "--reject", "2.5", "-o", tmp_path / "cli.csv",

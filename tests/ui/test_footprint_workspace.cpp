@@ -1,6 +1,11 @@
 // The footprint workspace under the offscreen platform: loading, live reruns, verdict counts,
 // overrides, export, sessions, and a corrupt session that must leave the state alone.
 #include <QApplication>
+#include <QDialog>
+#include <QUndoStack>
+#include <QPushButton>
+#include <QLabel>
+#include <QFileInfo>
 #include <QJsonObject>
 #include <QJsonDocument>
 #include <QJsonArray>
@@ -14,6 +19,7 @@
 #include "test_support.hpp"
 #include "ui/footprint/footprint_params_panel.hpp"
 #include "ui/footprint/footprint_workspace.hpp"
+#include "ui/kit/app_undo.hpp"
 #include "ui/kit/image_view.hpp"
 #include "ui/shell/main_window.hpp"
 #include "ui/kit/param_slider.hpp"
@@ -246,6 +252,76 @@ private slots:
         QTest::keyClick(t, Qt::Key_A);
         QCOMPARE(c->shot(4)->effectiveVerdict(), Verdict::Good);
         QVERIFY(w.isModified());
+    }
+
+    // Issue 45: "Suggest thresholds…" tunes the verdict criteria on the shots with a manual
+    // verdict (the core's VerdictTuneTask in the background), shows before / suggested / held
+    // out, and applies them only on Apply, as one undoable step.
+    void suggestedThresholdsApplyAsOneUndoableStep() {
+        const QString dir = m_dir.path() + "/tune";
+        const lwbtest::CliRun sim = lwbtest::runCli({"simulate", "footprint", "--count", "240", "--seed", "5", "--case",
+                                                     "mixed", "--ground", "synthetic", "-q", dir});
+        QVERIFY2(sim.exitCode == 0, qPrintable(sim.err));
+        const lwb::core::CsvReadResult truth = lwb::core::readCsv(lwbtest::str(dir + "/truth.csv"));
+        QVERIFY(truth.ok);
+        QHash<QString, Verdict> analyst;  // the simulated analyst: the truth's case
+        const int cf = truth.table.column("file"), cg = truth.table.column("expect_good"), cc = truth.table.column("case");
+        for (const auto& row : truth.table.rows)
+            analyst[QString::fromStdString(row[cf])] =
+                row[cg] == "1" ? Verdict::Good : row[cc] == "no_spot" ? Verdict::Rejected : Verdict::Doubtful;
+        MainWindow w;
+        auto* ws = w.workspace<lwb::ui::FootprintWorkspace>();
+        FootprintController* c = ws->controller();
+        QSignalSpy finished(c, &FootprintController::loadFinished);
+        c->open({dir});
+        QVERIFY(finished.wait(30000));
+        QVERIFY(c->waitIdle(30000));
+        // Nothing judged yet: no suggestion, said.
+        QSignalSpy failed(ws, &Workspace::failed);
+        QVERIFY(ws->suggestThresholds());
+        QTRY_COMPARE_WITH_TIMEOUT(failed.count(), 1, 10000);
+        QVERIFY2(failed.first().at(1).toString().contains("too few shots"), qPrintable(failed.first().at(1).toString()));
+        QVERIFY(!ws->suggestionDialog());
+        int falseDoubts = 0;
+        for (int i = 0; i < c->count(); ++i) {
+            const Verdict v = analyst.value(QFileInfo(c->shot(i)->file).fileName(), Verdict::Rejected);
+            falseDoubts += v == Verdict::Good && c->shot(i)->verdict != Verdict::Good;
+            c->setOverride(i, v, QString());
+        }
+        QVERIFY2(falseDoubts > 0, "the defaults doubt no good shot here: nothing to suggest");
+        const int goodBefore = [&] {
+            int n = 0;
+            for (int i = 0; i < c->count(); ++i) n += c->shot(i)->verdict == Verdict::Good;
+            return n;
+        }();
+        const lwb::core::footprint::FootprintParams start = c->params();
+        QVERIFY(ws->suggestThresholds());
+        QTRY_VERIFY_WITH_TIMEOUT(ws->suggestionDialog() && ws->suggestionDialog()->isVisible(), 20000);
+        auto* text = ws->suggestionDialog()->findChild<QLabel*>("suggestionText");
+        QVERIFY(text);
+        QVERIFY2(text->text().contains("240") && text->text().contains("Held out"), qPrintable(text->text()));
+        QVERIFY2(text->text().contains("verdict."), qPrintable(text->text()));  // a criterion moved
+        // Close: nothing changes.
+        QCOMPARE(c->params().verdict.mseMax, start.verdict.mseMax);
+        auto* apply = ws->suggestionDialog()->findChild<QPushButton*>("applySuggestion");
+        QVERIFY(apply && apply->isEnabled());
+        QUndoStack& undo = undoStackOf(ws);
+        const int steps = undo.count();
+        apply->click();
+        QVERIFY(!ws->suggestionDialog()->isVisible());
+        QVERIFY(c->waitIdle(30000));
+        QCOMPARE(undo.count(), steps + 1);
+        QVERIFY(!lwb::core::footprint::footprintSchema().changedKeys(start, c->params()).empty());
+        QCOMPARE(ws->paramsPanel()->params().verdict.mseMax, c->params().verdict.mseMax);  // the panel shows them
+        int goodAfter = 0;
+        for (int i = 0; i < c->count(); ++i) goodAfter += c->shot(i)->verdict == Verdict::Good;
+        QVERIFY2(goodAfter > goodBefore, qPrintable(QString("%1 -> %2").arg(goodBefore).arg(goodAfter)));
+        undo.undo();
+        QVERIFY(c->waitIdle(30000));
+        QVERIFY(lwb::core::footprint::footprintSchema().changedKeys(start, c->params()).empty());
+        int goodUndone = 0;
+        for (int i = 0; i < c->count(); ++i) goodUndone += c->shot(i)->verdict == Verdict::Good;
+        QCOMPARE(goodUndone, goodBefore);
     }
 };
 

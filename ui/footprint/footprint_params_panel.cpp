@@ -156,4 +156,9 @@ void FootprintParamsPanel::setParams(const FootprintParams& p) {
     m_message->hide();
 }
 
+QString FootprintParamsPanel::rowLabel(const std::string& key) const {
+    const QString l = m_form->label(key);
+    return l.isEmpty() ? QString::fromStdString(key) : l;
+}
+
 }  // namespace lwb::ui

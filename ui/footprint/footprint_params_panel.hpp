@@ -24,6 +24,9 @@ public:
     explicit FootprintParamsPanel(QWidget* parent = nullptr);
     ~FootprintParamsPanel() override;
     const core::footprint::FootprintParams& params() const { return m_form->params(); }
+    /// The label of a parameter's row as the panel shows it ("Axis ratio C = σx/σy"); the key when
+    /// it has none.
+    QString rowLabel(const std::string& key) const;
     /// Shows p without emitting paramsChanged.
     void setParams(const core::footprint::FootprintParams& p);
     /// Folder of user presets (JSON files in the CLI's --config format).

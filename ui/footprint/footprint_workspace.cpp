@@ -3,6 +3,8 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -153,6 +155,22 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : Workspace(parent) {
     dockPanels(this, QStringLiteral("footprint"), m_tabs, {shots, params});
 
     wireController();
+    // "Suggest thresholds": the core's tuning task on the shots with a manual verdict.
+    m_tuneJob = new TaskJob<core::footprint::VerdictTuneTask>(this);
+    m_tuneJob->bind(
+        [this](TaskJob<core::footprint::VerdictTuneTask>::Run* run) {
+            if (!m_tuneInputs) return false;
+            run->inputs = m_tuneInputs;
+            run->params = m_controller->params();
+            return true;
+        },
+        [this](core::footprint::VerdictTuneResult r) {
+            emit progress(0, 0, QString());
+            showSuggestion(r, m_tuneInputs ? int(m_tuneInputs->shots.size()) : 0);
+        });
+    connect(m_tuneJob, &LiveJob::progress, this,
+            [this](double f) { emit progress(int(f * 1000), 1000, tr("Suggesting thresholds %p%")); });
+    connect(m_tuneJob, &LiveJob::idle, this, [this] { emit progress(0, 0, QString()); });
     wireZoomKeys();
     setRoiOverlay();
     updateCounts();
@@ -237,6 +255,11 @@ QWidget* FootprintWorkspace::buildShotList() {
     overrideRow->addWidget(reject);
     overrideRow->addWidget(next);
     overrideRow->addWidget(clearOv);
+    auto* suggest = new QPushButton(tr("Suggest thresholds…"), left);
+    suggest->setToolTip(tr("The verdict criteria tuned on the shots you gave a manual verdict (Accept / Reject): "
+                           "what would change, before and after, cross-validated; applied only if you accept"));
+    overrideRow->addWidget(suggest);
+    connect(suggest, &QPushButton::clicked, this, [this] { suggestThresholds(); });
     auto* blink = new QPushButton(tr("Blink / tile (B)"), left);
     blink->setToolTip(tr("The selected shots (Ctrl+click, Shift+click) in a grid or blinking, zoom and display locked (B)"));
     overrideRow->addWidget(blink);
@@ -379,18 +402,8 @@ void FootprintWorkspace::wireController() {
             [this] { currentRowChanged(); });
     // A parameter change is a step of the workspace's undo history (issue 28: a slider change was
     // not, so Ctrl+Z after it took back a manual verdict on a shot that was not on screen).
-    connect(m_panel, &FootprintParamsPanel::paramsChanged, this, [this](const FootprintParams& p) {
-        const FootprintParams before = m_controller->params();
-        m_controller->setParams(p);
-        pushParamsChange<FootprintParams>(
-            this, footprintSchema(), before, p,
-            [this](const FootprintParams& q) {
-                m_panel->setParams(q);
-                m_controller->setParams(q);
-            },
-            tr("footprint parameters"));
-        emit modified();
-    });
+    connect(m_panel, &FootprintParamsPanel::paramsChanged, this,
+            [this](const FootprintParams& p) { changeParams(p, tr("footprint parameters")); });
     connect(m_controller, &FootprintController::currentDetailReady, this, &FootprintWorkspace::showDetail);
     connect(m_controller, &FootprintController::countsChanged, this, &FootprintWorkspace::updateCounts);
     connect(m_controller, &FootprintController::shotsChanged, this, [this](int first, int last) {
@@ -1159,6 +1172,115 @@ QStringList FootprintWorkspace::shortcutNotes() const {
             tr("1\tFootprint ▸ fit the ROI and frame views again"),
             tr("B\tFootprint ▸ blink / tile the selected shots (Ctrl+click, Shift+click select several)"),
             tr("Space, ← / →, T / B\tBlink / tile ▸ play or pause, step, tile or blink")};
+}
+
+void FootprintWorkspace::cancelWork() {
+    m_controller->cancelLoading();
+    m_tuneJob->cancel();
+}
+
+void FootprintWorkspace::changeParams(const FootprintParams& p, const QString& what) {
+    const FootprintParams before = m_controller->params();
+    m_controller->setParams(p);
+    pushParamsChange<FootprintParams>(
+        this, footprintSchema(), before, p,
+        [this](const FootprintParams& q) {
+            m_panel->setParams(q);
+            m_controller->setParams(q);
+        },
+        what);
+    emit modified();
+}
+
+bool FootprintWorkspace::suggestThresholds() {
+    using namespace core::footprint;
+    if (m_controller->busy() || m_tuneJob->busy()) {
+        emit failed(tr("No threshold suggestion yet"),
+                    tr("The shots are still being processed: suggest again when they are done."));
+        return false;
+    }
+    // The shots the analyst judged, as the verdict stage reads them.
+    auto in = std::make_shared<VerdictTuneTask::Inputs>();
+    for (int i = 0; i < m_controller->count(); ++i) {
+        const Shot* s = m_controller->shot(i);
+        if (!s->overridden || !s->processed) continue;
+        LabelledShot l;
+        l.name = overrideKey(*s).toStdString();
+        l.measures = measureResult(s->result, s->roi.cols, s->roi.rows);
+        if (!s->result.ok) l.measures.refusal = s->result.error.empty() ? "not processed" : s->result.error;
+        l.label = s->overrideVerdict;
+        in->shots.push_back(std::move(l));
+    }
+    m_tuneInputs = in;
+    m_tuneJob->startNow();
+    return true;
+}
+
+void FootprintWorkspace::showSuggestion(const core::footprint::VerdictTuneResult& r, int labelled) {
+    using namespace core::footprint;
+    if (!r.ok) {
+        emit failed(tr("No threshold suggestion"),
+                    tr("%1.\nThe criteria are tuned on the shots you gave a manual verdict (Accept A, Reject R): "
+                       "at least 10, some good and some not.")
+                        .arg(QString::fromStdString(r.error)));
+        return;
+    }
+    delete m_suggestion;
+    m_suggestion = new QDialog(this);
+    m_suggestion->setObjectName("thresholdSuggestion");
+    m_suggestion->setWindowTitle(tr("Thresholds suggested from your verdicts"));
+    auto* lay = new QVBoxLayout(m_suggestion);
+    auto pct = [](int k, int n) { return n > 0 ? QString::number(100.0 * k / n, 'f', 1) + " %" : QStringLiteral("–"); };
+    auto cell = [&](int k, int n) { return QStringLiteral("%1 of %2 (%3)").arg(k).arg(n).arg(pct(k, n)); };
+    QString html = tr("<p>Tuned on the <b>%1</b> shots you gave a manual verdict.</p>").arg(labelled);
+    if (r.changes.empty()) {
+        html += tr("<p>No threshold moved: the current criteria are already the best found.</p>");
+    } else {
+        html += QStringLiteral("<table cellpadding='3'><tr><th align='left'>%1</th><th>%2</th><th>%3</th></tr>")
+                    .arg(tr("Criterion"), tr("Now"), tr("Suggested"));
+        for (const VerdictChange& c : r.changes) {
+            // The row as the panel names it, and which end moved.
+            const QString end = c.end == "lo" ? tr("min") : c.end == "hi" ? tr("max") : QString::fromStdString(c.end);
+            html += QStringLiteral("<tr><td>%1</td><td align='right'>%2</td><td align='right'><b>%3</b></td></tr>")
+                        .arg((m_panel->rowLabel(c.key) + " " + end).trimmed().toHtmlEscaped(),
+                             QString::number(c.before, 'g', 4), QString::number(c.after, 'g', 4));
+        }
+        html += QStringLiteral("</table>");
+    }
+    const VerdictConfusion &b = r.confusionBefore, &a = r.confusionAfter, &h = r.heldOut;
+    html += QStringLiteral("<p><table cellpadding='3'><tr><th></th><th>%1</th><th>%2</th>%3</tr>")
+                .arg(tr("Now"), tr("Suggested"), r.folds ? QStringLiteral("<th>%1</th>").arg(tr("Held out")) : QString());
+    html += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td>%4</tr>")
+                .arg(tr("Your good shots judged not good"), cell(b.falseDoubts(), b.analystGood()),
+                     cell(a.falseDoubts(), a.analystGood()),
+                     r.folds ? QStringLiteral("<td>%1</td>").arg(cell(h.falseDoubts(), h.analystGood())) : QString());
+    html += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td>%4</tr></table></p>")
+                .arg(tr("Your other shots judged good"), cell(b.misses(), b.analystNotGood()),
+                     cell(a.misses(), a.analystNotGood()),
+                     r.folds ? QStringLiteral("<td>%1</td>").arg(cell(h.misses(), h.analystNotGood())) : QString());
+    if (r.folds)
+        html += tr("<p><i>Held out: each shot judged by criteria tuned without it (%1-fold cross-validation), "
+                   "what to expect on shots not yet reviewed.</i></p>")
+                    .arg(r.folds);
+    auto* text = new QLabel(html, m_suggestion);
+    text->setObjectName("suggestionText");
+    text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    lay->addWidget(text);
+    auto* buttons = new QDialogButtonBox(m_suggestion);
+    QPushButton* apply = buttons->addButton(tr("Apply"), QDialogButtonBox::AcceptRole);
+    apply->setObjectName("applySuggestion");
+    apply->setEnabled(!r.changes.empty());
+    apply->setToolTip(tr("Sets the suggested criteria in the parameters (one step: Edit > Undo takes it back)"));
+    buttons->addButton(QDialogButtonBox::Close);
+    lay->addWidget(buttons);
+    const FootprintParams after = r.after;
+    connect(buttons, &QDialogButtonBox::accepted, m_suggestion, [this, after] {
+        m_panel->setParams(after);
+        changeParams(after, tr("thresholds suggested from the verdicts"));
+        m_suggestion->accept();
+    });
+    connect(buttons, &QDialogButtonBox::rejected, m_suggestion, &QDialog::reject);
+    m_suggestion->open();
 }
 
 }  // namespace lwb::ui

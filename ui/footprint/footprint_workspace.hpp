@@ -9,8 +9,10 @@
 #include <QWidget>
 
 #include "core/common/json.hpp"
+#include "core/footprint/tune.hpp"
 #include "ui/footprint/footprint_controller.hpp"
 #include "ui/footprint/shot_table_model.hpp"
+#include "ui/kit/task_job.hpp"
 #include "ui/kit/workspace.hpp"
 
 class QTableView;
@@ -87,7 +89,7 @@ public:
     QList<QAction*> fileOpenActions() override;
     QList<QAction*> fileExportActions() override;
     QStringList shortcutNotes() const override;
-    void cancelWork() override { m_controller->cancelLoading(); }
+    void cancelWork() override;
     /// Asks for frames or a shot list, or a folder, and opens them through the window.
     void chooseInputs();
     void chooseFolder();
@@ -110,6 +112,13 @@ public:
     /// Blink / tile window of the shots selected in the table (two or more with an image; the
     /// current view's first shots when fewer are selected). Null when there are not two.
     class BlinkView* openBlinkView();
+    /// "Suggest thresholds from my verdicts": the verdict criteria tuned (core VerdictTuneTask, in
+    /// the background with the window's progress and Cancel) on the shots that have a manual
+    /// verdict; the outcome in a dialog, applied (one undoable step) only when the analyst
+    /// accepts. False when there is nothing to tune on (said in a message box).
+    bool suggestThresholds();
+    /// The last suggestion's dialog (null before one), for tests: Apply and Close.
+    class QDialog* suggestionDialog() const { return m_suggestion; }
     /// The line under the views with the regions' statistics.
     QLabel* regionStatsLabel() const { return m_regionStats; }
 
@@ -132,6 +141,9 @@ private:
     /// After the view changed: `sourceRow` current again if it is in the view, else the first row.
     void selectInView(int sourceRow);
     void judgeCurrent(bool overridden, Verdict v);
+    /// New parameters from the panel or a suggestion: the controller reruns, one undoable step.
+    void changeParams(const core::footprint::FootprintParams& p, const QString& what);
+    void showSuggestion(const core::footprint::VerdictTuneResult& r, int labelled);
     void commitNote();
 
 public:
@@ -166,6 +178,9 @@ private:
     QString m_pendingCurrent;        // from a session: key of the shot to make current
     cv::Mat m_frame;                 // full frame of the current shot (when it is one)
     QString m_frameFile;
+    TaskJob<core::footprint::VerdictTuneTask>* m_tuneJob = nullptr;
+    std::shared_ptr<const core::footprint::VerdictTuneTask::Inputs> m_tuneInputs;  // the next suggestion's shots
+    QDialog* m_suggestion = nullptr;
 };
 
 }  // namespace lwb::ui

@@ -1,4 +1,4 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
@@ -68,8 +68,8 @@
         <translation>%1 的备注</translation>
     </message>
     <message>
-        <source>&lt;p&gt;Shows the shots for which the expression holds, with the verdict choice beside it (Alt+I). For example &lt;code&gt;snr &amp;lt; 10 and beam == 2&lt;/code&gt;, &lt;code&gt;verdict == "doubtful" or note != ""&lt;/code&gt;, &lt;code&gt;abs(dx) &amp;gt; 0.5&lt;/code&gt;, &lt;code&gt;not (roi == 1)&lt;/code&gt;.&lt;/p&gt;&lt;p&gt;&amp;lt; &amp;lt;= &amp;gt; &amp;gt;= == !=, and / or / not, ( ), numbers, "text", + - * /, abs() and sqrt(). Names and text compare without regard to case. A missing number (a rejected shot's x) makes every comparison with it false.&lt;/p&gt;&lt;p&gt;Columns (&lt;i&gt;text&lt;/i&gt;): %1.&lt;/p&gt;&lt;p&gt;dx, dy: the centre less the nominal centre (the ROI's middle when none is given); verdict: as shown (manual where set); computed: the pipeline's; manual: 1 or 0; roi: the ROI's index in its frame.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;显示使表达式成立、且符合旁边判定选项的影像（Alt+I）。例如 &lt;code&gt;snr &amp;lt; 10 and beam == 2&lt;/code&gt;、&lt;code&gt;verdict == "doubtful" or note != ""&lt;/code&gt;、&lt;code&gt;abs(dx) &amp;gt; 0.5&lt;/code&gt;、&lt;code&gt;not (roi == 1)&lt;/code&gt;。&lt;/p&gt;&lt;p&gt;&amp;lt; &amp;lt;= &amp;gt; &amp;gt;= == !=、and / or / not、( )、数字、"文本"、+ - * /、abs() 和 sqrt()。名称和文本比较时不区分大小写。缺失的数值（如被剔除影像的 x）与任何值比较的结果均为假。&lt;/p&gt;&lt;p&gt;列（&lt;i&gt;文本&lt;/i&gt;）：%1。&lt;/p&gt;&lt;p&gt;dx、dy：中心减去标称中心（未给出标称中心时取 ROI 的中点）；verdict：显示的判定（设置了人工判定时取人工判定）；computed：流程计算的判定；manual：1 或 0；roi：ROI 在其帧中的序号。&lt;/p&gt;</translation>
+        <source>&lt;p&gt;Shows the shots for which the expression holds, with the verdict choice beside it (Alt+I). For example &lt;code&gt;snr &amp;lt; 10 and beam == 2&lt;/code&gt;, &lt;code&gt;verdict == &quot;doubtful&quot; or note != &quot;&quot;&lt;/code&gt;, &lt;code&gt;abs(dx) &amp;gt; 0.5&lt;/code&gt;, &lt;code&gt;not (roi == 1)&lt;/code&gt;.&lt;/p&gt;&lt;p&gt;&amp;lt; &amp;lt;= &amp;gt; &amp;gt;= == !=, and / or / not, ( ), numbers, &quot;text&quot;, + - * /, abs() and sqrt(). Names and text compare without regard to case. A missing number (a rejected shot&apos;s x) makes every comparison with it false.&lt;/p&gt;&lt;p&gt;Columns (&lt;i&gt;text&lt;/i&gt;): %1.&lt;/p&gt;&lt;p&gt;dx, dy: the centre less the nominal centre (the ROI&apos;s middle when none is given); verdict: as shown (manual where set); computed: the pipeline&apos;s; manual: 1 or 0; roi: the ROI&apos;s index in its frame.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;显示使表达式成立、且符合旁边判定选项的影像（Alt+I）。例如 &lt;code&gt;snr &amp;lt; 10 and beam == 2&lt;/code&gt;、&lt;code&gt;verdict == &quot;doubtful&quot; or note != &quot;&quot;&lt;/code&gt;、&lt;code&gt;abs(dx) &amp;gt; 0.5&lt;/code&gt;、&lt;code&gt;not (roi == 1)&lt;/code&gt;。&lt;/p&gt;&lt;p&gt;&amp;lt; &amp;lt;= &amp;gt; &amp;gt;= == !=、and / or / not、( )、数字、&quot;文本&quot;、+ - * /、abs() 和 sqrt()。名称和文本比较时不区分大小写。缺失的数值（如被剔除影像的 x）与任何值比较的结果均为假。&lt;/p&gt;&lt;p&gt;列（&lt;i&gt;文本&lt;/i&gt;）：%1。&lt;/p&gt;&lt;p&gt;dx、dy：中心减去标称中心（未给出标称中心时取 ROI 的中点）；verdict：显示的判定（设置了人工判定时取人工判定）；computed：流程计算的判定；manual：1 或 0；roi：ROI 在其帧中的序号。&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Change %1</source>
@@ -92,7 +92,7 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <source>unknown plot format "%1" (use .png, .svg or .pdf)</source>
+        <source>unknown plot format &quot;%1&quot; (use .png, .svg or .pdf)</source>
         <translation>未知的绘图格式“%1”（请使用 .png、.svg 或 .pdf）</translation>
     </message>
     <message>
@@ -172,7 +172,7 @@
         <translation>未应用：%1</translation>
     </message>
     <message>
-        <source>unknown key "%1" in the %2 session state</source>
+        <source>unknown key &quot;%1&quot; in the %2 session state</source>
         <translation>%2 会话状态中的未知键“%1”</translation>
     </message>
     <message>
@@ -196,7 +196,9 @@
     <name>lwb::ui::BlinkView</name>
     <message numerus="yes">
         <source>Blink / tile: %n shots</source>
-        <translation><numerusform>闪烁比对 / 平铺：%n 幅影像</numerusform></translation>
+        <translation>
+            <numerusform>闪烁比对 / 平铺：%n 幅影像</numerusform>
+        </translation>
     </message>
     <message>
         <source>Tile</source>
@@ -752,8 +754,8 @@
         <translation>没有探测器阵列：请打开探测器 CSV 或演示数据。</translation>
     </message>
     <message>
-        <source>&lt;span style='color:#c0392b'&gt;&lt;b&gt;Detector fit failed:&lt;/b&gt; %1&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;&lt;b&gt;探测器拟合失败：&lt;/b&gt;%1&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;Detector fit failed:&lt;/b&gt; %1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;探测器拟合失败：&lt;/b&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
         <source>untriggered (no energy)</source>
@@ -812,8 +814,8 @@
         <translation>，h %1 m</translation>
     </message>
     <message>
-        <source>&lt;br&gt;&lt;span style='color:#2c8c2c'&gt;Simulated centre E %1, N %2 m: fit − truth %3, %4 m = %5σ (Mahalanobis)&lt;/span&gt;</source>
-        <translation>&lt;br&gt;&lt;span style='color:#2c8c2c'&gt;模拟中心 E %1，N %2 m：拟合 − 真值 %3，%4 m = %5σ（马氏距离）&lt;/span&gt;</translation>
+        <source>&lt;br&gt;&lt;span style=&apos;color:#2c8c2c&apos;&gt;Simulated centre E %1, N %2 m: fit − truth %3, %4 m = %5σ (Mahalanobis)&lt;/span&gt;</source>
+        <translation>&lt;br&gt;&lt;span style=&apos;color:#2c8c2c&apos;&gt;模拟中心 E %1，N %2 m：拟合 − 真值 %3，%4 m = %5σ（马氏距离）&lt;/span&gt;</translation>
     </message>
     <message>
         <source>&lt;br&gt;&lt;b&gt;Footprint&lt;/b&gt; σ %1 × %2 m at %3° · amplitude %4 ± %5 · background %6&lt;br&gt;&lt;b&gt;Fit&lt;/b&gt; %7 of %8 detectors · %9 dof · χ² %10 · RMS residual %11 · %12 steps</source>
@@ -832,8 +834,8 @@
         <translation>没有控制点：请打开控制点 CSV 或演示数据。</translation>
     </message>
     <message>
-        <source>&lt;span style='color:#c0392b'&gt;&lt;b&gt;Calibration failed:&lt;/b&gt; %1&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;&lt;b&gt;定标失败：&lt;/b&gt;%1&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;Calibration failed:&lt;/b&gt; %1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;定标失败：&lt;/b&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
         <source>χ² (left)</source>
@@ -892,15 +894,15 @@
         <translation>（未收敛）</translation>
     </message>
     <message>
-        <source>&lt;span style='color:#c0392b'&gt;%1&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;%1&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;%1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
         <source>No elevation differences: open check points or a differences CSV.</source>
         <translation>没有高程差：请打开检查点或高程差 CSV。</translation>
     </message>
     <message>
-        <source>&lt;br&gt;&lt;small&gt;Paper 002's “RMSE” is the sample std for beam 1 but the RMS about zero for beam 2: read the labels.&lt;/small&gt;</source>
+        <source>&lt;br&gt;&lt;small&gt;Paper 002&apos;s “RMSE” is the sample std for beam 1 but the RMS about zero for beam 2: read the labels.&lt;/small&gt;</source>
         <translation>&lt;br&gt;&lt;small&gt;文献 002 中的“RMSE”对波束 1 是样本标准差，对波束 2 却是相对零的 RMS：请注意区分各项标签。&lt;/small&gt;</translation>
     </message>
     <message>
@@ -972,12 +974,12 @@
         <translation>&lt;b&gt;回波&lt;/b&gt;位于 %1 ± %2 与 %3 ± %4 ns（σ %5 与 %6 ns）&lt;br&gt;&lt;b&gt;Δt&lt;/b&gt; %7 ± %8 ns（双程）· &lt;b&gt;h_waveform&lt;/b&gt; = Δt·c/2/cos θ = &lt;b&gt;%9 ± %10 m&lt;/b&gt;（θ = %11°）&lt;br&gt;RMS 残差 %12 · %13 次迭代</translation>
     </message>
     <message>
-        <source>&lt;br&gt;&lt;span style='color:#2c8c2c'&gt;Simulated feature height %1 m&lt;/span&gt;</source>
-        <translation>&lt;br&gt;&lt;span style='color:#2c8c2c'&gt;模拟地物高度 %1 m&lt;/span&gt;</translation>
+        <source>&lt;br&gt;&lt;span style=&apos;color:#2c8c2c&apos;&gt;Simulated feature height %1 m&lt;/span&gt;</source>
+        <translation>&lt;br&gt;&lt;span style=&apos;color:#2c8c2c&apos;&gt;模拟地物高度 %1 m&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>&lt;span style='color:#c0392b'&gt;&lt;b&gt;Decomposition failed:&lt;/b&gt; %1&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;&lt;b&gt;波形分解失败：&lt;/b&gt;%1&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;Decomposition failed:&lt;/b&gt; %1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;波形分解失败：&lt;/b&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
         <source>yes</source>
@@ -1000,16 +1002,16 @@
         <translation>&lt;br&gt;&lt;b&gt;没有候选地物在 thred_h %1 m 以内&lt;/b&gt;（最接近 %2，Δh %3 m）</translation>
     </message>
     <message>
-        <source>&lt;br&gt;&lt;span style='color:#c0392b'&gt;%1&lt;/span&gt;</source>
-        <translation>&lt;br&gt;&lt;span style='color:#c0392b'&gt;%1&lt;/span&gt;</translation>
+        <source>&lt;br&gt;&lt;span style=&apos;color:#c0392b&apos;&gt;%1&lt;/span&gt;</source>
+        <translation>&lt;br&gt;&lt;span style=&apos;color:#c0392b&apos;&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
         <source>&lt;br&gt;No candidate features: open a candidates CSV to locate the footprint.</source>
         <translation>&lt;br&gt;没有候选地物：请打开候选地物 CSV 以确定足印位置。</translation>
     </message>
     <message>
-        <source>calibration inputs: %1 must be a path, "demo" or empty</source>
-        <translation>定标输入：%1 必须是路径、"demo" 或空</translation>
+        <source>calibration inputs: %1 must be a path, &quot;demo&quot; or empty</source>
+        <translation>定标输入：%1 必须是路径、&quot;demo&quot; 或空</translation>
     </message>
     <message>
         <source>calibration view: colour map %1 out of range</source>
@@ -1093,7 +1095,7 @@
         <translation>视图中的 %2 幅影像里有 %1 幅同时具有 %3 和 %4%5。单击某点可打开对应影像。</translation>
     </message>
     <message>
-        <source> (the table's filter applies; %1 shots in all)</source>
+        <source> (the table&apos;s filter applies; %1 shots in all)</source>
         <translation>（已应用表格筛选；共 %1 幅影像）</translation>
     </message>
 </context>
@@ -1123,7 +1125,7 @@
         <translation>手动</translation>
     </message>
     <message>
-        <source>Display limits: the ROI's min and max, IRAF zscale (as DS9), the 0.5–99.5 percentiles, or the low and high values typed here</source>
+        <source>Display limits: the ROI&apos;s min and max, IRAF zscale (as DS9), the 0.5–99.5 percentiles, or the low and high values typed here</source>
         <translation>显示范围：ROI 的最小值和最大值、IRAF zscale（同 DS9）、0.5–99.5 百分位，或在此输入的下限和上限</translation>
     </message>
     <message>
@@ -1146,19 +1148,23 @@
 <context>
     <name>lwb::ui::FilterField</name>
     <message>
-        <source>&lt;p style='color:#c0392b'&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;The filter shown is still the last valid one.&lt;/p&gt;</source>
-        <translation>&lt;p style='color:#c0392b'&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;当前显示的仍是上一个有效的筛选条件。&lt;/p&gt;</translation>
+        <source>&lt;p style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;The filter shown is still the last valid one.&lt;/p&gt;</source>
+        <translation>&lt;p style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;当前显示的仍是上一个有效的筛选条件。&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
     <name>lwb::ui::FootprintController</name>
     <message numerus="yes">
         <source>Exported %n accepted shot(s) to %1</source>
-        <translation><numerusform>已将 %n 幅接受的影像导出到 %1</numerusform></translation>
+        <translation>
+            <numerusform>已将 %n 幅接受的影像导出到 %1</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <source>; %n accepted shot(s) without a position (no fit) left out</source>
-        <translation><numerusform>；另有 %n 幅接受的影像没有位置（未拟合），未导出</numerusform></translation>
+        <translation>
+            <numerusform>；另有 %n 幅接受的影像没有位置（未拟合），未导出</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1272,7 +1278,7 @@
         <translation>%1（已保存）</translation>
     </message>
     <message>
-        <source>unknown preset "%1"</source>
+        <source>unknown preset &quot;%1&quot;</source>
         <translation>未知预设“%1”</translation>
     </message>
     <message>
@@ -1539,12 +1545,12 @@
         <translation>闪烁比对 / 平铺需要至少两幅含图像的影像：请在表格中选择（Ctrl+单击、Shift+单击）</translation>
     </message>
     <message>
-        <source>&lt;span style='color:#2e8b57'&gt;%1 good&lt;/span&gt; · &lt;span style='color:#d68910'&gt;%2 doubtful&lt;/span&gt; · &lt;span style='color:#c0392b'&gt;%3 rejected&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#2e8b57'&gt;合格 %1&lt;/span&gt; · &lt;span style='color:#d68910'&gt;存疑 %2&lt;/span&gt; · &lt;span style='color:#c0392b'&gt;剔除 %3&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#2e8b57&apos;&gt;%1 good&lt;/span&gt; · &lt;span style=&apos;color:#d68910&apos;&gt;%2 doubtful&lt;/span&gt; · &lt;span style=&apos;color:#c0392b&apos;&gt;%3 rejected&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#2e8b57&apos;&gt;合格 %1&lt;/span&gt; · &lt;span style=&apos;color:#d68910&apos;&gt;存疑 %2&lt;/span&gt; · &lt;span style=&apos;color:#c0392b&apos;&gt;剔除 %3&lt;/span&gt;</translation>
     </message>
     <message>
-        <source> · &lt;span style='color:#6e6e78'&gt;%1 unreadable&lt;/span&gt;</source>
-        <translation> · &lt;span style='color:#6e6e78'&gt;无法读取 %1&lt;/span&gt;</translation>
+        <source> · &lt;span style=&apos;color:#6e6e78&apos;&gt;%1 unreadable&lt;/span&gt;</source>
+        <translation> · &lt;span style=&apos;color:#6e6e78&apos;&gt;无法读取 %1&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 pending</source>
@@ -1607,7 +1613,7 @@
         <translation>ΔX (px)</translation>
     </message>
     <message>
-        <source>Change of the spot centre's x from the first month's mean (px): each shot (dots) and the monthly mean (line)</source>
+        <source>Change of the spot centre&apos;s x from the first month&apos;s mean (px): each shot (dots) and the monthly mean (line)</source>
         <translation>光斑中心 x 相对首月均值的变化（px）：各影像（点）与月均值（线）</translation>
     </message>
     <message>
@@ -1615,7 +1621,7 @@
         <translation>ΔY (px)</translation>
     </message>
     <message>
-        <source>Change of the spot centre's y from the first month's mean (px): each shot (dots) and the monthly mean (line)</source>
+        <source>Change of the spot centre&apos;s y from the first month&apos;s mean (px): each shot (dots) and the monthly mean (line)</source>
         <translation>光斑中心 y 相对首月均值的变化（px）：各影像（点）与月均值（线）</translation>
     </message>
     <message>
@@ -1663,11 +1669,11 @@
         <translation>相对首月的变化：接受影像的逐幅值（点）和月均值（线）；每月内按 3σ 剔除；每像素 0.31″。</translation>
     </message>
     <message>
-        <source>override of %1: unknown verdict "%2"</source>
+        <source>override of %1: unknown verdict &quot;%2&quot;</source>
         <translation>%1 的人工判定：未知判定“%2”</translation>
     </message>
     <message>
-        <source>unknown filter "%1" (one of %2)</source>
+        <source>unknown filter &quot;%1&quot; (one of %2)</source>
         <translation>未知筛选“%1”（应为 %2 之一）</translation>
     </message>
     <message>
@@ -1761,6 +1767,96 @@
     <message>
         <source>Footprint review</source>
         <translation>足印复核</translation>
+    </message>
+    <message>
+        <source>Suggesting thresholds %p%</source>
+        <translation>正在建议阈值 %p%</translation>
+    </message>
+    <message>
+        <source>Suggest thresholds…</source>
+        <translation>建议阈值…</translation>
+    </message>
+    <message>
+        <source>The verdict criteria tuned on the shots you gave a manual verdict (Accept / Reject): what would change, before and after, cross-validated; applied only if you accept</source>
+        <translation>按您给出人工判定（接受 / 拒绝）的光斑调整判定准则：显示会改变什么、调整前后对比及交叉验证结果；仅在您接受后应用</translation>
+    </message>
+    <message>
+        <source>No threshold suggestion yet</source>
+        <translation>暂时无法建议阈值</translation>
+    </message>
+    <message>
+        <source>The shots are still being processed: suggest again when they are done.</source>
+        <translation>光斑仍在处理中：处理完成后再建议。</translation>
+    </message>
+    <message>
+        <source>No threshold suggestion</source>
+        <translation>无阈值建议</translation>
+    </message>
+    <message>
+        <source>%1.
+The criteria are tuned on the shots you gave a manual verdict (Accept A, Reject R): at least 10, some good and some not.</source>
+        <translation>%1。
+判定准则按您给出人工判定的光斑调整（接受 A、拒绝 R）：至少 10 个，且好与不好的都要有。</translation>
+    </message>
+    <message>
+        <source>Thresholds suggested from your verdicts</source>
+        <translation>根据您的判定建议的阈值</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Tuned on the &lt;b&gt;%1&lt;/b&gt; shots you gave a manual verdict.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;按您给出人工判定的 &lt;b&gt;%1&lt;/b&gt; 个光斑调整。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No threshold moved: the current criteria are already the best found.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;没有阈值改变：当前准则已是找到的最优。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Criterion</source>
+        <translation>准则</translation>
+    </message>
+    <message>
+        <source>Now</source>
+        <translation>当前</translation>
+    </message>
+    <message>
+        <source>Suggested</source>
+        <translation>建议</translation>
+    </message>
+    <message>
+        <source>Held out</source>
+        <translation>留出验证</translation>
+    </message>
+    <message>
+        <source>Your good shots judged not good</source>
+        <translation>您判为好的光斑被判为不好</translation>
+    </message>
+    <message>
+        <source>Your other shots judged good</source>
+        <translation>您未判为好的光斑被判为好</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;i&gt;Held out: each shot judged by criteria tuned without it (%1-fold cross-validation), what to expect on shots not yet reviewed.&lt;/i&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;i&gt;留出验证：每个光斑由不含它调整出的准则判定（%1 折交叉验证），即对尚未审阅的光斑的预期。&lt;/i&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>应用</translation>
+    </message>
+    <message>
+        <source>Sets the suggested criteria in the parameters (one step: Edit &gt; Undo takes it back)</source>
+        <translation>把建议的准则设为参数（一步操作：编辑 &gt; 撤销可还原）</translation>
+    </message>
+    <message>
+        <source>thresholds suggested from the verdicts</source>
+        <translation>根据判定建议的阈值</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>最小</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>最大</translation>
     </message>
 </context>
 <context>
@@ -2000,7 +2096,9 @@
     </message>
     <message numerus="yes">
         <source>Copied the Python script (%n line(s))</source>
-        <translation><numerusform>已复制 Python 脚本（%n 行）</numerusform></translation>
+        <translation>
+            <numerusform>已复制 Python 脚本（%n 行）</numerusform>
+        </translation>
     </message>
     <message>
         <source>Copied the Python script (%1)</source>
@@ -2099,7 +2197,7 @@
         <translation>Right-click	图像视图 ▸ 菜单：缩放档位、鼠标模式（平移、矩形框或圆区域）、重置对比度和偏置、导出视图</translation>
     </message>
     <message>
-        <source>Middle-drag, Ctrl+drag	Image view ▸ contrast (up / down) and bias (left / right), as DS9's right-drag</source>
+        <source>Middle-drag, Ctrl+drag	Image view ▸ contrast (up / down) and bias (left / right), as DS9&apos;s right-drag</source>
         <translation>Middle-drag, Ctrl+drag	图像视图 ▸ 对比度（上 / 下）和偏置（左 / 右），相当于 DS9 的右键拖动</translation>
     </message>
     <message>
@@ -2159,7 +2257,7 @@
         <translation>Click a legend entry	绘图 ▸ 隐藏 / 显示对应的数据系列</translation>
     </message>
     <message>
-        <source>Hover	Plot ▸ crosshair with the coordinates (a colour map's value too)</source>
+        <source>Hover	Plot ▸ crosshair with the coordinates (a colour map&apos;s value too)</source>
         <translation>Hover	绘图 ▸ 显示带坐标的十字准线（色表图还显示数值）</translation>
     </message>
     <message>
@@ -2287,12 +2385,12 @@
         <translation>%1：会话必须是一个 JSON 对象</translation>
     </message>
     <message>
-        <source>%1: not a Laser Workbench session (no "format": "laserwb-session")</source>
-        <translation>%1：不是激光工作台会话（缺少 "format": "laserwb-session"）</translation>
+        <source>%1: not a Laser Workbench session (no &quot;format&quot;: &quot;laserwb-session&quot;)</source>
+        <translation>%1：不是激光工作台会话（缺少 &quot;format&quot;: &quot;laserwb-session&quot;）</translation>
     </message>
     <message>
-        <source>%1: "version" must be a whole number from 1 to %2, not %3</source>
-        <translation>%1："version" 必须是 1 到 %2 之间的整数，而不是 %3</translation>
+        <source>%1: &quot;version&quot; must be a whole number from 1 to %2, not %3</source>
+        <translation>%1：&quot;version&quot; 必须是 1 到 %2 之间的整数，而不是 %3</translation>
     </message>
     <message>
         <source>%1: session version %2 is newer than this program reads (%3)</source>
@@ -2333,6 +2431,21 @@
     <message>
         <source>%1 has unsaved changes (verdicts, notes, edits, parameters). Save the session?</source>
         <translation>%1 有未保存的更改（判定、备注、编辑、参数）。是否保存会话？</translation>
+    </message>
+</context>
+<context>
+    <name>lwb::ui::ModalProgress</name>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Working</source>
+        <translation>处理中</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>正在取消…</translation>
     </message>
 </context>
 <context>
@@ -2464,7 +2577,7 @@
         <translation>%1：所有帧的位深必须与第一帧相同（%2）</translation>
     </message>
     <message>
-        <source>%1:%2: role must be fit or check, not "%3"</source>
+        <source>%1:%2: role must be fit or check, not &quot;%3&quot;</source>
         <translation>%1:%2：role 必须为 fit 或 check，而非“%3”</translation>
     </message>
     <message>
@@ -2866,7 +2979,7 @@
         <translation>矩形内的 DN 均值（V_DN）；悬停查看其 σ</translation>
     </message>
     <message>
-        <source>The fitted line at the region's mean DN: K·V_DN + B (%)</source>
+        <source>The fitted line at the region&apos;s mean DN: K·V_DN + B (%)</source>
         <translation>拟合直线在该区域 DN 均值处的值：K·V_DN + B (%)</translation>
     </message>
     <message>
@@ -2890,7 +3003,7 @@
         <translation>重命名区域</translation>
     </message>
     <message>
-        <source>Reflectance of %1: "%2" is not a number</source>
+        <source>Reflectance of %1: &quot;%2&quot; is not a number</source>
         <translation>%1 的反射率：“%2”不是数值</translation>
     </message>
     <message>
@@ -3070,16 +3183,16 @@
         <translation>&lt;b&gt;K&lt;/b&gt; = %1 ± %2 %/DN&lt;br&gt;&lt;b&gt;B&lt;/b&gt; = %3 ± %4 %&lt;br&gt;%5 个区域 · R² %6 · s %7 % · cov(K,B) %8&lt;br&gt;&lt;b&gt;不确定度&lt;/b&gt;（式 6）%9 % · DN 均值 %10 处：%11 %</translation>
     </message>
     <message>
-        <source>&lt;br&gt;&lt;span style='color:#2c8c2c'&gt;Simulated line: K %1 (fit − sim %2σ), B %3 (%4σ)&lt;/span&gt;</source>
-        <translation>&lt;br&gt;&lt;span style='color:#2c8c2c'&gt;模拟直线：K %1（拟合 − 模拟 %2σ），B %3（%4σ）&lt;/span&gt;</translation>
+        <source>&lt;br&gt;&lt;span style=&apos;color:#2c8c2c&apos;&gt;Simulated line: K %1 (fit − sim %2σ), B %3 (%4σ)&lt;/span&gt;</source>
+        <translation>&lt;br&gt;&lt;span style=&apos;color:#2c8c2c&apos;&gt;模拟直线：K %1（拟合 − 模拟 %2σ），B %3（%4σ）&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>&lt;span style='color:#c0392b'&gt;&lt;b&gt;No fit:&lt;/b&gt; %1&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;&lt;b&gt;无拟合结果：&lt;/b&gt;%1&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;No fit:&lt;/b&gt; %1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;无拟合结果：&lt;/b&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>&lt;span style='color:#666'&gt;%1&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#666'&gt;%1&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#666&apos;&gt;%1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#666&apos;&gt;%1&lt;/span&gt;</translation>
     </message>
     <message>
         <source>yes</source>
@@ -3094,15 +3207,15 @@
         <translation>最大 %1 %，平均 %2 %（限值 %3 %）：%4</translation>
     </message>
     <message>
-        <source>&lt;span style='color:#1e7832'&gt;&lt;b&gt;all within&lt;/b&gt;&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#1e7832'&gt;&lt;b&gt;全部达标&lt;/b&gt;&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#1e7832&apos;&gt;&lt;b&gt;all within&lt;/b&gt;&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#1e7832&apos;&gt;&lt;b&gt;全部达标&lt;/b&gt;&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>&lt;span style='color:#c0392b'&gt;&lt;b&gt;limit exceeded&lt;/b&gt;&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;&lt;b&gt;超出限值&lt;/b&gt;&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;limit exceeded&lt;/b&gt;&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;&lt;b&gt;超出限值&lt;/b&gt;&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>radiometry region %1: role must be fit or check, not "%2"</source>
+        <source>radiometry region %1: role must be fit or check, not &quot;%2&quot;</source>
         <translation>辐射定标区域 %1：role 必须为 fit 或 check，而非“%2”</translation>
     </message>
     <message>
@@ -3218,11 +3331,11 @@
         <translation>%1 的全部过境</translation>
     </message>
     <message>
-        <source>The command's defaults and the saved preset of each satellite (%1), as laserwb-cli slr --all-passes --preset.</source>
+        <source>The command&apos;s defaults and the saved preset of each satellite (%1), as laserwb-cli slr --all-passes --preset.</source>
         <translation>命令的默认参数加上各卫星已保存的预设（%1），与 laserwb-cli slr --all-passes --preset 相同。</translation>
     </message>
     <message>
-        <source>The command's defaults (no saved presets), as laserwb-cli slr --all-passes.</source>
+        <source>The command&apos;s defaults (no saved presets), as laserwb-cli slr --all-passes.</source>
         <translation>命令的默认参数（不使用已保存的预设），与 laserwb-cli slr --all-passes 相同。</translation>
     </message>
     <message>
@@ -3254,7 +3367,7 @@
         <translation>导出产品…</translation>
     </message>
     <message>
-        <source>Write the day's products into a folder, as laserwb-cli slr --all-passes --out-dir: passNNN.csv/.frd/.npt, normal_points.npt, summary.csv, provenance.json</source>
+        <source>Write the day&apos;s products into a folder, as laserwb-cli slr --all-passes --out-dir: passNNN.csv/.frd/.npt, normal_points.npt, summary.csv, provenance.json</source>
         <translation>将当日产品写入文件夹，与 laserwb-cli slr --all-passes --out-dir 相同：passNNN.csv/.frd/.npt、normal_points.npt、summary.csv、provenance.json</translation>
     </message>
     <message>
@@ -3286,7 +3399,7 @@
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
-        <source>Export the day's products into a folder</source>
+        <source>Export the day&apos;s products into a folder</source>
         <translation>将当日产品导出到文件夹</translation>
     </message>
     <message>
@@ -3298,7 +3411,7 @@
         <translation>筛选仍在进行：请在完成后再导出</translation>
     </message>
     <message>
-        <source>Writing the day's products into %1…</source>
+        <source>Writing the day&apos;s products into %1…</source>
         <translation>正在将当日产品写入 %1…</translation>
     </message>
     <message>
@@ -3370,6 +3483,63 @@
     </message>
 </context>
 <context>
+    <name>lwb::ui::SlrFileCheckDialog</name>
+    <message>
+        <source>CRD file check</source>
+        <translation>CRD 文件检查</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>行</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>严重程度</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>记录</translation>
+    </message>
+    <message>
+        <source>Rule</source>
+        <translation>规则</translation>
+    </message>
+    <message>
+        <source>Reason</source>
+        <translation>原因</translation>
+    </message>
+    <message>
+        <source>The rule of the CRD specification it breaks (docs/crd-check.md)</source>
+        <translation>所违反的 CRD 规范规则（docs/crd-check.md）</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>文件</translation>
+    </message>
+    <message numerus="yes">
+        <source> (%n like it)</source>
+        <translation>
+            <numerusform>（另有 %n 处同类）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Copy as text</source>
+        <translation>复制为文本</translation>
+    </message>
+    <message>
+        <source>The list as laserwb-cli crd check prints it, a line per problem</source>
+        <translation>按 laserwb-cli crd check 的输出格式复制列表，每个问题一行</translation>
+    </message>
+</context>
+<context>
     <name>lwb::ui::SlrParamsPanel</name>
     <message>
         <source>Screening (binary image)</source>
@@ -3431,7 +3601,7 @@
         <translation>测站标准点…</translation>
     </message>
     <message>
-        <source>Open the station's CRD normal-point file (.npt) for this pass: its normal points are drawn over ours and the differences listed here</source>
+        <source>Open the station&apos;s CRD normal-point file (.npt) for this pass: its normal points are drawn over ours and the differences listed here</source>
         <translation>打开该过境的测站 CRD 标准点文件（.npt）：其标准点叠加绘制在我方标准点之上，差值列于此处</translation>
     </message>
     <message>
@@ -3443,7 +3613,7 @@
         <translation>清除</translation>
     </message>
     <message>
-        <source>Stop comparing with the station's normal points</source>
+        <source>Stop comparing with the station&apos;s normal points</source>
         <translation>停止与测站标准点比较</translation>
     </message>
     <message>
@@ -3483,7 +3653,7 @@
         <translation>我方 RMS (ps)</translation>
     </message>
     <message>
-        <source>Ranges in the station's normal point</source>
+        <source>Ranges in the station&apos;s normal point</source>
         <translation>测站标准点所含测距值个数</translation>
     </message>
     <message>
@@ -3491,7 +3661,7 @@
         <translation>我方标准点所含测距值个数</translation>
     </message>
     <message>
-        <source>Ours − station: our normal point less the station's, one-way range (mm), at the station's epoch (ours moved along our post-fit trend)</source>
+        <source>Ours − station: our normal point less the station&apos;s, one-way range (mm), at the station&apos;s epoch (ours moved along our post-fit trend)</source>
         <translation>我方 − 测站：我方标准点减去测站标准点，单程测距值（mm），取测站历元（我方标准点沿我方后拟合趋势移至该历元）</translation>
     </message>
     <message>
@@ -3511,7 +3681,7 @@
         <translation>%1：该过境尚未进行后拟合，因此没有我方标准点</translation>
     </message>
     <message>
-        <source>Open the station's normal points of this pass to see them over ours, bin by bin.</source>
+        <source>Open the station&apos;s normal points of this pass to see them over ours, bin by bin.</source>
         <translation>打开该过境的测站标准点，逐个分段与我方标准点叠加比较。</translation>
     </message>
     <message>
@@ -3606,7 +3776,7 @@
         <translation>清除</translation>
     </message>
     <message>
-        <source>Clear the prediction: O-C from each pass's own fitted TOF trend</source>
+        <source>Clear the prediction: O-C from each pass&apos;s own fitted TOF trend</source>
         <translation>清除预报：O-C 改由各过境自身拟合的飞行时间趋势求得</translation>
     </message>
     <message>
@@ -3734,7 +3904,7 @@
         <translation>残差（O-C − 趋势）</translation>
     </message>
     <message>
-        <source>Main plot: the O-C (ns, two-way), or the residual about the post-fit trend (ps two-way, mm one-way on the right axis) where the track's spread is visible</source>
+        <source>Main plot: the O-C (ns, two-way), or the residual about the post-fit trend (ps two-way, mm one-way on the right axis) where the track&apos;s spread is visible</source>
         <translation>主图：O-C（ns，双程），或相对后拟合趋势的残差（ps，双程；右侧坐标轴为单程 mm），残差视图中可看清轨迹的离散程度</translation>
     </message>
     <message>
@@ -3774,7 +3944,7 @@
         <translation>测站标准点</translation>
     </message>
     <message>
-        <source>Open the station's CRD normal points of the pass: drawn over ours, differences bin by bin</source>
+        <source>Open the station&apos;s CRD normal points of the pass: drawn over ours, differences bin by bin</source>
         <translation>打开该过境的测站 CRD 标准点：叠加绘制在我方标准点之上，逐个分段列出差值</translation>
     </message>
     <message>
@@ -3786,7 +3956,7 @@
         <translation>请先打开 CRD 文件。</translation>
     </message>
     <message>
-        <source>The station's normal points</source>
+        <source>The station&apos;s normal points</source>
         <translation>测站标准点</translation>
     </message>
     <message>
@@ -3834,7 +4004,7 @@
         <translation>撤销</translation>
     </message>
     <message>
-        <source>Undo the last edit or parameter change (the workbench's undo history, Ctrl+Z)</source>
+        <source>Undo the last edit or parameter change (the workbench&apos;s undo history, Ctrl+Z)</source>
         <translation>撤销上一次编辑或参数更改（工作台的撤销历史，Ctrl+Z）</translation>
     </message>
     <message>
@@ -3850,7 +4020,7 @@
         <translation>预设与导出</translation>
     </message>
     <message>
-        <source>Save as this satellite's preset</source>
+        <source>Save as this satellite&apos;s preset</source>
         <translation>保存为该卫星的预设</translation>
     </message>
     <message>
@@ -3874,7 +4044,7 @@
         <translation>每个点：序号、历元、O-C、类别、区域、残差、是否保留、测站标志</translation>
     </message>
     <message>
-        <source>CRD full rate with filter flags 2 (accepted) / 1 (noise): this pass only, or the whole file with this pass's flags set</source>
+        <source>CRD full rate with filter flags 2 (accepted) / 1 (noise): this pass only, or the whole file with this pass&apos;s flags set</source>
         <translation>带滤波标志 2（接受）/ 1（噪声）的 CRD 全速率数据：仅含该过境，或整个文件并设置该过境的标志</translation>
     </message>
     <message>
@@ -3930,7 +4100,7 @@
         <translation>仅该过境</translation>
     </message>
     <message>
-        <source>Whole file with this pass's flags set</source>
+        <source>Whole file with this pass&apos;s flags set</source>
         <translation>整个文件，并设置该过境的标志</translation>
     </message>
     <message>
@@ -3986,8 +4156,8 @@
         <translation>%1. %2 · %3 · %4 · %5 · %6 点</translation>
     </message>
     <message>
-        <source>&lt;b style="color:#b00000"&gt;Pass %1 cannot be processed:&lt;/b&gt; %2&lt;br&gt;The other passes of the file can be chosen in the list.</source>
-        <translation>&lt;b style="color:#b00000"&gt;过境 %1 无法处理：&lt;/b&gt;%2&lt;br&gt;可在列表中选择该文件的其他过境。</translation>
+        <source>&lt;b style=&quot;color:#b00000&quot;&gt;Pass %1 cannot be processed:&lt;/b&gt; %2&lt;br&gt;The other passes of the file can be chosen in the list.</source>
+        <translation>&lt;b style=&quot;color:#b00000&quot;&gt;过境 %1 无法处理：&lt;/b&gt;%2&lt;br&gt;可在列表中选择该文件的其他过境。</translation>
     </message>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt; %2 — %3 points, O-C from %4%5</source>
@@ -4002,16 +4172,18 @@
         <translation>；已应用&lt;b&gt;预设 %1&lt;/b&gt;（%2）</translation>
     </message>
     <message>
-        <source>&lt;br&gt;&lt;b style="color:#a05000"&gt;Prediction not used:&lt;/b&gt; %1</source>
-        <translation>&lt;br&gt;&lt;b style="color:#a05000"&gt;未使用预报：&lt;/b&gt;%1</translation>
+        <source>&lt;br&gt;&lt;b style=&quot;color:#a05000&quot;&gt;Prediction not used:&lt;/b&gt; %1</source>
+        <translation>&lt;br&gt;&lt;b style=&quot;color:#a05000&quot;&gt;未使用预报：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;br&gt;&lt;b style="color:#b00000"&gt;Damaged records: exports are refused.&lt;/b&gt; %1</source>
-        <translation>&lt;br&gt;&lt;b style="color:#b00000"&gt;记录已损坏：拒绝导出。&lt;/b&gt;%1</translation>
+        <source>&lt;br&gt;&lt;b style=&quot;color:#b00000&quot;&gt;Damaged records: exports are refused.&lt;/b&gt; %1</source>
+        <translation>&lt;br&gt;&lt;b style=&quot;color:#b00000&quot;&gt;记录已损坏：拒绝导出。&lt;/b&gt;%1</translation>
     </message>
     <message numerus="yes">
         <source>&lt;br&gt;&lt;b&gt;%n warning(s) reading the files:&lt;/b&gt;</source>
-        <translation><numerusform>&lt;br&gt;&lt;b&gt;读取文件时出现 %n 条警告：&lt;/b&gt;</numerusform></translation>
+        <translation>
+            <numerusform>&lt;br&gt;&lt;b&gt;读取文件时出现 %n 条警告：&lt;/b&gt;</numerusform>
+        </translation>
     </message>
     <message>
         <source>&lt;br&gt;… and %1 more (in the status messages)</source>
@@ -4027,11 +4199,15 @@
     </message>
     <message numerus="yes">
         <source>Force %n SLR point(s) in</source>
-        <translation><numerusform>强制纳入 %n 个 SLR 点</numerusform></translation>
+        <translation>
+            <numerusform>强制纳入 %n 个 SLR 点</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <source>Force %n SLR point(s) out</source>
-        <translation><numerusform>强制剔除 %n 个 SLR 点</numerusform></translation>
+        <translation>
+            <numerusform>强制剔除 %n 个 SLR 点</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1 points forced %2 (Edit ▸ Undo takes it back)</source>
@@ -4148,7 +4324,7 @@
         <translation>恢复</translation>
     </message>
     <message>
-        <source>in the post-fit's band</source>
+        <source>in the post-fit&apos;s band</source>
         <translation>位于后拟合带内</translation>
     </message>
     <message>
@@ -4220,11 +4396,11 @@
         <translation>&lt;b&gt;接受&lt;/b&gt; %1 / %2（信号 %3，恢复 %4），后拟合保留 %5，剔除 %6&lt;br&gt;&lt;b&gt;RMS&lt;/b&gt; %7 ps（单程 %8 mm）· 偏度 %9 · 峰度 %10 · 峰值−均值 %11 ps&lt;br&gt;</translation>
     </message>
     <message>
-        <source>%1 more points within the post-fit's band (where the image stopped)&lt;br&gt;</source>
+        <source>%1 more points within the post-fit&apos;s band (where the image stopped)&lt;br&gt;</source>
         <translation>另有 %1 个点位于后拟合带内（二值图像未及之处）&lt;br&gt;</translation>
     </message>
     <message>
-        <source>Band narrowed by the noise beside it: ±%1 ps = %2 σ of the signal's %3 ps (best expected F1)&lt;br&gt;</source>
+        <source>Band narrowed by the noise beside it: ±%1 ps = %2 σ of the signal&apos;s %3 ps (best expected F1)&lt;br&gt;</source>
         <translation>带宽因旁侧噪声收窄：±%1 ps = 信号 %3 ps 的 %2 σ（期望 F1 最佳）&lt;br&gt;</translation>
     </message>
     <message>
@@ -4236,16 +4412,16 @@
         <translation>&lt;b&gt;无标准点&lt;/b&gt;：%1</translation>
     </message>
     <message>
-        <source>&lt;b&gt;&lt;span style='color:#c05000'&gt;Doubtful, no normal points&lt;/span&gt;&lt;/b&gt;: %1</source>
-        <translation>&lt;b&gt;&lt;span style='color:#c05000'&gt;存疑，无标准点&lt;/span&gt;&lt;/b&gt;：%1</translation>
+        <source>&lt;b&gt;&lt;span style=&apos;color:#c05000&apos;&gt;Doubtful, no normal points&lt;/span&gt;&lt;/b&gt;: %1</source>
+        <translation>&lt;b&gt;&lt;span style=&apos;color:#c05000&apos;&gt;存疑，无标准点&lt;/span&gt;&lt;/b&gt;：%1</translation>
     </message>
     <message>
         <source>&lt;br&gt;(also: %1)</source>
         <translation>&lt;br&gt;（另：%1）</translation>
     </message>
     <message>
-        <source>&lt;b&gt;&lt;span style='color:#c05000'&gt;Doubtful, no normal points&lt;/span&gt;&lt;/b&gt;: %1&lt;br&gt;</source>
-        <translation>&lt;b&gt;&lt;span style='color:#c05000'&gt;存疑，无标准点&lt;/span&gt;&lt;/b&gt;：%1&lt;br&gt;</translation>
+        <source>&lt;b&gt;&lt;span style=&apos;color:#c05000&apos;&gt;Doubtful, no normal points&lt;/span&gt;&lt;/b&gt;: %1&lt;br&gt;</source>
+        <translation>&lt;b&gt;&lt;span style=&apos;color:#c05000&apos;&gt;存疑，无标准点&lt;/span&gt;&lt;/b&gt;：%1&lt;br&gt;</translation>
     </message>
     <message>
         <source>&lt;b&gt;Post-fit:&lt;/b&gt; %1&lt;br&gt;</source>
@@ -4268,7 +4444,7 @@
         <translation>（自动）</translation>
     </message>
     <message>
-        <source>&lt;br&gt;Refined: screened again on the O-C less the accepted track's trend (%1 round(s); the search's scale, in the panel: mag_T %2 px/s, mag_OC %3 px/s)</source>
+        <source>&lt;br&gt;Refined: screened again on the O-C less the accepted track&apos;s trend (%1 round(s); the search&apos;s scale, in the panel: mag_T %2 px/s, mag_OC %3 px/s)</source>
         <translation>&lt;br&gt;精化：在 O-C 减去已接受轨迹的趋势后重新筛选（%1 轮；面板中为搜索所用尺度：mag_T %2 px/s，mag_OC %3 px/s）</translation>
     </message>
     <message>
@@ -4296,8 +4472,8 @@
         <translation>未定义（无接受点）</translation>
     </message>
     <message>
-        <source>slr.main_plot: "%1" is neither "oc" nor "residual"</source>
-        <translation>slr.main_plot："%1" 既不是 "oc" 也不是 "residual"</translation>
+        <source>slr.main_plot: &quot;%1&quot; is neither &quot;oc&quot; nor &quot;residual&quot;</source>
+        <translation>slr.main_plot：&quot;%1&quot; 既不是 &quot;oc&quot; 也不是 &quot;residual&quot;</translation>
     </message>
     <message>
         <source>SLR manual edit of point %1: the pass has %2 points</source>
@@ -4320,7 +4496,7 @@
         <translation>%1 和 %2：一次只能使用一个测站标准点文件</translation>
     </message>
     <message>
-        <source>%1: a station's normal points are compared with the full-rate pass they were formed from, and no pass is open: open the pass and this file together, or this file in the Station normal points tab of the open pass</source>
+        <source>%1: a station&apos;s normal points are compared with the full-rate pass they were formed from, and no pass is open: open the pass and this file together, or this file in the Station normal points tab of the open pass</source>
         <translation>%1：测站标准点需与生成它们的全速率过境进行比较，而当前未打开任何过境：请将该过境与此文件一起打开，或在已打开过境的“测站标准点”选项卡中打开此文件</translation>
     </message>
     <message>
@@ -4349,7 +4525,9 @@
     </message>
     <message numerus="yes">
         <source>%n point(s) forced in or out by hand are not in the command</source>
-        <translation><numerusform>有 %n 个人工强制纳入或剔除的点未包含在命令中</numerusform></translation>
+        <translation>
+            <numerusform>有 %n 个人工强制纳入或剔除的点未包含在命令中</numerusform>
+        </translation>
     </message>
     <message>
         <source>SLR pass screening</source>
@@ -4406,7 +4584,7 @@
         <translation>斑点 σ</translation>
     </message>
     <message>
-        <source>spot scale of the blob search's matched filter (frames without --center)</source>
+        <source>spot scale of the blob search&apos;s matched filter (frames without --center)</source>
         <translation>斑点搜索匹配滤波器的光斑尺度（用于未给出 --center 的帧）</translation>
     </message>
     <message>
@@ -4510,7 +4688,7 @@
         <translation>局部 SNR 下限</translation>
     </message>
     <message>
-        <source>second look: the peak passes standing this x min_peak_snr ring sigma above the ring's median</source>
+        <source>second look: the peak passes standing this x min_peak_snr ring sigma above the ring&apos;s median</source>
         <translation>复查：峰值高出环形区域中位数达到（此值 × min_peak_snr）倍环形区域 σ 即通过</translation>
     </message>
     <message>
@@ -4518,7 +4696,7 @@
         <translation>纹理 SNR</translation>
     </message>
     <message>
-        <source>second look: or this many sigma of the ring's pixel-scale texture (neighbour differences / sqrt 2)</source>
+        <source>second look: or this many sigma of the ring&apos;s pixel-scale texture (neighbour differences / sqrt 2)</source>
         <translation>复查：或高出环形区域像素尺度纹理的此倍数 σ（相邻像素差 / √2）</translation>
     </message>
     <message>
@@ -4582,7 +4760,7 @@
         <translation>在腐蚀图像上求质心</translation>
     </message>
     <message>
-        <source>step 5 weights: the eroded image (the paper's order) instead of the thresholded one</source>
+        <source>step 5 weights: the eroded image (the paper&apos;s order) instead of the thresholded one</source>
         <translation>第 5 步权重：使用腐蚀后的图像（文献的顺序），而非阈值化后的图像</translation>
     </message>
     <message>
@@ -4590,7 +4768,7 @@
         <translation>xy 项</translation>
     </message>
     <message>
-        <source>add the f.xy column (tilt); false = the paper's system</source>
+        <source>add the f.xy column (tilt); false = the paper&apos;s system</source>
         <translation>加入 f.xy 列（倾斜）；关闭 = 文献的方程组</translation>
     </message>
     <message>
@@ -4694,7 +4872,7 @@
         <translation>核心比例</translation>
     </message>
     <message>
-        <source>domain not peaked (brighter ground joined it): log fit again on the pixels joined to the peak above this fraction of the brightest domain pixel's height; 0 = moments at once</source>
+        <source>domain not peaked (brighter ground joined it): log fit again on the pixels joined to the peak above this fraction of the brightest domain pixel&apos;s height; 0 = moments at once</source>
         <translation>区域无明显峰值（较亮地面并入其中）时：对与峰值相连、且高于区域最亮像素高度此比例的像素重新做对数拟合；0 = 直接用矩估计</translation>
     </message>
     <message>
@@ -4702,7 +4880,7 @@
         <translation>差分拟合</translation>
     </message>
     <message>
-        <source>textured ground: LM on neighbouring-pixel differences (whitens real ground's red spectrum)</source>
+        <source>textured ground: LM on neighbouring-pixel differences (whitens real ground&apos;s red spectrum)</source>
         <translation>纹理地面：对相邻像素差做 LM 拟合（使真实地面的红噪声谱白化）</translation>
     </message>
     <message>
@@ -4718,7 +4896,7 @@
         <translation>由地面估计不确定度</translation>
     </message>
     <message>
-        <source>uncertainty_px from the shot's own ground: the fit's centre templates applied to the ground's autocovariance measured in the ROI plus photon and read noise; false = the quick estimate below</source>
+        <source>uncertainty_px from the shot&apos;s own ground: the fit&apos;s centre templates applied to the ground&apos;s autocovariance measured in the ROI plus photon and read noise; false = the quick estimate below</source>
         <translation>由影像自身的地面估计 uncertainty_px：将拟合的中心模板作用于 ROI 内实测的地面自协方差，并计入光子噪声与读出噪声；关闭 = 使用下方的快速估计</translation>
     </message>
     <message>
@@ -4742,7 +4920,7 @@
         <translation>不确定度纹理缩放</translation>
     </message>
     <message>
-        <source>quick uncertainty (LM's stop; uncertainty_px when uncertainty_from_ground is off): texture shift scale after the difference fit</source>
+        <source>quick uncertainty (LM&apos;s stop; uncertainty_px when uncertainty_from_ground is off): texture shift scale after the difference fit</source>
         <translation>快速不确定度（用于 LM 停止判据；uncertainty_from_ground 关闭时即为 uncertainty_px）：差分拟合后的纹理偏移缩放系数</translation>
     </message>
     <message>
@@ -4842,7 +5020,7 @@
         <translation>检查边缘</translation>
     </message>
     <message>
-        <source>the spot's 1/e^2 ellipse must lie inside the ROI</source>
+        <source>the spot&apos;s 1/e^2 ellipse must lie inside the ROI</source>
         <translation>光斑的 1/e^2 椭圆必须位于 ROI 之内</translation>
     </message>
     <message>
@@ -5074,7 +5252,7 @@
         <translation>精化轮数</translation>
     </message>
     <message>
-        <source>screening rounds on the O-C flattened by the accepted track's trend (0 in the paper's fixed procedure)</source>
+        <source>screening rounds on the O-C flattened by the accepted track&apos;s trend (0 in the paper&apos;s fixed procedure)</source>
         <translation>在扣除已接受轨迹趋势后的 O-C 上进行的筛选轮数（论文固定流程中为 0）</translation>
     </message>
     <message>
@@ -5106,7 +5284,7 @@
         <translation>大气折射</translation>
     </message>
     <message>
-        <source>tropospheric delay: Mendes &amp; Pavlis (2004) zenith delay with the FCULa mapping, from the pass's type-20 meteorological records (a warning and none without them); none leaves the whole delay in the O-C</source>
+        <source>tropospheric delay: Mendes &amp; Pavlis (2004) zenith delay with the FCULa mapping, from the pass&apos;s type-20 meteorological records (a warning and none without them); none leaves the whole delay in the O-C</source>
         <translation>对流层延迟：采用 Mendes &amp; Pavlis (2004) 天顶延迟与 FCULa 映射函数，由该过境的 20 型气象记录计算（无此记录时给出警告并不改正）；不改正时全部延迟保留在 O-C 中</translation>
     </message>
     <message>
@@ -5114,7 +5292,7 @@
         <translation>波长 (nm)</translation>
     </message>
     <message>
-        <source>laser wavelength for the refraction; null = the record's C0 configuration, else 532 with a warning</source>
+        <source>laser wavelength for the refraction; null = the record&apos;s C0 configuration, else 532 with a warning</source>
         <translation>用于折射改正的激光波长；null = 取记录中 C0 配置的值，若无则取 532 并给出警告</translation>
     </message>
     <message>
@@ -5126,7 +5304,7 @@
         <translation>夏皮罗延迟</translation>
     </message>
     <message>
-        <source>add the relativistic (Shapiro) light-time delay of the Earth's field (a few mm)</source>
+        <source>add the relativistic (Shapiro) light-time delay of the Earth&apos;s field (a few mm)</source>
         <translation>加入地球引力场引起的相对论（夏皮罗）光行时延迟（几毫米）</translation>
     </message>
     <message>
@@ -5134,7 +5312,7 @@
         <translation>质心偏移 (m)</translation>
     </message>
     <message>
-        <source>centre of mass to reflector, one way; null = the CPF's H5 value when its positions are of the centre of mass (H2 flag 0), else 0</source>
+        <source>centre of mass to reflector, one way; null = the CPF&apos;s H5 value when its positions are of the centre of mass (H2 flag 0), else 0</source>
         <translation>卫星质心至反射器的单程距离；null = 当 CPF 位置为质心位置（H2 标志为 0）时取其 H5 值，否则为 0</translation>
     </message>
     <message>
@@ -5186,7 +5364,7 @@
         <translation>自身趋势 Huber k</translation>
     </message>
     <message>
-        <source>without a prediction: the trend's Huber constant, in robust standard deviations</source>
+        <source>without a prediction: the trend&apos;s Huber constant, in robust standard deviations</source>
         <translation>无预报时：趋势的 Huber 常数，以稳健标准差为单位</translation>
     </message>
     <message>
@@ -5194,7 +5372,7 @@
         <translation>自身趋势最大迭代次数</translation>
     </message>
     <message>
-        <source>without a prediction: the trend's reweighting iterations</source>
+        <source>without a prediction: the trend&apos;s reweighting iterations</source>
         <translation>无预报时：趋势的重加权迭代次数</translation>
     </message>
     <message>
@@ -5218,7 +5396,7 @@
         <translation>自动定阶</translation>
     </message>
     <message>
-        <source>choose each segment's model by BIC (degrees 0..degree, cubic splines); false = degree as given</source>
+        <source>choose each segment&apos;s model by BIC (degrees 0..degree, cubic splines); false = degree as given</source>
         <translation>按 BIC 为每段选择模型（0..degree 阶多项式、三次样条）；false = 使用给定阶数</translation>
     </message>
     <message>
@@ -5246,7 +5424,7 @@
         <translation>噪声带</translation>
     </message>
     <message>
-        <source>narrow the k-sigma band where the noise beside the track is measurable: the band of the best expected F1 (the signal's sigma with that noise taken out), never wider than k sigma</source>
+        <source>narrow the k-sigma band where the noise beside the track is measurable: the band of the best expected F1 (the signal&apos;s sigma with that noise taken out), never wider than k sigma</source>
         <translation>在轨迹旁的噪声可测时收窄 k 倍 σ 带：取期望 F1 最佳的带宽（信号的 σ 扣除该噪声后求得），不宽于 k 倍 σ</translation>
     </message>
     <message>
@@ -5306,7 +5484,7 @@
         <translation>发射频率 (Hz)</translation>
     </message>
     <message>
-        <source>laser fire rate for the normal points' return rate; 0 = unknown</source>
+        <source>laser fire rate for the normal points&apos; return rate; 0 = unknown</source>
         <translation>用于计算标准点回波率的激光发射频率；0 = 未知</translation>
     </message>
     <message>
@@ -5434,7 +5612,7 @@
         <translation>最大轴比</translation>
     </message>
     <message>
-        <source>doubtful when the fitted footprint's axis ratio exceeds this</source>
+        <source>doubtful when the fitted footprint&apos;s axis ratio exceeds this</source>
         <translation>拟合足印的轴比超过此值时判定为存疑</translation>
     </message>
     <message>
@@ -5662,7 +5840,7 @@
         <translation>比值检验</translation>
     </message>
     <message>
-        <source>Lowe's ratio for the two nearest descriptors</source>
+        <source>Lowe&apos;s ratio for the two nearest descriptors</source>
         <translation>两个最近邻描述子的 Lowe 比值</translation>
     </message>
     <message>
@@ -5742,7 +5920,7 @@
         <translation>像元大小 (m)</translation>
     </message>
     <message>
-        <source>map pixel size; 0 = the image's own scale</source>
+        <source>map pixel size; 0 = the image&apos;s own scale</source>
         <translation>地图像元大小；0 = 采用影像自身比例尺</translation>
     </message>
     <message>
@@ -5804,76 +5982,6 @@
     <message>
         <source>gcp</source>
         <translation>几何校正（控制点）</translation>
-    </message>
-</context>
-<context>
-    <name>lwb::ui::ModalProgress</name>
-    <message>
-        <source>Cancel</source>
-        <translation>取消</translation>
-    </message>
-    <message>
-        <source>Working</source>
-        <translation>处理中</translation>
-    </message>
-    <message>
-        <source>Cancelling…</source>
-        <translation>正在取消…</translation>
-    </message>
-</context>
-<context>
-    <name>lwb::ui::SlrFileCheckDialog</name>
-    <message>
-        <source>CRD file check</source>
-        <translation>CRD 文件检查</translation>
-    </message>
-    <message>
-        <source>Line</source>
-        <translation>行</translation>
-    </message>
-    <message>
-        <source>Severity</source>
-        <translation>严重程度</translation>
-    </message>
-    <message>
-        <source>Record</source>
-        <translation>记录</translation>
-    </message>
-    <message>
-        <source>Rule</source>
-        <translation>规则</translation>
-    </message>
-    <message>
-        <source>Reason</source>
-        <translation>原因</translation>
-    </message>
-    <message>
-        <source>The rule of the CRD specification it breaks (docs/crd-check.md)</source>
-        <translation>所违反的 CRD 规范规则（docs/crd-check.md）</translation>
-    </message>
-    <message>
-        <source>file</source>
-        <translation>文件</translation>
-    </message>
-    <message numerus="yes">
-        <source> (%n like it)</source>
-        <translation><numerusform>（另有 %n 处同类）</numerusform></translation>
-    </message>
-    <message>
-        <source>error</source>
-        <translation>错误</translation>
-    </message>
-    <message>
-        <source>warning</source>
-        <translation>警告</translation>
-    </message>
-    <message>
-        <source>Copy as text</source>
-        <translation>复制为文本</translation>
-    </message>
-    <message>
-        <source>The list as laserwb-cli crd check prints it, a line per problem</source>
-        <translation>按 laserwb-cli crd check 的输出格式复制列表，每个问题一行</translation>
     </message>
 </context>
 </TS>

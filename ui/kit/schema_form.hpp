@@ -257,6 +257,11 @@ public:
         const Binding* b = binding(key);
         return b ? b->widget : nullptr;
     }
+    /// The label of `key`'s row ("" when it has no widget).
+    QString label(const std::string& key) const {
+        const Binding* b = binding(key);
+        return b ? b->label : QString();
+    }
     /// The keys that have a widget, in the order they were added.
     std::vector<std::string> boundKeys() const {
         std::vector<std::string> keys;
