@@ -158,7 +158,12 @@ void FootprintParamsPanel::setParams(const FootprintParams& p) {
 
 QString FootprintParamsPanel::rowLabel(const std::string& key) const {
     const QString l = m_form->label(key);
-    return l.isEmpty() ? QString::fromStdString(key) : l;
+    if (l.isEmpty()) return QString::fromStdString(key);
+    if (!l.startsWith(QLatin1String("  "))) return l;
+    // A row that continues the one above it ("  of main peak" under "No second spot above").
+    const std::vector<std::string> keys = m_form->boundKeys();
+    const auto it = std::find(keys.begin(), keys.end(), key);
+    return it == keys.begin() || it == keys.end() ? l.trimmed() : m_form->label(*(it - 1)) + " " + l.trimmed();
 }
 
 }  // namespace lwb::ui

@@ -1276,7 +1276,7 @@ void FootprintWorkspace::showSuggestion(const core::footprint::VerdictTuneResult
     const FootprintParams after = r.after;
     connect(buttons, &QDialogButtonBox::accepted, m_suggestion, [this, after] {
         m_panel->setParams(after);
-        changeParams(after, tr("thresholds suggested from the verdicts"));
+        changeParams(after, tr("verdict thresholds to the suggested ones"));
         m_suggestion->accept();
     });
     connect(buttons, &QDialogButtonBox::rejected, m_suggestion, &QDialog::reject);

@@ -1847,16 +1847,16 @@ The criteria are tuned on the shots you gave a manual verdict (Accept A, Reject 
         <translation>把建议的准则设为参数（一步操作：编辑 &gt; 撤销可还原）</translation>
     </message>
     <message>
-        <source>thresholds suggested from the verdicts</source>
-        <translation>根据判定建议的阈值</translation>
-    </message>
-    <message>
         <source>min</source>
         <translation>最小</translation>
     </message>
     <message>
         <source>max</source>
         <translation>最大</translation>
+    </message>
+    <message>
+        <source>verdict thresholds to the suggested ones</source>
+        <translation>判定阈值为建议值</translation>
     </message>
 </context>
 <context>
