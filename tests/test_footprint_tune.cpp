@@ -193,6 +193,43 @@ private slots:
         QCOMPARE(checked, 3000);
     }
 
+    // The strip beside a slider: the verdicts along a criterion's values, as judge gives them.
+    void sweepFollowsTheVerdict() {
+        sim::FootprintSimParams sp;
+        sp.ground = sim::GroundSource::Synthetic;
+        FootprintParams p;
+        std::vector<VerdictMeasures> shots;
+        std::vector<int> labels;
+        int goodNow = 0;
+        for (int i = 0; i < 150; ++i) {
+            sp.scene = kScenes[i % 4];
+            sp.spotCase = kCases[i % 15];
+            const sim::FootprintSimShot shot = sim::simulateFootprint(sp, 700 + static_cast<uint64_t>(i));
+            cv::Mat roi;
+            shot.image.convertTo(roi, CV_32F);
+            const FootprintResult r = processRoi(roi, p);
+            shots.push_back(measureResult(r, roi.cols, roi.rows));
+            goodNow += r.verdict == Verdict::Good;
+            labels.push_back(i % 3 == 0 ? -1 : int(analystVerdict(shot.truth)));
+        }
+        const std::vector<double> values = {1e-7, 1e-6, p.verdict.mseMax, 1e-4, 1e-3};
+        const CriterionSweep s = sweepCriterion(shots, labels, p, "verdict.mse_max", "", values);
+        QCOMPARE(s.good.size(), values.size());
+        QCOMPARE(s.labelled, 100);
+        QCOMPARE(s.good[2], goodNow);  // at the current value: the run's own verdicts
+        QCOMPARE(s.changed[2], 0);
+        for (size_t k = 1; k < values.size(); ++k) QVERIFY(s.good[k] >= s.good[k - 1]);  // a looser limit passes more
+        for (size_t k = 0; k < values.size(); ++k) QCOMPARE(s.changed[k], std::abs(s.good[k] - goodNow));
+        QVERIFY(s.good.front() < goodNow);
+        // A range's end; a row that is not a verdict threshold gives nothing.
+        const CriterionSweep t = sweepCriterion(shots, {}, p, "verdict.tilt_deg", "hi", {10, 30, 60});
+        QCOMPARE(t.changed[1], 0);
+        QVERIFY(t.good[0] <= t.good[1] && t.good[1] <= t.good[2]);
+        QCOMPARE(t.labelled, 0);
+        QVERIFY(sweepCriterion(shots, {}, p, "segment.threshold_factor", "", {0.2}).good.empty());
+        QVERIFY(sweepCriterion(shots, {}, p, "verdict.tilt_deg", "", {10}).good.empty());
+    }
+
     // An analyst who agrees with every computed verdict moves nothing.
     void agreeingVerdictsMoveNothing() {
         const QString dir = m_dir.path() + "/agree";

@@ -359,6 +359,41 @@ VerdictTuneResult tuneVerdict(const std::vector<LabelledShot>& shots, const Foot
     return r;
 }
 
+CriterionSweep sweepCriterion(const std::vector<VerdictMeasures>& shots, const std::vector<int>& labels,
+                              const FootprintParams& p, const std::string& key, const std::string& end,
+                              const std::vector<double>& values, Feedback* fb) {
+    CriterionSweep out;
+    const Field* f = footprintSchema().find(key);
+    if (!f || key.rfind("verdict.", 0) != 0 || (f->kind == FieldKind::Range) != (end == "lo" || end == "hi") ||
+        !(f->kind == FieldKind::Range || f->kind == FieldKind::Real || f->kind == FieldKind::Integer))
+        return out;
+    std::vector<bool> now(shots.size());
+    for (size_t i = 0; i < shots.size(); ++i) now[i] = isGood(shots[i], p);
+    for (size_t i = 0; i < labels.size() && i < shots.size(); ++i) out.labelled += labels[i] >= 0;
+    FootprintParams q = p;
+    for (double v : values) {
+        if (cancelled(fb)) return {};
+        if (f->kind == FieldKind::Range) {
+            RangeValue r = f->getRange(p);
+            (end == "lo" ? r.lo : r.hi) = v;
+            f->setRange(q, r);
+        } else {
+            f->set(q, v);
+        }
+        int good = 0, changed = 0, disagree = 0;
+        for (size_t i = 0; i < shots.size(); ++i) {
+            const bool g = isGood(shots[i], q);
+            good += g;
+            changed += g != now[i];
+            if (i < labels.size() && labels[i] >= 0) disagree += g != (labels[i] == static_cast<int>(Verdict::Good));
+        }
+        out.good.push_back(good);
+        out.changed.push_back(changed);
+        out.disagree.push_back(disagree);
+    }
+    return out;
+}
+
 // ---- from files ----
 
 namespace {

@@ -69,6 +69,21 @@ struct VerdictTuneResult {
 VerdictTuneResult tuneVerdict(const std::vector<LabelledShot>& shots, const FootprintParams& start, int folds = 5,
                               Feedback* fb = nullptr);
 
+/// One criterion swept over values (the workbench's strip beside its slider): per value, the
+/// shots judged good, those whose verdict (good or not good) differs from theirs under `p`, and
+/// those that disagree with their label (labels: one per shot, -1 none; empty: no labels).
+struct CriterionSweep {
+    std::vector<int> good, changed, disagree;
+    int labelled = 0;                  ///< shots with a label
+};
+
+/// The row `key` ("verdict.mse_max"; a range row's end `end`, "lo" or "hi") set to each of
+/// `values` in turn, every shot judged (checkVerdict) under it, the rest of `p` kept. Empty when
+/// the key is not a verdict threshold. Cancel through fb (then partial, empty).
+CriterionSweep sweepCriterion(const std::vector<VerdictMeasures>& shots, const std::vector<int>& labels,
+                              const FootprintParams& p, const std::string& key, const std::string& end,
+                              const std::vector<double>& values, Feedback* fb = nullptr);
+
 /// The tuning as a task (core/common/task.hpp) on shots already fitted: the workbench's "Suggest
 /// thresholds from my verdicts" runs it (TaskJob) on the shots the analyst gave a manual verdict,
 /// tuneFootprint on the shots of files with a verdicts table.

@@ -23,6 +23,7 @@
 #include "ui/kit/image_view.hpp"
 #include "ui/shell/main_window.hpp"
 #include "ui/kit/param_slider.hpp"
+#include "ui/kit/schema_form.hpp"
 #include "ui/footprint/shot_table_model.hpp"
 
 using namespace lwb::ui;
@@ -257,6 +258,51 @@ private slots:
     // Issue 45: "Suggest thresholds…" tunes the verdict criteria on the shots with a manual
     // verdict (the core's VerdictTuneTask in the background), shows before / suggested / held
     // out, and applies them only on Apply, as one undoable step.
+    // Issue 45: the strips beside the verdict sliders, computed in the background after a
+    // rejudge or a verdict edit: nothing changes at the slider's own value, the orange line once
+    // shots have a manual verdict, none on a criterion switched off.
+    void verdictSlidersCarryStrips() {
+        MainWindow w;
+        auto* ws = w.workspace<lwb::ui::FootprintWorkspace>();
+        FootprintController* c = ws->controller();
+        QSignalSpy finished(c, &FootprintController::loadFinished);
+        c->open({m_dir.path() + "/shots"});
+        QVERIFY(finished.wait(30000));
+        QVERIFY(c->waitIdle(30000));
+        QSignalSpy ready(ws, &lwb::ui::FootprintWorkspace::stripsReady);
+        QVERIFY(ready.wait(10000));
+        auto* range = qobject_cast<RangeEdit*>(ws->paramsPanel()->form().widget("verdict.major_axis_px"));
+        auto* mse = qobject_cast<ParamSlider*>(ws->paramsPanel()->form().widget("verdict.mse_max"));
+        QVERIFY(range && mse);
+        for (ParamSlider* s : {range->loSlider(), range->hiSlider(), mse}) {
+            QCOMPARE(s->stripArea().size(), size_t(48));
+            QVERIFY(s->stripLine().empty());  // no manual verdict yet
+            QCOMPARE(*std::max_element(s->stripArea().begin(), s->stripArea().end()), 1.0);
+            // (near the slider's value few verdicts change; a logarithmic track may pass its
+            // value by between two positions: MSE's nearest changes 4 % of the most)
+            QVERIFY(*std::min_element(s->stripArea().begin(), s->stripArea().end()) <= 0.1);
+        }
+        // Where the slider stands (the track position of its value) nothing changes.
+        const std::vector<double> track = range->hiSlider()->trackValues(48);
+        const size_t at = size_t(std::min_element(track.begin(), track.end(), [&](double a, double b) {
+                                     return std::fabs(a - 18) < std::fabs(b - 18);
+                                 }) - track.begin());
+        QVERIFY(std::fabs(track[at] - 18) < 0.5);
+        QCOMPARE(range->hiSlider()->stripArea()[at], 0.0);
+        QVERIFY(range->hiSlider()->slider()->toolTip().contains("verdict would change"));
+        // Manual verdicts: the line of disagreements.
+        for (int i = 0; i < 12; ++i) c->setOverride(i, i % 2 ? Verdict::Good : Verdict::Rejected, QString());
+        QVERIFY(ready.wait(10000));
+        QCOMPARE(mse->stripLine().size(), size_t(48));
+        QVERIFY(mse->slider()->toolTip().contains("12 manual verdicts"));
+        // A criterion switched off has none.
+        range->enabledBox()->click();
+        QVERIFY(c->waitIdle(30000));
+        QVERIFY(ready.wait(10000));
+        QVERIFY(range->hiSlider()->stripArea().empty() && range->loSlider()->stripArea().empty());
+        QCOMPARE(mse->stripArea().size(), size_t(48));
+    }
+
     void suggestedThresholdsApplyAsOneUndoableStep() {
         const QString dir = m_dir.path() + "/tune";
         const lwbtest::CliRun sim = lwbtest::runCli({"simulate", "footprint", "--count", "240", "--seed", "5", "--case",

@@ -14,6 +14,7 @@
 #include <QLineEdit>
 #include <QPainter>
 #include <QPainterPath>
+#include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QShortcut>
@@ -22,6 +23,7 @@
 #include <QSettings>
 #include <QTabWidget>
 #include <QTableView>
+#include <QTimer>
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <QtConcurrent>
@@ -34,7 +36,9 @@
 #include "ui/footprint/blink_view.hpp"
 #include "ui/kit/contrast_bias.hpp"
 #include "ui/kit/image_regions.hpp"
+#include "ui/kit/param_slider.hpp"
 #include "ui/kit/params_command.hpp"
+#include "ui/kit/schema_form.hpp"
 #include "ui/kit/color_maps.hpp"
 #include "ui/footprint/column_plot.hpp"
 #include "ui/footprint/filter_field.hpp"
@@ -171,6 +175,14 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : Workspace(parent) {
     connect(m_tuneJob, &LiveJob::progress, this,
             [this](double f) { emit progress(int(f * 1000), 1000, tr("Suggesting thresholds %p%")); });
     connect(m_tuneJob, &LiveJob::idle, this, [this] { emit progress(0, 0, QString()); });
+    // The strips beside the verdict sliders: again after every rejudge and verdict edit (300 ms
+    // after the last).
+    m_stripTimer = new QTimer(this);
+    m_stripTimer->setSingleShot(true);
+    m_stripTimer->setInterval(300);
+    connect(m_stripTimer, &QTimer::timeout, this, &FootprintWorkspace::refreshStrips);
+    connect(m_controller, &FootprintController::countsChanged, m_stripTimer, qOverload<>(&QTimer::start));
+    connect(m_controller, &FootprintController::rejudgeFinished, m_stripTimer, qOverload<>(&QTimer::start));
     wireZoomKeys();
     setRoiOverlay();
     updateCounts();
@@ -1281,6 +1293,83 @@ void FootprintWorkspace::showSuggestion(const core::footprint::VerdictTuneResult
     });
     connect(buttons, &QDialogButtonBox::rejected, m_suggestion, &QDialog::reject);
     m_suggestion->open();
+}
+
+void FootprintWorkspace::refreshStrips() {
+    using namespace core::footprint;
+    if (m_controller->busy()) {  // (the rejudge's end starts the timer again)
+        m_stripTimer->start();
+        return;
+    }
+    if (m_stripWork) m_stripWork->cancel();
+    auto work = std::make_shared<core::Feedback>();
+    m_stripWork = work;
+    // What the verdict stage reads of each shot, and the analyst's verdicts.
+    auto shots = std::make_shared<std::vector<VerdictMeasures>>();
+    auto labels = std::make_shared<std::vector<int>>();
+    for (const Shot& s : m_controller->shots()) {
+        if (!s.processed) continue;
+        shots->push_back(measureResult(s.result, s.roi.cols, s.roi.rows));
+        if (!s.result.ok) shots->back().refusal = s.result.error.empty() ? "not processed" : s.result.error;
+        labels->push_back(s.overridden ? int(s.overrideVerdict) : -1);
+    }
+    // Every verdict threshold the panel shows with a slider, switched on.
+    struct Strip {
+        std::string key, end;
+        QPointer<ParamSlider> slider;
+        std::vector<double> values;
+        CriterionSweep sweep;
+    };
+    auto strips = std::make_shared<std::vector<Strip>>();
+    const FootprintParams params = m_controller->params();
+    for (const auto& f : footprintSchema().fields()) {
+        if (f.key.rfind("verdict.", 0) != 0) continue;
+        QWidget* w = m_panel->form().widget(f.key);
+        if (auto* range = qobject_cast<RangeEdit*>(w)) {
+            const bool on = f.getRange(params).enabled;
+            for (auto [end, slider] : {std::pair<const char*, ParamSlider*>{"lo", range->loSlider()}, {"hi", range->hiSlider()}})
+                if (on) strips->push_back({f.key, end, slider, slider->trackValues(48), {}});
+                else slider->clearStrip();
+        } else if (auto* slider = qobject_cast<ParamSlider*>(w)) {
+            const bool on = std::isfinite(f.get(params)) && slider->slider()->isEnabled();
+            if (on) strips->push_back({f.key, "", slider, slider->trackValues(48), {}});
+            else slider->clearStrip();
+        }
+    }
+    if (shots->empty()) {
+        for (Strip& s : *strips)
+            if (s.slider) s.slider->clearStrip();
+        return;
+    }
+    QPointer<FootprintWorkspace> self(this);
+    (void)QtConcurrent::run([self, work, shots, labels, strips, params] {
+        for (Strip& s : *strips) {
+            s.sweep = sweepCriterion(*shots, *labels, params, s.key, s.end, s.values, work.get());
+            if (work->isCancelled()) return;
+        }
+        QMetaObject::invokeMethod(qApp, [self, work, strips] {
+            if (!self || work->isCancelled() || self->m_stripWork != work) return;
+            for (Strip& s : *strips) {
+                if (!s.slider || s.sweep.changed.size() != s.values.size()) continue;
+                const CriterionSweep& w = s.sweep;
+                const int most = *std::max_element(w.changed.begin(), w.changed.end());
+                std::vector<double> area, line;
+                for (int c : w.changed) area.push_back(most > 0 ? double(c) / most : 0.0);
+                QString tip = tr("Strip: shots whose verdict would change along the slider (up to %1)").arg(most);
+                if (w.labelled > 0) {
+                    const auto [lo, hi] = std::minmax_element(w.disagree.begin(), w.disagree.end());
+                    for (int d : w.disagree) line.push_back(*hi > *lo ? double(d - *lo) / (*hi - *lo) : 0.5);
+                    tip += tr("; orange: disagreements with your %1 manual verdicts (%2 to %3, fewest at %4)")
+                               .arg(w.labelled)
+                               .arg(*lo)
+                               .arg(*hi)
+                               .arg(QString::number(s.values[size_t(lo - w.disagree.begin())], 'g', 4));
+                }
+                s.slider->setStrip(std::move(area), std::move(line), tip);
+            }
+            emit self->stripsReady();
+        });
+    });
 }
 
 }  // namespace lwb::ui

@@ -37,6 +37,11 @@ class ColumnPlot;
 
 class FootprintWorkspace : public Workspace {
     Q_OBJECT
+signals:
+    /// The strips beside the verdict sliders were drawn (refreshStrips).
+    void stripsReady();
+
+public:
 public:
     explicit FootprintWorkspace(QWidget* parent = nullptr);
     FootprintController* controller() const { return m_controller; }
@@ -117,6 +122,12 @@ public:
     /// verdict; the outcome in a dialog, applied (one undoable step) only when the analyst
     /// accepts. False when there is nothing to tune on (said in a message box).
     bool suggestThresholds();
+    /// The strips beside the verdict sliders (issue 45): for each verdict threshold switched on,
+    /// the shots whose verdict would change (filled) and, where shots have a manual verdict,
+    /// the disagreements with them (a line) along the slider's track, computed in the background
+    /// (core sweepCriterion) after every rejudge or verdict edit. Returns at once; stripsReady()
+    /// when they are drawn.
+    void refreshStrips();
     /// The last suggestion's dialog (null before one), for tests: Apply and Close.
     class QDialog* suggestionDialog() const { return m_suggestion; }
     /// The line under the views with the regions' statistics.
@@ -181,6 +192,8 @@ private:
     TaskJob<core::footprint::VerdictTuneTask>* m_tuneJob = nullptr;
     std::shared_ptr<const core::footprint::VerdictTuneTask::Inputs> m_tuneInputs;  // the next suggestion's shots
     QDialog* m_suggestion = nullptr;
+    class QTimer* m_stripTimer = nullptr;
+    std::shared_ptr<core::Feedback> m_stripWork;  // the strips being computed (cancelled by the next)
 };
 
 }  // namespace lwb::ui

@@ -1858,6 +1858,14 @@ The criteria are tuned on the shots you gave a manual verdict (Accept A, Reject 
         <source>verdict thresholds to the suggested ones</source>
         <translation>判定阈值为建议值</translation>
     </message>
+    <message>
+        <source>Strip: shots whose verdict would change along the slider (up to %1)</source>
+        <translation>条带：沿滑块各值判定会改变的光斑数（最多 %1）</translation>
+    </message>
+    <message>
+        <source>; orange: disagreements with your %1 manual verdicts (%2 to %3, fewest at %4)</source>
+        <translation>；橙线：与您的 %1 个人工判定不一致的数目（%2 至 %3，在 %4 处最少）</translation>
+    </message>
 </context>
 <context>
     <name>lwb::ui::HistogramView</name>

@@ -2,6 +2,9 @@
 #include "ui/kit/i18n.hpp"
 
 #include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QStyle>
 
 #include <QApplication>
 #include <QCheckBox>
@@ -162,6 +165,76 @@ QString firstUpper(QString s) {
 }
 }  // namespace
 
+// Draws a ParamSlider's strip on its track before the slider paints its groove and handle.
+class StripPainter : public QObject {
+public:
+    StripPainter(ParamSlider* owner) : QObject(owner), m_owner(owner) {}
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* e) override {
+        if (e->type() != QEvent::Paint) return false;
+        auto* s = qobject_cast<QSlider*>(watched);
+        const std::vector<double>&a = m_owner->m_stripArea, &l = m_owner->m_stripLine;
+        if (!s || (a.size() < 2 && l.size() < 2)) return false;
+        // The handle's centre runs from half its length in to half its length from the end.
+        const int len = s->style()->pixelMetric(QStyle::PM_SliderLength, nullptr, s);
+        const double x0 = 0.5 * len, x1 = s->width() - 0.5 * len, h = s->height();
+        QPainter p(s);
+        p.setRenderHint(QPainter::Antialiasing);
+        auto path = [&](const std::vector<double>& v, bool closed) {
+            QPainterPath pp;
+            for (size_t i = 0; i < v.size(); ++i) {
+                const QPointF pt(x0 + (x1 - x0) * double(i) / double(v.size() - 1), h - 1 - (h - 2) * std::clamp(v[i], 0.0, 1.0));
+                if (i == 0 && closed) pp.moveTo(x0, h - 1);
+                if (i == 0 && !closed) pp.moveTo(pt);
+                else pp.lineTo(pt);
+            }
+            if (closed) pp.lineTo(x1, h - 1), pp.closeSubpath();
+            return pp;
+        };
+        const QColor accent = s->palette().color(QPalette::Highlight);
+        if (a.size() >= 2) {
+            QColor fill = accent;
+            fill.setAlpha(110);
+            p.fillPath(path(a, true), fill);
+        }
+        if (l.size() >= 2) p.strokePath(path(l, false), QPen(QColor(230, 120, 20), 1.5));
+        return false;  // the slider paints its groove and handle over it
+    }
+
+private:
+    ParamSlider* m_owner;
+};
+
+std::vector<double> ParamSlider::trackValues(int n) const {
+    std::vector<double> v;
+    for (int i = 0; i < n && n > 1; ++i)
+        v.push_back(fromSlider(m_slider->minimum() +
+                               int(std::lround(double(m_slider->maximum() - m_slider->minimum()) * i / (n - 1)))));
+    return v;
+}
+
+void ParamSlider::setStrip(std::vector<double> area, std::vector<double> line, const QString& tip) {
+    if (!m_slider->property("stripPainter").toBool()) {
+        m_slider->installEventFilter(new StripPainter(this));
+        m_slider->setProperty("stripPainter", true);
+    }
+    m_stripArea = std::move(area);
+    m_stripLine = std::move(line);
+    m_stripTip = tip;
+    m_slider->setToolTip(m_tip + (m_tip.isEmpty() || tip.isEmpty() ? "" : "<br>") + tip);
+    m_slider->update();
+}
+
+void ParamSlider::clearStrip() {
+    if (m_stripArea.empty() && m_stripLine.empty()) return;
+    m_stripArea.clear();
+    m_stripLine.clear();
+    m_stripTip.clear();
+    m_slider->setToolTip(m_tip);
+    m_slider->update();
+}
+
 ParamSlider::ParamSlider(const core::FieldInfo& info, const QString& label, QWidget* parent)
     : QWidget(parent), m_info(info) {
     build(label.isEmpty() ? firstUpper(schemaText(info.label())) : label);
@@ -303,7 +376,7 @@ void ParamSlider::userValue(double v) {
 void ParamSlider::setToolTipText(const QString& tip) {
     m_tip = tip;
     m_label->setToolTip(tip);
-    m_slider->setToolTip(tip);
+    m_slider->setToolTip(tip + (tip.isEmpty() || m_stripTip.isEmpty() ? "" : "<br>") + m_stripTip);
     showExactValue();
 }
 

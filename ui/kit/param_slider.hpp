@@ -49,6 +49,18 @@ public:
     /// The value lies outside the slider's range (the slider sits at its end).
     bool pinned() const;
 
+    /// The values at n positions spread evenly along the slider's track, from its left end to
+    /// its right: where a strip's outcomes are computed.
+    std::vector<double> trackValues(int n) const;
+    /// A strip of outcomes along the track, drawn under the groove so that the plateau and the
+    /// cliff are seen before the handle moves: `area` filled from the bottom, `line` as a line
+    /// (each one number in [0, 1] per trackValues position; empty: not drawn); `tip` joins the
+    /// slider's tooltip. clearStrip() takes it away.
+    void setStrip(std::vector<double> area, std::vector<double> line, const QString& tip);
+    void clearStrip();
+    const std::vector<double>& stripArea() const { return m_stripArea; }
+    const std::vector<double>& stripLine() const { return m_stripLine; }
+
 signals:
     void valueChanged(double value);
 
@@ -72,6 +84,9 @@ private:
     bool m_intSlider = false;    ///< the slider's positions are the integers of the UI range
     bool m_updating = false;
     QString m_tip;               ///< the row's tooltip (the exact value is added to it)
+    std::vector<double> m_stripArea, m_stripLine;  ///< setStrip's
+    QString m_stripTip;
+    friend class StripPainter;
 };
 
 }  // namespace lwb::ui
