@@ -17,9 +17,11 @@ namespace slr = core::slr;
 namespace {
 
 const char* kTuneUsage =
-    "usage: laserwb-cli slr tune [options] CRD... --preset-out FILE.json\n"
+    "usage: laserwb-cli slr tune [options] PASS... --preset-out FILE.json\n"
     "Chooses a satellite's parameters from the station's own decisions: every pass of the CRD files\n"
-    "(their filter flags, 2 data and 1 noise, are the labels) is screened with each candidate, the\n"
+    "(their filter flags, 2 data and 1 noise, are the labels), and every O-C table with a station_flag\n"
+    "column (what `laserwb-cli slr CRD -o OUT.csv` writes; with --satellite: a table does not name its\n"
+    "satellite) is screened with each candidate, the\n"
     "starting point (the command's defaults, or the satellite's entry of --preset) and a grid over the\n"
     "screening's cosine constant (0.90-0.99), the post-fit's rejection k (2.5, 3, 3.5) and whether its\n"
     "band takes the image's leftovers. The candidate with the best mean F1 of the delivered flags\n"

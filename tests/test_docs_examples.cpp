@@ -89,6 +89,7 @@ QStringList commandWords(const QStringList& args) {
     static const QStringList two{"simulate", "eval", "bench", "calib", "radiometry", "crd"};
     if (args.isEmpty()) return {};
     if (two.contains(args[0]) && args.size() > 1) return args.mid(0, 2);
+    if ((args[0] == "slr" || args[0] == "footprint") && args.size() > 1 && args[1] == "tune") return args.mid(0, 2);
     return args.mid(0, 1);
 }
 

@@ -142,12 +142,45 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.err.contains("left out: satellite lageos1"), qPrintable(r.err));
         QCOMPARE(tuning(preset).value("passes").toArray().size(), 1);
+        // An O-C table: its satellite from --satellite, its labels from a station_flag column.
         const QString csv = m_dir.path() + "/table.csv";
         QCOMPARE(runCli({"simulate", "slr", "--kind", "leo", "--seed", "1", "-q", csv}).exitCode, 0);
         r = runCli({"slr", "tune", csv, "--preset-out", m_dir.path() + "/csv.json"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("O-C table has no station flags"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("does not name its satellite") && r.err.contains("--satellite"), qPrintable(r.err));
+        r = runCli({"slr", "tune", csv, "--satellite", "simsat-leo", "--preset-out", m_dir.path() + "/csv.json"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("no station_flag column"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(m_dir.path() + "/csv.json"));
         QCOMPARE(runCli({"slr", "tune", leo}).exitCode, 2);  // (no --preset-out)
+    }
+
+    // The CLI's own O-C table of a CRD pass carries the station's flags (station_flag): tuned on
+    // it, the same labels as on the CRD; a flag that is not 0, 1 or 2 is refused at its line.
+    void tunesOnTheCliOwnOcTable() {
+        const QString frd = simulate("leo", 1, 3).front();
+        const QString table = m_dir.path() + "/leo3.csv";
+        lwbtest::CliRun r = runCli({"slr", frd, "-q", "-o", table});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString preset = m_dir.path() + "/fromcsv.json";
+        r = runCli({"slr", "tune", table, "--satellite", "simsat-leo", "--preset-out", preset});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject t = tuning(preset);
+        const QJsonArray passes = t.value("passes").toArray();
+        QCOMPARE(passes.size(), 1);
+        const QString crdPreset = m_dir.path() + "/fromcrd.json";
+        QCOMPARE(runCli({"slr", "tune", "-q", frd, "--preset-out", crdPreset}).exitCode, 0);
+        const QJsonObject c = tuning(crdPreset).value("passes").toArray().at(0).toObject();
+        QCOMPARE(passes.at(0).toObject().value("labelled_data").toInt(), c.value("labelled_data").toInt());
+        QCOMPARE(passes.at(0).toObject().value("points").toInt(), c.value("points").toInt());
+        QVERIFY(t.value("f1_after").toDouble() >= t.value("f1_before").toDouble());
+        QByteArray text = lwbtest::readAll(table);
+        const int row = text.indexOf('\n', text.indexOf('\n') + 1);  // the end of the first data row
+        text[row - 1] = '7';  // (station_flag is the last column)
+        QVERIFY(lwbtest::writeText(table, text));
+        r = runCli({"slr", "tune", table, "--satellite", "simsat-leo", "--preset-out", m_dir.path() + "/bad.json"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("leo3.csv:2:") && r.err.contains("station_flag 7"), qPrintable(r.err));
     }
 
     // An existing presets file: its other entries are kept, the satellite's entry is added (the

@@ -438,7 +438,8 @@ void bindRuns(py::module_& m) {
     m.def("tune", &tunePasses, py::arg("files"), py::arg("satellite") = py::none(), py::arg("preset") = py::none(),
           py::arg("preset_out") = py::none(), py::arg("threads") = py::none(),
           "A satellite's parameters from the station's own filter flags, as laserwb-cli slr tune: every pass\n"
-          "of the CRD files (one path or a list) screened with each candidate, the best mean F1 against the\n"
+          "of the CRD files (one path or a list; an O-C table with a station_flag column, as slr -o writes it,\n"
+          "with satellite=) screened with each candidate, the best mean F1 against the\n"
           "flags chosen (another than the starting point only for a gain beyond 0.001 that loses on no pass\n"
           "more than 0.002), leave-one-pass-out. preset: start from the satellite's entry of this presets\n"
           "file; preset_out: write the entry there (its other entries kept) with its provenance, the CLI's\n"

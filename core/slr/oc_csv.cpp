@@ -201,6 +201,17 @@ std::string readHeader(std::string_view line, const OcCsvParams& params, Columns
         cols->extra.push_back(static_cast<size_t>(found));
         names->push_back(want);
     }
+    for (const auto& maybe : params.optionalColumns) {
+        int found = -1;
+        for (size_t i = 0; i < fields.size(); ++i)
+            if (lower(fields[i]) == toLower(maybe)) {
+                if (found >= 0) return "column " + maybe + " appears twice";
+                found = static_cast<int>(i);
+            }
+        if (found < 0) continue;
+        cols->extra.push_back(static_cast<size_t>(found));
+        names->push_back(maybe);
+    }
     cols->count = fields.size();
     cols->epoch = static_cast<size_t>(cEpoch);
     cols->oc = static_cast<size_t>(cOc);
@@ -211,7 +222,9 @@ std::string readHeader(std::string_view line, const OcCsvParams& params, Columns
 }  // namespace
 
 std::string validate(const OcCsvParams& p) {
-    for (const auto& n : p.extraColumns) {
+    std::vector<std::string> all = p.extraColumns;
+    all.insert(all.end(), p.optionalColumns.begin(), p.optionalColumns.end());
+    for (const auto& n : all) {
         const std::string l = lower(n);
         if (l.empty()) return "extra column names must not be empty";
         if (l == "epoch_s" || l == "oc_s") return "epoch_s and oc_s are always read; not an extra column";

@@ -32,6 +32,8 @@ struct OcTable {
 struct OcCsvParams {
     std::vector<std::string> extraColumns;      ///< further numeric columns to read (case-insensitive; must exist;
                                                 ///< an empty field there reads as NaN)
+    std::vector<std::string> optionalColumns;   ///< read as extraColumns when the header has them (after them
+                                                ///< in OcTable::extra), else left out
 };
 
 /// Empty when valid: extra column names must be non-empty and differ from epoch_s / oc_s.

@@ -315,13 +315,34 @@ PassInputResult passFromOcTable(const std::string& path) {
     PassInputResult r;
     PassData& d = r.pass;
     d.source = path;
-    OcCsvReadResult csv = readOcCsv(path);
+    // A station_flag column (the CLI's own -o writes one): the station's filter flags, as a CRD's.
+    OcCsvParams params;
+    params.optionalColumns = {"station_flag"};
+    OcCsvReadResult csv = readOcCsv(path, params);
     if (!csv.ok) {
         r.error = csv.error;
         return r;
     }
+    std::vector<int> flags;
+    if (!csv.table.extra.empty()) {
+        const std::vector<double>& f = csv.table.extra.front();
+        flags.resize(f.size());
+        bool any = false;
+        for (size_t i = 0; i < f.size(); ++i) {
+            if (std::isnan(f[i])) continue;  // (empty: unknown, 0)
+            if (f[i] != 0 && f[i] != 1 && f[i] != 2) {
+                r.error = path + ":" + std::to_string(csv.table.line[i]) + ": station_flag " + formatShortest(f[i]) +
+                          " is not a CRD filter flag (0 unknown, 1 noise, 2 data)";
+                return r;
+            }
+            flags[i] = static_cast<int>(f[i]);
+            any = any || flags[i] != 0;
+        }
+        if (!any) flags.clear();  // (a column of blanks or zeros says nothing)
+    }
     PassInputResult p = passFromOc(std::move(csv.table.epoch_s), std::move(csv.table.oc_s), path);
     p.warnings.insert(p.warnings.begin(), csv.warnings.begin(), csv.warnings.end());
+    if (p.ok) p.pass.stationFlag = std::move(flags);
     return p;
 }
 

@@ -48,7 +48,7 @@ TuneResult failed(std::string message, bool usage) {
 
 }  // namespace
 
-TuneResult tuneSlr(const TuneSources& sources, Feedback* fb) {
+TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
     if (sources.files.empty()) return failed("no passes to tune on: give one or more CRD files with the station's filter flags", true);
     std::vector<SatellitePreset> entries;
     if (!sources.presets.empty()) {
@@ -73,7 +73,41 @@ TuneResult tuneSlr(const TuneSources& sources, Feedback* fb) {
             withEntry = std::make_shared<SlrSetup>();
             if (!setUpSlrRun(src, withEntry.get(), &out.error)) return out;
         }
-        if (!isCrdFile(file)) return failed(file + ": an O-C table has no station flags to tune on (a CRD file has)", true);
+        // A pass opened: its labels (the station's flags: 2 data, 1 noise) or why it has none.
+        auto take = [&](const std::string& name, std::shared_ptr<const SlrSetup> setup, const OpenedPass& o) -> bool {
+            const PassData& d = *o.pass;
+            size_t data = 0, noise = 0;
+            for (int f : d.stationFlag) data += f == 2, noise += f == 1;
+            if (data == 0) {
+                out = failed(name + ": no labels to tune on: " +
+                                 (d.stationFlag.empty() && !isCrdFile(file)
+                                      ? std::string("the O-C table has no station_flag column (laserwb-cli slr -o writes "
+                                                    "one from a CRD pass's filter flags)")
+                                  : noise == 0 ? std::string("every filter flag is 0 (unknown)")
+                                               : "no point is flagged data (2), " + std::to_string(noise) + " noise (1)") +
+                                 "; tuning learns from the station's own decisions (2 data, 1 noise)",
+                             false);
+                return false;
+            }
+            OpenTuned t{std::move(setup), o.pass, o.settings, {}};
+            t.labels.resize(d.stationFlag.size());
+            for (size_t i = 0; i < d.stationFlag.size(); ++i) t.labels[i] = d.stationFlag[i] == 2;
+            open.push_back(std::move(t));
+            return true;
+        };
+        if (!isCrdFile(file)) {
+            // An O-C table (the CLI's -o): one pass, its station_flag column the labels. It does
+            // not name its satellite: --satellite does (the entry written, the entry started from).
+            if (sources.satellite.empty())
+                return failed(file + ": an O-C table does not name its satellite: give --satellite NAME (the preset "
+                                     "entry the tuning writes)",
+                              true);
+            const bool entry = withEntry && findPreset(entries, sources.satellite);
+            const OpenedPass o = openPass(entry ? *withEntry : *plain);
+            if (!o.ok) return failed(o.error.message, o.error.usage);
+            if (!take(file, entry ? std::shared_ptr<const SlrSetup>(withEntry) : plain, o)) return out;
+            continue;
+        }
         const std::shared_ptr<const CrdReadResult> crd = readSlrInput(src, &out.error);
         if (!crd) return out;
         const std::vector<PassSummary> summaries = summarisePasses(crd->file);
@@ -91,19 +125,7 @@ TuneResult tuneSlr(const TuneSources& sources, Feedback* fb) {
             std::shared_ptr<const SlrSetup> setup = entry ? std::shared_ptr<const SlrSetup>(withEntry) : plain;
             OpenedPass o = openPassOf(*setup, crd, s.index);
             if (!o.ok) return failed(o.error.message, o.error.usage);
-            const PassData& d = *o.pass;
-            size_t data = 0, noise = 0;
-            for (int f : d.stationFlag) data += f == 2, noise += f == 1;
-            if (data == 0)
-                return failed(name + ": no labels to tune on: " +
-                                  (noise == 0 ? std::string("every filter flag is 0 (unknown)")
-                                              : "no point is flagged data (2), " + std::to_string(noise) + " noise (1)") +
-                                  "; tuning learns from the station's own decisions (2 data, 1 noise)",
-                              false);
-            OpenTuned t{setup, o.pass, o.settings, {}};
-            t.labels.resize(d.stationFlag.size());
-            for (size_t i = 0; i < d.stationFlag.size(); ++i) t.labels[i] = d.stationFlag[i] == 2;
-            open.push_back(std::move(t));
+            if (!take(name, setup, o)) return out;
         }
     }
     if (open.empty()) return failed("no pass to tune on in the files given" + (out.notes.empty() ? std::string() : ": " + out.notes.front()), true);

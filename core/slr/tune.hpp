@@ -19,7 +19,8 @@ namespace lwb::core::slr {
 /// What a front end gathers for a tuning: the files, the analyst's settings (as for a run) and
 /// the satellite whose passes count ("" = the passes' one satellite).
 struct TuneSources {
-    std::vector<std::string> files;  ///< CRD files: every pass to screen of each (isPassToScreen)
+    std::vector<std::string> files;  ///< CRD files: every pass to screen of each (isPassToScreen); O-C tables
+                                     ///< with a station_flag column (the CLI's -o): one pass each, of `satellite`
     std::string satellite;           ///< only passes of this satellite (matched as presets match)
     std::string presets;             ///< an existing presets file: its entry is the starting point
     std::vector<ParamSetting> set;   ///< over the defaults (or the entry), as --set
@@ -55,7 +56,7 @@ struct TuneResult {
 /// 0, or no point flagged data) with its reason, screens every pass with every candidate and
 /// chooses. ok false with `error` (a usage error when the choice is the caller's: passes of
 /// several satellites without `satellite`, too few labelled passes).
-TuneResult tuneSlr(const TuneSources& sources, Feedback* fb = nullptr);
+TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb = nullptr);
 
 /// The tuning's record for the preset's provenance: the passes, their labels, F1 before (the
 /// starting point) and after, and leave-one-pass-out.

@@ -2,6 +2,7 @@
 // edits with undo, presets, exports, sessions.
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDialog>
 #include <QTableWidget>
 #include <QUndoStack>
 #include <qcustomplot.h>
@@ -34,6 +35,7 @@
 #include "ui/slr/slr_workspace.hpp"
 #include <QRegularExpression>
 #include "core/slr/slr_time.hpp"
+#include "core/slr/tune.hpp"
 
 using namespace lwb::ui;
 
@@ -1764,6 +1766,53 @@ private slots:
         undoStackOf(&ws).redo();
         QCOMPARE(c->screenParams().cosineC, 0.93);
         QVERIFY(c->waitIdle(60000));
+    }
+
+    // Issue 45: "Tune from this file's passes" makes laserwb-cli slr tune's choice (core
+    // tuneSlr) on the open file, shows it per pass, and applies it only on Apply, as one
+    // undoable step; without a CRD file it says so.
+    void tuneFromTheFilesPassesAppliesOnlyOnApply() {
+        SlrWorkspace ws;
+        QSignalSpy failed(&ws, &Workspace::failed);
+        QVERIFY(!ws.tuneFromFile());  // nothing open
+        QCOMPARE(failed.count(), 1);
+        const QString frd = m_dir.path() + "/tune_leo.frd";
+        QCOMPARE(lwbtest::runCli({"simulate", "slr", "--kind", "leo", "--seed", "2", "-q", frd}).exitCode, 0);
+        QString err;
+        QVERIFY2(ws.openPath(frd, -1, &err), qPrintable(err));
+        SlrController* c = ws.controller();
+        QVERIFY(c->waitIdle(60000));
+        lwb::core::slr::TuneSources src;  // what the CLI's tune chooses on the same file
+        src.files = {lwbtest::str(frd)};
+        src.satellite = c->pass().satellite;
+        const lwb::core::slr::TuneResult expected = lwb::core::slr::tuneSlr(src);
+        QVERIFY(expected.ok);
+        const lwb::core::slr::SlrParams start = c->params();
+        undoStackOf(&ws).clear();
+        QDialog* d = ws.tuneFromFile();
+        QVERIFY(d && d->isVisible());
+        auto* text = d->findChild<QLabel*>("tuningText");
+        QVERIFY(text);
+        QVERIFY2(text->text().contains("simsat-leo") && text->text().contains("Held out") &&
+                     text->text().contains(QString::number(expected.heldOutMeanF1, 'f', 4)),
+                 qPrintable(text->text()));
+        QCOMPARE(c->params().screen.cosineC, start.screen.cosineC);  // nothing applied yet
+        d->findChild<QPushButton*>("applyTuning")->click();
+        QVERIFY(c->waitIdle(60000));
+        const lwb::core::slr::SlrParams& chosen = expected.candidates[expected.best].params;
+        QCOMPARE(c->params().screen.cosineC, chosen.screen.cosineC);
+        QCOMPARE(c->params().postfit.rejectSigma, chosen.postfit.rejectSigma);
+        QCOMPARE(c->params().postfit.takeBand, chosen.postfit.takeBand);
+        QCOMPARE(ws.paramsPanel()->params().screen.cosineC, chosen.screen.cosineC);
+        const bool moved = chosen.screen.cosineC != start.screen.cosineC || chosen.postfit.rejectSigma != start.postfit.rejectSigma ||
+                           chosen.postfit.takeBand != start.postfit.takeBand;
+        QCOMPARE(undoStackOf(&ws).count(), moved ? 1 : 0);
+        if (moved) {
+            undoStackOf(&ws).undo();
+            QVERIFY(c->waitIdle(60000));
+            QCOMPARE(c->params().screen.cosineC, start.screen.cosineC);
+            QCOMPARE(c->params().postfit.rejectSigma, start.postfit.rejectSigma);
+        }
     }
 };
 

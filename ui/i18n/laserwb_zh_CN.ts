@@ -4545,6 +4545,82 @@ The criteria are tuned on the shots you gave a manual verdict (Accept A, Reject 
         <source>a simulated kHz pass</source>
         <translation>模拟 kHz 过境</translation>
     </message>
+    <message>
+        <source>Tune from this file&apos;s passes…</source>
+        <translation>按本文件的各过境调参…</translation>
+    </message>
+    <message>
+        <source>The satellite&apos;s parameters chosen from the station&apos;s own filter flags (2 data, 1 noise) over every pass of the open CRD file; shown before they are applied</source>
+        <translation>按测站自己的滤波标志（2 数据、1 噪声）在所打开 CRD 文件的每个过境上为该卫星选择参数；应用前先显示</translation>
+    </message>
+    <message>
+        <source>Tune from this file&apos;s passes</source>
+        <translation>按本文件的各过境调参</translation>
+    </message>
+    <message>
+        <source>Open a CRD file whose filter flags hold the station&apos;s decisions (2 data, 1 noise) first.</source>
+        <translation>请先打开一个其滤波标志记录了测站判定（2 数据、1 噪声）的 CRD 文件。</translation>
+    </message>
+    <message>
+        <source>Tuning on the passes of %1…</source>
+        <translation>正在按 %1 的各过境调参…</translation>
+    </message>
+    <message>
+        <source>Parameters from the station&apos;s flags: %1</source>
+        <translation>按测站标志选择的参数：%1</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;%1 pass(es) of %2 screened with %3 candidates; the station&apos;s filter flags are the labels.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;%2 的 %1 个过境以 %3 组候选参数筛选；测站的滤波标志作为标签。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;The starting point stays&lt;/b&gt;: no candidate beats it by more than 0.001 without losing more than 0.002 on a pass.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;保持起始参数&lt;/b&gt;：没有候选参数在任一过境损失不超过 0.002 的前提下比它高出 0.001 以上。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Chosen: &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;选定：&lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Pass</source>
+        <translation>过境</translation>
+    </message>
+    <message>
+        <source>Points (data)</source>
+        <translation>点数（数据）</translation>
+    </message>
+    <message>
+        <source>F1 now</source>
+        <translation>当前 F1</translation>
+    </message>
+    <message>
+        <source>F1 chosen</source>
+        <translation>选定 F1</translation>
+    </message>
+    <message>
+        <source>Held out</source>
+        <translation>留出验证</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>平均</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;i&gt;Held out: each pass scored with the choice made without it (leave one pass out).&lt;/i&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;i&gt;留出验证：每个过境用不含它所做的选择评分（留一过境法）。&lt;/i&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Apply to this pass</source>
+        <translation>应用于本过境</translation>
+    </message>
+    <message>
+        <source>Sets the chosen cosine constant, rejection and band in the parameters (one step: Edit ▸ Undo takes it back); Save as this satellite&apos;s preset keeps them</source>
+        <translation>把选定的余弦常数、剔除倍数和带设入参数（一步操作：编辑 ▸ 撤销可还原）；“保存为该卫星的预设”可保留它们</translation>
+    </message>
+    <message>
+        <source>The satellite&apos;s parameters chosen from the station&apos;s own filter flags over every pass of the open CRD file, as laserwb-cli slr tune chooses them</source>
+        <translation>按测站自己的滤波标志在所打开 CRD 文件的每个过境上为该卫星选择参数，与 laserwb-cli slr tune 的选择相同</translation>
+    </message>
 </context>
 <context>
     <name>lwb::ui::Workspace</name>

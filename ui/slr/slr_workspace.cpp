@@ -6,6 +6,8 @@
 #include <QComboBox>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QDialogButtonBox>
+#include <QDialog>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -29,6 +31,7 @@
 #include <climits>
 
 #include "core/sim/slr_sim.hpp"
+#include "core/slr/tune.hpp"
 #include "ui/kit/elided_label.hpp"
 #include "ui/kit/modal_work.hpp"
 #include "ui/kit/save_path.hpp"
@@ -447,7 +450,11 @@ QWidget* SlrWorkspace::buildPanel() {
     exCsv->setToolTip(tr("Per point: index, epoch, O-C, class, region, residual, kept, station flag"));
     exCrd->setToolTip(tr("CRD full rate with filter flags 2 (accepted) / 1 (noise): this pass only, or the whole file with this pass's flags set"));
     exNp->setToolTip(tr("The normal points of the pass as a CRD normal-point file"));
-    for (QPushButton* b : {savePreset, exCsv, exCrd, exNp}) xl->addWidget(b);
+    auto* tune = new QPushButton(tr("Tune from this file's passes…"), xg);
+    tune->setToolTip(tr("The satellite's parameters chosen from the station's own filter flags (2 data, 1 noise) over "
+                        "every pass of the open CRD file; shown before they are applied"));
+    connect(tune, &QPushButton::clicked, this, [this] { tuneFromFile(); });
+    for (QPushButton* b : {savePreset, tune, exCsv, exCrd, exNp}) xl->addWidget(b);
     pl->addWidget(xg);
     pl->addStretch(1);
     for (QRadioButton* b : {m_modeZoom, m_modeBoxZoom, m_modeIn, m_modeOut})
@@ -629,12 +636,96 @@ SlrFileCheckDialog* SlrWorkspace::checkFile() {
     return d;
 }
 
+QDialog* SlrWorkspace::tuneFromFile() {
+    using namespace core::slr;
+    const QString title = tr("Tune from this file's passes");
+    if (m_path.isEmpty() || !m_controller->crd()) {
+        emit failed(title, tr("Open a CRD file whose filter flags hold the station's decisions (2 data, 1 noise) first."));
+        return nullptr;
+    }
+    TuneSources src;
+    src.files = {m_path.toStdString()};
+    src.satellite = m_controller->pass().satellite;
+    if (QFileInfo::exists(m_controller->presetFile())) src.presets = m_controller->presetFile().toStdString();
+    bool cancelled = false;
+    const TuneResult r = runModal<TuneResult>(
+        this, tr("Tuning on the passes of %1…").arg(QFileInfo(m_path).fileName()),
+        [src](const core::Feedback* fb) { return tuneSlr(src, fb); }, &cancelled);
+    if (cancelled) return nullptr;
+    if (!r.ok) {
+        emit failed(title, QString::fromStdString(r.error.message));
+        return nullptr;
+    }
+    auto* d = new QDialog(this);
+    d->setObjectName("slrTuning");
+    d->setAttribute(Qt::WA_DeleteOnClose);
+    d->setWindowTitle(tr("Parameters from the station's flags: %1").arg(QString::fromStdString(r.satellite)));
+    auto* lay = new QVBoxLayout(d);
+    const TuneCandidate& best = r.candidates[r.best];
+    const auto f1 = [](double v) { return QString::number(v, 'f', 4); };
+    QString html = tr("<p>%1 pass(es) of %2 screened with %3 candidates; the station's filter flags are the labels.</p>")
+                       .arg(r.passes.size())
+                       .arg(QString::fromStdString(r.satellite).toHtmlEscaped())
+                       .arg(r.candidates.size());
+    html += r.best == 0 ? tr("<p><b>The starting point stays</b>: no candidate beats it by more than 0.001 without losing "
+                             "more than 0.002 on a pass.</p>")
+                        : tr("<p>Chosen: <b>%1</b></p>").arg(QString::fromStdString(best.label).toHtmlEscaped());
+    html += QStringLiteral("<table cellpadding='3'><tr><th align='left'>%1</th><th>%2</th><th>%3</th><th>%4</th><th>%5</th></tr>")
+                .arg(tr("Pass"), tr("Points (data)"), tr("F1 now"), tr("F1 chosen"), tr("Held out"));
+    for (const TunedPass& p : r.passes) {
+        QString name = QString::fromStdString(p.name);  // "FILE pass K": the file by its name
+        if (name.startsWith(m_path)) name = QFileInfo(m_path).fileName() + name.mid(m_path.size());
+        html += QStringLiteral("<tr><td>%1</td><td align='right'>%2 (%3)</td><td align='right'>%4</td><td align='right'><b>%5</b></td>"
+                               "<td align='right'>%6</td></tr>")
+                    .arg(name.toHtmlEscaped())
+                    .arg(p.points)
+                    .arg(p.labelledSignal)
+                    .arg(f1(p.scores[0].f1), f1(p.scores[r.best].f1), f1(p.heldOutF1));
+    }
+    html += QStringLiteral("<tr><td><i>%1</i></td><td></td><td align='right'>%2</td><td align='right'><b>%3</b></td><td align='right'>%4</td></tr></table>")
+                .arg(tr("mean"), f1(r.candidates[0].meanF1), f1(best.meanF1), f1(r.heldOutMeanF1));
+    html += tr("<p><i>Held out: each pass scored with the choice made without it (leave one pass out).</i></p>");
+    for (const std::string& n : r.notes) html += QStringLiteral("<p>%1</p>").arg(QString::fromStdString(n).toHtmlEscaped());
+    auto* text = new QLabel(html, d);
+    text->setObjectName("tuningText");
+    text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    lay->addWidget(text);
+    auto* buttons = new QDialogButtonBox(d);
+    QPushButton* apply = buttons->addButton(tr("Apply to this pass"), QDialogButtonBox::AcceptRole);
+    apply->setObjectName("applyTuning");
+    apply->setToolTip(tr("Sets the chosen cosine constant, rejection and band in the parameters (one step: Edit ▸ Undo "
+                         "takes it back); Save as this satellite's preset keeps them"));
+    buttons->addButton(QDialogButtonBox::Close);
+    lay->addWidget(buttons);
+    const SlrParams chosen = best.params;
+    connect(buttons, &QDialogButtonBox::accepted, d, [this, d, chosen] {
+        const SlrParams before = m_controller->params();
+        SlrParams after = before;
+        after.screen.cosineC = chosen.screen.cosineC;
+        after.postfit.rejectSigma = chosen.postfit.rejectSigma;
+        after.postfit.takeBand = chosen.postfit.takeBand;
+        m_params->setParams(after);
+        m_controller->setParams(after);
+        pushParams(this, before, after);
+        emit modified();
+        d->accept();
+    });
+    connect(buttons, &QDialogButtonBox::rejected, d, &QDialog::reject);
+    d->open();
+    return d;
+}
+
 QList<QAction*> SlrWorkspace::fileOpenActions() {
     auto* a = new QAction(tr("Check the CRD file…"), this);
     a->setObjectName("actionCheckCrd");
     a->setToolTip(tr("Every record of the open CRD file against the CRD format, as laserwb-cli crd check lists them"));
     connect(a, &QAction::triggered, this, [this] { checkFile(); });
-    return {a};
+    auto* t = new QAction(tr("Tune from this file's passes…"), this);
+    t->setObjectName("actionTuneSlr");
+    t->setToolTip(tr("The satellite's parameters chosen from the station's own filter flags over every pass of the open "
+                     "CRD file, as laserwb-cli slr tune chooses them"));
+    connect(t, &QAction::triggered, this, [this] { tuneFromFile(); });
+    return {a, t};
 }
 
 bool SlrWorkspace::openPath(const QString& path, int passIndex, QString* error) {

@@ -95,6 +95,14 @@ public:
     /// with progress and Cancel, and lists its problems; null when no CRD file is open or it
     /// was cancelled.
     SlrFileCheckDialog* checkFile();
+    /// "Tune from this file's passes" (issue 45): the satellite's screening and post-fit
+    /// parameters chosen from the station's own filter flags (2 data, 1 noise) over every pass of
+    /// the open CRD file, as laserwb-cli slr tune chooses them (core tuneSlr; the starting point
+    /// the command's defaults or the satellite's entry of the workbench's presets), with progress
+    /// and Cancel. A dialog shows the choice, F1 before, after and held out per pass; *Apply to
+    /// this pass* sets it as one undoable step, nothing is changed otherwise. Null when there is
+    /// nothing to tune on (said) or it was cancelled.
+    QDialog* tuneFromFile();
     QList<QAction*> fileOpenActions() override;
 
     /// Opens a CRD or O-C CSV with the CPF/SINEX chosen in the workspace; errors in a dialog.
