@@ -32,6 +32,8 @@ const char* kTuneUsage =
     "with FILE.json.provenance.json (the passes, their labels, F1 before, after and held out).\n"
     "A pass without labels (every flag 0, or none flagged data) is refused with the reason.\n"
     "  --preset-out FILE.json  the presets file to write the entry into (required)\n"
+    "  --session FILE.json     a workbench session (repeatable): its SLR pass, labelled with the analyst's\n"
+    "                          decisions (the session's run with the points forced in or out by hand)\n"
     "  --satellite NAME        only the passes of this satellite (required when the files hold several)\n"
     "  --preset FILE.json      start from the satellite's entry of this presets file\n"
     "  --threads N             threads of the scale search (0: every core, the default)\n"
@@ -45,6 +47,7 @@ int cmdSlrTune(int argc, char** argv) {
     const std::string cmd = "slr tune";
     Args a(cmd, kTuneUsage);
     for (const char* o : {"--preset-out", "--satellite", "--preset", "--threads"}) a.option(o, true);
+    a.option("--session", true, true);
     for (const char* o : {"--quiet", "-q", "--help", "-h"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
@@ -54,6 +57,7 @@ int cmdSlrTune(int argc, char** argv) {
     const bool quiet = a.has("--quiet") || a.has("-q");
     slr::TuneSources src;
     src.files = a.positional();
+    src.sessions = a.values("--session");
     src.satellite = a.value("--satellite");
     src.presets = a.value("--preset");
     const std::string out = a.value("--preset-out");
@@ -61,7 +65,9 @@ int cmdSlrTune(int argc, char** argv) {
     std::string err;
     if (!a.getInt("--threads", 0, 256, &threads, &err)) return fail(cmd, err, kUsage);
     src.threads = static_cast<int>(threads);
-    if (src.files.empty()) return fail(cmd, "no CRD files given (the passes whose station flags are the labels)", kUsage);
+    if (src.files.empty() && src.sessions.empty())
+        return fail(cmd, "no CRD files or sessions given (the passes whose station flags, or the analyst's edits, are the labels)",
+                    kUsage);
     if (out.empty()) return fail(cmd, "--preset-out FILE.json is required (where the tuned entry is written)", kUsage);
     Progress progress("slr tune", 1000, quiet);
     core::Feedback fb([&](double f) { progress.update(static_cast<size_t>(f * 1000)); });

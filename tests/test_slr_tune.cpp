@@ -183,6 +183,39 @@ private slots:
         QVERIFY2(r.err.contains("leo3.csv:2:") && r.err.contains("station_flag 7"), qPrintable(r.err));
     }
 
+    // A workbench session's pass, labelled by the analyst's decisions: the session's run with
+    // the points forced in or out by hand. Without an edit there is no decision to learn from.
+    void tunesOnTheAnalystsEditsInASession() {
+        const QString frd = simulate("leo", 4, 4).front();
+        auto session = [&](const QString& name, const QJsonArray& forced) {
+            QJsonObject slr{{"path", frd}, {"pass", 0}, {"forced", forced}, {"screen", QJsonObject{{"cosine_c", 0.97}}}};
+            const QJsonObject o{{"format", "laserwb-session"}, {"version", 1}, {"workspace", "slr"}, {"slr", slr}};
+            const QString path = m_dir.path() + "/" + name;
+            lwbtest::writeText(path, QJsonDocument(o).toJson());
+            return path;
+        };
+        QJsonArray forced;
+        for (int i = 0; i < 6; ++i) forced.append(QJsonArray{i * 100, -1});
+        forced.append(QJsonArray{7, 1});
+        const QString preset = m_dir.path() + "/edits.json";
+        lwbtest::CliRun r = runCli({"slr", "tune", "--session", session("edits.lwbsession", forced), "--preset-out", preset});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.err.contains("labels from the session (7 point(s) forced by hand"), qPrintable(r.err));
+        const QJsonObject t = tuning(preset);
+        QCOMPARE(t.value("passes").toArray().size(), 1);
+        QVERIFY(t.value("f1_after").toDouble() >= t.value("f1_before").toDouble());
+        QVERIFY(QJsonDocument(readJson(preset + ".provenance.json").value("inputs").toArray()).toJson().contains("edits.lwbsession"));
+        // No edit: refused, nothing written.
+        r = runCli({"slr", "tune", "--session", session("none.lwbsession", {}), "--preset-out", m_dir.path() + "/none.json"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("no point was forced in or out by hand"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(m_dir.path() + "/none.json"));
+        r = runCli({"slr", "tune", "--session", session("bad.lwbsession", QJsonArray{QJsonArray{99999999, 1}}), "--preset-out",
+                    m_dir.path() + "/bad.json"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("slr.forced") && r.err.contains("99999999"), qPrintable(r.err));
+    }
+
     // An existing presets file: its other entries are kept, the satellite's entry is added (the
     // file is read and replaced on purpose, not refused as an input overwritten).
     void updatesAnExistingPresetsFile() {

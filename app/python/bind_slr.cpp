@@ -383,11 +383,16 @@ void bindPassResult(py::module_& m) {
 
 // tune: laserwb-cli slr tune's task (core tuneSlr, writeTunedPreset), its record as a dict.
 py::dict tunePasses(const py::object& files, const py::object& satellite, const py::object& preset, const py::object& presetOut,
-                    const py::object& threads) {
+                    const py::object& threads, const py::object& sessions) {
     slr::TuneSources src;
-    if (py::isinstance<py::str>(files) || py::hasattr(files, "__fspath__")) src.files.push_back(inputPath(files));
-    else
-        for (const py::handle f : files) src.files.push_back(inputPath(py::reinterpret_borrow<py::object>(f)));
+    auto paths = [](const py::object& o, std::vector<std::string>* out) {
+        if (o.is_none()) return;
+        if (py::isinstance<py::str>(o) || py::hasattr(o, "__fspath__")) out->push_back(inputPath(o));
+        else
+            for (const py::handle f : o) out->push_back(inputPath(py::reinterpret_borrow<py::object>(f)));
+    };
+    paths(files, &src.files);
+    paths(sessions, &src.sessions);
     if (!satellite.is_none()) src.satellite = std::string(py::str(satellite));
     if (!preset.is_none()) src.presets = inputPath(preset);
     src.threads = threadCount(threads);
@@ -436,10 +441,11 @@ void bindRuns(py::module_& m) {
           "--out-dir OUT_DIR, byte for byte (passNNN.csv/.frd/.npt, normal_points.npt, summary.csv,\n"
           "provenance.json). Returns one dict per block with summary.csv's columns (text).");
     m.def("tune", &tunePasses, py::arg("files"), py::arg("satellite") = py::none(), py::arg("preset") = py::none(),
-          py::arg("preset_out") = py::none(), py::arg("threads") = py::none(),
+          py::arg("preset_out") = py::none(), py::arg("threads") = py::none(), py::arg("sessions") = py::none(),
           "A satellite's parameters from the station's own filter flags, as laserwb-cli slr tune: every pass\n"
           "of the CRD files (one path or a list; an O-C table with a station_flag column, as slr -o writes it,\n"
-          "with satellite=) screened with each candidate, the best mean F1 against the\n"
+          "with satellite=; sessions: workbench sessions whose pass is labelled by the analyst's edits, as\n"
+          "--session) screened with each candidate, the best mean F1 against the\n"
           "flags chosen (another than the starting point only for a gain beyond 0.001 that loses on no pass\n"
           "more than 0.002), leave-one-pass-out. preset: start from the satellite's entry of this presets\n"
           "file; preset_out: write the entry there (its other entries kept) with its provenance, the CLI's\n"

@@ -6,6 +6,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/provenance.hpp"
 #include "core/common/text.hpp"
+#include "core/slr/pass_run.hpp"
 #include "core/slr/presets.hpp"
 
 namespace lwb::core::slr {
@@ -49,7 +50,8 @@ TuneResult failed(std::string message, bool usage) {
 }  // namespace
 
 TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
-    if (sources.files.empty()) return failed("no passes to tune on: give one or more CRD files with the station's filter flags", true);
+    if (sources.files.empty() && sources.sessions.empty())
+        return failed("no passes to tune on: give one or more CRD files with the station's filter flags, or sessions", true);
     std::vector<SatellitePreset> entries;
     if (!sources.presets.empty()) {
         const PresetsResult pr = loadPresets(sources.presets);
@@ -127,6 +129,74 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
             if (!o.ok) return failed(o.error.message, o.error.usage);
             if (!take(name, setup, o)) return out;
         }
+    }
+    // The workbench sessions: the analyst's decisions on their passes.
+    for (const std::string& session : sources.sessions) {
+        const JsonParseResult doc = readJsonFile(session);
+        if (!doc.ok) return failed(doc.error, false);
+        const Json& root = doc.value;
+        if (!root.is_object() || root.value("format", "") != "laserwb-session")
+            return failed(session + ": not a Laser Workbench session (no \"format\": \"laserwb-session\")", false);
+        const Json slr = root.value("slr", Json::object());
+        const std::string path = slr.is_object() ? slr.value("path", "") : "";
+        if (path.empty()) return failed(session + ": the session has no SLR pass from a file (slr.path)", false);
+        // The session's parameters: the schema's sections it saved.
+        Json params = Json::object();
+        for (const auto& f : slrSchema().fields()) {
+            const std::string section = f.key.substr(0, f.key.find('.'));
+            if (slr.contains(section)) params[section] = slr[section];
+        }
+        SlrSources labelled;
+        labelled.input = path;
+        labelled.passNumber = slr.value("pass", -1) + 1;
+        labelled.cpf = slr.value("cpf", "");
+        labelled.stations = slr.value("sinex", "");
+        labelled.cpfFallback = true;
+        labelled.config = params;
+        labelled.searchThreads = sources.threads;
+        const LoadedSlrPass l = loadSlrPass(labelled);
+        if (!l.ok) return failed(session + ": " + l.error.message, l.error.usage);
+        const PassData& d = *l.opened.pass;
+        std::vector<int8_t> forced(d.t.size(), 0);
+        size_t edits = 0;
+        for (const Json& e : slr.value("forced", Json::array())) {
+            const long long i = e.is_array() && e.size() == 2 && e[0].is_number_integer() ? e[0].get<long long>() : -1;
+            if (i < 0 || static_cast<size_t>(i) >= forced.size() || !e[1].is_number_integer())
+                return failed(session + ": slr.forced: " + e.dump() + " is not a point of the pass ([index, +1 or -1], " +
+                                  std::to_string(forced.size()) + " points)",
+                              false);
+            forced[static_cast<size_t>(i)] = e[1].get<int>() > 0 ? 1 : -1;
+            ++edits;
+        }
+        const std::string name = session + ": " + passName(d);
+        if (edits == 0)
+            return failed(name + ": no labels to tune on: no point was forced in or out by hand (a session's labels are "
+                                 "the analyst's decisions: the screening with the edits made on it)",
+                          false);
+        if (!sources.satellite.empty() && !findPreset(wanted, d.satellite)) {
+            out.notes.push_back(name + ": left out: satellite " + d.satellite + ", not " + sources.satellite);
+            continue;
+        }
+        // The labels: the session's run with its edits, as the workbench delivered it.
+        const PassRunResult run = runTask<PassTask>({l.opened.pass, forced}, l.opened.settings.params);
+        if (!run.ok) return failed(name + ": " + run.error, false);
+        // The starting point of the tuning: the command's (defaults, the satellite's entry), on
+        // the same O-C (the session's prediction and station file).
+        SlrSources start = labelled;
+        start.config = Json();
+        start.set = sources.set;
+        start.presets = sources.presets;
+        auto setup = std::make_shared<SlrSetup>();
+        if (!setUpSlrRun(start, setup.get(), &out.error)) return out;
+        PassSettings settings;
+        if (!resolvePassParams(*setup, d, &settings, &out.error)) return out;
+        OpenTuned t{setup, l.opened.pass, settings, deliveredFlags(run)};
+        size_t data = 0;
+        for (uint8_t f : t.labels) data += f;
+        if (data == 0) return failed(name + ": no labels to tune on: the analyst's decisions keep no point", false);
+        out.notes.push_back(name + ": labels from the session (" + std::to_string(edits) + " point(s) forced by hand, " +
+                            std::to_string(data) + " kept of " + std::to_string(t.labels.size()) + ")");
+        open.push_back(std::move(t));
     }
     if (open.empty()) return failed("no pass to tune on in the files given" + (out.notes.empty() ? std::string() : ": " + out.notes.front()), true);
     // One satellite: its preset entry is what the tuning writes.
@@ -278,6 +348,7 @@ bool writeTunedPreset(const TuneResult& r, const TuneSources& sources, const std
     prov.parameters = slrSchema().toJson(chosen);
     prov.settings = tuneSummary(r);
     prov.inputs = sources.files;
+    prov.inputs.insert(prov.inputs.end(), sources.sessions.begin(), sources.sessions.end());
     prov.inputs.push_back(sources.presets);
     // The file and its provenance all or nothing; an existing presets file is read above and
     // replaced on purpose (update), every other input stays protected.

@@ -21,6 +21,10 @@ namespace lwb::core::slr {
 struct TuneSources {
     std::vector<std::string> files;  ///< CRD files: every pass to screen of each (isPassToScreen); O-C tables
                                      ///< with a station_flag column (the CLI's -o): one pass each, of `satellite`
+    /// Workbench sessions: the SLR pass of each with the analyst's decisions as labels — what the
+    /// session's run delivered (its own parameters, prediction and station file) with the points
+    /// forced in or out by hand. A session without edits has no decision of the analyst's.
+    std::vector<std::string> sessions;
     std::string satellite;           ///< only passes of this satellite (matched as presets match)
     std::string presets;             ///< an existing presets file: its entry is the starting point
     std::vector<ParamSetting> set;   ///< over the defaults (or the entry), as --set

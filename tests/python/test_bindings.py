@@ -229,6 +229,17 @@ def test_slr_tune_is_the_cli_tune(tmp_path):
         laserwb.slr.tune(str(blind))
     with pytest.raises(FileNotFoundError):
         laserwb.slr.tune([str(tmp_path / "missing.frd")])
+    # a workbench session's pass, labelled by the analyst's edits: the CLI's --session, byte for byte
+    session = tmp_path / "edits.lwbsession"
+    session.write_text(json.dumps({"format": "laserwb-session", "version": 1, "slr": {
+        "path": files[0], "pass": 0, "forced": [[0, -1], [100, -1], [200, 1]]}}))
+    cli("slr", "tune", "--session", session, "--preset-out", tmp_path / "cli_s.json", "-q")
+    r = laserwb.slr.tune([], sessions=[session], preset_out=tmp_path / "py_s.json")
+    same_bytes(tmp_path / "cli_s.json", tmp_path / "py_s.json")
+    assert any("labels from the session (3 point(s) forced by hand" in n for n in r["notes"])
+    session.write_text(json.dumps({"format": "laserwb-session", "version": 1, "slr": {"path": files[0], "pass": 0}}))
+    with pytest.raises(laserwb.Error, match="no point was forced"):
+        laserwb.slr.tune([], sessions=[session])
 
 
 def test_footprint_tune_is_the_cli_tune(tmp_path):
