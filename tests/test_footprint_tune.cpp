@@ -97,6 +97,28 @@ VerdictConfusion judgeOtherHalf(const LabelledSet& s, const std::string& config)
 
 double pct(int k, int n) { return n ? 100.0 * k / n : 0; }
 
+// 150 shots of synthetic ground, the scenes and cases in turn, fitted under the defaults.
+struct FittedShot {
+    sim::FootprintSimTruth truth;
+    cv::Mat roi;
+    FootprintResult result;
+};
+std::vector<FittedShot> fittedShots(uint64_t seed) {
+    sim::FootprintSimParams sp;
+    sp.ground = sim::GroundSource::Synthetic;
+    std::vector<FittedShot> out;
+    for (int i = 0; i < 150; ++i) {
+        sp.scene = kScenes[i % 4];
+        sp.spotCase = kCases[i % 15];
+        const sim::FootprintSimShot shot = sim::simulateFootprint(sp, seed + static_cast<uint64_t>(i));
+        FittedShot f{shot.truth, {}, {}};
+        shot.image.convertTo(f.roi, CV_32F);
+        f.result = processRoi(f.roi, FootprintParams{});
+        out.push_back(std::move(f));
+    }
+    return out;
+}
+
 }  // namespace
 
 class TestFootprintTune : public QObject {
@@ -160,17 +182,10 @@ private slots:
     // The verdict without reasons (the tuning's inner loop) is the verdict with them.
     void quickCheckIsTheFullCheck() {
         Rng rng(45);
-        sim::FootprintSimParams sp;
-        sp.ground = sim::GroundSource::Synthetic;
-        FootprintParams p;
         int checked = 0;
-        for (int i = 0; i < 150; ++i) {
-            sp.scene = kScenes[i % 4];
-            sp.spotCase = kCases[i % 15];
-            const sim::FootprintSimShot shot = sim::simulateFootprint(sp, 900 + static_cast<uint64_t>(i));
-            cv::Mat roi;
-            shot.image.convertTo(roi, CV_32F);
-            const FootprintResult r = processRoi(roi, p);
+        for (const FittedShot& f : fittedShots(900)) {
+            const cv::Mat& roi = f.roi;
+            const FootprintResult& r = f.result;
             for (int k = 0; k < 20; ++k) {
                 VerdictParams v;
                 v.axisRatio = {rng.uniform() < 0.8, rng.uniform(0.5, 1.1), rng.uniform(1.1, 2.0)};
@@ -195,22 +210,14 @@ private slots:
 
     // The strip beside a slider: the verdicts along a criterion's values, as judge gives them.
     void sweepFollowsTheVerdict() {
-        sim::FootprintSimParams sp;
-        sp.ground = sim::GroundSource::Synthetic;
-        FootprintParams p;
+        const FootprintParams p;
         std::vector<VerdictMeasures> shots;
         std::vector<int> labels;
         int goodNow = 0;
-        for (int i = 0; i < 150; ++i) {
-            sp.scene = kScenes[i % 4];
-            sp.spotCase = kCases[i % 15];
-            const sim::FootprintSimShot shot = sim::simulateFootprint(sp, 700 + static_cast<uint64_t>(i));
-            cv::Mat roi;
-            shot.image.convertTo(roi, CV_32F);
-            const FootprintResult r = processRoi(roi, p);
-            shots.push_back(measureResult(r, roi.cols, roi.rows));
-            goodNow += r.verdict == Verdict::Good;
-            labels.push_back(i % 3 == 0 ? -1 : int(analystVerdict(shot.truth)));
+        for (const FittedShot& f : fittedShots(700)) {
+            shots.push_back(measureResult(f.result, f.roi.cols, f.roi.rows));
+            goodNow += f.result.verdict == Verdict::Good;
+            labels.push_back(shots.size() % 3 == 1 ? -1 : int(analystVerdict(f.truth)));
         }
         const std::vector<double> values = {1e-7, 1e-6, p.verdict.mseMax, 1e-4, 1e-3};
         const CriterionSweep s = sweepCriterion(shots, labels, p, "verdict.mse_max", "", values);

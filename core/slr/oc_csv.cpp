@@ -190,27 +190,21 @@ std::string readHeader(std::string_view line, const OcCsvParams& params, Columns
         }
     }
     if (cEpoch < 0 || cOc < 0) return "header must name the columns epoch_s and oc_s (found \"" + excerpt(line, 60) + "\")";
-    for (const auto& want : params.extraColumns) {
+    // The extra columns asked for (they must be there), then the optional ones (where they are).
+    const size_t required = params.extraColumns.size();
+    std::vector<std::string> wanted = params.extraColumns;
+    wanted.insert(wanted.end(), params.optionalColumns.begin(), params.optionalColumns.end());
+    for (size_t w = 0; w < wanted.size(); ++w) {
         int found = -1;
         for (size_t i = 0; i < fields.size(); ++i)
-            if (lower(fields[i]) == toLower(want)) {
-                if (found >= 0) return "column " + want + " appears twice";
+            if (lower(fields[i]) == toLower(wanted[w])) {
+                if (found >= 0) return "column " + wanted[w] + " appears twice";
                 found = static_cast<int>(i);
             }
-        if (found < 0) return "header has no column \"" + want + "\"";
-        cols->extra.push_back(static_cast<size_t>(found));
-        names->push_back(want);
-    }
-    for (const auto& maybe : params.optionalColumns) {
-        int found = -1;
-        for (size_t i = 0; i < fields.size(); ++i)
-            if (lower(fields[i]) == toLower(maybe)) {
-                if (found >= 0) return "column " + maybe + " appears twice";
-                found = static_cast<int>(i);
-            }
+        if (found < 0 && w < required) return "header has no column \"" + wanted[w] + "\"";
         if (found < 0) continue;
         cols->extra.push_back(static_cast<size_t>(found));
-        names->push_back(maybe);
+        names->push_back(wanted[w]);
     }
     cols->count = fields.size();
     cols->epoch = static_cast<size_t>(cEpoch);
