@@ -270,12 +270,15 @@ void declareSourceOptions(Args& a, const FootprintOptions& params) {
     a.option("--center", true, true);
 }
 
-// The sources as given (the core resolves them: core/footprint/footprint_run.hpp). False with
-// *err (a usage error).
-bool gatherSources(const Args& a, const FootprintOptions& params, FootprintSources* src, std::string* err) {
+// The sources as given (the core resolves them: core/footprint/footprint_run.hpp), in two
+// parts: the parameters (config, preset, settings), then the frames and how they are read.
+// False with *err (a usage error).
+bool gatherParams(const Args& a, const FootprintOptions& params, FootprintSources* src, std::string* err) {
     src->configFile = a.value("--config");
     src->preset = a.value("--preset");
-    if (!params.settings(a, &src->set, err)) return false;
+    return params.settings(a, &src->set, err);
+}
+bool gatherFrames(const Args& a, FootprintSources* src, std::string* err) {
     for (const auto& c : a.values("--center")) {
         double x = 0, y = 0;
         if (!parsePoint(c, &x, &y)) {
@@ -324,7 +327,7 @@ int cmdFootprint(int argc, char** argv) {
     }
     FootprintSources src;
     std::string err;
-    if (!gatherSources(a, params, &src, &err)) return fail("footprint", err, kUsage);
+    if (!gatherParams(a, params, &src, &err)) return fail("footprint", err, kUsage);
     if (params.printRequested(a)) {
         FootprintParams p;
         FootprintError fe;
@@ -336,6 +339,7 @@ int cmdFootprint(int argc, char** argv) {
     const int loaded = loadBatchOptions("footprint", a, &bo);
     RunSummary summary("footprint", bo);
     if (loaded) return summary.finish(loaded);
+    if (!gatherFrames(a, &src, &err)) return summary.finish(fail("footprint", err, kUsage));
     src.inputs.insert(src.inputs.end(), bo.listed.begin(), bo.listed.end());
     src.keepGoing = a.has("--keep-going");
     // The parameters' errors first (the shots are gathered once the options are known good).
@@ -355,12 +359,13 @@ const std::string kTuneUsage =
     "ranges, mse_max, max_uncertainty_px, edge_extent, saturation_max_pixels, second_spot_fraction;\n"
     "those switched on), one at a time, for the fewest disagreements between good and not good. No\n"
     "move lets more shots the analyst did not call good through as good than the starting point did,\n"
-    "and a threshold moves only for a gain, to the middle of the values that give it. Cross-validation\n"
+    "and a threshold moves only for a gain, a quarter into the values that give it. Cross-validation\n"
     "(the shots in folds by name; each fold judged by criteria tuned on the others) says how the\n"
     "choice holds on shots it was not tuned on. Prints the confusion table before, after and held out.\n"
     "VERDICTS.csv: 'file' and 'verdict' columns (good, doubtful, rejected; empty or unreadable rows\n"
-    "are left out), and 'roi' for frames of several ROIs: the workbench's review export and a\n"
-    "`footprint` report have them. A row is matched to a shot by the frame's path (relative to the\n"
+    "are left out), and 'roi' for frames of several ROIs: the workbench's review export (only its rows\n"
+    "with a manual verdict, marked in its override column) and a `footprint` report have them. A row\n"
+    "is matched to a shot by the frame's path (relative to the\n"
     "table's folder, else to the working folder), else by its file name where one frame alone has it.\n"
     "  --verdicts FILE.csv       the analyst's verdicts (required)\n"
     "  --config-out FILE.json    the tuned parameters, a config for `footprint --config` (required);\n"
@@ -389,7 +394,7 @@ int cmdFootprintTune(int argc, char** argv) {
     const bool quiet = a.has("-q") || a.has("--quiet");
     FootprintTuneSources src;
     std::string err;
-    if (!gatherSources(a, params, &src.run, &err)) return fail(cmd, err, kUsage);
+    if (!gatherParams(a, params, &src.run, &err) || !gatherFrames(a, &src.run, &err)) return fail(cmd, err, kUsage);
     src.verdicts = a.value("--verdicts");
     const std::string out = a.value("--config-out");
     long long folds = 5;

@@ -174,6 +174,10 @@ private slots:
         QCOMPARE(passes.at(0).toObject().value("labelled_data").toInt(), c.value("labelled_data").toInt());
         QCOMPARE(passes.at(0).toObject().value("points").toInt(), c.value("points").toInt());
         QVERIFY(t.value("f1_after").toDouble() >= t.value("f1_before").toDouble());
+        // Again from the entry just written: the table's satellite is --satellite's.
+        r = runCli({"slr", "tune", "-q", table, "--satellite", "simsat-leo", "--preset", preset, "--preset-out",
+                    m_dir.path() + "/fromcsv2.json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QByteArray text = lwbtest::readAll(table);
         const int row = text.indexOf('\n', text.indexOf('\n') + 1);  // the end of the first data row
         text[row - 1] = '7';  // (station_flag is the last column)

@@ -127,7 +127,7 @@ bool expandShots(const std::vector<std::string>& inputs, std::vector<ShotSpec>* 
 void FrameIndex::add(const std::string& file, size_t row) {
     const std::string path = absolute(file);
     std::vector<size_t>& rows = m_byPath[path];
-    if (rows.empty()) m_pathsByName[nameOf(path)].push_back(path);
+    if (rows.empty()) m_pathsByName[nameOf(file)].push_back(path);  // (the name as written, as a shot's is looked up)
     rows.push_back(row);
 }
 

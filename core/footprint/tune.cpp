@@ -332,6 +332,7 @@ VerdictTuneResult tuneVerdict(const std::vector<LabelledShot>& shots, const Foot
     }
     std::vector<const LabelledShot*> all;
     for (const LabelledShot& s : shots) all.push_back(&s);
+    if (fb) fb->setProgress(0);
     r.after = search(all, start, fb);
     for (const LabelledShot& s : shots) {
         r.confusionBefore.add(s.label, checkVerdict(s.measures, start.verdict));
@@ -424,6 +425,10 @@ bool readVerdicts(const std::string& path, std::vector<VerdictRow>* rows, std::v
     }
     const CsvTable& t = csv.table;
     const int cf = t.column("file"), cv = t.column("verdict"), cr = t.column("roi");
+    // The workbench's review export: `verdict` is the one shown (the computed one where the
+    // analyst set none); only the rows its `override` column marks manual are the analyst's.
+    const int co = t.column("override");
+    size_t computed = 0;
     if (cf < 0 || cv < 0) {
         *error = {path + ":1: a verdicts table needs 'file' and 'verdict' columns (the workbench's review export, a "
                          "footprint report)",
@@ -433,6 +438,10 @@ bool readVerdicts(const std::string& path, std::vector<VerdictRow>* rows, std::v
     size_t skipped = 0;
     for (size_t i = 0; i < t.rows.size(); ++i) {
         const std::vector<std::string>& row = t.rows[i];
+        if (co >= 0 && trim(row[static_cast<size_t>(co)]).empty()) {
+            ++computed;
+            continue;
+        }
         VerdictRow v;
         v.line = t.lines[i];
         const std::string text(trim(row[static_cast<size_t>(cv)]));
@@ -465,6 +474,9 @@ bool readVerdicts(const std::string& path, std::vector<VerdictRow>* rows, std::v
         rows->push_back(v);
     }
     if (skipped) notes->push_back(std::to_string(skipped) + " row(s) of " + path + " without a verdict (empty or unreadable) left out");
+    if (computed)
+        notes->push_back(std::to_string(computed) + " row(s) of " + path +
+                         " with the computed verdict only (no manual one in its override column) left out");
     return true;
 }
 
@@ -508,9 +520,18 @@ FootprintTuneResult tuneFootprint(const FootprintTuneSources& src, Feedback* fb)
     r.unreadable = batch.readErrors;
     std::vector<LabelledShot> labelled;
     std::vector<bool> used(rows.size(), false);
+    // A row found by a file name alone labels a frame only when no other input frame has that name.
+    std::map<std::string, int> inputsNamed;
+    for (const BatchItem& item : batch.items) ++inputsNamed[item.file.substr(item.file.find_last_of('/') + 1)];
+    size_t ambiguous = 0;
     for (const BatchItem& item : batch.items) {
         r.rois += item.rois.size();
         if (!item.readError.empty()) continue;
+        const bool byPath = !index.atPath(item.file).empty();
+        if (!byPath && inputsNamed[item.file.substr(item.file.find_last_of('/') + 1)] > 1 && !index.rowsOf(item.file).empty()) {
+            ++ambiguous;
+            continue;
+        }
         const std::vector<size_t>& mine = index.rowsOf(item.file);
         for (size_t k = 0; k < item.rois.size(); ++k) {
             const VerdictRow* row = nullptr;
@@ -540,13 +561,17 @@ FootprintTuneResult tuneFootprint(const FootprintTuneSources& src, Feedback* fb)
     if (r.rois > r.labelled)
         r.notes.push_back(std::to_string(r.rois - r.labelled) + " ROI(s) of the inputs have no verdict (not tuned on)");
     if (r.unreadable) r.notes.push_back(std::to_string(r.unreadable) + " frame(s) could not be read (left out)");
+    if (ambiguous)
+        r.notes.push_back(std::to_string(ambiguous) + " frame(s) share a file name with another input and have no row by "
+                          "their path: not labelled (a row by name alone would label them all)");
     if (labelled.empty()) {
         r.error = {"no shot of the inputs has a verdict in " + src.verdicts +
                        " (rows are matched by the frame's path, else by its file name)",
                    true};
         return r;
     }
-    Feedback tuneFb([&](double f) {
+    Feedback tuneFb([&](double f) {  // (the caller's Cancel reaches the tuning at its next step)
+        if (cancelled(fb)) tuneFb.cancel();
         if (fb) fb->setProgress(0.8 + 0.2 * f);
     });
     r.tuning = runTask<VerdictTuneTask>({std::move(labelled), src.folds}, setup.params.footprint, &tuneFb);

@@ -6,8 +6,8 @@
 // uncertainty limits, the edge extent, the saturated-pixel allowance, the second-spot fraction;
 // only criteria the starting point has switched on) to where it leaves the fewest disagreements
 // between good and not good, never letting more shots the analyst did not call good through as
-// good than the starting point did; a threshold moves only for a gain and then to the middle of
-// the range of values that gives it (the widest margin on both sides). Cross-validation (shots
+// good than the starting point did; a threshold moves only for a gain, and then a quarter of the
+// way from the values it lets through towards those it holds back (tune.cpp, kGoodSide). Cross-validation (shots
 // parted into folds by their names, each fold judged by criteria tuned on the others) says how
 // the choice holds on shots it was not tuned on. The segmentation and the fit are not tuned:
 // they would need every shot fitted again per candidate.

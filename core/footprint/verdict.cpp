@@ -92,7 +92,9 @@ VerdictMeasures measureVerdict(const SpotFit& fit, const SpotDomain& domain, int
     const double hx = std::hypot(ax * c, ay * s), hy = std::hypot(ax * s, ay * c);
     const double rooms[4] = {room(fit.x + 0.5, hx), room(roiWidth - 0.5 - fit.x, hx), room(fit.y + 0.5, hy),
                              room(roiHeight - 0.5 - fit.y, hy)};
-    for (double r : rooms) m.edgeRoom = std::isnan(r) || std::isnan(m.edgeRoom) ? NAN : std::min(m.edgeRoom, r);
+    // (an axis without a number is not checked, as a comparison with NaN never failed)
+    for (double r : rooms)
+        if (!std::isnan(r)) m.edgeRoom = std::min(m.edgeRoom, r);
     m.saturatedPixels = domain.saturatedPixels;
     m.faint = domain.faint;
     m.peakSnr = domain.peakSnr;

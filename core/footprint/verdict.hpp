@@ -60,7 +60,8 @@ struct VerdictMeasures {
     std::string refusal;        ///< not empty: no spot, or the fit failed (rejected, this reason)
     double axisRatio = NAN, majorAxisPx = NAN, tiltDeg = NAN, eccentricity = NAN, mse = NAN, uncertaintyPx = NAN;
     /// The largest edge_extent at which the spot's ellipse stays inside the ROI (pixel edges at
-    /// −0.5 and size − 0.5); negative when the centre is outside; NaN when the fit gives no centre.
+    /// −0.5 and size − 0.5); negative when the centre is outside; an axis without a number (a
+    /// NaN centre or size) is left out, infinity when neither has one.
     double edgeRoom = INFINITY;
     int saturatedPixels = 0;
     bool faint = false;         ///< found by the ring look only: doubtful whatever the criteria

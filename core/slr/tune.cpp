@@ -72,6 +72,8 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
         std::shared_ptr<SlrSetup> withEntry;
         if (!entries.empty()) {
             src.presets = sources.presets;
+            // (an O-C table names no satellite: its entry is --satellite's)
+            if (!isCrdFile(file)) src.satellite = sources.satellite;
             withEntry = std::make_shared<SlrSetup>();
             if (!setUpSlrRun(src, withEntry.get(), &out.error)) return out;
         }
@@ -83,8 +85,8 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
             if (data == 0) {
                 out = failed(name + ": no labels to tune on: " +
                                  (d.stationFlag.empty() && !isCrdFile(file)
-                                      ? std::string("the O-C table has no station_flag column (laserwb-cli slr -o writes "
-                                                    "one from a CRD pass's filter flags)")
+                                      ? std::string("the O-C table has no station_flag column, or only 0 or blank in it "
+                                                    "(laserwb-cli slr -o writes one from a CRD pass's filter flags)")
                                   : noise == 0 ? std::string("every filter flag is 0 (unknown)")
                                                : "no point is flagged data (2), " + std::to_string(noise) + " noise (1)") +
                                  "; tuning learns from the station's own decisions (2 data, 1 noise)",
@@ -131,7 +133,7 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
         }
     }
     // The workbench sessions: the analyst's decisions on their passes.
-    for (const std::string& session : sources.sessions) {
+    for (const std::string& session : sources.sessions) try {
         const JsonParseResult doc = readJsonFile(session);
         if (!doc.ok) return failed(doc.error, false);
         const Json& root = doc.value;
@@ -169,14 +171,14 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
             ++edits;
         }
         const std::string name = session + ": " + passName(d);
-        if (edits == 0)
-            return failed(name + ": no labels to tune on: no point was forced in or out by hand (a session's labels are "
-                                 "the analyst's decisions: the screening with the edits made on it)",
-                          false);
         if (!sources.satellite.empty() && !findPreset(wanted, d.satellite)) {
             out.notes.push_back(name + ": left out: satellite " + d.satellite + ", not " + sources.satellite);
             continue;
         }
+        if (edits == 0)
+            return failed(name + ": no labels to tune on: no point was forced in or out by hand (a session's labels are "
+                                 "the analyst's decisions: the screening with the edits made on it)",
+                          false);
         // The labels: the session's run with its edits, as the workbench delivered it.
         const PassRunResult run = runTask<PassTask>({l.opened.pass, forced}, l.opened.settings.params);
         if (!run.ok) return failed(name + ": " + run.error, false);
@@ -185,7 +187,7 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
         SlrSources start = labelled;
         start.config = Json();
         start.set = sources.set;
-        start.presets = sources.presets;
+        if (findPreset(entries, d.satellite, d.ilrsId)) start.presets = sources.presets;
         auto setup = std::make_shared<SlrSetup>();
         if (!setUpSlrRun(start, setup.get(), &out.error)) return out;
         PassSettings settings;
@@ -197,6 +199,8 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
         out.notes.push_back(name + ": labels from the session (" + std::to_string(edits) + " point(s) forced by hand, " +
                             std::to_string(data) + " kept of " + std::to_string(t.labels.size()) + ")");
         open.push_back(std::move(t));
+    } catch (const Json::exception& e) {  // a value of the wrong type (a pass number as text, say)
+        return failed(session + ": slr: a value of the wrong type (" + e.what() + ")", false);
     }
     if (open.empty()) return failed("no pass to tune on in the files given" + (out.notes.empty() ? std::string() : ": " + out.notes.front()), true);
     // One satellite: its preset entry is what the tuning writes.

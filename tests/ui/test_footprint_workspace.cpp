@@ -255,9 +255,6 @@ private slots:
         QVERIFY(w.isModified());
     }
 
-    // Issue 45: "Suggest thresholds…" tunes the verdict criteria on the shots with a manual
-    // verdict (the core's VerdictTuneTask in the background), shows before / suggested / held
-    // out, and applies them only on Apply, as one undoable step.
     // Issue 45: the strips beside the verdict sliders, computed in the background after a
     // rejudge or a verdict edit: nothing changes at the slider's own value, the orange line once
     // shots have a manual verdict, none on a criterion switched off.
@@ -303,6 +300,9 @@ private slots:
         QCOMPARE(mse->stripArea().size(), size_t(48));
     }
 
+    // Issue 45: "Suggest thresholds…" tunes the verdict criteria on the shots with a manual
+    // verdict (the core's VerdictTuneTask in the background), shows before / suggested / held
+    // out, and applies them only on Apply, as one undoable step.
     void suggestedThresholdsApplyAsOneUndoableStep() {
         const QString dir = m_dir.path() + "/tune";
         const lwbtest::CliRun sim = lwbtest::runCli({"simulate", "footprint", "--count", "240", "--seed", "5", "--case",
@@ -347,7 +347,7 @@ private slots:
         QVERIFY(text);
         QVERIFY2(text->text().contains("240") && text->text().contains("Held out"), qPrintable(text->text()));
         QVERIFY2(text->text().contains("verdict."), qPrintable(text->text()));  // a criterion moved
-        // Close: nothing changes.
+        // Nothing changes before Apply.
         QCOMPARE(c->params().verdict.mseMax, start.verdict.mseMax);
         auto* apply = ws->suggestionDialog()->findChild<QPushButton*>("applySuggestion");
         QVERIFY(apply && apply->isEnabled());

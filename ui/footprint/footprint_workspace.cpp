@@ -175,6 +175,7 @@ FootprintWorkspace::FootprintWorkspace(QWidget* parent) : Workspace(parent) {
     connect(m_tuneJob, &LiveJob::progress, this,
             [this](double f) { emit progress(int(f * 1000), 1000, tr("Suggesting thresholds %p%")); });
     connect(m_tuneJob, &LiveJob::idle, this, [this] { emit progress(0, 0, QString()); });
+    connect(m_tuneJob, &LiveJob::failed, this, [this](const QString& why) { emit failed(tr("No threshold suggestion"), why); });
     // The strips beside the verdict sliders: again after every rejudge and verdict edit (300 ms
     // after the last).
     m_stripTimer = new QTimer(this);
@@ -1237,6 +1238,13 @@ void FootprintWorkspace::showSuggestion(const core::footprint::VerdictTuneResult
                         .arg(QString::fromStdString(r.error)));
         return;
     }
+    // The shots' fits were made under r.before: a change of the fit since (a slider moved while
+    // the task ran) makes the suggestion stale.
+    if (!onlyVerdictDiffers(r.before, m_controller->params())) {
+        emit failed(tr("No threshold suggestion"),
+                    tr("The fit's parameters changed while the suggestion was made: suggest again."));
+        return;
+    }
     delete m_suggestion;
     m_suggestion = new QDialog(this);
     m_suggestion->setObjectName("thresholdSuggestion");
@@ -1285,10 +1293,13 @@ void FootprintWorkspace::showSuggestion(const core::footprint::VerdictTuneResult
     apply->setToolTip(tr("Sets the suggested criteria in the parameters (one step: Edit > Undo takes it back)"));
     buttons->addButton(QDialogButtonBox::Close);
     lay->addWidget(buttons);
-    const FootprintParams after = r.after;
-    connect(buttons, &QDialogButtonBox::accepted, m_suggestion, [this, after] {
-        m_panel->setParams(after);
-        changeParams(after, tr("verdict thresholds to the suggested ones"));
+    const VerdictParams suggested = r.after.verdict;
+    connect(buttons, &QDialogButtonBox::accepted, m_suggestion, [this, suggested] {
+        // The verdict criteria alone, over the parameters of now (the rest stays as it is).
+        FootprintParams p = m_controller->params();
+        p.verdict = suggested;
+        m_panel->setParams(p);
+        changeParams(p, tr("verdict thresholds to the suggested ones"));
         m_suggestion->accept();
     });
     connect(buttons, &QDialogButtonBox::rejected, m_suggestion, &QDialog::reject);

@@ -120,7 +120,9 @@ public:
     /// "Suggest thresholds from my verdicts": the verdict criteria tuned (core VerdictTuneTask, in
     /// the background with the window's progress and Cancel) on the shots that have a manual
     /// verdict; the outcome in a dialog, applied (one undoable step) only when the analyst
-    /// accepts. False when there is nothing to tune on (said in a message box).
+    /// accepts (the verdict criteria alone, over the parameters of then). False when the shots are
+    /// still being processed (said through failed()); too few manual verdicts are said when the
+    /// task ends.
     bool suggestThresholds();
     /// The strips beside the verdict sliders (issue 45): for each verdict threshold switched on,
     /// the shots whose verdict would change (filled) and, where shots have a manual verdict,

@@ -1866,6 +1866,10 @@ The criteria are tuned on the shots you gave a manual verdict (Accept A, Reject 
         <source>; orange: disagreements with your %1 manual verdicts (%2 to %3, fewest at %4)</source>
         <translation>；橙线：与您的 %1 个人工判定不一致的数目（%2 至 %3，在 %4 处最少）</translation>
     </message>
+    <message>
+        <source>The fit&apos;s parameters changed while the suggestion was made: suggest again.</source>
+        <translation>计算建议期间拟合参数已改变：请重新建议。</translation>
+    </message>
 </context>
 <context>
     <name>lwb::ui::HistogramView</name>
