@@ -187,7 +187,7 @@ Move bestMove(const Knob& k, const std::vector<const LabelledShot*>& shots, cons
     FootprintParams open = p;
     openKnob(k, &open);
     // The shots that pass every other criterion decide; the others keep their counts.
-    int fixedFalseDoubts = 0, alwaysGood = 0, alwaysBad = 0;
+    int fixedFalseDoubts = 0, alwaysBad = 0;
     std::vector<std::pair<double, bool>> vals;  // (measure, analyst good) of the deciding shots
     for (const LabelledShot* l : shots) {
         const bool labelGood = l->label == Verdict::Good;
@@ -196,8 +196,8 @@ Move bestMove(const Knob& k, const std::vector<const LabelledShot*>& shots, cons
             continue;
         }
         const double v = k.measure(l->measures);
-        if (std::isnan(v)) {  // a criterion without its value is skipped: passes
-            (labelGood ? alwaysGood : alwaysBad)++;
+        if (std::isnan(v)) {  // a criterion without its value is skipped: passes, whatever the threshold
+            alwaysBad += !labelGood;
             continue;
         }
         vals.emplace_back(k.upper ? v : -v, labelGood);  // as an upper threshold
