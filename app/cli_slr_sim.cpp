@@ -70,7 +70,7 @@ bool writePassCsv(const std::string& path, const sim::SlrSimPass& pass, bool ful
 }
 
 const char* kSimUsage =
-    "usage: laserwb-cli simulate slr [--kind khz|conventional|diffuse|leo|daylight] [--points N]\n"
+    "usage: laserwb-cli simulate slr [--kind khz|conventional|diffuse|leo|daylight|dayspad] [--points N]\n"
     "                                [--duration S] [--signal-fraction F] [--day|--night] [--drift NS_PER_S]\n"
     "                                [--curvature NS_PER_S2] [--gaps LIST] --seed S OUT.csv|OUT.frd\n"
     "Simulates one SLR pass with exact truth: O-C = b + (2/c)·rho'(t)·tau (range bias b, time bias tau,\n"
@@ -84,9 +84,13 @@ const char* kSimUsage =
     "  --kind K              khz (2 kHz single-photon, LEO; default), conventional (10 Hz, LAGEOS),\n"
     "                        diffuse (20 Hz debris ranging), leo (10 Hz multi-photon, Jason-class\n"
     "                        satellite, low pass, noisy station), daylight (20 Hz, 3 % returns,\n"
-    "                        150 ps, 400 ns gate: low-SNR ranging to a LEO satellite; use --day)\n"
+    "                        150 ps, 400 ns gate: low-SNR ranging to a LEO satellite; use --day),\n"
+    "                        dayspad (the same class of another make: returns fading with range,\n"
+    "                        a sky brightening 3x over the pass, noise 4x denser at the gate's\n"
+    "                        start, a 40 ps tail, a 2 ms time bias; 800 km; use --day)\n"
     "  --points N            exactly N points in the pass (the return probability follows)\n"
-    "  --duration S          pass length in seconds (default: the kind's, 600 / 2400 / 300 / 600 / 900)\n"
+    "  --duration S          pass length in seconds (default: the kind's, 600 / 2400 / 300 / 600 /\n"
+    "                        900 / 600)\n"
     "  --signal-fraction F   signal / all points, 0.001..1 (default: from the day or night noise rate)\n"
     "  --day, --night        noise rate of a day or night pass (default night)\n"
     "  --drift D             extra O-C drift of D ns per s about the pass middle (a steep track)\n"
@@ -113,7 +117,7 @@ int cmdSimulateSlr(int argc, char** argv) {
     }
     sim::SlrKind kind = sim::SlrKind::Khz;
     if (a.has("--kind") && !sim::parseSlrKind(a.value("--kind"), &kind))
-        return fail(cmd, "--kind must be khz, conventional, diffuse, leo or daylight, not \"" + a.value("--kind") + "\"", kUsage);
+        return fail(cmd, "--kind must be " + sim::slrKindList() + ", not \"" + a.value("--kind") + "\"", kUsage);
     sim::SlrSimParams p = sim::slrSimPreset(kind);
     std::string err;
     long long points = 0, seed = 0;
@@ -505,7 +509,7 @@ int cmdBenchSlr(int argc, char** argv) {
     double fraction = 0.1;
     sim::SlrKind kind = sim::SlrKind::Khz;
     if (a.has("--kind") && !sim::parseSlrKind(a.value("--kind"), &kind))
-        return fail(cmd, "--kind must be khz, conventional, diffuse, leo or daylight", kUsage);
+        return fail(cmd, "--kind must be " + sim::slrKindList(), kUsage);
     if (!a.getInt("--points", 1000, 20000000, &points, &err) || !a.getInt("--seed", 0, 1LL << 62, &seed, &err) ||
         !a.getDouble("--signal-fraction", 0.001, 1, &fraction, &err))
         return fail(cmd, err, kUsage);

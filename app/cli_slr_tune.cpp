@@ -31,6 +31,8 @@ const char* kTuneUsage =
     "written as the satellite's entry of FILE.json (the workbench's presets format: other entries kept),\n"
     "with FILE.json.provenance.json (the passes, their labels, F1 before, after and held out).\n"
     "A pass without labels (every flag 0, or none flagged data) is refused with the reason.\n"
+    "PASS may be a folder (a station's archive): its CRD files are read, and a file that does not read or\n"
+    "a pass without labels there is left out with its reason (a note) instead of refused.\n"
     "  --preset-out FILE.json  the presets file to write the entry into (required)\n"
     "  --session FILE.json     a workbench session (repeatable): its SLR pass, labelled with the analyst's\n"
     "                          decisions (the session's run with the points forced in or out by hand)\n"

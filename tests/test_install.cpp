@@ -212,7 +212,7 @@ private slots:
         const QList<QPair<QString, QString>> choices{{"slr x.frd --connectivity ''", "4 8"},
                                                       {"footprint --preset ''", "wu2021 yao2021"},
                                                       {"footprint --method t", "tefm"},
-                                                      {"simulate slr --kind d", "diffuse daylight"}};
+                                                      {"simulate slr --kind d", "diffuse daylight dayspad"}};
         for (const auto& [words, want] : choices) {
             r = run("bash", {"-c", "source '" + m_prefix + "/share/bash-completion/completions/laserwb-cli'; "
                              "COMP_WORDS=(laserwb-cli " + words + "); COMP_CWORD=$((${#COMP_WORDS[@]} - 1)); _laserwb_cli; "

@@ -916,6 +916,70 @@ private slots:
         QVERIFY(!sim::simulateSlrPass(sp, 1).ok);
     }
 
+    // The dayspad kind (issue 45): its three departures from a uniform pass are what it says,
+    // measured on a long pass of many points (tolerances 5 standard errors or more, stated).
+    void simulatorOfUnevenDaylight() {
+        sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Dayspad);
+        sp.daylight = true;
+        sp.noiseRateDayHz = 400;  // 240 000 noise points in the 600 s: a tight measure of their profile
+        sp.returnProbability = 0.2;
+        const sim::SlrSimPass a = sim::simulateSlrPass(sp, 5);
+        QVERIFY2(a.ok, a.error.c_str());
+        const sim::SlrSimPass b = sim::simulateSlrPass(sp, 5);
+        QVERIFY(a.ocS == b.ocS && a.epochS == b.epochS);
+        // The noise across the gate: density ∝ e^(−a·u), a = ln 4; the first quarter of the gate
+        // holds (1 − e^(−a/4)) / (1 − e^(−a)) = 0.390 of it, the last (e^(−3a/4) − e^(−a)) / (1 −
+        // e^(−a)) = 0.138 (uniform: 0.25 each). Over time: rate ∝ 1 + 2x, the last fifth of the
+        // pass holds (0.2 + 0.36) / 2 = 0.28 of the noise, the first 0.12.
+        long long noise = 0, firstQ = 0, lastQ = 0, early = 0, late = 0;
+        // Signal: return probability ∝ (ρ_TCA/ρ)², 0.2 on average over the shots.
+        long long sigMid = 0, sigEnd = 0;
+        const double t0 = sp.startSod, dur = a.durationS;
+        for (size_t i = 0; i < a.ocS.size(); ++i) {
+            const double x = (a.epochS[i] - t0) / dur;
+            if (!a.isSignal[i]) {
+                const double u = (a.ocS[i] - a.gateLoS) / a.gateS;
+                ++noise;
+                firstQ += u < 0.25, lastQ += u >= 0.75;
+                early += x < 0.2, late += x >= 0.8;
+            } else if (std::fabs(a.epochS[i] - a.tcaSod) < 30) {
+                ++sigMid;
+            } else if (a.epochS[i] - a.tcaSod > 0 && x >= 1 - 60 / dur) {
+                ++sigEnd;
+            }
+        }
+        QVERIFY(noise > 200000);
+        const double n = double(noise);
+        QVERIFY2(std::fabs(firstQ / n - 0.390) < 0.006 && std::fabs(lastQ / n - 0.138) < 0.006,
+                 qPrintable(QString("gate quarters %1 %2").arg(firstQ / n).arg(lastQ / n)));
+        QVERIFY2(std::fabs(early / n - 0.12) < 0.006 && std::fabs(late / n - 0.28) < 0.006,
+                 qPrintable(QString("pass fifths %1 %2").arg(early / n).arg(late / n)));
+        QCOMPARE(a.signalCount + a.noiseCount, (long long)a.ocS.size());
+        const double shots = dur * sp.fireRateHz;
+        QVERIFY2(std::fabs(double(a.signalCount) / shots - 0.2) < 0.01, qPrintable(QString::number(a.signalCount / shots)));
+        // The returns fade with range: per second, the last minute of the pass against the minute
+        // about closest approach, as (ρ_TCA/ρ)² says (the ratio of the two minutes' mean weights).
+        auto weight = [&](double t) {
+            const double d = sp.tcaDistanceKm, x = sp.velocityKmS * (t - a.tcaSod);
+            return d * d / (d * d + x * x);
+        };
+        double wMid = 0, wEnd = 0;
+        for (int k = 0; k < 600; ++k) {
+            wMid += weight(a.tcaSod - 30 + k * 0.1);
+            wEnd += weight(t0 + dur - 60 + k * 0.1);
+        }
+        const double expect = (wEnd / 60) / (wMid / 60), got = (sigEnd / 60.0) / (sigMid / 60.0);
+        QVERIFY2(std::fabs(got - expect) < 5 * expect * std::sqrt(1.0 / std::max(1LL, sigEnd) + 1.0 / sigMid),
+                 qPrintable(QString("end/middle %1, expected %2").arg(got).arg(expect)));
+        QVERIFY(expect < 0.6);  // (the test would not tell a flat profile from the fade otherwise)
+        // Fading returns need the pass's length; the profiles' ranges are checked.
+        sp.points = 1000;
+        QVERIFY(!sim::simulateSlrPass(sp, 1).ok);
+        sp.points = 0;
+        sp.noiseGateSkew = 0.5;
+        QVERIFY(!sim::simulateSlrPass(sp, 1).ok);
+    }
+
     // ---------------------------------------------------------------- post-fit, normal points
     void normalPointBinLengths() {
         QCOMPARE(normalPointBinS(400), 5.0);

@@ -233,6 +233,39 @@ private slots:
         for (const auto& e : readJson(preset).value("satellites").toArray()) names << e.toObject().value("name").toString();
         QCOMPARE(names, (QStringList{"lageos1", "simsat-leo"}));
     }
+
+    // A folder (a station's archive): its CRD files' passes; there a pass without labels and a
+    // file that does not read are left out with their reasons, and a pass of another satellite
+    // with --satellite; the same passes named one by one give the same entry.
+    void tunesOnAFolderOfAStationsArchive() {
+        QTemporaryDir archive;
+        const QStringList leo = simulate("leo", 1, 2);
+        for (const QString& f : leo) QVERIFY(QFile::copy(f, archive.path() + "/" + QFileInfo(f).fileName()));
+        QVERIFY(QFile::copy(simulate("conventional", 1, 1).front(), archive.path() + "/lageos.frd"));
+        QByteArray blind = lwbtest::readAll(leo.front());
+        blind.replace(" std 2 2 0 0 na na", " std 2 0 0 0 na na").replace(" std 2 1 0 0 na na", " std 2 0 0 0 na na");
+        QVERIFY(lwbtest::writeText(archive.path() + "/blind.frd", blind));
+        QVERIFY(lwbtest::writeText(archive.path() + "/broken.frd", "H1 CRD  2 2024 06 15 10\nH9\n"));
+        QVERIFY(lwbtest::writeText(archive.path() + "/readme.txt", "the station's archive"));
+        const QString preset = m_dir.path() + "/folder.json";
+        lwbtest::CliRun r = runCli({"slr", "tune", archive.path(), "--satellite", "simsat-leo", "--preset-out", preset});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.err.contains("blind.frd pass 1: no labels to tune on: every filter flag is 0") && r.err.contains("(left out)"),
+                 qPrintable(r.err));
+        QVERIFY2(r.err.contains("broken.frd"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("lageos.frd pass 1: left out: satellite lageos1"), qPrintable(r.err));
+        QVERIFY2(!r.err.contains("readme.txt"), qPrintable(r.err));
+        const QJsonObject t = tuning(preset);
+        QCOMPARE(t.value("passes").toArray().size(), 2);
+        const QString named = m_dir.path() + "/named.json";
+        QCOMPARE(runCli(QStringList{"slr", "tune", "-q"} + leo + QStringList{"--preset-out", named}).exitCode, 0);
+        QCOMPARE(lwbtest::readAll(preset), lwbtest::readAll(named));
+        QCOMPARE(tuning(named).value("f1_held_out").toDouble(), t.value("f1_held_out").toDouble());
+        // The same blind file named: refused (the analyst asked for it).
+        r = runCli({"slr", "tune", archive.path() + "/blind.frd", "--preset-out", m_dir.path() + "/blind2.json"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("every filter flag is 0"), qPrintable(r.err));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSlrTune)

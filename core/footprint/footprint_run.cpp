@@ -1,20 +1,16 @@
 #include "core/footprint/footprint_run.hpp"
 
-#include <dirent.h>
 #include <sys/stat.h>
 
 #include <algorithm>
 
+#include "core/common/folder.hpp"
 #include "core/footprint/roi.hpp"
 
 namespace lwb::core::footprint {
 
 namespace {
 
-bool isFolder(const std::string& path) {
-    struct stat st {};
-    return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
 bool exists(const std::string& path) {
     struct stat st {};
     return ::stat(path.c_str(), &st) == 0;
@@ -26,20 +22,10 @@ bool endsWithCsv(const std::string& path) {
     return end == ".csv";
 }
 
-// The regular files of a folder that are not hidden, sorted by name.
+// The regular files of a folder that are not hidden, sorted by name (none when it cannot be read).
 std::vector<std::string> folderFiles(const std::string& folder) {
     std::vector<std::string> out;
-    if (DIR* d = ::opendir(folder.c_str())) {
-        while (dirent* e = ::readdir(d)) {
-            const std::string name = e->d_name;
-            if (name.empty() || name[0] == '.') continue;
-            const std::string full = (folder.back() == '/' ? folder : folder + "/") + name;
-            struct stat st {};
-            if (::stat(full.c_str(), &st) == 0 && S_ISREG(st.st_mode)) out.push_back(full);
-        }
-        ::closedir(d);
-    }
-    std::sort(out.begin(), out.end());
+    listFolder(folder, &out, nullptr);
     return out;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "core/common/text.hpp"
 #include "core/common/rng.hpp"
@@ -29,12 +30,24 @@ const char* slrKindName(SlrKind k) {
         case SlrKind::Diffuse: return "diffuse";
         case SlrKind::Leo: return "leo";
         case SlrKind::Daylight: return "daylight";
+        case SlrKind::Dayspad: return "dayspad";
     }
     return "?";
 }
 
+namespace {
+constexpr SlrKind kKinds[] = {SlrKind::Khz, SlrKind::Conventional, SlrKind::Diffuse, SlrKind::Leo, SlrKind::Daylight, SlrKind::Dayspad};
+}
+
+std::string slrKindList() {
+    std::string s;
+    const size_t n = sizeof kKinds / sizeof kKinds[0];
+    for (size_t i = 0; i < n; ++i) s += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + slrKindName(kKinds[i]);
+    return s;
+}
+
 bool parseSlrKind(const std::string& s, SlrKind* out) {
-    for (SlrKind k : {SlrKind::Khz, SlrKind::Conventional, SlrKind::Diffuse, SlrKind::Leo, SlrKind::Daylight})
+    for (SlrKind k : kKinds)
         if (toLower(s) == slrKindName(k)) {
             *out = k;
             return true;
@@ -108,6 +121,20 @@ SlrSimParams slrSimPreset(SlrKind kind) {
             p.rangeBiasMaxS = 20e-9;
             p.timeBiasMaxS = 1e-3;
             break;
+        case SlrKind::Dayspad:  // low-SNR daylight single-photon ranging of another make (issue 45)
+            p = slrSimPreset(SlrKind::Daylight);  // the same rates, jitter and gate
+            p.kind = kind;
+            p.tailS = 40e-12;
+            p.durationS = 600;
+            p.altitudeKm = 800;
+            p.tcaDistanceKm = 1100;
+            p.velocityKmS = 7.4;
+            p.rangeBiasMaxS = 20e-9;
+            p.timeBiasMaxS = 2e-3;
+            p.returnRangePower = 2;
+            p.noiseRise = 3;
+            p.noiseGateSkew = 4;
+            break;
     }
     return p;
 }
@@ -131,6 +158,13 @@ std::string validate(const SlrSimParams& p) {
     if (!fin(p.altitudeKm) || p.altitudeKm < 0) return "altitude must be >= 0";
     if (!fin(p.driftSPerS) || !fin(p.driftSPerS2) || std::fabs(p.driftSPerS) > 1e-3 || std::fabs(p.driftSPerS2) > 1e-3)
         return "O-C drift terms must be finite and at most 1e-3 (s/s, s/s²)";
+    if (!fin(p.returnRangePower) || p.returnRangePower < 0 || p.returnRangePower > 8)
+        return "the return probability's range power must be in [0, 8]";
+    if (p.returnRangePower > 0 && p.points > 0)
+        return "returns that fade with range need the pass's length, not a number of points";
+    if (!fin(p.noiseRise) || p.noiseRise < 0.1 || p.noiseRise > 10) return "the noise rise over the pass must be in [0.1, 10]";
+    if (!fin(p.noiseGateSkew) || p.noiseGateSkew < 1 || p.noiseGateSkew > 100)
+        return "the noise's skew across the gate must be in [1, 100]";
     for (size_t g = 0; g < p.gaps.size(); ++g) {
         const SlrSimGap& q = p.gaps[g];
         if (!fin(q.startS) || !fin(q.lengthS) || !fin(q.levelShiftS) || q.startS < 0 || q.lengthS <= 0 ||
@@ -201,7 +235,9 @@ struct ShotPlan {
 // The shot plan: exactly p.points points (the kind's pass length kept, the return probability
 // following), or the shots of the pass length with their return probability and the noise rate.
 // False with *error for a pass too large.
-bool planShots(const SlrSimParams& p, Rng& rng, ShotPlan* plan, std::string* error) {
+// returnOf(k), where given, is shot k's return probability (returns that fade with range).
+bool planShots(const SlrSimParams& p, Rng& rng, ShotPlan* plan, std::string* error,
+               const std::function<double(long long)>& returnOf = {}) {
     auto gapAt = [&](double x, bool* noiseOk) { return inGap(p, x, noiseOk); };
     long long &shots = plan->shots, &ns = plan->ns, &nn = plan->nn;
     std::vector<long long>& sigShots = plan->sigShots;
@@ -245,7 +281,8 @@ bool planShots(const SlrSimParams& p, Rng& rng, ShotPlan* plan, std::string* err
         }
         bool dummy = true;
         for (long long k = 0; k < shots; ++k)
-            if (rng.uniform() < p.returnProbability && !(!p.gaps.empty() && gapAt(static_cast<double>(k) / p.fireRateHz, &dummy)))
+            if (rng.uniform() < (returnOf ? returnOf(k) : p.returnProbability) &&
+                !(!p.gaps.empty() && gapAt(static_cast<double>(k) / p.fireRateHz, &dummy)))
                 sigShots.push_back(k);
         ns = static_cast<long long>(sigShots.size());
         if (p.signalFraction > 0)
@@ -271,15 +308,33 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
     Rng rng(seed);
     auto gapAt = [&](double x, bool* noiseOk) { return inGap(p, x, noiseOk); };
     // Counts and duration.
+    // Track truth: biases, closest approach near the middle of the pass. Returns that fade with
+    // range need the closest approach before the shots are drawn, so it is drawn first there;
+    // the other passes keep their order of draws (the same pass for the same seed as before).
+    auto drawTrack = [&](double duration) {
+        out.rangeBiasS = rng.uniform(-p.rangeBiasMaxS, p.rangeBiasMaxS);
+        out.timeBiasS = rng.uniform(-p.timeBiasMaxS, p.timeBiasMaxS);
+        out.tcaSod = p.startSod + duration * rng.uniform(0.35, 0.65);
+    };
     ShotPlan plan;
-    if (!planShots(p, rng, &plan, &out.error)) return out;
+    std::function<double(long long)> returnOf;
+    if (p.returnRangePower > 0) {  // (validate: points = 0, so the shots follow from the pass length)
+        const long long n = std::max<long long>(1, std::llround(p.durationS * p.fireRateHz));
+        drawTrack(static_cast<double>(n) / p.fireRateHz);
+        auto weight = [&p, tca = out.tcaSod](long long k) {
+            return std::pow(p.tcaDistanceKm * 1e3 / rangeM(p, tca, p.startSod + static_cast<double>(k) / p.fireRateHz),
+                            p.returnRangePower);
+        };
+        double sum = 0;
+        for (long long k = 0; k < n; ++k) sum += weight(k);
+        const double scale = p.returnProbability * static_cast<double>(n) / sum;
+        returnOf = [weight, scale](long long k) { return std::min(1.0, scale * weight(k)); };
+    }
+    if (!planShots(p, rng, &plan, &out.error, returnOf)) return out;
     const long long shots = plan.shots, ns = plan.ns, nn = plan.nn;
     const std::vector<long long>& sigShots = plan.sigShots;
     const double duration = static_cast<double>(shots) / p.fireRateHz;
-    // Track truth: biases, closest approach near the middle of the pass.
-    out.rangeBiasS = rng.uniform(-p.rangeBiasMaxS, p.rangeBiasMaxS);
-    out.timeBiasS = rng.uniform(-p.timeBiasMaxS, p.timeBiasMaxS);
-    out.tcaSod = p.startSod + duration * rng.uniform(0.35, 0.65);
+    if (!returnOf) drawTrack(duration);
     // The track: eq. 1, the extra drift about the pass middle and the level shifts after gaps.
     const double tMid = p.startSod + 0.5 * duration;
     auto track = [&](double t) {
@@ -313,10 +368,23 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
         if (p.tailS > 0) oc += -p.tailS * std::log(1.0 - rng.uniform());
         pts.push_back({t, oc, 1});
     }
+    // Noise: over the shots with a rate rising linearly by noiseRise from start to end (density
+    // ∝ 1 + b·x on x ∈ [0, 1], drawn by its inverse CDF), over the gate with a density falling
+    // by noiseGateSkew from its start to its end (∝ e^(−a·u)); uniform where both are 1.
+    const double rise = p.noiseRise - 1, skew = std::log(p.noiseGateSkew);
+    auto noiseShot = [&](double u) {
+        if (rise == 0) return u;
+        return (std::sqrt(1 + 2 * rise * u * (1 + 0.5 * rise)) - 1) / rise;
+    };
+    auto noiseInGate = [&](double u) {
+        if (skew == 0) return u;
+        return -std::log(1 - u * (1 - std::exp(-skew))) / skew;
+    };
     for (long long j = 0; j < nn; ++j) {
-        const long long k = std::min<long long>(shots - 1, static_cast<long long>(rng.uniform() * static_cast<double>(shots)));
+        const long long k =
+            std::min<long long>(shots - 1, static_cast<long long>(noiseShot(rng.uniform()) * static_cast<double>(shots)));
         const double t = p.startSod + static_cast<double>(k) / p.fireRateHz;
-        const double o = out.gateLoS + p.gateS * rng.uniform();
+        const double o = out.gateLoS + p.gateS * noiseInGate(rng.uniform());
         bool noiseOk = true;
         if (!p.gaps.empty() && gapAt(t - p.startSod, &noiseOk) && !noiseOk) continue;  // no data in the gap
         pts.push_back({t, o, 0});

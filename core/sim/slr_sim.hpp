@@ -13,8 +13,14 @@
 // altimetry satellite (Jason class, 1336 km) on a low pass from a noisy station (50 % returns,
 // 60 ps, 10 µs gate, 20 / 60 noise/s); daylight: low-SNR 20 Hz ranging to a LEO satellite by
 // day (issue 43: 3 % returns, 150 ps, 400 ns gate, 2 / 20 noise/s, 15 min; by day about 3 % of
-// the points are signal). signalFraction overrides the noise rate so that
-// signal / all = fraction (down to 3 % and below).
+// the points are signal); dayspad (issue 45): low-SNR daylight single-photon ranging of another
+// make than `daylight`, what a tuning must hold on without having been set on it: returns that
+// fade with range (∝ (ρ_TCA/ρ)², 3 % on average, a fifth of the middle's at the pass's ends), a
+// sky background that rises through the pass (3× from start to end), a detector's first-photon
+// bias (noise 4× denser at the gate's start than at its end), a 40 ps target-signature tail and
+// a poorer prediction (time bias up to 2 ms: a track sloped across a fifth of the gate), to a
+// Starlette-class satellite (800 km) on a 10-minute pass. signalFraction overrides the noise
+// rate so that signal / all = fraction (down to 3 % and below).
 //
 // Hard passes (issue 13): an extra O-C drift (a steep, curved track as against a poor
 // prediction or a fitted TOF trend), and gaps in the track (clouds, a lost lock): no signal
@@ -26,8 +32,10 @@
 
 namespace lwb::core::sim {
 
-enum class SlrKind { Khz, Conventional, Diffuse, Leo, Daylight };
-const char* slrKindName(SlrKind k);  ///< "khz", "conventional", "diffuse", "leo", "daylight"
+enum class SlrKind { Khz, Conventional, Diffuse, Leo, Daylight, Dayspad };
+const char* slrKindName(SlrKind k);  ///< "khz", "conventional", "diffuse", "leo", "daylight", "dayspad"
+/// Every kind's name, for messages: "khz, conventional, ..., daylight or dayspad".
+std::string slrKindList();
 bool parseSlrKind(const std::string& s, SlrKind* out);
 
 /// A gap in the track: no signal from startS to startS + lengthS (seconds from the first shot).
@@ -60,6 +68,13 @@ struct SlrSimParams {
     double driftSPerS = 0;          ///< extra O-C drift: driftSPerS·x + driftSPerS2·x², x = t − pass middle (s)
     double driftSPerS2 = 0;
     std::vector<SlrSimGap> gaps;    ///< gaps in the track (each inside the pass, lengths > 0)
+    double returnRangePower = 0;    ///< > 0: a shot's return probability ∝ (ρ_TCA/ρ)^power, scaled so that
+                                    ///< its mean over the pass is returnProbability (each capped at 1);
+                                    ///< 0: the same on every shot. [0, 8]; needs points = 0
+    double noiseRise = 1;           ///< noise rate at the pass's end over its start (a linear ramp about the
+                                    ///< mean rate: a sky that brightens); 1: steady. [0.1, 10]
+    double noiseGateSkew = 1;       ///< noise density at the gate's start over at its end (exponential
+                                    ///< across the gate: a detector's first-photon bias); 1: uniform. [1, 100]
 };
 
 /// The preset physics for a kind (day/night only picks which noise rate is used later).

@@ -1,13 +1,12 @@
 #include "core/slr/pass_input.hpp"
 
+#include "core/common/folder.hpp"
+
 #include "core/slr/ilrs_tables.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cerrno>
-#include <cstring>
-#include <dirent.h>
 #include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
@@ -172,25 +171,6 @@ bool isCrdFile(const std::string& path) {
 
 namespace {
 
-// The regular files of a folder, sorted by name (hidden files left out).
-bool listFolder(const std::string& dir, std::vector<std::string>* files, std::string* error) {
-    DIR* d = ::opendir(dir.c_str());
-    if (!d) {
-        *error = dir + ": cannot open the folder: " + std::strerror(errno);
-        return false;
-    }
-    while (const dirent* e = ::readdir(d)) {
-        const std::string name = e->d_name;
-        if (name.empty() || name[0] == '.') continue;
-        const std::string full = dir + (dir.back() == '/' ? "" : "/") + name;
-        struct stat st {};
-        if (::stat(full.c_str(), &st) == 0 && S_ISREG(st.st_mode)) files->push_back(full);
-    }
-    ::closedir(d);
-    std::sort(files->begin(), files->end());
-    return true;
-}
-
 // Time span of a prediction (MJD + s): its positions' first and last epochs.
 bool cpfSpan(const CpfFile& cpf, double* first, double* last) {
     if (cpf.positions.empty()) return false;
@@ -247,8 +227,7 @@ std::string cpfMismatch(const CpfFile& cpf, const CrdPass& pass, const std::stri
 bool readPassSources(const PassInputParams& params, PassSources* out, std::string* error) {
     *out = PassSources();
     if (!params.cpfPath.empty()) {
-        struct stat st {};
-        out->cpfFolder = ::stat(params.cpfPath.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+        out->cpfFolder = isFolder(params.cpfPath);
         std::vector<std::string> files;
         if (out->cpfFolder) {
             if (!listFolder(params.cpfPath, &files, error)) return false;

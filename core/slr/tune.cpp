@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/folder.hpp"
 #include "core/common/provenance.hpp"
 #include "core/common/text.hpp"
 #include "core/slr/pass_run.hpp"
@@ -60,14 +61,45 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
     }
     const std::vector<SatellitePreset> wanted = {SatellitePreset{sources.satellite, {}, {}, {}}};
     TuneResult out;
-    std::vector<OpenTuned> open;
+    // The files: each one named, and the CRD files of each folder named (a station's archive).
+    // What cannot be tuned on in a folder (a file that does not read, a pass without labels, a
+    // normal-point file) is left out with its reason; a file named is refused for it.
+    struct Input {
+        std::string path;
+        bool inFolder = false;
+    };
+    std::vector<Input> inputs;
     for (const std::string& file : sources.files) {
+        if (!isFolder(file)) {
+            inputs.push_back({file, false});
+            continue;
+        }
+        std::vector<std::string> listed;
+        std::string err;
+        if (!listFolder(file, &listed, &err)) return failed(err, false);
+        size_t crd = 0;
+        for (const std::string& f : listed)
+            if (isCrdFile(f)) inputs.push_back({f, true}), ++crd;
+        if (crd == 0) out.notes.push_back(file + ": no CRD file in the folder");
+    }
+    std::vector<OpenTuned> open;
+    for (const Input& input : inputs) {
+        const std::string& file = input.path;
+        // A folder's file that cannot be tuned on: its reason noted, the next one read.
+        auto leaveOut = [&](const std::string& why) {
+            out.notes.push_back(why.rfind(file, 0) == 0 ? why + " (left out)" : file + ": left out: " + why);
+            out.error = {};
+        };
         SlrSources src;
         src.input = file;
         src.set = sources.set;
         src.searchThreads = sources.threads;
         auto plain = std::make_shared<SlrSetup>();
-        if (!setUpSlrRun(src, plain.get(), &out.error)) return out;
+        if (!setUpSlrRun(src, plain.get(), &out.error)) {
+            if (!input.inFolder) return out;
+            leaveOut(out.error.message);
+            continue;
+        }
         // (the existing entry of the pass's satellite is the starting point, where there is one)
         std::shared_ptr<SlrSetup> withEntry;
         if (!entries.empty()) {
@@ -77,20 +109,26 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
             withEntry = std::make_shared<SlrSetup>();
             if (!setUpSlrRun(src, withEntry.get(), &out.error)) return out;
         }
-        // A pass opened: its labels (the station's flags: 2 data, 1 noise) or why it has none.
+        // A pass opened: its labels (the station's flags: 2 data, 1 noise) or why it has none
+        // (a folder's pass without labels is left out with it).
         auto take = [&](const std::string& name, std::shared_ptr<const SlrSetup> setup, const OpenedPass& o) -> bool {
             const PassData& d = *o.pass;
             size_t data = 0, noise = 0;
             for (int f : d.stationFlag) data += f == 2, noise += f == 1;
             if (data == 0) {
-                out = failed(name + ": no labels to tune on: " +
-                                 (d.stationFlag.empty() && !isCrdFile(file)
-                                      ? std::string("the O-C table has no station_flag column, or only 0 or blank in it "
-                                                    "(laserwb-cli slr -o writes one from a CRD pass's filter flags)")
-                                  : noise == 0 ? std::string("every filter flag is 0 (unknown)")
-                                               : "no point is flagged data (2), " + std::to_string(noise) + " noise (1)") +
-                                 "; tuning learns from the station's own decisions (2 data, 1 noise)",
-                             false);
+                const std::string why =
+                    name + ": no labels to tune on: " +
+                    (d.stationFlag.empty() && !isCrdFile(file)
+                         ? std::string("the O-C table has no station_flag column, or only 0 or blank in it "
+                                       "(laserwb-cli slr -o writes one from a CRD pass's filter flags)")
+                     : noise == 0 ? std::string("every filter flag is 0 (unknown)")
+                                  : "no point is flagged data (2), " + std::to_string(noise) + " noise (1)") +
+                    "; tuning learns from the station's own decisions (2 data, 1 noise)";
+                if (input.inFolder) {
+                    out.notes.push_back(why + " (left out)");
+                    return true;
+                }
+                out = failed(why, false);
                 return false;
             }
             OpenTuned t{std::move(setup), o.pass, o.settings, {}};
@@ -113,7 +151,11 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
             continue;
         }
         const std::shared_ptr<const CrdReadResult> crd = readSlrInput(src, &out.error);
-        if (!crd) return out;
+        if (!crd) {
+            if (!input.inFolder) return out;
+            leaveOut(out.error.message);
+            continue;
+        }
         const std::vector<PassSummary> summaries = summarisePasses(crd->file);
         for (const PassSummary& s : summaries) {
             const std::string name = file + " pass " + std::to_string(s.index + 1);
@@ -128,6 +170,10 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
             const bool entry = withEntry && findPreset(entries, s.satellite, s.ilrsId);
             std::shared_ptr<const SlrSetup> setup = entry ? std::shared_ptr<const SlrSetup>(withEntry) : plain;
             OpenedPass o = openPassOf(*setup, crd, s.index);
+            if (!o.ok && input.inFolder) {
+                out.notes.push_back(name + ": left out: " + o.error.message);
+                continue;
+            }
             if (!o.ok) return failed(o.error.message, o.error.usage);
             if (!take(name, setup, o)) return out;
         }
@@ -359,6 +405,39 @@ bool writeTunedPreset(const TuneResult& r, const TuneSources& sources, const std
     const std::string text = dumpJson(doc);
     return writeWithProvenance(prov, path, [&](const std::string& to, std::string* e) { return writeFileAtomic(to, text, e); },
                                error, !presets.empty() || ::stat(path.c_str(), &st) == 0);
+}
+
+std::vector<SweepOutcome> sweepSlrParam(const SlrSetup& setup, const PassTask::Inputs& in, const SlrParams& panel,
+                                        const std::string& key, const std::vector<double>& values,
+                                        const std::vector<uint8_t>& labels, const PassTask::Reuse& reuse,
+                                        const Feedback* fb) {
+    std::vector<SweepOutcome> out(values.size());
+    const auto* field = slrSchema().find(key);
+    if (!field || !field->set || !in.pass) return out;
+    // What the live rerun would reuse for a change of this row alone.
+    PassTask::Reuse use;
+    if (field->stage >= kStagePostfit) use.screen = reuse.screen;
+    if (field->stage >= kStageRecovery && !use.screen) use.scale = reuse.scale;
+    SlrSetup at = setup;
+    for (size_t k = 0; k < values.size(); ++k) {
+        if (fb && fb->isCancelled()) break;
+        SlrParams p = panel;
+        field->set(p, values[k]);
+        if (!slrSchema().validate(p).empty()) continue;
+        at.sources.config = slrSchema().toJson(p);
+        PassSettings settings;
+        SlrError e;
+        if (!resolvePassParams(at, *in.pass, &settings, &e)) continue;
+        const PassRunResult r = PassTask::run(in, settings.params, use, nullptr);
+        if (!r.ok) continue;
+        SweepOutcome& o = out[k];
+        o.ok = true;
+        const std::vector<uint8_t>& delivered = deliveredFlags(r);
+        for (uint8_t d : delivered) o.delivered += d != 0;
+        if (r.postOk) o.rmsS = r.post.stats.rms;
+        if (!labels.empty()) o.f1 = sim::scoreDetection(delivered, labels).f1;
+    }
+    return out;
 }
 
 }  // namespace lwb::core::slr

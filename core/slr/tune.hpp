@@ -6,12 +6,14 @@
 // own settings first; the candidate with the best mean F1 of the delivered flags against the
 // labels is chosen, and leave-one-pass-out says how well that choice holds on a pass it was not
 // chosen on. `laserwb-cli slr tune` writes it as the satellite's preset entry, with provenance.
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "core/common/feedback.hpp"
 #include "core/common/json.hpp"
 #include "core/sim/slr_eval.hpp"
+#include "core/slr/pass_run.hpp"
 #include "core/slr/slr_run.hpp"
 
 namespace lwb::core::slr {
@@ -20,7 +22,9 @@ namespace lwb::core::slr {
 /// the satellite whose passes count ("" = the passes' one satellite).
 struct TuneSources {
     std::vector<std::string> files;  ///< CRD files: every pass to screen of each (isPassToScreen); O-C tables
-                                     ///< with a station_flag column (the CLI's -o): one pass each, of `satellite`
+                                     ///< with a station_flag column (the CLI's -o): one pass each, of `satellite`;
+                                     ///< folders: their CRD files (isCrdFile), where a file that does not read
+                                     ///< or a pass without labels is left out with its reason (notes)
     /// Workbench sessions: the SLR pass of each with the analyst's decisions as labels — what the
     /// session's run delivered (its own parameters, prediction and station file) with the points
     /// forced in or out by hand. A session without edits has no decision of the analyst's.
@@ -73,5 +77,27 @@ Json tuneSummary(const TuneResult& r);
 /// False with *error.
 bool writeTunedPreset(const TuneResult& r, const TuneSources& sources, const std::string& path, std::string* error,
                       std::string* note = nullptr);
+
+/// What one value of a parameter gives on a pass (the SLR sliders' strips, issue 45).
+struct SweepOutcome {
+    bool ok = false;           ///< the run succeeded (a value the schema refuses, a failed screening: false)
+    long long delivered = 0;   ///< points the run delivers (the post-fit's kept ones, else the accepted)
+    double rmsS = NAN;         ///< the post-fit's RMS of the kept residuals (s); NaN without a post-fit
+    double f1 = NAN;           ///< of the delivered flags against the labels; NaN without labels
+};
+
+/// A parameter swept over a pass as the workbench would run it with the slider moved there:
+/// for each of `values`, `key` set to it over `panel` (the analyst's parameters), resolved for
+/// the pass as every front end resolves them (resolvePassParams on `setup`), and the pass task
+/// run with the analyst's edits (`in`). What the live rerun reuses for a change of that key
+/// alone is reused: `reuse.screen` (the last run's screening) for a post-fit row, `reuse.scale`
+/// (the automatic mode's last choice, where the workbench keeps it while C moves) for a
+/// recovery row; nothing for the rows before. `labels` (1 data, per point; empty = none): the
+/// station's flags or a simulation's truth, scored as F1. Cancelled through `fb`: the outcomes so
+/// far, the rest not ok.
+std::vector<SweepOutcome> sweepSlrParam(const SlrSetup& setup, const PassTask::Inputs& in, const SlrParams& panel,
+                                        const std::string& key, const std::vector<double>& values,
+                                        const std::vector<uint8_t>& labels, const PassTask::Reuse& reuse,
+                                        const Feedback* fb = nullptr);
 
 }  // namespace lwb::core::slr

@@ -32,6 +32,7 @@
 #include "ui/slr/slr_file_check.hpp"
 #include "ui/slr/slr_params_panel.hpp"
 #include "ui/slr/slr_station_nps.hpp"
+#include "ui/slr/slr_strips.hpp"
 #include "ui/slr/slr_workspace.hpp"
 #include <QRegularExpression>
 #include "core/slr/slr_time.hpp"
@@ -1813,6 +1814,104 @@ private slots:
             QCOMPARE(c->params().screen.cosineC, start.screen.cosineC);
             QCOMPARE(c->params().postfit.rejectSigma, start.postfit.rejectSigma);
         }
+    }
+
+    // Issue 45: tuning on a folder (a station's archive): its CRD files' passes of the open
+    // satellite; a file that does not read and a pass without labels are left out with their
+    // reasons, shown in the dialog, and the choice is the core's on the same folder.
+    void tuneFromAFolderLeavesOutWhatItCannotUse() {
+        SlrWorkspace ws;
+        QSignalSpy failed(&ws, &Workspace::failed);
+        QVERIFY(!ws.tuneFromFolder(m_dir.path()));  // no pass open: no satellite to tune
+        QCOMPARE(failed.count(), 1);
+        QTemporaryDir archive;
+        for (const char* seed : {"5", "6"})
+            QCOMPARE(lwbtest::runCli({"simulate", "slr", "--kind", "leo", "--seed", seed, "--duration", "200", "-q",
+                                      archive.path() + "/leo" + seed + ".frd"})
+                         .exitCode,
+                     0);
+        QVERIFY(lwbtest::writeText(archive.path() + "/broken.frd", "H1 CRD  2 2024 06 15 10\nH2 garbage\n"));
+        QVERIFY(lwbtest::writeText(archive.path() + "/notes.txt", "not a pass"));
+        QString err;
+        QVERIFY2(ws.openPath(archive.path() + "/leo5.frd", -1, &err), qPrintable(err));
+        QVERIFY(ws.controller()->waitIdle(60000));
+        lwb::core::slr::TuneSources src;
+        src.files = {lwbtest::str(archive.path())};
+        src.satellite = ws.controller()->pass().satellite;
+        const lwb::core::slr::TuneResult expected = lwb::core::slr::tuneSlr(src);
+        QVERIFY2(expected.ok, expected.error.message.c_str());
+        QCOMPARE(expected.passes.size(), size_t(2));
+        bool brokenNoted = false;
+        for (const std::string& n : expected.notes) brokenNoted = brokenNoted || n.find("broken.frd") != std::string::npos;
+        QVERIFY(brokenNoted);
+        QDialog* d = ws.tuneFromFolder(archive.path());
+        QVERIFY(d && d->isVisible());
+        const QString text = d->findChild<QLabel*>("tuningText")->text();
+        QVERIFY2(text.contains("leo5.frd pass 1") && text.contains("leo6.frd pass 1") && text.contains("broken.frd") &&
+                     !text.contains(archive.path() + "/broken.frd") &&  // (the folder's files by their names)
+                     text.contains(QString::number(expected.heldOutMeanF1, 'f', 4)),
+                 qPrintable(text));
+        d->close();
+    }
+
+    // Issue 45: the strips beside the sliders are what moving that slider gives. On a pass with
+    // the station's flags, every strip slider gets a strip of kPositions values with an F1 line;
+    // moving the cosine constant and the rejection to a strip's position gives the run whose
+    // delivered count and F1 against the flags the strip holds there, exactly (the same task,
+    // the same resolution, the same stages reused); a changed parameter recomputes them.
+    void slidersStripsAreTheRunsTheyPromise() {
+        SlrWorkspace ws;
+        const QString frd = m_dir.path() + "/strips_leo.frd";
+        QCOMPARE(lwbtest::runCli({"simulate", "slr", "--kind", "leo", "--seed", "3", "--duration", "300", "-q", frd}).exitCode, 0);
+        QString err;
+        SlrStrips* strips = ws.strips();
+        QSignalSpy ready(strips, &SlrStrips::ready);
+        QVERIFY2(ws.openPath(frd, -1, &err), qPrintable(err));
+        SlrController* c = ws.controller();
+        QVERIFY(c->waitIdle(60000));
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(ready.wait(120000));
+        qInfo("the strips of a %zu-point pass: %lld ms from the run shown (300 ms of it the wait for a pause)", c->pass().t.size(),
+              clock.elapsed());
+        QVERIFY(!strips->busy());
+        std::vector<uint8_t> labels;
+        for (int f : c->pass().stationFlag) labels.push_back(f == 2);
+        for (const std::string& key : SlrStrips::keys()) {
+            ParamSlider* s = ws.paramsPanel()->slider(key);
+            QVERIFY2(s, key.c_str());
+            QCOMPARE(s->stripArea().size(), size_t(SlrStrips::positions(key)));
+            QCOMPARE(s->stripLine().size(), size_t(SlrStrips::positions(key)));
+            QVERIFY2(s->slider()->toolTip().contains("F1 against the station's filter flags"), qPrintable(s->slider()->toolTip()));
+            const SlrStrips::Drawn d = strips->drawn(key);
+            QCOMPARE(d.values.size(), size_t(SlrStrips::positions(key)));
+            int ok = 0;
+            for (const auto& o : d.outcomes) ok += o.ok;
+            QVERIFY2(ok >= SlrStrips::positions(key) / 2, key.c_str());
+        }
+        auto delivered = [&] {
+            long long n = 0;
+            for (uint8_t f : lwb::core::slr::deliveredFlags(c->run())) n += f != 0;
+            return n;
+        };
+        for (const std::string key : {"screen.cosine_c", "postfit.reject_sigma"})
+            for (int k : {3, 8}) {
+                const SlrStrips::Drawn d = strips->drawn(key);
+                if (!d.outcomes[size_t(k)].ok) continue;
+                ParamSlider* s = ws.paramsPanel()->slider(key);
+                QSignalSpy run(c, &SlrController::runReady);
+                s->field()->setValue(d.values[size_t(k)]);
+                if (c->busy() || run.isEmpty()) QVERIFY(run.wait(60000));
+                QVERIFY(c->waitIdle(60000));
+                const QString what = QString("%1 = %2").arg(key.c_str()).arg(d.values[size_t(k)]);
+                QVERIFY2(delivered() == d.outcomes[size_t(k)].delivered,
+                         qPrintable(what + QString(": %1 delivered, the strip %2").arg(delivered()).arg(d.outcomes[size_t(k)].delivered)));
+                const double f1 = lwb::core::sim::scoreDetection(lwb::core::slr::deliveredFlags(c->run()), labels).f1;
+                QVERIFY2(f1 == d.outcomes[size_t(k)].f1, qPrintable(what + QString(": F1 %1, the strip %2").arg(f1).arg(d.outcomes[size_t(k)].f1)));
+                // ... and the strips are computed again for the parameters of now.
+                QVERIFY(ready.wait(120000));
+                QCOMPARE(strips->drawn(key).values.size(), size_t(SlrStrips::positions(key)));
+            }
     }
 };
 

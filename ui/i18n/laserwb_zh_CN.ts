@@ -3493,6 +3493,14 @@ The criteria are tuned on the shots you gave a manual verdict (Accept A, Reject 
         <source>no screening result to export</source>
         <translation>没有可导出的筛选结果</translation>
     </message>
+    <message>
+        <source>the simulation&apos;s truth</source>
+        <translation>模拟真值</translation>
+    </message>
+    <message>
+        <source>the station&apos;s filter flags</source>
+        <translation>测站的筛选标记</translation>
+    </message>
 </context>
 <context>
     <name>lwb::ui::SlrFileCheckDialog</name>
@@ -3715,6 +3723,41 @@ The criteria are tuned on the shots you gave a manual verdict (Accept A, Reject 
     <message>
         <source>Nothing to export: %1</source>
         <translation>无可导出内容：%1</translation>
+    </message>
+</context>
+<context>
+    <name>lwb::ui::SlrStrips</name>
+    <message>
+        <source>No strip on a pass of %1 points (strips are computed up to %2: each is the pass run again %3 times)</source>
+        <translation>%1 个点的过境不画条带（条带只对不超过 %2 个点的过境计算：每条需将过境重新运行 %3 次）</translation>
+    </message>
+    <message>
+        <source>Strip: points kept along the slider (up to %1)</source>
+        <translation>条带：沿滑块各处保留的点数（最多 %1）</translation>
+    </message>
+    <message>
+        <source>; post-fit RMS %1 ps all along</source>
+        <translation>；后拟合 RMS 各处均为 %1 ps</translation>
+    </message>
+    <message>
+        <source>; post-fit RMS %1 to %2 ps</source>
+        <translation>；后拟合 RMS %1 至 %2 ps</translation>
+    </message>
+    <message>
+        <source>; orange: F1 against %1, %2 all along</source>
+        <translation>；橙线：相对%1的 F1，各处均为 %2</translation>
+    </message>
+    <message>
+        <source>; orange: F1 against %1, %2 to %3 (best at %4)</source>
+        <translation>；橙线：相对%1的 F1，%2 至 %3（最佳在 %4）</translation>
+    </message>
+    <message>
+        <source>; orange: the RMS (no labels: the pass has no station flags)</source>
+        <translation>；橙线：RMS（无标签：该过境没有测站标记）</translation>
+    </message>
+    <message>
+        <source>; %1 of the %2 values give no run</source>
+        <translation>；%2 个取值中有 %1 个无法运行</translation>
     </message>
 </context>
 <context>
@@ -4624,6 +4667,26 @@ The criteria are tuned on the shots you gave a manual verdict (Accept A, Reject 
     <message>
         <source>The satellite&apos;s parameters chosen from the station&apos;s own filter flags over every pass of the open CRD file, as laserwb-cli slr tune chooses them</source>
         <translation>按测站自己的滤波标志在所打开 CRD 文件的每个过境上为该卫星选择参数，与 laserwb-cli slr tune 的选择相同</translation>
+    </message>
+    <message>
+        <source>Tune from a folder&apos;s passes</source>
+        <translation>由文件夹中的过境调参</translation>
+    </message>
+    <message>
+        <source>Open a pass of the satellite to tune first: the folder&apos;s passes of that satellite are tuned on.</source>
+        <translation>请先打开要调参卫星的一个过境：将用文件夹中该卫星的过境调参。</translation>
+    </message>
+    <message>
+        <source>A folder of CRD files with the station&apos;s flags</source>
+        <translation>含测站筛选标记的 CRD 文件所在文件夹</translation>
+    </message>
+    <message>
+        <source>Tune from a folder&apos;s passes…</source>
+        <translation>由文件夹中的过境调参…</translation>
+    </message>
+    <message>
+        <source>The open satellite&apos;s parameters chosen from the station&apos;s own filter flags over every pass of it in the CRD files of a folder (a station&apos;s archive), as laserwb-cli slr tune FOLDER chooses them</source>
+        <translation>以测站自身的筛选标记，在一个文件夹（测站归档）的 CRD 文件中该卫星的所有过境上选出其参数，与 laserwb-cli slr tune FOLDER 的选择相同</translation>
     </message>
 </context>
 <context>

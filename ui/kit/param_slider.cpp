@@ -192,7 +192,9 @@ protected:
             if (closed) pp.lineTo(x1, h - 1), pp.closeSubpath();
             return pp;
         };
-        const QColor accent = s->palette().color(QPalette::Highlight);
+        // (the active colour also on a slider disabled while its value is automatic: the strip
+        // says what setting it by hand would do)
+        const QColor accent = s->palette().color(QPalette::Active, QPalette::Highlight);
         if (a.size() >= 2) {
             QColor fill = accent;
             fill.setAlpha(110);

@@ -1,5 +1,7 @@
 #include "ui/slr/slr_controller.hpp"
 
+#include <algorithm>
+
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
@@ -305,6 +307,25 @@ void SlrController::setSimulatedPass(const std::vector<double>& t, const std::ve
     emit passChanged();
     emit editsChanged();
     m_job.schedule();
+}
+
+SlrController::SweepBase SlrController::sweepBase() const {
+    SweepBase b;
+    b.setup = m_setup;
+    b.inputs.pass = m_passData;
+    b.inputs.forced = m_forced;
+    if (m_run->screen.ok) b.reuse.screen = std::shared_ptr<const ScreenResult>(m_run, &m_run->screen);
+    if (m_reuseScaleForCosine && m_scaleValid && m_params.screen.automatic) b.reuse.scale = m_scale;
+    b.params = m_params;
+    if (!m_truth.empty() && m_truth.size() == m_pass.t.size()) {
+        b.labels = m_truth;
+        b.labelsName = tr("the simulation's truth");
+    } else if (std::count(m_pass.stationFlag.begin(), m_pass.stationFlag.end(), 2) > 0) {
+        b.labels.resize(m_pass.stationFlag.size());
+        for (size_t i = 0; i < b.labels.size(); ++i) b.labels[i] = m_pass.stationFlag[i] == 2;
+        b.labelsName = tr("the station's filter flags");
+    }
+    return b;
 }
 
 void SlrController::setParams(const SlrParams& p) {

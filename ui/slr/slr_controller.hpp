@@ -165,6 +165,21 @@ public:
 
     bool waitIdle(int timeoutMs);
 
+    /// What a sweep of one parameter over the open pass starts from (the sliders' strips, issue
+    /// 45): the set-up, the task's inputs (the pass, the edits), what a rerun after a change would
+    /// reuse (the last screening; the automatic mode's scale where it is kept while C moves), the
+    /// panel's parameters, and the labels where there are any: a simulation's truth, else the
+    /// station's filter flags (1 where data) when it flagged some point data.
+    struct SweepBase {
+        core::slr::SlrSetup setup;
+        core::slr::PassTask::Inputs inputs;
+        core::slr::PassTask::Reuse reuse;
+        core::slr::SlrParams params;
+        std::vector<uint8_t> labels;
+        QString labelsName;  ///< "the simulation's truth", "the station's filter flags"; "" none
+    };
+    SweepBase sweepBase() const;
+
 signals:
     void passChanged();
     void runReady(const lwb::ui::SlrRun& run);

@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QDialogButtonBox>
 #include <QDialog>
+#include <QDir>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -42,6 +43,7 @@
 #include "ui/slr/slr_all_passes.hpp"
 #include "ui/slr/slr_file_check.hpp"
 #include "ui/slr/slr_station_nps.hpp"
+#include "ui/slr/slr_strips.hpp"
 #include "ui/kit/session_json.hpp"
 #include "ui/slr/slr_params_panel.hpp"
 #include "ui/kit/workspace_layout.hpp"
@@ -520,6 +522,7 @@ QWidget* SlrWorkspace::buildPanel() {
 // The controller's signals, the parameters panel, the plots' links, selection and legends.
 void SlrWorkspace::wireController() {
     connect(m_controller, &SlrController::runReady, this, &SlrWorkspace::showRun);
+    m_strips = new SlrStrips(m_controller, m_params, this);
     connect(m_controller, &SlrController::runFailed, this,
             [this](const QString& m) { m_stats->setText(tr("<b>Screening failed:</b> %1").arg(m.toHtmlEscaped())); });
     connect(m_controller, &SlrController::status, this, &SlrWorkspace::status);
@@ -637,19 +640,37 @@ SlrFileCheckDialog* SlrWorkspace::checkFile() {
 }
 
 QDialog* SlrWorkspace::tuneFromFile() {
-    using namespace core::slr;
     const QString title = tr("Tune from this file's passes");
     if (m_path.isEmpty() || !m_controller->crd()) {
         emit failed(title, tr("Open a CRD file whose filter flags hold the station's decisions (2 data, 1 noise) first."));
         return nullptr;
     }
+    return tuneOn(m_path, title);
+}
+
+QDialog* SlrWorkspace::tuneFromFolder(QString folder) {
+    const QString title = tr("Tune from a folder's passes");
+    if (!m_controller->hasPass()) {
+        emit failed(title, tr("Open a pass of the satellite to tune first: the folder's passes of that satellite are "
+                              "tuned on."));
+        return nullptr;
+    }
+    if (folder.isEmpty())
+        folder = QFileDialog::getExistingDirectory(this, tr("A folder of CRD files with the station's flags"),
+                                                   QFileInfo(m_path).absolutePath());
+    if (folder.isEmpty()) return nullptr;
+    return tuneOn(folder, title);
+}
+
+QDialog* SlrWorkspace::tuneOn(const QString& input, const QString& title) {
+    using namespace core::slr;
     TuneSources src;
-    src.files = {m_path.toStdString()};
+    src.files = {input.toStdString()};
     src.satellite = m_controller->pass().satellite;
     if (QFileInfo::exists(m_controller->presetFile())) src.presets = m_controller->presetFile().toStdString();
     bool cancelled = false;
     const TuneResult r = runModal<TuneResult>(
-        this, tr("Tuning on the passes of %1…").arg(QFileInfo(m_path).fileName()),
+        this, tr("Tuning on the passes of %1…").arg(QFileInfo(input).fileName()),
         [src](const core::Feedback* fb) { return tuneSlr(src, fb); }, &cancelled);
     if (cancelled) return nullptr;
     if (!r.ok) {
@@ -673,8 +694,10 @@ QDialog* SlrWorkspace::tuneFromFile() {
     html += QStringLiteral("<table cellpadding='3'><tr><th align='left'>%1</th><th>%2</th><th>%3</th><th>%4</th><th>%5</th></tr>")
                 .arg(tr("Pass"), tr("Points (data)"), tr("F1 now"), tr("F1 chosen"), tr("Held out"));
     for (const TunedPass& p : r.passes) {
-        QString name = QString::fromStdString(p.name);  // "FILE pass K": the file by its name
-        if (name.startsWith(m_path)) name = QFileInfo(m_path).fileName() + name.mid(m_path.size());
+        // "FILE pass K": the file by its name (within the folder tuned on)
+        QString name = QString::fromStdString(p.name);
+        const int at = name.lastIndexOf(QLatin1String(" pass "));
+        if (at > 0) name = QFileInfo(name.left(at)).fileName() + name.mid(at);
         html += QStringLiteral("<tr><td>%1</td><td align='right'>%2 (%3)</td><td align='right'>%4</td><td align='right'><b>%5</b></td>"
                                "<td align='right'>%6</td></tr>")
                     .arg(name.toHtmlEscaped())
@@ -685,7 +708,13 @@ QDialog* SlrWorkspace::tuneFromFile() {
     html += QStringLiteral("<tr><td><i>%1</i></td><td></td><td align='right'>%2</td><td align='right'><b>%3</b></td><td align='right'>%4</td></tr></table>")
                 .arg(tr("mean"), f1(r.candidates[0].meanF1), f1(best.meanF1), f1(r.heldOutMeanF1));
     html += tr("<p><i>Held out: each pass scored with the choice made without it (leave one pass out).</i></p>");
-    for (const std::string& n : r.notes) html += QStringLiteral("<p>%1</p>").arg(QString::fromStdString(n).toHtmlEscaped());
+    // (a folder's files by their names, as in the table)
+    const QString folderPrefix = QFileInfo(input).isDir() ? QDir(input).absolutePath() + "/" : QString();
+    for (const std::string& n : r.notes) {
+        QString note = QString::fromStdString(n);
+        if (!folderPrefix.isEmpty()) note.replace(folderPrefix, QString());
+        html += QStringLiteral("<p>%1</p>").arg(note.toHtmlEscaped());
+    }
     auto* text = new QLabel(html, d);
     text->setObjectName("tuningText");
     text->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -725,7 +754,12 @@ QList<QAction*> SlrWorkspace::fileOpenActions() {
     t->setToolTip(tr("The satellite's parameters chosen from the station's own filter flags over every pass of the open "
                      "CRD file, as laserwb-cli slr tune chooses them"));
     connect(t, &QAction::triggered, this, [this] { tuneFromFile(); });
-    return {a, t};
+    auto* f = new QAction(tr("Tune from a folder's passes…"), this);
+    f->setObjectName("actionTuneSlrFolder");
+    f->setToolTip(tr("The open satellite's parameters chosen from the station's own filter flags over every pass of it "
+                     "in the CRD files of a folder (a station's archive), as laserwb-cli slr tune FOLDER chooses them"));
+    connect(f, &QAction::triggered, this, [this] { tuneFromFolder(); });
+    return {a, t, f};
 }
 
 bool SlrWorkspace::openPath(const QString& path, int passIndex, QString* error) {

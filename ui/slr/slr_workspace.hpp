@@ -33,6 +33,7 @@ class SlrParamsPanel;
 class SlrAllPassesDialog;
 class SlrFileCheckDialog;
 class SlrStationNpPanel;
+class SlrStrips;
 
 class SlrWorkspace : public Workspace {
     Q_OBJECT
@@ -103,7 +104,13 @@ public:
     /// this pass* sets it as one undoable step, nothing is changed otherwise. Null when there is
     /// nothing to tune on (said) or it was cancelled.
     QDialog* tuneFromFile();
+    /// The same over every pass of the open pass's satellite in the CRD files of a folder (a
+    /// station's archive; asked for when `folder` is empty), as laserwb-cli slr tune FOLDER: a
+    /// file or pass there that cannot be tuned on is left out with its reason (in the dialog).
+    QDialog* tuneFromFolder(QString folder = {});
     QList<QAction*> fileOpenActions() override;
+    /// The strips beside the sliders (ui/slr/slr_strips.hpp).
+    SlrStrips* strips() const { return m_strips; }
 
     /// Opens a CRD or O-C CSV with the CPF/SINEX chosen in the workspace; errors in a dialog.
     bool openPath(const QString& path, int passIndex, QString* error);
@@ -169,6 +176,8 @@ private:
     void pushForced(const std::vector<int8_t>& after, const QString& text);
     void linkRanges(QCustomPlot* from, QCustomPlot* to);
     void boxSelected(const QRect& rect);
+    /// tuneFromFile and tuneFromFolder: core tuneSlr on `input` (a file or a folder), its dialog.
+    QDialog* tuneOn(const QString& input, const QString& title);
 
     SlrController* m_controller;
     QCustomPlot *m_ocPlot, *m_imagePlot, *m_histPlot;
@@ -198,6 +207,7 @@ private:
     QPointer<SlrAllPassesDialog> m_all;
     SlrStationNpPanel* m_stationNps;
     QTabWidget* m_bottomTabs;
+    SlrStrips* m_strips = nullptr;
 };
 
 }  // namespace lwb::ui

@@ -1,0 +1,14 @@
+#pragma once
+// Folders as inputs: a path that is a folder, and the files it holds.
+#include <string>
+#include <vector>
+
+namespace lwb::core {
+
+/// The path names a folder (following symlinks).
+bool isFolder(const std::string& path);
+/// The regular files of a folder (symlinks followed), hidden ones (a leading '.') left out, as
+/// DIR/NAME sorted by name. False with *error ("DIR: cannot open the folder: REASON").
+bool listFolder(const std::string& dir, std::vector<std::string>* files, std::string* error);
+
+}  // namespace lwb::core
