@@ -87,7 +87,7 @@ const char* kSimUsage =
     "                        150 ps, 400 ns gate: low-SNR ranging to a LEO satellite; use --day),\n"
     "                        dayspad (the same class of another make: returns fading with range,\n"
     "                        a sky brightening 3x over the pass, noise 4x denser at the gate's\n"
-    "                        start, a 40 ps tail, a 2 ms time bias; 800 km; use --day)\n"
+    "                        start, a 40 ps tail, a 2 ms time bias; 800 km; use --day; not with --points)\n"
     "  --points N            exactly N points in the pass (the return probability follows)\n"
     "  --duration S          pass length in seconds (default: the kind's, 600 / 2400 / 300 / 600 /\n"
     "                        900 / 600)\n"
@@ -510,6 +510,11 @@ int cmdBenchSlr(int argc, char** argv) {
     sim::SlrKind kind = sim::SlrKind::Khz;
     if (a.has("--kind") && !sim::parseSlrKind(a.value("--kind"), &kind))
         return fail(cmd, "--kind must be " + sim::slrKindList(), kUsage);
+    if (sim::slrSimPreset(kind).returnRangePower > 0)
+        return fail(cmd, std::string("the ") + sim::slrKindName(kind) +
+                             " kind's returns fade with range over its pass's length: it cannot be made of a given number of "
+                             "points, which the benchmark needs",
+                    kUsage);
     if (!a.getInt("--points", 1000, 20000000, &points, &err) || !a.getInt("--seed", 0, 1LL << 62, &seed, &err) ||
         !a.getDouble("--signal-fraction", 0.001, 1, &fraction, &err))
         return fail(cmd, err, kUsage);

@@ -36,6 +36,10 @@ const char* kTuneUsage =
     "  --preset-out FILE.json  the presets file to write the entry into (required)\n"
     "  --session FILE.json     a workbench session (repeatable): its SLR pass, labelled with the analyst's\n"
     "                          decisions (the session's run with the points forced in or out by hand)\n"
+    "  --cpf FILE|DIR          the O-C of the CRD passes from this prediction (a file or a folder of them),\n"
+    "  --stations FILE.snx     with the station's coordinates (needed with --cpf), as for slr: the passes are\n"
+    "                          tuned on the O-C they are screened on\n"
+    "  --cpf-fallback          a CPF that does not fit a pass: its own TOF trend, with a note (as for slr)\n"
     "  --satellite NAME        only the passes of this satellite (required when the files hold several)\n"
     "  --preset FILE.json      start from the satellite's entry of this presets file\n"
     "  --threads N             threads of the scale search (0: every core, the default)\n"
@@ -48,9 +52,9 @@ const char* kTuneUsage =
 int cmdSlrTune(int argc, char** argv) {
     const std::string cmd = "slr tune";
     Args a(cmd, kTuneUsage);
-    for (const char* o : {"--preset-out", "--satellite", "--preset", "--threads"}) a.option(o, true);
+    for (const char* o : {"--preset-out", "--satellite", "--preset", "--threads", "--cpf", "--stations"}) a.option(o, true);
     a.option("--session", true, true);
-    for (const char* o : {"--quiet", "-q", "--help", "-h"}) a.option(o, false);
+    for (const char* o : {"--quiet", "-q", "--help", "-h", "--cpf-fallback"}) a.option(o, false);
     if (!a.parse(argc, argv, 3)) return fail(cmd, a.error(), kUsage);
     if (a.has("--help") || a.has("-h")) {
         std::cout << kTuneUsage;
@@ -62,6 +66,11 @@ int cmdSlrTune(int argc, char** argv) {
     src.sessions = a.values("--session");
     src.satellite = a.value("--satellite");
     src.presets = a.value("--preset");
+    src.cpf = a.value("--cpf");
+    src.stations = a.value("--stations");
+    src.cpfFallback = a.has("--cpf-fallback");
+    if (a.has("--cpf") && !a.has("--stations"))
+        return fail(cmd, "--cpf and --stations go together (O-C from the prediction needs both)", kUsage);
     const std::string out = a.value("--preset-out");
     long long threads = 0;
     std::string err;

@@ -261,10 +261,82 @@ private slots:
         QCOMPARE(runCli(QStringList{"slr", "tune", "-q"} + leo + QStringList{"--preset-out", named}).exitCode, 0);
         QCOMPARE(lwbtest::readAll(preset), lwbtest::readAll(named));
         QCOMPARE(tuning(named).value("f1_held_out").toDouble(), t.value("f1_held_out").toDouble());
+        // The files tuned on are the inputs of the provenance, each with its checksum (not the folder).
+        const QJsonArray inputs = readJson(preset + ".provenance.json").value("inputs").toArray();
+        QStringList hashed;
+        for (const auto& i : inputs)
+            if (!i.toObject().value("sha256").isNull()) hashed << QFileInfo(i.toObject().value("path").toString()).fileName();
+        QVERIFY2(hashed.contains("leo1.frd") && hashed.contains("leo2.frd") && hashed.contains("blind.frd"), qPrintable(hashed.join(' ')));
+        // A folder with nothing to tune on: every reason said, not a usage error.
+        QTemporaryDir empty;
+        QVERIFY(QFile::copy(archive.path() + "/blind.frd", empty.path() + "/blind.frd"));
+        QVERIFY(QFile::copy(archive.path() + "/broken.frd", empty.path() + "/broken.frd"));
+        r = runCli({"slr", "tune", "-q", empty.path(), "--preset-out", m_dir.path() + "/none.json"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("no pass to tune on") && r.err.contains("blind.frd pass 1: no labels") && r.err.contains("broken.frd"),
+                 qPrintable(r.err));
         // The same blind file named: refused (the analyst asked for it).
         r = runCli({"slr", "tune", archive.path() + "/blind.frd", "--preset-out", m_dir.path() + "/blind2.json"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("every filter flag is 0"), qPrintable(r.err));
+    }
+
+    // With --cpf and --stations the passes are tuned on the O-C they are screened on in
+    // production: on the tenth pass of the shared BLITS station file (its H1-H8 block alone, in a
+    // folder), the F1 the tuning gives it with the prediction is the F1 of what `slr` with the
+    // same prediction delivers, and differs from the one on the pass's own TOF trend (0.9697
+    // against 0.9951 when measured). --cpf alone is a usage error.
+    void tunesOnTheOcOfThePrediction() {
+        if (!lwbtest::haveShared("slr/blits_201206.frd")) QSKIP("shared data not present");
+        QTemporaryDir archive;
+        {
+            const QList<QByteArray> lines = lwbtest::readAll(lwbtest::sharedPath("slr/blits_201206.frd")).split('\n');
+            QByteArray block;
+            int pass = 0;
+            for (const QByteArray& l : lines) {
+                if (l.toUpper().startsWith("H1")) ++pass;
+                if (pass == 10) block += l + '\n';
+            }
+            QVERIFY(block.toUpper().contains("\nH8"));
+            QVERIFY(lwbtest::writeText(archive.path() + "/blits_201206.frd", block + "H9\n"));
+        }
+        const QStringList prediction{"--cpf", lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"), "--stations",
+                                     lwbtest::sharedPath("slr/SLRF2014_POS+VEL_2030.0_200428.snx"), "--cpf-fallback"};
+        const QString withCpf = m_dir.path() + "/blits-cpf.json", own = m_dir.path() + "/blits-own.json";
+        lwbtest::CliRun r = runCli(QStringList{"slr", "tune", "-q", archive.path(), "--satellite", "blits", "--preset-out", withCpf} +
+                                   prediction);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = runCli({"slr", "tune", "-q", archive.path(), "--satellite", "blits", "--preset-out", own});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        auto passF1 = [&](const QString& preset, const QString& name) {
+            for (const auto& p : tuning(preset).value("passes").toArray())
+                if (p.toObject().value("pass").toString().endsWith(name)) return p.toObject().value("f1_before").toDouble();
+            return -1.0;
+        };
+        const double tunedF1 = passF1(withCpf, "blits_201206.frd pass 1"), ownF1 = passF1(own, "blits_201206.frd pass 1");
+        QVERIFY(tunedF1 > 0 && ownF1 > 0);
+        // What slr delivers on that pass with the prediction: the kept column against the flags.
+        const QString csv = m_dir.path() + "/blits10.csv";
+        r = runCli(QStringList{"slr", archive.path() + "/blits_201206.frd", "-q", "-o", csv} + prediction);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        long long tp = 0, fp = 0, fn = 0;
+        const QList<QByteArray> rows = lwbtest::readAll(csv).split('\n');
+        for (qsizetype k = 1; k < rows.size(); ++k) {
+            const QList<QByteArray> f = rows[k].split(',');
+            if (f.size() < 8) continue;
+            const bool kept = f[6] == "1", data = f[7].trimmed() == "2";
+            tp += kept && data, fp += kept && !data, fn += !kept && data;
+        }
+        const double delivered = 2.0 * double(tp) / double(2 * tp + fp + fn);
+        qInfo("BLITS pass 10 of the file: F1 %.4f tuned on the prediction's O-C, %.4f delivered by slr with it, %.4f on its own TOF trend",
+              tunedF1, delivered, ownF1);
+        QVERIFY2(std::fabs(tunedF1 - delivered) < 1e-12, qPrintable(QString("%1 vs %2").arg(tunedF1).arg(delivered)));
+        QVERIFY(std::fabs(tunedF1 - ownF1) > 1e-4);
+        QVERIFY(QJsonDocument(readJson(withCpf + ".provenance.json").value("inputs").toArray()).toJson().contains("blits_cpf_120626"));
+        r = runCli({"slr", "tune", archive.path(), "--cpf", lwbtest::sharedPath("slr/blits_cpf_120626_6801.hts"), "--preset-out",
+                    m_dir.path() + "/x.json"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--cpf and --stations go together"), qPrintable(r.err));
     }
 };
 

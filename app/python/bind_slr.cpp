@@ -372,14 +372,23 @@ void bindPassResult(py::module_& m) {
 
 // tune: laserwb-cli slr tune's task (core tuneSlr, writeTunedPreset), its record as a dict.
 py::dict tunePasses(const py::object& files, const py::object& satellite, const py::object& preset, const py::object& presetOut,
-                    const py::object& threads, const py::object& sessions) {
+                    const py::object& threads, const py::object& sessions, const py::object& cpf, const py::object& stations,
+                    bool cpfFallback) {
     slr::TuneSources src;
+    // (a folder among the files: a station's archive, as for the CLI)
     auto paths = [](const py::object& o, std::vector<std::string>* out) {
         if (o.is_none()) return;
-        if (py::isinstance<py::str>(o) || py::hasattr(o, "__fspath__")) out->push_back(inputPath(o));
+        if (py::isinstance<py::str>(o) || py::hasattr(o, "__fspath__")) out->push_back(inputPath(o, true));
         else
-            for (const py::handle f : o) out->push_back(inputPath(py::reinterpret_borrow<py::object>(f)));
+            for (const py::handle f : o) out->push_back(inputPath(py::reinterpret_borrow<py::object>(f), true));
     };
+    if (!cpf.is_none()) {
+        if (stations.is_none()) throw ParameterError("cpf and stations go together (O-C from the prediction needs both)");
+        src.cpf = fsPath(cpf);
+        requireReadable(src.cpf, true);
+    }
+    if (!stations.is_none()) src.stations = inputPath(stations);
+    src.cpfFallback = cpfFallback;
     paths(files, &src.files);
     paths(sessions, &src.sessions);
     if (!satellite.is_none()) src.satellite = std::string(py::str(satellite));
@@ -431,10 +440,13 @@ void bindRuns(py::module_& m) {
           "provenance.json). Returns one dict per block with summary.csv's columns (text).");
     m.def("tune", &tunePasses, py::arg("files"), py::arg("satellite") = py::none(), py::arg("preset") = py::none(),
           py::arg("preset_out") = py::none(), py::arg("threads") = py::none(), py::arg("sessions") = py::none(),
+          py::arg("cpf") = py::none(), py::arg("stations") = py::none(), py::arg("cpf_fallback") = false,
           "A satellite's parameters from the station's own filter flags, as laserwb-cli slr tune: every pass\n"
-          "of the CRD files (one path or a list; an O-C table with a station_flag column, as slr -o writes it,\n"
-          "with satellite=; sessions: workbench sessions whose pass is labelled by the analyst's edits, as\n"
-          "--session) screened with each candidate, the best mean F1 against the\n"
+          "of the CRD files (one path or a list; a folder: its CRD files, what cannot be tuned on there left\n"
+          "out with the reason in notes; an O-C table with a station_flag column, as slr -o writes it, with\n"
+          "satellite=; sessions: workbench sessions whose pass is labelled by the analyst's edits, as\n"
+          "--session; cpf and stations: the O-C from the prediction, as --cpf, --stations, cpf_fallback as\n"
+          "--cpf-fallback) screened with each candidate, the best mean F1 against the\n"
           "flags chosen (another than the starting point only for a gain beyond 0.001 that loses on no pass\n"
           "more than 0.002), leave-one-pass-out. preset: start from the satellite's entry of this presets\n"
           "file; preset_out: write the entry there (its other entries kept) with its provenance, the CLI's\n"

@@ -320,6 +320,10 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
     std::function<double(long long)> returnOf;
     if (p.returnRangePower > 0) {  // (validate: points = 0, so the shots follow from the pass length)
         const long long n = std::max<long long>(1, std::llround(p.durationS * p.fireRateHz));
+        if (n > 1000000000LL) {
+            out.error = "too many shots (" + std::to_string(n) + "): shorten the pass";
+            return out;
+        }
         drawTrack(static_cast<double>(n) / p.fireRateHz);
         auto weight = [&p, tca = out.tcaSod](long long k) {
             return std::pow(p.tcaDistanceKm * 1e3 / rangeM(p, tca, p.startSod + static_cast<double>(k) / p.fireRateHz),
@@ -328,6 +332,10 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
         double sum = 0;
         for (long long k = 0; k < n; ++k) sum += weight(k);
         const double scale = p.returnProbability * static_cast<double>(n) / sum;
+        if (!(sum > 0) || !std::isfinite(scale)) {
+            out.error = "the returns' fade with range leaves no shot a return probability (closest approach too near)";
+            return out;
+        }
         returnOf = [weight, scale](long long k) { return std::min(1.0, scale * weight(k)); };
     }
     if (!planShots(p, rng, &plan, &out.error, returnOf)) return out;

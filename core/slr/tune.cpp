@@ -61,6 +61,12 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
     }
     const std::vector<SatellitePreset> wanted = {SatellitePreset{sources.satellite, {}, {}, {}}};
     TuneResult out;
+    {  // The settings, checked once (a bad one is no file's reason to be left out).
+        SlrSources check;
+        check.set = sources.set;
+        SlrParams base;
+        if (!resolveBaseParams(check, &base, &out.error)) return out;
+    }
     // The files: each one named, and the CRD files of each folder named (a station's archive).
     // What cannot be tuned on in a folder (a file that does not read, a pass without labels, a
     // normal-point file) is left out with its reason; a file named is refused for it.
@@ -83,6 +89,7 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
         if (crd == 0) out.notes.push_back(file + ": no CRD file in the folder");
     }
     std::vector<OpenTuned> open;
+    for (const Input& input : inputs) out.filesRead.push_back(input.path);
     for (const Input& input : inputs) {
         const std::string& file = input.path;
         // A folder's file that cannot be tuned on: its reason noted, the next one read.
@@ -94,6 +101,11 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
         src.input = file;
         src.set = sources.set;
         src.searchThreads = sources.threads;
+        if (isCrdFile(file)) {
+            src.cpf = sources.cpf;
+            src.stations = sources.stations;
+            src.cpfFallback = sources.cpfFallback;
+        }
         auto plain = std::make_shared<SlrSetup>();
         if (!setUpSlrRun(src, plain.get(), &out.error)) {
             if (!input.inFolder) return out;
@@ -248,7 +260,13 @@ TuneResult tuneSlr(const TuneSources& sources, const Feedback* fb) {
     } catch (const Json::exception& e) {  // a value of the wrong type (a pass number as text, say)
         return failed(session + ": slr: a value of the wrong type (" + e.what() + ")", false);
     }
-    if (open.empty()) return failed("no pass to tune on in the files given" + (out.notes.empty() ? std::string() : ": " + out.notes.front()), true);
+    if (open.empty()) {
+        // Why each file or pass was left out (a folder's own reasons are the answer here).
+        std::string why;
+        for (size_t k = 0; k < out.notes.size() && k < 5; ++k) why += "\n  " + out.notes[k];
+        if (out.notes.size() > 5) why += "\n  ... and " + std::to_string(out.notes.size() - 5) + " more";
+        return failed("no pass to tune on in the files given" + (why.empty() ? std::string() : ":" + why), out.notes.empty());
+    }
     // One satellite: its preset entry is what the tuning writes.
     out.satellite = sources.satellite.empty() ? open.front().pass->satellite : sources.satellite;
     out.ilrsId = open.front().pass->ilrsId;
@@ -397,9 +415,11 @@ bool writeTunedPreset(const TuneResult& r, const TuneSources& sources, const std
     prov.command = "slr tune";
     prov.parameters = slrSchema().toJson(chosen);
     prov.settings = tuneSummary(r);
-    prov.inputs = sources.files;
+    prov.inputs = r.filesRead;  // (a folder's files, each with its checksum)
     prov.inputs.insert(prov.inputs.end(), sources.sessions.begin(), sources.sessions.end());
     prov.inputs.push_back(sources.presets);
+    prov.inputs.push_back(sources.cpf);
+    prov.inputs.push_back(sources.stations);
     // The file and its provenance all or nothing; an existing presets file is read above and
     // replaced on purpose (update), every other input stays protected.
     const std::string text = dumpJson(doc);
@@ -410,7 +430,7 @@ bool writeTunedPreset(const TuneResult& r, const TuneSources& sources, const std
 std::vector<SweepOutcome> sweepSlrParam(const SlrSetup& setup, const PassTask::Inputs& in, const SlrParams& panel,
                                         const std::string& key, const std::vector<double>& values,
                                         const std::vector<uint8_t>& labels, const PassTask::Reuse& reuse,
-                                        const Feedback* fb) {
+                                        Feedback* fb) {
     std::vector<SweepOutcome> out(values.size());
     const auto* field = slrSchema().find(key);
     if (!field || !field->set || !in.pass) return out;
@@ -428,8 +448,8 @@ std::vector<SweepOutcome> sweepSlrParam(const SlrSetup& setup, const PassTask::I
         PassSettings settings;
         SlrError e;
         if (!resolvePassParams(at, *in.pass, &settings, &e)) continue;
-        const PassRunResult r = PassTask::run(in, settings.params, use, nullptr);
-        if (!r.ok) continue;
+        const PassRunResult r = PassTask::run(in, settings.params, use, fb);
+        if (!r.ok || (fb && fb->isCancelled())) continue;
         SweepOutcome& o = out[k];
         o.ok = true;
         const std::vector<uint8_t>& delivered = deliveredFlags(r);

@@ -29,6 +29,11 @@ struct TuneSources {
     /// session's run delivered (its own parameters, prediction and station file) with the points
     /// forced in or out by hand. A session without edits has no decision of the analyst's.
     std::vector<std::string> sessions;
+    /// The prediction and the station coordinates the files' O-C is made from (as the run's
+    /// SlrSources: a CPF needs the stations; not applied to O-C tables, whose O-C is given, nor to
+    /// sessions, which carry their own). Tuned on the O-C the passes are screened on in production.
+    std::string cpf, stations;
+    bool cpfFallback = false;        ///< a CPF that does not fit a pass: its own TOF trend, with a note
     std::string satellite;           ///< only passes of this satellite (matched as presets match)
     std::string presets;             ///< an existing presets file: its entry is the starting point
     std::vector<ParamSetting> set;   ///< over the defaults (or the entry), as --set
@@ -58,6 +63,7 @@ struct TuneResult {
     size_t best = 0;                        ///< index of the chosen candidate
     double heldOutMeanF1 = 0;               ///< mean of TunedPass::heldOutF1
     std::vector<std::string> notes;         ///< passes left out (another satellite, not a pass) and why
+    std::vector<std::string> filesRead;     ///< the files the passes came from (a folder's CRD files by name)
 };
 
 /// Reads the files, keeps the passes of one satellite, refuses a pass without labels (every flag
@@ -93,11 +99,11 @@ struct SweepOutcome {
 /// alone is reused: `reuse.screen` (the last run's screening) for a post-fit row, `reuse.scale`
 /// (the automatic mode's last choice, where the workbench keeps it while C moves) for a
 /// recovery row; nothing for the rows before. `labels` (1 data, per point; empty = none): the
-/// station's flags or a simulation's truth, scored as F1. Cancelled through `fb`: the outcomes so
-/// far, the rest not ok.
+/// station's flags or a simulation's truth, scored as F1. Cancelled through `fb` (within a run
+/// too): the outcomes so far, the rest not ok.
 std::vector<SweepOutcome> sweepSlrParam(const SlrSetup& setup, const PassTask::Inputs& in, const SlrParams& panel,
                                         const std::string& key, const std::vector<double>& values,
                                         const std::vector<uint8_t>& labels, const PassTask::Reuse& reuse,
-                                        const Feedback* fb = nullptr);
+                                        Feedback* fb = nullptr);
 
 }  // namespace lwb::core::slr

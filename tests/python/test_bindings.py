@@ -6,6 +6,7 @@ import glob
 import inspect
 import io
 import json
+import shutil
 import os
 import subprocess
 import threading
@@ -229,6 +230,17 @@ def test_slr_tune_is_the_cli_tune(tmp_path):
         laserwb.slr.tune(str(blind))
     with pytest.raises(FileNotFoundError):
         laserwb.slr.tune([str(tmp_path / "missing.frd")])
+    # a folder (a station's archive): the blind pass left out with its reason, the CLI's bytes
+    archive = tmp_path / "archive"
+    archive.mkdir()
+    for f in files + [str(blind)]:
+        shutil.copy(f, archive)
+    cli("slr", "tune", archive, "--preset-out", tmp_path / "cli_dir.json", "-q")
+    r = laserwb.slr.tune(archive, preset_out=tmp_path / "py_dir.json")
+    same_bytes(tmp_path / "cli_dir.json", tmp_path / "py_dir.json")
+    assert len(r["passes"]) == 2 and any("blind.frd pass 1: no labels" in n for n in r["notes"])
+    assert (json.load(open(tmp_path / "py_dir.json.provenance.json"))["inputs"]
+            == json.load(open(tmp_path / "cli_dir.json.provenance.json"))["inputs"])
     # a workbench session's pass, labelled by the analyst's edits: the CLI's --session, byte for byte
     session = tmp_path / "edits.lwbsession"
     session.write_text(json.dumps({"format": "laserwb-session", "version": 1, "slr": {

@@ -1912,6 +1912,18 @@ private slots:
                 QVERIFY(ready.wait(120000));
                 QCOMPARE(strips->drawn(key).values.size(), size_t(SlrStrips::positions(key)));
             }
+        // A value whose run fails (a time magnification the image cannot hold): the run says so
+        // and no strip is left describing what is no longer shown.
+        const SlrStrips::Drawn magT = strips->drawn("screen.mag_t");
+        for (size_t k = 0; k < magT.outcomes.size(); ++k) {
+            if (magT.outcomes[k].ok) continue;
+            QSignalSpy failedRun(c, &SlrController::runFailed);
+            ws.paramsPanel()->slider("screen.mag_t")->field()->setValue(magT.values[k]);
+            QVERIFY(failedRun.wait(60000));
+            QVERIFY(!strips->busy());
+            for (const std::string& key : SlrStrips::keys()) QVERIFY2(ws.paramsPanel()->slider(key)->stripArea().empty(), key.c_str());
+            break;
+        }
     }
 };
 

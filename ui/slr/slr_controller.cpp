@@ -314,7 +314,9 @@ SlrController::SweepBase SlrController::sweepBase() const {
     b.setup = m_setup;
     b.inputs.pass = m_passData;
     b.inputs.forced = m_forced;
-    if (m_run->screen.ok) b.reuse.screen = std::shared_ptr<const ScreenResult>(m_run, &m_run->screen);
+    // (as the next rerun would: the last screening only while it is the one of the parameters
+    // of now, i.e. no screening is due, after a failed run either)
+    if (!m_screenDue && m_run->screen.ok) b.reuse.screen = std::shared_ptr<const ScreenResult>(m_run, &m_run->screen);
     if (m_reuseScaleForCosine && m_scaleValid && m_params.screen.automatic) b.reuse.scale = m_scale;
     b.params = m_params;
     if (!m_truth.empty() && m_truth.size() == m_pass.t.size()) {
@@ -333,6 +335,7 @@ void SlrController::setParams(const SlrParams& p) {
     const int stage = slrSchema().firstChangedStage(m_params, p);
     m_params = p;
     if (stage < 0) return;
+    emit paramsSet();
     if (stage == kStageOc) {  // the O-C is the pass's own: the pass is opened again with it
         QString err;
         if (!m_path.isEmpty() && !setSources(QString::fromStdString(m_input.cpfPath), QString::fromStdString(m_input.sinexPath), &err))

@@ -185,6 +185,9 @@ signals:
     void runReady(const lwb::ui::SlrRun& run);
     void runFailed(const QString& message);
     void editsChanged();
+    /// New parameters were set (setParams, from the panel, an undo, a tuning's Apply or a
+    /// session): what was computed for the ones before is stale.
+    void paramsSet();
     /// What is known against the passes changed (passError()).
     void passListChanged();
     void status(const QString& message);

@@ -29,14 +29,19 @@ SlrStrips::SlrStrips(SlrController* controller, SlrParamsPanel* panel, QObject* 
     connect(m_timer, &QTimer::timeout, this, &SlrStrips::refresh);
     connect(controller, &SlrController::runReady, m_timer, qOverload<>(&QTimer::start));
     auto stale = [this] {
+        m_timer->stop();
         if (m_work) m_work->cancel();
+        m_done = true;
     };
-    connect(panel, &SlrParamsPanel::paramsChanged, this, stale);
+    connect(controller, &SlrController::paramsSet, this, stale);
     connect(controller, &SlrController::editsChanged, this, stale);
-    connect(controller, &SlrController::passChanged, this, [this, stale] {
+    // A pass changed or a run that failed: no strip describes what is shown.
+    auto clear = [this, stale] {
         stale();
         clearAll();
-    });
+    };
+    connect(controller, &SlrController::passChanged, this, clear);
+    connect(controller, &SlrController::runFailed, this, clear);
 }
 
 SlrStrips::~SlrStrips() {

@@ -8,7 +8,6 @@
 #include <QFileInfo>
 #include <QDialogButtonBox>
 #include <QDialog>
-#include <QDir>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -666,6 +665,12 @@ QDialog* SlrWorkspace::tuneOn(const QString& input, const QString& title) {
     using namespace core::slr;
     TuneSources src;
     src.files = {input.toStdString()};
+    // (on the O-C the open pass is screened on: the workspace's prediction and station file)
+    if (!m_snxPath.isEmpty()) {  // (a CPF is used with a SINEX only, as for the open pass)
+        src.stations = m_snxPath.toStdString();
+        src.cpf = m_cpfPath.toStdString();
+        src.cpfFallback = true;
+    }
     src.satellite = m_controller->pass().satellite;
     if (QFileInfo::exists(m_controller->presetFile())) src.presets = m_controller->presetFile().toStdString();
     bool cancelled = false;
@@ -709,7 +714,7 @@ QDialog* SlrWorkspace::tuneOn(const QString& input, const QString& title) {
                 .arg(tr("mean"), f1(r.candidates[0].meanF1), f1(best.meanF1), f1(r.heldOutMeanF1));
     html += tr("<p><i>Held out: each pass scored with the choice made without it (leave one pass out).</i></p>");
     // (a folder's files by their names, as in the table)
-    const QString folderPrefix = QFileInfo(input).isDir() ? QDir(input).absolutePath() + "/" : QString();
+    const QString folderPrefix = QFileInfo(input).isDir() ? input + (input.endsWith('/') ? "" : "/") : QString();
     for (const std::string& n : r.notes) {
         QString note = QString::fromStdString(n);
         if (!folderPrefix.isEmpty()) note.replace(folderPrefix, QString());
