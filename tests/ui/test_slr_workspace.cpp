@@ -1901,6 +1901,8 @@ private slots:
                 ParamSlider* s = ws.paramsPanel()->slider(key);
                 QSignalSpy run(c, &SlrController::runReady);
                 s->field()->setValue(d.values[size_t(k)]);
+                // (the strips of the parameters before are faint until the new ones are drawn)
+                for (const std::string& other : SlrStrips::keys()) QVERIFY(ws.paramsPanel()->slider(other)->stripStale());
                 if (c->busy() || run.isEmpty()) QVERIFY(run.wait(60000));
                 QVERIFY(c->waitIdle(60000));
                 const QString what = QString("%1 = %2").arg(key.c_str()).arg(d.values[size_t(k)]);
@@ -1911,6 +1913,7 @@ private slots:
                 // ... and the strips are computed again for the parameters of now.
                 QVERIFY(ready.wait(120000));
                 QCOMPARE(strips->drawn(key).values.size(), size_t(SlrStrips::positions(key)));
+                for (const std::string& other : SlrStrips::keys()) QVERIFY(!ws.paramsPanel()->slider(other)->stripStale());
             }
         // A value whose run fails (a time magnification the image cannot hold): the run says so
         // and no strip is left describing what is no longer shown.

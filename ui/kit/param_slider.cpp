@@ -195,12 +195,13 @@ protected:
         // (the active colour also on a slider disabled while its value is automatic: the strip
         // says what setting it by hand would do)
         const QColor accent = s->palette().color(QPalette::Active, QPalette::Highlight);
+        const bool stale = m_owner->m_stripStale;
         if (a.size() >= 2) {
             QColor fill = accent;
-            fill.setAlpha(110);
+            fill.setAlpha(stale ? 40 : 110);
             p.fillPath(path(a, true), fill);
         }
-        if (l.size() >= 2) p.strokePath(path(l, false), QPen(QColor(230, 120, 20), 1.5));
+        if (l.size() >= 2) p.strokePath(path(l, false), QPen(QColor(230, 120, 20, stale ? 70 : 255), 1.5));
         return false;  // the slider paints its groove and handle over it
     }
 
@@ -224,11 +225,19 @@ void ParamSlider::setStrip(std::vector<double> area, std::vector<double> line, c
     m_stripArea = std::move(area);
     m_stripLine = std::move(line);
     m_stripTip = tip;
+    m_stripStale = false;
     m_slider->setToolTip(m_tip + (m_tip.isEmpty() || tip.isEmpty() ? "" : "<br>") + tip);
     m_slider->update();
 }
 
+void ParamSlider::setStripStale(bool stale) {
+    if (stale == m_stripStale) return;
+    m_stripStale = stale;
+    m_slider->update();
+}
+
 void ParamSlider::clearStrip() {
+    m_stripStale = false;
     if (m_stripArea.empty() && m_stripLine.empty()) return;
     m_stripArea.clear();
     m_stripLine.clear();

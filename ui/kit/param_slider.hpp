@@ -58,6 +58,10 @@ public:
     /// slider's tooltip. clearStrip() takes it away.
     void setStrip(std::vector<double> area, std::vector<double> line, const QString& tip);
     void clearStrip();
+    /// The strip describes parameters no longer set (a new one is being computed): drawn faint
+    /// until setStrip or clearStrip.
+    void setStripStale(bool stale);
+    bool stripStale() const { return m_stripStale; }
     const std::vector<double>& stripArea() const { return m_stripArea; }
     const std::vector<double>& stripLine() const { return m_stripLine; }
 
@@ -86,6 +90,7 @@ private:
     QString m_tip;               ///< the row's tooltip (the exact value is added to it)
     std::vector<double> m_stripArea, m_stripLine;  ///< setStrip's
     QString m_stripTip;
+    bool m_stripStale = false;
     friend class StripPainter;
 };
 

@@ -32,6 +32,9 @@ SlrStrips::SlrStrips(SlrController* controller, SlrParamsPanel* panel, QObject* 
         m_timer->stop();
         if (m_work) m_work->cancel();
         m_done = true;
+        // (drawn faint until the strips of the parameters of now replace them)
+        for (const std::string& key : keys())
+            if (ParamSlider* s = m_panel->slider(key)) s->setStripStale(true);
     };
     connect(controller, &SlrController::paramsSet, this, stale);
     connect(controller, &SlrController::editsChanged, this, stale);

@@ -7,7 +7,8 @@
 // where the pass has any (a simulation's truth, the station's filter flags), else the post-fit's
 // RMS. Each value is the pass task as the rerun after that change would run it (core
 // sweepSlrParam: the same resolution, the same stages reused). Computed in the background after
-// every run, strip by strip (each drawn when it is ready), the work of the one before cancelled;
+// every run, strip by strip (each drawn when it is ready), the work of the one before cancelled
+// and its strips drawn faint until replaced;
 // not on passes of more than kMaxPoints points (a tooltip says so): a screening slider's strip is
 // the pass screened kScreenPositions times (the five strips: 2.6 s of the two cores on a
 // 7 400-point pass).
