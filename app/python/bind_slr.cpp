@@ -56,10 +56,7 @@ struct PassRun {
 }
 
 // The MJD of a CRD pass's day (its epochs are seconds of that day), None for an O-C table.
-py::object startMjd(const slr::PassData& d) {
-    if (!d.hasCrd || !d.crd || d.passIndex < 0 || static_cast<size_t>(d.passIndex) >= d.crd->passes.size()) return py::none();
-    return py::int_(d.crd->passes[static_cast<size_t>(d.passIndex)].startMjd());
-}
+py::object startMjd(const slr::PassData& d) { return d.hasCrd ? py::object(py::int_(d.startMjd)) : py::none(); }
 
 py::dict summaryDict(const slr::PassSummary& s) {
     return py::dict("pass_number"_a = s.index + 1, "satellite"_a = s.satellite, "ilrs_id"_a = s.ilrsId, "station"_a = s.station,

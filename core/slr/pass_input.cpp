@@ -553,6 +553,7 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
     }
     d.altitudeKm = altitudeKm;
     d.hasCrd = true;
+    d.startMjd = pass.startMjd();
     d.crd = std::shared_ptr<const CrdFile>(shared, &shared->file);
     r.ok = true;
     return r;

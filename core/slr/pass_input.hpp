@@ -93,6 +93,7 @@ struct PassData {
     std::vector<size_t> rangeIndex;///< CrdPass::ranges index per point (CRD)
     double altitudeKm = 0;         ///< satellite altitude estimate for the normal-point bin (0 = unknown)
     bool hasCrd = false;
+    long startMjd = 0;             ///< MJD of the day the epochs count from (a CRD pass's H4 start day); 0 for an O-C table
     /// The file as read (for writing back), shared with every pass taken from the same reading:
     /// a file of 20 000 passes is not copied once per pass.
     std::shared_ptr<const CrdFile> crd;

@@ -1894,10 +1894,12 @@ private slots:
             for (uint8_t f : lwb::core::slr::deliveredFlags(c->run())) n += f != 0;
             return n;
         };
+        int compared = 0;
         for (const std::string key : {"screen.cosine_c", "postfit.reject_sigma"})
             for (int k : {3, 8}) {
                 const SlrStrips::Drawn d = strips->drawn(key);
                 if (!d.outcomes[size_t(k)].ok) continue;
+                ++compared;
                 ParamSlider* s = ws.paramsPanel()->slider(key);
                 QSignalSpy run(c, &SlrController::runReady);
                 s->field()->setValue(d.values[size_t(k)]);
@@ -1915,18 +1917,17 @@ private slots:
                 QCOMPARE(strips->drawn(key).values.size(), size_t(SlrStrips::positions(key)));
                 for (const std::string& other : SlrStrips::keys()) QVERIFY(!ws.paramsPanel()->slider(other)->stripStale());
             }
+        QCOMPARE(compared, 4);  // (every place asked for has a run on this pass)
         // A value whose run fails (a time magnification the image cannot hold): the run says so
         // and no strip is left describing what is no longer shown.
         const SlrStrips::Drawn magT = strips->drawn("screen.mag_t");
-        for (size_t k = 0; k < magT.outcomes.size(); ++k) {
-            if (magT.outcomes[k].ok) continue;
-            QSignalSpy failedRun(c, &SlrController::runFailed);
-            ws.paramsPanel()->slider("screen.mag_t")->field()->setValue(magT.values[k]);
-            QVERIFY(failedRun.wait(60000));
-            QVERIFY(!strips->busy());
-            for (const std::string& key : SlrStrips::keys()) QVERIFY2(ws.paramsPanel()->slider(key)->stripArea().empty(), key.c_str());
-            break;
-        }
+        const auto fails = std::find_if(magT.outcomes.begin(), magT.outcomes.end(), [](const auto& o) { return !o.ok; });
+        QVERIFY2(fails != magT.outcomes.end(), "this pass has a time magnification along the strip whose run fails");
+        QSignalSpy failedRun(c, &SlrController::runFailed);
+        ws.paramsPanel()->slider("screen.mag_t")->field()->setValue(magT.values[size_t(fails - magT.outcomes.begin())]);
+        QVERIFY(failedRun.wait(60000));
+        QVERIFY(!strips->busy());
+        for (const std::string& key : SlrStrips::keys()) QVERIFY2(ws.paramsPanel()->slider(key)->stripArea().empty(), key.c_str());
     }
 };
 
