@@ -917,7 +917,7 @@ bool setAsideUnusablePasses(Sink* sink, CrdReadResult* res) {
 
 void CrdRanges::reserve(size_t n) {
     for (auto* v : {&m_sod, &m_tof}) v->reserve(n);
-    for (auto* v : {&m_config, &m_record, &m_line}) v->reserve(n);
+    for (auto* v : {&m_record, &m_line}) v->reserve(n);
     for (auto* v : {&m_event, &m_flag}) v->reserve(n);
 }
 
@@ -929,7 +929,7 @@ CrdRange CrdRanges::operator[](size_t i) const {
     CrdRange r;
     r.secOfDay = m_sod[i];
     r.tofS = m_tof[i];
-    r.configId = m_configIds[m_config[i]];
+    r.configId = m_configIds[m_config.at(i)];
     r.epochEvent = m_event[i];
     r.filterFlag = m_flag[i];
     r.detectorChannel = m_channel.at(i);
@@ -947,13 +947,14 @@ void CrdRanges::push_back(const CrdRange& r) {
     m_tof.push_back(r.tofS);
     // (a pass has a few configuration ids; the last one used is the likeliest)
     uint32_t id = 0;
-    if (!m_config.empty() && m_configIds[m_config.back()] == r.configId) {
-        id = m_config.back();
+    if (n > 0 && m_configIds[m_lastConfig] == r.configId) {
+        id = m_lastConfig;
     } else {
         while (id < m_configIds.size() && m_configIds[id] != r.configId) ++id;
         if (id == m_configIds.size()) m_configIds.push_back(r.configId);
     }
-    m_config.push_back(id);
+    m_config.push(id, n);
+    m_lastConfig = id;
     m_event.push_back(static_cast<int8_t>(r.epochEvent));  // (0..6, checked by the reader)
     m_flag.push_back(static_cast<int8_t>(r.filterFlag));   // (0..2)
     m_channel.push(r.detectorChannel, n);
@@ -968,14 +969,14 @@ void CrdRanges::push_back(const CrdRange& r) {
 
 void CrdRanges::erase(size_t i) {
     auto at = [i](auto& v) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(i)); };
-    at(m_sod), at(m_tof), at(m_config), at(m_event), at(m_flag), at(m_record), at(m_line);
-    m_channel.erase(i), m_stop.erase(i), m_rxAmp.erase(i), m_txAmp.erase(i);
+    at(m_sod), at(m_tof), at(m_event), at(m_flag), at(m_record), at(m_line);
+    m_config.erase(i), m_channel.erase(i), m_stop.erase(i), m_rxAmp.erase(i), m_txAmp.erase(i);
 }
 
 size_t CrdRanges::bytes() const {
     size_t b = (m_sod.capacity() + m_tof.capacity()) * sizeof(double) +
-               (m_config.capacity() + m_record.capacity() + m_line.capacity()) * sizeof(uint32_t) + m_event.capacity() +
-               m_flag.capacity() + m_channel.bytes() + m_stop.bytes() + m_rxAmp.bytes() + m_txAmp.bytes();
+               (m_record.capacity() + m_line.capacity()) * sizeof(uint32_t) + m_event.capacity() + m_flag.capacity() +
+               m_config.bytes() + m_channel.bytes() + m_stop.bytes() + m_rxAmp.bytes() + m_txAmp.bytes();
     for (const auto& s : m_configIds) b += sizeof(s) + s.capacity();
     return b;
 }

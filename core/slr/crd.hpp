@@ -214,7 +214,7 @@ public:
     int epochEvent(size_t i) const { return m_event[i]; }
     size_t record(size_t i) const { return m_record[i]; }
     long line(size_t i) const { return static_cast<long>(m_line[i]); }
-    const std::string& configId(size_t i) const { return m_configIds[m_config[i]]; }
+    const std::string& configId(size_t i) const { return m_configIds[m_config.at(i)]; }
     /// Bytes held (the benchmark's accounting).
     size_t bytes() const;
 
@@ -243,8 +243,9 @@ public:
 
 private:
     std::vector<double> m_sod, m_tof;
-    std::vector<uint32_t> m_config;         ///< index into m_configIds
+    CrdLazyColumn<uint32_t> m_config;       ///< index into m_configIds (one value throughout: no column)
     std::vector<std::string> m_configIds;
+    uint32_t m_lastConfig = 0;              ///< the last record's (the likeliest for the next one)
     std::vector<int8_t> m_event, m_flag;
     std::vector<uint32_t> m_record, m_line;
     CrdLazyColumn<int32_t> m_channel, m_stop;

@@ -296,7 +296,7 @@ OcResult computeOc(const CrdPass& pass, const CpfFile& cpf, const Eigen::Vector3
             res.elevation_rad.push_back(el);
             res.azimuth_rad.push_back(az);
             res.refraction_s.push_back(refrS);
-            res.range_index.push_back(i);
+            res.range_index.push_back(static_cast<uint32_t>(i));
             res.line.push_back(r.line);
             res.filter_flag.push_back(r.filterFlag);
         }
@@ -412,8 +412,51 @@ bool residualsOfAll(size_t n, const Design& design, const Eigen::VectorXd& coef,
     return true;
 }
 
-std::vector<double> slice(const std::vector<double>& v, size_t b, size_t e) {
-    return std::vector<double>(v.begin() + static_cast<long>(b), v.begin() + static_cast<long>(e));
+// A pass's epochs t (s) and what the trends take of them: the normalised time x in [-1, 1] and s
+// = t - t_mid, computed where they are needed (for a kHz pass each as a whole column was 8 bytes
+// an event more at the trend's peak, issue 44); the same expressions, so the same values.
+struct Epochs {
+    const std::vector<double>& t;
+    double t0, t1, tm;
+    size_t size() const { return t.size(); }
+    double x(size_t i) const { return 2 * (t[i] - t0) / (t1 - t0) - 1; }
+    double s(size_t i) const { return t[i] - tm; }
+    std::vector<double> xs(size_t b, size_t e) const {
+        std::vector<double> v(e - b);
+        for (size_t i = b; i < e; ++i) v[i - b] = x(i);
+        return v;
+    }
+    std::vector<double> ss(size_t b, size_t e) const {
+        std::vector<double> v(e - b);
+        for (size_t i = b; i < e; ++i) v[i - b] = s(i);
+        return v;
+    }
+    std::vector<double> xsAt(const std::vector<size_t>& at) const {
+        std::vector<double> v(at.size());
+        for (size_t k = 0; k < at.size(); ++k) v[k] = x(at[k]);
+        return v;
+    }
+    std::vector<double> ssAt(const std::vector<size_t>& at) const {
+        std::vector<double> v(at.size());
+        for (size_t k = 0; k < at.size(); ++k) v[k] = s(at[k]);
+        return v;
+    }
+};
+
+// The squared TOF (ms^2) of the records `at` (or all): tofMs(i) * tofMs(i), as a column only
+// where a fit needs it.
+Eigen::VectorXd squaredAt(const Eigen::VectorXd& tofMs, const std::vector<size_t>& at) {
+    Eigen::VectorXd out(static_cast<Eigen::Index>(at.size()));
+    for (size_t k = 0; k < at.size(); ++k) {
+        const double v = tofMs(static_cast<Eigen::Index>(at[k]));
+        out(static_cast<Eigen::Index>(k)) = v * v;
+    }
+    return out;
+}
+Eigen::VectorXd squared(const Eigen::VectorXd& tofMs) {
+    Eigen::VectorXd out(tofMs.size());
+    for (Eigen::Index i = 0; i < tofMs.size(); ++i) out(i) = tofMs(i) * tofMs(i);
+    return out;
 }
 
 }  // namespace
@@ -591,21 +634,23 @@ bool arcIsAnOrbit(const Eigen::VectorXd& coef, double omega, int degree) {
 // The best arc for a polynomial of `degree` under it: w on a log grid over [5e-5, 1.4e-3] rad/s,
 // refined by golden section, each w scored by the robust scale of its Huber fit (on at most 600
 // points, evenly taken); the final fit at the best w on every point (at most fitMaxPoints).
-ArcFit fitArc(const std::vector<double>& x, const std::vector<double>& s, const Eigen::VectorXd& tofMs,
-              const Eigen::VectorXd& ysq, int degree, int rotation, const TrendOcParams& params) {
+ArcFit fitArc(const Epochs& ep, const Eigen::VectorXd& tofMs, int degree, int rotation, const TrendOcParams& params) {
     ArcFit best;
     const bool checkOrbit = true;
-    const size_t n = x.size();
+    const size_t n = ep.size();
     const size_t step = std::max<size_t>(1, (n + 599) / 600);
     std::vector<double> xs, ss;
     std::vector<Eigen::Index> pick;
     for (size_t i = 0; i < n; i += step) {
-        xs.push_back(x[i]);
-        ss.push_back(s[i]);
+        xs.push_back(ep.x(i));
+        ss.push_back(ep.s(i));
         pick.push_back(static_cast<Eigen::Index>(i));
     }
     Eigen::VectorXd ts(static_cast<Eigen::Index>(pick.size())), ys(ts.size());
-    for (Eigen::Index k = 0; k < ts.size(); ++k) ts(k) = tofMs(pick[static_cast<size_t>(k)]), ys(k) = ysq(pick[static_cast<size_t>(k)]);
+    for (Eigen::Index k = 0; k < ts.size(); ++k) {
+        const double v = tofMs(pick[static_cast<size_t>(k)]);
+        ts(k) = v, ys(k) = v * v;
+    }
     const Eigen::MatrixXd polySub = legendre(xs, degree);
     const int iters = std::min(params.maxIterations, 30);
     auto score = [&](double lw) {
@@ -634,15 +679,15 @@ ArcFit fitArc(const std::vector<double>& x, const std::vector<double>& s, const 
     best.rotation = rotation;
     Eigen::VectorXd coef;
     if (n <= params.fitMaxPoints) {
-        const Eigen::MatrixXd a2 = arcDesign(legendre(x, degree), s, best.omega, rotation);
-        best.scale = robustArcResiduals(a2, tofMs, ysq, params.huberK, params.maxIterations, 3, &best.resid, &coef);
+        const Eigen::MatrixXd a2 = arcDesign(legendre(ep.xs(0, n), degree), ep.ss(0, n), best.omega, rotation);
+        best.scale = robustArcResiduals(a2, tofMs, squared(tofMs), params.huberK, params.maxIterations, 3, &best.resid, &coef);
     } else {  // (a kHz pass: fitted on fitMaxPoints of its records)
         const std::vector<size_t> at = evenlyTaken(n, params.fitMaxPoints);
         Eigen::VectorXd rf;
-        best.scale = robustArcResiduals(arcDesign(legendre(takeAt(x, at), degree), takeAt(s, at), best.omega, rotation),
-                                        takeAt(tofMs, at), takeAt(ysq, at), params.huberK, params.maxIterations, 3, &rf, &coef);
+        best.scale = robustArcResiduals(arcDesign(legendre(ep.xsAt(at), degree), ep.ssAt(at), best.omega, rotation),
+                                        takeAt(tofMs, at), squaredAt(tofMs, at), params.huberK, params.maxIterations, 3, &rf, &coef);
         const auto design = [&](size_t b, size_t e) {
-            return arcDesign(legendre(slice(x, b, e), degree), slice(s, b, e), best.omega, rotation);
+            return arcDesign(legendre(ep.xs(b, e), degree), ep.ss(b, e), best.omega, rotation);
         };
         if (std::isfinite(best.scale) && !residualsOfAll(n, design, coef, tofMs, &best.resid)) best.scale = NAN;
     }
@@ -706,13 +751,12 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         }
         const std::string name = passName(pass);
         res.startMjd = pass.startMjd();
-        std::vector<double> t, y;
-        std::vector<size_t> idx;
-        t.reserve(pass.ranges.size()), y.reserve(pass.ranges.size()), idx.reserve(pass.ranges.size());
+        std::vector<double> t;
+        std::vector<uint32_t> idx;
+        t.reserve(pass.ranges.size()), idx.reserve(pass.ranges.size());
         for (size_t i = 0; i < pass.ranges.size(); ++i) {
             t.push_back(pass.passSeconds(pass.ranges.secOfDay(i)));
-            y.push_back(pass.ranges.tofS(i));
-            idx.push_back(i);
+            idx.push_back(static_cast<uint32_t>(i));
         }
         if (static_cast<int>(t.size()) < params.minPoints) {
             res.error = name + ": " + std::to_string(t.size()) + " full-rate records; at least " +
@@ -732,28 +776,25 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         const std::string lowered = degree < params.degree ? name + ": trend degree lowered to " + std::to_string(degree) +
                                                                  " for " + std::to_string(t.size()) + " records"
                                                            : std::string();
-        std::vector<double> x(t.size());
-        for (size_t i = 0; i < t.size(); ++i) x[i] = 2 * (t[i] - t0) / (t1 - t0) - 1;
+        const Epochs ep{t, t0, t1, 0.5 * (t0 + t1)};
         // The polynomial models the squared time of flight (ms^2): a pass's range is close to
         // sqrt(d^2 + v^2 (t - t0)^2), so its square is nearly quadratic in time and a low degree
         // reaches the ranging noise where a polynomial in the range itself needs degree > 12.
         const Eigen::Index nn = static_cast<Eigen::Index>(t.size());
-        Eigen::VectorXd ysq(nn), tofMs(nn);
-        for (Eigen::Index i = 0; i < nn; ++i) {
-            tofMs(i) = y[static_cast<size_t>(i)] * 1e3;
-            ysq(i) = tofMs(i) * tofMs(i);
-        }
+        Eigen::VectorXd tofMs(nn);
+        for (Eigen::Index i = 0; i < nn; ++i) tofMs(i) = pass.ranges.tofS(static_cast<size_t>(i)) * 1e3;
         Eigen::VectorXd resid;
         double scale = NAN;
         int fit;
         if (t.size() <= params.fitMaxPoints) {
-            fit = robustTofTrend(legendre(x, degree), tofMs, ysq, params, feedback, &resid, &scale, nullptr);
+            fit = robustTofTrend(legendre(ep.xs(0, t.size()), degree), tofMs, squared(tofMs), params, feedback, &resid, &scale,
+                                 nullptr);
         } else {  // (a kHz pass: fitted on fitMaxPoints of its records, the residuals of all)
             const std::vector<size_t> at = evenlyTaken(t.size(), params.fitMaxPoints);
             Eigen::VectorXd coef;
-            fit = robustTofTrend(legendre(takeAt(x, at), degree), takeAt(tofMs, at), takeAt(ysq, at), params, feedback, &resid,
-                                 &scale, &coef);
-            const auto design = [&](size_t b, size_t e) { return legendre(slice(x, b, e), degree); };
+            fit = robustTofTrend(legendre(ep.xsAt(at), degree), takeAt(tofMs, at), squaredAt(tofMs, at), params, feedback,
+                                 &resid, &scale, &coef);
+            const auto design = [&](size_t b, size_t e) { return legendre(ep.xs(b, e), degree); };
             if (fit > 0 && !residualsOfAll(t.size(), design, coef, tofMs, &resid)) fit = 0;
             if (fit > 0) {
                 std::vector<double> absr(t.size());
@@ -778,9 +819,6 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         // scatter, and a lower BIC (n ln(scale^2) + k ln n) than the polynomial's.
         ArcFit arc, start;  // (start: the plain arc, whose rate centres the circular orbit's search)
         if (params.orbitArc && n >= 8 && std::isfinite(scale)) {
-            std::vector<double> s(t.size());
-            const double tm = 0.5 * (t0 + t1);
-            for (size_t i = 0; i < t.size(); ++i) s[i] = t[i] - tm;
             // (polynomial degree, rotation terms): 4 + degree + 2 rotation parameters, each model
             // with 4 records more than parameters.
             for (const auto& [p, rot] : {std::pair{0, 0}, {0, 1}, {0, 2}}) {
@@ -790,8 +828,11 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
                     res.error = "cancelled";
                     return res;
                 }
-                ArcFit f = fitArc(x, s, tofMs, ysq, p, rot, params);
-                if (rot == 0 && f.coef.size() >= 3 && std::isfinite(f.omega)) start = f;
+                ArcFit f = fitArc(ep, tofMs, p, rot, params);
+                if (rot == 0 && f.coef.size() >= 3 && std::isfinite(f.omega)) {
+                    start.omega = f.omega;  // (its rate and coefficients: not a copy of its residuals)
+                    start.coef = f.coef;
+                }
                 if (f.ok && f.bic < arc.bic) arc = std::move(f);
             }
             const double nd = static_cast<double>(n);
@@ -802,7 +843,7 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             // halves the scatter and has the lower BIC (a dense pass's scatter is its gate's
             // noise, which either model follows: the polynomial stays unless the arc is clearly better).
             if (arc.ok && (n < 50 || arc.scale <= 0.5 * scale) && arc.bic < polyBic) {
-                resid = arc.resid;
+                resid.swap(arc.resid);
                 res.trendDegree = arc.degree;
                 res.trendScaleS = arc.scale * 1e-3;
                 res.trendArcRateRadS = arc.omega;
@@ -822,12 +863,12 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             cp.arcRate = start.omega;
             cp.stationEcef = ecefFromGeodetic(station->latDeg, station->lonDeg, station->heightM);
             const double lim = 5 * std::max(res.trendScaleS, 1e-12);
-            std::vector<double> s(t.size()), w(t.size());
-            const double tm = 0.5 * (t0 + t1);
+            std::vector<double> s(t.size()), w(t.size()), y(t.size());
             double ssRef = 0, m = 0;
             for (size_t i = 0; i < t.size(); ++i) {
                 const double r = resid(static_cast<Eigen::Index>(i)) * 1e-3;
-                s[i] = t[i] - tm;
+                s[i] = ep.s(i);
+                y[i] = pass.ranges.tofS(idx[i]);
                 w[i] = std::fabs(r) <= lim ? 1.0 : 0.0;
                 ssRef += w[i] * r * r;
                 m += w[i];
@@ -856,16 +897,23 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             }
         }
 
-        // Elevation/azimuth from the pointing records (type 30), when there are some.
-        // (every column sized once: a column grown by doubling held up to 1.5 copies of itself)
-        const PointingAngles angles(pass);
+        // The columns, each sized once (a column grown by doubling held up to 1.5 copies of
+        // itself), the O-C first so that the fit's columns are freed before the others are made
+        // (issue 44: a kHz pass's peak was here). Elevation and azimuth from the pointing records
+        // (type 30) when there are some, else no column; no refraction column (none is computed).
         const size_t points = t.size();
-        res.oc_s.resize(points), res.tof_s.resize(points), res.elevation_rad.resize(points), res.azimuth_rad.resize(points);
-        res.refraction_s.assign(points, 0.0), res.line.resize(points), res.filter_flag.resize(points);
+        res.oc_s.resize(points);
+        for (size_t i = 0; i < points; ++i) res.oc_s[i] = resid(static_cast<Eigen::Index>(i)) * 1e-3;
+        resid = Eigen::VectorXd();
+        tofMs = Eigen::VectorXd();
+        if (!pass.pointing.empty()) {
+            const PointingAngles angles(pass);
+            res.elevation_rad.resize(points), res.azimuth_rad.resize(points);
+            for (size_t i = 0; i < points; ++i) angles.at(t[i], &res.azimuth_rad[i], &res.elevation_rad[i]);
+        }
+        res.tof_s.resize(points), res.line.resize(points), res.filter_flag.resize(points);
         for (size_t i = 0; i < points; ++i) {
             const size_t k = idx[i];
-            angles.at(t[i], &res.azimuth_rad[i], &res.elevation_rad[i]);
-            res.oc_s[i] = resid(static_cast<Eigen::Index>(i)) * 1e-3;
             res.tof_s[i] = pass.ranges.tofS(k);
             res.line[i] = pass.ranges.line(k);
             res.filter_flag[i] = pass.ranges.filterFlag(k);

@@ -28,6 +28,7 @@
 // gate centre or the track; either way the O-C is relative to a fitted trend, not to an orbit:
 // a range bias and a smooth drift are absorbed (the result says so in a warning).
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -76,9 +77,12 @@ struct OcResult {
     std::vector<double> oc_s;           ///< observed - computed two-way time of flight (s)
     std::vector<double> tof_s;          ///< observed two-way time of flight (s)
     std::vector<double> elevation_rad;  ///< elevation of the target at bounce (geometric; rad); NaN when unknown
-    std::vector<double> azimuth_rad;    ///< azimuth from north through east (rad); NaN when unknown
-    std::vector<double> refraction_s;   ///< two-way tropospheric delay included in the computed value (s; 0 when off)
-    std::vector<size_t> range_index;    ///< index into CrdPass::ranges (the source type-10 record)
+                                        ///< (computeTrendOc: empty when the pass has no pointing records)
+    std::vector<double> azimuth_rad;    ///< azimuth from north through east (rad); NaN when unknown (as elevation)
+    std::vector<double> refraction_s;   ///< two-way tropospheric delay included in the computed value (s; 0 when off;
+                                        ///< empty from computeTrendOc, which computes none)
+    std::vector<uint32_t> range_index;  ///< index into CrdPass::ranges (the source type-10 record; a pass of 2^32
+                                        ///< records is refused before it is read)
     std::vector<long> line;             ///< source line of the record
     std::vector<int> filter_flag;       ///< the record's filter flag (0 unknown, 1 noise, 2 data)
 

@@ -5,6 +5,7 @@
 // (a warning says so); a plain O-C table (CSV, header epoch_s,oc_s) is used as it is. The
 // writers of a screened pass (CRD full rate with filter flags, normal points, the per-point CSV)
 // are in pass_output.hpp.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -90,7 +91,7 @@ struct PassData {
     std::vector<double> oc;        ///< O-C (s, two-way)
     std::vector<double> tof;       ///< observed two-way TOF (s); empty for O-C tables
     std::vector<int> stationFlag;  ///< the station's filter flag per point (CRD), empty otherwise
-    std::vector<size_t> rangeIndex;///< CrdPass::ranges index per point (CRD)
+    std::vector<uint32_t> rangeIndex;  ///< CrdPass::ranges index per point (CRD)
     double altitudeKm = 0;         ///< satellite altitude estimate for the normal-point bin (0 = unknown)
     bool hasCrd = false;
     long startMjd = 0;             ///< MJD of the day the epochs count from (a CRD pass's H4 start day); 0 for an O-C table
