@@ -122,8 +122,10 @@ private slots:
         mp.magOc = 1e9;
         const BinaryImage img = buildBinaryImage({-5.0, -4.0, 3.0}, {-2e-9, 7e-9, 0.0}, mp);
         QVERIFY2(img.ok, img.error.c_str());
-        QCOMPARE(*std::min_element(img.pixelRow.begin(), img.pixelRow.end()), int64_t(0));
-        QCOMPARE(*std::min_element(img.pixelCol.begin(), img.pixelCol.end()), int64_t(0));
+        int64_t minRow = INT64_MAX, minCol = INT64_MAX;
+        for (size_t p = 0; p < img.pixelCount(); ++p) minRow = std::min(minRow, img.pixelRow[p]), minCol = std::min(minCol, img.pixelCol[p]);
+        QCOMPARE(minRow, int64_t(0));
+        QCOMPARE(minCol, int64_t(0));
         QCOMPARE(img.rowOffset, int64_t(-50));
         QCOMPARE(img.colOffset, int64_t(-2));
         QCOMPARE(img.rows, int64_t(81));  // rows −50..30

@@ -103,7 +103,8 @@ inline bool mapOne(double t, double oc, double magT, double magOc, int64_t* row,
 // Labelling: pixels sorted by (row, col), so the neighbours of a pixel in the row above form a
 // contiguous run found with a moving pointer, and the left neighbour is the previous pixel.
 // 4-connectivity links (r, c−1) and (r−1, c); 8 adds (r−1, c±1). False when cancelled.
-bool linkPixels(const int64_t* row, const int64_t* col, size_t pixels, bool eight, UnionFind& uf, const Feedback* fb) {
+template <class Coord>
+bool linkPixels(const Coord* row, const Coord* col, size_t pixels, bool eight, UnionFind& uf, const Feedback* fb) {
     size_t rowStart = 0, prevStart = 0, prevEnd = 0;  // current row run start; previous row run [prevStart, prevEnd)
     bool havePrev = false;
     size_t j = 0;  // pointer into the previous row
@@ -112,7 +113,7 @@ bool linkPixels(const int64_t* row, const int64_t* col, size_t pixels, bool eigh
         if (p == 0 || r != row[p - 1]) {
             // New row: the previous row run is the one just finished, if it is exactly r − 1.
             if (p > 0) {
-                havePrev = row[p - 1] == r - 1;
+                havePrev = static_cast<int64_t>(row[p - 1]) == r - 1;
                 prevStart = rowStart;
                 prevEnd = p;
             }
@@ -121,17 +122,17 @@ bool linkPixels(const int64_t* row, const int64_t* col, size_t pixels, bool eigh
         }
         // p's root, kept here: p joins the regions of earlier pixels only.
         uint32_t rootP = static_cast<uint32_t>(p);
-        if (p > rowStart && col[p - 1] == c - 1) uf.attach(static_cast<uint32_t>(p - 1), rootP);
+        if (p > rowStart && static_cast<int64_t>(col[p - 1]) == c - 1) uf.attach(static_cast<uint32_t>(p - 1), rootP);
         if (havePrev) {
             const int64_t lo = eight ? c - 1 : c, hi = eight ? c + 1 : c;
             // The pointer advances by a data-dependent 0, 1, 2 … pixels: two steps without a
             // branch (col[prevEnd] is this row's first pixel, so the read stays in the image),
             // then the loop for the rest, which is seldom needed (a loop's varying trip count was
             // mispredicted at most pixels).
-            j += static_cast<size_t>(j < prevEnd) & static_cast<size_t>(col[j] < lo);
-            j += static_cast<size_t>(j < prevEnd) & static_cast<size_t>(col[j] < lo);
-            while (j < prevEnd && col[j] < lo) ++j;
-            for (size_t k = j; k < prevEnd && col[k] <= hi; ++k) uf.attach(static_cast<uint32_t>(k), rootP);
+            j += static_cast<size_t>(j < prevEnd) & static_cast<size_t>(static_cast<int64_t>(col[j]) < lo);
+            j += static_cast<size_t>(j < prevEnd) & static_cast<size_t>(static_cast<int64_t>(col[j]) < lo);
+            while (j < prevEnd && static_cast<int64_t>(col[j]) < lo) ++j;
+            for (size_t k = j; k < prevEnd && static_cast<int64_t>(col[k]) <= hi; ++k) uf.attach(static_cast<uint32_t>(k), rootP);
         }
         if ((p & 0xFFFFF) == 0xFFFFF && cancelled(fb)) return false;
     }
@@ -270,8 +271,9 @@ size_t buildPixels(const SortItem* items, size_t n, const PixelKeys& k, BinaryIm
     size_t pixels = 0;
     for (size_t i = 0; i < n; ++i)
         if (i == 0 || items[i].key != items[i - 1].key || items[i].key2 != items[i - 1].key2) ++pixels;
-    img.pixelRow.reserve(pixels);
-    img.pixelCol.reserve(pixels);
+    const bool wide = static_cast<uint64_t>(img.rows - 1) > UINT32_MAX || static_cast<uint64_t>(img.cols - 1) > UINT32_MAX;
+    img.pixelRow.reset(pixels, wide);
+    img.pixelCol.reset(pixels, wide);
     img.pixelPointStart.reserve(pixels + 1);
     for (size_t i = 0; i < n; ++i) {
         if (i == 0 || items[i].key != items[i - 1].key || items[i].key2 != items[i - 1].key2) {
@@ -381,7 +383,10 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
     const size_t pixels = buildPixels(items.get(), n, keys, img);
     items.reset();
     UnionFind uf(pixels);
-    if (!linkPixels(img.pixelRow.data(), img.pixelCol.data(), pixels, params.connectivity == 8, uf, fb)) {
+    const bool linked = img.pixelRow.wide()
+                            ? linkPixels(img.pixelRow.wideData(), img.pixelCol.wideData(), pixels, params.connectivity == 8, uf, fb)
+                            : linkPixels(img.pixelRow.narrowData(), img.pixelCol.narrowData(), pixels, params.connectivity == 8, uf, fb);
+    if (!linked) {
         img.error = "cancelled";
         return img;
     }

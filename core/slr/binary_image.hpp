@@ -36,6 +36,41 @@ struct Region {
     int64_t rowMin = 0, rowMax = 0, colMin = 0, colMax = 0;  ///< bounding box (inclusive)
 };
 
+/// Pixel coordinates after the shift (never negative): 32-bit when every one fits, else 64-bit
+/// (absurd magnifications). A kHz pass's image has about one pixel an event: the two 64-bit
+/// columns were 16 of its bytes an event (issue 44).
+class PixelCoords {
+public:
+    void reset(size_t capacity, bool wide) {
+        m_wide = wide;
+        m_narrow = {};
+        m_wideValues = {};
+        if (wide) m_wideValues.reserve(capacity);
+        else m_narrow.reserve(capacity);
+    }
+    void push_back(int64_t v) {
+        if (m_wide) m_wideValues.push_back(v);
+        else m_narrow.push_back(static_cast<uint32_t>(v));
+    }
+    int64_t operator[](size_t i) const { return m_wide ? m_wideValues[i] : static_cast<int64_t>(m_narrow[i]); }
+    size_t size() const { return m_wide ? m_wideValues.size() : m_narrow.size(); }
+    bool empty() const { return size() == 0; }
+    bool wide() const { return m_wide; }
+    const uint32_t* narrowData() const { return m_narrow.data(); }
+    const int64_t* wideData() const { return m_wideValues.data(); }
+    bool operator==(const PixelCoords& o) const {
+        if (size() != o.size()) return false;
+        for (size_t i = 0; i < size(); ++i)
+            if ((*this)[i] != o[i]) return false;
+        return true;
+    }
+
+private:
+    bool m_wide = false;
+    std::vector<uint32_t> m_narrow;
+    std::vector<int64_t> m_wideValues;
+};
+
 struct BinaryImage {
     bool ok = false;
     std::string error;
@@ -45,7 +80,7 @@ struct BinaryImage {
     int64_t colOffset = 0;     ///< unshifted col of shifted col 0 (= min round(O-C·mag_OC))
     int64_t rows = 0, cols = 0;  ///< extent of the (never allocated) image after the shift
     // Occupied pixels, sorted by (row, col); shifted coordinates.
-    std::vector<int64_t> pixelRow, pixelCol;
+    PixelCoords pixelRow, pixelCol;
     std::vector<uint32_t> pixelRegion;      ///< region label of each pixel (index into regions)
     std::vector<uint32_t> pixelPointStart;  ///< CSR: points of pixel p are pixelPoints[start[p] .. start[p+1])
     std::vector<uint32_t> pixelPoints;      ///< point indices grouped by pixel (the paper's index matrix)

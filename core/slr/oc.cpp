@@ -298,7 +298,7 @@ OcResult computeOc(const CrdPass& pass, const CpfFile& cpf, const Eigen::Vector3
             res.refraction_s.push_back(refrS);
             res.range_index.push_back(static_cast<uint32_t>(i));
             res.line.push_back(r.line);
-            res.filter_flag.push_back(r.filterFlag);
+            res.filter_flag.push_back(static_cast<int8_t>(r.filterFlag));
         }
         appendPassWarnings(name, skippedEvent, skippedSpan, spanError, &res);
         if (res.oc_s.empty()) {
@@ -916,7 +916,7 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             const size_t k = idx[i];
             res.tof_s[i] = pass.ranges.tofS(k);
             res.line[i] = pass.ranges.line(k);
-            res.filter_flag[i] = pass.ranges.filterFlag(k);
+            res.filter_flag[i] = static_cast<int8_t>(pass.ranges.filterFlag(k));
         }
         res.epoch_s = std::move(t);  // (the epochs and the records' indices as they are)
         res.range_index = std::move(idx);

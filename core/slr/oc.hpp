@@ -84,7 +84,7 @@ struct OcResult {
     std::vector<uint32_t> range_index;  ///< index into CrdPass::ranges (the source type-10 record; a pass of 2^32
                                         ///< records is refused before it is read)
     std::vector<long> line;             ///< source line of the record
-    std::vector<int> filter_flag;       ///< the record's filter flag (0 unknown, 1 noise, 2 data)
+    std::vector<int8_t> filter_flag;    ///< the record's filter flag (0 unknown, 1 noise, 2 data)
 
     long startMjd = 0;                  ///< MJD of the pass's H4 start day (0h UTC)
     bool refractionApplied = false;

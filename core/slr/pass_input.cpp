@@ -302,7 +302,7 @@ PassInputResult passFromOcTable(const std::string& path) {
         r.error = csv.error;
         return r;
     }
-    std::vector<int> flags;
+    std::vector<int8_t> flags;
     if (!csv.table.extra.empty()) {
         const std::vector<double>& f = csv.table.extra.front();
         flags.resize(f.size());
@@ -314,7 +314,7 @@ PassInputResult passFromOcTable(const std::string& path) {
                           " is not a CRD filter flag (0 unknown, 1 noise, 2 data)";
                 return r;
             }
-            flags[i] = static_cast<int>(f[i]);
+            flags[i] = static_cast<int8_t>(f[i]);
             any = any || flags[i] != 0;
         }
         if (!any) flags.clear();  // (a column of blanks or zeros says nothing)

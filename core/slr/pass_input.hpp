@@ -90,7 +90,7 @@ struct PassData {
     std::vector<double> t;         ///< epoch (s since 0h UTC of the pass day for CRD input)
     std::vector<double> oc;        ///< O-C (s, two-way)
     std::vector<double> tof;       ///< observed two-way TOF (s); empty for O-C tables
-    std::vector<int> stationFlag;  ///< the station's filter flag per point (CRD), empty otherwise
+    std::vector<int8_t> stationFlag;  ///< the station's filter flag per point (CRD, or an O-C table's column), empty otherwise
     std::vector<uint32_t> rangeIndex;  ///< CrdPass::ranges index per point (CRD)
     double altitudeKm = 0;         ///< satellite altitude estimate for the normal-point bin (0 = unknown)
     bool hasCrd = false;

@@ -88,7 +88,7 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
             block += ',';
             putInt(unsigned(kept));
             block += ',';
-            if (!pass.stationFlag.empty()) putInt(unsigned(std::max(0, pass.stationFlag[i])));
+            if (!pass.stationFlag.empty()) putInt(unsigned(std::max(0, int(pass.stationFlag[i]))));
             block += '\n';
             if (!fits) return i;
         }
