@@ -116,6 +116,36 @@ private slots:
         QCOMPARE(r.points, int64_t(3));
     }
 
+    // Pixel coordinates are kept in 32 bits when every one fits (issue 44), in 64 bits when a
+    // magnification spreads them further: the same pixels, columns and regions either way.
+    void coordinatesBeyond32BitsKeepTheirPixelsAndRegions() {
+        MappingParams mp;
+        mp.magT = 1;
+        // Points 0 and 1 in neighbouring columns, point 2 alone, 6e9 columns away.
+        const std::vector<double> t = {10, 10, 11};
+        const std::vector<double> ocNear = {0, 1e-9, 30e-9};
+        mp.magOc = 1e9;  // columns 0, 1, 30: 32-bit
+        const BinaryImage narrow = buildBinaryImage(t, ocNear, mp);
+        QVERIFY2(narrow.ok, narrow.error.c_str());
+        QVERIFY(!narrow.pixelRow.wide());
+        mp.magOc = 2e17;  // columns 0, 2e8, 6e9: beyond 2^32 (the first two no longer touch)
+        const BinaryImage wide = buildBinaryImage(t, {0, 1e-9, 30e-9}, mp);
+        QVERIFY2(wide.ok, wide.error.c_str());
+        QVERIFY(wide.pixelRow.wide() && wide.pixelCol.wide());
+        QCOMPARE(wide.pixelCol[wide.pointPixel[2]], int64_t(6000000000));
+        QCOMPARE(wide.regions.size(), size_t(3));
+        QCOMPARE(narrow.regions.size(), size_t(2));  // (0 and 1 joined)
+        // Neighbouring pixels 5e9 columns out are still linked in the 64-bit image.
+        mp.magOc = 1e18;
+        const BinaryImage far = buildBinaryImage({10, 10, 11}, {5e-9, 5.000000000000001e-9 + 1e-18, 0}, mp);
+        QVERIFY2(far.ok, far.error.c_str());
+        QVERIFY(far.pixelCol.wide());
+        QCOMPARE(far.pixelCol[far.pointPixel[0]], int64_t(5000000000));
+        QCOMPARE(far.pixelCol[far.pointPixel[1]], int64_t(5000000001));  // (a pixel of its own, beside it)
+        QCOMPARE(far.pixelRegion[far.pointPixel[0]], far.pixelRegion[far.pointPixel[1]]);
+        QVERIFY(far.pixelRegion[far.pointPixel[2]] != far.pixelRegion[far.pointPixel[0]]);
+    }
+
     void mappingShiftsNegativeCoordinatesToZero() {
         MappingParams mp;
         mp.magT = 10;
