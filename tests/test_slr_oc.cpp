@@ -556,7 +556,11 @@ private slots:
                   (hi - lo) * 1e9);
             QVERIFY(hi - lo > 1e-6);  // the MLRS range gate is several microseconds wide
             QVERIFY(track < 0.03 * (hi - lo));
-            // Elevation from the pass's pointing records.
+            // Elevation from the pass's pointing records: a column per point where the pass has
+            // them, none where it has not (issue 44); no refraction from a trend.
+            QCOMPARE(oc.elevation_rad.size(), p.pointing.empty() ? size_t(0) : oc.oc_s.size());
+            QCOMPARE(oc.azimuth_rad.size(), oc.elevation_rad.size());
+            QVERIFY(oc.refraction_s.empty());
             for (double e : oc.elevation_rad) QVERIFY(e > 0 && e < M_PI / 2);
         }
     }
