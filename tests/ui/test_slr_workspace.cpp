@@ -1656,6 +1656,29 @@ private slots:
         QVERIFY2(readout.contains("residual") && readout.contains("O-C") && readout.contains("row "), qPrintable(readout));
     }
 
+    /// The hover line of a CRD pass's point names its station flag as a number and its record
+    /// (issue 44 keeps the flags as one byte a point: a flag passed to QString::arg as a char
+    /// would show a control character, not "2").
+    void hoverLineNamesTheStationFlagAndRecord() {
+        const QString jason = lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd");
+        if (!QFile::exists(jason)) QSKIP("shared data absent");
+        SlrWorkspace ws;
+        QString err;
+        QVERIFY2(ws.openPath(jason, -1, &err), qPrintable(err));
+        QVERIFY(ws.controller()->waitIdle(60000));
+        const auto& pass = ws.controller()->pass();
+        QVERIFY(pass.stationFlag.size() == pass.t.size() && pass.rangeIndex.size() == pass.t.size());
+        int seen = 0;
+        for (int k : {0, int(pass.t.size() / 2), int(pass.t.size()) - 1}) {
+            const QString text = ws.pointText(k);
+            QVERIFY2(text.contains(QString(" · station flag %1").arg(int(pass.stationFlag[size_t(k)]))) &&
+                         text.contains(QString(" · record %1").arg(pass.rangeIndex[size_t(k)])),
+                     qPrintable(text));
+            seen += pass.stationFlag[size_t(k)] == 1 || pass.stationFlag[size_t(k)] == 2;
+        }
+        QVERIFY(seen > 0);  // (the file's flags are 1 and 2)
+    }
+
     /// Issue 30: one time cursor for the pass. Hovering a point of the O-C plot puts a line at
     /// its epoch on the O-C plot and the binary image, rings the point in both (on the image:
     /// its pixel), marks its residual on the histogram; hovering the image does the same back;
