@@ -18,6 +18,7 @@
 #include "core/common/json.hpp"
 #include "core/common/parallel.hpp"
 #include "core/common/select.hpp"
+#include "core/common/sha256.hpp"
 #include "core/common/text.hpp"
 #include "test_support.hpp"
 
@@ -26,6 +27,38 @@ using namespace lwb::core;
 class TestCommon : public QObject {
     Q_OBJECT
 private slots:
+    // The provenance's SHA-256: FIPS 180-4's examples, and with the CPU's SHA extensions (where
+    // this machine has them) the same digest as the portable rounds for every length about the
+    // padding's edges and for input given in uneven pieces.
+    void sha256GivesTheStandardsDigestsEitherWay() {
+        using namespace lwb::core;
+        const std::string million(1000000, 'a');
+        for (bool portable : {true, false}) {
+            sha256PortableOnly(portable);
+            QCOMPARE(sha256UsesCpuExtensions() && portable, false);
+            QCOMPARE(sha256Hex(""), std::string("e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855"));
+            QCOMPARE(sha256Hex("abc"), std::string("ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"));
+            QCOMPARE(sha256Hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+                     std::string("248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1"));
+            QCOMPARE(sha256Hex(million), std::string("cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0"));
+        }
+        qInfo("the CPU's SHA extensions: %s", (sha256PortableOnly(false), sha256UsesCpuExtensions()) ? "used" : "absent");
+        std::mt19937_64 rng(44);
+        std::string data(70000, '\0');
+        for (char& c : data) c = static_cast<char>(rng());
+        for (size_t len : {1, 55, 56, 57, 63, 64, 65, 119, 120, 127, 128, 129, 191, 192, 4097, 65536, 70000}) {
+            const std::string_view v(data.data(), len);
+            sha256PortableOnly(true);
+            const std::string portable = sha256Hex(v);
+            sha256PortableOnly(false);
+            QCOMPARE(sha256Hex(v), portable);
+            Sha256 pieces;  // 1, 4, 13, 40, ... bytes at a time
+            for (size_t at = 0, step = 1; at < len; at += step, step = step * 3 + 1)
+                pieces.update(data.data() + at, std::min(step, len - at));
+            QCOMPARE(pieces.hex(), portable);
+        }
+    }
+
     // Issue 41: a decompression bomb is refused at the limit without being held (a 4 GiB
     // stream of zeros took 4.2 GB before `slr` refused it at 2 GiB). Here 400 MB of zeros,
     // deflated to under 1 MB, against a 64 MB limit: refused, and the process grows by less
