@@ -122,7 +122,7 @@ Pass pyLoadPass(const py::object& path, const py::object& passNumber, const py::
     return passOf(loadSources(src));
 }
 
-PassRun runPass(const py::object& given, const py::object& params, const py::object& preset, const py::object& satellite,
+PassRun pyRun(const py::object& given, const py::object& params, const py::object& preset, const py::object& satellite,
                 const py::object& stations, const py::object& threads) {
     // A Pass, or a file's path loaded here as load_pass(path, params=params) loads it.
     Pass loaded;
@@ -416,7 +416,7 @@ void bindRuns(py::module_& m) {
           "O-C CSV. With cpf (a file or a folder) and stations (SINEX), O-C from the prediction; without,\n"
           "O-C against the pass's own TOF trend. params (SlrParams or {key: value}): their oc.* rows make\n"
           "the O-C (run() refuses other oc.* values). Bad files raise laserwb.Error with FILE:LINE.");
-    m.def("run", &runPass, py::arg("pass_"), py::arg("params") = py::none(), py::arg("preset") = py::none(),
+    m.def("run", &pyRun, py::arg("pass_"), py::arg("params") = py::none(), py::arg("preset") = py::none(),
           py::arg("satellite") = py::none(), py::arg("stations") = py::none(), py::arg("threads") = py::none(),
           "Screens a Pass (or the first pass of a file's path, loaded as load_pass(path, params=params)),\n"
           "fits the trend and forms the normal points (PassTask), with the settings\n"

@@ -379,13 +379,6 @@ std::vector<size_t> evenlyTaken(size_t n, size_t most) {
     return at;
 }
 
-template <class T>
-std::vector<T> takeAt(const std::vector<T>& v, const std::vector<size_t>& at) {
-    std::vector<T> out(at.size());
-    for (size_t k = 0; k < at.size(); ++k) out[k] = v[at[k]];
-    return out;
-}
-
 Eigen::VectorXd takeAt(const Eigen::VectorXd& v, const std::vector<size_t>& at) {
     Eigen::VectorXd out(static_cast<Eigen::Index>(at.size()));
     for (size_t k = 0; k < at.size(); ++k) out(static_cast<Eigen::Index>(k)) = v(static_cast<Eigen::Index>(at[k]));
