@@ -146,6 +146,65 @@ private slots:
         QVERIFY(far.pixelRegion[far.pointPixel[2]] != far.pixelRegion[far.pointPixel[0]]);
     }
 
+    // A one-pixel region is kept as its pixel and point count; every other as a whole Region.
+    // Either way operator[] gives the same fields as the Region given.
+    void regionListGivesBackEveryField() {
+        auto region = [](int64_t r0, int64_t r1, int64_t c0, int64_t c1, int64_t area, int64_t points, double row, double col) {
+            Region g;
+            g.rowMin = r0, g.rowMax = r1, g.colMin = c0, g.colMax = c1;
+            g.area = area, g.points = points, g.row = row, g.col = col;
+            return g;
+        };
+        const std::vector<Region> narrow = {
+            region(3, 3, 7, 7, 1, 1, 3, 7),                        // one pixel, one point: compact
+            region(3, 3, 8, 8, 1, 255, 3, 8),                      // the most points kept compact
+            region(4, 4, 9, 9, 1, 256, 4, 9),                      // one more: whole
+            region(0, 2, 0, 5, 4, 9, 1.25, 2.5),                   // several pixels
+            region(10, 10, 0, 0, 1, 1, 10.5, 0),                   // one pixel, a centroid off it (synthetic)
+            region(4294967295, 4294967295, 0, 0, 1, 1, 4294967295.0, 0),  // the largest 32-bit coordinate
+        };
+        const std::vector<Region> wide = {region(-1, -1, 2, 2, 1, 1, -1, 2),  // negative: a 64-bit list
+                                          region(6000000000, 6000000000, 1, 1, 1, 3, 6e9, 1)};
+        for (const std::vector<Region>* given : {&narrow, &wide}) {
+            const RegionList list(*given);
+            QCOMPARE(list.size(), given->size());
+            size_t i = 0;
+            for (const Region& got : list) {
+                const Region& want = (*given)[i];
+                QCOMPARE(got.area, want.area);
+                QCOMPARE(got.points, want.points);
+                QCOMPARE(got.row, want.row);
+                QCOMPARE(got.col, want.col);
+                QCOMPARE(got.rowMin, want.rowMin);
+                QCOMPARE(got.rowMax, want.rowMax);
+                QCOMPARE(got.colMin, want.colMin);
+                QCOMPARE(got.colMax, want.colMax);
+                QCOMPARE(list.area(i), want.area);
+                QCOMPARE(list.rowMin(i), want.rowMin);
+                ++i;
+            }
+            QCOMPARE(i, given->size());
+        }
+        // Labelled from an image: 300 points on one pixel, a pair of pixels, a lone pixel.
+        std::vector<double> t(300, 5.0), oc(300, 0.0);
+        t.push_back(7), oc.push_back(0);
+        t.push_back(7), oc.push_back(1e-9);
+        t.push_back(9), oc.push_back(5e-9);
+        MappingParams mp;
+        mp.magT = 1;
+        mp.magOc = 1e9;
+        const BinaryImage img = buildBinaryImage(t, oc, mp);
+        QVERIFY2(img.ok, img.error.c_str());
+        QCOMPARE(img.regions.size(), size_t(3));
+        QCOMPARE(img.regions[0].points, int64_t(300));
+        QCOMPARE(img.regions[0].area, int64_t(1));
+        QCOMPARE(img.regions[1].area, int64_t(2));
+        QCOMPARE(img.regions[1].col, 0.5);
+        QCOMPARE(img.regions[1].colMax, int64_t(1));
+        QCOMPARE(img.regions[2].rowMin, int64_t(4));
+        QCOMPARE(img.regions[2].col, 5.0);
+    }
+
     void mappingShiftsNegativeCoordinatesToZero() {
         MappingParams mp;
         mp.magT = 10;
@@ -603,11 +662,14 @@ private slots:
         QVERIFY2(r.ok, r.error.c_str());
         QCOMPARE(r.pointClass.size(), n);
         QCOMPARE(r.signalPoints + r.recoveredPoints + r.noisePoints, n);
+        // (the image above has the same mapping and connectivity as this screening)
+        QCOMPARE(r.regionCount, img.regions.size());
+        QCOMPARE(r.regionClass.size(), r.regionCount);
         int64_t regionPoints = 0;
-        for (const auto& reg : r.regions) regionPoints += reg.points;
+        for (const auto& reg : img.regions) regionPoints += reg.points;
         QCOMPARE(regionPoints, int64_t(n));
         for (size_t i = 0; i < n; ++i) {
-            QVERIFY(r.pointRegion[i] < r.regions.size());
+            QVERIFY(r.pointRegion[i] < r.regionCount);
             QCOMPARE(static_cast<int>(r.pointClass[i]), static_cast<int>(r.regionClass[r.pointRegion[i]]));
         }
         // Paper table 1, diffuse ranging (mag_T 1, mag_OC 1e7, area 7 px, 8-connectivity), on a

@@ -146,10 +146,13 @@ bool mapPoint(double t, double oc, double magT, double magOc, int64_t* row, int6
 
 namespace {
 
-// A point in the sort: its pixel (row, col; or one key of both) and its index.
-struct SortItem {
-    uint64_t key, key2;
-    uint32_t idx;
+// The points in the sort, as columns: each point's key (its row, or row and column in one key
+// when both fit), its column where they do not (key2, absurd magnifications only), and its
+// index. Columns rather than one 24-byte item a point: the sort's two copies of the items
+// were a raw kHz pass's peak (48 bytes an event; 24 now, issue 44).
+struct SortKeys {
+    std::unique_ptr<uint64_t[]> key, key2;
+    std::unique_ptr<uint32_t[]> idx;
 };
 
 // The pixels' extent, and whether the rows come in order (points in time order: the usual case).
@@ -159,11 +162,13 @@ struct MapExtent {
     size_t rowRuns = 0;       // runs of equal rows in index order
 };
 
-// Pass 1: finiteness, the pixel of every point and the coordinate range. Each point's (row,
-// col) is kept in its sort item (mapping twice cost a sixth of the image). False with *error.
+// Pass 1: finiteness, the pixel of every point and the coordinate range. Each point's row and
+// column are kept in key and key2 (mapping twice cost a sixth of the image). False with *error.
 bool mapPoints(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params, const Feedback* fb,
-               SortItem* items, MapExtent* ext, std::string* error) {
+               SortKeys& sk, MapExtent* ext, std::string* error) {
     const size_t n = t.size();
+    uint64_t* rows = sk.key.get();
+    uint64_t* cols = sk.key2.get();
     int64_t rMin = 0, rMax = 0, cMin = 0, cMax = 0;
     bool rowsInOrder = true;
     size_t rowRuns = 0;
@@ -178,7 +183,8 @@ bool mapPoints(const std::vector<double>& t, const std::vector<double>& oc, cons
                      formatDouble(t[i] * params.magT, 4) + ", O-C*mag_OC = " + formatDouble(oc[i] * params.magOc, 4) + ")";
             return false;
         }
-        items[i] = SortItem{static_cast<uint64_t>(r), static_cast<uint64_t>(c), static_cast<uint32_t>(i)};
+        rows[i] = static_cast<uint64_t>(r);
+        cols[i] = static_cast<uint64_t>(c);
         // Without branches where the outcome is the data's (a new row every few points, a
         // noise column anywhere): these mispredicted about once a point.
         if (i == 0) {
@@ -188,7 +194,7 @@ bool mapPoints(const std::vector<double>& t, const std::vector<double>& oc, cons
             continue;
         }
         rowsInOrder &= r >= rMax;
-        rowRuns += static_cast<size_t>(r != static_cast<int64_t>(items[i - 1].key));
+        rowRuns += static_cast<size_t>(r != static_cast<int64_t>(rows[i - 1]));
         rMin = std::min(rMin, r);
         rMax = std::max(rMax, r);
         cMin = std::min(cMin, c);
@@ -209,52 +215,108 @@ struct PixelKeys {
     uint64_t colMask = 0;
 };
 
+// LSD radix sort of (key, idx) on the low `bits` bits of key, 11 bits a pass, stable (ties keep
+// their order). False when cancelled between passes.
+bool radixSortKeys(SortKeys& sk, size_t n, int bits, const Feedback* fb) {
+    std::unique_ptr<uint64_t[]> tmpKey(new uint64_t[n]);
+    std::unique_ptr<uint32_t[]> tmpIdx(new uint32_t[n]);
+    std::vector<size_t> count(2049);
+    for (int shift = 0; shift < bits; shift += 11) {
+        const uint64_t* key = sk.key.get();
+        const uint32_t* idx = sk.idx.get();
+        std::fill(count.begin(), count.end(), 0);
+        for (size_t i = 0; i < n; ++i) ++count[((key[i] >> shift) & 2047) + 1];
+        for (size_t d = 1; d < count.size(); ++d) count[d] += count[d - 1];
+        for (size_t i = 0; i < n; ++i) {
+            const size_t to = count[(key[i] >> shift) & 2047]++;
+            tmpKey[to] = key[i];
+            tmpIdx[to] = idx[i];
+        }
+        sk.key.swap(tmpKey);
+        sk.idx.swap(tmpIdx);
+        if (cancelled(fb)) return false;
+    }
+    return true;
+}
+
 // Pass 2: sort the points by shifted (row, col), ties in index order. Points whose rows never
 // decrease, at most 2 to a row on average, are sorted row by row on the column by insertion
 // (from 2.5 a row up the radix sort below was faster, 15–20 % of the image at 5–7 a row; the
 // limit was 8). Otherwise one 64-bit key, row above the column's bits, when both fit (radix; the
 // pixel back by a shift and a mask, not a 64-bit division), else a lexicographic pair compare
 // (absurd magnifications: still O(n log n), never an image). False on cancel.
-bool sortPoints(std::unique_ptr<SortItem[]>& items, size_t n, const MapExtent& ext, const BinaryImage& img, const Feedback* fb,
-                PixelKeys* keys) {
+bool sortPoints(SortKeys& sk, size_t n, const MapExtent& ext, const BinaryImage& img, const Feedback* fb, PixelKeys* keys) {
     const int64_t rMin = ext.rMin, cMin = ext.cMin;
     const bool byRow = ext.rowsInOrder && n <= 2 * ext.rowRuns;
     const int colBits = bitsFor(static_cast<uint64_t>(img.cols - 1));
-    const bool oneKey = !byRow && colBits + bitsFor(static_cast<uint64_t>(img.rows - 1)) <= 63;
+    const bool oneKey = colBits + bitsFor(static_cast<uint64_t>(img.rows - 1)) <= 63;
     const uint64_t colMask = colBits >= 64 ? ~uint64_t{0} : (uint64_t{1} << colBits) - 1;
+    uint64_t* key = sk.key.get();
+    uint64_t* key2 = sk.key2.get();
     for (size_t i = 0; i < n; ++i) {
-        const uint64_t sr = items[i].key - static_cast<uint64_t>(rMin), sc = items[i].key2 - static_cast<uint64_t>(cMin);
-        items[i].key = oneKey ? (sr << colBits) | sc : sr;
-        items[i].key2 = oneKey ? 0 : sc;
+        const uint64_t sr = key[i] - static_cast<uint64_t>(rMin), sc = key2[i] - static_cast<uint64_t>(cMin);
+        key[i] = oneKey ? (sr << colBits) | sc : sr;
+        key2[i] = sc;
     }
+    if (oneKey) sk.key2.reset();
+    sk.idx.reset(new uint32_t[n]);
+    uint32_t* idx = sk.idx.get();
+    for (size_t i = 0; i < n; ++i) idx[i] = static_cast<uint32_t>(i);
     if (byRow) {
+        // Rows in order: each row's points sorted on (key, key2), ties in index order.
+        auto less = [&](uint32_t u, uint32_t v) {
+            if (key[u] != key[v]) return key[u] < key[v];
+            if (!oneKey && key2[u] != key2[v]) return key2[u] < key2[v];
+            return u < v;
+        };
+        std::vector<uint32_t> perm;
+        std::vector<uint64_t> k1, k2;
         for (size_t a = 0; a < n;) {
+            const uint64_t row = oneKey ? key[a] >> colBits : key[a];
             size_t b = a + 1;
-            while (b < n && items[b].key == items[a].key) ++b;
-            if (b - a <= 16) {  // insertion sort: stable, so ties stay in index order
-                for (size_t i = a + 1; i < b; ++i) {
-                    const SortItem x = items[i];
+            while (b < n && (oneKey ? key[b] >> colBits : key[b]) == row) ++b;
+            // (idx[i] == i here: the points of [a, b) are still in place)
+            perm.resize(b - a);
+            for (size_t i = a; i < b; ++i) perm[i - a] = static_cast<uint32_t>(i);
+            if (b - a <= 16) {  // insertion sort: stable
+                for (size_t i = 1; i < perm.size(); ++i) {
+                    const uint32_t x = perm[i];
                     size_t j = i;
-                    for (; j > a && items[j - 1].key2 > x.key2; --j) items[j] = items[j - 1];
-                    items[j] = x;
+                    for (; j > 0 && less(x, perm[j - 1]); --j) perm[j] = perm[j - 1];
+                    perm[j] = x;
                 }
             } else {
-                std::sort(items.get() + a, items.get() + b, [](const SortItem& u, const SortItem& v) {
-                    return u.key2 != v.key2 ? u.key2 < v.key2 : u.idx < v.idx;
-                });
+                std::sort(perm.begin(), perm.end(), less);
+            }
+            k1.resize(perm.size());
+            k2.resize(perm.size());
+            for (size_t i = 0; i < perm.size(); ++i) {
+                k1[i] = key[perm[i]];
+                if (!oneKey) k2[i] = key2[perm[i]];
+            }
+            for (size_t i = 0; i < perm.size(); ++i) {
+                key[a + i] = k1[i];
+                if (!oneKey) key2[a + i] = k2[i];
+                idx[a + i] = perm[i];
             }
             a = b;
         }
     } else if (oneKey) {
         // Stable: ties stay in index order. (A cancellation is seen just below.)
-        radixSort(items, n, bitsFor((static_cast<uint64_t>(img.rows - 1) << colBits) | colMask),
-                  [](const SortItem& x) { return x.key; }, fb);
+        radixSortKeys(sk, n, bitsFor((static_cast<uint64_t>(img.rows - 1) << colBits) | colMask), fb);
     } else {
-        std::sort(items.get(), items.get() + n, [](const SortItem& a, const SortItem& b) {
-            if (a.key != b.key) return a.key < b.key;
-            if (a.key2 != b.key2) return a.key2 < b.key2;
-            return a.idx < b.idx;
+        std::sort(idx, idx + n, [&](uint32_t a, uint32_t b) {
+            if (key[a] != key[b]) return key[a] < key[b];
+            if (key2[a] != key2[b]) return key2[a] < key2[b];
+            return a < b;
         });
+        std::unique_ptr<uint64_t[]> k1(new uint64_t[n]), k2(new uint64_t[n]);
+        for (size_t i = 0; i < n; ++i) {
+            k1[i] = key[idx[i]];
+            k2[i] = key2[idx[i]];
+        }
+        sk.key.swap(k1);
+        sk.key2.swap(k2);
     }
     *keys = PixelKeys{oneKey, colBits, colMask};
     return !cancelled(fb);
@@ -262,37 +324,173 @@ bool sortPoints(std::unique_ptr<SortItem[]>& items, size_t n, const MapExtent& e
 
 // The pixels and the index matrix (CSR): each pixel's row, column and points, each point's pixel.
 // Returns the number of pixels.
-size_t buildPixels(const SortItem* items, size_t n, const PixelKeys& k, BinaryImage& img) {
+size_t buildPixels(const SortKeys& sk, size_t n, const PixelKeys& k, BinaryImage& img) {
     const bool oneKey = k.oneKey;
     const int colBits = k.colBits;
     const uint64_t colMask = k.colMask;
+    const uint64_t* key = sk.key.get();
+    const uint64_t* key2 = sk.key2.get();  // (null with one key)
+    const uint32_t* idx = sk.idx.get();
+    auto newPixel = [&](size_t i) { return i == 0 || key[i] != key[i - 1] || (!oneKey && key2[i] != key2[i - 1]); };
     img.pixelPoints.resize(n);
     img.pointPixel.resize(n);
     size_t pixels = 0;
-    for (size_t i = 0; i < n; ++i)
-        if (i == 0 || items[i].key != items[i - 1].key || items[i].key2 != items[i - 1].key2) ++pixels;
+    for (size_t i = 0; i < n; ++i) pixels += newPixel(i);
     const bool wide = static_cast<uint64_t>(img.rows - 1) > UINT32_MAX || static_cast<uint64_t>(img.cols - 1) > UINT32_MAX;
     img.pixelRow.reset(pixels, wide);
     img.pixelCol.reset(pixels, wide);
     img.pixelPointStart.reserve(pixels + 1);
     for (size_t i = 0; i < n; ++i) {
-        if (i == 0 || items[i].key != items[i - 1].key || items[i].key2 != items[i - 1].key2) {
+        if (newPixel(i)) {
             img.pixelPointStart.push_back(static_cast<uint32_t>(i));
             if (oneKey) {
-                img.pixelRow.push_back(static_cast<int64_t>(items[i].key >> colBits));
-                img.pixelCol.push_back(static_cast<int64_t>(items[i].key & colMask));
+                img.pixelRow.push_back(static_cast<int64_t>(key[i] >> colBits));
+                img.pixelCol.push_back(static_cast<int64_t>(key[i] & colMask));
             } else {
-                img.pixelRow.push_back(static_cast<int64_t>(items[i].key));
-                img.pixelCol.push_back(static_cast<int64_t>(items[i].key2));
+                img.pixelRow.push_back(static_cast<int64_t>(key[i]));
+                img.pixelCol.push_back(static_cast<int64_t>(key2[i]));
             }
         }
-        img.pixelPoints[i] = items[i].idx;
-        img.pointPixel[items[i].idx] = static_cast<uint32_t>(img.pixelRow.size() - 1);
+        img.pixelPoints[i] = idx[i];
+        img.pointPixel[idx[i]] = static_cast<uint32_t>(img.pixelRow.size() - 1);
     }
     img.pixelPointStart.push_back(static_cast<uint32_t>(n));
 
     return pixels;
 }
+
+}  // namespace
+
+RegionList::RegionList(const std::vector<Region>& regions) {
+    bool wide = false;
+    for (const Region& r : regions)
+        wide = wide || r.rowMin < 0 || r.colMin < 0 || r.rowMax > int64_t(UINT32_MAX) || r.colMax > int64_t(UINT32_MAX) ||
+               r.area < 0 || r.points < 0 || r.area > int64_t(UINT32_MAX) || r.points > int64_t(UINT32_MAX);
+    reserve(regions.size(), regions.size(), wide);
+    for (const Region& r : regions) push_back(r);
+}
+
+Region RegionList::operator[](size_t i) const {
+    const uint32_t s = m_slot[i];
+    Region r;
+    if (s == kPixel) {
+        r.area = 1;
+        r.points = m_points[i];
+        r.rowMin = r.rowMax = m_row[i];
+        r.colMin = r.colMax = m_col[i];
+        r.row = static_cast<double>(r.rowMin);
+        r.col = static_cast<double>(r.colMin);
+    } else if (m_row.wide()) {
+        r = m_whole64[s];
+    } else {
+        const Whole32& w = m_whole32[s];
+        r.area = w.area, r.points = w.points, r.row = w.row, r.col = w.col;
+        r.rowMin = w.rowMin, r.rowMax = w.rowMax, r.colMin = w.colMin, r.colMax = w.colMax;
+    }
+    return r;
+}
+
+int64_t RegionList::area(size_t i) const {
+    const uint32_t s = m_slot[i];
+    return s == kPixel ? 1 : m_row.wide() ? m_whole64[s].area : static_cast<int64_t>(m_whole32[s].area);
+}
+
+int64_t RegionList::rowMin(size_t i) const {
+    const uint32_t s = m_slot[i];
+    return s == kPixel ? m_row[i] : m_row.wide() ? m_whole64[s].rowMin : static_cast<int64_t>(m_whole32[s].rowMin);
+}
+
+void RegionList::reserve(size_t n, size_t whole, bool wide) {
+    m_slot.reserve(n);
+    m_row.reset(n, wide);
+    m_col.reset(n, wide);
+    m_points.reserve(n);
+    if (wide) m_whole64.reserve(whole);
+    else m_whole32.reserve(whole);
+}
+
+// Region i (its pixel entries already pushed) becomes the whole region r.
+void RegionList::makeWhole(size_t i, const Region& r) {
+    if (m_row.wide()) {
+        m_slot[i] = static_cast<uint32_t>(m_whole64.size());
+        m_whole64.push_back(r);
+        return;
+    }
+    m_slot[i] = static_cast<uint32_t>(m_whole32.size());
+    Whole32& w = m_whole32.emplace_back();
+    w.row = r.row, w.col = r.col;
+    w.area = static_cast<uint32_t>(r.area), w.points = static_cast<uint32_t>(r.points);
+    w.rowMin = static_cast<uint32_t>(r.rowMin), w.rowMax = static_cast<uint32_t>(r.rowMax);
+    w.colMin = static_cast<uint32_t>(r.colMin), w.colMax = static_cast<uint32_t>(r.colMax);
+}
+
+void RegionList::addPixel(int64_t row, int64_t col, int64_t points) {
+    m_row.push_back(row);
+    m_col.push_back(col);
+    m_points.push_back(static_cast<uint8_t>(points <= 255 ? points : 0));
+    m_slot.push_back(kPixel);
+    if (points > 255) {
+        Region r;
+        r.area = 1;
+        r.points = points;
+        r.rowMin = r.rowMax = row;
+        r.colMin = r.colMax = col;
+        r.row = static_cast<double>(row);
+        r.col = static_cast<double>(col);
+        makeWhole(m_slot.size() - 1, r);
+    }
+}
+
+void RegionList::addToRegion(size_t i, int64_t row, int64_t col, int64_t points) {
+    if (m_slot[i] == kPixel) makeWhole(i, (*this)[i]);
+    const uint32_t s = m_slot[i];
+    if (m_row.wide()) {
+        Region& r = m_whole64[s];
+        r.area += 1;
+        r.points += points;
+        r.row += static_cast<double>(row);
+        r.col += static_cast<double>(col);
+        r.rowMax = std::max(r.rowMax, row);
+        r.colMin = std::min(r.colMin, col);
+        r.colMax = std::max(r.colMax, col);
+        return;
+    }
+    Whole32& w = m_whole32[s];
+    w.area += 1;
+    w.points += static_cast<uint32_t>(points);
+    w.row += static_cast<double>(row);
+    w.col += static_cast<double>(col);
+    w.rowMax = std::max(w.rowMax, static_cast<uint32_t>(row));
+    w.colMin = std::min(w.colMin, static_cast<uint32_t>(col));
+    w.colMax = std::max(w.colMax, static_cast<uint32_t>(col));
+}
+
+void RegionList::finish() {
+    for (Region& r : m_whole64) {
+        r.row /= static_cast<double>(r.area);
+        r.col /= static_cast<double>(r.area);
+    }
+    for (Whole32& w : m_whole32) {
+        w.row /= static_cast<double>(w.area);
+        w.col /= static_cast<double>(w.area);
+    }
+}
+
+void RegionList::push_back(const Region& r) {
+    const bool onePixel = r.area == 1 && r.points <= 255 && r.points >= 0 && r.rowMin == r.rowMax && r.colMin == r.colMax &&
+                          r.row == static_cast<double>(r.rowMin) && r.col == static_cast<double>(r.colMin);
+    if (onePixel) {
+        addPixel(r.rowMin, r.colMin, r.points);
+        return;
+    }
+    m_row.push_back(0);
+    m_col.push_back(0);
+    m_points.push_back(0);
+    m_slot.push_back(kPixel);
+    makeWhole(m_slot.size() - 1, r);
+}
+
+namespace {
 
 // Compact labels in order of each region's first pixel; per-region statistics. A root is the
 // smallest pixel of its region (union by smaller index), so a pixel that is its own root starts
@@ -300,46 +498,36 @@ size_t buildPixels(const SortItem* items, size_t n, const PixelKeys& k, BinaryIm
 // so going up in pixel order the parent of each pixel before p already holds its root: one
 // look-up finds p's. The centroid sums build up in row and col (divided by the area at the end).
 void labelRegions(UnionFind& uf, size_t pixels, BinaryImage& img) {
-    img.pixelRegion.resize(pixels);  // every element is written below
+    img.pixelRegion.assign(pixels, 0);
     uint32_t* parent = uf.parent.data();
-    size_t roots = 0;
-    for (size_t p = 0; p < pixels; ++p) roots += parent[p] == p;
-    img.regions.reserve(roots);
+    // Every pixel's root (its parent's is known by then), and which roots have other pixels
+    // (flagged in pixelRegion, written with the labels below): the regions' storage sized once.
+    size_t roots = 0, whole = 0;
+    for (size_t p = 0; p < pixels; ++p) {
+        uint32_t root = parent[p];
+        if (root == p) {
+            ++roots;
+            continue;
+        }
+        root = parent[p] = parent[root];
+        whole += img.pixelRegion[root] == 0;
+        img.pixelRegion[root] = 1;
+    }
+    img.regions.reserve(roots, whole, img.pixelRow.wide());
     for (size_t p = 0; p < pixels; ++p) {
         const int64_t r = img.pixelRow[p], c = img.pixelCol[p];
         const int64_t pts = img.pixelPointStart[p + 1] - img.pixelPointStart[p];
-        uint32_t root = parent[p];
+        const uint32_t root = parent[p];
         if (root == p) {
             img.pixelRegion[p] = static_cast<uint32_t>(img.regions.size());
-            // Written field by field in place: a Region built aside and copied in was read back
-            // in 16-byte pieces just after its 8-byte stores (a stalled store forwarding per
-            // region, a fifth of the image).
-            Region& reg = img.regions.emplace_back();
-            reg.area = 1;
-            reg.points = pts;
-            reg.row = static_cast<double>(r);
-            reg.col = static_cast<double>(c);
-            reg.rowMin = reg.rowMax = r;
-            reg.colMin = reg.colMax = c;
+            img.regions.addPixel(r, c, pts);
             continue;
         }
-        root = parent[root];
-        parent[p] = root;
         const uint32_t lab = img.pixelRegion[root];
         img.pixelRegion[p] = lab;
-        Region& reg = img.regions[lab];
-        reg.area += 1;
-        reg.points += pts;
-        reg.row += static_cast<double>(r);
-        reg.col += static_cast<double>(c);
-        reg.rowMax = std::max(reg.rowMax, r);
-        reg.colMin = std::min(reg.colMin, c);
-        reg.colMax = std::max(reg.colMax, c);
+        img.regions.addToRegion(lab, r, c, pts);
     }
-    for (Region& reg : img.regions) {
-        reg.row /= static_cast<double>(reg.area);
-        reg.col /= static_cast<double>(reg.area);
-    }
+    img.regions.finish();
 }
 
 }  // namespace
@@ -368,20 +556,22 @@ BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<dou
     }
     // Not value-initialised (every element is written by the mapping): zeroing them cost as much
     // as the mapping on the many small images of a scale search.
-    std::unique_ptr<SortItem[]> items(new SortItem[n]);
+    SortKeys sk;
+    sk.key.reset(new uint64_t[n]);
+    sk.key2.reset(new uint64_t[n]);
     MapExtent ext;
-    if (!mapPoints(t, oc, params, fb, items.get(), &ext, &img.error)) return img;
+    if (!mapPoints(t, oc, params, fb, sk, &ext, &img.error)) return img;
     img.rowOffset = ext.rMin;
     img.colOffset = ext.cMin;
     img.rows = ext.rMax - ext.rMin + 1;
     img.cols = ext.cMax - ext.cMin + 1;
     PixelKeys keys;
-    if (!sortPoints(items, n, ext, img, fb, &keys)) {
+    if (!sortPoints(sk, n, ext, img, fb, &keys)) {
         img.error = "cancelled";
         return img;
     }
-    const size_t pixels = buildPixels(items.get(), n, keys, img);
-    items.reset();
+    const size_t pixels = buildPixels(sk, n, keys, img);
+    sk = SortKeys();
     UnionFind uf(pixels);
     const bool linked = img.pixelRow.wide()
                             ? linkPixels(img.pixelRow.wideData(), img.pixelCol.wideData(), pixels, params.connectivity == 8, uf, fb)

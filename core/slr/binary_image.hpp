@@ -71,6 +71,67 @@ private:
     std::vector<int64_t> m_wideValues;
 };
 
+/// The regions of an image, in label order, kept small: at 64 bytes a Region they were 38 bytes
+/// an event of a raw kHz pass's screening, its largest block (issue 44). A region of one pixel
+/// holding at most 255 points is its pixel and its point count (13 bytes, 21 with 64-bit
+/// coordinates); any other is a whole region of 32-bit fields (40 bytes; a Region of 64 where
+/// the coordinates need 64 bits). operator[] gives the same Region either way.
+class RegionList {
+public:
+    RegionList() = default;
+    /// Any regions (tests, synthetic input).
+    RegionList(const std::vector<Region>& regions);  // NOLINT: implicit, as the vector it replaced
+
+    size_t size() const { return m_slot.size(); }
+    bool empty() const { return m_slot.empty(); }
+    Region operator[](size_t i) const;
+    int64_t area(size_t i) const;
+    int64_t rowMin(size_t i) const;
+
+    /// n regions of which `whole` are more than one pixel (capacity hints); wide: coordinates
+    /// may need 64 bits (as the image's PixelCoords).
+    void reserve(size_t n, size_t whole, bool wide);
+    /// A new region of the one pixel (row, col) holding `points` points.
+    void addPixel(int64_t row, int64_t col, int64_t points);
+    /// The pixel (row, col) holding `points` points joins region i (its centroid a sum until finish()).
+    void addToRegion(size_t i, int64_t row, int64_t col, int64_t points);
+    /// Once every pixel is added: the centroids from their sums.
+    void finish();
+    void push_back(const Region& r);
+
+    class const_iterator {
+    public:
+        const_iterator(const RegionList* l, size_t i) : m_l(l), m_i(i) {}
+        Region operator*() const { return (*m_l)[m_i]; }
+        const_iterator& operator++() {
+            ++m_i;
+            return *this;
+        }
+        bool operator!=(const const_iterator& o) const { return m_i != o.m_i; }
+        bool operator==(const const_iterator& o) const { return m_i == o.m_i; }
+
+    private:
+        const RegionList* m_l;
+        size_t m_i;
+    };
+    const_iterator begin() const { return {this, 0}; }
+    const_iterator end() const { return {this, size()}; }
+
+private:
+    struct Whole32 {
+        double row = 0, col = 0;
+        uint32_t area = 0, points = 0;
+        uint32_t rowMin = 0, rowMax = 0, colMin = 0, colMax = 0;
+    };
+    static constexpr uint32_t kPixel = UINT32_MAX;
+    void makeWhole(size_t i, const Region& r);
+    std::vector<uint32_t> m_slot;   ///< per region: index of its whole region, or kPixel
+    PixelCoords m_row, m_col;       ///< per region: its pixel when it is one (else unused)
+    std::vector<uint8_t> m_points;  ///< per region: its points when it is one pixel
+    std::vector<Whole32> m_whole32; ///< whole regions of a 32-bit list
+    std::vector<Region> m_whole64;  ///< whole regions of a 64-bit list
+};
+
 struct BinaryImage {
     bool ok = false;
     std::string error;
@@ -85,7 +146,7 @@ struct BinaryImage {
     std::vector<uint32_t> pixelPointStart;  ///< CSR: points of pixel p are pixelPoints[start[p] .. start[p+1])
     std::vector<uint32_t> pixelPoints;      ///< point indices grouped by pixel (the paper's index matrix)
     std::vector<uint32_t> pointPixel;       ///< pixel of each input point
-    std::vector<Region> regions;            ///< labelled in order of their first pixel in (row, col) order
+    RegionList regions;                     ///< labelled in order of their first pixel in (row, col) order
 
     size_t pixelCount() const { return pixelRow.size(); }
 };

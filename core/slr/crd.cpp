@@ -745,7 +745,8 @@ private:
         own_[0] = own_[1] = own_[2] = false;
         open_->records = std::move(pending_);
         pending_.clear();
-        if (opened_ < linesAfterH4_.size()) open_->rangeLines.reserve(linesAfterH4_[opened_].lines, linesAfterH4_[opened_].bytes);
+        if (origin_) open_->rangeLines.placesOnly(origin_);
+        else if (opened_ < linesAfterH4_.size()) open_->rangeLines.reserve(linesAfterH4_[opened_].lines, linesAfterH4_[opened_].bytes);
         open_->ordinal = ++opened_;
         open_->records.push_back(std::move(rec));
         return true;
@@ -766,6 +767,18 @@ public:
         return out;
     }
 
+    /// The file the lines are read from, when they are its own bytes at the offsets given: the
+    /// passes keep their type-10 lines' places in it, not their texts (CrdRangeLines::placesOnly).
+    void setOrigin(std::shared_ptr<const CrdFileOrigin> origin) { origin_ = std::move(origin); }
+
+    /// A type-10 line of the open pass (the only record kept by place, not as a CrdRecord);
+    /// false when no pass is open (the caller gives it to add(), which says what is wrong).
+    bool addRange(std::string_view text, long line, long long fileOffset) {
+        if (!open_) return false;
+        open_->rangeLines.add(text, line, open_->records.size(), fileOffset);
+        return true;
+    }
+
     /// Capacity hints: the lines (and their bytes) from each H4 to the next (countLinesAfterH4),
     /// so that a pass's type-10 lines are allocated once instead of doubling (a 3·10^6-record
     /// pass held 1.5 copies).
@@ -774,6 +787,7 @@ public:
 private:
     std::vector<LinesAfterH4> linesAfterH4_;
     size_t opened_ = 0;
+    std::shared_ptr<const CrdFileOrigin> origin_;
 
     const std::string& src_;
     Sink* sink_;
@@ -817,10 +831,13 @@ std::vector<LinesAfterH4> countLinesAfterH4(std::string_view text) {
 bool feedLine(PassSplitter& splitter, std::string_view line, long lineNo, CrdReadResult* res, long long fileOffset = -1) {
     if (!line.empty() && line.back() == '\r' && lineNo == 1) res->file.crlf = true;
     while (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    const Fields fs(line);
+    // A range record of the open pass, most of a kHz pass's lines: kept without a CrdRecord's
+    // strings (an allocation of its text each).
+    if (fs.n && fs.f[0] == "10" && splitter.addRange(line, lineNo, fileOffset)) return true;
     CrdRecord rec;
     rec.text = std::string(line);
     rec.line = lineNo;
-    const Fields fs(line);
     rec.id = fs.n ? toLower(fs.f[0]) : std::string();
     return splitter.add(std::move(rec), fs, &res->error, fileOffset);
 }
@@ -830,9 +847,10 @@ bool feedLine(PassSplitter& splitter, std::string_view line, long lineNo, CrdRea
 // fileStart: where the file's first byte is when `text` is a plain file's content (the lines'
 // offsets in the file are their distance from it), else nullptr.
 bool splitPasses(std::string_view text, const std::string& src, const Feedback* feedback, Sink* sink, CrdReadResult* res,
-                 const char* fileStart) {
+                 const char* fileStart, const std::shared_ptr<const CrdFileOrigin>& origin) {
     PassSplitter splitter(src, sink, &res->file);
-    splitter.setCapacityHints(countLinesAfterH4(text));
+    if (fileStart && origin) splitter.setOrigin(origin);
+    else splitter.setCapacityHints(countLinesAfterH4(text));
     size_t pos = 0;
     long lineNo = 0;
     while (pos < text.size()) {
@@ -1004,8 +1022,21 @@ long CrdRangeLines::line(size_t k) const {
 size_t CrdRangeLines::slot(size_t k) const { return m_runs[runOf(k)].slot; }
 
 void CrdRangeLines::add(std::string_view text, long line, size_t slot, long long fileOffset) {
-    if (m_origin) return;  // (a pass whose texts are in its file only is not added to)
+    // A line that is not the file's own bytes (a reader that finds the file's lines end in CR
+    // only says so at its first line): the lines so far read back, and the texts kept from here.
+    if (m_origin && fileOffset < 0 && m_allInFile) {
+        std::string ignored;  // (a file changed meanwhile: the Reader says so when the pass is parsed)
+        if (!load(&ignored)) m_allInFile = false;
+    }
     const size_t k = m_size;
+    if (m_origin) {  // places only: a line is added after the others where it follows them in the file
+        if (!m_allInFile) return;
+        if (m_runs.empty() || m_runs.back().slot != slot || this->line(k - 1) + 1 != line)
+            m_runs.push_back(Run{k, slot, line, 0, fileOffset, fileOffset});
+        m_runs.back().fileEnd = fileOffset + static_cast<long long>(text.size());
+        ++m_size;
+        return;
+    }
     const size_t at = m_text.size();
     // A new run where the line is not the next one of the last run, or its offset would not fit
     // in 32 bits.
@@ -1024,6 +1055,11 @@ void CrdRangeLines::reserve(size_t lines, size_t bytes) {
     if (m_origin) return;
     m_start.reserve(lines);
     m_text.reserve(bytes);
+}
+
+void CrdRangeLines::placesOnly(const std::shared_ptr<const CrdFileOrigin>& origin) {
+    if (!origin || m_size != 0) return;
+    m_origin = origin;
 }
 
 void CrdRangeLines::keepInFile(const std::shared_ptr<const CrdFileOrigin>& origin) {
@@ -1091,6 +1127,10 @@ struct CrdRangeLines::Reader::File {
 
 CrdRangeLines::Reader::Reader(const CrdRangeLines& lines) : m_lines(lines) {
     if (!lines.m_origin || lines.m_size == 0) return;
+    if (!lines.m_allInFile) {
+        m_error = lines.m_origin->path + ": the file changed while it was read: open it again";
+        return;
+    }
     if (!sameAsRead(*lines.m_origin, &m_error)) return;
     m_file = std::make_unique<File>();
     m_file->in.open(lines.m_origin->openPath, std::ios::binary);
@@ -1309,7 +1349,7 @@ CrdReadResult parseCrdText(std::string_view given, std::string* owned, const std
             return res;
         }
         Sink sink{&res.warnings, params.maxWarnings};
-        if (!splitPasses(text, src, feedback, &sink, &res, inFile ? given.data() : nullptr)) {
+        if (!splitPasses(text, src, feedback, &sink, &res, inFile ? given.data() : nullptr, inFile ? origin : nullptr)) {
             res.file.passes.clear();
             return res;
         }
@@ -1407,8 +1447,9 @@ CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, 
         held.file.path = path;
         Sink sink{&out.warnings, params.maxWarnings};
         PassSplitter splitter(src, &sink, &held.file);
-        splitter.setCapacityHints(std::move(linesAfterH4));
         const std::shared_ptr<const CrdFileOrigin> origin = crdFileOrigin(path);
+        if (origin) splitter.setOrigin(origin);  // (read from the file itself, not through gzip)
+        else splitter.setCapacityHints(std::move(linesAfterH4));
         auto handOut = [&]() {
             for (CrdPass& p : splitter.takeClosed()) {
                 parseOnePass(p, p.ordinal - 1, src, &sink);

@@ -358,6 +358,11 @@ public:
     /// the line starts in its file, -1 when it did not come from a plain file).
     void add(std::string_view text, long line, size_t slot, long long fileOffset = -1);
     void reserve(size_t lines, size_t bytes);
+    /// Before any line is added: the lines to come are `origin`'s own bytes at the offsets given
+    /// to add(), so only their places are kept (the texts are read back from the file, in
+    /// blocks, when parsed or written). A raw kHz pass's type-10 texts were copied beside the
+    /// file's text it was read from: 54 of a 10⁶-event pass's 113 MB at its read (issue 44).
+    void placesOnly(const std::shared_ptr<const CrdFileOrigin>& origin);
     /// Drops the texts when every line has its place in `origin`'s file (else keeps them).
     void keepInFile(const std::shared_ptr<const CrdFileOrigin>& origin);
     /// Reads the texts back into memory (a no-op when they are). False with *error when the file

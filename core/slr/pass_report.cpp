@@ -393,7 +393,7 @@ void drawBinaryImage(Page& pg, const Context& c, const Plot& area) {
             ras.fill(cx * cellW, ras.height() - (cy + 1) * cellH, cellW, cellH, acc ? kSignal : kInk);
         }
     ras.paint(pg.cr(), false);
-    drawFrame(pg, p, title, fmt("%.0f", extentT) + " × " + fmt("%.0f", extentOc) + " px, " + std::to_string(s.regions.size()) +
+    drawFrame(pg, p, title, fmt("%.0f", extentT) + " × " + fmt("%.0f", extentOc) + " px, " + std::to_string(s.regionCount) +
                                 " regions (" + std::to_string(s.linearRegions) + " linear)",
               "", [](double) { return std::string(); }, [](double) { return std::string(); });
     caption(pg, p, "occupied pixels; the accepted regions in blue");

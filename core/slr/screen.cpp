@@ -50,10 +50,10 @@ std::string validate(const ScreenParams& p) {
     return slrSchema().validate(sp, "screen.");
 }
 
-std::vector<uint32_t> splitByArea(const std::vector<Region>& regions, int64_t areaLimit) {
+std::vector<uint32_t> splitByArea(const RegionList& regions, int64_t areaLimit) {
     std::vector<uint32_t> out;
     for (size_t i = 0; i < regions.size(); ++i)
-        if (regions[i].area >= areaLimit) out.push_back(static_cast<uint32_t>(i));
+        if (regions.area(i) >= areaLimit) out.push_back(static_cast<uint32_t>(i));
     return out;
 }
 
@@ -163,15 +163,17 @@ SlopeRange slopeRangeOf(const std::vector<double>& smooth, size_t maxWidth, doub
 
 }  // namespace
 
-LinearityResult findLinearRegions(const std::vector<Region>& regions, const std::vector<uint32_t>& candidates,
+LinearityResult findLinearRegions(const RegionList& regions, const std::vector<uint32_t>& candidates,
                                   const std::vector<Anchor>& piecesIn, const ScreenParams& p, const Feedback* fb) {
     LinearityResult res;
     if (candidates.empty()) return res;
     // The points of the slope analysis: the given pieces, or the candidates' centroids.
     std::vector<Anchor> pieces;
     if (piecesIn.empty()) {
-        for (uint32_t c : candidates)
-            pieces.push_back({regions[c].row, regions[c].col, static_cast<double>(regions[c].area), c});
+        for (uint32_t c : candidates) {
+            const Region r = regions[c];
+            pieces.push_back({r.row, r.col, static_cast<double>(r.area), c});
+        }
     } else {
         pieces = piecesIn;
     }
@@ -266,9 +268,10 @@ std::vector<Anchor> regionPieces(const BinaryImage& img, const std::vector<uint8
     std::vector<Anchor> out;
     if (pieceRows <= 0) {
         for (size_t r = 0; r < img.regions.size(); ++r)
-            if (selected[r])
-                out.push_back({img.regions[r].row, img.regions[r].col, static_cast<double>(img.regions[r].area),
-                               static_cast<uint32_t>(r)});
+            if (selected[r]) {
+                const Region reg = img.regions[r];
+                out.push_back({reg.row, reg.col, static_cast<double>(reg.area), static_cast<uint32_t>(r)});
+            }
         return out;
     }
     // Pixels are in (row, col) order, so each region's pieces come in increasing order: one
@@ -284,7 +287,7 @@ std::vector<Anchor> regionPieces(const BinaryImage& img, const std::vector<uint8
     for (size_t p = 0; p < img.pixelCount(); ++p) {
         const uint32_t reg = img.pixelRegion[p];
         if (!selected[reg]) continue;
-        const int64_t piece = (img.pixelRow[p] - img.regions[reg].rowMin) / pieceRows;
+        const int64_t piece = (img.pixelRow[p] - img.regions.rowMin(reg)) / pieceRows;
         if (piece != curPiece[reg]) {
             curPiece[reg] = piece;
             curAnchor[reg] = static_cast<uint32_t>(out.size());
@@ -376,7 +379,7 @@ private:
 };
 }  // namespace
 
-RecoveryResult recoverPending(const std::vector<Region>& regions, const std::vector<uint32_t>& pending,
+RecoveryResult recoverPending(const RegionList& regions, const std::vector<uint32_t>& pending,
                               const std::vector<Anchor>& anchors, double cosineC, double gapFactor, const Feedback* fb) {
     RecoveryResult res;
     if (anchors.size() < 2 || pending.empty()) return res;
@@ -407,7 +410,7 @@ RecoveryResult recoverPending(const std::vector<Region>& regions, const std::vec
     // a wide gate, far from its track). The test only skips what the search would not find.
     const RowBands bands(anchors, gapFactor > 0 ? 2 * res.maxPairDistance : 0);
     for (size_t i = 0; i < pending.size(); ++i) {
-        const Region& r = regions[pending[i]];
+        const Region r = regions[pending[i]];
         if (bands.farFromAll(r.row, r.col)) continue;
         if (tree.nearest(r.row, r.col, 2, UINT32_MAX, idx, d2, 4 * maxPair2) < 2) continue;
         const Anchor& P = anchors[idx[0]];
@@ -509,7 +512,7 @@ void runFixed(const std::vector<double>& t, const std::vector<double>& oc, const
         else if (c == PointClass::Recovered) ++res.recoveredPoints;
         else ++res.noisePoints;
     }
-    res.regions = std::move(img.regions);
+    res.regionCount = img.regions.size();
     if (cand.empty())
         res.warnings.push_back("no region reaches the area limit (" + std::to_string(res.areaLimit) + " px): no signal found");
     else if (res.signalPoints + res.recoveredPoints == 0)

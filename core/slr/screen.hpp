@@ -166,9 +166,10 @@ struct ScreenResult {
     ExtractionScore inputScore;
     // Per point (same order as the input).
     std::vector<PointClass> pointClass;
-    std::vector<uint32_t> pointRegion;   ///< region id of each point (index into regions)
-    // Per region.
-    std::vector<Region> regions;
+    std::vector<uint32_t> pointRegion;   ///< region id of each point (index into regionClass)
+    // Per region (the regions themselves stay with the image: on a kHz pass they were 38
+    // bytes an event held to the end of the run for their count).
+    size_t regionCount = 0;
     std::vector<RegionClass> regionClass;
     // Counts.
     size_t pixels = 0, candidates = 0, linearRegions = 0, pendingRegions = 0, recoveredRegions = 0;
@@ -214,7 +215,7 @@ ScreenResult screenSignal(const std::vector<double>& t, const std::vector<double
 // ---- The steps, public for tests and for a step-by-step view. ----
 
 /// Step 3: indices of the regions with area ≥ areaLimit (candidates), in region order.
-std::vector<uint32_t> splitByArea(const std::vector<Region>& regions, int64_t areaLimit);
+std::vector<uint32_t> splitByArea(const RegionList& regions, int64_t areaLimit);
 
 /// The automatic area limit (step 3) from a null model: the same epochs with O-C drawn
 /// uniformly over the O-C span (fixed seed), mapped and labelled at the same scale; the limit is
@@ -255,7 +256,7 @@ std::vector<Anchor> regionPieces(const BinaryImage& img, const std::vector<uint8
 /// bin of margin). A candidate region is on the line when ≥ slopeAgreeFraction of the weight of
 /// its pieces' angles is in range. With ≤ 2 pieces in all, every candidate is on the line (a
 /// warning says so).
-LinearityResult findLinearRegions(const std::vector<Region>& regions, const std::vector<uint32_t>& candidates,
+LinearityResult findLinearRegions(const RegionList& regions, const std::vector<uint32_t>& candidates,
                                   const std::vector<Anchor>& pieces, const ScreenParams& params,
                                   const Feedback* fb = nullptr);
 
@@ -277,7 +278,7 @@ struct RecoveryResult {
 /// farther apart than gapFactor × the median nearest-anchor distance are no line to recover on
 /// (else an isolated anchor and the track would accept a whole lens of noise between them).
 /// Fewer than 2 anchors: nothing is recovered.
-RecoveryResult recoverPending(const std::vector<Region>& regions, const std::vector<uint32_t>& pending,
+RecoveryResult recoverPending(const RegionList& regions, const std::vector<uint32_t>& pending,
                               const std::vector<Anchor>& anchors, double cosineC, double gapFactor,
                               const Feedback* fb = nullptr);
 

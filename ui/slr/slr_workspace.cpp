@@ -1598,7 +1598,7 @@ QString SlrWorkspace::summaryHtml(const SlrRun& run) const {
                          .arg(base.magOc, 0, 'g', 4);
     }
     statsHtml += tr("<br>%1 regions, %2 candidates, %3 on the line, %4 recovered · %5 ms")
-                     .arg(s.regions.size())
+                     .arg(s.regionCount)
                      .arg(s.candidates)
                      .arg(s.linearRegions)
                      .arg(s.recoveredRegions)
