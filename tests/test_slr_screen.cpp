@@ -85,10 +85,10 @@ private slots:
         QVERIFY2(img.ok, img.error.c_str());
         QCOMPARE(img.rowOffset, int64_t(479));
         QCOMPARE(img.colOffset, int64_t(1));
-        QCOMPARE(img.pixelRow[img.pointPixel[0]], int64_t(0));
-        QCOMPARE(img.pixelCol[img.pointPixel[0]], int64_t(0));
-        QCOMPARE(img.pixelRow[img.pointPixel[1]], int64_t(2));  // round(481.2) − 479
-        QCOMPARE(img.pixelCol[img.pointPixel[1]], int64_t(2));  // round(3.1) − 1
+        QCOMPARE(img.pixelRow[pointPixels(img)[0]], int64_t(0));
+        QCOMPARE(img.pixelCol[pointPixels(img)[0]], int64_t(0));
+        QCOMPARE(img.pixelRow[pointPixels(img)[1]], int64_t(2));  // round(481.2) − 479
+        QCOMPARE(img.pixelCol[pointPixels(img)[1]], int64_t(2));  // round(3.1) − 1
         QCOMPARE(img.rows, int64_t(3));
         QCOMPARE(img.cols, int64_t(3));
     }
@@ -103,10 +103,10 @@ private slots:
         const BinaryImage img = buildBinaryImage(t, oc, mp);
         QVERIFY2(img.ok, img.error.c_str());
         QCOMPARE(img.pixelCount(), size_t(2));
-        const uint32_t px = img.pointPixel[0];
-        QCOMPARE(img.pointPixel[2], px);
-        QCOMPARE(img.pointPixel[3], px);
-        QVERIFY(img.pointPixel[1] != px);
+        const uint32_t px = pointPixels(img)[0];
+        QCOMPARE(pointPixels(img)[2], px);
+        QCOMPARE(pointPixels(img)[3], px);
+        QVERIFY(pointPixels(img)[1] != px);
         std::vector<uint32_t> on(img.pixelPoints.begin() + img.pixelPointStart[px],
                                  img.pixelPoints.begin() + img.pixelPointStart[px + 1]);
         std::sort(on.begin(), on.end());
@@ -132,7 +132,7 @@ private slots:
         const BinaryImage wide = buildBinaryImage(t, {0, 1e-9, 30e-9}, mp);
         QVERIFY2(wide.ok, wide.error.c_str());
         QVERIFY(wide.pixelRow.wide() && wide.pixelCol.wide());
-        QCOMPARE(wide.pixelCol[wide.pointPixel[2]], int64_t(6000000000));
+        QCOMPARE(wide.pixelCol[pointPixels(wide)[2]], int64_t(6000000000));
         QCOMPARE(wide.regions.size(), size_t(3));
         QCOMPARE(narrow.regions.size(), size_t(2));  // (0 and 1 joined)
         // Neighbouring pixels 5e9 columns out are still linked in the 64-bit image.
@@ -140,10 +140,10 @@ private slots:
         const BinaryImage far = buildBinaryImage({10, 10, 11}, {5e-9, 5.000000000000001e-9 + 1e-18, 0}, mp);
         QVERIFY2(far.ok, far.error.c_str());
         QVERIFY(far.pixelCol.wide());
-        QCOMPARE(far.pixelCol[far.pointPixel[0]], int64_t(5000000000));
-        QCOMPARE(far.pixelCol[far.pointPixel[1]], int64_t(5000000001));  // (a pixel of its own, beside it)
-        QCOMPARE(far.pixelRegion[far.pointPixel[0]], far.pixelRegion[far.pointPixel[1]]);
-        QVERIFY(far.pixelRegion[far.pointPixel[2]] != far.pixelRegion[far.pointPixel[0]]);
+        QCOMPARE(far.pixelCol[pointPixels(far)[0]], int64_t(5000000000));
+        QCOMPARE(far.pixelCol[pointPixels(far)[1]], int64_t(5000000001));  // (a pixel of its own, beside it)
+        QCOMPARE(far.pixelRegion[pointPixels(far)[0]], far.pixelRegion[pointPixels(far)[1]]);
+        QVERIFY(far.pixelRegion[pointPixels(far)[2]] != far.pixelRegion[pointPixels(far)[0]]);
     }
 
     // A one-pixel region is kept as its pixel and point count; every other as a whole Region.
@@ -247,7 +247,7 @@ private slots:
         QCOMPARE(i4.regions.size(), size_t(9));
         QCOMPARE(i8.regions.size(), size_t(4));
         // The X under 8-connectivity: area 5, centroid (1, 1), box 0..2 × 0..2.
-        const Region& x = i8.regions[i8.pixelRegion[i8.pointPixel[0]]];
+        const Region& x = i8.regions[i8.pixelRegion[pointPixels(i8)[0]]];
         QCOMPARE(x.area, int64_t(5));
         QCOMPARE(x.row, 1.0);
         QCOMPARE(x.col, 1.0);
@@ -651,11 +651,14 @@ private slots:
         std::vector<int> seen(n, 0);
         for (uint32_t i : img.pixelPoints) ++seen[i];
         QVERIFY(std::all_of(seen.begin(), seen.end(), [](int c) { return c == 1; }));
+        // ... each on its own pixel: (round(t·mag_T), round(O-C·mag_OC)) less the offsets.
+        const std::vector<uint32_t> pixelOf = pointPixels(img);
+        QCOMPARE(pixelOf.size(), n);
         for (size_t i = 0; i < n; ++i) {
-            const uint32_t px = img.pointPixel[i];
-            QVERIFY(std::find(img.pixelPoints.begin() + img.pixelPointStart[px],
-                              img.pixelPoints.begin() + img.pixelPointStart[px + 1], i) !=
-                    img.pixelPoints.begin() + img.pixelPointStart[px + 1]);
+            int64_t row = 0, col = 0;
+            QVERIFY(mapPoint(pass.epochS[i], pass.ocS[i], mp.magT, mp.magOc, &row, &col));
+            QCOMPARE(img.pixelRow[pixelOf[i]], row - img.rowOffset);
+            QCOMPARE(img.pixelCol[pixelOf[i]], col - img.colOffset);
         }
         // Every point gets exactly one class, the class of its region.
         const ScreenResult r = screenSignal(pass.epochS, pass.ocS, manual(1, 1e7, 7, 8));

@@ -333,7 +333,6 @@ size_t buildPixels(const SortKeys& sk, size_t n, const PixelKeys& k, BinaryImage
     const uint32_t* idx = sk.idx.get();
     auto newPixel = [&](size_t i) { return i == 0 || key[i] != key[i - 1] || (!oneKey && key2[i] != key2[i - 1]); };
     img.pixelPoints.resize(n);
-    img.pointPixel.resize(n);
     size_t pixels = 0;
     for (size_t i = 0; i < n; ++i) pixels += newPixel(i);
     const bool wide = static_cast<uint64_t>(img.rows - 1) > UINT32_MAX || static_cast<uint64_t>(img.cols - 1) > UINT32_MAX;
@@ -352,7 +351,6 @@ size_t buildPixels(const SortKeys& sk, size_t n, const PixelKeys& k, BinaryImage
             }
         }
         img.pixelPoints[i] = idx[i];
-        img.pointPixel[idx[i]] = static_cast<uint32_t>(img.pixelRow.size() - 1);
     }
     img.pixelPointStart.push_back(static_cast<uint32_t>(n));
 
@@ -531,6 +529,13 @@ void labelRegions(UnionFind& uf, size_t pixels, BinaryImage& img) {
 }
 
 }  // namespace
+
+std::vector<uint32_t> pointPixels(const BinaryImage& img) {
+    std::vector<uint32_t> out(img.pixelPoints.size());
+    for (size_t p = 0; p + 1 < img.pixelPointStart.size(); ++p)
+        for (uint32_t k = img.pixelPointStart[p]; k < img.pixelPointStart[p + 1]; ++k) out[img.pixelPoints[k]] = static_cast<uint32_t>(p);
+    return out;
+}
 
 BinaryImage buildBinaryImage(const std::vector<double>& t, const std::vector<double>& oc, const MappingParams& params,
                              const Feedback* fb) {

@@ -145,11 +145,14 @@ struct BinaryImage {
     std::vector<uint32_t> pixelRegion;      ///< region label of each pixel (index into regions)
     std::vector<uint32_t> pixelPointStart;  ///< CSR: points of pixel p are pixelPoints[start[p] .. start[p+1])
     std::vector<uint32_t> pixelPoints;      ///< point indices grouped by pixel (the paper's index matrix)
-    std::vector<uint32_t> pointPixel;       ///< pixel of each input point
     RegionList regions;                     ///< labelled in order of their first pixel in (row, col) order
 
     size_t pixelCount() const { return pixelRow.size(); }
 };
+
+/// The pixel of each point (the index matrix inverted), made on demand: nothing in the
+/// screening needs it, and kept in the image it was 4 bytes an event of a kHz pass's peak.
+std::vector<uint32_t> pointPixels(const BinaryImage& img);
 
 /// Step 1 for one point: the unshifted pixel (row = round(t·mag_T), col = round(O-C·mag_OC)).
 /// False when a product is not finite or exceeds ±2^61 (the caller reports it).

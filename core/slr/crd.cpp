@@ -503,7 +503,7 @@ void clearParsed(CrdPass* p) {
 /// Fills the parsed lists of a pass from its records. Header values present in the records
 /// override the inherited ones already in the pass. False (with *error, the lists left empty)
 /// when the H4 is bad.
-bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::string* error) {
+bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::string* error, std::string_view fileBytes = {}) {
     clearParsed(p);
     p->problem.clear();
     // H1..H3 were read (and warned about) when the file was split into passes.
@@ -515,7 +515,7 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
     const CrdRangeLines& lines = p->rangeLines;
     p->ranges.reserve(lines.size());
     size_t k = 0;  // the type-10 lines, each parsed where it stands among the records
-    CrdRangeLines::Reader rd(lines);
+    CrdRangeLines::Reader rd(lines, fileBytes);
     std::string_view text;
     auto rangesBefore = [&](size_t slot) {
         for (; k < lines.size() && lines.slot(k) <= slot; ++k) {
@@ -878,9 +878,9 @@ bool splitPasses(std::string_view text, const std::string& src, const Feedback* 
 }
 
 // A pass's records parsed; a pass that cannot be read, or has no range record, gets its problem.
-void parseOnePass(CrdPass& p, size_t k, const std::string& src, Sink* sink) {
+void parseOnePass(CrdPass& p, size_t k, const std::string& src, Sink* sink, std::string_view fileBytes = {}) {
     std::string err;
-    if (!parsePassRecords(&p, src, sink, &err)) {
+    if (!parsePassRecords(&p, src, sink, &err, fileBytes)) {
         p.problem = err;
     } else if (p.ranges.empty() && p.normalPoints.empty()) {
         p.problem = where(src, p.session.line) + "pass " + std::to_string(k + 1) + " (" + p.station.name + ", " +
@@ -891,14 +891,14 @@ void parseOnePass(CrdPass& p, size_t k, const std::string& src, Sink* sink) {
 
 // Stage 2: the records of each pass parsed; a pass that cannot be read, or has no range record,
 // gets its problem (progress: the second half). False on cancel.
-bool parsePasses(const std::string& src, const Feedback* feedback, Sink* sink, CrdReadResult* res) {
+bool parsePasses(const std::string& src, const Feedback* feedback, Sink* sink, CrdReadResult* res, std::string_view fileBytes) {
     std::vector<CrdPass>& passes = res->file.passes;
     for (size_t k = 0; k < passes.size(); ++k) {
         if (cancelled(feedback)) {
             res->error = src + ": cancelled";
             return false;
         }
-        parseOnePass(passes[k], k, src, sink);
+        parseOnePass(passes[k], k, src, sink, fileBytes);
         if (feedback) feedback->setProgress(0.5 + 0.5 * static_cast<double>(k + 1) / static_cast<double>(passes.size()));
     }
     return true;
@@ -1121,14 +1121,21 @@ std::shared_ptr<const CrdFileOrigin> crdFileOrigin(const std::string& path) {
 struct CrdRangeLines::Reader::File {
     std::ifstream in;
     std::string buf;
+    std::string_view mem;   // the file's bytes as read (then no stream)
+    std::string_view span;  // the current run's bytes at hand: in buf, or in mem
     size_t pos = 0;
     long long left = 0;  // bytes of the run not read yet
 };
 
-CrdRangeLines::Reader::Reader(const CrdRangeLines& lines) : m_lines(lines) {
+CrdRangeLines::Reader::Reader(const CrdRangeLines& lines, std::string_view fileBytes) : m_lines(lines) {
     if (!lines.m_origin || lines.m_size == 0) return;
     if (!lines.m_allInFile) {
         m_error = lines.m_origin->path + ": the file changed while it was read: open it again";
+        return;
+    }
+    if (!fileBytes.empty()) {
+        m_file = std::make_unique<File>();
+        m_file->mem = fileBytes;
         return;
     }
     if (!sameAsRead(*lines.m_origin, &m_error)) return;
@@ -1151,6 +1158,7 @@ bool CrdRangeLines::Reader::fill() {
     const size_t got = static_cast<size_t>(f.in.gcount());
     f.buf.resize(old + got);
     f.left -= static_cast<long long>(got);
+    f.span = f.buf;
     return got == want;
 }
 
@@ -1167,24 +1175,31 @@ bool CrdRangeLines::Reader::next(std::string_view* text) {
                   ": the file changed since it was read; nothing is written from it: open it again";
         return false;
     };
-    if (m_inRun == 0) {  // a run starts: its span read from the file
+    if (m_inRun == 0) {  // a run starts: its span read from the file (or taken from its bytes)
         const Run& r = m_lines.m_runs[m_run];
-        f.buf.clear();
         f.pos = 0;
-        f.left = r.fileEnd - r.fileBegin;
-        f.in.clear();
-        f.in.seekg(r.fileBegin);
-        if (!f.in) return changed("cannot seek to the line");
+        if (!f.mem.empty()) {
+            if (r.fileEnd > static_cast<long long>(f.mem.size())) return changed("it ends earlier");
+            f.span = f.mem.substr(static_cast<size_t>(r.fileBegin), static_cast<size_t>(r.fileEnd - r.fileBegin));
+            f.left = 0;
+        } else {
+            f.buf.clear();
+            f.span = f.buf;
+            f.left = r.fileEnd - r.fileBegin;
+            f.in.clear();
+            f.in.seekg(r.fileBegin);
+            if (!f.in) return changed("cannot seek to the line");
+        }
     }
     const bool last = m_inRun + 1 == m_lines.runSize(m_run);
     size_t end = std::string::npos;
     for (;;) {
-        end = last ? (f.left == 0 ? f.buf.size() : std::string::npos) : f.buf.find('\n', f.pos);
+        end = last ? (f.left == 0 ? f.span.size() : std::string::npos) : f.span.find('\n', f.pos);
         if (end != std::string::npos) break;
         if (f.left == 0) return changed("fewer lines than it had");
         if (!fill()) return changed("it ends earlier");
     }
-    std::string_view t = std::string_view(f.buf).substr(f.pos, end - f.pos);
+    std::string_view t = f.span.substr(f.pos, end - f.pos);
     f.pos = end + 1;
     while (!t.empty() && t.back() == '\r') t.remove_suffix(1);
     if (last && t.find('\n') != std::string_view::npos) return changed("more lines than it had");
@@ -1353,10 +1368,14 @@ CrdReadResult parseCrdText(std::string_view given, std::string* owned, const std
             res.file.passes.clear();
             return res;
         }
+        // The text is released before the passes are parsed (the records hold their own
+        // copies), except a plain file's, whose type-10 lines are parsed from it by place.
         text = {};
         std::string().swap(storage);
+        if (owned && !inFile) std::string().swap(*owned);
+        const bool parsed = parsePasses(src, feedback, &sink, &res, inFile ? given : std::string_view());
         if (owned) std::string().swap(*owned);
-        if (!parsePasses(src, feedback, &sink, &res) || !setAsideUnusablePasses(&sink, &res)) {
+        if (!parsed || !setAsideUnusablePasses(&sink, &res)) {
             res.file.passes.clear();
             return res;
         }
@@ -1447,9 +1466,10 @@ CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, 
         held.file.path = path;
         Sink sink{&out.warnings, params.maxWarnings};
         PassSplitter splitter(src, &sink, &held.file);
+        // (the lines' texts kept while a pass is open and parsed, then dropped for their places:
+        // parsed from the file read again, a file still being written would lose passes)
+        splitter.setCapacityHints(std::move(linesAfterH4));
         const std::shared_ptr<const CrdFileOrigin> origin = crdFileOrigin(path);
-        if (origin) splitter.setOrigin(origin);  // (read from the file itself, not through gzip)
-        else splitter.setCapacityHints(std::move(linesAfterH4));
         auto handOut = [&]() {
             for (CrdPass& p : splitter.takeClosed()) {
                 parseOnePass(p, p.ordinal - 1, src, &sink);

@@ -380,7 +380,9 @@ public:
     /// The lines in order, from memory or from the file (in blocks).
     class Reader {
     public:
-        explicit Reader(const CrdRangeLines& lines);
+        /// fileBytes: the whole file's bytes as they were read (lines kept by place are taken
+        /// from there, not read again from the file); empty: from the file.
+        explicit Reader(const CrdRangeLines& lines, std::string_view fileBytes = {});
         ~Reader();
         Reader(const Reader&) = delete;
         Reader& operator=(const Reader&) = delete;
