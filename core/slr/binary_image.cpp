@@ -359,13 +359,45 @@ size_t buildPixels(const SortKeys& sk, size_t n, const PixelKeys& k, BinaryImage
 
 }  // namespace
 
+namespace {
+// Whether every field of r fits a 32-bit whole region.
+bool fits32(const Region& r) {
+    auto in = [](int64_t v) { return v >= 0 && v <= int64_t(UINT32_MAX); };
+    return in(r.rowMin) && in(r.rowMax) && in(r.colMin) && in(r.colMax) && in(r.area) && in(r.points);
+}
+}  // namespace
+
 RegionList::RegionList(const std::vector<Region>& regions) {
     bool wide = false;
-    for (const Region& r : regions)
-        wide = wide || r.rowMin < 0 || r.colMin < 0 || r.rowMax > int64_t(UINT32_MAX) || r.colMax > int64_t(UINT32_MAX) ||
-               r.area < 0 || r.points < 0 || r.area > int64_t(UINT32_MAX) || r.points > int64_t(UINT32_MAX);
+    for (const Region& r : regions) wide = wide || !fits32(r);
     reserve(regions.size(), regions.size(), wide);
     for (const Region& r : regions) push_back(r);
+}
+
+// The list's coordinates and whole regions made 64-bit (a region given that a 32-bit one cannot hold).
+void RegionList::widen() {
+    if (m_row.wide()) return;
+    const size_t n = size();
+    PixelCoords rows, cols;
+    rows.reset(n, true);
+    cols.reset(n, true);
+    for (size_t i = 0; i < n; ++i) {
+        rows.push_back(m_row[i]);
+        cols.push_back(m_col[i]);
+    }
+    std::vector<Region> whole;
+    whole.reserve(m_whole32.size());
+    std::vector<uint32_t> slot(m_slot);
+    for (size_t i = 0; i < n; ++i)
+        if (m_slot[i] != kPixel) {
+            slot[i] = static_cast<uint32_t>(whole.size());
+            whole.push_back((*this)[i]);
+        }
+    m_slot = std::move(slot);
+    m_row = std::move(rows);
+    m_col = std::move(cols);
+    std::vector<Whole32>().swap(m_whole32);
+    m_whole64 = std::move(whole);
 }
 
 Region RegionList::operator[](size_t i) const {
@@ -475,8 +507,11 @@ void RegionList::finish() {
 }
 
 void RegionList::push_back(const Region& r) {
+    if (!fits32(r)) widen();
+    // (a centroid of −0.0 is kept whole: from its pixel it would come back as +0.0)
     const bool onePixel = r.area == 1 && r.points <= 255 && r.points >= 0 && r.rowMin == r.rowMax && r.colMin == r.colMax &&
-                          r.row == static_cast<double>(r.rowMin) && r.col == static_cast<double>(r.colMin);
+                          r.row == static_cast<double>(r.rowMin) && r.col == static_cast<double>(r.colMin) &&
+                          !std::signbit(r.row) && !std::signbit(r.col);
     if (onePixel) {
         addPixel(r.rowMin, r.colMin, r.points);
         return;

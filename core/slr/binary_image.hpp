@@ -125,6 +125,7 @@ private:
     };
     static constexpr uint32_t kPixel = UINT32_MAX;
     void makeWhole(size_t i, const Region& r);
+    void widen();
     std::vector<uint32_t> m_slot;   ///< per region: index of its whole region, or kPixel
     PixelCoords m_row, m_col;       ///< per region: its pixel when it is one (else unused)
     std::vector<uint8_t> m_points;  ///< per region: its points when it is one pixel
