@@ -85,12 +85,11 @@ SlrController::SlrController(QObject* parent) : QObject(parent) {
 SlrController::~SlrController() { m_job.cancel(); }
 
 void SlrController::passLoaded() {
-    m_passData = std::make_shared<const PassData>(m_pass);
     m_screenDue = true;
     m_scaleValid = false;
     m_screenings = 0;
     m_run = std::make_shared<const SlrRun>();
-    m_forced.assign(m_pass.t.size(), 0);
+    m_forced.assign(m_passData->t.size(), 0);
 }
 
 namespace {
@@ -243,9 +242,10 @@ bool SlrController::showOpened(OpenedPass o, QString* error) {
         m_passProblem = QString::fromStdString(o.error.message);
         notePassError(m_selected, m_passProblem.section('\n', 0, 0));
         m_job.cancel();  // a run of the previous pass is not delivered
-        m_pass = PassData{};
-        m_pass.source = m_path.toStdString();
-        m_pass.passIndex = m_selected;
+        auto none = std::make_shared<PassData>();
+        none->source = m_path.toStdString();
+        none->passIndex = m_selected;
+        m_passData = std::move(none);
         m_truth.clear();
         passLoaded();
         emit passChanged();
@@ -255,8 +255,8 @@ bool SlrController::showOpened(OpenedPass o, QString* error) {
         return false;
     }
     m_passProblem.clear();
-    m_pass = *o.pass;
-    m_selected = m_pass.passIndex;
+    m_passData = o.pass;  // (shared with the opened pass, not copied: a kHz pass's columns are 29 bytes an event)
+    m_selected = m_passData->passIndex;
     if (m_passErrors.remove(m_selected)) emit passListChanged();
     passOpened();
     return true;
@@ -265,7 +265,7 @@ bool SlrController::showOpened(OpenedPass o, QString* error) {
 void SlrController::passOpened() {
     m_truth.clear();
     passLoaded();
-    m_params.postfit.altitudeKm = m_pass.altitudeKm;
+    m_params.postfit.altitudeKm = m_passData->altitudeKm;
     m_params.postfit.binLengthS = 0;
     for (const auto& w : m_warnings) emit status(QString::fromStdString(w));
     const bool preset = applySatellitePreset();
@@ -273,23 +273,24 @@ void SlrController::passOpened() {
     emit editsChanged();
     emit status(tr("%1: %2 points, O-C from %3%4")
                     .arg(QFileInfo(m_path).fileName())
-                    .arg(m_pass.t.size())
-                    .arg(QString::fromStdString(m_pass.ocOrigin))
-                    .arg(preset ? tr("; preset of %1 applied").arg(QString::fromStdString(m_pass.satellite)) : QString()));
+                    .arg(m_passData->t.size())
+                    .arg(QString::fromStdString(m_passData->ocOrigin))
+                    .arg(preset ? tr("; preset of %1 applied").arg(QString::fromStdString(m_passData->satellite)) : QString()));
     m_job.schedule();
 }
 
 void SlrController::setSimulatedPass(const std::vector<double>& t, const std::vector<double>& oc,
                                      const std::vector<double>& tof, const std::vector<uint8_t>& truth,
                                      const QString& name, double altitudeKm) {
-    m_pass = PassData{};
-    m_pass.source = name.toStdString();
-    m_pass.satellite = name.toStdString();
-    m_pass.ocOrigin = "simulation";
-    m_pass.t = t;
-    m_pass.oc = oc;
-    m_pass.tof = tof;
-    m_pass.altitudeKm = altitudeKm;
+    auto simulated = std::make_shared<PassData>();
+    simulated->source = name.toStdString();
+    simulated->satellite = name.toStdString();
+    simulated->ocOrigin = "simulation";
+    simulated->t = t;
+    simulated->oc = oc;
+    simulated->tof = tof;
+    simulated->altitudeKm = altitudeKm;
+    m_passData = std::move(simulated);
     m_setup.sources.input.clear();  // (no file: its products record none, and no command reruns it)
     m_passes.clear();
     m_warnings.clear();
@@ -319,12 +320,12 @@ SlrController::SweepBase SlrController::sweepBase() const {
     if (!m_screenDue && m_run->screen.ok) b.reuse.screen = std::shared_ptr<const ScreenResult>(m_run, &m_run->screen);
     if (m_reuseScaleForCosine && m_scaleValid && m_params.screen.automatic) b.reuse.scale = m_scale;
     b.params = m_params;
-    if (!m_truth.empty() && m_truth.size() == m_pass.t.size()) {
+    if (!m_truth.empty() && m_truth.size() == m_passData->t.size()) {
         b.labels = m_truth;
         b.labelsName = tr("the simulation's truth");
-    } else if (std::count(m_pass.stationFlag.begin(), m_pass.stationFlag.end(), 2) > 0) {
-        b.labels.resize(m_pass.stationFlag.size());
-        for (size_t i = 0; i < b.labels.size(); ++i) b.labels[i] = m_pass.stationFlag[i] == 2;
+    } else if (std::count(m_passData->stationFlag.begin(), m_passData->stationFlag.end(), 2) > 0) {
+        b.labels.resize(m_passData->stationFlag.size());
+        for (size_t i = 0; i < b.labels.size(); ++i) b.labels[i] = m_passData->stationFlag[i] == 2;
         b.labelsName = tr("the station's filter flags");
     }
     return b;
@@ -372,7 +373,7 @@ void SlrController::clearEdits() {
 void SlrController::setPresetFile(const QString& path) { m_presetFile = path; }
 
 bool SlrController::savePreset(QString* error) {
-    if (m_pass.satellite.empty() && m_pass.ilrsId.empty()) {
+    if (m_passData->satellite.empty() && m_passData->ilrsId.empty()) {
         *error = tr("the pass names no satellite (H3 record) to key a preset on");
         return false;
     }
@@ -386,8 +387,8 @@ bool SlrController::savePreset(QString* error) {
         presets = r.presets;
     }
     SatellitePreset p;
-    p.name = m_pass.satellite;
-    p.ilrsId = m_pass.ilrsId;
+    p.name = m_passData->satellite;
+    p.ilrsId = m_passData->ilrsId;
     // The settings as the analyst has them: the automatic mode stays on unless it was turned off
     // (then the panel holds the scale it had chosen). Storing the chosen scale with the automatic
     // mode off lost the refinement and the track following: STELLA reopened with 70 of 236
@@ -421,8 +422,8 @@ bool SlrController::applySatellitePreset() {
     // The core's lookup and application (applyPreset), as --preset on the command line.
     SlrParams p;
     std::string name, err;
-    if (!applyPreset(m_pass, r.presets, std::string(), &p, &name, &err)) return false;
-    m_appliedPreset = QString::fromStdString(name.empty() ? m_pass.satellite : name);
+    if (!applyPreset(*m_passData, r.presets, std::string(), &p, &name, &err)) return false;
+    m_appliedPreset = QString::fromStdString(name.empty() ? m_passData->satellite : name);
     const double altitude = m_params.postfit.altitudeKm;
     m_params = p;
     if (!(m_params.postfit.altitudeKm > 0)) m_params.postfit.altitudeKm = altitude;
@@ -440,7 +441,7 @@ bool SlrController::exportProducts(const PassProductPaths& paths, QString* error
     // provenance sidecars, all or nothing, never over an input. What opening the pass said goes
     // in the report, as the CLI gathers it; the edits by hand, which no command makes, are said
     // in the report and recorded in the provenance.
-    ScreenedPass screened{&m_setup, nullptr, &m_pass, &m_settings, m_run.get(), m_warnings};
+    ScreenedPass screened{&m_setup, nullptr, m_passData.get(), &m_settings, m_run.get(), m_warnings};
     screened.notes.insert(screened.notes.end(), m_notes.begin(), m_notes.end());
     for (int8_t f : m_forced) screened.forcedByHand += f != 0;
     SlrError e;

@@ -50,7 +50,7 @@ public:
     explicit SlrController(QObject* parent = nullptr);
     ~SlrController() override;
 
-    const core::slr::PassData& pass() const { return m_pass; }
+    const core::slr::PassData& pass() const { return *m_passData; }
     const std::vector<core::slr::PassSummary>& passes() const { return m_passes; }
     /// The readers' warnings about the open pass's files ("FILE:LINE: ..."), empty for a simulation.
     const std::vector<std::string>& warnings() const { return m_warnings; }
@@ -60,7 +60,7 @@ public:
     QString appliedPreset() const { return m_appliedPreset; }
     /// The last run's resolved parameters (what its products were made with).
     const core::slr::PassSettings& settings() const { return m_settings; }
-    bool hasPass() const { return !m_pass.t.empty(); }
+    bool hasPass() const { return !m_passData->t.empty(); }
     const SlrRun& run() const { return *m_run; }
     bool hasRun() const { return m_run->screen.ok; }
     const core::slr::SlrParams& params() const { return m_params; }
@@ -203,7 +203,6 @@ private:
     /// Every export: the core's products writer (stagePassProducts), as the CLI writes them.
     bool exportProducts(const core::slr::PassProductPaths& paths, QString* error) const;
 
-    core::slr::PassData m_pass;
     QString m_path, m_passProblem;
     int m_selected = -1;
     QHash<int, QString> m_passErrors;
@@ -221,7 +220,7 @@ private:
     std::shared_ptr<const SlrRun> m_run = std::make_shared<const SlrRun>();
     TaskJob<core::slr::PassTask> m_job;
     // The pass for the workers, shared read-only.
-    std::shared_ptr<const core::slr::PassData> m_passData;
+    std::shared_ptr<const core::slr::PassData> m_passData = std::make_shared<const core::slr::PassData>();  ///< never null
     // Stages: the screening is due again (a screening parameter or the pass changed); the
     // scale the automatic mode chose may be passed in (only C changed since it was chosen).
     bool m_screenDue = true;

@@ -880,8 +880,7 @@ void SlrWorkspace::showPass() {
         m_imageBand->setVisible(false);
         m_y.clear();
         m_class.clear();
-        m_imgX.clear();
-        m_imgY.clear();
+        m_imgMagT = m_imgMagOc = 0;
         clearTimeCursor();
         m_stats->clear();
         m_info->setText(m_controller->passProblem().isEmpty()
@@ -1109,18 +1108,29 @@ void SlrWorkspace::resetView() {
     m_histPlot->replot(QCustomPlot::rpQueuedReplot);
 }
 
+// Point i's pixel centre on the binary image drawn (s, ns): drawImage's mapping, of the O-C less
+// the track's trend where the kept image was flattened (the run drawn is the controller's: the
+// image is drawn again on every run).
+QPointF SlrWorkspace::imagePixelOf(size_t i) const {
+    const PassData& p = m_controller->pass();
+    const ScreenResult& s = m_controller->run().screen;
+    const double oc = s.flattenS.size() == p.t.size() ? p.oc[i] - s.flattenS[i] : p.oc[i];
+    return QPointF(std::llround(p.t[i] * m_imgMagT) / m_imgMagT, std::llround(oc * m_imgMagOc) / m_imgMagOc * 1e9);
+}
+
 int SlrWorkspace::pointNear(const QCustomPlot* plot, const QPointF& pixel) const {
     const PassData& p = m_controller->pass();
     if (!m_controller->hasRun() || m_y.size() != int(p.t.size())) return -1;
     const bool image = plot == m_imagePlot;
-    if (image && m_imgX.size() != m_y.size()) return -1;
+    if (image && !(m_imgMagT > 0)) return -1;
     // The nearest point within 10 px.
     double best = 100;
     int k = -1;
     for (int i = 0; i < m_y.size(); ++i) {
-        const double dx = plot->xAxis->coordToPixel(image ? m_imgX[i] : p.t[size_t(i)]) - pixel.x();
+        const double x = image ? std::llround(p.t[size_t(i)] * m_imgMagT) / m_imgMagT : p.t[size_t(i)];
+        const double dx = plot->xAxis->coordToPixel(x) - pixel.x();
         if (std::fabs(dx) > 10) continue;
-        const double dy = plot->yAxis->coordToPixel(image ? m_imgY[i] : m_y[i]) - pixel.y();
+        const double dy = plot->yAxis->coordToPixel(image ? imagePixelOf(size_t(i)).y() : m_y[i]) - pixel.y();
         if (dx * dx + dy * dy < best) {
             best = dx * dx + dy * dy;
             k = i;
@@ -1159,14 +1169,14 @@ void SlrWorkspace::showTimeCursor(QCustomPlot* source, const QPointF& coords, co
     own.y = coords.y();
     if (k >= 0) {
         oc.marks = {QPointF(t, m_y[k])};
-        if (m_imgX.size() == m_y.size()) image.marks = {QPointF(m_imgX[k], m_imgY[k])};
+        if (m_imgMagT > 0) image.marks = {imagePixelOf(size_t(k))};
         const SlrRun& run = m_controller->run();
         if (run.post.ok && size_t(k) < run.post.residuals.size()) {
             hist.hasX = true;
             hist.x = run.post.residuals[size_t(k)] * 1e12;  // the histogram's axis: ps two-way
         }
         // Two short lines over the plot (the hover line above the plots has the rest).
-        const double y = source == m_ocPlot ? m_y[k] : m_imgY[k];
+        const double y = source == m_ocPlot ? m_y[k] : imagePixelOf(size_t(k)).y();
         const bool ps = source == m_ocPlot && m_ocPlot->yAxis2->visible();
         own.text = tr("%1 · %2 %3 %4\n%5")
                        .arg(PlotKit::axisText(source->xAxis, t), ps ? tr("residual") : source == m_ocPlot ? tr("O-C") : tr("image"),
@@ -1374,13 +1384,9 @@ void SlrWorkspace::drawImage(const SlrRun& run) {
     std::vector<double> imgOc(p.oc);
     if (flattened)
         for (size_t i = 0; i < n; ++i) imgOc[i] -= s.flattenS[i];
-    // Each point's pixel centre (the time cursor rings it).
-    m_imgX.resize(int(n));
-    m_imgY.resize(int(n));
-    for (size_t i = 0; i < n; ++i) {
-        m_imgX[int(i)] = std::llround(p.t[i] * s.magT) / s.magT;
-        m_imgY[int(i)] = std::llround(imgOc[i] * s.magOc) / s.magOc * 1e9;
-    }
+    // (each point's pixel centre, which the time cursor rings: imagePixelOf)
+    m_imgMagT = s.magT;
+    m_imgMagOc = s.magOc;
     // (Short enough for the plot's height in a 1024×700 window.)
     m_imagePlot->yAxis->setLabel(flattened ? tr("O-C − track trend (ns)") : tr("O-C (ns, two-way)"));
     {

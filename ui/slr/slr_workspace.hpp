@@ -203,7 +203,10 @@ private:
     QLabel* m_hover;
     QVector<double> m_y;           ///< per point: the main plot's value (ns, or ps in the residual view)
     QVector<const char*> m_class;  ///< per point: its class in the last run
-    QVector<double> m_imgX, m_imgY;  ///< per point: its pixel's centre on the binary image (s, ns)
+    /// The binary image drawn: its magnifications (a point's pixel centre is computed from them,
+    /// imagePixelOf; two columns of them were 16 bytes an event of a kHz pass). 0: none drawn.
+    double m_imgMagT = 0, m_imgMagOc = 0;
+    QPointF imagePixelOf(size_t i) const;
     QPointer<SlrAllPassesDialog> m_all;
     SlrStationNpPanel* m_stationNps;
     QTabWidget* m_bottomTabs;
