@@ -22,6 +22,7 @@
 int main(int argc, char** argv) {
     lwb::core::reexecWithHugePages(argv);
     lwb::core::tuneAllocator();
+    lwb::core::useOneArena();
     // --screenshot renders without a display, and --help / --version need none.
     bool offscreen = false;
     for (int i = 1; i < argc; ++i) {

@@ -328,6 +328,7 @@ int largePass(lwb::ui::MainWindow& w, const QString& path, int changes) {
 int main(int argc, char** argv) {
     lwb::core::reexecWithHugePages(argv);
     lwb::core::tuneAllocator();
+    lwb::core::useOneArena();
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     QApplication::setApplicationName("laserwb-uibench");

@@ -50,6 +50,12 @@ void tuneAllocator() {
 #endif
 }
 
+void useOneArena() {
+#if defined(__GLIBC__)
+    mallopt(M_ARENA_MAX, 1);
+#endif
+}
+
 void reexecWithHugePages(char** argv, const char* exe) {
 #if defined(__GLIBC__)
     const char* now = std::getenv("GLIBC_TUNABLES");

@@ -35,6 +35,14 @@ void tuneAllocator();
 /// The measured effect: the 10^7-event pass 36.7 -> 17.2 s, 10^6 events 1.37 -> 1.27 s, the
 /// same peak memory (docs/benchmarks.md).
 void reexecWithHugePages(char** argv, const char* exe = "/proc/self/exe");
+/// The workbench's setting, after tuneAllocator: every thread allocates from one malloc arena
+/// (glibc; nothing elsewhere). The workbench keeps a run on screen while its worker computes the
+/// next; with an arena per thread the worker's and the GUI thread's each kept their own high-water
+/// mark (freed memory stays in its arena), and a 10^7-event kHz pass's slider session peaked at
+/// 223 bytes an event; with one, 172. Its slider latencies moved by less than the runs' noise
+/// (docs/benchmarks.md). The command line keeps an arena per thread (the scale search's trials
+/// side by side, above).
+void useOneArena();
 /// Gives the calling thread's malloc arena advised (huge) pages, once per thread; does nothing
 /// unless the executable called tuneAllocator. Called first by the core's worker threads.
 void adviseThreadHeap();
