@@ -13,7 +13,8 @@
 // advised for transparent huge pages (madvise; the kernel's default mode): faults fell to
 // about 1 300 on both, the runs to 0.27 s and 0.8–1.0 s; peak memory rose by 1.5 MB and by
 // 20–27 MB (135–141 B/point).
-// Worker threads allocate from arenas of their own (glibc's default). With one arena for every
+// Worker threads allocate from arenas of their own (glibc's default; the workbench gives that up,
+// useOneArena below). With one arena for every
 // thread, a block one core had just freed, still in that core's cache, was handed to the other
 // core's next allocation, and each of the scale search's trials allocates about 13 MB: the same
 // trials took 27 % more CPU time run on two threads than on one (170 → 216 ms for the ladders of
@@ -39,9 +40,10 @@ void reexecWithHugePages(char** argv, const char* exe = "/proc/self/exe");
 /// (glibc; nothing elsewhere). The workbench keeps a run on screen while its worker computes the
 /// next; with an arena per thread the worker's and the GUI thread's each kept their own high-water
 /// mark (freed memory stays in its arena), and a 10^7-event kHz pass's slider session peaked at
-/// 223 bytes an event; with one, 172. Its slider latencies moved by less than the runs' noise
-/// (docs/benchmarks.md). The command line keeps an arena per thread (the scale search's trials
-/// side by side, above).
+/// 223 bytes an event; with one, 174. The price is the contention above: the workbench's slider
+/// medians 3-8 % slower on the 2-core VM (a 10^5-point pass 118.6 -> 122.5 ms, the footprint's
+/// threshold 60.8 -> 65.4 ms; docs/benchmarks.md), likely more with more cores. adviseThreadHeap
+/// then advises the shared arena again (harmless). The command line keeps an arena per thread.
 void useOneArena();
 /// Gives the calling thread's malloc arena advised (huge) pages, once per thread; does nothing
 /// unless the executable called tuneAllocator. Called first by the core's worker threads.
