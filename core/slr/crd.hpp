@@ -359,9 +359,11 @@ public:
     void add(std::string_view text, long line, size_t slot, long long fileOffset = -1);
     void reserve(size_t lines, size_t bytes);
     /// Before any line is added: the lines to come are `origin`'s own bytes at the offsets given
-    /// to add(), so only their places are kept (the texts are read back from the file, in
-    /// blocks, when parsed or written). A raw kHz pass's type-10 texts were copied beside the
-    /// file's text it was read from: 54 of a 10⁶-event pass's 113 MB at its read (issue 44).
+    /// to add(), so only their places are kept: the reader parses them from the file's text it
+    /// holds until then (Reader's fileBytes), and a writer reads them back from the file in
+    /// blocks. A raw kHz pass's type-10 texts were copied beside the file's text they were read
+    /// from: 54 of a 10⁶-event pass's 113 MB at its read (issue 44). A line added with no place
+    /// (fileOffset −1) brings the earlier ones back into memory and the texts are kept from there.
     void placesOnly(const std::shared_ptr<const CrdFileOrigin>& origin);
     /// Drops the texts when every line has its place in `origin`'s file (else keeps them).
     void keepInFile(const std::shared_ptr<const CrdFileOrigin>& origin);
