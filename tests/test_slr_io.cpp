@@ -688,6 +688,53 @@ private slots:
         QVERIFY(!QFile::exists(QString::fromStdString(out)));
     }
 
+    // Issue 44: a range's record index and line are kept as runs rising by one (CrdStepColumn).
+    // Every value comes back as pushed: one run, runs broken by other records, a pattern that
+    // breaks every other value (then one value per record), an erase; and on every shared file,
+    // each range's line is its type-10 line's (rangeLines, by its record index, rising) and its
+    // text starts "10".
+    void rangeRecordsAndLinesComeBackAsPushed() {
+        const std::vector<std::vector<uint32_t>> cases = {
+            {}, {7}, {0, 1, 2, 3, 4}, {5, 6, 7, 20, 21, 22, 40, 41}, {3, 3, 3}, {9, 8, 7, 6},
+            {0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30, 32, 34, 36, 38, 40, 42, 44, 46, 48, 50},
+            {UINT32_MAX - 1, UINT32_MAX, 0, 1}};
+        for (const auto& values : cases) {
+            CrdStepColumn<uint32_t> c;
+            for (uint32_t v : values) c.push(v);
+            for (size_t i = 0; i < values.size(); ++i) QCOMPARE(c.at(i), values[i]);
+            if (values.size() > 20) QVERIFY(c.bytes() <= (values.size() + 16) * 2 * sizeof(uint32_t));
+            if (values.size() < 3) continue;
+            std::vector<uint32_t> rest = values;
+            rest.erase(rest.begin() + 1);
+            c.erase(1);
+            c.push(1000);
+            rest.push_back(1000);
+            for (size_t i = 0; i < rest.size(); ++i) QCOMPARE(c.at(i), rest[i]);
+        }
+        CrdStepColumn<uint32_t> big;
+        for (uint32_t v = 0; v < 1000000; ++v) big.push(v + (v >= 500000 ? 3 : 0));  // a meteorological line between
+        QCOMPARE(big.at(499999), 499999u);
+        QCOMPARE(big.at(500000), 500003u);
+        QVERIFY2(big.bytes() < 1000, qPrintable(QString::number(big.bytes())));  // two runs, not 4 MB
+        int files = 0;
+        for (const QString& name : QDir(lwbtest::sharedPath("slr")).entryList({"*.frd", "*.fr2", "*.npt", "*.np2"})) {
+            const CrdReadResult r = parseCrd(lwbtest::readAll(lwbtest::sharedPath("slr/" + name)).toStdString(), "x");
+            if (!r.ok) continue;
+            ++files;
+            for (const CrdPass& p : r.file.passes) {
+                for (size_t i = 0; i < p.ranges.size(); ++i) {
+                    const size_t k = p.ranges.record(i);
+                    QVERIFY(k < p.rangeLines.size() && (i == 0 || k > p.ranges.record(i - 1)));
+                    QCOMPARE(p.ranges.line(i), p.rangeLines.line(k));
+                    QCOMPARE(p.ranges[i].line, p.ranges.line(i));
+                    QCOMPARE(p.ranges[i].record, k);
+                    QVERIFY(p.rangeLines.text(k).substr(0, 2) == "10");
+                }
+            }
+        }
+        if (files == 0) QSKIP("shared SLR data absent");
+    }
+
     void setFilterFlagsChangesOnlyTheFlag() {
         if (!lwbtest::haveShared("slr/7080_JASON1_crd_071220_2033_0.frd")) QSKIP("shared SLR data absent");
         CrdReadResult a = readCrd(lwbtest::str(lwbtest::sharedPath("slr/7080_JASON1_crd_071220_2033_0.frd")));

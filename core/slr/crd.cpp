@@ -935,7 +935,6 @@ bool setAsideUnusablePasses(Sink* sink, CrdReadResult* res) {
 
 void CrdRanges::reserve(size_t n) {
     for (auto* v : {&m_sod, &m_tof}) v->reserve(n);
-    for (auto* v : {&m_record, &m_line}) v->reserve(n);
     for (auto* v : {&m_event, &m_flag}) v->reserve(n);
 }
 
@@ -954,8 +953,8 @@ CrdRange CrdRanges::operator[](size_t i) const {
     r.stopNumber = m_stop.at(i);
     r.receiveAmplitude = m_rxAmp.at(i);
     r.transmitAmplitude = m_txAmp.at(i);
-    r.record = m_record[i];
-    r.line = static_cast<long>(m_line[i]);
+    r.record = m_record.at(i);
+    r.line = static_cast<long>(m_line.at(i));
     return r;
 }
 
@@ -981,19 +980,20 @@ void CrdRanges::push_back(const CrdRange& r) {
     m_txAmp.push(r.transmitAmplitude, n);
     // (a record index or line beyond 2^32 would be a file of hundreds of GB: refused before it
     // is read, inputMemoryProblem)
-    m_record.push_back(static_cast<uint32_t>(r.record));
-    m_line.push_back(static_cast<uint32_t>(r.line));
+    m_record.push(static_cast<uint32_t>(r.record));
+    m_line.push(static_cast<uint32_t>(r.line));
 }
 
 void CrdRanges::erase(size_t i) {
     auto at = [i](auto& v) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(i)); };
-    at(m_sod), at(m_tof), at(m_event), at(m_flag), at(m_record), at(m_line);
+    at(m_sod), at(m_tof), at(m_event), at(m_flag);
+    m_record.erase(i), m_line.erase(i);
     m_config.erase(i), m_channel.erase(i), m_stop.erase(i), m_rxAmp.erase(i), m_txAmp.erase(i);
 }
 
 size_t CrdRanges::bytes() const {
     size_t b = (m_sod.capacity() + m_tof.capacity()) * sizeof(double) +
-               (m_record.capacity() + m_line.capacity()) * sizeof(uint32_t) + m_event.capacity() + m_flag.capacity() +
+               m_record.bytes() + m_line.bytes() + m_event.capacity() + m_flag.capacity() +
                m_config.bytes() + m_channel.bytes() + m_stop.bytes() + m_rxAmp.bytes() + m_txAmp.bytes();
     for (const auto& s : m_configIds) b += sizeof(s) + s.capacity();
     return b;

@@ -189,8 +189,73 @@ private:
     std::vector<T> m_values;
 };
 
-/// The type-10 records of a pass by column (issue 44): about 30 bytes a record where a
-/// CrdRange is 96, its configuration id a small number into the pass's ids, the columns that
+/// A column of a pass's type-10 records whose value mostly rises by one from record to record
+/// (a record's index among the pass's lines, its line in the file): kept as runs, each its
+/// first record and value, until the runs would outweigh a value per record (every other line
+/// a meteorological record, say), then one value per record. A raw kHz pass's type-10 lines
+/// follow one another: one run (issue 44: 8 of its 24 bytes a record). Also a CRD pass's
+/// record index per point (PassData::rangeIndex).
+template <class T>
+class CrdStepColumn {
+public:
+    static CrdStepColumn of(const std::vector<T>& values) {
+        CrdStepColumn c;
+        for (T v : values) c.push(v);
+        return c;
+    }
+    size_t size() const { return m_size; }
+    bool empty() const { return m_size == 0; }
+    T at(size_t i) const {
+        if (!m_values.empty()) return m_values[i];
+        const auto r = std::upper_bound(m_runs.begin(), m_runs.end(), i,
+                                        [](size_t k, const Run& run) { return k < run.first; }) - 1;
+        return static_cast<T>(r->value + static_cast<T>(i - r->first));
+    }
+    void push(T v) {
+        if (m_values.empty() && m_asRuns) {
+            if (m_runs.empty() || v != static_cast<T>(m_last + 1)) {
+                if ((m_runs.size() + 1) * sizeof(Run) > (m_size + 16) * sizeof(T)) {
+                    toValues();  // (the runs would outweigh the values)
+                } else {
+                    m_runs.push_back({m_size, v});
+                }
+            }
+        }
+        if (!m_asRuns) m_values.push_back(v);
+        m_last = v;
+        ++m_size;
+    }
+    void erase(size_t i) {
+        toValues();
+        m_values.erase(m_values.begin() + static_cast<std::ptrdiff_t>(i));
+        --m_size;
+    }
+    size_t bytes() const { return m_values.capacity() * sizeof(T) + m_runs.capacity() * sizeof(Run); }
+
+private:
+    struct Run {
+        size_t first;  // its first record
+        T value;       // that record's value
+    };
+    void toValues() {
+        if (!m_asRuns) return;
+        std::vector<T> v;
+        v.reserve(m_size + 1);
+        for (size_t i = 0; i < m_size; ++i) v.push_back(at(i));
+        m_values.swap(v);
+        m_runs = std::vector<Run>();
+        m_asRuns = false;
+    }
+    std::vector<Run> m_runs;
+    std::vector<T> m_values;
+    size_t m_size = 0;
+    T m_last{};
+    bool m_asRuns = true;
+};
+
+/// The type-10 records of a pass by column (issue 44): 18 bytes a record where a CrdRange is
+/// 96 (epoch and TOF 8 each, epoch event and flag 1 each; the record index and line as runs),
+/// its configuration id a small number into the pass's ids, the columns that
 /// do not change (channel, stop, amplitudes "na") one value. Read a record with [] (a CrdRange
 /// by value) or a column; records are added with push_back and changed with setFilterFlag.
 class CrdRanges {
@@ -212,8 +277,8 @@ public:
     double tofS(size_t i) const { return m_tof[i]; }
     int filterFlag(size_t i) const { return m_flag[i]; }
     int epochEvent(size_t i) const { return m_event[i]; }
-    size_t record(size_t i) const { return m_record[i]; }
-    long line(size_t i) const { return static_cast<long>(m_line[i]); }
+    size_t record(size_t i) const { return m_record.at(i); }
+    long line(size_t i) const { return static_cast<long>(m_line.at(i)); }
     const std::string& configId(size_t i) const { return m_configIds[m_config.at(i)]; }
     /// Bytes held (the benchmark's accounting).
     size_t bytes() const;
@@ -247,7 +312,7 @@ private:
     std::vector<std::string> m_configIds;
     uint32_t m_lastConfig = 0;              ///< the last record's (the likeliest for the next one)
     std::vector<int8_t> m_event, m_flag;
-    std::vector<uint32_t> m_record, m_line;
+    CrdStepColumn<uint32_t> m_record, m_line;
     CrdLazyColumn<int32_t> m_channel, m_stop;
     CrdLazyColumn<double> m_rxAmp, m_txAmp;
 };

@@ -539,7 +539,8 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
     d.oc = std::move(oc.oc_s);
     d.tof = std::move(oc.tof_s);
     d.stationFlag = std::move(oc.filter_flag);
-    d.rangeIndex = std::move(oc.range_index);
+    d.rangeIndex = CrdStepColumn<uint32_t>::of(oc.range_index);
+    std::vector<uint32_t>().swap(oc.range_index);
     if (!(altitudeKm > 0)) {
         // No prediction: the shortest one-way range of the pass bounds the altitude from above.
         double tmin = INFINITY;

@@ -91,7 +91,9 @@ struct PassData {
     std::vector<double> oc;        ///< O-C (s, two-way)
     std::vector<double> tof;       ///< observed two-way TOF (s); empty for O-C tables
     std::vector<int8_t> stationFlag;  ///< the station's filter flag per point (CRD, or an O-C table's column), empty otherwise
-    std::vector<uint32_t> rangeIndex;  ///< CrdPass::ranges index per point (CRD)
+    /// CrdPass::ranges index per point (CRD; .at(i)): runs rising by one, so a pass whose every
+    /// record has an O-C holds one run, not 4 bytes an event (issue 44).
+    CrdStepColumn<uint32_t> rangeIndex;
     double altitudeKm = 0;         ///< satellite altitude estimate for the normal-point bin (0 = unknown)
     bool hasCrd = false;
     long startMjd = 0;             ///< MJD of the day the epochs count from (a CRD pass's H4 start day); 0 for an O-C table

@@ -73,7 +73,7 @@ bool writeScreenCsv(const std::string& path, const PassData& pass, const ScreenR
             const int kept = post && post->ok ? post->kept[i] : c != PointClass::Noise;
             // index: the type-10 record of the CRD pass (a record without an O-C, e.g. a one-way
             // epoch event, has no row), else the row of the O-C table.
-            const size_t index = i < pass.rangeIndex.size() ? pass.rangeIndex[i] : i;
+            const size_t index = i < pass.rangeIndex.size() ? pass.rangeIndex.at(i) : i;
             putInt(index);
             block += ',';
             put(pass.t[i], std::chars_format::fixed, 9);
@@ -140,7 +140,7 @@ bool writeScreenedCrd(const std::string& path, const PassData& pass, const std::
     std::vector<int> flags(p.ranges.size());
     for (size_t k = 0; k < p.ranges.size(); ++k) flags[k] = p.ranges.filterFlag(k);
     for (size_t i = 0; i < pass.rangeIndex.size() && i < accepted.size(); ++i)
-        flags[pass.rangeIndex[i]] = accepted[i] ? 2 : 1;
+        flags[pass.rangeIndex.at(i)] = accepted[i] ? 2 : 1;
     return writeCrdWithFlags(path, *pass.crd, size_t(pass.passIndex), flags, alone, error);
 }
 
@@ -192,7 +192,7 @@ bool normalPointPass(const PassData& pass, const std::vector<NormalPoint>& nps, 
             return false;
         }
         if (np.pointIndex < pass.rangeIndex.size()) {
-            const CrdRange& src = full.ranges[pass.rangeIndex[np.pointIndex]];
+            const CrdRange& src = full.ranges[pass.rangeIndex.at(np.pointIndex)];
             c.configId = src.configId;
             c.epochEvent = src.epochEvent;
         }

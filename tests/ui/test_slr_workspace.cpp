@@ -1672,7 +1672,7 @@ private slots:
         for (int k : {0, int(pass.t.size() / 2), int(pass.t.size()) - 1}) {
             const QString text = ws.pointText(k);
             QVERIFY2(text.contains(QString(" · station flag %1").arg(int(pass.stationFlag[size_t(k)]))) &&
-                         text.contains(QString(" · record %1").arg(pass.rangeIndex[size_t(k)])),
+                         text.contains(QString(" · record %1").arg(pass.rangeIndex.at(size_t(k)))),
                      qPrintable(text));
             seen += pass.stationFlag[size_t(k)] == 1 || pass.stationFlag[size_t(k)] == 2;
         }

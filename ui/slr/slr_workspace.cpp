@@ -1215,7 +1215,7 @@ QString SlrWorkspace::pointText(int k) const {
     const auto& forced = m_controller->forced();
     if (size_t(k) < forced.size() && forced[size_t(k)]) text += forced[size_t(k)] > 0 ? tr(" (forced in)") : tr(" (forced out)");
     if (p.stationFlag.size() == p.t.size()) text += tr(" · station flag %1").arg(int(p.stationFlag[size_t(k)]));
-    text += p.rangeIndex.size() == p.t.size() ? tr(" · record %1").arg(p.rangeIndex[size_t(k)]) : tr(" · row %1").arg(k);
+    text += p.rangeIndex.size() == p.t.size() ? tr(" · record %1").arg(p.rangeIndex.at(size_t(k))) : tr(" · row %1").arg(k);
     return text;
 }
 
