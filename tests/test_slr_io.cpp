@@ -701,7 +701,12 @@ private slots:
         for (const auto& values : cases) {
             CrdStepColumn<uint32_t> c;
             for (uint32_t v : values) c.push(v);
+            QCOMPARE(c.size(), values.size());
+            QCOMPARE(c.empty(), values.empty());
             for (size_t i = 0; i < values.size(); ++i) QCOMPARE(c.at(i), values[i]);
+            const CrdStepColumn<uint32_t> same = CrdStepColumn<uint32_t>::of(values);
+            QCOMPARE(same.size(), values.size());
+            for (size_t i = 0; i < values.size(); ++i) QCOMPARE(same.at(i), values[i]);
             if (values.size() > 20) QVERIFY(c.bytes() <= (values.size() + 16) * 2 * sizeof(uint32_t));
             if (values.size() < 3) continue;
             std::vector<uint32_t> rest = values;
@@ -709,13 +714,33 @@ private slots:
             c.erase(1);
             c.push(1000);
             rest.push_back(1000);
+            QCOMPARE(c.size(), rest.size());
             for (size_t i = 0; i < rest.size(); ++i) QCOMPARE(c.at(i), rest[i]);
+            c.erase(c.size() - 1);  // the last one
+            rest.pop_back();
+            QCOMPARE(c.size(), rest.size());
+            for (size_t i = 0; i < rest.size(); ++i) QCOMPARE(c.at(i), rest[i]);
+            // Moved from: empty, as a vector is; the moved-to column has the values.
+            CrdStepColumn<uint32_t> moved = std::move(c);
+            QCOMPARE(c.size(), size_t(0));
+            QVERIFY(c.empty());
+            QCOMPARE(moved.size(), rest.size());
+            for (size_t i = 0; i < rest.size(); ++i) QCOMPARE(moved.at(i), rest[i]);
+            c.push(5);  // (usable again)
+            QCOMPARE(c.at(0), 5u);
         }
         CrdStepColumn<uint32_t> big;
         for (uint32_t v = 0; v < 1000000; ++v) big.push(v + (v >= 500000 ? 3 : 0));  // a meteorological line between
         QCOMPARE(big.at(499999), 499999u);
         QCOMPARE(big.at(500000), 500003u);
         QVERIFY2(big.bytes() < 1000, qPrintable(QString::number(big.bytes())));  // two runs, not 4 MB
+        big.erase(10);  // (an erased record, a leap second's: still runs)
+        QCOMPARE(big.size(), size_t(999999));
+        QCOMPARE(big.at(9), 9u);
+        QCOMPARE(big.at(10), 11u);
+        QCOMPARE(big.at(499998), 499999u);
+        QCOMPARE(big.at(499999), 500003u);
+        QVERIFY2(big.bytes() < 1000, qPrintable(QString::number(big.bytes())));
         int files = 0;
         for (const QString& name : QDir(lwbtest::sharedPath("slr")).entryList({"*.frd", "*.fr2", "*.npt", "*.np2"})) {
             const CrdReadResult r = parseCrd(lwbtest::readAll(lwbtest::sharedPath("slr/" + name)).toStdString(), "x");

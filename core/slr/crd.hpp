@@ -193,7 +193,7 @@ private:
 /// (a record's index among the pass's lines, its line in the file): kept as runs, each its
 /// first record and value, until the runs would outweigh a value per record (every other line
 /// a meteorological record, say), then one value per record. A raw kHz pass's type-10 lines
-/// follow one another: one run (issue 44: 8 of its 24 bytes a record). Also a CRD pass's
+/// follow one another: one run (issue 44: 8 of its 26 bytes a record). Also a CRD pass's
 /// record index per point (PassData::rangeIndex).
 template <class T>
 class CrdStepColumn {
@@ -202,6 +202,22 @@ public:
         CrdStepColumn c;
         for (T v : values) c.push(v);
         return c;
+    }
+    CrdStepColumn() = default;
+    CrdStepColumn(const CrdStepColumn&) = default;
+    CrdStepColumn& operator=(const CrdStepColumn&) = default;
+    // (moved from: empty, as a moved-from vector is; the defaults kept its size)
+    CrdStepColumn(CrdStepColumn&& o) noexcept { swap(o); }
+    CrdStepColumn& operator=(CrdStepColumn&& o) noexcept {
+        CrdStepColumn(std::move(o)).swap(*this);
+        return *this;
+    }
+    void swap(CrdStepColumn& o) noexcept {
+        m_runs.swap(o.m_runs);
+        m_values.swap(o.m_values);
+        std::swap(m_size, o.m_size);
+        std::swap(m_last, o.m_last);
+        std::swap(m_asRuns, o.m_asRuns);
     }
     size_t size() const { return m_size; }
     bool empty() const { return m_size == 0; }
@@ -225,10 +241,13 @@ public:
         m_last = v;
         ++m_size;
     }
+    // (kept again as runs where they fit: a pass with one leap-second record erased (noLeap)
+    // is still one or two runs)
     void erase(size_t i) {
-        toValues();
-        m_values.erase(m_values.begin() + static_cast<std::ptrdiff_t>(i));
-        --m_size;
+        CrdStepColumn rest;
+        for (size_t k = 0; k < m_size; ++k)
+            if (k != i) rest.push(at(k));
+        swap(rest);
     }
     size_t bytes() const { return m_values.capacity() * sizeof(T) + m_runs.capacity() * sizeof(Run); }
 
