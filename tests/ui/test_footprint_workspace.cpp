@@ -54,6 +54,29 @@ private slots:
         QCOMPARE(finished.first().at(1).toInt(), 0);  // nothing unreadable
     }
 
+    // A load dropped by clearing the list (what undoing a restored session part did) stayed
+    // "loading" for ever: waitIdle never returned and the progress bar never went. Now the
+    // controller is idle at once, says the load finished cancelled, and nothing of it arrives.
+    void clearingDuringALoadLeavesTheControllerIdle() {
+        MainWindow w;
+        FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();
+        QSignalSpy finished(c, &FootprintController::loadFinished);
+        c->open({m_dir.path() + "/shots"});
+        QVERIFY(c->busy());
+        c->clear();
+        QCOMPARE(finished.size(), 1);
+        QCOMPARE(finished.first().at(2).toBool(), true);  // cancelled
+        QVERIFY(c->waitIdle(10000));
+        QTest::qWait(300);  // (the dropped load's timer ticks meanwhile: nothing of it is appended)
+        QCOMPARE(c->count(), 0);
+        QCOMPARE(finished.size(), 1);
+        // And a load after it runs to its end as usual.
+        c->open({m_dir.path() + "/shots"});
+        QVERIFY(finished.wait(30000));
+        QCOMPARE(c->count(), 40);
+        QVERIFY(c->waitIdle(10000));
+    }
+
     void sliderChangesTheCurrentShotAndTheCounts() {
         MainWindow w;
         FootprintController* c = w.workspace<lwb::ui::FootprintWorkspace>()->controller();

@@ -12,6 +12,7 @@
 
 #include "lwb_version.hpp"
 #include "test_support.hpp"
+#include "ui/calib/calib_workspace.hpp"
 #include "ui/footprint/footprint_controller.hpp"
 #include "ui/footprint/footprint_workspace.hpp"
 #include "ui/shell/main_window.hpp"
@@ -271,6 +272,9 @@ private slots:
         const QList<QByteArray> strings = {"\"\"", "\"/dev/zero\"", "\"" + d.toUtf8() + "\"", "\"/nonexistent/x.frd\"",
                                            "\"" + QByteArray(10000, 'a') + "\"", "0", "null", "[\"a\"]"};
         int opened = 0, refused = 0;
+        // One window for every mutant, as an analyst opens session after session: a refused one
+        // leaves the window as it was, whatever the sessions opened before it left there.
+        MainWindow w;
         for (int i = 0; i < 160; ++i) {
             QByteArray m = original;
             const int at = pick(m.size());
@@ -294,7 +298,6 @@ private slots:
             }
             const QString path = d + QString("/m%1.lwb.json").arg(i);
             QVERIFY(lwbtest::writeText(path, m));
-            MainWindow w;
             const QJsonObject before = w.workspace<lwb::ui::FootprintWorkspace>()->saveState();
             QString err;
             if (w.openSession(path, true, &err)) {
@@ -303,6 +306,13 @@ private slots:
             } else {
                 ++refused;
                 QVERIFY2(err.contains(path), qPrintable(QString("mutant %1: %2").arg(i).arg(err)));
+                // Nothing started (a refused part once left the footprint shots reloading, and
+                // the shown shot lost, or "loading" for ever).
+                const bool idle = w.workspace<lwb::ui::FootprintWorkspace>()->waitIdle(10000) &&
+                                  w.workspace<lwb::ui::SlrWorkspace>()->waitIdle(10000) &&
+                                  w.workspace<lwb::ui::CalibWorkspace>()->waitIdle(10000) &&
+                                  w.workspace<lwb::ui::RadiometryWorkspace>()->waitIdle(10000);
+                QVERIFY2(idle, qPrintable(QString("mutant %1: busy after being refused").arg(i)));
                 QCOMPARE(w.workspace<lwb::ui::FootprintWorkspace>()->saveState(), before);
             }
             QFile::remove(path);

@@ -1083,6 +1083,11 @@ QJsonObject CalibWorkspace::saveState() const {
 
 bool CalibWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
                                   const std::vector<std::string>& at) {
+    return readState(o, error, doc, at, true);
+}
+
+bool CalibWorkspace::readState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
+                               const std::vector<std::string>& at, bool apply) {
     // Each message starts with the session's file:line:col of the value when `doc` is given.
     auto where = [&](std::vector<std::string> rel) {
         rel.insert(rel.begin(), at.begin(), at.end());
@@ -1124,6 +1129,7 @@ bool CalibWorkspace::restoreState(const QJsonObject& o, QString* error, const co
         *error = where({"view", "color_map"}) + tr("calibration view: colour map %1 out of range").arg(cmap);
         return false;
     }
+    if (!apply) return true;  // (the checks only: nothing above changes the workspace)
     // Inputs last of the checks: loading them is all or nothing.
     if (!m_controller->setInputs(in, &err)) {
         *error = tr("calibration inputs: %1").arg(err);

@@ -57,6 +57,17 @@ public:
     /// state stays.
     bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
                       const std::vector<std::string>& at = {"calibration"}) override;
+    bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                    const std::vector<std::string>& at = {"calibration"}) override {
+        return readState(state, error, doc, at, false);
+    }
+
+private:
+    // restoreState's work; with apply false only its checks (checkState).
+    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                   const std::vector<std::string>& at, bool apply);
+
+public:
     /// "detector" (array, pointing, statistics) or "waveform".
     void showTab(const QString& name) override;
 

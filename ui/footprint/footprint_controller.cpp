@@ -202,6 +202,12 @@ void FootprintController::applyResult(Shot& s, const FootprintResult& r) {
 
 void FootprintController::clear() {
     cancelLoading();
+    // A load in flight is dropped with the list (its timer sees the new generation and stops):
+    // it is no longer loading, and said finished (cancelled) so that its progress bar goes. It
+    // stayed "loading" for ever when nothing was opened after (a session refused after its
+    // footprint part was restored and undone: waitIdle never returned).
+    const bool dropped = m_loading;
+    m_loading = false;
     m_currentJob.cancel();
     m_listJob.cancel();
     m_listDue = false;
@@ -214,6 +220,7 @@ void FootprintController::clear() {
     *m_fits = 0;
     emit shotsReset();
     emit countsChanged();
+    if (dropped) emit loadFinished(0, 0, true);
 }
 
 void FootprintController::setShots(std::vector<Shot> shots) {

@@ -1001,6 +1001,11 @@ QJsonObject FootprintWorkspace::saveState() const {
 
 bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
                                       const std::vector<std::string>& at) {
+    return readState(state, error, doc, at, true);
+}
+
+bool FootprintWorkspace::readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                                   const std::vector<std::string>& at, bool apply) {
     if (!checkSessionKeys(state, {"inputs", "demo", "params", "overrides", "current", "current_key", "filter", "where", "plot", "display"},
                           "footprint", error, doc, at))
         return false;
@@ -1030,6 +1035,7 @@ bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, 
         *error = tr("unknown filter \"%1\" (one of %2)").arg(filter, ShotFilterProxy::filterKeys().join(", "));
         return false;
     }
+    if (!apply) return true;  // (the checks only: nothing above changes the workspace)
     m_panel->setParams(p);
     m_controller->setParams(p);
     m_filter->setCurrentIndex(filterIndex);

@@ -78,6 +78,17 @@ public:
     /// False with *error when the state is malformed.
     bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
                       const std::vector<std::string>& at = {"footprint"}) override;
+    bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                    const std::vector<std::string>& at = {"footprint"}) override {
+        return readState(state, error, doc, at, false);
+    }
+
+private:
+    // restoreState's work; with apply false only its checks (checkState).
+    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                   const std::vector<std::string>& at, bool apply);
+
+public:
 
     // Workspace
     QString key() const override { return QStringLiteral("footprint"); }

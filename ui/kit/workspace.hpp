@@ -55,6 +55,12 @@ public:
     /// `at` this state's path in it. False with *error, and the state as it was.
     virtual bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
                               const std::vector<std::string>& at) = 0;
+    /// The checks restoreState makes before it changes anything (keys, parameters, names, view
+    /// settings), and nothing changed: the window checks every workspace's part of a session
+    /// before it restores any, so a session refused for one part starts no work in another
+    /// (inputs that cannot be read are still found only by restoreState, which undoes its part).
+    virtual bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                            const std::vector<std::string>& at) = 0;
     /// Loads the built-in demo.
     virtual void openDemo() = 0;
     /// What the demo holds, for the status line ("240 simulated footprint shots").

@@ -974,6 +974,11 @@ QJsonObject RadiometryWorkspace::saveState() const {
 
 bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
                                        const std::vector<std::string>& at) {
+    return readState(o, error, doc, at, true);
+}
+
+bool RadiometryWorkspace::readState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
+                                    const std::vector<std::string>& at, bool apply) {
     // Each message starts with the session's file:line:col of the value when `doc` is given.
     auto where = [&](std::vector<std::string> rel) {
         rel.insert(rel.begin(), at.begin(), at.end());
@@ -1051,6 +1056,7 @@ bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error, con
         *error = where({"frames"}) + tr("radiometry frames: a mosaic needs at least two frames");
         return false;
     }
+    if (!apply) return true;  // (the checks only: nothing above changes the workspace)
     // The image: read now (errors leave everything as it was); a mosaic runs in the background
     // with the restored mosaic parameters.
     const RadiometryParams before = m_controller->params();

@@ -51,6 +51,17 @@ public:
     /// is this state's path in it.
     bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
                       const std::vector<std::string>& at = {"radiometry"}) override;
+    bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                    const std::vector<std::string>& at = {"radiometry"}) override {
+        return readState(state, error, doc, at, false);
+    }
+
+private:
+    // restoreState's work; with apply false only its checks (checkState).
+    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                   const std::vector<std::string>& at, bool apply);
+
+public:
 
     /// Adds a region drawn over `imageRect` (image pixels) as if the analyst had dragged it:
     /// the new row is selected and its reflectance cell opened for typing. Returns its index.

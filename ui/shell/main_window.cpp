@@ -842,8 +842,14 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
                         .arg(version.isDouble() ? QString::number(vd, 'g', 6) : QStringLiteral("a non-number")));
     if (vd > kSessionVersion)
         return fail(tr("%1: session version %2 is newer than this program reads (%3)").arg(path).arg(qint64(vd)).arg(kSessionVersion));
-    // Validate everything before touching the current state.
+    // Every workspace's part checked before any is restored: a part refused leaves every
+    // workspace as it was, with no work started (a restored part and then its undoing reloaded
+    // the footprint shots and lost the shot shown). What only restoring finds (an input that
+    // cannot be read) is undone below.
     QString err;
+    for (Workspace* ws : m_workspaces)
+        if (o.contains(ws->key()) && !ws->checkState(o[ws->key()].toObject(), &err, &parsed, {ws->key().toStdString()}))
+            return fail(err.startsWith(path + ":") ? err : tr("%1: %2").arg(path, err));
     QHash<Workspace*, QJsonObject> before;  // each workspace's state, back if any part fails
     for (Workspace* ws : m_workspaces) before[ws] = ws->saveState();
     for (Workspace* ws : m_workspaces) {

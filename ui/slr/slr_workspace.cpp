@@ -1656,6 +1656,11 @@ QJsonObject SlrWorkspace::saveState() const {
 
 bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
                                 const std::vector<std::string>& at) {
+    return readState(o, error, doc, at, true);
+}
+
+bool SlrWorkspace::readState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
+                             const std::vector<std::string>& at, bool apply) {
     // The parameters' sections (oc, screen, postfit): the first parts of the schema's keys.
     std::vector<std::string> sections;
     for (const auto& f : slrSchema().fields()) {
@@ -1680,6 +1685,7 @@ bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core
         *error = tr("slr.main_plot: \"%1\" is neither \"oc\" nor \"residual\"").arg(mainPlot);
         return false;
     }
+    if (!apply) return true;  // (the checks only: nothing above changes the workspace)
     m_residual = mainPlot == "residual";
     m_viewCombo->setCurrentIndex(m_residual ? 1 : 0);
     m_cpfPath = o["cpf"].toString();

@@ -149,6 +149,17 @@ public:
     /// in it). False with *error, nothing changed.
     bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
                       const std::vector<std::string>& at = {"slr"}) override;
+    bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                    const std::vector<std::string>& at = {"slr"}) override {
+        return readState(state, error, doc, at, false);
+    }
+
+private:
+    // restoreState's work; with apply false only its checks (checkState).
+    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                   const std::vector<std::string>& at, bool apply);
+
+public:
 
 private:
     /// The Open button: a pass file chosen, opened through the window (openRequested).
