@@ -244,9 +244,10 @@ private slots:
     // restoreState needs widgets): a session of every workspace with real inputs (a frame folder,
     // a CRD pass, the calibration and radiometry demos), mutated 160 times by a seeded generator —
     // bytes flipped, cut, deleted, repeated; numbers replaced by huge, tiny, non-numbers, arrays;
-    // strings by empty, a device, a folder, a missing file, 10 000 characters. Each mutant is
-    // opened in a fresh window: it opens (and its jobs finish), or it is refused with a message
-    // naming the file; nothing crashes or hangs, and a refused session leaves the window as it was.
+    // strings by empty, a device, a folder, a missing file, 10 000 characters. The mutants are
+    // opened one after another in one window: each opens (and its jobs finish), or it is refused
+    // with a message naming the file; nothing crashes or hangs, and a refused session leaves the
+    // window as it was (every workspace's state, no footprint load started, every workspace idle).
     void mutatedSessionsOpenOrAreRefused() {
         const QString d = m_dir.path() + "/mut";
         QVERIFY(QDir().mkpath(d));
@@ -299,6 +300,10 @@ private slots:
             const QString path = d + QString("/m%1.lwb.json").arg(i);
             QVERIFY(lwbtest::writeText(path, m));
             const QJsonObject before = w.workspace<lwb::ui::FootprintWorkspace>()->saveState();
+            const QJsonObject slrBefore = w.workspace<lwb::ui::SlrWorkspace>()->saveState(),
+                              calibBefore = w.workspace<lwb::ui::CalibWorkspace>()->saveState(),
+                              radiometryBefore = w.workspace<lwb::ui::RadiometryWorkspace>()->saveState();
+            QSignalSpy reset(w.workspace<lwb::ui::FootprintWorkspace>()->controller(), &FootprintController::shotsReset);
             QString err;
             if (w.openSession(path, true, &err)) {
                 ++opened;
@@ -313,7 +318,11 @@ private slots:
                                   w.workspace<lwb::ui::CalibWorkspace>()->waitIdle(10000) &&
                                   w.workspace<lwb::ui::RadiometryWorkspace>()->waitIdle(10000);
                 QVERIFY2(idle, qPrintable(QString("mutant %1: busy after being refused").arg(i)));
+                QVERIFY2(reset.isEmpty(), qPrintable(QString("mutant %1: the footprint list was replaced").arg(i)));
                 QCOMPARE(w.workspace<lwb::ui::FootprintWorkspace>()->saveState(), before);
+                QCOMPARE(w.workspace<lwb::ui::SlrWorkspace>()->saveState(), slrBefore);
+                QCOMPARE(w.workspace<lwb::ui::CalibWorkspace>()->saveState(), calibBefore);
+                QCOMPARE(w.workspace<lwb::ui::RadiometryWorkspace>()->saveState(), radiometryBefore);
             }
             QFile::remove(path);
         }

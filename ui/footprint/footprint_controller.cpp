@@ -207,7 +207,9 @@ void FootprintController::clear() {
     // stayed "loading" for ever when nothing was opened after (a session refused after its
     // footprint part was restored and undone: waitIdle never returned).
     const bool dropped = m_loading;
+    const int droppedWith = int(m_shots.size());  // (its shots shown so far)
     m_loading = false;
+    m_skipped.clear();  // (the dropped load's; open() sets the new one's after this)
     m_currentJob.cancel();
     m_listJob.cancel();
     m_listDue = false;
@@ -220,7 +222,7 @@ void FootprintController::clear() {
     *m_fits = 0;
     emit shotsReset();
     emit countsChanged();
-    if (dropped) emit loadFinished(0, 0, true);
+    if (dropped) emit loadFinished(droppedWith, 0, true);
 }
 
 void FootprintController::setShots(std::vector<Shot> shots) {
