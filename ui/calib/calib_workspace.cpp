@@ -1081,11 +1081,6 @@ QJsonObject CalibWorkspace::saveState() const {
     return o;
 }
 
-bool CalibWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
-                                  const std::vector<std::string>& at) {
-    return readState(o, error, doc, at, true);
-}
-
 bool CalibWorkspace::readState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
                                const std::vector<std::string>& at, bool apply) {
     // Each message starts with the session's file:line:col of the value when `doc` is given.

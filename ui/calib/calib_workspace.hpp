@@ -52,22 +52,6 @@ public:
     /// Nothing from the window: its inputs (array, passes, waveform) are chosen by its own buttons.
     QString claim(const InputProbe&, bool) const override { return QString(); }
     OpenOutcome openInputs(const QMap<QString, QStringList>&, int) override { return {}; }
-    /// Validates everything first; on error (*error says what, with the session's file:line:col
-    /// when `doc`, the parsed session, is given; `at`: this state's path in it) the previous
-    /// state stays.
-    bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
-                      const std::vector<std::string>& at = {"calibration"}) override;
-    bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
-                    const std::vector<std::string>& at = {"calibration"}) override {
-        return readState(state, error, doc, at, false);
-    }
-
-private:
-    // restoreState's work; with apply false only its checks (checkState).
-    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                   const std::vector<std::string>& at, bool apply);
-
-public:
     /// "detector" (array, pointing, statistics) or "waveform".
     void showTab(const QString& name) override;
 
@@ -124,6 +108,14 @@ private:
     QComboBox* m_colorMap;
     QCheckBox* m_showTruth;
     bool m_fresh = true;  // the next detector result rescales the views
+
+protected:
+    /// restoreState and checkState (Workspace) read the session state here:
+    /// Validates everything first; on error (*error says what, with the session's file:line:col
+    /// when `doc`, the parsed session, is given; `at`: this state's path in it) the previous
+    /// state stays.
+    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                   const std::vector<std::string>& at, bool apply) override;
 };
 
 }  // namespace lwb::ui

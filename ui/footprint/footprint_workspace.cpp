@@ -999,11 +999,6 @@ QJsonObject FootprintWorkspace::saveState() const {
     return o;
 }
 
-bool FootprintWorkspace::restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                                      const std::vector<std::string>& at) {
-    return readState(state, error, doc, at, true);
-}
-
 bool FootprintWorkspace::readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
                                    const std::vector<std::string>& at, bool apply) {
     if (!checkSessionKeys(state, {"inputs", "demo", "params", "overrides", "current", "current_key", "filter", "where", "plot", "display"},

@@ -71,24 +71,6 @@ public:
     /// Session state: inputs, parameters, overrides and notes (keyed by file and ROI centre),
     /// the filter and the current shot.
     QJsonObject saveState() const override;
-    /// Restores a session; loading of the inputs runs in the background, overrides (and the
-    /// current shot) are applied as rows arrive. The parameters start from the defaults and every field given is read
-    /// (footprintSchema().fromJson: unknown keys are errors naming the key, with the line and
-    /// column when `doc`, the parsed session file, is given; `at`: this state's path in it).
-    /// False with *error when the state is malformed.
-    bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
-                      const std::vector<std::string>& at = {"footprint"}) override;
-    bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
-                    const std::vector<std::string>& at = {"footprint"}) override {
-        return readState(state, error, doc, at, false);
-    }
-
-private:
-    // restoreState's work; with apply false only its checks (checkState).
-    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                   const std::vector<std::string>& at, bool apply);
-
-public:
 
     // Workspace
     QString key() const override { return QStringLiteral("footprint"); }
@@ -207,6 +189,16 @@ private:
     QDialog* m_suggestion = nullptr;
     class QTimer* m_stripTimer = nullptr;
     std::shared_ptr<core::Feedback> m_stripWork;  // the strips being computed (cancelled by the next)
+
+protected:
+    /// restoreState and checkState (Workspace) read the session state here:
+    /// Restores a session; loading of the inputs runs in the background, overrides (and the
+    /// current shot) are applied as rows arrive. The parameters start from the defaults and every field given is read
+    /// (footprintSchema().fromJson: unknown keys are errors naming the key, with the line and
+    /// column when `doc`, the parsed session file, is given; `at`: this state's path in it).
+    /// False with *error when the state is malformed.
+    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                   const std::vector<std::string>& at, bool apply) override;
 };
 
 }  // namespace lwb::ui

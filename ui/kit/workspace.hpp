@@ -52,15 +52,19 @@ public:
     /// Session state (a JSON object under key() in the session file).
     virtual QJsonObject saveState() const = 0;
     /// Restores a session's state; `doc` is the parsed session (for file:line:col in messages),
-    /// `at` this state's path in it. False with *error, and the state as it was.
-    virtual bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                              const std::vector<std::string>& at) = 0;
+    /// `at` this state's path in it (empty: {key()}). False with *error, and the state as it was.
+    bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                      const std::vector<std::string>& at = {}) {
+        return readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, true);
+    }
     /// The checks restoreState makes before it changes anything (keys, parameters, names, view
     /// settings), and nothing changed: the window checks every workspace's part of a session
     /// before it restores any, so a session refused for one part starts no work in another
     /// (inputs that cannot be read are still found only by restoreState, which undoes its part).
-    virtual bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                            const std::vector<std::string>& at) = 0;
+    bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                    const std::vector<std::string>& at = {}) {
+        return readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, false);
+    }
     /// Loads the built-in demo.
     virtual void openDemo() = 0;
     /// What the demo holds, for the status line ("240 simulated footprint shots").
@@ -122,6 +126,11 @@ signals:
     void failed(const QString& what, const QString& detail);
     /// Progress of a long load (done == total: finished), its label format ("%v / %m shots").
     void progress(int done, int total, const QString& format);
+
+protected:
+    /// restoreState's work; with apply false only its checks, nothing changed (checkState).
+    virtual bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                           const std::vector<std::string>& at, bool apply) = 0;
 };
 
 }  // namespace lwb::ui

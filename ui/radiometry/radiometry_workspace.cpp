@@ -972,11 +972,6 @@ QJsonObject RadiometryWorkspace::saveState() const {
     return o;
 }
 
-bool RadiometryWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
-                                       const std::vector<std::string>& at) {
-    return readState(o, error, doc, at, true);
-}
-
 bool RadiometryWorkspace::readState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
                                     const std::vector<std::string>& at, bool apply) {
     // Each message starts with the session's file:line:col of the value when `doc` is given.

@@ -46,22 +46,6 @@ public:
     /// Images (PNG, TIFF, PGM) while it is in front: one image, or frames to mosaic.
     QString claim(const InputProbe& probe, bool current) const override;
     OpenOutcome openInputs(const QMap<QString, QStringList>& byRole, int pass) override;
-    /// Validates everything first; on error (*error says what) the previous state stays.
-    /// With `doc` (the parsed session) each message starts with the value's file:line:col; `at`
-    /// is this state's path in it.
-    bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
-                      const std::vector<std::string>& at = {"radiometry"}) override;
-    bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
-                    const std::vector<std::string>& at = {"radiometry"}) override {
-        return readState(state, error, doc, at, false);
-    }
-
-private:
-    // restoreState's work; with apply false only its checks (checkState).
-    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                   const std::vector<std::string>& at, bool apply);
-
-public:
 
     /// Adds a region drawn over `imageRect` (image pixels) as if the analyst had dragged it:
     /// the new row is selected and its reflectance cell opened for typing. Returns its index.
@@ -116,6 +100,14 @@ private:
     RadiometryParamsPanel* m_params;
     bool m_tableUpdating = false;
     bool m_linking = false;
+
+protected:
+    /// restoreState and checkState (Workspace) read the session state here:
+    /// Validates everything first; on error (*error says what) the previous state stays.
+    /// With `doc` (the parsed session) each message starts with the value's file:line:col; `at`
+    /// is this state's path in it.
+    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                   const std::vector<std::string>& at, bool apply) override;
 };
 
 }  // namespace lwb::ui

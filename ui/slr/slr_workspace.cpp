@@ -1654,11 +1654,6 @@ QJsonObject SlrWorkspace::saveState() const {
     return o;
 }
 
-bool SlrWorkspace::restoreState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
-                                const std::vector<std::string>& at) {
-    return readState(o, error, doc, at, true);
-}
-
 bool SlrWorkspace::readState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
                              const std::vector<std::string>& at, bool apply) {
     // The parameters' sections (oc, screen, postfit): the first parts of the schema's keys.

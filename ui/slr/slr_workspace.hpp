@@ -143,23 +143,6 @@ public:
     /// Session state: inputs, edits, and the parameters as slrSchema()'s JSON ("screen" and
     /// "postfit", every field).
     QJsonObject saveState() const override;
-    /// Restores a session. The parameters start from the defaults and every field given is read
-    /// (Schema::fromJson: unknown keys and invalid values are errors naming the key, with the
-    /// line and column when `doc`, the parsed session file, is given; `at` is this state's path
-    /// in it). False with *error, nothing changed.
-    bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
-                      const std::vector<std::string>& at = {"slr"}) override;
-    bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
-                    const std::vector<std::string>& at = {"slr"}) override {
-        return readState(state, error, doc, at, false);
-    }
-
-private:
-    // restoreState's work; with apply false only its checks (checkState).
-    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                   const std::vector<std::string>& at, bool apply);
-
-public:
 
 private:
     /// The Open button: a pass file chosen, opened through the window (openRequested).
@@ -222,6 +205,15 @@ private:
     SlrStationNpPanel* m_stationNps;
     QTabWidget* m_bottomTabs;
     SlrStrips* m_strips = nullptr;
+
+protected:
+    /// restoreState and checkState (Workspace) read the session state here:
+    /// Restores a session. The parameters start from the defaults and every field given is read
+    /// (Schema::fromJson: unknown keys and invalid values are errors naming the key, with the
+    /// line and column when `doc`, the parsed session file, is given; `at` is this state's path
+    /// in it). False with *error, nothing changed.
+    bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
+                   const std::vector<std::string>& at, bool apply) override;
 };
 
 }  // namespace lwb::ui
