@@ -54,7 +54,8 @@ class TestSlrTune : public QObject {
     }
 
     // F1 of a per-point table (`slr -o`): its kept points against the station's data flags (2),
-    // what `slr tune` counts (its f1_before of one pass is this). NaN when the table has no rows.
+    // what `slr tune` counts (its f1_before of one pass is this). NaN without those columns, 0
+    // without a kept data point.
     static double keptF1(const QString& csv) {
         const QList<QByteArray> lines = lwbtest::readAll(csv).split('\n');
         if (lines.size() < 2) return NAN;

@@ -222,13 +222,13 @@ public:
     size_t size() const { return m_size; }
     bool empty() const { return m_size == 0; }
     T at(size_t i) const {
-        if (!m_values.empty()) return m_values[i];
+        if (!m_asRuns) return m_values[i];
         const auto r = std::upper_bound(m_runs.begin(), m_runs.end(), i,
                                         [](size_t k, const Run& run) { return k < run.first; }) - 1;
         return static_cast<T>(r->value + static_cast<T>(i - r->first));
     }
     void push(T v) {
-        if (m_values.empty() && m_asRuns) {
+        if (m_asRuns) {
             if (m_runs.empty() || v != static_cast<T>(m_last + 1)) {
                 if ((m_runs.size() + 1) * sizeof(Run) > (m_size + 16) * sizeof(T)) {
                     toValues();  // (the runs would outweigh the values)
