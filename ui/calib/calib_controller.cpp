@@ -196,19 +196,29 @@ void CalibController::openDemo() {
 }
 
 bool CalibController::setInputs(const CalibInputs& in, QString* error) {
-    auto d = std::make_shared<CalibData>(*m_data);
-    const bool same = in == m_data->inputs;
-    // Reload every part that changed (files are re-read when asked for the same path again).
     QString err;
-    if (!loadChanged(in, same ? nullptr : m_data.get(), d.get(), &err)) {
+    std::shared_ptr<const CalibData> d = readInputs(in, &err);
+    if (!d) {
         if (error) *error = err;
         emit status(err);
         return false;
     }
-    m_data = d;
+    adoptInputs(std::move(d));
+    return true;
+}
+
+std::shared_ptr<const CalibData> CalibController::readInputs(const CalibInputs& in, QString* error) const {
+    auto d = std::make_shared<CalibData>(*m_data);
+    const bool same = in == m_data->inputs;
+    // Reload every part that changed (files are re-read when asked for the same path again).
+    if (!loadChanged(in, same ? nullptr : m_data.get(), d.get(), error)) return nullptr;
+    return d;
+}
+
+void CalibController::adoptInputs(std::shared_ptr<const CalibData> data) {
+    m_data = std::move(data);
     emit inputsChanged();
     schedule();
-    return true;
 }
 
 // Loads the given parts of `in` over a copy of the current inputs and adopts it; on an error

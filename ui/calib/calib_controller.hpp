@@ -104,6 +104,10 @@ public:
     /// Loads the given inputs ("demo", a path, or empty for none, per part) all or nothing: on
     /// an error (naming file and line) the previous inputs stay.
     bool setInputs(const CalibInputs& inputs, QString* error);
+    /// setInputs in two steps: the inputs read (over a copy of the current ones, every part
+    /// re-read when all are the same), nothing changed; null with *error. Then adopted.
+    std::shared_ptr<const CalibData> readInputs(const CalibInputs& inputs, QString* error) const;
+    void adoptInputs(std::shared_ptr<const CalibData> data);
     /// Single parts (the open buttons); the other parts stay.
     bool openDetectors(const QString& path, QString* error);
     /// beamsPath empty: beams.json beside the control points, else the current designs.

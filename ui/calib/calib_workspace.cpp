@@ -1,6 +1,7 @@
 #include "ui/calib/calib_workspace.hpp"
 
 #include <QApplication>
+#include <utility>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -1124,12 +1125,16 @@ bool CalibWorkspace::readState(const QJsonObject& o, QString* error, const core:
         *error = where({"view", "color_map"}) + tr("calibration view: colour map %1 out of range").arg(cmap);
         return false;
     }
-    if (!apply) return true;  // (the checks only: nothing above changes the workspace)
-    // Inputs last of the checks: loading them is all or nothing.
-    if (!m_controller->setInputs(in, &err)) {
-        *error = tr("calibration inputs: %1").arg(err);
-        return false;
+    // The inputs read last, all or nothing; by the check, and kept for its restore.
+    if (!apply || !m_checkedInputs || !(m_checkedInputs->inputs == in)) {
+        m_checkedInputs = m_controller->readInputs(in, &err);
+        if (!m_checkedInputs) {
+            *error = tr("calibration inputs: %1").arg(err);
+            return false;
+        }
     }
+    if (!apply) return true;  // (nothing above changes the workspace)
+    m_controller->adoptInputs(std::exchange(m_checkedInputs, nullptr));
     m_controller->setParams(p);
     widgetsFromParams();
     m_colorMap->setCurrentIndex(cmap);

@@ -49,6 +49,7 @@ public:
     QString title() const override { return tr("Altimeter calibration"); }
     QString demoSummary() const override { return tr("a simulated calibration"); }
     bool waitIdle(int timeoutMs) override { return m_controller->waitIdle(timeoutMs); }
+    void dropChecked() override { m_checkedInputs.reset(); }
     /// Nothing from the window: its inputs (array, passes, waveform) are chosen by its own buttons.
     QString claim(const InputProbe&, bool) const override { return QString(); }
     OpenOutcome openInputs(const QMap<QString, QStringList>&, int) override { return {}; }
@@ -96,6 +97,7 @@ private:
                     bool (CalibController::*fn)(const QString&, QString*) const);
 
     CalibController* m_controller;
+    std::shared_ptr<const CalibData> m_checkedInputs;  ///< what a session's checkState read, for its restore
     QTabWidget* m_tabs;
     QTabWidget* m_bottomTabs = nullptr;  ///< validation statistics, calibrated parameters, convergence
     QLabel *m_inputs, *m_detSummary, *m_statsSource, *m_waveSummary, *m_pointingSummary;

@@ -53,18 +53,28 @@ public:
     virtual QJsonObject saveState() const = 0;
     /// Restores a session's state; `doc` is the parsed session (for file:line:col in messages),
     /// `at` this state's path in it (empty: {key()}). False with *error, and the state as it was.
+    /// After a checkState of the same state it uses the inputs that check read, and cannot fail
+    /// on them; what it does not use is dropped.
     bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
                       const std::vector<std::string>& at = {}) {
-        return readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, true);
+        const bool ok = readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, true);
+        dropChecked();
+        return ok;
     }
-    /// The checks restoreState makes before it changes anything (keys, parameters, names, view
-    /// settings), and nothing changed: the window checks every workspace's part of a session
-    /// before it restores any, so a session refused for one part starts no work in another
-    /// (inputs that cannot be read are still found only by restoreState, which undoes its part).
+    /// Everything restoreState could refuse, found with nothing changed: the keys, parameters,
+    /// names and view settings, and the inputs, read (a pass, an image, tables) and kept for the
+    /// restoreState of this state that follows. The window checks every workspace's part of a
+    /// session before it restores any: a session refused for one part, even for an input that
+    /// cannot be read, starts no work in another and leaves every workspace as it was.
     bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
                     const std::vector<std::string>& at = {}) {
-        return readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, false);
+        dropChecked();
+        const bool ok = readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, false);
+        if (!ok) dropChecked();
+        return ok;
     }
+    /// Frees the inputs the last checkState read (the window's session was refused for another part).
+    virtual void dropChecked() {}
     /// Loads the built-in demo.
     virtual void openDemo() = 0;
     /// What the demo holds, for the status line ("240 simulated footprint shots").
@@ -128,7 +138,8 @@ signals:
     void progress(int done, int total, const QString& format);
 
 protected:
-    /// restoreState's work; with apply false only its checks, nothing changed (checkState).
+    /// restoreState's work; with apply false its checks only, nothing shown changed (checkState):
+    /// the inputs are read then and kept for the apply of the same state (dropChecked frees them).
     virtual bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
                            const std::vector<std::string>& at, bool apply) = 0;
 };

@@ -247,41 +247,61 @@ void RadiometryController::clearImage() {
 }
 
 bool RadiometryController::openImage(const QString& path, QString* error) {
-    cv::Mat m;
-    std::string err;
-    if (!readImageAnyDepth(path.toStdString(), &m, &err)) return fail(error, err);
-    if (m.channels() != 1) return fail(error, tr("%1: the DN image must have one channel, not %2").arg(path).arg(m.channels()));
-    cancelMosaic();
-    auto img = imageFrom(m, {});
-    img->source = path;
-    if (!readGeoReference(path.toStdString(), &img->geo, &err)) img->geo = GeoReference{};  // no georeferencing
-    emit status(tr("%1: %2×%3 px%4")
-                    .arg(QFileInfo(path).fileName())
-                    .arg(m.cols)
-                    .arg(m.rows)
-                    .arg(img->geo.valid ? tr(", georeferenced") : QString()));
-    setImage(img);
+    RadiometryInput in;
+    if (!readInput(path, {}, &in, error)) return false;
+    adoptInput(std::move(in));
     return true;
 }
 
 bool RadiometryController::openFrames(const QStringList& paths, QString* error) {
+    RadiometryInput in;
+    if (!readInput(QString(), paths, &in, error)) return false;
+    adoptInput(std::move(in));
+    return true;
+}
+
+bool RadiometryController::readInput(const QString& path, const QStringList& paths, RadiometryInput* out, QString* error) {
+    *out = RadiometryInput{};
+    if (!path.isEmpty()) {
+        cv::Mat m;
+        std::string err;
+        if (!readImageAnyDepth(path.toStdString(), &m, &err)) return fail(error, err);
+        if (m.channels() != 1) return fail(error, tr("%1: the DN image must have one channel, not %2").arg(path).arg(m.channels()));
+        out->image = imageFrom(m, {});
+        out->image->source = path;
+        if (!readGeoReference(path.toStdString(), &out->image->geo, &err)) out->image->geo = GeoReference{};  // no georeferencing
+        return true;
+    }
     if (paths.size() < 2) return fail(error, tr("a row mosaic needs at least two frames, in scan order"));
     std::vector<std::string> files;
     for (const QString& p : paths) files.push_back(p.toStdString());
     if (const std::string why = mosaicMemoryProblem(files, memoryBudgetBytes()); !why.empty())
         return fail(error, QString::fromStdString(why));
-    std::vector<cv::Mat> frames;
     for (const QString& p : paths) {
         cv::Mat m;
         std::string err;
         if (!readImageAnyDepth(p.toStdString(), &m, &err)) return fail(error, err);
         if (m.channels() != 1) return fail(error, tr("%1: frames must have one channel, not %2").arg(p).arg(m.channels()));
-        if (!frames.empty() && m.depth() != frames.front().depth())
+        if (!out->frames.empty() && m.depth() != out->frames.front().depth())
             return fail(error, tr("%1: every frame must have the depth of the first (%2)").arg(p, paths.first()));
-        frames.push_back(m);
+        out->frames.push_back(m);
     }
-    startMosaic(std::move(frames), paths, false);
+    out->framePaths = paths;
     return true;
+}
+
+void RadiometryController::adoptInput(RadiometryInput in) {
+    cancelMosaic();
+    if (!in.image) {
+        startMosaic(std::move(in.frames), in.framePaths, false);
+        return;
+    }
+    emit status(tr("%1: %2×%3 px%4")
+                    .arg(QFileInfo(in.image->source).fileName())
+                    .arg(in.image->dn.cols)
+                    .arg(in.image->dn.rows)
+                    .arg(in.image->geo.valid ? tr(", georeferenced") : QString()));
+    setImage(std::move(in.image));
 }
 
 bool RadiometryController::openRegions(const QString& path, RegionRole role, QString* error) {

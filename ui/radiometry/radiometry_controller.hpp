@@ -62,6 +62,13 @@ struct RadiometryImage {
     core::radiometry::GeoReference geo;  ///< a GeoTIFF's georeferencing (ground coordinates, m)
 };
 
+/// A DN image or a row's frames, read and not yet shown (RadiometryController::readInput).
+struct RadiometryInput {
+    std::shared_ptr<RadiometryImage> image;  ///< a DN image read, or
+    std::vector<cv::Mat> frames;             ///< the frames of a row, read, to mosaic
+    QStringList framePaths;
+};
+
 /// One run of measure → fit → apply → check.
 struct RadiometryRun {
     quint64 generation = 0;
@@ -100,6 +107,10 @@ public:
     /// Frames of a row, in scan order: read at once (errors name the file), mosaicked in the
     /// background (a mosaic error is reported by mosaicFailed; the previous image stays).
     bool openFrames(const QStringList& paths, QString* error);
+    /// openImage (`image` given) or openFrames (`frames`) in two steps: the files read and
+    /// checked, nothing changed (false with *error naming the file); then shown, or mosaicked.
+    static bool readInput(const QString& image, const QStringList& frames, RadiometryInput* out, QString* error);
+    void adoptInput(RadiometryInput in);
     void cancelMosaic();
     /// No image (the regions stay).
     void clearImage();

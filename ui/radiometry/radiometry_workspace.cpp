@@ -1051,18 +1051,23 @@ bool RadiometryWorkspace::readState(const QJsonObject& o, QString* error, const 
         *error = where({"frames"}) + tr("radiometry frames: a mosaic needs at least two frames");
         return false;
     }
-    if (!apply) return true;  // (the checks only: nothing above changes the workspace)
-    // The image: read now (errors leave everything as it was); a mosaic runs in the background
-    // with the restored mosaic parameters.
-    const RadiometryParams before = m_controller->params();
+    // The image or the frames read last; by the check, and kept for its restore.
+    const bool readsInput = !image.isEmpty() || frames.size() >= 2;
+    auto checkedIsThis = [&] {
+        return m_checkedInput && (m_checkedInput->image ? m_checkedInput->image->source == image
+                                                        : image.isEmpty() && m_checkedInput->framePaths == frames);
+    };
+    if (readsInput && (!apply || !checkedIsThis())) {
+        RadiometryInput read;
+        if (!RadiometryController::readInput(image, frames, &read, error)) return false;
+        m_checkedInput = std::move(read);
+    }
+    if (!apply) return true;  // (nothing above changes the workspace)
+    // A mosaic runs in the background with the restored mosaic parameters.
     m_controller->setParams(p);
-    if (!image.isEmpty() || frames.size() >= 2) {
-        const bool ok = !image.isEmpty() ? m_controller->openImage(image, &err) : m_controller->openFrames(frames, &err);
-        if (!ok) {
-            m_controller->setParams(before);
-            *error = err;
-            return false;
-        }
+    if (readsInput) {
+        m_controller->adoptInput(std::move(*m_checkedInput));
+        m_checkedInput.reset();
     } else if (!demo) {
         m_controller->clearImage();
     }

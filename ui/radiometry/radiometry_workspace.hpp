@@ -7,6 +7,7 @@
 #include <QJsonObject>
 #include <QWidget>
 #include <functional>
+#include <optional>
 
 #include "ui/radiometry/radiometry_controller.hpp"
 #include "ui/kit/workspace.hpp"
@@ -43,6 +44,7 @@ public:
     QString title() const override { return tr("Radiometry"); }
     QString demoSummary() const override { return tr("a synthetic radiometric scene"); }
     bool waitIdle(int timeoutMs) override { return m_controller->waitIdle(timeoutMs); }
+    void dropChecked() override { m_checkedInput.reset(); }
     /// Images (PNG, TIFF, PGM) while it is in front: one image, or frames to mosaic.
     QString claim(const InputProbe& probe, bool current) const override;
     OpenOutcome openInputs(const QMap<QString, QStringList>& byRole, int pass) override;
@@ -90,6 +92,7 @@ private:
     int selectedRegion() const;
 
     RadiometryController* m_controller;
+    std::optional<RadiometryInput> m_checkedInput;  ///< what a session's checkState read, for its restore
     QCustomPlot *m_dnPlot, *m_reflPlot, *m_fitPlot;
     QCPColorMap *m_dnMap, *m_reflMap;
     QCPColorScale *m_dnScale, *m_reflScale;

@@ -842,21 +842,27 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
                         .arg(version.isDouble() ? QString::number(vd, 'g', 6) : QStringLiteral("a non-number")));
     if (vd > kSessionVersion)
         return fail(tr("%1: session version %2 is newer than this program reads (%3)").arg(path).arg(qint64(vd)).arg(kSessionVersion));
-    // Every workspace's part checked before any is restored: a part refused leaves every
-    // workspace as it was, with no work started (a restored part and then its undoing reloaded
-    // the footprint shots and lost the shot shown). What only restoring finds (an input that
-    // cannot be read) is undone below.
+    // Every workspace's part checked, its inputs read, before any is restored: a part refused
+    // leaves every workspace as it was, with no work started (a restored footprint part and then
+    // its undoing, when the SLR part's pass could not be read, reloaded the shots and lost the
+    // shot shown). The restore uses what the checks read; should it still fail, every part is
+    // put back as it was.
     QString err;
     for (Workspace* ws : m_workspaces)
-        if (o.contains(ws->key()) && !ws->checkState(o[ws->key()].toObject(), &err, &parsed, {ws->key().toStdString()}))
+        if (o.contains(ws->key()) && !ws->checkState(o[ws->key()].toObject(), &err, &parsed, {ws->key().toStdString()})) {
+            for (Workspace* w : m_workspaces) w->dropChecked();
             return fail(err.startsWith(path + ":") ? err : tr("%1: %2").arg(path, err));
+        }
     QHash<Workspace*, QJsonObject> before;  // each workspace's state, back if any part fails
     for (Workspace* ws : m_workspaces) before[ws] = ws->saveState();
     for (Workspace* ws : m_workspaces) {
         if (!o.contains(ws->key()) || ws->restoreState(o[ws->key()].toObject(), &err, &parsed, {ws->key().toStdString()}))
             continue;
         QString ignored;
-        for (Workspace* w : m_workspaces) w->restoreState(before[w], &ignored, nullptr, {w->key().toStdString()});
+        for (Workspace* w : m_workspaces) {
+            w->dropChecked();
+            w->restoreState(before[w], &ignored, nullptr, {w->key().toStdString()});
+        }
         return fail(err.startsWith(path + ":") ? err : tr("%1: %2").arg(path, err));
     }
     m_sessionPath = path;

@@ -767,15 +767,16 @@ QList<QAction*> SlrWorkspace::fileOpenActions() {
     return {a, t, f};
 }
 
-bool SlrWorkspace::openPath(const QString& path, int passIndex, QString* error) {
+bool SlrWorkspace::readPass(const QString& path, int passIndex, const QString& cpf, const QString& sinex, SlrOpening* out,
+                            QString* error) {
     PassInputParams in = m_controller->inputParams();
-    in.cpfPath = m_cpfPath.toStdString();
-    in.sinexPath = m_snxPath.toStdString();
+    in.cpfPath = cpf.toStdString();
+    in.sinexPath = sinex.toStdString();
     // Read on a worker with progress and Cancel (a 10^6-point pass takes seconds: issue 42);
     // the window keeps painting and takes no input meanwhile.
     const SlrParams params = m_controller->params();
     bool cancelled = false;
-    SlrOpening o = runModal<SlrOpening>(
+    *out = runModal<SlrOpening>(
         this, tr("Opening %1…").arg(QFileInfo(path).fileName()),
         [path, passIndex, in, params](const core::Feedback* fb) { return SlrController::readForOpen(path, passIndex, in, params, fb); },
         &cancelled);
@@ -783,6 +784,20 @@ bool SlrWorkspace::openPath(const QString& path, int passIndex, QString* error) 
     if (cancelled) {
         if (error) *error = tr("%1: opening cancelled; the pass shown before stays").arg(path);
         emit status(tr("Opening %1 cancelled").arg(QFileInfo(path).fileName()));
+        return false;
+    }
+    if (!out->read && error) *error = out->error;
+    return out->read;
+}
+
+bool SlrWorkspace::openPath(const QString& path, int passIndex, QString* error) {
+    SlrOpening o;
+    // What a session's check read for this file, with these prediction and station files.
+    if (m_checkedOpening && m_checkedOpening->path == path && m_checkedOpening->passIndex == passIndex &&
+        m_checkedOpening->input.cpfPath == m_cpfPath.toStdString() && m_checkedOpening->input.sinexPath == m_snxPath.toStdString()) {
+        o = std::move(*m_checkedOpening);
+        m_checkedOpening.reset();
+    } else if (!readPass(path, passIndex, m_cpfPath, m_snxPath, &o, error)) {
         return false;
     }
     if (!m_controller->adoptOpening(std::move(o), error)) return false;
@@ -926,18 +941,23 @@ void SlrWorkspace::showPass() {
     m_ocPlot->setProperty("fresh", true);  // fit the view on the first run of the new pass
 }
 
-void SlrWorkspace::openDemo(int points) {
+SlrWorkspace::SimulatedDemo SlrWorkspace::simulatedDemo(int points) {
     using namespace core::sim;
     SlrSimParams p = slrSimPreset(SlrKind::Khz);
     p.points = points;
     p.signalFraction = 0.10;
     p.durationS = 300;
-    const SlrSimPass pass = simulateSlrPass(p, 42);
+    return {simulateSlrPass(p, 42), p.altitudeKm};
+}
+
+void SlrWorkspace::openDemo(int points) {
+    const SimulatedDemo demo = simulatedDemo(points);
+    const core::sim::SlrSimPass& pass = demo.pass;
     m_path.clear();
     m_passCombo->clear();
     m_passCombo->addItem(tr("Simulated kHz pass (10 % signal)"), 0);
     m_controller->setSimulatedPass(pass.epochS, pass.ocS, pass.tofS, pass.isSignal, tr("Simulated kHz pass"),
-                                   p.altitudeKm);
+                                   demo.altitudeKm);
     // The simulated pass has its own geometry: no prediction or station file of an earlier pass
     // is named beside it (issue 42: the demo kept the previous pass's CPF and SINEX names);
     // cleared once it is in, so that no CRD pass is read again without them.
@@ -1680,7 +1700,7 @@ bool SlrWorkspace::readState(const QJsonObject& o, QString* error, const core::J
         *error = tr("slr.main_plot: \"%1\" is neither \"oc\" nor \"residual\"").arg(mainPlot);
         return false;
     }
-    if (!apply) return true;  // (the checks only: nothing above changes the workspace)
+    if (!apply) return checkInputs(o, error);  // (nothing above or there changes what is shown)
     m_residual = mainPlot == "residual";
     m_viewCombo->setCurrentIndex(m_residual ? 1 : 0);
     m_cpfPath = o["cpf"].toString();
@@ -1696,15 +1716,7 @@ bool SlrWorkspace::readState(const QJsonObject& o, QString* error, const core::J
     if (!o["postfit"].toObject().contains("altitude_km")) params.postfit.altitudeKm = m_controller->params().postfit.altitudeKm;
     m_controller->setParams(params);
     std::vector<uint32_t> in, out;
-    for (const auto& v : o["forced"].toArray()) {
-        const QJsonArray a = v.toArray();
-        const qint64 i = a.at(0).toInteger(-1);
-        if (i < 0 || size_t(i) >= m_controller->pass().t.size()) {
-            *error = tr("SLR manual edit of point %1: the pass has %2 points").arg(i).arg(m_controller->pass().t.size());
-            return false;
-        }
-        (a.at(1).toInt() > 0 ? in : out).push_back(uint32_t(i));
-    }
+    if (!readForcedEdits(o["forced"].toArray(), m_controller->pass().t.size(), &in, &out, error)) return false;
     m_controller->forcePoints(in, true);
     m_controller->forcePoints(out, false);
     m_params->setParams(m_controller->params());
@@ -1712,6 +1724,54 @@ bool SlrWorkspace::readState(const QJsonObject& o, QString* error, const core::J
         return false;
     return true;
 }
+
+bool SlrWorkspace::readForcedEdits(const QJsonArray& forced, size_t points, std::vector<uint32_t>* in, std::vector<uint32_t>* out,
+                                   QString* error) {
+    for (const auto& v : forced) {
+        const QJsonArray a = v.toArray();
+        const qint64 i = a.at(0).toInteger(-1);
+        if (i < 0 || size_t(i) >= points) {
+            *error = tr("SLR manual edit of point %1: the pass has %2 points").arg(i).arg(points);
+            return false;
+        }
+        (a.at(1).toInt() > 0 ? in : out)->push_back(uint32_t(i));
+    }
+    return true;
+}
+
+bool SlrWorkspace::checkInputs(const QJsonObject& o, QString* error) {
+    // The pass read (and kept for the restore), as openPath would read it.
+    const QString path = o["path"].toString();
+    if (!path.isEmpty()) {
+        SlrOpening read;
+        if (!readPass(path, o["pass"].toInt(-1), o["cpf"].toString(), o["sinex"].toString(), &read, error)) return false;
+        m_checkedOpening = std::move(read);
+    }
+    // The manual edits against the points of the pass they will be made on: the one read, the
+    // demo's, or the one open.
+    const QJsonArray forced = o["forced"].toArray();
+    if (!forced.isEmpty()) {
+        size_t points = m_controller->pass().t.size();
+        if (m_checkedOpening)
+            points = m_checkedOpening->opened.ok && m_checkedOpening->opened.pass ? m_checkedOpening->opened.pass->t.size() : 0;
+        else if (o["demo"].toBool())
+            points = simulatedDemo(kDemoPoints).pass.epochS.size();
+        std::vector<uint32_t> in, out;
+        if (!readForcedEdits(forced, points, &in, &out, error)) return false;
+    }
+    // The station's normal points, read as setStationNormalPoints reads them.
+    if (const QString npt = o["station_npt"].toString(); !npt.isEmpty() && npt != m_stationNps->path()) {
+        core::slr::SlrSetup scratch;
+        SlrError e;
+        if (!core::slr::setStationNormalPoints(&scratch, QFileInfo(npt).absoluteFilePath().toStdString(), &e)) {
+            *error = QString::fromStdString(e.message);
+            return false;
+        }
+    }
+    return true;
+}
+
+void SlrWorkspace::dropChecked() { m_checkedOpening.reset(); }
 
 bool SlrWorkspace::setStationNormalPoints(const QString& path, QString* error) {
     // Read into the run's set-up by the core: the tab, the report and the copied command use it.

@@ -1,13 +1,16 @@
 #pragma once
 // The SLR workspace: the O-C scatter beside its binary image (axes linked), the residual
 // histogram, the parameter panel (ui/slr_params_panel.hpp), box edits, presets and exports.
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QPointer>
 #include <QSet>
 #include <QWidget>
+#include <optional>
 
 #include "ui/kit/elided_label.hpp"
 #include "core/common/json.hpp"
+#include "core/sim/slr_sim.hpp"
 
 #include "ui/kit/workspace.hpp"
 #include "ui/slr/slr_controller.hpp"
@@ -119,11 +122,13 @@ public:
     bool switchToPass(int index);
     /// A simulated kHz pass of about `points` points (the demo, the latency benchmark).
     void openDemo(int points);
+    static constexpr int kDemoPoints = 20000;  ///< the built-in demo's
 
     // Workspace
     QString key() const override { return QStringLiteral("slr"); }
     QString title() const override { return tr("SLR pass screening"); }
-    void openDemo() override { openDemo(20000); }
+    void openDemo() override { openDemo(kDemoPoints); }
+    void dropChecked() override;
     QString demoSummary() const override { return tr("a simulated kHz pass"); }
     bool waitIdle(int timeoutMs) override { return m_controller->waitIdle(timeoutMs); }
     /// "slr" a pass (CRD, O-C table), "slr-cpf" a prediction, "slr-sinex" station coordinates,
@@ -187,6 +192,7 @@ private:
     QString m_path, m_cpfPath, m_snxPath;
     bool m_loading = false;
     bool m_openCancelled = false;  ///< the last openPath was cancelled by the analyst
+    std::optional<SlrOpening> m_checkedOpening;  ///< the pass a session's checkState read, for its restore
     bool m_linking = false;
     bool m_imageFlattened = false;  ///< the binary image is of the flattened O-C (refinement)
     bool m_residual = false, m_secondsOfDay = false, m_applyingParams = false;
@@ -205,6 +211,24 @@ private:
     SlrStationNpPanel* m_stationNps;
     QTabWidget* m_bottomTabs;
     SlrStrips* m_strips = nullptr;
+
+    /// Reads `path` (block `passIndex`, -1 the first to screen) with the given prediction and
+    /// station files on a worker with progress and Cancel; nothing shown changes. False with
+    /// *error (the reader's, or cancelled: m_openCancelled).
+    bool readPass(const QString& path, int passIndex, const QString& cpf, const QString& sinex, SlrOpening* out,
+                  QString* error);
+    /// checkState's reading of a session's inputs: the pass (kept in m_checkedOpening), the
+    /// manual edits against its points, the station's normal points. False with *error.
+    bool checkInputs(const QJsonObject& state, QString* error);
+    /// A session's manual edits ([point, 1 kept / 0 rejected], …) of a pass of `points` points;
+    /// false with *error for a point beyond it.
+    static bool readForcedEdits(const QJsonArray& forced, size_t points, std::vector<uint32_t>* in, std::vector<uint32_t>* out,
+                                QString* error);
+    struct SimulatedDemo {
+        core::sim::SlrSimPass pass;
+        double altitudeKm = 0;
+    };
+    static SimulatedDemo simulatedDemo(int points);
 
 protected:
     /// restoreState and checkState (Workspace) read the session state here:
