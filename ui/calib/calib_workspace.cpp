@@ -1083,7 +1083,7 @@ QJsonObject CalibWorkspace::saveState() const {
 }
 
 bool CalibWorkspace::readState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
-                               const std::vector<std::string>& at, bool apply) {
+                               const std::vector<std::string>& at, StatePhase phase) {
     // Each message starts with the session's file:line:col of the value when `doc` is given.
     auto where = [&](std::vector<std::string> rel) {
         rel.insert(rel.begin(), at.begin(), at.end());
@@ -1125,16 +1125,17 @@ bool CalibWorkspace::readState(const QJsonObject& o, QString* error, const core:
         *error = where({"view", "color_map"}) + tr("calibration view: colour map %1 out of range").arg(cmap);
         return false;
     }
-    // The inputs read last, all or nothing; by the check, and kept for its restore.
-    if (!apply || !m_checkedInputs || !(m_checkedInputs->inputs == in)) {
-        m_checkedInputs = m_controller->readInputs(in, &err);
-        if (!m_checkedInputs) {
+    if (phase == StatePhase::Check) return true;  // (nothing above changes the workspace)
+    // The inputs, all or nothing: read when prepared (and kept for the restore), else now.
+    if (phase == StatePhase::Prepare || !m_preparedInputs || !(m_preparedInputs->inputs == in)) {
+        m_preparedInputs = m_controller->readInputs(in, &err);
+        if (!m_preparedInputs) {
             *error = tr("calibration inputs: %1").arg(err);
             return false;
         }
     }
-    if (!apply) return true;  // (nothing above changes the workspace)
-    m_controller->adoptInputs(std::exchange(m_checkedInputs, nullptr));
+    if (phase == StatePhase::Prepare) return true;
+    m_controller->adoptInputs(std::exchange(m_preparedInputs, nullptr));
     m_controller->setParams(p);
     widgetsFromParams();
     m_colorMap->setCurrentIndex(cmap);

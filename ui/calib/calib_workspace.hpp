@@ -49,7 +49,7 @@ public:
     QString title() const override { return tr("Altimeter calibration"); }
     QString demoSummary() const override { return tr("a simulated calibration"); }
     bool waitIdle(int timeoutMs) override { return m_controller->waitIdle(timeoutMs); }
-    void dropChecked() override { m_checkedInputs.reset(); }
+    void dropPrepared() override { m_preparedInputs.reset(); }
     /// Nothing from the window: its inputs (array, passes, waveform) are chosen by its own buttons.
     QString claim(const InputProbe&, bool) const override { return QString(); }
     OpenOutcome openInputs(const QMap<QString, QStringList>&, int) override { return {}; }
@@ -97,7 +97,7 @@ private:
                     bool (CalibController::*fn)(const QString&, QString*) const);
 
     CalibController* m_controller;
-    std::shared_ptr<const CalibData> m_checkedInputs;  ///< what a session's checkState read, for its restore
+    std::shared_ptr<const CalibData> m_preparedInputs;  ///< what a session's prepareState read, for its restore
     QTabWidget* m_tabs;
     QTabWidget* m_bottomTabs = nullptr;  ///< validation statistics, calibrated parameters, convergence
     QLabel *m_inputs, *m_detSummary, *m_statsSource, *m_waveSummary, *m_pointingSummary;
@@ -112,12 +112,12 @@ private:
     bool m_fresh = true;  // the next detector result rescales the views
 
 protected:
-    /// restoreState and checkState (Workspace) read the session state here:
+    /// restoreState, checkState and prepareState (Workspace) read the session state here:
     /// Validates everything first; on error (*error says what, with the session's file:line:col
     /// when `doc`, the parsed session, is given; `at`: this state's path in it) the previous
     /// state stays.
     bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                   const std::vector<std::string>& at, bool apply) override;
+                   const std::vector<std::string>& at, StatePhase phase) override;
 };
 
 }  // namespace lwb::ui

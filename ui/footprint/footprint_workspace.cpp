@@ -1000,7 +1000,7 @@ QJsonObject FootprintWorkspace::saveState() const {
 }
 
 bool FootprintWorkspace::readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                                   const std::vector<std::string>& at, bool apply) {
+                                   const std::vector<std::string>& at, StatePhase phase) {
     if (!checkSessionKeys(state, {"inputs", "demo", "params", "overrides", "current", "current_key", "filter", "where", "plot", "display"},
                           "footprint", error, doc, at))
         return false;
@@ -1030,7 +1030,7 @@ bool FootprintWorkspace::readState(const QJsonObject& state, QString* error, con
         *error = tr("unknown filter \"%1\" (one of %2)").arg(filter, ShotFilterProxy::filterKeys().join(", "));
         return false;
     }
-    if (!apply) return true;  // (the checks only: nothing above changes the workspace)
+    if (phase != StatePhase::Apply) return true;  // (nothing above changes the workspace; no input is read before)
     m_panel->setParams(p);
     m_controller->setParams(p);
     m_filter->setCurrentIndex(filterIndex);

@@ -191,14 +191,14 @@ private:
     std::shared_ptr<core::Feedback> m_stripWork;  // the strips being computed (cancelled by the next)
 
 protected:
-    /// restoreState and checkState (Workspace) read the session state here:
+    /// restoreState, checkState and prepareState (Workspace) read the session state here:
     /// Restores a session; loading of the inputs runs in the background, overrides (and the
     /// current shot) are applied as rows arrive. The parameters start from the defaults and every field given is read
     /// (footprintSchema().fromJson: unknown keys are errors naming the key, with the line and
     /// column when `doc`, the parsed session file, is given; `at`: this state's path in it).
     /// False with *error when the state is malformed.
     bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                   const std::vector<std::string>& at, bool apply) override;
+                   const std::vector<std::string>& at, StatePhase phase) override;
 };
 
 }  // namespace lwb::ui

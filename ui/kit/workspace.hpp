@@ -51,30 +51,40 @@ public:
 
     /// Session state (a JSON object under key() in the session file).
     virtual QJsonObject saveState() const = 0;
+    /// How far readState goes: its checks only (keys, parameters, names, view settings), then
+    /// also reading the inputs (a pass, an image, tables: kept for the restore), then applying.
+    enum class StatePhase { Check, Prepare, Apply };
+
     /// Restores a session's state; `doc` is the parsed session (for file:line:col in messages),
     /// `at` this state's path in it (empty: {key()}). False with *error, and the state as it was.
-    /// After a checkState of the same state it uses the inputs that check read, and cannot fail
-    /// on them; what it does not use is dropped.
+    /// After a prepareState of the same state it uses the inputs that read, and cannot fail on
+    /// them; what it does not use is dropped.
     bool restoreState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
                       const std::vector<std::string>& at = {}) {
-        const bool ok = readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, true);
-        dropChecked();
+        const bool ok = readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, StatePhase::Apply);
+        dropPrepared();
         return ok;
     }
-    /// Everything restoreState could refuse, found with nothing changed: the keys, parameters,
-    /// names and view settings, and the inputs, read (a pass, an image, tables) and kept for the
-    /// restoreState of this state that follows. The window checks every workspace's part of a
-    /// session before it restores any: a session refused for one part, even for an input that
-    /// cannot be read, starts no work in another and leaves every workspace as it was.
+    /// restoreState's checks that read no file (keys, parameters, names, view settings), with
+    /// nothing changed: the window makes them for every workspace's part of a session first.
     bool checkState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
                     const std::vector<std::string>& at = {}) {
-        dropChecked();
-        const bool ok = readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, false);
-        if (!ok) dropChecked();
+        return readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, StatePhase::Check);
+    }
+    /// checkState and the inputs read (a pass, an image, tables) as restoreState would read them,
+    /// with nothing shown changed; what was read is kept for the restoreState of this state that
+    /// follows. The window prepares every part after checking every part and before restoring
+    /// any: a session refused for one part, even for an input that cannot be read, starts no
+    /// work in another and leaves every workspace as it was.
+    bool prepareState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc = nullptr,
+                      const std::vector<std::string>& at = {}) {
+        dropPrepared();
+        const bool ok = readState(state, error, doc, at.empty() ? std::vector<std::string>{key().toStdString()} : at, StatePhase::Prepare);
+        if (!ok) dropPrepared();
         return ok;
     }
-    /// Frees the inputs the last checkState read (the window's session was refused for another part).
-    virtual void dropChecked() {}
+    /// Frees the inputs the last prepareState read (the window's session was refused for another part).
+    virtual void dropPrepared() {}
     /// Loads the built-in demo.
     virtual void openDemo() = 0;
     /// What the demo holds, for the status line ("240 simulated footprint shots").
@@ -138,10 +148,10 @@ signals:
     void progress(int done, int total, const QString& format);
 
 protected:
-    /// restoreState's work; with apply false its checks only, nothing shown changed (checkState):
-    /// the inputs are read then and kept for the apply of the same state (dropChecked frees them).
+    /// checkState's, prepareState's and restoreState's work, as far as `phase`: nothing shown
+    /// changes before StatePhase::Apply (the inputs Prepare reads are kept; dropPrepared frees them).
     virtual bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                           const std::vector<std::string>& at, bool apply) = 0;
+                           const std::vector<std::string>& at, StatePhase phase) = 0;
 };
 
 }  // namespace lwb::ui

@@ -973,7 +973,7 @@ QJsonObject RadiometryWorkspace::saveState() const {
 }
 
 bool RadiometryWorkspace::readState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
-                                    const std::vector<std::string>& at, bool apply) {
+                                    const std::vector<std::string>& at, StatePhase phase) {
     // Each message starts with the session's file:line:col of the value when `doc` is given.
     auto where = [&](std::vector<std::string> rel) {
         rel.insert(rel.begin(), at.begin(), at.end());
@@ -1051,23 +1051,24 @@ bool RadiometryWorkspace::readState(const QJsonObject& o, QString* error, const 
         *error = where({"frames"}) + tr("radiometry frames: a mosaic needs at least two frames");
         return false;
     }
-    // The image or the frames read last; by the check, and kept for its restore.
+    if (phase == StatePhase::Check) return true;  // (nothing above changes the workspace)
+    // The image or the frames: read when prepared (and kept for the restore), else now.
     const bool readsInput = !image.isEmpty() || frames.size() >= 2;
-    auto checkedIsThis = [&] {
-        return m_checkedInput && (m_checkedInput->image ? m_checkedInput->image->source == image
-                                                        : image.isEmpty() && m_checkedInput->framePaths == frames);
+    auto preparedIsThis = [&] {
+        return m_preparedInput && (m_preparedInput->image ? m_preparedInput->image->source == image
+                                                        : image.isEmpty() && m_preparedInput->framePaths == frames);
     };
-    if (readsInput && (!apply || !checkedIsThis())) {
+    if (readsInput && (phase == StatePhase::Prepare || !preparedIsThis())) {
         RadiometryInput read;
         if (!RadiometryController::readInput(image, frames, &read, error)) return false;
-        m_checkedInput = std::move(read);
+        m_preparedInput = std::move(read);
     }
-    if (!apply) return true;  // (nothing above changes the workspace)
+    if (phase == StatePhase::Prepare) return true;
     // A mosaic runs in the background with the restored mosaic parameters.
     m_controller->setParams(p);
     if (readsInput) {
-        m_controller->adoptInput(std::move(*m_checkedInput));
-        m_checkedInput.reset();
+        m_controller->adoptInput(std::move(*m_preparedInput));
+        m_preparedInput.reset();
     } else if (!demo) {
         m_controller->clearImage();
     }

@@ -44,7 +44,7 @@ public:
     QString title() const override { return tr("Radiometry"); }
     QString demoSummary() const override { return tr("a synthetic radiometric scene"); }
     bool waitIdle(int timeoutMs) override { return m_controller->waitIdle(timeoutMs); }
-    void dropChecked() override { m_checkedInput.reset(); }
+    void dropPrepared() override { m_preparedInput.reset(); }
     /// Images (PNG, TIFF, PGM) while it is in front: one image, or frames to mosaic.
     QString claim(const InputProbe& probe, bool current) const override;
     OpenOutcome openInputs(const QMap<QString, QStringList>& byRole, int pass) override;
@@ -92,7 +92,7 @@ private:
     int selectedRegion() const;
 
     RadiometryController* m_controller;
-    std::optional<RadiometryInput> m_checkedInput;  ///< what a session's checkState read, for its restore
+    std::optional<RadiometryInput> m_preparedInput;  ///< what a session's prepareState read, for its restore
     QCustomPlot *m_dnPlot, *m_reflPlot, *m_fitPlot;
     QCPColorMap *m_dnMap, *m_reflMap;
     QCPColorScale *m_dnScale, *m_reflScale;
@@ -105,12 +105,12 @@ private:
     bool m_linking = false;
 
 protected:
-    /// restoreState and checkState (Workspace) read the session state here:
+    /// restoreState, checkState and prepareState (Workspace) read the session state here:
     /// Validates everything first; on error (*error says what) the previous state stays.
     /// With `doc` (the parsed session) each message starts with the value's file:line:col; `at`
     /// is this state's path in it.
     bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                   const std::vector<std::string>& at, bool apply) override;
+                   const std::vector<std::string>& at, StatePhase phase) override;
 };
 
 }  // namespace lwb::ui

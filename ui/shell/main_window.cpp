@@ -842,15 +842,20 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
                         .arg(version.isDouble() ? QString::number(vd, 'g', 6) : QStringLiteral("a non-number")));
     if (vd > kSessionVersion)
         return fail(tr("%1: session version %2 is newer than this program reads (%3)").arg(path).arg(qint64(vd)).arg(kSessionVersion));
-    // Every workspace's part checked, its inputs read, before any is restored: a part refused
-    // leaves every workspace as it was, with no work started (a restored footprint part and then
-    // its undoing, when the SLR part's pass could not be read, reloaded the shots and lost the
-    // shot shown). The restore uses what the checks read; should it still fail, every part is
-    // put back as it was.
+    // Every workspace's part checked, and then its inputs read, before any is restored: a part
+    // refused leaves every workspace as it was, with no work started (a restored footprint part
+    // and then its undoing, when the SLR part's pass could not be read, reloaded the shots and
+    // lost the shot shown). The checks that read no file come first, so that a session refused
+    // for a value reads no pass. The restore uses what was read; should it still fail, every
+    // part is put back as it was.
     QString err;
-    for (Workspace* ws : m_workspaces)
-        if (o.contains(ws->key()) && !ws->checkState(o[ws->key()].toObject(), &err, &parsed, {ws->key().toStdString()})) {
-            for (Workspace* w : m_workspaces) w->dropChecked();
+    for (const bool prepare : {false, true})
+        for (Workspace* ws : m_workspaces) {
+            if (!o.contains(ws->key())) continue;
+            const QJsonObject part = o[ws->key()].toObject();
+            const std::vector<std::string> at{ws->key().toStdString()};
+            if (prepare ? ws->prepareState(part, &err, &parsed, at) : ws->checkState(part, &err, &parsed, at)) continue;
+            for (Workspace* w : m_workspaces) w->dropPrepared();
             return fail(err.startsWith(path + ":") ? err : tr("%1: %2").arg(path, err));
         }
     QHash<Workspace*, QJsonObject> before;  // each workspace's state, back if any part fails
@@ -860,7 +865,7 @@ bool MainWindow::openSession(const QString& path, bool quiet, QString* errorOut)
             continue;
         QString ignored;
         for (Workspace* w : m_workspaces) {
-            w->dropChecked();
+            w->dropPrepared();
             w->restoreState(before[w], &ignored, nullptr, {w->key().toStdString()});
         }
         return fail(err.startsWith(path + ":") ? err : tr("%1: %2").arg(path, err));

@@ -134,6 +134,7 @@ SlrOpening SlrController::readForOpen(const QString& path, int passIndex, const 
     o.path = path;
     o.passIndex = passIndex;
     o.input = input;
+    o.params = params;
     SlrSources src = sourcesOf(path, input, params);
     src.passNumber = passIndex + 1;  // (0: the file's first pass to screen, core isPassToScreen)
     LoadedSlrPass loaded = loadSlrPass(src, fb);  // the load Python's load_pass makes
@@ -163,6 +164,13 @@ bool SlrController::adoptOpening(SlrOpening o, QString* error) {
     keepStationNormalPoints(&o.setup);
     m_setup = std::move(o.setup);
     m_input = o.input;
+    // The O-C was made with the oc.* rows the file was read with (a session's, which may not be
+    // the panel's yet): they are the controller's now, so that setting them opens nothing again.
+    if (slrSchema().firstChangedStage(m_params, o.params) == kStageOc) {
+        m_params.oc = o.params.oc;
+        m_params.ownTrend = o.params.ownTrend;
+        emit paramsSet();
+    }
     m_path = o.path;
     m_crd = o.opened.crd;
     m_passes = o.opened.passes;

@@ -40,6 +40,7 @@ struct SlrOpening {
     QString path;
     int passIndex = -1;           ///< asked for (-1: the file's first pass to screen)
     core::slr::PassInputParams input;
+    core::slr::SlrParams params;            ///< read with these (its O-C made with their oc.* rows)
     core::slr::SlrSetup setup;
     core::slr::OpenedPass opened;
 };

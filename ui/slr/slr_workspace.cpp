@@ -767,14 +767,13 @@ QList<QAction*> SlrWorkspace::fileOpenActions() {
     return {a, t, f};
 }
 
-bool SlrWorkspace::readPass(const QString& path, int passIndex, const QString& cpf, const QString& sinex, SlrOpening* out,
-                            QString* error) {
+bool SlrWorkspace::readPass(const QString& path, int passIndex, const QString& cpf, const QString& sinex, const SlrParams& params,
+                            SlrOpening* out, QString* error) {
     PassInputParams in = m_controller->inputParams();
     in.cpfPath = cpf.toStdString();
     in.sinexPath = sinex.toStdString();
     // Read on a worker with progress and Cancel (a 10^6-point pass takes seconds: issue 42);
     // the window keeps painting and takes no input meanwhile.
-    const SlrParams params = m_controller->params();
     bool cancelled = false;
     *out = runModal<SlrOpening>(
         this, tr("Opening %1…").arg(QFileInfo(path).fileName()),
@@ -793,11 +792,11 @@ bool SlrWorkspace::readPass(const QString& path, int passIndex, const QString& c
 bool SlrWorkspace::openPath(const QString& path, int passIndex, QString* error) {
     SlrOpening o;
     // What a session's check read for this file, with these prediction and station files.
-    if (m_checkedOpening && m_checkedOpening->path == path && m_checkedOpening->passIndex == passIndex &&
-        m_checkedOpening->input.cpfPath == m_cpfPath.toStdString() && m_checkedOpening->input.sinexPath == m_snxPath.toStdString()) {
-        o = std::move(*m_checkedOpening);
-        m_checkedOpening.reset();
-    } else if (!readPass(path, passIndex, m_cpfPath, m_snxPath, &o, error)) {
+    if (m_preparedOpening && m_preparedOpening->path == path && m_preparedOpening->passIndex == passIndex &&
+        m_preparedOpening->input.cpfPath == m_cpfPath.toStdString() && m_preparedOpening->input.sinexPath == m_snxPath.toStdString()) {
+        o = std::move(*m_preparedOpening);
+        m_preparedOpening.reset();
+    } else if (!readPass(path, passIndex, m_cpfPath, m_snxPath, m_controller->params(), &o, error)) {
         return false;
     }
     if (!m_controller->adoptOpening(std::move(o), error)) return false;
@@ -1675,7 +1674,7 @@ QJsonObject SlrWorkspace::saveState() const {
 }
 
 bool SlrWorkspace::readState(const QJsonObject& o, QString* error, const core::JsonParseResult* doc,
-                             const std::vector<std::string>& at, bool apply) {
+                             const std::vector<std::string>& at, StatePhase phase) {
     // The parameters' sections (oc, screen, postfit): the first parts of the schema's keys.
     std::vector<std::string> sections;
     for (const auto& f : slrSchema().fields()) {
@@ -1700,7 +1699,8 @@ bool SlrWorkspace::readState(const QJsonObject& o, QString* error, const core::J
         *error = tr("slr.main_plot: \"%1\" is neither \"oc\" nor \"residual\"").arg(mainPlot);
         return false;
     }
-    if (!apply) return checkInputs(o, error);  // (nothing above or there changes what is shown)
+    if (phase == StatePhase::Check) return true;  // (nothing above changes the workspace)
+    if (phase == StatePhase::Prepare) return prepareInputs(o, params, error);
     m_residual = mainPlot == "residual";
     m_viewCombo->setCurrentIndex(m_residual ? 1 : 0);
     m_cpfPath = o["cpf"].toString();
@@ -1739,21 +1739,23 @@ bool SlrWorkspace::readForcedEdits(const QJsonArray& forced, size_t points, std:
     return true;
 }
 
-bool SlrWorkspace::checkInputs(const QJsonObject& o, QString* error) {
-    // The pass read (and kept for the restore), as openPath would read it.
+bool SlrWorkspace::prepareInputs(const QJsonObject& o, const SlrParams& params, QString* error) {
+    // The pass read (and kept for the restore), as openPath reads it, with the session's oc.*
+    // rows (its O-C is made when it is read: with the window's, setting the session's afterwards
+    // read it again).
     const QString path = o["path"].toString();
     if (!path.isEmpty()) {
         SlrOpening read;
-        if (!readPass(path, o["pass"].toInt(-1), o["cpf"].toString(), o["sinex"].toString(), &read, error)) return false;
-        m_checkedOpening = std::move(read);
+        if (!readPass(path, o["pass"].toInt(-1), o["cpf"].toString(), o["sinex"].toString(), params, &read, error)) return false;
+        m_preparedOpening = std::move(read);
     }
     // The manual edits against the points of the pass they will be made on: the one read, the
     // demo's, or the one open.
     const QJsonArray forced = o["forced"].toArray();
     if (!forced.isEmpty()) {
         size_t points = m_controller->pass().t.size();
-        if (m_checkedOpening)
-            points = m_checkedOpening->opened.ok && m_checkedOpening->opened.pass ? m_checkedOpening->opened.pass->t.size() : 0;
+        if (m_preparedOpening)
+            points = m_preparedOpening->opened.ok && m_preparedOpening->opened.pass ? m_preparedOpening->opened.pass->t.size() : 0;
         else if (o["demo"].toBool())
             points = simulatedDemo(kDemoPoints).pass.epochS.size();
         std::vector<uint32_t> in, out;
@@ -1771,7 +1773,7 @@ bool SlrWorkspace::checkInputs(const QJsonObject& o, QString* error) {
     return true;
 }
 
-void SlrWorkspace::dropChecked() { m_checkedOpening.reset(); }
+void SlrWorkspace::dropPrepared() { m_preparedOpening.reset(); }
 
 bool SlrWorkspace::setStationNormalPoints(const QString& path, QString* error) {
     // Read into the run's set-up by the core: the tab, the report and the copied command use it.

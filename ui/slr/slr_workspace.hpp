@@ -128,7 +128,7 @@ public:
     QString key() const override { return QStringLiteral("slr"); }
     QString title() const override { return tr("SLR pass screening"); }
     void openDemo() override { openDemo(kDemoPoints); }
-    void dropChecked() override;
+    void dropPrepared() override;
     QString demoSummary() const override { return tr("a simulated kHz pass"); }
     bool waitIdle(int timeoutMs) override { return m_controller->waitIdle(timeoutMs); }
     /// "slr" a pass (CRD, O-C table), "slr-cpf" a prediction, "slr-sinex" station coordinates,
@@ -191,8 +191,8 @@ private:
     ElidedLabel *m_cpfLabel, *m_snxLabel;
     QString m_path, m_cpfPath, m_snxPath;
     bool m_loading = false;
-    bool m_openCancelled = false;  ///< the last openPath was cancelled by the analyst
-    std::optional<SlrOpening> m_checkedOpening;  ///< the pass a session's checkState read, for its restore
+    bool m_openCancelled = false;  ///< the last pass read (readPass) was cancelled by the analyst
+    std::optional<SlrOpening> m_preparedOpening;  ///< the pass a session's prepareState read, for its restore
     bool m_linking = false;
     bool m_imageFlattened = false;  ///< the binary image is of the flattened O-C (refinement)
     bool m_residual = false, m_secondsOfDay = false, m_applyingParams = false;
@@ -213,13 +213,13 @@ private:
     SlrStrips* m_strips = nullptr;
 
     /// Reads `path` (block `passIndex`, -1 the first to screen) with the given prediction and
-    /// station files on a worker with progress and Cancel; nothing shown changes. False with
-    /// *error (the reader's, or cancelled: m_openCancelled).
-    bool readPass(const QString& path, int passIndex, const QString& cpf, const QString& sinex, SlrOpening* out,
-                  QString* error);
-    /// checkState's reading of a session's inputs: the pass (kept in m_checkedOpening), the
-    /// manual edits against its points, the station's normal points. False with *error.
-    bool checkInputs(const QJsonObject& state, QString* error);
+    /// station files, its O-C made with `params`' oc.* rows, on a worker with progress and
+    /// Cancel; nothing shown changes. False with *error (the reader's, or cancelled).
+    bool readPass(const QString& path, int passIndex, const QString& cpf, const QString& sinex, const core::slr::SlrParams& params,
+                  SlrOpening* out, QString* error);
+    /// prepareState's reading of a session's inputs (`params`: the session's): the pass (kept in
+    /// m_preparedOpening), the manual edits against its points, the station's normal points.
+    bool prepareInputs(const QJsonObject& state, const core::slr::SlrParams& params, QString* error);
     /// A session's manual edits ([point, 1 kept / 0 rejected], …) of a pass of `points` points;
     /// false with *error for a point beyond it.
     static bool readForcedEdits(const QJsonArray& forced, size_t points, std::vector<uint32_t>* in, std::vector<uint32_t>* out,
@@ -231,13 +231,13 @@ private:
     static SimulatedDemo simulatedDemo(int points);
 
 protected:
-    /// restoreState and checkState (Workspace) read the session state here:
+    /// restoreState, checkState and prepareState (Workspace) read the session state here:
     /// Restores a session. The parameters start from the defaults and every field given is read
     /// (Schema::fromJson: unknown keys and invalid values are errors naming the key, with the
     /// line and column when `doc`, the parsed session file, is given; `at` is this state's path
     /// in it). False with *error, nothing changed.
     bool readState(const QJsonObject& state, QString* error, const core::JsonParseResult* doc,
-                   const std::vector<std::string>& at, bool apply) override;
+                   const std::vector<std::string>& at, StatePhase phase) override;
 };
 
 }  // namespace lwb::ui
