@@ -32,4 +32,14 @@ bool listFolder(const std::string& dir, std::vector<std::string>* files, std::st
     return true;
 }
 
+std::string folderWithSlash(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+bool pathExists(const std::string& path) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0;
+}
+
 }  // namespace lwb::core

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/folder.hpp"
 #include "core/common/sha256.hpp"
 #include "lwb_version.hpp"
 
@@ -58,15 +59,8 @@ bool provenanceText(const Provenance& p, const std::vector<std::string>& outputs
     return true;
 }
 
-namespace {
-std::string folderOf(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-}
-}  // namespace
-
 std::string recordedName(const std::string& output, const std::string& sidecar) {
-    if (folderOf(output) == folderOf(sidecar)) return output.substr(folderOf(output).size());
+    if (folderWithSlash(output) == folderWithSlash(sidecar)) return output.substr(folderWithSlash(output).size());
     return output.find('/') == std::string::npos ? "./" + output : output;
 }
 

@@ -1,7 +1,5 @@
 #include "core/footprint/footprint_run.hpp"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 
 #include "core/common/folder.hpp"
@@ -11,10 +9,6 @@ namespace lwb::core::footprint {
 
 namespace {
 
-bool exists(const std::string& path) {
-    struct stat st {};
-    return ::stat(path.c_str(), &st) == 0;
-}
 bool endsWithCsv(const std::string& path) {
     if (path.size() < 4) return false;
     std::string end = path.substr(path.size() - 4);
@@ -38,7 +32,7 @@ bool gatherSettingAside(const std::vector<std::string>& inputs, FootprintSetup* 
     for (const auto& in : inputs) {
         const bool folder = isFolder(in);
         const bool list = endsWithCsv(in) && !anyFrame;
-        if (!folder && !isFrameFile(in) && !list && exists(in)) {
+        if (!folder && !isFrameFile(in) && !list && pathExists(in)) {
             s->setAside.push_back(in);
             continue;
         }

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "core/common/csv.hpp"
+#include "core/common/folder.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/image_io.hpp"
 #include "core/footprint/trend.hpp"
@@ -14,10 +15,6 @@
 namespace lwb::core::footprint {
 
 namespace {
-std::string folderOf(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-}
 std::string nameOf(const std::string& path) {
     const size_t slash = path.find_last_of('/');
     return slash == std::string::npos ? path : path.substr(slash + 1);
@@ -60,7 +57,7 @@ ShotListResult readShotList(const std::string& path) {
                     std::string(cx < 0 ? "center_y" : "center_x") + ")";
         return res;
     }
-    const std::string base = folderOf(path);
+    const std::string base = folderWithSlash(path);
     for (size_t r = 0; r < t.rows.size(); ++r) {
         const auto& row = t.rows[r];
         const std::string where = whereInFile(path, t.lines[r]);

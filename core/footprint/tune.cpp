@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <sys/stat.h>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv.hpp"
+#include "core/common/folder.hpp"
 #include "core/common/provenance.hpp"
 #include "core/common/text.hpp"
 #include "core/footprint/batch.hpp"
@@ -406,16 +406,6 @@ struct VerdictRow {
     long line = 0;
 };
 
-std::string folderOf(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-}
-
-bool exists(const std::string& path) {
-    struct stat st {};
-    return ::stat(path.c_str(), &st) == 0;
-}
-
 bool readVerdicts(const std::string& path, std::vector<VerdictRow>* rows, std::vector<std::string>* notes,
                   FootprintError* error) {
     const CsvReadResult csv = readCsv(path);
@@ -460,8 +450,8 @@ bool readVerdicts(const std::string& path, std::vector<VerdictRow>* rows, std::v
         }
         // A relative file: relative to the table's folder, else (a report written elsewhere) to
         // the working folder.
-        if (v.file[0] != '/' && !folderOf(path).empty() && (exists(folderOf(path) + v.file) || !exists(v.file)))
-            v.file = folderOf(path) + v.file;
+        if (v.file[0] != '/' && !folderWithSlash(path).empty() && (pathExists(folderWithSlash(path) + v.file) || !pathExists(v.file)))
+            v.file = folderWithSlash(path) + v.file;
         if (cr >= 0) {
             const std::string r(trim(row[static_cast<size_t>(cr)]));
             long long k = 0;

@@ -1,4 +1,5 @@
 #include "core/radiometry/gcp.hpp"
+#include "core/radiometry/mosaic.hpp"
 #include "core/radiometry/radiometry_params.hpp"
 
 #include <Eigen/Dense>
@@ -14,10 +15,6 @@
 namespace lwb::core::radiometry {
 
 namespace {
-cv::Point2d apply(const cv::Matx33d& h, double x, double y) {
-    const double w = h(2, 0) * x + h(2, 1) * y + h(2, 2);
-    return {(h(0, 0) * x + h(0, 1) * y + h(0, 2)) / w, (h(1, 0) * x + h(1, 1) * y + h(1, 2)) / w};
-}
 std::string gcpName(const Gcp& g, size_t i) {
     std::string s = "GCP " + (g.id.empty() ? std::to_string(i + 1) : g.id);
     if (g.line > 0) s += " (line " + std::to_string(g.line) + ")";
@@ -222,8 +219,8 @@ void gcpResiduals(const std::vector<Gcp>& gcps, const std::vector<Eigen::Vector2
     for (int i = 0; i < n; ++i) {
         GcpResidual r;
         r.id = gcps[i].id.empty() ? std::to_string(i + 1) : gcps[i].id;
-        const cv::Point2d pm = apply(res->imageToMap, img[i].x(), img[i].y());
-        const cv::Point2d pi = apply(res->mapToImage, map[i].x(), map[i].y());
+        const cv::Point2d pm = applyHomography(res->imageToMap, img[i].x(), img[i].y());
+        const cv::Point2d pi = applyHomography(res->mapToImage, map[i].x(), map[i].y());
         r.dMapX = pm.x - map[i].x();
         r.dMapY = pm.y - map[i].y();
         r.dx = pi.x - img[i].x();
@@ -245,8 +242,8 @@ double metresPerPixelAt(const std::vector<Eigen::Vector2d>& img, const cv::Matx3
     for (const auto& v : img) m += v;
     m /= n;
     const double e = 1e-3;
-    const cv::Point2d a = apply(imageToMap, m.x(), m.y()), bx = apply(imageToMap, m.x() + e, m.y()),
-                      by = apply(imageToMap, m.x(), m.y() + e);
+    const cv::Point2d a = applyHomography(imageToMap, m.x(), m.y()), bx = applyHomography(imageToMap, m.x() + e, m.y()),
+                      by = applyHomography(imageToMap, m.x(), m.y() + e);
     const double det = ((bx.x - a.x) * (by.y - a.y) - (by.x - a.x) * (bx.y - a.y)) / (e * e);
     return std::sqrt(std::fabs(det));
 }
@@ -311,7 +308,7 @@ GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& p
                 if (k != i) others.push_back(gcps[static_cast<size_t>(k)]);
             const GcpFitResult o = fitGcpTransform(others, inner);
             if (!o.ok || !(o.dof > 0)) continue;
-            const cv::Point2d pi = apply(o.mapToImage, map[i].x(), map[i].y());
+            const cv::Point2d pi = applyHomography(o.mapToImage, map[i].x(), map[i].y());
             const double miss = std::hypot(pi.x - img[i].x(), pi.y - img[i].y());
             const double h = std::min(0.999, double(X.row(a) * XtXi * X.row(a).transpose()));
             const double sigma = o.rmsPx * std::sqrt((m - 1.0) / o.dof);  // per coordinate
@@ -321,7 +318,7 @@ GcpFitResult fitGcpTransform(const std::vector<Gcp>& gcps, const GcpFitParams& p
             const double nu = o.dof;
             const double zLimit = std::sqrt(nu / 2 * (std::pow(params.outlierProbability, -2 / nu) - 1));
             if (miss > 0.5 && z / zLimit > worstRatio) {
-                const cv::Point2d pm = apply(o.imageToMap, img[i].x(), img[i].y());
+                const cv::Point2d pm = applyHomography(o.imageToMap, img[i].x(), img[i].y());
                 worst = i, worstRatio = z / zLimit, worstMiss = miss, worstZ = z, worstRms = o.rmsPx;
                 worstMapMiss = std::hypot(pm.x - map[i].x(), pm.y - map[i].y());
             }
@@ -348,8 +345,8 @@ MapGrid gridCovering(const GcpFitResult& fit, cv::Size size, double pixelSize) {
     const int steps = 32;
     for (int k = 0; k <= steps; ++k) {
         const double fx = -0.5 + (size.width) * double(k) / steps, fy = -0.5 + (size.height) * double(k) / steps;
-        const cv::Point2d pts[4] = {apply(fit.imageToMap, fx, -0.5), apply(fit.imageToMap, fx, size.height - 0.5),
-                                    apply(fit.imageToMap, -0.5, fy), apply(fit.imageToMap, size.width - 0.5, fy)};
+        const cv::Point2d pts[4] = {applyHomography(fit.imageToMap, fx, -0.5), applyHomography(fit.imageToMap, fx, size.height - 0.5),
+                                    applyHomography(fit.imageToMap, -0.5, fy), applyHomography(fit.imageToMap, size.width - 0.5, fy)};
         for (const auto& p : pts) {
             minX = std::min(minX, p.x);
             maxX = std::max(maxX, p.x);

@@ -60,11 +60,6 @@ std::string validate(const MosaicParams& p) {
 
 namespace {
 
-cv::Point2d apply(const cv::Matx33d& h, double x, double y) {
-    const double w = h(2, 0) * x + h(2, 1) * y + h(2, 2);
-    return {(h(0, 0) * x + h(0, 1) * y + h(0, 2)) / w, (h(1, 0) * x + h(1, 1) * y + h(1, 2)) / w};
-}
-
 // 8-bit views for the detectors with one contrast stretch (0.5–99.5 % percentiles) for every
 // frame (same scene, same exposure): the detectors' thresholds assume a full 0..255 range, and a
 // dull 8-bit frame left as it is yields few keypoints.
@@ -93,7 +88,6 @@ std::vector<cv::Mat> to8bit(const std::vector<cv::Mat>& frames) {
     }
     return out;
 }
-
 
 // ---- the stages of mosaicRow ----------------------------------------------------------------
 
@@ -208,14 +202,14 @@ std::string registerPair(size_t i, const std::vector<std::vector<cv::KeyPoint>>&
     int ni = 0;
     for (size_t j = 0; j < inl.size(); ++j)
         if (inl[j]) {
-            const cv::Point2d q = apply(h, pTo[j].x, pTo[j].y);
+            const cv::Point2d q = applyHomography(h, pTo[j].x, pTo[j].y);
             ss += std::pow(cv::norm(q - cv::Point2d(pFrom[j])), 2);
             ++ni;
         }
     pr.inliers = ni;
     pr.rmsPx = ni ? std::sqrt(ss / ni) : NAN;
     pr.transform = h;
-    const cv::Point2d o = apply(h, 0, 0);
+    const cv::Point2d o = applyHomography(h, 0, 0);
     pr.shiftX = o.x;
     pr.shiftY = o.y;
     pr.scale = std::sqrt(std::fabs(h(0, 0) * h(1, 1) - h(0, 1) * h(1, 0)));
@@ -234,7 +228,7 @@ std::string registerPair(size_t i, const std::vector<std::vector<cv::KeyPoint>>&
 void frameBounds(const cv::Mat& f, const cv::Matx33d& m, double* x0, double* y0, double* x1, double* y1) {
     const double w = f.cols - 0.5, hh = f.rows - 0.5;
     for (const cv::Point2d c : {cv::Point2d(-0.5, -0.5), cv::Point2d(w, -0.5), cv::Point2d(-0.5, hh), cv::Point2d(w, hh)}) {
-        const cv::Point2d p = apply(m, c.x, c.y);
+        const cv::Point2d p = applyHomography(m, c.x, c.y);
         *x0 = std::min(*x0, p.x);
         *y0 = std::min(*y0, p.y);
         *x1 = std::max(*x1, p.x);

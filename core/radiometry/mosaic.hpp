@@ -11,6 +11,13 @@
 
 namespace lwb::core::radiometry {
 
+/// The point (x, y) mapped by the homography h (pixel coordinates).
+inline cv::Point2d applyHomography(const cv::Matx33d& h, double x, double y) {
+    const double w = h(2, 0) * x + h(2, 1) * y + h(2, 2);
+    return {(h(0, 0) * x + h(0, 1) * y + h(0, 2)) / w, (h(1, 0) * x + h(1, 1) * y + h(1, 2)) / w};
+}
+
+
 enum class FeatureType { Orb, Akaze };
 enum class MotionModel {
     Translation,  ///< shift only (a rail-mounted, gimbal-held camera)

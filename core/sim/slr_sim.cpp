@@ -11,7 +11,6 @@
 namespace lwb::core::sim {
 
 namespace {
-constexpr double kC = 299792458.0;  // m/s
 
 double rangeM(const SlrSimParams& p, double tcaSod, double t) {
     const double d = p.tcaDistanceKm * 1e3, v = p.velocityKmS * 1e3, x = v * (t - tcaSod);
@@ -210,7 +209,7 @@ bool parseSlrGaps(const std::string& text, std::vector<SlrSimGap>* out, std::str
 }
 
 double slrTrackOc(const SlrSimParams& p, double rangeBiasS, double timeBiasS, double tcaSod, double t) {
-    return rangeBiasS + 2.0 / kC * rangeRateMs(p, tcaSod, t) * timeBiasS;
+    return rangeBiasS + 2.0 / kSpeedOfLight * rangeRateMs(p, tcaSod, t) * timeBiasS;
 }
 
 namespace {
@@ -411,7 +410,7 @@ SlrSimPass simulateSlrPass(const SlrSimParams& p, uint64_t seed) {
         out.ocS[i] = pts[i].oc;
         out.isSignal[i] = pts[i].sig;
         out.trackOcS[i] = track(pts[i].t);
-        out.tofS[i] = 2.0 * rangeM(p, out.tcaSod, pts[i].t) / kC + pts[i].oc;
+        out.tofS[i] = 2.0 * rangeM(p, out.tcaSod, pts[i].t) / kSpeedOfLight + pts[i].oc;
     }
     out.durationS = duration;
     out.shots = shots;

@@ -32,6 +32,9 @@
 
 namespace lwb::core::sim {
 
+constexpr double kSpeedOfLight = 299792458.0;  ///< m/s
+
+
 enum class SlrKind { Khz, Conventional, Diffuse, Leo, Daylight, Dayspad };
 const char* slrKindName(SlrKind k);  ///< "khz", "conventional", "diffuse", "leo", "daylight", "dayspad"
 /// Every kind's name, for messages: "khz, conventional, ..., daylight or dayspad".

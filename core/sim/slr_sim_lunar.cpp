@@ -9,7 +9,6 @@
 namespace lwb::core::sim {
 
 namespace {
-constexpr double kC = 299792458.0;
 constexpr double kMeanDistanceM = 384400e3;
 constexpr double kDiurnalM = 4.5e6;         // the station's diurnal swing in range (m)
 constexpr double kLunarDayS = 89428.3;      // one lunar day (s)
@@ -86,7 +85,7 @@ LunarSimPass simulateLunarPass(const LunarSimParams& p, uint64_t seed) {
         if (ev.empty()) continue;
         const double t = p.startSod + el;
         const double rho = kMeanDistanceM + kDiurnalM * std::cos(phase + 2 * M_PI * el / kLunarDayS);
-        const double truthTof = 2 * rho / kC;
+        const double truthTof = 2 * rho / kSpeedOfLight;
         const double predicted = truthTof - track;
         for (const auto& [oc, kind] : ev) {
             if (!(oc >= lo && oc <= hi)) continue;  // outside the gate: not recorded

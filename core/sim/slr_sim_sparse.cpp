@@ -14,7 +14,6 @@
 namespace lwb::core::sim {
 
 namespace {
-constexpr double kC = 299792458.0;
 constexpr double kGm = 3.986004418e14;
 constexpr double kOmegaE = 7.292115e-5;
 constexpr double kRe = 6371000.0;
@@ -46,7 +45,7 @@ double elevationDeg(const SparseLeoPass& s, double t) {
 }
 }  // namespace
 
-double sparseLeoTrueTof(const SparseLeoPass& pass, double t) { return 2.0 * norm(satAt(pass, t) - stationAt(pass, t)) / kC; }
+double sparseLeoTrueTof(const SparseLeoPass& pass, double t) { return 2.0 * norm(satAt(pass, t) - stationAt(pass, t)) / kSpeedOfLight; }
 
 SparseLeoPass simulateSparseLeoPass(const SparseLeoParams& p, uint64_t seed) {
     SparseLeoPass s;

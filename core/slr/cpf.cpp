@@ -14,10 +14,6 @@ namespace lwb::core::slr {
 
 namespace {
 
-std::string where(const std::string& src, long line) { return whereInFile(src, line); }
-
-std::string excerpt(std::string_view s, size_t maxLen = 40) { return printableExcerpt(s, maxLen); }
-
 bool toInt(std::string_view s, long* out) {
     long long v = 0;
     if (parseLong(s, &v) && v > -2000000000LL && v < 2000000000LL) {
@@ -49,14 +45,14 @@ using Warn = std::function<void(std::string)>;
 bool parseCpfH1(const std::vector<std::string_view>& f, long lineNo, const std::string& src, CpfHeader& h,
                 std::string* error) {
     if (f.size() < 3 || toLower(f[1]) != "cpf") {
-        *error = where(src, lineNo) + "H1 must start with \"CPF <version>\"" +
+        *error = whereInFile(src, lineNo) + "H1 must start with \"CPF <version>\"" +
                  (f.size() >= 2 && toLower(f[1]) == "crd" ? std::string(": this H1 names CRD ranging data, not a CPF prediction")
                                                           : std::string());
         return false;
     }
     long v = 0;
     if (!toInt(f[2], &v) || v < 1 || v > 9) {
-        *error = where(src, lineNo) + "H1 format version is not 1 or 2: \"" + excerpt(f[2]) + "\"";
+        *error = whereInFile(src, lineNo) + "H1 format version is not 1 or 2: \"" + printableExcerpt(f[2]) + "\"";
         return false;
     }
     h.version = static_cast<int>(v);
@@ -77,7 +73,7 @@ bool parseCpfH1(const std::vector<std::string_view>& f, long lineNo, const std::
 // H2: ids, the prediction's span and step, target type, frame, centre of mass.
 void parseCpfH2(const std::vector<std::string_view>& f, long lineNo, const std::string& src, CpfHeader& h, const Warn& warn) {
     if (f.size() < 17) {
-        warn(where(src, lineNo) + "H2 has " + std::to_string(f.size() - 1) + " fields (expected >= 16); ignored");
+        warn(whereInFile(src, lineNo) + "H2 has " + std::to_string(f.size() - 1) + " fields (expected >= 16); ignored");
         return;
     }
     h.ilrsId = std::string(f[1]);
@@ -86,7 +82,7 @@ void parseCpfH2(const std::vector<std::string_view>& f, long lineNo, const std::
     for (int i = 0; i < 15 && good; ++i) good = toInt(f[static_cast<size_t>(i + 2)], &v[i]);
     if (!good || !validDate(static_cast<int>(v[2]), static_cast<int>(v[3]), static_cast<int>(v[4])) ||
         !validDate(static_cast<int>(v[8]), static_cast<int>(v[9]), static_cast<int>(v[10]))) {
-        warn(where(src, lineNo) + "H2 ids, span or step unreadable; ignored");
+        warn(whereInFile(src, lineNo) + "H2 ids, span or step unreadable; ignored");
         return;
     }
     h.sic = v[0], h.norad = v[1];
@@ -120,7 +116,7 @@ bool parseCpfPosition(const std::vector<std::string_view>& f, long lineNo, const
     else if (std::fabs(xyz[0]) > 1e12 || std::fabs(xyz[1]) > 1e12 || std::fabs(xyz[2]) > 1e12)
         why = "position beyond 1e12 m";
     if (!why.empty()) {
-        warn(where(src, lineNo) + "type 10 record skipped: " + why);
+        warn(whereInFile(src, lineNo) + "type 10 record skipped: " + why);
         return false;
     }
     p.direction = static_cast<int>(dir);
@@ -129,7 +125,7 @@ bool parseCpfPosition(const std::vector<std::string_view>& f, long lineNo, const
     p.leapSecond = static_cast<int>(leap);
     p.position = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
     if (p.leapSecond != 0)
-        warn(where(src, lineNo) + "leap-second flag set: interpolation across the leap second is not corrected");
+        warn(whereInFile(src, lineNo) + "leap-second flag set: interpolation across the leap second is not corrected");
     *out = p;
     return true;
 }
@@ -146,7 +142,7 @@ bool keepTimeOrder(const std::string& src, CpfReadResult& res) {
     for (const auto& p : res.file.positions) {
         const double t = static_cast<double>(p.mjd) * kSecondsPerDay + p.sod;
         if (t < last[p.direction]) {
-            res.error = where(src, p.line) + "position record out of time order (MJD " + std::to_string(p.mjd) + " " +
+            res.error = whereInFile(src, p.line) + "position record out of time order (MJD " + std::to_string(p.mjd) + " " +
                         formatFixed(p.sod, 3) + " s comes after the record of line " + std::to_string(lastLine[p.direction]) +
                         ", " + formatFixed(last[p.direction] - t, 0) +
                         " s later): a prediction's records run forward in time; is the file sorted or joined?";
@@ -154,7 +150,7 @@ bool keepTimeOrder(const std::string& src, CpfReadResult& res) {
             return false;
         }
         if (t == last[p.direction]) {
-            if (bad++ < 20) res.warnings.push_back(where(src, p.line) + "epoch repeats the previous record's; skipped");
+            if (bad++ < 20) res.warnings.push_back(whereInFile(src, p.line) + "epoch repeats the previous record's; skipped");
             continue;
         }
         last[p.direction] = t;
@@ -199,17 +195,17 @@ CpfReadResult parseCpf(std::string_view given, const std::string& source) {
             if (!haveH1) {
                 if (id == "00") continue;
                 if (id != "h1") {
-                    res.error = where(src, lineNo) + "not a CPF file: first record is \"" + excerpt(line) + "\" (expected H1)";
+                    res.error = whereInFile(src, lineNo) + "not a CPF file: first record is \"" + printableExcerpt(line) + "\" (expected H1)";
                     return res;
                 }
             }
             if (ended) {
-                warn(where(src, lineNo) + "record after the 99 end-of-ephemeris record; ignored");
+                warn(whereInFile(src, lineNo) + "record after the 99 end-of-ephemeris record; ignored");
                 continue;
             }
             if (id == "h1") {
                 if (haveH1) {
-                    warn(where(src, lineNo) + "second H1; ignored");
+                    warn(whereInFile(src, lineNo) + "second H1; ignored");
                     continue;
                 }
                 std::string err;
@@ -223,7 +219,7 @@ CpfReadResult parseCpf(std::string_view given, const std::string& source) {
             } else if (id == "h5") {
                 double off = 0;
                 if (f.size() > 1 && parseFortranDouble(f[1], &off)) h.comOffsetM = off;
-                else warn(where(src, lineNo) + "H5 centre-of-mass offset unreadable; ignored");
+                else warn(whereInFile(src, lineNo) + "H5 centre-of-mass offset unreadable; ignored");
             } else if (id == "h9") {
                 continue;
             } else if (id == "10") {
@@ -234,12 +230,12 @@ CpfReadResult parseCpf(std::string_view given, const std::string& source) {
                 long dir = 0;
                 if (f.size() < 5 || !toInt(f[1], &dir) || !parseFortranDouble(f[2], &v[0]) || !parseFortranDouble(f[3], &v[1]) ||
                     !parseFortranDouble(f[4], &v[2])) {
-                    warn(where(src, lineNo) + "type 20 velocity record unreadable; skipped");
+                    warn(whereInFile(src, lineNo) + "type 20 velocity record unreadable; skipped");
                     continue;
                 }
                 if (res.file.positions.empty() || res.file.positions.back().hasVelocity ||
                     res.file.positions.back().direction != dir) {
-                    warn(where(src, lineNo) + "type 20 velocity record without a preceding type 10; skipped");
+                    warn(whereInFile(src, lineNo) + "type 20 velocity record without a preceding type 10; skipped");
                     continue;
                 }
                 res.file.positions.back().hasVelocity = true;
@@ -254,7 +250,7 @@ CpfReadResult parseCpf(std::string_view given, const std::string& source) {
         }
         // The format closes every file with a 99 record: without it the file was probably cut short.
         if (!ended && haveH1)
-            warn(where(src, lineNo) + "the file ends without the 99 end-of-ephemeris record: truncated? (its last " +
+            warn(whereInFile(src, lineNo) + "the file ends without the 99 end-of-ephemeris record: truncated? (its last " +
                  "prediction records may be missing)");
         if (dropped) res.warnings.push_back("... and " + std::to_string(dropped) + " more warnings");
         if (res.file.positions.empty()) {
@@ -275,7 +271,7 @@ std::string cpfPlausibilityProblem(const CpfFile& cpf) {
     constexpr double kMinRadiusM = 6.3e6;
     for (const auto& p : cpf.positions)
         if (!(p.position.norm() >= kMinRadiusM))
-            return where(src, p.line) + "position (" + formatShortest(p.position.x()) + ", " + formatShortest(p.position.y()) +
+            return whereInFile(src, p.line) + "position (" + formatShortest(p.position.x()) + ", " + formatShortest(p.position.y()) +
                    ", " + formatShortest(p.position.z()) + ") m is " + formatFixed(p.position.norm() / 1000, 1) +
                    " km from the Earth's centre, inside the Earth: a damaged prediction";
     for (int dir = 0; dir <= 2; ++dir) {
@@ -317,7 +313,7 @@ std::string cpfPlausibilityProblem(const CpfFile& cpf) {
         for (size_t i = 0; i < n; ++i)
             if (std::isfinite(res[i]) && (worst == n || res[i] > res[worst])) worst = i;
         if (worst < n && res[worst] > 1000 && res[worst] > 20 * median)
-            return where(src, r[worst]->line) + "position record " + formatFixed(res[worst] / 1000, 1) +
+            return whereInFile(src, r[worst]->line) + "position record " + formatFixed(res[worst] / 1000, 1) +
                    " km off the orbit through its neighbours (the records' median: " + formatFixed(median, 1) +
                    " m): a damaged record; repair or remove it";
     }

@@ -42,19 +42,12 @@ struct Fields {
     }
 };
 
-bool isNa(std::string_view s) {
-    if (!s.empty() && (s[0] == '-' || s[0] == '+')) s.remove_prefix(1);
-    return s.size() == 2 && (s[0] == 'n' || s[0] == 'N') && (s[1] == 'a' || s[1] == 'A');
-}
-
-std::string excerpt(std::string_view s, size_t maxLen = 40) { return printableExcerpt(s, maxLen); }
-
 enum class Need { Required, Optional };
 
 /// Field i (1 = first after the record id) as a finite double. Missing or "na" gives NaN,
 /// which is an error only when required. *why describes the problem.
 bool numberField(const Fields& fs, size_t i, const char* name, Need need, double* out, std::string* why) {
-    if (i >= fs.n || isNa(fs.f[i])) {
+    if (i >= fs.n || isCrdNa(fs.f[i])) {
         if (need == Need::Required) {
             *why = "field " + std::to_string(i) + " (" + name + ") is " + (i >= fs.n ? "missing" : "\"na\"");
             return false;
@@ -63,7 +56,7 @@ bool numberField(const Fields& fs, size_t i, const char* name, Need need, double
         return true;
     }
     if (!parseFortranDouble(fs.f[i], out)) {
-        *why = "field " + std::to_string(i) + " (" + name + ") is not a finite number: \"" + excerpt(fs.f[i]) + "\"";
+        *why = "field " + std::to_string(i) + " (" + name + ") is not a finite number: \"" + printableExcerpt(fs.f[i]) + "\"";
         return false;
     }
     return true;
@@ -72,7 +65,7 @@ bool numberField(const Fields& fs, size_t i, const char* name, Need need, double
 /// Field i as an integer (a whole-valued decimal such as "2." is accepted). Missing or "na"
 /// gives kCrdAbsent, an error only when required.
 bool intField(const Fields& fs, size_t i, const char* name, Need need, long* out, std::string* why) {
-    if (i >= fs.n || isNa(fs.f[i])) {
+    if (i >= fs.n || isCrdNa(fs.f[i])) {
         if (need == Need::Required) {
             *why = "field " + std::to_string(i) + " (" + name + ") is " + (i >= fs.n ? "missing" : "\"na\"");
             return false;
@@ -90,7 +83,7 @@ bool intField(const Fields& fs, size_t i, const char* name, Need need, long* out
         *out = static_cast<long>(d);
         return true;
     }
-    *why = "field " + std::to_string(i) + " (" + name + ") is not an integer: \"" + excerpt(fs.f[i]) + "\"";
+    *why = "field " + std::to_string(i) + " (" + name + ") is not an integer: \"" + printableExcerpt(fs.f[i]) + "\"";
     return false;
 }
 
@@ -113,7 +106,7 @@ bool stringField(const Fields& fs, size_t i, const char* name, std::string* out,
 bool secondsOfDay(const Fields& fs, double* out, std::string* why) {
     if (!numberField(fs, 1, "seconds of day", Need::Required, out, why)) return false;
     if (*out < 0 || *out >= 86401.0) {
-        *why = "field 1 (seconds of day) is outside 0..86400: " + excerpt(fs.f[1]);
+        *why = "field 1 (seconds of day) is outside 0..86400: " + printableExcerpt(fs.f[1]);
         return false;
     }
     return true;
@@ -172,7 +165,7 @@ struct Sink {
     }
 };
 
-std::string where(const std::string& source, long line) {
+std::string crdWhere(const std::string& source, long line) {
     return (source.empty() ? std::string("crd") : source) + ":" + std::to_string(line) + ": ";
 }
 
@@ -186,17 +179,17 @@ bool parseH1(const CrdRecord& r, const std::string& src, CrdFormatHeader* h, Sin
     h->version = 1;
     std::string why;
     if (fs.n >= 2 && toLower(fs.f[1]) == "cpf") {
-        *fatal = "H1 names the format \"" + excerpt(fs.f[1], 8) +
+        *fatal = "H1 names the format \"" + printableExcerpt(fs.f[1], 8) +
                  "\", not \"CRD\": a CPF prediction, not ranging data (or a damaged header)";
         return false;
     }
     if (fs.n < 3 || toLower(fs.f[1]) != "crd") {
-        sink->add(where(src, r.line) + "H1 does not start with \"CRD <version>\"; read as CRD v1");
+        sink->add(crdWhere(src, r.line) + "H1 does not start with \"CRD <version>\"; read as CRD v1");
         return true;
     }
     int v = 1;
     if (!intField(fs, 2, "format version", Need::Required, &v, &why) || v < 0 || v > 9) {
-        sink->add(where(src, r.line) + "H1 " + (why.empty() ? "format version out of range" : why) + "; read as CRD v1");
+        sink->add(crdWhere(src, r.line) + "H1 " + (why.empty() ? "format version out of range" : why) + "; read as CRD v1");
         v = 1;
     }
     h->version = v < 1 ? 1 : v;
@@ -217,14 +210,14 @@ void parseH2(const CrdRecord& r, const std::string& src, CrdStation* h, Sink* si
     h->text = r.text;
     h->line = r.line;
     if (fs.n < 3) {
-        sink->add(where(src, r.line) + "H2 needs the station name and CDP pad id");
+        sink->add(crdWhere(src, r.line) + "H2 needs the station name and CDP pad id");
         if (fs.n >= 2) h->name = std::string(fs.f[1]);
         return;
     }
     h->name = std::string(fs.f[1]);
     std::string why;
     int v = kCrdAbsent;
-    if (!intField(fs, 2, "CDP pad id", Need::Optional, &v, &why)) sink->add(where(src, r.line) + "H2 " + why);
+    if (!intField(fs, 2, "CDP pad id", Need::Optional, &v, &why)) sink->add(crdWhere(src, r.line) + "H2 " + why);
     else h->cdpPadId = v;
     if (intField(fs, 3, "CDP system number", Need::Optional, &v, &why)) h->cdpSystem = v;
     if (intField(fs, 4, "CDP occupancy", Need::Optional, &v, &why)) h->cdpOccupancy = v;
@@ -238,7 +231,7 @@ void parseH3(const CrdRecord& r, const std::string& src, CrdTarget* h, Sink* sin
     h->text = r.text;
     h->line = r.line;
     if (fs.n < 3) {
-        sink->add(where(src, r.line) + "H3 needs the target name and ILRS id");
+        sink->add(crdWhere(src, r.line) + "H3 needs the target name and ILRS id");
         if (fs.n >= 2) h->name = std::string(fs.f[1]);
         return;
     }
@@ -261,7 +254,7 @@ bool allUnknown(const Fields& fs, size_t first) {
     for (size_t i = first; i < first + 6; ++i) {
         if (i >= fs.n) return false;
         long long v = 0;
-        if (!isNa(fs.f[i]) && !(parseLong(fs.f[i], &v) && v == kCrdAbsent)) return false;
+        if (!isCrdNa(fs.f[i]) && !(parseLong(fs.f[i], &v) && v == kCrdAbsent)) return false;
     }
     return true;
 }
@@ -305,7 +298,7 @@ bool parseH4(const CrdRecord& r, const std::string& src, CrdSession* h, Sink* si
         return false;
     }
     if (endUnknown) {
-        sink->add(where(src, r.line) + "H4 end date-time is not given (-1 or na in all six fields); the pass is read "
+        sink->add(crdWhere(src, r.line) + "H4 end date-time is not given (-1 or na in all six fields); the pass is read "
                                        "with its end unknown");
     } else if (!validDate(h->endYear, h->endMonth, h->endDay) || !validTime(h->endHour, h->endMinute, h->endSecond)) {
         *why = "H4 end date-time is not a valid date and time";
@@ -318,7 +311,7 @@ bool parseH4(const CrdRecord& r, const std::string& src, CrdSession* h, Sink* si
         const std::array<double, 6> end{double(h->endYear), double(h->endMonth), double(h->endDay),
                                         double(h->endHour), double(h->endMinute), double(h->endSecond)};
         if (end < start)
-            sink->add(where(src, r.line) + "H4 end date-time precedes its start date-time: the header's span of the pass is "
+            sink->add(crdWhere(src, r.line) + "H4 end date-time precedes its start date-time: the header's span of the pass is "
                                            "wrong (the records' epochs are used)");
     }
     struct Flag {
@@ -340,9 +333,9 @@ bool parseH4(const CrdRecord& r, const std::string& src, CrdSession* h, Sink* si
         int x = kCrdAbsent;
         std::string bad;
         if (!intField(fs, static_cast<size_t>(14 + i), flags[i].name, Need::Optional, &x, &bad)) {
-            sink->add(where(src, r.line) + "H4 " + bad + "; read as unknown");
+            sink->add(crdWhere(src, r.line) + "H4 " + bad + "; read as unknown");
         } else if (x != kCrdAbsent && (x < 0 || x > flags[i].max)) {
-            sink->add(where(src, r.line) + "H4 field " + std::to_string(14 + i) + " (" + flags[i].name + ") is " +
+            sink->add(crdWhere(src, r.line) + "H4 field " + std::to_string(14 + i) + " (" + flags[i].name + ") is " +
                       std::to_string(x) + ", outside 0.." + std::to_string(flags[i].max) + " (" + flags[i].meaning +
                       "); read as unknown");
         } else {
@@ -366,7 +359,7 @@ bool parse10(const Fields& fs, CrdRange* r, std::string* why) {
     if (!secondsOfDay(fs, &r->secOfDay, why)) return false;
     if (!numberField(fs, 2, "time of flight", Need::Required, &r->tofS, why)) return false;
     if (r->tofS < 0 || r->tofS > 100) {
-        *why = "field 2 (time of flight) is outside 0..100 s: " + excerpt(fs.f[2]);
+        *why = "field 2 (time of flight) is outside 0..100 s: " + printableExcerpt(fs.f[2]);
         return false;
     }
     if (!stringField(fs, 3, "system configuration id", &r->configId, why)) return false;
@@ -390,7 +383,7 @@ bool parse11(const Fields& fs, CrdNormalPoint* r, std::string* why) {
     if (!secondsOfDay(fs, &r->secOfDay, why)) return false;
     if (!numberField(fs, 2, "time of flight", Need::Required, &r->tofS, why)) return false;
     if (r->tofS < 0 || r->tofS > 100) {
-        *why = "field 2 (time of flight) is outside 0..100 s: " + excerpt(fs.f[2]);
+        *why = "field 2 (time of flight) is outside 0..100 s: " + printableExcerpt(fs.f[2]);
         return false;
     }
     if (!stringField(fs, 3, "system configuration id", &r->configId, why)) return false;
@@ -479,7 +472,7 @@ void addRecord(Parse parse, const CrdLine& r, size_t i, const std::string& src, 
                List& list, std::vector<long>& skipped, Rec x = Rec{}) {
     std::string why;
     if (!parse(Fields(r.text), &x, &why)) {
-        sink->add(where(src, r.line) + what + " record skipped: " + why);
+        sink->add(crdWhere(src, r.line) + what + " record skipped: " + why);
         skipped.push_back(r.line);
         return;
     }
@@ -543,7 +536,7 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
             parseH3(r, src, &p->target, &quiet);
         } else if (id == "h4") {
             if (!parseH4(r, src, &p->session, sink, &why)) {
-                *error = where(src, r.line) + why;
+                *error = crdWhere(src, r.line) + why;
                 clearParsed(p);
                 return false;
             }
@@ -567,7 +560,7 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
         }
     }
     if (!sawH4) {
-        *error = where(src, p->records.empty() ? 0 : p->records.front().line) + "pass without an H4 session header";
+        *error = crdWhere(src, p->records.empty() ? 0 : p->records.front().line) + "pass without an H4 session header";
         return false;
     }
     // 86 400 s and beyond is 23:59:60, a leap second: only on a day that ends with one. On another
@@ -583,7 +576,7 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
                 dateFromMjd(recDay, &y, &mo, &d);
                 char date[16];
                 std::snprintf(date, sizeof date, "%04d-%02d-%02d", y, mo, d);
-                sink->add(where(src, list[k].line) + what + " record skipped: seconds of day " + formatFixed(sod, 6) +
+                sink->add(crdWhere(src, list[k].line) + what + " record skipped: seconds of day " + formatFixed(sod, 6) +
                           " is 23:59:60, a leap second, but " + date + " ends without one");
                 p->skippedLines.push_back(list[k].line);
                 eraseAt(list, k);
@@ -604,7 +597,7 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
             dateFromMjd(day, &y, &mo, &d);
             char date[16];
             std::snprintf(date, sizeof date, "%04d-%02d-%02d", y, mo, d);
-            sink->add(where(src, p->records.empty() ? 0 : p->records.front().line) + "the pass crosses the leap second " +
+            sink->add(crdWhere(src, p->records.empty() ? 0 : p->records.front().line) + "the pass crosses the leap second " +
                       date + " 23:59:60: its epochs are UTC labels (as a CPF's), the records after midnight are 1 s "
                       "later in elapsed time than their labels say; O-C against the pass's own TOF trend steps by its "
                       "range rate x 1 s there (give a CPF prediction for this pass)");
@@ -612,7 +605,6 @@ bool parsePassRecords(CrdPass* p, const std::string& src, Sink* sink, std::strin
     }
     return true;
 }
-
 
 // The lines from an H4 to the next one (or the end), and their bytes (without line ends).
 struct LinesAfterH4 {
@@ -644,10 +636,10 @@ public:
         }
         if (!idIsValid(id)) {
             if (!open_ && !haveH1_) {
-                *error = where(src_, lineNo) + "not a CRD record: \"" + excerpt(rec.text) + "\" (expected H1)";
+                *error = crdWhere(src_, lineNo) + "not a CRD record: \"" + printableExcerpt(rec.text) + "\" (expected H1)";
                 return false;
             }
-            sink_->add(where(src_, lineNo) + "unknown record type \"" + excerpt(fs.f[0], 8) + "\"; kept, not interpreted");
+            sink_->add(crdWhere(src_, lineNo) + "unknown record type \"" + printableExcerpt(fs.f[0], 8) + "\"; kept, not interpreted");
             current().push_back(std::move(rec));
             return true;
         }
@@ -655,7 +647,7 @@ public:
         if (id == "h4") return openPass(std::move(rec), error);
         if (id == "h8") {
             if (!open_) {
-                sink_->add(where(src_, lineNo) + "H8 without an open pass; kept");
+                sink_->add(crdWhere(src_, lineNo) + "H8 without an open pass; kept");
                 pending_.push_back(std::move(rec));
                 return true;
             }
@@ -679,7 +671,7 @@ public:
                 pending_.push_back(std::move(rec));
                 return true;
             }
-            *error = where(src_, lineNo) + "record " + std::string(fs.f[0]) + " " +
+            *error = crdWhere(src_, lineNo) + "record " + std::string(fs.f[0]) + " " +
                      (haveH1_ ? "outside a pass (no H4 session header before it)"
                               : "before the H1 format header (not a CRD file, or its header is missing)");
             return false;
@@ -700,7 +692,7 @@ private:
 
     void close(const std::string& why, long atLine) {
         if (!open_) return;
-        if (!why.empty()) sink_->add(where(src_, atLine) + why);
+        if (!why.empty()) sink_->add(crdWhere(src_, atLine) + why);
         open_ = nullptr;
     }
 
@@ -710,7 +702,7 @@ private:
         if (id == "h1") {
             std::string why;
             if (!parseH1(rec, src_, &h1_, sink_, &why)) {
-                *error = where(src_, rec.line) + why;
+                *error = crdWhere(src_, rec.line) + why;
                 return false;
             }
             haveH1_ = true;
@@ -729,11 +721,11 @@ private:
     bool openPass(CrdRecord rec, std::string* error) {
         close("pass ended without H8 (new H4)", rec.line);
         if (!haveH1_) {
-            *error = where(src_, rec.line) + "H4 before any H1 format header";
+            *error = crdWhere(src_, rec.line) + "H4 before any H1 format header";
             return false;
         }
         if (!haveH2_ || !haveH3_) {
-            *error = where(src_, rec.line) + "H4 before the " + std::string(!haveH2_ ? "H2 station" : "H3 target") + " header";
+            *error = crdWhere(src_, rec.line) + "H4 before the " + std::string(!haveH2_ ? "H2 station" : "H3 target") + " header";
             return false;
         }
         file_->passes.emplace_back();
@@ -883,7 +875,7 @@ void parseOnePass(CrdPass& p, size_t k, const std::string& src, Sink* sink, std:
     if (!parsePassRecords(&p, src, sink, &err, fileBytes)) {
         p.problem = err;
     } else if (p.ranges.empty() && p.normalPoints.empty()) {
-        p.problem = where(src, p.session.line) + "pass " + std::to_string(k + 1) + " (" + p.station.name + ", " +
+        p.problem = crdWhere(src, p.session.line) + "pass " + std::to_string(k + 1) + " (" + p.station.name + ", " +
                     p.target.name + ") has no readable range record (type 10 or 11)";
         clearParsed(&p);
     }
@@ -1434,7 +1426,7 @@ CrdStreamResult streamCrd(const std::string& path, const CrdReadParams& params, 
             bool anyText = false;
             while (lr.next(&line)) {
                 if (line.find('\0') != std::string_view::npos) {
-                    out.error = where(src, lr.lineNumber()) + "binary data (NUL byte): not a CRD text file";
+                    out.error = crdWhere(src, lr.lineNumber()) + "binary data (NUL byte): not a CRD text file";
                     return out;
                 }
                 anyText = anyText || !core::trim(line).empty();
@@ -1889,6 +1881,11 @@ bool makeNormalPointPass(const CrdPass& fullRate, const std::vector<CrdNormalPoi
         *error = std::string("makeNormalPointPass: ") + e.what();
         return false;
     }
+}
+
+bool isCrdNa(std::string_view s) {
+    if (!s.empty() && (s[0] == '-' || s[0] == '+')) s.remove_prefix(1);
+    return s.size() == 2 && (s[0] == 'n' || s[0] == 'N') && (s[1] == 'a' || s[1] == 'A');
 }
 
 }  // namespace lwb::core::slr

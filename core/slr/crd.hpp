@@ -574,6 +574,9 @@ struct CrdReadResult {
 
 std::string validate(const CrdReadParams& p);
 
+/// A CRD field that says "not available": "na" in any case, signed or not.
+bool isCrdNa(std::string_view field);
+
 /// Parses CRD text; `source` names it in messages. Never throws.
 CrdReadResult parseCrd(std::string_view text, const std::string& source, const CrdReadParams& params = {},
                        const Feedback* feedback = nullptr);

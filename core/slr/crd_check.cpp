@@ -198,21 +198,16 @@ const RecordSpec* specOf(std::string_view id) {
 
 // ---- small helpers ---------------------------------------------------------------------------
 
-constexpr size_t kMaxTokens = 64;
+constexpr size_t kMaxCheckTokens = 64;
 
 /// Blank-separated fields of a line (text.hpp splitBlanks); n counts them all, [] gives "" past
-/// the last (and past kMaxTokens, which the per-record checks size their arrays by).
+/// the last (and past kMaxCheckTokens, which the per-record checks size their arrays by).
 struct Tokens {
     std::vector<std::string_view> t;
     size_t n = 0;
     explicit Tokens(std::string_view s) : t(splitBlanks(s)), n(t.size()) {}
-    std::string_view operator[](size_t i) const { return i < kMaxTokens && i < n ? t[i] : std::string_view(); }
+    std::string_view operator[](size_t i) const { return i < kMaxCheckTokens && i < n ? t[i] : std::string_view(); }
 };
-
-bool isNa(std::string_view s) {
-    if (!s.empty() && (s[0] == '-' || s[0] == '+')) s.remove_prefix(1);
-    return s.size() == 2 && (s[0] == 'n' || s[0] == 'N') && (s[1] == 'a' || s[1] == 'A');
-}
 
 bool intValue(std::string_view s, double* out) {
     long long v = 0;
@@ -501,7 +496,7 @@ bool Checker::checkFields(const RecordSpec& spec, std::string_view id, std::stri
                    std::to_string(count) + " (extra: " + extra + ")" + why,
                key + "count");
     }
-    const size_t m = std::min({n, spec.f.size(), kMaxTokens - 1});
+    const size_t m = std::min({n, spec.f.size(), kMaxCheckTokens - 1});
     bool naV1Said = false;
     for (size_t i = 0; i < m; ++i) {
         const F& f = spec.f[i];
@@ -513,7 +508,7 @@ bool Checker::checkFields(const RecordSpec& spec, std::string_view id, std::stri
             have[i] = true;
             continue;
         }
-        if (isNa(t)) {
+        if (isCrdNa(t)) {
             if (!f.na)
                 report(no, written, kE, "na", fname() + " is " + q(t) + ": the specification requires a value here",
                        key + "na" + f.name);
@@ -678,8 +673,8 @@ void Checker::line(std::string_view text, long no) {
 
 void Checker::onHeader(std::string_view id, std::string_view written, const Tokens& tk, long no, std::string_view text) {
     const RecordSpec* spec = specOf(id);
-    double v[kMaxTokens];
-    bool have[kMaxTokens] = {};
+    double v[kMaxCheckTokens];
+    bool have[kMaxCheckTokens] = {};
     const int k = id[1] - '1';  // 0 H1, 1 H2, 2 H3, 3 H4, 4 H5, 7 H8, 8 H9
     if (k <= 3 && inSession_) {
         report(no, written, kE, "order",
@@ -787,7 +782,7 @@ void Checker::onHeader(std::string_view id, std::string_view written, const Toke
                 const bool digits = !ilrs.empty() && std::all_of(ilrs.begin(), ilrs.end(), [](char c) {
                     return std::isdigit(static_cast<unsigned char>(c)) != 0;
                 });
-                if (!digits && !(version_ >= 2 && isNa(ilrs)))
+                if (!digits && !(version_ >= 2 && isCrdNa(ilrs)))
                     report(no, written, kE, "range",
                            "H3 field 2 (ILRS satellite id) is " + q(ilrs) + ": the ILRS id is up to 7 digits (YYXXXPP, from "
                            "the COSPAR id)");
@@ -886,7 +881,7 @@ void Checker::onH4(std::string_view written, const Tokens& tk, long no, const do
         bool allAbsent = true, allHave = true;
         for (size_t i = from; i < from + 6; ++i) {
             const std::string_view t = tk[i + 1];
-            const bool absent = i + 1 >= tk.n || isNa(t) || t == "-1";
+            const bool absent = i + 1 >= tk.n || isCrdNa(t) || t == "-1";
             allAbsent = allAbsent && absent;
             allHave = allHave && have[i];
         }
@@ -954,8 +949,8 @@ void Checker::onSessionRecord(std::string_view id, std::string_view written, con
         s_.sawData = true;
         s_.firstDataLine = no;
     }
-    double v[kMaxTokens];
-    bool have[kMaxTokens] = {};
+    double v[kMaxCheckTokens];
+    bool have[kMaxCheckTokens] = {};
     checkFields(*spec, id, written, tk, no, v, have);
     const std::string key = std::string(id) + "|";
 
@@ -968,8 +963,8 @@ void Checker::onSessionRecord(std::string_view id, std::string_view written, con
                            "a second C0 of system configuration " + q(tk[3]) + " in the session (the first at line " +
                                std::to_string(s_.c0[cid]) + ")");
             }
-            for (size_t i = 4; i < tk.n && i < kMaxTokens; ++i)
-                if (!isNa(tk[i])) s_.named.emplace_back(toLower(tk[i]), no);
+            for (size_t i = 4; i < tk.n && i < kMaxCheckTokens; ++i)
+                if (!isCrdNa(tk[i])) s_.named.emplace_back(toLower(tk[i]), no);
         } else if (tk.n > 2) {
             const std::string cid = toLower(tk[2]);
             s_.components.emplace(cid, no);

@@ -1,4 +1,5 @@
 #include "core/slr/np_compare.hpp"
+#include "core/slr/oc.hpp"
 #include "core/slr/slr_time.hpp"
 
 #include <cstdio>
@@ -13,8 +14,6 @@
 namespace lwb::core::slr {
 
 namespace {
-
-constexpr double kC = 299792458.0;
 
 std::string withoutLeadingZeros(const std::string& id) {
     const size_t k = id.find_first_not_of("0 ");
@@ -83,7 +82,7 @@ int pickBlock(const PassData& pass, long passMjd, const CrdFile& station, double
     return best;
 }
 
-std::string hms(double t) {
+std::string hmsRounded(double t) {
     const long s = std::lround(std::fmod(std::fmod(t, 86400.0) + 86400.0, 86400.0));
     char buf[16];
     std::snprintf(buf, sizeof buf, "%02ld:%02ld:%02ld", s / 3600 % 24, s / 60 % 60, s % 60);
@@ -160,7 +159,7 @@ NpComparison compareWithStation(const PassData& pass, const PostfitResult& post,
         size_t withNps = 0;
         for (const CrdPass& b : station.passes) withNps += !b.normalPoints.empty();
         c.error = where + ": no normal points of " + (pass.satellite.empty() ? pass.ilrsId : pass.satellite) + " between " +
-                  hms(pass.t.front()) + " and " + hms(pass.t.back()) + " UTC (the file holds " + std::to_string(withNps) +
+                  hmsRounded(pass.t.front()) + " and " + hmsRounded(pass.t.back()) + " UTC (the file holds " + std::to_string(withNps) +
                   " block" + (withNps == 1 ? "" : "s") + " of normal points; none of this satellite overlaps the pass)";
         return c;
     }
@@ -198,7 +197,7 @@ NpComparison compareWithStation(const PassData& pass, const PostfitResult& post,
                 d.ourRanges = ours[j]->points;
                 d.ourRmsPs = ours[j]->rmsPs;
                 if (std::isfinite(d.stationOcS))
-                    d.deltaMm = (evaluateTrend(post, d.stationT) + ours[j]->meanResidualS - d.stationOcS) * 0.5 * kC * 1e3;
+                    d.deltaMm = (evaluateTrend(post, d.stationT) + ours[j]->meanResidualS - d.stationOcS) * 0.5 * kSpeedOfLight * 1e3;
                 break;
             }
         c.rows.push_back(d);

@@ -22,7 +22,7 @@ std::string_view trimBlanks(std::string_view s) {
     return s.substr(b, e - b);
 }
 
-std::string excerpt(std::string_view s, size_t maxLen = 32) { return printableExcerpt(s, maxLen); }
+std::string fieldExcerpt(std::string_view s, size_t maxLen = 32) { return printableExcerpt(s, maxLen); }
 
 /// Splits one line into fields (handles "quoted, fields" with "" escapes). Returns false on an
 /// unterminated quote. Fields are views into the line (quotes stripped; escaped quotes stay doubled,
@@ -150,18 +150,18 @@ void parseRows(const Columns& cols, size_t first, long lineNo, OcTable& t, RowCh
             return fail(std::to_string(fields.size()) + " fields, the header has " + std::to_string(cols.count));
         double e = 0, o = 0;
         if (!parseNumber(fields[cols.epoch], &e))
-            return fail("epoch_s is not a finite number: \"" + excerpt(fields[cols.epoch]) + "\"");
-        if (!parseNumber(fields[cols.oc], &o)) return fail("oc_s is not a finite number: \"" + excerpt(fields[cols.oc]) + "\"");
+            return fail("epoch_s is not a finite number: \"" + fieldExcerpt(fields[cols.epoch]) + "\"");
+        if (!parseNumber(fields[cols.oc], &o)) return fail("oc_s is not a finite number: \"" + fieldExcerpt(fields[cols.oc]) + "\"");
         if (!(std::fabs(e) <= kMaxOcEpochS))
-            return fail("epoch_s " + excerpt(fields[cols.epoch]) + " is not a plausible epoch in seconds (|epoch_s| <= 1e10 s)");
+            return fail("epoch_s " + fieldExcerpt(fields[cols.epoch]) + " is not a plausible epoch in seconds (|epoch_s| <= 1e10 s)");
         if (!(std::fabs(o) <= kMaxOcS))
-            return fail("oc_s " + excerpt(fields[cols.oc]) +
+            return fail("oc_s " + fieldExcerpt(fields[cols.oc]) +
                         " is not a plausible O-C in seconds of two-way time of flight (|oc_s| <= 3 s)");
         for (size_t k = 0; k < cols.extra.size(); ++k) {
             double v = NAN;
             const std::string_view fv = fields[cols.extra[k]];
             if (!trimBlanks(fv).empty() && !parseNumber(fv, &v))
-                return fail((*cols.extraNames)[k] + " is not a finite number: \"" + excerpt(fv) + "\"");
+                return fail((*cols.extraNames)[k] + " is not a finite number: \"" + fieldExcerpt(fv) + "\"");
             t.extra[k][row] = v;
         }
         t.epoch_s[row] = e;
@@ -189,7 +189,7 @@ std::string readHeader(std::string_view line, const OcCsvParams& params, Columns
             cOc = static_cast<int>(i);
         }
     }
-    if (cEpoch < 0 || cOc < 0) return "header must name the columns epoch_s and oc_s (found \"" + excerpt(line, 60) + "\")";
+    if (cEpoch < 0 || cOc < 0) return "header must name the columns epoch_s and oc_s (found \"" + fieldExcerpt(line, 60) + "\")";
     // The extra columns asked for (they must be there), then the optional ones (where they are).
     const size_t required = params.extraColumns.size();
     std::vector<std::string> wanted = params.extraColumns;

@@ -20,7 +20,6 @@
 namespace lwb::core::slr {
 
 namespace {
-constexpr double kLight = 299792458.0;
 constexpr double kEarthRadiusKm = 6371.0;
 
 std::string extension(const std::string& path) { return inputExtension(path); }
@@ -467,7 +466,7 @@ bool predictionFor(const CrdPass& pass, const std::string& path, const PassInput
                 const std::string bad = (cpf->path.empty() ? std::string("cpf") : cpf->path) +
                                         ": the prediction does not describe this pass: its O-C is " +
                                         formatFixed(median * 1e3, 3) + " ms (median |O-C|, " +
-                                        formatFixed(median * kLight / 2000, 0) +
+                                        formatFixed(median * kSpeedOfLight / 2000, 0) +
                                         " km one-way; a usable prediction leaves microseconds). Another satellite, a wrong "
                                         "epoch or a damaged file?";
                 if (!params.cpfFallback && !sources.cpfFolder) {
@@ -545,7 +544,7 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
         // No prediction: the shortest one-way range of the pass bounds the altitude from above.
         double tmin = INFINITY;
         for (double v : d.tof) tmin = std::min(tmin, v);
-        if (std::isfinite(tmin)) altitudeKm = 0.5 * tmin * kLight / 1000.0;
+        if (std::isfinite(tmin)) altitudeKm = 0.5 * tmin * kSpeedOfLight / 1000.0;
         // (said only when it matters: the missions table's bin wins for a satellite it lists)
         if (!findMission(pass.target))
             r.warnings.push_back("satellite altitude estimated from the shortest range of the pass (" +

@@ -101,7 +101,7 @@ void runLadders(size_t ladders, int ahead, int threads, Run&& run, Decide&& deci
     if (failure) std::rethrow_exception(failure);
 }
 
-double medianOf(std::vector<double>& v) {
+double medianInPlace(std::vector<double>& v) {
     if (v.empty()) return 0;
     const size_t m = v.size() / 2;
     std::nth_element(v.begin(), v.begin() + static_cast<long>(m), v.end());
@@ -213,17 +213,17 @@ PiecewiseTrend robustPiecewiseTrend(const double* t, const double* oc, const std
         pc.t1 = t[sel[b - 1]];
         bufT.clear();
         for (size_t j = a; j < b; ++j) bufT.push_back(t[sel[j]]);
-        pc.tm = medianOf(bufT);
+        pc.tm = medianInPlace(bufT);
         const size_t h = std::max<size_t>(1, m / 2);
         bufO.clear();
         for (size_t j = a; j + h < b; ++j) {
             const double dt = t[sel[j + h]] - t[sel[j]];
             if (dt > 0) bufO.push_back((oc[sel[j + h]] - oc[sel[j]]) / dt);
         }
-        pc.slope = bufO.empty() ? 0 : medianOf(bufO);
+        pc.slope = bufO.empty() ? 0 : medianInPlace(bufO);
         bufO.clear();
         for (size_t j = a; j < b; ++j) bufO.push_back(oc[sel[j]] - pc.slope * (t[sel[j]] - pc.tm));
-        pc.om = medianOf(bufO);
+        pc.om = medianInPlace(bufO);
         tr.pieces.push_back(pc);
     }
     return tr;
@@ -251,10 +251,10 @@ NoiseFloorCheck checkNoiseFloor(const std::vector<double>& t, const std::vector<
         for (size_t i = 0; i < n; ++i) c.residualS[i] = oc[i] - tr.at(t[i]);
     }
     std::vector<double> tmp(c.residualS);
-    const double med = medianOf(tmp);
+    const double med = medianInPlace(tmp);
     for (double& r : c.residualS) r -= med;
     for (size_t i = 0; i < n; ++i) tmp[i] = std::fabs(c.residualS[i]);
-    c.sigmaS = 1.4826 * medianOf(tmp);
+    c.sigmaS = 1.4826 * medianInPlace(tmp);
     const auto [q025, q25, q75, q975] = quantilesOf<4>(c.residualS, {0.025, 0.25, 0.75, 0.975});
     c.peakedness = q75 > q25 ? (q975 - q025) / (q75 - q25) : 0;
     size_t beyond = 0, central = 0;
@@ -317,9 +317,9 @@ ExtractionScore scoreExtraction(const double* t, const double* oc, const uint8_t
     rs.reserve(ns);
     for (size_t i : sel) rs.push_back(oc[i] - trend[i]);
     std::vector<double> tmp(rs);
-    const double med = medianOf(tmp);
+    const double med = medianInPlace(tmp);
     for (double& v : tmp) v = std::fabs(v - med);
-    const double sigma = 1.4826 * medianOf(tmp);
+    const double sigma = 1.4826 * medianInPlace(tmp);
     const double h = 5 * sigma;
     const auto [lo, hi] = minMaxOf(oc, n);
     const double span = hi - lo;

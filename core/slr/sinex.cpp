@@ -15,10 +15,6 @@ namespace lwb::core::slr {
 
 namespace {
 
-std::string where(const std::string& src, long line) { return whereInFile(src, line); }
-
-std::string excerpt(std::string_view s, size_t maxLen = 40) { return printableExcerpt(s, maxLen); }
-
 std::string column(std::string_view line, size_t from, size_t len) {
     if (from >= line.size()) return {};
     return std::string(trim(line.substr(from, len)));
@@ -39,7 +35,7 @@ using Warn = std::function<void(std::string)>;
 void parseSiteLine(std::string_view line, long lineNo, const std::string& src, const Warn& warn, SinexFile& file) {
     const auto f = splitBlanks(line);
     if (f.size() < 3) {
-        warn(where(src, lineNo) + "SITE/ID line too short; ignored");
+        warn(whereInFile(src, lineNo) + "SITE/ID line too short; ignored");
         return;
     }
     SinexSite s;
@@ -62,7 +58,7 @@ void parseEpochsLine(std::string_view line, long lineNo, const std::string& src,
     long m1 = 0, m2 = 0;
     double s1 = 0, s2 = 0;
     if (f.size() < 6 || !parseSinexEpoch(f[4], &m1, &s1) || !parseSinexEpoch(f[5], &m2, &s2)) {
-        warn(where(src, lineNo) + "SOLUTION/EPOCHS line unreadable; ignored");
+        warn(whereInFile(src, lineNo) + "SOLUTION/EPOCHS line unreadable; ignored");
         return;
     }
     Validity v;
@@ -77,7 +73,7 @@ void parseEstimateLine(std::string_view line, long lineNo, const std::string& sr
     const auto f = splitBlanks(line);
     // INDEX TYPE CODE PT SOLN REF_EPOCH UNIT S VALUE STD
     if (f.size() < 9) {
-        warn(where(src, lineNo) + "SOLUTION/ESTIMATE line has " + std::to_string(f.size()) +
+        warn(whereInFile(src, lineNo) + "SOLUTION/ESTIMATE line has " + std::to_string(f.size()) +
              " fields (expected 10); ignored");
         return;
     }
@@ -90,22 +86,22 @@ void parseEstimateLine(std::string_view line, long lineNo, const std::string& sr
     long mjd = 0;
     double sod = 0, value = 0, sigma = NAN;
     if (!parseSinexEpoch(f[5], &mjd, &sod)) {
-        warn(where(src, lineNo) + "REF_EPOCH \"" + excerpt(f[5]) + "\" is not YY:DOY:SSSSS; ignored");
+        warn(whereInFile(src, lineNo) + "REF_EPOCH \"" + printableExcerpt(f[5]) + "\" is not YY:DOY:SSSSS; ignored");
         return;
     }
     if (!parseFortranDouble(f[8], &value)) {
-        warn(where(src, lineNo) + "estimated value \"" + excerpt(f[8]) + "\" is not a finite number; ignored");
+        warn(whereInFile(src, lineNo) + "estimated value \"" + printableExcerpt(f[8]) + "\" is not a finite number; ignored");
         return;
     }
     if (f.size() > 9 && !parseFortranDouble(f[9], &sigma)) sigma = NAN;
     const std::string unit(f[6]);
     if ((which < 3 && unit != "m") || (which >= 3 && unit != "m/y")) {
-        warn(where(src, lineNo) + type + " unit \"" + excerpt(unit) + "\" (expected " +
+        warn(whereInFile(src, lineNo) + type + " unit \"" + printableExcerpt(unit) + "\" (expected " +
              (which < 3 ? "m" : "m/y") + "); ignored");
         return;
     }
     if (which < 3 && std::fabs(value) > 1e8) {
-        warn(where(src, lineNo) + type + " beyond 1e8 m; ignored");
+        warn(whereInFile(src, lineNo) + type + " beyond 1e8 m; ignored");
         return;
     }
     const std::string key = std::string(f[2]) + "|" + std::string(f[3]) + "|" + std::string(f[4]);
@@ -123,8 +119,8 @@ void parseEstimateLine(std::string_view line, long lineNo, const std::string& sr
     }
     SinexSolution& s = file.solutions[it->second];
     if (which >= 3 && (s.haveMask & 0x38) == 0 && (s.haveMask & 7) != 0 && (mjd != s.refMjd || sod != s.refSod))
-        warn(where(src, lineNo) + "velocity REF_EPOCH differs from the position's; the position's is used");
-    if (s.haveMask & (1 << which)) warn(where(src, lineNo) + "second " + type + " for " + s.code + "; replaces the first");
+        warn(whereInFile(src, lineNo) + "velocity REF_EPOCH differs from the position's; the position's is used");
+    if (s.haveMask & (1 << which)) warn(whereInFile(src, lineNo) + "second " + type + " for " + s.code + "; replaces the first");
     if (which < 3) {
         s.position[which] = value;
         s.positionSigma[which] = sigma;
@@ -173,7 +169,7 @@ SinexReadResult parseSinex(std::string_view given, const std::string& source) {
             if (line.empty()) continue;
             if (lineNo == 1 || !sawHeader) {
                 if (line.substr(0, 5) != "%=SNX") {
-                    res.error = where(src, lineNo) + "not a SINEX file: first line is \"" + excerpt(line) + "\" (expected %=SNX)";
+                    res.error = whereInFile(src, lineNo) + "not a SINEX file: first line is \"" + printableExcerpt(line) + "\" (expected %=SNX)";
                     return res;
                 }
                 sawHeader = true;
@@ -186,18 +182,18 @@ SinexReadResult parseSinex(std::string_view given, const std::string& source) {
                 continue;
             }
             if (c0 == '+') {
-                if (!block.empty()) warn(where(src, lineNo) + "block " + block + " not closed before " + excerpt(line));
+                if (!block.empty()) warn(whereInFile(src, lineNo) + "block " + block + " not closed before " + printableExcerpt(line));
                 block = std::string(trim(line.substr(1)));
                 continue;
             }
             if (c0 == '-') {
                 const std::string name(trim(line.substr(1)));
-                if (name != block) warn(where(src, lineNo) + "end of block " + excerpt(name) + " while in " + block);
+                if (name != block) warn(whereInFile(src, lineNo) + "end of block " + printableExcerpt(name) + " while in " + block);
                 block.clear();
                 continue;
             }
             if (c0 != ' ') {
-                warn(where(src, lineNo) + "line does not start with a blank, '*', '+', '-' or '%'; ignored");
+                warn(whereInFile(src, lineNo) + "line does not start with a blank, '*', '+', '-' or '%'; ignored");
                 continue;
             }
             if (block == "SITE/ID") {
