@@ -30,6 +30,7 @@ struct GoldenCase {
     QStringList outputs;  ///< files in the work folder to compare
     bool shared = false;  ///< input from ../shared: compare reduced views
     bool reduced = false; ///< compare the reduced view (large outputs of simulated passes too)
+    int exitCode = 0;     ///< the run's exit code (3: a doubtful pass, whose outputs are still written)
 };
 
 // Fixed inputs: paper 001's LFI beam 1/2 monthly means as a centroid table (three shots a
@@ -76,7 +77,8 @@ class TestGoldenOutputs : public QObject {
         c["slr_beaconc"] = {{"slr", "$slr/7080_Beacon-C_crd_071220_1715_0.frd", "-o", "@s.csv", "-q"}, {"s.csv"}, true};
         c["slr_jason1"] = {{"slr", "$slr/7080_JASON1_crd_071220_2033_0.frd", "-o", "@s.csv", "-q"}, {"s.csv"}, true};
         c["slr_beaconc_pass2"] = {{"slr", "$slr/beaconc_20070511.frd", "--pass", "2", "-o", "@s.csv", "-q"}, {"s.csv"}, true};
-        c["slr_hy2c_pass3"] = {{"slr", "$slr/hy2c_202109.fr2", "--pass", "3", "-o", "@s.csv", "-q"}, {"s.csv"}, true};
+        // (doubtful since issue 43: 20 ranges without a prediction leave its normal point ±11.6 mm)
+        c["slr_hy2c_pass3"] = {{"slr", "$slr/hy2c_202109.fr2", "--pass", "3", "-o", "@s.csv", "-q"}, {"s.csv"}, true, false, 3};
         c["slr_blits_cpf"] = {{"slr", "$slr/blits_201206.frd", "--pass", "3", "--cpf", "$slr/blits_cpf_120626_6801.hts", "--stations",
                                "$slr/SLRF2014_POS+VEL_2030.0_200428.snx", "--np-bin", "30", "-o", "@s.csv", "-q"},
                               {"s.csv"},
@@ -276,7 +278,7 @@ private slots:
             args << (a.startsWith('@') ? p(a.mid(1)) : a.startsWith("$slr/") ? sharedPath("slr/" + a.mid(5)) : a);
         for (const QString& o : c.outputs) QFile::remove(p(o));
         const CliRun r = runCli(args);
-        QVERIFY2(r.exitCode == 0, qPrintable(name + ": " + r.err));
+        QVERIFY2(r.exitCode == c.exitCode, qPrintable(name + ": " + r.err));
         const bool record = qEnvironmentVariableIsSet("LWB_GOLDEN_RECORD");
         for (const QString& o : c.outputs) {
             const bool reduce = c.shared || c.reduced;

@@ -106,14 +106,25 @@ private slots:
         const QString in = sharedPath("slr/blits_201206.frd");
         if (!QFile::exists(in)) QSKIP("shared SLR data absent");
         const CliRun r = runCli({"slr", in, "--all-passes", "--out-dir", p("blits"), "-q"});
-        // No pass is doubtful (exit 0): KTZL's 11 ranges (2012-06-25) spread over ±300 ns about
-        // the own-TOF polynomial, so no scale showed a track (doubtful since issue 29; "ok" with
-        // nothing accepted before); on the orbit-arc trend (issue 43) all 11 are accepted, RMS
-        // 190 ps, recall 1 against the station's flags.
-        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        // KTZL's 11 ranges (2012-06-25) spread over ±300 ns about the own-TOF polynomial, so no
+        // scale showed a track (doubtful since issue 29; "ok" with nothing accepted before); on
+        // the orbit-arc trend (issue 43) all 11 are accepted, RMS 190 ps, recall 1 against the
+        // station's flags. Its normal points are not delivered: the trends fitted to its 11
+        // ranges leave them ±13 mm (one sigma), and two more passes without a prediction (KTZL
+        // 06-08, 20 ranges, ±4.6 mm; WETL 06-02, 23 ranges, ±2.4 mm) are doubtful for the same
+        // reason (pass_run.hpp kMaxNpTrendErrorMm). Every other pass is ok.
+        QCOMPARE(r.exitCode, 3);
         const CsvReadResult s = readCsv(p("blits/summary.csv").toStdString());
         QVERIFY2(s.ok, s.error.c_str());
-        for (const auto& row : s.table.rows) QVERIFY2(row[size_t(s.table.column("status"))] == "ok", row[0].c_str());
+        const int cStatus = s.table.column("status"), cReason = s.table.column("reason");
+        QStringList doubtful;
+        for (const auto& row : s.table.rows) {
+            if (row[size_t(cStatus)] == "ok") continue;
+            QCOMPARE(row[size_t(cStatus)], std::string("doubtful"));
+            QVERIFY2(row[size_t(cReason)].find("no normal point is precise enough") != std::string::npos, row[size_t(cReason)].c_str());
+            doubtful << QString::fromStdString(row[0]);
+        }
+        QCOMPARE(doubtful, QStringList({"5", "21", "49"}));
         const int cPoints = s.table.column("points"), cRecall = s.table.column("station_recall"),
                   cPrecision = s.table.column("station_precision");
         QVERIFY(cPoints >= 0 && cRecall >= 0 && cPrecision >= 0);

@@ -50,6 +50,8 @@ struct SparseOutcome {
     std::vector<double> npErrMm;    // per NP: against the NP of the true track
     std::vector<double> npRawMm;    // per NP: against the true range at its epoch (noise included)
     std::vector<double> npBoundMm;  // per NP: its Cramer-Rao bound (NpBound)
+    std::vector<uint8_t> npDelivered;  // per NP: the run delivers it (not dropped, the pass not doubtful)
+    std::vector<double> npTrendErrMm;  // per NP: the run's estimate of its trend error, one sigma (normalPointTrendErrors)
     std::string doubt;
 };
 
@@ -190,7 +192,8 @@ SparseOutcome runSparse(const sim::SparseLeoParams& sp, uint64_t seed, Trend tre
     // rules take them away (a doubt is counted apart: the trend and the post-fit are tested here).
     const PassData& d = in.pass;
     PassRunResult r = run;
-    r.post = postfit(d.t, d.oc, run.accepted, d.tof, postfitForPass(set.params.postfit, nullptr, &d));
+    const PostfitParams pfp = postfitForPass(set.params.postfit, nullptr, &d);
+    r.post = postfit(d.t, d.oc, run.accepted, d.tof, pfp);
     if (!r.post.ok) {
         o.error = r.post.error;
         return o;
@@ -210,6 +213,8 @@ SparseOutcome runSparse(const sim::SparseLeoParams& sp, uint64_t seed, Trend tre
         o.noiseKept += !sig && r.post.kept[i];
     }
     o.rmsPs = r.post.stats.rms * 1e12;
+    const std::vector<double> trendErr = normalPointTrendErrors(d, r.post, pfp.dayStartS);
+    for (double e : trendErr) o.npTrendErrMm.push_back(e * kMmPerS);
     const double L = r.post.binLengthS;
     const NpBound bound(s, sp.jitterS);
     for (const NormalPoint& np : r.post.normalPoints) {
@@ -229,6 +234,9 @@ SparseOutcome runSparse(const sim::SparseLeoParams& sp, uint64_t seed, Trend tre
             qInfo("  NP %.1f (%d points): %.2f mm (bound %.2f mm); post-fit segments %zu, degree %d", np.epochS, np.points, o.npErrMm.back(), o.npBoundMm.back(),
                   r.post.segments.size(), r.post.degree);
         o.npRawMm.push_back((np.tofS - truth) * kMmPerS);
+        const auto out = std::find_if(run.post.normalPoints.begin(), run.post.normalPoints.end(),
+                                      [&](const NormalPoint& x) { return x.binStartS == np.binStartS; });
+        o.npDelivered.push_back(out != run.post.normalPoints.end());
         if (m != np.points) o.error = "bin membership differs from the normal point's count";
     }
     o.ok = o.error.empty();
@@ -381,6 +389,8 @@ private slots:
         size_t failedAfter = 0, lostAfter = 0, passesAfterOver5 = 0, doubtful = 0, nps = 0, npsBefore = 0, arcs = 0, lostBefore = 0, failedBefore = 0, passesBeforeOver5 = 0;
         double worstRmsRatio = 0, bestRmsRatio = 1e9;
         size_t beyondBound = 0, boundOver = 0, arcBeyondBound = 0, arcOver5 = 0, arcFailed = 0;
+        size_t confidentBeyond = 0, withinWithheld = 0;  // NPs beyond the tolerance the run delivers; within it, not delivered
+        std::vector<double> zs;  // per NP: |error| over the run's own one-sigma estimate of it
         double arcWorst = 0;
         for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
             if (qEnvironmentVariableIsSet("LWB_SPARSE_SEED") && seed != qEnvironmentVariable("LWB_SPARSE_SEED").toULongLong()) continue;
@@ -424,12 +434,17 @@ private slots:
             bestRmsRatio = std::min(bestRmsRatio, ratio);
             if (!(ratio >= 0.3 && ratio <= 2.0)) fail(QString("post-fit RMS %1 ps").arg(a.rmsPs));
             bool boundOver5 = false;
+            for (size_t k = 0; k < a.npErrMm.size(); ++k)
+                if (a.npTrendErrMm[k] > 0) zs.push_back(std::fabs(a.npErrMm[k]) / a.npTrendErrMm[k]);
             for (size_t k = 0; k < a.npErrMm.size(); ++k) {
                 const double e = a.npErrMm[k], tol = std::max(5.0, 4 * a.npBoundMm[k]);
                 boundOver5 = boundOver5 || 4 * a.npBoundMm[k] > 5;
                 if (!(std::fabs(e) <= tol)) {
-                    fail(QString("NP %1 mm off (bound %2 mm)").arg(e).arg(a.npBoundMm[k]));
+                    fail(QString("NP %1 mm off (bound %2 mm)%3").arg(e).arg(a.npBoundMm[k]).arg(a.npDelivered[k] ? ", DELIVERED" : ", not delivered"));
                     ++beyondBound;
+                    if (a.npDelivered[k]) ++confidentBeyond;
+                } else if (!a.npDelivered[k]) {
+                    ++withinWithheld;
                 }
             }
             boundOver += boundOver5;
@@ -463,6 +478,13 @@ private slots:
               "4 bounds)", boundOver, beyondBound);
         qInfo("  the arc without the circular orbit: %zu normal points beyond max(5 mm, 4 bounds), %zu passes over 5 mm, worst "
               "%.1f mm, %zu failed", arcBeyondBound, arcOver5, arcWorst, arcFailed);
+        qInfo("  delivered by the run (the pass not doubtful, the NP not dropped as imprecise): %zu of the %zu NPs beyond "
+              "max(5 mm, 4 bounds); %zu of the %zu within withheld", confidentBeyond, beyondBound, withinWithheld,
+              nps - beyondBound);
+        std::sort(zs.begin(), zs.end());
+        const auto zq = [&](double q) { return zs.empty() ? NAN : zs[size_t(q * double(zs.size() - 1))]; };
+        qInfo("  |NP error| over the run's own one-sigma estimate of it (normalPointTrendErrors), %zu NPs: median %.2f, 90th "
+              "%.2f, 99th %.2f (a Gaussian: 0.67, 1.64, 2.58)", zs.size(), zq(0.5), zq(0.9), zq(0.99));
         qInfo("%lld per-pass shortfalls against the target (SHORT lines)", static_cast<long long>(failures.size()));
         QCOMPARE(failedBefore >= 1, true);          // the polynomial alone fails passes ...
         QVERIFY(nps >= kSeeds);                      // (bins of 3 points or more form)
@@ -474,6 +496,15 @@ private slots:
         QVERIFY2(beyondBound < arcBeyondBound, qPrintable(QString("%1 vs %2").arg(beyondBound).arg(arcBeyondBound)));
         QVERIFY(passesAfterOver5 < arcOver5);
         QVERIFY(failedAfter <= arcFailed);
+        // No confident wrong answer: every normal point beyond the tolerance is withheld (its
+        // pass doubtful, or the NP dropped as imprecise: pass_run.hpp kMaxNpTrendErrorMm), at a
+        // cost of at most a quarter of the others.
+        QCOMPARE(confidentBeyond, size_t(0));
+        // The estimate is the errors' scale at their core (median |z| 0.45-0.95, a Gaussian's 0.67),
+        // not an underestimate by half or an overestimate by half; its tail is heavier (noise kept
+        // and minima the linearisation does not see).
+        QVERIFY2(zq(0.5) >= 0.45 && zq(0.5) <= 0.95, qPrintable(QString::number(zq(0.5))));
+        QVERIFY2(withinWithheld * 4 <= nps - beyondBound, qPrintable(QString::number(withinWithheld)));
     }
 
     // The ERS-class pass: 785 km, 18 records at 10 Hz (12 returns in bursts, 6 noise

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <numeric>
 
 #include "core/common/golden.hpp"
@@ -697,11 +698,42 @@ ArcFit fitArc(const Epochs& ep, const Eigen::VectorXd& tofMs, int degree, int ro
     return best;
 }
 
+// The hat matrix (orbit_fit.hpp leastSquaresHat) of a fit of the squared TOF linear in its
+// coefficients, tof_i^2 = a_i . c: in the TOF its Jacobian is a_i / (2 tof_i), with a column
+// d tof_i / d omega for the arc's rate when given (its design's derivative, by central
+// differences, times the coefficients). The weights are the robust fit's last: Huber
+// (huberK > 0) or bisquare (4.685) of the final residuals at their scale (ms).
+std::vector<double> tofSquaredHat(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs, const Eigen::VectorXd& residMs,
+                                  double scaleMs, double huberK, const std::function<Eigen::MatrixXd(double)>* design,
+                                  double omega, const Eigen::VectorXd& coef) {
+    const Eigen::Index n = a.rows();
+    Eigen::MatrixXd J(n, a.cols() + (design ? 1 : 0));
+    Eigen::VectorXd w(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const double f = tofMs(i) - residMs(i);
+        J.row(i).head(a.cols()) = a.row(i) / (2 * f);
+        const double u = scaleMs > 0 ? std::fabs(residMs(i)) / ((huberK > 0 ? huberK : 4.685) * scaleMs) : 0.0;
+        w(i) = huberK > 0 ? (u <= 1 ? 1.0 : 1.0 / u) : (u < 1 ? (1 - u * u) * (1 - u * u) : 0.0);
+    }
+    if (design) {
+        const double h = 1e-6 * omega;
+        const Eigen::VectorXd dA = ((*design)(omega + h) - (*design)(omega - h)) * coef / (2 * h);
+        for (Eigen::Index i = 0; i < n; ++i) J(i, a.cols()) = dA(i) / (2 * (tofMs(i) - residMs(i)));
+    }
+    return leastSquaresHat(J, w);
+}
+
 // The circular orbit's fit (orbit_fit.hpp) on passes under 50 records, the screening's "short
 // LEO pass" (the arc's own rule for a short pass): a longer pass has the records to fit the arc's
 // free coefficients, and its satellite may be eccentric (Beacon-C, e = 0.025, 96 records of
 // which half are noise: its normal points went 3.4 → 11.7 mm from the station's with the circle).
 constexpr int kMaxOrbitFitPoints = 49;
+// A fitted trend's hat matrix is kept for the short passes (the arc's and the orbit's "short
+// LEO pass"): PassTask judges their normal points' precision by it (pass_run.hpp
+// kMaxNpTrendErrorMm). On longer passes the estimate was not validated against a truth: on the
+// clean lunar simulations (~1000 events) the post-fit alone would put 3-5 mm on normal points
+// whose own precision is 3-4 mm (docs/slr-detection.md).
+constexpr size_t kMaxTrendHatPoints = kMaxOrbitFitPoints;
 
 // Elevation and azimuth at a pass's epochs, interpolated in its pointing records (type 30);
 // NaN without them.
@@ -890,6 +922,20 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
             }
         }
 
+        // The trend's hat matrix where the pass is short enough to hold it (PassData::trendHat).
+        if (t.size() <= kMaxTrendHatPoints) {
+            if (orbit.ok) {
+                res.trendHat = std::move(orbit.hat);
+            } else if (arc.ok) {
+                const std::function<Eigen::MatrixXd(double)> design = [&](double om) {
+                    return arcDesign(legendre(ep.xs(0, t.size()), arc.degree), ep.ss(0, t.size()), om, arc.rotation);
+                };
+                res.trendHat = tofSquaredHat(design(arc.omega), tofMs, resid, arc.scale, 0.0, &design, arc.omega, arc.coef);
+            } else {
+                res.trendHat = tofSquaredHat(legendre(ep.xs(0, t.size()), degree), tofMs, resid, scale, params.huberK, nullptr,
+                                             0.0, Eigen::VectorXd());
+            }
+        }
         // The columns, each sized once (a column grown by doubling held up to 1.5 copies of
         // itself), the O-C first so that the fit's columns are freed before the others are made
         // (issue 44: a kHz pass's peak was here). Elevation and azimuth from the pointing records

@@ -99,6 +99,10 @@ struct OcResult {
                                         ///< was chosen (computeTrendOc); NaN: the polynomial in TOF^2
     bool trendOrbit = false;            ///< FittedTrend: the circular orbit itself (orbit_fit.hpp) was chosen:
                                         ///< its residuals need at most a bias and a drift (postfitForPass)
+    /// FittedTrend on a short pass (at most 49 records): the trend's hat matrix (row-major n×n,
+    /// ∂trend_i/∂tof_k; orbit_fit.hpp leastSquaresHat), for the normal points' precision
+    /// (postfit.hpp normalPointTrendFactors). Empty otherwise.
+    std::vector<double> trendHat;
 };
 
 /// O-C of a pass against a prediction, station position given (ECEF, m). Never throws.

@@ -84,6 +84,23 @@ double weightedSsr(const Model& m, const Orbit& o, const Data& d) {
     return ss;
 }
 
+// The model's Jacobian at `o` (central differences), unweighted.
+Eigen::MatrixXd jacobian(const Model& m, const Orbit& o, const std::vector<double>& s) {
+    const int k = m.count();
+    Eigen::MatrixXd J(static_cast<Eigen::Index>(s.size()), k);
+    std::vector<double> fu, fd;
+    for (int j = 0; j < k; ++j) {
+        const double h = m.stepSize(j);
+        Eigen::VectorXd dv = Eigen::VectorXd::Zero(k);
+        dv(j) = h;
+        m.tofs(m.step(o, dv), s, &fu);
+        dv(j) = -h;
+        m.tofs(m.step(o, dv), s, &fd);
+        for (size_t i = 0; i < s.size(); ++i) J(static_cast<Eigen::Index>(i), j) = (fu[i] - fd[i]) / (2 * h);
+    }
+    return J;
+}
+
 // Levenberg–Marquardt from `o`: central-difference Jacobian, columns scaled to unit norm, the
 // damped step solved as the least-squares problem [J; sqrt(lambda) I] dz = [r; 0] by an
 // orthogonal factorisation (the normal equations would square a condition number of 1e8).
@@ -91,25 +108,15 @@ Orbit levenbergMarquardt(const Model& m, Orbit o, const Data& d, int iterations,
     const int k = m.count();
     const Eigen::Index n = static_cast<Eigen::Index>(d.s.size());
     double ssr = weightedSsr(m, o, d), lambda = 1e-3;
-    std::vector<double> f, fu, fd;
+    std::vector<double> f;
     for (int it = 0; it < iterations; ++it) {
-        Eigen::MatrixXd J(n, k);
         Eigen::VectorXd r(n), sw(n);
         m.tofs(o, d.s, &f);
         for (Eigen::Index i = 0; i < n; ++i) {
             sw(i) = std::sqrt(std::max(0.0, d.w[static_cast<size_t>(i)]));
             r(i) = sw(i) * (d.tof[static_cast<size_t>(i)] - f[static_cast<size_t>(i)]);
         }
-        for (int j = 0; j < k; ++j) {
-            const double h = m.stepSize(j);
-            Eigen::VectorXd dv = Eigen::VectorXd::Zero(k);
-            dv(j) = h;
-            m.tofs(m.step(o, dv), d.s, &fu);
-            dv(j) = -h;
-            m.tofs(m.step(o, dv), d.s, &fd);
-            for (Eigen::Index i = 0; i < n; ++i)
-                J(i, j) = sw(i) * (fu[static_cast<size_t>(i)] - fd[static_cast<size_t>(i)]) / (2 * h);
-        }
+        const Eigen::MatrixXd J = sw.asDiagonal() * jacobian(m, o, d.s);
         Eigen::VectorXd scale = J.colwise().norm().transpose();
         for (int j = 0; j < k; ++j)
             if (!(scale(j) > 0)) scale(j) = 1;
@@ -270,6 +277,7 @@ CircularOrbitResult finish(const CircularOrbitParams& p, const Model& model, Orb
     res.biasS = best.bias;
     res.parameters = k;
     res.residualS = r;
+    res.hat = leastSquaresHat(jacobian(model, best, all.s), Eigen::Map<const Eigen::VectorXd>(robust.w.data(), robust.w.size()));
     res.scaleS = madAboutZero(r, {});
     res.ok = std::isfinite(res.scaleS);
     if (!res.ok) res.error = "the circular orbit's residuals are not finite";
@@ -277,6 +285,22 @@ CircularOrbitResult finish(const CircularOrbitParams& p, const Model& model, Orb
 }
 
 }  // namespace
+
+std::vector<double> leastSquaresHat(const Eigen::MatrixXd& J, const Eigen::VectorXd& w) {
+    const Eigen::Index n = J.rows();
+    std::vector<double> out(static_cast<size_t>(n * n), 0.0);
+    if (w.size() != n || n == 0) return out;
+    const Eigen::VectorXd sw = w.cwiseMax(0.0).cwiseSqrt();
+    // S = J D pinv(√W J D) √W, D scaling the columns to one norm (parameters in metres, radians
+    // and seconds); a rank-deficient J, a sloppy model's, gives its pseudo-inverse's hat.
+    Eigen::MatrixXd M = sw.asDiagonal() * J;
+    Eigen::VectorXd d = M.colwise().norm().transpose();
+    for (Eigen::Index j = 0; j < d.size(); ++j) d(j) = d(j) > 0 ? 1.0 / d(j) : 0.0;
+    M = M * d.asDiagonal();
+    const Eigen::MatrixXd S = J * d.asDiagonal() * M.completeOrthogonalDecomposition().pseudoInverse() * sw.asDiagonal();
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(out.data(), n, n) = S;
+    return out;
+}
 
 CircularOrbitResult fitCircularOrbit(const std::vector<double>& s, const std::vector<double>& tofS,
                                      const std::vector<double>& wIn, const CircularOrbitParams& p) {

@@ -522,6 +522,7 @@ PassInputResult passFromCrd(const std::shared_ptr<const CrdReadResult>& shared, 
         oc = computeTrendOc(pass, params.trend, fb);
         d.ocOrigin = "fitted TOF trend (no prediction)";
         d.orbitTrend = oc.trendOrbit;
+        d.trendHat = std::move(oc.trendHat);
     }
     if (!oc.ok) {
         // The prediction's warnings first: a damaged or missing position record explains most

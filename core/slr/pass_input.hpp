@@ -87,6 +87,10 @@ struct PassData {
     /// The O-C is relative to a circular orbit fitted to the pass itself (OcResult::trendOrbit):
     /// the post-fit then models at most a bias and a drift over the whole pass (postfitForPass).
     bool orbitTrend = false;
+    /// The O-C's own fitted trend's hat matrix (OcResult::trendHat; row-major, t.size()² values)
+    /// on a short pass (at most 49 records) without a prediction; empty otherwise (a prediction
+    /// is not fitted to the pass; PassTask judges the normal points' precision only here).
+    std::vector<double> trendHat;
     std::vector<double> t;         ///< epoch (s since 0h UTC of the pass day for CRD input)
     std::vector<double> oc;        ///< O-C (s, two-way)
     std::vector<double> tof;       ///< observed two-way TOF (s); empty for O-C tables

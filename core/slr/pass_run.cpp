@@ -484,6 +484,58 @@ ScreenResult screenStage(const PassData& pass, const ScreenParams& params, const
 }
 }  // namespace
 
+std::vector<double> normalPointTrendErrors(const PassData& pass, const PostfitResult& post, double dayStartS) {
+    double dof = NAN;
+    const std::vector<double> factor = normalPointTrendFactors(pass.t, post, dayStartS, pass.trendHat, &dof);
+    double ss = 0;
+    for (size_t i = 0; i < pass.t.size() && i < post.kept.size() && i < post.residuals.size(); ++i)
+        if (post.kept[i]) ss += post.residuals[i] * post.residuals[i];
+    const double sigma = dof >= 1 ? std::sqrt(ss / dof) : INFINITY;
+    std::vector<double> out(post.normalPoints.size(), NAN);
+    for (size_t k = 0; k < out.size() && k < factor.size(); ++k)
+        if (std::isfinite(factor[k])) out[k] = factor[k] > 0 ? sigma * factor[k] : 0.0;
+    return out;
+}
+
+namespace {
+// On a short pass on its own fitted TOF trend (PassData::trendHat), each normal point's
+// precision as the fitted trends leave it (normalPointTrendFactors times the kept residuals'
+// scale over the fits' degrees of freedom) into NormalPoint::trendErrorS; those beyond
+// kMaxNpTrendErrorMm are dropped with the reason, and a pass left with none is doubtful (issue
+// 43: on sparse LEO passes without a prediction, normal points 5-73 mm off that the trends,
+// fitted to the same 10-30 points, had moved).
+void dropImpreciseNormalPoints(const PassData& pass, const PostfitParams& pp, PassRunResult* r) {
+    const std::vector<double> error = normalPointTrendErrors(pass, r->post, pp.dayStartS);
+    std::vector<NormalPoint> precise;
+    std::string why;
+    for (size_t k = 0; k < r->post.normalPoints.size(); ++k) {
+        NormalPoint& np = r->post.normalPoints[k];
+        np.trendErrorS = error[k];
+        const double mm = np.trendErrorS * 0.5 * kSpeedOfLight * 1e3;
+        if (!(mm > kMaxNpTrendErrorMm)) {  // (NaN: not known, kept)
+            precise.push_back(np);
+        } else if (why.empty()) {
+            why = "the trends fitted to this pass's " + std::to_string(r->post.stats.n) + " kept points leave the normal point at " +
+                  formatFixed(np.secondsOfDay, 1) + " s " +
+                  (std::isfinite(mm) ? "±" + formatFixed(mm, 1) + " mm" : std::string("undetermined (no degree of freedom left)")) +
+                  " (one sigma; at most " + formatFixed(kMaxNpTrendErrorMm, 1) +
+                  " mm kept): a prediction (CPF) would fix the trend";
+        }
+    }
+    const size_t dropped = r->post.normalPoints.size() - precise.size();
+    if (dropped == 0) return;
+    if (precise.empty()) {
+        r->doubt = "no normal point is precise enough: " + why;
+        r->post.normalPoints.clear();
+        r->postNote = "no normal points: " + r->doubt;
+        return;
+    }
+    r->post.normalPoints = std::move(precise);
+    const std::string note = std::to_string(dropped) + " normal point(s) dropped: " + why;
+    r->postNote = r->postNote.empty() ? note : r->postNote + "; " + note;
+}
+}  // namespace
+
 PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reuse& reuse, Feedback* fb) {
     PassRunResult r;
     if (!in.pass) {
@@ -564,6 +616,8 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
             r.postNote = r.postNote.empty() ? note : r.postNote + "; " + note;
         }
     }
+    if (r.doubt.empty() && r.postOk && !r.post.normalPoints.empty() && !pass.trendHat.empty())
+        dropImpreciseNormalPoints(pass, pp, &r);
     r.agreement = stationAgreement(pass, r.accepted, r.postOk ? &r.post : nullptr);
     if (r.postOk && r.doubt.empty()) r.bias = passBias(pass, r.post.kept);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

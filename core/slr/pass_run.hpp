@@ -102,6 +102,12 @@ struct BinEvidence {
 /// to measure its noise by: the MLRS Beacon-C passes' 15 s bins).
 inline constexpr double kMaxBinFalseAlarm = 1e-3;
 inline constexpr double kMaxBinNoiseShare = 0.10;
+/// On a short pass without a prediction (its own fitted TOF trend, PassData::trendHat), a
+/// normal point whose fitted trends' share of its error (NormalPoint::trendErrorS, one sigma,
+/// one-way) exceeds this many mm is dropped (PassTask): 2.5 sigma within the 5 mm a LEO normal
+/// point is held to. Measured on 120 simulated sparse LEO passes (tests/test_slr_sparse_leo.cpp,
+/// docs/slr-detection.md): every normal point beyond max(5 mm, 4 Cramér–Rao bounds) is dropped.
+inline constexpr double kMaxNpTrendErrorMm = 2.0;
 inline constexpr double kMinEdgeRoom = 2;
 /// One BinEvidence per normal point of `post` (t: the pass's epochs).
 std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const PostfitResult& post);
@@ -212,6 +218,13 @@ struct PassTask {
 /// and inside one of its trend segments' spans, less those an edit forced out (forced < 0).
 std::vector<uint32_t> pointsInBand(const std::vector<double>& t, const PostfitResult& post,
                                    const std::vector<uint8_t>& accepted, const std::vector<int8_t>& forced);
+
+/// Per normal point of `post` (a post-fit of `pass`; dayStartS its PostfitParams'): the fitted
+/// trends' share of its error, one sigma (two-way s): postfit.hpp normalPointTrendFactors with the
+/// pass's own trend hat matrix (PassData::trendHat; none for a prediction), times the kept
+/// residuals' scale over the fits' degrees of freedom (infinite with less than one left). NaN
+/// where not computed (more than kMaxTrendFactorPoints points).
+std::vector<double> normalPointTrendErrors(const PassData& pass, const PostfitResult& post, double dayStartS);
 
 /// PassTask from scratch on `pass` (no edits, nothing reused).
 PassRunResult runPass(const PassData& pass, const SlrParams& params, Feedback* fb = nullptr);

@@ -904,7 +904,104 @@ void formNormalPoints(const std::vector<double>& t, const std::vector<double>& o
         res->warnings.push_back("no bin reaches " + std::to_string(res->minPointsPerBin) + " points: no normal point");
 }
 
+// A segment's basis at t: Legendre P_0..P_d in u, or its spline's knots + 3 B-splines.
+Eigen::VectorXd segmentBasis(const TrendSegment& g, double t) {
+    if (g.knots > 0) {
+        Eigen::VectorXd b = Eigen::VectorXd::Zero(g.knots + 3);
+        double w[4];
+        const int i = splineBasis(g.tStart, g.tEnd, g.knots, t, w);
+        for (int q = 0; q < 4; ++q) b(i + q) = w[q];
+        return b;
+    }
+    double v[32];
+    legendre((t - g.tCenter) / g.tHalfSpan, g.degree, v);
+    return Eigen::Map<const Eigen::VectorXd>(v, g.degree + 1);
+}
+
 }  // namespace
+
+std::vector<double> normalPointTrendFactors(const std::vector<double>& t, const PostfitResult& r, double dayStartS,
+                                            const std::vector<double>& trendHat, double* dof) {
+    const size_t n = t.size();
+    std::vector<double> out(r.normalPoints.size(), NAN);
+    if (dof) *dof = NAN;
+    const bool hasS = trendHat.size() == n * n && n > 0;
+    if (n > kMaxTrendFactorPoints || r.kept.size() != n || r.segments.empty() || !(r.binLengthS > 0) ||
+        (!trendHat.empty() && !hasS))
+        return out;
+    // Each segment's kept points, their basis rows and normal matrix.
+    const size_t segs = r.segments.size();
+    auto segmentIndex = [&](double x) { return static_cast<size_t>(segmentFor(r.segments, x) - r.segments.data()); };
+    std::vector<std::vector<size_t>> members(segs);
+    for (size_t i = 0; i < n; ++i)
+        if (r.kept[i]) members[segmentIndex(t[i])].push_back(i);
+    std::vector<Eigen::MatrixXd> rows(segs);
+    std::vector<Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>> solve(segs);
+    for (size_t k = 0; k < segs; ++k) {
+        const TrendSegment& g = r.segments[k];
+        rows[k].resize(static_cast<Eigen::Index>(members[k].size()), g.knots > 0 ? g.knots + 3 : g.degree + 1);
+        for (size_t m = 0; m < members[k].size(); ++m) rows[k].row(static_cast<Eigen::Index>(m)) = segmentBasis(g, t[members[k][m]]);
+        solve[k].compute(rows[k].transpose() * rows[k]);
+    }
+    // Hᵀx for a sparse x: Hᵀ = B_K G⁺ B_allᵀ per segment (each point evaluated in its segment).
+    auto hatT = [&](const std::vector<std::pair<size_t, double>>& x, Eigen::VectorXd* y) {
+        y->setZero(static_cast<Eigen::Index>(n));
+        std::vector<Eigen::VectorXd> z(segs);
+        for (const auto& [i, v] : x) {
+            const size_t k = segmentIndex(t[i]);
+            if (z[k].size() == 0) z[k] = Eigen::VectorXd::Zero(rows[k].cols());
+            z[k] += v * segmentBasis(r.segments[k], t[i]);
+        }
+        for (size_t k = 0; k < segs; ++k) {
+            if (z[k].size() == 0 || members[k].empty()) continue;
+            const Eigen::VectorXd h = rows[k] * solve[k].solve(z[k]);
+            for (size_t m = 0; m < members[k].size(); ++m) (*y)(static_cast<Eigen::Index>(members[k][m])) = h(static_cast<Eigen::Index>(m));
+        }
+    };
+    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const Eigen::Map<const RowMajor> S(hasS ? trendHat.data() : nullptr, hasS ? static_cast<Eigen::Index>(n) : 0,
+                                       hasS ? static_cast<Eigen::Index>(n) : 0);
+    const double L = r.binLengthS;
+    auto binOf = [&](double x) { return static_cast<long long>(std::floor((x - dayStartS) / L)); };
+    for (size_t q = 0; q < r.normalPoints.size(); ++q) {
+        const NormalPoint& np = r.normalPoints[q];
+        if (np.pointIndex >= n) continue;
+        const long long bin = binOf(np.epochS);
+        std::vector<std::pair<size_t, double>> g;
+        for (const std::vector<size_t>& seg : members)
+            for (size_t i : seg)
+                if (binOf(t[i]) == bin) g.emplace_back(i, 1.0);
+        if (g.empty()) continue;
+        for (auto& e : g) e.second = -1.0 / static_cast<double>(g.size());
+        g.emplace_back(np.pointIndex, 1.0);
+        Eigen::VectorXd hg;
+        hatT(g, &hg);  // Hᵀg
+        Eigen::VectorXd d = hg;
+        if (hasS) {
+            Eigen::VectorXd v = -hg;  // v = (I − H)ᵀg
+            for (const auto& [i, x] : g) v(static_cast<Eigen::Index>(i)) += x;
+            d += S.transpose() * v;  // d = g − (I − S)ᵀv = Hᵀg + Sᵀv
+        }
+        out[q] = d.norm();
+    }
+    if (dof) {
+        // tr over the kept points of (I − H)(I − S) = 1 − H_ii − S_ii + (HS)_ii; without S, the
+        // kept points less the ranks of the segments' fits.
+        double tr = 0;
+        for (size_t k = 0; k < segs; ++k) tr += static_cast<double>(members[k].size()) - static_cast<double>(solve[k].rank());
+        if (hasS) {
+            Eigen::VectorXd hi;
+            for (const std::vector<size_t>& seg : members)
+                for (size_t i : seg) {
+                    hatT({{i, 1.0}}, &hi);  // row i of H
+                    const Eigen::Index ii = static_cast<Eigen::Index>(i);
+                    tr += -S(ii, ii) + hi.dot(S.col(ii));
+                }
+        }
+        *dof = tr;
+    }
+    return out;
+}
 
 PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& use,
                       const std::vector<double>& tof, const PostfitParams& p, const Feedback* fb) {

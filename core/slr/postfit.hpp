@@ -121,6 +121,9 @@ struct NormalPoint {
     uint32_t pointIndex = 0;    ///< input index of the epoch point
     int minPoints = 0;          ///< the minimum this bin had to reach (6 day, 3 night, or as given)
     double sunElevationDeg = NAN;  ///< at the station at the epoch, when the station was given
+    /// The fitted trends' share of its error, one standard deviation (two-way s): the kept
+    /// residuals' scale times normalPointTrendFactors (PassTask fills it); NaN when not known.
+    double trendErrorS = NAN;
 };
 
 /// One piece of the trend over [tStart, tEnd] (the used points of the segment): Legendre
@@ -170,6 +173,23 @@ struct PostfitResult {
 /// the degree is lowered with a warning when too few points or too short a span.
 PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& use,
                       const std::vector<double>& tof, const PostfitParams& params, const Feedback* fb = nullptr);
+
+/// How much of each normal point's error its fitted trends carry (issue 43: on a sparse pass
+/// without a prediction, normal points 5-70 mm off where the stations' 100-200 ps allow a few).
+/// A normal point is the trend at its epoch point j plus the mean residual of its bin's kept
+/// points B; the trends are fitted to the same points, so its error against the mean of B's
+/// true errors is, to first order, a combination d·ε of the points' errors with
+/// d = g − (I − S)ᵀ(I − H)ᵀg, g = e_j − 1_B/|B|, H the post-fit's hat matrix (its segments' bases
+/// at their kept points) and S the O-C trend's (∂trend_i/∂tof_k: PassData::trendHat, row-major
+/// n×n; empty for a prediction, which is not fitted to the pass). Per normal point of r, ‖d‖:
+/// its trend error's standard deviation in units of a single shot's. *dof (when given): the
+/// kept points less the fits' effective parameters, the trace of (I − H)(I − S) over them.
+/// `dayStartS` as the post-fit's PostfitParams::dayStartS (the bins' origin). NaN for a pass of
+/// more than kMaxTrendFactorPoints points (the cost grows as n²; such a pass's bins hold tens of
+/// points or more, over which a trend of a dozen coefficients moves a normal point little).
+inline constexpr size_t kMaxTrendFactorPoints = 5000;
+std::vector<double> normalPointTrendFactors(const std::vector<double>& t, const PostfitResult& r, double dayStartS,
+                                            const std::vector<double>& trendHat, double* dof = nullptr);
 
 /// The fitted trend at epoch t (s of O-C): the segment holding t, else the nearest one.
 double evaluateTrend(const PostfitResult& r, double t);

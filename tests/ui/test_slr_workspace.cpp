@@ -1436,7 +1436,8 @@ private slots:
                   colPrecision = SlrAllPassesDialog::column("station_precision");
         QVERIFY(colStatus >= 0 && colReason >= 0 && colAccepted >= 0 && colRms >= 0 && colPrecision >= 0);
         // As laserwb-cli slr --all-passes: passes 4 and 5 skipped (3 and 4 records), pass 1
-        // doubtful, 2, 3 and 6 ok; rows in the file's order.
+        // doubtful (5 records), 2 and 3 doubtful (issue 43: their fitted trends leave every normal
+        // point ±2.7 and ±11.6 mm), 6 ok; rows in the file's order.
         int skipped = 0, ok = 0, doubtful = 0;
         for (int r = 0; r < t->rowCount(); ++r) {
             QCOMPARE(all->passOfRow(r), r);
@@ -1447,8 +1448,10 @@ private slots:
                 QVERIFY(accepted.isEmpty());
             } else if (status == "doubtful") {
                 ++doubtful;
-                QCOMPARE(r, 0);
-                QVERIFY(t->item(r, colPrecision)->text().isEmpty());  // nothing accepted: precision 0/0, not 0
+                QVERIFY(r <= 2);
+                if (r == 0) QVERIFY(t->item(r, colPrecision)->text().isEmpty());  // nothing accepted: precision 0/0, not 0
+                else QVERIFY2(t->item(r, colReason)->text().contains("no normal point is precise enough"),
+                              qPrintable(t->item(r, colReason)->text()));
             } else {
                 ++ok;
                 QCOMPARE(status, QString("ok"));
@@ -1457,8 +1460,8 @@ private slots:
             }
         }
         QCOMPARE(skipped, 2);
-        QCOMPARE(doubtful, 1);
-        QCOMPARE(ok, 3);
+        QCOMPARE(doubtful, 3);
+        QCOMPARE(ok, 1);
         // The table exports as summary.csv, and the day's products as the CLI writes them.
         const QString guiDir = m_dir.path() + "/day-gui", cliDir = m_dir.path() + "/day-cli";
         QString exportErr;
@@ -1470,7 +1473,7 @@ private slots:
         QVERIFY2(written.at(0).at(0).toBool(), qPrintable(written.at(0).at(1).toString()));
         // (the workbench names its files by their absolute paths, as its provenance records them)
         const lwbtest::CliRun cli = lwbtest::runCli({"slr", QFileInfo(hy2c).absoluteFilePath(), "--all-passes", "--out-dir", cliDir, "-q"});
-        QVERIFY2(cli.exitCode == 3, qPrintable(cli.err));  // (pass 1 doubtful)
+        QVERIFY2(cli.exitCode == 3, qPrintable(cli.err));  // (passes 1-3 doubtful)
         QCOMPARE(lwbtest::readAll(m_dir.path() + "/all.csv"), lwbtest::readAll(cliDir + "/summary.csv"));
         const QStringList names = QDir(cliDir).entryList(QDir::Files, QDir::Name);
         QCOMPARE(QDir(guiDir).entryList(QDir::Files, QDir::Name), names);
