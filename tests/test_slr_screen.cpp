@@ -77,10 +77,12 @@ private slots:
     // Issue 43: a normal point's trend error as normalPointTrendFactors states it. Analytic: a
     // line over ten points in one bin moves the NP at its epoch point x_j by |x_j - mean x| /
     // sqrt(sum (x - mean x)^2) single-shot sigmas (a constant, by none). Monte Carlo (4000 passes
-    // of 30 points of Gaussian noise, bins of 10, a line as the post-fit, and again on the O-C of
-    // a cubic fitted to the TOF first, S its hat matrix): each bin's RMS error against the mean of
-    // its points' true errors agrees with sigma times the factor within 5 % (the Monte Carlo's
-    // own error is about 1.1 %).
+    // of 30 points of Gaussian noise, bins of 10, a line as the post-fit; and again on the O-C of
+    // a weighted fit of 1, cos, sin to the TOF first, S its hat matrix: not symmetric, and
+    // neither its span nor the line's holds the other, so that H and S both count): each bin's
+    // RMS error against the mean of its points' true errors agrees with sigma times the factor
+    // within 5 % (the Monte Carlo's own error is about 1.1 %), and the kept residuals' mean sum
+    // of squares with sigma^2 times dof within 3 % (its own error about 0.4 %).
     void normalPointTrendFactorsMatchTheirErrors() {
         PostfitParams pp;
         pp.autoDegree = false;
@@ -96,39 +98,45 @@ private slots:
             pp.degree = degree;
             const PostfitResult r = postfit(t10, zero10, {}, {}, pp);
             QVERIFY2(r.ok && r.normalPoints.size() == 1, r.error.c_str());
-            const std::vector<double> f = normalPointTrendFactors(t10, r, 0.0, {});
+            double dof = NAN;
+            const std::vector<double> f = normalPointTrendFactors(t10, r, {}, &dof);
             const double xj = r.normalPoints[0].epochS, want = degree == 0 ? 0.0 : std::fabs(xj - 4.5) / std::sqrt(82.5);
             QVERIFY2(std::fabs(f[0] - want) < 1e-12, qPrintable(QString("degree %1: %2 vs %3").arg(degree).arg(f[0]).arg(want)));
+            QCOMPARE(dof, double(10 - degree - 1));
         }
         const size_t n = 30;
         std::vector<double> t(n);
         for (size_t i = 0; i < n; ++i) t[i] = double(i);
-        // S: the hat matrix of a least-squares cubic in t (what a fitted TOF trend would be).
-        Eigen::MatrixXd X(n, 4);
+        // S: the hat matrix of a weighted least-squares fit of 1, cos(t/6), sin(t/6) (what a fitted
+        // TOF trend with robust weights would be): weights 0 on every fifth point, 2 on every third.
+        Eigen::MatrixXd X(n, 3);
+        Eigen::VectorXd w(n);
         for (size_t i = 0; i < n; ++i) {
-            const double u = (t[i] - 14.5) / 14.5;
-            X.row(Eigen::Index(i)) << 1.0, u, u * u, u * u * u;
+            X.row(Eigen::Index(i)) << 1.0, std::cos(t[i] / 6), std::sin(t[i] / 6);
+            w(Eigen::Index(i)) = i % 5 == 0 ? 0.0 : i % 3 == 0 ? 2.0 : 1.0;
         }
-        const Eigen::MatrixXd H = X * (X.transpose() * X).inverse() * X.transpose();
+        const Eigen::MatrixXd S = X * (X.transpose() * w.asDiagonal() * X).inverse() * X.transpose() * w.asDiagonal();
         std::vector<double> hat(n * n);
         for (size_t i = 0; i < n; ++i)
-            for (size_t k = 0; k < n; ++k) hat[i * n + k] = H(Eigen::Index(i), Eigen::Index(k));
+            for (size_t k = 0; k < n; ++k) hat[i * n + k] = S(Eigen::Index(i), Eigen::Index(k));
         pp.degree = 1;
         pp.binLengthS = 10;
         const double sigma = 100e-12;
         for (const bool withTrend : {false, true}) {
             Rng rng(7);
             std::vector<double> sum2(3, 0.0), factor;
+            double dof = NAN, ssr = 0;
             const int trials = 4000;
             for (int trial = 0; trial < trials; ++trial) {
                 std::vector<double> y(n), oc(n);
                 for (double& v : y) v = 0.05 + rng.normal(0, sigma);  // the TOF: a constant 50 ms plus noise
-                Eigen::VectorXd yv = Eigen::Map<const Eigen::VectorXd>(y.data(), Eigen::Index(n));
-                const Eigen::VectorXd fit = withTrend ? Eigen::VectorXd(H * yv) : Eigen::VectorXd::Constant(Eigen::Index(n), 0.05);
+                const Eigen::VectorXd yv = Eigen::Map<const Eigen::VectorXd>(y.data(), Eigen::Index(n));
+                const Eigen::VectorXd fit = withTrend ? Eigen::VectorXd(S * yv) : Eigen::VectorXd::Constant(Eigen::Index(n), 0.05);
                 for (size_t i = 0; i < n; ++i) oc[i] = y[i] - fit(Eigen::Index(i));
                 const PostfitResult r = postfit(t, oc, {}, y, pp);
                 QVERIFY2(r.ok && r.normalPoints.size() == 3, r.error.c_str());
-                if (trial == 0) factor = normalPointTrendFactors(t, r, 0.0, withTrend ? hat : std::vector<double>());
+                if (trial == 0) factor = normalPointTrendFactors(t, r, withTrend ? hat : std::vector<double>(), &dof);
+                for (size_t i = 0; i < n; ++i) ssr += r.residuals[i] * r.residuals[i];
                 for (size_t b = 0; b < 3; ++b) {
                     double mean = 0;
                     for (size_t i = b * 10; i < b * 10 + 10; ++i) mean += y[i] - 0.05;
@@ -136,12 +144,15 @@ private slots:
                     sum2[b] += err * err;
                 }
             }
+            const char* what = withTrend ? "O-C of a weighted fit of 1, cos, sin" : "no trend";
             for (size_t b = 0; b < 3; ++b) {
                 const double rms = std::sqrt(sum2[b] / trials), want = sigma * factor[b];
-                qInfo("%s, bin %zu: RMS error %.2f ps, stated %.2f ps", withTrend ? "O-C of a fitted cubic" : "no trend", b, rms * 1e12,
-                      want * 1e12);
+                qInfo("%s, bin %zu: RMS error %.2f ps, stated %.2f ps", what, b, rms * 1e12, want * 1e12);
                 QVERIFY2(want > 0 && std::fabs(rms / want - 1) < 0.05, qPrintable(QString("%1 vs %2").arg(rms).arg(want)));
             }
+            const double ratio = ssr / trials / (sigma * sigma * dof);
+            qInfo("%s: dof %.3f, mean sum of squares over sigma^2 dof %.4f", what, dof, ratio);
+            QVERIFY2(std::fabs(ratio - 1) < 0.03, qPrintable(QString::number(ratio)));
         }
     }
 

@@ -213,7 +213,7 @@ SparseOutcome runSparse(const sim::SparseLeoParams& sp, uint64_t seed, Trend tre
         o.noiseKept += !sig && r.post.kept[i];
     }
     o.rmsPs = r.post.stats.rms * 1e12;
-    const std::vector<double> trendErr = normalPointTrendErrors(d, r.post, pfp.dayStartS);
+    const std::vector<double> trendErr = normalPointTrendErrors(d, r.post);
     for (double e : trendErr) o.npTrendErrMm.push_back(e * kMmPerS);
     const double L = r.post.binLengthS;
     const NpBound bound(s, sp.jitterS);
@@ -380,7 +380,12 @@ private slots:
     // polynomial trend alone and with the arc without the circular orbit. Asserted: fewer failed
     // passes, under half the rejected returns and fewer passes with an NP over 5 mm than the
     // polynomial alone; fewer NPs beyond max(5 mm, 4 bounds) and fewer passes over 5 mm than the
-    // arc alone, and no more failures.
+    // arc alone, and no more failures. And no confident wrong answer: none of the NPs beyond
+    // max(5 mm, 4 bounds) is delivered by the run (its pass doubtful or the NP dropped as
+    // imprecise, pass_run.hpp kMaxNpTrendErrorMm), at most a quarter of the others withheld, and
+    // the run's own one-sigma estimate of each NP's trend error (normalPointTrendErrors) the
+    // errors' scale at their core (median |error| / estimate 0.45-0.95). (The target's "not
+    // doubtful without noise" now gives SHORT lines where the estimate withholds a pass's NPs.)
     void sparseLeoPassesFollowTheArc() {
         QTemporaryDir dir;
         QStringList failures;
@@ -435,7 +440,7 @@ private slots:
             if (!(ratio >= 0.3 && ratio <= 2.0)) fail(QString("post-fit RMS %1 ps").arg(a.rmsPs));
             bool boundOver5 = false;
             for (size_t k = 0; k < a.npErrMm.size(); ++k)
-                if (a.npTrendErrMm[k] > 0) zs.push_back(std::fabs(a.npErrMm[k]) / a.npTrendErrMm[k]);
+                if (std::isfinite(a.npTrendErrMm[k]) && a.npTrendErrMm[k] > 0) zs.push_back(std::fabs(a.npErrMm[k]) / a.npTrendErrMm[k]);
             for (size_t k = 0; k < a.npErrMm.size(); ++k) {
                 const double e = a.npErrMm[k], tol = std::max(5.0, 4 * a.npBoundMm[k]);
                 boundOver5 = boundOver5 || 4 * a.npBoundMm[k] > 5;

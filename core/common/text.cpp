@@ -224,4 +224,11 @@ std::string didYouMean(std::string_view given, const std::vector<std::string>& k
     return " (did you mean " + *best + "?)";
 }
 
+std::string hmsRounded(double secondsOfDay) {
+    const long s = std::lround(std::fmod(std::fmod(secondsOfDay, 86400.0) + 86400.0, 86400.0));
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%02ld:%02ld:%02ld", s / 3600 % 24, s / 60 % 60, s % 60);
+    return buf;
+}
+
 }  // namespace lwb::core

@@ -44,6 +44,9 @@ std::string textFileProblem(std::string_view text, const std::string& source, co
 std::string_view plainText(std::string_view text, std::string* storage);
 /// Fixed-point formatting with `decimals` digits after the point.
 std::string formatFixed(double v, int decimals);
+
+/// Seconds of a day (any count: taken modulo 86 400) as "hh:mm:ss", rounded to the second.
+std::string hmsRounded(double secondsOfDay);
 /// " (did you mean X?)" for the name of `known` nearest to `given` (edit distance, case
 /// ignored; a name that contains `given` whole counts as near), or "" when none is within a
 /// third of the name's length (at least 2 edits). A mistyped option, command or key.

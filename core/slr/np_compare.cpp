@@ -82,13 +82,6 @@ int pickBlock(const PassData& pass, long passMjd, const CrdFile& station, double
     return best;
 }
 
-std::string hmsRounded(double t) {
-    const long s = std::lround(std::fmod(std::fmod(t, 86400.0) + 86400.0, 86400.0));
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%02ld:%02ld:%02ld", s / 3600 % 24, s / 60 % 60, s % 60);
-    return buf;
-}
-
 }  // namespace
 
 std::string NpComparison::describe() const {

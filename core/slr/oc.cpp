@@ -459,10 +459,11 @@ namespace {
 
 // The robust (Huber) fit of the squared time of flight by the Legendre basis `a`, iterated until
 // the residuals' scale settles: the residuals in ms into *resid, the robust scale (ms) into
-// *scale. 1 fitted, 0 not (degenerate), -1 cancelled.
+// *scale, the robust weights of the fit they come from into *weightsOut (when given). 1 fitted,
+// 0 not (degenerate), -1 cancelled.
 int robustTofTrend(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs, const Eigen::VectorXd& ysq,
                    const TrendOcParams& params, const Feedback* feedback, Eigen::VectorXd* residOut, double* scaleOut,
-                   Eigen::VectorXd* coefOut) {
+                   Eigen::VectorXd* coefOut, Eigen::VectorXd* weightsOut = nullptr) {
     const Eigen::Index nn = tofMs.size();
     // Weights in tof^2 space: d(tof^2) = 2 tof d(tof), so 1/(2 tof)^2 makes the fit least squares in tof.
     Eigen::VectorXd base(nn), w = Eigen::VectorXd::Ones(nn), resid = Eigen::VectorXd::Zero(nn);
@@ -484,6 +485,7 @@ int robustTofTrend(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs, const
         }
         if (!good) break;  // a non-positive squared trend: keep the previous fit
         if (coefOut) *coefOut = coef;
+        if (weightsOut) *weightsOut = w;
         resid = r;
         fitted = true;
         std::vector<double> absr(static_cast<size_t>(nn));
@@ -525,6 +527,7 @@ struct ArcFit {
     double bic = INFINITY;   // n ln(scale^2) + k ln n
     Eigen::VectorXd resid;   // TOF residuals (ms)
     Eigen::VectorXd coef;    // the design's coefficients (ms^2): the polynomial's, then B and C
+    Eigen::VectorXd weights; // the robust weights of the final fit (empty when it was fitted on a subsample)
 };
 
 // The arc's design: the polynomial's columns, cos(w s), sin(w s) and, for the Earth's rotation
@@ -556,9 +559,11 @@ Eigen::MatrixXd arcDesign(const Eigen::MatrixXd& poly, const std::vector<double>
 
 // The robust fit of the design `a` to the squared TOF, as robustTofTrend (Huber), then
 // `bisquareSteps` Tukey bisquare steps (c = 4.685 robust sigma). Returns the robust scale (ms),
-// NaN when degenerate; residuals into *resid.
+// NaN when degenerate; residuals into *resid, the robust weights of the fit they come from into
+// *weightsOut (when given).
 double robustArcResiduals(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs, const Eigen::VectorXd& ysq, double huberK,
-                          int maxIterations, int bisquareSteps, Eigen::VectorXd* resid, Eigen::VectorXd* coefOut) {
+                          int maxIterations, int bisquareSteps, Eigen::VectorXd* resid, Eigen::VectorXd* coefOut,
+                          Eigen::VectorXd* weightsOut = nullptr) {
     const Eigen::Index nn = tofMs.size();
     Eigen::VectorXd base(nn), w = Eigen::VectorXd::Ones(nn), r = Eigen::VectorXd::Zero(nn);
     for (Eigen::Index i = 0; i < nn; ++i) base(i) = tofMs(i) > 0 ? 1.0 / (4.0 * tofMs(i) * tofMs(i)) : 0.0;
@@ -579,6 +584,7 @@ double robustArcResiduals(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs
         if (!good) break;
         r = rn;
         *coefOut = coef;
+        if (weightsOut) *weightsOut = w;
         fitted = true;
         std::vector<double> absr(static_cast<size_t>(nn));
         for (Eigen::Index i = 0; i < nn; ++i) absr[static_cast<size_t>(i)] = std::fabs(r(i));
@@ -674,7 +680,8 @@ ArcFit fitArc(const Epochs& ep, const Eigen::VectorXd& tofMs, int degree, int ro
     Eigen::VectorXd coef;
     if (n <= params.fitMaxPoints) {
         const Eigen::MatrixXd a2 = arcDesign(legendre(ep.xs(0, n), degree), ep.ss(0, n), best.omega, rotation);
-        best.scale = robustArcResiduals(a2, tofMs, squared(tofMs), params.huberK, params.maxIterations, 3, &best.resid, &coef);
+        best.scale = robustArcResiduals(a2, tofMs, squared(tofMs), params.huberK, params.maxIterations, 3, &best.resid, &coef,
+                                        &best.weights);
     } else {  // (a kHz pass: fitted on fitMaxPoints of its records)
         const std::vector<size_t> at = evenlyTaken(n, params.fitMaxPoints);
         Eigen::VectorXd rf;
@@ -699,22 +706,17 @@ ArcFit fitArc(const Epochs& ep, const Eigen::VectorXd& tofMs, int degree, int ro
 }
 
 // The hat matrix (orbit_fit.hpp leastSquaresHat) of a fit of the squared TOF linear in its
-// coefficients, tof_i^2 = a_i . c: in the TOF its Jacobian is a_i / (2 tof_i), with a column
-// d tof_i / d omega for the arc's rate when given (its design's derivative, by central
-// differences, times the coefficients). The weights are the robust fit's last: Huber
-// (huberK > 0) or bisquare (4.685) of the final residuals at their scale (ms).
+// coefficients, tof_i^2 = a_i . c, with the robust weights w of its last solve: in the TOF its
+// Jacobian is a_i / (2 f_i), f the fitted TOF, with a column d f_i / d omega for the arc's rate
+// when given (its design's derivative, by central differences, times the coefficients). Empty
+// when the weights are not the design's length.
 std::vector<double> tofSquaredHat(const Eigen::MatrixXd& a, const Eigen::VectorXd& tofMs, const Eigen::VectorXd& residMs,
-                                  double scaleMs, double huberK, const std::function<Eigen::MatrixXd(double)>* design,
+                                  const Eigen::VectorXd& w, const std::function<Eigen::MatrixXd(double)>* design,
                                   double omega, const Eigen::VectorXd& coef) {
     const Eigen::Index n = a.rows();
+    if (w.size() != n) return {};
     Eigen::MatrixXd J(n, a.cols() + (design ? 1 : 0));
-    Eigen::VectorXd w(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        const double f = tofMs(i) - residMs(i);
-        J.row(i).head(a.cols()) = a.row(i) / (2 * f);
-        const double u = scaleMs > 0 ? std::fabs(residMs(i)) / ((huberK > 0 ? huberK : 4.685) * scaleMs) : 0.0;
-        w(i) = huberK > 0 ? (u <= 1 ? 1.0 : 1.0 / u) : (u < 1 ? (1 - u * u) * (1 - u * u) : 0.0);
-    }
+    for (Eigen::Index i = 0; i < n; ++i) J.row(i).head(a.cols()) = a.row(i) / (2 * (tofMs(i) - residMs(i)));
     if (design) {
         const double h = 1e-6 * omega;
         const Eigen::VectorXd dA = ((*design)(omega + h) - (*design)(omega - h)) * coef / (2 * h);
@@ -808,12 +810,12 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         const Eigen::Index nn = static_cast<Eigen::Index>(t.size());
         Eigen::VectorXd tofMs(nn);
         for (Eigen::Index i = 0; i < nn; ++i) tofMs(i) = pass.ranges.tofS(static_cast<size_t>(i)) * 1e3;
-        Eigen::VectorXd resid;
+        Eigen::VectorXd resid, polyWeights;
         double scale = NAN;
         int fit;
         if (t.size() <= params.fitMaxPoints) {
             fit = robustTofTrend(legendre(ep.xs(0, t.size()), degree), tofMs, squared(tofMs), params, feedback, &resid, &scale,
-                                 nullptr);
+                                 nullptr, &polyWeights);
         } else {  // (a kHz pass: fitted on fitMaxPoints of its records, the residuals of all)
             const std::vector<size_t> at = evenlyTaken(t.size(), params.fitMaxPoints);
             Eigen::VectorXd coef;
@@ -923,17 +925,17 @@ OcResult computeTrendOc(const CrdPass& pass, const TrendOcParams& params, const 
         }
 
         // The trend's hat matrix where the pass is short enough to hold it (PassData::trendHat).
-        if (t.size() <= kMaxTrendHatPoints) {
+        if (t.size() <= kMaxTrendHatPoints && t.size() <= params.fitMaxPoints) {  // (fitted on every record)
             if (orbit.ok) {
                 res.trendHat = std::move(orbit.hat);
             } else if (arc.ok) {
                 const std::function<Eigen::MatrixXd(double)> design = [&](double om) {
                     return arcDesign(legendre(ep.xs(0, t.size()), arc.degree), ep.ss(0, t.size()), om, arc.rotation);
                 };
-                res.trendHat = tofSquaredHat(design(arc.omega), tofMs, resid, arc.scale, 0.0, &design, arc.omega, arc.coef);
+                res.trendHat = tofSquaredHat(design(arc.omega), tofMs, resid, arc.weights, &design, arc.omega, arc.coef);
             } else {
-                res.trendHat = tofSquaredHat(legendre(ep.xs(0, t.size()), degree), tofMs, resid, scale, params.huberK, nullptr,
-                                             0.0, Eigen::VectorXd());
+                res.trendHat = tofSquaredHat(legendre(ep.xs(0, t.size()), degree), tofMs, resid, polyWeights, nullptr, 0.0,
+                                             Eigen::VectorXd());
             }
         }
         // The columns, each sized once (a column grown by doubling held up to 1.5 copies of

@@ -84,8 +84,8 @@ double weightedSsr(const Model& m, const Orbit& o, const Data& d) {
     return ss;
 }
 
-// The model's Jacobian at `o` (central differences), unweighted.
-Eigen::MatrixXd jacobian(const Model& m, const Orbit& o, const std::vector<double>& s) {
+// The model's Jacobian at `o` (central differences), each row times sw (none: 1).
+Eigen::MatrixXd jacobian(const Model& m, const Orbit& o, const std::vector<double>& s, const Eigen::VectorXd* sw = nullptr) {
     const int k = m.count();
     Eigen::MatrixXd J(static_cast<Eigen::Index>(s.size()), k);
     std::vector<double> fu, fd;
@@ -96,7 +96,10 @@ Eigen::MatrixXd jacobian(const Model& m, const Orbit& o, const std::vector<doubl
         m.tofs(m.step(o, dv), s, &fu);
         dv(j) = -h;
         m.tofs(m.step(o, dv), s, &fd);
-        for (size_t i = 0; i < s.size(); ++i) J(static_cast<Eigen::Index>(i), j) = (fu[i] - fd[i]) / (2 * h);
+        for (size_t i = 0; i < s.size(); ++i) {
+            const Eigen::Index r = static_cast<Eigen::Index>(i);
+            J(r, j) = (sw ? (*sw)(r) : 1.0) * (fu[i] - fd[i]) / (2 * h);
+        }
     }
     return J;
 }
@@ -116,7 +119,7 @@ Orbit levenbergMarquardt(const Model& m, Orbit o, const Data& d, int iterations,
             sw(i) = std::sqrt(std::max(0.0, d.w[static_cast<size_t>(i)]));
             r(i) = sw(i) * (d.tof[static_cast<size_t>(i)] - f[static_cast<size_t>(i)]);
         }
-        const Eigen::MatrixXd J = sw.asDiagonal() * jacobian(m, o, d.s);
+        const Eigen::MatrixXd J = jacobian(m, o, d.s, &sw);
         Eigen::VectorXd scale = J.colwise().norm().transpose();
         for (int j = 0; j < k; ++j)
             if (!(scale(j) > 0)) scale(j) = 1;
@@ -258,12 +261,14 @@ CircularOrbitResult finish(const CircularOrbitParams& p, const Model& model, Orb
         const double sc = madAboutZero(r, robust.w);
         if (!(sc > 0)) break;
         size_t left = 0;
+        std::vector<double> w(n);
         for (size_t i = 0; i < n; ++i) {
             const double u = r[i] / (4.685 * sc);
-            robust.w[i] = all.w[i] > 0 && std::fabs(u) < 1 ? all.w[i] * (1 - u * u) * (1 - u * u) : 0.0;
-            left += robust.w[i] > 0;
+            w[i] = all.w[i] > 0 && std::fabs(u) < 1 ? all.w[i] * (1 - u * u) * (1 - u * u) : 0.0;
+            left += w[i] > 0;
         }
         if (static_cast<int>(left) < k + 3) break;
+        robust.w = std::move(w);  // (the weights of the fit the residuals come from: the hat's below)
         best = levenbergMarquardt(model, best, robust, p.maxIterations, &ssr);
         residuals();
     }
@@ -277,7 +282,8 @@ CircularOrbitResult finish(const CircularOrbitParams& p, const Model& model, Orb
     res.biasS = best.bias;
     res.parameters = k;
     res.residualS = r;
-    res.hat = leastSquaresHat(jacobian(model, best, all.s), Eigen::Map<const Eigen::VectorXd>(robust.w.data(), robust.w.size()));
+    if (n <= kMaxOrbitHatPoints)
+        res.hat = leastSquaresHat(jacobian(model, best, all.s), Eigen::Map<const Eigen::VectorXd>(robust.w.data(), robust.w.size()));
     res.scaleS = madAboutZero(r, {});
     res.ok = std::isfinite(res.scaleS);
     if (!res.ok) res.error = "the circular orbit's residuals are not finite";

@@ -41,11 +41,15 @@ struct CircularOrbitResult {
     int parameters = 0;             ///< fitted parameters (for an information criterion)
     double scaleS = NAN;            ///< robust scale (MAD about 0) of the residuals (two-way s)
     std::vector<double> residualS;  ///< observed − model TOF (two-way s), per point
-    /// The fit's hat matrix S (row-major n×n: ∂model_i/∂tof_k at the solution, with the final
-    /// robust weights; leastSquaresHat): how each point's time of flight moves the model at every
-    /// point (the normal points' precision, postfit.hpp normalPointTrendFactors).
+    /// The fit's hat matrix S (row-major n×n: ∂model_i/∂tof_k at the solution, with the robust
+    /// weights of the last fit; leastSquaresHat): how each point's time of flight moves the model
+    /// at every point (the normal points' precision, postfit.hpp normalPointTrendFactors). Empty
+    /// for more than kMaxOrbitHatPoints points.
     std::vector<double> hat;
 };
+
+/// CircularOrbitResult::hat is made for at most this many points (32 MB).
+inline constexpr size_t kMaxOrbitHatPoints = 2000;
 
 /// The hat matrix S = J (Jᵀ W J)⁺ Jᵀ W of a least-squares fit whose model has Jacobian J (n×p,
 /// at the solution) and weights w (n): δmodel = S δdata to first order. Row-major n×n.

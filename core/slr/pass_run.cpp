@@ -484,13 +484,14 @@ ScreenResult screenStage(const PassData& pass, const ScreenParams& params, const
 }
 }  // namespace
 
-std::vector<double> normalPointTrendErrors(const PassData& pass, const PostfitResult& post, double dayStartS) {
+std::vector<double> normalPointTrendErrors(const PassData& pass, const PostfitResult& post) {
     double dof = NAN;
-    const std::vector<double> factor = normalPointTrendFactors(pass.t, post, dayStartS, pass.trendHat, &dof);
+    const std::vector<double> factor = normalPointTrendFactors(pass.t, post, pass.trendHat, &dof);
     double ss = 0;
     for (size_t i = 0; i < pass.t.size() && i < post.kept.size() && i < post.residuals.size(); ++i)
         if (post.kept[i]) ss += post.residuals[i] * post.residuals[i];
-    const double sigma = dof >= 1 ? std::sqrt(ss / dof) : INFINITY;
+    // (less than one degree of freedom left: the fits pass through the points, infinitely imprecise)
+    const double sigma = !std::isfinite(dof) ? NAN : dof >= 1 ? std::sqrt(ss / dof) : INFINITY;
     std::vector<double> out(post.normalPoints.size(), NAN);
     for (size_t k = 0; k < out.size() && k < factor.size(); ++k)
         if (std::isfinite(factor[k])) out[k] = factor[k] > 0 ? sigma * factor[k] : 0.0;
@@ -503,21 +504,24 @@ namespace {
 // scale over the fits' degrees of freedom) into NormalPoint::trendErrorS; those beyond
 // kMaxNpTrendErrorMm are dropped with the reason, and a pass left with none is doubtful (issue
 // 43: on sparse LEO passes without a prediction, normal points 5-73 mm off that the trends,
-// fitted to the same 10-30 points, had moved).
-void dropImpreciseNormalPoints(const PassData& pass, const PostfitParams& pp, PassRunResult* r) {
-    const std::vector<double> error = normalPointTrendErrors(pass, r->post, pp.dayStartS);
+// fitted to the same 10-30 points, had moved). A normal point whose precision could not be
+// estimated is not known to be precise: dropped too.
+void dropImpreciseNormalPoints(const PassData& pass, PassRunResult* r) {
+    const std::vector<double> error = normalPointTrendErrors(pass, r->post);
     std::vector<NormalPoint> precise;
     std::string why;
     for (size_t k = 0; k < r->post.normalPoints.size(); ++k) {
         NormalPoint& np = r->post.normalPoints[k];
         np.trendErrorS = error[k];
         const double mm = np.trendErrorS * 0.5 * kSpeedOfLight * 1e3;
-        if (!(mm > kMaxNpTrendErrorMm)) {  // (NaN: not known, kept)
+        if (mm <= kMaxNpTrendErrorMm) {
             precise.push_back(np);
-        } else if (why.empty()) {
+        } else if (why.empty()) {  // (NaN: not estimated, so not known to be precise)
             why = "the trends fitted to this pass's " + std::to_string(r->post.stats.n) + " kept points leave the normal point at " +
-                  formatFixed(np.secondsOfDay, 1) + " s " +
-                  (std::isfinite(mm) ? "±" + formatFixed(mm, 1) + " mm" : std::string("undetermined (no degree of freedom left)")) +
+                  hmsRounded(np.secondsOfDay) + " UTC " +
+                  (std::isfinite(mm) ? "±" + formatFixed(mm, 1) + " mm"
+                   : std::isinf(mm)  ? std::string("undetermined (no degree of freedom left)")
+                                     : std::string("with a precision that could not be estimated")) +
                   " (one sigma; at most " + formatFixed(kMaxNpTrendErrorMm, 1) +
                   " mm kept): a prediction (CPF) would fix the trend";
         }
@@ -617,7 +621,7 @@ PassRunResult PassTask::run(const Inputs& in, const SlrParams& params, const Reu
         }
     }
     if (r.doubt.empty() && r.postOk && !r.post.normalPoints.empty() && !pass.trendHat.empty())
-        dropImpreciseNormalPoints(pass, pp, &r);
+        dropImpreciseNormalPoints(pass, &r);
     r.agreement = stationAgreement(pass, r.accepted, r.postOk ? &r.post : nullptr);
     if (r.postOk && r.doubt.empty()) r.bias = passBias(pass, r.post.kept);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

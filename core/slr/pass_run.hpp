@@ -106,7 +106,7 @@ inline constexpr double kMaxBinNoiseShare = 0.10;
 /// normal point whose fitted trends' share of its error (NormalPoint::trendErrorS, one sigma,
 /// one-way) exceeds this many mm is dropped (PassTask): 2.5 sigma within the 5 mm a LEO normal
 /// point is held to. Measured on 120 simulated sparse LEO passes (tests/test_slr_sparse_leo.cpp,
-/// docs/slr-detection.md): every normal point beyond max(5 mm, 4 Cramér–Rao bounds) is dropped.
+/// docs/slr-detection.md): every normal point beyond max(5 mm, 4 Cramér–Rao bounds) is withheld.
 inline constexpr double kMaxNpTrendErrorMm = 2.0;
 inline constexpr double kMinEdgeRoom = 2;
 /// One BinEvidence per normal point of `post` (t: the pass's epochs).
@@ -219,12 +219,12 @@ struct PassTask {
 std::vector<uint32_t> pointsInBand(const std::vector<double>& t, const PostfitResult& post,
                                    const std::vector<uint8_t>& accepted, const std::vector<int8_t>& forced);
 
-/// Per normal point of `post` (a post-fit of `pass`; dayStartS its PostfitParams'): the fitted
-/// trends' share of its error, one sigma (two-way s): postfit.hpp normalPointTrendFactors with the
-/// pass's own trend hat matrix (PassData::trendHat; none for a prediction), times the kept
-/// residuals' scale over the fits' degrees of freedom (infinite with less than one left). NaN
-/// where not computed (more than kMaxTrendFactorPoints points).
-std::vector<double> normalPointTrendErrors(const PassData& pass, const PostfitResult& post, double dayStartS);
+/// Per normal point of `post` (a post-fit of `pass`): the fitted trends' share of its error, one
+/// sigma (two-way s): postfit.hpp normalPointTrendFactors with the pass's own trend hat matrix
+/// (PassData::trendHat; none for a prediction), times the kept residuals' scale, their sum of
+/// squares over its `dof` (infinite with less than one left). NaN where not computed (more than
+/// kMaxTrendFactorPoints points).
+std::vector<double> normalPointTrendErrors(const PassData& pass, const PostfitResult& post);
 
 /// PassTask from scratch on `pass` (no edits, nothing reused).
 PassRunResult runPass(const PassData& pass, const SlrParams& params, Feedback* fb = nullptr);

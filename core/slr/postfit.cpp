@@ -920,7 +920,7 @@ Eigen::VectorXd segmentBasis(const TrendSegment& g, double t) {
 
 }  // namespace
 
-std::vector<double> normalPointTrendFactors(const std::vector<double>& t, const PostfitResult& r, double dayStartS,
+std::vector<double> normalPointTrendFactors(const std::vector<double>& t, const PostfitResult& r,
                                             const std::vector<double>& trendHat, double* dof) {
     const size_t n = t.size();
     std::vector<double> out(r.normalPoints.size(), NAN);
@@ -962,7 +962,7 @@ std::vector<double> normalPointTrendFactors(const std::vector<double>& t, const 
     const Eigen::Map<const RowMajor> S(hasS ? trendHat.data() : nullptr, hasS ? static_cast<Eigen::Index>(n) : 0,
                                        hasS ? static_cast<Eigen::Index>(n) : 0);
     const double L = r.binLengthS;
-    auto binOf = [&](double x) { return static_cast<long long>(std::floor((x - dayStartS) / L)); };
+    auto binOf = [&](double x) { return static_cast<long long>(std::floor((x - r.dayStartS) / L)); };
     for (size_t q = 0; q < r.normalPoints.size(); ++q) {
         const NormalPoint& np = r.normalPoints[q];
         if (np.pointIndex >= n) continue;
@@ -985,20 +985,22 @@ std::vector<double> normalPointTrendFactors(const std::vector<double>& t, const 
         out[q] = d.norm();
     }
     if (dof) {
-        // tr over the kept points of (I − H)(I − S) = 1 − H_ii − S_ii + (HS)_ii; without S, the
-        // kept points less the ranks of the segments' fits.
-        double tr = 0;
-        for (size_t k = 0; k < segs; ++k) tr += static_cast<double>(members[k].size()) - static_cast<double>(solve[k].rank());
-        if (hasS) {
+        // Σ over the kept points i of ‖row i of (I − H)(I − S)‖²; without S, (I − H) is a
+        // projector over each segment's kept points and that is their count less its rank.
+        double sum = 0;
+        if (!hasS) {
+            for (size_t k = 0; k < segs; ++k) sum += static_cast<double>(members[k].size()) - static_cast<double>(solve[k].rank());
+        } else {
             Eigen::VectorXd hi;
             for (const std::vector<size_t>& seg : members)
                 for (size_t i : seg) {
                     hatT({{i, 1.0}}, &hi);  // row i of H
-                    const Eigen::Index ii = static_cast<Eigen::Index>(i);
-                    tr += -S(ii, ii) + hi.dot(S.col(ii));
+                    Eigen::VectorXd row = -hi;
+                    row(static_cast<Eigen::Index>(i)) += 1;  // row i of I − H
+                    sum += (row - S.transpose() * row).squaredNorm();
                 }
         }
-        *dof = tr;
+        *dof = sum;
     }
     return out;
 }
@@ -1010,6 +1012,7 @@ PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& o
     if (!checkPostfitInputs(t, oc, use, tof, p, &used, &res)) return res;
     const size_t n = t.size();
     res.binLengthS = p.binLengthS > 0 ? p.binLengthS : normalPointBinS(p.altitudeKm);
+    res.dayStartS = p.dayStartS;
     // Used points in time order.
     std::vector<uint32_t> ord;
     for (size_t i = 0; i < n; ++i)

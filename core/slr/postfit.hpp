@@ -160,6 +160,7 @@ struct PostfitResult {
     long long rejected = 0;             ///< of those, removed by the k·σ rejection
     bool converged = true;
     double binLengthS = 0;
+    double dayStartS = 0;               ///< the bins' origin (PostfitParams::dayStartS)
     double splitGapS = 0;               ///< the gap the trend was split at (s; ≤ 0 none): splitGapS or its automatic value
     int minPointsPerBin = 0;            ///< the ILRS minimum used (the larger one when bins differ)
     int dayBins = 0, nightBins = 0;     ///< bins judged by the Sun's elevation (station given)
@@ -174,21 +175,22 @@ struct PostfitResult {
 PostfitResult postfit(const std::vector<double>& t, const std::vector<double>& oc, const std::vector<uint8_t>& use,
                       const std::vector<double>& tof, const PostfitParams& params, const Feedback* fb = nullptr);
 
-/// How much of each normal point's error its fitted trends carry (issue 43: on a sparse pass
-/// without a prediction, normal points 5-70 mm off where the stations' 100-200 ps allow a few).
+/// How much of each normal point's error its fitted trends carry (issue 43: on sparse passes
+/// without a prediction, normal points 5-73 mm off where the stations' 100-200 ps allow a few).
 /// A normal point is the trend at its epoch point j plus the mean residual of its bin's kept
 /// points B; the trends are fitted to the same points, so its error against the mean of B's
 /// true errors is, to first order, a combination d·ε of the points' errors with
 /// d = g − (I − S)ᵀ(I − H)ᵀg, g = e_j − 1_B/|B|, H the post-fit's hat matrix (its segments' bases
 /// at their kept points) and S the O-C trend's (∂trend_i/∂tof_k: PassData::trendHat, row-major
 /// n×n; empty for a prediction, which is not fitted to the pass). Per normal point of r, ‖d‖:
-/// its trend error's standard deviation in units of a single shot's. *dof (when given): the
-/// kept points less the fits' effective parameters, the trace of (I − H)(I − S) over them.
-/// `dayStartS` as the post-fit's PostfitParams::dayStartS (the bins' origin). NaN for a pass of
-/// more than kMaxTrendFactorPoints points (the cost grows as n²; such a pass's bins hold tens of
-/// points or more, over which a trend of a dozen coefficients moves a normal point little).
+/// its trend error's standard deviation in units of a single shot's. *dof (when given): what
+/// the kept residuals' sum of squares is in units of a single shot's variance, the sum over the
+/// kept points of the squared rows of (I − H)(I − S) (without S, the kept points less the
+/// segments' ranks). NaN everywhere for a pass of more than kMaxTrendFactorPoints points (the
+/// cost grows as n²; such a pass's bins hold tens of points or more, over which a trend of a
+/// dozen coefficients moves a normal point little), or where r or trendHat do not fit t.
 inline constexpr size_t kMaxTrendFactorPoints = 5000;
-std::vector<double> normalPointTrendFactors(const std::vector<double>& t, const PostfitResult& r, double dayStartS,
+std::vector<double> normalPointTrendFactors(const std::vector<double>& t, const PostfitResult& r,
                                             const std::vector<double>& trendHat, double* dof = nullptr);
 
 /// The fitted trend at epoch t (s of O-C): the segment holding t, else the nearest one.
