@@ -396,6 +396,8 @@ private slots:
         size_t beyondBound = 0, boundOver = 0, arcBeyondBound = 0, arcOver5 = 0, arcFailed = 0;
         size_t confidentBeyond = 0, withinWithheld = 0;  // NPs beyond the tolerance the run delivers; within it, not delivered
         std::vector<double> zs;  // per NP: |error| over the run's own one-sigma estimate of it
+        size_t delivered = 0, deliveredOver5 = 0;
+        double deliveredWorst = 0;
         double arcWorst = 0;
         for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
             if (qEnvironmentVariableIsSet("LWB_SPARSE_SEED") && seed != qEnvironmentVariable("LWB_SPARSE_SEED").toULongLong()) continue;
@@ -451,6 +453,11 @@ private slots:
                 } else if (!a.npDelivered[k]) {
                     ++withinWithheld;
                 }
+                if (a.npDelivered[k]) {
+                    ++delivered;
+                    deliveredOver5 += std::fabs(e) > 5;
+                    deliveredWorst = std::max(deliveredWorst, std::fabs(e));
+                }
             }
             boundOver += boundOver5;
             worstAfter = std::max(worstAfter, worstAbs(a.npErrMm));
@@ -484,8 +491,8 @@ private slots:
         qInfo("  the arc without the circular orbit: %zu normal points beyond max(5 mm, 4 bounds), %zu passes over 5 mm, worst "
               "%.1f mm, %zu failed", arcBeyondBound, arcOver5, arcWorst, arcFailed);
         qInfo("  delivered by the run (the pass not doubtful, the NP not dropped as imprecise): %zu of the %zu NPs beyond "
-              "max(5 mm, 4 bounds); %zu of the %zu within withheld", confidentBeyond, beyondBound, withinWithheld,
-              nps - beyondBound);
+              "max(5 mm, 4 bounds); %zu of the %zu within withheld; of the %zu delivered, %zu over 5 mm (worst %.2f mm)",
+              confidentBeyond, beyondBound, withinWithheld, nps - beyondBound, delivered, deliveredOver5, deliveredWorst);
         std::sort(zs.begin(), zs.end());
         const auto zq = [&](double q) { return zs.empty() ? NAN : zs[size_t(q * double(zs.size() - 1))]; };
         qInfo("  |NP error| over the run's own one-sigma estimate of it (normalPointTrendErrors), %zu NPs: median %.2f, 90th "
@@ -505,6 +512,7 @@ private slots:
         // pass doubtful, or the NP dropped as imprecise: pass_run.hpp kMaxNpTrendErrorMm), at a
         // cost of at most a quarter of the others.
         QCOMPARE(confidentBeyond, size_t(0));
+        QCOMPARE(deliveredOver5, size_t(0));  // every normal point the run delivers within 5 mm of the truth
         // The estimate is the errors' scale at their core (median |z| 0.45-0.95, a Gaussian's 0.67),
         // not an underestimate by half or an overestimate by half; its tail is heavier (noise kept
         // and minima the linearisation does not see).
@@ -514,11 +522,15 @@ private slots:
 
     // The ERS-class pass: 785 km, 18 records at 10 Hz (12 returns in bursts, 6 noise
     // points in a 1 us gate), bins of 15 s; seeds 1-20, measured with the arc allowed and with
-    // the polynomial alone. Asserted: the arc keeps more returns and no pass fails.
+    // the polynomial alone. Asserted: the arc keeps more returns and no pass fails. Printed: the
+    // normal points the run delivers that are over 5 mm from the truth (2026-12-07: 2 of 14 with
+    // the arc, seed 14 through 2 kept noise points, seed 15 through the arc's misfit, which the
+    // run's estimate of its precision, a variance, does not show; not asserted yet).
     void ersClassPass() {
         QTemporaryDir dir;
         double worst[2] = {0, 0};
         size_t lost[2] = {0, 0}, noiseKept[2] = {0, 0}, failed[2] = {0, 0}, over5[2] = {0, 0};
+        size_t delivered[2] = {0, 0}, deliveredOver5[2] = {0, 0};  // NPs the run delivers; of them over 5 mm
         for (uint64_t seed = 1; seed <= 20; ++seed) {
             sim::SparseLeoParams p;
             p.altitudeKm = 785;
@@ -538,12 +550,21 @@ private slots:
                 noiseKept[arc] += a.noiseKept;
                 worst[arc] = std::max(worst[arc], worstAbs(a.npErrMm));
                 over5[arc] += worstAbs(a.npErrMm) > 5;
+                for (size_t k = 0; k < a.npErrMm.size(); ++k) {
+                    delivered[arc] += a.npDelivered[k];
+                    deliveredOver5[arc] += a.npDelivered[k] && std::fabs(a.npErrMm[k]) > 5;
+                    if (a.npDelivered[k] && std::fabs(a.npErrMm[k]) > 5)
+                        qInfo("  seed %d (%s): NP %.1f mm from the truth delivered, estimate %.2f mm, %zu noise kept, %zu of %zu returns",
+                              int(seed), arc ? "arc" : "polynomial", a.npErrMm[k], a.npTrendErrMm[k], a.noiseKept, a.signalKept, a.signal);
+                }
             }
         }
         for (int arc = 0; arc < 2; ++arc)
             qInfo("ERS-class passes (12 returns + 6 noise, 785 km), 20 seeds, %s: %zu failed, %zu of 240 returns rejected, "
-                  "%zu noise points kept, %zu passes with an NP over 5 mm, worst NP %.1f mm from the truth",
-                  arc ? "orbit arc allowed" : "polynomial alone", failed[arc], lost[arc], noiseKept[arc], over5[arc], worst[arc]);
+                  "%zu noise points kept, %zu passes with an NP over 5 mm, worst NP %.1f mm from the truth; the run delivers %zu "
+                  "NPs, %zu of them over 5 mm",
+                  arc ? "orbit arc allowed" : "polynomial alone", failed[arc], lost[arc], noiseKept[arc], over5[arc], worst[arc],
+                  delivered[arc], deliveredOver5[arc]);
         QCOMPARE(failed[1], size_t(0));
         QVERIFY(lost[1] < lost[0]);
     }
