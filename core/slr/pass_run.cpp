@@ -500,8 +500,7 @@ std::vector<double> normalPointTrendErrors(const PassData& pass, const PostfitRe
 
 namespace {
 // On a short pass on its own fitted TOF trend (PassData::trendHat), each normal point's
-// precision as the fitted trends leave it (normalPointTrendFactors times the kept residuals'
-// scale over the fits' degrees of freedom) into NormalPoint::trendErrorS; those beyond
+// precision as the fitted trends leave it (normalPointTrendErrors); those beyond
 // kMaxNpTrendErrorMm are dropped with the reason, and a pass left with none is doubtful (issue
 // 43: on sparse LEO passes without a prediction, normal points 5-73 mm off that the trends,
 // fitted to the same 10-30 points, had moved). A normal point whose precision could not be
@@ -511,9 +510,8 @@ void dropImpreciseNormalPoints(const PassData& pass, PassRunResult* r) {
     std::vector<NormalPoint> precise;
     std::string why;
     for (size_t k = 0; k < r->post.normalPoints.size(); ++k) {
-        NormalPoint& np = r->post.normalPoints[k];
-        np.trendErrorS = error[k];
-        const double mm = np.trendErrorS * 0.5 * kSpeedOfLight * 1e3;
+        const NormalPoint& np = r->post.normalPoints[k];
+        const double mm = error[k] * 0.5 * kSpeedOfLight * 1e3;
         if (mm <= kMaxNpTrendErrorMm) {
             precise.push_back(np);
         } else if (why.empty()) {  // (NaN: not estimated, so not known to be precise)

@@ -103,7 +103,7 @@ struct BinEvidence {
 inline constexpr double kMaxBinFalseAlarm = 1e-3;
 inline constexpr double kMaxBinNoiseShare = 0.10;
 /// On a short pass without a prediction (its own fitted TOF trend, PassData::trendHat), a
-/// normal point whose fitted trends' share of its error (NormalPoint::trendErrorS, one sigma,
+/// normal point whose fitted trends' share of its error (normalPointTrendErrors, one sigma,
 /// one-way) exceeds this many mm is dropped (PassTask): 2.5 sigma within the 5 mm a LEO normal
 /// point is held to. Measured on 120 simulated sparse LEO passes (tests/test_slr_sparse_leo.cpp,
 /// docs/slr-detection.md): every normal point beyond max(5 mm, 4 Cramér–Rao bounds) is withheld.

@@ -121,9 +121,6 @@ struct NormalPoint {
     uint32_t pointIndex = 0;    ///< input index of the epoch point
     int minPoints = 0;          ///< the minimum this bin had to reach (6 day, 3 night, or as given)
     double sunElevationDeg = NAN;  ///< at the station at the epoch, when the station was given
-    /// The fitted trends' share of its error, one standard deviation (two-way s): the kept
-    /// residuals' scale times normalPointTrendFactors (PassTask fills it); NaN when not known.
-    double trendErrorS = NAN;
 };
 
 /// One piece of the trend over [tStart, tEnd] (the used points of the segment): Legendre
