@@ -79,7 +79,8 @@ private slots:
     // sqrt(sum (x - mean x)^2) single-shot sigmas (a constant, by none). Monte Carlo (4000 passes
     // of 30 points of Gaussian noise, bins of 10, a line as the post-fit; and again on the O-C of
     // a weighted fit of 1, cos, sin to the TOF first, S its hat matrix: not symmetric, and
-    // neither its span nor the line's holds the other, so that H and S both count): each bin's
+    // neither its span nor the line's holds the other, so that H and S both count; and again
+    // with a post-fit that must be a cubic spline of two intervals): each bin's
     // RMS error against the mean of its points' true errors agrees with sigma times the factor
     // within 5 % (the Monte Carlo's own error is about 1.1 %), and the kept residuals' mean sum
     // of squares with sigma^2 times dof within 3 % (its own error about 0.4 %).
@@ -122,7 +123,17 @@ private slots:
         pp.degree = 1;
         pp.binLengthS = 10;
         const double sigma = 100e-12;
-        for (const bool withTrend : {false, true}) {
+        // Third: the same trend, and on the O-C a cubic with a jump of its third derivative at
+        // t = 14.5, (t - 14.5)^3 where positive, up to 5 ns: a cubic spline of two intervals, which
+        // the post-fit's BIC (degree up to 3, or splines) must take on every draw, so that H is a
+        // spline segment's.
+        for (const int variant : {0, 1, 2}) {
+            const bool withTrend = variant > 0, spline = variant == 2;
+            PostfitParams q = pp;
+            if (spline) {
+                q.autoDegree = true;
+                q.degree = 3;
+            }
             Rng rng(7);
             std::vector<double> sum2(3, 0.0), factor;
             double dof = NAN, ssr = 0;
@@ -132,9 +143,12 @@ private slots:
                 for (double& v : y) v = 0.05 + rng.normal(0, sigma);  // the TOF: a constant 50 ms plus noise
                 const Eigen::VectorXd yv = Eigen::Map<const Eigen::VectorXd>(y.data(), Eigen::Index(n));
                 const Eigen::VectorXd fit = withTrend ? Eigen::VectorXd(S * yv) : Eigen::VectorXd::Constant(Eigen::Index(n), 0.05);
-                for (size_t i = 0; i < n; ++i) oc[i] = y[i] - fit(Eigen::Index(i));
-                const PostfitResult r = postfit(t, oc, {}, y, pp);
+                for (size_t i = 0; i < n; ++i)
+                    oc[i] = y[i] - fit(Eigen::Index(i)) + (spline && t[i] > 14.5 ? 1.6e-12 * std::pow(t[i] - 14.5, 3) : 0.0);
+                const PostfitResult r = postfit(t, oc, {}, y, q);
                 QVERIFY2(r.ok && r.normalPoints.size() == 3, r.error.c_str());
+                QCOMPARE(r.segments.size(), size_t(1));
+                QCOMPARE(r.segments[0].knots, spline ? 2 : 0);
                 if (trial == 0) factor = normalPointTrendFactors(t, r, withTrend ? hat : std::vector<double>(), &dof);
                 for (size_t i = 0; i < n; ++i) ssr += r.residuals[i] * r.residuals[i];
                 for (size_t b = 0; b < 3; ++b) {
@@ -144,7 +158,7 @@ private slots:
                     sum2[b] += err * err;
                 }
             }
-            const char* what = withTrend ? "O-C of a weighted fit of 1, cos, sin" : "no trend";
+            const char* what = spline ? "the same with a spline post-fit" : withTrend ? "O-C of a weighted fit of 1, cos, sin" : "no trend";
             for (size_t b = 0; b < 3; ++b) {
                 const double rms = std::sqrt(sum2[b] / trials), want = sigma * factor[b];
                 qInfo("%s, bin %zu: RMS error %.2f ps, stated %.2f ps", what, b, rms * 1e12, want * 1e12);
