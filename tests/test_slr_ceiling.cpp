@@ -163,11 +163,13 @@ private slots:
     // The points the post-fit's band takes are a class of their own, the same in the run, the
     // CLI's CSV and its summary: "band" rows exactly where the run took them, accepted exactly
     // where the class is not noise, and the summary's noise count the points not accepted (it
-    // had counted the band's points both as accepted and as noise).
+    // had counted the band's points both as accepted and as noise). On the low-SNR pass of
+    // seed 6 the screening and the track following leave a return that the band takes (seed 7's
+    // two are followed since the walk no longer ends where its band expects 5 noise points).
     void bandPointsAreAClassEverywhere() {
         QTemporaryDir dir;
-        const QString frd = dir.path() + "/day7.frd";
-        lwbtest::CliRun sim = lwbtest::runCli({"simulate", "slr", "--kind", "daylight", "--day", "--seed", "7", "-q", frd});
+        const QString frd = dir.path() + "/day6.frd";
+        lwbtest::CliRun sim = lwbtest::runCli({"simulate", "slr", "--kind", "daylight", "--day", "--seed", "6", "-q", frd});
         QVERIFY2(sim.exitCode == 0, qPrintable(sim.err));
         const PassInputResult in = loadPass(frd.toStdString(), 0, PassInputParams{});
         QVERIFY2(in.ok, in.error.c_str());
@@ -176,7 +178,7 @@ private slots:
         QVERIFY2(passSettings(in.pass, commandDefaults(), nullptr, "", nullptr, &set, &err), err.c_str());
         const PassRunResult r = runPass(in.pass, set.params);
         QVERIFY2(r.ok && r.postOk, r.error.c_str());
-        QVERIFY2(r.bandTaken > 0, "the low-SNR pass of seed 7 has returns the image left within the band");
+        QVERIFY2(r.bandTaken > 0, "the low-SNR pass of seed 6 has a return the image and the following left within the band");
         QCOMPARE(r.classes.size(), in.pass.t.size());
         long long band = 0;
         for (size_t i = 0; i < r.classes.size(); ++i) {
@@ -185,7 +187,7 @@ private slots:
             if (r.classes[i] == PointClass::Band) QCOMPARE(r.screen.pointClass[i], PointClass::Noise);
         }
         QCOMPARE(band, r.bandTaken);
-        const QString csv = dir.path() + "/day7.csv";
+        const QString csv = dir.path() + "/day6.csv";
         lwbtest::CliRun cli = lwbtest::runCli({"slr", frd, "-o", csv});
         QVERIFY2(cli.exitCode == 0, qPrintable(cli.err));
         const QList<QByteArray> rows = lwbtest::readAll(csv).split('\n');

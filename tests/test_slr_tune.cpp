@@ -135,6 +135,29 @@ private slots:
                      qPrintable(p.toObject().value("pass").toString()));
     }
 
+    // A choice that does not hold out is not made: on three 200 s low-SNR daylight passes of the
+    // dayspad kind (4 000 points each, 3 % returns fading with range) the best candidate on all
+    // three (cosine 0.90, rejection 3.5) scores less with each pass left out than the starting
+    // point does, so the entry written is the starting point's, with the note saying why.
+    void keepsTheStartWhenTheChoiceDoesNotHoldOut() {
+        const QStringList passes = simulate("dayspad", 1, 3, {"--day", "--duration", "200"});
+        const QString preset = m_dir.path() + "/holdout.json";
+        const lwbtest::CliRun r = runCli(QStringList{"slr", "tune"} + passes + QStringList{"--preset-out", preset});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.err.contains("does not hold out") && r.err.contains("the starting point is kept"), qPrintable(r.err));
+        const QRegularExpressionMatch m =
+            QRegularExpression(R"(([0-9.]+) before, ([0-9.]+) after, ([0-9.]+) held out)").match(r.out + r.err);
+        QVERIFY2(m.hasMatch(), qPrintable(r.out + r.err));
+        QCOMPARE(m.captured(2), m.captured(1));                              // nothing chosen
+        QVERIFY(m.captured(3).toDouble() <= m.captured(1).toDouble());       // what the choice would have held out
+        // The entry: the command's defaults (cosine 0.95, rejection 3, the band taken).
+        QVERIFY2(r.out.contains("cosine_c=0.95 reject_sigma=3.0 take_band=true (the starting point)"), qPrintable(r.out));
+        const QJsonObject e = readJson(preset).value("satellites").toArray().at(0).toObject();
+        QCOMPARE(e.value("screen").toObject().value("cosine_c").toDouble(), 0.95);
+        QCOMPARE(e.value("postfit").toObject().value("reject_sigma").toDouble(), 3.0);
+        QCOMPARE(e.value("postfit").toObject().value("take_band").toBool(), true);
+    }
+
     // A pass whose flags are all 0 has no labels: refused with the pass named, nothing written.
     void refusesPassesWithoutLabels() {
         const QString src = simulate("leo", 1, 1).front(), blind = m_dir.path() + "/blind.frd";

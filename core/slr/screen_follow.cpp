@@ -359,7 +359,8 @@ private:
             if (L == 0) L = 3 * s.spacing;
             bool metTrack = false, pastEnd = true;
             candidates(s, front, dir, L, &metTrack, &pastEnd);
-            // Expected noise in the search band over the window (trapezoid over 16 steps).
+            // Expected noise in the search band over the window (trapezoid over 16 steps): with
+            // it the test below counts how many narrow bands the wide one holds (look-elsewhere).
             const double tEnd = s.tf + dir * L;
             double area = 0, bandA = band(s, s.tf);
             for (int q = 0; q < 16; ++q) {
@@ -369,9 +370,12 @@ private:
             }
             const double rho = densityOver(s.tf, tEnd);
             const double eWide = area * rho;
-            // A band that noise fills (or too many candidates to sort out) is no prediction: the
-            // track is lost here.
-            if (cand_.size() > 64 || eWide > 5) break;
+            // Too many candidates to sort out: the track is lost here. (A wide band is not, by
+            // itself: until 2026-12-07 the walk also ended where the band expected more than 5
+            // noise points, and on sparse, steep stretches, whose extrapolated band widens faster
+            // than the returns come, it stopped with returns left on both sides; the Poisson test
+            // with the band's look-elsewhere factor is what decides, docs/slr-detection.md.)
+            if (cand_.size() > 64) break;
             // Beyond a gap the candidates are judged among themselves (a fit across the gap
             // would have to bend to both sides), when there are enough of them.
             const bool jump = !cand_.empty() && dir * (T_[cand_.front()] - s.tf) > 4 * s.spacing;

@@ -62,7 +62,8 @@ struct TuneResult {
     std::vector<TunedPass> passes;
     size_t best = 0;                        ///< index of the chosen candidate
     double heldOutMeanF1 = 0;               ///< mean of TunedPass::heldOutF1
-    std::vector<std::string> notes;         ///< passes left out (another satellite, not a pass) and why
+    std::vector<std::string> notes;         ///< passes left out (another satellite, not a pass) and why; a choice
+                                            ///< that did not hold out (leave-one-pass-out), kept as the start
     std::vector<std::string> filesRead;     ///< the files the passes came from (a folder's CRD files by name)
 };
 
