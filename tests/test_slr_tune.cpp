@@ -3,7 +3,8 @@
 // Simulated passes carry the truth as their flags (2 signal, 1 noise), so the labels are exact.
 // Asserted: on a kind where the defaults leave returns out (the noisy Jason-class LEO kind) the
 // tuning gains and the gain holds on passes it never saw; on a kind at its ceiling (low-SNR
-// daylight) it keeps the starting point; passes without labels, of several satellites or as O-C
+// daylight) it keeps the starting point, as it does where its choice does not hold out (leave
+// one pass out); passes without labels, of several satellites or as O-C
 // tables are refused with the reason and nothing is written; an existing presets file keeps its
 // other entries.
 #include <QJsonArray>
@@ -144,12 +145,17 @@ private slots:
         const QString preset = m_dir.path() + "/holdout.json";
         const lwbtest::CliRun r = runCli(QStringList{"slr", "tune"} + passes + QStringList{"--preset-out", preset});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        QVERIFY2(r.err.contains("does not hold out") && r.err.contains("the starting point is kept"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("the best candidate (cosine_c=0.90 reject_sigma=3.5 take_band=true") &&
+                     r.err.contains("does not hold out") && r.err.contains("the starting point is kept"),
+                 qPrintable(r.err));
+        const QJsonObject record = tuning(preset);  // the provenance names the candidate not taken
+        QCOMPARE(record.value("not_held_out").toString(), QString("cosine_c=0.90 reject_sigma=3.5 take_band=true"));
+        QVERIFY(record.value("not_held_out_f1").toDouble() > record.value("f1_before").toDouble());
         const QRegularExpressionMatch m =
             QRegularExpression(R"(([0-9.]+) before, ([0-9.]+) after, ([0-9.]+) held out)").match(r.out + r.err);
         QVERIFY2(m.hasMatch(), qPrintable(r.out + r.err));
         QCOMPARE(m.captured(2), m.captured(1));                              // nothing chosen
-        QVERIFY(m.captured(3).toDouble() <= m.captured(1).toDouble());       // what the choice would have held out
+        QVERIFY(m.captured(3).toDouble() <= m.captured(1).toDouble());       // the choices without each pass held out no better
         // The entry: the command's defaults (cosine 0.95, rejection 3, the band taken).
         QVERIFY2(r.out.contains("cosine_c=0.95 reject_sigma=3.0 take_band=true (the starting point)"), qPrintable(r.out));
         const QJsonObject e = readJson(preset).value("satellites").toArray().at(0).toObject();

@@ -445,7 +445,7 @@ void bindRuns(py::module_& m) {
           "--session; cpf and stations: the O-C from the prediction, as --cpf, --stations, cpf_fallback as\n"
           "--cpf-fallback) screened with each candidate, the best mean F1 against the\n"
           "flags chosen (another than the starting point only for a gain beyond 0.001 that loses on no pass\n"
-          "more than 0.002), leave-one-pass-out. preset: start from the satellite's entry of this presets\n"
+          "more than 0.002, and only when it holds out, leave one pass out, better than the starting point). preset: start from the satellite's entry of this presets\n"
           "file; preset_out: write the entry there (its other entries kept) with its provenance, the CLI's\n"
           "bytes. Returns the record: satellite, chosen, f1_before, f1_after, f1_held_out, passes, notes.");
     m.def("default_params", [] { return slr::commandDefaults(); }, "The defaults of laserwb-cli slr.");

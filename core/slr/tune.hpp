@@ -5,7 +5,7 @@
 // the post-fit's rejection k and whether its band takes the image's leftovers), the command's
 // own settings first; the candidate with the best mean F1 of the delivered flags against the
 // labels is chosen, and leave-one-pass-out says how well that choice holds on a pass it was not
-// chosen on. `laserwb-cli slr tune` writes it as the satellite's preset entry, with provenance.
+// chosen on (a choice that holds out no better than the starting point is not made). `laserwb-cli slr tune` writes it as the satellite's preset entry, with provenance.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -62,6 +62,10 @@ struct TuneResult {
     std::vector<TunedPass> passes;
     size_t best = 0;                        ///< index of the chosen candidate
     double heldOutMeanF1 = 0;               ///< mean of TunedPass::heldOutF1
+    /// The candidate the choice on all the passes took when it did not hold out (leave-one-pass-out
+    /// F1 no better than the starting point's): best is then 0; 0 when it held out or was the start.
+    size_t notHeldOut = 0;
+    double startMeanF1 = 0;                 ///< the starting point's mean F1 (candidate 0's)
     std::vector<std::string> notes;         ///< passes left out (another satellite, not a pass) and why; a choice
                                             ///< that did not hold out (leave-one-pass-out), kept as the start
     std::vector<std::string> filesRead;     ///< the files the passes came from (a folder's CRD files by name)

@@ -491,9 +491,10 @@ private slots:
     // three dropped beside the noise, the summary headed its count "No normal points"; the points
     // the post-fit's band took were drawn (and counted) as "recovered". The summary gives the
     // count with the note under it, the band's two lines, and the band's points are a series of
-    // their own with the run's count. (Seed 6: its band takes a return the screening and the
-    // track following left; seed 7's two are followed since the walk no longer ends where its
-    // band expects 5 noise points.)
+    // their own with the run's count. (Seed 6, as seed 7 was: normal points with a note, 9 of them
+    // dropped beside the noise, and a return the screening and the track following left that the
+    // band takes; seed 7's two are followed since the walk no longer ends where its band expects
+    // 5 noise points.)
     void lowSnrPassShowsItsBandAndItsNormalPoints() {
         const QString frd = m_dir.path() + "/day6.frd";
         QCOMPARE(lwbtest::runCli({"simulate", "slr", "--kind", "daylight", "--day", "--seed", "6", "-q", frd}).exitCode, 0);

@@ -4625,6 +4625,10 @@ The criteria are tuned on the shots you gave a manual verdict (Accept A, Reject 
         <translation>&lt;p&gt;&lt;b&gt;保持起始参数&lt;/b&gt;：没有候选参数在任一过境损失不超过 0.002 的前提下比它高出 0.001 以上。&lt;/p&gt;</translation>
     </message>
     <message>
+        <source>&lt;p&gt;&lt;b&gt;The starting point stays&lt;/b&gt;: the best candidate, %1 (mean F1 %2), does not hold out: the choices made without each pass in turn score %3 on the passes left out, the starting point %4.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;保持起始参数&lt;/b&gt;：最佳候选参数 %1（平均 F1 %2）未通过留一验证：依次留出每个过境、在其余过境上所作的选择，在留出的过境上得分 %3，起始参数为 %4。&lt;/p&gt;</translation>
+    </message>
+    <message>
         <source>&lt;p&gt;Chosen: &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;选定：&lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>

@@ -693,9 +693,15 @@ QDialog* SlrWorkspace::tuneOn(const QString& input, const QString& title) {
                        .arg(r.passes.size())
                        .arg(QString::fromStdString(r.satellite).toHtmlEscaped())
                        .arg(r.candidates.size());
-    html += r.best == 0 ? tr("<p><b>The starting point stays</b>: no candidate beats it by more than 0.001 without losing "
-                             "more than 0.002 on a pass.</p>")
-                        : tr("<p>Chosen: <b>%1</b></p>").arg(QString::fromStdString(best.label).toHtmlEscaped());
+    if (r.best == 0 && r.notHeldOut != 0)
+        html += tr("<p><b>The starting point stays</b>: the best candidate, %1 (mean F1 %2), does not hold out: the choices "
+                   "made without each pass in turn score %3 on the passes left out, the starting point %4.</p>")
+                    .arg(QString::fromStdString(r.candidates[r.notHeldOut].label).toHtmlEscaped())
+                    .arg(f1(r.candidates[r.notHeldOut].meanF1), f1(r.heldOutMeanF1), f1(r.startMeanF1));
+    else
+        html += r.best == 0 ? tr("<p><b>The starting point stays</b>: no candidate beats it by more than 0.001 without losing "
+                                 "more than 0.002 on a pass.</p>")
+                            : tr("<p>Chosen: <b>%1</b></p>").arg(QString::fromStdString(best.label).toHtmlEscaped());
     html += QStringLiteral("<table cellpadding='3'><tr><th align='left'>%1</th><th>%2</th><th>%3</th><th>%4</th><th>%5</th></tr>")
                 .arg(tr("Pass"), tr("Points (data)"), tr("F1 now"), tr("F1 chosen"), tr("Held out"));
     for (const TunedPass& p : r.passes) {
