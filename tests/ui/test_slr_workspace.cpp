@@ -1823,6 +1823,9 @@ private slots:
         QVERIFY(d && d->isVisible());
         auto* text = d->findChild<QLabel*>("tuningText");
         QVERIFY(text);
+        // (a real window: a long headline ran past the screen's edge with the buttons; it wraps)
+        QVERIFY(text->wordWrap());
+        QVERIFY2(d->sizeHint().width() <= 1400, qPrintable(QString::number(d->sizeHint().width())));
         QVERIFY2(text->text().contains("simsat-leo") && text->text().contains("Held out") &&
                      text->text().contains(QString::number(expected.heldOutMeanF1, 'f', 4)),
                  qPrintable(text->text()));

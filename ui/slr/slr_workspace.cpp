@@ -722,6 +722,8 @@ QDialog* SlrWorkspace::tuneOn(const QString& input, const QString& title) {
     // (a folder's files by their names, as in the table)
     const QString folderPrefix = QFileInfo(input).isDir() ? input + (input.endsWith('/') ? "" : "/") : QString();
     for (const std::string& n : r.notes) {
+        // (the choice that did not hold out is the headline's already)
+        if (r.notHeldOut != 0 && n.rfind("the best candidate (", 0) == 0) continue;
         QString note = QString::fromStdString(n);
         if (!folderPrefix.isEmpty()) note.replace(folderPrefix, QString());
         html += QStringLiteral("<p>%1</p>").arg(note.toHtmlEscaped());
@@ -729,6 +731,7 @@ QDialog* SlrWorkspace::tuneOn(const QString& input, const QString& title) {
     auto* text = new QLabel(html, d);
     text->setObjectName("tuningText");
     text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    text->setWordWrap(true);  // (a long headline or note ran past the screen's edge, the buttons with it)
     lay->addWidget(text);
     auto* buttons = new QDialogButtonBox(d);
     QPushButton* apply = buttons->addButton(tr("Apply to this pass"), QDialogButtonBox::AcceptRole);
