@@ -463,6 +463,37 @@ private slots:
                  qPrintable(QString("first return found %1 s late").arg(pass.epochS[firstFound] - pass.epochS[first])));
     }
 
+    // A scale given by hand that joins a kHz pass's whole gate into one region (mag_T 0.2,
+    // mag_OC 4e9 on a pass the automatic mode screens at 2 and 4e10): every point is accepted,
+    // the post-fit's 3σ window spans the gate, no noise is left beside it to measure, and its 21
+    // normal points were delivered with exit 0 (a 10^7-event pass: 56 ns RMS, 10 % signal). The
+    // window's flat shape now refuses them; the automatic scale's stand.
+    void aScaleThatAcceptsTheWholeGateIsDoubtful() {
+        sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Khz);
+        sp.points = 100000;
+        sp.signalFraction = 0.1;
+        const sim::SlrSimPass s = sim::simulateSlrPass(sp, 1);
+        QVERIFY2(s.ok, s.error.c_str());
+        const slr::PassData pass = passOf(s, sp.altitudeKm);
+        slr::SlrParams automatic;
+        automatic.postfit.binLengthS = 30;  // the missions table's bin is the pass task's to give
+        slr::SlrParams coarse = automatic;
+        coarse.screen.automatic = false;
+        coarse.screen.magT = 0.2;
+        coarse.screen.magOc = 4e9;
+        coarse.screen.areaLimit = 12;
+        coarse.screen.connectivity = 8;
+        const slr::PassRunResult bad = slr::runPass(pass, coarse);
+        QVERIFY2(bad.ok, bad.error.c_str());
+        QVERIFY(bad.acceptedCount > 99000);
+        qInfo("accepted %zu, post-fit RMS %.1f ps, %zu normal points; %s", size_t(bad.acceptedCount), bad.post.stats.rms * 1e12, bad.post.normalPoints.size(), bad.doubt.c_str());
+        QVERIFY2(bad.doubt.find("fill the post-fit's window evenly") != std::string::npos, bad.doubt.c_str());
+        QVERIFY(bad.post.normalPoints.empty());
+        const slr::PassRunResult good = slr::runPass(pass, automatic);
+        QVERIFY2(good.ok && good.doubt.empty(), good.doubt.c_str());
+        QVERIFY(good.post.normalPoints.size() >= 18);
+    }
+
     // ---------------------------------------------------------------- track following
     void trackFollowingBridgesAGapAndLeavesNoiseAlone() {
         // A curved track (8 ns/s, 0.02 ns/s²) with 60 ps jitter, 2 returns/s over 0..300 s except

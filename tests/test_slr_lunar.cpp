@@ -212,6 +212,46 @@ private slots:
         QVERIFY2(100 * advNoise <= 15 * advKept, qPrintable(QString("%1 of %2").arg(advNoise).arg(advKept)));
     }
 
+    // The flat-window threshold (kMinTrackPeakedness) on 3 000 draws of 300 points each, clipped
+    // at 3σ as the post-fit clips: a Gaussian track (with or without an exponential tail, or half
+    // of its window noise) is refused at most 0.2 % of the time; noise filling the window is
+    // refused at least 97 % of the time.
+    void flatWindowThresholdTellsTrackFromNoise() {
+        Rng rng(11);
+        auto refusedShare = [&](int kind) {
+            int refused = 0;
+            for (int draw = 0; draw < 3000; ++draw) {
+                slr::PostfitResult post;
+                for (int i = 0; i < 300; ++i) {
+                    double r = rng.normal();
+                    if (kind == 1) r += -1.5 * std::log(1 - rng.uniform());  // exponential tail, 1.5σ
+                    if (kind == 2 && rng.uniform() < 0.5) r = rng.uniform(-3, 3);
+                    if (kind == 3) r = rng.uniform(-1, 1);
+                    post.residuals.push_back(r * 1e-10);
+                }
+                post.kept.assign(300, 1);
+                for (int round = 0; round < 10; ++round) {
+                    double s1 = 0, s2 = 0, n = 0;
+                    for (int i = 0; i < 300; ++i)
+                        if (post.kept[size_t(i)]) {
+                            s1 += post.residuals[size_t(i)];
+                            s2 += post.residuals[size_t(i)] * post.residuals[size_t(i)];
+                            ++n;
+                        }
+                    const double mean = s1 / n, sd = std::sqrt(std::max(0.0, s2 / n - mean * mean));
+                    for (int i = 0; i < 300; ++i)
+                        if (std::fabs(post.residuals[size_t(i)] - mean) > 3 * sd) post.kept[size_t(i)] = 0;
+                }
+                if (!slr::flatWindowDoubt(post).empty()) ++refused;
+            }
+            return refused / 3000.0;
+        };
+        const double gauss = refusedShare(0), tail = refusedShare(1), half = refusedShare(2), flat = refusedShare(3);
+        qInfo("refused: Gaussian %.4f, with a tail %.4f, half flat %.4f, flat %.4f", gauss, tail, half, flat);
+        QVERIFY(gauss <= 0.002 && tail <= 0.002 && half <= 0.002);
+        QVERIFY(flat >= 0.97);
+    }
+
     // The evidence of a bin on hand-made residuals: a dense track among sparse noise stands; the
     // same track at the gate's edge, or among noise as dense as itself, does not.
     void binEvidenceOnHandMadeBins() {
@@ -252,6 +292,73 @@ private slots:
             const auto [t, post] = make(0, 30, -100e-9, 100e-9, 3);  // 27 noise a window: 30 on it is no track
             const auto e = slr::normalPointEvidence(t, post);
             QVERIFY2(!e[0].why.empty(), "a track as dense as the noise stood");
+        }
+        {
+            // The room to the gate's edge against the literal walk over every point of the bin
+            // (the 16 nearest points in time off the window, earlier first at a tie), with the
+            // epochs out of order and a second bin: the walk over the off-window points alone
+            // and the bins taken from an order sorted once give the same median.
+            auto [t, post] = make(0, 3, -20e-9, 35e-9, 4);
+            slr::NormalPoint second;
+            second.binStartS = 450;
+            second.windowS = 450;
+            post.normalPoints[0].windowS = 450;
+            post.normalPoints.push_back(second);
+            const auto e = slr::normalPointEvidence(t, post);
+            QCOMPARE(e.size(), size_t(2));
+            const double h = 3 * post.stats.rms;
+            for (size_t k = 0; k < 2; ++k) {
+                std::vector<std::pair<double, double>> pts;
+                for (size_t i = 0; i < t.size(); ++i)
+                    if (t[i] >= 450.0 * double(k) && t[i] < 450.0 * double(k + 1)) pts.emplace_back(t[i], post.residuals[i]);
+                std::sort(pts.begin(), pts.end());
+                std::vector<double> rooms;
+                for (size_t i = 0; i < pts.size(); ++i) {
+                    if (std::fabs(pts[i].second) > h) continue;
+                    double lo = -h, hi = h;
+                    size_t a = i, b = i, got = 0;
+                    while (got < 16 && (a > 0 || b + 1 < pts.size())) {
+                        const bool left = a > 0 && (b + 1 >= pts.size() || pts[i].first - pts[a - 1].first <= pts[b + 1].first - pts[i].first);
+                        const double r = pts[left ? --a : ++b].second;
+                        if (std::fabs(r) <= h) continue;
+                        lo = std::min(lo, r);
+                        hi = std::max(hi, r);
+                        ++got;
+                    }
+                    rooms.push_back(std::min(-h - lo, hi - h) / (2 * h));
+                }
+                QVERIFY(rooms.size() >= 10);
+                std::nth_element(rooms.begin(), rooms.begin() + long(rooms.size() / 2), rooms.end());
+                QCOMPARE(e[k].edgeRoom, rooms[rooms.size() / 2]);
+            }
+        }
+        // Every point within the window and none beside it (a scale that joins the whole gate
+        // into one region; a station's narrow gate): the counts cannot measure the noise, the
+        // window's shape judges. Noise filling the window is refused; a track (with a tail) stands.
+        for (const bool flat : {true, false}) {
+            slr::PostfitResult post;
+            Rng rng(flat ? 5 : 6);
+            std::vector<double> t;
+            for (int i = 0; i < 2000; ++i) {
+                t.push_back(rng.uniform(0, 900));
+                post.residuals.push_back(flat ? rng.uniform(-300e-12, 300e-12) : 150e-12 * rng.normal() + (rng.uniform(0, 1) < 0.2 ? 100e-12 : 0));
+            }
+            double ss = 0;
+            for (double r : post.residuals) ss += r * r;
+            post.stats.rms = std::sqrt(ss / 2000);
+            post.kept.assign(2000, 1);
+            for (size_t i = 0; i < 2000; ++i)
+                if (std::fabs(post.residuals[i]) > 3 * post.stats.rms) post.kept[i] = 0;
+            slr::NormalPoint np;
+            np.windowS = 900;
+            post.normalPoints.push_back(np);
+            const auto e = slr::normalPointEvidence(t, post);
+            if (flat) {
+                QCOMPARE(e[0].offPoints, 0LL);
+                QVERIFY2(e[0].why.find("fill the post-fit's window evenly") != std::string::npos, e[0].why.c_str());
+            } else {
+                QVERIFY2(e[0].why.empty(), e[0].why.c_str());
+            }
         }
     }
 };

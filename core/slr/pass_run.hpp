@@ -109,6 +109,17 @@ inline constexpr double kMaxBinNoiseShare = 0.10;
 /// docs/slr-detection.md): every normal point beyond max(5 mm, 4 Cramér–Rao bounds) is withheld.
 inline constexpr double kMaxNpTrendErrorMm = 2.0;
 inline constexpr double kMinEdgeRoom = 2;
+/// Where no bin has noise beside its window to measure (every point within the window), the
+/// kept residuals' shape judges the pass instead: a track is peaked, noise that fills the window
+/// is flat. Peakedness (q97.5 − q2.5)/(q75 − q25) of 300 3σ-clipped points (3 000 draws each,
+/// docs/slr-detection.md): a Gaussian median 2.85, 0.1 % quantile 2.28; with an exponential
+/// tail 3.02 (2.40); half Gaussian half flat 2.75 (2.26); flat 1.90 (99 % quantile 2.19). Below
+/// 300 points the sample cannot tell (a Gaussian of 100 falls under 2.2 one time in 50): not
+/// judged.
+inline constexpr double kMinTrackPeakedness = 2.2;
+inline constexpr size_t kMinFlatWindowPoints = 300;
+/// "" when the kept residuals are peaked enough to be a track (or too few to tell), else why not.
+std::string flatWindowDoubt(const PostfitResult& post);
 /// One BinEvidence per normal point of `post` (t: the pass's epochs).
 std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const PostfitResult& post);
 
