@@ -26,6 +26,7 @@
 #include "core/slr/screen.hpp"
 #include "core/slr/screen_follow.hpp"
 #include "core/slr/sinex.hpp"
+#include "core/slr/slr_run.hpp"
 #include "core/slr/solar.hpp"
 #include "test_support.hpp"
 
@@ -463,32 +464,59 @@ private slots:
                  qPrintable(QString("first return found %1 s late").arg(pass.epochS[firstFound] - pass.epochS[first])));
     }
 
-    // A scale given by hand that joins a kHz pass's whole gate into one region (mag_T 0.2,
+    // Scales given by hand that a kHz pass's track cannot be told at. One joins the whole gate into one region (mag_T 0.2,
     // mag_OC 4e9 on a pass the automatic mode screens at 2 and 4e10): every point is accepted,
     // the post-fit's 3σ window spans the gate, no noise is left beside it to measure, and its 21
     // normal points were delivered with exit 0 (a 10^7-event pass: 56 ns RMS, 10 % signal). The
     // window's flat shape now refuses them; the automatic scale's stand.
     void aScaleThatAcceptsTheWholeGateIsDoubtful() {
+        // The pass as laserwb-cli opens it: a CRD file, O-C from its own TOF trend.
         sim::SlrSimParams sp = sim::slrSimPreset(sim::SlrKind::Khz);
         sp.points = 100000;
         sp.signalFraction = 0.1;
         const sim::SlrSimPass s = sim::simulateSlrPass(sp, 1);
         QVERIFY2(s.ok, s.error.c_str());
-        const slr::PassData pass = passOf(s, sp.altitudeKm);
-        slr::SlrParams automatic;
-        automatic.postfit.binLengthS = 30;  // the missions table's bin is the pass task's to give
-        slr::SlrParams coarse = automatic;
-        coarse.screen.automatic = false;
-        coarse.screen.magT = 0.2;
-        coarse.screen.magOc = 4e9;
-        coarse.screen.areaLimit = 12;
-        coarse.screen.connectivity = 8;
-        const slr::PassRunResult bad = slr::runPass(pass, coarse);
-        QVERIFY2(bad.ok, bad.error.c_str());
-        QVERIFY(bad.acceptedCount > 99000);
-        qInfo("accepted %zu, post-fit RMS %.1f ps, %zu normal points; %s", size_t(bad.acceptedCount), bad.post.stats.rms * 1e12, bad.post.normalPoints.size(), bad.doubt.c_str());
-        QVERIFY2(bad.doubt.find("fill the post-fit's window evenly") != std::string::npos, bad.doubt.c_str());
-        QVERIFY(bad.post.normalPoints.empty());
+        QTemporaryDir dir;
+        const QString path = dir.path() + "/k100k.frd";
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QByteArray::fromStdString(sim::slrPassCrd(sp, s)));
+        f.close();
+        slr::SlrSources src;
+        src.input = path.toStdString();
+        const slr::LoadedSlrPass loaded = slr::loadSlrPass(src);
+        QVERIFY2(loaded.ok, loaded.error.message.c_str());
+        const slr::PassData& pass = *loaded.opened.pass;
+        const slr::SlrParams automatic = loaded.opened.settings.params;
+        auto runAt = [&](double magT, double magOc, int area) {
+            slr::SlrParams p = automatic;
+            p.screen.automatic = false;
+            p.screen.magT = magT;
+            p.screen.magOc = magOc;
+            p.screen.areaLimit = area;
+            p.screen.connectivity = 8;
+            const slr::PassRunResult r = slr::runPass(pass, p);
+            qInfo("mag_T %g, mag_OC %g, area %d: accepted %zu, post-fit RMS %.1f ps, %zu normal points; %s", magT, magOc, area,
+                  size_t(r.acceptedCount), r.post.stats.rms * 1e12, r.post.normalPoints.size(), r.doubt.c_str());
+            return r;
+        };
+        const slr::PassRunResult joined = runAt(0.2, 4e9, 12);
+        QVERIFY2(joined.ok, joined.error.c_str());
+        QVERIFY(joined.acceptedCount > 99000);
+        QVERIFY2(joined.doubt.find("fill the post-fit's window evenly") != std::string::npos, joined.doubt.c_str());
+        QVERIFY(joined.post.normalPoints.empty());
+        // A scale that splits the gate's noise instead (every region a candidate): half the pass
+        // kept, the track a spike on a floor that fills the window, the other half within the same
+        // window called noise; 21 normal points 5.2 m off were delivered.
+        const slr::PassRunResult half = runAt(1000, 1e8, 1);
+        QVERIFY2(half.doubt.find("the rest of the track was left out as noise") != std::string::npos, half.doubt.c_str());
+        QVERIFY(half.post.normalPoints.empty());
+        // A scale finer than the track (O-C pixels of 1 ps on a 25 ps track): a sliver of it kept,
+        // 37 of the 141 points within ±10 ps of its fit in one bin; 3 normal points 1.8 mm from the
+        // whole track's, with a precision of 0.1 mm, were delivered.
+        const slr::PassRunResult sliver = runAt(1, 1e12, 12);
+        QVERIFY2(sliver.doubt.find("the rest of the track was left out as noise") != std::string::npos, sliver.doubt.c_str());
+        // The automatic scale's normal points stand.
         const slr::PassRunResult good = slr::runPass(pass, automatic);
         QVERIFY2(good.ok && good.doubt.empty(), good.doubt.c_str());
         QVERIFY(good.post.normalPoints.size() >= 18);

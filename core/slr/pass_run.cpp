@@ -360,7 +360,9 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
         for (size_t k = firstAtOrAfter(np.binStartS); k < nPts; ++k) {
             const size_t i = order.empty() ? k : order[k];
             if (!(t[i] < np.binStartS + np.windowS)) break;
-            if (std::isfinite(post.residuals[i])) pts.emplace_back(t[i], post.residuals[i]);
+            if (!std::isfinite(post.residuals[i])) continue;
+            pts.emplace_back(t[i], post.residuals[i]);
+            if (i < post.kept.size() && post.kept[i] && std::fabs(post.residuals[i]) <= h) ++e.keptOnPoints;
         }
         if (!(h > 0) || pts.empty()) {
             e.why = "no spread to judge the track by";
@@ -445,6 +447,14 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
         else if (e.noiseShare > kMaxBinNoiseShare)
             e.why = "about " + formatFixed(100 * e.noiseShare, 0) + " % of its " + std::to_string(e.onPoints) + " points within " +
                     window + " of the track are noise, by the density beside it";
+        // (with or without noise beside the bin to measure: λ is 0 where there is none)
+        if (e.why.empty() && !post.kept.empty()) {
+            const double leftOut = double(e.onPoints - e.keptOnPoints);
+            if (leftOut > kMaxWindowLeftOut * double(e.onPoints) + lambda + 3 * std::sqrt(lambda + 1))
+                e.why = "the fit kept " + std::to_string(e.keptOnPoints) + " of the " + std::to_string(e.onPoints) + " points within " +
+                        window + " of the track, where the noise beside it puts " + formatFixed(lambda, 1) +
+                        ": the rest of the track was left out as noise, and a normal point of part of a track is biased";
+        }
         out.push_back(e);
     }
     // The track across the pass: the bins' counts together, against the tracks of that width one
@@ -458,13 +468,13 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
         lam += e.expectedNoise;
         trials = std::max(trials, e.trials);
     }
-    // With no noise beside the window in any bin (every point within it), the counts cannot
-    // measure the noise; the window's own shape still tells a track from noise that fills it.
-    if (!out.empty() && !unmeasuredBins.empty() && unmeasuredBins.size() == out.size()) {
-        const std::string flat = flatWindowDoubt(post);
-        if (!flat.empty())
+    // With fewer than 16 points beside the window in every bin, the counts cannot measure the
+    // noise; the window's shape still tells a track from noise that fills it.
+    if (!out.empty() && unmeasuredBins.size() == out.size()) {
+        const std::string why = flatWindowDoubt(post);
+        if (!why.empty())
             for (BinEvidence& e : out)
-                if (e.why.empty()) e.why = flat;
+                if (e.why.empty()) e.why = why;
     }
     if (!out.empty()) {
         const double alpha = (lam + 1.0 * (h > 0 ? 2 * h / (2 * flank) : 0)) / double(off + 1);

@@ -86,6 +86,7 @@ std::string describeBias(const PassBias& b);
 struct BinEvidence {
     double binStartS = 0;
     long long onPoints = 0, offPoints = 0;
+    long long keptOnPoints = 0; ///< of onPoints, those the fit kept
     double expectedNoise = 0;   ///< noise in the window, from the flanks
     double noiseShare = 0;      ///< (offPoints + 1)-based estimate of the window's noise share
     double pValue = 1;          ///< with the trials factor
@@ -109,13 +110,20 @@ inline constexpr double kMaxBinNoiseShare = 0.10;
 /// docs/slr-detection.md): every normal point beyond max(5 mm, 4 Cramér–Rao bounds) is withheld.
 inline constexpr double kMaxNpTrendErrorMm = 2.0;
 inline constexpr double kMinEdgeRoom = 2;
-/// Where no bin has noise beside its window to measure (every point within the window), the
-/// kept residuals' shape judges the pass instead: a track is peaked, noise that fills the window
-/// is flat. Peakedness (q97.5 − q2.5)/(q75 − q25) of 300 3σ-clipped points (3 000 draws each,
-/// docs/slr-detection.md): a Gaussian median 2.85, 0.1 % quantile 2.28; with an exponential
-/// tail 3.02 (2.40); half Gaussian half flat 2.75 (2.26); flat 1.90 (99 % quantile 2.19). Below
-/// 300 points the sample cannot tell (a Gaussian of 100 falls under 2.2 one time in 50): not
-/// judged.
+/// A bin's track must be kept, not a part of it: the points within the window that the fit left
+/// out (the screening called them noise) may be at most 10 % of the window's points plus the
+/// noise the flanks put there (λ + 3√(λ + 1)). A scale finer than the track (O-C pixels of 1 ps
+/// on a 25 ps track) keeps a sliver of it: 37 of the 141 points within ±10 ps, λ 9.7, and a
+/// normal point 1.8 mm from the whole track's with a precision of 0.1 mm; a scale that splits the
+/// gate's noise keeps half the window. The shared real passes leave 0–2 % of it out.
+inline constexpr double kMaxWindowLeftOut = 0.10;
+/// Where no bin has noise beside its window to measure (fewer than 16 points off it in every
+/// bin), the kept residuals' shape judges the pass instead (flatWindowDoubt): a track is
+/// peaked, noise that fills the window is flat. Peakedness (q97.5 − q2.5)/(q75 − q25) of 300
+/// 3σ-clipped points (3 000 draws each, docs/slr-detection.md): a Gaussian median 2.85, 0.1 %
+/// quantile 2.28; with an exponential tail 3.02 (2.40); half Gaussian half flat 2.75 (2.26);
+/// flat 1.90 (99 % quantile 2.19). Below 300 points the sample cannot tell (a Gaussian of 100
+/// falls under 2.2 one time in 50): not judged.
 inline constexpr double kMinTrackPeakedness = 2.2;
 inline constexpr size_t kMinFlatWindowPoints = 300;
 /// "" when the kept residuals are peaked enough to be a track (or too few to tell), else why not.
