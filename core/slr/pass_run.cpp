@@ -308,20 +308,43 @@ double binomialUpperTail(long long k, long long n, double q) {
 }
 }  // namespace
 
-std::string flatWindowDoubt(const PostfitResult& post) {
+std::string windowShapeDoubt(const PostfitResult& post) {
     std::vector<double> r;
     for (size_t i = 0; i < post.residuals.size() && i < post.kept.size(); ++i)
         if (post.kept[i] && std::isfinite(post.residuals[i])) r.push_back(post.residuals[i]);
-    if (r.size() < kMinFlatWindowPoints) return "";
+    const size_t n = r.size();
+    if (n < kMinCentralPoints) return "";
+    double mean = 0, ss = 0;
+    for (double v : r) mean += v;
+    mean /= double(n);
+    for (double v : r) ss += (v - mean) * (v - mean);
+    const double rms = std::sqrt(ss / double(n));
     const auto quantile = [&](double p) {
-        const size_t k = static_cast<size_t>(p * double(r.size() - 1));
+        const size_t k = static_cast<size_t>(p * double(n - 1));
         std::nth_element(r.begin(), r.begin() + long(k), r.end());
         return r[k];
     };
+    // A narrow track on a wide floor: too many points in the densest interval a fiftieth of the
+    // RMS wide for one track (the track need not be at the median: a trend fitted through the
+    // floor leaves it aside).
+    std::sort(r.begin(), r.end());
+    size_t central = 0;
+    for (size_t a = 0, b = 0; b < n; ++b) {
+        while (r[b] - r[a] > rms / 50) ++a;
+        central = std::max(central, b - a + 1);
+    }
+    const double share = double(central) / double(n),
+                 most = kCentralShareBase + 4 * std::sqrt(kCentralShareBase * (1 - kCentralShareBase) / double(n));
+    if (share > most)
+        return "the " + std::to_string(n) + " kept points are a narrow track on a wide floor: " + formatFixed(100 * share, 0) +
+               " % of them lie within " + formatFixed(rms / 50 * 1e12, 1) + " ps (a fiftieth of their RMS) of one another, "
+               "where one track puts about 1 % (at most " + formatFixed(100 * most, 0) + " % with " + std::to_string(n) +
+               " points): the post-fit's window, ±3 RMS, spans the floor";
+    if (n < kMinFlatWindowPoints) return "";
     const double q025 = quantile(0.025), q975 = quantile(0.975), q25 = quantile(0.25), q75 = quantile(0.75);
     const double peakedness = q75 > q25 ? (q975 - q025) / (q75 - q25) : 0;
     if (peakedness >= kMinTrackPeakedness) return "";
-    return "the " + std::to_string(r.size()) + " kept points fill the post-fit's window evenly (peakedness (q97.5 − q2.5)/(q75 − q25) " +
+    return "the " + std::to_string(n) + " kept points fill the post-fit's window evenly (peakedness (q97.5 − q2.5)/(q75 − q25) " +
            formatFixed(peakedness, 2) + ", about 2.8 for a track, 1.9 for noise that fills the window) and no noise is "
            "seen beside the window to measure it by: a track cannot be told from noise";
 }
@@ -350,7 +373,6 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
         }
         return lo;
     };
-    std::vector<size_t> unmeasuredBins;          // bins with too few points off the window
     std::vector<std::pair<double, double>> pts;  // (t, residual) in the bin
     std::vector<size_t> offWindow;               // places in pts of the points off the window
     for (const NormalPoint& np : post.normalPoints) {
@@ -436,8 +458,7 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
         if (n < size_t(e.onPoints) + 16) {
             // Fewer than 16 points off the window: too few to measure the noise beside this bin
             // by (a station's narrow gate, the MLRS Beacon-C passes' 15 s bins); the pass-wide
-            // test below judges it.
-            unmeasuredBins.push_back(out.size());
+            // test and the window's shape below judge it.
         } else if (e.edgeRoom < kMinEdgeRoom && 10 * lambda >= 3)
             e.why = "its track lies at the edge of the gate (" + formatFixed(std::max(0.0, e.edgeRoom), 1) +
                     " windows from it): a band of noise at the gate's edge cannot be told from a track";
@@ -468,10 +489,10 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
         lam += e.expectedNoise;
         trials = std::max(trials, e.trials);
     }
-    // With fewer than 16 points beside the window in every bin, the counts cannot measure the
-    // noise; the window's shape still tells a track from noise that fills it.
-    if (!out.empty() && unmeasuredBins.size() == out.size()) {
-        const std::string why = flatWindowDoubt(post);
+    // The window's shape: one track, or noise that fills it or a floor under a narrow track
+    // (where the window spans the gate, the flanks beside it measure nothing).
+    if (!out.empty()) {
+        const std::string why = windowShapeDoubt(post);
         if (!why.empty())
             for (BinEvidence& e : out)
                 if (e.why.empty()) e.why = why;

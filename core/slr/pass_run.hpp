@@ -117,17 +117,28 @@ inline constexpr double kMinEdgeRoom = 2;
 /// normal point 1.8 mm from the whole track's with a precision of 0.1 mm; a scale that splits the
 /// gate's noise keeps half the window. The shared real passes leave 0–2 % of it out.
 inline constexpr double kMaxWindowLeftOut = 0.10;
-/// Where no bin has noise beside its window to measure (fewer than 16 points off it in every
-/// bin), the kept residuals' shape judges the pass instead (flatWindowDoubt): a track is
-/// peaked, noise that fills the window is flat. Peakedness (q97.5 − q2.5)/(q75 − q25) of 300
-/// 3σ-clipped points (3 000 draws each, docs/slr-detection.md): a Gaussian median 2.85, 0.1 %
-/// quantile 2.28; with an exponential tail 3.02 (2.40); half Gaussian half flat 2.75 (2.26);
-/// flat 1.90 (99 % quantile 2.19). Below 300 points the sample cannot tell (a Gaussian of 100
-/// falls under 2.2 one time in 50): not judged.
+/// The kept residuals' shape judges every pass too (windowShapeDoubt): where the window spans the
+/// gate (a scale that kept the gate's noise), the flanks beside it measure nothing, or only the
+/// few points a misfit put there. Two shapes are not one track:
+/// - a narrow track on a wide floor (the window, ±3 RMS, spans the floor): the share of kept
+///   points in the densest interval a fiftieth of their RMS wide is above kCentralShareBase +
+///   4·√(base·(1 − base) / n), n ≥ kMinCentralPoints. One Gaussian track puts 0.8 % there; the
+///   shared real passes' kept points 1–8 % (BLITS and Beacon-C, 50 points: the most); a track of
+///   60 ps on a floor of µs puts its own share there. The densest interval, not the median's: a
+///   trend fitted through the floor leaves the track aside. The project's draws
+///   (windowShapeTellsOneTrackFromNoise, docs/slr-detection.md) give the shares refused;
+/// - noise that fills the window: peakedness (q97.5 − q2.5)/(q75 − q25) of 300 3σ-clipped points
+///   (3 000 draws each, docs/slr-detection.md): a Gaussian median 2.85, 0.1 % quantile 2.28; with
+///   an exponential tail 3.02 (2.40); half Gaussian half flat 2.75 (2.26); flat 1.90 (99 %
+///   quantile 2.19); the shared real passes of 300 kept points or more 2.56 at the least. Below
+///   300 points the sample cannot tell (a Gaussian of 100 falls under 2.2 one time in 50): not
+///   judged.
+inline constexpr double kCentralShareBase = 0.08;
+inline constexpr size_t kMinCentralPoints = 50;
 inline constexpr double kMinTrackPeakedness = 2.2;
 inline constexpr size_t kMinFlatWindowPoints = 300;
-/// "" when the kept residuals are peaked enough to be a track (or too few to tell), else why not.
-std::string flatWindowDoubt(const PostfitResult& post);
+/// "" when the kept residuals can be one track (or are too few to tell), else why not.
+std::string windowShapeDoubt(const PostfitResult& post);
 /// One BinEvidence per normal point of `post` (t: the pass's epochs).
 std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const PostfitResult& post);
 
