@@ -516,6 +516,7 @@ private slots:
         // whole track's, with a precision of 0.1 mm, were delivered.
         const slr::PassRunResult sliver = runAt(1, 1e12, 12);
         QVERIFY2(sliver.doubt.find("the rest of the track was left out as noise") != std::string::npos, sliver.doubt.c_str());
+        QVERIFY(sliver.post.normalPoints.empty());
         // The automatic scale's normal points stand.
         const slr::PassRunResult good = slr::runPass(pass, automatic);
         QVERIFY2(good.ok && good.doubt.empty(), good.doubt.c_str());

@@ -318,10 +318,26 @@ private slots:
         }
         {
             // The room to the gate's edge against the literal walk over every point of the bin
-            // (the 16 nearest points in time off the window, earlier first at a tie), with the
-            // epochs out of order and a second bin: the walk over the off-window points alone
-            // and the bins taken from an order sorted once give the same median.
+            // (the 16 nearest points in time off the window, earlier first at a tie), with
+            // epochs on a 0.5 s grid (equal epochs: the ties), out of order and then in order,
+            // and a second bin: the walk over the off-window points alone and the bins taken
+            // from an order sorted once give the same median.
+          for (const bool sorted : {false, true}) {
             auto [t, post] = make(0, 3, -20e-9, 35e-9, 4);
+            for (double& x : t) x = std::floor(2 * x) / 2;
+            if (sorted) {
+                std::vector<size_t> idx(t.size());
+                for (size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+                std::stable_sort(idx.begin(), idx.end(), [&](size_t a, size_t b) { return t[a] < t[b]; });
+                std::vector<double> t2, r2;
+                for (size_t i : idx) {
+                    t2.push_back(t[i]);
+                    r2.push_back(post.residuals[i]);
+                }
+                t = t2;
+                post.residuals = r2;
+            }
+            post.kept.assign(t.size(), 1);
             slr::NormalPoint second;
             second.binStartS = 450;
             second.windowS = 450;
@@ -354,10 +370,12 @@ private slots:
                 std::nth_element(rooms.begin(), rooms.begin() + long(rooms.size() / 2), rooms.end());
                 QCOMPARE(e[k].edgeRoom, rooms[rooms.size() / 2]);
             }
+          }
         }
         // Every point within the window and none beside it (a scale that joins the whole gate
         // into one region; a station's narrow gate): the counts cannot measure the noise, the
-        // window's shape judges. Noise filling the window is refused; a track (with a tail) stands.
+        // window's shape judges. Noise filling the window is refused; a track (a fifth of it
+        // moved by 0.67σ) stands.
         for (const bool flat : {true, false}) {
             slr::PostfitResult post;
             Rng rng(flat ? 5 : 6);

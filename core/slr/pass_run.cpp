@@ -308,10 +308,12 @@ double binomialUpperTail(long long k, long long n, double q) {
 }
 }  // namespace
 
-std::string windowShapeDoubt(const PostfitResult& post) {
+std::string windowShapeDoubt(const PostfitResult& post, bool judgePeakedness) {
     std::vector<double> r;
+    // (a point its own segment's fit passes through, residual 0 to a femtosecond, tells nothing
+    // of the shape: a sparse pass's segments of one point would make a spike of them)
     for (size_t i = 0; i < post.residuals.size() && i < post.kept.size(); ++i)
-        if (post.kept[i] && std::isfinite(post.residuals[i])) r.push_back(post.residuals[i]);
+        if (post.kept[i] && std::isfinite(post.residuals[i]) && std::fabs(post.residuals[i]) > 1e-15) r.push_back(post.residuals[i]);
     const size_t n = r.size();
     if (n < kMinCentralPoints) return "";
     double mean = 0, ss = 0;
@@ -319,6 +321,7 @@ std::string windowShapeDoubt(const PostfitResult& post) {
     mean /= double(n);
     for (double v : r) ss += (v - mean) * (v - mean);
     const double rms = std::sqrt(ss / double(n));
+    if (!(rms > 0)) return "";
     const auto quantile = [&](double p) {
         const size_t k = static_cast<size_t>(p * double(n - 1));
         std::nth_element(r.begin(), r.begin() + long(k), r.end());
@@ -340,7 +343,7 @@ std::string windowShapeDoubt(const PostfitResult& post) {
                " % of them lie within " + formatFixed(rms / 50 * 1e12, 1) + " ps (a fiftieth of their RMS) of one another, "
                "where one track puts about 1 % (at most " + formatFixed(100 * most, 0) + " % with " + std::to_string(n) +
                " points): the post-fit's window, ±3 RMS, spans the floor";
-    if (n < kMinFlatWindowPoints) return "";
+    if (!judgePeakedness || n < kMinFlatWindowPoints) return "";
     const double q025 = quantile(0.025), q975 = quantile(0.975), q25 = quantile(0.25), q75 = quantile(0.75);
     const double peakedness = q75 > q25 ? (q975 - q025) / (q75 - q25) : 0;
     if (peakedness >= kMinTrackPeakedness) return "";
@@ -358,11 +361,19 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
     // pass of 10^7 events with hundreds of bins).
     const size_t nPts = std::min(t.size(), post.residuals.size());
     std::vector<size_t> order;
-    if (!std::is_sorted(t.begin(), t.begin() + long(nPts))) {
+    bool inOrder = true;  // (a NaN epoch is out of order: sorted last, never in a bin)
+    for (size_t i = 0; i < nPts && inOrder; ++i) inOrder = std::isfinite(t[i]) && (i == 0 || t[i - 1] <= t[i]);
+    if (!inOrder) {
         order.resize(nPts);
         for (size_t i = 0; i < nPts; ++i) order[i] = i;
-        std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return t[a] < t[b]; });
+        std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+            return std::isnan(t[b]) ? !std::isnan(t[a]) : t[a] < t[b];
+        });
     }
+    // The fit's own band: the rejection's last limit where it is narrower than the window (a
+    // rejection below 3σ, or the noise band), within which every point of the track is kept.
+    const double band = std::isfinite(post.limitS) && post.limitS > 0 ? std::min(h, post.limitS) : h;
+    const bool keptKnown = post.kept.size() == post.residuals.size();
     const auto epochAt = [&](size_t k) { return order.empty() ? t[k] : t[order[k]]; };
     const auto firstAtOrAfter = [&](double x) {
         size_t lo = 0, hi = nPts;  // first k with epochAt(k) >= x
@@ -375,6 +386,7 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
     };
     std::vector<std::pair<double, double>> pts;  // (t, residual) in the bin
     std::vector<size_t> offWindow;               // places in pts of the points off the window
+    size_t unmeasured = 0;                       // bins with fewer than 16 points off the window
     for (const NormalPoint& np : post.normalPoints) {
         BinEvidence e;
         e.binStartS = np.binStartS;
@@ -384,7 +396,10 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
             if (!(t[i] < np.binStartS + np.windowS)) break;
             if (!std::isfinite(post.residuals[i])) continue;
             pts.emplace_back(t[i], post.residuals[i]);
-            if (i < post.kept.size() && post.kept[i] && std::fabs(post.residuals[i]) <= h) ++e.keptOnPoints;
+            if (std::fabs(post.residuals[i]) <= band) {
+                ++e.bandPoints;
+                if (keptKnown && post.kept[i]) ++e.keptOnPoints;
+            }
         }
         if (!(h > 0) || pts.empty()) {
             e.why = "no spread to judge the track by";
@@ -456,6 +471,7 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
         // (only where the noise is dense enough to show the gate: 3 points expected in 10 windows,
         // and the 16 points off the window the room is measured by)
         if (n < size_t(e.onPoints) + 16) {
+            ++unmeasured;
             // Fewer than 16 points off the window: too few to measure the noise beside this bin
             // by (a station's narrow gate, the MLRS Beacon-C passes' 15 s bins); the pass-wide
             // test and the window's shape below judge it.
@@ -469,12 +485,13 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
             e.why = "about " + formatFixed(100 * e.noiseShare, 0) + " % of its " + std::to_string(e.onPoints) + " points within " +
                     window + " of the track are noise, by the density beside it";
         // (with or without noise beside the bin to measure: λ is 0 where there is none)
-        if (e.why.empty() && !post.kept.empty()) {
-            const double leftOut = double(e.onPoints - e.keptOnPoints);
-            if (leftOut > kMaxWindowLeftOut * double(e.onPoints) + lambda + 3 * std::sqrt(lambda + 1))
-                e.why = "the fit kept " + std::to_string(e.keptOnPoints) + " of the " + std::to_string(e.onPoints) + " points within " +
-                        window + " of the track, where the noise beside it puts " + formatFixed(lambda, 1) +
-                        ": the rest of the track was left out as noise, and a normal point of part of a track is biased";
+        if (e.why.empty() && keptKnown) {
+            const double leftOut = double(e.bandPoints - e.keptOnPoints), noise = lambda * band / h;
+            if (leftOut > kMaxWindowLeftOut * double(e.bandPoints) + noise + 3 * std::sqrt(noise + 1))
+                e.why = "the fit kept " + std::to_string(e.keptOnPoints) + " of the " + std::to_string(e.bandPoints) +
+                        " points within ±" + formatFixed(band * 1e12, 0) + " ps of the track, where the noise beside it puts " +
+                        formatFixed(noise, 1) + ": the rest of the track was left out as noise, and a normal point of part of a "
+                        "track is biased";
         }
         out.push_back(e);
     }
@@ -492,7 +509,12 @@ std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const
     // The window's shape: one track, or noise that fills it or a floor under a narrow track
     // (where the window spans the gate, the flanks beside it measure nothing).
     if (!out.empty()) {
-        const std::string why = windowShapeDoubt(post);
+        // The peakedness is judged where no bin has noise beside its window, or where the fit's
+        // band is its whole window (a rejection narrower than 3σ, or the noise band, clips a
+        // track's shoulders and flattens it: a Gaussian cut at 1.45σ, the limit a 2σ rejection
+        // settles at, gives about 2.3).
+        const bool wholeWindow = !(std::isfinite(post.limitS) && post.limitS < 0.99 * h);
+        const std::string why = windowShapeDoubt(post, unmeasured == out.size() || wholeWindow);
         if (!why.empty())
             for (BinEvidence& e : out)
                 if (e.why.empty()) e.why = why;

@@ -86,7 +86,8 @@ std::string describeBias(const PassBias& b);
 struct BinEvidence {
     double binStartS = 0;
     long long onPoints = 0, offPoints = 0;
-    long long keptOnPoints = 0; ///< of onPoints, those the fit kept
+    long long bandPoints = 0;   ///< points within the fit's own band (min(window, PostfitResult::limitS))
+    long long keptOnPoints = 0; ///< of bandPoints, those the fit kept
     double expectedNoise = 0;   ///< noise in the window, from the flanks
     double noiseShare = 0;      ///< (offPoints + 1)-based estimate of the window's noise share
     double pValue = 1;          ///< with the trials factor
@@ -110,16 +111,19 @@ inline constexpr double kMaxBinNoiseShare = 0.10;
 /// docs/slr-detection.md): every normal point beyond max(5 mm, 4 Cramér–Rao bounds) is withheld.
 inline constexpr double kMaxNpTrendErrorMm = 2.0;
 inline constexpr double kMinEdgeRoom = 2;
-/// A bin's track must be kept, not a part of it: the points within the window that the fit left
-/// out (the screening called them noise) may be at most 10 % of the window's points plus the
-/// noise the flanks put there (λ + 3√(λ + 1)). A scale finer than the track (O-C pixels of 1 ps
+/// A bin's track must be kept, not a part of it: the points within the fit's own band (its
+/// rejection's last limit, or the window where that is wider) that the fit left out (the
+/// screening called them noise) may be at most 10 % of the band's points plus the noise the
+/// flanks put there (λ scaled to the band, + 3√(λ + 1)). (The band, not the window: a
+/// rejection at 2σ settles at 1.45σ, and a window of 3 RMS would leave 12 % of a clean track out.) A scale finer than the track (O-C pixels of 1 ps
 /// on a 25 ps track) keeps a sliver of it: 37 of the 141 points within ±10 ps, λ 9.7, and a
 /// normal point 1.8 mm from the whole track's with a precision of 0.1 mm; a scale that splits the
 /// gate's noise keeps half the window. The shared real passes leave 0–2 % of it out.
 inline constexpr double kMaxWindowLeftOut = 0.10;
-/// The kept residuals' shape judges every pass too (windowShapeDoubt): where the window spans the
-/// gate (a scale that kept the gate's noise), the flanks beside it measure nothing, or only the
-/// few points a misfit put there. Two shapes are not one track:
+/// The kept residuals' shape judges every pass too (windowShapeDoubt; residuals of 0 to a
+/// femtosecond, points their own segment's fit passes through, left out): where the window spans
+/// the gate (a scale that kept the gate's noise), the flanks beside it measure nothing, or only
+/// the few points a misfit put there. Two shapes are not one track:
 /// - a narrow track on a wide floor (the window, ±3 RMS, spans the floor): the share of kept
 ///   points in the densest interval a fiftieth of their RMS wide is above kCentralShareBase +
 ///   4·√(base·(1 − base) / n), n ≥ kMinCentralPoints. One Gaussian track puts 0.8 % there; the
@@ -127,7 +131,9 @@ inline constexpr double kMaxWindowLeftOut = 0.10;
 ///   60 ps on a floor of µs puts its own share there. The densest interval, not the median's: a
 ///   trend fitted through the floor leaves the track aside. The project's draws
 ///   (windowShapeTellsOneTrackFromNoise, docs/slr-detection.md) give the shares refused;
-/// - noise that fills the window: peakedness (q97.5 − q2.5)/(q75 − q25) of 300 3σ-clipped points
+/// - noise that fills the window, judged where no bin has 16 points off its window or where the
+///   fit's band is the whole window (a rejection below 3σ, or the noise band, clips a real
+///   track's shoulders and flattens it): peakedness (q97.5 − q2.5)/(q75 − q25) of 300 3σ-clipped points
 ///   (3 000 draws each, docs/slr-detection.md): a Gaussian median 2.85, 0.1 % quantile 2.28; with
 ///   an exponential tail 3.02 (2.40); half Gaussian half flat 2.75 (2.26); flat 1.90 (99 %
 ///   quantile 2.19); the shared real passes of 300 kept points or more 2.56 at the least. Below
@@ -138,7 +144,9 @@ inline constexpr size_t kMinCentralPoints = 50;
 inline constexpr double kMinTrackPeakedness = 2.2;
 inline constexpr size_t kMinFlatWindowPoints = 300;
 /// "" when the kept residuals can be one track (or are too few to tell), else why not.
-std::string windowShapeDoubt(const PostfitResult& post);
+/// judgePeakedness: no bin has 16 points off its window, or the fit's band is its whole window
+/// (PassTask judges the peakedness only then).
+std::string windowShapeDoubt(const PostfitResult& post, bool judgePeakedness = true);
 /// One BinEvidence per normal point of `post` (t: the pass's epochs).
 std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const PostfitResult& post);
 
