@@ -322,15 +322,11 @@ std::string windowShapeDoubt(const PostfitResult& post, bool judgePeakedness) {
     for (double v : r) ss += (v - mean) * (v - mean);
     const double rms = std::sqrt(ss / double(n));
     if (!(rms > 0)) return "";
-    const auto quantile = [&](double p) {
-        const size_t k = static_cast<size_t>(p * double(n - 1));
-        std::nth_element(r.begin(), r.begin() + long(k), r.end());
-        return r[k];
-    };
     // A narrow track on a wide floor: too many points in the densest interval a fiftieth of the
     // RMS wide for one track (the track need not be at the median: a trend fitted through the
     // floor leaves it aside).
     std::sort(r.begin(), r.end());
+    const auto quantile = [&](double p) { return r[static_cast<size_t>(p * double(n - 1))]; };
     size_t central = 0;
     for (size_t a = 0, b = 0; b < n; ++b) {
         while (r[b] - r[a] > rms / 50) ++a;
@@ -348,8 +344,8 @@ std::string windowShapeDoubt(const PostfitResult& post, bool judgePeakedness) {
     const double peakedness = q75 > q25 ? (q975 - q025) / (q75 - q25) : 0;
     if (peakedness >= kMinTrackPeakedness) return "";
     return "the " + std::to_string(n) + " kept points fill the post-fit's window evenly (peakedness (q97.5 − q2.5)/(q75 − q25) " +
-           formatFixed(peakedness, 2) + ", about 2.8 for a track, 1.9 for noise that fills the window) and no noise is "
-           "seen beside the window to measure it by: a track cannot be told from noise";
+           formatFixed(peakedness, 2) + ", about 2.8 for a track, 1.9 for noise that fills the window): a track cannot be "
+           "told from noise";
 }
 
 std::vector<BinEvidence> normalPointEvidence(const std::vector<double>& t, const PostfitResult& post) {
